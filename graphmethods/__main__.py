@@ -1,0 +1,7 @@
+"""``python -m graphmethods`` is the command line."""
+
+import sys
+
+from graphmethods.cli import main
+
+sys.exit(main())

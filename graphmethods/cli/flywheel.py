@@ -1,0 +1,130 @@
+"""``graphmethods flywheel``: the excess-work table and the flywheel from areas, works or energy levels.
+
+Examples::
+
+    graphmethods flywheel --areas 50 -550 100 -125 500 -25 50 --n 600 --delta 1/300
+    graphmethods flywheel --areas 10,-110,20,-25,100,-5,10 --mu-M 100 --mu-phi-deg 1 --n 600 --delta 1/300
+    graphmethods flywheel --levels 0 -50 500 400 525 25 50 0 --omega 12.566 --J 60.69 --json
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+
+from graphmethods.errors import InputError
+from graphmethods.units import parse_number
+
+LIST_OPTIONS = ("--areas", "--levels")
+
+
+def preprocess_argv(argv: list[str]) -> list[str]:
+    """Join the values after --areas/--levels (up to the next --option) into one token, so that
+    ``--areas -50 550`` and ``--areas -50,550`` both work (argparse would take ``-50`` for an option)."""
+    out, i = [], 0
+    while i < len(argv):
+        tok = argv[i]
+        if tok in LIST_OPTIONS:
+            vals, i = [], i + 1
+            while i < len(argv) and not argv[i].startswith("--"):
+                vals.append(argv[i])
+                i += 1
+            out.append(f"{tok}={','.join(vals)}")
+            continue
+        out.append(tok)
+        i += 1
+    return out
+
+
+def parse_list(text: str, name: str) -> list[float]:
+    parts = [p for p in re.split(r"[,\s;]+", text.strip()) if p]
+    if not parts:
+        raise InputError(f"{name}: no values given; list them, e.g. {name} 50 -550 100")
+    return [parse_number(p, name=name) for p in parts]
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser(
+        "flywheel",
+        help="excess-work table, ΔW_max and the flywheel (approximate method)",
+        description="Excess-work table, ΔW_max and the flywheel J_F = ΔW_max/(ω_m²[δ]) − J_e, "
+        "or the δ a given inertia gives. The cycle is given as signed areas (mm² with scales, "
+        "or work in J without scales) or as running energy levels.",
+        epilog="Example: graphmethods flywheel --areas 50 -550 100 -125 500 -25 50 --n 600 --delta 1/300",
+    )
+    cyc = p.add_mutually_exclusive_group(required=True)
+    cyc.add_argument("--areas", metavar="A1,A2,...", help="signed areas between M_d and M_r in order: mm² with --mu-M and "
+                     "--mu-phi/--mu-phi-deg, otherwise work in J")
+    cyc.add_argument("--levels", metavar="E0,E1,...", help="running energy levels in J, the last returning to the first")
+    p.add_argument("--mu-M", help="moment scale of the drawing, N·m per mm")
+    p.add_argument("--mu-phi", help="angle scale of the drawing, rad per mm")
+    p.add_argument("--mu-phi-deg", help="angle scale of the drawing, degrees per mm")
+    speed = p.add_mutually_exclusive_group(required=True)
+    speed.add_argument("--n", help="mean speed of the shaft, rev/min")
+    speed.add_argument("--omega", help="mean angular speed of the shaft, rad/s")
+    goal = p.add_mutually_exclusive_group(required=True)
+    goal.add_argument("--delta", help="permissible coefficient of fluctuation [δ] (fractions like 1/300 accepted): find J_F")
+    goal.add_argument("--J", help="total inertia on the shaft, kg·m²: find the δ it gives")
+    p.add_argument("--J-e", default="0", help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
+    p.add_argument("--closure-tol", default=None, help="allowed closure residual |ΣA|/Σ|A| (default 0.05)")
+    p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from graphmethods.dynamics import excess_work as ew
+    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, mean_speed
+
+    tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
+    if args.areas is not None:
+        values = parse_list(args.areas, "--areas")
+        scaled = args.mu_M is not None or args.mu_phi is not None or args.mu_phi_deg is not None
+        if scaled:
+            if args.mu_M is None:
+                raise InputError("areas in mm² need both scales: add --mu-M (N·m/mm)")
+            cycle = ew.from_areas(
+                values, mu_M=parse_number(args.mu_M, name="--mu-M"),
+                mu_phi=None if args.mu_phi is None else parse_number(args.mu_phi, name="--mu-phi"),
+                mu_phi_deg=None if args.mu_phi_deg is None else parse_number(args.mu_phi_deg, name="--mu-phi-deg"),
+                closure_tol=tol,
+            )
+        else:
+            cycle = ew.from_work(values, closure_tol=tol)
+    else:
+        if args.mu_M or args.mu_phi or args.mu_phi_deg:
+            raise InputError("energy levels are in J; scales --mu-M/--mu-phi apply to areas only")
+        cycle = ew.from_levels(parse_list(args.levels, "--levels"), closure_tol=tol)
+
+    omega_m = mean_speed(
+        n_rpm=None if args.n is None else parse_number(args.n, name="--n"),
+        omega_m=None if args.omega is None else parse_number(args.omega, name="--omega"),
+    )
+    J_e = parse_number(args.J_e, name="--J-e")
+    out = cycle.to_dict()
+    out.update(omega_m=omega_m, n_rpm=30.0 * omega_m / math.pi, J_e=J_e)
+    if args.delta is not None:
+        fw = flywheel(cycle.delta_W_max, delta=check_delta(parse_number(args.delta, name="--delta")), omega_m=omega_m, J_e=J_e)
+        out.update(delta=fw.delta, J_F=fw.J_F, J_total=fw.J_total, omega_max=fw.omega_max, omega_min=fw.omega_min,
+                   flywheel_needed=fw.needed)
+    else:
+        J = parse_number(args.J, name="--J")
+        delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
+        out.update(J=J, delta=delta, J_F=J - J_e)
+    if args.json:
+        print(json.dumps(out, indent=1))
+        return 0
+    print("Excess-work table")
+    print(cycle.to_text())
+    print(f"ω_m = {omega_m:.6g} rad/s (n = {out['n_rpm']:.6g} rev/min)")
+    if args.delta is not None:
+        print(f"[δ] = {out['delta']:.6g}; ω_max = {out['omega_max']:.6g}, ω_min = {out['omega_min']:.6g} rad/s")
+        print(f"required total inertia ΔW_max/(ω_m²[δ]) = {out['J_total']:.6g} kg·m²")
+        print(f"J_F = {out['J_F']:.6g} kg·m²" + (f" (after subtracting J_e = {J_e:.6g})" if J_e else ""))
+        if not out["flywheel_needed"]:
+            print("no flywheel is needed: the mechanism's own inertia already keeps δ within [δ]")
+    else:
+        print(f"δ = ΔW_max/(ω_m² J) = {out['delta']:.6g} (1/{1 / out['delta']:.4g}) with J = {out['J']:.6g} kg·m²"
+              if out["delta"] > 0 else "δ = 0: no fluctuation")
+    return 0

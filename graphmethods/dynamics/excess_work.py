@@ -1,0 +1,446 @@
+"""Excess work (избыточная работа, 盈亏功): intervals, areas, running energy and ΔW_max.
+
+A cycle enters at whatever level the problem gives it, and nothing more is modelled:
+
+* :func:`from_areas` — signed areas f_i (mm²) between the M_d and M_r curves, with the
+  drawing's scales: A_i = f_i μ_M μ_φ;
+* :func:`from_work` — the excess works A_i directly in J;
+* :func:`from_levels` — the running energy levels E_0 … E_n;
+* :func:`from_moments` — the moment curves themselves (:class:`~.moments.MomentCurve`):
+  the crossings of M_d and M_r are found exactly (inside a chord, at a vertex, at a
+  jump), touching without crossing and coincident stretches do not start new
+  intervals, and the areas are exact for the chords.
+
+Each gives an :class:`ExcessWork`: the excess-work table (points a, b, c, …, works,
+running energy), E_max and E_min with their points, ΔW_max = E_max − E_min, and the
+closure residual Σ A_i (zero for a steady cycle; a hand-measured set of areas never
+closes exactly, and a residual beyond ``closure_tol`` is refused).
+
+W1 (diesel generator):
+
+>>> w1 = from_work([50, -550, 100, -125, 500, -25, 50])
+>>> w1.E.tolist()
+[0.0, 50.0, -500.0, -400.0, -525.0, -25.0, -50.0, 0.0]
+>>> w1.delta_W_max, w1.labels[w1.index_E_max], w1.labels[w1.index_E_min]
+(575.0, 'b', 'e')
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from graphmethods.dynamics.moments import MomentCurve, balance
+from graphmethods.errors import InputError, UnbalancedCycleError
+
+#: Default closure tolerance for measured data (areas, works, levels): |Σ A_i| / Σ|A_i|.
+CLOSURE_TOL_MEASURED = 0.05
+#: Default closure tolerance for moment curves, which should balance exactly.
+CLOSURE_TOL_CURVES = 1e-6
+
+
+def point_labels(n: int) -> tuple[str, ...]:
+    """Textbook point names a, b, c, …, z, a1, b1, … for n points.
+
+    >>> point_labels(3), point_labels(28)[-2:]
+    (('a', 'b', 'c'), ('a1', 'b1'))
+    """
+    return tuple(chr(97 + i % 26) + (str(i // 26) if i >= 26 else "") for i in range(n))
+
+
+def _num(v: float) -> str:
+    s = f"{v:.6g}"
+    return "0" if s in ("-0", "0", "-0.0") else s
+
+
+@dataclass(frozen=True, eq=False)
+class ExcessWork:
+    """The excess-work table of one cycle and what follows from it.
+
+    Attributes
+    ----------
+    work : ndarray, J
+        Excess work A_i of each interval, + for a gain (M_d > M_r), − for a loss.
+    E : ndarray, J
+        Running energy at the interval boundaries, ``E[0] = 0``, ``E[k] = Σ_{i<k} A_i``;
+        ``E[-1]`` is the closure residual.
+    labels : tuple of str
+        Names of the boundaries: a, b, c, …
+    phi : ndarray or None, rad
+        Angles of the boundaries (moment-curve input only).
+    areas_mm2 : ndarray or None
+        The areas as measured on the drawing (area input only).
+    mu_M, mu_phi : float or None
+        The drawing's scales, N·m/mm and rad/mm (area input only).
+    M_d, M_r : MomentCurve or None
+        The moment curves (moment-curve input only).
+    closure_tol : float
+        The relative closure tolerance the cycle was accepted with.
+    """
+
+    work: np.ndarray
+    E: np.ndarray
+    labels: tuple[str, ...]
+    phi: np.ndarray | None = None
+    areas_mm2: np.ndarray | None = None
+    mu_M: float | None = None
+    mu_phi: float | None = None
+    M_d: MomentCurve | None = None
+    M_r: MomentCurve | None = None
+    closure_tol: float = CLOSURE_TOL_MEASURED
+
+    # ----------------------------------------------------------------- derived values
+    @property
+    def index_E_max(self) -> int:
+        """Index (into ``E``/``labels``) of the highest energy level (first one on a tie)."""
+        return int(np.argmax(self.E))
+
+    @property
+    def index_E_min(self) -> int:
+        """Index of the lowest energy level (first one on a tie)."""
+        return int(np.argmin(self.E))
+
+    @property
+    def E_max(self) -> float:
+        """Highest running energy, J."""
+        return float(self.E.max())
+
+    @property
+    def E_min(self) -> float:
+        """Lowest running energy, J."""
+        return float(self.E.min())
+
+    @property
+    def delta_W_max(self) -> float:
+        """Maximum fluctuation of energy ΔW_max = E_max − E_min, J."""
+        return self.E_max - self.E_min
+
+    @property
+    def residual(self) -> float:
+        """Closure residual Σ A_i, J (0 for a steady cycle)."""
+        return float(self.E[-1])
+
+    @property
+    def period(self) -> float | None:
+        """The period φ_T in rad (moment-curve input only)."""
+        return None if self.M_d is None else self.M_d.period
+
+    @property
+    def phi_E_max(self) -> float | None:
+        """φ of the highest energy level, rad (moment-curve input only)."""
+        return None if self.phi is None else float(self.phi[self.index_E_max])
+
+    @property
+    def phi_E_min(self) -> float | None:
+        """φ of the lowest energy level, rad (moment-curve input only)."""
+        return None if self.phi is None else float(self.phi[self.index_E_min])
+
+    # ----------------------------------------------------------------- energy along the cycle
+    def energy(self, phi) -> np.ndarray:
+        """ΔE(φ) = ∫ (M_d − M_r) dφ from the start of the period, J (moment-curve input only).
+
+        >>> from math import pi
+        >>> ew = from_moments(M_r=MomentCurve.steps([(0, pi / 4, 60.0), (pi / 4, 2 * pi, 10.0)]))
+        >>> round(float(ew.energy(pi / 4)), 5)
+        -34.36117
+        """
+        if self.M_d is None:
+            raise InputError("ΔE(φ) needs moment curves; this cycle was given as areas, works or levels")
+        return (self.M_d - self.M_r).integral(phi)
+
+    def energy_curve(self, samples: int = 721) -> tuple[np.ndarray, np.ndarray]:
+        """Points (φ, ΔE) for drawing the energy graph: the knots, the crossings and
+        ``samples`` evenly spaced angles, all exact (ΔE is piecewise quadratic)."""
+        if self.M_d is None:
+            raise InputError("the energy graph needs moment curves; draw the energy indicator instead")
+        D = self.M_d - self.M_r
+        even = np.linspace(D.phi[0], D.phi[-1], samples)
+        phi = np.unique(np.concatenate((D.phi, self.phi, even)))
+        return phi, self.energy(phi)
+
+    # ----------------------------------------------------------------- the table
+    def rows(self) -> list[dict]:
+        """The excess-work table, one row per interval: points, area, work, energy at its end."""
+        rows = []
+        for i, A in enumerate(self.work):
+            row = {"interval": f"{self.labels[i]}–{self.labels[i + 1]}", "A_J": float(A), "E_J": float(self.E[i + 1])}
+            if self.areas_mm2 is not None:
+                row["f_mm2"] = float(self.areas_mm2[i])
+            if self.phi is not None:
+                row["phi_from_deg"] = math.degrees(self.phi[i])
+                row["phi_to_deg"] = math.degrees(self.phi[i + 1])
+            rows.append(row)
+        return rows
+
+    def _table(self) -> tuple[list[str], list[list[str]]]:
+        head = ["interval"]
+        if self.phi is not None:
+            head += ["φ from, °", "φ to, °"]
+        if self.areas_mm2 is not None:
+            head += ["f, mm²"]
+        head += ["A, J", "E at end, J"]
+        body = []
+        for r in self.rows():
+            line = [r["interval"]]
+            if self.phi is not None:
+                line += [_num(round(r["phi_from_deg"], 4)), _num(round(r["phi_to_deg"], 4))]
+            if self.areas_mm2 is not None:
+                line += [_num(r["f_mm2"])]
+            line += [_num(r["A_J"]), _num(r["E_J"])]
+            body.append(line)
+        return head, body
+
+    def _summary(self) -> list[str]:
+        i, j = self.index_E_max, self.index_E_min
+        out = [
+            f"E_max = {_num(self.E_max)} J at {self.labels[i]}"
+            + (f" (φ = {_num(round(math.degrees(self.phi[i]), 4))}°)" if self.phi is not None else ""),
+            f"E_min = {_num(self.E_min)} J at {self.labels[j]}"
+            + (f" (φ = {_num(round(math.degrees(self.phi[j]), 4))}°)" if self.phi is not None else ""),
+            f"ΔW_max = {_num(self.delta_W_max)} J",
+            f"closure residual ΣA = {_num(self.residual)} J",
+        ]
+        return out
+
+    def to_markdown(self) -> str:
+        """The excess-work table as Markdown, followed by E_max, E_min, ΔW_max and the residual."""
+        head, body = self._table()
+        lines = ["| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
+        lines += ["| " + " | ".join(r) + " |" for r in body]
+        return "\n".join(lines + [""] + [f"- {s}" for s in self._summary()]) + "\n"
+
+    def to_text(self) -> str:
+        """The excess-work table as aligned plain text.
+
+        >>> print(from_work([10, -10]).to_text())
+        interval  A, J  E at end, J
+        a–b         10           10
+        b–c        -10            0
+        E_max = 10 J at b
+        E_min = 0 J at a
+        ΔW_max = 10 J
+        closure residual ΣA = 0 J
+        """
+        head, body = self._table()
+        widths = [max(len(r[k]) for r in [head] + body) for k in range(len(head))]
+        fmt = lambda r: "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
+        return "\n".join([fmt(head)] + [fmt(r) for r in body] + self._summary())
+
+    def to_dict(self) -> dict:
+        """A JSON-ready dict of the table and results."""
+        d = {
+            "labels": list(self.labels),
+            "work_J": self.work.tolist(),
+            "E": self.E.tolist(),
+            "index_E_max": self.index_E_max,
+            "index_E_min": self.index_E_min,
+            "E_max": self.E_max,
+            "E_min": self.E_min,
+            "delta_W_max": self.delta_W_max,
+            "residual": self.residual,
+        }
+        if self.areas_mm2 is not None:
+            d.update(areas_mm2=self.areas_mm2.tolist(), mu_M=self.mu_M, mu_phi=self.mu_phi)
+        if self.phi is not None:
+            d.update(phi=self.phi.tolist(), phi_deg=np.degrees(self.phi).tolist())
+        return d
+
+
+# --------------------------------------------------------------------- constructors
+def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
+    if not (closure_tol >= 0 and math.isfinite(closure_tol)):
+        raise InputError(f"closure_tol = {closure_tol!r} must be a non-negative number")
+    total = float(np.abs(work).sum())
+    residual = float(work.sum())
+    if total == 0.0:
+        return
+    if abs(residual) > closure_tol * total:
+        raise UnbalancedCycleError(
+            f"the cycle does not close: the {what} sum to {_num(residual)} J, "
+            f"{abs(residual) / total:.3g} of their total {_num(total)} J, beyond the tolerance {closure_tol:g}; "
+            "check the signs and values (driving and resisting work must balance over a period), "
+            "or allow a larger residual with closure_tol (--closure-tol)"
+        )
+
+
+def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -> ExcessWork:
+    if work.size == 0:
+        raise InputError(f"no {what} given; give the signed values of the intervals in order")
+    _check_closure(work, closure_tol, what)
+    E = np.concatenate(([0.0], np.cumsum(work)))
+    return ExcessWork(work=work, E=E, labels=point_labels(work.size + 1), closure_tol=closure_tol, **extra)
+
+
+def _array(values, name: str) -> np.ndarray:
+    try:
+        arr = np.array(values, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected numbers, got {values!r}") from None
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise InputError(f"{name}[{i}] = {arr[i]!r} is not a finite number")
+    arr.setflags(write=False)
+    return arr
+
+
+def _positive(value, name: str, hint: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} = {value!r} is not a number; {hint}") from None
+    if not (v > 0 and math.isfinite(v)):
+        raise InputError(f"{name} = {value!r} must be a positive finite number; {hint}")
+    return v
+
+
+def from_work(work_J: Sequence[float], *, closure_tol: float = CLOSURE_TOL_MEASURED) -> ExcessWork:
+    """A cycle from the excess works A_i of its intervals, in J, in order (+ gain, − loss).
+
+    >>> from_work([-50, 550, -100, 125, -500, 25, -50]).delta_W_max    # W2
+    575.0
+    """
+    return _from_work_array(_array(work_J, "work"), closure_tol, "works")
+
+
+def from_areas(
+    areas_mm2: Sequence[float],
+    *,
+    mu_M: float,
+    mu_phi: float | None = None,
+    mu_phi_deg: float | None = None,
+    closure_tol: float = CLOSURE_TOL_MEASURED,
+) -> ExcessWork:
+    """A cycle from the signed areas f_i (mm²) measured between the M_d and M_r curves.
+
+    Parameters
+    ----------
+    areas_mm2 : sequence of float, mm²
+        Areas in order along the period, + where M_d > M_r.
+    mu_M : float, N·m/mm
+        Moment scale of the drawing.
+    mu_phi : float, rad/mm
+        Angle scale; or ``mu_phi_deg`` in degrees per mm (English textbooks).
+
+    Examples
+    --------
+    W4 as drawn (μ_M = 1 kG·m/mm, 2π = 80 mm with π taken as 3, so μ_φ = 0.075 rad/mm):
+
+    >>> from_areas([200, -200, -200, 200], mu_M=1.0, mu_phi=0.075).E.tolist()
+    [0.0, 15.0, 0.0, -15.0, 0.0]
+    """
+    mu_M = _positive(mu_M, "mu_M", "give the moment scale in N·m per mm")
+    if (mu_phi is None) == (mu_phi_deg is None):
+        raise InputError("give the angle scale once: mu_phi (rad/mm) or mu_phi_deg (degrees/mm)")
+    if mu_phi is None:
+        mu_phi = math.radians(_positive(mu_phi_deg, "mu_phi_deg", "give the angle scale in degrees per mm"))
+    mu_phi = _positive(mu_phi, "mu_phi", "give the angle scale in rad per mm")
+    areas = _array(areas_mm2, "areas")
+    work = areas * (mu_M * mu_phi)
+    work.setflags(write=False)
+    return _from_work_array(work, closure_tol, "areas", areas_mm2=areas, mu_M=mu_M, mu_phi=mu_phi)
+
+
+def from_levels(E: Sequence[float], *, closure_tol: float = CLOSURE_TOL_MEASURED) -> ExcessWork:
+    """A cycle from its running energy levels E_0 … E_n (J), the last returning to the first.
+
+    >>> from_levels([0, -50, 500, 400, 525, 25, 50, 0]).work.tolist()
+    [-50.0, 550.0, -100.0, 125.0, -500.0, 25.0, -50.0]
+    """
+    levels = _array(E, "levels")
+    if levels.size < 2:
+        raise InputError("give at least two energy levels (the cycle's start and its end)")
+    work = np.diff(levels)
+    return _from_work_array(work, closure_tol, "levels' steps")
+
+
+def from_moments(
+    M_d: MomentCurve | None = None,
+    M_r: MomentCurve | None = None,
+    *,
+    boundaries: Sequence[float] | None = None,
+    closure_tol: float = CLOSURE_TOL_CURVES,
+) -> ExcessWork:
+    """A cycle from the moment curves: intervals between the crossings of M_d and M_r.
+
+    When only one curve is given, the other is the constant that balances the work over
+    the period. The intervals start at the start of the period (point a) and end at
+    each point where M_d − M_r changes sign: a crossing inside a chord (found exactly),
+    at a vertex, or at a jump. Where the curves touch without crossing, or coincide over a
+    stretch, no new interval starts (a coincident stretch ends its interval at its start).
+    ``boundaries`` adds boundaries at given angles (e.g. the positions 0…m, as Russian
+    course sheets split the period).
+
+    Examples
+    --------
+    W3: step resisting moment, constant driving moment by work balance:
+
+    >>> from math import pi
+    >>> ew = from_moments(M_r=MomentCurve.steps([(0, pi / 4, 60.0), (pi / 4, 2 * pi, 10.0)]))
+    >>> ew.work.round(4).tolist(), round(ew.delta_W_max, 4)
+    ([-34.3612, 34.3612], 34.3612)
+    """
+    M_d, M_r = balance(M_d, M_r)
+    D = M_d - M_r
+    if boundaries is not None:
+        forced = _array(boundaries, "boundaries")
+        if ((forced < D.phi[0] - 1e-12) | (forced > D.phi[-1] + 1e-12)).any():
+            raise InputError(f"boundaries must lie within the period {D.phi[0]:g}..{D.phi[-1]:g} rad")
+        forced = np.clip(forced, D.phi[0], D.phi[-1])
+        D = D.with_knots(forced)
+    else:
+        forced = np.empty(0)
+    p, M = D.phi, D.M
+    keep = np.diff(p) > 0            # chords of positive length (a jump is a zero-length chord)
+    a, b = p[:-1][keep], p[1:][keep]
+    s0, s1 = M[:-1][keep], M[1:][keep]
+    split = np.sign(s0) * np.sign(s1) < 0   # a crossing strictly inside the chord (no underflow)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        x = np.where(split, a + (b - a) * s0 / np.where(split, s0 - s1, 1.0), b)
+    # pieces: each chord, or its two parts on either side of its crossing
+    counts = 1 + split
+    pos = np.cumsum(counts) - counts
+    n = int(counts.sum())
+    ends = np.empty(n)
+    integ = np.empty(n)
+    ends[pos] = x
+    integ[pos] = 0.5 * (s0 + np.where(split, 0.0, s1)) * (x - a)
+    ends[pos[split] + 1] = b[split]
+    integ[pos[split] + 1] = 0.5 * s1[split] * (b[split] - x[split])
+
+    total = float(np.abs(integ).sum())
+    residual = float(integ.sum())
+    # round-off floor: work of a moment 1e-12 of the largest moment over the period
+    noise = 1e-12 * float(max(np.abs(M_d.M).max(), np.abs(M_r.M).max())) * D.period
+    if abs(residual) > closure_tol * total + noise:
+        raise UnbalancedCycleError(
+            f"the driving and resisting work do not balance over the period: ∫(M_d − M_r)dφ = {_num(residual)} J, "
+            f"{abs(residual) / total:.3g} of ∫|M_d − M_r|dφ = {_num(total)} J, beyond the tolerance {closure_tol:g}"
+            + ("; M_d − M_r never changes sign, so the speed cannot be steady" if (integ >= 0).all() or (integ <= 0).all() else "")
+            + ". Give only one of M_d, M_r (the other is then balanced), or fix the curves"
+        )
+    sign = np.sign(integ)
+    sign[np.abs(integ) <= 1e-13 * total + noise * 1e-3] = 0.0
+    nz = np.flatnonzero(sign)
+    change = nz[:-1][sign[nz[:-1]] != sign[nz[1:]]]          # piece after which the sign changes
+    is_boundary = np.zeros(n, dtype=bool)
+    is_boundary[change] = True                                 # boundary at the end of that piece
+    if forced.size:
+        is_boundary |= np.isin(ends, forced)
+    is_boundary[-1] = True
+    idx = np.flatnonzero(is_boundary)
+    E_pieces = np.concatenate(([0.0], np.cumsum(integ)))
+    E = np.concatenate(([0.0], E_pieces[idx + 1]))
+    phi = np.concatenate(([p[0]], ends[idx]))
+    # drop a boundary repeated at the period start (e.g. a forced boundary at φ = 0)
+    keep_b = np.concatenate(([True], phi[1:] > phi[:-1]))
+    E, phi = E[keep_b], phi[keep_b]
+    work = np.diff(E)
+    for arr in (E, phi, work):
+        arr.setflags(write=False)
+    return ExcessWork(
+        work=work, E=E, labels=point_labels(E.size), phi=phi, M_d=M_d, M_r=M_r, closure_tol=closure_tol
+    )

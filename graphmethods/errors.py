@@ -1,0 +1,30 @@
+"""The exceptions graphmethods raises.
+
+Every error the toolkit raises on bad input is a :class:`GraphmethodsError`;
+its message says what is wrong, where, and what to do. The command line prints
+the message as one line and exits non-zero.
+"""
+
+
+class GraphmethodsError(Exception):
+    """Base class of every error graphmethods raises on purpose."""
+
+
+class InputError(GraphmethodsError, ValueError):
+    """Input that cannot be used: unparsable, out of range, NaN, wrong shape."""
+
+
+class UnbalancedCycleError(InputError):
+    """A cycle whose driving and resisting work do not balance (closure residual too large)."""
+
+
+class AssemblyError(InputError):
+    """A linkage that cannot be assembled at some position (a length condition is violated)."""
+
+
+class MotionError(GraphmethodsError):
+    """A periodic motion that cannot exist (e.g. the driving work cannot sustain the speed)."""
+
+
+class OutputExistsError(GraphmethodsError):
+    """Refusing to overwrite an existing file without being asked (use overwrite=True / --force)."""

@@ -1,0 +1,70 @@
+"""The published worked examples W1–W4 (domain.md §9) as built-in problems.
+
+>>> [p.id for p in all_examples()]
+['W1', 'W2', 'W3', 'W4-drawing', 'W4-exact']
+>>> round(w2().flywheel().J_F, 2)       # the source prints 60.16, an arithmetic slip
+60.69
+"""
+
+from __future__ import annotations
+
+import math
+
+from graphmethods.dynamics.moments import MomentCurve
+from graphmethods.problems.cycle import CycleProblem
+
+PI = math.pi
+
+
+def w1() -> CycleProblem:
+    """W1: diesel generator, energy indicator diagram (Chinese textbook)."""
+    return CycleProblem(
+        id="W1", title="Diesel generator: energy indicator diagram",
+        source="Chinese textbook, diesel generator (energy indicator diagram)",
+        work_J=(50, -550, 100, -125, 500, -25, 50), n_rpm=600.0, delta=1 / 300,
+    )
+
+
+def w2() -> CycleProblem:
+    """W2: engine crankshaft, points a…h (Chinese textbook)."""
+    return CycleProblem(
+        id="W2", title="Engine crankshaft: excess work from a to h",
+        source="Chinese textbook, engine crankshaft example",
+        work_J=(-50, 550, -100, 125, -500, 25, -50), n_rpm=120.0, delta=0.06,
+        note="the source prints J_F = 60.16 kg·m², an arithmetic slip; 900·575/(0.06·π²·120²) = 60.69",
+    )
+
+
+def w3() -> CycleProblem:
+    """W3: step resisting moment, constant driving moment by work balance."""
+    return CycleProblem(
+        id="W3", title="Step resisting moment: flywheel",
+        source="Chinese textbook exercise, step resisting moment",
+        M_r=MomentCurve.steps([(0.0, PI / 4, 60.0), (PI / 4, 2 * PI, 10.0)]), n_rpm=100.0, delta=0.05,
+    )
+
+
+def w4_drawing() -> CycleProblem:
+    """W4 as drawn in the lecture: μ_M = 1 kG·m/mm, 2π = 80 mm with π taken as 3 (μ_φ = 0.075 rad/mm)."""
+    return CycleProblem(
+        id="W4-drawing", title="Kinetic energy graph (lecture drawing, π ≈ 3)",
+        source="Russian lecture, kinetic energy graph (units kG·m)",
+        areas_mm2=(200, -200, -200, 200), mu_M=1.0, mu_phi=0.075, J_e=0.8, omega_0=10.0,
+        note="old units: moments in kG·m, J_e in kG·m·s²; the lecture takes π ≈ 3",
+    )
+
+
+def w4_exact() -> CycleProblem:
+    """W4 from the exact data: triangular M_r (0 → 40 at π → 0), M_d = 20, four equal parts."""
+    return CycleProblem(
+        id="W4-exact", title="Kinetic energy graph (exact data)",
+        source="Russian lecture, kinetic energy graph (units kG·m)",
+        M_d=MomentCurve.constant(20.0), M_r=MomentCurve.points([0.0, PI, 2 * PI], [0.0, 40.0, 0.0]),
+        boundaries=(0.0, PI / 2, PI, 3 * PI / 2, 2 * PI), J_e=0.8, omega_0=10.0,
+        note="with exact π each area is 5π = 15.71 kG·m instead of the drawing's 15",
+    )
+
+
+def all_examples() -> list[CycleProblem]:
+    """W1, W2, W3, W4 (as drawn) and W4 (exact)."""
+    return [w1(), w2(), w3(), w4_drawing(), w4_exact()]

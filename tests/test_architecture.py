@@ -1,0 +1,75 @@
+"""The house rules: imports only go downward, and importing the package is light."""
+
+import ast
+import pathlib
+import subprocess
+import sys
+
+PKG = pathlib.Path(__file__).resolve().parents[1] / "graphmethods"
+
+# Layer of each top-level part of the package; a module may import only parts of
+# a lower or equal layer (equal: within its own part).
+LAYERS = {
+    "errors": 0, "units": 0, "__init__": 0,
+    "kinematics": 1,
+    "dynamics": 2,
+    "problems": 3,
+    "scene": 4,
+    "render": 5,
+    "sheets": 6,
+    "bench": 7, "cli": 8, "__main__": 9,
+}
+
+
+def _part(path: pathlib.Path) -> str:
+    rel = path.relative_to(PKG)
+    return rel.parts[0].removesuffix(".py")
+
+
+def _imported_parts(path: pathlib.Path):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    for node in ast.walk(tree):
+        names = []
+        if isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:  # relative import: resolve against the module's package
+                base = path.relative_to(PKG).parts[:-1]
+                up = base[: len(base) - (node.level - 1)] if node.level > 1 else base
+                mod = ".".join(("graphmethods",) + tuple(up) + ((node.module,) if node.module else ()))
+                names = [mod]
+                if not node.module:
+                    names = [mod + "." + a.name for a in node.names]
+            else:
+                names = [node.module or ""]
+        for name in names:
+            parts = name.split(".")
+            if parts[0] == "graphmethods" and len(parts) > 1:
+                yield parts[1], node.lineno
+
+
+def test_every_part_has_a_layer():
+    for path in PKG.rglob("*.py"):
+        assert _part(path) in LAYERS, f"{path}: add its part to LAYERS in this test"
+
+
+def test_imports_only_go_downward():
+    bad = []
+    for path in PKG.rglob("*.py"):
+        own = _part(path)
+        for part, line in _imported_parts(path):
+            if part not in LAYERS:
+                continue
+            if LAYERS[part] > LAYERS[own] or (LAYERS[part] == LAYERS[own] and part != own and LAYERS[own] > 0):
+                bad.append(f"{path.relative_to(PKG.parent)}:{line} imports graphmethods.{part}")
+    assert not bad, "imports must go downward only:\n" + "\n".join(bad)
+
+
+def test_import_graphmethods_is_light():
+    code = (
+        "import sys, graphmethods, graphmethods.kinematics, graphmethods.dynamics, graphmethods.scene;"
+        "heavy = [m for m in ('matplotlib', 'svgwrite', 'shapely') if m in sys.modules];"
+        "print(','.join(heavy))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "", f"import graphmethods loaded {out.stdout.strip()}"
