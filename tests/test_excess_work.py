@@ -235,3 +235,18 @@ def test_signs_alternate_between_crossings(values):
     inner = np.sign(cyc.work[np.abs(cyc.work) > 1e-9])
     # the period start is a boundary too, so two neighbours may share a sign only across it
     assert (inner[1:-1][:-1] != inner[1:-1][1:]).all() if inner.size > 3 else True
+
+
+@given(piecewise, st.floats(-50, 50))
+def test_combining_fast_paths_agree_with_the_general_union(values, c):
+    from graphmethods.dynamics.moments import _combine
+    curve = _curve(values)
+    const2 = MomentCurve.constant(c)                                        # single chord: fast path
+    const3 = MomentCurve([0.0, 1.234, 2 * PI], [c, c, c])                   # extra knot: general path
+    x = np.linspace(0, 2 * PI, 97)
+    for sign in (1.0, -1.0):
+        fast, slow = _combine(curve, const2, sign), _combine(curve, const3, sign)
+        np.testing.assert_allclose(fast(x), slow(x), atol=1e-9)
+        np.testing.assert_allclose(_combine(const2, curve, sign)(x), _combine(const3, curve, sign)(x), atol=1e-9)
+    same = MomentCurve(curve.phi, curve.M * 0.5)                             # same knots: fast path
+    np.testing.assert_allclose((curve - same)(x), 0.5 * curve(x), atol=1e-9)

@@ -18,6 +18,7 @@ from graphmethods.errors import GraphmethodsError
 COMMANDS = {
     "flywheel": "flywheel",
     "examples": "examples",
+    "bench": "bench",
 }
 
 

@@ -67,8 +67,6 @@ class ExcessWork:
     E : ndarray, J
         Running energy at the interval boundaries, ``E[0] = 0``, ``E[k] = Σ_{i<k} A_i``;
         ``E[-1]`` is the closure residual.
-    labels : tuple of str
-        Names of the boundaries: a, b, c, …
     phi : ndarray or None, rad
         Angles of the boundaries (moment-curve input only).
     areas_mm2 : ndarray or None
@@ -83,7 +81,6 @@ class ExcessWork:
 
     work: np.ndarray
     E: np.ndarray
-    labels: tuple[str, ...]
     phi: np.ndarray | None = None
     areas_mm2: np.ndarray | None = None
     mu_M: float | None = None
@@ -93,6 +90,11 @@ class ExcessWork:
     closure_tol: float = CLOSURE_TOL_MEASURED
 
     # ----------------------------------------------------------------- derived values
+    @property
+    def labels(self) -> tuple[str, ...]:
+        """Names of the boundaries: a, b, c, …"""
+        return point_labels(self.E.size)
+
     @property
     def index_E_max(self) -> int:
         """Index (into ``E``/``labels``) of the highest energy level (first one on a tie)."""
@@ -271,7 +273,7 @@ def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -
         raise InputError(f"no {what} given; give the signed values of the intervals in order")
     _check_closure(work, closure_tol, what)
     E = np.concatenate(([0.0], np.cumsum(work)))
-    return ExcessWork(work=work, E=E, labels=point_labels(work.size + 1), closure_tol=closure_tol, **extra)
+    return ExcessWork(work=work, E=E, closure_tol=closure_tol, **extra)
 
 
 def _array(values, name: str) -> np.ndarray:
@@ -394,12 +396,16 @@ def from_moments(
     else:
         forced = np.empty(0)
     p, M = D.phi, D.M
-    keep = np.diff(p) > 0            # chords of positive length (a jump is a zero-length chord)
-    a, b = p[:-1][keep], p[1:][keep]
-    s0, s1 = M[:-1][keep], M[1:][keep]
-    split = np.sign(s0) * np.sign(s1) < 0   # a crossing strictly inside the chord (no underflow)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        x = np.where(split, a + (b - a) * s0 / np.where(split, s0 - s1, 1.0), b)
+    a, b, s0, s1 = p[:-1], p[1:], M[:-1], M[1:]
+    keep = b > a                     # chords of positive length (a jump is a zero-length chord)
+    if not keep.all():
+        a, b, s0, s1 = a[keep], b[keep], s0[keep], s1[keep]
+    # a crossing strictly inside the chord (compared, not multiplied: no underflow)
+    split = ((s0 < 0) & (s1 > 0)) | ((s0 > 0) & (s1 < 0))
+    x = b.copy()
+    if split.any():
+        i = np.flatnonzero(split)
+        x[i] = a[i] + (b[i] - a[i]) * s0[i] / (s0[i] - s1[i])
     # pieces: each chord, or its two parts on either side of its crossing
     counts = 1 + split
     pos = np.cumsum(counts) - counts
@@ -442,5 +448,5 @@ def from_moments(
     for arr in (E, phi, work):
         arr.setflags(write=False)
     return ExcessWork(
-        work=work, E=E, labels=point_labels(E.size), phi=phi, M_d=M_d, M_r=M_r, closure_tol=closure_tol
+        work=work, E=E, phi=phi, M_d=M_d, M_r=M_r, closure_tol=closure_tol
     )

@@ -289,6 +289,14 @@ def _combine(a: MomentCurve, b: MomentCurve, sign: float) -> MomentCurve:
             f"the curves cover different periods ({a.start:g}..{a.start + a.period:g} and "
             f"{b.start:g}..{b.start + b.period:g} rad); give both over the same period"
         )
+    if a.phi.size == b.phi.size and np.array_equal(a.phi, b.phi):       # same knots: no union needed
+        return MomentCurve(a.phi, a.M + sign * b.M, a.approx_error + b.approx_error)
+    for x, y, s in ((a, b, sign), (b, a, sign)):                         # y a single chord (a constant)
+        if y.phi.size == 2:
+            t = (x.phi - y.phi[0]) / (y.phi[1] - y.phi[0])
+            line = y.M[0] + t * (y.M[1] - y.M[0])
+            M = x.M + s * line if x is a else line + s * x.M
+            return MomentCurve(x.phi, M, a.approx_error + b.approx_error)
     u = knots_union(a, b)
     la, ra = a.limits(u)
     lb, rb = b.limits(u)

@@ -1,0 +1,44 @@
+"""``graphmethods bench``: speed against error, as a Markdown table and JSON."""
+
+from __future__ import annotations
+
+import json
+import pathlib
+import sys
+
+from graphmethods.errors import InputError, OutputExistsError
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("bench", help="measure speed against error (Markdown table and JSON)",
+                       description="Measure each method's time (median of repeats) and error against the exact "
+                       "solution, in one run. --quick finishes in well under a minute.")
+    p.add_argument("--quick", action="store_true", help="small sizes, for CI")
+    p.add_argument("--only", action="append", metavar="SECTION", help="run only this section (repeatable)")
+    p.add_argument("--out", metavar="DIR", help="also write bench.md, bench.json (and the plot) into DIR")
+    p.add_argument("--force", action="store_true", help="overwrite existing files in --out")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from graphmethods import bench
+
+    if args.only:
+        unknown = sorted(set(args.only) - set(bench.SECTIONS))
+        if unknown:
+            raise InputError(f"unknown section {', '.join(unknown)}; choose from {', '.join(bench.SECTIONS)}")
+    out = pathlib.Path(args.out) if args.out else None
+    if out is not None:
+        targets = [out / "bench.md", out / "bench.json"]
+        existing = [str(t) for t in targets if t.exists()]
+        if existing and not args.force:
+            raise OutputExistsError(f"{', '.join(existing)} exist; add --force to overwrite")
+    rows = bench.run_all(quick=args.quick, sections=args.only,
+                         progress=lambda name: print(f"… {name}", file=sys.stderr, flush=True))
+    md = bench.to_markdown(rows)
+    print(md)
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "bench.md").write_text(md, encoding="utf-8")
+        (out / "bench.json").write_text(json.dumps(bench.to_json(rows), indent=1), encoding="utf-8")
+    return 0
