@@ -1,0 +1,165 @@
+"""SVG output through svgwrite: scale-true, deterministic, escaped. The only module importing svgwrite.
+
+The page is ``width="297mm" height="210mm" viewBox="0 0 297 210"``, so one user
+unit prints as one millimetre. Every number goes through
+:func:`~graphmethods.scene.numbers.format_mm`; group ids come from element names;
+there are no dates, so the same scene gives byte-identical SVG in any process.
+User text is escaped by the XML writer (and characters XML cannot hold are
+replaced by U+FFFD).
+
+>>> from graphmethods.scene import Scene, Page, Text
+>>> svg = to_string(Scene(Page("A4", "portrait"), (Text((10, 20), "a < b & M_d", name="t"),), name="demo"))
+>>> 'width="210mm"' in svg and 'viewBox="0 0 210 297"' in svg and "a &lt; b &amp; M" in svg
+True
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+
+from graphmethods.render.base import draw
+from graphmethods.render.files import write_atomic
+from graphmethods.scene.numbers import format_mm as fmt
+from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
+
+#: font list: DejaVu Sans (Greek, Cyrillic), then common CJK fonts for Chinese text
+FONT_FAMILY = ("'DejaVu Sans', 'Liberation Sans', Arial, 'Noto Sans CJK SC', 'Source Han Sans SC', "
+               "'Microsoft YaHei', 'PingFang SC', 'WenQuanYi Micro Hei', sans-serif")
+
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
+
+
+def clean_text(text: str) -> str:
+    """Text as XML can hold it: control characters other than tab/newline become U+FFFD.
+
+    >>> clean_text("a\\x00b")
+    'a\\ufffdb'
+    """
+    return _NOT_XML.sub("\ufffd", text)
+
+
+def _indent(elem, level: int = 0) -> None:
+    """Indent for readable diffs, never inside <text> (whitespace there would show)."""
+    if elem.tag in ("text", "title") or len(elem) == 0:
+        return
+    pad = "\n" + "  " * (level + 1)
+    elem.text = pad
+    for child in elem:
+        _indent(child, level + 1)
+        child.tail = pad
+    elem[-1].tail = "\n" + "  " * level
+
+
+class SvgRenderer:
+    """A :class:`~graphmethods.render.base.Renderer` that builds an SVG document with svgwrite."""
+
+    def __init__(self):
+        import svgwrite  # the only import of svgwrite in graphmethods
+
+        self._svgwrite = svgwrite
+        self.dwg = None
+        self._stack = []
+
+    def begin(self, width_mm, height_mm, *, title, name):
+        W, H = fmt(width_mm), fmt(height_mm)
+        self.dwg = self._svgwrite.Drawing(size=(f"{W}mm", f"{H}mm"), viewBox=f"0 0 {W} {H}", profile="full",
+                                          debug=False)
+        if title:
+            self.dwg.set_desc(title=clean_text(title))
+        root = self.dwg.g(id=name)
+        root["font-family"] = FONT_FAMILY
+        root["stroke-linejoin"] = "round"
+        self.dwg.add(root)
+        self._stack = [root]
+
+    def _add(self, elem):
+        self._stack[-1].add(elem)
+        return elem
+
+    def begin_group(self, id):
+        self._stack.append(self._add(self.dwg.g(id=id)))
+
+    def end_group(self):
+        self._stack.pop()
+
+    @staticmethod
+    def _stroke(elem, style, filled: bool):
+        elem["fill"] = style.fill if (filled and style.fill) else "none"
+        if style.stroke and style.width_mm > 0:
+            elem["stroke"] = style.stroke
+            elem["stroke-width"] = fmt(style.width_mm)
+            if style.dash:
+                elem["stroke-dasharray"] = " ".join(fmt(d) for d in style.dash)
+        return elem
+
+    def path(self, points, style, closed):
+        pts = [(fmt(x), fmt(y)) for x, y in points]
+        elem = self.dwg.polygon(pts) if closed else self.dwg.polyline(pts)
+        self._add(self._stroke(elem, style, filled=False))
+
+    def polygon(self, points, style):
+        pts = [(fmt(x), fmt(y)) for x, y in points]
+        self._add(self._stroke(self.dwg.polygon(pts), style, filled=True))
+
+    def circle(self, cx, cy, r, style):
+        elem = self.dwg.circle()
+        elem["cx"], elem["cy"], elem["r"] = fmt(cx), fmt(cy), fmt(r)
+        self._add(self._stroke(elem, style, filled=True))
+
+    def text(self, label):
+        size = label.size_mm
+        elem = self.dwg.text("")
+        elem["x"], elem["y"], elem["font-size"] = fmt(label.x), fmt(label.y), fmt(size)
+        if label.anchor != "start":
+            elem["text-anchor"] = label.anchor
+        if label.bold:
+            elem["font-weight"] = "bold"
+        if label.color != "#000000":
+            elem["fill"] = label.color
+        runs = label.runs
+        if len(runs) == 1 and runs[0][1] == 0:
+            elem.text = clean_text(runs[0][0])
+        else:
+            offset = 0.0  # current baseline shift, mm (down positive)
+            for chunk, shift in runs:
+                target = {0: 0.0, -1: SUB_SHIFT * size, 1: -SUP_SHIFT * size}[shift]
+                span = self.dwg.tspan(clean_text(chunk))
+                if abs(target - offset) > 1e-12:
+                    span["dy"] = fmt(target - offset)
+                    offset = target
+                if shift:
+                    span["font-size"] = fmt(size * SCRIPT_SCALE)
+                elem.add(span)
+        self._add(elem)
+
+    def end(self) -> str:
+        root = self.dwg.get_xml()
+        _indent(root)
+        return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
+
+
+def to_string(scene) -> str:
+    """The SVG document of ``scene`` (str); byte-identical for the same scene in any process."""
+    return draw(scene, SvgRenderer())
+
+
+def to_bytes(scene) -> bytes:
+    """The SVG document of ``scene`` encoded as UTF-8."""
+    return to_string(scene).encode("utf-8")
+
+
+def save(scene, path, *, overwrite: bool = False):
+    """Write ``scene`` as SVG to ``path`` atomically; refuses to replace a file unless ``overwrite``.
+
+    Raises
+    ------
+    OutputExistsError
+        If ``path`` exists and ``overwrite`` is false.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+    """
+    return write_atomic(path, to_bytes(scene), overwrite=overwrite)

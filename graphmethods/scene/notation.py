@@ -1,0 +1,170 @@
+"""Notation profiles: the symbols, words and units of three textbook traditions.
+
+``en`` (English theory of machines), ``ru`` (Russian ТММ) and ``zh`` (Chinese 机械原理)
+write the same construction differently: M_d/M_r vs M_д/M_с vs M_ed/M_er, "excess
+work" vs "избыточная работа" vs 盈功/亏功, ΔW_max vs A_изб, "M, N·m" vs "M, Н·м" vs
+"M/(N·m)". A figure asks its profile for every string it draws, so one switch
+changes the whole figure.
+
+>>> ru = get("ru")
+>>> ru.sym("M_d"), ru.sym("delta_W_max"), ru.unit("N·m"), ru.quantity("M", "N·m")
+('M_д', 'A_{изб}', 'Н·м', 'M, Н·м')
+>>> get("zh").quantity("M", "N·m"), get("zh").word("gain")
+('M/(N·m)', '盈功')
+>>> get("ru").number(0.025)
+'0,025'
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Mapping
+
+from graphmethods.errors import InputError
+from graphmethods.scene.numbers import format_value
+
+_SYMBOLS = {
+    #            en               ru                 zh
+    "M_d":       ("M_d",          "M_д",             "M_{ed}"),
+    "M_r":       ("M_r",          "M_с",             "M_{er}"),
+    "M":         ("M",            "M",               "M"),
+    "phi":       ("φ",            "φ",               "φ"),
+    "f":         ("f",            "f",               "f"),
+    "A":         ("A",            "A",               "W"),
+    "E":         ("E",            "ΔT",              "E"),
+    "dE":        ("ΔE",           "ΔT",              "ΔE"),
+    "T":         ("T",            "T",               "E"),
+    "E_max":     ("E_{max}",      "ΔT_{max}",        "E_{max}"),
+    "E_min":     ("E_{min}",      "ΔT_{min}",        "E_{min}"),
+    "T_max":     ("T_{max}",      "T_{max}",         "E_{max}"),
+    "T_min":     ("T_{min}",      "T_{min}",         "E_{min}"),
+    "T_0":       ("T_0",          "T_0",             "E_0"),
+    "delta_W_max": ("ΔW_{max}",   "A_{изб}",         "ΔW_{max}"),
+    "mu_M":      ("μ_M",          "μ_M",             "μ_M"),
+    "mu_phi":    ("μ_φ",          "μ_φ",             "μ_φ"),
+    "mu_E":      ("μ_E",          "μ_A",             "μ_W"),
+    "mu_T":      ("μ_T",          "μ_T",             "μ_E"),
+}
+
+_WORDS = {
+    "moment_diagram":   ("Equivalent moments and excess work",
+                         "Приведённые моменты и избыточные работы",
+                         "等效力矩与盈亏功"),
+    "excess_work_table": ("Excess-work table",
+                          "Таблица избыточных работ",
+                          "盈亏功计算表"),
+    "energy_indicator": ("Energy indicator diagram",
+                         "Векторная диаграмма избыточных работ",
+                         "能量指示图"),
+    "energy_graph":     ("Fluctuation of energy",
+                         "Приращение кинетической энергии",
+                         "动能变化曲线"),
+    "kinetic_energy_graph": ("Kinetic energy",
+                             "График кинетической энергии",
+                             "动能曲线"),
+    "excess_work":      ("excess work", "избыточная работа", "盈亏功"),
+    "gain":             ("gain", "избыток", "盈功"),
+    "loss":             ("loss", "недостаток", "亏功"),
+    "interval":         ("Interval", "Участок", "区间"),
+    "area":             ("Area", "Площадь", "面积"),
+    "work":             ("Excess work", "Избыточная работа", "盈亏功"),
+    "point":            ("Point", "Точка", "点"),
+    "level":            ("Energy", "Приращение энергии", "能量"),
+    "sum":              ("Sum (closure)", "Сумма (замыкание)", "总和（闭合）"),
+    "closure":          ("closure", "замыкание", "闭合"),
+    "residual":         ("closure residual", "невязка", "闭合误差"),
+    "highest":          ("highest", "наибольшее", "最高点"),
+    "lowest":           ("lowest", "наименьшее", "最低点"),
+    "scales":           ("Scales", "Масштабы", "比例尺"),
+    "problem":          ("Problem", "Задача", "题目"),
+    "figure":           ("Figure", "Рисунок", "图"),
+    "max_label":        ("max", "max", "max"),
+    "min_label":        ("min", "min", "min"),
+    "gain_loss":        ("+ gain, − loss", "+ избыток, − недостаток", "+ 盈功, − 亏功"),
+}
+
+_UNITS_RU = {
+    "N·m": "Н·м", "J": "Дж", "rad": "рад", "mm": "мм", "mm²": "мм²", "kG·m": "кГ·м",
+    "kg·m²": "кг·м²", "s⁻¹": "с⁻¹", "rad/s": "рад/с", "N": "Н", "m": "м", "s": "с", "kg": "кг",
+    "°": "°",
+}
+
+_PROFILES = ("en", "ru", "zh")
+
+
+@dataclass(frozen=True)
+class Notation:
+    """One textbook tradition's symbols (markup), words, units and number style.
+
+    Use :func:`get` to obtain one; ``code`` is ``"en"``, ``"ru"`` or ``"zh"``.
+    """
+
+    code: str
+    symbols: Mapping[str, str] = field(repr=False)
+    words: Mapping[str, str] = field(repr=False)
+    units: Mapping[str, str] = field(repr=False)
+    decimal: str = "."
+    quantity_style: str = "comma"   # "comma": "M, N·m"; "slash": "M/(N·m)"
+
+    def sym(self, key: str) -> str:
+        """The symbol (markup) for a concept key such as ``"M_d"`` or ``"delta_W_max"``."""
+        try:
+            return self.symbols[key]
+        except KeyError:
+            raise InputError(f"notation {self.code}: no symbol {key!r}; known: {', '.join(sorted(self.symbols))}") from None
+
+    def word(self, key: str) -> str:
+        """The words for a concept key such as ``"energy_indicator"`` or ``"gain"``."""
+        try:
+            return self.words[key]
+        except KeyError:
+            raise InputError(f"notation {self.code}: no word {key!r}; known: {', '.join(sorted(self.words))}") from None
+
+    def unit(self, unit: str) -> str:
+        """A unit as this tradition writes it (``"J"`` -> ``"Дж"`` in ru); unknown units pass through."""
+        return self.units.get(unit, unit)
+
+    def quantity(self, symbol: str, unit: str) -> str:
+        """An axis or column name with its unit: ``"M, N·m"`` (en, ru) or ``"M/(N·m)"`` (zh)."""
+        u = self.unit(unit)
+        if not u:
+            return symbol
+        if self.quantity_style == "slash":
+            simple = all(c not in u for c in "·/ ")
+            return f"{symbol}/{u}" if simple else f"{symbol}/({u})"
+        return f"{symbol}, {u}"
+
+    def number(self, value: float, *, sig: int = 4, plus: bool = False) -> str:
+        """A value written with this tradition's decimal separator and a typographic minus."""
+        return format_value(value, sig=sig, decimal=self.decimal, plus=plus)
+
+
+def _build(code: str) -> Notation:
+    i = _PROFILES.index(code)
+    symbols = MappingProxyType({k: v[i] for k, v in _SYMBOLS.items()})
+    words = MappingProxyType({k: v[i] for k, v in _WORDS.items()})
+    units = MappingProxyType(dict(_UNITS_RU) if code == "ru" else {})
+    return Notation(code, symbols, words, units, decimal="," if code == "ru" else ".",
+                    quantity_style="slash" if code == "zh" else "comma")
+
+
+NOTATIONS = MappingProxyType({code: _build(code) for code in _PROFILES})
+
+
+def get(notation=None) -> Notation:
+    """The profile for ``"en"``, ``"ru"`` or ``"zh"`` (``None`` means ``"en"``; a Notation passes through).
+
+    Raises
+    ------
+    InputError
+        For an unknown code.
+    """
+    if notation is None:
+        return NOTATIONS["en"]
+    if isinstance(notation, Notation):
+        return notation
+    try:
+        return NOTATIONS[str(notation).lower()]
+    except KeyError:
+        raise InputError(f"unknown notation {notation!r}; use one of {', '.join(_PROFILES)}") from None

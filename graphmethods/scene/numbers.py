@@ -1,0 +1,104 @@
+"""Numbers on paper: the one millimetre formatter and the formatter of physical values.
+
+:func:`format_mm` is the only way a coordinate becomes text in an output file
+(3 decimals of a millimetre, trailing zeros stripped, ``-0`` written ``0``).
+:func:`format_value` writes a physical value for a label, with a typographic
+minus sign and the decimal separator of the notation profile.
+
+>>> format_mm(12.5), format_mm(-0.0001), format_mm(3.14159), format_mm(100.0)
+('12.5', '0', '3.142', '100')
+>>> format_value(-550.0), format_value(34.36116964863836), format_value(0.02618, decimal=",")
+('−550', '34.36', '0,02618')
+"""
+
+from __future__ import annotations
+
+import math
+
+from graphmethods.errors import InputError
+
+MINUS = "\u2212"
+
+
+def format_mm(x: float) -> str:
+    """Format a paper coordinate in mm: 3 decimals, trailing zeros stripped, -0 as 0.
+
+    Parameters
+    ----------
+    x : float, mm
+        A finite coordinate or length on the page.
+
+    Raises
+    ------
+    InputError
+        If ``x`` is NaN or infinite (a figure computed a coordinate from bad data).
+
+    Examples
+    --------
+    >>> format_mm(0.0005), format_mm(-2.0), format_mm(1e-9)
+    ('0.001', '-2', '0')
+    """
+    x = float(x)
+    if not math.isfinite(x):
+        raise InputError(f"cannot write the coordinate {x!r} mm: a figure element computed it from non-finite data")
+    s = f"{x:.3f}".rstrip("0").rstrip(".")
+    if s in ("-0", ""):
+        s = "0"
+    return s
+
+
+def _round_sig(value: float, sig: int) -> tuple[float, int]:
+    """``value`` rounded to ``sig`` significant digits and the number of decimals that takes."""
+    if value == 0:
+        return 0.0, 0
+    exponent = math.floor(math.log10(abs(value)))
+    decimals = max(0, sig - 1 - exponent)
+    rounded = round(value, decimals)
+    if rounded != 0 and math.floor(math.log10(abs(rounded))) > exponent:  # 9.9996 -> 10.00
+        decimals = max(0, decimals - 1)
+    return rounded, decimals
+
+
+def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool = False) -> str:
+    """Format a physical value for a label: ``sig`` significant digits, no trailing zeros.
+
+    Parameters
+    ----------
+    value : float
+        The value, in whatever unit the label states.
+    sig : int
+        Significant digits kept (integers with more digits are written in full).
+    decimal : str
+        Decimal separator (``","`` in the Russian profile).
+    plus : bool
+        Write an explicit ``+`` in front of positive values (signed excess work).
+
+    Examples
+    --------
+    >>> format_value(43.69476), format_value(1234567.0), format_value(15.0, plus=True)
+    ('43.69', '1234567', '+15')
+    >>> format_value(2.5e-6)
+    '2.5·10⁻⁶'
+    """
+    value = float(value)
+    if not math.isfinite(value):
+        raise InputError(f"cannot write the value {value!r} on a figure: it is not finite")
+    if value == 0:
+        return "0"
+    mag = abs(value)
+    if mag < 1e-4 or mag >= 1e12:
+        exponent = math.floor(math.log10(mag))
+        mantissa = format_value(mag / 10.0**exponent, sig=sig, decimal=decimal)
+        if mantissa == "10":
+            mantissa, exponent = "1", exponent + 1
+        sup = str(exponent).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+        text = f"{mantissa}·10{sup}"
+    else:
+        rounded, decimals = _round_sig(mag, sig)
+        text = f"{rounded:.{decimals}f}"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+        text = text.replace(".", decimal)
+    if value < 0:
+        return MINUS + text
+    return ("+" + text) if plus else text

@@ -1,0 +1,133 @@
+"""The sheet of paper: A4…A1, portrait or landscape, margins, frame and title block.
+
+>>> p = Page("A3", "landscape")
+>>> p.width_mm, p.height_mm
+(420.0, 297.0)
+>>> Page("A4", "portrait", frame=False).content_box()
+(10.0, 10.0, 200.0, 287.0)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from graphmethods.errors import InputError
+from graphmethods.scene import markup
+from graphmethods.scene.elements import Table
+from graphmethods.scene.primitives import Path, Style
+
+#: ISO 216 sizes in mm, (short side, long side)
+PAPER = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0), "A1": (594.0, 841.0)}
+
+FRAME = Style(width_mm=0.5)
+
+
+@dataclass(frozen=True)
+class TitleBlock:
+    """The block in the bottom-right corner of the frame: figure title, problem, scales used.
+
+    ``title`` is markup; ``problem`` is drawn literally (user text). ``scales`` are
+    scale captions (markup). ``headings`` are the three row names in the figure's
+    notation.
+    """
+
+    title: str
+    problem: str = ""
+    scales: tuple[str, ...] = ()
+    headings: tuple[str, str, str] = ("Figure", "Problem", "Scales")
+    size_mm: float = 3.2
+
+    def rows(self) -> tuple[tuple[str, str], ...]:
+        rows = [(self.headings[0], self.title)]
+        if self.problem:
+            rows.append((self.headings[1], markup.literal(self.problem)))
+        if self.scales:
+            rows.append((self.headings[2], ";  ".join(self.scales)))
+        return tuple(rows)
+
+    def table(self, right: float, bottom: float) -> Table:
+        """The block as a table whose bottom-right corner is at (right, bottom)."""
+        probe = Table((0.0, 0.0), self.rows(), header_rows=0, align="ll", size_mm=self.size_mm, row_height_mm=7.0,
+                      bold_rows=(0,), name="title-block")
+        w, h = probe.width_mm, probe.height_mm
+        w0 = max(w, 120.0)
+        widths = probe.column_widths()
+        widths = (widths[0], widths[1] + (w0 - w))
+        return Table((right - w0, bottom - h), self.rows(), col_widths_mm=widths, header_rows=0, align="ll",
+                     size_mm=self.size_mm, row_height_mm=7.0, bold_rows=(0,), name="title-block")
+
+
+@dataclass(frozen=True)
+class Page:
+    """A sheet: paper size, orientation, margins (top, right, bottom, left) in mm, frame, title block.
+
+    Parameters
+    ----------
+    size : {'A4', 'A3', 'A2', 'A1'}
+    orientation : {'portrait', 'landscape'}
+    margins_mm : (float, float, float, float), mm
+        Top, right, bottom, left; the frame is drawn on them.
+    frame : bool
+        Draw a frame on the margins.
+    title_block : TitleBlock or None
+        Drawn in the bottom-right corner inside the frame.
+    """
+
+    size: str = "A4"
+    orientation: str = "landscape"
+    margins_mm: tuple[float, float, float, float] = (10.0, 10.0, 10.0, 10.0)
+    frame: bool = False
+    title_block: TitleBlock | None = None
+
+    def __post_init__(self):
+        size = str(self.size).upper()
+        if size not in PAPER:
+            raise InputError(f"page size {self.size!r}: use one of {', '.join(PAPER)}")
+        object.__setattr__(self, "size", size)
+        if self.orientation not in ("portrait", "landscape"):
+            raise InputError(f"page orientation {self.orientation!r}: use 'portrait' or 'landscape'")
+        m = tuple(float(v) for v in self.margins_mm)
+        if len(m) != 4 or any(v < 0 for v in m) or m[0] + m[2] >= self._dims()[1] or m[1] + m[3] >= self._dims()[0]:
+            raise InputError(f"margins {self.margins_mm!r} mm: give four non-negative margins (top, right, bottom, "
+                             f"left) that leave room on a {size} {self.orientation} page")
+        object.__setattr__(self, "margins_mm", m)
+
+    def _dims(self) -> tuple[float, float]:
+        short, long = PAPER[str(self.size).upper()]
+        return (long, short) if self.orientation == "landscape" else (short, long)
+
+    @property
+    def width_mm(self) -> float:
+        return self._dims()[0]
+
+    @property
+    def height_mm(self) -> float:
+        return self._dims()[1]
+
+    def with_(self, **changes) -> "Page":
+        """A copy with some fields changed."""
+        from dataclasses import replace
+
+        return replace(self, **changes)
+
+    def inner_box(self) -> tuple[float, float, float, float]:
+        """The box inside the margins (the frame), (x0, y0, x1, y1) mm."""
+        t, r, b, left = self.margins_mm
+        return (left, t, self.width_mm - r, self.height_mm - b)
+
+    def content_box(self, *, padding_mm: float = 0.0) -> tuple[float, float, float, float]:
+        """Where a figure may draw: inside the frame (padded), above the title block."""
+        x0, y0, x1, y1 = self.inner_box()
+        pad = padding_mm + (5.0 if self.frame else 0.0)
+        if self.title_block is not None:
+            y1 -= self.title_block.table(x1, y1).height_mm + 2.0
+        return (x0 + pad, y0 + pad, x1 - pad, y1 - pad)
+
+    def primitives(self) -> tuple:
+        prims = []
+        x0, y0, x1, y1 = self.inner_box()
+        if self.frame:
+            prims.append(Path(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), FRAME, closed=True))
+        if self.title_block is not None:
+            prims.append(self.title_block.table(x1, y1).draw())
+        return tuple(prims)

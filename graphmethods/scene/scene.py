@@ -1,0 +1,157 @@
+"""A scene: a page, the elements drawn on it, and what a reader needs to know about it.
+
+A scene is frozen; :meth:`Scene.add` returns a new one. Its :meth:`Scene.groups`
+are the primitives a backend draws, one named group per element, with unique
+ids made from the element names (never from a global counter).
+
+>>> from graphmethods.scene.elements import Axis, Text
+>>> from graphmethods.scene.scale import Scale
+>>> s = Scene(Page("A4", "landscape"), name="demo")
+>>> s = s.add(Axis((20, 100), Scale("μ_M", "N·m", 2.0), "y", max_value=40, name="M"), Text((20, 20), "M_d"))
+>>> [g.name for g in s.groups()], [sc.caption() for sc in s.scales()]
+(['M', 'text'], ['μ_M = 2 N·m/mm'])
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+
+from graphmethods.errors import InputError
+from graphmethods.scene.elements import Axis, Element, ScaleCaptions, bbox
+from graphmethods.scene.page import Page
+from graphmethods.scene.primitives import Group, walk
+from graphmethods.scene.scale import Scale
+
+_ID_BAD = re.compile(r"[^A-Za-z0-9_.-]+")
+
+
+def make_id(name: str) -> str:
+    """A valid XML id from an element name (ASCII letters, digits, ``_ . -``).
+
+    >>> make_id("vector a→b"), make_id("1st"), make_id("")
+    ('vector-a-b', 'g-1st', 'g')
+    """
+    s = _ID_BAD.sub("-", str(name)).strip("-")
+    if not s or not (s[0].isalpha() or s[0] == "_"):
+        s = "g-" + s if s else "g"
+    return s
+
+
+def _unique(prims, used: set) -> tuple:
+    out = []
+    for p in prims:
+        if isinstance(p, Group):
+            base = make_id(p.name)
+            name, n = base, 1
+            while name in used:
+                n += 1
+                name = f"{base}-{n}"
+            used.add(name)
+            out.append(Group(name, _unique(p.children, used)))
+        else:
+            out.append(p)
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A figure: a :class:`Page` and the elements on it, plus metadata.
+
+    Parameters
+    ----------
+    page : Page
+    elements : tuple of Element
+        Drawn in order (later on top).
+    title : str
+        The figure's title (markup), also the SVG ``<title>``.
+    notation : str
+        The notation profile the figure was drawn in (``en``, ``ru``, ``zh``).
+    name : str
+        Short name (id of the root group, file names in the gallery).
+    extra_scales : tuple of Scale
+        Scales used without an axis (μ_E of an energy indicator drawn without one).
+    notes : tuple of str
+        Plain-text facts about the figure (which scales were picked and why).
+    """
+
+    page: Page = field(default_factory=Page)
+    elements: tuple[Element, ...] = ()
+    title: str = ""
+    notation: str = "en"
+    name: str = "figure"
+    extra_scales: tuple[Scale, ...] = ()
+    notes: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        els = tuple(self.elements)
+        for e in els:
+            if not isinstance(e, Element):
+                raise InputError(f"scene {self.name}: {e!r} is not a figure element")
+        object.__setattr__(self, "elements", els)
+
+    def add(self, *elements: Element) -> "Scene":
+        """A new scene with ``elements`` appended."""
+        return replace(self, elements=self.elements + tuple(elements))
+
+    def with_(self, **changes) -> "Scene":
+        """A copy with some fields changed."""
+        return replace(self, **changes)
+
+    def element(self, name: str) -> Element:
+        """The first element called ``name``."""
+        for e in self.elements:
+            if e.name == name:
+                return e
+        raise InputError(f"scene {self.name}: no element named {name!r}; have {', '.join(e.name for e in self.elements)}")
+
+    def axes(self) -> tuple[Axis, ...]:
+        """The axes drawn (top-level elements and inside groups)."""
+        out = []
+
+        def visit(els):
+            for e in els:
+                if isinstance(e, Axis):
+                    out.append(e)
+                visit(getattr(e, "elements", ()))
+
+        visit(self.elements)
+        return tuple(out)
+
+    def scales(self) -> tuple[Scale, ...]:
+        """Every scale the figure uses: its axes', the captions', then ``extra_scales`` (no repeats)."""
+        found = [a.scale for a in self.axes()]
+        for e in self.elements:
+            if isinstance(e, ScaleCaptions):
+                found.extend(e.scales)
+        found.extend(self.extra_scales)
+        out, keys = [], set()
+        for s in found:
+            key = (s.symbol, s.unit, s.per_mm)
+            if key not in keys:
+                keys.add(key)
+                out.append(s)
+        return tuple(out)
+
+    def groups(self) -> tuple[Group, ...]:
+        """The primitives to draw: the page's group (frame, title block; when drawn), then one group per
+        element; ids unique."""
+        page = self.page.primitives()
+        prims = ([Group("page", page)] if page else []) + [e.draw() for e in self.elements]
+        return _unique(prims, set())
+
+    def primitives(self):
+        """Every primitive, depth first (groups included)."""
+        return tuple(walk(self.groups()))
+
+    def bbox(self):
+        """Estimated box (x0, y0, x1, y1) in mm of everything drawn."""
+        return bbox(self.groups())
+
+    def _repr_svg_(self) -> str:
+        """Inline display in notebooks (Jupyter calls this): the SVG of the scene."""
+        # The SVG writer sits one layer up (graphmethods.render); it is looked up by
+        # name at call time so that the scene model never imports a backend.
+        import importlib
+
+        return importlib.import_module("graphmethods.render.svg").to_string(self)

@@ -1,0 +1,89 @@
+"""The matplotlib backend: PNG and PDF from the same scene; deterministic PDF; fonts; safe saving."""
+
+import re
+import subprocess
+import sys
+import warnings
+
+import pytest
+
+from graphmethods.errors import OutputExistsError
+from graphmethods.render import mpl
+from graphmethods.scene import Page, Scale, Scene, Text, Vector
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+def small_scene(text="ψ_{max} = 30°; M_д, M_с; ΔW_{max}") -> Scene:
+    mu = Scale("μ_E", "J", 10.0)
+    return Scene(Page("A4"), (Vector.of((50, 150), value=500.0, scale=mu, angle_deg=90, name="v"),
+                              Text((20, 20), text, name="t")), name="small")
+
+
+def test_png_has_the_page_size_in_pixels():
+    png = mpl.to_png_bytes(small_scene(), dpi=50)
+    assert png.startswith(PNG_MAGIC)
+    width = int.from_bytes(png[16:20], "big")
+    height = int.from_bytes(png[20:24], "big")
+    assert abs(width - 297 / 25.4 * 50) < 1 and abs(height - 210 / 25.4 * 50) < 1
+
+
+def test_png_and_pdf_are_deterministic():
+    assert mpl.to_png_bytes(small_scene(), dpi=40) == mpl.to_png_bytes(small_scene(), dpi=40)
+    a, b = mpl.to_pdf_bytes(small_scene()), mpl.to_pdf_bytes(small_scene())
+    assert a == b and a.startswith(b"%PDF")
+    assert b"CreationDate" not in a and b"ModDate" not in a
+
+
+def test_pdf_has_one_page_per_scene():
+    pdf = mpl.to_pdf_bytes([small_scene(), small_scene("second"), small_scene("third")])
+    assert len(re.findall(rb"/Type\s*/Page\b", pdf)) == 3
+
+
+def test_greek_and_cyrillic_draw_without_missing_glyph_warnings():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        mpl.to_png_bytes(small_scene("Мд Мс A_{изб} ψ φ Δ μ"), dpi=30)
+
+
+def test_without_a_cjk_font_chinese_text_warns_once_clearly(monkeypatch):
+    monkeypatch.setattr(mpl, "_cjk_family", lambda: None)
+    monkeypatch.setattr(mpl, "_warned", False)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        mpl.to_png_bytes(small_scene("能量指示图 盈功 亏功"), dpi=30)
+        mpl.to_png_bytes(small_scene("盈亏功"), dpi=30)
+    ours = [w for w in caught if issubclass(w.category, mpl.CJKFontWarning)]
+    assert len(ours) == 1
+    assert "pip install mplfonts" in str(ours[0].message) and "GRAPHMETHODS_CJK_FONT" in str(ours[0].message)
+    assert not [w for w in caught if "missing from" in str(w.message)]    # no flood of glyph warnings
+
+
+def test_a_found_cjk_font_is_a_real_one():
+    path = mpl.find_cjk_font()
+    if path is None:
+        pytest.skip("no CJK font on this machine (set GRAPHMETHODS_CJK_FONT or pip install mplfonts)")
+    assert "LastResort" not in path and mpl._covers(path)
+
+
+def test_save_refuses_to_overwrite(tmp_path):
+    png, pdf = tmp_path / "f.png", tmp_path / "f.pdf"
+    mpl.save_png(small_scene(), png, dpi=30)
+    mpl.save_pdf([small_scene(), small_scene()], pdf)
+    for path, again in ((png, lambda: mpl.save_png(small_scene(), png, dpi=30)),
+                        (pdf, lambda: mpl.save_pdf(small_scene(), pdf))):
+        before = path.read_bytes()
+        with pytest.raises(OutputExistsError):
+            again()
+        assert path.read_bytes() == before
+    mpl.save_pdf(small_scene(), pdf, overwrite=True)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.pdf", "f.png"]
+
+
+def test_drawing_touches_no_global_matplotlib_state():
+    code = ("import matplotlib; before = matplotlib.get_backend();"
+            "import sys; sys.path.insert(0, %r); import test_render_mpl as t;"
+            "from graphmethods.render import mpl; mpl.to_png_bytes(t.small_scene(), dpi=20);"
+            "print('pyplot' in sys.modules, matplotlib.get_backend() == before)") % __file__.rsplit("/", 1)[0]
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["False", "True"]
