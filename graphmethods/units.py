@@ -43,3 +43,33 @@ def omega_from_n(n_rpm: float) -> float:
 def n_from_omega(omega: float) -> float:
     """Speed in rev/min from an angular speed in rad/s: n = 30 ω / π."""
     return 30.0 * omega / math.pi
+
+
+#: Convenient drawing numbers, × 10^k (domain.md §1); some textbooks also allow 1.5 and 3.
+CONVENIENT = (1.0, 2.0, 2.5, 4.0, 5.0)
+CONVENIENT_WIDE = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0)
+
+
+def _candidates(value: float, series) -> list[float]:
+    if not (value > 0 and math.isfinite(value)):
+        raise InputError(f"a convenient number needs a positive finite value, got {value!r}")
+    k = math.floor(math.log10(value))
+    return sorted(c * 10.0**kk for kk in (k - 1, k, k + 1) for c in series)
+
+
+def convenient_at_least(value: float, series=CONVENIENT) -> float:
+    """The smallest convenient number (1, 2, 2.5, 4, 5 × 10^k) not below ``value``.
+
+    >>> convenient_at_least(37.0), convenient_at_least(0.0042), convenient_at_least(2.0)
+    (40.0, 0.005, 2.0)
+    """
+    return next(v for v in _candidates(value, series) if v >= value * (1 - 1e-12))
+
+
+def convenient_at_most(value: float, series=CONVENIENT) -> float:
+    """The largest convenient number (1, 2, 2.5, 4, 5 × 10^k) not above ``value``.
+
+    >>> convenient_at_most(37.0), convenient_at_most(0.0042), convenient_at_most(2.5)
+    (25.0, 0.004, 2.5)
+    """
+    return max(v for v in _candidates(value, series) if v <= value * (1 + 1e-12))
