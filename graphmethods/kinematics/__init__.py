@@ -1,1 +1,31 @@
-"""graphmethods.kinematics."""
+"""Linkages in m positions and their velocity plans (numpy only; SI floats in, frozen results out).
+
+Mechanisms (frozen dataclasses, dimensions in m, keyword-only):
+:class:`SliderCrank`, :class:`FourBar`, :class:`SlottedLever`, :class:`Shaper`.
+Each gives ``positions(m=12)`` (or ``positions(phi=...)``) -> :class:`Positions` and
+``velocity_plans(positions, omega_1=1.0)`` -> :class:`VelocityPlans`, vectorised over all
+positions at once; ``derivatives(phi)`` is the analytic derivative of the position equations
+that the plans are checked against. Problem files are read by :func:`read_case`.
+
+>>> from graphmethods.kinematics import SliderCrank
+>>> mech = SliderCrank(r=0.1, l=0.4, e=0.02, points={"S2": ("AB", 0.13, 0.0)})
+>>> plan = mech.velocity_plans(mech.positions(m=12), omega_1=1.0)
+>>> plan.v("B").shape, plan.omega("AB").shape
+((13, 2), (13,))
+"""
+
+from graphmethods.kinematics.case import (Case, FourBarCase, Inertia, Load, ShaperCase, SliderCrankCase,
+                                          SlottedLeverCase, case_from_dict, read_case)
+from graphmethods.kinematics.four_bar import FourBar
+from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
+from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans, convenient_scale
+from graphmethods.kinematics.positions import Positions, Strokes
+from graphmethods.kinematics.shaper import Shaper
+from graphmethods.kinematics.slider_crank import SliderCrank
+from graphmethods.kinematics.slotted_lever import SlottedLever
+
+__all__ = [
+    "Case", "ConstructionLine", "FourBar", "FourBarCase", "Inertia", "Load", "Mechanism", "PointConstruction",
+    "PointOnLink", "Positions", "Shaper", "ShaperCase", "SliderCrank", "SliderCrankCase", "SlottedLever",
+    "SlottedLeverCase", "Strokes", "VelocityPlans", "case_from_dict", "convenient_scale", "read_case",
+]

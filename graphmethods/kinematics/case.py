@@ -1,0 +1,414 @@
+"""Problem files: a linkage with its masses, its load and its speed, read from JSON and validated.
+
+One JSON object per file, SI units (m, kg, kg·m², N, N·m, rev/min), angles in keys ending in
+``_deg``. ``kind`` selects the format (default ``"slider_crank"``, the press format of
+``shared/cases/slider_crank_press.json``); ``name``, ``about`` and ``units`` are free text.
+Every other key is checked: a missing, misspelt, non-numeric or out-of-range key, or
+dimensions that cannot be assembled, raise an :class:`~graphmethods.errors.InputError` (or
+its subclass AssemblyError) whose one-line message names the file and the key.
+
+Formats (required keys; optional ones with their default):
+
+``slider_crank``  r, l, e, l_AS2, m2, J_S2, m3, J1, F0, force_from, force_to, n_rpm, delta;
+                  assembly (1), sense ("ccw"), working_stroke ("toward_crank")
+``four_bar``      l1 (ground O1O2), l2 (crank O1A), l3 (coupler AB), l4 (rocker O2B), l_AS2, l_O2S3,
+                  m2, J_S2, m3, J_S3, J1, M3, moment_from, moment_to, n_rpm, delta;
+                  ground_angle_deg (0), assembly (1), sense ("ccw"), working_stroke ("slow")
+``slotted_lever`` r, l_O1O3, l_O3B, l_O3S3, m3, J_S3, J1, M3, moment_from, moment_to, n_rpm, delta;
+                  theta_O3_deg (−90), m2 (0: block at A), sense ("ccw"), working_stroke ("slow")
+``shaper``        r, l_O1O3, l_O3B, l_BC, y_guide, l_O3S3, l_BS4, m3, J_S3, m4, J_S4, m5, J1, F0,
+                  force_from, force_to, n_rpm, delta; theta_O3_deg (−90), m2 (0), assembly (1),
+                  sense ("ccw"), working_stroke ("slow")
+
+The load acts on the working stroke only, against the motion: a force F0 on the slider (press
+B, shaper ram C) while its displacement s is between force_from·H and force_to·H, or a moment
+M3 on the rocker while its swing ψ is between moment_from·ψ_max and moment_to·ψ_max.
+
+>>> case = case_from_dict({"r": 0.1, "l": 0.4, "e": 0.02, "l_AS2": 0.13, "m2": 8, "J_S2": 0.12,
+...                        "m3": 12, "J1": 0.5, "F0": 5000, "force_from": 0.05, "force_to": 0.95,
+...                        "n_rpm": 300, "delta": 0.04})
+>>> case.kind, case.mechanism.l, round(case.omega_m, 4)
+('slider_crank', 0.4, 31.4159)
+>>> [i.point for i in case.inertias]
+['O', 'S2', 'B']
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import pathlib
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any, Mapping
+
+from graphmethods.errors import AssemblyError, InputError
+from graphmethods.kinematics.four_bar import FourBar
+from graphmethods.kinematics.mechanism import Mechanism
+from graphmethods.kinematics.shaper import Shaper
+from graphmethods.kinematics.slider_crank import SliderCrank
+from graphmethods.kinematics.slotted_lever import SlottedLever
+from graphmethods.units import omega_from_n, parse_number
+
+
+@dataclass(frozen=True)
+class Inertia:
+    """A moving mass for the reduced model: J_e gets ``m·(v_point/ω₁)² + J·(ω_link/ω₁)²``.
+
+    Attributes
+    ----------
+    link : str or None
+        Link whose angular velocity multiplies J (None for a translating slider).
+    point : str
+        Point whose velocity multiplies m (the centre of mass).
+    m : float
+        Mass, kg.
+    J : float
+        Moment of inertia about ``point``, kg·m² (for the crank: about its pivot).
+    """
+
+    link: str | None
+    point: str
+    m: float
+    J: float
+
+
+@dataclass(frozen=True)
+class Load:
+    """The resisting load of the working stroke (zero on the return stroke).
+
+    Attributes
+    ----------
+    kind : str
+        ``"force"`` on a slider point along its guide, or ``"moment"`` on a link; it always
+        opposes the motion.
+    at : str
+        The point (force) or link (moment).
+    magnitude : float
+        N or N·m (≥ 0).
+    start, end : float
+        Fractions of the stroke (s/H for a force, ψ/ψ_max for a moment) between which it acts.
+    """
+
+    kind: str
+    at: str
+    magnitude: float
+    start: float
+    end: float
+
+
+@dataclass(frozen=True)
+class Case:
+    """A problem file, validated (see the module docstring).
+
+    Attributes
+    ----------
+    kind : str
+        ``"slider_crank"``, ``"four_bar"``, ``"slotted_lever"`` or ``"shaper"``.
+    name, about : str
+        Free text from the file.
+    source : str
+        Where it was read from (file path or ``"<dict>"``).
+    mechanism : Mechanism
+        The linkage with its centres of mass as extra points.
+    n_rpm : float
+        Mean crank speed, rev/min.
+    delta : float
+        Permissible coefficient of speed fluctuation.
+    inertias : tuple of Inertia
+        Every moving mass.
+    load : Load
+        The working-stroke load.
+    values : mapping
+        Every key of the file after validation (numbers as floats).
+    """
+
+    kind: str
+    name: str
+    about: str
+    source: str
+    mechanism: Mechanism
+    n_rpm: float
+    delta: float
+    inertias: tuple
+    load: Load
+    values: Mapping[str, Any]
+
+    @property
+    def omega_m(self) -> float:
+        """Mean crank speed, rad/s."""
+        return omega_from_n(self.n_rpm)
+
+    def __getattr__(self, key):
+        # every validated key is also an attribute: case.m2, case.F0, ...
+        values = self.__dict__.get("values")
+        if values is not None and key in values:
+            return values[key]
+        raise AttributeError(key)
+
+
+class SliderCrankCase(Case):
+    """A slider-crank (press) problem file."""
+
+
+class FourBarCase(Case):
+    """A four-bar problem file."""
+
+
+class SlottedLeverCase(Case):
+    """A crank and slotted lever problem file."""
+
+
+class ShaperCase(Case):
+    """A shaper problem file."""
+
+
+REQUIRED = object()
+_TEXT = {"name", "about", "units", "kind"}
+
+# key: (check, default, meaning)
+_COMMON_TAIL = {
+    "n_rpm": ("positive", REQUIRED, "mean crank speed, rev/min"),
+    "delta": ("delta", REQUIRED, "permissible coefficient of speed fluctuation, 0 < δ < 1"),
+    "sense": ("sense", "ccw", 'crank sense of rotation, "ccw" or "cw"'),
+}
+
+SPECS: dict[str, dict[str, tuple]] = {
+    "slider_crank": {
+        "r": ("positive", REQUIRED, "crank O-A, m"),
+        "l": ("positive", REQUIRED, "connecting rod A-B, m"),
+        "e": ("real", REQUIRED, "offset: the slider's guide is the line y = e, m"),
+        "l_AS2": ("nonneg", REQUIRED, "distance from A to the rod's centre of mass S2, m"),
+        "m2": ("nonneg", REQUIRED, "rod mass, kg"),
+        "J_S2": ("nonneg", REQUIRED, "rod moment of inertia about S2, kg·m²"),
+        "m3": ("nonneg", REQUIRED, "slider mass, kg"),
+        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O, kg·m²"),
+        "F0": ("nonneg", REQUIRED, "resisting force on the slider during the working stroke, N"),
+        "force_from": ("fraction", REQUIRED, "fraction of the stroke where the force starts"),
+        "force_to": ("fraction", REQUIRED, "fraction of the stroke where the force ends"),
+        "assembly": ("sign", 1, "+1: slider on the +x side of A, -1: on the -x side"),
+        "working_stroke": (("toward_crank", "away_from_crank", "slow", "fast"), "toward_crank", "which stroke works"),
+        **_COMMON_TAIL,
+    },
+    "four_bar": {
+        "l1": ("positive", REQUIRED, "ground O1O2, m"),
+        "l2": ("positive", REQUIRED, "crank O1A, m"),
+        "l3": ("positive", REQUIRED, "coupler AB, m"),
+        "l4": ("positive", REQUIRED, "rocker O2B, m"),
+        "ground_angle_deg": ("real", 0.0, "direction of O1->O2 from +x, degrees"),
+        "l_AS2": ("nonneg", REQUIRED, "distance from A to the coupler's centre of mass S2, m"),
+        "l_O2S3": ("nonneg", REQUIRED, "distance from O2 to the rocker's centre of mass S3, m"),
+        "m2": ("nonneg", REQUIRED, "coupler mass, kg"),
+        "J_S2": ("nonneg", REQUIRED, "coupler moment of inertia about S2, kg·m²"),
+        "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
+        "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
+        "M3": ("nonneg", REQUIRED, "resisting moment on the rocker during its working swing, N·m"),
+        "moment_from": ("fraction", REQUIRED, "fraction of the swing where the moment starts"),
+        "moment_to": ("fraction", REQUIRED, "fraction of the swing where the moment ends"),
+        "assembly": ("sign", 1, "+1 or -1: the branch of the linkage"),
+        "working_stroke": (("slow", "fast"), "slow", "which swing works"),
+        **_COMMON_TAIL,
+    },
+    "slotted_lever": {
+        "r": ("positive", REQUIRED, "crank O1A, m"),
+        "l_O1O3": ("positive", REQUIRED, "centre distance O1O3, m"),
+        "l_O3B": ("positive", REQUIRED, "rocker O3B, m"),
+        "theta_O3_deg": ("real", -90.0, "direction of O1->O3 from +x, degrees"),
+        "l_O3S3": ("nonneg", REQUIRED, "distance from O3 to the rocker's centre of mass S3, m"),
+        "m2": ("nonneg", 0.0, "block mass (at A), kg"),
+        "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
+        "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
+        "M3": ("nonneg", REQUIRED, "resisting moment on the rocker during its working swing, N·m"),
+        "moment_from": ("fraction", REQUIRED, "fraction of the swing where the moment starts"),
+        "moment_to": ("fraction", REQUIRED, "fraction of the swing where the moment ends"),
+        "working_stroke": (("slow", "fast"), "slow", "which swing works"),
+        **_COMMON_TAIL,
+    },
+    "shaper": {
+        "r": ("positive", REQUIRED, "crank O1A, m"),
+        "l_O1O3": ("positive", REQUIRED, "centre distance O1O3, m"),
+        "l_O3B": ("positive", REQUIRED, "rocker O3B, m"),
+        "l_BC": ("positive", REQUIRED, "connecting link BC, m"),
+        "y_guide": ("real", REQUIRED, "height of the ram's guide line above O1, m"),
+        "theta_O3_deg": ("real", -90.0, "direction of O1->O3 from +x, degrees"),
+        "l_O3S3": ("nonneg", REQUIRED, "distance from O3 to the rocker's centre of mass S3, m"),
+        "l_BS4": ("nonneg", REQUIRED, "distance from B to the link's centre of mass S4, m"),
+        "m2": ("nonneg", 0.0, "block mass (at A), kg"),
+        "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
+        "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+        "m4": ("nonneg", REQUIRED, "link BC mass, kg"),
+        "J_S4": ("nonneg", REQUIRED, "link BC moment of inertia about S4, kg·m²"),
+        "m5": ("nonneg", REQUIRED, "ram mass, kg"),
+        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
+        "F0": ("nonneg", REQUIRED, "cutting force on the ram during the working stroke, N"),
+        "force_from": ("fraction", REQUIRED, "fraction of the stroke where the force starts"),
+        "force_to": ("fraction", REQUIRED, "fraction of the stroke where the force ends"),
+        "assembly": ("sign", 1, "+1: ram C on the +x side of B, -1: on the -x side"),
+        "working_stroke": (("slow", "fast"), "slow", "which stroke works"),
+        **_COMMON_TAIL,
+    },
+}
+
+
+def _value(source: str, key: str, raw, check, meaning: str):
+    where = f"{source}: key {key!r} ({meaning})"
+    if isinstance(check, tuple):
+        if raw not in check:
+            raise InputError(f"{where} must be one of {', '.join(check)}; got {raw!r}")
+        return raw
+    if check == "sense":
+        if raw not in ("ccw", "cw"):
+            raise InputError(f'{where} must be "ccw" or "cw"; got {raw!r}')
+        return raw
+    if check == "sign":
+        if raw not in (1, -1) or isinstance(raw, bool):
+            raise InputError(f"{where} must be 1 or -1; got {raw!r}")
+        return int(raw)
+    if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+        raise InputError(f"{where} must be a number; got {raw!r}")
+    value = parse_number(raw, name=where)
+    if check == "positive" and not value > 0:
+        raise InputError(f"{where} must be > 0; got {raw!r}")
+    if check == "nonneg" and not value >= 0:
+        raise InputError(f"{where} must be ≥ 0; got {raw!r}")
+    if check == "fraction" and not 0.0 <= value <= 1.0:
+        raise InputError(f"{where} must be a fraction between 0 and 1; got {raw!r}")
+    if check == "delta" and not 0.0 < value < 1.0:
+        raise InputError(f"{where} must be between 0 and 1 (e.g. 0.04 or 1/25); got {raw!r}")
+    return value
+
+
+def _validated(data: Mapping, kind: str, source: str) -> dict:
+    spec = SPECS[kind]
+    unknown = [k for k in data if k not in spec and k not in _TEXT]
+    if unknown:
+        raise InputError(f"{source}: unknown key {unknown[0]!r} for kind {kind!r}; the keys are: "
+                         f"{', '.join(spec)} (and name, about, units, kind)")
+    for k in _TEXT:
+        if k in data and not isinstance(data[k], str):
+            raise InputError(f"{source}: key {k!r} must be text; got {data[k]!r}")
+    out = {}
+    for key, (check, default, meaning) in spec.items():
+        if key not in data:
+            if default is REQUIRED:
+                raise InputError(f"{source}: key {key!r} is missing ({meaning})")
+            out[key] = default
+            continue
+        out[key] = _value(source, key, data[key], check, meaning)
+    return out
+
+
+def _order(v, lo, hi, what):
+    if not v[lo] < v[hi]:
+        raise InputError(f"{lo} = {v[lo]:g} must be less than {hi} = {v[hi]:g} ({what})")
+
+
+def _within(v, key, length_key):
+    if v[key] > v[length_key]:
+        raise InputError(f"{key} = {v[key]:g} m lies beyond the link ({length_key} = {v[length_key]:g} m); "
+                         f"a centre of mass must lie on its link")
+
+
+def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
+    """Validate a problem given as a dict (a parsed JSON object) and build its :class:`Case`.
+
+    Raises
+    ------
+    InputError, AssemblyError
+        One line naming ``source`` and the offending key or length condition.
+    """
+    if not isinstance(data, Mapping):
+        raise InputError(f"{source}: a problem file must hold one JSON object {{...}}, got {type(data).__name__}")
+    kind = data.get("kind", "slider_crank")
+    if kind not in SPECS:
+        raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}")
+    v = _validated(data, kind, source)
+    sense = 1 if v["sense"] == "ccw" else -1
+    common = dict(kind=kind, name=data.get("name", ""), about=data.get("about", ""), source=source,
+                  n_rpm=v["n_rpm"], delta=v["delta"])
+    try:
+        if kind == "slider_crank":
+            mech = SliderCrank(r=v["r"], l=v["l"], e=v["e"], assembly=v["assembly"], sense=sense,
+                               working_stroke=v["working_stroke"], points={"S2": ("AB", v["l_AS2"], 0.0)})
+            inertias = (Inertia("OA", "O", 0.0, v["J1"]), Inertia("AB", "S2", v["m2"], v["J_S2"]),
+                        Inertia(None, "B", v["m3"], 0.0))
+            load = Load("force", "B", v["F0"], v["force_from"], v["force_to"])
+            _order(v, "force_from", "force_to", "fractions of the stroke")
+            _within(v, "l_AS2", "l")
+            cls = SliderCrankCase
+        elif kind == "four_bar":
+            mech = FourBar(l1=v["l1"], l2=v["l2"], l3=v["l3"], l4=v["l4"],
+                           ground_angle=math.radians(v["ground_angle_deg"]), assembly=v["assembly"], sense=sense,
+                           working_stroke=v["working_stroke"],
+                           points={"S2": ("AB", v["l_AS2"], 0.0), "S3": ("O2B", v["l_O2S3"], 0.0)})
+            mech._check_full_turn()
+            inertias = (Inertia("O1A", "O1", 0.0, v["J1"]), Inertia("AB", "S2", v["m2"], v["J_S2"]),
+                        Inertia("O2B", "S3", v["m3"], v["J_S3"]))
+            load = Load("moment", "O2B", v["M3"], v["moment_from"], v["moment_to"])
+            _order(v, "moment_from", "moment_to", "fractions of the swing")
+            _within(v, "l_AS2", "l3")
+            _within(v, "l_O2S3", "l4")
+            cls = FourBarCase
+        elif kind == "slotted_lever":
+            mech = SlottedLever(r=v["r"], l_O1O3=v["l_O1O3"], l_O3B=v["l_O3B"],
+                                theta_O3=math.radians(v["theta_O3_deg"]), sense=sense,
+                                working_stroke=v["working_stroke"], points={"S3": ("O3B", v["l_O3S3"], 0.0)})
+            inertias = (Inertia("O1A", "O1", 0.0, v["J1"]), Inertia("block", "A", v["m2"], 0.0),
+                        Inertia("O3B", "S3", v["m3"], v["J_S3"]))
+            load = Load("moment", "O3B", v["M3"], v["moment_from"], v["moment_to"])
+            _order(v, "moment_from", "moment_to", "fractions of the swing")
+            _within(v, "l_O3S3", "l_O3B")
+            cls = SlottedLeverCase
+        else:
+            mech = Shaper(r=v["r"], l_O1O3=v["l_O1O3"], l_O3B=v["l_O3B"], l_BC=v["l_BC"], y_guide=v["y_guide"],
+                          theta_O3=math.radians(v["theta_O3_deg"]), assembly=v["assembly"], sense=sense,
+                          working_stroke=v["working_stroke"],
+                          points={"S3": ("O3B", v["l_O3S3"], 0.0), "S4": ("BC", v["l_BS4"], 0.0)})
+            inertias = (Inertia("O1A", "O1", 0.0, v["J1"]), Inertia("block", "A", v["m2"], 0.0),
+                        Inertia("O3B", "S3", v["m3"], v["J_S3"]), Inertia("BC", "S4", v["m4"], v["J_S4"]),
+                        Inertia(None, "C", v["m5"], 0.0))
+            load = Load("force", "C", v["F0"], v["force_from"], v["force_to"])
+            _order(v, "force_from", "force_to", "fractions of the stroke")
+            _within(v, "l_O3S3", "l_O3B")
+            _within(v, "l_BS4", "l_BC")
+            cls = ShaperCase
+    except AssemblyError as exc:
+        raise AssemblyError(f"{source}: {exc}") from None
+    except InputError as exc:
+        raise InputError(f"{source}: {exc}") from None
+    return cls(mechanism=mech, inertias=inertias, load=load, values=MappingProxyType(v), **common)
+
+
+def read_case(path) -> Case:
+    """Read and validate a problem file (JSON, see the module docstring).
+
+    Parameters
+    ----------
+    path : str or path-like
+        The file.
+
+    Returns
+    -------
+    Case
+        A :class:`SliderCrankCase`, :class:`FourBarCase`, :class:`SlottedLeverCase` or
+        :class:`ShaperCase`.
+
+    Raises
+    ------
+    InputError, AssemblyError
+        Unreadable file, invalid JSON, a bad key or impossible dimensions (one line).
+    """
+    p = pathlib.Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError(f"{p}: no such file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise InputError(f"{p}: not valid JSON (line {exc.lineno}, column {exc.colno}: {exc.msg})") from None
+    return case_from_dict(data, source=str(p))
