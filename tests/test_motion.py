@@ -239,3 +239,25 @@ def test_flywheel_scales_with_the_machine(a, b, k):
     fk = exact_flywheel(ReducedModel(J_e=lambda p: k * J(p), M_e=lambda p: k * M(p)),
                         omega_m=10.0, delta=0.04, positions=12)
     assert fk.J_F == pytest.approx(k * f1.J_F, rel=1e-9)
+
+
+def test_no_flywheel_needed_is_said_plainly():
+    # ΔE = 50 sin φ and J_e = 2 + sin φ vary in step: with T0 = 100 J, T/J_e = 50 and ω is
+    # constant without any flywheel; the identity gives J_F = −min J_e exactly.
+    model = ReducedModel(J_e=lambda p: 2.0 + np.sin(p), M_e=lambda p: 50.0 * np.cos(p))
+    with pytest.raises(MotionError, match="no flywheel is needed"):
+        exact_flywheel(model, omega_m=10.0, delta=0.5)
+    with pytest.raises(MotionError, match="no flywheel is needed"):
+        exact_flywheel(ReducedModel(J_e=2.0, M_e=0.0), omega_m=10.0, delta=0.1)
+
+    # when the machine alone runs a little below [δ], J_F comes out negative and is reported
+    model = ReducedModel(J_e=lambda p: 2.0 + 0.8 * np.sin(p), M_e=lambda p: 50.0 * np.cos(p))
+    assert periodic_motion(model, J_F=0.0, omega_m=10.0).delta < 0.1
+    fw = exact_flywheel(model, omega_m=10.0, delta=0.1)
+    assert -1.2 < fw.J_F < 0
+    assert fw.delta_check == pytest.approx(0.1, rel=1e-9)
+
+
+def test_sampled_J_e_must_be_periodic():
+    with pytest.raises(InputError, match="periodic"):
+        ReducedModel.from_samples(J_e=[1.0, 2.0, 3.0], M_e=0.0)

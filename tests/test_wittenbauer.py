@@ -131,7 +131,7 @@ def test_a_curve_that_does_not_close_is_refused():
     (dict(tangents="approx"), InputError, "tangents"),
     (dict(J_e=[1.0, 2.0]), InputError, "columns"),
     (dict(J_e=[1.0, -1.0, 1.0, 1.0]), InputError, "negative"),
-    (dict(J_e=[1.0, 1.0, 1.0, 1.0], delta_T=[0.0, 0.0, 0.0, 0.0]), MotionError, "no origin"),
+    (dict(J_e=[1.0, 1.0, 1.0, 1.0], delta_T=[0.0, 0.0, 0.0, 0.0]), MotionError, "no flywheel is needed"),
 ])
 def test_bad_input_is_refused(kwargs, error, match):
     args = dict(J_e=[1.0, 1.2, 0.8, 1.0], delta_T=[0.0, 10.0, -10.0, 0.0], omega_m=20.0, delta=0.05,

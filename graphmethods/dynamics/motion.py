@@ -272,6 +272,9 @@ class ReducedModel:
             funcs[name] = s
             if name == "J_e":
                 dJ = s.derivative
+                if abs(s.y[-1] - s.y[0]) > 1e-6 * max(float(np.max(np.abs(s.y))), 1e-300):
+                    raise InputError(f"J_e: the value at position m ({s.y[-1]!r}) must repeat position 0 "
+                                     f"({s.y[0]!r}): J_e is periodic")
             if s.kind != "cubic":
                 breaks.extend(s.nodes()[:-1])
         return cls(J_e=funcs["J_e"], M_e=funcs["M_e"], phi_T=phi_T, phi_0=phi_0, dJ_e=dJ,
@@ -339,8 +342,9 @@ def _check_positive(value, name):
 class _Primitive:
     """The running integral F(x) = ∫_a^x f, evaluable at any x in [a, b] to ~rtol·∫|f|.
 
-    ``balance=True`` removes the mean of f (the residual F(b)/(b − a)), so that F is periodic;
-    the residual is kept in ``residual``.
+    :meth:`balance` removes the mean of f (the residual F(b)/(b − a)), so that F is periodic;
+    the residual is kept in ``residual``; ``error`` bounds the error of F, ``abs_integral`` is
+    ∫|f| (from the first, coarse pass).
     """
 
     def __init__(self, f, a, b, breaks=(), *, n0=256, rtol=1e-12):
@@ -351,7 +355,7 @@ class _Primitive:
         edges[-1] = b
         lo, hi = edges[:-1], edges[1:]
         min_width = 1e3 * np.finfo(float).eps * max(abs(a), abs(b), L)
-        keep_lo, keep_hi, keep_val, keep_err = [], [], [], []
+        keep_lo, keep_val, keep_err = [], [], []
         tol = None
         for _ in range(200):
             half = 0.5 * (hi - lo)
@@ -364,7 +368,9 @@ class _Primitive:
                 tol = rtol * max(self.abs_integral, np.finfo(float).tiny)
             err = np.abs(K - G)
             ok = (err <= tol * np.maximum((hi - lo) / L, 1e-3)) | (hi - lo <= min_width)
-            keep_lo.append(lo[ok]); keep_hi.append(hi[ok]); keep_val.append(K[ok]); keep_err.append(err[ok])
+            keep_lo.append(lo[ok])
+            keep_val.append(K[ok])
+            keep_err.append(err[ok])
             if ok.all():
                 break
             lo, hi = lo[~ok], hi[~ok]
@@ -588,11 +594,20 @@ class _Cycle:
         with np.errstate(divide="ignore"):
             return float(np.sum(self.wq / np.sqrt(u)))
 
-    def check_inertia(self, J_F):
+    def check_inertia(self, J_F, *, delta=None):
         J_min = float(min(self.Jx.min(), self.Jq.min()))
-        if not J_F + J_min > 0:
-            raise MotionError(f"the total inertia J_F + J_e must be positive: J_F = {J_F:.6g} kg·m² "
-                              f"and min J_e = {J_min:.6g} kg·m²; add flywheel inertia")
+        if delta is not None:
+            # The identity always gives J_F + min J_e ≥ 0 (take φ at min J_e in both brackets);
+            # equality means the machine alone already runs within [δ] at some speed profile.
+            if J_F + J_min <= 1e-9 * (abs(J_F) + float(self.Jx.max())):
+                raise MotionError(f"no flywheel is needed: the machine's own inertia keeps δ below "
+                                  f"[δ] = {delta:g} (the support-line identity gives J_F = {J_F:.6g} "
+                                  f"kg·m² = −min J_e: zero total inertia where J_e is least)")
+            return
+        if J_F + J_min > 0:
+            return
+        raise MotionError(f"the total inertia J_F + J_e must be positive: J_F = {J_F:.6g} kg·m² "
+                          f"and min J_e = {J_min:.6g} kg·m²; add flywheel inertia")
 
 
 # --------------------------------------------------------------------------------------------
@@ -804,7 +819,7 @@ def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str) -> float:
     return T0
 
 
-def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str, omega_m_target=None) -> MotionResult:
+def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str) -> MotionResult:
     model, a, L = cyc.model, cyc.a, cyc.L
     p_max, w_max, s_max = cyc.omega_extreme(T0, J_F, +1)
     p_min, w_min, s_min = cyc.omega_extreme(T0, J_F, -1)
@@ -980,7 +995,7 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
 
     def solve(c):
         out = _flywheel_for_limits(cyc, c + half, c - half)
-        cyc.check_inertia(out[0])
+        cyc.check_inertia(out[0], delta=delta)
         return out
 
     c = omega_m

@@ -343,6 +343,8 @@ def motor_motion(model: ReducedModel, motor, *, J_F: float, steps: int = 3600, p
         Flywheel (and rotor) inertia on the reduced shaft, kg·m².
     steps : int
         RK4 steps per period (even, a multiple of ``positions``); the model's breaks are added.
+        Declare every jump of M_e in ``model.breaks``: a jump inside a step lowers RK4 to first
+        order there (``accuracy`` then shows it).
     positions : int
         Output intervals: results at positions 0…m.
     mean : {"textbook", "time"}

@@ -259,11 +259,13 @@ _ERROR_METHOD = (
 def _construct(J, dT, phi, *, omega_m, delta, mu_J, mu_T, tangents, rtol):
     m = J.size - 1
     s = _support(J[:m], dT[:m], omega_m, delta, tangents, rtol)
-    if not s["D"] > 0:
+    # D ≥ 0 always (take the vertex of least J_e in both extremes); D = 0 means the rays meet
+    # on the curve itself, at its vertex of least J_e: zero total inertia there, no origin O1
+    if s["D"] <= 1e-9 * max(float(np.max(np.abs(dT))), s["a_max"] * float(J.max()), 1e-300):
         raise MotionError(
-            f"the rays meet at or right of the curve: J_F + min J_e = {s['D'] / (omega_m**2 * delta):.6g} "
-            f"kg·m² is not positive, so there is no origin O1; the machine's own inertia keeps the "
-            f"fluctuation below δ = {delta:g} without a flywheel (or the curve is a single point)")
+            f"no flywheel is needed: the rays meet on the curve (J_F + min J_e = "
+            f"{s['D'] / (omega_m**2 * delta):.3g} kg·m²), so there is no origin O1; the machine's "
+            f"own inertia keeps the fluctuation below δ = {delta:g}")
     other = "textbook" if tangents == "exact" else "exact"
     J_F_other = _support(J[:m], dT[:m], omega_m, delta, other, rtol)["J_F"]
     J_F = s["J_F"]
