@@ -18,9 +18,8 @@ PRESS = {"r": 0.1, "l": 0.4, "e": 0.02, "l_AS2": 0.13, "m2": 8.0, "J_S2": 0.12, 
 
 
 @pytest.fixture
-def run(monkeypatch, capsys):
-    """cli.main with the kinematics command registered (other commands left out: they are not ours)."""
-    monkeypatch.setattr(cli, "COMMANDS", {"kinematics": "kinematics"})
+def run(capsys):
+    """``graphmethods kinematics ...`` through cli.main: (exit code, stdout, stderr)."""
 
     def _run(*argv):
         rc = cli.main(["kinematics", *map(str, argv)])

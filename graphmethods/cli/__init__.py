@@ -18,6 +18,8 @@ from graphmethods.errors import GraphmethodsError
 COMMANDS = {
     "flywheel": "flywheel",
     "examples": "examples",
+    "kinematics": "kinematics",
+    "study": "study",
     "bench": "bench",
 }
 

@@ -1,0 +1,254 @@
+"""The reduced (equivalent) model of a linkage: J_e(φ), M_e(φ), the Zhukovsky lever, gear trains.
+
+Kinetic energy and power are kept (domain.md §2), using the velocity analogues of the plans
+(plans built for ω₁ = 1 rad/s, or divided by ω₁):
+
+``J_e = Σ [ m_i (v_Si/ω₁)² + J_Si (ω_i/ω₁)² ]``,  ``M_e = Σ [ F_i · v_i/ω₁ + M_i ω_i/ω₁ ]``.
+
+The working-stroke load of a problem file (:class:`~graphmethods.kinematics.case.Load`) switches
+on and off at fractions of the stroke; :func:`load_switch_angles` finds those crank angles
+exactly, so the exact solver sees the jumps where they are, not between positions.
+
+>>> from graphmethods.kinematics import read_case
+>>> import numpy as np
+>>> from graphmethods.kinematics import SliderCrank, Inertia
+>>> mech = SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13, 0.0)})
+>>> plans = mech.velocity_plans(mech.positions(m=4))
+>>> J = reduced_inertia(plans, [Inertia("OA", "O", 0.0, 0.5), Inertia(None, "B", 12.0, 0.0)])
+>>> J.J_e.round(6).tolist()          # at the dead centres only the crank counts
+[0.5, 0.62, 0.5, 0.62, 0.5]
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Iterable, Mapping, Sequence
+
+import numpy as np
+
+from graphmethods.errors import InputError
+
+TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True, eq=False)
+class ReducedInertia:
+    """J_e at each position and its parts (kg·m²).
+
+    ``parts`` maps a label such as ``"m3 (B)"`` or ``"J_S2 (AB)"`` to its share, (n,).
+    """
+
+    J_e: np.ndarray
+    parts: Mapping[str, np.ndarray]
+
+    @property
+    def J_e_min(self) -> float:
+        return float(self.J_e.min())
+
+    @property
+    def J_e_max(self) -> float:
+        return float(self.J_e.max())
+
+
+def reduced_inertia(plans, inertias: Iterable) -> ReducedInertia:
+    """J_e(φ) = Σ m (v_S/ω₁)² + J (ω_link/ω₁)² from velocity plans and the moving masses.
+
+    Parameters
+    ----------
+    plans : VelocityPlans
+        The plans at the positions wanted (any ω₁: analogues are used).
+    inertias : iterable of Inertia
+        ``(link, point, m, J)``: mass m (kg) at ``point``, moment of inertia J (kg·m²) about it
+        turning with ``link`` (None for a translating body).
+    """
+    parts: dict[str, np.ndarray] = {}
+    total = np.zeros(plans.n)
+    for it in inertias:
+        if it.m < 0 or it.J < 0:
+            raise InputError(f"negative mass or inertia for {it.point}: m = {it.m}, J = {it.J}")
+        if it.m:
+            v = plans.analogue(it.point)
+            part = it.m * (v[:, 0] ** 2 + v[:, 1] ** 2)
+            parts[f"m ({it.point})"] = part
+            total = total + part
+        if it.J:
+            if it.link is None:
+                raise InputError(f"an inertia J = {it.J} at {it.point} needs the link it turns with")
+            part = it.J * plans.omega_ratio(it.link) ** 2
+            parts[f"J ({plans.positions.mechanism.link_name(it.link)})"] = part
+            total = total + part
+    for a in (*parts.values(), total):
+        a.setflags(write=False)
+    return ReducedInertia(J_e=total, parts=MappingProxyType(parts))
+
+
+def _stroke_fraction(positions, load) -> np.ndarray:
+    if load.kind == "force":
+        if positions.s is None:
+            raise InputError(f"a force load on {load.at} needs a slider output; this linkage has none")
+        return positions.s / positions.H
+    if positions.psi is None:
+        raise InputError(f"a moment load on {load.at} needs a rocker output; this linkage has none")
+    return positions.psi / positions.psi_max
+
+
+def load_active(positions, load) -> np.ndarray:
+    """Where the working-stroke load acts: on the working stroke, between its stroke fractions."""
+    frac = _stroke_fraction(positions, load)
+    tol = 1e-12
+    return positions.working & (frac >= load.start - tol) & (frac <= load.end + tol)
+
+
+def resisting_moment(positions, plans, load) -> np.ndarray:
+    """The reduced resisting moment M_r ≥ 0 (N·m) of the load at each position.
+
+    A force F opposing the slider gives F |v_B|/ω₁; a moment M opposing a rocker gives
+    M |ω_i|/ω₁; zero where the load does not act.
+    """
+    if load.kind == "force":
+        analogue = np.abs(plans.v_along_guide(load.at)) / plans.omega_1
+    else:
+        analogue = np.abs(plans.omega_ratio(load.at))
+    return np.where(load_active(positions, load), load.magnitude * analogue, 0.0)
+
+
+def load_switch_angles(mechanism, load) -> tuple[float, float]:
+    """Crank rotations from position 0 (rad) where the load switches on and off.
+
+    The stroke fraction grows monotonically over the working stroke, so each switch angle is the
+    root of ``fraction(φ) = start`` (``= end``), found by bisection to machine precision.
+    """
+    strokes = mechanism.strokes()
+    if strokes is None:
+        raise InputError("this linkage has no working stroke; a working-stroke load needs one")
+    lo = np.zeros(2)
+    hi = np.full(2, strokes.working_angle)
+    target = np.array([load.start, load.end])
+    for _ in range(64):
+        mid = 0.5 * (lo + hi)
+        frac = _stroke_fraction(mechanism.positions(phi_from_start=mid), load)
+        below = frac < target
+        lo = np.where(below, mid, lo)
+        hi = np.where(below, hi, mid)
+    a, b = 0.5 * (lo + hi)
+    return float(a), float(b)
+
+
+def load_work(mechanism, load) -> float:
+    """Work of the load over one cycle, J (exact: the stroke fraction is monotone while it acts).
+
+    A force does F·H·(end − start); a moment M·ψ_max·(end − start).
+    """
+    pos = mechanism.positions(m=4)
+    span = pos.H if load.kind == "force" else pos.psi_max
+    return load.magnitude * span * (load.end - load.start)
+
+
+# --------------------------------------------------------------------- Zhukovsky lever
+@dataclass(frozen=True, eq=False)
+class ZhukovskyLever:
+    """The velocity plan turned 90° as a rigid lever about the pole p.
+
+    ``images`` maps each loaded point to its turned plan image (n, 2) in m/rad (analogue units;
+    divide by μ_v for mm on a plan drawn to μ_v); ``moment`` is Σ (image × F) + Σ M_i ω_i/ω₁,
+    the reduced moment M_e (N·m), equal to the power method's.
+    """
+
+    images: Mapping[str, np.ndarray]
+    forces: Mapping[str, np.ndarray]
+    moment: np.ndarray
+
+
+def _turn(v: np.ndarray, sense: int) -> np.ndarray:
+    """Turn vectors (n, 2) by 90° against ``sense`` (−90° for a counterclockwise crank)."""
+    return np.column_stack((v[:, 1], -v[:, 0])) if sense > 0 else np.column_stack((-v[:, 1], v[:, 0]))
+
+
+def zhukovsky_lever(plans, *, forces: Mapping[str, np.ndarray] | None = None,
+                    moments: Mapping[str, np.ndarray] | None = None) -> ZhukovskyLever:
+    """The reduced moment by Zhukovsky's lever.
+
+    The plan of analogues v/ω₁ is turned 90° opposite to the crank's rotation; each force F
+    (N, (n, 2) or (2,)) is applied at the image of its point; the moment of all forces about
+    the pole, plus the link moments times ω_i/ω₁, is M_e (positive: driving, in the crank's
+    sense). For a counterclockwise crank the image of v is (v_y, −v_x), and its moment about p,
+    v_y F_y + v_x F_x = F·v, is exactly the power method's term.
+
+    >>> import numpy as np
+    >>> from graphmethods.kinematics import SliderCrank
+    >>> mech = SliderCrank(r=0.1, l=0.4)
+    >>> plans = mech.velocity_plans(mech.positions(m=12))
+    >>> lever = zhukovsky_lever(plans, forces={"B": np.array([-1000.0, 0.0])})
+    >>> bool(np.allclose(lever.moment, -1000.0 * plans.analogue("B")[:, 0]))
+    True
+    """
+    images, fs = {}, {}
+    total = np.zeros(plans.n)
+    for name, F in (forces or {}).items():
+        F = np.broadcast_to(np.asarray(F, dtype=float), (plans.n, 2))
+        img = _turn(plans.analogue(name), plans.sense)
+        images[name] = img
+        fs[name] = F
+        total = total + plans.sense * (img[:, 0] * F[:, 1] - img[:, 1] * F[:, 0])
+    for link, M in (moments or {}).items():
+        total = total + np.asarray(M, dtype=float) * plans.omega_ratio(link)
+    return ZhukovskyLever(images=MappingProxyType(images), forces=MappingProxyType(fs), moment=total)
+
+
+def power_moment(plans, *, forces: Mapping[str, np.ndarray] | None = None,
+                 moments: Mapping[str, np.ndarray] | None = None) -> np.ndarray:
+    """The reduced moment by power: M_e = Σ F·(v/ω₁) + Σ M_i (ω_i/ω₁), N·m (+ in the crank's sense)."""
+    total = np.zeros(plans.n)
+    for name, F in (forces or {}).items():
+        F = np.broadcast_to(np.asarray(F, dtype=float), (plans.n, 2))
+        v = plans.analogue(name)
+        total = total + (F[:, 0] * v[:, 0] + F[:, 1] * v[:, 1])
+    for link, M in (moments or {}).items():
+        total = total + np.asarray(M, dtype=float) * plans.omega_ratio(link)
+    return total
+
+
+# --------------------------------------------------------------------- gear trains
+@dataclass(frozen=True)
+class Shaft:
+    """A shaft of a drive: its inertia J (kg·m²), the moment on it M (N·m, + driving), and its speed
+    ratio ``omega_ratio`` = ω_i/ω to the shaft everything is reduced to."""
+
+    name: str
+    J: float
+    omega_ratio: float
+    M: float = 0.0
+
+
+@dataclass(frozen=True)
+class ReducedDrive:
+    """A multi-shaft drive reduced to one shaft: J_e = Σ J_i (ω_i/ω)², M_e = Σ M_i (ω_i/ω)."""
+
+    J_e: float
+    M_e: float
+    parts: Mapping[str, float]
+
+
+def reduce_drive(shafts: Sequence[Shaft]) -> ReducedDrive:
+    """Reduce the shafts of a gear train (two-, three-, four-mass models …) to one shaft.
+
+    >>> motor = Shaft("motor", J=0.05, omega_ratio=4.0, M=30.0)       # turns 4× faster
+    >>> crank = Shaft("crank", J=2.0, omega_ratio=1.0, M=-100.0)
+    >>> d = reduce_drive([motor, crank])
+    >>> round(d.J_e, 6), round(d.M_e, 6)
+    (2.8, 20.0)
+    """
+    parts = {}
+    J = M = 0.0
+    for s in shafts:
+        if not (math.isfinite(s.J) and s.J >= 0):
+            raise InputError(f"shaft {s.name}: J = {s.J!r} must be a non-negative inertia in kg·m²")
+        if not (math.isfinite(s.omega_ratio) and s.omega_ratio != 0):
+            raise InputError(f"shaft {s.name}: the speed ratio ω_i/ω = {s.omega_ratio!r} must be a non-zero number")
+        part = s.J * s.omega_ratio**2
+        parts[s.name] = part
+        J += part
+        M += s.M * s.omega_ratio
+    return ReducedDrive(J_e=J, M_e=M, parts=MappingProxyType(parts))

@@ -1,0 +1,239 @@
+"""The dynamic study of a linkage problem: lazy, each quantity computed once, when first asked for.
+
+A :class:`Study` holds a problem (:class:`~graphmethods.kinematics.case.Case`: linkage, masses,
+working-stroke load, n, [δ]) and the number of positions m. Positions, velocity plans, J_e, M_r,
+the excess work, the three flywheels (ΔW_max method, Wittenbauer at m positions with straight
+chords, exact) are cached properties: a figure that draws only the moment diagram never builds
+J_e; asking for J_F twice computes it once. ``computed`` lists what has been computed, in order.
+
+Conventions: φ is the crank rotation from position 0 (the start of the working stroke), in the
+crank's sense, rad; M_r ≥ 0 is the reduced resisting moment; M_d is constant, from the work
+balance over one turn; M_e = M_d − M_r.
+
+>>> from graphmethods.kinematics import read_case
+>>> import pathlib
+>>> study = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+>>> round(study.M_d, 4), study.computed
+(143.4309, ['M_d'])
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from graphmethods.dynamics import excess_work as ew
+from graphmethods.dynamics.flywheel import Flywheel, flywheel
+from graphmethods.dynamics.moments import MomentCurve
+from graphmethods.dynamics.motion import FlywheelResult, ReducedModel, exact_flywheel
+from graphmethods.dynamics.reduction import (ReducedInertia, load_switch_angles, load_work, reduced_inertia,
+                                             resisting_moment)
+from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
+from graphmethods.errors import InputError
+from graphmethods.units import convenient_at_least
+
+TWO_PI = 2.0 * math.pi
+
+
+def _logged(fn):
+    """A cached property that records its name in ``computed`` the one time it runs."""
+    name = fn.__name__
+
+    def wrapper(self):
+        value = fn(self)
+        self.computed.append(name)
+        return value
+
+    wrapper.__name__ = name
+    wrapper.__doc__ = fn.__doc__
+    return cached_property(wrapper)
+
+
+@dataclass(frozen=True)
+class StudyScales:
+    """Scales picked for the study's diagrams (units per mm), convenient values."""
+
+    mu_J: float
+    mu_T: float
+    mu_M: float
+    mu_phi: float
+
+
+class Study:
+    """The dynamic analysis of a linkage problem at m positions (see the module docstring).
+
+    Parameters
+    ----------
+    case : Case
+        The problem (read with :func:`graphmethods.kinematics.read_case`).
+    positions : int
+        Number of positions m (≥ 3; 12 by default).
+    """
+
+    def __init__(self, case, *, positions: int = 12):
+        if isinstance(positions, bool) or not isinstance(positions, (int, np.integer)) or positions < 3:
+            raise InputError(f"the number of positions must be an integer ≥ 3, got {positions!r}")
+        self.case = case
+        self.m = int(positions)
+        self.computed: list[str] = []
+
+    # ----------------------------------------------------------------- speed data
+    @property
+    def omega_m(self) -> float:
+        """Mean crank speed, rad/s."""
+        return self.case.omega_m
+
+    @property
+    def delta(self) -> float:
+        """Permissible coefficient of fluctuation [δ]."""
+        return self.case.delta
+
+    @property
+    def mechanism(self):
+        return self.case.mechanism
+
+    # ----------------------------------------------------------------- kinematics at positions
+    @_logged
+    def positions(self):
+        """The linkage at positions 0…m."""
+        return self.mechanism.positions(m=self.m)
+
+    @_logged
+    def plans(self):
+        """Velocity plans at positions 0…m, built for ω₁ = ω_m."""
+        return self.mechanism.velocity_plans(self.positions, omega_1=self.omega_m)
+
+    @property
+    def phi(self) -> np.ndarray:
+        """Crank rotation of positions 0…m from position 0, rad."""
+        return self.positions.phi_from_start
+
+    # ----------------------------------------------------------------- the reduced model
+    @_logged
+    def M_d(self) -> float:
+        """Constant driving moment from the work balance over one turn, N·m (exact)."""
+        return load_work(self.mechanism, self.case.load) / TWO_PI
+
+    @_logged
+    def M_r(self) -> np.ndarray:
+        """Reduced resisting moment at positions 0…m, N·m (≥ 0)."""
+        return resisting_moment(self.positions, self.plans, self.case.load)
+
+    @_logged
+    def inertia(self) -> ReducedInertia:
+        """J_e and its parts at positions 0…m, kg·m²."""
+        return reduced_inertia(self.plans, self.case.inertias)
+
+    @property
+    def J_e(self) -> np.ndarray:
+        return self.inertia.J_e
+
+    @_logged
+    def switch_angles(self) -> tuple[float, float]:
+        """Crank rotations from position 0 where the load switches on and off, rad (exact)."""
+        return load_switch_angles(self.mechanism, self.case.load)
+
+    def _J_e_exact(self, phi):
+        x = np.asarray(phi, dtype=float)
+        pos = self.mechanism.positions(phi_from_start=x.ravel())
+        return reduced_inertia(self.mechanism.velocity_plans(pos), self.case.inertias).J_e.reshape(x.shape)
+
+    def _M_r_exact(self, phi):
+        x = np.asarray(phi, dtype=float)
+        pos = self.mechanism.positions(phi_from_start=x.ravel())
+        return resisting_moment(pos, self.mechanism.velocity_plans(pos), self.case.load).reshape(x.shape)
+
+    @_logged
+    def model(self) -> ReducedModel:
+        """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""
+        M_d = self.M_d
+        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), breaks=self.switch_angles)
+
+    # ----------------------------------------------------------------- the graphical methods at m positions
+    @_logged
+    def moments(self) -> tuple[MomentCurve, MomentCurve]:
+        """M_d and M_r as drawn: M_r through its values at the positions (straight chords), M_d balancing it."""
+        M_r = MomentCurve.points(self.phi, self.M_r)
+        return MomentCurve.constant(M_r.mean(), period=TWO_PI), M_r
+
+    @_logged
+    def excess_work(self) -> ew.ExcessWork:
+        """The excess-work table of the drawn moment curves (crossings exact for the chords)."""
+        M_d, M_r = self.moments
+        return ew.from_moments(M_d, M_r)
+
+    @_logged
+    def delta_T(self) -> np.ndarray:
+        """ΔT at positions 0…m from the drawn curves (the chords' areas), J."""
+        M_d, M_r = self.moments
+        return (M_d - M_r).integral(self.phi)
+
+    @_logged
+    def flywheel_energy(self) -> Flywheel:
+        """The ΔW_max method: J_F = ΔW_max/(ω_m²[δ]) − mean J_e (J_e taken constant)."""
+        return flywheel(self.excess_work.delta_W_max, delta=self.delta, omega_m=self.omega_m,
+                        J_e=float(np.mean(self.J_e[:-1])))
+
+    @_logged
+    def scales(self) -> StudyScales:
+        """Convenient scales for a diagram about 150 mm across (J_e, ΔT, M, φ)."""
+        J, dT = self.J_e, self.delta_T
+        span_J = float(J.max())
+        span_T = float(dT.max() - dT.min()) or 1.0
+        span_M = float(max(self.M_r.max(), self.M_d))
+        return StudyScales(mu_J=convenient_at_least(span_J / 150.0), mu_T=convenient_at_least(span_T / 150.0),
+                           mu_M=convenient_at_least(span_M / 100.0), mu_phi=convenient_at_least(TWO_PI / 240.0))
+
+    @_logged
+    def wittenbauer(self) -> WittenbauerResult:
+        """The energy–mass diagram at positions 0…m with its tangent rays, and J_F from kl."""
+        sc = self.scales
+        return wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
+                           mu_J=sc.mu_J, mu_T=sc.mu_T, phi=self.phi)
+
+    @_logged
+    def exact(self) -> FlywheelResult:
+        """The exact flywheel for [δ] and its motion (the reference for the errors)."""
+        return exact_flywheel(self.model, omega_m=self.omega_m, delta=self.delta)
+
+    # ----------------------------------------------------------------- report
+    def summary(self, *, exact: bool = True) -> dict:
+        """The study's results as a JSON-ready dict (the keys of shared/cases/README.md).
+
+        With ``exact`` (default) the exact flywheel is solved too, and each method's relative
+        error against it is reported; without it, nothing exact is computed.
+        """
+        wb, fe = self.wittenbauer, self.flywheel_energy
+        out = {
+            "positions": self.m,
+            "n_rpm": self.case.n_rpm,
+            "omega_m": self.omega_m,
+            "delta": self.delta,
+            "M_d": self.M_d,
+            "delta_W_max": self.excess_work.delta_W_max,
+            "J_F_energy": fe.J_F,
+            "J_F_wittenbauer": wb.J_F,
+            "J_F_wittenbauer_error_estimate": wb.error_estimate,
+            "kl_mm": wb.kl_mm,
+            "mu_J": wb.mu_J,
+            "mu_T": wb.mu_T,
+            "wittenbauer_positions_omega_max": list(wb.index_omega_max),
+            "wittenbauer_positions_omega_min": list(wb.index_omega_min),
+            "J_e_min": float(self.J_e.min()),
+            "J_e_max": float(self.J_e.max()),
+            "J_e_mean": float(np.mean(self.J_e[:-1])),
+        }
+        if exact:
+            ex = self.exact
+            out.update({
+                "J_F_exact": ex.J_F,
+                "J_F_energy_rel_error": (fe.J_F - ex.J_F) / ex.J_F,
+                "J_F_wittenbauer_rel_error": (wb.J_F - ex.J_F) / ex.J_F,
+                "phi_omega_max_deg": math.degrees(ex.phi_omega_max_from_0),
+                "phi_omega_min_deg": math.degrees(ex.phi_omega_min_from_0),
+                "switch_angles_deg": [math.degrees(a) for a in self.switch_angles],
+            })
+        return out
