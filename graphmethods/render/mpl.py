@@ -207,7 +207,8 @@ class MplRenderer:
 
     def text(self, label):
         family = self._family(label.text)
-        weight = "bold" if label.bold else "normal"
+        # CJK fonts rarely ship a bold face; a half-bold line (Latin bold, CJK regular) looks wrong
+        weight = "bold" if label.bold and len(family) == 1 else "normal"
         runs = label.runs
         if len(runs) == 1 and runs[0][1] == 0:
             self.ax.text(label.x, label.y, runs[0][0], fontsize=label.size_mm * PT_PER_MM, fontfamily=family,
@@ -216,7 +217,7 @@ class MplRenderer:
                          va="baseline", zorder=self._zorder())
             return
         sizes = [label.size_mm * (1.0 if s == 0 else SCRIPT_SCALE) for _, s in runs]
-        widths = [self._width_mm(t, sz, label.bold, family) for (t, _), sz in zip(runs, sizes)]
+        widths = [self._width_mm(t, sz, weight == "bold", family) for (t, _), sz in zip(runs, sizes)]
         total = sum(widths)
         x = label.x - {"start": 0.0, "middle": total / 2, "end": total}[label.anchor]
         for (chunk, shift), sz, w in zip(runs, sizes, widths):

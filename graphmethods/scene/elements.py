@@ -642,9 +642,13 @@ class Axis(Element):
     ticks : tuple of float
         Tick values (in range); ``tick_labels`` their texts (formatted numbers by default).
     label : str
-        The axis name at its arrow, markup (``"M, N·m"``).
+        The axis name at its arrow, markup (``"M, N·m"``): right of the tip of an x axis,
+        right of the top of a y axis.
     skip_zero_label : bool
         Leave the tick label at 0 out (where two axes cross).
+    labels_side : {'', 'below', 'above', 'left', 'right'}
+        Where tick marks and labels go: below an x axis and left of a y axis by default;
+        'above' suits an x axis with the curve below it.
 
     Examples
     --------
@@ -666,9 +670,14 @@ class Axis(Element):
     size_mm: float = 3.0
     decimal: str = "."
     skip_zero_label: bool = False
+    labels_side: str = ""
     name: str = "axis"
 
     def __post_init__(self):
+        allowed = {"x": ("", "below", "above"), "y": ("", "left", "right")}.get(self.direction, ())
+        if self.labels_side not in allowed:
+            raise InputError(f"{self.name}: labels_side {self.labels_side!r} does not suit a {self.direction} axis; "
+                             f"use one of {', '.join(repr(a) for a in allowed if a)}")
         if self.direction not in ("x", "y"):
             raise InputError(f"{self.name}: axis direction must be 'x' or 'y', got {self.direction!r}")
         if not self.max_value > self.min_value:
@@ -702,23 +711,26 @@ class Axis(Element):
         labels = self.tick_labels
         if labels is None:
             labels = tuple(format_value(v, decimal=self.decimal) for v in self.ticks)
+        flip = self.labels_side in ("above", "right")
+        t = -self.tick_mm if flip else self.tick_mm
         for v, text in zip(self.ticks, labels):
             x, y = self.pos(v)
+            show = text and not (self.skip_zero_label and v == 0)
             if self.direction == "x":
-                prims.append(Path(((x, y), (x, y + self.tick_mm)), AXIS))
-                if text and not (self.skip_zero_label and v == 0):
-                    prims.append(make_label((x, y + self.tick_mm + 0.8), text, size_mm=self.size_mm,
-                                            anchor="middle", valign="top"))
+                prims.append(Path(((x, y), (x, y + t)), AXIS))
+                if show:
+                    prims.append(make_label((x, y + t + (-0.8 if flip else 0.8)), text, size_mm=self.size_mm,
+                                            anchor="middle", valign="bottom" if flip else "top"))
             else:
-                prims.append(Path(((x - self.tick_mm, y), (x, y)), AXIS))
-                if text and not (self.skip_zero_label and v == 0):
-                    prims.append(make_label((x - self.tick_mm - 0.8, y), text, size_mm=self.size_mm,
-                                            anchor="end", valign="middle"))
+                prims.append(Path(((x - t, y), (x, y)), AXIS))
+                if show:
+                    prims.append(make_label((x - t + (0.8 if flip else -0.8), y), text, size_mm=self.size_mm,
+                                            anchor="start" if flip else "end", valign="middle"))
         if self.label:
             tx, ty = self.tip
-            if self.direction == "x":
-                prims.append(make_label((tx, ty - 2.0), self.label, size_mm=self.size_mm + 0.5, anchor="end",
-                                        valign="bottom"))
+            if self.direction == "x":   # right of the tip, just above the line (the line may go on)
+                prims.append(make_label((tx + 1.0, ty - 1.0), self.label, size_mm=self.size_mm + 0.5,
+                                        anchor="start", valign="bottom"))
             else:
                 prims.append(make_label((tx + 2.5, ty), self.label, size_mm=self.size_mm + 0.5, anchor="start",
                                         valign="top"))

@@ -131,7 +131,7 @@ class Notation:
         if not u:
             return symbol
         if self.quantity_style == "slash":
-            simple = all(c not in u for c in "·/ ")
+            simple = all(c not in u for c in "·/ °")
             return f"{symbol}/{u}" if simple else f"{symbol}/({u})"
         return f"{symbol}, {u}"
 

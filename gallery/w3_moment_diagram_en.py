@@ -1,0 +1,11 @@
+"""W3 (step resisting moment, M_d by work balance): moment diagram M_d, M_r with hatched excess-
+work areas, English notation.
+"""
+
+from graphmethods import problems, sheets
+
+PNG = True  # also rendered to PNG for the README
+
+
+def build():
+    return sheets.moment_diagram(problems.w3(), notation="en")

@@ -1,0 +1,11 @@
+"""W4 (triangular M_r, M_d = 20 kG·m; old units kG·m): moment diagram M_d, M_r with hatched excess-
+work areas, Chinese notation.
+"""
+
+from graphmethods import problems, sheets
+
+PNG = True  # also rendered to PNG for the README
+
+
+def build():
+    return sheets.moment_diagram(problems.w4_exact(), notation="zh", moment_unit="kG·m", work_unit="kG·m")

@@ -1,0 +1,195 @@
+"""Layout helpers shared by the sheets: the standard page, label placement without overlaps.
+
+A sheet places its labels through an :class:`Occupancy`: it knows the lines and
+labels already drawn and puts each new label in the first free spot among the
+candidates given (beside a point, inside a region), so labels never cover curves or
+one another.
+
+>>> occ = Occupancy()
+>>> occ.add_line(((0, 10), (100, 10)))
+>>> lab = occ.place_label((50, 10), "b", ("n", "s"))
+>>> lab.y < 10                                   # above the line, not on it
+True
+"""
+
+from __future__ import annotations
+
+import math
+
+from graphmethods.scene import Page, TitleBlock
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import label_bbox, make_label, place_label
+from graphmethods.scene.primitives import Label, Path, Polygon, walk
+
+Box = tuple[float, float, float, float]
+
+
+def _boxes_overlap(a: Box, b: Box, pad: float = 0.0) -> bool:
+    return a[0] < b[2] + pad and b[0] < a[2] + pad and a[1] < b[3] + pad and b[1] < a[3] + pad
+
+
+def _segment_hits_box(p, q, box: Box) -> bool:
+    """Does the segment p–q pass through the box? (Liang–Barsky clipping)"""
+    x0, y0, x1, y1 = box
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    t0, t1 = 0.0, 1.0
+    for pk, qk in ((-dx, p[0] - x0), (dx, x1 - p[0]), (-dy, p[1] - y0), (dy, y1 - p[1])):
+        if pk == 0:
+            if qk < 0:
+                return False
+        else:
+            t = qk / pk
+            if pk < 0:
+                t0 = max(t0, t)
+            else:
+                t1 = min(t1, t)
+            if t0 > t1:
+                return False
+    return True
+
+
+def _segments_cross(p, q, a, b) -> bool:
+    """Do the segments p–q and a–b cross properly (touching ends do not count)?"""
+    def orient(u, v, w):
+        return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0])
+
+    d1, d2 = orient(a, b, p), orient(a, b, q)
+    d3, d4 = orient(p, q, a), orient(p, q, b)
+    return d1 * d2 < 0 and d3 * d4 < 0
+
+
+class Occupancy:
+    """What is drawn already (line segments and boxes), to place labels where nothing is."""
+
+    def __init__(self, *, pad_mm: float = 0.6):
+        self.pad = pad_mm
+        self.segments: list[tuple] = []
+        self.boxes: list[Box] = []
+
+    def add_line(self, points) -> None:
+        pts = [tuple(map(float, p)) for p in points]
+        self.segments.extend(zip(pts, pts[1:]))
+
+    def add_box(self, box: Box) -> None:
+        self.boxes.append(tuple(map(float, box)))
+
+    def add_label(self, label: Label) -> None:
+        self.add_box(label_bbox(label))
+
+    def add_primitives(self, prims) -> None:
+        """Register everything some primitives draw (paths, polygons, labels)."""
+        for p in walk(prims):
+            if isinstance(p, Path):
+                self.add_line(list(p.points) + ([p.points[0]] if p.closed else []))
+            elif isinstance(p, Polygon):
+                self.add_line(list(p.points) + [p.points[0]])
+            elif isinstance(p, Label):
+                self.add_label(p)
+
+    def is_free(self, box: Box, *, within: Box | None = None, lines: bool = True) -> bool:
+        """Nothing registered within the padding of ``box`` (boxes, and line segments unless ``lines=False``)."""
+        pad = self.pad
+        if within is not None and not (box[0] >= within[0] and box[1] >= within[1] and box[2] <= within[2]
+                                       and box[3] <= within[3]):
+            return False
+        grown = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
+        if any(_boxes_overlap(grown, b) for b in self.boxes):
+            return False
+        return not lines or not any(_segment_hits_box(p, q, grown) for p, q in self.segments)
+
+    def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
+        """The first label beside ``at`` (directions × gaps) whose box is free; None when none is."""
+        for gap in gaps:
+            for d in directions:
+                lab = place_label(at, text, d, gap_mm=gap, size_mm=size_mm)
+                if self.is_free(label_bbox(lab), within=within):
+                    return lab
+        return None
+
+    def place_label(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
+                    size_mm: float = 3.5, gap_mm: float = 1.2, within: Box | None = None,
+                    register: bool = True) -> Label:
+        """A label beside ``at`` in the first free direction (the first one when none is free)."""
+        lab = self.first_free(at, text, directions, (gap_mm, gap_mm + 2.0, gap_mm + 4.5), size_mm, within)
+        if lab is None:
+            lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
+        if register:
+            self.add_label(lab)
+        return lab
+
+    def place_label_with_leader(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
+                                size_mm: float = 3.5, gap_mm: float = 1.2, within: Box | None = None
+                                ) -> tuple[Label, tuple | None]:
+        """A label beside ``at``; when nothing beside it is free, further away with a leader line.
+
+        Returns the label and the leader ``((x0, y0), (x1, y1))`` from the label to ``at`` (or None).
+        """
+        lab = self.first_free(at, text, directions, (gap_mm, gap_mm + 2.0), size_mm, within)
+        if lab is not None:
+            self.add_label(lab)
+            return lab, None
+        x, y = at
+        for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0):
+            for ang in (45, 135, 315, 225, 90, 270, 0, 180, 20, 160, 340, 200, 65, 115, 245, 295):
+                a = math.radians(ang)
+                end = (x + r * math.cos(a), y - r * math.sin(a))
+                d = "e" if math.cos(a) > 0.3 else "w" if math.cos(a) < -0.3 else ("n" if math.sin(a) > 0 else "s")
+                lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
+                start = (x + 1.5 * math.cos(a), y - 1.5 * math.sin(a))
+                if self.is_free(label_bbox(lab), within=within) and not self._line_blocked(start, end):
+                    self.add_label(lab)
+                    self.add_line((start, end))
+                    return lab, (end, start)
+        lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
+        self.add_label(lab)
+        return lab, None
+
+    def _line_blocked(self, p, q) -> bool:
+        """Does the segment p–q cross a registered label box? (A leader may cross lines.)"""
+        return any(_segment_hits_box(p, q, b) for b in self.boxes)
+
+    @staticmethod
+    def block_size(lines: tuple[str, ...], *, size_mm: float, line_mm: float) -> tuple[float, float]:
+        """Width and height in mm of a centred block of text lines."""
+        from graphmethods.scene.markup import text_width_mm
+
+        return max(text_width_mm(t, size_mm) for t in lines) + 0.6, line_mm * len(lines)
+
+    def place_block(self, candidates, lines: tuple[str, ...], *, size_mm: float, line_mm: float,
+                    within: Box | None = None, inside=None, check_lines: bool = True
+                    ) -> tuple[list[Label], Box] | None:
+        """Centre a block of text lines on the first free candidate point; None when none fits.
+
+        ``inside`` is an optional test ``box -> bool`` (e.g. the box lies inside a region);
+        ``check_lines=False`` ignores registered lines (the ``inside`` test keeps it clear of them).
+        """
+        w, h = self.block_size(lines, size_mm=size_mm, line_mm=line_mm)
+        for cx, cy in candidates:
+            box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+            if (inside is None or inside(box)) and self.is_free(box, within=within, lines=check_lines):
+                labels = [make_label((cx, box[1] + line_mm * (k + 0.5)), t, size_mm=size_mm, anchor="middle",
+                                     valign="middle") for k, t in enumerate(lines)]
+                self.add_box(box)
+                return labels, box
+        return None
+
+
+def standard_page(page: Page | None, *, title: str, problem: str, scales: tuple[str, ...], nt,
+                  title_block: bool = True) -> Page:
+    """The page of a sheet: A4 landscape with a frame and a title block unless ``page`` is given.
+
+    A given page is used as it is, with the title block added when it has none and
+    ``title_block`` is true.
+    """
+    nt = get_notation(nt)
+    tb = TitleBlock(title, problem, scales, headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")))
+    if page is None:
+        return Page("A4", "landscape", frame=True, title_block=tb if title_block else None)
+    if page.title_block is None and title_block:
+        return page.with_(title_block=tb)
+    return page
+
+
+def angle_deg_text(phi_rad: float, nt) -> str:
+    """An angle in degrees as the profile writes numbers: ``45°``."""
+    return get_notation(nt).number(math.degrees(phi_rad), sig=4) + "°"
