@@ -264,14 +264,19 @@ class _Steps:
 def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
     """The periodic T at the nodes (T(φ_T) = T(0)) by secant iteration on T(0)."""
     def P(T0):
-        return _one_period(T0, *st.args, M_d)
+        try:
+            return _one_period(T0, *st.args, M_d)
+        except _Stall as s:
+            s.T_start = T0
+            raise
 
     def describe(stall: _Stall):
         phi = st.x[stall.k]
-        return (f"the machine stops: the kinetic energy falls to zero near φ = {math.degrees(phi):.6g}° "
-                f"(position {math.degrees(phi - model.phi_0):.4g}° after position 0), {stall.T:.4g} J "
-                f"short; the driving moment cannot carry the load peak there. Increase J_F or the "
-                f"motor's torque, or reduce the load")
+        return (f"the machine stops: starting position 0 with the kinetic energy {stall.T_start:.6g} J, "
+                f"the energy runs out near φ = "
+                f"{math.degrees(phi):.6g}° ({math.degrees(phi - model.phi_0):.4g}° after position 0), "
+                f"where it would fall to {stall.T:.4g} J: the driving moment and the inertia cannot "
+                f"carry the load peak there. Increase J_F or the motor's torque, or reduce the load")
 
     Ta, traj, stall = T_guess, None, None
     for factor in (1.0, 2.0, 4.0, 8.0, 16.0):       # a little more energy may carry it past a peak
