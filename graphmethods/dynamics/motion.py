@@ -620,8 +620,22 @@ def _frozen(a):
     return a
 
 
+class _FromPosition0:
+    """Angles of ω_max and ω_min measured from position 0 (needs phi_omega_max/min, phi_0, phi_T)."""
+
+    @property
+    def phi_omega_max_from_0(self) -> float:
+        """Angle of ω_max after position 0, rad, in [0, φ_T)."""
+        return float(np.mod(self.phi_omega_max - self.phi_0, self.phi_T))
+
+    @property
+    def phi_omega_min_from_0(self) -> float:
+        """Angle of ω_min after position 0, rad, in [0, φ_T)."""
+        return float(np.mod(self.phi_omega_min - self.phi_0, self.phi_T))
+
+
 @dataclass(frozen=True, eq=False)
-class MotionResult:
+class MotionResult(_FromPosition0):
     """A steady periodic motion over one period, at the output positions 0…m.
 
     Attributes
@@ -690,19 +704,9 @@ class MotionResult:
     method: str = "energy"
     multiplier: float | None = None
 
-    @property
-    def phi_omega_max_from_0(self) -> float:
-        """Angle of ω_max after position 0, rad, in [0, φ_T)."""
-        return float(np.mod(self.phi_omega_max - self.phi_0, self.phi_T))
-
-    @property
-    def phi_omega_min_from_0(self) -> float:
-        """Angle of ω_min after position 0, rad, in [0, φ_T)."""
-        return float(np.mod(self.phi_omega_min - self.phi_0, self.phi_T))
-
 
 @dataclass(frozen=True, eq=False)
-class FlywheelResult:
+class FlywheelResult(_FromPosition0):
     """The exact flywheel for a permissible coefficient of fluctuation.
 
     Attributes
@@ -746,16 +750,6 @@ class FlywheelResult:
     phi_0: float
     phi_T: float
     motion: MotionResult
-
-    @property
-    def phi_omega_max_from_0(self) -> float:
-        """Angle of ω_max after position 0, rad, in [0, φ_T)."""
-        return float(np.mod(self.phi_omega_max - self.phi_0, self.phi_T))
-
-    @property
-    def phi_omega_min_from_0(self) -> float:
-        """Angle of ω_min after position 0, rad, in [0, φ_T)."""
-        return float(np.mod(self.phi_omega_min - self.phi_0, self.phi_T))
 
     @property
     def delta_check(self) -> float:
