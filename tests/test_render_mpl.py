@@ -87,3 +87,28 @@ def test_drawing_touches_no_global_matplotlib_state():
             "print('pyplot' in sys.modules, matplotlib.get_backend() == before)") % __file__.rsplit("/", 1)[0]
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.split() == ["False", "True"]
+
+
+def test_a_russian_and_a_chinese_figure_make_one_deterministic_pdf():
+    from graphmethods import problems, sheets
+
+    scenes = [sheets.energy_graph(problems.w4_exact(), J_e=0.8, omega_0=10.0, notation="ru", work_unit="kG·m"),
+              sheets.energy_indicator(problems.w1(), notation="zh")]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", mpl.CJKFontWarning)      # machines without a CJK font
+        a, b = mpl.to_pdf_bytes(scenes), mpl.to_pdf_bytes(scenes)
+    assert a == b and len(re.findall(rb"/Type\s*/Page\b", a)) == 2
+
+
+def test_an_unusable_font_path_in_the_environment_is_reported(monkeypatch, tmp_path):
+    bogus = tmp_path / "not-a-font.otf"
+    bogus.write_bytes(b"nothing")
+    monkeypatch.setenv("GRAPHMETHODS_CJK_FONT", str(bogus))
+    mpl.find_cjk_font.cache_clear()
+    try:
+        with pytest.warns(mpl.CJKFontWarning, match="not a font file"):
+            mpl.find_cjk_font()
+    finally:
+        monkeypatch.delenv("GRAPHMETHODS_CJK_FONT")
+        mpl.find_cjk_font.cache_clear()
+        mpl._cjk_family.cache_clear()

@@ -91,6 +91,9 @@ def find_cjk_font() -> str | None:
     if spec is not None and spec.submodule_search_locations:
         for loc in spec.submodule_search_locations:
             candidates.append(str(pathlib.Path(loc) / "fonts" / "NotoSansCJKsc-Regular.otf"))
+    if env and not (os.path.isfile(env) and _covers(env)):
+        warnings.warn(f"graphmethods: GRAPHMETHODS_CJK_FONT={env} is not a font file with Chinese characters; "
+                      f"looking for another", CJKFontWarning, stacklevel=2)
     for path in candidates:
         if path and os.path.isfile(path) and _covers(path):
             font_manager.fontManager.addfont(path)

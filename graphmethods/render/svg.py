@@ -111,6 +111,7 @@ class SvgRenderer:
         size = label.size_mm
         elem = self.dwg.text("")
         elem["x"], elem["y"], elem["font-size"] = fmt(label.x), fmt(label.y), fmt(size)
+        elem["xml:space"] = "preserve"   # keep the space after a subscript ("f₁ = …")
         if label.anchor != "start":
             elem["text-anchor"] = label.anchor
         if label.bold:

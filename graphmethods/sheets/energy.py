@@ -590,8 +590,7 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
         marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
         occ.add_box((at[0] - 1.2, at[1] - 1.2, at[0] + 1.2, at[1] + 1.2))
         text = f"{nt.sym(key)} = {nt.number(float(E[k]))} {nt.unit(work_unit)}"
-        up, down = ("n", "nw", "ne", "w", "e"), ("s", "sw", "se", "w", "e")
-        dirs = up + down if key == "E_max" else down + up
+        dirs = ("n", "nw", "ne", "w", "e") if key == "E_max" else ("s", "sw", "se", "w", "e")
         lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0, within=sheet.box)
         marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
         if leader is not None:
@@ -727,8 +726,7 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
         at = P(ph, v)
         text = (f"{nt.sym(key)} = {nt.number(v)} {nt.unit(work_unit)}, "
                 f"{nt.sym('phi')} = {angle_deg_text(ph - phi0, nt)}")
-        up, down = ("ne", "nw", "n", "e", "w"), ("se", "sw", "s", "e", "w")
-        dirs = up + down if key.endswith("max") else down + up
+        dirs = ("ne", "nw", "n", "e", "w") if key.endswith("max") else ("se", "sw", "s", "e", "w")
         lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0,
                                                   within=(px0 + 1, py0 - 10, x1, y1))
         marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))

@@ -129,17 +129,21 @@ class Occupancy:
             self.add_label(lab)
             return lab, None
         x, y = at
-        for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0):
-            for ang in (45, 135, 315, 225, 90, 270, 0, 180, 20, 160, 340, 200, 65, 115, 245, 295):
-                a = math.radians(ang)
-                end = (x + r * math.cos(a), y - r * math.sin(a))
-                d = "e" if math.cos(a) > 0.3 else "w" if math.cos(a) < -0.3 else ("n" if math.sin(a) > 0 else "s")
-                lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-                start = (x + 1.5 * math.cos(a), y - 1.5 * math.sin(a))
-                if self.is_free(label_bbox(lab), within=within) and not self._line_blocked(start, end):
-                    self.add_label(lab)
-                    self.add_line((start, end))
-                    return lab, (end, start)
+        upward = directions[0][:1] != "s"              # try the side the caller asked for first
+        up = (45, 135, 20, 160, 65, 115, 90, 0, 180)
+        down = (315, 225, 340, 200, 295, 245, 270)
+        for side in ((up, down) if upward else (down, up)):
+            for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0):
+                for ang in side:
+                    a = math.radians(ang)
+                    end = (x + r * math.cos(a), y - r * math.sin(a))
+                    d = "e" if math.cos(a) > 0.3 else "w" if math.cos(a) < -0.3 else ("n" if math.sin(a) > 0 else "s")
+                    lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
+                    start = (x + 1.5 * math.cos(a), y - 1.5 * math.sin(a))
+                    if self.is_free(label_bbox(lab), within=within) and not self._line_blocked(start, end):
+                        self.add_label(lab)
+                        self.add_line((start, end))
+                        return lab, (end, start)
         lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
         self.add_label(lab)
         return lab, None
