@@ -127,9 +127,188 @@ def bench_startup(repeat=5) -> list[Row]:
     ]
 
 
+# --------------------------------------------------------------------- flywheel: methods against exact
+M_VALUES = (12, 24, 48, 96, 360, 3600, 100_000)
+
+
+def _press_case(**changes):
+    import json
+    import pathlib
+
+    from graphmethods.kinematics import case_from_dict
+
+    path = pathlib.Path(__file__).parent / "problems" / "data" / "slider_crank_press.json"
+    return case_from_dict({**json.loads(path.read_text(encoding="utf-8")), **changes}, source=str(path))
+
+
+def _deg_error(found, exact, period):
+    """Smallest angular distance (degrees) between the exact angle and any of the found ones."""
+    d = np.abs((np.asarray(found) - exact + period / 2) % period - period / 2)
+    return float(np.degrees(d.min()))
+
+
+def _area_drafting(g, period) -> float:
+    """Relative change of ΔW_max if the areas between E_min and E_max are measured 0.5 mm off along
+    their whole length, on a moment diagram 240 mm long with |M| up to 100 mm (convenient scales)."""
+    from graphmethods.units import convenient_at_least
+
+    cyc = g["excess_work"]
+    mu_phi = period / 240.0
+    mu_M = convenient_at_least(g["M_max"] / 100.0)
+    L_mm = abs(cyc.phi[cyc.index_E_max] - cyc.phi[cyc.index_E_min]) / mu_phi
+    return 0.5 * L_mm * mu_M * mu_phi / cyc.delta_W_max
+
+
+def _flywheel_rows(case_name, exact, runs, period, repeat):
+    """Rows for one problem: each method at each m against the exact J_F and angles."""
+    rows = []
+    J_x = exact.J_F
+    for m, fn in runs:
+        t = median_time(fn, repeat=repeat)
+        g = fn()
+        wb, fe = g["wittenbauer"], g["energy"]
+        err_true = J_x - wb.J_F
+        rows.append(Row("flywheel", case_name, "Wittenbauer (chords)", m, t, abs(err_true) / J_x,
+                        extra={"J_F": wb.J_F,
+                               "ω_max off, °": _deg_error(wb.phi_omega_max, g["phi0"] + exact.phi_omega_max_from_0, period),
+                               "ω_min off, °": _deg_error(wb.phi_omega_min, g["phi0"] + exact.phi_omega_min_from_0, period),
+                               "estimate/true": (wb.error_estimate / err_true) if err_true else float("nan"),
+                               "drafting ±0.5 mm on kl": 0.5 / wb.kl_mm}))
+        rows.append(Row("flywheel", case_name, "ΔW_max method", m, t, abs(fe.J_F - J_x) / J_x,
+                        extra={"J_F": fe.J_F, "drafting ±0.5 mm on areas": _area_drafting(g, period)}))
+    return rows
+
+
+def bench_flywheel(m_values=M_VALUES, *, repeat=3) -> list[Row]:
+    """Each flywheel method on four problems of different character, against the exact solution."""
+    from graphmethods.dynamics.graphical import chord_flywheels
+    from graphmethods.dynamics.motion import exact_flywheel
+    from graphmethods.dynamics.study import Study
+    from graphmethods.problems.reduced import four_stroke_engine, smooth_machine
+
+    rows = []
+    linkage_cases = [("press (load jumps)", _press_case()),
+                     ("heavy slider (ΔJ_e ~ J_F)", _press_case(m3=200.0, F0=500.0, delta=0.3))]
+    for name, case in linkage_cases:
+        ref = Study(case)
+        t_exact = median_time(lambda: exact_flywheel(ref.model, omega_m=ref.omega_m, delta=ref.delta), repeat=repeat)
+        exact = ref.exact
+        rows.append(Row("flywheel", name, "exact", None, t_exact, exact.rel_accuracy, extra={"J_F": exact.J_F}))
+
+        def run(m, case=case):
+            s = Study(case, positions=m)
+            return {"wittenbauer": s.wittenbauer, "energy": s.flywheel_energy, "phi0": 0.0,
+                    "excess_work": s.excess_work, "M_max": float(max(s.M_r.max(), s.M_d))}
+
+        rows += _flywheel_rows(name, exact, [(m, lambda m=m: run(m)) for m in m_values], 2 * math.pi, repeat)
+    for prob in (smooth_machine(), four_stroke_engine()):
+        t_exact = median_time(lambda: exact_flywheel(prob.model, omega_m=prob.omega_m, delta=prob.delta), repeat=repeat)
+        exact = exact_flywheel(prob.model, omega_m=prob.omega_m, delta=prob.delta)
+        rows.append(Row("flywheel", prob.name, "exact", None, t_exact, exact.rel_accuracy, extra={"J_F": exact.J_F}))
+
+        def run(m, prob=prob):
+            g = chord_flywheels(prob.model, positions=m, omega_m=prob.omega_m, delta=prob.delta)
+            return {"wittenbauer": g.wittenbauer, "energy": g.energy, "phi0": prob.model.phi_0,
+                    "excess_work": g.excess_work, "M_max": float(np.abs(g.M_e).max())}
+
+        rows += _flywheel_rows(prob.name, exact, [(m, lambda m=m: run(m)) for m in m_values], prob.model.phi_T, repeat)
+    return rows
+
+
+# --------------------------------------------------------------------- kinematics
+def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
+    """Velocity analogues from the constructed plans against the analytic derivative and against
+    central finite differences; and plans + reduction for n positions."""
+    from graphmethods.dynamics.reduction import reduced_inertia
+    from graphmethods.kinematics import read_case
+
+    import pathlib
+
+    data = pathlib.Path(__file__).parent / "problems" / "data"
+    rows = []
+    for fname in ("slider_crank_press.json", "four_bar_rocker.json", "slotted_lever.json", "shaper.json"):
+        case = read_case(data / fname)
+        mech = case.mechanism
+        phi = mech.positions(m=n).phi[:-1]
+        pos = mech.positions(phi=phi)
+        t_plan = median_time(lambda: mech.velocity_plans(mech.positions(phi=phi)), repeat=repeat)
+        plans = mech.velocity_plans(pos)
+        dxy, _ = mech.derivatives(phi)
+        worst = 0.0
+        for name, d in dxy.items():
+            if name not in plans.vectors:
+                continue
+            v = plans.analogue(name) * mech.sense
+            scale = float(np.abs(d).max()) or 1.0
+            worst = max(worst, float(np.abs(v - d).max()) / scale)
+        rows.append(Row("kinematics", case.kind, "velocity plans (construction)", n, t_plan, worst,
+                        note="vs analytic derivative, max rel."))
+        t_red = median_time(lambda: reduced_inertia(mech.velocity_plans(mech.positions(phi=phi)), case.inertias),
+                            repeat=repeat)
+        rows.append(Row("kinematics", case.kind, "positions + plans + J_e", n, t_red, None))
+        point = {"slider_crank": "B", "four_bar": "B", "slotted_lever": "B", "shaper": "C"}[case.kind]
+        exact = dxy[point]
+        scale = float(np.abs(exact).max())
+        for h in (1e-2, 1e-4, 1e-6, 1e-8):
+            def fd(h=h):
+                up = mech.positions(phi=phi + h).xy(point)
+                dn = mech.positions(phi=phi - h).xy(point)
+                return (up - dn) / (2 * h)
+            t_fd = median_time(fd, repeat=repeat)
+            err = float(np.abs(fd() - exact).max()) / scale
+            rows.append(Row("kinematics", case.kind, f"central differences h = {h:g}", n, t_fd, err,
+                            note=f"point {point}"))
+    return rows
+
+
+# --------------------------------------------------------------------- the error-against-time plot
+def plot_error_vs_time(rows: list[Row], path) -> None:
+    """A log–log plot of relative error against time for the flywheel methods (SVG, deterministic)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    matplotlib.rcParams["svg.hashsalt"] = "graphmethods-bench"
+    fig, ax = plt.subplots(figsize=(7.5, 5.0))
+    styles = {"Wittenbauer (chords)": "o-", "ΔW_max method": "s--"}
+    cases = sorted({r.case for r in rows if r.section == "flywheel"})
+    colours = dict(zip(cases, ("C0", "C1", "C2", "C3", "C4")))
+    for case in cases:
+        for method, style in styles.items():
+            pts = [(r.seconds, r.error, r.size) for r in rows
+                   if r.section == "flywheel" and r.case == case and r.method == method and r.error]
+            if not pts:
+                continue
+            t, e, m = zip(*pts)
+            ax.loglog(t, e, style, color=colours[case], ms=4, lw=1,
+                      label=f"{case}: {'Wittenbauer' if method.startswith('W') else 'ΔW_max'}")
+            if method.startswith("W"):
+                for ti, ei, mi in zip(t, e, m):
+                    ax.annotate(f"m={mi}", (ti, ei), fontsize=6, xytext=(3, 2), textcoords="offset points")
+    ax.set_xlabel("time per solve, s (median)")
+    ax.set_ylabel("relative error of J_F against the exact solution")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=6, loc="lower left")
+    ax.set_title("Speed against error: flywheel methods at m positions", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, format="svg", metadata={"Date": None})
+    plt.close(fig)
+
+
 SECTIONS = {
+    "flywheel": bench_flywheel,
+    "kinematics": bench_kinematics,
     "areas": bench_areas,
     "startup": bench_startup,
+}
+
+#: Arguments of each section for --quick (CI): small sizes, few repeats.
+QUICK = {
+    "flywheel": dict(m_values=(12, 24, 96, 360), repeat=1),
+    "kinematics": dict(n=10_000, repeat=2),
+    "areas": dict(sizes=(10**3, 10**4, 10**5), crossings=(2, 10**4), repeat=3),
+    "startup": dict(repeat=3),
 }
 
 
@@ -141,12 +320,7 @@ def run_all(*, quick: bool = False, sections=None, progress=None) -> list[Row]:
             continue
         if progress:
             progress(name)
-        if quick and name == "areas":
-            rows += fn(sizes=(10**3, 10**4, 10**5), crossings=(2, 10**4), repeat=3)
-        elif quick and name == "startup":
-            rows += fn(repeat=3)
-        else:
-            rows += fn()
+        rows += fn(**QUICK[name]) if quick else fn()
     return rows
 
 
@@ -160,13 +334,14 @@ def _fmt(v, unit=""):
 
 def to_markdown(rows: list[Row]) -> str:
     """The report as a Markdown table."""
-    head = "| section | case | method | time, s | rel. error | note |\n|---|---|---|---|---|---|\n"
+    head = "| section | case | method | m or n | time, s | rel. error | note |\n|---|---|---|---|---|---|---|\n"
     body = []
     for r in rows:
         note = r.note
         for k, v in r.extra.items():
-            note += f"{'; ' if note else ''}{k.replace('_', ' ')} {_fmt(v)}"
-        body.append(f"| {r.section} | {r.case} | {r.method} | {_fmt(r.seconds)} | {_fmt(r.error)} | {note} |")
+            note += f"{'; ' if note else ''}{k} {_fmt(v)}"
+        size = "" if r.size is None else f"{r.size:,}".replace(",", " ")
+        body.append(f"| {r.section} | {r.case} | {r.method} | {size} | {_fmt(r.seconds)} | {_fmt(r.error)} | {note} |")
     return head + "\n".join(body) + "\n"
 
 

@@ -95,3 +95,15 @@ def test_bad_input():
         differentiate_by_chords([0, 1], [0, 1], mu_x=0, mu_Y=1)
     with pytest.raises(InputError, match="range"):
         integrate_by_chords([0, 7], MomentCurve.constant(1.0), mu_x=1, mu_y=1, H_mm=1)
+
+
+def test_chord_flywheels_on_a_reduced_model():
+    from graphmethods.dynamics.graphical import chord_flywheels
+    from graphmethods.dynamics.motion import ReducedModel, exact_flywheel
+    model = ReducedModel(J_e=lambda p: 1.0 + 0.2 * np.cos(p), M_e=lambda p: 40.0 * np.cos(p))
+    exact = exact_flywheel(model, omega_m=20.0, delta=0.04).J_F
+    g = chord_flywheels(model, positions=24, omega_m=20.0, delta=0.04)
+    true_error = exact - g.wittenbauer.J_F
+    assert 0.5 < g.wittenbauer.error_estimate / true_error < 2.0
+    assert "384 positions" in g.wittenbauer.error_method
+    assert abs(g.excess_work.residual) < 1e-9 and abs(g.delta_T[-1]) < 1e-9

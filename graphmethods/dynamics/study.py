@@ -27,6 +27,7 @@ import numpy as np
 
 from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import Flywheel, flywheel
+from graphmethods.dynamics.graphical import FINE_CAP, REFINE, with_refined_estimate
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.dynamics.motion import FlywheelResult, ReducedModel, exact_flywheel
 from graphmethods.dynamics.reduction import (ReducedInertia, load_switch_angles, load_work, reduced_inertia,
@@ -73,11 +74,12 @@ class Study:
         Number of positions m (≥ 3; 12 by default).
     """
 
-    def __init__(self, case, *, positions: int = 12):
+    def __init__(self, case, *, positions: int = 12, estimate: bool = True):
         if isinstance(positions, bool) or not isinstance(positions, (int, np.integer)) or positions < 3:
             raise InputError(f"the number of positions must be an integer ≥ 3, got {positions!r}")
         self.case = case
         self.m = int(positions)
+        self.estimate = estimate
         self.computed: list[str] = []
 
     # ----------------------------------------------------------------- speed data
@@ -189,10 +191,19 @@ class Study:
 
     @_logged
     def wittenbauer(self) -> WittenbauerResult:
-        """The energy–mass diagram at positions 0…m with its tangent rays, and J_F from kl."""
+        """The energy–mass diagram at positions 0…m with its tangent rays, and J_F from kl.
+
+        Its error estimate is J_F at 16m positions minus J_F at m (see
+        :func:`~graphmethods.dynamics.graphical.with_refined_estimate`).
+        """
         sc = self.scales
-        return wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
-                           mu_J=sc.mu_J, mu_T=sc.mu_T, phi=self.phi)
+        wb = wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
+                         mu_J=sc.mu_J, mu_T=sc.mu_T, phi=self.phi)
+        m_fine = min(REFINE * self.m, FINE_CAP)
+        if self.estimate and m_fine > self.m:
+            fine = Study(self.case, positions=m_fine, estimate=False)
+            wb = with_refined_estimate(wb, fine.wittenbauer.J_F, m_fine)
+        return wb
 
     @_logged
     def exact(self) -> FlywheelResult:
