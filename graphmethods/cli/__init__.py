@@ -20,6 +20,7 @@ COMMANDS = {
     "examples": "examples",
     "kinematics": "kinematics",
     "study": "study",
+    "gallery": "gallery",
     "bench": "bench",
 }
 
