@@ -1,6 +1,5 @@
 """The recording renderer: geometry of what a scene draws, without pixels."""
 
-import math
 
 import pytest
 from hypothesis import given, settings

@@ -4,18 +4,16 @@ import itertools
 import math
 import xml.etree.ElementTree as ET
 
-import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphmethods import problems, sheets
 from graphmethods.dynamics import excess_work as ew
-from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
-from graphmethods.scene import Axis, Region, Scale, markup
+from graphmethods.scene import Page, Region, markup
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import Label, Path, walk
 
@@ -272,3 +270,16 @@ def test_the_same_table_as_markdown_comes_from_the_core():
     drawn = sheets.excess_work_table(cyc).element("table").rows
     for row in drawn[2:-1]:
         assert f"| {row[0]} |" in md
+
+
+@pytest.mark.parametrize("page", [Page("A3", "portrait"), Page("A2", "landscape", frame=True), Page("A4", "portrait")],
+                         ids=["A3-portrait", "A2-landscape-frame", "A4-portrait-no-frame"])
+def test_figures_fit_other_pages_and_use_them(page):
+    small = sheets.moment_diagram(problems.w3())
+    big = sheets.moment_diagram(problems.w3(), page=page)
+    assert big.page.size == page.size and big.page.title_block is not None
+    x0, y0, x1, y1 = big.page.inner_box()
+    bx = big.bbox()
+    assert bx[0] >= x0 and bx[1] >= y0 and bx[2] <= x1 and bx[3] <= y1
+    if page.size != "A4":
+        assert big.scales()[1].per_mm <= small.scales()[1].per_mm      # more paper, larger drawing

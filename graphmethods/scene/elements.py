@@ -23,8 +23,7 @@ a vector of length value/μ, :class:`Axis` ticks values.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
