@@ -54,7 +54,8 @@ def _candidates(value: float, series) -> list[float]:
     if not (value > 0 and math.isfinite(value)):
         raise InputError(f"a convenient number needs a positive finite value, got {value!r}")
     k = math.floor(math.log10(value))
-    return sorted(c * 10.0**kk for kk in (k - 1, k, k + 1) for c in series)
+    # written as decimal literals, so 2.5e-2 is the float nearest 0.025 (not 2.5 × 0.01)
+    return sorted(float(f"{float(c)!r}e{kk}") for kk in (k - 1, k, k + 1) for c in series)
 
 
 def convenient_at_least(value: float, series=CONVENIENT) -> float:

@@ -50,7 +50,7 @@ def diagram_scales(J_e: np.ndarray, delta_T: np.ndarray, *, span_mm: float = 150
 
 #: The finer construction that estimates the error at m positions has REFINE·m positions, at most FINE_CAP.
 REFINE = 16
-FINE_CAP = 2**17
+FINE_CAP = 2**21
 
 
 def with_refined_estimate(wb: WittenbauerResult, J_F_fine: float, m_fine: int) -> WittenbauerResult:

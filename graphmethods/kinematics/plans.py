@@ -31,9 +31,7 @@ from typing import Mapping
 import numpy as np
 
 from graphmethods.errors import InputError
-
-#: the convenient scale series of the textbooks (× 10^k)
-CONVENIENT = (1.0, 2.0, 2.5, 4.0, 5.0)
+from graphmethods.units import CONVENIENT, convenient_at_least
 
 
 def convenient_scale(raw: float, *, series: tuple[float, ...] = CONVENIENT) -> float:
@@ -47,13 +45,7 @@ def convenient_scale(raw: float, *, series: tuple[float, ...] = CONVENIENT) -> f
     """
     if not (isinstance(raw, (int, float, np.floating)) and math.isfinite(raw) and raw > 0):
         raise InputError(f"a scale must be a positive finite number, got {raw!r}")
-    k = math.floor(math.log10(raw))
-    for kk in (k - 1, k, k + 1):
-        for c in sorted(series):
-            value = c * 10.0 ** kk
-            if value >= raw * (1.0 - 1e-12):
-                return float(f"{value:.12g}")
-    return float(f"{10.0 ** (k + 1) * max(series):.12g}")  # pragma: no cover
+    return convenient_at_least(float(raw), series)
 
 
 @dataclass(frozen=True, eq=False)

@@ -68,7 +68,7 @@ def find_cjk_font() -> str | None:
     Looks, in order, at the environment variable ``GRAPHMETHODS_CJK_FONT`` (a font
     file), the system's fonts known to matplotlib (by family name, then by the
     characters they cover), and the font shipped by the ``mplfonts`` package
-    (``pip install mplfonts``; Noto Sans CJK SC, SIL OFL).
+    (``pip install 'graphmethods[cjk]'``; Noto Sans CJK SC, SIL OFL).
     """
     from matplotlib import font_manager
 
@@ -118,7 +118,7 @@ def _warn_no_cjk() -> None:
     _warned = True
     warnings.warn(
         "graphmethods: no font with Chinese characters was found, so the Chinese text of this figure cannot be "
-        "drawn in PNG/PDF (it would show as empty boxes). Get one with `pip install mplfonts` (Noto Sans CJK SC, "
+        "drawn in PNG/PDF (it would show as empty boxes). Get one with `pip install 'graphmethods[cjk]'` (mplfonts: Noto Sans CJK SC, "
         "SIL Open Font License), or install your system's Noto CJK fonts (Debian/Ubuntu: fonts-noto-cjk), or set "
         "GRAPHMETHODS_CJK_FONT=/path/to/font.otf. SVG output is not affected: the viewer chooses the font.",
         CJKFontWarning, stacklevel=3)

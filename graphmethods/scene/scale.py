@@ -21,10 +21,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.errors import InputError
+from graphmethods.units import CONVENIENT, convenient_at_least
 from graphmethods.scene.numbers import format_value
 
 #: the convenient mantissas textbooks use; 1.5 and 3 are allowed on request
-SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
+SERIES = CONVENIENT
 SERIES_EXTRA = (1.5, 3.0)
 
 
@@ -99,15 +100,6 @@ class Scale:
         return text
 
 
-def _candidates(need: float, series) -> list[float]:
-    k = math.floor(math.log10(need)) - 1
-    out = []
-    for e in range(k, k + 3):
-        for m in series:
-            out.append(float(f"{m!r}e{e}"))
-    return sorted(out)
-
-
 def pick_scale(span_value: float, span_mm: float, *, series=SERIES, allow_15_3: bool = False,
                symbol: str = "μ", unit: str = "") -> Scale:
     """The smallest convenient scale whose drawing of ``span_value`` fits in ``span_mm``.
@@ -152,12 +144,10 @@ def pick_scale(span_value: float, span_mm: float, *, series=SERIES, allow_15_3: 
     if span_value == 0:
         return Scale(symbol, unit, mantissas[0], note=f"picked: nothing to fit; chose {format_value(mantissas[0])} {unit}/mm")
     need = span_value / span_mm
-    for c in _candidates(need, mantissas):
-        if span_value / c <= span_mm * (1 + 1e-12):
-            note = (f"picked: {format_value(span_value)} {unit} over {format_value(span_mm)} mm needs "
-                    f"≥ {format_value(need)} {unit}/mm; chose {format_value(c, sig=6)} {unit}/mm")
-            return Scale(symbol, unit, c, note=note)
-    raise AssertionError("unreachable: the candidate list always contains a fitting scale")  # pragma: no cover
+    c = convenient_at_least(need, mantissas)
+    note = (f"picked: {format_value(span_value)} {unit} over {format_value(span_mm)} mm needs "
+            f"≥ {format_value(need)} {unit}/mm; chose {format_value(c, sig=6)} {unit}/mm")
+    return Scale(symbol, unit, c, note=note)
 
 
 def pick_angle_scale(span_rad: float, span_mm: float, *, symbol: str = "μ_φ", allow_15_3: bool = True) -> Scale:
