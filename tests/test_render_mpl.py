@@ -55,7 +55,7 @@ def test_without_a_cjk_font_chinese_text_warns_once_clearly(monkeypatch):
         mpl.to_png_bytes(small_scene("盈亏功"), dpi=30)
     ours = [w for w in caught if issubclass(w.category, mpl.CJKFontWarning)]
     assert len(ours) == 1
-    assert "pip install mplfonts" in str(ours[0].message) and "GRAPHMETHODS_CJK_FONT" in str(ours[0].message)
+    assert "pip install 'graphmethods[cjk]'" in str(ours[0].message) and "GRAPHMETHODS_CJK_FONT" in str(ours[0].message)
     assert not [w for w in caught if "missing from" in str(w.message)]    # no flood of glyph warnings
 
 
