@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
+import numpy as np
+
 from graphmethods.errors import InputError
 
 
@@ -74,3 +76,24 @@ def convenient_at_most(value: float, series=CONVENIENT) -> float:
     (25.0, 0.004, 2.5)
     """
     return max(v for v in _candidates(value, series) if v <= value * (1 + 1e-12))
+
+
+def finite_array(values, name: str) -> np.ndarray:
+    """A flat, read-only float array of finite numbers, or an InputError naming the first bad entry.
+
+    >>> finite_array([1, 2.5], "areas").tolist()
+    [1.0, 2.5]
+    """
+    try:
+        arr = np.array(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected a list of numbers, got {values!r}") from None
+    if arr.ndim > 1:
+        raise InputError(f"{name}: expected a flat list of numbers, got shape {arr.shape}")
+    arr = arr.reshape(-1)
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise InputError(f"{name}[{i}] = {arr[i]!r} is not a finite number; remove or fix it")
+    arr.setflags(write=False)
+    return arr

@@ -35,6 +35,7 @@ import numpy as np
 
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError, UnbalancedCycleError
+from graphmethods.units import finite_array
 
 #: Default closure tolerance for measured data (areas, works, levels): |Σ A_i| / Σ|A_i|.
 CLOSURE_TOL_MEASURED = 0.05
@@ -276,19 +277,6 @@ def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -
     return ExcessWork(work=work, E=E, closure_tol=closure_tol, **extra)
 
 
-def _array(values, name: str) -> np.ndarray:
-    try:
-        arr = np.array(values, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: expected numbers, got {values!r}") from None
-    bad = ~np.isfinite(arr)
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
-        raise InputError(f"{name}[{i}] = {arr[i]!r} is not a finite number")
-    arr.setflags(write=False)
-    return arr
-
-
 def _positive(value, name: str, hint: str) -> float:
     try:
         v = float(value)
@@ -305,7 +293,7 @@ def from_work(work_J: Sequence[float], *, closure_tol: float = CLOSURE_TOL_MEASU
     >>> from_work([-50, 550, -100, 125, -500, 25, -50]).delta_W_max    # W2
     575.0
     """
-    return _from_work_array(_array(work_J, "work"), closure_tol, "works")
+    return _from_work_array(finite_array(work_J, "work"), closure_tol, "works")
 
 
 def from_areas(
@@ -340,7 +328,7 @@ def from_areas(
     if mu_phi is None:
         mu_phi = math.radians(_positive(mu_phi_deg, "mu_phi_deg", "give the angle scale in degrees per mm"))
     mu_phi = _positive(mu_phi, "mu_phi", "give the angle scale in rad per mm")
-    areas = _array(areas_mm2, "areas")
+    areas = finite_array(areas_mm2, "areas")
     work = areas * (mu_M * mu_phi)
     work.setflags(write=False)
     return _from_work_array(work, closure_tol, "areas", areas_mm2=areas, mu_M=mu_M, mu_phi=mu_phi)
@@ -352,7 +340,7 @@ def from_levels(E: Sequence[float], *, closure_tol: float = CLOSURE_TOL_MEASURED
     >>> from_levels([0, -50, 500, 400, 525, 25, 50, 0]).work.tolist()
     [-50.0, 550.0, -100.0, 125.0, -500.0, 25.0, -50.0]
     """
-    levels = _array(E, "levels")
+    levels = finite_array(E, "levels")
     if levels.size < 2:
         raise InputError("give at least two energy levels (the cycle's start and its end)")
     work = np.diff(levels)
@@ -388,7 +376,7 @@ def from_moments(
     M_d, M_r = balance(M_d, M_r)
     D = M_d - M_r
     if boundaries is not None:
-        forced = _array(boundaries, "boundaries")
+        forced = finite_array(boundaries, "boundaries")
         if ((forced < D.phi[0] - 1e-12) | (forced > D.phi[-1] + 1e-12)).any():
             raise InputError(f"boundaries must lie within the period {D.phi[0]:g}..{D.phi[-1]:g} rad")
         forced = np.clip(forced, D.phi[0], D.phi[-1])

@@ -26,22 +26,9 @@ from typing import Callable, Iterable, Sequence
 import numpy as np
 
 from graphmethods.errors import InputError
+from graphmethods.units import finite_array
 
 TWO_PI = 2.0 * math.pi
-
-
-def _finite_array(values, name: str) -> np.ndarray:
-    try:
-        arr = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: expected a list of numbers, got {values!r}") from None
-    if arr.ndim != 1:
-        raise InputError(f"{name}: expected a flat list of numbers, got shape {arr.shape}")
-    bad = ~np.isfinite(arr)
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
-        raise InputError(f"{name}[{i}] = {arr[i]!r} is not a finite number; remove or fix it")
-    return arr
 
 
 @dataclass(frozen=True, eq=False)
@@ -71,8 +58,8 @@ class MomentCurve:
     approx_error: float = 0.0
 
     def __post_init__(self):
-        phi = _finite_array(self.phi, "phi")
-        M = _finite_array(self.M, "M")
+        phi = finite_array(self.phi, "phi")
+        M = finite_array(self.M, "M")
         if phi.size != M.size:
             raise InputError(f"phi has {phi.size} values but M has {M.size}; give one moment per angle")
         if phi.size < 2:
@@ -98,8 +85,8 @@ class MomentCurve:
         If ``period`` is given and the points stop short of ``phi[0] + period``, the curve
         is closed by a straight line back to the first value (the curve is periodic).
         """
-        phi = _finite_array(phi, "phi")
-        M = _finite_array(M, "M")
+        phi = finite_array(phi, "phi")
+        M = finite_array(M, "M")
         if period is not None:
             if not period > 0:
                 raise InputError(f"period = {period!r} rad must be positive (2π for one turn, 4π for two)")
