@@ -4,11 +4,14 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, strategies as st
+from hypothesis import given, settings, strategies as st
 
-from graphmethods.dynamics.graphical_calculus import differentiate_by_chords, integrate_by_chords
+from graphmethods.dynamics.graphical_calculus import (accuracy_table, differentiate_by_chords, exact_integral,
+                                                      integrate_by_chords, slider_diagrams, slider_motion,
+                                                      work_diagrams)
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
+from graphmethods.kinematics import SliderCrank
 
 PI = math.pi
 
@@ -107,3 +110,147 @@ def test_chord_flywheels_on_a_reduced_model():
     assert 0.5 < g.wittenbauer.error_estimate / true_error < 2.0
     assert "384 positions" in g.wittenbauer.error_method
     assert abs(g.excess_work.residual) < 1e-9 and abs(g.delta_T[-1]) < 1e-9
+
+
+# ----------------------------------------------------------------------------- exact references
+
+def test_callable_accuracy_is_measured_against_an_exact_integral_interval_by_interval():
+    # regression: the reference integral of a callable was one 16-point rule over [x0, x], wrong for
+    # a curve that oscillates over the whole span (it reported 0.22 at the ends for an exact 4e-15)
+    x = np.linspace(0, 2 * PI, 13)
+    f = lambda p: np.sin(10 * p) + 3 * np.cos(7 * p)              # noqa: E731
+    F = lambda t: (1 - np.cos(10 * t)) / 10 + 3 * np.sin(7 * t) / 7   # noqa: E731
+    I = integrate_by_chords(x, f, mu_x=0.03, mu_y=1, H_mm=20)
+    assert I.accuracy.at_nodes < 1e-12
+    np.testing.assert_allclose(I.values, F(x), atol=1e-12)
+    t = np.linspace(0, 2 * PI, 20001)
+    assert I.accuracy.inside == pytest.approx(np.abs(np.interp(t, x, I.values) - F(t)).max(), rel=2e-3)
+
+
+def test_a_jump_of_a_callable_is_exact_when_declared_and_exact_reveals_it_when_not():
+    x = np.linspace(0, 2 * PI, 13)
+    step = lambda p: np.where(p < 1.0, 60.0, 10.0)                # noqa: E731
+    F = lambda t: np.where(t < 1.0, 60 * t, 60 + 10 * (t - 1.0))  # noqa: E731
+    declared = integrate_by_chords(x, step, mu_x=0.03, mu_y=1, H_mm=20, breaks=[1.0])
+    np.testing.assert_allclose(declared.values, F(x), atol=1e-12)
+    blind = integrate_by_chords(x, step, mu_x=0.03, mu_y=1, H_mm=20, exact=F)
+    assert blind.accuracy.at_nodes > 0.01                          # 16 points cannot see an undeclared jump
+    np.testing.assert_allclose(blind.exact_values, F(x), atol=1e-12)
+
+
+@given(st.lists(st.floats(-5, 5), min_size=1, max_size=5), st.floats(-3, 3), st.floats(0.1, 6),
+       st.lists(st.floats(-3, 9), max_size=3))
+@settings(deadline=None, max_examples=40)
+def test_exact_integral_of_polynomials_with_breaks(coeffs, a, span, breaks):
+    p = np.polynomial.Polynomial(coeffs)
+    x = a + span * np.array([0.0, 0.3, 1.0, 0.7])
+    got = exact_integral(p, x, x0=a, breaks=breaks)
+    P = p.integ()
+    ref = P(x) - P(a)
+    np.testing.assert_allclose(got, ref, atol=1e-12 * (1 + np.abs(ref).max() + abs(P(a))))
+
+
+# ----------------------------------------------------------------------------- periodic (second) differentiation
+
+@given(st.lists(st.floats(-2, 2), min_size=2, max_size=6), st.integers(6, 40))
+@settings(deadline=None, max_examples=40)
+def test_second_differentiation_is_the_periodic_second_difference(coef, m):
+    x = np.linspace(0, 2 * PI, m + 1)
+    Y = sum(c * np.cos((k + 1) * x + k) for k, c in enumerate(coef))
+    Y[-1] = Y[0]
+    D = differentiate_by_chords(x, Y, mu_x=0.02, mu_Y=0.01, H_mm=20, period=2 * PI)
+    DD = differentiate_by_chords(D.x, D.values, mu_x=0.02, mu_Y=D.mu, H_mm=30, period=2 * PI, x_origin=0.0)
+    h = x[1] - x[0]
+    core = Y[:-1]
+    second = (np.roll(core, -1) - 2 * core + np.roll(core, 1)) / h**2
+    np.testing.assert_allclose(DD.values, np.append(second, second[0]), atol=1e-9 * (1 + np.abs(second).max()))
+    np.testing.assert_allclose(DD.x, x, atol=1e-12)
+    assert DD.values[0] == DD.values[-1]
+    np.testing.assert_allclose(DD.points_mm[:, 0], x / 0.02, atol=1e-9)
+
+
+def test_periodic_curves_must_repeat_and_span_one_period():
+    x = np.linspace(0, 2 * PI, 7)
+    with pytest.raises(InputError, match="not periodic"):
+        differentiate_by_chords(x, x, mu_x=1, mu_Y=1, H_mm=1, period=2 * PI)
+    with pytest.raises(InputError, match="more than one period"):
+        differentiate_by_chords(x, np.sin(x), mu_x=1, mu_Y=1, H_mm=1, period=PI)
+
+
+# ----------------------------------------------------------------------------- the slider
+
+@given(st.floats(0.02, 0.2), st.floats(1.3, 5.0), st.floats(-0.4, 0.4), st.sampled_from([1, -1]),
+       st.sampled_from([1, -1]))
+@settings(deadline=None, max_examples=30)
+def test_slider_motion_is_the_derivative_of_the_positions(r, ratio, e_frac, assembly, sense):
+    e = e_frac * r
+    mech = SliderCrank(r=r, l=ratio * (r + abs(e)), e=e, assembly=assembly, sense=sense)
+    phi = np.linspace(0.05, 6.2, 9)
+    h = 1e-5
+    mo = slider_motion(mech, phi)
+    s_p, s_m = slider_motion(mech, phi + h).s, slider_motion(mech, phi - h).s
+    np.testing.assert_allclose(mo.ds, (s_p - s_m) / (2 * h), atol=1e-7 * r)
+    ds_p, ds_m = slider_motion(mech, phi + h).ds, slider_motion(mech, phi - h).ds
+    np.testing.assert_allclose(mo.d2s, (ds_p - ds_m) / (2 * h), atol=1e-6 * r)
+    assert mo.s.min() >= -1e-12 and mo.s.max() <= mo.H + 1e-12
+
+
+def test_slider_motion_of_a_shaper_ram_by_the_fallback_difference():
+    import pathlib
+
+    from graphmethods.kinematics import read_case
+    case = read_case(pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data" / "shaper.json")
+    phi = np.linspace(0.1, 6.1, 7)
+    mo = slider_motion(case.mechanism, phi)
+    h = 1e-5
+    d = (slider_motion(case.mechanism, phi + h).ds - slider_motion(case.mechanism, phi - h).ds) / (2 * h)
+    np.testing.assert_allclose(mo.d2s, d, atol=1e-7)
+
+
+def test_slider_diagrams_references_agree_and_v_at_positions_is_the_central_difference():
+    mech = SliderCrank(r=0.1, l=0.4, e=0.02)
+    sd = slider_diagrams(mech, 12, mu_phi=PI / 90, mu_s=0.004, omega_1=20.0)
+    np.testing.assert_allclose(sd.v_plans, sd.v_exact, atol=1e-12)
+    t = 1 / 20.0
+    s = np.asarray(sd.s)
+    central = (np.roll(s[:-1], -1) - np.roll(s[:-1], 1)) / (2 * (PI / 6) * t)
+    np.testing.assert_allclose(sd.v_at_positions[:-1], central, atol=1e-12)
+    rows = sd.comparison()
+    assert rows[0]["error"] == sd.v.accuracy.at_nodes and rows[2]["error"] == sd.a.accuracy.at_nodes
+    assert rows[0]["error_mm"] == pytest.approx(rows[0]["error"] / sd.v.mu)
+    assert [r["unit"] for r in rows] == ["m/s", "m/s", "m/s²"]
+    an = slider_diagrams(mech, 12, mu_phi=PI / 90, mu_s=0.004)
+    np.testing.assert_allclose(an.v.values * 20.0, sd.v.values, rtol=1e-12)      # v = ω ds/dφ
+    np.testing.assert_allclose(an.a.values * 400.0, sd.a.values, rtol=1e-9)       # a = ω² d²s/dφ²
+    assert an.units == ("m/rad", "m/rad²") and an.mu_t is None
+
+
+# ----------------------------------------------------------------------------- work diagrams and the table
+
+def test_work_diagrams_share_one_pole_and_close():
+    M_r = MomentCurve.points([0, PI, 2 * PI], [0.0, 40.0, 0.0])
+    M_d = MomentCurve.constant(M_r.mean())
+    wd = work_diagrams(M_d, M_r, np.linspace(0, 2 * PI, 9), mu_phi=PI / 90, mu_M=0.5, fit_mm=80)
+    assert wd.A_d.H_mm == wd.A_r.H_mm == wd.H_mm and wd.mu_A == pytest.approx(0.5 * PI / 90 * wd.H_mm)
+    assert abs(wd.closure) < 1e-12 and max(np.abs(wd.A_d.values).max(), np.abs(wd.A_r.values).max()) / wd.mu_A <= 80
+    np.testing.assert_allclose(wd.delta_E, (M_d - M_r).integral(wd.phi), atol=1e-12)
+
+
+def test_accuracy_table_of_the_press_falls_as_h_squared_for_the_derivatives():
+    import json
+    import pathlib
+
+    from graphmethods.kinematics import read_case
+    case = read_case(pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
+                     / "slider_crank_press.json")
+    rows = accuracy_table(case, ms=(12, 24, 48))
+    json.dumps(rows)                                                    # plain, JSON-ready
+    names = sorted({r["construction"] for r in rows})
+    assert names == ["A_d by chords", "A_r by chords", "a by chords of v", "v by chords of s", "ΔE by chords"]
+    for name in ("v by chords of s", "a by chords of v"):
+        err = [r["error"] for r in rows if r["construction"] == name]
+        assert 3.7 < err[0] / err[1] < 4.3 and 3.7 < err[1] / err[2] < 4.3
+    for r in rows:
+        assert r["error_mm"] == pytest.approx(r["error"] / r["mu"])
+    with pytest.raises(InputError, match="m ≥ 3"):
+        accuracy_table(case, ms=(2,))
