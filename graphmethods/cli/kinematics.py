@@ -6,6 +6,15 @@ mean crank speed n_rpm of the file: for the slider-crank press format at least `
 counterclockwise +) and ``v_S2`` (m/s, magnitude). Sliders' velocities are signed along +x of
 their guide, other points' are magnitudes; ``omega_k`` uses the textbook link numbers (crank
 = 1) listed under ``links``. Plain text table by default, one JSON object with ``--json``.
+
+``--figures DIR`` also writes the figures of the problem into DIR (created if missing): the
+kinematic scheme in M positions, the velocity plans of all positions, one large velocity plan
+(``--plan-position K``; by default the working-stroke position whose plan is the fullest figure)
+and the table of velocities (drawn, and as Markdown), in ``--lang en|ru|zh`` and ``--format
+svg|pdf|png``. Existing files are never replaced without ``--force``; every figure is built
+before the first file is written, so an error writes nothing.
+
+    graphmethods kinematics press.json --figures out --lang ru --format pdf
 """
 
 from __future__ import annotations
@@ -23,6 +32,15 @@ def add_parser(sub) -> None:
     p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
                    help="number of equal crank steps per turn (default 12; positions 0…M)")
     p.add_argument("--json", action="store_true", help="print one JSON object whose 'positions' is the list")
+    p.add_argument("--figures", metavar="DIR", default=None,
+                   help="also write the figures (scheme, velocity plans, one large plan, velocity table) into DIR")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
+    p.add_argument("--format", choices=("svg", "pdf", "png"), default="svg", dest="fig_format",
+                   help="file format of the figures (default svg; the table is also written as Markdown)")
+    p.add_argument("--plan-position", type=int, default=None, metavar="K",
+                   help="the position drawn as one large velocity plan (default: the fullest plan of the working "
+                        "stroke)")
+    p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     p.set_defaults(func=run)
 
 
@@ -115,6 +133,84 @@ def _text(res: dict) -> str:
     return "\n".join(lines)
 
 
+def figures(case, m: int, *, notation: str = "en", plan_position: int | None = None) -> dict:
+    """The figures of a problem file as scenes: file suffix -> Scene, plus ``"velocity_table.md"`` -> str.
+
+    Positions and velocity plans are built once (a lazy Study) and shared by every figure.
+    """
+    from graphmethods.dynamics.study import Study
+    from graphmethods.sheets import kinematics as ks
+
+    study = Study(case, positions=m)
+    k = ks.fullest_position(study.plans) if plan_position is None else plan_position
+    plan = ks.velocity_plan(study, k, notation=notation)
+    return {
+        "kinematic_scheme": ks.kinematic_scheme(study, notation=notation),
+        "velocity_plans": ks.velocity_plan_grid(study, notation=notation),
+        f"velocity_plan_{k}": plan,
+        "velocity_table": ks.velocity_table(study, notation=notation),
+        "velocity_table.md": ks.velocity_table_markdown(study, notation=notation),
+    }
+
+
+def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", fmt: str = "svg",
+                  plan_position: int | None = None, overwrite: bool = False) -> list:
+    """Build every figure, then write them all into ``directory`` (created if missing).
+
+    Nothing is written when a figure cannot be built or a file exists (without ``overwrite``);
+    if a write fails midway, the files this call created are removed again.
+
+    Raises
+    ------
+    OutputExistsError
+        If a file exists and ``overwrite`` is false (the message lists them).
+    """
+    import pathlib
+
+    from graphmethods.errors import InputError, OutputExistsError
+    from graphmethods.render.files import write_atomic
+
+    scenes = figures(case, m, notation=notation, plan_position=plan_position)
+    out = pathlib.Path(directory)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--figures {out}: it is a file, not a directory")
+    blobs = {}
+    for key, obj in scenes.items():
+        if isinstance(obj, str):
+            blobs[out / f"{stem}_{key}"] = obj.encode("utf-8")
+        elif fmt == "svg":
+            from graphmethods.render import svg
+
+            blobs[out / f"{stem}_{key}.svg"] = svg.to_bytes(obj)
+        else:
+            from graphmethods.render import mpl
+
+            blobs[out / f"{stem}_{key}.{fmt}"] = mpl.to_png_bytes(obj) if fmt == "png" else mpl.to_pdf_bytes(obj)
+    if not overwrite:
+        existing = [str(p) for p in blobs if p.exists()]
+        if existing:
+            more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
+            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, or another "
+                                    f"--figures folder")
+    made_dir = not out.exists()
+    out.mkdir(parents=True, exist_ok=True)
+    written, created = [], []
+    try:
+        for path, data in blobs.items():
+            existed = path.exists()
+            write_atomic(path, data, overwrite=overwrite)
+            written.append(path)
+            if not existed:
+                created.append(path)
+    except BaseException:
+        for path in created:
+            path.unlink(missing_ok=True)
+        if made_dir and not any(out.iterdir()):
+            out.rmdir()
+        raise
+    return written
+
+
 def run(args) -> int:
     from graphmethods.errors import InputError
     from graphmethods.kinematics import read_case
@@ -123,8 +219,21 @@ def run(args) -> int:
     if args.positions < 3:
         raise InputError(f"--positions must be at least 3, got {args.positions}")
     res = table(case, args.positions)
+    written = []
+    if args.figures is not None:
+        import pathlib
+
+        written = write_figures(case, args.positions, args.figures, stem=pathlib.Path(args.case).stem,
+                                notation=args.lang, fmt=args.fig_format, plan_position=args.plan_position,
+                                overwrite=args.force)
+    elif args.force or args.plan_position is not None or args.lang != "en" or args.fig_format != "svg":
+        raise InputError("--lang, --format, --plan-position and --force apply to the figures; add --figures DIR")
     if args.json:
+        if written:
+            res["figures"] = [str(p) for p in written]
         print(json.dumps(res, ensure_ascii=False, indent=1))
     else:
         print(_text(res))
+        for p in written:
+            print(f"wrote {p}")
     return 0
