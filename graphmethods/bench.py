@@ -261,6 +261,23 @@ def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
     return rows
 
 
+# --------------------------------------------------------------------- graphical calculus
+def bench_calculus(ms=(6, 12, 24, 48, 96), *, repeat=3) -> list[Row]:
+    """Method-of-chords constructions on the press: largest error against the exact result
+    (physical units and mm on the sheet) as the number of intervals grows, and the time."""
+    from graphmethods.dynamics import graphical_calculus as gc
+
+    case = _press_case()
+    rows = []
+    for m in ms:
+        t = median_time(lambda m=m: gc.accuracy_table(case, ms=(m,)), repeat=repeat)
+        for r in gc.accuracy_table(case, ms=(m,)):
+            rows.append(Row("calculus", f"press: {r['construction']}", f"chords, {r['where']}", m, t, None,
+                            note=f"max error {r['error']:.3g} {r['unit']} = {r['error_mm']:.2g} mm",
+                            extra={"H, mm": r["H_mm"]}))
+    return rows
+
+
 # --------------------------------------------------------------------- the error-against-time plot
 def plot_error_vs_time(rows: list[Row], path) -> None:
     """A log–log plot of relative error against time for the flywheel methods (SVG, deterministic)."""
@@ -299,6 +316,7 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
 SECTIONS = {
     "flywheel": bench_flywheel,
     "kinematics": bench_kinematics,
+    "calculus": bench_calculus,
     "areas": bench_areas,
     "startup": bench_startup,
 }
@@ -307,6 +325,7 @@ SECTIONS = {
 QUICK = {
     "flywheel": dict(m_values=(12, 24, 96, 360), repeat=1),
     "kinematics": dict(n=10_000, repeat=2),
+    "calculus": dict(ms=(6, 12, 24), repeat=1),
     "areas": dict(sizes=(10**3, 10**4, 10**5), crossings=(2, 10**4), repeat=3),
     "startup": dict(repeat=3),
 }

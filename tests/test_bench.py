@@ -51,3 +51,10 @@ def test_bench_command_writes_its_report(tmp_path, capsys):
     assert main(["bench", "--quick", "--only", "areas", "--out", str(tmp_path)]) == 2     # no overwrite
     assert "--force" in capsys.readouterr().err
     assert main(["bench", "--only", "nonsense"]) == 2
+
+
+def test_calculus_rows_shrink_with_more_intervals():
+    rows = bench.bench_calculus(ms=(12, 48), repeat=1)
+    v = [r for r in rows if r.case == "press: v by chords of s"]
+    err = [float(r.note.split()[2]) for r in v]
+    assert len(v) == 2 and err[1] < err[0] / 8          # second order: ×16 fewer for ×4 more intervals
