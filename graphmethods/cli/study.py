@@ -1,34 +1,86 @@
-"""``graphmethods study CASE.json --positions M``: the dynamic study of a linkage problem."""
+"""``graphmethods study CASE.json --positions M``: the dynamic study of a linkage problem.
+
+``--sheet FILE.svg|.pdf`` also writes the A1 (or A2) dynamic-analysis sheet: the flywheel by
+the Wittenbauer method, drawn to scale (:func:`graphmethods.sheets.wittenbauer.dynamic_analysis_sheet`).
+An existing file is kept unless ``--force``; on any error nothing is written.
+"""
 
 from __future__ import annotations
 
 import json
+import pathlib
+import sys
+
+from graphmethods.errors import InputError, OutputExistsError
 
 
 def add_parser(sub) -> None:
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
                        description="Solve a linkage problem file (e.g. ../shared/cases/slider_crank_press.json): "
                        "M_d by work balance, ΔW_max, J_F by the ΔW_max method and by the Wittenbauer diagram at "
-                       "M positions, the exact J_F, and where ω_max and ω_min occur.")
+                       "M positions, the exact J_F, and where ω_max and ω_min occur. With --sheet, also draw the "
+                       "dynamic-analysis sheet (M_e, ΔT, J_e turned 90°, the energy–mass diagram, the result).")
     p.add_argument("case", metavar="CASE.json", help="problem file")
     p.add_argument("--positions", type=int, default=12, metavar="M", help="number of positions (default 12)")
     p.add_argument("--no-exact", action="store_true", help="skip the exact reference solution (faster)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--sheet", metavar="FILE.svg|.pdf", default=None,
+                   help="also write the dynamic-analysis sheet (SVG or PDF, scale-true)")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
+                   help="notation and language of the sheet (default en)")
+    p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
     p.set_defaults(func=run)
+
+
+def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
+    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
+
+    scene = dynamic_analysis_sheet(study, page=page, notation=lang)
+    if path.suffix.lower() == ".pdf":
+        from graphmethods.render import mpl
+
+        return mpl.to_pdf_bytes([scene])
+    from graphmethods.render import svg
+
+    return svg.to_bytes(scene)
+
+
+def _check_target(path: pathlib.Path, force: bool) -> None:
+    """Refuse early (before any work) a sheet file that cannot or must not be written."""
+    if path.suffix.lower() not in (".svg", ".pdf"):
+        raise InputError(f"--sheet {path}: give a file name ending in .svg or .pdf")
+    parent = path.parent if str(path.parent) else pathlib.Path(".")
+    if not parent.is_dir():
+        raise InputError(f"--sheet {path}: directory {parent} does not exist; create it first")
+    if path.is_dir():
+        raise InputError(f"--sheet {path}: it is a directory; give a file name")
+    if path.exists() and not force:
+        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
 
 
 def run(args) -> int:
     from graphmethods.dynamics.study import Study
     from graphmethods.kinematics import read_case
 
+    sheet = pathlib.Path(args.sheet) if args.sheet else None
+    if sheet is not None:
+        _check_target(sheet, args.force)
     study = Study(read_case(args.case), positions=args.positions)
+    data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
+    if data is not None:            # written last: an error above leaves no file behind
+        from graphmethods.render.files import write_atomic
+
+        write_atomic(sheet, data, overwrite=args.force)
     if args.json:
         print(json.dumps(out, indent=1))
-        return 0
-    width = max(map(len, out))
-    for key, value in out.items():
-        if isinstance(value, float):
-            value = f"{value:.6g}"
-        print(f"{key.ljust(width)}  {value}")
+    else:
+        width = max(map(len, out))
+        for key, value in out.items():
+            if isinstance(value, float):
+                value = f"{value:.6g}"
+            print(f"{key.ljust(width)}  {value}")
+    if sheet is not None:
+        print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

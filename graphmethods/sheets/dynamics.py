@@ -1,0 +1,1193 @@
+"""The dynamics figures of a linkage study: J_e(φ), M_d and M_r(φ), ΔT(φ) or T(φ), ω(φ), ε(φ), the Zhukovsky lever.
+
+Each function takes a :class:`~graphmethods.dynamics.study.Study` (or a problem
+:class:`~graphmethods.kinematics.case.Case`, studied at 12 positions) and returns a
+:class:`~graphmethods.scene.Scene` on an A4 sheet with a frame and a title block.
+Scales are keyword arguments; any not given is picked (a convenient value that fills
+the sheet) and every scale drawn is captioned under the figure. ``notation="en" | "ru"
+| "zh"`` switches every symbol and word. A figure asks the lazy study only for what it
+draws: :func:`moment_graph` never computes J_e, and only :func:`speed_graph`,
+:func:`acceleration_graph` and ``delta_T_graph(kinetic=True)`` solve the exact motion.
+
+- :func:`inertia_graph` J_e(φ) and its parts; ``turned=True`` draws it turned 90°
+  (φ down the page, J_e to the right), ready for the Wittenbauer construction;
+- :func:`moment_graph` M_d and M_r(φ) as drawn through the positions;
+- :func:`delta_T_graph` ΔT(φ) of the drawn moments, or the exact T(φ);
+- :func:`speed_graph`, :func:`acceleration_graph` ω(φ) and ε(φ) of the exact motion;
+- :func:`zhukovsky_lever` the velocity plan turned 90° as a lever, with the load at its image.
+
+The building blocks (:func:`phi_graph_elements`, :func:`turned_inertia_elements`,
+:class:`DownAxis`, :class:`FastOccupancy`) are shared with :mod:`graphmethods.sheets.wittenbauer`.
+
+>>> import pathlib
+>>> from graphmethods.dynamics.study import Study
+>>> from graphmethods.kinematics import read_case
+>>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+>>> study = Study(press, positions=12)
+>>> scene = moment_graph(study, notation="ru")
+>>> [s.caption("ru") for s in scene.scales()], "inertia" in study.computed
+(['μ_φ = 0,03491 рад/мм (2°/мм)', 'μ_M = 5 Н·м/мм'], False)
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.scene import (
+    Axis, Dimension, Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, nice_ticks,
+    pick_angle_scale, pick_scale,
+)
+from graphmethods.scene import markup
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import label_bbox, make_label
+from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
+from graphmethods.sheets.layout import Occupancy, standard_page
+
+TITLE_MM = 5.0          # title text size
+TEXT_MM = 3.2           # labels
+SMALL_MM = 2.8          # tick labels, position numbers
+TWO_PI = 2.0 * math.pi
+PART = Style(width_mm=0.25, dash=(3.0, 1.2))
+LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
+PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
+OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
+
+# ----------------------------------------------------------------------------- notation of these figures
+# Symbols and words the notation profiles (graphmethods.scene.notation) lack: (en, ru, zh).
+SYMBOLS = {
+    "J_e":       ("J_e",        "J_п",          "J_e"),
+    "dT":        ("ΔT",         "ΔT",           "ΔE"),
+    "T":         ("T",          "T",            "E"),
+    "omega":     ("ω",          "ω",            "ω"),
+    "omega_m":   ("ω_m",        "ω_{ср}",       "ω_m"),
+    "omega_max": ("ω_{max}",    "ω_{max}",      "ω_{max}"),
+    "omega_min": ("ω_{min}",    "ω_{min}",      "ω_{min}"),
+    "omega_1":   ("ω_1",        "ω_1",          "ω_1"),
+    "eps":       ("ε",          "ε",            "ε"),
+    "eps_max":   ("ε_{max}",    "ε_{max}",      "ε_{max}"),
+    "chi":       ("χ",          "χ",            "χ"),
+    "J_F":       ("J_F",        "J_м",          "J_F"),
+    "delta":     ("[δ]",        "[δ]",          "[δ]"),
+    "mu_J":      ("μ_J",        "μ_J",          "μ_J"),
+    "mu_T":      ("μ_T",        "μ_T",          "μ_E"),
+    "mu_omega":  ("μ_ω",        "μ_ω",          "μ_ω"),
+    "mu_eps":    ("μ_ε",        "μ_ε",          "μ_ε"),
+    "mu_v":      ("μ_v",        "μ_v",          "μ_v"),
+    "mu_F":      ("μ_F",        "μ_F",          "μ_F"),
+    "psi_max":   ("ψ_{max}",    "ψ_{max}",      "ψ_{max}"),
+    "psi_min":   ("ψ_{min}",    "ψ_{min}",      "ψ_{min}"),
+    "dT_max":    ("ΔT_{max}",   "ΔT_{max}",     "ΔE_{max}"),
+    "dT_min":    ("ΔT_{min}",   "ΔT_{min}",     "ΔE_{min}"),
+    "T_max":     ("T_{max}",    "T_{max}",      "E_{max}"),
+    "T_min":     ("T_{min}",    "T_{min}",      "E_{min}"),
+    "F":         ("F",          "F_{пс}",       "F_r"),
+    "M_F":       ("M_F",        "M_F",          "M_F"),
+    "h":         ("h",          "h",            "h"),
+}
+
+WORDS = {
+    "inertia_graph":   ("Reduced moment of inertia", "Приведённый момент инерции", "等效转动惯量"),
+    "inertia_turned":  ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции, повёрнутый на 90°",
+                        "等效转动惯量（旋转90°）"),
+    "moment_graph":    ("Reduced moments", "Приведённые моменты", "等效力矩"),
+    "delta_T_graph":   ("Increment of kinetic energy", "Приращение кинетической энергии", "动能增量"),
+    "kinetic_graph":   ("Kinetic energy (exact motion)", "Кинетическая энергия (точное решение)", "动能（精确解）"),
+    "speed_graph":     ("Angular velocity of the crank (exact motion)", "Угловая скорость кривошипа (точное решение)",
+                        "曲柄角速度（精确解）"),
+    "accel_graph":     ("Angular acceleration of the crank (exact motion)",
+                        "Угловое ускорение кривошипа (точное решение)", "曲柄角加速度（精确解）"),
+    "lever":           ("Zhukovsky lever", "Рычаг Жуковского", "茹科夫斯基杠杆"),
+    "position":        ("position", "положение", "位置"),
+    "positions":       ("positions", "положений", "个位置"),
+    "work_balance":    ("from the work balance", "из баланса работ", "由功平衡"),
+    "exact":           ("exact", "точно", "精确"),
+    "by_lever":        ("by the lever", "по рычагу", "杠杆法"),
+    "by_power":        ("by power", "по мощности", "功率法"),
+    "arm":             ("arm", "плечо", "力臂"),
+    "force":           ("force", "сила", "力"),
+    "lever_moment":    ("moment about p", "момент относительно p", "对p点之矩"),
+    "plan_turned":     ("velocity plan turned 90° against ω_1", "план скоростей, повёрнутый на 90° против ω_1",
+                        "速度图逆ω_1转90°"),
+    "parts":           ("parts", "составляющие", "分量"),
+}
+
+_UNITS_RU = {"rad/s²": "рад/с²", "(m/s)": "(м/с)", "m/s": "м/с", "rev/min": "об/мин", "kg·m²": "кг·м²"}
+
+
+def sym(nt, key: str) -> str:
+    """A symbol (markup) of these figures, or of the notation profile."""
+    nt = get_notation(nt)
+    if key in SYMBOLS:
+        return SYMBOLS[key][("en", "ru", "zh").index(nt.code)]
+    return nt.sym(key)
+
+
+def word(nt, key: str) -> str:
+    """Words of these figures, or of the notation profile."""
+    nt = get_notation(nt)
+    if key in WORDS:
+        return WORDS[key][("en", "ru", "zh").index(nt.code)]
+    return nt.word(key)
+
+
+def unit(nt, u: str) -> str:
+    """A unit as the profile writes it (with the units the profile lacks)."""
+    nt = get_notation(nt)
+    if nt.code == "ru" and u in _UNITS_RU:
+        return _UNITS_RU[u]
+    return nt.unit(u)
+
+
+def quantity(nt, symbol: str, u: str) -> str:
+    """``"ω, rad/s"`` (en, ru) or ``"ω/(rad/s)"`` (zh), with this module's units."""
+    nt = get_notation(nt)
+    return nt.quantity(symbol, unit(nt, u))
+
+
+def value_text(nt, value: float, u: str, *, sig: int = 4) -> str:
+    """``"31.42 rad/s"`` in the profile's number style and units."""
+    nt = get_notation(nt)
+    sep = "" if u == "°" else " "
+    return f"{nt.number(value, sig=sig)}{sep}{unit(nt, u)}" if u else nt.number(value, sig=sig)
+
+
+# ----------------------------------------------------------------------------- layout helpers
+
+def _segments_hit_box(s: np.ndarray, box) -> np.ndarray:
+    """Which segments (rows x0, y0, x1, y1) pass through the box (vectorised Liang–Barsky)."""
+    x0, y0, x1, y1 = box
+    px, py = s[:, 0], s[:, 1]
+    dx, dy = s[:, 2] - px, s[:, 3] - py
+    t0 = np.zeros(len(s))
+    t1 = np.ones(len(s))
+    ok = np.ones(len(s), dtype=bool)
+    for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+        zero = pk == 0
+        ok &= ~(zero & (qk < 0))
+        t = qk / np.where(zero, 1.0, pk)
+        t0 = np.where(pk < 0, np.maximum(t0, t), t0)
+        t1 = np.where(pk > 0, np.minimum(t1, t), t1)
+    return ok & (t0 <= t1)
+
+
+class FastOccupancy(Occupancy):
+    """:class:`~graphmethods.sheets.layout.Occupancy` with the free-space test vectorised over numpy arrays.
+
+    A sheet with thousands of curve segments and a hundred labels places them in
+    milliseconds instead of seconds; the answers are the same.
+
+    >>> occ = FastOccupancy()
+    >>> occ.add_line(((0, 10), (100, 10)))
+    >>> occ.is_free((40, 8, 60, 12)), occ.is_free((40, 12, 60, 14))
+    (False, True)
+    """
+
+    def __init__(self, *, pad_mm: float = 0.6):
+        super().__init__(pad_mm=pad_mm)
+        self._seg = np.empty((0, 4))
+        self._box = np.empty((0, 4))
+
+    def _arrays(self):
+        if len(self._seg) != len(self.segments):
+            new = np.asarray(self.segments[len(self._seg):], dtype=float).reshape(-1, 4)
+            self._seg = np.vstack((self._seg, new))
+        if len(self._box) != len(self.boxes):
+            new = np.asarray(self.boxes[len(self._box):], dtype=float).reshape(-1, 4)
+            self._box = np.vstack((self._box, new))
+        return self._seg, self._box
+
+    def is_free(self, box, *, within=None, lines: bool = True) -> bool:
+        if within is not None and not (box[0] >= within[0] and box[1] >= within[1] and box[2] <= within[2]
+                                       and box[3] <= within[3]):
+            return False
+        pad = self.pad
+        g = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
+        seg, boxes = self._arrays()
+        if len(boxes) and np.any((g[0] < boxes[:, 2]) & (boxes[:, 0] < g[2]) & (g[1] < boxes[:, 3])
+                                 & (boxes[:, 1] < g[3])):
+            return False
+        if not lines or not len(seg):
+            return True
+        near = ((np.minimum(seg[:, 0], seg[:, 2]) <= g[2]) & (np.maximum(seg[:, 0], seg[:, 2]) >= g[0])
+                & (np.minimum(seg[:, 1], seg[:, 3]) <= g[3]) & (np.maximum(seg[:, 1], seg[:, 3]) >= g[1]))
+        if not near.any():
+            return True
+        return not bool(_segments_hit_box(seg[near], g).any())
+
+    def place_label_with_leader(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
+                                size_mm: float = 3.5, gap_mm: float = 1.2, within=None):
+        """As :meth:`Occupancy.place_label_with_leader`, searching a finer ring (every 15°, out to 70 mm),
+        first with leaders that cross no label, then with any leader, before giving up."""
+        from graphmethods.scene.elements import place_label
+
+        lab = self.first_free(at, text, directions, (gap_mm, gap_mm + 2.0), size_mm, within)
+        if lab is not None:
+            self.add_label(lab)
+            return lab, None
+        x, y = at
+        first = {"e": 0, "ne": 45, "n": 90, "nw": 135, "w": 180, "sw": 225, "s": 270, "se": 315}[directions[0]]
+        angles = sorted(range(0, 360, 15), key=lambda a: (min(abs(a - first), 360 - abs(a - first)), a))
+        for strict in (True, False):
+            for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0, 60.0, 70.0):
+                for ang in angles:
+                    a = math.radians(ang)
+                    c, s = math.cos(a), math.sin(a)
+                    end = (x + r * c, y - r * s)
+                    d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
+                    lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
+                    start = (x + 1.5 * c, y - 1.5 * s)
+                    if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
+                        self.add_label(lab)
+                        self.add_line((start, end))
+                        return lab, (end, start)
+        lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
+        self.add_label(lab)
+        return lab, None
+
+    def register(self, *elements) -> None:
+        """Register everything some elements draw."""
+        for e in elements:
+            self.add_primitives(e.primitives())
+
+
+@dataclass(frozen=True)
+class DownAxis(Axis):
+    """An axis whose values grow down the page: the φ axis of a graph turned 90° clockwise.
+
+    Tick marks and labels are on its left; its name is under the arrow.
+
+    >>> ax = DownAxis((20, 30), Scale("μ_φ", "rad", 0.025), "y", max_value=2.0, ticks=(0.0, 1.0))
+    >>> ax.pos(1.0), ax.tip
+    ((20.0, 70.0), (20.0, 116.0))
+    """
+
+    def pos(self, value: float):
+        mm = self.scale.to_mm(float(value))
+        return (self.origin[0], self.origin[1] + mm)
+
+    @property
+    def tip(self):
+        x, y = self.pos(self.max_value)
+        return (x, y + self.arrow_mm)
+
+    @property
+    def end(self):
+        return self.tip
+
+    def primitives(self):
+        tx, ty = self.tip
+        prims = [Path((self.start, self.tip), AXIS),
+                 Polygon(((tx, ty), (tx - 0.55, ty - 3.0), (tx + 0.55, ty - 3.0)))]
+        labels = self.tick_labels
+        if labels is None:
+            labels = tuple(format_number(v, self.decimal) for v in self.ticks)
+        for v, text in zip(self.ticks, labels):
+            x, y = self.pos(v)
+            prims.append(Path(((x - self.tick_mm, y), (x, y)), AXIS))
+            if text and not (self.skip_zero_label and v == 0):
+                prims.append(make_label((x - self.tick_mm - 0.8, y), text, size_mm=self.size_mm, anchor="end",
+                                        valign="middle"))
+        if self.label:
+            prims.append(make_label((tx, ty + 1.0), self.label, size_mm=self.size_mm + 0.5, anchor="middle",
+                                    valign="top"))
+        return tuple(prims)
+
+
+def format_number(v: float, decimal: str = ".") -> str:
+    from graphmethods.scene.numbers import format_value
+
+    return format_value(v, decimal=decimal)
+
+
+def clear_ticks(axis: Axis, occ: Occupancy) -> Axis:
+    """The axis with the tick labels that something registered runs through left out (the marks stay)."""
+    labels = list(axis.tick_labels) if axis.tick_labels is not None else None
+    texts = [p for p in axis.primitives() if isinstance(p, Label)]
+    if labels is None:
+        labels = [format_number(v, axis.decimal) for v in axis.ticks]
+    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
+    for i, lab in zip(shown, texts):
+        if not occ.is_free(label_bbox(lab)):
+            labels[i] = ""
+    return replace(axis, tick_labels=tuple(labels))
+
+
+def position_labels(m: int, spacing_mm: float, *, min_gap_mm: float = 5.0) -> tuple[str, ...]:
+    """Position numbers 0…m for the ticks of a φ axis, every n-th one when they would crowd.
+
+    >>> position_labels(12, 20.0)[:3], position_labels(72, 3.0)[:5]
+    (('0', '1', '2'), ('0', '', '2', '', '4'))
+    """
+    step = max(1, math.ceil(min_gap_mm / max(spacing_mm, 1e-9)))
+    return tuple(str(k) if k % step == 0 or k == m else "" for k in range(m + 1))
+
+
+class SheetFrame:
+    """What every figure of these modules shares: page, title, content box, occupancy, captions."""
+
+    def __init__(self, *, nt, page, title: str, problem: str, title_block: bool, default_page):
+        self.nt = get_notation(nt)
+        self.title = title
+        self.problem = problem
+        self.title_block = title_block
+        self._page_arg = page if page is not None else default_page
+        probe = standard_page(self._page_arg, title=title, problem=problem, scales=("μ",), nt=self.nt,
+                              title_block=title_block)
+        self.probe = probe
+        self.box = probe.content_box()
+        x0, y0, x1, y1 = self.box
+        self.top = y0 + TITLE_MM + 5.0
+        self.caption_y = y1 - 1.0
+        self.occ = FastOccupancy()
+        self.occ.add_box((x0, y0, x0 + markup.text_width_mm(title, TITLE_MM) * 1.08, y0 + TITLE_MM + 1.5))
+
+    def page(self, scales):
+        return standard_page(self._page_arg, title=self.title, problem=self.problem,
+                             scales=tuple(s.caption(self.nt) for s in scales), nt=self.nt,
+                             title_block=self.title_block)
+
+    def header(self):
+        x0, y0, _, _ = self.box
+        return Text((x0, y0 + TITLE_MM), self.title, size_mm=TITLE_MM, bold=True, name="title")
+
+    def captions(self, scales, legend: str = "") -> list:
+        """The scale captions on the bottom line (left), a legend at its right end; both kept off lines."""
+        x0, _, x1, _ = self.box
+        y = self.caption_y
+        els = []
+        cap = ScaleCaptions((x0, y), tuple(scales), notation=self.nt, size_mm=TEXT_MM, name="scale-captions")
+        for at, anchor in (((x0, y), "start"), ((x1, y), "end"), (((x0 + x1) / 2, y), "middle")):
+            trial = replace(cap, at=at, anchor=anchor)
+            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives()):
+                cap = trial
+                break
+        self.occ.register(cap)
+        els.append(cap)
+        if legend:
+            lab = make_label((x1, y), legend, size_mm=TEXT_MM, anchor="end")
+            if not self.occ.is_free(label_bbox(lab)):
+                lab = make_label((x1, y - TEXT_MM * 1.5), legend, size_mm=TEXT_MM, anchor="end")
+            self.occ.add_label(lab)
+            els.append(Text((lab.x, lab.y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
+        return els
+
+
+def given_scale(given, symbol: str, u: str, span: float, span_mm: float, *, what: str) -> Scale:
+    """The scale given (a number or a Scale), checked to fit; or a convenient one picked to fit."""
+    if given is None:
+        return pick_scale(span, span_mm, symbol=symbol, unit=u)
+    s = given if isinstance(given, Scale) else Scale(symbol, u, given)
+    if s.to_mm(span) > span_mm * (1 + 1e-9):
+        raise InputError(f"{what} at {markup.plain(s.caption())} needs {s.to_mm(span):.1f} mm but the sheet leaves "
+                         f"{span_mm:.1f} mm; give a larger scale (more units per mm), a larger page, or none "
+                         f"to have one picked")
+    return s
+
+
+def given_angle_scale(given, symbol: str, period: float, span_mm: float) -> Scale:
+    """The φ scale given (rad/mm, or a Scale), checked to fit; or one picked (a round number of °/mm)."""
+    if given is None:
+        return pick_angle_scale(period, span_mm, symbol=symbol)
+    s = given if isinstance(given, Scale) else Scale(symbol, "rad", given)
+    if s.to_mm(period) > span_mm * (1 + 1e-9):
+        raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the sheet "
+                         f"leaves {span_mm:.1f} mm; give a larger μ_φ, a larger page, or none to have one picked")
+    return s
+
+
+def as_study(obj, positions: int = 12):
+    """A Study from a Study or a problem Case (studied at ``positions``)."""
+    from graphmethods.dynamics.study import Study
+
+    if isinstance(obj, Study):
+        return obj
+    if hasattr(obj, "mechanism") and hasattr(obj, "inertias") and hasattr(obj, "load"):
+        return Study(obj, positions=positions)
+    raise InputError(f"expected a Study (graphmethods.dynamics.study) or a problem read with "
+                     f"graphmethods.kinematics.read_case, got {type(obj).__name__}")
+
+
+def problem_text(study) -> str:
+    name = getattr(study.case, "name", "") or getattr(study.case, "kind", "")
+    return f"{name}, m = {study.m}"
+
+
+def fine_angles(m: int, per_interval: int = 30) -> np.ndarray:
+    """Angles 0…2π for drawing curves: every position, and ``per_interval`` steps between them."""
+    return np.linspace(0.0, TWO_PI, m * per_interval + 1)
+
+
+def inertia_curve(study, phi: np.ndarray):
+    """J_e and its parts at the angles ``phi`` from position 0 (rad), kg·m² (the exact reduction)."""
+    from graphmethods.dynamics.reduction import reduced_inertia
+
+    mech = study.mechanism
+    return reduced_inertia(mech.velocity_plans(mech.positions(phi_from_start=phi)), study.case.inertias)
+
+
+def suppressed_base(lo: float, hi: float, scale: Scale, *, zero: bool | None = None) -> float:
+    """Where a value axis starts: 0, or (for a small variation far from 0) a round tick below ``lo``.
+
+    >>> suppressed_base(30.8, 32.0, Scale("μ", "rad/s", 0.01))
+    30.7
+    >>> suppressed_base(0.54, 0.70, Scale("μ", "kg·m²", 0.005), zero=True)
+    0.0
+    """
+    if zero is None:
+        zero = not (lo > 0 and (hi - lo) < 0.35 * hi)
+    if zero:
+        return 0.0
+    ticks = nice_ticks(lo - (hi - lo), hi, scale, min_gap_mm=8.0)
+    below = [t for t in ticks if t <= lo - 0.02 * (hi - lo)]
+    return float(below[-1]) if below else float(ticks[0])
+
+
+# ----------------------------------------------------------------------------- the φ graph
+
+@dataclass(frozen=True)
+class CurveSpec:
+    """A curve of a φ graph: values at angles (rad from position 0), its style and name label."""
+
+    key: str
+    phi: np.ndarray
+    values: np.ndarray
+    style: Style = MAIN
+    label: str = ""
+
+
+@dataclass(frozen=True)
+class MarkSpec:
+    """An extreme marked on a φ graph: a small circle and its text (above or below)."""
+
+    key: str
+    phi: float
+    value: float
+    text: str
+    up: bool = True
+
+
+def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.ndarray, curves, nt, occ,
+                       y_from: float, y_to: float, axis_level: float, y_label: str, dots=None, marks=(),
+                       levels=(), prefix: str = "", within=None, labels_side: str | None = None,
+                       phi_label: str = "") -> list:
+    """The elements of a graph against φ (axes with position numbers, curves, dots, marks, levels).
+
+    Parameters
+    ----------
+    origin : (float, float), mm
+        Page point of φ = 0 and value 0 (may lie off the page when the value axis starts at
+        ``y_from`` > 0).
+    s_phi, s_Y : Scale
+        The φ scale (rad/mm) and the value scale.
+    m, phi_k
+        Number of intervals and the angles of positions 0…m, rad from position 0.
+    curves : sequence of CurveSpec
+        Drawn in order; the first is the graph's main curve.
+    y_from, y_to : float
+        The drawn range of the value axis; ``axis_level`` is where the φ axis crosses it.
+    dots : (phi, values) or None
+        Points marked at the positions.
+    marks : sequence of MarkSpec
+        Extremes marked with a circle and a text.
+    levels : sequence of (value, text, key)
+        Dashed horizontal levels across the graph, their text at the right end.
+    prefix : str
+        Prepended to element names (several graphs on one sheet).
+    """
+    f = Frame(origin, s_phi, s_Y)
+    period = float(phi_k[-1] - phi_k[0])
+    x_axis_y = f.pt(0.0, axis_level)[1]
+    y0_page = f.pt(0.0, y_from)[1]
+    spacing = s_phi.to_mm(period / m)
+    below = any(float(np.max(c.values)) < axis_level or
+                float(np.mean(c.values < axis_level)) > 0.5 for c in curves[:1])
+    side = labels_side if labels_side is not None else ("above" if below else "below")
+    ax_phi = Axis((origin[0], x_axis_y), s_phi, "x", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
+                  tick_labels=("",) * (m + 1), label=phi_label or sym(nt, "phi"), size_mm=SMALL_MM,
+                  name=f"{prefix}axis-phi", labels_side=side)
+    ticks = tuple(t for t in nice_ticks(y_from, y_to, s_Y, min_gap_mm=8.0) if y_from <= t <= y_to)
+    ax_Y = Axis(origin, s_Y, "y", min_value=y_from, max_value=y_to, ticks=ticks, label=y_label, size_mm=SMALL_MM,
+                decimal=get_notation(nt).decimal, name=f"{prefix}axis-Y", skip_zero_label=(axis_level == 0 and
+                                                                                        y_from < 0))
+    lines = [Polyline(f.pts(c.phi, c.values), style=c.style, name=f"{prefix}curve-{c.key}") for c in curves]
+    lvl = []
+    x_end = f.pt(period, 0.0)[0]
+    for value, text, key in levels:
+        y = f.pt(0.0, value)[1]
+        lvl.append(Line((origin[0], y), (x_end + 2.0, y), style=LEVEL, name=f"{prefix}level-{key}"))
+    occ.register(*lines, *lvl)
+    occ.add_box((origin[0] - 0.5, min(y0_page, x_axis_y) - 0.5, origin[0] + 0.5, max(y0_page, x_axis_y) + 0.5))
+    occ.add_line((ax_phi.start, ax_phi.tip))
+    occ.add_line((ax_Y.start, ax_Y.tip))
+    ax_phi, ax_Y = clear_ticks(ax_phi, occ), clear_ticks(ax_Y, occ)
+    occ.register(ax_phi, ax_Y)
+    for ax in (ax_phi, ax_Y):        # keep curve names well clear of the axis names
+        name = [p for p in ax.primitives() if isinstance(p, Label)][-1:]
+        if name and ax.label:
+            b = label_bbox(name[0])
+            occ.add_box((b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5))
+    els = [ax_phi, ax_Y] + lvl + lines
+    # position numbers under (or over) the φ axis ticks, on the other side where a curve runs through
+    order = ("n", "s") if side == "above" else ("s", "n")
+    for k, text in enumerate(position_labels(m, spacing)):
+        if not text:
+            continue
+        at = ax_phi.pos(float(phi_k[k] - phi_k[0]))
+        lab = occ.first_free(at, text, order + ("se", "ne", "sw", "nw"), (2.3, 3.5), SMALL_MM, None)
+        if lab is None:
+            lab = occ.place_label(at, text, order[:1], size_mm=SMALL_MM, gap_mm=2.3, register=False)
+        occ.add_label(lab)
+        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, valign="baseline",
+                        name=f"{prefix}pos-{k}"))
+    if dots is not None:
+        pts = f.pts(*dots)
+        els += [Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}") for k, p in enumerate(pts)]
+        for p in pts:
+            occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
+    for value, text, key in levels:
+        y = f.pt(0.0, value)[1]
+        lab = occ.place_label((x_end + 2.0, y), text, ("ne", "e", "se", "n", "s"), size_mm=TEXT_MM, gap_mm=1.0,
+                              within=within)
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{key}"))
+    for mk in marks:
+        at = f.pt(mk.phi, mk.value)
+        els.append(Point(at, radius_mm=1.1, filled=False, name=f"{prefix}mark-{mk.key}"))
+        occ.add_box((at[0] - 1.3, at[1] - 1.3, at[0] + 1.3, at[1] + 1.3))
+        up, down = ("n", "ne", "nw", "e", "w"), ("s", "se", "sw", "e", "w")
+        lab, leader = occ.place_label_with_leader(at, mk.text, up + down if mk.up else down + up, size_mm=TEXT_MM,
+                                                  gap_mm=2.0, within=within)
+        els.append(Text((lab.x, lab.y), mk.text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{mk.key}"))
+        if leader is not None:
+            els.append(Line(*leader, style=THIN, name=f"{prefix}leader-{mk.key}"))
+    for c, line in zip(curves, lines):
+        if not c.label:
+            continue
+        size = TEXT_MM + 0.4
+        n = len(line.points)
+        spots = [(line.end, ("e", "ne", "se"))] + [(line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw"))
+                                                  for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
+        far = int(np.argmax(np.abs(np.asarray(c.values, dtype=float) - axis_level)))
+        if abs(float(c.values[-1]) - axis_level) < 0.05 * abs(float(c.values[far]) - axis_level):
+            spots.insert(0, (line.points[far], ("ne", "nw", "n", "e", "w")))   # it ends on the axis: name its peak
+        lab = None
+        for at, dirs in spots:
+            lab = occ.first_free(at, c.label, dirs, (1.2, 2.5), size, within)
+            if lab is not None:
+                break
+        if lab is None:
+            lab, leader = occ.place_label_with_leader(line.points[n // 2], c.label, size_mm=size, within=within)
+            if leader is not None:
+                els.append(Line(*leader, style=THIN, name=f"{prefix}leader-{c.key}"))
+        else:
+            occ.add_label(lab)
+        els.append(Text((lab.x, lab.y), c.label, size_mm=size, anchor=lab.anchor, name=f"{prefix}name-{c.key}"))
+    return els
+
+
+def _graph_scene(study, *, nt, title, page, title_block, name, curves, y_lo, y_hi, y_symbol, y_unit,
+                 scale_symbol, mu_Y, mu_phi, what, dots=None, marks=(), levels=(), legend="", zero=None,
+                 extra_notes=()) -> Scene:
+    """A whole A4 landscape figure of one φ graph (the standalone figures)."""
+    from graphmethods.scene import Page
+
+    sheet = SheetFrame(nt=nt, page=page, title=title, problem=problem_text(study), title_block=title_block,
+                       default_page=Page("A4", "landscape", frame=True))
+    x0, y0, x1, y1 = sheet.box
+    y_label = quantity(nt, y_symbol, y_unit)
+    right = 8.0 + markup.text_width_mm(sym(nt, "phi"), SMALL_MM + 0.5) + 26.0
+    px0, px1 = x0 + 20.0, x1 - right
+    py0, py1 = sheet.top + 12.0, sheet.caption_y - 14.0
+    s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, px1 - px0)
+    u = unit(nt, y_unit)
+    u = f"({u})" if "/" in u else u
+    suppressed = zero is False or (zero is None and y_lo > 0 and (y_hi - y_lo) < 0.35 * y_hi)
+    if suppressed:
+        s_Y = given_scale(mu_Y, scale_symbol, u, y_hi - y_lo, py1 - py0 - 14.0, what=what)
+        base = suppressed_base(y_lo, y_hi, s_Y, zero=False)
+    else:
+        lo = min(y_lo, 0.0)
+        s_Y = given_scale(mu_Y, scale_symbol, u, max(y_hi, 0.0) - lo, py1 - py0, what=what)
+        base = lo
+    axis_level = 0.0 if base <= 0.0 <= y_hi else base
+    origin = (px0, py0 + s_Y.to_mm(max(y_hi, 0.0) if base <= 0 else y_hi))
+    within = (px0 - 18.0, sheet.top, x1, sheet.caption_y - 5.0)
+    m = study.m
+    els = phi_graph_elements(origin=origin, s_phi=s_phi, s_Y=s_Y, m=m, phi_k=np.asarray(study.phi, dtype=float),
+                             curves=curves, nt=nt, occ=sheet.occ, y_from=base, y_to=y_hi, axis_level=axis_level,
+                             y_label=y_label, dots=dots, marks=marks, levels=levels, within=within)
+    notes = [s_phi.note, s_Y.note, *extra_notes]
+    if suppressed:
+        notes.append(f"the value axis starts at {base:g} {y_unit} (a suppressed zero)")
+    scales = (s_phi, s_Y)
+    elements = [sheet.header()] + els + sheet.captions(scales, legend=legend)
+    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=sheet.nt.code, name=name,
+                 notes=tuple(notes))
+
+
+# ----------------------------------------------------------------------------- 1. J_e(φ)
+
+def _part_label(key: str) -> str:
+    """``"m (S2)"`` -> ``"m_{S2}"``, ``"J (OA)"`` -> ``"J_{OA}"`` (markup)."""
+    mt = re.fullmatch(r"(\w+) \((.+)\)", key)
+    return f"{mt.group(1)}_{{{mt.group(2)}}}" if mt else markup.literal(key)
+
+
+def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts: bool = True, notation="en",
+                  page=None, title=None, title_block: bool = True, name: str = "inertia-graph") -> Scene:
+    """The reduced moment of inertia J_e(φ) over one crank turn, with its parts; or turned 90°.
+
+    The curve is the exact reduction (drawn through 30 steps per interval); the
+    positions 0…m are marked and numbered on the φ axis. ``turned=True`` draws the graph
+    turned 90° clockwise on an A4 portrait sheet: J_e to the right from 0 (the abscissa of
+    the energy–mass diagram) and φ down the page, ready for projecting J_e values up or
+    down onto the Wittenbauer diagram.
+
+    Parameters
+    ----------
+    study : Study or Case
+    mu_J : float or Scale, optional
+        kg·m² per mm; picked when not given.
+    mu_phi : float or Scale, optional
+        rad per mm; picked (a round number of degrees per mm) when not given.
+    parts : bool
+        Also draw each moving mass's share (not when turned).
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.kinematics import read_case
+    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    >>> s = inertia_graph(press, turned=True)
+    >>> s.page.orientation, [a.name for a in s.axes()]
+    ('portrait', ['axis-J', 'axis-phi'])
+    """
+    study = as_study(study)
+    nt = get_notation(notation)
+    phi = fine_angles(study.m)
+    red = inertia_curve(study, phi)
+    J_k = np.asarray(study.J_e, dtype=float)
+    phi_k = np.asarray(study.phi, dtype=float)
+    J_sym = sym(nt, "J_e")
+    if turned:
+        return _turned_inertia_scene(study, nt=nt, phi=phi, J=red.J_e, J_k=J_k, phi_k=phi_k, mu_J=mu_J,
+                                     mu_phi=mu_phi, page=page, title=title, title_block=title_block, name=name)
+    curves = [CurveSpec("J_e", phi, red.J_e, MAIN, J_sym)]
+    if parts:
+        for key, values in red.parts.items():
+            if np.ptp(values) > 0 or values[0] > 0:
+                curves.append(CurveSpec(re.sub(r"\W+", "", key), phi, values, PART, _part_label(key)))
+    y_hi = float(max(red.J_e.max(), J_k.max()))
+    legend = f"{J_sym} = Σ[m_i(v_{{Si}}/ω_1)² + J_{{Si}}(ω_i/ω_1)²]"
+    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'inertia_graph')} {J_sym}(φ)", page=page,
+                        title_block=title_block, name=name, curves=curves, y_lo=0.0, y_hi=y_hi, y_symbol=J_sym,
+                        y_unit="kg·m²", scale_symbol=sym(nt, "mu_J"), mu_Y=mu_J, mu_phi=mu_phi,
+                        what="the J_e graph", dots=(phi_k, J_k), legend=legend, zero=True)
+
+
+def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np.ndarray, J: np.ndarray,
+                            phi_k: np.ndarray, J_k: np.ndarray, nt, occ, J_to: float, prefix: str = "J-",
+                            within=None) -> list:
+    """The J_e(φ) graph turned 90° clockwise: J_e axis to the right from ``origin``, φ axis down from it.
+
+    Page point of (φ, J) is ``(origin_x + J/μ_J, origin_y + φ/μ_φ)``. Returns the axes, the
+    curve and the dots ``{prefix}dot-k`` at positions 0…m−1.
+    """
+    ox, oy = origin
+    period = float(phi_k[-1] - phi_k[0])
+    ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=12.0) if 0.0 <= t <= J_to)
+    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J, label=quantity(nt, sym(nt, "J_e"),
+                "kg·m²"), size_mm=SMALL_MM, decimal=get_notation(nt).decimal, labels_side="above",
+                skip_zero_label=True, name=f"{prefix}axis-J")
+    spacing = s_phi.to_mm(period / m)
+    ax_phi = DownAxis(origin, s_phi, "y", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
+                      tick_labels=position_labels(m, spacing), label=sym(nt, "phi"), size_mm=SMALL_MM,
+                      name=f"{prefix}axis-phi")
+    pts = tuple(zip((ox + s_J.to_mm(J)).tolist(), (oy + s_phi.to_mm(phi - phi_k[0])).tolist()))
+    curve = Polyline(pts, style=MAIN, name=f"{prefix}curve-J_e")
+    occ.register(curve)
+    occ.add_line((ax_J.start, ax_J.tip))
+    occ.add_line((ax_phi.start, ax_phi.tip))
+    ax_J, ax_phi = clear_ticks(ax_J, occ), clear_ticks(ax_phi, occ)
+    occ.register(ax_J, ax_phi)
+    dots = []
+    for k in range(m):
+        p = (ox + s_J.to_mm(float(J_k[k])), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
+        dots.append(Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}"))
+        occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
+    name_lab = occ.place_label(pts[len(pts) // 4], sym(nt, "J_e"), ("e", "ne", "se", "w"), size_mm=TEXT_MM + 0.4,
+                               gap_mm=2.0, within=within)
+    label = Text((name_lab.x, name_lab.y), sym(nt, "J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
+                 name=f"{prefix}name-J_e")
+    return [ax_J, ax_phi, curve] + dots + [label]
+
+
+def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, title, title_block, name):
+    from graphmethods.scene import Page
+
+    J_sym = sym(nt, "J_e")
+    sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'inertia_turned')}: {J_sym}(φ)",
+                       problem=problem_text(study), title_block=title_block,
+                       default_page=Page("A4", "portrait", frame=True))
+    x0, y0, x1, y1 = sheet.box
+    ox, oy = x0 + 16.0, sheet.top + 16.0
+    J_to = float(max(J.max(), J_k.max()))
+    label_w = markup.text_width_mm(quantity(nt, J_sym, "kg·m²"), SMALL_MM + 0.5)
+    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, x1 - ox - 12.0 - label_w, what="the J_e axis")
+    s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, sheet.caption_y - 22.0 - oy)
+    els = turned_inertia_elements(origin=(ox, oy), s_J=s_J, s_phi=s_phi, m=study.m, phi=phi, J=J, phi_k=phi_k,
+                                  J_k=J_k, nt=nt, occ=sheet.occ, J_to=J_to, prefix="", within=sheet.box)
+    scales = (s_J, s_phi)
+    elements = [sheet.header()] + els + sheet.captions(scales)
+    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
+                 notes=(s_J.note, s_phi.note))
+
+
+# ----------------------------------------------------------------------------- 2. M_d and M_r(φ)
+
+def moment_curves(study) -> tuple[np.ndarray, np.ndarray, float]:
+    """M_r at the positions (the drawn chords) and the balancing M_d, N·m."""
+    M_d, M_r = study.moments
+    return np.asarray(M_r.M, dtype=float), np.asarray(M_r.phi, dtype=float), float(M_d.mean())
+
+
+def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, title=None, title_block: bool = True,
+                 name: str = "moment-graph") -> Scene:
+    """The reduced moments M_d and M_r against φ, as the graphical method draws them.
+
+    M_r is drawn through its values at positions 0…m (straight chords, as by hand);
+    M_d is the constant that balances its work over the turn. Their difference is
+    M_e = M_d − M_r; the areas between them are the excess works whose running sum is ΔT.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.kinematics import read_case
+    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    >>> s = moment_graph(press, mu_M=5.0)
+    >>> round(s.element("axis-phi").origin[1] - s.element("curve-M_d").points[0][1], 6)   # 155.3 N·m at 5 N·m/mm
+    31.054517
+    """
+    study = as_study(study)
+    nt = get_notation(notation)
+    M_r, phi_k, M_d = moment_curves(study)
+    curves = [CurveSpec("M_r", phi_k, M_r, MAIN, sym(nt, "M_r")),
+              CurveSpec("M_d", np.array([0.0, TWO_PI]), np.array([M_d, M_d]), MAIN, sym(nt, "M_d"))]
+    legend = f"{sym(nt, 'M_d')} = {value_text(nt, M_d, 'N·m')} ({word(nt, 'work_balance')})"
+    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'moment_graph')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}",
+                        page=page, title_block=title_block, name=name, curves=curves, y_lo=0.0,
+                        y_hi=float(max(M_r.max(), M_d)), y_symbol=sym(nt, "M"), y_unit="N·m",
+                        scale_symbol=sym(nt, "mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
+                        dots=(phi_k, M_r), legend=legend, zero=True)
+
+
+# ----------------------------------------------------------------------------- 3. ΔT(φ) or T(φ)
+
+def delta_T_curve(study, phi: np.ndarray) -> np.ndarray:
+    """ΔT at the angles ``phi`` (rad from position 0): the integral of the drawn M_d − M_r, J."""
+    M_d, M_r = study.moments
+    return np.asarray((M_d - M_r).integral(phi), dtype=float)
+
+
+def _extremes(phi, values):
+    i, j = int(np.argmax(values)), int(np.argmin(values))
+    return (float(phi[i]), float(values[i])), (float(phi[j]), float(values[j]))
+
+
+def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notation="en", page=None, title=None,
+                  title_block: bool = True, name: str = "delta-T-graph") -> Scene:
+    """ΔT(φ), the increment of kinetic energy from position 0; or the kinetic energy T(φ) of the exact motion.
+
+    ΔT is the integral of the drawn moments (M_d − M_r through the positions), exact for
+    them; its values at the positions are the ordinates of the energy–mass diagram. With
+    ``kinetic=True`` the curve is T(φ) of the exact steady motion with the exact flywheel
+    (this solves the exact motion).
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.kinematics import read_case
+    >>> from graphmethods.dynamics.study import Study
+    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+    >>> s = delta_T_graph(st, notation="zh")
+    >>> s.element("axis-Y").label, "exact" in st.computed
+    ('ΔE/J', False)
+    """
+    study = as_study(study)
+    nt = get_notation(notation)
+    phi = fine_angles(study.m)
+    if kinetic:
+        mo = study.exact.motion
+        phi, Y = np.asarray(mo.phi, dtype=float) - float(mo.phi[0]), np.asarray(mo.T, dtype=float)
+        key, kmax, kmin, dots = "T", "T_max", "T_min", None
+        ttl = f"{word(nt, 'kinetic_graph')} {sym(nt, 'T')}(φ)"
+        legend = f"{sym(nt, 'J_F')} = {value_text(nt, study.exact.J_F, 'kg·m²')} ({word(nt, 'exact')})"
+    else:
+        Y = delta_T_curve(study, phi)
+        key, kmax, kmin = "dT", "dT_max", "dT_min"
+        dots = (np.asarray(study.phi, dtype=float), np.asarray(study.delta_T, dtype=float))
+        ttl = f"{word(nt, 'delta_T_graph')} {sym(nt, 'dT')}(φ)"
+        legend = ""
+    (p1, v1), (p2, v2) = _extremes(phi, Y)
+    marks = [MarkSpec(kmax, p1, v1, f"{sym(nt, kmax)} = {value_text(nt, v1, 'J')}, φ = "
+                                    f"{get_notation(nt).number(math.degrees(p1), sig=4)}°", True),
+             MarkSpec(kmin, p2, v2, f"{sym(nt, kmin)} = {value_text(nt, v2, 'J')}, φ = "
+                                    f"{get_notation(nt).number(math.degrees(p2), sig=4)}°", False)]
+    return _graph_scene(study, nt=nt, title=title or ttl, page=page, title_block=title_block, name=name,
+                        curves=[CurveSpec(key, phi, Y, MAIN, "")], y_lo=float(Y.min()), y_hi=float(Y.max()),
+                        y_symbol=sym(nt, key), y_unit="J", scale_symbol=sym(nt, "mu_T"), mu_Y=mu_T, mu_phi=mu_phi,
+                        what="the energy graph", dots=dots, marks=marks, legend=legend,
+                        zero=None if kinetic else True)
+
+
+# ----------------------------------------------------------------------------- 4. ω(φ) and ε(φ)
+
+def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, title=None,
+                title_block: bool = True, name: str = "speed-graph") -> Scene:
+    """ω(φ) of the exact steady motion with the exact flywheel for [δ]: ω_m, ω_max and ω_min marked.
+
+    The ω axis starts at a round value below ω_min (its first tick), so the fluctuation
+    is visible.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.kinematics import read_case
+    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    >>> s = speed_graph(press)
+    >>> s.element("label-omega_max").text
+    'ω_{max} = 32.04 rad/s, φ = 23.22°'
+    """
+    study = as_study(study)
+    nt = get_notation(notation)
+    ex = study.exact
+    mo = ex.motion
+    phi = np.asarray(mo.phi, dtype=float) - float(mo.phi[0])
+    w = np.asarray(mo.omega, dtype=float)
+    n = get_notation(nt).number
+    marks = [MarkSpec("omega_max", ex.phi_omega_max_from_0, ex.omega_max,
+                      f"{sym(nt, 'omega_max')} = {value_text(nt, ex.omega_max, 'rad/s')}, φ = "
+                      f"{n(math.degrees(ex.phi_omega_max_from_0))}°", True),
+             MarkSpec("omega_min", ex.phi_omega_min_from_0, ex.omega_min,
+                      f"{sym(nt, 'omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
+                      f"{n(math.degrees(ex.phi_omega_min_from_0))}°", False)]
+    levels = [(mo.omega_m, f"{sym(nt, 'omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
+    legend = f"δ = {n(mo.delta)};  {sym(nt, 'J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} ({word(nt, 'exact')})"
+    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'speed_graph')} ω(φ)", page=page,
+                        title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
+                        y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
+                        y_symbol=sym(nt, "omega"), y_unit="rad/s", scale_symbol=sym(nt, "mu_omega"), mu_Y=mu_omega,
+                        mu_phi=mu_phi, what="the ω graph", marks=marks, levels=levels, legend=legend, zero=None)
+
+
+def acceleration_graph(study, *, mu_eps=None, mu_phi=None, notation="en", page=None, title=None,
+                       title_block: bool = True, name: str = "acceleration-graph") -> Scene:
+    """ε(φ) = (M_e − ½ω² dJ_e/dφ)/(J_F + J_e) of the exact motion: the largest |ε| and χ = |ε|_max/ω_m².
+
+    ε jumps where the load switches on and off.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.kinematics import read_case
+    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    >>> s = acceleration_graph(press, notation="ru")
+    >>> s.element("axis-Y").label
+    'ε, рад/с²'
+    """
+    study = as_study(study)
+    nt = get_notation(notation)
+    mo = study.exact.motion
+    phi = np.asarray(mo.phi, dtype=float) - float(mo.phi[0])
+    eps = np.asarray(mo.epsilon, dtype=float)
+    n = get_notation(nt).number
+    p = float(mo.phi_epsilon_max - mo.phi[0])
+    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{sym(nt, 'eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
+                      f", φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
+    legend = f"{sym(nt, 'chi')} = |{sym(nt, 'eps')}|_{{max}}/{sym(nt, 'omega_m')}² = {n(mo.chi)}"
+    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'accel_graph')} ε(φ)", page=page,
+                        title_block=title_block, name=name, curves=[CurveSpec("eps", phi, eps, MAIN, "")],
+                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)), y_symbol=sym(nt, "eps"),
+                        y_unit="rad/s²", scale_symbol=sym(nt, "mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
+                        what="the ε graph", marks=marks, legend=legend, zero=True)
+
+
+# ----------------------------------------------------------------------------- 5. the Zhukovsky lever
+
+def _link_points(link: str, names) -> tuple[str, str] | None:
+    """The two named points a link name joins (``"O2B"`` -> ``("O2", "B")``), or None."""
+    parts = re.findall(r"[A-Z][0-9]*", link)
+    if len(parts) == 2 and "".join(parts) == link and all(p in names for p in parts):
+        return parts[0], parts[1]
+    return None
+
+
+@dataclass(frozen=True)
+class LeverLoad:
+    """The load at one position as a force at the image of its point (a moment on a rocker becomes M/l at its end)."""
+
+    point: str
+    force: np.ndarray        # N, (2,)
+    M_r: float               # the power method's reduced moment there, N·m
+
+
+def lever_load(study, k: int) -> LeverLoad:
+    """The working-stroke load at position ``k`` as one force (N) at a point of the linkage."""
+    load = study.case.load
+    plans, pos = study.plans, study.positions
+    M_r = float(study.M_r[k])
+    if M_r <= 0.0:
+        loaded = [int(i) for i in np.flatnonzero(np.asarray(study.M_r)[:-1] > 0)]
+        raise InputError(f"position {k} carries no load (M_r = 0 there), so the lever has no force to show; "
+                         f"choose a loaded position: {', '.join(map(str, loaded)) or 'none'}")
+    if load.kind == "force":
+        g = np.asarray(study.mechanism.guides[load.at], dtype=float)
+        v = float(plans.v_along_guide(load.at)[k])
+        return LeverLoad(load.at, -load.magnitude * math.copysign(1.0, v) * g / np.hypot(*g), M_r)
+    ends = _link_points(study.mechanism.link_name(load.at), pos.names)
+    if ends is None:
+        raise InputError(f"the moment load on link {load.at} cannot be shown on the lever: its end points are "
+                         f"not named points of the linkage")
+    speeds = [float(plans.speed(p)[k]) for p in ends]
+    i = int(np.argmax(speeds))
+    end, other = ends[i], ends[1 - i]
+    l = float(np.hypot(*(pos.xy(end)[k] - pos.xy(other)[k])))
+    v = plans.v(end)[k]
+    return LeverLoad(end, -load.magnitude / l * v / np.hypot(*v), M_r)
+
+
+def _default_lever_position(study) -> int:
+    """The loaded position whose plan images lie furthest apart (the clearest lever)."""
+    plans = study.plans
+    M_r = np.asarray(study.M_r)[:-1]
+    moving = [p for p in plans.order if plans.label(p) != "p"]
+    V = np.stack([plans.v(p)[:-1] for p in moving], axis=1)                      # (m, n, 2)
+    d = np.hypot(*(V[:, :, None, :] - V[:, None, :, :]).transpose(3, 0, 1, 2))   # (m, n, n)
+    iu = np.triu_indices(len(moving), 1)
+    spread = d[:, iu[0], iu[1]].min(axis=1) if len(iu[0]) else np.ones(len(M_r))
+    spread = np.where(M_r > 0, spread, -1.0)
+    return int(np.argmax(spread))
+
+
+def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None, notation="en", page=None,
+                    title=None, title_block: bool = True, name: str = "zhukovsky-lever") -> Scene:
+    """Zhukovsky's lever at one position: the velocity plan turned 90°, the load at the image of its point.
+
+    The plan (drawn for ω₁ = ω_m to μ_v) is turned 90° against the crank's rotation and
+    treated as a rigid lever pivoted at the pole p; the working load F is applied at the
+    image of its point (a moment M on a rocker as the force M/l at its end), and its arm h
+    about p is dimensioned. Then M_r = F·h·μ_v/ω₁, the same value as the power method's
+    (written beside it for comparison).
+
+    Parameters
+    ----------
+    position : int, optional
+        The position (0…m−1); by default the one with the largest M_r.
+    mu_v : float or Scale, optional
+        (m/s) per mm of the plan; picked when not given.
+    mu_F : float or Scale, optional
+        N per mm of the force vector; picked when not given.
+
+    Raises
+    ------
+    InputError
+        If no load acts at the position.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.kinematics import read_case
+    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    >>> s = zhukovsky_lever(press, position=2)
+    >>> s.element("label-h").text
+    'h = 121.4 mm'
+    """
+    from graphmethods.scene import Page
+
+    study = as_study(study)
+    nt = get_notation(notation)
+    m = study.m
+    plans = study.plans
+    if position is None:
+        k = _default_lever_position(study)
+    else:
+        if isinstance(position, bool) or not isinstance(position, (int, np.integer)) or not 0 <= position <= m:
+            raise InputError(f"position {position!r}: give a position number 0…{m}")
+        k = int(position) % m
+    ld = lever_load(study, k)
+    omega_1 = float(plans.omega_1)
+    sense = int(plans.sense)
+
+    def turned(v):
+        v = np.asarray(v, dtype=float)
+        return np.array([v[1], -v[0]]) if sense > 0 else np.array([-v[1], v[0]])
+
+    names = [p for p in plans.order]
+    images = {p: turned(plans.v(p)[k]) for p in names}          # m/s, turned
+    F = np.asarray(ld.force, dtype=float)
+    F_abs = float(np.hypot(*F))
+    sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'lever')}, {word(nt, 'position')} {k}",
+                       problem=problem_text(study), title_block=title_block,
+                       default_page=Page("A4", "landscape", frame=True))
+    x0, y0, x1, y1 = sheet.box
+    nb = get_notation(nt).number
+    F_text = f"{sym(nt, 'F')} = {value_text(nt, F_abs, 'N')}"
+    u_v = unit(nt, "(m/s)")
+    s_F = given_scale(mu_F, sym(nt, "mu_F"), unit(nt, "N"), F_abs, 30.0 if mu_F is None else 1e9,
+                      what="the force vector")
+    P = ld.point
+    Fhat = np.array([F[0], -F[1]]) / F_abs                      # on paper (y down)
+    f_len = s_F.to_mm(F_abs)
+
+    def layout(s_v):
+        """Paper offsets from p (mm) of the images, the force's tip and the arm's foot."""
+        img = {p: np.array([v[0], -v[1]]) / s_v.per_mm for p, v in images.items()}
+        b = img[P]
+        tip = b + Fhat * f_len
+        foot = b - Fhat * float(np.dot(b, Fhat))              # foot of the perpendicular from p
+        cloud = np.vstack(list(img.values()) + [np.zeros(2), tip, foot])
+        return img, tip, foot, cloud.min(axis=0), cloud.max(axis=0)
+
+    rows_probe = ((word(nt, "plan_turned"), f"{sym(nt, 'omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
+                  (word(nt, "by_lever"), f"= {nb(F_abs)}·00.00·{nb(1.0e-4)}/{nb(omega_1)}"))
+    table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=TEXT_MM).width_mm
+    box = (x0 + 12.0, sheet.top + 8.0, x1 - table_w - 14.0, sheet.caption_y - 14.0)
+    bw, bh = box[2] - box[0], box[3] - box[1]
+    span = max(float(np.ptp([v[0] for v in images.values()] + [0.0])) / bw,
+               float(np.ptp([v[1] for v in images.values()] + [0.0])) / bh)
+    if mu_v is None:
+        s_v = None
+        for c in sorted({float(f"{mm!r}e{e}") for e in range(math.floor(math.log10(span)) - 1,
+                                                                math.floor(math.log10(span)) + 4)
+                         for mm in (1.0, 2.0, 2.5, 4.0, 5.0)}):
+            if c < span:
+                continue
+            trial = Scale(sym(nt, "mu_v"), u_v, c)
+            lo, hi = layout(trial)[3:]
+            if hi[0] - lo[0] <= bw and hi[1] - lo[1] <= bh:
+                s_v = Scale(sym(nt, "mu_v"), u_v, c, note=f"picked: the lever fits {bw:.0f} × {bh:.0f} mm at "
+                                                           f"{nb(c)} (m/s)/mm")
+                break
+        if s_v is None:  # pragma: no cover - the force alone cannot exceed its 30 mm
+            raise InputError("the lever does not fit the sheet; give mu_v and mu_F")
+    else:
+        s_v = mu_v if isinstance(mu_v, Scale) else Scale(sym(nt, "mu_v"), u_v, mu_v)
+    img, tip, foot, lo, hi = layout(s_v)
+    if hi[0] - lo[0] > bw + 1e-9 or hi[1] - lo[1] > bh + 1e-9:
+        raise InputError(f"the lever at {markup.plain(s_v.caption())} and {markup.plain(s_F.caption())} needs "
+                         f"{(hi - lo)[0]:.0f} × {(hi - lo)[1]:.0f} mm but the sheet leaves {bw:.0f} × {bh:.0f} mm; "
+                         f"give larger scales or none")
+    p_page = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2]) - (lo + hi) / 2
+    b_img = img[P]
+
+    def at(off):
+        q = p_page + off
+        return (float(q[0]), float(q[1]))
+
+    def paper(v):
+        return np.array([v[0], -v[1]]) / s_v.per_mm
+
+    occ = sheet.occ
+    els = []
+    # the lever: lines from p to every image, and the links between images
+    lever_lines = []
+    for p in names:
+        if plans.label(p) == "p" or np.hypot(*images[p]) == 0:
+            continue
+        lever_lines.append(Line(at(np.zeros(2)), at(paper(images[p])), style=MAIN,
+                                name=f"lever-p{plans.label(p)}"))
+    for link in study.mechanism.omega_links:
+        ends = _link_points(link, names)
+        if ends is None or any(plans.label(e) == "p" for e in ends):
+            continue
+        a, b = ends
+        lever_lines.append(Line(at(paper(images[a])), at(paper(images[b])), style=MAIN,
+                                name=f"lever-{plans.label(a)}{plans.label(b)}"))
+    force = Vector(at(b_img), at(tip), name="force-F")
+    line_of_action = []
+    t_foot = float(np.dot(foot - b_img, Fhat))
+    if t_foot < 0.0 or t_foot > f_len:         # the foot is off the vector: carry its line of action there
+        far = tip if t_foot > f_len else b_img
+        line_of_action.append(Line(at(far), at(foot), style=Style(width_mm=0.18, dash=(5.0, 1.2, 1.0, 1.2)),
+                                   name="line-of-action"))
+    h_mm = float(np.hypot(*foot))
+    occ.register(*lever_lines, force, *line_of_action)
+    # the arm's dimension line beside it, on the side away from the lever
+    u = foot / max(h_mm, 1e-12)
+    normal = np.array([-u[1], u[0]])
+    centre = np.mean(np.vstack([paper(v) for v in images.values()]), axis=0) - foot / 2
+    side = -1.0 if float(np.dot(centre, normal)) > 0 else 1.0
+    arm = Dimension(at(np.zeros(2)), at(foot), "", offset_mm=8.0 * side, size_mm=TEXT_MM, name="dimension-h")
+    occ.register(arm)
+    h_text = f"{sym(nt, 'h')} = {nb(h_mm)} {unit(nt, 'mm')}"
+    a_, b_ = np.asarray(arm.line_start), np.asarray(arm.line_end)
+    away = np.asarray(arm.line_start) - np.asarray(arm.start)          # from the arm towards its dimension line
+    compass = "e" if away[0] > abs(away[1]) else "w" if -away[0] > abs(away[1]) else ("s" if away[1] > 0 else "n")
+    order = {"e": ("e", "ne", "se", "w"), "w": ("w", "nw", "sw", "e"), "n": ("n", "ne", "nw", "s"),
+             "s": ("s", "se", "sw", "n")}[compass]
+    h_lab = None
+    for t in (0.5, 0.4, 0.6, 0.3, 0.7):
+        h_lab = occ.first_free(tuple((a_ + (b_ - a_) * t).tolist()), h_text, order, (1.2, 2.5), TEXT_MM, sheet.box)
+        if h_lab is not None:
+            break
+    if h_lab is None:
+        h_lab = occ.place_label_with_leader(tuple(((a_ + b_) / 2).tolist()), h_text, order, size_mm=TEXT_MM,
+                                            within=sheet.box)[0]
+    else:
+        occ.add_label(h_lab)
+    h_label = Text((h_lab.x, h_lab.y), h_text, size_mm=TEXT_MM, anchor=h_lab.anchor, name="label-h")
+    pole = Point(at(np.zeros(2)), radius_mm=0.9, name="pole")
+    occ.add_box((p_page[0] - 1, p_page[1] - 1, p_page[0] + 1, p_page[1] + 1))
+    els += lever_lines + line_of_action + [arm, h_label, force, pole]
+    for p in names:
+        lab_text = plans.label(p)
+        if lab_text == "p":
+            continue
+        q = at(paper(images[p]))
+        els.append(Point(q, radius_mm=0.6, name=f"image-{lab_text}"))
+        occ.add_box((q[0] - 0.7, q[1] - 0.7, q[0] + 0.7, q[1] + 0.7))
+    labels = []
+    for p in [None] + names:
+        text = "p" if p is None else plans.label(p)
+        if p is not None and text == "p":
+            continue
+        q = at(np.zeros(2)) if p is None else at(paper(images[p]))
+        lab = occ.place_label(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=sheet.box)
+        labels.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"name-{text}"))
+    lab, leader = occ.place_label_with_leader(force.mid, F_text, ("n", "s", "ne", "se", "nw", "sw", "e", "w"),
+                                              size_mm=TEXT_MM, gap_mm=1.5, within=sheet.box)
+    labels.append(Text((lab.x, lab.y), F_text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-F"))
+    if leader is not None:
+        labels.append(Line(*leader, style=THIN, name="leader-F"))
+    # the result, worked out on the drawing, beside the power method's value
+    M_lever = F_abs * h_mm * s_v.per_mm / omega_1
+    rows = (
+        (word(nt, "plan_turned"), f"{sym(nt, 'omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
+        (word(nt, "force"), F_text),
+        (word(nt, "arm"), f"{sym(nt, 'h')} = {nb(h_mm)} {unit(nt, 'mm')}"),
+        (word(nt, "by_lever"), f"{sym(nt, 'M_r')} = {sym(nt, 'F')}·{sym(nt, 'h')}·{sym(nt, 'mu_v')}/{sym(nt, 'omega_1')}"),
+        ("", f"= {nb(F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(omega_1)}"),
+        ("", f"= {value_text(nt, M_lever, 'N·m')}"),
+        (word(nt, "by_power"), f"{sym(nt, 'M_r')} = {value_text(nt, ld.M_r, 'N·m')}"),
+    )
+    probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM, row_height_mm=7.0)
+    table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM,
+                  row_height_mm=7.0, name="result")
+    occ.add_box((table.at[0], table.at[1], table.at[0] + table.width_mm, table.at[1] + table.height_mm))
+    els += labels + [table]
+    scales = (s_v, s_F)
+    elements = [sheet.header()] + els + sheet.captions(scales)
+    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
+                 notes=(s_v.note, s_F.note, f"position {k}: M_r by the lever {M_lever:.6g} N·m, by power "
+                        f"{ld.M_r:.6g} N·m"))
+
+
+__all__ = [
+    "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
+    "phi_graph_elements", "turned_inertia_elements", "DownAxis", "FastOccupancy", "SheetFrame", "CurveSpec",
+    "MarkSpec", "LeverLoad", "lever_load", "sym", "word", "unit", "quantity", "value_text", "SYMBOLS", "WORDS",
+]

@@ -1,0 +1,694 @@
+"""The energy–mass (Wittenbauer) diagram: the compact A4 figure and the A1/A2 dynamic-analysis sheet.
+
+:func:`wittenbauer_diagram` draws the diagram alone: the curve through the points
+(J_e(φ_k)/μ_J, ΔT(φ_k)/μ_T) of positions 0…m, each numbered; the upper ray at ψ_max that
+supports it from above and the lower ray at ψ_min from below, each drawn from the edge
+of the frame (their meeting point O1 is far off the sheet) to just past the curve, with
+ψ_max and ψ_min marked; the intercepts k and l on the ordinate axis and the segment kl
+dimensioned; and a table of the result, J_F = μ_T·kl/(ω_m²[δ]).
+
+:func:`dynamic_analysis_sheet` is the A1 (or A2) sheet of a course project: the M_d, M_r(φ)
+graph, the ΔT(φ) graph whose levels are projected horizontally onto the diagram, the
+J_e(φ) graph turned 90° whose values are projected vertically onto it, the diagram with
+its rays, k, l and kl, and the result table. It computes only what it draws: positions,
+velocity plans, J_e, M_r and ΔT at the m positions; never the exact motion.
+
+The construction itself (support lines, tangencies, the error estimate) is
+:func:`graphmethods.dynamics.wittenbauer.wittenbauer`; this module only draws it.
+
+>>> import pathlib
+>>> from graphmethods.dynamics.study import Study
+>>> from graphmethods.kinematics import read_case
+>>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+>>> study = Study(press, positions=12)
+>>> scene = wittenbauer_diagram(study)
+>>> [s.caption() for s in scene.scales()], "exact" in study.computed
+(['μ_T = 10 J/mm', 'μ_J = 0.005 kg·m²/mm'], False)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
+from graphmethods.errors import InputError
+from graphmethods.units import convenient_at_least
+from graphmethods.scene import (
+    Axis, Dimension, Line, Page, Point, Polyline, Scale, Scene, Table, Text, nice_ticks, pick_scale,
+)
+from graphmethods.scene import markup
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import label_bbox, make_label
+from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.sheets.dynamics import (
+    PROJECTION, SMALL_MM, TEXT_MM, TWO_PI, CurveSpec, SheetFrame, as_study, clear_ticks, delta_T_curve,
+    fine_angles, given_angle_scale, given_scale, inertia_curve, moment_curves, phi_graph_elements, problem_text,
+    quantity, sym, turned_inertia_elements, unit, value_text,
+)
+
+RAY = Style(width_mm=0.35)
+TABLE_MM = 3.0
+
+WORDS = {
+    "wittenbauer":      ("Energy–mass diagram (Wittenbauer)", "Диаграмма энергомасс (Виттенбауэра)",
+                         "能量–质量图（维滕鲍尔图）"),
+    "dynamic_analysis": ("Dynamic analysis: flywheel by the Wittenbauer method",
+                         "Динамический анализ: маховик по методу Виттенбауэра",
+                         "动力学分析：维滕鲍尔法求飞轮"),
+    "moments":          ("Reduced moments", "Приведённые моменты", "等效力矩"),
+    "energy":           ("Increment of kinetic energy", "Приращение кинетической энергии", "动能增量"),
+    "inertia_turned":   ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции (повёрнут на 90°)",
+                         "等效转动惯量（旋转90°）"),
+    "result":           ("Result", "Результат", "结果"),
+    "delta":            ("coefficient of fluctuation", "коэффициент неравномерности", "速度不均匀系数"),
+    "omega_m":          ("mean angular velocity", "средняя угловая скорость", "平均角速度"),
+    "M_d":              ("driving moment", "движущий момент", "等效驱动力矩"),
+    "scale_J":          ("scale of J_e", "масштаб J_п", "J_e比例尺"),
+    "scale_T":          ("scale of ΔT", "масштаб ΔT", "ΔE比例尺"),
+    "scale_M":          ("scale of M", "масштаб M", "M比例尺"),
+    "scale_phi":        ("scale of φ", "масштаб φ", "φ比例尺"),
+    "tan_max":          ("upper ray", "верхний луч", "上射线"),
+    "tan_min":          ("lower ray", "нижний луч", "下射线"),
+    "k":                ("intercept k", "отрезок k", "截距k"),
+    "l":                ("intercept l", "отрезок l", "截距l"),
+    "kl":               ("segment kl", "отрезок kl", "线段kl"),
+    "J_F":              ("flywheel", "маховик", "飞轮"),
+    "at_omega_max":     ("ω_{max} at position", "ω_{max} в положении", "ω_{max}位置"),
+    "at_omega_min":     ("ω_{min} at position", "ω_{min} в положении", "ω_{min}位置"),
+    "error":            ("error estimate (m = {m})", "оценка погрешности (m = {m})", "误差估计（m = {m}）"),
+    "O1":               ("O_1 (off the sheet)", "O_1 (вне листа)", "O_1（图外）"),
+    "O1_on":            ("O_1", "O_1", "O_1"),
+    "none":             ("not estimated", "не оценена", "未估计"),
+    "tangents":         ("tangents", "тангенсы", "正切"),
+    "tangents_exact":   ("(1 ± δ/2)²", "(1 ± δ/2)²", "(1 ± δ/2)²"),
+    "tangents_textbook": ("(1 ± δ)", "(1 ± δ)", "(1 ± δ)"),
+}
+
+
+def bold_bbox(lab):
+    """The box a bold label covers: bold glyphs run about 10 % wider than the estimate for regular ones."""
+    x0, y0, x1, y1 = label_bbox(lab)
+    return (x0, y0, x1 + 0.1 * (x1 - x0), y1)
+
+
+def _w(nt, key: str, **kw) -> str:
+    text = WORDS[key][("en", "ru", "zh").index(get_notation(nt).code)]
+    return text.format(**kw) if kw else text
+
+
+# ----------------------------------------------------------------------------- data
+
+@dataclass(frozen=True)
+class DiagramData:
+    """What the diagram needs, in SI: J_e and ΔT at positions 0…m, their angles, ω_m and [δ]."""
+
+    J_e: np.ndarray
+    delta_T: np.ndarray
+    phi: np.ndarray
+    omega_m: float
+    delta: float
+    tangents: str
+    problem: str = ""
+
+    def result(self, mu_J: float, mu_T: float) -> WittenbauerResult:
+        """The construction at these scales (J_F does not depend on them)."""
+        return wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
+                           mu_J=mu_J, mu_T=mu_T, phi=self.phi, tangents=self.tangents)
+
+    def extent(self) -> tuple[float, float, float]:
+        """(J_to, T_hi, T_lo): the abscissa's reach (kg·m²) and the ordinate's range (J), k and l included."""
+        unit_res = self.result(1.0, 1.0)
+        T_hi = max(float(self.delta_T.max()), unit_res.k_mm, unit_res.l_mm, 0.0)
+        T_lo = min(float(self.delta_T.min()), unit_res.k_mm, unit_res.l_mm, 0.0)
+        return float(self.J_e.max()), T_hi, T_lo
+
+
+def diagram_data(source, *, tangents: str = "exact") -> DiagramData:
+    """DiagramData from a Study (or a problem Case), or from a WittenbauerResult (its data and tangents)."""
+    if isinstance(source, WittenbauerResult):
+        return DiagramData(np.asarray(source.x_mm) * source.mu_J, np.asarray(source.y_mm) * source.mu_T,
+                           np.asarray(source.phi), source.omega_m, source.delta, source.tangents)
+    study = as_study(source)
+    return DiagramData(np.asarray(study.J_e, dtype=float), np.asarray(study.delta_T, dtype=float),
+                       np.asarray(study.phi, dtype=float), float(study.omega_m), float(study.delta), tangents,
+                       problem_text(study))
+
+
+# ----------------------------------------------------------------------------- geometry on paper
+
+def ray_span(*, intercept_mm: float, tan: float, origin, clip, avoid=(), O1_x: float, x_from: float,
+             x_to: float, y_top: float | None = None) -> tuple[float, float]:
+    """The X range (mm from the ordinate axis) of a ray Y = intercept + tan·X drawn on the sheet.
+
+    It starts at O1 when O1 is inside ``clip`` (a page box), else where it enters ``clip``,
+    and ends at ``x_to`` (or where it reaches the level ``y_top``, mm above the abscissa),
+    but never before ``x_from`` (its last point of tangency). A part inside an ``avoid`` box
+    (the title block) is cut off on the O1 side.
+    """
+    ox, oy = origin
+
+    def x_range(box):
+        bx0, by0, bx1, by1 = box
+        a, b = bx0 - ox, bx1 - ox                              # X within the box's columns
+        ylo, yhi = oy - by1, oy - by0                          # Y within its rows
+        if tan > 0:
+            a, b = max(a, (ylo - intercept_mm) / tan), min(b, (yhi - intercept_mm) / tan)
+        elif not (ylo <= intercept_mm <= yhi):
+            return None
+        return (a, b) if a <= b else None
+
+    inside = x_range(clip)
+    if inside is None:
+        raise InputError("a tangent ray misses the sheet entirely; the diagram's scales do not suit this page")
+    lo, hi = max(inside[0], O1_x), inside[1]
+    end = x_to
+    if y_top is not None and tan > 0:
+        end = min(end, (y_top - intercept_mm) / tan)
+    hi = max(min(hi, end), x_from)
+    for box in avoid:
+        r = x_range(box)
+        if r is not None and r[0] < hi and r[1] > lo:
+            if r[1] <= x_from:
+                lo = max(lo, r[1])
+            else:
+                hi = min(hi, max(r[0], x_from))
+    return lo, hi
+
+
+def _arc(centre, radius: float, a0: float, a1: float, n: int = 24) -> tuple:
+    """Points of a circular arc on paper from angle a0 to a1 (rad, counterclockwise as seen)."""
+    t = np.linspace(a0, a1, n)
+    return tuple(zip((centre[0] + radius * np.cos(t)).tolist(), (centre[1] - radius * np.sin(t)).tolist()))
+
+
+def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
+    """Label directions pointing away from a centre, best first."""
+    ang = math.degrees(math.atan2(dy_up, dx)) % 360
+    names = ("e", "ne", "n", "nw", "w", "sw", "s", "se")
+    i = int(round(ang / 45.0)) % 8
+    return tuple(names[(i + d) % 8] for d in (0, 1, -1, 2, -2, 3, -3, 4))
+
+
+def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(), J_to: float, T_hi: float,
+                     T_lo: float, within=None, prefix: str = "", y_top_mm: float | None = None,
+                     label_step: int | None = None, register_only=()) -> list:
+    """The energy–mass diagram at ``origin`` (page point of J_e = 0, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
+
+    Parameters
+    ----------
+    res : WittenbauerResult
+        The construction at the scales to draw (``res.mu_J``, ``res.mu_T``).
+    clip : (x0, y0, x1, y1), mm
+        The rays are drawn from where they enter this box (the frame) on the O1 side.
+    avoid : sequence of boxes
+        Boxes the rays must not cross (the title block).
+    J_to, T_hi, T_lo : float
+        Reach of the abscissa (kg·m²) and range of the ordinate axis (J).
+    y_top_mm : float, optional
+        The rays stop where they rise this high above the abscissa (room kept above the diagram).
+
+    Returns
+    -------
+    list of Element
+        Named ``{prefix}axis-J``, ``{prefix}axis-T``, ``{prefix}curve``, ``{prefix}vertex-k``,
+        ``{prefix}ray-max``, ``{prefix}ray-min``, ``{prefix}point-k``, ``{prefix}point-l``,
+        ``{prefix}dimension-kl``, ``{prefix}psi-max``, ``{prefix}psi-min``, ``{prefix}tangency-…``,
+        ``{prefix}pos-k`` …
+    """
+    nt = get_notation(nt)
+    ox, oy = origin
+    m = res.m
+    s_J = Scale(sym(nt, "mu_J"), unit(nt, "kg·m²"), res.mu_J)
+    s_T = Scale(sym(nt, "mu_T"), unit(nt, "J"), res.mu_T)
+    X = np.asarray(res.x_mm, dtype=float)
+    Y = np.asarray(res.y_mm, dtype=float)
+
+    def P(x, y):
+        return (ox + float(x), oy - float(y))
+
+    # axes
+    ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
+    ax_T = Axis(origin, s_T, "y", min_value=T_lo, max_value=max(T_hi, T_lo + s_T.per_mm), ticks=ticks_T,
+                label=quantity(nt, sym(nt, "dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True,
+                name=f"{prefix}axis-T")
+    below = float(np.mean(Y[:-1] < 0)) > 0.5
+    ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=14.0) if 0.0 <= t <= J_to)
+    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J,
+                label=quantity(nt, sym(nt, "J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
+                labels_side="above" if below else "below", skip_zero_label=True, name=f"{prefix}axis-J")
+    curve = Polyline(tuple(P(x, y) for x, y in zip(X[:-1], Y[:-1])), style=MAIN, closed=True,
+                     name=f"{prefix}curve")
+    # the rays, from the frame (or O1) to just past the curve
+    O1x = float(res.O1_mm[0])
+    rays = []
+    for key, b, tan, idx in (("max", res.k_mm, res.tan_psi_max, res.index_omega_max),
+                             ("min", res.l_mm, res.tan_psi_min, res.index_omega_min)):
+        lo, hi = ray_span(intercept_mm=b, tan=tan, origin=origin, clip=clip, avoid=avoid, O1_x=O1x,
+                          x_from=float(X[list(idx)].max()) + 2.0, x_to=float(X.max()) + 8.0, y_top=y_top_mm)
+        rays.append(Line(P(lo, b + tan * lo), P(hi, b + tan * hi), style=RAY, name=f"{prefix}ray-{key}"))
+    k_pt, l_pt = P(0.0, res.k_mm), P(0.0, res.l_mm)
+    # kl and the angles ψ go right of the ordinate axis (inside the wedge of the rays) when the curve
+    # leaves room there, else left of it (ψ then marked as the vertical angle, between the rays' lower
+    # left parts and the horizontal)
+    R = 16.0
+    right = float(X[:-1].min()) >= R + 14.0
+    side = 1.0 if right else -1.0
+    tick_w = max((markup.text_width_mm(nt.number(t), SMALL_MM) for t in ticks_T), default=0.0)
+    off = 7.0 if right else tick_w + 2.3 + 4.0              # left of the axis: beyond its tick labels
+    dim = Dimension(l_pt, k_pt, "", offset_mm=off * side * (1.0 if res.kl_mm > 0 else -1.0), size_mm=TEXT_MM,
+                    name=f"{prefix}dimension-kl")
+    R = R if right else off + 10.0
+    psi_els = []
+    for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
+        psi_els.append(Line(pt, (pt[0] + side * (R + 4.0), pt[1]), style=THIN,
+                            name=f"{prefix}psi-{key}-reference"))
+        arc = _arc(pt, R, 0.0, psi) if right else _arc(pt, R, math.pi, math.pi + psi)
+        psi_els.append(Polyline(arc, style=THIN, name=f"{prefix}psi-{key}-arc"))
+    occ.register(curve, *rays, dim, *psi_els, *register_only)
+    occ.add_line((ax_T.start, ax_T.tip))
+    occ.add_line((ax_J.start, ax_J.tip))
+    ax_T = clear_ticks(ax_T, occ)
+    occ.register(ax_T)
+    ax_J = clear_ticks(ax_J, occ)
+    occ.register(ax_J)
+    els = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
+    # vertices, k, l, tangencies
+    for i in range(m):
+        p = P(X[i], Y[i])
+        els.append(Point(p, radius_mm=0.6, name=f"{prefix}vertex-{i}"))
+        occ.add_box((p[0] - 0.8, p[1] - 0.8, p[0] + 0.8, p[1] + 0.8))
+    for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
+        for i in idx:
+            p = P(X[i], Y[i])
+            els.append(Point(p, radius_mm=1.3, filled=False, name=f"{prefix}tangency-{key}-{i}"))
+            occ.add_box((p[0] - 1.5, p[1] - 1.5, p[0] + 1.5, p[1] + 1.5))
+    for key, pt in (("k", k_pt), ("l", l_pt)):
+        els.append(Point(pt, radius_mm=0.7, name=f"{prefix}point-{key}"))
+        occ.add_box((pt[0] - 0.9, pt[1] - 0.9, pt[0] + 0.9, pt[1] + 0.9))
+    for key, pt in (("k", k_pt), ("l", l_pt)):
+        lab = occ.place_label(pt, key, ("w", "nw", "sw", "ne", "se") if right else ("e", "ne", "se", "nw", "sw"),
+                              size_mm=TEXT_MM + 0.5, gap_mm=1.5, within=within)
+        els.append(Text((lab.x, lab.y), key, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{prefix}name-{key}"))
+    for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
+        text = sym(nt, f"psi_{key}")
+        a = psi / 2 if right else math.pi + psi / 2
+        mid = (pt[0] + (R + 1.5) * math.cos(a), pt[1] - (R + 1.5) * math.sin(a))
+        dirs = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
+        lab, leader = occ.place_label_with_leader(mid, text, dirs, size_mm=TEXT_MM, gap_mm=0.8, within=within)
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-psi-{key}"))
+        if leader is not None:
+            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-psi-{key}"))
+    # kl written beside its dimension line, where it covers nothing
+    kl_text = f"kl = {nt.number(res.kl_mm)} {nt.unit('mm')}"
+    a, b = np.asarray(dim.line_start), np.asarray(dim.line_end)
+    spots = [tuple((a + (b - a) * t).tolist()) for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)]
+    dirs = ("e", "w") if right else ("w", "e")
+    lab = None
+    for spot in spots:
+        lab = occ.first_free(spot, kl_text, dirs, (1.2, 2.5), TEXT_MM + 0.3, within)
+        if lab is not None:
+            occ.add_label(lab)
+            break
+    if lab is None:
+        lab, leader = occ.place_label_with_leader(spots[0], kl_text, dirs, size_mm=TEXT_MM + 0.3, within=within)
+        if leader is not None:
+            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-kl"))
+    els.append(Text((lab.x, lab.y), kl_text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor, name=f"{prefix}label-kl"))
+    # position numbers, away from the curve's middle
+    cx, cy = float(X[:-1].mean()), float(Y[:-1].mean())
+    step = label_step or max(1, math.ceil(m / 24))
+    for i in range(0, m, step):
+        p = P(X[i], Y[i])
+        lab, leader = occ.place_label_with_leader(p, str(i), _compass(X[i] - cx, Y[i] - cy), size_mm=TEXT_MM,
+                                                  gap_mm=1.0, within=within)
+        els.append(Text((lab.x, lab.y), str(i), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}pos-{i}"))
+        if leader is not None:
+            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-pos-{i}"))
+    for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
+        i = idx[0]
+        p = P(X[i], Y[i])
+        text = sym(nt, f"omega_{key}")
+        dirs = (("ne", "n", "e", "nw", "se", "w", "sw", "s") if key == "max"
+                else ("sw", "s", "se", "w", "nw", "e", "ne", "n"))
+        lab, leader = occ.place_label_with_leader(p, text, dirs, size_mm=TEXT_MM, gap_mm=2.5, within=within)
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-omega-{key}"))
+        if leader is not None:
+            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-omega-{key}"))
+    O1 = P(*res.O1_mm)
+    if clip[0] <= O1[0] <= clip[2] and clip[1] <= O1[1] <= clip[3]:
+        els.append(Point(O1, radius_mm=0.8, name=f"{prefix}point-O1"))
+        lab = occ.place_label(O1, "O_1", ("nw", "w", "sw", "n"), size_mm=TEXT_MM + 0.5, within=within)
+        els.append(Text((lab.x, lab.y), "O_1", size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{prefix}name-O1"))
+    return els
+
+
+def O1_on_sheet(res: WittenbauerResult, origin, clip) -> bool:
+    x, y = origin[0] + res.O1_mm[0], origin[1] - res.O1_mm[1]
+    return clip[0] <= x <= clip[2] and clip[1] <= y <= clip[3]
+
+
+def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False) -> tuple:
+    """The result table: (quantity, value, compact) rows in the profile's words and symbols.
+
+    ``compact`` is the row as one cell (symbol = value), for the compact A4 figure.
+    """
+    nt = get_notation(nt)
+    n = nt.number
+    mm = nt.unit("mm")
+    pos = " ".join(str(i) for i in res.index_omega_max)
+    neg = " ".join(str(i) for i in res.index_omega_min)
+    tan_form = _w(nt, "tangents_exact" if res.tangents == "exact" else "tangents_textbook")
+    if res.error_estimate is None:
+        err = _w(nt, "none")
+    else:
+        err = f"+{value_text(nt, res.error_estimate, 'kg·m²', sig=3)}".replace("+−", "−")
+    O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}"
+    O1_word = _w(nt, "O1_on") if on_sheet else _w(nt, "O1")
+    tg = "tg" if nt.code == "ru" else "tan"
+    tg_max = f"{tg} {sym(nt, 'psi_max')} = {n(res.tan_psi_max)}, {sym(nt, 'psi_max')} = {n(math.degrees(res.psi_max))}°"
+    tg_min = f"{tg} {sym(nt, 'psi_min')} = {n(res.tan_psi_min)}, {sym(nt, 'psi_min')} = {n(math.degrees(res.psi_min))}°"
+    J_F = f"{sym(nt, 'J_F')} = {sym(nt, 'mu_T')}·kl/({sym(nt, 'omega_m')}²{sym(nt, 'delta')})"
+    J_F_num = (f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)}) = "
+               f"{value_text(nt, res.J_F, 'kg·m²')}")
+    rows = [
+        (_w(nt, "delta"), f"{sym(nt, 'delta')} = {n(res.delta)}", None),
+        (_w(nt, "omega_m"), f"{sym(nt, 'omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}", None),
+        *((a, b, None) for a, b in extra),
+        (_w(nt, "scale_J"), f"{sym(nt, 'mu_J')} = {n(res.mu_J)} {unit(nt, 'kg·m²')}/{mm}", None),
+        (_w(nt, "scale_T"), f"{sym(nt, 'mu_T')} = {n(res.mu_T)} {unit(nt, 'J')}/{mm}", None),
+        (_w(nt, "tan_max"), tg_max, None),
+        (_w(nt, "tan_min"), tg_min, None),
+        (_w(nt, "tangents"), tan_form, f"{_w(nt, 'tangents')}: {tan_form}"),
+        (_w(nt, "k"), f"k = {n(res.k_mm)} {mm}", None),
+        (_w(nt, "l"), f"l = {n(res.l_mm)} {mm}", None),
+        (_w(nt, "kl"), f"kl = {n(res.kl_mm)} {mm}", None),
+        (_w(nt, "J_F"), J_F, None),
+        ("", J_F_num, None),
+        (_w(nt, "at_omega_max"), pos, f"{_w(nt, 'at_omega_max')}: {pos}"),
+        (_w(nt, "at_omega_min"), neg, f"{_w(nt, 'at_omega_min')}: {neg}"),
+        (_w(nt, "error", m=res.m), err, f"{_w(nt, 'error', m=res.m)}: {err}"),
+        (O1_word, O1, f"{O1_word}: {O1}"),
+    ]
+    return tuple((a, b, c if c is not None else b) for a, b, c in rows)
+
+
+def compact_rows(rows) -> tuple:
+    """The result rows as one column (symbol = value), for the compact A4 figure."""
+    return tuple((c,) for _, _, c in rows)
+
+
+def wide_rows(rows) -> tuple:
+    """The result rows as two columns (quantity, value), for the sheet."""
+    return tuple((a, b) for a, b, _ in rows)
+
+
+def _table(rows, at, name="result") -> Table:
+    probe = Table((0.0, 0.0), rows, header_rows=0, align="l" * len(rows[0]), size_mm=TABLE_MM, padding_mm=1.6)
+    widths = tuple(w * 1.05 + 0.5 for w in probe.column_widths())       # room for the estimate's error
+    return Table(at, rows, col_widths_mm=widths, header_rows=0, align="l" * len(rows[0]), size_mm=TABLE_MM,
+                 row_height_mm=5.6, padding_mm=1.6, name=name)
+
+
+def _place_table(occ, rows, candidates, name="result") -> Table:
+    """The table at the first candidate top-left corner where it covers nothing (the first otherwise)."""
+    probe = _table(rows, (0.0, 0.0))
+    w, h = probe.width_mm, probe.height_mm
+    for at in candidates:
+        if occ.is_free((at[0], at[1], at[0] + w, at[1] + h)):
+            break
+    else:
+        at = candidates[0]
+    table = _table(rows, at, name)
+    occ.add_box((at[0], at[1], at[0] + w, at[1] + h))
+    return table
+
+
+# ----------------------------------------------------------------------------- 1. the compact A4 figure
+
+def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact", notation="en", page=None,
+                        title=None, problem=None, title_block: bool = True, name: str = "wittenbauer") -> Scene:
+    """The Wittenbauer energy–mass diagram alone, on an A4 landscape sheet, with its result table.
+
+    Parameters
+    ----------
+    source : Study, Case or WittenbauerResult
+        The study of a linkage (its J_e and ΔT at positions 0…m, ω_m and [δ]), or a
+        construction made from data alone (its data are redrawn to the scales here).
+    mu_J, mu_T : float or Scale, optional
+        kg·m² per mm (abscissa) and J per mm (ordinate); picked to fill the sheet when not given.
+    tangents : {"exact", "textbook"}
+        tan ψ with (1 ± δ/2)² or (1 ± δ) (a Study source only; a result keeps its own).
+
+    Returns
+    -------
+    Scene
+        ``scene.notes`` holds the scales picked and J_F.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from graphmethods.dynamics.wittenbauer import wittenbauer
+    >>> phi = np.linspace(0, 2 * np.pi, 13)
+    >>> res = wittenbauer(J_e=2 + 0.4 * np.cos(phi + 0.7), delta_T=300 * np.sin(phi), omega_m=20.0, delta=0.05,
+    ...                   mu_J=0.01, mu_T=5.0)
+    >>> res.mu_J, res.mu_T, round(res.kl_mm, 2)
+    (0.01, 5.0, 132.63)
+    >>> s = wittenbauer_diagram(res, notation="zh")           # redrawn to scales that fit the sheet
+    >>> s.element("label-kl").text, [sc.caption("zh") for sc in s.scales()]
+    ('kl = 66.31 mm', ['μ_E = 10 J/mm', 'μ_J = 0.02 kg·m²/mm'])
+    """
+    data = diagram_data(source, tangents=tangents)
+    nt = get_notation(notation)
+    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "wittenbauer"),
+                       problem=data.problem if problem is None else problem, title_block=title_block,
+                       default_page=Page("A4", "landscape", frame=True))
+    x0, y0, x1, y1 = sheet.box
+    J_to, T_hi, T_lo = data.extent()
+    probe_res = data.result(1.0, 1.0)
+    table_w = _table(compact_rows(result_rows(probe_res, nt)), (0, 0)).width_mm
+    ax_x = x0 + 22.0
+    py0, py1 = sheet.top + 10.0, sheet.caption_y - 9.0
+    avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
+    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, avail_X, what="the J_e axis")
+    s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
+    res = data.result(s_J.per_mm, s_T.per_mm)
+    origin = (ax_x, py0 + s_T.to_mm(T_hi))
+    page_probe = sheet.probe
+    clip = page_probe.inner_box()
+    tb = page_probe.title_block.table(clip[2], clip[3]) if page_probe.title_block is not None else None
+    avoid = ((tb.at[0], tb.at[1], tb.at[0] + tb.width_mm, tb.at[1] + tb.height_mm),) if tb is not None else ()
+    # the title block of the final page can be wider than the probe's: keep the rays off its whole row
+    if tb is not None:
+        avoid = ((x0 - 10.0, tb.at[1], clip[2], clip[3]),)
+    els = diagram_elements(res, origin=origin, nt=nt, occ=sheet.occ, clip=clip, avoid=avoid, J_to=J_to,
+                           T_hi=T_hi, T_lo=T_lo, within=sheet.box)
+    on_sheet = O1_on_sheet(res, origin, clip)
+    rows = compact_rows(result_rows(res, nt, on_sheet=on_sheet))
+    w = _table(rows, (0, 0)).width_mm
+    cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 40.0, 4.0)]
+    cands += [(x, sheet.top) for x in np.arange(x1 - w, x0, -6.0)]
+    table = _place_table(sheet.occ, rows, cands)
+    scales = (s_T, s_J)
+    elements = [sheet.header()] + els + [table] + sheet.captions(scales)
+    notes = (s_J.note or f"given: {s_J.caption()}", s_T.note or f"given: {s_T.caption()}",
+             f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm")
+    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
+
+
+# ----------------------------------------------------------------------------- 2. the A1 / A2 sheet
+
+def _sheet_page(page) -> Page:
+    if isinstance(page, Page):
+        return page
+    size = str(page).upper()
+    if size not in ("A1", "A2", "A3"):
+        raise InputError(f"page {page!r}: the dynamic-analysis sheet is drawn on A1 or A2 (or A3, tight)")
+    return Page(size, "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True)
+
+
+def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None, mu_phi=None,
+                           tangents: str = "exact", notation="en", title=None, title_block: bool = True,
+                           name: str = "dynamic-analysis") -> Scene:
+    """The dynamic-analysis sheet of a course project: flywheel by the Wittenbauer method, on A1 or A2.
+
+    Left: the reduced moments M_d, M_r(φ) above ΔT(φ) (one φ scale, positions aligned).
+    Right: J_e(φ) turned 90° above the energy–mass diagram, sharing its J_e scale; ΔT levels
+    are projected horizontally from the ΔT graph and J_e values vertically from the turned
+    graph, meeting at the numbered points of the curve. Both rays run from the frame to the
+    curve with ψ_max and ψ_min marked; k, l and kl are dimensioned; the result table gives
+    δ, ω_m, the scales, kl, J_F, the positions of ω_max and ω_min, and the error estimate.
+
+    Only the positions, velocity plans, J_e, M_r and ΔT at the m positions are computed
+    (never the exact motion).
+
+    Parameters
+    ----------
+    study : Study or Case
+    page : {"A1", "A2"} or Page
+        Landscape with a frame and a title block.
+    mu_J, mu_T, mu_M, mu_phi : float or Scale, optional
+        Scales (kg·m²/mm, J/mm, N·m/mm, rad/mm); picked to fill the sheet when not given.
+    tangents : {"exact", "textbook"}
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.dynamics.study import Study
+    >>> from graphmethods.kinematics import read_case
+    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+    >>> s = dynamic_analysis_sheet(st, page="A2")
+    >>> (s.page.size, s.page.orientation), "exact" in st.computed
+    (('A2', 'landscape'), False)
+    """
+    study = as_study(study)
+    nt = get_notation(notation)
+    m = study.m
+    sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study),
+                       title_block=title_block, default_page=_sheet_page(page))
+    x0, y0, x1, y1 = sheet.box
+    data = diagram_data(study, tangents=tangents)
+    J_k, dT_k, phi_k = data.J_e, data.delta_T, data.phi
+    phi = fine_angles(m)
+    J_fine = inertia_curve(study, phi).J_e
+    dT_fine = delta_T_curve(study, phi)
+    M_r_k, _, M_d = moment_curves(study)
+    J_to = float(max(J_k.max(), J_fine.max()))
+    _, T_hi, T_lo = data.extent()
+    T_hi = max(T_hi, float(dT_fine.max()))
+    T_lo = min(T_lo, float(dT_fine.min()))
+    M_hi = float(max(M_r_k.max(), M_d))
+    W, H = x1 - x0, sheet.caption_y - sheet.top
+    # the rows: [M graph | turned J_e graph] over [ΔT graph | diagram]
+    y_Jt = sheet.top + 14.0                                  # the turned graph's J_e axis
+    d_bottom = sheet.caption_y - 10.0
+
+    def diagram_room(L_phi):                                  # under the turned graph: arrow, name, gap
+        return d_bottom - (y_Jt + L_phi + 22.0)
+
+    if mu_phi is None:   # the φ scale that leaves the diagram largest, then draws the graphs largest
+        best = None
+        for c in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 10.0):
+            L = 360.0 / c
+            room = diagram_room(L)
+            if L > 0.36 * W or room < 40.0:
+                continue
+            tall = (T_hi - T_lo) / (pick_scale(T_hi - T_lo, room).per_mm if mu_T is None else
+                                    (mu_T.per_mm if isinstance(mu_T, Scale) else float(mu_T)))
+            if best is None or tall * L > best[0] * (1 + 1e-9):     # the diagram's height × the graphs' length
+                best = (tall * L, c)
+        if best is None:
+            raise InputError(f"the sheet {sheet.probe.size} is too small for the dynamic-analysis layout; "
+                             f"use A1 or A2")
+        s_phi = Scale(sym(nt, "mu_phi"), "rad", math.radians(best[1]), alt_per_mm=best[1], alt_unit="°",
+                      note=f"picked: {best[1]:g}°/mm draws the graphs and the energy–mass diagram largest together")
+    else:
+        s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, min(diagram_room(0.0) - 40.0, 0.36 * W))
+    L_phi = s_phi.to_mm(TWO_PI)
+    d_top = y_Jt + L_phi + 22.0                               # the diagram's top
+    s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, d_bottom - d_top, what="the ΔT axis")
+    y0_T = d_top + s_T.to_mm(T_hi)                           # the level ΔT = 0
+    s_M = given_scale(mu_M, sym(nt, "mu_M"), unit(nt, "N·m"), M_hi, y_Jt + L_phi - 10.0 - (sheet.top + 16.0),
+                      what="the moment graph")
+    y_M0 = y_Jt + L_phi - 10.0                                # the M graph's φ axis
+    x_L = x0 + 22.0
+    left_end = x_L + L_phi + 12.0
+    probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, M_d, s_M, s_phi)))
+    table_w = _table(probe_rows, (0, 0)).width_mm
+    J_label_w = markup.text_width_mm(quantity(nt, sym(nt, "J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
+    room_J = x1 - table_w - 12.0 - J_label_w - (left_end + 40.0)
+    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, room_J, what="the J_e axis")
+    if mu_J is None:   # no flatter rays than tan ψ = 0.35: they would run far across the sheet
+        steep = convenient_at_least(2.0 * s_T.per_mm * 0.35 / data.omega_m**2)
+        if steep > s_J.per_mm:
+            s_J = Scale(s_J.symbol, s_J.unit, steep, note=f"picked: rays no flatter than tan ψ = 0.35 need "
+                                                            f"≥ {steep:g} {s_J.unit}/mm; chose {steep:g}")
+    res = data.result(s_J.per_mm, s_T.per_mm)
+    # the ordinate axis: far enough right that the upper ray passes under the ΔT graph, if there is room
+    x_a_min = left_end + 40.0
+    x_a_max = x1 - table_w - 12.0 - J_label_w - s_J.to_mm(J_to)
+    T_low_mm = s_T.to_mm(float(dT_fine.min()))
+    need = (res.k_mm - T_low_mm + 6.0) / res.tan_psi_max if res.k_mm > T_low_mm - 6.0 else 0.0
+    x_a = min(max(x_L + L_phi + need, (x_a_min + x_a_max) / 2, x_a_min), x_a_max)
+    occ = sheet.occ
+    page_probe = sheet.probe
+    clip = page_probe.inner_box()
+    avoid = ()
+    if page_probe.title_block is not None:
+        tb = page_probe.title_block.table(clip[2], clip[3])
+        avoid = ((x0 - 20.0, tb.at[1], clip[2], clip[3]),)
+    # projection lines first (the thinnest, under everything)
+    proj = []
+    f_T = lambda k: (x_L + s_phi.to_mm(float(phi_k[k] - phi_k[0])), y0_T - s_T.to_mm(float(dT_k[k])))  # noqa: E731
+    f_D = lambda k: (x_a + float(res.x_mm[k]), y0_T - float(res.y_mm[k]))                             # noqa: E731
+    f_J = lambda k: (x_a + s_J.to_mm(float(J_k[k])), y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))  # noqa: E731
+    for k in range(m):
+        proj.append(Line(f_T(k), f_D(k), style=PROJECTION, name=f"projection-T-{k}"))
+        proj.append(Line(f_J(k), f_D(k), style=PROJECTION, name=f"projection-J-{k}"))
+    occ.register(*proj)
+    # the diagram first: its rays and labels take precedence
+    diag = diagram_elements(res, origin=(x_a, y0_T), nt=nt, occ=occ, clip=clip, avoid=avoid, J_to=J_to, T_hi=T_hi,
+                            T_lo=T_lo, within=sheet.box, prefix="D-", y_top_mm=s_T.to_mm(T_hi) + 4.0)
+    turned = turned_inertia_elements(origin=(x_a, y_Jt), s_J=s_J, s_phi=s_phi, m=m, phi=phi, J=J_fine, phi_k=phi_k,
+                                     J_k=J_k, nt=nt, occ=occ, J_to=J_to, prefix="J-", within=sheet.box)
+    within_left = (x0, sheet.top, x_a - 10.0, sheet.caption_y - 6.0)
+    M_els = phi_graph_elements(origin=(x_L, y_M0), s_phi=s_phi, s_Y=s_M, m=m, phi_k=phi_k,
+                               curves=[CurveSpec("M_r", phi_k, M_r_k, MAIN, sym(nt, "M_r")),
+                                       CurveSpec("M_d", np.array([0.0, TWO_PI]), np.array([M_d, M_d]), MAIN,
+                                                 sym(nt, "M_d"))],
+                               nt=nt, occ=occ, y_from=0.0, y_to=M_hi, axis_level=0.0,
+                               y_label=quantity(nt, sym(nt, "M"), "N·m"), dots=(phi_k, M_r_k), prefix="M-",
+                               within=within_left)
+    T_els = phi_graph_elements(origin=(x_L, y0_T), s_phi=s_phi, s_Y=s_T, m=m, phi_k=phi_k,
+                               curves=[CurveSpec("dT", phi, dT_fine, MAIN, "")], nt=nt, occ=occ,
+                               y_from=min(float(dT_fine.min()), 0.0), y_to=max(float(dT_fine.max()), 0.0),
+                               axis_level=0.0, y_label=quantity(nt, sym(nt, "dT"), "J"), dots=(phi_k, dT_k),
+                               prefix="T-", within=within_left)
+    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, M_d, s_M, s_phi),
+                                 on_sheet=O1_on_sheet(res, (x_a, y0_T), clip)))
+    w = _table(rows, (0, 0)).width_mm
+    cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
+    table = _place_table(occ, rows, cands)
+    occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
+    # small headings over the parts
+    heads = []
+    for key, text, at in (("M", f"{_w(nt, 'moments')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}(φ)",
+                           (x_L + 10.0, y_M0 - s_M.to_mm(M_hi) - 8.0)),
+                          ("T", f"{_w(nt, 'energy')} {sym(nt, 'dT')}(φ)",
+                           (x_L + 10.0, y0_T - s_T.to_mm(max(float(dT_fine.max()), 0.0)) - 12.0)),
+                          ("J", f"{_w(nt, 'inertia_turned')} {sym(nt, 'J_e')}(φ)", (x_a + 10.0, y_Jt - 9.0)),
+                          ("D", _w(nt, "wittenbauer"), (x_a + 10.0, d_top - 2.0))):
+        lab = make_label(at, text, size_mm=TEXT_MM + 0.8, bold=True)
+        found = False
+        for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0):
+            for dy in (0.0, -4.0, 4.0, -8.0, 8.0, -12.0, 12.0):
+                trial = make_label((at[0] + dx, at[1] + dy), text, size_mm=TEXT_MM + 0.8, bold=True)
+                if occ.is_free(bold_bbox(trial), within=sheet.box):
+                    lab, found = trial, True
+                    break
+            if found:
+                break
+        occ.add_box(bold_bbox(lab))
+        heads.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.8, bold=True, name=f"heading-{key}"))
+    table_head = Text((table.at[0], table.at[1] - 2.0), _w(nt, "result"), size_mm=TEXT_MM + 0.8, bold=True,
+                      name="heading-result")
+    scales = (s_phi, s_M, s_T, s_J)
+    elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
+                + sheet.captions(scales))
+    notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
+        f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm",)
+    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
+
+
+def _extra_rows(nt, M_d: float, s_M: Scale, s_phi: Scale) -> tuple:
+    n = get_notation(nt).number
+    mm = get_notation(nt).unit("mm")
+    return ((_w(nt, "M_d"), f"{sym(nt, 'M_d')} = {value_text(nt, M_d, 'N·m')}"),
+            (_w(nt, "scale_M"), f"{sym(nt, 'mu_M')} = {n(s_M.per_mm)} {unit(nt, 'N·m')}/{mm}"),
+            (_w(nt, "scale_phi"), f"{sym(nt, 'mu_phi')} = {n(s_phi.per_mm)} {unit(nt, 'rad')}/{mm}"))
+
+
+__all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
+           "ray_span", "result_rows", "WORDS"]
