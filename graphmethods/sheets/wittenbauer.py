@@ -624,7 +624,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     f_T = lambda k: (x_L + s_phi.to_mm(float(phi_k[k] - phi_k[0])), y0_T - s_T.to_mm(float(dT_k[k])))  # noqa: E731
     f_D = lambda k: (x_a + float(res.x_mm[k]), y0_T - float(res.y_mm[k]))                             # noqa: E731
     f_J = lambda k: (x_a + s_J.to_mm(float(J_k[k])), y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))  # noqa: E731
-    for k in range(m):
+    for k in range(0, m, max(1, math.ceil(m / 36))):        # every position (every n-th when m is large)
         proj.append(Line(f_T(k), f_D(k), style=PROJECTION, name=f"projection-T-{k}"))
         proj.append(Line(f_J(k), f_D(k), style=PROJECTION, name=f"projection-J-{k}"))
     occ.register(*proj)
@@ -659,7 +659,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                           ("T", f"{_w(nt, 'energy')} {sym(nt, 'dT')}(φ)",
                            (x_L + 10.0, y0_T - s_T.to_mm(max(float(dT_fine.max()), 0.0)) - 12.0)),
                           ("J", f"{_w(nt, 'inertia_turned')} {sym(nt, 'J_e')}(φ)", (x_a + 10.0, y_Jt - 9.0)),
-                          ("D", _w(nt, "wittenbauer"), (x_a + 10.0, d_top - 2.0))):
+                          ("D", _w(nt, "wittenbauer"), (x_a + 12.0, d_top - 6.0))):
         lab = make_label(at, text, size_mm=TEXT_MM + 0.8, bold=True)
         found = False
         for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0):
