@@ -1,0 +1,70 @@
+"""``graphmethods worksheet KIND``: printable worksheets with answer keys for a class.
+
+    graphmethods worksheet indicator --variants 30 --seed 7 --lang ru --out class-7
+
+writes ``class-7/indicator-ru.pdf`` (the students' pages, then the keys), an SVG per page in
+``class-7/svg/`` and a problem file per variant in ``class-7/problems/`` (``graphmethods check``
+reads them, or the variant's id ``indicator:7:N``). Existing files are kept unless ``--force``;
+nothing is left behind on an error. Progress goes to stderr (``--quiet`` turns it off).
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+
+KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
+
+
+class Progress:
+    """Progress lines on a stream: every tenth of a batch, and at its end."""
+
+    def __init__(self, stream=None):
+        self.stream = stream if stream is not None else sys.stderr
+        self.t0 = time.perf_counter()
+
+    def __call__(self, done: int, total: int, what: str) -> None:
+        step = max(1, total // 10)
+        if done == total or done % step == 0:
+            print(f"worksheet: {what} {done}/{total} ({time.perf_counter() - self.t0:.1f} s)", file=self.stream,
+                  flush=True)
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("worksheet", help="printable worksheets with answer keys (variants from a seed)",
+                       description="Variants of a worksheet for a class, reproducible from a seed: a student page "
+                       "and an answer-key page each, in one PDF (students, then keys), an SVG per page, and a "
+                       "problem file per variant for `graphmethods check`.",
+                       epilog="Example: graphmethods worksheet indicator --variants 30 --seed 7 --lang ru --out class-7")
+    p.add_argument("kind", choices=KINDS, help="indicator (W1 style), step-moment (W3 style), velocity-plan "
+                   "(slider-crank in one position), wittenbauer (slider-crank press)")
+    p.add_argument("--variants", type=int, default=1, metavar="N", help="number of variants (default 1)")
+    p.add_argument("--seed", type=int, default=0, metavar="S", help="seed; the same seed gives the same variants")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")
+    p.add_argument("--out", required=True, metavar="DIR", help="output folder (created if missing)")
+    p.add_argument("--force", action="store_true", help="replace existing files")
+    p.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from graphmethods.errors import OutputExistsError
+    from graphmethods.sheets import worksheets as ws
+
+    t0 = time.perf_counter()
+    if not args.force:                    # refuse before building anything
+        existing = ws.existing_outputs(args.out, args.kind, args.lang, max(int(args.variants), 1))
+        if existing:
+            more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
+            raise OutputExistsError(f"{', '.join(map(str, existing[:3]))}{more} exist; use --force to replace them, "
+                                    f"or another --out")
+    progress = None if args.quiet else Progress()
+    sheet = ws.worksheet(args.kind, variants=args.variants, seed=args.seed, notation=args.lang, progress=progress)
+    paths = ws.write_worksheet(sheet, args.out, overwrite=args.force, progress=progress)
+    n = len(sheet.variants)
+    print(f"wrote {paths[0]} ({2 * n} pages: {n} students', then {n} keys), {2 * n} SVG in "
+          f"{paths[0].parent / 'svg'}, {n} problem files in {paths[0].parent / 'problems'} "
+          f"in {time.perf_counter() - t0:.1f} s")
+    print(f"check a student: graphmethods check {sheet.variants[0].id} ANSWERS.toml   "
+          f"(or {paths[0].parent / 'problems'}/{args.kind}-NN.json)")
+    return 0
