@@ -202,22 +202,28 @@ def test_energy_mass_key_rays_touch_and_bound_the_curve_and_kl_gives_J_F():
     for v in ws.variants("wittenbauer", count=3, seed=6):
         key = ws.key_page(v)
         r = v.result
-        curve = np.asarray(key.element("energy-mass-curve").points)
-        for name, upper in (("energy-mass-ray-upper", True), ("energy-mass-ray-lower", False)):
+        curve = np.asarray(key.element("key-curve").points)
+        assert len(curve) == v.m
+        for name, upper in (("key-ray-max", True), ("key-ray-min", False)):
             ray = key.element(name)
             (x0, y0), (x1, y1) = ray.start, ray.end
             s = (y1 - y0) / (x1 - x0)
             d = curve[:, 1] - (y0 + s * (curve[:, 0] - x0))            # page y grows downwards
             assert (d >= -1e-3).all() if upper else (d <= 1e-3).all()
             assert np.abs(d).min() <= 1e-3
-            assert -s == pytest.approx(r.tan_psi_max if upper else r.tan_psi_min, rel=1e-12)
-        k, l = key.element("energy-mass-k").at, key.element("energy-mass-l").at
-        origin_x = key.element("axis-J").origin[0]
-        assert k[0] == l[0] == origin_x
+            assert -s == pytest.approx(r.tan_psi_max if upper else r.tan_psi_min, rel=1e-9)
+        k, l = key.element("key-point-k").at, key.element("key-point-l").at
+        origin = key.element("axis-J").origin
+        assert k[0] == l[0] == origin[0]
+        assert origin == key.element("axis-T").origin == ws.student_page(v).element("axis-J").origin
         kl = abs(l[1] - k[1])
         assert kl == pytest.approx(r.kl_mm, abs=1e-3)
         w = v.omega_m
         assert v.mu_T * kl / (w * w * v.delta_value) == pytest.approx(r.J_F, rel=1e-6)
+        box = key.element("grid").box
+        for name in ("key-ray-max", "key-ray-min"):
+            for x, y in (key.element(name).start, key.element(name).end):
+                assert box[0] - 1e-6 <= x <= box[2] + 1e-6 and box[1] - 1e-6 <= y <= box[3] + 1e-6
 
 
 def test_one_switch_changes_the_language_of_the_whole_page():

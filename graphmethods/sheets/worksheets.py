@@ -1115,72 +1115,25 @@ def extremes(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, n
     return els
 
 
-def energy_mass(origin, J_e, delta_T, *, mu_J: float, mu_T: float, slopes: tuple[float, float], box,
-                touch_up=(), touch_lo=(), nt="en", wrong_kl: float | None = None, occ=None,
-                name: str = "energy-mass") -> list[Element]:
-    """The energy–mass curve through positions 0…m, the two rays clipped to ``box``, k, l and kl.
+def energy_mass_construction(res, *, origin, box, axes=(), nt="en", prefix: str = "key-") -> list[Element]:
+    """The energy–mass diagram of a construction ``res`` (its curve, rays, k, l, kl, ψ, position numbers)
+    at ``origin`` (page point of J_e = 0, ΔT = 0), inside ``box``, drawn by
+    :func:`graphmethods.sheets.wittenbauer.diagram_elements` over the given ``axes`` (which it keeps
+    its labels off; its own axes are left out, the page's are drawn instead)."""
+    from graphmethods.sheets.dynamics import FastOccupancy
+    from graphmethods.sheets.wittenbauer import diagram_elements
 
-    ``origin`` is the page point of J_e = 0, ΔT = 0; ``slopes`` are the rays' slopes in physical units
-    (a_max, a_min in J/(kg·m²)); the rays pass through the touching positions ``touch_up``/``touch_lo``
-    (vertex indices). ``wrong_kl`` (mm): a student's kl, drawn red beside the correct one.
-    """
-    from graphmethods.scene import Dimension
-    from graphmethods.sheets.layout import Occupancy
-
-    occ = occ or Occupancy()
-    J = np.asarray(J_e, dtype=float)
-    T = np.asarray(delta_T, dtype=float)
+    occ = FastOccupancy()
+    for a in axes:
+        occ.add_primitives(a.primitives())
+    J = np.asarray(res.x_mm) * res.mu_J
+    T = np.asarray(res.y_mm) * res.mu_T
     ox, oy = origin
-    X = ox + J / mu_J
-    Y = oy - T / mu_T
-    m = J.size - 1
-    curve = Polyline(tuple(zip(X.tolist(), Y.tolist())), style=MAIN, name=f"{name}-curve")
-    els: list[Element] = [curve]
-    rays, ends = [], {}
-    for key, a, touch in (("upper", slopes[0], touch_up), ("lower", slopes[1], touch_lo)):
-        i = int(touch[0])
-        b = float(T[i] - a * J[i])                       # intercept at J = 0, J
-        paper = a * mu_J / mu_T                          # tan ψ on paper
-        seg = clip_ray((ox, oy - b / mu_T), paper, box)
-        if seg is not None:
-            rays.append(Line(seg[0], seg[1], style=Style(width_mm=0.35), name=f"{name}-ray-{key}"))
-        ends[key] = (ox, oy - b / mu_T)
-    els += rays
-    k_pt, l_pt = ends["upper"], ends["lower"]
-    els += [Point(k_pt, radius_mm=0.8, name=f"{name}-k"), Point(l_pt, radius_mm=0.8, name=f"{name}-l")]
-    kl = abs(l_pt[1] - k_pt[1])
-    lower, upper = (l_pt, k_pt) if l_pt[1] >= k_pt[1] else (k_pt, l_pt)
-    els.append(Dimension((ox, lower[1]), (ox, upper[1]), "", offset_mm=7.0, name=f"{name}-kl"))
-    for e in els:
-        occ.add_primitives(e.primitives())
-    for i in set(int(t) for t in tuple(touch_up) + tuple(touch_lo)):
-        mark = Point((float(X[i]), float(Y[i])), radius_mm=1.3, filled=False, name=f"{name}-touch-{i}")
-        els.append(mark)
-        occ.add_box((X[i] - 1.4, Y[i] - 1.4, X[i] + 1.4, Y[i] + 1.4))
-    for i in range(m):
-        lab = occ.place_label((float(X[i]), float(Y[i])), str(i), ("e", "ne", "se", "w", "nw", "sw", "n", "s"),
-                              size_mm=SMALL_MM, gap_mm=1.0)
-        els.append(Text((lab.x, lab.y), str(i), size_mm=SMALL_MM, anchor=lab.anchor, name=f"{name}-pos-{i}"))
-    for txt, pt, d in (("k", k_pt, "e"), ("l", l_pt, "e")):
-        lab = occ.place_label(pt, txt, (d, "ne", "se", "nw", "sw"), size_mm=TEXT_MM, gap_mm=1.2)
-        els.append(Text((lab.x, lab.y), txt, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-name-{txt}"))
-    kl_text = f"kl = {num(kl, nt)} {unit('mm', nt)}"
-    mid = (ox + 7.0, (k_pt[1] + l_pt[1]) / 2)
-    spots = [(mid[0], mid[1] + d) for d in (0.0, -6.0, 6.0, -12.0, 12.0, -18.0, 18.0)]
-    lab = None
-    for at in spots:
-        lab = occ.first_free(at, kl_text, ("e",), (1.5,), TEXT_MM, box)
-        if lab is not None:
-            break
-    lab = lab or occ.place_label(mid, kl_text, ("e",), size_mm=TEXT_MM, gap_mm=1.5, register=False)
-    occ.add_label(lab)
-    els.append(Text((lab.x, lab.y), kl_text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-kl-value"))
-    if wrong_kl is not None:
-        t = f"kl = {num(wrong_kl, nt)} {unit('mm', nt)}?"
-        lab = occ.place_label((lab.x, lab.y + 2.0), t, ("se", "s", "ne"), size_mm=TEXT_MM, gap_mm=1.5)
-        els.append(ColorText((lab.x, lab.y), t, size_mm=TEXT_MM, anchor=lab.anchor, color=RED,
-                             name=f"{name}-kl-student"))
-    return els
+    T_hi = min(max(float(T.max()), res.k_mm * res.mu_T, 0.0), (oy - box[1] - 6.0) * res.mu_T)
+    T_lo = max(min(float(T.min()), res.l_mm * res.mu_T, 0.0), -(box[3] - oy - 2.0) * res.mu_T)
+    els = diagram_elements(res, origin=origin, nt=nt, occ=occ, clip=box, J_to=float(J.max()), T_hi=T_hi,
+                           T_lo=T_lo, within=box, prefix=prefix)
+    return [e for e in els if e.name not in (f"{prefix}axis-J", f"{prefix}axis-T")]
 
 
 def velocity_plan(pole, vectors: dict, *, mu_v: float, link_dir, nt="en", wrong: dict | None = None, occ=None,
@@ -1805,14 +1758,7 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts), _clear_tick_labels(ax_T, curve_pts)
     sh.add(ax_J, ax_T)
     if key:
-        occ = Occupancy()
-        for a in (ax_J, ax_T):
-            occ.add_primitives(a.primitives())
-        a_max = r.tan_psi_max * v.mu_T / v.mu_J
-        a_min = r.tan_psi_min * v.mu_T / v.mu_J
-        sh.add(*energy_mass(origin, v.J_e, v.delta_T, mu_J=v.mu_J, mu_T=v.mu_T, slopes=(a_max, a_min),
-                            box=(X0 + 0.5, top + 0.5, X1 - 0.5, top + H - 0.5), touch_up=r.index_omega_max,
-                            touch_lo=r.index_omega_min, nt=nt, occ=occ))
+        sh.add(*energy_mass_construction(r, origin=origin, box=box, axes=(ax_J, ax_T), nt=nt))
     sh.caption([s_J.caption(nt), s_T.caption(nt)], y=top + H + 5.0)
     sh.y = top + H + CAPTION_ROOM
     tg, om = sym("tan", nt), sym("omega_m", nt)
