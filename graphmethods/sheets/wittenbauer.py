@@ -29,7 +29,7 @@ The construction itself (support lines, tangencies, the error estimate) is
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -112,11 +112,15 @@ class DiagramData:
     delta: float
     tangents: str
     problem: str = ""
+    estimate: WittenbauerResult | None = None   # a Study's result, whose error estimate comes from a finer study
 
     def result(self, mu_J: float, mu_T: float) -> WittenbauerResult:
         """The construction at these scales (J_F does not depend on them)."""
-        return wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
-                           mu_J=mu_J, mu_T=mu_T, phi=self.phi, tangents=self.tangents)
+        res = wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
+                          mu_J=mu_J, mu_T=mu_T, phi=self.phi, tangents=self.tangents)
+        if self.estimate is not None:
+            res = replace(res, error_estimate=self.estimate.error_estimate, error_method=self.estimate.error_method)
+        return res
 
     def extent(self) -> tuple[float, float, float]:
         """(J_to, T_hi, T_lo): the abscissa's reach (kg·m²) and the ordinate's range (J), k and l included."""
@@ -134,7 +138,7 @@ def diagram_data(source, *, tangents: str = "exact") -> DiagramData:
     study = as_study(source)
     return DiagramData(np.asarray(study.J_e, dtype=float), np.asarray(study.delta_T, dtype=float),
                        np.asarray(study.phi, dtype=float), float(study.omega_m), float(study.delta), tangents,
-                       problem_text(study))
+                       problem_text(study), estimate=study.wittenbauer if tangents == "exact" else None)
 
 
 # ----------------------------------------------------------------------------- geometry on paper
