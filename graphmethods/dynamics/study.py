@@ -20,21 +20,19 @@ balance over one turn; M_e = M_d − M_r.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 
 from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import Flywheel, flywheel
-from graphmethods.dynamics.graphical import FINE_CAP, REFINE, with_refined_estimate
+from graphmethods.dynamics.graphical import FINE_CAP, REFINE, diagram_scales, with_refined_estimate
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.dynamics.motion import FlywheelResult, ReducedModel, exact_flywheel
 from graphmethods.dynamics.reduction import (ReducedInertia, load_switch_angles, load_work, reduced_inertia,
                                              resisting_moment)
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
-from graphmethods.units import convenient_at_least
 
 TWO_PI = 2.0 * math.pi
 
@@ -51,16 +49,6 @@ def _logged(fn):
     wrapper.__name__ = name
     wrapper.__doc__ = fn.__doc__
     return cached_property(wrapper)
-
-
-@dataclass(frozen=True)
-class StudyScales:
-    """Scales picked for the study's diagrams (units per mm), convenient values."""
-
-    mu_J: float
-    mu_T: float
-    mu_M: float
-    mu_phi: float
 
 
 class Study:
@@ -180,25 +168,15 @@ class Study:
                         J_e=float(np.mean(self.J_e[:-1])))
 
     @_logged
-    def scales(self) -> StudyScales:
-        """Convenient scales for a diagram about 150 mm across (J_e, ΔT, M, φ)."""
-        J, dT = self.J_e, self.delta_T
-        span_J = float(J.max())
-        span_T = float(dT.max() - dT.min()) or 1.0
-        span_M = float(max(self.M_r.max(), self.M_d))
-        return StudyScales(mu_J=convenient_at_least(span_J / 150.0), mu_T=convenient_at_least(span_T / 150.0),
-                           mu_M=convenient_at_least(span_M / 100.0), mu_phi=convenient_at_least(TWO_PI / 240.0))
-
-    @_logged
     def wittenbauer(self) -> WittenbauerResult:
         """The energy–mass diagram at positions 0…m with its tangent rays, and J_F from kl.
 
         Its error estimate is J_F at 16m positions minus J_F at m (see
         :func:`~graphmethods.dynamics.graphical.with_refined_estimate`).
         """
-        sc = self.scales
+        mu_J, mu_T = diagram_scales(self.J_e, self.delta_T)
         wb = wittenbauer(J_e=self.J_e, delta_T=self.delta_T, omega_m=self.omega_m, delta=self.delta,
-                         mu_J=sc.mu_J, mu_T=sc.mu_T, phi=self.phi)
+                         mu_J=mu_J, mu_T=mu_T, phi=self.phi)
         m_fine = min(REFINE * self.m, FINE_CAP)
         if self.estimate and m_fine > self.m:
             fine = Study(self.case, positions=m_fine, estimate=False)
