@@ -278,6 +278,26 @@ def bench_calculus(ms=(6, 12, 24, 48, 96), *, repeat=3) -> list[Row]:
     return rows
 
 
+# --------------------------------------------------------------------- a whole sheet
+def bench_sheet(*, repeat=5) -> list[Row]:
+    """The 12-position study of the press with its A1 dynamic-analysis sheet, as SVG, in-process."""
+    from graphmethods.dynamics.study import Study
+    from graphmethods.render import svg
+    from graphmethods.sheets import dynamic_analysis_sheet
+
+    case = _press_case()
+    svg.to_string(dynamic_analysis_sheet(Study(case, positions=12)))          # warm the imports
+
+    def build():
+        study = Study(case, positions=12)
+        return svg.to_string(dynamic_analysis_sheet(study, page="A1")), study
+
+    t = median_time(build, repeat=repeat)
+    text, study = build()
+    return [Row("sheet", "press, 12 positions", "study + A1 sheet to SVG", 12, t, None,
+                note=f"{len(text) // 1024} KB; computed: {', '.join(study.computed)}")]
+
+
 # --------------------------------------------------------------------- the error-against-time plot
 def plot_error_vs_time(rows: list[Row], path) -> None:
     """A log–log plot of relative error against time for the flywheel methods (SVG, deterministic)."""
@@ -318,6 +338,7 @@ SECTIONS = {
     "kinematics": bench_kinematics,
     "calculus": bench_calculus,
     "areas": bench_areas,
+    "sheet": bench_sheet,
     "startup": bench_startup,
 }
 
@@ -327,6 +348,7 @@ QUICK = {
     "kinematics": dict(n=10_000, repeat=2),
     "calculus": dict(ms=(6, 12, 24), repeat=1),
     "areas": dict(sizes=(10**3, 10**4, 10**5), crossings=(2, 10**4), repeat=3),
+    "sheet": dict(repeat=2),
     "startup": dict(repeat=3),
 }
 

@@ -58,3 +58,8 @@ def test_calculus_rows_shrink_with_more_intervals():
     v = [r for r in rows if r.case == "press: v by chords of s"]
     err = [float(r.note.split()[2]) for r in v]
     assert len(v) == 2 and err[1] < err[0] / 8          # second order: ×16 fewer for ×4 more intervals
+
+
+def test_sheet_row_builds_only_what_the_sheet_draws():
+    (row,) = bench.bench_sheet(repeat=1)
+    assert "exact" not in row.note and "wittenbauer" in row.note

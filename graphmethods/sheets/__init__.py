@@ -1,7 +1,16 @@
 """graphmethods.sheets: whole textbook figures, one function per figure, problem -> Scene.
 
-The excess-work figures (:mod:`graphmethods.sheets.energy`): :func:`moment_diagram`,
-:func:`excess_work_table`, :func:`energy_indicator`, :func:`energy_graph`.
+- excess work (:mod:`~graphmethods.sheets.energy`): :func:`moment_diagram`, :func:`excess_work_table`,
+  :func:`energy_indicator`, :func:`energy_graph`;
+- linkages (:mod:`~graphmethods.sheets.kinematics`): :func:`kinematic_scheme`, :func:`velocity_plan_grid`,
+  :func:`velocity_plan`, :func:`velocity_table`;
+- the reduced model (:mod:`~graphmethods.sheets.dynamics`): :func:`inertia_graph`, :func:`moment_graph`,
+  :func:`delta_T_graph`, :func:`speed_graph`, :func:`acceleration_graph`, :func:`zhukovsky_lever`;
+- the flywheel (:mod:`~graphmethods.sheets.wittenbauer`): :func:`wittenbauer_diagram`,
+  :func:`dynamic_analysis_sheet`;
+- graphical calculus (:mod:`~graphmethods.sheets.calculus`): :func:`kinematic_diagrams`, :func:`work_diagrams`.
+
+Every function takes keyword scales (picked and captioned when not given) and ``notation="en"|"ru"|"zh"``.
 
 >>> from graphmethods import problems, sheets
 >>> from graphmethods.render import svg
@@ -10,6 +19,16 @@ The excess-work figures (:mod:`graphmethods.sheets.energy`): :func:`moment_diagr
 1
 """
 
+from graphmethods.sheets.calculus import kinematic_diagrams, work_diagrams
+from graphmethods.sheets.dynamics import (acceleration_graph, delta_T_graph, inertia_graph, moment_graph,
+                                          speed_graph, zhukovsky_lever)
 from graphmethods.sheets.energy import energy_graph, energy_indicator, excess_work_table, moment_diagram
+from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan, velocity_plan_grid, velocity_table
+from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, wittenbauer_diagram
 
-__all__ = ["energy_graph", "energy_indicator", "excess_work_table", "moment_diagram"]
+__all__ = [
+    "acceleration_graph", "delta_T_graph", "dynamic_analysis_sheet", "energy_graph", "energy_indicator",
+    "excess_work_table", "inertia_graph", "kinematic_diagrams", "kinematic_scheme", "moment_diagram",
+    "moment_graph", "speed_graph", "velocity_plan", "velocity_plan_grid", "velocity_table", "wittenbauer_diagram",
+    "work_diagrams", "zhukovsky_lever",
+]
