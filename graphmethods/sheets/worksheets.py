@@ -724,7 +724,7 @@ def _gen_plan(rng) -> dict:
     l_AS2 = round(l * _pick(rng, (0.3, 0.35, 0.4)), 3)
     phi = float(_pick(rng, (30, 45, 60, 120, 135, 150, 210, 225, 240, 300, 315, 330)))
     omega_1 = float(_pick(rng, (10, 12, 15, 16, 20, 24, 25, 30)))
-    mu_l = _pick_scale(r + l + r, 140.0)
+    mu_l = _pick_scale(r + l + r, 150.0)
     mu_v = _pick_scale(omega_1 * r, 85.0)
     return dict(r=r, l=l, e=e, l_AS2=l_AS2, phi_deg=phi, omega_1=omega_1, mu_l=mu_l, mu_v=mu_v)
 
@@ -1255,7 +1255,7 @@ def region_perimeters_mm(cycle, *, mu_M: float, mu_phi: float) -> np.ndarray:
 
 
 def slider_crank_scheme(O, *, r: float, l: float, e: float, l_AS2: float, phi_deg: float, mu_l: float,
-                        nt="en", name: str = "scheme") -> list[Element]:
+                        nt="en", guide_mm: float = 40.0, name: str = "scheme") -> list[Element]:
     """A slider-crank drawn at μ_l (m/mm) in the position φ: ground at O, crank, rod, slider on its
     guide (the line y = e), S2, the angle φ and the crank's sense."""
     ox, oy = O
@@ -1274,7 +1274,7 @@ def slider_crank_scheme(O, *, r: float, l: float, e: float, l_AS2: float, phi_de
              name=f"{name}-x-axis"),
         arc(pO, 9.0, 0.0, phi_deg, name=f"{name}-phi-arc"),
         arc(pO, 13.0, phi_deg + 18.0, phi_deg + 58.0, arrow=True, name=f"{name}-omega"),
-        slider(pB, name=f"{name}-slider"),
+        slider(pB, guide_mm=guide_mm, name=f"{name}-slider"),
         Line(pO, pA, style=THICK, name=f"{name}-crank"),
         Line(pA, pB, style=THICK, name=f"{name}-rod"),
         ground(pO, name=f"{name}-ground"), pin(pA, name=f"{name}-pin-A"),
@@ -1673,8 +1673,13 @@ def _plan_page(v: PlanVariant, nt, key: bool) -> Scene:
     top = sh.y
     y_hi = max(max(ys) / v.mu_l, 13.0)           # above O: the highest point, or the ω₁ arrow
     y_lo = max(-min(ys) / v.mu_l, 0.0)
-    O = (X0 + 22.0 + max(v.r / v.mu_l, 14.0), top + 7.0 + y_hi)
-    sh.add(*slider_crank_scheme(O, r=v.r, l=v.l, e=v.e, l_AS2=v.l_AS2, phi_deg=v.phi_deg, mu_l=v.mu_l, nt=nt))
+    O = (X0 + 6.0 + max(v.r / v.mu_l, 20.0), top + 7.0 + y_hi)
+    xB = O[0] + pts["B"][0] / v.mu_l
+    guide = min(40.0, 2.0 * (X1 - 1.0 - xB))
+    if guide < 14.0:
+        raise InputError(f"{v.id}: the scheme at {markup.plain(s_l.caption())} does not fit the page width")
+    sh.add(*slider_crank_scheme(O, r=v.r, l=v.l, e=v.e, l_AS2=v.l_AS2, phi_deg=v.phi_deg, mu_l=v.mu_l, nt=nt,
+                                guide_mm=guide))
     sh.add(Text((X1, top + 4.0), s_l.caption(nt), size_mm=TEXT_MM, anchor="end", name="caption-mu-l"))
     sh.y = O[1] + max(y_lo, 9.0) + 9.0
     # the plan's box
