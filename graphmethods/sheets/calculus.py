@@ -38,10 +38,8 @@ from graphmethods.scene import format_value, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.layout import Occupancy, standard_page
+from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, standard_page
 
-TITLE_MM = 5.0          # title text size
-TEXT_MM = 3.2           # labels
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables
 RAY = Style(width_mm=0.13)                       # rays from the poles: the finest construction lines
@@ -209,37 +207,6 @@ def _number_labels(m: int, step_mm: float) -> tuple[str, ...]:
     """Position numbers 0…m, every k-th when they would crowd (k so that labels are ≥ 4.5 mm apart)."""
     k = max(1, math.ceil(4.5 / max(step_mm, 1e-9)))
     return tuple(str(i) if i % k == 0 or i == m else "" for i in range(m + 1))
-
-
-class _Sheet:
-    """Page, title, content box, the caption line, an occupancy of what is drawn."""
-
-    def __init__(self, *, nt, page, title, problem, title_block):
-        self.nt, self.title, self.problem, self.title_block = nt, title, problem, title_block
-        if page is None:
-            page = Page("A3", "landscape", frame=True)
-        self._page_arg = page
-        probe = standard_page(page, title=title, problem=problem, scales=("μ",), nt=nt, title_block=title_block)
-        self.box = probe.content_box()
-        x0, y0, x1, y1 = self.box
-        self.top = y0 + TITLE_MM + 6.0
-        self.caption_y = y1 - 1.0
-        self.occ = Occupancy()
-        self.occ.add_box((x0, y0, x1, y0 + TITLE_MM + 1.5))
-
-    def page(self, scales):
-        return standard_page(self._page_arg, title=self.title, problem=self.problem,
-                             scales=tuple(s.caption(self.nt) for s in scales), nt=self.nt,
-                             title_block=self.title_block)
-
-    def header(self):
-        x0, y0, _, _ = self.box
-        return Text((x0, y0 + TITLE_MM), self.title, size_mm=TITLE_MM, bold=True, name="title")
-
-    def captions(self, scales):
-        x0, _, _, _ = self.box
-        return ScaleCaptions((x0, self.caption_y), tuple(scales), notation=self.nt, size_mm=TEXT_MM,
-                             name="scale-captions")
 
 
 class _Band:
@@ -433,7 +400,7 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
         omega_1 = omega_case
     if analogues:
         omega_1 = None
-    sheet = _Sheet(nt=nt, page=page, title=title or word(nt, "kinematic_title"),
+    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "kinematic_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
@@ -583,7 +550,7 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     elements += _titled_table(table, word(nt, "comparison"), "comparison-title") + [table]
 
     scales = (s_phi, s_s, s_v, s_a) + ((s_t,) if s_t is not None else ())
-    elements.append(sheet.captions(scales))
+    elements += sheet.captions(scales)
     notes = tuple(n for n in (s_phi.note, s_s.note) if n) + (
         f"H1 = {v.H_mm:g} mm ({'given' if H1_mm is not None else 'picked: largest convenient H that fits'})",
         f"H2 = {a.H_mm:g} mm ({'given' if H2_mm is not None else 'picked: largest convenient H that fits'})")
@@ -685,7 +652,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
 
     M_d, M_r, phi, study, prob = _moment_subject(subject, m)
     nt = get_notation(notation)
-    sheet = _Sheet(nt=nt, page=page, title=title or word(nt, "work_title"),
+    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "work_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     period = float(phi[-1] - phi[0])
@@ -854,7 +821,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     head = _titled_table(table, _accuracy_title(nt, study), "accuracy-title")
     elements += head + [table]
     scales = (s_phi, s_M, s_A)
-    elements.append(sheet.captions(scales))
+    elements += sheet.captions(scales)
     notes = tuple(n for n in (s_phi.note, s_M.note) if n) + (
         f"H = {H:g} mm ({'given' if H_mm is not None else 'picked: smallest convenient H whose work diagrams fit'})",)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,

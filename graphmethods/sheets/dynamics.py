@@ -46,10 +46,8 @@ from graphmethods.scene import markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
-from graphmethods.sheets.layout import Occupancy, standard_page
+from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, standard_page
 
-TITLE_MM = 5.0          # title text size
-TEXT_MM = 3.2           # labels
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
 PART = Style(width_mm=0.25, dash=(3.0, 1.2))

@@ -28,10 +28,8 @@ from graphmethods.scene import markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Group, label_bbox
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
-from graphmethods.sheets.layout import Occupancy, angle_deg_text, standard_page
+from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, angle_deg_text, standard_page
 
-TITLE_MM = 5.0          # title text size
-TEXT_MM = 3.2           # labels
 SMALL_MM = 2.8          # tick labels, values beside vectors
 TABLE_MM = 3.8          # the excess-work table
 OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
@@ -70,42 +68,6 @@ def _phi_scale(given, symbol: str, period: float, span_mm: float) -> Scale:
         raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the sheet "
                          f"leaves {span_mm:.1f} mm; give a larger μ_φ, a larger page, or none to have one picked")
     return s
-
-
-class _Sheet:
-    """The frame every figure shares: page, title, content box, captions line."""
-
-    def __init__(self, *, nt, page, title, problem, title_block, n_scales):
-        self.nt = nt
-        self.title = title
-        self.problem = problem
-        self.title_block = title_block
-        self._page_arg = page
-        probe = standard_page(page, title=title, problem=problem, scales=("μ",) if n_scales else (), nt=nt,
-                              title_block=title_block)
-        self.box = probe.content_box()
-        x0, y0, x1, y1 = self.box
-        self.top = y0 + TITLE_MM + 5.0              # below the title
-        self.caption_y = y1 - 1.0                   # baseline of the scale captions
-        self.occ = Occupancy()
-        self.occ.add_box((x0, y0, x1, y0 + TITLE_MM + 1.5))
-
-    def page(self, scales):
-        return standard_page(self._page_arg, title=self.title, problem=self.problem,
-                             scales=tuple(s.caption(self.nt) for s in scales), nt=self.nt,
-                             title_block=self.title_block)
-
-    def header(self):
-        x0, y0, _, _ = self.box
-        return Text((x0, y0 + TITLE_MM), self.title, size_mm=TITLE_MM, bold=True, name="title")
-
-    def captions(self, scales, legend: str = ""):
-        x0, _, x1, _ = self.box
-        els = [ScaleCaptions((x0, self.caption_y), tuple(scales), notation=self.nt, size_mm=TEXT_MM,
-                             name="scale-captions")]
-        if legend:
-            els.append(Text((x1, self.caption_y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
-        return els
 
 
 def _clear_ticks(axis: Axis, *curves) -> Axis:
@@ -251,8 +213,8 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
     if ew.M_d is None or ew.phi is None:
         raise InputError("moment_diagram needs the moment curves M_d and M_r; this cycle was given as areas, works "
                          "or levels, which fix no curves. Draw energy_indicator or excess_work_table instead")
-    sheet = _Sheet(nt=nt, page=page, title=title or nt.word("moment_diagram"),
-                   problem=prob if problem is None else problem, title_block=title_block, n_scales=2)
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("moment_diagram"),
+                   problem=prob if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     M_d, M_r = ew.M_d, ew.M_r
     phi0, period = float(M_d.start), float(ew.period)
@@ -426,9 +388,9 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
     ew, prob = _cycle(cycle)
     nt = get_notation(notation)
     has_scales = ew.areas_mm2 is not None and ew.mu_M is not None and ew.mu_phi is not None
-    sheet = _Sheet(nt=nt, page=page, title=title or nt.word("excess_work_table"),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("excess_work_table"),
                    problem=prob if problem is None else problem, title_block=title_block,
-                   n_scales=2 if has_scales else 0)
+                   has_scales=has_scales)
     x0, y0, x1, y1 = sheet.box
     unit = nt.unit(work_unit)
     A, E = nt.sym("A"), nt.sym("E")
@@ -522,8 +484,8 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
     """
     ew, prob = _cycle(cycle)
     nt = get_notation(notation)
-    sheet = _Sheet(nt=nt, page=page, title=title or nt.word("energy_indicator"),
-                   problem=prob if problem is None else problem, title_block=title_block, n_scales=1)
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("energy_indicator"),
+                   problem=prob if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     E = np.asarray(ew.E, dtype=float)
     E_hi, E_lo = float(max(E.max(), 0.0)), float(min(E.min(), 0.0))
@@ -666,8 +628,8 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
     hi = float(max(Y.max(), 0.0))
     sym = nt.sym("T") if kinetic else nt.sym("dE")
     ttl = title or (f"{nt.word('kinetic_energy_graph')} {sym}(φ)" if kinetic else f"{nt.word('energy_graph')} {sym}(φ)")
-    sheet = _Sheet(nt=nt, page=page, title=ttl, problem=prob if problem is None else problem,
-                   title_block=title_block, n_scales=2)
+    sheet = Sheet(nt=nt, page=page, title=ttl, problem=prob if problem is None else problem,
+                   title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     phi_name = nt.quantity(nt.sym("phi"), "rad")
     dim_text = f"{nt.sym('delta_W_max')} = {nt.number(ew.delta_W_max)} {nt.unit(work_unit)}"

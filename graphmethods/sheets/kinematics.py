@@ -51,11 +51,9 @@ from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Dimension, Group
 from graphmethods.scene.primitives import DASHED, THIN, Path, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
-from graphmethods.sheets.layout import Occupancy, standard_page
+from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, standard_page
 from graphmethods.units import convenient_at_least
 
-TITLE_MM = 5.0          # title text size
-TEXT_MM = 3.2           # labels, legends
 SMALL_MM = 2.8          # position numbers, plan labels
 TABLE_MM = 3.2          # tables
 THICK = Style(width_mm=0.6)
@@ -239,55 +237,15 @@ def _end_extreme(pos) -> _Extreme | None:
 
 # ----------------------------------------------------------------------------- the sheet
 
-class _Sheet:
-    """Page, title, content box, captions line and the occupancy every figure shares."""
-
-    def __init__(self, *, nt, page, title, problem, title_block):
-        self.nt = nt
-        self.title = title
-        self.problem = problem
-        self.title_block = title_block
-        self._page_arg = page
-        probe = standard_page(page, title=title, problem=problem, scales=("μ",), nt=nt, title_block=title_block)
-        self.box = probe.content_box()
-        x0, y0, x1, y1 = self.box
-        self.top = y0 + TITLE_MM + 5.0
-        self.caption_y = y1 - 1.0
-        self.occ = Occupancy()
-        self.occ.add_box((x0, y0, x1, y0 + TITLE_MM + 1.5))
-
-    def page(self, scales):
-        return standard_page(self._page_arg, title=self.title, problem=self.problem,
-                             scales=tuple(s.caption(self.nt) for s in scales), nt=self.nt,
-                             title_block=self.title_block)
-
-    def header(self):
-        x0, y0, _, _ = self.box
-        return Text((x0, y0 + TITLE_MM), self.title, size_mm=TITLE_MM, bold=True, name="title")
-
-    def captions(self, scales, legend: str = ""):
-        x0, _, x1, _ = self.box
-        els = [ScaleCaptions((x0, self.caption_y), tuple(scales), notation=self.nt, size_mm=TEXT_MM,
-                             name="scale-captions")]
-        if legend:
-            els.append(Text((x1, self.caption_y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
-        self.occ.add_box((x0, self.caption_y - TEXT_MM, x1, self.caption_y + 1.0))
-        return els
-
-    def scene(self, elements, scales, *, name, notes=()):
-        return Scene(self.page(scales), tuple(elements), title=self.title, notation=self.nt.code, name=name,
-                     extra_scales=tuple(scales), notes=tuple(notes))
-
-
-_COMPASS = {"e": 0.0, "ne": 45.0, "n": 90.0, "nw": 135.0, "w": 180.0, "sw": 225.0, "s": 270.0, "se": 315.0}
-
-
 def _dirs(prefer_deg: float) -> tuple[str, ...]:
     """The eight compass directions, nearest to ``prefer_deg`` (paper, counterclockwise from right) first."""
     def gap(d):
         a = abs((_COMPASS[d] - prefer_deg + 180.0) % 360.0 - 180.0)
         return (round(a, 6), d)
     return tuple(sorted(_COMPASS, key=gap))
+
+
+_COMPASS = {"e": 0.0, "ne": 45.0, "n": 90.0, "nw": 135.0, "w": 180.0, "sw": 225.0, "s": 270.0, "se": 315.0}
 
 
 def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, within=None, name: str,
@@ -488,7 +446,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
             fine = mech.positions(phi=fine_phi)
         except AssemblyError:               # the angles given span a range where it cannot be assembled
             fine = None
-    sheet = _Sheet(nt=nt, page=page, title=title or _word(nt, "scheme", m=len(drawn)),
+    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "scheme", m=len(drawn)),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
 
@@ -690,7 +648,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     legend = lk.speed_text(nt) if lk.n_rpm is not None else ""
     scales = (s_l,)
     elements += thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + labels + numbers + summary
-    elements += sheet.captions(scales, legend=legend)
+    elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
 
 
@@ -986,7 +944,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     pos = plans.positions
     drawn = _drawn(pos)
     images, vectors = _plan_layout(plans)
-    sheet = _Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
+    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
@@ -1063,7 +1021,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     if ill.any():
         legend += f";  {_word(nt, 'ill_frame')}"
     scales = (s_v,)
-    elements += cells + drawn_els + label_els + sheet.captions(scales, legend=legend)
+    elements += cells + drawn_els + label_els + sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
 
 
@@ -1226,7 +1184,7 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
         raise InputError(f"position {position!r}: give one of the positions {drawn[0]}…{drawn[-1]}")
     k = int(k)
     images, vectors = _plan_layout(plans)
-    sheet = _Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=_pos_label(pos, k)),
+    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=_pos_label(pos, k)),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     # the column beside the plan first: its width decides how much of the sheet the plan gets
@@ -1310,7 +1268,7 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     scales = (s_v,)
     elements = ([sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + [table]
                 + omega_els + notes)
-    elements += sheet.captions(scales, legend=legend)
+    elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
 
 
@@ -1459,7 +1417,7 @@ def velocity_table(linkage, *, m: int | None = None, omega_1: float | None = Non
     lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
     t = velocity_rows(lk.plans, omega_1=None)
-    sheet = _Sheet(nt=nt, page=page, title=title or _word(nt, "table"),
+    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "table"),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     rows = tuple(tuple(r) for r in _table_cells(t, nt))

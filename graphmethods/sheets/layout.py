@@ -197,3 +197,60 @@ def standard_page(page: Page | None, *, title: str, problem: str, scales: tuple[
 def angle_deg_text(phi_rad: float, nt) -> str:
     """An angle in degrees as the profile writes numbers: ``45°``."""
     return get_notation(nt).number(math.degrees(phi_rad), sig=4) + "°"
+
+
+TITLE_MM = 5.0          # title text size
+TEXT_MM = 3.2           # labels, legends, captions
+
+
+class Sheet:
+    """The frame every figure shares: page, title, content box, the captions line, an occupancy.
+
+    ``top`` is where the drawing may begin (``top_gap_mm`` below the title), ``caption_y`` the
+    baseline of the scale captions; ``occ`` holds what is drawn so labels can keep off it.
+    """
+
+    def __init__(self, *, nt, page, title, problem, title_block, has_scales: bool = True,
+                 default_page: Page | None = None, top_gap_mm: float = 5.0):
+        self.nt, self.title, self.problem, self.title_block = nt, title, problem, title_block
+        self._page_arg = default_page if page is None and default_page is not None else page
+        probe = standard_page(self._page_arg, title=title, problem=problem, scales=("μ",) if has_scales else (),
+                              nt=nt, title_block=title_block)
+        self.box = probe.content_box()
+        x0, y0, x1, y1 = self.box
+        self.top = y0 + TITLE_MM + top_gap_mm
+        self.caption_y = y1 - 1.0
+        self.occ = Occupancy()
+        self.occ.add_box((x0, y0, x1, y0 + TITLE_MM + 1.5))
+
+    def page(self, scales):
+        return standard_page(self._page_arg, title=self.title, problem=self.problem,
+                             scales=tuple(s.caption(self.nt) for s in scales), nt=self.nt,
+                             title_block=self.title_block)
+
+    def header(self):
+        from graphmethods.scene import Text
+
+        x0, y0, _, _ = self.box
+        return Text((x0, y0 + TITLE_MM), self.title, size_mm=TITLE_MM, bold=True, name="title")
+
+    def captions(self, scales, legend: str = "", *, reserve: bool = False) -> list:
+        """The scale captions at the left of the bottom line, a legend at its right; ``reserve``
+        keeps later labels off that line."""
+        from graphmethods.scene import ScaleCaptions, Text
+
+        x0, _, x1, _ = self.box
+        els = [ScaleCaptions((x0, self.caption_y), tuple(scales), notation=self.nt, size_mm=TEXT_MM,
+                             name="scale-captions")]
+        if legend:
+            els.append(Text((x1, self.caption_y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
+        if reserve:
+            self.occ.add_box((x0, self.caption_y - TEXT_MM, x1, self.caption_y + 1.0))
+        return els
+
+    def scene(self, elements, scales, *, name, notes=()):
+        """The finished Scene on this sheet's page."""
+        from graphmethods.scene import Scene
+
+        return Scene(self.page(scales), tuple(elements), title=self.title, notation=self.nt.code, name=name,
+                     extra_scales=tuple(scales), notes=tuple(notes))
