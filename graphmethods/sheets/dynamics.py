@@ -40,13 +40,12 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import (
     Axis, Dimension, Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, nice_ticks,
-    pick_angle_scale, pick_scale,
 )
 from graphmethods.scene import markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, standard_page
+from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, given_angle_scale, given_scale, standard_page
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
@@ -373,29 +372,6 @@ class SheetFrame:
             self.occ.add_label(lab)
             els.append(Text((lab.x, lab.y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
         return els
-
-
-def given_scale(given, symbol: str, u: str, span: float, span_mm: float, *, what: str) -> Scale:
-    """The scale given (a number or a Scale), checked to fit; or a convenient one picked to fit."""
-    if given is None:
-        return pick_scale(span, span_mm, symbol=symbol, unit=u)
-    s = given if isinstance(given, Scale) else Scale(symbol, u, given)
-    if s.to_mm(span) > span_mm * (1 + 1e-9):
-        raise InputError(f"{what} at {markup.plain(s.caption())} needs {s.to_mm(span):.1f} mm but the sheet leaves "
-                         f"{span_mm:.1f} mm; give a larger scale (more units per mm), a larger page, or none "
-                         f"to have one picked")
-    return s
-
-
-def given_angle_scale(given, symbol: str, period: float, span_mm: float) -> Scale:
-    """The φ scale given (rad/mm, or a Scale), checked to fit; or one picked (a round number of °/mm)."""
-    if given is None:
-        return pick_angle_scale(period, span_mm, symbol=symbol)
-    s = given if isinstance(given, Scale) else Scale(symbol, "rad", given)
-    if s.to_mm(period) > span_mm * (1 + 1e-9):
-        raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the sheet "
-                         f"leaves {span_mm:.1f} mm; give a larger μ_φ, a larger page, or none to have one picked")
-    return s
 
 
 def as_study(obj, positions: int = 12):

@@ -21,14 +21,14 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Point, Polyline, Region, Scale, ScaleCaptions, Scene, SignMark, Table, Text,
-    Vector, nice_ticks, pi_ticks, pick_angle_scale, pick_scale,
+    Axis, Dimension, Frame, Line, Point, Polyline, Region, Scale, Scene, SignMark, Table, Text,
+    Vector, nice_ticks, pi_ticks,
 )
 from graphmethods.scene import markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Group, label_bbox
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, angle_deg_text, standard_page
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale
 
 SMALL_MM = 2.8          # tick labels, values beside vectors
 TABLE_MM = 3.8          # the excess-work table
@@ -47,27 +47,6 @@ def _cycle(obj):
         return cyc, f"{pid}: {title}" if pid and title else (title or pid)
     raise InputError(f"expected an excess-work cycle (graphmethods.dynamics.excess_work) or a problem with one, "
                      f"got {type(obj).__name__}")
-
-
-def _scale(given, symbol: str, unit: str, span: float, span_mm: float, *, what: str) -> Scale:
-    if given is None:
-        return pick_scale(span, span_mm, symbol=symbol, unit=unit)
-    s = given if isinstance(given, Scale) else Scale(symbol, unit, given)
-    if s.to_mm(span) > span_mm * (1 + 1e-9):
-        raise InputError(f"{what} at {markup.plain(s.caption())} needs {s.to_mm(span):.1f} mm but the sheet leaves "
-                         f"{span_mm:.1f} mm; give a larger scale (more units per mm), a larger page, or none "
-                         f"to have one picked")
-    return s
-
-
-def _phi_scale(given, symbol: str, period: float, span_mm: float) -> Scale:
-    if given is None:
-        return pick_angle_scale(period, span_mm, symbol=symbol)
-    s = given if isinstance(given, Scale) else Scale(symbol, "rad", given)
-    if s.to_mm(period) > span_mm * (1 + 1e-9):
-        raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the sheet "
-                         f"leaves {span_mm:.1f} mm; give a larger μ_φ, a larger page, or none to have one picked")
-    return s
 
 
 def _clear_ticks(axis: Axis, *curves) -> Axis:
@@ -224,8 +203,8 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
     phi_name = nt.quantity(nt.sym("phi"), "rad")
     px0, px1 = x0 + 16.0, x1 - 10.0 - markup.text_width_mm(phi_name, SMALL_MM + 0.5)  # tick labels, axis name
     py0, py1 = sheet.top + 9.0, sheet.caption_y - 12.0
-    s_phi = _phi_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0 - 10.0)
-    s_M = _scale(mu_M, nt.sym("mu_M"), moment_unit, M_hi - M_lo, py1 - py0, what="the moment diagram")
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0 - 10.0)
+    s_M = given_scale(mu_M, nt.sym("mu_M"), moment_unit, M_hi - M_lo, py1 - py0, what="the moment diagram")
     origin = (px0, py0 + s_M.to_mm(M_hi))
     f = Frame(origin, s_phi, s_M)
 
@@ -490,7 +469,7 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
     E = np.asarray(ew.E, dtype=float)
     E_hi, E_lo = float(max(E.max(), 0.0)), float(min(E.min(), 0.0))
     py0, py1 = sheet.top + 14.0, sheet.caption_y - 10.0
-    s_E = _scale(mu_E, nt.sym("mu_E"), work_unit, E_hi - E_lo, py1 - py0, what="the energy indicator")
+    s_E = given_scale(mu_E, nt.sym("mu_E"), work_unit, E_hi - E_lo, py1 - py0, what="the energy indicator")
     ax_x = x0 + 18.0
     origin = (ax_x, py0 + s_E.to_mm(E_hi))
     n = len(ew.work)
@@ -636,8 +615,8 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
     right = 6.0 + 1.5 + markup.text_width_mm(phi_name, SMALL_MM + 0.5) + 5.0   # arrow, axis name, gap
     px0, px1 = x0 + 18.0, x1 - right - 3.0 - markup.text_width_mm(dim_text, TEXT_MM + 0.3)
     py0, py1 = sheet.top + 14.0, sheet.caption_y - 16.0
-    s_phi = _phi_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0)
-    s_E = _scale(mu_E, nt.sym("mu_T") if kinetic else nt.sym("mu_E"), work_unit, hi - lo, py1 - py0,
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0)
+    s_E = given_scale(mu_E, nt.sym("mu_T") if kinetic else nt.sym("mu_E"), work_unit, hi - lo, py1 - py0,
                  what="the energy graph")
     origin = (px0, py0 + s_E.to_mm(hi))
     f = Frame(origin, s_phi, s_E)

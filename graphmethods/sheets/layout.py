@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import math
 
-from graphmethods.scene import Page, TitleBlock
+from graphmethods.errors import InputError
+from graphmethods.scene import Page, Scale, TitleBlock, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label, place_label
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
+from graphmethods.scene.scale import pick_angle_scale, pick_scale
 
 Box = tuple[float, float, float, float]
 
@@ -254,3 +256,26 @@ class Sheet:
 
         return Scene(self.page(scales), tuple(elements), title=self.title, notation=self.nt.code, name=name,
                      extra_scales=tuple(scales), notes=tuple(notes))
+
+
+def given_scale(given, symbol: str, u: str, span: float, span_mm: float, *, what: str) -> Scale:
+    """The scale given (a number or a Scale), checked to fit; or a convenient one picked to fit."""
+    if given is None:
+        return pick_scale(span, span_mm, symbol=symbol, unit=u)
+    s = given if isinstance(given, Scale) else Scale(symbol, u, given)
+    if s.to_mm(span) > span_mm * (1 + 1e-9):
+        raise InputError(f"{what} at {markup.plain(s.caption())} needs {s.to_mm(span):.1f} mm but the sheet leaves "
+                         f"{span_mm:.1f} mm; give a larger scale (more units per mm), a larger page, or none "
+                         f"to have one picked")
+    return s
+
+
+def given_angle_scale(given, symbol: str, period: float, span_mm: float) -> Scale:
+    """The φ scale given (rad/mm, or a Scale), checked to fit; or one picked (a round number of °/mm)."""
+    if given is None:
+        return pick_angle_scale(period, span_mm, symbol=symbol)
+    s = given if isinstance(given, Scale) else Scale(symbol, "rad", given)
+    if s.to_mm(period) > span_mm * (1 + 1e-9):
+        raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the sheet "
+                         f"leaves {span_mm:.1f} mm; give a larger μ_φ, a larger page, or none to have one picked")
+    return s
