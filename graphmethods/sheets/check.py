@@ -252,7 +252,13 @@ def load_toml(text: str, *, source: str = "<answers>") -> dict:
 
 
 def read_answers(path) -> dict:
-    """Read and validate an answers file (see :data:`SCHEMA`)."""
+    """Read and validate an answers file (see :data:`SCHEMA`): numbers, text, lists as tuples.
+
+    >>> import pathlib
+    >>> a = read_answers(pathlib.Path(__file__).parents[1] / "problems" / "data" / "answers" / "w3_correct.toml")
+    >>> a["moment_diagram"]["areas_mm2"], a["results"]["omega_max_at"]
+    ((-1560, 1590), 0.0)
+    """
     p = pathlib.Path(path)
     try:
         text = p.read_text(encoding="utf-8")
@@ -331,7 +337,11 @@ class LinkageData:
 
 def load_problem(spec) -> CycleData | LinkageData:
     """A problem to check against: a built-in id (W1…W4, press), a worksheet id ``KIND:SEED:N``, or a
-    problem file (a worksheet problem file, or a linkage case file such as the press's)."""
+    problem file (a worksheet problem file, or a linkage case file such as the press's).
+
+    >>> load_problem("W3").M_d, load_problem("step-moment:7:1").id
+    (16.25, 'step-moment:7:1')
+    """
     from graphmethods import problems
 
     text = str(spec).strip()

@@ -217,12 +217,12 @@ SHAPES = {"steps": ("steps", "ступенчатый", "阶梯形"), "linear": (
 
 #: symbols the notation profiles lack: (en, ru, zh)
 SYMBOLS = {
-    "J_e": ("J_{e}", "J_{п}", "J_{e}"),
-    "J_F": ("J_{F}", "J_{м}", "J_{F}"),
-    "omega_m": ("ω_{m}", "ω_{ср}", "ω_{m}"),
-    "mu_v": ("μ_{v}", "μ_{v}", "μ_{v}"),
-    "mu_l": ("μ_{l}", "μ_{l}", "μ_{l}"),
-    "mu_J": ("μ_{J}", "μ_{J}", "μ_{J}"),
+    "J_e": ("J_e", "J_п", "J_e"),
+    "J_F": ("J_F", "J_м", "J_F"),
+    "omega_m": ("ω_m", "ω_{ср}", "ω_m"),
+    "mu_v": ("μ_v", "μ_v", "μ_v"),
+    "mu_l": ("μ_l", "μ_l", "μ_l"),
+    "mu_J": ("μ_J", "μ_J", "μ_J"),
     "tan": ("tan", "tg", "tan"),
 }
 
@@ -1786,12 +1786,25 @@ _PAGES = {"indicator": _indicator_page, "step-moment": _step_page, "velocity-pla
 
 
 def student_page(v: Variant, *, notation="en") -> Scene:
-    """The student's page of a variant: statement, data, graph paper at the stated scales, answer boxes."""
+    """The student's page of a variant: statement, data, graph paper at the stated scales, answer boxes.
+
+    An A4 portrait Scene; its scales (``scene.scales()``) are captioned under the drawing area.
+
+    >>> s = student_page(variant("velocity-plan", seed=7, number=1), notation="ru")
+    >>> s.name, [sc.caption("ru") for sc in s.scales()]
+    ('velocity-plan-student-01', ['μ_l = 0,005 м/мм', 'μ_v = 0,04 (м/с)/мм'])
+    """
     return _PAGES[v.kind](v, notation, False)
 
 
 def key_page(v: Variant, *, notation="en") -> Scene:
-    """The answer key of a variant: the student's page with the construction drawn and the answers filled in."""
+    """The answer key of a variant: the student's page with the construction drawn and the answers filled in.
+
+    >>> v = variant("indicator", seed=7, number=1)
+    >>> k = key_page(v)
+    >>> k.element("grid") == student_page(v).element("grid"), k.element("vector-ab").length_mm
+    (True, 43.75)
+    """
     return _PAGES[v.kind](v, notation, True)
 
 
@@ -1887,6 +1900,13 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     ------
     OutputExistsError
         If a file to be written exists and ``overwrite`` is false (nothing is written then).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "class"
+    >>> [p.name for p in write_worksheet(worksheet("wittenbauer", variants=1, seed=3), out)]
+    ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json']
     """
     from graphmethods.render import mpl, svg
 
