@@ -931,7 +931,8 @@ class Shapes(Element):
         return tuple(self.prims)
 
 
-_TOKEN = re.compile(r"\s+|[\u2e80-\u9fff\u3000-\u303f\uff00-\uffef]|[^\s\u2e80-\u9fff\u3000-\u303f\uff00-\uffef]+")
+_TOKEN = re.compile(r"[ \t\n]+|[\u2e80-\u9fff\u3000-\u303f\uff00-\uffef]|[^ \t\n\u2e80-\u9fff\u3000-\u303f\uff00-\uffef]+")
+NBSP = "\u00a0"
 _NO_LINE_START = set("，。；：、）」』》！？,.;:)")
 
 
@@ -945,7 +946,7 @@ def wrap(text: str, width_mm: float, size_mm: float) -> list[str]:
     """
     lines, cur, space = [], "", False
     for tok in _TOKEN.findall(text):
-        if tok.isspace():
+        if tok.strip(" \t\n") == "":
             space = bool(cur)
             continue
         cand = cur + (" " if space else "") + tok
@@ -1364,6 +1365,8 @@ class _Sheet:
         self.y += 0.6
 
     def statement(self, fmt: dict) -> None:
+        # each filled-in value (a scale, a number with its unit) stays on one line
+        fmt = {k: v.replace(" ", NBSP) if isinstance(v, str) else v for k, v in fmt.items()}
         parts = STATEMENTS[self.v.kind][_i(self.nt)]
         self.paragraph(parts[0].format(**fmt), name="given")
         for k, task in enumerate(parts[1:]):
@@ -1628,8 +1631,8 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     else:
         md = f"∫{sym('M_r', nt)}dφ/2π = {num(v.M_d, nt)}"
     _answers_and_solution(
-        sh, [quantity(sym("M_d", nt), "N·m", nt), quantity(sym("delta_W_max", nt), "J", nt), f"φ(ω_{{max}}), {deg}",
-             f"φ(ω_{{min}}), {deg}", quantity(sym("J_F", nt), "kg·m²", nt)],
+        sh, [quantity(sym("M_d", nt), "N·m", nt), quantity(sym("delta_W_max", nt), "J", nt),
+             quantity("φ(ω_{max})", "°", nt), quantity("φ(ω_{min})", "°", nt), quantity(sym("J_F", nt), "kg·m²", nt)],
         [num(v.M_d, nt), num(c.delta_W_max, nt), num(math.degrees(c.phi_E_max), nt), num(math.degrees(c.phi_E_min), nt),
          num(f.J_F, nt)],
         [f"{sym('M_d', nt)} = {md} {unit('N·m', nt)};  {sym('A', nt)}_{{i}} = ∫({sym('M_d', nt)} − "
