@@ -13,6 +13,7 @@ usual mistakes recognised. Exit status 0 when everything is right, 1 when someth
 from __future__ import annotations
 
 import pathlib
+import sys
 
 
 def add_parser(sub) -> None:
@@ -53,5 +54,5 @@ def run(args) -> int:
     print(out.rstrip("\n"))
     if args.overlay:
         print(f"overlay: {args.overlay} ({report.page.size} {report.page.orientation}, print at 100 %)",
-              file=__import__("sys").stderr)
+              file=sys.stderr)
     return 0 if report.ok else 1
