@@ -21,6 +21,8 @@ COMMANDS = {
     "kinematics": "kinematics",
     "study": "study",
     "gallery": "gallery",
+    "worksheet": "worksheet",
+    "check": "check",
     "bench": "bench",
 }
 
