@@ -124,6 +124,61 @@ def _warn_no_cjk() -> None:
         CJKFontWarning, stacklevel=3)
 
 
+@functools.lru_cache(maxsize=None)
+def _font(size_pt: float, family: tuple, weight: str):
+    """FontProperties, one object per (size, family, weight): matplotlib caches its fonts by them."""
+    from matplotlib.font_manager import FontProperties
+
+    return FontProperties(family=list(family), size=size_pt, weight=weight)
+
+
+_EXTENTS: dict = {}
+
+
+def _extent(renderer, text: str, prop) -> tuple[float, float, float]:
+    """(width, height, descent) of plain text in the renderer's units, cached per renderer kind and dpi."""
+    key = (type(renderer).__name__, getattr(renderer, "dpi", 72.0), text, id(prop))
+    got = _EXTENTS.get(key)
+    if got is None:
+        got = _EXTENTS[key] = renderer.get_text_width_height_descent(text, prop, ismath=False)
+    return got
+
+
+@functools.lru_cache(maxsize=None)
+def _label_batch_class():
+    """An Artist drawing many labels straight through ``renderer.draw_text``.
+
+    matplotlib's Text artist lays out each string anew (about 1 ms a label); the labels of a
+    scene need none of that: one line, baseline-anchored, no rotation, no mathtext. A batch
+    keeps the painter's order: a new one starts after any other primitive.
+    """
+    from matplotlib.artist import Artist
+
+    class LabelBatch(Artist):
+        def __init__(self, *, zorder):
+            super().__init__()
+            self.set_zorder(zorder)
+            self.items = []
+
+        def draw(self, renderer):
+            if not self.get_visible() or not self.items:
+                return
+            trans = self.axes.transData
+            xy = trans.transform([(x, y) for x, y, *_ in self.items])
+            gc = renderer.new_gc()
+            try:
+                for (x, y, text, prop, color, ha), (px, py) in zip(self.items, xy):
+                    if ha != "left":
+                        w = _extent(renderer, text, prop)[0]
+                        px -= w if ha == "right" else w / 2.0
+                    gc.set_foreground(color)
+                    renderer.draw_text(gc, px, py, text, prop, 0.0, ismath=False)
+            finally:
+                gc.restore()
+
+    return LabelBatch
+
+
 class MplRenderer:
     """A :class:`~graphmethods.render.base.Renderer` drawing onto a matplotlib Figure in mm."""
 
@@ -133,6 +188,9 @@ class MplRenderer:
         self._z = 0
         self._renderer = None
         self._families = [BASE_FAMILY]
+        self._labels = None            # the batch of labels being filled (None after other primitives)
+        self._lines: list = []         # consecutive paths, drawn as one LineCollection
+        self._lines_z = 0
 
     def begin(self, width_mm, height_mm, *, title, name):
         from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -154,6 +212,7 @@ class MplRenderer:
 
     def _zorder(self) -> int:
         self._z += 1
+        self._labels = None            # whatever comes next is drawn above this primitive
         return self._z
 
     @staticmethod
@@ -165,20 +224,30 @@ class MplRenderer:
         return (0, tuple(d * PT_PER_MM / lw for d in style.dash))
 
     def path(self, points, style, closed):
-        from matplotlib.lines import Line2D
-
         if not style.stroke or style.width_mm <= 0:
             return
         pts = list(points) + ([points[0]] if closed else [])
-        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
-        line = Line2D(xs, ys, linewidth=style.width_mm * PT_PER_MM, color=style.stroke,
-                      linestyle=self._dashes(style), solid_capstyle="butt", dash_capstyle="butt",
-                      solid_joinstyle="round", zorder=self._zorder())
-        self.ax.add_line(line)
+        if not self._lines:
+            self._lines_z = self._zorder()
+        self._lines.append((pts, style.width_mm * PT_PER_MM, style.stroke, self._dashes(style)))
+
+    def _flush_lines(self):
+        """Draw the paths gathered so far as one LineCollection (one artist, not one per path)."""
+        if not self._lines:
+            return
+        from matplotlib.collections import LineCollection
+
+        segs, widths, colors, styles = zip(*self._lines)
+        self.ax.add_collection(LineCollection(list(segs), linewidths=list(widths), colors=list(colors),
+                                              linestyles=list(styles),
+                                              capstyle="butt", joinstyle="round", zorder=self._lines_z),
+                               autolim=False)
+        self._lines = []
 
     def polygon(self, points, style):
         from matplotlib.patches import Polygon
 
+        self._flush_lines()
         stroke = style.stroke if (style.stroke and style.width_mm > 0) else "none"
         patch = Polygon(points, closed=True, facecolor=style.fill or "none", edgecolor=stroke,
                         linewidth=style.width_mm * PT_PER_MM if stroke != "none" else 0.0, zorder=self._zorder())
@@ -187,6 +256,7 @@ class MplRenderer:
     def circle(self, cx, cy, r, style):
         from matplotlib.patches import Circle
 
+        self._flush_lines()
         stroke = style.stroke if (style.stroke and style.width_mm > 0) else "none"
         patch = Circle((cx, cy), r, facecolor=style.fill or "none", edgecolor=stroke,
                        linewidth=style.width_mm * PT_PER_MM if stroke != "none" else 0.0, zorder=self._zorder())
@@ -202,11 +272,15 @@ class MplRenderer:
         return [BASE_FAMILY]
 
     def _width_mm(self, text: str, size_mm: float, bold: bool, family) -> float:
-        from matplotlib.text import Text
+        prop = _font(size_mm * PT_PER_MM, tuple(family), "bold" if bold else "normal")
+        return _extent(self._renderer, text, prop)[0] / self.dpi * 25.4
 
-        t = Text(0, 0, text, fontsize=size_mm * PT_PER_MM, fontfamily=family, fontweight="bold" if bold else "normal")
-        t.set_figure(self.fig)
-        return t.get_window_extent(self._renderer).width / self.dpi * 25.4
+    def _add_label(self, x, y, text, size_mm, family, weight, color, ha):
+        self._flush_lines()
+        if self._labels is None:
+            self._labels = _label_batch_class()(zorder=self._zorder())
+            self.ax.add_artist(self._labels)
+        self._labels.items.append((x, y, text, _font(size_mm * PT_PER_MM, tuple(family), weight), color, ha))
 
     def text(self, label):
         family = self._family(label.text)
@@ -214,10 +288,8 @@ class MplRenderer:
         weight = "bold" if label.bold and len(family) == 1 else "normal"
         runs = label.runs
         if len(runs) == 1 and runs[0][1] == 0:
-            self.ax.text(label.x, label.y, runs[0][0], fontsize=label.size_mm * PT_PER_MM, fontfamily=family,
-                         fontweight=weight, color=label.color, ha={"start": "left", "middle": "center",
-                                                                     "end": "right"}[label.anchor],
-                         va="baseline", zorder=self._zorder())
+            self._add_label(label.x, label.y, runs[0][0], label.size_mm, family, weight, label.color,
+                            {"start": "left", "middle": "center", "end": "right"}[label.anchor])
             return
         sizes = [label.size_mm * (1.0 if s == 0 else SCRIPT_SCALE) for _, s in runs]
         widths = [self._width_mm(t, sz, weight == "bold", family) for (t, _), sz in zip(runs, sizes)]
@@ -225,11 +297,11 @@ class MplRenderer:
         x = label.x - {"start": 0.0, "middle": total / 2, "end": total}[label.anchor]
         for (chunk, shift), sz, w in zip(runs, sizes, widths):
             dy = {0: 0.0, -1: SUB_SHIFT * label.size_mm, 1: -SUP_SHIFT * label.size_mm}[shift]
-            self.ax.text(x, label.y + dy, chunk, fontsize=sz * PT_PER_MM, fontfamily=family, fontweight=weight,
-                         color=label.color, ha="left", va="baseline", zorder=self._zorder())
+            self._add_label(x, label.y + dy, chunk, sz, family, weight, label.color, "left")
             x += w
 
     def end(self):
+        self._flush_lines()
         return self.fig
 
 
