@@ -112,3 +112,37 @@ def test_an_unusable_font_path_in_the_environment_is_reported(monkeypatch, tmp_p
         monkeypatch.delenv("GRAPHMETHODS_CJK_FONT")
         mpl.find_cjk_font.cache_clear()
         mpl._cjk_family.cache_clear()
+
+
+def _ink_rows_mm(png: bytes, dpi: float):
+    import io
+
+    import matplotlib.image as mi
+    import numpy as np
+
+    img = mi.imread(io.BytesIO(png))
+    dark = img[..., :3].sum(axis=-1) < 1.5
+    rows = np.flatnonzero(dark.any(axis=1))
+    cols = np.flatnonzero(dark.any(axis=0))
+    return rows * 25.4 / dpi, cols * 25.4 / dpi
+
+
+def test_png_text_stands_where_the_scene_puts_it():
+    """Labels are drawn by a batch artist: their y must not be mirrored (Agg counts y from the top)."""
+    dpi = 60.0
+    page = Page("A4", "portrait")
+    top = mpl.to_png_bytes(Scene(page, (Text((30.0, 20.0), "MMMM", size_mm=6.0),)), dpi=dpi)
+    rows, cols = _ink_rows_mm(top, dpi)
+    assert 14.0 < rows.min() and rows.max() < 21.5          # cap height above the 20 mm baseline
+    assert 29.0 < cols.min() < 31.5                          # anchored at its start, x = 30 mm
+    end = mpl.to_png_bytes(Scene(page, (Text((100.0, 250.0), "MMMM", size_mm=6.0, anchor="end"),)), dpi=dpi)
+    rows, cols = _ink_rows_mm(end, dpi)
+    assert 244.0 < rows.min() and rows.max() < 251.5 and 98.5 < cols.max() < 101.0
+
+
+def test_png_subscripts_sit_below_the_baseline():
+    dpi = 100.0
+    page = Page("A4", "portrait")
+    base = _ink_rows_mm(mpl.to_png_bytes(Scene(page, (Text((30.0, 40.0), "MM", size_mm=6.0),)), dpi=dpi), dpi)[0]
+    sub = _ink_rows_mm(mpl.to_png_bytes(Scene(page, (Text((30.0, 40.0), "MM_{MM}", size_mm=6.0),)), dpi=dpi), dpi)[0]
+    assert sub.max() > base.max() + 0.5                       # the subscript's ink goes lower on the page

@@ -165,6 +165,8 @@ def _label_batch_class():
                 return
             trans = self.axes.transData
             xy = trans.transform([(x, y) for x, y, *_ in self.items])
+            if renderer.flipy():               # Agg counts y down from the top, as Text.draw does
+                xy[:, 1] = renderer.get_canvas_width_height()[1] - xy[:, 1]
             gc = renderer.new_gc()
             try:
                 for (x, y, text, prop, color, ha), (px, py) in zip(self.items, xy):
