@@ -15,7 +15,8 @@ def add_parser(sub) -> None:
                        "solution, in one run. --quick finishes in well under a minute.")
     p.add_argument("--quick", action="store_true", help="small sizes, for CI")
     p.add_argument("--only", action="append", metavar="SECTION", help="run only this section (repeatable)")
-    p.add_argument("--out", metavar="DIR", help="also write bench.md, bench.json (and the plot) into DIR")
+    p.add_argument("--out", metavar="DIR", help="also write bench.md, bench.json and the error-against-time plot "
+                   "(error_vs_time.svg, when the flywheel section runs) into DIR")
     p.add_argument("--force", action="store_true", help="overwrite existing files in --out")
     p.set_defaults(func=run)
 
@@ -29,7 +30,7 @@ def run(args) -> int:
             raise InputError(f"unknown section {', '.join(unknown)}; choose from {', '.join(bench.SECTIONS)}")
     out = pathlib.Path(args.out) if args.out else None
     if out is not None:
-        targets = [out / "bench.md", out / "bench.json"]
+        targets = [out / "bench.md", out / "bench.json", out / "error_vs_time.svg"]
         existing = [str(t) for t in targets if t.exists()]
         if existing and not args.force:
             raise OutputExistsError(f"{', '.join(existing)} exist; add --force to overwrite")
@@ -41,4 +42,6 @@ def run(args) -> int:
         out.mkdir(parents=True, exist_ok=True)
         (out / "bench.md").write_text(md, encoding="utf-8")
         (out / "bench.json").write_text(json.dumps(bench.to_json(rows), indent=1), encoding="utf-8")
+        if any(r.section == "flywheel" for r in rows):
+            bench.plot_error_vs_time(rows, out / "error_vs_time.svg")
     return 0
