@@ -385,51 +385,50 @@ def from_moments(
         forced = np.empty(0)
     p, M = D.phi, D.M
     a, b, s0, s1 = p[:-1], p[1:], M[:-1], M[1:]
-    keep = b > a                     # chords of positive length (a jump is a zero-length chord)
-    if not keep.all():
-        a, b, s0, s1 = a[keep], b[keep], s0[keep], s1[keep]
-    # a crossing strictly inside the chord (compared, not multiplied: no underflow)
-    split = ((s0 < 0) & (s1 > 0)) | ((s0 > 0) & (s1 < 0))
-    x = b.copy()
-    if split.any():
-        i = np.flatnonzero(split)
-        x[i] = a[i] + (b[i] - a[i]) * s0[i] / (s0[i] - s1[i])
-    # pieces: each chord, or its two parts on either side of its crossing
-    counts = 1 + split
-    pos = np.cumsum(counts) - counts
-    n = int(counts.sum())
-    ends = np.empty(n)
-    integ = np.empty(n)
-    ends[pos] = x
-    integ[pos] = 0.5 * (s0 + np.where(split, 0.0, s1)) * (x - a)
-    ends[pos[split] + 1] = b[split]
-    integ[pos[split] + 1] = 0.5 * s1[split] * (b[split] - x[split])
+    h = b - a                                            # 0 for the chord of a jump
+    I = 0.5 * (s0 + s1) * h                              # the work of each chord
+    E_knot = np.concatenate(([0.0], np.cumsum(I)))       # running energy at the knots
+    # a crossing strictly inside a chord (compared, not multiplied: no underflow)
+    split = np.flatnonzero((((s0 < 0) & (s1 > 0)) | ((s0 > 0) & (s1 < 0))) & (h > 0))
+    x = a[split] + h[split] * s0[split] / (s0[split] - s1[split])
+    left = 0.5 * s0[split] * (x - a[split])              # the split chord's work before its crossing
+    E_x = E_knot[split] + left
 
-    total = float(np.abs(integ).sum())
-    residual = float(integ.sum())
+    total = float(np.abs(I).sum() + (np.abs(left) + np.abs(I[split] - left) - np.abs(I[split])).sum())
+    residual = float(E_knot[-1])
     # round-off floor: work of a moment 1e-12 of the largest moment over the period
     noise = 1e-12 * float(max(np.abs(M_d.M).max(), np.abs(M_r.M).max())) * D.period
     if abs(residual) > closure_tol * total + noise:
+        one_sign = split.size == 0 and ((I >= 0).all() or (I <= 0).all())
         raise UnbalancedCycleError(
             f"the driving and resisting work do not balance over the period: ∫(M_d − M_r)dφ = {_num(residual)} J, "
             f"{abs(residual) / total:.3g} of ∫|M_d − M_r|dφ = {_num(total)} J, beyond the tolerance {closure_tol:g}"
-            + ("; M_d − M_r never changes sign, so the speed cannot be steady" if (integ >= 0).all() or (integ <= 0).all() else "")
+            + ("; M_d − M_r never changes sign, so the speed cannot be steady" if one_sign else "")
             + ". Give only one of M_d, M_r (the other is then balanced), or fix the curves"
         )
-    sign = np.sign(integ)
-    sign[np.abs(integ) <= 1e-13 * total + noise * 1e-3] = 0.0
-    nz = np.flatnonzero(sign)
-    change = nz[:-1][sign[nz[:-1]] != sign[nz[1:]]]          # piece after which the sign changes
-    is_boundary = np.zeros(n, dtype=bool)
-    is_boundary[change] = True                                 # boundary at the end of that piece
+    # the sign of each chord's work at its start and its end (they differ only for a split chord);
+    # chords doing no work (a jump, a coincident stretch, a touch) have sign 0 and are skipped
+    first = np.sign(I)
+    first[np.abs(I) <= 1e-13 * total + noise * 1e-3] = 0.0
+    last = first.copy()
+    first[split] = np.sign(s0[split])
+    last[split] = np.sign(s1[split])
+    working = first != 0
+    if working.all():
+        change = np.flatnonzero(last[:-1] != first[1:])  # the sign changes after these chords' ends
+    else:
+        nz = np.flatnonzero(working)
+        f, l = first[working], last[working]
+        change = nz[:-1][l[:-1] != f[1:]]
+    knots = change + 1
     if forced.size:
-        is_boundary |= np.isin(ends, forced)
-    is_boundary[-1] = True
-    idx = np.flatnonzero(is_boundary)
-    E_pieces = np.concatenate(([0.0], np.cumsum(integ)))
-    E = np.concatenate(([0.0], E_pieces[idx + 1]))
-    phi = np.concatenate(([p[0]], ends[idx]))
-    # drop a boundary repeated at the period start (e.g. a forced boundary at φ = 0)
+        knots = np.union1d(knots, np.searchsorted(p, forced))
+    knots = np.append(knots, p.size - 1)
+    phi = np.concatenate(([p[0]], p[knots], x))
+    E = np.concatenate(([0.0], E_knot[knots], E_x))
+    order = np.argsort(phi, kind="stable")
+    phi, E = phi[order], E[order]
+    # one boundary per angle (a forced boundary at φ = 0 repeats the start)
     keep_b = np.concatenate(([True], phi[1:] > phi[:-1]))
     E, phi = E[keep_b], phi[keep_b]
     work = np.diff(E)

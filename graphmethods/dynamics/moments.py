@@ -79,6 +79,17 @@ class MomentCurve:
 
     # ----------------------------------------------------------------- constructors
     @classmethod
+    def _valid(cls, phi: np.ndarray, M: np.ndarray, approx_error: float = 0.0) -> "MomentCurve":
+        """A curve on knots already validated (those of another curve): only M is checked."""
+        if not np.isfinite(M).all():
+            raise InputError("the moments overflow: the sum or difference of the curves is not finite")
+        M.setflags(write=False)
+        curve = object.__new__(cls)
+        for name, value in (("phi", phi), ("M", M), ("approx_error", approx_error)):
+            object.__setattr__(curve, name, value)
+        return curve
+
+    @classmethod
     def points(cls, phi: Sequence[float], M: Sequence[float], *, period: float | None = None) -> "MomentCurve":
         """Piecewise-linear curve through the points (φ_k, M_k).
 
@@ -277,13 +288,13 @@ def _combine(a: MomentCurve, b: MomentCurve, sign: float) -> MomentCurve:
             f"{b.start:g}..{b.start + b.period:g} rad); give both over the same period"
         )
     if a.phi.size == b.phi.size and np.array_equal(a.phi, b.phi):       # same knots: no union needed
-        return MomentCurve(a.phi, a.M + sign * b.M, a.approx_error + b.approx_error)
+        return MomentCurve._valid(a.phi, a.M + sign * b.M, a.approx_error + b.approx_error)
     for x, y, s in ((a, b, sign), (b, a, sign)):                         # y a single chord (a constant)
         if y.phi.size == 2:
             t = (x.phi - y.phi[0]) / (y.phi[1] - y.phi[0])
             line = y.M[0] + t * (y.M[1] - y.M[0])
             M = x.M + s * line if x is a else line + s * x.M
-            return MomentCurve(x.phi, M, a.approx_error + b.approx_error)
+            return MomentCurve._valid(x.phi, M, a.approx_error + b.approx_error)
     u = knots_union(a, b)
     la, ra = a.limits(u)
     lb, rb = b.limits(u)
