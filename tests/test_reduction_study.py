@@ -152,3 +152,58 @@ def test_study_command_bad_file(tmp_path, capsys):
     assert main(["study", str(bad)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "Traceback" not in err
+
+
+# ----------------------------------------------------------------- force diagrams
+from graphmethods.dynamics.reduction import ForceDiagram, diagram_moment  # noqa: E402
+
+
+def test_force_diagram_reproduces_the_press_load(press):
+    mech, load = press.mechanism, press.load
+    cut = ForceDiagram("B", x=(load.start, load.start, load.end, load.end), F=(0.0, load.magnitude, load.magnitude, 0.0))
+    pos = mech.positions(m=360)
+    plans = mech.velocity_plans(pos)
+    np.testing.assert_allclose(diagram_moment(pos, plans, cut), resisting_moment(pos, plans, load), rtol=1e-12, atol=1e-9)
+    assert cut.work(H=pos.H) == pytest.approx(load_work(mech, load), rel=1e-12)
+
+
+def test_indicator_diagram_on_the_return_stroke_against_the_closed_form(press):
+    mech = press.mechanism
+    v = press.values
+    # a compressor's compression: pressure force rising as the piston returns (s/H falling from 1 to 0)
+    comp = ForceDiagram("B", x=(0.0, 0.2, 0.6, 1.0), F=(9000.0, 4000.0, 1500.0, 0.0), stroke="return")
+    pos = mech.positions(m=720)
+    M = diagram_moment(pos, mech.velocity_plans(pos), comp)
+    dx_B = slider_crank_closed_form(pos.phi, v["r"], v["l"], v["e"], v["l_AS2"])[0]
+    frac = pos.s / pos.H
+    F = np.interp(frac, [0.0, 0.2, 0.6, 1.0], [9000.0, 4000.0, 1500.0, 0.0])
+    expected = np.where(~pos.working | pos.extreme, F * np.abs(dx_B), 0.0)
+    np.testing.assert_allclose(M, expected, rtol=1e-10, atol=1e-8)
+    # its work over the return stroke is H × the diagram's area
+    x = np.linspace(0, 2 * math.pi, 200_001)
+    fine = mech.positions(phi_from_start=x)
+    assert np.trapezoid(diagram_moment(fine, mech.velocity_plans(fine), comp), x) == pytest.approx(
+        comp.work(H=fine.H), rel=1e-6)
+
+
+def test_force_diagram_against_the_crank_angle_and_driving_forces(press):
+    mech = press.mechanism
+    gas = ForceDiagram("B", x=(math.pi / 2, math.pi), F=(1000.0, 1000.0), against="angle", opposes=False)
+    pos = mech.positions(m=12)
+    M = diagram_moment(pos, mech.velocity_plans(pos), gas)
+    inside = (pos.phi_from_start >= math.pi / 2 - 1e-12) & (pos.phi_from_start <= math.pi + 1e-12)
+    speed = np.abs(mech.velocity_plans(pos).v_along_guide("B"))
+    np.testing.assert_allclose(M, np.where(inside, -1000.0 * speed, 0.0), atol=1e-9)
+    assert (M <= 0).all() and (M[inside] < 0).sum() >= 2
+
+
+@pytest.mark.parametrize("kw, msg", [
+    (dict(x=(0.0, 1.0), F=(-5.0, 1.0)), "F ≥ 0"),
+    (dict(x=(0.0, 1.5), F=(1.0, 1.0)), "from 0 to 1"),
+    (dict(x=(0.5, 0.2), F=(1.0, 1.0)), "must not decrease"),
+    (dict(x=(0.0, 1.0), F=(1.0, 1.0), against="time"), "against"),
+    (dict(x=(0.0, 1.0), F=(1.0, 1.0), stroke="both"), "stroke"),
+])
+def test_force_diagram_bad_input(kw, msg):
+    with pytest.raises(InputError, match=msg):
+        ForceDiagram("B", **kw)

@@ -28,6 +28,7 @@ from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
+from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -144,6 +145,93 @@ def load_work(mechanism, load) -> float:
     pos = mechanism.positions(m=4)
     span = pos.H if load.kind == "force" else pos.psi_max
     return load.magnitude * span * (load.end - load.start)
+
+
+# --------------------------------------------------------------------- force diagrams
+@dataclass(frozen=True)
+class ForceDiagram:
+    """A force on a slider given as a diagram, as course problems give it.
+
+    Parameters
+    ----------
+    point : str
+        The slider point it acts on (``"B"``).
+    x, F : sequences of float
+        The diagram's points: F (N, magnitude ≥ 0) against ``x``, piecewise linear between them; a
+        repeated x is a jump (vertical side). Zero outside the first and last x.
+    against : {"stroke", "angle"}
+        ``"stroke"``: x is the stroke fraction s/H, measured from the start of the working stroke
+        on both strokes (a press's cutting force with overrun, a compressor's or engine's indicator
+        diagram); ``"angle"``: x is the crank rotation from position 0, rad.
+    stroke : {"working", "return"}
+        With ``against="stroke"``, the stroke the diagram belongs to.
+    opposes : bool
+        True for a resisting force (it opposes the slider's motion); False for a driving one (gas
+        pressure on an expansion stroke).
+
+    Examples
+    --------
+    The press's cutting force, 5000 N from 5 % to 95 % of the working stroke:
+
+    >>> cut = ForceDiagram("B", x=(0.05, 0.05, 0.95, 0.95), F=(0.0, 5000.0, 5000.0, 0.0))
+    >>> round(cut.work(H=0.2), 6)        # F·H·0.9
+    900.0
+    """
+
+    point: str
+    x: tuple[float, ...]
+    F: tuple[float, ...]
+    against: str = "stroke"
+    stroke: str = "working"
+    opposes: bool = True
+
+    def __post_init__(self):
+        if self.against not in ("stroke", "angle"):
+            raise InputError(f"against = {self.against!r}: give 'stroke' (s/H) or 'angle' (crank rotation, rad)")
+        if self.stroke not in ("working", "return"):
+            raise InputError(f"stroke = {self.stroke!r}: give 'working' or 'return'")
+        curve = MomentCurve(self.x, self.F)          # validates: finite, non-decreasing, two points or more
+        if (curve.M < 0).any():
+            raise InputError("a force diagram gives magnitudes (F ≥ 0); say whether it resists with opposes=")
+        if self.against == "stroke" and (curve.phi[0] < -1e-12 or curve.phi[-1] > 1 + 1e-12):
+            raise InputError(f"stroke fractions run from 0 to 1; the diagram spans {curve.phi[0]:g}…{curve.phi[-1]:g}")
+
+    def value(self, x) -> np.ndarray:
+        """F at ``x`` (right-continuous at a jump), 0 outside the diagram, N."""
+        curve = MomentCurve(self.x, self.F)
+        x = np.asarray(x, dtype=float)
+        inside = (x >= curve.phi[0]) & (x <= curve.phi[-1])
+        return np.where(inside, curve.limits(np.clip(x, curve.phi[0], curve.phi[-1]))[1], 0.0)
+
+    def work(self, *, H: float) -> float:
+        """|Work| of a stroke diagram over its stroke, J: H × the area under F(s/H) (exact)."""
+        if self.against != "stroke":
+            raise InputError("the work of a diagram against the crank angle depends on the velocities; "
+                             "integrate diagram_moment over the positions instead")
+        return H * MomentCurve(self.x, self.F).work()
+
+
+def diagram_moment(positions, plans, diagram: ForceDiagram) -> np.ndarray:
+    """The reduced moment of a force diagram at each position, N·m: F |v|/ω₁, positive where it
+    resists (``opposes``), negative where it drives.
+
+    >>> from graphmethods.kinematics import SliderCrank
+    >>> mech = SliderCrank(r=0.1, l=0.4)
+    >>> pos = mech.positions(m=4)
+    >>> d = ForceDiagram("B", x=(0.0, 1.0), F=(1000.0, 1000.0))
+    >>> diagram_moment(pos, mech.velocity_plans(pos), d).round(6).tolist()   # |v_B| = r at 90°
+    [0.0, 100.0, 0.0, 0.0, 0.0]
+    """
+    speed = np.abs(plans.v_along_guide(diagram.point)) / plans.omega_1
+    if diagram.against == "angle":
+        F = diagram.value(positions.phi_from_start)
+    else:
+        if positions.s is None:
+            raise InputError(f"a force diagram against the stroke needs a slider output; this linkage has none")
+        on_stroke = positions.working if diagram.stroke == "working" else ~positions.working | positions.extreme
+        F = np.where(on_stroke, diagram.value(positions.s / positions.H), 0.0)
+    M = F * speed
+    return M if diagram.opposes else -M
 
 
 # --------------------------------------------------------------------- Zhukovsky lever
