@@ -1,12 +1,12 @@
 """Graphical calculus sheets: geometry to scale (recording renderer), captions, notation, layout, refusals."""
 
-import itertools
 import math
 import pathlib
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
+from figure_checks import assert_fits_and_labels_apart
 
 from graphmethods import problems
 from graphmethods.dynamics import graphical_calculus as gc
@@ -17,8 +17,6 @@ from graphmethods.kinematics import FourBar, read_case
 from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import markup
-from graphmethods.scene.elements import label_bbox
-from graphmethods.scene.primitives import Label
 from graphmethods.sheets import calculus
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -81,15 +79,7 @@ def test_scale_true_page_and_every_scale_captioned(fid, scene):
 
 @pytest.mark.parametrize("fid, scene", FIGURES, ids=IDS)
 def test_nothing_leaves_the_frame_and_no_two_labels_overlap(fid, scene):
-    x0, y0, x1, y1 = scene.page.inner_box()
-    bx = scene.bbox()
-    assert bx[0] >= x0 - 1e-6 and bx[1] >= y0 - 1e-6 and bx[2] <= x1 + 1e-6 and bx[3] <= y1 + 1e-6, (fid, bx)
-    labels = [p for p in scene.primitives() if isinstance(p, Label)]
-    boxes = [label_bbox(lab) for lab in labels]
-    for (i, a), (j, b) in itertools.combinations(enumerate(boxes), 2):
-        overlap_x = min(a[2], b[2]) - max(a[0], b[0])
-        overlap_y = min(a[3], b[3]) - max(a[1], b[1])
-        assert overlap_x <= 0.3 or overlap_y <= 0.3, f"{fid}: {labels[i].text!r} overlaps {labels[j].text!r}"
+    assert_fits_and_labels_apart(scene, fid)
 
 
 @pytest.mark.parametrize("fid, scene", FIGURES, ids=IDS)

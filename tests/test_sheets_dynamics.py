@@ -5,13 +5,13 @@ figure's own axes and scales, as the value it stands for (±0.001 mm); the lever
 × force × μ_v/ω₁ is the reduced moment the power method gives.
 """
 
-import itertools
 import math
 import pathlib
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
+from figure_checks import assert_fits_and_labels_apart
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -21,7 +21,6 @@ from graphmethods.kinematics import read_case
 from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import markup
-from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import Label
 from graphmethods.sheets import dynamics as dyn
 
@@ -86,15 +85,7 @@ def test_every_axis_has_its_mu_caption_and_the_page_is_scale_true(scenes):
 
 def test_nothing_leaves_the_frame_and_no_two_labels_overlap(scenes):
     for fid, scene in scenes:
-        x0, y0, x1, y1 = scene.page.inner_box()
-        bx = scene.bbox()
-        assert bx[0] >= x0 - 1e-6 and bx[1] >= y0 - 1e-6 and bx[2] <= x1 + 1e-6 and bx[3] <= y1 + 1e-6, (fid, bx)
-        labels = [p for p in scene.primitives() if isinstance(p, Label)]
-        boxes = [label_bbox(lab) for lab in labels]
-        for (i, a), (j, b) in itertools.combinations(enumerate(boxes), 2):
-            ox = min(a[2], b[2]) - max(a[0], b[0])
-            oy = min(a[3], b[3]) - max(a[1], b[1])
-            assert ox <= 0.3 or oy <= 0.3, f"{fid}: {labels[i].text!r} overlaps {labels[j].text!r}"
+        assert_fits_and_labels_apart(scene, fid)
 
 
 def test_one_switch_changes_every_word(study):

@@ -5,6 +5,7 @@ import math
 import xml.etree.ElementTree as ET
 
 import pytest
+from figure_checks import assert_fits_and_labels_apart
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -14,7 +15,6 @@ from graphmethods.errors import InputError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, Region, markup
-from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import Label, Path, walk
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -63,15 +63,7 @@ def test_svg_page_is_scale_true_and_every_axis_caption_is_drawn(fid, scene):
 
 @pytest.mark.parametrize("fid, scene", FIGURES, ids=IDS)
 def test_nothing_leaves_the_frame_and_no_two_labels_overlap(fid, scene):
-    x0, y0, x1, y1 = scene.page.inner_box()
-    bx = scene.bbox()
-    assert bx[0] >= x0 - 1e-6 and bx[1] >= y0 - 1e-6 and bx[2] <= x1 + 1e-6 and bx[3] <= y1 + 1e-6, (fid, bx)
-    labels = [p for p in scene.primitives() if isinstance(p, Label)]
-    boxes = [label_bbox(lab) for lab in labels]
-    for (i, a), (j, b) in itertools.combinations(enumerate(boxes), 2):
-        overlap_x = min(a[2], b[2]) - max(a[0], b[0])
-        overlap_y = min(a[3], b[3]) - max(a[1], b[1])
-        assert overlap_x <= 0.3 or overlap_y <= 0.3, f"{fid}: {labels[i].text!r} overlaps {labels[j].text!r}"
+    assert_fits_and_labels_apart(scene, fid)
 
 
 def test_one_switch_changes_the_whole_figure():

@@ -5,13 +5,13 @@ bound the curve and touch it at the reported tangencies, kl on paper gives J_F, 
 lines join matching points, every axis has its μ caption.
 """
 
-import itertools
 import json
 import pathlib
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
+from figure_checks import assert_fits_and_labels_apart
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -23,8 +23,6 @@ from graphmethods.kinematics import read_case
 from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, markup
-from graphmethods.scene.elements import label_bbox
-from graphmethods.scene.primitives import Label
 from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, ray_span, wittenbauer_diagram
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -146,15 +144,7 @@ def test_every_axis_has_its_mu_caption_and_the_svg_is_scale_true(scenes):
 
 def test_nothing_leaves_the_frame_and_no_two_labels_overlap(scenes):
     for fid, scene, _ in scenes:
-        x0, y0, x1, y1 = scene.page.inner_box()
-        bx = scene.bbox()
-        assert bx[0] >= x0 - 1e-6 and bx[1] >= y0 - 1e-6 and bx[2] <= x1 + 1e-6 and bx[3] <= y1 + 1e-6, (fid, bx)
-        labels = [p for p in scene.primitives() if isinstance(p, Label)]
-        boxes = [label_bbox(lab) for lab in labels]
-        for (i, a), (j, b) in itertools.combinations(enumerate(boxes), 2):
-            ox = min(a[2], b[2]) - max(a[0], b[0])
-            oy = min(a[3], b[3]) - max(a[1], b[1])
-            assert ox <= 0.3 or oy <= 0.3, f"{fid}: {labels[i].text!r} overlaps {labels[j].text!r}"
+        assert_fits_and_labels_apart(scene, fid)
 
 
 def test_projection_lines_connect_matching_points(press):
