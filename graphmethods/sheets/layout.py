@@ -216,8 +216,8 @@ class Sheet:
                  default_page: Page | None = None, top_gap_mm: float = 5.0):
         self.nt, self.title, self.problem, self.title_block = nt, title, problem, title_block
         self._page_arg = default_page if page is None and default_page is not None else page
-        probe = standard_page(self._page_arg, title=title, problem=problem, scales=("μ",) if has_scales else (),
-                              nt=nt, title_block=title_block)
+        self.probe = probe = standard_page(self._page_arg, title=title, problem=problem,
+                                           scales=("μ",) if has_scales else (), nt=nt, title_block=title_block)
         self.box = probe.content_box()
         x0, y0, x1, y1 = self.box
         self.top = y0 + TITLE_MM + top_gap_mm
