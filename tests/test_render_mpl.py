@@ -1,6 +1,5 @@
-"""The matplotlib backend: PNG and PDF from the same scene; deterministic PDF; fonts; safe saving."""
+"""The matplotlib backend: PNG of a scene; deterministic; fonts; safe saving; text where the scene puts it."""
 
-import re
 import subprocess
 import sys
 import warnings
@@ -8,7 +7,7 @@ import warnings
 import pytest
 
 from graphmethods.errors import OutputExistsError
-from graphmethods.render import mpl
+from graphmethods.render import fonts, mpl
 from graphmethods.scene import Page, Scale, Scene, Text, Vector
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -28,16 +27,8 @@ def test_png_has_the_page_size_in_pixels():
     assert abs(width - 297 / 25.4 * 50) < 1 and abs(height - 210 / 25.4 * 50) < 1
 
 
-def test_png_and_pdf_are_deterministic():
+def test_png_is_deterministic():
     assert mpl.to_png_bytes(small_scene(), dpi=40) == mpl.to_png_bytes(small_scene(), dpi=40)
-    a, b = mpl.to_pdf_bytes(small_scene()), mpl.to_pdf_bytes(small_scene())
-    assert a == b and a.startswith(b"%PDF")
-    assert b"CreationDate" not in a and b"ModDate" not in a
-
-
-def test_pdf_has_one_page_per_scene():
-    pdf = mpl.to_pdf_bytes([small_scene(), small_scene("second"), small_scene("third")])
-    assert len(re.findall(rb"/Type\s*/Page\b", pdf)) == 3
 
 
 def test_greek_and_cyrillic_draw_without_missing_glyph_warnings():
@@ -47,8 +38,8 @@ def test_greek_and_cyrillic_draw_without_missing_glyph_warnings():
 
 
 def test_without_a_cjk_font_chinese_text_warns_once_clearly(monkeypatch):
-    monkeypatch.setattr(mpl, "_cjk_family", lambda: None)
-    monkeypatch.setattr(mpl, "_warned", False)
+    monkeypatch.setattr(fonts, "cjk_family", lambda: None)
+    monkeypatch.setattr(fonts, "_warned", False)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         mpl.to_png_bytes(small_scene("能量指示图 盈功 亏功"), dpi=30)
@@ -63,21 +54,18 @@ def test_a_found_cjk_font_is_a_real_one():
     path = mpl.find_cjk_font()
     if path is None:
         pytest.skip("no CJK font on this machine (set GRAPHMETHODS_CJK_FONT or pip install mplfonts)")
-    assert "LastResort" not in path and mpl._covers(path)
+    assert "LastResort" not in path and fonts._covers(path)
 
 
 def test_save_refuses_to_overwrite(tmp_path):
-    png, pdf = tmp_path / "f.png", tmp_path / "f.pdf"
+    png = tmp_path / "f.png"
     mpl.save_png(small_scene(), png, dpi=30)
-    mpl.save_pdf([small_scene(), small_scene()], pdf)
-    for path, again in ((png, lambda: mpl.save_png(small_scene(), png, dpi=30)),
-                        (pdf, lambda: mpl.save_pdf(small_scene(), pdf))):
-        before = path.read_bytes()
-        with pytest.raises(OutputExistsError):
-            again()
-        assert path.read_bytes() == before
-    mpl.save_pdf(small_scene(), pdf, overwrite=True)
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.pdf", "f.png"]
+    before = png.read_bytes()
+    with pytest.raises(OutputExistsError):
+        mpl.save_png(small_scene("other"), png, dpi=30)
+    assert png.read_bytes() == before
+    mpl.save_png(small_scene("other"), png, dpi=30, overwrite=True)
+    assert png.read_bytes() != before and [p.name for p in tmp_path.iterdir()] == ["f.png"]
 
 
 def test_drawing_touches_no_global_matplotlib_state():
@@ -89,29 +77,18 @@ def test_drawing_touches_no_global_matplotlib_state():
     assert out.stdout.split() == ["False", "True"]
 
 
-def test_a_russian_and_a_chinese_figure_make_one_deterministic_pdf():
-    from graphmethods import problems, sheets
-
-    scenes = [sheets.energy_graph(problems.w4_exact(), J_e=0.8, omega_0=10.0, notation="ru", work_unit="kG·m"),
-              sheets.energy_indicator(problems.w1(), notation="zh")]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", mpl.CJKFontWarning)      # machines without a CJK font
-        a, b = mpl.to_pdf_bytes(scenes), mpl.to_pdf_bytes(scenes)
-    assert a == b and len(re.findall(rb"/Type\s*/Page\b", a)) == 2
-
-
 def test_an_unusable_font_path_in_the_environment_is_reported(monkeypatch, tmp_path):
     bogus = tmp_path / "not-a-font.otf"
     bogus.write_bytes(b"nothing")
     monkeypatch.setenv("GRAPHMETHODS_CJK_FONT", str(bogus))
-    mpl.find_cjk_font.cache_clear()
+    fonts.find_cjk_font.cache_clear()
     try:
         with pytest.warns(mpl.CJKFontWarning, match="not a font file"):
             mpl.find_cjk_font()
     finally:
         monkeypatch.delenv("GRAPHMETHODS_CJK_FONT")
-        mpl.find_cjk_font.cache_clear()
-        mpl._cjk_family.cache_clear()
+        fonts.find_cjk_font.cache_clear()
+        fonts.cjk_family.cache_clear()
 
 
 def _ink_rows_mm(png: bytes, dpi: float):

@@ -44,10 +44,14 @@ def run(args) -> int:
             from graphmethods.render import svg
 
             svg.save(scene, path, overwrite=args.force)
-        elif suffix in (".pdf", ".png"):
+        elif suffix == ".pdf":
+            from graphmethods.render import pdf
+
+            pdf.save(scene, path, overwrite=args.force)
+        elif suffix == ".png":
             from graphmethods.render import mpl
 
-            (mpl.save_pdf if suffix == ".pdf" else mpl.save_png)(scene, path, overwrite=args.force)
+            mpl.save_png(scene, path, overwrite=args.force)
         else:
             raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf or .png")
     out = {"text": report.to_text, "markdown": report.to_markdown, "json": report.to_json}[args.format]()

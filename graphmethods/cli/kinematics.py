@@ -182,10 +182,14 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
             from graphmethods.render import svg
 
             blobs[out / f"{stem}_{key}.svg"] = svg.to_bytes(obj)
+        elif fmt == "pdf":
+            from graphmethods.render import pdf
+
+            blobs[out / f"{stem}_{key}.pdf"] = pdf.to_bytes(obj)
         else:
             from graphmethods.render import mpl
 
-            blobs[out / f"{stem}_{key}.{fmt}"] = mpl.to_png_bytes(obj) if fmt == "png" else mpl.to_pdf_bytes(obj)
+            blobs[out / f"{stem}_{key}.png"] = mpl.to_png_bytes(obj)
     if not overwrite:
         existing = [str(p) for p in blobs if p.exists()]
         if existing:

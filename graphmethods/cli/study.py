@@ -38,9 +38,9 @@ def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
 
     scene = dynamic_analysis_sheet(study, page=page, notation=lang)
     if path.suffix.lower() == ".pdf":
-        from graphmethods.render import mpl
+        from graphmethods.render import pdf
 
-        return mpl.to_pdf_bytes([scene])
+        return pdf.to_bytes([scene])
     from graphmethods.render import svg
 
     return svg.to_bytes(scene)

@@ -1,16 +1,11 @@
-"""PDF and PNG output through matplotlib (Agg), the only module importing matplotlib.
+"""PNG output (and figures for notebooks) through matplotlib's Agg canvas.
 
 matplotlib is imported when a function here is called, never at import time, and
 no global state is touched: figures are built with ``matplotlib.figure.Figure``
-and the Agg/PDF canvases directly (no pyplot, no ``matplotlib.use``). PDF output is
-deterministic (no creation date, same bytes twice); several scenes make a
-multi-page PDF.
-
-Fonts: Greek and Cyrillic draw with matplotlib's default DejaVu Sans. Chinese needs
-a CJK font; :func:`find_cjk_font` looks for one (``GRAPHMETHODS_CJK_FONT``, the
-system's fonts, then the ``mplfonts`` package, which ships Noto Sans CJK SC under the
-SIL Open Font License). When there is none, a single :class:`CJKFontWarning` says so
-and how to get one, instead of silently drawing empty boxes.
+and the Agg canvas directly (no pyplot, no ``matplotlib.use``). PNG output is
+deterministic (no software or date metadata). PDF is written by
+:mod:`graphmethods.render.pdf`; both take their fonts from
+:mod:`graphmethods.render.fonts` (DejaVu Sans; a CJK font for Chinese).
 
 >>> from graphmethods.scene import Scene, Page, Text
 >>> png = to_png_bytes(Scene(Page("A4"), (Text((20, 20), "ψ_{max} = 30°; M_д"),)), dpi=30)
@@ -22,107 +17,14 @@ from __future__ import annotations
 
 import functools
 import io
-import os
-import pathlib
 import warnings
 
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT, has_cjk
+from graphmethods.render.fonts import CJKFontWarning, families, find_cjk_font  # noqa: F401 (re-exported)
+from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
 
 PT_PER_MM = 72.0 / 25.4
-BASE_FAMILY = "DejaVu Sans"
-
-#: CJK families tried first, by name (the system's, Windows', macOS')
-CJK_FAMILIES = (
-    "Noto Sans CJK SC", "Noto Sans SC", "Source Han Sans SC", "Source Han Sans CN", "Noto Sans CJK JP",
-    "WenQuanYi Zen Hei", "WenQuanYi Micro Hei", "Microsoft YaHei", "SimHei", "PingFang SC", "Heiti SC",
-    "Hiragino Sans GB", "Droid Sans Fallback", "AR PL UMing CN", "AR PL UKai CN",
-)
-_PROBE = "盈亏功能量指示图"
-
-_warned = False
-
-
-class CJKFontWarning(UserWarning):
-    """No font with Chinese characters was found; Chinese text would draw as empty boxes."""
-
-
-def _covers(path: str) -> bool:
-    from matplotlib import ft2font
-
-    try:
-        cmap = ft2font.FT2Font(path).get_charmap()
-    except Exception:  # unreadable font file: not ours to fix
-        return False
-    if not all(ord(c) in cmap for c in _PROBE):
-        return False
-    # a last-resort font maps every character of a block to one placeholder glyph
-    return len({cmap[ord(c)] for c in _PROBE}) == len(set(_PROBE))
-
-
-@functools.lru_cache(maxsize=1)
-def find_cjk_font() -> str | None:
-    """Path of a font that covers Chinese, or None; registered with matplotlib's font manager.
-
-    Looks, in order, at the environment variable ``GRAPHMETHODS_CJK_FONT`` (a font
-    file), the system's fonts known to matplotlib (by family name, then by the
-    characters they cover), and the font shipped by the ``mplfonts`` package
-    (``pip install 'graphmethods[cjk]'``; Noto Sans CJK SC, SIL OFL).
-    """
-    from matplotlib import font_manager
-
-    candidates = []
-    env = os.environ.get("GRAPHMETHODS_CJK_FONT", "").strip()
-    if env:
-        candidates.append(env)
-    entries = list(font_manager.fontManager.ttflist)
-    by_name = {}
-    for e in entries:
-        by_name.setdefault(e.name, e.fname)
-    candidates += [by_name[n] for n in CJK_FAMILIES if n in by_name]
-    candidates += sorted({e.fname for e in entries if e.name not in by_name or by_name[e.name] == e.fname})
-    try:
-        import importlib.util
-
-        spec = importlib.util.find_spec("mplfonts")
-    except (ImportError, ValueError):
-        spec = None
-    if spec is not None and spec.submodule_search_locations:
-        for loc in spec.submodule_search_locations:
-            candidates.append(str(pathlib.Path(loc) / "fonts" / "NotoSansCJKsc-Regular.otf"))
-    if env and not (os.path.isfile(env) and _covers(env)):
-        warnings.warn(f"graphmethods: GRAPHMETHODS_CJK_FONT={env} is not a font file with Chinese characters; "
-                      f"looking for another", CJKFontWarning, stacklevel=2)
-    for path in candidates:
-        if path and os.path.isfile(path) and _covers(path):
-            font_manager.fontManager.addfont(path)
-            return path
-    return None
-
-
-@functools.lru_cache(maxsize=1)
-def _cjk_family() -> str | None:
-    path = find_cjk_font()
-    if path is None:
-        return None
-    from matplotlib.font_manager import FontProperties
-
-    return FontProperties(fname=path).get_name()
-
-
-def _warn_no_cjk() -> None:
-    global _warned
-    if _warned:
-        return
-    _warned = True
-    warnings.warn(
-        "graphmethods: no font with Chinese characters was found, so the Chinese text of this figure cannot be "
-        "drawn in PNG/PDF (it would show as empty boxes). Get one with `pip install 'graphmethods[cjk]'` (mplfonts: Noto Sans CJK SC, "
-        "SIL Open Font License), or install your system's Noto CJK fonts (Debian/Ubuntu: fonts-noto-cjk), or set "
-        "GRAPHMETHODS_CJK_FONT=/path/to/font.otf. SVG output is not affected: the viewer chooses the font.",
-        CJKFontWarning, stacklevel=3)
-
 
 @functools.lru_cache(maxsize=None)
 def _font(size_pt: float, family: tuple, weight: str):
@@ -189,7 +91,6 @@ class MplRenderer:
         self.fig = self.ax = None
         self._z = 0
         self._renderer = None
-        self._families = [BASE_FAMILY]
         self._labels = None            # the batch of labels being filled (None after other primitives)
         self._lines: list = []         # consecutive paths, drawn as one LineCollection
         self._lines_z = 0
@@ -264,15 +165,6 @@ class MplRenderer:
                        linewidth=style.width_mm * PT_PER_MM if stroke != "none" else 0.0, zorder=self._zorder())
         self.ax.add_patch(patch)
 
-    def _family(self, text: str):
-        if has_cjk(text):
-            fam = _cjk_family()
-            if fam is None:
-                _warn_no_cjk()
-                return [BASE_FAMILY]
-            return [BASE_FAMILY, fam]
-        return [BASE_FAMILY]
-
     def _width_mm(self, text: str, size_mm: float, bold: bool, family) -> float:
         prop = _font(size_mm * PT_PER_MM, tuple(family), "bold" if bold else "normal")
         return _extent(self._renderer, text, prop)[0] / self.dpi * 25.4
@@ -285,7 +177,7 @@ class MplRenderer:
         self._labels.items.append((x, y, text, _font(size_mm * PT_PER_MM, tuple(family), weight), color, ha))
 
     def text(self, label):
-        family = self._family(label.text)
+        family = families(label.text)
         # CJK fonts rarely ship a bold face; a half-bold line (Latin bold, CJK regular) looks wrong
         weight = "bold" if label.bold and len(family) == 1 else "normal"
         runs = label.runs
@@ -315,9 +207,6 @@ def figure(scene, *, dpi: float = 150.0):
         return draw(scene, MplRenderer(dpi=dpi))
 
 
-_PDF_METADATA = {"CreationDate": None, "ModDate": None, "Producer": None, "Creator": "graphmethods"}
-
-
 def to_png_bytes(scene, *, dpi: float = 200.0) -> bytes:
     """PNG of ``scene`` at ``dpi`` (deterministic; no software or date metadata)."""
     fig = figure(scene, dpi=dpi)
@@ -328,26 +217,6 @@ def to_png_bytes(scene, *, dpi: float = 200.0) -> bytes:
     return buf.getvalue()
 
 
-def to_pdf_bytes(scenes) -> bytes:
-    """PDF with one page per scene (a single scene is allowed); deterministic bytes."""
-    from matplotlib.backends.backend_pdf import PdfPages
-
-    if not isinstance(scenes, (list, tuple)):
-        scenes = [scenes]
-    buf = io.BytesIO()
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from", category=UserWarning)
-        with PdfPages(buf, metadata=dict(_PDF_METADATA)) as pdf:
-            for sc in scenes:
-                pdf.savefig(figure(sc))
-    return buf.getvalue()
-
-
 def save_png(scene, path, *, dpi: float = 200.0, overwrite: bool = False):
     """Write ``scene`` as PNG atomically; refuses to replace a file unless ``overwrite``."""
     return write_atomic(path, to_png_bytes(scene, dpi=dpi), overwrite=overwrite)
-
-
-def save_pdf(scenes, path, *, overwrite: bool = False):
-    """Write one scene or several (one page each) as PDF atomically; refuses to replace unless ``overwrite``."""
-    return write_atomic(path, to_pdf_bytes(scenes), overwrite=overwrite)

@@ -1911,7 +1911,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     >>> [p.name for p in write_worksheet(worksheet("wittenbauer", variants=1, seed=3), out)]
     ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json']
     """
-    from graphmethods.render import mpl, svg
+    from graphmethods.render import pdf, svg
 
     out = pathlib.Path(out_dir)
     if out.exists() and not out.is_dir():
@@ -1932,7 +1932,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
             (tmp / sub).mkdir()
         for name, obj in files.items():
             if isinstance(obj, list):
-                (tmp / name).write_bytes(mpl.to_pdf_bytes(_Reporting(obj, progress)))
+                (tmp / name).write_bytes(pdf.to_bytes(_Reporting(obj, progress)))
             elif isinstance(obj, Scene):
                 (tmp / name).write_bytes(svg.to_bytes(obj))
             else:
