@@ -155,10 +155,15 @@ class Face:
     """
 
     def __init__(self, path: str):
+        import matplotlib
         from matplotlib import ft2font
 
         self.path = path
-        self._ft = ft2font.FT2Font(path)
+        if tuple(int(v) for v in matplotlib.__version__.split(".")[:2]) < (3, 11):
+            # before 3.11 a face squeezes x by its hinting factor (8 by default): outlines, boxes, kerning
+            self._ft = ft2font.FT2Font(path, hinting_factor=1)
+        else:
+            self._ft = ft2font.FT2Font(path)
         self.units_per_em = int(self._ft.units_per_EM)
         self._cmap = self._ft.get_charmap()
         self._no_scale = _flag("LoadFlags", "NO_SCALE", "LOAD_NO_SCALE")
