@@ -15,6 +15,8 @@ ordinary text passes through unchanged. A run is ``(text, shift)`` with shift
 
 from __future__ import annotations
 
+import functools
+
 Run = tuple[str, int]
 
 #: size of a sub/superscript relative to the text size
@@ -57,6 +59,7 @@ _SPECIAL_EM = {"·": 0.318, "−": 0.838, "±": 0.838, "≈": 0.838, "°": 0.5, 
                "³": 0.401, "⁻": 0.5, "¹": 0.401, "–": 0.5, "—": 1.0, "…": 1.0, "≡": 0.838, "Σ": 0.632}
 
 
+@functools.lru_cache(maxsize=8192)
 def parse(text: str) -> tuple[Run, ...]:
     """Split markup into runs ``(text, shift)``; adjacent runs of one shift are merged.
 
@@ -155,9 +158,10 @@ def text_width_mm(text: str, size_mm: float, *, markup: bool = True) -> float:
     size_mm : float, mm
         Font size (em height).
     """
+    return _width_em(text, markup) * size_mm
+
+
+@functools.lru_cache(maxsize=8192)
+def _width_em(text: str, markup: bool) -> float:
     runs = parse(text) if markup else ((text, 0),)
-    total = 0.0
-    for chunk, shift in runs:
-        scale = 1.0 if shift == 0 else SCRIPT_SCALE
-        total += scale * sum(char_em(c) for c in chunk)
-    return total * size_mm
+    return sum((1.0 if shift == 0 else SCRIPT_SCALE) * sum(char_em(c) for c in chunk) for chunk, shift in runs)
