@@ -12,6 +12,7 @@ True
 from __future__ import annotations
 
 import math
+import pathlib
 import statistics
 import subprocess
 import sys
@@ -299,6 +300,54 @@ def bench_sheet(*, repeat=5) -> list[Row]:
 
 
 # --------------------------------------------------------------------- the error-against-time plot
+# --------------------------------------------------------------------- a class set of worksheets
+def bench_worksheet(*, variants=30, kinds=("indicator", "step-moment", "velocity-plan", "wittenbauer"), repeat=3,
+                    cli=True) -> list[Row]:
+    """A class set (students' pages and keys in one PDF, an SVG per page, problem files) per kind,
+    in-process and as the command a teacher types; one key page through our PDF writer against
+    matplotlib's PDF backend."""
+    import io
+    import tempfile
+
+    from graphmethods.render import mpl, pdf
+    from graphmethods.sheets.worksheets import worksheet, write_worksheet
+
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for kind in kinds:
+            out = pathlib.Path(tmp) / kind
+
+            def build():
+                return write_worksheet(worksheet(kind, variants=variants, seed=7), out, overwrite=True)
+
+            t = median_time(build, repeat=repeat)
+            pages = 2 * variants
+            size = (out / f"{kind}-en.pdf").stat().st_size
+            rows.append(Row("worksheet", f"{kind}, {variants} variants", "build + PDF + SVG + problem files",
+                            pages, t, None, note=f"{pages} pages, PDF {size // 1024} KB; {t / pages * 1e3:.0f} ms a page"))
+        if cli:
+            kind = kinds[-1]
+            cmd = [sys.executable, "-m", "graphmethods", "worksheet", kind, "--variants", str(variants), "--seed", "7",
+                   "--out", str(pathlib.Path(tmp) / "cli"), "--force", "--quiet"]
+            t = median_time(lambda: subprocess.run(cmd, check=True, capture_output=True), repeat=repeat)
+            rows.append(Row("worksheet", f"{kind}, {variants} variants", "graphmethods worksheet (fresh process)",
+                            2 * variants, t, None, note="the command a teacher types, imports included"))
+    key = worksheet(kinds[-1], variants=1, seed=7).keys[0]
+
+    def matplotlib_pdf():
+        buf = io.BytesIO()
+        mpl.figure(key).savefig(buf, format="pdf", metadata={"CreationDate": None})
+        return buf
+
+    t_ours = median_time(lambda: pdf.to_bytes([key]), repeat=max(repeat, 5))
+    t_mpl = median_time(matplotlib_pdf, repeat=max(repeat, 3))
+    rows.append(Row("worksheet", f"one {kinds[-1]} key page", "PDF: graphmethods.render.pdf", 1, t_ours, None,
+                    extra={"speedup_vs_matplotlib": t_mpl / t_ours}))
+    rows.append(Row("worksheet", f"one {kinds[-1]} key page", "PDF: matplotlib backend", 1, t_mpl, None,
+                    extra={"ratio_to_ours": t_mpl / t_ours}))
+    return rows
+
+
 def plot_error_vs_time(rows: list[Row], path) -> None:
     """A log–log plot of relative error against time for the flywheel methods (SVG, deterministic)."""
     import matplotlib
@@ -339,6 +388,7 @@ SECTIONS = {
     "calculus": bench_calculus,
     "areas": bench_areas,
     "sheet": bench_sheet,
+    "worksheet": bench_worksheet,
     "startup": bench_startup,
 }
 
@@ -349,6 +399,7 @@ QUICK = {
     "calculus": dict(ms=(6, 12, 24), repeat=1),
     "areas": dict(sizes=(10**3, 10**4, 10**5), crossings=(2, 10**4), repeat=3),
     "sheet": dict(repeat=2),
+    "worksheet": dict(variants=4, kinds=("wittenbauer",), repeat=1, cli=False),
     "startup": dict(repeat=3),
 }
 

@@ -63,3 +63,11 @@ def test_calculus_rows_shrink_with_more_intervals():
 def test_sheet_row_builds_only_what_the_sheet_draws():
     (row,) = bench.bench_sheet(repeat=1)
     assert "exact" not in row.note and "wittenbauer" in row.note
+
+
+def test_worksheet_rows_count_the_pages_and_compare_the_pdf_writers():
+    rows = bench.bench_worksheet(variants=2, kinds=("indicator",), repeat=1, cli=False)
+    assert [(r.method, r.size) for r in rows] == [("build + PDF + SVG + problem files", 4),
+                                                  ("PDF: graphmethods.render.pdf", 1), ("PDF: matplotlib backend", 1)]
+    assert "4 pages" in rows[0].note
+    assert rows[1].extra["speedup_vs_matplotlib"] == pytest.approx(rows[2].extra["ratio_to_ours"])
