@@ -313,7 +313,7 @@ def to_bytes(scenes) -> bytes:
     Examples
     --------
     >>> from graphmethods.scene import Scene, Page, Text
-    >>> page = Scene(Page("A5"), (Text((10, 10), "Мд, 能量"),))
+    >>> page = Scene(Page("A4"), (Text((10, 10), "Мд, ψ_{max}"),))
     >>> to_bytes([page, page]).count(b"/Type /Page ")
     2
     """
