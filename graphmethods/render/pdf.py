@@ -66,7 +66,7 @@ class _Fonts:
     def __init__(self):
         self.subsets: list[_Subset] = []
         self._open: dict[int, _Subset] = {}   # id(face) -> subset being filled
-        self._code: dict[tuple[int, int], tuple[_Subset, int]] = {}
+        self._code: dict[tuple[int, int, str], tuple[_Subset, int]] = {}
         self._runs: dict = {}
 
     def code(self, face, gid: int, char: str) -> tuple[_Subset, int]:
@@ -82,57 +82,34 @@ class _Fonts:
             sub.glyphs.append((gid, char))
         return got
 
-    def run(self, text: str, bold: bool):
-        """``text`` laid out: (width in em, text-showing operators at 1 unit of size), cached."""
+    def run(self, text: str, bold: bool) -> tuple[float, tuple[tuple[str, str], ...]]:
+        """``text`` laid out, cached: its width in em, and per font its name and ``TJ`` array (the glyph
+        codes with the kerning between them)."""
         key = (text, bold)
         got = self._runs.get(key)
         if got is not None:
             return got
         fs = faces(text, bold=bold)
-        glyphs = []
+        width, shows, current, parts, prev = 0.0, [], None, [], None
         for ch in text:
-            for face in fs:
-                gid = face.glyph(ch)
-                if gid is not None:
-                    break
-            else:
-                face, gid = fs[0], 0             # .notdef: the font's "missing" box
-            glyphs.append((face, gid, ch))
-        width, ops, current, chunk, prev = 0.0, [], None, [], None
-        for face, gid, ch in glyphs:
+            face, gid = next(((f, g) for f in fs if (g := f.glyph(ch)) is not None), (fs[0], 0))  # 0: .notdef
             sub, code = self.code(face, gid, ch)
+            kern = 0
             if sub is not current:               # another font: no kerning across it
-                if chunk:
-                    ops.append((current, chunk))
-                current, chunk, kern = sub, [], 0
+                if current is not None:
+                    shows.append((current.name, f"[{''.join(parts)}>]"))
+                current, parts = sub, ["<"]
             else:
                 kern = face.kerning(prev, gid)
                 if kern:
-                    chunk.append(-1000.0 * kern / face.units_per_em)
-            chunk.append(code)
+                    parts.append(f"> {-1000.0 * kern / face.units_per_em:.1f} <".replace(".0 ", " "))
+            parts.append(f"{code:02X}")
             width += (kern + face.advance(gid)) / face.units_per_em
             prev = gid
-        if chunk:
-            ops.append((current, chunk))
-        got = self._runs[key] = (width, ops)
+        if current is not None:
+            shows.append((current.name, f"[{''.join(parts)}>]"))
+        got = self._runs[key] = (width, tuple(shows))
         return got
-
-
-def _show(ops, size: float) -> str:
-    """Text-showing operators for one laid-out run at ``size`` mm."""
-    out = []
-    for sub, chunk in ops:
-        parts, hexes = [], []
-        for item in chunk:
-            if isinstance(item, float):
-                parts.append(f"<{''.join(hexes)}>")
-                parts.append(f"{item:.1f}".rstrip("0").rstrip("."))
-                hexes = []
-            else:
-                hexes.append(f"{item:02X}")
-        parts.append(f"<{''.join(hexes)}>")
-        out.append(f"/{sub.name} {fmt(size)} Tf [{' '.join(parts)}] TJ")
-    return " ".join(out)
 
 
 class PdfRenderer:
@@ -210,20 +187,19 @@ class PdfRenderer:
         self._paint(" ".join(ops) + " h", style, closed=True)
 
     def text(self, label):
-        runs = label.runs
-        bold = label.bold
         laid = []
-        for chunk, shift in runs:
+        for chunk, shift in label.runs:
             size = label.size_mm * (1.0 if shift == 0 else SCRIPT_SCALE)
-            width_em, ops = self.fonts.run(chunk, bold)
-            laid.append((size, width_em * size, ops, shift))
+            width_em, shows = self.fonts.run(chunk, label.bold)
+            laid.append((size, width_em * size, shows, shift))
         total = sum(w for _, w, _, _ in laid)
         x = label.x - {"start": 0.0, "middle": total / 2.0, "end": total}[label.anchor]
         self._set("rg", _rgb(label.color))
         parts = ["BT"]
-        for size, width, ops, shift in laid:
+        for size, width, shows, shift in laid:
             dy = {0: 0.0, -1: SUB_SHIFT * label.size_mm, 1: -SUP_SHIFT * label.size_mm}[shift]
-            parts.append(f"1 0 0 -1 {fmt(x)} {fmt(label.y + dy)} Tm {_show(ops, size)}")
+            parts.append(f"1 0 0 -1 {fmt(x)} {fmt(label.y + dy)} Tm")
+            parts += [f"/{name} {fmt(size)} Tf {array} TJ" for name, array in shows]
             x += width
         parts.append("ET")
         self.ops.append(" ".join(parts))
