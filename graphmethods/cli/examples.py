@@ -18,7 +18,7 @@ def run(args) -> int:
     results = {}
     for prob in all_examples():
         ew = prob.excess_work
-        res = {"title": prob.title, "source": prob.source, "excess_work": ew.to_dict()}
+        res = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict()}
         if prob.n_rpm is not None and prob.delta is not None:
             res["flywheel"] = prob.flywheel().to_dict()
         if prob.omega_0 is not None:

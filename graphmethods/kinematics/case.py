@@ -2,7 +2,10 @@
 
 One JSON object per file, SI units (m, kg, kg·m², N, N·m, rev/min), angles in keys ending in
 ``_deg``. ``kind`` selects the format (default ``"slider_crank"``, the press format of
-``shared/cases/slider_crank_press.json``); ``name``, ``about`` and ``units`` are free text.
+``shared/cases/slider_crank_press.json``); ``about`` and ``units`` are free text; ``name``, the
+problem's title, is text (used for every language) or a mapping by language such as
+``{"en": "offset slider-crank press", "ru": "…", "zh": "…"}`` (a figure in a language the mapping
+lacks shows the English; see :class:`graphmethods.titles.Title`).
 Every other key is checked: a missing, misspelt, non-numeric or out-of-range key, or
 dimensions that cannot be assembled, raise an :class:`~graphmethods.errors.InputError` (or
 its subclass AssemblyError) whose one-line message names the file and the key.
@@ -48,6 +51,7 @@ from graphmethods.kinematics.mechanism import Mechanism
 from graphmethods.kinematics.shaper import Shaper
 from graphmethods.kinematics.slider_crank import SliderCrank
 from graphmethods.kinematics.slotted_lever import SlottedLever
+from graphmethods.titles import Title
 from graphmethods.units import omega_from_n, parse_number
 
 
@@ -105,7 +109,9 @@ class Case:
     ----------
     kind : str
         ``"slider_crank"``, ``"four_bar"``, ``"slotted_lever"`` or ``"shaper"``.
-    name, about : str
+    title : Title
+        The problem's title (the file's ``name``): plain text, or text by language.
+    about : str
         Free text from the file.
     source : str
         Where it was read from (file path or ``"<dict>"``).
@@ -124,7 +130,7 @@ class Case:
     """
 
     kind: str
-    name: str
+    title: Title
     about: str
     source: str
     mechanism: Mechanism
@@ -133,6 +139,11 @@ class Case:
     inertias: tuple
     load: Load
     values: Mapping[str, Any]
+
+    @property
+    def name(self) -> str:
+        """The title as one string: the English text, or the plain string the file gives."""
+        return str(self.title)
 
     @property
     def omega_m(self) -> float:
@@ -286,7 +297,7 @@ def _validated(data: Mapping, kind: str, source: str) -> dict:
     if unknown:
         raise InputError(f"{source}: unknown key {unknown[0]!r} for kind {kind!r}; the keys are: "
                          f"{', '.join(spec)} (and name, about, units, kind)")
-    for k in _TEXT:
+    for k in _TEXT - {"name"}:
         if k in data and not isinstance(data[k], str):
             raise InputError(f"{source}: key {k!r} must be text; got {data[k]!r}")
     out = {}
@@ -325,8 +336,9 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     if kind not in SPECS:
         raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}")
     v = _validated(data, kind, source)
+    title = Title.of(data.get("name"), where=f"{source}: key 'name'")
     sense = 1 if v["sense"] == "ccw" else -1
-    common = dict(kind=kind, name=data.get("name", ""), about=data.get("about", ""), source=source,
+    common = dict(kind=kind, title=title, about=data.get("about", ""), source=source,
                   n_rpm=v["n_rpm"], delta=v["delta"])
     try:
         if kind == "slider_crank":

@@ -16,6 +16,7 @@ from graphmethods.dynamics.flywheel import Flywheel, flywheel
 from graphmethods.dynamics.kinetic_energy import KineticEnergy, kinetic_energy
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
+from graphmethods.titles import Title
 
 
 @dataclass(frozen=True, eq=False)
@@ -25,11 +26,16 @@ class CycleProblem:
     Give exactly one of: ``work_J`` (excess works, J); ``areas_mm2`` with ``mu_M``,
     ``mu_phi`` (measured areas); ``M_d``/``M_r`` moment curves (one may be omitted and is
     then balanced). Speed data: ``n_rpm`` and ``delta`` for a flywheel; ``J_e`` and
-    ``omega_0`` for a kinetic-energy graph.
+    ``omega_0`` for a kinetic-energy graph. ``title`` is a :class:`~graphmethods.titles.Title`;
+    plain text (used for every language) or a mapping by language is turned into one.
+
+    >>> p = CycleProblem(id="P1", title={"en": "Press", "ru": "Пресс"}, work_J=(10, -10))
+    >>> p.title.title_in("ru"), p.title.title_in("zh"), CycleProblem(id="P2", title="Pump").title.title_in("zh")
+    ('Пресс', 'Press', 'Pump')
     """
 
     id: str
-    title: str
+    title: Title
     source: str = ""
     work_J: tuple[float, ...] | None = None
     areas_mm2: tuple[float, ...] | None = None
@@ -43,6 +49,9 @@ class CycleProblem:
     J_e: float = 0.0
     omega_0: float | None = None
     note: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "title", Title.of(self.title, where=f"problem {self.id}: title"))
 
     @cached_property
     def excess_work(self) -> ew.ExcessWork:

@@ -6,6 +6,8 @@ permissible [δ]. The data are in the style of textbook problems (not taken from
 >>> p = four_stroke_engine()
 >>> round(p.model.phi_T / 3.141592653589793, 6), p.delta
 (4.0, 0.02)
+>>> p.name, p.title.title_in("ru"), p.title.title_in("zh")
+('four-stroke engine', 'четырёхтактный двигатель', '四冲程发动机')
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.dynamics.motion import ReducedModel
+from graphmethods.titles import Title
 from graphmethods.units import omega_from_n
 
 PI = math.pi
@@ -23,13 +26,23 @@ PI = math.pi
 
 @dataclass(frozen=True)
 class ReducedProblem:
-    """A machine given by its reduced model, mean speed (rad/s) and permissible δ."""
+    """A machine given by its reduced model, mean speed (rad/s) and permissible δ.
+
+    ``name`` is its key in tables (the benchmark's rows); ``title`` the name to print, by language
+    (a :class:`~graphmethods.titles.Title`; plain text or a mapping by language is turned into
+    one; by default the name).
+    """
 
     name: str
     about: str
     model: ReducedModel
     omega_m: float
     delta: float
+    title: Title | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "title", Title.of(self.name if self.title is None else self.title,
+                                                   where=f"problem {self.name}: title"))
 
 
 def smooth_machine() -> ReducedProblem:
@@ -39,7 +52,9 @@ def smooth_machine() -> ReducedProblem:
         M_e=lambda p: 300.0 * (np.sin(p) + 0.4 * np.sin(3 * p)),
         dJ_e=lambda p: -0.8 * np.sin(2 * p),
     )
-    return ReducedProblem("smooth machine", "smooth moment and inertia, both harmonic", model, omega_from_n(200.0), 1 / 50)
+    return ReducedProblem("smooth machine", "smooth moment and inertia, both harmonic", model, omega_from_n(200.0), 1 / 50,
+                          title={"en": "machine with smooth loads", "ru": "машина с плавно изменяющимися нагрузками",
+                                 "zh": "载荷平稳变化的机器"})
 
 
 def four_stroke_engine(*, r: float = 0.06, lam: float = 0.25, m_p: float = 2.5, J0: float = 0.35,
@@ -71,4 +86,5 @@ def four_stroke_engine(*, r: float = 0.06, lam: float = 0.25, m_p: float = 2.5, 
         breaks=(PI, 3 * PI),
     )
     return ReducedProblem("four-stroke engine", "one cylinder, period 4π, gas force with a jump at φ = 0/4π",
-                          model, omega_from_n(n_rpm), delta)
+                          model, omega_from_n(n_rpm), delta,
+                          title={"en": "four-stroke engine", "ru": "четырёхтактный двигатель", "zh": "四冲程发动机"})

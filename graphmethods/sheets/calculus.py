@@ -38,7 +38,7 @@ from graphmethods.scene import format_value, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, standard_page
+from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, problem_title, standard_page
 
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables
@@ -353,10 +353,10 @@ def _column_width(rows, *lines) -> float:
     return max([table.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in lines]) + 2.0
 
 
-def _slider_subject(subject):
-    """(mechanism, omega_1, problem text) from a Case or a mechanism."""
+def _slider_subject(subject, nt):
+    """(mechanism, omega_1, problem text in the notation's language) from a Case or a mechanism."""
     if hasattr(subject, "mechanism") and hasattr(subject, "omega_m"):
-        return subject.mechanism, float(subject.omega_m), getattr(subject, "name", "") or ""
+        return subject.mechanism, float(subject.omega_m), problem_title(subject, nt)
     if hasattr(subject, "positions") and hasattr(subject, "guides"):
         return subject, None, ""
     raise InputError(f"kinematic_diagrams needs a linkage problem (graphmethods.kinematics.read_case) or a "
@@ -394,8 +394,8 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     >>> s.title, [sc.symbol for sc in s.scales()]
     ('Кинематические диаграммы ползуна', ['μ_φ', 'μ_S', 'μ_V', 'μ_a'])
     """
-    mech, omega_case, prob = _slider_subject(subject)
     nt = get_notation(notation)
+    mech, omega_case, prob = _slider_subject(subject, nt)
     if omega_1 is None:
         omega_1 = omega_case
     if analogues:
@@ -560,21 +560,21 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
 
 # ----------------------------------------------------------------------------- 2. work diagrams
 
-def _moment_subject(subject, m: int):
-    """(kind, M_d, M_r, phi, study-or-None, problem text) from a Study, a Case, a cycle problem or a pair."""
+def _moment_subject(subject, m: int, nt):
+    """(M_d, M_r, phi, study-or-None, problem text in the notation's language) from a Study, a Case, a
+    cycle problem or a pair."""
     if hasattr(subject, "moments") and hasattr(subject, "model"):            # a Study
         M_d, M_r = subject.moments
-        return M_d, M_r, np.asarray(subject.phi, dtype=float), subject, getattr(subject.case, "name", "")
+        return M_d, M_r, np.asarray(subject.phi, dtype=float), subject, problem_title(subject.case, nt)
     if hasattr(subject, "mechanism") and hasattr(subject, "load"):           # a linkage problem
         from graphmethods.dynamics.study import Study
 
-        return _moment_subject(Study(subject, positions=m), m)
+        return _moment_subject(Study(subject, positions=m), m, nt)
     cyc, prob = subject, ""
     if not hasattr(subject, "M_r") or getattr(subject, "M_r", None) is None or not hasattr(subject, "E"):
         ew_ = getattr(subject, "excess_work", None)
         if ew_ is not None and getattr(ew_, "M_r", None) is not None:
-            pid, ttl = getattr(subject, "id", ""), getattr(subject, "title", "")
-            cyc, prob = ew_, (f"{pid}: {ttl}" if pid and ttl else (ttl or pid))
+            cyc, prob = ew_, problem_title(subject, nt)
     if isinstance(subject, (tuple, list)) and len(subject) == 2:
         M_d, M_r = subject
     elif getattr(cyc, "M_d", None) is not None and getattr(cyc, "M_r", None) is not None:
@@ -650,8 +650,8 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     """
     from graphmethods.units import CONVENIENT, convenient_at_least
 
-    M_d, M_r, phi, study, prob = _moment_subject(subject, m)
     nt = get_notation(notation)
+    M_d, M_r, phi, study, prob = _moment_subject(subject, m, nt)
     sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "work_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box

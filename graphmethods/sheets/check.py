@@ -56,11 +56,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from graphmethods.errors import InputError
+from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, Scene, Text
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets import worksheets as ws
+from graphmethods.titles import Title
 from graphmethods.units import omega_from_n
 
 TOL_MM = 0.5
@@ -315,7 +317,7 @@ class CycleData:
     """What the check needs of a cycle problem (W1–W4, indicator and step-moment worksheets)."""
 
     id: str
-    title: str
+    title: Title
     cycle: object                         # ExcessWork
     n_rpm: float | None
     delta: float | None
@@ -329,7 +331,7 @@ class LinkageData:
     """A slider-crank problem: a case file (press), or worksheet variants (one plan, or a table)."""
 
     id: str
-    title: str
+    title: Title
     case: object | None = None            # kinematics Case (velocity plan at positions, Study)
     plan_variant: object | None = None    # worksheets.PlanVariant
     em_variant: object | None = None      # worksheets.EnergyMassVariant
@@ -356,7 +358,8 @@ def load_problem(spec) -> CycleData | LinkageData:
         from graphmethods.kinematics import read_case
 
         path = pathlib.Path(problems.__file__).parent / "data" / "slider_crank_press.json"
-        return LinkageData("press", "Slider-crank press", case=read_case(path))
+        case = read_case(path)
+        return LinkageData("press", title_of(case), case=case)
     v = ws.parse_id(text)
     if v is None:
         p = pathlib.Path(text)
@@ -375,12 +378,12 @@ def load_problem(spec) -> CycleData | LinkageData:
             case = case_from_dict(data, source=str(p))
             if case.kind != "slider_crank":
                 raise InputError(f"{p}: the check knows slider-crank problems; this one is a {case.kind}")
-            return LinkageData(str(p), case.name or p.stem, case=case)
+            return LinkageData(str(p), title_of(case) or Title.of(p.stem), case=case)
     return _from_variant(v)
 
 
 def _from_variant(v) -> CycleData | LinkageData:
-    title = ws.WORDS[f"title:{v.kind}"][0]
+    title = v.title
     if v.kind == "indicator":
         return CycleData(v.id, title, v.excess_work, v.n_rpm, v.delta_value, v.J_e, areas_given=True)
     if v.kind == "step-moment":
@@ -449,7 +452,7 @@ class CheckReport:
     """The result of a check: items with verdicts, diagnosed mistakes, and what the overlay needs."""
 
     problem: str
-    title: str
+    title: Title | str                    # the problem's title; the text reports print the English
     student: str
     items: tuple
     page: Page
@@ -501,7 +504,7 @@ class CheckReport:
     # -- output
     def to_dict(self) -> dict:
         """The report as a JSON-ready dict."""
-        return {"problem": self.problem, "title": self.title, "student": self.student, "ok": self.ok,
+        return {"problem": self.problem, "title": str(self.title), "student": self.student, "ok": self.ok,
                 "summary": self.summary(),
                 "page": {"size": self.page.size, "orientation": self.page.orientation},
                 "items": [i.to_dict() for i in self.items],
@@ -1116,7 +1119,8 @@ def _overlay(report: CheckReport, notation) -> Scene:
     data = report.data
     els: list[Element] = []
     red = ws.RED
-    title = f"Overlay: {report.problem} — {report.title}" + (f" — {report.student}" if report.student else "")
+    title = (f"Overlay: {report.problem} — {Title.of(report.title).title_in(nt.code)}"
+             + (f" — {report.student}" if report.student else ""))
     els.append(Text((12.0, 12.0), ws.markup.literal(title), size_mm=3.2, bold=True, name="overlay-title"))
     els.append(Text((12.0, 17.0), "print at 100 % (no scaling) on transparent film; check: the bar below is 100 mm",
                     size_mm=2.6, name="overlay-howto"))

@@ -45,7 +45,9 @@ from graphmethods.scene import markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, given_angle_scale, given_scale
+from graphmethods.sheets.layout import (
+    TEXT_MM, TITLE_MM, Occupancy, Sheet, given_angle_scale, given_scale, problem_title,
+)
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
@@ -369,9 +371,33 @@ def as_study(obj, positions: int = 12):
                      f"graphmethods.kinematics.read_case, got {type(obj).__name__}")
 
 
-def problem_text(study) -> str:
-    name = getattr(study.case, "name", "") or getattr(study.case, "kind", "")
-    return f"{name}, m = {study.m}"
+def problem_text(study, nt="en") -> str:
+    """The problem's title (its kind when it has none) and the number of positions, in the notation's language.
+
+    Parameters
+    ----------
+    study : Study
+        A linkage study; its problem file's title (translated for a reference case, see
+        :func:`graphmethods.problems.reference_cases.title_of`) and its ``m``.
+    nt : str or Notation
+        The figure's notation.
+
+    Returns
+    -------
+    str
+        ``"<title>, m = <m>"`` (Chinese: a full-width comma).
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from graphmethods.dynamics.study import Study
+    >>> from graphmethods.kinematics import read_case
+    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+    >>> problem_text(st, "ru"), problem_text(st, "zh")
+    ('дезаксиальный кривошипно-ползунный пресс, m = 12', '偏置曲柄滑块压力机，m = 12')
+    """
+    name = problem_title(study.case, nt) or getattr(study.case, "kind", "")
+    return f"{name}{'，' if get_notation(nt).code == 'zh' else ', '}m = {study.m}"
 
 
 def fine_angles(m: int, per_interval: int = 30) -> np.ndarray:
@@ -552,7 +578,7 @@ def _graph_scene(study, *, nt, title, page, title_block, name, curves, y_lo, y_h
     """A whole A4 landscape figure of one φ graph (the standalone figures)."""
     from graphmethods.scene import Page
 
-    sheet = SheetFrame(nt=nt, page=page, title=title, problem=problem_text(study), title_block=title_block,
+    sheet = SheetFrame(nt=nt, page=page, title=title, problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
     y_label = quantity(nt, y_symbol, y_unit)
@@ -688,7 +714,7 @@ def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, 
 
     J_sym = sym(nt, "J_e")
     sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'inertia_turned')}: {J_sym}(φ)",
-                       problem=problem_text(study), title_block=title_block,
+                       problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "portrait", frame=True))
     x0, y0, x1, y1 = sheet.box
     ox, oy = x0 + 16.0, sheet.top + 16.0
@@ -988,7 +1014,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     F = np.asarray(ld.force, dtype=float)
     F_abs = float(np.hypot(*F))
     sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'lever')}, {word(nt, 'position')} {k}",
-                       problem=problem_text(study), title_block=title_block,
+                       problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
     nb = get_notation(nt).number

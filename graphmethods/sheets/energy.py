@@ -28,7 +28,9 @@ from graphmethods.scene import markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Group, label_bbox
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale
+from graphmethods.sheets.layout import (
+    TEXT_MM, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale, problem_title,
+)
 
 SMALL_MM = 2.8          # tick labels, values beside vectors
 TABLE_MM = 3.8          # the excess-work table
@@ -37,14 +39,13 @@ OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
 # ----------------------------------------------------------------------------- common parts
 
-def _cycle(obj):
-    """(ExcessWork, problem text) from a cycle or a problem that has one."""
+def _cycle(obj, nt):
+    """(ExcessWork, problem text in the notation's language) from a cycle or a problem that has one."""
     if hasattr(obj, "E") and hasattr(obj, "work"):
         return obj, ""
     cyc = getattr(obj, "excess_work", None)
     if cyc is not None and hasattr(cyc, "E"):
-        pid, title = getattr(obj, "id", ""), getattr(obj, "title", "")
-        return cyc, f"{pid}: {title}" if pid and title else (title or pid)
+        return cyc, problem_title(obj, nt)
     raise InputError(f"expected an excess-work cycle (graphmethods.dynamics.excess_work) or a problem with one, "
                      f"got {type(obj).__name__}")
 
@@ -187,8 +188,8 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
     >>> [sc.caption() for sc in s.scales()]
     ['μ_φ = 0.03491 rad/mm (2°/mm)', 'μ_M = 0.5 N·m/mm']
     """
-    ew, prob = _cycle(cycle)
     nt = get_notation(notation)
+    ew, prob = _cycle(cycle, nt)
     if ew.M_d is None or ew.phi is None:
         raise InputError("moment_diagram needs the moment curves M_d and M_r; this cycle was given as areas, works "
                          "or levels, which fix no curves. Draw energy_indicator or excess_work_table instead")
@@ -364,8 +365,8 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
     >>> s.element("table").rows[0]
     ('Участок', 'Избыточная работа A, Дж', 'Точка', 'Приращение энергии ΔT, Дж', '')
     """
-    ew, prob = _cycle(cycle)
     nt = get_notation(notation)
+    ew, prob = _cycle(cycle, nt)
     has_scales = ew.areas_mm2 is not None and ew.mu_M is not None and ew.mu_phi is not None
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("excess_work_table"),
                    problem=prob if problem is None else problem, title_block=title_block,
@@ -461,8 +462,8 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
     >>> round(record(s).vector_length_mm("vector-bc"), 6)          # 550 J at 5 J/mm
     110.0
     """
-    ew, prob = _cycle(cycle)
     nt = get_notation(notation)
+    ew, prob = _cycle(cycle, nt)
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("energy_indicator"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
@@ -584,8 +585,8 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
     >>> s.element("axis-E").label, s.element("label-T_max").text
     ('T, кГ·м', 'T_{max} = 55,71 кГ·м, φ = 90°')
     """
-    ew, prob = _cycle(cycle)
     nt = get_notation(notation)
+    ew, prob = _cycle(cycle, nt)
     if ew.M_d is None or ew.phi is None:
         raise InputError("energy_graph draws ΔE against φ and needs the moment curves; this cycle was given as "
                          "areas, works or levels, which fix no angles. Draw energy_indicator instead")

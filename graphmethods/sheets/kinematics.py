@@ -46,6 +46,7 @@ from functools import cached_property
 import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
+from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Dimension, Group
@@ -162,12 +163,12 @@ class _Linkage:
             case = obj.case
             same = (m is None or m == obj.m) and (omega_1 is None or omega_1 == case.omega_m)
             return cls(case.mechanism, m=obj.m if m is None else m,
-                       omega_1=case.omega_m if omega_1 is None else float(omega_1), problem=case.name,
+                       omega_1=case.omega_m if omega_1 is None else float(omega_1), problem=title_of(case),
                        n_rpm=case.n_rpm if omega_1 is None else None,
                        positions=(lambda: obj.positions) if same else None, plans=(lambda: obj.plans) if same else None)
         if isinstance(obj, Case):
             return cls(obj.mechanism, m=m, omega_1=obj.omega_m if omega_1 is None else float(omega_1),
-                       problem=obj.name, n_rpm=obj.n_rpm if omega_1 is None else None)
+                       problem=title_of(obj), n_rpm=obj.n_rpm if omega_1 is None else None)
         if isinstance(obj, VelocityPlans):
             if omega_1 is not None and omega_1 != obj.omega_1:
                 raise InputError(f"these velocity plans are for ω₁ = {obj.omega_1:g} rad/s, not {omega_1:g}; "
@@ -411,7 +412,8 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     page : Page, optional
         The sheet (A4 landscape with frame and title block by default).
     title, problem : str, optional
-        Title (markup) and the problem's name in the title block (default: the problem file's name).
+        Title (markup) and the problem's name in the title block (default: the problem file's name, in
+        the notation's language when the file gives it in several).
 
     Raises
     ------

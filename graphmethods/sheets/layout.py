@@ -17,11 +17,13 @@ from __future__ import annotations
 import math
 
 from graphmethods.errors import InputError
+from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, TitleBlock, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label, place_label
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
+from graphmethods.titles import text_in
 
 Box = tuple[float, float, float, float]
 
@@ -180,20 +182,54 @@ class Occupancy:
         return None
 
 
-def standard_page(page: Page | None, *, title: str, problem: str, scales: tuple[str, ...], nt,
+def standard_page(page: Page | None, *, title: str, problem, scales: tuple[str, ...], nt,
                   title_block: bool = True) -> Page:
     """The page of a sheet: A4 landscape with a frame and a title block unless ``page`` is given.
 
     A given page is used as it is, with the title block added when it has none and
-    ``title_block`` is true.
+    ``title_block`` is true. ``problem`` is text, or a :class:`~graphmethods.titles.Title` (or
+    a mapping by language) shown in the notation's language.
     """
     nt = get_notation(nt)
-    tb = TitleBlock(title, problem, scales, headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")))
+    tb = TitleBlock(title, text_in(problem, nt.code), scales,
+                    headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")))
     if page is None:
         return Page("A4", "landscape", frame=True, title_block=tb if title_block else None)
     if page.title_block is None and title_block:
         return page.with_(title_block=tb)
     return page
+
+
+def problem_title(obj, nt) -> str:
+    """A problem's title in the notation's language, after its id when it has one: ``"W1: …"``.
+
+    Parameters
+    ----------
+    obj : object
+        A problem with a ``title`` (a :class:`~graphmethods.titles.Title`, a mapping by language
+        or text) and perhaps an ``id``, such as :func:`graphmethods.problems.w1` or a problem file
+        read by :func:`graphmethods.kinematics.read_case` (a reference case gets our translations,
+        :func:`graphmethods.problems.reference_cases.title_of`); anything else gives ``""``.
+    nt : str or Notation
+        The figure's notation; its language picks the title (English when it is missing).
+
+    Returns
+    -------
+    str
+        Plain text (the title block draws it literally); Chinese takes a full-width colon.
+
+    Examples
+    --------
+    >>> from graphmethods import problems
+    >>> problem_title(problems.w3(), "ru"), problem_title(problems.w3(), "zh")
+    ('W3: Ступенчатый момент сопротивления: маховик', 'W3：阶梯形阻抗力矩下的飞轮转动惯量')
+    """
+    code = get_notation(nt).code
+    pid = str(getattr(obj, "id", "") or "")
+    title = title_of(obj).title_in(code)
+    if pid and title:
+        return f"{pid}{'：' if code == 'zh' else ': '}{title}"
+    return title or pid
 
 
 def angle_deg_text(phi_rad: float, nt) -> str:
@@ -210,6 +246,8 @@ class Sheet:
 
     ``top`` is where the drawing may begin (``top_gap_mm`` below the title), ``caption_y`` the
     baseline of the scale captions; ``occ`` holds what is drawn so labels can keep off it.
+    ``problem`` may be text or a :class:`~graphmethods.titles.Title` (or a mapping by language):
+    the title block shows it in the notation's language.
     """
 
     def __init__(self, *, nt, page, title, problem, title_block, has_scales: bool = True,

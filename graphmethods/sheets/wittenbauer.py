@@ -130,15 +130,25 @@ class DiagramData:
         return float(self.J_e.max()), T_hi, T_lo
 
 
-def diagram_data(source, *, tangents: str = "exact") -> DiagramData:
-    """DiagramData from a Study (or a problem Case), or from a WittenbauerResult (its data and tangents)."""
+def diagram_data(source, *, tangents: str = "exact", notation="en") -> DiagramData:
+    """DiagramData from a Study (or a problem Case), or from a WittenbauerResult (its data and tangents).
+
+    Parameters
+    ----------
+    source : Study, Case or WittenbauerResult
+        What to draw.
+    tangents : str
+        ``"exact"`` or ``"textbook"`` forms of tan ψ (a Study's source only).
+    notation : str or Notation
+        The language of the problem's name (:attr:`DiagramData.problem`).
+    """
     if isinstance(source, WittenbauerResult):
         return DiagramData(np.asarray(source.x_mm) * source.mu_J, np.asarray(source.y_mm) * source.mu_T,
                            np.asarray(source.phi), source.omega_m, source.delta, source.tangents)
     study = as_study(source)
     return DiagramData(np.asarray(study.J_e, dtype=float), np.asarray(study.delta_T, dtype=float),
                        np.asarray(study.phi, dtype=float), float(study.omega_m), float(study.delta), tangents,
-                       problem_text(study), estimate=study.wittenbauer if tangents == "exact" else None)
+                       problem_text(study, notation), estimate=study.wittenbauer if tangents == "exact" else None)
 
 
 # ----------------------------------------------------------------------------- geometry on paper
@@ -464,8 +474,8 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     >>> s.element("label-kl").text, [sc.caption("zh") for sc in s.scales()]
     ('kl = 66.31 mm', ['μ_E = 10 J/mm', 'μ_J = 0.02 kg·m²/mm'])
     """
-    data = diagram_data(source, tangents=tangents)
     nt = get_notation(notation)
+    data = diagram_data(source, tangents=tangents, notation=nt)
     sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "wittenbauer"),
                        problem=data.problem if problem is None else problem, title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
@@ -550,10 +560,10 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     study = as_study(study)
     nt = get_notation(notation)
     m = study.m
-    sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study),
+    sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study, nt),
                        title_block=title_block, default_page=_sheet_page(page))
     x0, y0, x1, y1 = sheet.box
-    data = diagram_data(study, tangents=tangents)
+    data = diagram_data(study, tangents=tangents, notation=nt)
     J_k, dT_k, phi_k = data.J_e, data.delta_T, data.phi
     phi = fine_angles(m)
     J_fine = inertia_curve(study, phi).J_e

@@ -57,6 +57,7 @@ from graphmethods.scene import Axis, Page, Scale, Scene, Table, Text, Vector, ma
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
+from graphmethods.titles import Title
 from graphmethods.units import omega_from_n
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
@@ -89,19 +90,22 @@ WORDS = {
     "sense": ("sense", "направление", "转向"),
     "ray_upper": ("ψ_{max} ray", "луч ψ_{max}", "ψ_{max} 射线"),
     "ray_lower": ("ψ_{min} ray", "луч ψ_{min}", "ψ_{min} 射线"),
-    # titles
-    "title:indicator": ("Energy indicator diagram and flywheel",
-                        "Векторная диаграмма избыточных работ и маховик",
-                        "能量指示图与飞轮转动惯量"),
-    "title:step-moment": ("Flywheel for a given resisting moment",
-                          "Маховик по заданному моменту сопротивления",
-                          "已知阻抗力矩求飞轮转动惯量"),
-    "title:velocity-plan": ("Velocity plan of a slider-crank mechanism",
-                            "План скоростей кривошипно-ползунного механизма",
-                            "曲柄滑块机构的速度多边形"),
-    "title:wittenbauer": ("Flywheel by the energy–mass (Wittenbauer) diagram",
-                          "Маховик по диаграмме энергомасс (Виттенбауэра)",
-                          "用能量–质量（维滕鲍尔）图求飞轮转动惯量"),
+}
+
+# the title of each kind of worksheet problem (Variant.title)
+TITLES = {
+    "indicator": Title.of({"en": "Energy indicator diagram and flywheel",
+                           "ru": "Векторная диаграмма избыточных работ и маховик",
+                           "zh": "能量指示图与飞轮转动惯量"}),
+    "step-moment": Title.of({"en": "Flywheel for a given resisting moment",
+                             "ru": "Маховик по заданному моменту сопротивления",
+                             "zh": "已知阻抗力矩求飞轮转动惯量"}),
+    "velocity-plan": Title.of({"en": "Velocity plan of a slider-crank mechanism",
+                               "ru": "План скоростей кривошипно-ползунного механизма",
+                               "zh": "曲柄滑块机构的速度多边形"}),
+    "wittenbauer": Title.of({"en": "Flywheel by the energy–mass (Wittenbauer) diagram",
+                             "ru": "Маховик по диаграмме энергомасс (Виттенбауэра)",
+                             "zh": "用能量–质量（维滕鲍尔）图求飞轮转动惯量"}),
 }
 
 # statements: the given data, then the tasks (one line each); {placeholders} are filled per variant
@@ -306,6 +310,11 @@ class Variant:
     def id(self) -> str:
         """``"KIND:SEED:NUMBER"``; ``graphmethods check`` accepts it in place of a problem file."""
         return f"{self.kind}:{self.seed}:{self.number}"
+
+    @property
+    def title(self) -> Title:
+        """The worksheet's title in en, ru and zh (``title.title_in(lang)``), the same for every variant of a kind."""
+        return TITLES[self.kind]
 
     def data(self) -> dict:
         """The variant's inputs, JSON-ready (what a problem file holds)."""
@@ -1342,7 +1351,7 @@ class _Sheet:
 
     def header(self) -> None:
         nt = self.nt
-        self.add(Text((X0, 19.0), word(f"title:{self.v.kind}", nt), size_mm=4.6, bold=True, name="title"),
+        self.add(Text((X0, 19.0), self.v.title.title_in(nt.code), size_mm=4.6, bold=True, name="title"),
                  Text((X1, 19.0), f"{word('variant', nt)} {self.v.number}", size_mm=4.6, bold=True, anchor="end",
                       name="variant"))
         if self.key:
@@ -1432,7 +1441,7 @@ class _Sheet:
         kind = "key" if self.key else "student"
         if self.y > 281.0:
             raise InputError(f"{self.v.id}: the {kind} page runs {self.y - 281.0:.0f} mm past its frame")
-        return Scene(PAGE, tuple(self.els), title=f"{word('title:' + self.v.kind, self.nt)} — "
+        return Scene(PAGE, tuple(self.els), title=f"{self.v.title.title_in(self.nt.code)} — "
                      f"{word('variant', self.nt)} {self.v.number}" + (f" ({word('key', self.nt)})" if self.key else ""),
                      notation=self.nt.code, name=f"{self.v.kind}-{kind}-{self.v.number:02d}",
                      extra_scales=tuple(scales))
