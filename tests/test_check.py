@@ -4,6 +4,7 @@ import argparse
 import json
 import math
 import pathlib
+import re
 import sys
 
 import numpy as np
@@ -263,7 +264,7 @@ def test_overlay_is_the_correct_construction_at_the_students_scales_with_wrong_i
         strokes = {c.style.stroke for c in rec.in_group(gid, "path")}
         assert strokes == ({ws.RED} if i == 2 else {"#000000"})
     red_texts = [c.data.text for c in rec.calls if c.kind == "text" and c.data.color == ws.RED]
-    assert "−20 mm?" in red_texts and any("sign_flipped" in t for t in red_texts)
+    assert "−20 mm?" in red_texts and "arrow c–d: −20 (expected 20) mm — sign flipped in the staircase" in red_texts
     x0, y0, x1, y1 = scene.bbox()
     assert x0 >= 0 and y0 >= 0 and x1 <= 297 and y1 <= 210
     # the origin can be put where the student's is
@@ -292,6 +293,142 @@ def test_overlay_regions_and_plan_segments_are_to_scale():
     rec = record(r.overlay())
     assert rec.vector_length_mm("plan-pb") == pytest.approx(60.7076, abs=1e-3)
     assert {c.style.stroke for c in rec.in_group("plan-ab", "path")} == {ws.RED}
+
+
+
+# ----------------------------------------------------------------------------- the overlay's language
+
+#: English words the overlay may draw (its own wording, the item labels and the mistake names)
+ENGLISH = ("Overlay", "print at", "scaling", "transparent", "film", "the bar below", "expected", "carried over",
+           "wrong", " or ", "area", "work", "arrow", "number of", "point of", "angle of", "position of",
+           "sense of", "sign flipped", "staircase", "degrees", "radians", "used as", "rev/min", "scale factor",
+           "forgotten", "twice", "subtracted", "instead of", "clockwise")
+#: the names of the usual mistakes on a Russian and a Chinese overlay (ТММ and 机械原理 wording)
+NAMES = {
+    "ru": {"sign_flipped": "перепутан знак избыточной работы", "degrees_as_radians": "градусы приняты за радианы",
+           "n_as_omega": "n (об/мин) принято за ω (рад/с)", "scale_forgotten": "не учтён масштабный коэффициент",
+           "scale_twice": "масштабный коэффициент учтён дважды", "J_e_not_subtracted": "не вычтен Jп",
+           "delta_not_halved": "(1 ± δ) вместо (1 ± δ/2)"},
+    "zh": {"sign_flipped": "盈亏功正负号颠倒", "degrees_as_radians": "把度当作弧度",
+           "n_as_omega": "把 n (r/min) 当作 ω (rad/s)", "scale_forgotten": "漏乘比例尺", "scale_twice": "比例尺乘了两次",
+           "J_e_not_subtracted": "未减去 Je", "delta_not_halved": "用 (1 ± δ) 代替了 (1 ± δ/2)"},
+}
+OWN = {"ru": ("Накладка для проверки: ", "печатать на прозрачной плёнке в масштабе 100 %", "100 мм", "должно быть",
+              "следствие предыдущей ошибки", "неверно"),
+       "zh": ("叠加校核图：", "按 100 % 比例（不缩放）打印在透明胶片上", "100 mm", "应为", "由前面的错误导致", "错误")}
+
+
+def red_list(scene):
+    """The overlay's red list of wrong items, one text per line."""
+    return [c.data.text for c in record(scene).calls if c.kind == "text" and c.groups[0].startswith("wrong-list")]
+
+
+def test_every_usual_mistake_has_a_name_in_every_notation():
+    for code in ck.MISTAKES:
+        names = ck.WORDS[code]
+        assert len(names) == 3 and all(names) and len(set(names)) == 3, code
+    assert set(NAMES["ru"]) == set(NAMES["zh"]) == set(ck.MISTAKES)
+
+
+@pytest.mark.parametrize("nt", ["ru", "zh"])
+@pytest.mark.parametrize("name", sorted(PLANTED))
+def test_the_overlay_speaks_its_notation(name, nt):
+    r = ck.check(problem_of(ANSWERS / name), ANSWERS / name)
+    planted, carried = PLANTED[name]
+    assert found(r) == planted and {i.key for i in r.carried} == carried          # still exactly the planted ones
+    scene = r.overlay(notation=nt)
+    texts = record(scene).texts()
+    everything = "\n".join(texts)
+    for word in ENGLISH:
+        assert word not in everything, (word, [t for t in texts if word in t])
+    for code in ck.MISTAKES:
+        assert code not in everything
+    if nt == "ru":
+        assert not re.search(r"\bmm\b", everything) and not re.search(r"\d\.\d", everything)   # мм, decimal comma
+    for word in OWN[nt][:3]:
+        assert word in everything
+    lines = red_list(scene)
+    assert len(lines) == len(r.wrong) + len(r.carried)
+    assert all(OWN[nt][3] in line for line in lines)
+    for code in {c for c, _ in planted if c}:
+        assert any(line.endswith(NAMES[nt][code]) for line in lines), code
+    assert sum(line.endswith(OWN[nt][4]) for line in lines) == len(carried)
+    assert sum(line.endswith(OWN[nt][5]) for line in lines) == sum(1 for c, _ in planted if c is None)
+
+
+def test_the_overlay_lines_in_three_notations():
+    r = ck.check("W1", ANSWERS / "w1_mistakes.toml")
+    assert red_list(r.overlay(notation="ru")) == [
+        "вектор c–d: −20 (должно быть 20) мм — перепутан знак избыточной работы",
+        "Aизб: 775 (должно быть 575) Дж — следствие предыдущей ошибки",
+        "ωmax: 63,04 (должно быть 62,94) рад/с — (1 ± δ) вместо (1 ± δ/2)",
+        "ωmin: 62,62 (должно быть 62,73) рад/с — (1 ± δ) вместо (1 ± δ/2)",
+        "Jм: 0,6458 (должно быть 43,69) кг·м² — n (об/мин) принято за ω (рад/с)"]
+    assert red_list(r.overlay(notation="zh")) == [
+        "矢量 c–d：−20（应为 20）mm——盈亏功正负号颠倒",
+        "ΔWmax：775（应为 575）J——由前面的错误导致",
+        "ωmax：63.04（应为 62.94）rad/s——用 (1 ± δ) 代替了 (1 ± δ/2)",
+        "ωmin：62.62（应为 62.73）rad/s——用 (1 ± δ) 代替了 (1 ± δ/2)",
+        "JF：0.6458（应为 43.69）kg·m²——把 n (r/min) 当作 ω (rad/s)"]
+    en = r.overlay(notation="en")
+    texts = record(en).texts()
+    assert texts[:3] == ["Overlay: W1 — Diesel generator: energy indicator diagram — Example student (mistakes)",
+                         "print at 100 % (no scaling) on transparent film; check: the bar below is 100 mm", "100 mm"]
+    assert red_list(en) == [
+        "arrow c–d: −20 (expected 20) mm — sign flipped in the staircase",
+        "ΔWmax: 775 (expected 575) J — carried over",
+        "ωmax: 63.04 (expected 62.94) rad/s — (1 ± δ) instead of (1 ± δ/2)",
+        "ωmin: 62.62 (expected 62.73) rad/s — (1 ± δ) instead of (1 ± δ/2)",
+        "JF: 0.6458 (expected 43.69) kg·m² — n (rev/min) used as ω (rad/s)"]
+    r = ck.check("press", ANSWERS / "press_wittenbauer_mistakes.toml")
+    assert red_list(r.overlay(notation="ru"))[1:3] == ["kl: 132,1 (должно быть 126,7) мм — не вычтен Jп",
+                                                       "положение ωmin: 7 (должно быть 5) — неверно"]
+    assert "kl = 132,1 мм?" in record(r.overlay(notation="ru")).texts()
+    assert "ωmin 所在位置：7（应为 5）——错误" in red_list(r.overlay(notation="zh"))
+
+
+def _every_kind_of_item():
+    """Reports whose items cover every key the check makes (counts, angles, senses included)."""
+    reports = [ck.check(problem_of(p), p) for p in FILES]
+    reports.append(ck.check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [10, -110, 20]},
+                                   "results": {"works_J": [1.0, 2.0]}}))
+    reports.append(ck.check("W3", {"moment_diagram": {"mu_M": 0.5, "mu_phi_deg": 2.5, "areas_mm2": [1, 2, 3]},
+                                   "results": {"omega_max_at": 40.0}}))
+    return reports
+
+
+def test_every_item_label_is_in_the_overlays_notation():
+    from graphmethods.scene import markup
+
+    keys = set()
+    for r in _every_kind_of_item():
+        for it in r.items:
+            keys.add(re.sub(r"\[\d+\]", "[]", it.key))
+            en = markup.plain(ck._overlay_label(it, r, "en"))
+            assert en == it.label.replace("_", ""), it.key               # the report's label, subscripts drawn
+            for nt in ("ru", "zh"):
+                label = ck._overlay_label(it, r, nt)
+                base = "".join(t for t, shift in markup.parse(label) if shift == 0)     # subscripts aside
+                assert not any(w.strip() in label for w in ENGLISH), (it.key, label)
+                assert not re.search(r"[A-Za-z]{4,}", base), (it.key, label)
+    assert {"moment_diagram.areas_mm2", "results.works_J", "energy_indicator.arrows_mm", "results.omega_2_sense",
+            "energy_mass.omega_min_at", "results.omega_max_at", "energy_mass.tan_psi_min"} <= keys
+    sense = next(it for r in _every_kind_of_item() for it in r.items if it.key == "results.omega_2_sense")
+    assert ck._overlay_value(sense.student, "ru") == "по часовой стрелке"
+    assert ck._overlay_value("b or c", "zh") == "b 或 c" and ck._overlay_value(-34.36, "ru") == "−34,36"
+
+
+def test_a_long_heading_or_line_is_broken_to_stay_on_the_page():
+    a = ck.read_answers(ANSWERS / "w3_mistakes.toml")                  # A4 portrait
+    a["student"] = "Иванова Анна Сергеевна, группа МТ-21, вариант 7 (работа переделана после консультации)"
+    scene = ck.check("W3", a).overlay(notation="ru")
+    rec = record(scene)
+    heading = [c for c in rec.calls if c.kind == "text" and c.data.bold]
+    assert len(heading) >= 2
+    x0, y0, x1, y1 = scene.bbox()
+    assert x0 >= 0 and x1 <= scene.page.width_mm
+    lines = red_list(scene)
+    assert all(ws.markup.text_width_mm(t, 2.6, markup=False) <= scene.page.width_mm - 24.0 for t in lines)
 
 
 def _args(*argv):

@@ -26,7 +26,8 @@ def add_parser(sub) -> None:
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file")
     p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
     p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf or .png) at the student's page size")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the overlay")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
+                   help="notation and language of the overlay (the report stays English)")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
     p.set_defaults(func=run)
 

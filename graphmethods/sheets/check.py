@@ -80,6 +80,55 @@ MISTAKES = {
     "delta_not_halved": "(1 ± δ) used instead of (1 ± δ/2)²",
 }
 
+# ----------------------------------------------------------------------------- words (en, ru, zh)
+#: what the overlay writes, (en, ru, zh), as markup; ``{placeholders}`` are filled by :func:`_w`. The
+#: keys of :data:`MISTAKES` name the mistakes (short, for the list of wrong items); the text, Markdown
+#: and JSON reports stay English.
+WORDS = {
+    "overlay":        ("Overlay", "Накладка для проверки", "叠加校核图"),
+    "heading":        ("{overlay}: {rest}", "{overlay}: {rest}", "{overlay}：{rest}"),
+    "howto":          ("print at 100 % (no scaling) on transparent film; check: the bar below is {bar}",
+                       "печатать на прозрачной плёнке в масштабе 100 % (без подгонки по размеру); "
+                       "проверка: отрезок внизу равен {bar}",
+                       "按 100 % 比例（不缩放）打印在透明胶片上；检查：下方线段长 {bar}"),
+    # one wrong item; {unit} is empty for a position (the double space it leaves is closed up)
+    "item":           ("{label}: {student} (expected {expected}) {unit} — {why}",
+                       "{label}: {student} (должно быть {expected}) {unit} — {why}",
+                       "{label}：{student}（应为 {expected}）{unit}——{why}"),
+    "or":             ("{a} or {b}", "{a} или {b}", "{a} 或 {b}"),
+    "carried":        ("carried over", "следствие предыдущей ошибки", "由前面的错误导致"),
+    "wrong":          ("wrong", "неверно", "错误"),
+    # the items (from Item.key): {i} an interval such as c–d, {omega} a speed such as ω_{max}
+    "area":           ("area {i}", "площадь {i}", "面积 {i}"),
+    "work":           ("work {i}", "избыточная работа {i}", "盈亏功 {i}"),
+    "arrow":          ("arrow {i}", "вектор {i}", "矢量 {i}"),
+    "n_areas":        ("number of intervals", "число участков", "区间数"),
+    "n_works":        ("number of intervals (works)", "число участков (работы)", "区间数（盈亏功）"),
+    "n_arrows":       ("number of arrows", "число векторов", "矢量数"),
+    "point_of":       ("point of {omega}", "точка {omega}", "{omega} 所在点"),
+    "angle_of":       ("angle of {omega}", "угол φ при {omega}", "{omega} 所在转角 φ"),
+    "position_of":    ("position of {omega}", "положение {omega}", "{omega} 所在位置"),
+    "sense_of":       ("sense of {omega}", "направление {omega}", "{omega} 的转向"),
+    # the usual mistakes (the keys of MISTAKES), short
+    "sign_flipped":   ("sign flipped in the staircase", "перепутан знак избыточной работы",
+                       "盈亏功正负号颠倒"),
+    "degrees_as_radians": ("degrees used as radians", "градусы приняты за радианы", "把度当作弧度"),
+    "n_as_omega":     ("n (rev/min) used as ω (rad/s)", "n (об/мин) принято за ω (рад/с)",
+                       "把 n (r/min) 当作 ω (rad/s)"),
+    "scale_forgotten": ("scale factor forgotten", "не учтён масштабный коэффициент", "漏乘比例尺"),
+    "scale_twice":    ("scale factor applied twice", "масштабный коэффициент учтён дважды", "比例尺乘了两次"),
+    "J_e_not_subtracted": ("{J_e} not subtracted", "не вычтен {J_e}", "未减去 {J_e}"),
+    # ω_max = ω_m(1 + δ) for ω_m(1 + δ/2), and squared in tan ψ (and in J_F through ω_max² − ω_min²)
+    "delta_not_halved": ("(1 ± δ) instead of (1 ± δ/2)", "(1 ± δ) вместо (1 ± δ/2)", "用 (1 ± δ) 代替了 (1 ± δ/2)"),
+}
+
+
+def _w(nt, key: str, **kw) -> str:
+    """A text of :data:`WORDS` in the notation's language, ``{placeholders}`` filled from ``kw``."""
+    text = WORDS[key][("en", "ru", "zh").index(get_notation(nt).code)]
+    return text.format(**kw) if kw else text
+
+
 #: the answers file: section -> allowed keys (top-level keys: problem, student)
 SCHEMA = {
     "page": ("size", "orientation"),
@@ -564,7 +613,26 @@ class CheckReport:
 
     def overlay(self, *, notation="en") -> Scene:
         """The correct construction at the student's scales on a page the size of theirs, to print 1:1 on
-        film; the student's wrong items in red."""
+        film; the student's wrong items in red.
+
+        Parameters
+        ----------
+        notation : str or Notation
+            ``"en"``, ``"ru"`` or ``"zh"``: the symbols, units, number style and words of everything the
+            overlay draws (heading, how to print it, the list of wrong items with the names of the
+            mistakes, see :data:`WORDS`). The text, Markdown and JSON reports stay English.
+
+        Returns
+        -------
+        Scene
+
+        Examples
+        --------
+        >>> from graphmethods.render.recording import record
+        >>> rep = check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [10, -110, -20, -25, 100, -5, 10]}})
+        >>> [t for t in record(rep.overlay(notation="ru")).texts() if t.startswith("вектор")]
+        ['вектор c–d: −20 (должно быть 20) мм — перепутан знак избыточной работы']
+        """
         return _overlay(self, notation)
 
 
@@ -1108,6 +1176,64 @@ def _wrong_index(report: CheckReport, prefix: str) -> dict:
     return out
 
 
+_KEY = re.compile(r"(\w+)\.(\w+?)(?:\[(\d+)\])?")
+_SYMBOL_LABELS = {"omega_max": "ω_{max}", "omega_min": "ω_{min}", "omega_2": "ω_{2}", "v_A": "v_{A}", "v_B": "v_{B}",
+                  "v_BA": "v_{BA}", "v_S2": "v_{S2}", "pa_mm": "pa", "pb_mm": "pb", "ab_mm": "ab", "ps2_mm": "ps_{2}",
+                  "kl_mm": "kl"}
+
+
+def _overlay_label(it: Item, report: CheckReport, nt) -> str:
+    """An item's label in the overlay's notation (markup), made from its key (``Item.label`` is English)."""
+    m = _KEY.fullmatch(it.key)
+    section, name, idx = (m.group(1), m.group(2), m.group(3)) if m else ("", "", None)
+    per_interval = {"areas_mm2": ("area", "n_areas"), "works_J": ("work", "n_works"),
+                    "arrows_mm": ("arrow", "n_arrows")}
+    if name in per_interval:
+        if idx is None:
+            return _w(nt, per_interval[name][1])
+        L = report.data.cycle.labels
+        i = int(idx)
+        return _w(nt, per_interval[name][0], i=ws.markup.literal(f"{L[i]}–{L[i + 1]}"))
+    if name in ("omega_max_at", "omega_min_at"):
+        omega = f"ω_{{{name[6:9]}}}"
+        if section == "energy_mass":
+            return _w(nt, "position_of", omega=omega)
+        return _w(nt, "angle_of" if it.unit == "°" else "point_of", omega=omega)
+    if name == "omega_2_sense":
+        return _w(nt, "sense_of", omega="ω_{2}")
+    if name in ("tan_psi_max", "tan_psi_min"):
+        return f"{ws.sym('tan', nt)} ψ_{{{name[-3:]}}}"
+    if name in ("delta_W_max", "M_d", "omega_m", "J_F"):
+        return ws.sym(name, nt)
+    if name in _SYMBOL_LABELS:
+        return _SYMBOL_LABELS[name]
+    return ws.markup.literal(it.label)
+
+
+def _overlay_value(v, nt) -> str:
+    """A value of the list of wrong items: a number in the notation's style, or a position (``"b or c"``,
+    a sense ``"cw"``) in its words."""
+    if not isinstance(v, str):
+        return ws.num(v, nt)
+    parts = [ws.word(p, nt) if p in ("cw", "ccw") else ws.markup.literal(p) for p in v.split(" or ")]
+    text = parts[0]
+    for p in parts[1:]:
+        text = _w(nt, "or", a=text, b=p)
+    return text
+
+
+def _wrong_line(it: Item, report: CheckReport, nt) -> str:
+    """One line of the overlay's red list: label, the student's value, the expected one, the unit, and why."""
+    if it.mistakes:
+        sep = "、" if get_notation(nt).code == "zh" else ", "
+        why = sep.join(_w(nt, code, J_e=ws.sym("J_e", nt)) for code in it.mistakes)
+    else:
+        why = _w(nt, "carried" if it.verdict == "carried" else "wrong")
+    text = _w(nt, "item", label=_overlay_label(it, report, nt), student=_overlay_value(it.student, nt),
+              expected=_overlay_value(it.expected, nt), unit=ws.unit(it.unit, nt), why=why)
+    return re.sub(" {2,}", " ", text)
+
+
 def _overlay(report: CheckReport, notation) -> Scene:
     from graphmethods.scene.elements import Frame
     from graphmethods.sheets.layout import Occupancy
@@ -1119,25 +1245,29 @@ def _overlay(report: CheckReport, notation) -> Scene:
     data = report.data
     els: list[Element] = []
     red = ws.RED
-    title = (f"Overlay: {report.problem} — {Title.of(report.title).title_in(nt.code)}"
-             + (f" — {report.student}" if report.student else ""))
-    els.append(Text((12.0, 12.0), ws.markup.literal(title), size_mm=3.2, bold=True, name="overlay-title"))
-    els.append(Text((12.0, 17.0), "print at 100 % (no scaling) on transparent film; check: the bar below is 100 mm",
-                    size_mm=2.6, name="overlay-howto"))
+    rest = f"{report.problem} — {Title.of(report.title).title_in(nt.code)}" + (
+        f" — {report.student}" if report.student else "")
+    title = _w(nt, "heading", overlay=_w(nt, "overlay"), rest=ws.markup.literal(rest))
+    y = 12.0
+    for line in ws.wrap(title, (W - 24.0) / 1.15, 3.2):          # bold runs wider than the estimate
+        els.append(Text((12.0, y), line, size_mm=3.2, bold=True, name="overlay-title"))
+        y += 4.5
+    y += 0.5
+    for line in ws.wrap(_w(nt, "howto", bar=f"100 {ws.unit('mm', nt)}"), W - 24.0, 2.6):
+        els.append(Text((12.0, y), line, size_mm=2.6, name="overlay-howto"))
+        y += 3.6
     els.append(Line((12.0, H - 8.0), (112.0, H - 8.0), style=Style(width_mm=0.35), name="ruler"))
     for x in (12.0, 62.0, 112.0):
         els.append(Line((x, H - 10.0), (x, H - 6.0), style=Style(width_mm=0.35), name="ruler-tick"))
-    els.append(Text((114.0, H - 7.0), "100 mm", size_mm=2.6, name="ruler-text"))
-    # wrong items listed
-    y = 24.0
+    els.append(Text((114.0, H - 7.0), f"100 {ws.unit('mm', nt)}", size_mm=2.6, name="ruler-text"))
+    # wrong items listed, right-aligned at the right margin (a line too long for the page is broken)
+    y += 3.4
     for it in report.items:
         if it.verdict == "ok":
             continue
-        why = ", ".join(it.mistakes) or ("carried over" if it.verdict == "carried" else "wrong")
-        text = f"{it.label}: {_fmt(it.student)} (expected {_fmt(it.expected)}) {it.unit} — {why}"
-        els.append(ws.ColorText((W - 12.0, y), ws.markup.literal(text), size_mm=2.6, anchor="end", color=red,
-                                name="wrong-list"))
-        y += 3.8
+        for line in ws.wrap(_wrong_line(it, report, nt), W - 24.0, 2.6):
+            els.append(ws.ColorText((W - 12.0, y), line, size_mm=2.6, anchor="end", color=red, name="wrong-list"))
+            y += 3.8
     slots = _Slots(W, H, top=max(y, 24.0) + 4.0)
 
     def origin_for(section: str, size: tuple, offset: tuple) -> tuple:
@@ -1229,7 +1359,8 @@ def _overlay(report: CheckReport, notation) -> Scene:
                 y_student = o[1] - res.k_mm + float(wrong_kl.student)         # where the student's l would be
                 els.append(Line((o[0] - 6.0, y_student), (o[0] + 6.0, y_student), style=Style(stroke=red, width_mm=0.45),
                                 name="em-kl-student-mark"))
-                els.append(ws.ColorText((o[0] + 8.0, y_student + 1.0), f"kl = {_fmt(float(wrong_kl.student))} mm?",
+                kl = ws.value_unit(float(wrong_kl.student), "mm", nt)
+                els.append(ws.ColorText((o[0] + 8.0, y_student + 1.0), f"kl = {kl}?",
                                         size_mm=2.8, color=red, name="em-kl-student"))
             els.append(cross(o, "em-origin"))
     return Scene(page, tuple(els), title=title, notation=nt.code, name="overlay")
