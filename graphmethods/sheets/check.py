@@ -77,7 +77,7 @@ MISTAKES = {
     "scale_forgotten": "the scale factor forgotten (μ_M·μ_φ, μ_v, μ_T …)",
     "scale_twice": "the scale factor applied twice",
     "J_e_not_subtracted": "J_e not subtracted",
-    "delta_not_halved": "(1 ± δ) used instead of (1 ± δ/2)²",
+    "delta_not_halved": "ω_max, ω_min = ω_m(1 ± δ) used instead of ω_m(1 ± δ/2) (in tan ψ: (1 ± δ)² for (1 ± δ/2)²)",
 }
 
 # ----------------------------------------------------------------------------- words (en, ru, zh)
