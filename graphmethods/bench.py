@@ -349,7 +349,8 @@ def bench_worksheet(*, variants=30, kinds=("indicator", "step-moment", "velocity
 
 
 def plot_error_vs_time(rows: list[Row], path) -> None:
-    """A log–log plot of relative error against time for the flywheel methods (SVG, deterministic)."""
+    """A log–log plot of relative error against time for the flywheel methods: SVG, or PNG for a path ending
+    in .png (deterministic)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -378,7 +379,10 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
     ax.legend(fontsize=6, loc="lower left")
     ax.set_title("Speed against error: flywheel methods at m positions", fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, format="svg", metadata={"Date": None})
+    if str(path).lower().endswith(".png"):
+        fig.savefig(path, format="png", dpi=110, metadata={"Software": None})
+    else:
+        fig.savefig(path, format="svg", metadata={"Date": None})
     plt.close(fig)
 
 
