@@ -10,9 +10,9 @@ from hypothesis import strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    NOTATIONS, Axis, Dimension, Frame, Line, Page, Point, Region, Scale, ScaleCaptions, Scene, SignMark, Table,
-    Text, TitleBlock, Vector, format_mm, format_value, markup, nice_ticks, notation, pi_ticks, pick_angle_scale,
-    pick_scale,
+    NOTATIONS, Axis, Dimension, Frame, Line, Notation, Page, Point, Region, Scale, ScaleCaptions, Scene, SignMark,
+    Table, Text, TitleBlock, Vector, format_mm, format_value, in_language, markup, nice_ticks, notation, pi_ticks,
+    pick_angle_scale, pick_scale,
 )
 from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, walk
 
@@ -134,6 +134,20 @@ def test_profiles_have_the_same_keys_and_differ_where_traditions_do():
     assert ru.number(-0.5) == "−0,5"
     with pytest.raises(InputError, match="unknown notation"):
         notation("fr")
+
+
+def test_in_language_picks_the_notations_text_and_fills_placeholders():
+    words = ("position {k}", "положение {k}", "位置{k}")
+    assert [in_language(words, code) for code in ("en", "ru", "zh")] == list(words)
+    assert in_language(words, NOTATIONS["ru"], k=3) == "положение 3"
+    assert in_language(words, None, k="B") == "position B"            # None means en, as notation() takes it
+    assert in_language(("ψ_{{max}} = {p}",) * 3, "zh", p="30°") == "ψ_{max} = 30°"
+    assert in_language(("ψ_{max}",) * 3, "en") == "ψ_{max}"           # nothing to fill: markup kept as written
+    with pytest.raises(InputError, match="unknown notation 'fr'"):
+        in_language(words, "fr", k=3)
+    odd = Notation("fr", symbols={}, words={}, units={})      # a profile built by hand, not by notation()
+    with pytest.raises(InputError, match="unknown notation 'fr'; use one of en, ru, zh"):
+        in_language(words, odd)
 
 
 # ----------------------------------------------------------------------------- elements

@@ -24,7 +24,7 @@ from graphmethods.scene.elements import (
     Axis, Curve, Dimension, Element, Frame, Group, Line, Point, Polyline, Region, ScaleCaptions, SignMark, Table,
     Text, Vector, bbox, label_bbox, nice_ticks, pi_ticks,
 )
-from graphmethods.scene.notation import NOTATIONS, Notation
+from graphmethods.scene.notation import NOTATIONS, Notation, in_language
 from graphmethods.scene.notation import get as notation
 from graphmethods.scene.numbers import format_mm, format_value
 from graphmethods.scene.page import PAPER, Page, TitleBlock
@@ -35,6 +35,6 @@ from graphmethods.scene.scene import Scene
 __all__ = [
     "Axis", "Curve", "Dimension", "Element", "Frame", "Group", "Line", "Point", "Polyline", "Region",
     "ScaleCaptions", "SignMark", "Table", "Text", "Vector", "bbox", "label_bbox", "nice_ticks", "pi_ticks",
-    "NOTATIONS", "Notation", "notation", "format_mm", "format_value", "PAPER", "Page", "TitleBlock", "Style",
-    "Scale", "pick_scale", "pick_angle_scale", "Scene", "markup",
+    "NOTATIONS", "Notation", "notation", "in_language", "format_mm", "format_value", "PAPER", "Page", "TitleBlock",
+    "Style", "Scale", "pick_scale", "pick_angle_scale", "Scene", "markup",
 ]

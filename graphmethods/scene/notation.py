@@ -168,3 +168,44 @@ def get(notation=None) -> Notation:
         return NOTATIONS[str(notation).lower()]
     except KeyError:
         raise InputError(f"unknown notation {notation!r}; use one of {', '.join(_PROFILES)}") from None
+
+
+def in_language(words: tuple[str, str, str], notation=None, **fill) -> str:
+    """The text of an ``(en, ru, zh)`` triple in a notation's language, ``{placeholders}`` filled.
+
+    The sheets keep their own vocabulary as tables of such triples; this picks one text for
+    a figure's profile.
+
+    Parameters
+    ----------
+    words : tuple of str
+        The same text in en, ru and zh, in that order. (Without ``fill`` any triple is picked
+        from alike, such as one tuple of paragraphs per language.)
+    notation : Notation, str or None
+        A profile or its code, as :func:`get` takes it (``None`` means ``"en"``).
+    **fill
+        Values for the text's ``{placeholders}`` (:meth:`str.format`). Without any, the text is
+        returned as written, so ``{{`` stays doubled and markup such as ``ψ_{max}`` is kept.
+
+    Returns
+    -------
+    str
+        The text in the notation's language.
+
+    Raises
+    ------
+    InputError
+        For an unknown notation.
+
+    Examples
+    --------
+    >>> in_language(("gain", "избыток", "盈功"), "zh")
+    '盈功'
+    >>> in_language(("position {k}", "положение {k}", "位置{k}"), get("ru"), k=3)
+    'положение 3'
+    """
+    code = get(notation).code
+    if code not in _PROFILES:
+        raise InputError(f"unknown notation {code!r}; use one of {', '.join(_PROFILES)}")
+    text = words[_PROFILES.index(code)]
+    return text.format(**fill) if fill else text

@@ -34,7 +34,7 @@ from graphmethods.scene import (
     Axis, Dimension, Frame, Line, Page, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, nice_ticks,
     pick_angle_scale, pick_scale,
 )
-from graphmethods.scene import format_value, markup
+from graphmethods.scene import format_value, in_language, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import MAIN, THIN, Style
@@ -95,17 +95,15 @@ SYMBOLS = {
 UNITS_RU = {"m/s": "м/с", "m/s²": "м/с²", "m/rad": "м/рад", "m/rad²": "м/рад²", "s": "с", "m": "м", "J": "Дж",
             "N·m": "Н·м", "rad": "рад", "mm": "мм", "kG·m": "кГ·м"}
 
-_PROFILES = ("en", "ru", "zh")
-
 
 def word(nt, key: str) -> str:
     """A word of this module in the profile of ``nt``."""
-    return WORDS[key][_PROFILES.index(nt.code)]
+    return in_language(WORDS[key], nt)
 
 
 def sym(nt, key: str) -> str:
     """A symbol of this module in the profile of ``nt``."""
-    return SYMBOLS[key][_PROFILES.index(nt.code)]
+    return in_language(SYMBOLS[key], nt)
 
 
 def unit(nt, u: str) -> str:

@@ -57,7 +57,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, Text
+from graphmethods.scene import Page, Scale, Scene, Text, in_language
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point
 from graphmethods.scene.primitives import Circle, Path, Style
@@ -125,8 +125,7 @@ WORDS = {
 
 def _w(nt, key: str, **kw) -> str:
     """A text of :data:`WORDS` in the notation's language, ``{placeholders}`` filled from ``kw``."""
-    text = WORDS[key][("en", "ru", "zh").index(get_notation(nt).code)]
-    return text.format(**kw) if kw else text
+    return in_language(WORDS[key], nt, **kw)
 
 
 #: the answers file: section -> allowed keys (top-level keys: problem, student)

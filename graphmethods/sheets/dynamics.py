@@ -41,7 +41,7 @@ from graphmethods.errors import InputError
 from graphmethods.scene import (
     Axis, Dimension, Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, nice_ticks,
 )
-from graphmethods.scene import markup
+from graphmethods.scene import in_language, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
@@ -120,18 +120,12 @@ _UNITS_RU = {"rad/s²": "рад/с²", "(m/s)": "(м/с)", "m/s": "м/с", "rev/
 
 def sym(nt, key: str) -> str:
     """A symbol (markup) of these figures, or of the notation profile."""
-    nt = get_notation(nt)
-    if key in SYMBOLS:
-        return SYMBOLS[key][("en", "ru", "zh").index(nt.code)]
-    return nt.sym(key)
+    return in_language(SYMBOLS[key], nt) if key in SYMBOLS else get_notation(nt).sym(key)
 
 
 def word(nt, key: str) -> str:
     """Words of these figures, or of the notation profile."""
-    nt = get_notation(nt)
-    if key in WORDS:
-        return WORDS[key][("en", "ru", "zh").index(nt.code)]
-    return nt.word(key)
+    return in_language(WORDS[key], nt) if key in WORDS else get_notation(nt).word(key)
 
 
 def unit(nt, u: str) -> str:

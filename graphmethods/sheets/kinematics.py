@@ -47,7 +47,9 @@ import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, markup
+from graphmethods.scene import (
+    Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, in_language, markup,
+)
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Dimension, Group
 from graphmethods.scene.primitives import DASHED, THIN, Path, Style
@@ -104,11 +106,10 @@ WORDS = {
 }
 
 _UNITS_RU = {"m/s": "м/с", "(m/s)": "(м/с)", "rad/s": "рад/с", "m": "м", "mm": "мм", "rev/min": "об/мин"}
-_PROFILE = {"en": 0, "ru": 1, "zh": 2}
 
 
 def _word(nt, key: str, **kw) -> str:
-    return WORDS[key][_PROFILE[nt.code]].format(**kw)
+    return in_language(WORDS[key], nt, **kw)
 
 
 def _unit(nt, unit: str) -> str:

@@ -39,7 +39,7 @@ from graphmethods.units import convenient_at_least
 from graphmethods.scene import (
     Axis, Dimension, Line, Page, Point, Polyline, Scale, Scene, Table, Text, nice_ticks, pick_scale,
 )
-from graphmethods.scene import markup
+from graphmethods.scene import in_language, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import MAIN, THIN, Style
@@ -95,8 +95,7 @@ def bold_bbox(lab):
 
 
 def _w(nt, key: str, **kw) -> str:
-    text = WORDS[key][("en", "ru", "zh").index(get_notation(nt).code)]
-    return text.format(**kw) if kw else text
+    return in_language(WORDS[key], nt, **kw)
 
 
 # ----------------------------------------------------------------------------- data

@@ -53,7 +53,7 @@ from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import flywheel
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.scene import Axis, Page, Scale, Scene, Table, Text, Vector, markup, nice_ticks
+from graphmethods.scene import Axis, Page, Scale, Scene, Table, Text, Vector, in_language, markup, nice_ticks
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
@@ -235,21 +235,14 @@ EXTRA_UNITS = {"rev/min": ("об/мин", "r/min"), "m/s": ("м/с", "m/s"), "(m
                "rad/s": ("рад/с", "rad/s"), "kg·m²": ("кг·м²", "kg·m²")}
 
 
-def _i(nt) -> int:
-    return ("en", "ru", "zh").index(get_notation(nt).code)
-
-
 def word(key: str, nt, **fmt) -> str:
     """A word of the worksheets in the profile's language (``{placeholders}`` filled from ``fmt``)."""
-    text = WORDS[key][_i(nt)]
-    return text.format(**fmt) if fmt else text
+    return in_language(WORDS[key], nt, **fmt)
 
 
 def sym(key: str, nt) -> str:
     """A symbol of the worksheets: the profile's own (``M_d``, ``delta_W_max`` …) or one of :data:`SYMBOLS`."""
-    if key in SYMBOLS:
-        return SYMBOLS[key][_i(nt)]
-    return get_notation(nt).sym(key)
+    return in_language(SYMBOLS[key], nt) if key in SYMBOLS else get_notation(nt).sym(key)
 
 
 def unit(u: str, nt) -> str:
@@ -1376,7 +1369,7 @@ class _Sheet:
     def statement(self, fmt: dict) -> None:
         # each filled-in value (a scale, a number with its unit) stays on one line
         fmt = {k: v.replace(" ", NBSP) if isinstance(v, str) else v for k, v in fmt.items()}
-        parts = STATEMENTS[self.v.kind][_i(self.nt)]
+        parts = in_language(STATEMENTS[self.v.kind], self.nt)
         self.paragraph(parts[0].format(**fmt), name="given")
         for k, task in enumerate(parts[1:]):
             self.paragraph(task.format(**fmt), indent=4.0, name=f"task-{k + 1}")
@@ -1574,7 +1567,7 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     c, f = v.excess_work, v.flywheel
     s_M = Scale(sym("mu_M", nt), unit("N·m", nt), v.mu_M)
     s_phi = Scale(sym("mu_phi", nt), unit("rad", nt), v.mu_phi, alt_per_mm=v.mu_phi_deg, alt_unit="°")
-    sh.statement(dict(M_r=sym("M_r", nt), M_d=sym("M_d", nt), shape=SHAPES[v.shape][_i(nt)],
+    sh.statement(dict(M_r=sym("M_r", nt), M_d=sym("M_d", nt), shape=in_language(SHAPES[v.shape], nt),
                       n=value_unit(v.n_rpm, "rev/min", nt), delta=v.delta,
                       J_e=f"{sym('J_e', nt)} = {value_unit(v.J_e, 'kg·m²', nt)}", mu_M=s_M.caption(nt),
                       mu_phi=s_phi.caption(nt), A=sym("A", nt), E=sym("E", nt), dW=sym("delta_W_max", nt),
