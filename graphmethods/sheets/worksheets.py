@@ -330,8 +330,25 @@ class Variant:
         return json.dumps(self.to_dict(), indent=1, ensure_ascii=False) + "\n"
 
 
+class _FlywheelVariant(Variant):
+    """A variant that asks for a flywheel: the machine runs at ``n_rpm`` (rev/min) with [δ] given as text."""
+
+    n_rpm: float
+    delta: str
+
+    @property
+    def delta_value(self) -> float:
+        """[δ] as a number."""
+        return float(_fraction(self.delta))
+
+    @property
+    def omega_m(self) -> float:
+        """Mean angular velocity, rad/s."""
+        return omega_from_n(self.n_rpm)
+
+
 @dataclass(frozen=True)
-class IndicatorVariant(Variant):
+class IndicatorVariant(_FlywheelVariant):
     """W1 style: areas f_i (mm²) measured at μ_M (N·m/mm), μ_φ (rad/mm); n (rev/min), [δ], J_e (kg·m²).
 
     ``mu_E`` (J/mm) and ``step_mm`` are the stated scale and spacing of the student's energy indicator.
@@ -354,14 +371,6 @@ class IndicatorVariant(Variant):
     mu_E: float
     step_mm: float = 16.0
 
-    @property
-    def delta_value(self) -> float:
-        return float(_fraction(self.delta))
-
-    @property
-    def omega_m(self) -> float:
-        return omega_from_n(self.n_rpm)
-
     @cached_property
     def excess_work(self):
         return ew.from_areas(self.areas_mm2, mu_M=self.mu_M, mu_phi=self.mu_phi, closure_tol=1e-9)
@@ -379,7 +388,7 @@ class IndicatorVariant(Variant):
 
 
 @dataclass(frozen=True)
-class StepMomentVariant(Variant):
+class StepMomentVariant(_FlywheelVariant):
     """W3 style: M_r through knots (φ in degrees, a repeated angle is a jump), M_d by work balance.
 
     ``mu_M`` (N·m/mm) and ``mu_phi_deg`` (°/mm) are the stated scales of the moment diagram.
@@ -402,14 +411,6 @@ class StepMomentVariant(Variant):
     J_e: float
     mu_M: float
     mu_phi_deg: float
-
-    @property
-    def delta_value(self) -> float:
-        return float(_fraction(self.delta))
-
-    @property
-    def omega_m(self) -> float:
-        return omega_from_n(self.n_rpm)
 
     @property
     def mu_phi(self) -> float:
@@ -508,7 +509,7 @@ SEGMENTS = {"pa": ("p", "a"), "pb": ("p", "b"), "ab": ("a", "b"), "ps2": ("p", "
 
 
 @dataclass(frozen=True)
-class EnergyMassVariant(Variant):
+class EnergyMassVariant(_FlywheelVariant):
     """A press given by its table J_e (kg·m²) and ΔT (J) at positions 0…m, with n, [δ] and μ_J, μ_T.
 
     ``press`` holds the linkage data the table was computed from (shown in the statement).
@@ -534,14 +535,6 @@ class EnergyMassVariant(Variant):
 
     def __hash__(self):          # the press dict is not hashable
         return hash((self.kind, self.seed, self.number))
-
-    @property
-    def delta_value(self) -> float:
-        return float(_fraction(self.delta))
-
-    @property
-    def omega_m(self) -> float:
-        return omega_from_n(self.n_rpm)
 
     @property
     def m(self) -> int:
