@@ -119,7 +119,7 @@ def bench_startup(repeat=5) -> list[Row]:
 
     base = median_time(run("pass"), repeat=repeat)
     imp = median_time(run("import graphmethods"), repeat=repeat)
-    cli = median_time(run("from graphmethods.cli import main; main(['flywheel','--areas','50','-550','100','-125',"
+    cli = median_time(run("from graphmethods.cli import main; main(['flywheel','--areas','-50','550','-100','125',"
                           "'500','-25','50','--n','600','--delta','1/300'])"), repeat=repeat)
     return [
         Row("start-up", "python -c pass", "interpreter alone", seconds=base),

@@ -110,9 +110,9 @@ def test_tolerances_propagate_to_J_F():
 
 
 def test_a_position_within_drafting_precision_of_the_extreme_is_accepted():
-    r = ck.check("W1", {"results": {"omega_max_at": "b", "omega_min_at": "e"}})
+    r = ck.check("W1", {"results": {"omega_max_at": "e", "omega_min_at": "b"}})
     assert r.ok
-    r = ck.check("W1", {"results": {"omega_max_at": "f", "omega_min_at": "b"}})
+    r = ck.check("W1", {"results": {"omega_max_at": "b", "omega_min_at": "f"}})
     assert [i.verdict for i in r.items] == ["wrong", "wrong"]
     r = ck.check("W3", {"results": {"omega_max_at": "c"}})   # a and c are the same point of the cycle
     assert r.ok and r.items[0].expected == "a or c"
@@ -244,7 +244,7 @@ def test_text_markdown_and_json_say_the_same():
     r = ck.check("W1", ANSWERS / "w1_mistakes.toml")
     text, md, js = r.to_text(), r.to_markdown(), json.loads(r.to_json())
     assert "n (rev/min) used as ω (rad/s): J_F" in text and "Result:" in text
-    assert md.startswith("### Check of W1") and "| arrow c–d | 20 | -20 |" in md and "**wrong (sign_flipped)**" in md
+    assert md.startswith("### Check of W1") and "| arrow c–d | -20 | 20 |" in md and "**wrong (sign_flipped)**" in md
     assert js["ok"] is False and [m["code"] for m in js["mistakes"]] == ["sign_flipped", "delta_not_halved",
                                                                          "n_as_omega"]
     assert {i["key"]: i["verdict"] for i in js["items"]}["results.delta_W_max"] == "carried"
@@ -256,7 +256,7 @@ def test_overlay_is_the_correct_construction_at_the_students_scales_with_wrong_i
     scene = r.overlay()
     assert (scene.page.width_mm, scene.page.height_mm) == (297.0, 210.0) and not scene.page.frame
     rec = record(scene)
-    work = [50, -550, 100, -125, 500, -25, 50]
+    work = [-50, 550, -100, 125, -500, 25, -50]
     labels = "abcdefgh"
     for i, A in enumerate(work):
         gid = f"vector-{labels[i]}{labels[i + 1]}"
@@ -264,7 +264,7 @@ def test_overlay_is_the_correct_construction_at_the_students_scales_with_wrong_i
         strokes = {c.style.stroke for c in rec.in_group(gid, "path")}
         assert strokes == ({ws.RED} if i == 2 else {"#000000"})
     red_texts = [c.data.text for c in rec.calls if c.kind == "text" and c.data.color == ws.RED]
-    assert "−20 mm?" in red_texts and "arrow c–d: −20 (expected 20) mm — sign flipped in the staircase" in red_texts
+    assert "20 mm?" in red_texts and "arrow c–d: 20 (expected −20) mm — sign flipped in the staircase" in red_texts
     x0, y0, x1, y1 = scene.bbox()
     assert x0 >= 0 and y0 >= 0 and x1 <= 297 and y1 <= 210
     # the origin can be put where the student's is
@@ -359,13 +359,13 @@ def test_the_overlay_speaks_its_notation(name, nt):
 def test_the_overlay_lines_in_three_notations():
     r = ck.check("W1", ANSWERS / "w1_mistakes.toml")
     assert red_list(r.overlay(notation="ru")) == [
-        "вектор c–d: −20 (должно быть 20) мм — перепутан знак избыточной работы",
+        "вектор c–d: 20 (должно быть −20) мм — перепутан знак избыточной работы",
         "Aизб: 775 (должно быть 575) Дж — следствие предыдущей ошибки",
         "ωmax: 63,04 (должно быть 62,94) рад/с — (1 ± δ) вместо (1 ± δ/2)",
         "ωmin: 62,62 (должно быть 62,73) рад/с — (1 ± δ) вместо (1 ± δ/2)",
         "Jм: 0,6458 (должно быть 43,69) кг·м² — n (об/мин) принято за ω (рад/с)"]
     assert red_list(r.overlay(notation="zh")) == [
-        "矢量 c–d：−20（应为 20）mm——盈亏功正负号颠倒",
+        "矢量 c–d：20（应为 −20）mm——盈亏功正负号颠倒",
         "ΔWmax：775（应为 575）J——由前面的错误导致",
         "ωmax：63.04（应为 62.94）rad/s——用 (1 ± δ) 代替了 (1 ± δ/2)",
         "ωmin：62.62（应为 62.73）rad/s——用 (1 ± δ) 代替了 (1 ± δ/2)",
@@ -375,7 +375,7 @@ def test_the_overlay_lines_in_three_notations():
     assert texts[:3] == ["Overlay: W1 — Diesel generator: energy indicator diagram — Example student (mistakes)",
                          "print at 100 % (no scaling) on transparent film; check: the bar below is 100 mm", "100 mm"]
     assert red_list(en) == [
-        "arrow c–d: −20 (expected 20) mm — sign flipped in the staircase",
+        "arrow c–d: 20 (expected −20) mm — sign flipped in the staircase",
         "ΔWmax: 775 (expected 575) J — carried over",
         "ωmax: 63.04 (expected 62.94) rad/s — (1 ± δ) instead of (1 ± δ/2)",
         "ωmin: 62.62 (expected 62.73) rad/s — (1 ± δ) instead of (1 ± δ/2)",

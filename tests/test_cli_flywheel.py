@@ -96,4 +96,8 @@ def test_examples_command(capsys, worked_examples):
         assert res[wid]["flywheel"]["J_F"] == pytest.approx(worked_examples[wid]["expect"]["J_F"], rel=1e-6)
     assert res["W4-drawing"]["kinetic_energy"]["T"] == pytest.approx([40, 55, 40, 25, 40])
     code, out, _ = run(capsys, "examples")
-    assert "60.6872" in out and "60.16" in out      # the right value, and the note on the slip
+    assert "60.6872" in out and "60.16" in out and "570" in out    # the right value, and what the source did
+    w4 = out[out.index("== W4-drawing"):]
+    assert "A, kG·m" in w4 and "ΔW_max = 30 kG·m" in w4 and "J_e = 0.8 kG·m·s²" in w4   # the problem's own units
+    assert " J" not in w4.replace(" J_e", "")
+    assert res["W4-drawing"]["work_unit"] == "kG·m" and res["W1"]["work_unit"] == "J"

@@ -275,3 +275,17 @@ def test_figures_fit_other_pages_and_use_them(page):
     assert bx[0] >= x0 and bx[1] >= y0 and bx[2] <= x1 and bx[3] <= y1
     if page.size != "A4":
         assert big.scales()[1].per_mm <= small.scales()[1].per_mm      # more paper, larger drawing
+
+
+@pytest.mark.parametrize("nt", ["en", "ru", "zh"])
+def test_w1_staircase_goes_down_first_as_the_source_prints_it(nt, worked_examples):
+    """W1 as printed: deficit work first, b the lowest point and e the highest (page y grows downward)."""
+    rec = record(sheets.energy_indicator(problems.w1(), notation=nt))
+    signs = []
+    for a, b in zip("abcdefg", "bcdefgh"):
+        (start, *_), tip = rec.in_group(f"vector-{a}{b}", "path")[0].data[0], rec.in_group(f"vector-{a}{b}", "polygon")[0].data[0]
+        signs.append(1 if tip[1] < start[1] else -1)                  # up on the page is a gain
+    assert signs == [1 if A > 0 else -1 for A in worked_examples["W1"]["areas_J"]]
+    assert signs[0] == -1
+    cyc = problems.w1().excess_work
+    assert (cyc.labels[cyc.index_E_min], cyc.labels[cyc.index_E_max]) == ("b", "e")

@@ -18,7 +18,8 @@ def run(args) -> int:
     results = {}
     for prob in all_examples():
         ew = prob.excess_work
-        res = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict()}
+        res = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict(),
+               "work_unit": prob.work_unit}
         if prob.n_rpm is not None and prob.delta is not None:
             res["flywheel"] = prob.flywheel().to_dict()
         if prob.omega_0 is not None:
@@ -29,14 +30,14 @@ def run(args) -> int:
         if args.json:
             continue
         print(f"== {prob.id}: {prob.title}  [{prob.source}]")
-        print(ew.to_text())
+        print(ew.to_text(unit=prob.work_unit))
         if "flywheel" in res:
             fw = res["flywheel"]
             print(f"n = {fw['n_rpm']:.6g} rev/min, [δ] = {fw['delta']:.6g}:  J_F = {fw['J_F']:.4f} kg·m²")
         if "kinetic_energy" in res:
             ke = res["kinetic_energy"]
-            print("T = " + ", ".join(f"{t:.4f}" for t in ke["T"]) + f"   (J_e = {ke['J_e']:g}, T0 = {ke['T0']:g})")
-            print("ω = " + ", ".join(f"{w:.4f}" for w in ke["omega"]) + f"   ω_m = {ke['omega_m']:.4f}, δ = {ke['delta']:.4f}")
+            print(f"T, {prob.work_unit} = " + ", ".join(f"{t:.4f}" for t in ke["T"]) + f"   (J_e = {ke['J_e']:g} {prob.inertia_unit}, T0 = {ke['T0']:g} {prob.work_unit})")
+            print("ω, s⁻¹ = " + ", ".join(f"{w:.4f}" for w in ke["omega"]) + f"   ω_m = {ke['omega_m']:.4f}, δ = {ke['delta']:.4f}")
         if prob.note:
             print(f"note: {prob.note}")
         print()

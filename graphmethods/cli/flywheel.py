@@ -2,7 +2,7 @@
 
 Examples::
 
-    graphmethods flywheel --areas 50 -550 100 -125 500 -25 50 --n 600 --delta 1/300
+    graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --delta 1/300
     graphmethods flywheel --areas 10,-110,20,-25,100,-5,10 --mu-M 100 --mu-phi-deg 1 --n 600 --delta 1/300
     graphmethods flywheel --levels 0 -50 500 400 525 25 50 0 --omega 12.566 --J 60.69 --json
 """
@@ -52,7 +52,7 @@ def add_parser(sub) -> None:
         description="Excess-work table, ΔW_max and the flywheel J_F = ΔW_max/(ω_m²[δ]) − J_e, "
         "or the δ a given inertia gives. The cycle is given as signed areas (mm² with scales, "
         "or work in J without scales) or as running energy levels.",
-        epilog="Example: graphmethods flywheel --areas 50 -550 100 -125 500 -25 50 --n 600 --delta 1/300",
+        epilog="Example: graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --delta 1/300",
     )
     cyc = p.add_mutually_exclusive_group(required=True)
     cyc.add_argument("--areas", metavar="A1,A2,...", help="signed areas between M_d and M_r in order: mm² with --mu-M and "

@@ -16,13 +16,13 @@ running energy), E_max and E_min with their points, ΔW_max = E_max − E_min, a
 closure residual Σ A_i (zero for a steady cycle; a hand-measured set of areas never
 closes exactly, and a residual beyond ``closure_tol`` is refused).
 
-W1 (diesel generator):
+W1 (diesel generator; the staircase goes down first, b is the lowest point, e the highest):
 
->>> w1 = from_work([50, -550, 100, -125, 500, -25, 50])
+>>> w1 = from_work([-50, 550, -100, 125, -500, 25, -50])
 >>> w1.E.tolist()
-[0.0, 50.0, -500.0, -400.0, -525.0, -25.0, -50.0, 0.0]
+[0.0, -50.0, 500.0, 400.0, 525.0, 25.0, 50.0, 0.0]
 >>> w1.delta_W_max, w1.labels[w1.index_E_max], w1.labels[w1.index_E_min]
-(575.0, 'b', 'e')
+(575.0, 'e', 'b')
 """
 
 from __future__ import annotations
@@ -178,13 +178,13 @@ class ExcessWork:
             rows.append(row)
         return rows
 
-    def _table(self) -> tuple[list[str], list[list[str]]]:
+    def _table(self, unit: str = "J") -> tuple[list[str], list[list[str]]]:
         head = ["interval"]
         if self.phi is not None:
             head += ["φ from, °", "φ to, °"]
         if self.areas_mm2 is not None:
             head += ["f, mm²"]
-        head += ["A, J", "E at end, J"]
+        head += [f"A, {unit}", f"E at end, {unit}"]
         body = []
         for r in self.rows():
             line = [r["interval"]]
@@ -196,27 +196,29 @@ class ExcessWork:
             body.append(line)
         return head, body
 
-    def _summary(self) -> list[str]:
+    def _summary(self, unit: str = "J") -> list[str]:
         i, j = self.index_E_max, self.index_E_min
         out = [
-            f"E_max = {_num(self.E_max)} J at {self.labels[i]}"
+            f"E_max = {_num(self.E_max)} {unit} at {self.labels[i]}"
             + (f" (φ = {_num(round(math.degrees(self.phi[i]), 4))}°)" if self.phi is not None else ""),
-            f"E_min = {_num(self.E_min)} J at {self.labels[j]}"
+            f"E_min = {_num(self.E_min)} {unit} at {self.labels[j]}"
             + (f" (φ = {_num(round(math.degrees(self.phi[j]), 4))}°)" if self.phi is not None else ""),
-            f"ΔW_max = {_num(self.delta_W_max)} J",
-            f"closure residual ΣA = {_num(self.residual)} J",
+            f"ΔW_max = {_num(self.delta_W_max)} {unit}",
+            f"closure residual ΣA = {_num(self.residual)} {unit}",
         ]
         return out
 
-    def to_markdown(self) -> str:
-        """The excess-work table as Markdown, followed by E_max, E_min, ΔW_max and the residual."""
-        head, body = self._table()
+    def to_markdown(self, *, unit: str = "J") -> str:
+        """The excess-work table as Markdown, followed by E_max, E_min, ΔW_max and the residual.
+
+        ``unit`` names the unit of work the data are in (``"kG·m"`` for an old-unit problem)."""
+        head, body = self._table(unit)
         lines = ["| " + " | ".join(head) + " |", "|" + "|".join("---" for _ in head) + "|"]
         lines += ["| " + " | ".join(r) + " |" for r in body]
-        return "\n".join(lines + [""] + [f"- {s}" for s in self._summary()]) + "\n"
+        return "\n".join(lines + [""] + [f"- {s}" for s in self._summary(unit)]) + "\n"
 
-    def to_text(self) -> str:
-        """The excess-work table as aligned plain text.
+    def to_text(self, *, unit: str = "J") -> str:
+        """The excess-work table as aligned plain text; ``unit`` as in :meth:`to_markdown`.
 
         >>> print(from_work([10, -10]).to_text())
         interval  A, J  E at end, J
@@ -227,10 +229,10 @@ class ExcessWork:
         ΔW_max = 10 J
         closure residual ΣA = 0 J
         """
-        head, body = self._table()
+        head, body = self._table(unit)
         widths = [max(len(r[k]) for r in [head] + body) for k in range(len(head))]
         fmt = lambda r: "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
-        return "\n".join([fmt(head)] + [fmt(r) for r in body] + self._summary())
+        return "\n".join([fmt(head)] + [fmt(r) for r in body] + self._summary(unit))
 
     def to_dict(self) -> dict:
         """A JSON-ready dict of the table and results."""

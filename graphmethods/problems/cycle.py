@@ -26,7 +26,9 @@ class CycleProblem:
     Give exactly one of: ``work_J`` (excess works, J); ``areas_mm2`` with ``mu_M``,
     ``mu_phi`` (measured areas); ``M_d``/``M_r`` moment curves (one may be omitted and is
     then balanced). Speed data: ``n_rpm`` and ``delta`` for a flywheel; ``J_e`` and
-    ``omega_0`` for a kinetic-energy graph. ``title`` is a :class:`~graphmethods.titles.Title`;
+    ``omega_0`` for a kinetic-energy graph. ``work_unit`` and ``inertia_unit`` name the units the
+    problem is stated in (``"kG·m"`` and ``"kG·m·s²"`` for an old-unit problem; the numbers are
+    taken as they are). ``title`` is a :class:`~graphmethods.titles.Title`;
     plain text (used for every language) or a mapping by language is turned into one.
 
     >>> p = CycleProblem(id="P1", title={"en": "Press", "ru": "Пресс"}, work_J=(10, -10))
@@ -49,6 +51,8 @@ class CycleProblem:
     J_e: float = 0.0
     omega_0: float | None = None
     note: str = ""
+    work_unit: str = "J"
+    inertia_unit: str = "kg·m²"
 
     def __post_init__(self):
         object.__setattr__(self, "title", Title.of(self.title, where=f"problem {self.id}: title"))

@@ -6,7 +6,7 @@ id.
 
 >>> [p.id for p in all_examples()]
 ['W1', 'W2', 'W3', 'W4-drawing', 'W4-exact']
->>> round(w2().flywheel().J_F, 2)       # the source prints 60.16, an arithmetic slip
+>>> round(w2().flywheel().J_F, 2)       # the source prints 60.16: it used 570 for ΔW_max = 575
 60.69
 >>> w1().title.title_in("ru")
 'Дизель-генератор: векторная диаграмма избыточных работ'
@@ -47,7 +47,7 @@ def w1() -> CycleProblem:
     return CycleProblem(
         id="W1", title=TITLES["W1"],
         source="Chinese textbook, diesel generator (energy indicator diagram)",
-        work_J=(50, -550, 100, -125, 500, -25, 50), n_rpm=600.0, delta=1 / 300,
+        work_J=(-50, 550, -100, 125, -500, 25, -50), n_rpm=600.0, delta=1 / 300,
     )
 
 
@@ -57,7 +57,8 @@ def w2() -> CycleProblem:
         id="W2", title=TITLES["W2"],
         source="Chinese textbook, engine crankshaft example",
         work_J=(-50, 550, -100, 125, -500, 25, -50), n_rpm=120.0, delta=0.06,
-        note="the source prints J_F = 60.16 kg·m², an arithmetic slip; 900·575/(0.06·π²·120²) = 60.69",
+        note="the source substituted 570 for ΔW_max = 575: it prints J_F = 60.16 kg·m², which is "
+             "900·570/(0.06·π²·120²); 900·575/(0.06·π²·120²) = 60.69",
     )
 
 
@@ -77,6 +78,7 @@ def w4_drawing() -> CycleProblem:
         source="Russian lecture, kinetic energy graph (units kG·m)",
         areas_mm2=(200, -200, -200, 200), mu_M=1.0, mu_phi=0.075, J_e=0.8, omega_0=10.0,
         note="old units: moments in kG·m, J_e in kG·m·s²; the lecture takes π ≈ 3",
+        work_unit="kG·m", inertia_unit="kG·m·s²",
     )
 
 
@@ -88,6 +90,7 @@ def w4_exact() -> CycleProblem:
         M_d=MomentCurve.constant(20.0), M_r=MomentCurve.points([0.0, PI, 2 * PI], [0.0, 40.0, 0.0]),
         boundaries=(0.0, PI / 2, PI, 3 * PI / 2, 2 * PI), J_e=0.8, omega_0=10.0,
         note="with exact π each area is 5π = 15.71 kG·m instead of the drawing's 15",
+        work_unit="kG·m", inertia_unit="kG·m·s²",
     )
 
 

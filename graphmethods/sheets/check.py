@@ -39,7 +39,7 @@ Tolerances (documented rules):
 * a position (where ω_max occurs): every point whose level is within the ΔW_max tolerance of the
   extreme (Wittenbauer: every vertex within 0.5 mm of the touching ray) is accepted.
 
->>> rep = check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [10, -110, 20, -25, 100, -5, 10]},
+>>> rep = check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [-10, 110, -20, 25, -100, 5, -10]},
 ...                    "results": {"delta_W_max": 575.0, "J_F": 0.4795}})
 >>> [(i.key, i.verdict) for i in rep.items if i.verdict != "ok"], [m.code for m in rep.mistakes]
 ([('results.J_F', 'wrong')], ['n_as_omega'])
@@ -628,9 +628,9 @@ class CheckReport:
         Examples
         --------
         >>> from graphmethods.render.recording import record
-        >>> rep = check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [10, -110, -20, -25, 100, -5, 10]}})
+        >>> rep = check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [-10, 110, 20, 25, -100, 5, -10]}})
         >>> [t for t in record(rep.overlay(notation="ru")).texts() if t.startswith("вектор")]
-        ['вектор c–d: −20 (должно быть 20) мм — перепутан знак избыточной работы']
+        ['вектор c–d: 20 (должно быть −20) мм — перепутан знак избыточной работы']
         """
         return _overlay(self, notation)
 

@@ -8,7 +8,7 @@ convenient value that fills the sheet) and every scale drawn is captioned under 
 figure. ``notation="en" | "ru" | "zh"`` switches every symbol and word.
 
 >>> from graphmethods.dynamics import excess_work as ew
->>> scene = energy_indicator(ew.from_work([50, -550, 100, -125, 500, -25, 50]), notation="zh")
+>>> scene = energy_indicator(ew.from_work([-50, 550, -100, 125, -500, 25, -50]), notation="zh")
 >>> scene.title, [s.caption("zh") for s in scene.scales()]
 ('能量指示图', ['μ_W = 5 J/mm'])
 """
@@ -458,7 +458,7 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
     --------
     >>> from graphmethods.dynamics import excess_work as ew
     >>> from graphmethods.render.recording import record
-    >>> s = energy_indicator(ew.from_work([50, -550, 100, -125, 500, -25, 50]), mu_E=5.0)
+    >>> s = energy_indicator(ew.from_work([-50, 550, -100, 125, -500, 25, -50]), mu_E=5.0)
     >>> round(record(s).vector_length_mm("vector-bc"), 6)          # 550 J at 5 J/mm
     110.0
     """

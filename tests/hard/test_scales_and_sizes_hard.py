@@ -12,7 +12,7 @@ from graphmethods.dynamics.motion import ReducedModel
 from graphmethods.dynamics.wittenbauer import wittenbauer
 from graphmethods.errors import UnbalancedCycleError
 
-W1 = [50, -550, 100, -125, 500, -25, 50]
+W1 = [-50, 550, -100, 125, -500, 25, -50]
 
 
 @pytest.mark.parametrize("mu", [1e-6, 1e6])
@@ -36,8 +36,8 @@ def test_extreme_scales_for_the_energy_mass_diagram(mu_J, mu_T):
 
 def test_an_unclosed_cycle_is_refused_with_its_residual():
     with pytest.raises(UnbalancedCycleError, match=r"sum to -575 J.*tolerance 0.05"):
-        ew.from_work([50, -550, 100, -125, 500, -25, 50, -575])
-    cyc = ew.from_work([50, -550, 100, -125, 500, -25, 52])        # 2 J short: reported, accepted
+        ew.from_work([-50, 550, -100, 125, -500, 25, -50, -575])
+    cyc = ew.from_work([-50, 550, -100, 125, -500, 25, -48])        # 2 J short: reported, accepted
     assert cyc.residual == pytest.approx(2.0)
 
 
