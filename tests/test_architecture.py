@@ -1,5 +1,6 @@
 """The house rules: imports only go downward, and importing the package is light."""
 
+import argparse
 import ast
 import pathlib
 import subprocess
@@ -73,3 +74,21 @@ def test_import_graphmethods_is_light():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "", f"import graphmethods loaded {out.stdout.strip()}"
+
+
+def test_top_level_help_imports_no_command_module_and_no_numpy():
+    code = ("import sys\nfrom graphmethods.cli import main\ntry:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
+            "heavy = sorted(m for m in sys.modules if m == 'numpy' or m.startswith('graphmethods.cli.'))\n"
+            "print(heavy, file=sys.stderr)")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert proc.stderr.strip() == "[]" and "flywheel" in proc.stdout
+
+
+def test_the_help_lines_of_the_top_level_are_those_of_the_commands():
+    from graphmethods.cli import COMMANDS, build_parser
+
+    lazy, full = build_parser(""), build_parser()
+    def helps(parser):
+        (sub,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+        return {c.dest: c.help for c in sub._choices_actions}
+    assert helps(lazy) == helps(full) == {name: line for name, (_, line) in COMMANDS.items()}

@@ -14,16 +14,17 @@ import sys
 
 from graphmethods.errors import GraphmethodsError
 
-#: command name -> module (inside graphmethods.cli) that implements it
+#: command name -> (module inside graphmethods.cli that implements it, one-line help). The help
+#: lines are here so that ``graphmethods --help`` imports no command module (and so no numpy).
 COMMANDS = {
-    "flywheel": "flywheel",
-    "examples": "examples",
-    "kinematics": "kinematics",
-    "study": "study",
-    "gallery": "gallery",
-    "worksheet": "worksheet",
-    "check": "check",
-    "bench": "bench",
+    "flywheel": ("flywheel", "excess-work table, ΔW_max and the flywheel (approximate method)"),
+    "examples": ("examples", "solve and print the published worked examples W1–W4"),
+    "kinematics": ("kinematics", "positions and velocity plans of a linkage problem file"),
+    "study": ("study", "dynamic study of a linkage problem: J_e, M_r, the flywheel three ways"),
+    "gallery": ("gallery", "build every gallery figure (SVG, optionally PNG)"),
+    "worksheet": ("worksheet", "printable worksheets with answer keys (variants from a seed)"),
+    "check": ("check", "check a student's hand drawing (answers file) and diagnose usual mistakes"),
+    "bench": ("bench", "measure speed against error (Markdown table and JSON)"),
 }
 
 
@@ -32,22 +33,26 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"graphmethods: error: {message} (see graphmethods --help)\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The argument parser; only ``command``'s module is imported (every one when None, for tests)."""
     parser = _Parser(prog="graphmethods", description="Exact, scale-true graphical methods of machine dynamics.")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
-    for name, module in COMMANDS.items():
-        mod = importlib.import_module(f"graphmethods.cli.{module}")
-        mod.add_parser(sub)
+    for name, (module, help_line) in COMMANDS.items():
+        if command is None or name == command:
+            importlib.import_module(f"graphmethods.cli.{module}").add_parser(sub)
+        else:
+            sub.add_parser(name, help=help_line)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
-    if argv and argv[0] in COMMANDS:
-        mod = importlib.import_module(f"graphmethods.cli.{COMMANDS[argv[0]]}")
+    command = argv[0] if argv and argv[0] in COMMANDS else ""
+    if command:
+        mod = importlib.import_module(f"graphmethods.cli.{COMMANDS[command][0]}")
         argv = getattr(mod, "preprocess_argv", list)(argv)
-    args = build_parser().parse_args(argv)
+    args = build_parser(command).parse_args(argv)
     try:
         return int(args.func(args) or 0)
     except GraphmethodsError as exc:
