@@ -261,3 +261,29 @@ def test_no_flywheel_needed_is_said_plainly():
 def test_sampled_J_e_must_be_periodic():
     with pytest.raises(InputError, match="periodic"):
         ReducedModel.from_samples(J_e=[1.0, 2.0, 3.0], M_e=0.0)
+
+
+def test_the_exact_flywheel_calls_the_model_in_batches_not_angle_by_angle():
+    """A linkage's J_e and M_e cost a kinematics run per call: the extremum search must batch its angles."""
+    calls = {"J_e": 0, "M_e": 0}
+    model, _ = sinusoid_model()
+
+    def counted(name, f):
+        def g(p):
+            calls[name] += 1
+            return f(p)
+        return g
+
+    counted_model = ReducedModel(J_e=counted("J_e", model.J_e), M_e=counted("M_e", model.M_e), dJ_e=model.dJ_e)
+    fw = exact_flywheel(counted_model, omega_m=12.0, delta=0.05)
+    assert fw.J_F == pytest.approx(exact_flywheel(model, omega_m=12.0, delta=0.05).J_F, rel=1e-13)
+    assert calls["J_e"] + calls["M_e"] < 300          # the golden-section search made about 1 500 calls
+
+
+def test_a_kink_of_the_energy_is_located_to_the_resolution_of_the_angle():
+    # ΔE has a corner where a step load switches on; ω_min sits on it, so the search must not stop early
+    M_e = lambda p: 16.25 - np.where((p >= 1.0) & (p < 1.0 + np.pi / 4), 60.0, 10.0)   # noqa: E731
+    fw = exact_flywheel(ReducedModel(J_e=lambda p: 1.0 + 0.3 * np.cos(p), M_e=M_e, breaks=(1.0, 1.0 + np.pi / 4)),
+                        omega_m=10.0, delta=0.05)
+    assert abs(fw.phi_omega_min - (1.0 + np.pi / 4)) < 1e-12 or abs(fw.phi_omega_min - 1.0) < 1e-12
+    assert fw.rel_accuracy < 1e-10

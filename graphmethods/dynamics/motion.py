@@ -22,7 +22,7 @@ bracketed to about 1e-12 rad even when its position is not declared (declare it 
 start plus a 15-point Gauss–Legendre integral, so every function below is evaluated "exactly"
 (to ~1e-12 relative), not read off a table. Extrema are located on a fine grid (uniform, plus all
 quadrature nodes, so that the kinks of ΔE at jumps of M_e are grid points) and then refined by a
-vectorised golden-section search on the exact functions, around every grid candidate that could
+batched zoom search on the exact functions, around every grid candidate that could
 hold the global extremum. Times are integrated by a composite 6-point Gauss–Legendre rule on the
 same grid.
 
@@ -56,7 +56,7 @@ __all__ = [
 ]
 
 TWO_PI = 2.0 * math.pi
-_GOLD = (math.sqrt(5.0) - 1.0) / 2.0
+_ZOOM = 32                            # sub-steps per bracket and round of the extremum search
 
 # Gauss–Kronrod 7/15 (QUADPACK qk15): Kronrod abscissae (positive half, 0 last) and weights,
 # and the weights of the embedded 7-point Gauss rule on the odd Kronrod abscissae.
@@ -407,7 +407,7 @@ class _Primitive:
 
 
 # --------------------------------------------------------------------------------------------
-# Extrema: fine grid, then vectorised golden section on the exact function
+# Extrema: fine grid, then a batched zoom search on the exact function
 # --------------------------------------------------------------------------------------------
 
 def _wrap(phi, a, L):
@@ -417,10 +417,13 @@ def _wrap(phi, a, L):
 def _refine_max(fun, x, fx, *, a, L):
     """The global maximum of a periodic function sampled at grid x (x[0] = a, x[-1] = a + L).
 
-    Every grid local maximum within one largest grid step of the best sample is refined by
-    golden-section search on [x_{i−1}, x_{i+1}] (fun is evaluated on wrapped angles). Returns
-    (x*, f*, spread): spread is the largest difference between f* and f at the ends of the final
-    bracket, a bound on how far f* may still be from the maximum of the bracket.
+    Every grid local maximum within one largest grid step of the best sample is refined by a
+    batched zoom: each round samples every candidate's bracket at ``_ZOOM`` + 1 points in one call
+    of ``fun`` (so a linkage's kinematics runs once per round, vectorised, never angle by angle),
+    and narrows the bracket to the two sub-steps around its best sample, a factor ``_ZOOM``/2 per
+    round: about ten rounds reach the resolution of the angle. Returns (x*, f*, spread): spread is
+    the largest difference between f* and f at the ends of the final bracket, a bound on how far
+    f* may still be from the maximum of the bracket.
     """
     n = x.size - 1                       # x[n] is x[0] + L
     v = fx[:n]
@@ -433,28 +436,30 @@ def _refine_max(fun, x, fx, *, a, L):
         cand = np.array([int(np.argmax(v))])
     if cand.size > 64:
         cand = cand[np.argsort(v[cand])[-64:]]
-    xl = np.where(cand > 0, x[np.maximum(cand - 1, 0)], x[n - 1] - L)
-    xr = x[cand + 1]
-    lo, hi = xl.copy(), xr.copy()
-    c = hi - _GOLD * (hi - lo)
-    d = lo + _GOLD * (hi - lo)
-    fc, fd = fun(_wrap(c, a, L)), fun(_wrap(d, a, L))
-    for _ in range(90):
-        take_left = fc >= fd
-        hi = np.where(take_left, d, hi)
-        lo = np.where(take_left, lo, c)
-        new_c = np.where(take_left, hi - _GOLD * (hi - lo), d)
-        new_d = np.where(take_left, c, lo + _GOLD * (hi - lo))
-        fn = fun(_wrap(np.where(take_left, new_c, new_d), a, L))
-        fc, fd = np.where(take_left, fn, fd), np.where(take_left, fc, fn)
-        c, d = new_c, new_d
-        if np.all(hi - lo <= 4 * np.finfo(float).eps * (abs(a) + L)):
+    lo = np.where(cand > 0, x[np.maximum(cand - 1, 0)], x[n - 1] - L)
+    hi = x[cand + 1]
+    xs, fs = x[cand], v[cand]
+    resolution = 4 * np.finfo(float).eps * (abs(a) + L)
+    rounding = 4 * np.finfo(float).eps * float(np.max(np.abs(fx)))
+    s = np.linspace(0.0, 1.0, _ZOOM + 1)
+    rows = np.arange(cand.size)
+    for _ in range(60):
+        pts = lo[:, None] + (hi - lo)[:, None] * s
+        fp = fun(_wrap(pts, a, L))
+        j = np.argmax(fp, axis=1)
+        jl, jr = np.maximum(j - 1, 0), np.minimum(j + 1, _ZOOM)
+        better = fp[rows, j] >= fs
+        xs, fs = np.where(better, pts[rows, j], xs), np.where(better, fp[rows, j], fs)
+        lo, hi = pts[rows, jl], pts[rows, jr]
+        # done when f no longer changes across any bracket that could still hold the maximum
+        # (a smooth peak: after a few rounds; a kink, where a load switches: at the angle's resolution)
+        change = np.maximum(fp[rows, j] - fp[rows, jl], fp[rows, j] - fp[rows, jr])
+        open_ = (change > rounding) & (fs + change >= fs.max()) & (hi - lo > resolution)
+        if not open_.any():
             break
-    xs = np.where(fc >= fd, c, d)
-    fs = np.maximum(fc, fd)
-    j = int(np.argmax(fs))
-    ends = fun(_wrap(np.array([lo[j], hi[j]]), a, L))
-    x_star, f_star = float(xs[j]), float(fs[j])
+    k = int(np.argmax(fs))
+    ends = fun(_wrap(np.array([lo[k], hi[k]]), a, L))
+    x_star, f_star = float(xs[k]), float(fs[k])
     if best > f_star:                    # never worse than the grid
         i = int(np.argmax(v))
         x_star, f_star = float(x[i]), best
@@ -727,7 +732,7 @@ class FlywheelResult(_FromPosition0):
         Kinetic energy at position 0, J.
     rel_accuracy : float
         Estimated relative error of J_F: the quadrature error bound of ΔE (both intercepts) plus
-        the last golden-section brackets' spread, over b_max − b_min.
+        the last zoom brackets' spread, over b_max − b_min.
     closure_residual : float
         ∫ M_e dφ over the period before balancing, J.
     motion : MotionResult
@@ -845,7 +850,7 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str) -> MotionResu
     J = J_F + cyc.Jx[idx]
     T = T0 + cyc.Ex[idx]
     omega = np.sqrt(2.0 * T / J)
-    # accuracy: quadrature error of ΔE and the golden-section spread, relative to the kinetic energy
+    # accuracy: quadrature error of ΔE and the zoom search's spread, relative to the kinetic energy
     acc = (cyc.E.error + max(s_max, s_min) * (J_F + float(cyc.Jx.max()))) / max(T0 + cyc.E_min, 1e-300)
     return MotionResult(
         phi=_frozen(phi), omega=_frozen(omega), t=_frozen(t_nodes[idx]), epsilon=_frozen(eps(phi)),
@@ -967,7 +972,7 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
     -------
     FlywheelResult
         With the angles of ω_max and ω_min, an accuracy estimate, and the motion with this J_F
-        (solved independently: ``result.delta_check`` reproduces [δ]).
+        (solved from J_F alone: ``result.delta_check`` reproduces [δ]).
 
     Examples
     --------
@@ -1012,8 +1017,10 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
         sol = solve(c)
     J_F, T0, p_max, p_min, b_max, b_min, spread = sol
     rel = (2 * cyc.E.error + spread) / abs(b_max - b_min) if b_max != b_min else math.inf
-    motion = periodic_motion(model, J_F=J_F, omega_m=omega_m, mean=mean, positions=positions,
-                             n_search=n_search, closure_rtol=closure_rtol)
+    # the motion with this J_F, solved from J_F alone (T0 from the mean speed, then the extremes of
+    # ω) on the same ΔE quadrature: its δ is an independent check of the support-line construction
+    cyc.check_inertia(J_F)
+    motion = _motion_from_T0(cyc, J_F, _solve_T0(cyc, J_F, omega_m, mean), mean)
     return FlywheelResult(
         J_F=float(J_F), delta=delta, omega_m=omega_m, mean=mean, omega_max=c + half,
         omega_min=c - half, phi_omega_max=p_max, phi_omega_min=p_min, b_max=float(b_max),
