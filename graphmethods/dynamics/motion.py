@@ -80,6 +80,23 @@ _GL15_X, _GL15_W = np.polynomial.legendre.leggauss(15)
 _GL6_X, _GL6_W = np.polynomial.legendre.leggauss(6)
 
 
+def _integration_matrix(nodes: np.ndarray) -> np.ndarray:
+    """S with ∫_{-1}^{x_k} f = Σ_j S[k, j] f(x_j), exact for polynomials of degree < len(nodes).
+
+    Built in the Legendre basis (well conditioned on Gauss nodes): S = A V⁻¹, with V[k, j] =
+    P_j(x_k) and A[k, j] = ∫_{-1}^{x_k} P_j.
+    """
+    leg = np.polynomial.legendre
+    n = nodes.size
+    V = leg.legvander(nodes, n - 1)
+    A = np.column_stack([leg.legval(nodes, leg.legint(np.eye(n)[j], lbnd=-1)) for j in range(n)])
+    return A @ np.linalg.inv(V)
+
+
+#: running integrals from the start of an interval to its 6 Gauss nodes, from f at those nodes
+_GL6_S = _integration_matrix(_GL6_X)
+
+
 # --------------------------------------------------------------------------------------------
 # The input: a periodic reduced model
 # --------------------------------------------------------------------------------------------
@@ -568,7 +585,10 @@ class _Cycle:
         h = np.diff(x)
         pts = x[:-1, None] + h[:, None] * (0.5 * (_GL6_X + 1.0))
         self.wq = h[:, None] * (0.5 * _GL6_W)
-        self.Eq = self.E(pts.ravel()).reshape(pts.shape)
+        # ΔE at the Gauss nodes from M_e there: a degree-5 running integral on each grid step
+        # (steps of ~2π/n_search inside which M_e is smooth: jumps are at grid points)
+        Mq = model.M_e_at(pts.ravel()).reshape(pts.shape) - self.E.slope
+        self.Eq = self.Ex[:-1, None] + (0.5 * h)[:, None] * (Mq @ _GL6_S.T)
         self.Jq = model.J_e_at(pts.ravel()).reshape(pts.shape)
         self.E_min = min(float(self.Ex.min()), float(self.Eq.min()))
 
