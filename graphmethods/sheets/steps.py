@@ -181,8 +181,7 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
     lk = K._Linkage.of(linkage, m=m, omega_1=omega_1)
     plans = lk.plans
     k = K.fullest_position(plans) if position is None else position
-    figure = K.velocity_plan(lk.plans, k, mu_v=mu_v, notation=nt, page=pg, title_block=tb,
-                             problem=lk.problem, title=None)
+    figure = K.velocity_plan(linkage, k, m=m, omega_1=omega_1, mu_v=mu_v, notation=nt, page=pg, title_block=tb)
     k = int(k)
     mech = plans.positions.mechanism
     s_v = figure.scales()[0]
