@@ -199,7 +199,9 @@ class Browser:
         self.call("Input.dispatchKeyEvent", {"type": "keyUp", **base})
 
     def screenshot(self) -> bytes:
-        """A PNG of the viewport."""
+        """A PNG of the viewport, once the page has drawn two more frames (so a change is painted)."""
+        self.call("Runtime.evaluate", {"expression": "new Promise(r => requestAnimationFrame(() => "
+                                                     "requestAnimationFrame(() => r(1))))", "awaitPromise": True})
         return base64.b64decode(self.call("Page.captureScreenshot", {"format": "png"})["data"])
 
     def requests(self) -> list[str]:
