@@ -361,6 +361,7 @@ def test_cli_default_name_and_positions(tmp_path, capsys, monkeypatch):
     (["press", "wittenbauer", "--position", "2"], "velocity plan only"),
     (["press", "velocity-plan", "--page", "B5"], "use slide, A4"),
     (["press", "wittenbauer", "-m", "1"], "from 3 to 720"),
+    (["W1", "energy-indicator", "--format", "animated-svg", "--seconds", "0"], "seconds per step"),
 ])
 def test_cli_bad_input_is_one_line_and_exit_2_and_writes_nothing(tmp_path, capsys, argv, words):
     code, out, err = _run(capsys, *argv, "--out", str(tmp_path / "x.pdf"))

@@ -129,3 +129,25 @@ def test_the_arrow_keys_step_through_the_construction_offline(browser, tmp_path,
     # no request left the page: the only one is the file itself
     asked = browser.requests()
     assert asked and all(u.split("#")[0] in (url, "about:blank") for u in asked), asked
+
+
+def test_the_animated_svg_plays_every_step_in_the_browser(browser, tmp_path):
+    """Chromium's own SMIL engine, paused and set to the middle of each step's slot, shows that step."""
+    bu = S.build("press", "velocity-plan")
+    n, seconds = len(bu), 2.0
+    path = tmp_path / "plan.svg"
+    path.write_text(R.animated_svg(bu, seconds=seconds), encoding="utf-8")
+    browser.events.clear()
+    browser.open(path.as_uri())
+    shown_at = ("(t => { const svg = document.documentElement; svg.pauseAnimations(); svg.setCurrentTime(t); "
+                "return Array.from(document.querySelectorAll('g[data-step]'))"
+                ".filter(g => getComputedStyle(g).visibility === 'visible').map(g => g.id); })")
+    for k in range(1, n + 1):
+        assert browser.evaluate(f"{shown_at}({(k - 0.5) * seconds})") == _expected(bu, k)
+    # the cycle loops: one period later the first step shows again
+    assert browser.evaluate(f"{shown_at}({n * seconds + 0.5 * seconds})") == ["new-1"]
+    shot = browser.screenshot()
+    (_shots_dir(tmp_path) / "animated_plan_step1.png").write_bytes(shot)
+    assert _red(_pixels(shot)) > 50
+    asked = browser.requests()
+    assert all(u == path.as_uri() for u in asked), asked

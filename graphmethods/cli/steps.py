@@ -39,6 +39,8 @@ def add_parser(sub) -> None:
                    help="slide (16:9, default), A4, A3, A2 or A1 (landscape, with frame and title block)")
     p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
                    help="positions per crank turn of a linkage's dynamic study (default 12)")
+    p.add_argument("--seconds", type=float, default=3.0, metavar="S",
+                   help="animated-svg: seconds each step is shown (default 3)")
     p.add_argument("--out", default=None, metavar="PATH",
                    help="the file to write (svg: the frames are PATH-01.svg, …); default CASE_FIGURE_LANG.EXT")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
@@ -61,7 +63,7 @@ def run(args) -> int:
         out = pathlib.Path(f"{stem}_{figure}_{args.lang}{extra}{SUFFIX[args.out_format]}")
     else:
         out = pathlib.Path(args.out)
-    written = render_steps.save(bu, out, args.out_format, overwrite=args.force)
+    written = render_steps.save(bu, out, args.out_format, overwrite=args.force, seconds=args.seconds)
     shown = str(written[0]) if len(written) == 1 else f"{written[0]} … {written[-1].name}"
     print(f"wrote {shown}: {len(bu)} steps ({bu.figure.page.size.lower()} {bu.figure.page.width_mm:g} × "
           f"{bu.figure.page.height_mm:g} mm)")

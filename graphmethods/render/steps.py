@@ -337,9 +337,9 @@ def html_page(bu: BuildUp) -> str:
 
 # ----------------------------------------------------------------------------- files
 
-def outputs(bu: BuildUp, fmt_: str, path) -> list[tuple[pathlib.Path, bytes]]:
+def outputs(bu: BuildUp, fmt_: str, path, *, seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
     """The files a format writes, with their bytes: one file, or for ``svg`` one frame per step named
-    ``STEM-01.svg``, ``STEM-02.svg``, … beside ``path``."""
+    ``STEM-01.svg``, ``STEM-02.svg``, … beside ``path``; ``seconds`` per step of an animated SVG."""
     bu = _check(bu)
     path = pathlib.Path(path)
     if fmt_ == "pdf":
@@ -347,7 +347,7 @@ def outputs(bu: BuildUp, fmt_: str, path) -> list[tuple[pathlib.Path, bytes]]:
     if fmt_ == "html":
         return [(path, html_page(bu).encode("utf-8"))]
     if fmt_ == "animated-svg":
-        return [(path, animated_svg(bu).encode("utf-8"))]
+        return [(path, animated_svg(bu, seconds=seconds).encode("utf-8"))]
     if fmt_ == "svg":
         stem = path.name[: -len(path.suffix)] if path.suffix.lower() == ".svg" else path.name
         width = max(2, len(str(len(bu))))
@@ -356,7 +356,7 @@ def outputs(bu: BuildUp, fmt_: str, path) -> list[tuple[pathlib.Path, bytes]]:
     raise InputError(f"format {fmt_!r}: use one of {', '.join(FORMATS)}")
 
 
-def save(bu: BuildUp, path, fmt_: str, *, overwrite: bool = False) -> list[pathlib.Path]:
+def save(bu: BuildUp, path, fmt_: str, *, overwrite: bool = False, seconds: float = 3.0) -> list[pathlib.Path]:
     """Write the construction as ``fmt_`` (pdf, svg frames, html, animated-svg) to ``path``.
 
     Everything is built before the first file is written, an existing file is kept unless
@@ -367,7 +367,7 @@ def save(bu: BuildUp, path, fmt_: str, *, overwrite: bool = False) -> list[pathl
     list of pathlib.Path
         The files written.
     """
-    files = outputs(bu, fmt_, path)
+    files = outputs(bu, fmt_, path, seconds=seconds)
     if not overwrite:
         existing = [str(p) for p, _ in files if p.exists()]
         if existing:
