@@ -14,6 +14,8 @@ from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, markup
 from graphmethods.scene.steps import NEW_COLOUR, OLD_COLOUR
+from graphmethods.sheets import calculus as C
+from graphmethods.sheets import dynamics as D
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets import steps as S
 from graphmethods.sheets.energy import energy_indicator
@@ -22,7 +24,11 @@ from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 SVG = "{http://www.w3.org/2000/svg}"
 LINKAGES = tuple(S.LINKAGES)
 CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "energy-indicator") for c in ("W1", "W2", "W3", "W4", "press")]
-         + [(c, "wittenbauer") for c in ("press", "shaper", "four-bar")])
+         + [(c, "wittenbauer") for c in ("press", "shaper", "four-bar")]
+         + [(c, "kinematic-diagrams") for c in ("press", "shaper")]
+         + [(c, "work-diagrams") for c in ("press", "W3")]
+         + [(c, "zhukovsky-lever") for c in ("press", "four-bar")]
+         + [(c, "kinematic-scheme") for c in LINKAGES])
 
 
 @pytest.fixture(scope="module")
@@ -69,8 +75,12 @@ def test_each_step_draws_the_previous_ones_and_the_last_is_the_finished_figure(b
     assert record(bu.scene_at(len(bu))).calls == record(bu.figure).calls
 
 
-@pytest.mark.parametrize("case,figure", CASES[:4] + CASES[4:5] + CASES[-3:-2],
-                         ids=[f"{c}-{f}" for c, f in CASES[:4] + CASES[4:5] + CASES[-3:-2]])
+DIRECT = [("press", "velocity-plan"), ("shaper", "velocity-plan"), ("W1", "energy-indicator"),
+          ("press", "wittenbauer"), ("press", "kinematic-diagrams"), ("W3", "work-diagrams"),
+          ("press", "zhukovsky-lever"), ("slotted-lever", "kinematic-scheme")]
+
+
+@pytest.mark.parametrize("case,figure", DIRECT, ids=[f"{c}-{f}" for c, f in DIRECT])
 def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
     """Built independently with the figure function on the same page, the figure is the last step."""
     page, _, _, tb = S.step_page("slide")
@@ -81,6 +91,14 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
         direct = K.velocity_plan(obj, pos, page=page, title_block=tb)
     elif figure == "energy-indicator":
         direct = energy_indicator(obj, page=page, title_block=tb)
+    elif figure == "kinematic-diagrams":
+        direct = C.kinematic_diagrams(obj, page=page, title_block=tb)
+    elif figure == "work-diagrams":
+        direct = C.work_diagrams(obj, page=page, title_block=tb)
+    elif figure == "kinematic-scheme":
+        direct = K.kinematic_scheme(obj, m=12, page=page, title_block=tb)
+    elif figure == "zhukovsky-lever":
+        direct = D.zhukovsky_lever(obj, page=page, title_block=tb)
     else:
         from graphmethods.dynamics.study import Study
 
@@ -358,7 +376,9 @@ def test_cli_default_name_and_positions(tmp_path, capsys, monkeypatch):
     (["W2", "wittenbauer"], "masses and loads"),
     (["press", "plan"], "use one of velocity-plan"),
     (["press", "velocity-plan", "--position", "99"], "position 99"),
-    (["press", "wittenbauer", "--position", "2"], "velocity plan only"),
+    (["press", "wittenbauer", "--position", "2"], "velocity plan and Zhukovsky's lever only"),
+    (["four-bar", "kinematic-diagrams"], "no slider"),
+    (["W1", "work-diagrams"], "needs moment curves"),
     (["press", "velocity-plan", "--page", "B5"], "use slide, A4"),
     (["press", "wittenbauer", "-m", "1"], "from 3 to 720"),
     (["W1", "energy-indicator", "--format", "animated-svg", "--seconds", "0"], "seconds per step"),

@@ -6,7 +6,8 @@
     graphmethods steps shaper velocity-plan --position 3 --format svg --out frames/shaper.svg
 
 CASE is a built-in problem (press, four-bar, slotted-lever, shaper, W1…W4) or a linkage problem
-file; FIGURE is velocity-plan, energy-indicator or wittenbauer. ``--format pdf`` writes one page
+file; FIGURE is velocity-plan, energy-indicator, wittenbauer, kinematic-diagrams, work-diagrams,
+zhukovsky-lever or kinematic-scheme. ``--format pdf`` writes one page
 per step (a 16:9 slide by default, ``--page A4`` … ``A1`` for sheets), ``svg`` one numbered frame
 per step (``STEM-01.svg`` …), ``animated-svg`` one SVG that plays the steps by itself in a
 browser, ``html`` one self-contained page stepped with buttons and the arrow keys. Every file is
@@ -29,9 +30,11 @@ def add_parser(sub) -> None:
                        "and why.")
     p.add_argument("case", metavar="CASE",
                    help="press, four-bar, slotted-lever, shaper, W1, W2, W3, W4, or a linkage problem file")
-    p.add_argument("figure", metavar="FIGURE", help="velocity-plan, energy-indicator or wittenbauer")
+    p.add_argument("figure", metavar="FIGURE",
+                   help="velocity-plan, energy-indicator, wittenbauer, kinematic-diagrams, work-diagrams, "
+                        "zhukovsky-lever or kinematic-scheme")
     p.add_argument("--position", type=int, default=None, metavar="K",
-                   help="the position of a velocity plan (default: the fullest plan of the working stroke)")
+                   help="the position of a velocity plan or of Zhukovsky's lever (default: chosen by the figure)")
     p.add_argument("--format", choices=("pdf", "svg", "html", "animated-svg"), default="pdf", dest="out_format",
                    help="pdf (one page per step, default), svg (numbered frames), html (one page), animated-svg")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")

@@ -11,6 +11,9 @@ names that figure function gives, in the order the construction records say:
   closure; the highest and lowest points and ΔW_max.
 - :func:`wittenbauer_steps`: the axes; the points of positions 0…m; the curve; the ray at ψ_max;
   the ray at ψ_min; k and l; kl; J_F.
+- :func:`differentiation_steps` (the slider's s, v, a by graphical differentiation),
+  :func:`integration_steps` (work diagrams by the method of chords), :func:`zhukovsky_steps`
+  (Zhukovsky's lever) and :func:`scheme_steps` (the kinematic scheme in m positions).
 
 A new construction (the acceleration plan, the force plan) plugs in as one more function of
 the same shape that returns a :class:`~graphmethods.scene.steps.BuildUp`; :data:`FIGURES` lists
@@ -95,6 +98,65 @@ WORDS = {
     "kl":         ("Measure kl = {kl} mm", "Измеряем отрезок kl = {kl} мм", "量得 kl = {kl} mm"),
     "J_F":        ("The flywheel: {JF} = {muT}·kl/({wm}²·{d}) = {J}", "Маховик: {JF} = {muT}·kl/({wm}²·{d}) = {J}",
                    "飞轮：{JF} = {muT}·kl/({wm}²·{d}) = {J}"),
+    # graphical differentiation (kinematic diagrams)
+    "s_curve":    ("Plot the slider's displacement {s}(φ) at positions 0…{m} from the scheme; {mus}",
+                   "Строим перемещение ползуна {s}(φ) по положениям 0…{m} с плана механизма; {mus}",
+                   "按机构位置图作滑块位移曲线 {s}(φ)，位置 0…{m}；{mus}"),
+    "chords":     ("Join neighbouring points of {f}(φ) by chords", "Соединяем соседние точки {f}(φ) хордами",
+                   "以弦连接 {f}(φ) 的相邻点"),
+    "pole_d":     ("Axes of {g}(φ); the pole {P} at {H} to the left of the origin",
+                   "Оси {g}(φ); полюс {P} на расстоянии {H} левее начала координат",
+                   "作 {g}(φ) 坐标轴；极点 {P} 位于原点左方 {H}"),
+    "rays_d":     ("From {P}, rays parallel to the chords of {f}(φ)", "Из полюса {P} — лучи, параллельные хордам {f}(φ)",
+                   "自 {P} 作平行于 {f}(φ) 各弦的射线"),
+    "project_d":  ("Carry each ray's cut on the ordinate axis to the middle of its interval",
+                   "Переносим отрезки, отсечённые лучами на оси ординат, на середины интервалов",
+                   "将各射线在纵轴上的截点移到对应区间中点"),
+    "curve_d":    ("Join the points by a smooth curve: {g}(φ); {mu}", "Соединяем точки плавной кривой: {g}(φ); {mu}",
+                   "连成光滑曲线 {g}(φ)；{mu}"),
+    "compare_d":  ("Compare with the velocity plans and the analytic values",
+                   "Сравниваем с планами скоростей и аналитическим расчётом", "与速度多边形及解析值比较"),
+    # graphical integration (work diagrams)
+    "moments":    ("Draw the moments {Md} and {Mr} over the cycle; {mu}", "Строим моменты {Md} и {Mr} за цикл; {mu}",
+                   "作一个周期内的力矩 {Md} 与 {Mr}；{mu}"),
+    "means":      ("Replace each strip of {Mr} by its mean ordinate", "Заменяем каждую полоску {Mr} её средней ординатой",
+                   "以平均纵坐标代替 {Mr} 的每一窄条"),
+    "pole_i":     ("The pole {P} at {H} left of the origin; rays from {P} to the mean ordinates carried onto the axis",
+                   "Полюс {P} на {H} левее начала; лучи из {P} к средним ординатам, перенесённым на ось",
+                   "极点 {P} 位于原点左方 {H}；自 {P} 向移到纵轴上的平均纵坐标作射线"),
+    "chords_i":   ("Chords parallel to the rays, interval after interval: {Ad}(φ) and {Ar}(φ); {mu}",
+                   "Хорды, параллельные лучам, участок за участком: {Ad}(φ) и {Ar}(φ); {mu}",
+                   "逐区间作平行于射线的弦：{Ad}(φ) 与 {Ar}(φ)；{mu}"),
+    "dE":         ("Their difference, the excess work: {eq}", "Их разность — избыточная работа: {eq}",
+                   "两者之差即盈亏功：{eq}"),
+    "accuracy":   ("Compare with the exact integrals", "Сравниваем с точными интегралами", "与精确积分比较"),
+    # Zhukovsky's lever
+    "lever":      ("The velocity plan turned 90° against ω_1: a rigid lever pivoted at p; {mu}",
+                   "План скоростей, повёрнутый на 90° против ω_1, — жёсткий рычаг с опорой в полюсе p; {mu}",
+                   "将速度多边形逆 ω_1 转 90°，视为绕极点 p 转动的刚性杠杆；{mu}"),
+    "load":       ("Apply the load at the image of its point: {F}", "Прикладываем нагрузку в образе её точки: {F}",
+                   "将载荷加在其作用点的影像上：{F}"),
+    "arm":        ("Its arm about p: {h}", "Её плечо относительно p: {h}", "其对 p 的力臂：{h}"),
+    "balance":    ("Moments about p: {Mr} = F·h·μ_v/ω_1, as by the power method",
+                   "Моменты относительно p: {Mr} = F·h·μ_v/ω_1 — как и по методу мощностей",
+                   "对 p 取矩：{Mr} = F·h·μ_v/ω_1，与功率法相同"),
+    # kinematic scheme in m positions
+    "frame":      ("The fixed pivots and guides to {mu}; the circle of the crank pin",
+                   "Неподвижные опоры и направляющие в масштабе {mu}; окружность кривошипа",
+                   "按 {mu} 作固定铰链与导路；曲柄销轨迹圆"),
+    "crank_pos":  ("Divide the crank circle into {m} equal parts from position 0: the crank {c} in each",
+                   "Делим окружность кривошипа на {m} равных частей от положения 0: кривошип {c} в каждом",
+                   "自位置 0 将曲柄圆 {m} 等分：各位置的曲柄 {c}"),
+    "output_pos": ("In each position find {pts} by the link lengths (the compass): the links {links}",
+                   "В каждом положении находим {pts} по длинам звеньев (засечками): звенья {links}",
+                   "在各位置按杆长（圆规截取）求 {pts}：构件 {links}"),
+    "paths":      ("Join each point's positions: its path", "Соединяем положения каждой точки: её траектория",
+                   "连接各点的各个位置：其轨迹"),
+    "extremes_s": ("The extreme positions of the output and its stroke", "Крайние положения выходного звена и его ход",
+                   "输出构件的极限位置及行程"),
+    "thick":      ("One position drawn thick, with its joints, blocks, centres of mass and ω_1",
+                   "Одно положение — толстыми линиями: шарниры, ползуны, центры масс и ω_1",
+                   "以粗线画出一个位置：铰链、滑块、质心与 ω_1"),
 }
 
 
@@ -333,6 +395,163 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
+# ----------------------------------------------------------------------------- graphical calculus
+
+def _text_of(figure, name: str) -> str:
+    return next((e.text for e in figure.elements if e.name == name), "")
+
+
+def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The slider's kinematic diagrams by graphical differentiation, step by step: s(φ); its chords;
+    the v axes and the pole P₁; the rays; the points; v(φ); its chords; the a axes and P₂; the rays;
+    the points; a(φ); the comparison.
+
+    Parameters
+    ----------
+    subject : Case or linkage with one slider
+        As :func:`graphmethods.sheets.calculus.kinematic_diagrams` takes it.
+    """
+    from graphmethods.sheets import calculus as C
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = C.kinematic_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
+    s_, v_, a_ = C.sym(nt, "s"), C.sym(nt, "v"), C.sym(nt, "a")
+
+    def starts(*prefixes):
+        return lambda n: n.startswith(prefixes)
+
+    rules = [(_w(nt, "s_curve", s=s_, m=m, mus=_text_of(figure, "formula-s-1")),
+              starts("title", "axis-phi-s", "axis-s", "ordinate-s-", "dot-s-", "curve-s", "formula-s-",
+                     "scale-captions"))]
+    for f, g, pole, H, band in ((s_, v_, "pole-v-", "H1", "v"), (v_, a_, "pole-a-", "H2", "a")):
+        rules += [
+            (_w(nt, "chords", f=f), starts(f"chord-{'s' if band == 'v' else 'v'}-")),
+            (_w(nt, "pole_d", g=g, P=_text_of(figure, f"{pole}label"), H=_text_of(figure, f"dimension-{H}-text")),
+             starts(f"axis-phi-{band}", f"axis-{band}", pole, f"dimension-{H}")),
+            (_w(nt, "rays_d", P=_text_of(figure, f"{pole}label"), f=f), starts(f"ray-{band}-")),
+            (_w(nt, "project_d"), starts(f"projection-{band}-", f"dot-{band}-")),
+            (_w(nt, "curve_d", g=g, mu=_text_of(figure, f"formula-{band}-1")), starts(f"curve-{band}",
+                                                                                       f"formula-{band}-")),
+        ]
+    rules.append((_w(nt, "compare_d"), lambda n: False))
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The work diagrams by graphical integration (method of chords), step by step: M_d and M_r; the
+    mean ordinates; the pole and its rays; the chords A_d(φ), A_r(φ); ΔE = A_d − A_r; the accuracy.
+
+    Parameters
+    ----------
+    subject : Study, Case, cycle problem with moment curves, or (M_d, M_r)
+        As :func:`graphmethods.sheets.calculus.work_diagrams` takes it.
+    """
+    from graphmethods.sheets import calculus as C
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = C.work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
+    P = _text_of(figure, "pole-label")
+
+    def starts(*prefixes):
+        return lambda n: n.startswith(prefixes)
+
+    rules = [
+        (_w(nt, "moments", Md=nt.sym("M_d"), Mr=nt.sym("M_r"), mu=_text_of(figure, "formula-M-1")),
+         starts("title", "axis-phi-M", "axis-M", "curve-M_", "name-M-", "formula-M-", "scale-captions")),
+        (_w(nt, "means", Mr=nt.sym("M_r")), starts("mean-")),
+        (_w(nt, "pole_i", P=P, H=_text_of(figure, "dimension-H-text")), starts("pole-", "dimension-H", "ray-",
+                                                                               "projection-")),
+        (_w(nt, "chords_i", Ad=C.sym(nt, "A_d"), Ar=C.sym(nt, "A_r"), mu=_text_of(figure, "formula-A-1")),
+         starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
+        (_w(nt, "dE", eq=_text_of(figure, "formula-dE-1")), starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
+                                                                    "curve-dE", "dot-dE-", "formula-dE-")),
+        (_w(nt, "accuracy"), lambda n: False),
+    ]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- Zhukovsky's lever
+
+def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="slide") -> BuildUp:
+    """Zhukovsky's lever at one position, step by step: the plan turned 90° as a lever; the load at
+    the image of its point; its arm h about p; the balance of moments, M_r.
+
+    Parameters
+    ----------
+    study : Study or Case
+        As :func:`graphmethods.sheets.dynamics.zhukovsky_lever` takes it.
+    position : int, optional
+        The position (default: the one with the largest M_r).
+    """
+    from graphmethods.sheets import dynamics as D
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = D.zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
+    mu_v = next((sc for sc in figure.scales() if "v" in sc.symbol), figure.scales()[0])
+    rules = [
+        (_w(nt, "lever", mu=mu_v.caption(nt)),
+         lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
+        (_w(nt, "load", F=_text_of(figure, "label-F")), _leader_of(["force-F", "label-F"])),
+        (_w(nt, "arm", h=_text_of(figure, "label-h")), _leader_of(["dimension-h", "label-h"])),
+        (_w(nt, "balance", Mr=D.sym(nt, "M_r")), lambda n: False),
+    ]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- the kinematic scheme
+
+def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The kinematic scheme in m positions, step by step: the frame; the crank in m positions; the
+    other links found by their lengths; the paths of the centres of mass; the extreme positions; one
+    position drawn thick.
+
+    Parameters
+    ----------
+    linkage : Case, Study or Mechanism
+        As :func:`graphmethods.sheets.kinematics.kinematic_scheme` takes it.
+    """
+    from graphmethods.sheets import kinematics as K
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = K.kinematic_scheme(linkage, m=m, notation=nt, page=pg, title_block=tb)
+    mech = K._Linkage.of(linkage, m=m).mech
+    pin = mech.crank_pin
+    crank = next(ln for ln, (a, b) in mech.link_joints.items() if b == pin)
+    others = [ln for ln in mech.link_joints if ln != crank]
+    moving = [j for j in dict.fromkeys(b for ln in others for b in mech.link_joints[ln])
+              if j != pin and not j.startswith("O")]
+    mu_l = figure.scales()[0]
+
+    def pos_of(links):
+        return lambda n: n.startswith("position-") and n.rsplit("-", 1)[-1] in links
+
+    def mark_of(points):
+        return lambda n: any(n.startswith(f"mark-{p}-") for p in points) and not n.endswith("-extreme")
+
+    rules = [
+        (_w(nt, "frame", mu=mu_l.caption(nt)),
+         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-"))
+         or (n.startswith("name-O"))),
+        (_w(nt, "crank_pos", m=m, c=K._sub(crank)),
+         lambda n: pos_of([crank])(n) or mark_of([pin])(n) or (n.startswith(f"number-{pin}-")
+                                                                  and not n.endswith("-extreme"))),
+        (_w(nt, "output_pos", pts=", ".join(moving) or pin, links=", ".join(K._sub(x) for x in others)),
+         lambda n: pos_of(others)(n) or mark_of(moving)(n) or (n.startswith("number-out-")
+                                                                and not n.endswith("-extreme"))),
+        (_w(nt, "paths"), lambda n: n.startswith("path-")),
+        (_w(nt, "extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
+         or n in ("dimension-H", "summary")),
+        (_w(nt, "thick"), lambda n: False),
+    ]
+    names = {e.name for e in figure.elements}
+    rules = [r for r in rules[:-1] if any(r[1](n) for n in names)] + [rules[-1]]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
 # ----------------------------------------------------------------------------- by name
 
 #: figure name -> (step source, what it needs: "linkage" or "cycle")
@@ -340,6 +559,10 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "velocity-plan": (velocity_plan_steps, "linkage"),
     "energy-indicator": (energy_indicator_steps, "cycle"),
     "wittenbauer": (wittenbauer_steps, "study"),
+    "kinematic-diagrams": (differentiation_steps, "linkage"),
+    "work-diagrams": (integration_steps, "cycle"),
+    "zhukovsky-lever": (zhukovsky_steps, "study"),
+    "kinematic-scheme": (scheme_steps, "linkage"),
 }
 
 #: built-in problems: name -> problem file in graphmethods/problems/data (linkages) or a W problem
@@ -386,9 +609,11 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     case : str, path or problem
         A built-in name (``press``, ``four-bar``, ``slotted-lever``, ``shaper``, ``W1`` … ``W4``), a
         linkage problem file, or a problem object.
-    figure : {'velocity-plan', 'energy-indicator', 'wittenbauer'}
+    figure : str
+        One of :data:`FIGURES`: ``velocity-plan``, ``energy-indicator``, ``wittenbauer``,
+        ``kinematic-diagrams``, ``work-diagrams``, ``zhukovsky-lever``, ``kinematic-scheme``.
     position : int, optional
-        The position of a velocity plan.
+        The position of a velocity plan or of Zhukovsky's lever.
     m : int
         Positions per crank turn of a linkage study.
 
@@ -406,13 +631,15 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     fn, needs = FIGURES[key]
     obj = resolve_case(case)
     is_linkage = isinstance(obj, Case)
-    if position is not None and key != "velocity-plan":
-        raise InputError(f"--position is for the velocity plan only, not for {key}")
+    if position is not None and key not in ("velocity-plan", "zhukovsky-lever"):
+        raise InputError(f"--position is for the velocity plan and Zhukovsky's lever only, not for {key}")
     if needs == "linkage":
         if not is_linkage:
-            raise InputError(f"{key} needs a linkage problem (press, four-bar, slotted-lever, shaper or a problem "
-                             f"file); {case} is a cycle given by its works")
-        return fn(obj, position, notation=notation, page=page, m=m)
+            raise InputError(f"{key} needs a linkage problem ({', '.join(LINKAGES)} or a problem file); {case} is "
+                             f"a cycle given by its works")
+        if key == "velocity-plan":
+            return fn(obj, position, notation=notation, page=page, m=m)
+        return fn(obj, notation=notation, page=page, m=m)
     if is_linkage:
         from graphmethods.dynamics.study import Study
 
@@ -420,4 +647,8 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     elif needs == "study":
         raise InputError(f"{key} needs a linkage problem with masses and loads ({', '.join(LINKAGES)} or a "
                          f"problem file); {case} gives works only")
+    if key == "work-diagrams":
+        return fn(obj, notation=notation, page=page, m=m)
+    if key == "zhukovsky-lever":
+        return fn(obj, position, notation=notation, page=page)
     return fn(obj, notation=notation, page=page)
