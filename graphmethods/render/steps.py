@@ -88,7 +88,7 @@ def _fragment(scene: Scene, prefix: str) -> list[ET.Element]:
     for el in out:
         for sub in el.iter():
             if "id" in sub.attrib:
-                sub.set("id", prefix + sub.get("id"))
+                sub.set("id", prefix + (sub.get("id") or ""))
     return out
 
 

@@ -225,4 +225,5 @@ def partition(figure: Scene, rules, *, caption_box, caption_mm: float = 5.0, res
     empty = [s.caption for s in steps if not s.elements]
     if empty:
         raise InputError(f"{figure.name}: no element for the step {empty[0]!r}")
-    return BuildUp(figure, tuple(steps), tuple(float(v) for v in caption_box), caption_mm)
+    x0, y0, x1, y1 = (float(v) for v in caption_box)
+    return BuildUp(figure, tuple(steps), (x0, y0, x1, y1), caption_mm)

@@ -35,10 +35,10 @@ from typing import Callable
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Page, in_language
+from graphmethods.scene import Axis, Page, Scale, in_language
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.markup import text_width_mm
-from graphmethods.scene.steps import BuildUp, partition
+from graphmethods.scene.steps import BuildUp, Rule, partition
 
 #: the caption band under the figure, mm, and the caption size, by page kind
 SLIDE_BAND_MM, SLIDE_CAPTION_MM = 20.0, 6.5
@@ -208,10 +208,23 @@ def _build(figure, rules, box, caption_mm, rest) -> BuildUp:
     return partition(figure, rules, caption_box=box, caption_mm=_fit(caption_mm, box, caps), rest=rest)
 
 
+def _axis_scale(figure, name: str) -> Scale:
+    """The scale of the figure's axis called ``name``."""
+    axis = figure.element(name)
+    if not isinstance(axis, Axis):
+        raise InputError(f"{figure.name}: {name} is not an axis")
+    return axis.scale
+
+
+def _text_of(figure, name: str) -> str:
+    """The text of the figure's element called ``name`` (empty when there is none)."""
+    return next((str(getattr(e, "text", "")) for e in figure.elements if e.name == name), "")
+
+
 def _leader_of(names):
     """Rule: the element named one of ``names``, or a leader line drawn to it (``leader-NAME``)."""
-    names = set(names)
-    return lambda n: n in names or (n.startswith("leader-") and n[len("leader-"):] in names)
+    wanted = set(names)
+    return lambda n: n in wanted or (n.startswith("leader-") and n[len("leader-"):] in wanted)
 
 
 # ----------------------------------------------------------------------------- velocity plan
@@ -249,7 +262,7 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
     s_v = figure.scales()[0]
     unit = K._unit(nt, "m/s")
     images, vectors = K._plan_layout(plans)
-    eq_text = {e.name: e.text for e in figure.elements if e.name.startswith("equation-")}
+    eq_text = {e.name: _text_of(figure, e.name) for e in figure.elements if e.name.startswith("equation-")}
     label_of = {c.label: n for n, c in plans.constructions.items()}
 
     def vec(start, end):
@@ -303,8 +316,8 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
                           _leader_of([vec("p", x)])))
     rules.append((_w(nt, "read"), lambda n: False))
     # drop steps with nothing of their own to draw (an image that coincides with one drawn before)
-    names = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in names)] + [rules[-1]]
+    drawn = {e.name for e in figure.elements}
+    rules = [r for r in rules[:-1] if any(r[1](n) for n in drawn)] + [rules[-1]]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
@@ -325,10 +338,10 @@ def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, wor
     pg, box, cap_mm, tb = step_page(page)
     figure = E_.energy_indicator(cycle, mu_E=mu_E, notation=nt, page=pg, title_block=tb, work_unit=work_unit)
     ew, _ = E_._cycle(cycle, nt)
-    s_E = figure.element("axis-E").scale
+    s_E = _axis_scale(figure, "axis-E")
     u = nt.unit(work_unit)
     lab = ew.labels
-    rules = [(_w(nt, "axis_E", E=nt.sym("E"), mu=s_E.caption(nt)),
+    rules: list[tuple[str, Rule]] = [(_w(nt, "axis_E", E=nt.sym("E"), mu=s_E.caption(nt)),
               ["title", "axis-E", "start-level", f"name-{lab[0]}", "scale-captions", "legend"])]
     for i, A in enumerate(ew.work):
         a, b = lab[i], lab[i + 1]
@@ -364,7 +377,7 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     figure = W.wittenbauer_diagram(source, mu_J=mu_J, mu_T=mu_T, tangents=tangents, notation=nt, page=pg,
                                    title_block=tb)
     data = W.diagram_data(source, tangents=tangents, notation=nt)
-    s_T, s_J = figure.element("axis-T").scale, figure.element("axis-J").scale
+    s_T, s_J = _axis_scale(figure, "axis-T"), _axis_scale(figure, "axis-J")
     res = data.result(s_J.per_mm, s_T.per_mm)
     J, T = W.sym(nt, "J_e"), W.sym(nt, "dT")
 
@@ -396,10 +409,6 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
 
 
 # ----------------------------------------------------------------------------- graphical calculus
-
-def _text_of(figure, name: str) -> str:
-    return next((e.text for e in figure.elements if e.name == name), "")
-
 
 def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) -> BuildUp:
     """The slider's kinematic diagrams by graphical differentiation, step by step: s(φ); its chords;
