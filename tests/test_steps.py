@@ -368,6 +368,9 @@ def test_cli_default_name_and_positions(tmp_path, capsys, monkeypatch):
     frames = sorted(p.name for p in tmp_path.iterdir())
     assert frames[0] == "shaper_velocity_plan_en-01.svg" and len(frames) == 12
     assert "position 3" in (tmp_path / frames[-1]).read_text(encoding="utf-8")
+    (tmp_path / "out").mkdir()
+    code, out, _ = _run(capsys, "W2", "energy-indicator", "--format", "html", "--lang", "zh", "--out", "out")
+    assert code == 0 and (tmp_path / "out" / "w2_energy_indicator_zh.html").is_file()
 
 
 @pytest.mark.parametrize("argv,words", [

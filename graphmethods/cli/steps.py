@@ -45,7 +45,8 @@ def add_parser(sub) -> None:
     p.add_argument("--seconds", type=float, default=3.0, metavar="S",
                    help="animated-svg: seconds each step is shown (default 3)")
     p.add_argument("--out", default=None, metavar="PATH",
-                   help="the file to write (svg: the frames are PATH-01.svg, …); default CASE_FIGURE_LANG.EXT")
+                   help="the file to write, or a folder for the default name (svg: the frames are PATH-01.svg, …); "
+                        "default CASE_FIGURE_LANG.EXT")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.set_defaults(func=run)
 
@@ -59,13 +60,13 @@ def run(args) -> int:
         raise InputError(f"--positions {args.positions}: give from 3 to 720 positions per turn")
     bu = steps.build(args.case, args.figure, position=args.position, notation=args.lang, page=args.page,
                      m=args.positions)
-    if args.out is None:
-        stem = pathlib.Path(str(args.case)).stem.lower().replace("-", "_")
-        figure = str(args.figure).lower().replace("-", "_")
-        extra = "_animated" if args.out_format == "animated-svg" else ""
-        out = pathlib.Path(f"{stem}_{figure}_{args.lang}{extra}{SUFFIX[args.out_format]}")
-    else:
-        out = pathlib.Path(args.out)
+    stem = pathlib.Path(str(args.case)).stem.lower().replace("-", "_")
+    figure = str(args.figure).lower().replace("-", "_")
+    extra = "_animated" if args.out_format == "animated-svg" else ""
+    default = f"{stem}_{figure}_{args.lang}{extra}{SUFFIX[args.out_format]}"
+    out = pathlib.Path(default if args.out is None else args.out)
+    if out.is_dir():                      # a folder: the default name inside it
+        out = out / default
     written = render_steps.save(bu, out, args.out_format, overwrite=args.force, seconds=args.seconds)
     shown = str(written[0]) if len(written) == 1 else f"{written[0]} … {written[-1].name}"
     print(f"wrote {shown}: {len(bu)} steps ({bu.figure.page.size.lower()} {bu.figure.page.width_mm:g} × "

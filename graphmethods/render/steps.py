@@ -258,7 +258,7 @@ _JS = """
   document.addEventListener('keydown', function (ev) {
     if (ev.altKey || ev.ctrlKey || ev.metaKey) { return; }
     var key = ev.key;
-    if (key === 'ArrowRight' || key === 'PageDown' || key === ' ') { show(k + 1); }
+    if (key === 'ArrowRight' || key === 'PageDown') { show(k + 1); }
     else if (key === 'ArrowLeft' || key === 'PageUp') { show(k - 1); }
     else if (key === 'Home') { show(1); }
     else if (key === 'End') { show(n); }
