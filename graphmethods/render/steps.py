@@ -277,7 +277,7 @@ def html_page(bu: BuildUp) -> str:
     The figure is inline SVG (its caption band left out: the caption is HTML text under it); every
     step's caption is in the page; a small script shows step k on the buttons, the arrow keys
     (← →, PageUp/PageDown, Home/End) and ``#step=k``. Without script the page shows step 1 and
-    every caption.
+    the list of every step's caption.
     """
     bu = _check(bu)
     fig = bu.figure
@@ -310,6 +310,7 @@ def html_page(bu: BuildUp) -> str:
 <style>
 {_CSS}
 </style>
+<noscript><style>#captions[hidden]{{display:block}} nav{{display:none}}</style></noscript>
 </head>
 <body data-step="1">
 <main>
