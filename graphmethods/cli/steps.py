@@ -19,7 +19,7 @@ from __future__ import annotations
 import pathlib
 import sys
 
-HELP = "a construction step by step for a lecture: slides (PDF), SVG frames, animated SVG, HTML page"
+HELP = "a construction step by step for a lecture: PDF slides, SVG frames, animation, HTML page"
 SUFFIX = {"pdf": ".pdf", "svg": ".svg", "html": ".html", "animated-svg": ".svg"}
 
 
