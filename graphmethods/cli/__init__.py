@@ -25,6 +25,7 @@ COMMANDS = {
     "worksheet": ("worksheet", "printable worksheets with answer keys (variants from a seed)"),
     "check": ("check", "check a student's hand drawing (answers file) and diagnose usual mistakes"),
     "bench": ("bench", "measure speed against error (Markdown table and JSON)"),
+    "steps": ("steps", "a construction step by step for a lecture: PDF slides, SVG frames, animation, HTML page"),
 }
 
 

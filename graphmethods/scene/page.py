@@ -1,4 +1,4 @@
-"""The sheet of paper: A4…A1, portrait or landscape, margins, frame and title block.
+"""The sheet of paper: A4…A1 (or a 16:9 slide), portrait or landscape, margins, frame and title block.
 
 >>> p = Page("A3", "landscape")
 >>> p.width_mm, p.height_mm
@@ -16,8 +16,9 @@ from graphmethods.scene import markup
 from graphmethods.scene.elements import Table
 from graphmethods.scene.primitives import Path, Style
 
-#: ISO 216 sizes in mm, (short side, long side)
-PAPER = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0), "A1": (594.0, 841.0)}
+#: ISO 216 sizes in mm, (short side, long side); SLIDE is a 16:9 presentation slide (13.333 × 7.5 in)
+PAPER = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0), "A1": (594.0, 841.0),
+         "SLIDE": (190.5, 338.7)}
 
 FRAME = Style(width_mm=0.5)
 
@@ -63,7 +64,7 @@ class Page:
 
     Parameters
     ----------
-    size : {'A4', 'A3', 'A2', 'A1'}
+    size : {'A4', 'A3', 'A2', 'A1', 'slide'}
     orientation : {'portrait', 'landscape'}
     margins_mm : (float, float, float, float), mm
         Top, right, bottom, left; the frame is drawn on them.

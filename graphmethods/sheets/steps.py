@@ -1,0 +1,663 @@
+"""Step sources: the textbook constructions told step by step, for a lecture.
+
+Each function builds the finished figure with its own figure function (on a page that keeps a
+band free under the figure for the caption) and splits its elements into steps by the element
+names that figure function gives, in the order the construction records say:
+
+- :func:`velocity_plan_steps`: the pole and μ_v; pa ⟂ OA (known); for every point found by
+  intersection its vector equation, the line through the known image, the line through p, and
+  their meeting point; the images by similarity or proportion; then the values read off.
+- :func:`energy_indicator_steps`: the axis and start level; one vector per interval; the
+  closure; the highest and lowest points and ΔW_max.
+- :func:`wittenbauer_steps`: the axes; the points of positions 0…m; the curve; the ray at ψ_max;
+  the ray at ψ_min; k and l; kl; J_F.
+- :func:`differentiation_steps` (the slider's s, v, a by graphical differentiation),
+  :func:`integration_steps` (work diagrams by the method of chords), :func:`zhukovsky_steps`
+  (Zhukovsky's lever) and :func:`scheme_steps` (the kinematic scheme in m positions).
+
+A new construction (the acceleration plan, the force plan) plugs in as one more function of
+the same shape that returns a :class:`~graphmethods.scene.steps.BuildUp`; :data:`FIGURES` lists
+them by name for :func:`build` and the command line.
+
+>>> from graphmethods import problems
+>>> bu = energy_indicator_steps(problems.w1(), notation="en")
+>>> len(bu), bu.captions()[1]
+(10, 'Interval ab: A = −50 J, a vector 10 mm down from a to b')
+>>> bu.scene_at(len(bu)) == bu.figure
+True
+"""
+
+from __future__ import annotations
+
+import pathlib
+from typing import Callable
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.scene import Axis, Page, Scale, in_language
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.markup import text_width_mm
+from graphmethods.scene.steps import BuildUp, Rule, partition
+
+#: the caption band under the figure, mm, and the caption size, by page kind
+SLIDE_BAND_MM, SLIDE_CAPTION_MM = 20.0, 6.5
+SHEET_BAND_MM, SHEET_CAPTION_MM = 14.0, 5.0
+
+WORDS = {
+    # velocity plan
+    "pole":       ("Choose the pole p and the velocity scale {mu}", "Выбираем полюс p и масштаб скоростей {mu}",
+                   "选取极点 p 和速度比例尺 {mu}"),
+    "known":      ("From p draw pa ⊥ {link} in the sense of ω_1: {eq}",
+                   "Из полюса p проводим pa ⊥ {link} в сторону ω_1: {eq}",
+                   "自 p 沿 ω_1 方向作 pa ⊥ {link}：{eq}"),
+    "equation":   ("Write the vector equation {eq}", "Записываем векторное уравнение {eq}", "列出矢量方程 {eq}"),
+    "line":       ("Through {at}, draw the direction of {v} {rel}", "Через {at} проводим направление {v} {rel}",
+                   "过 {at} 作 {v} 的方向线 {rel}"),
+    "meet":       ("{x} is where the two lines meet: {values}", "Точка {x} — пересечение двух линий: {values}",
+                   "两线交点即 {x}：{values}"),
+    "similarity": ("{x} by similarity: {eq}", "Точку {x} находим по подобию: {eq}", "按影像原理求 {x}：{eq}"),
+    "proportion": ("{x} by proportion: {eq}", "Точку {x} находим пропорционально: {eq}", "按比例求 {x}：{eq}"),
+    "same":       ("{x} coincides with {y}", "Точка {x} совпадает с {y}", "{x} 与 {y} 重合"),
+    "read":       ("Read off each velocity as length × μ_v, and ω of every link",
+                   "Снимаем скорости: длина × μ_v; угловые скорости звеньев",
+                   "量取各速度（长度 × μ_v），求各构件角速度"),
+    "guide":      ("the guide", "направляющей", "导路"),
+    # energy indicator
+    "axis_E":     ("Draw the axis of {E} to {mu} and the start level through a",
+                   "Строим ось {E} в масштабе {mu} и начальный уровень через точку a",
+                   "按比例尺 {mu} 作 {E} 轴，并过 a 作起始水平线"),
+    "interval":   ("Interval {ab}: {A} = {val}, a vector {mm} mm {dir} from {a} to {b}",
+                   "Участок {ab}: {A} = {val}, вектор {mm} мм {dir} от {a} до {b}",
+                   "区间 {ab}：{A} = {val}，自 {a} 向{dir}作 {mm} mm 矢量至 {b}"),
+    "up":         ("up", "вверх", "上"),
+    "down":       ("down", "вниз", "下"),
+    "closure":    ("The staircase closes on the start level: {sum}", "Ломаная замыкается на начальном уровне: {sum}",
+                   "矢量图回到起始水平线：{sum}"),
+    "residual":   ("The staircase misses the start level by {sum} (closure residual)",
+                   "Ломаная не доходит до начального уровня на {sum} (невязка)",
+                   "矢量图与起始水平线相差 {sum}（闭合误差）"),
+    "extremes":   ("Highest point {hi}, lowest point {lo}: {dW} = {val}",
+                   "Наивысшая точка {hi}, наинизшая {lo}: {dW} = {val}",
+                   "最高点 {hi}，最低点 {lo}：{dW} = {val}"),
+    # Wittenbauer diagram
+    "axes_JT":    ("Axes: {J} to {muJ}, {T} to {muT}", "Оси: {J} в масштабе {muJ}, {T} в масштабе {muT}",
+                   "坐标轴：{J} 比例尺 {muJ}，{T} 比例尺 {muT}"),
+    "points":     ("Plot the positions 0…{m}: ({J}/μ_J, {T}/μ_T)", "Наносим точки положений 0…{m}: ({J}/μ_J, {T}/μ_T)",
+                   "描出位置 0…{m} 的点 ({J}/μ_J, {T}/μ_T)"),
+    "curve":      ("Join them in order: the closed curve {T}({J})", "Соединяем их по порядку: замкнутая кривая {T}({J})",
+                   "依次连接：封闭曲线 {T}({J})"),
+    "ray_max":    ("The line at {psi}, tan {psi} = {tan}, touches the curve from above ({w} at {i})",
+                   "Прямая под углом {psi}, tg {psi} = {tan}, касается кривой сверху ({w} в положении {i})",
+                   "作倾角 {psi} 的直线（tan {psi} = {tan}），从上方切于曲线（{w} 在位置 {i}）"),
+    "ray_min":    ("The line at {psi}, tan {psi} = {tan}, touches the curve from below ({w} at {i})",
+                   "Прямая под углом {psi}, tg {psi} = {tan}, касается кривой снизу ({w} в положении {i})",
+                   "作倾角 {psi} 的直线（tan {psi} = {tan}），从下方切于曲线（{w} 在位置 {i}）"),
+    "kl_points":  ("The two lines cut k and l on the ordinate axis", "Прямые отсекают на оси ординат точки k и l",
+                   "两直线在纵轴上截得 k、l 两点"),
+    "kl":         ("Measure kl = {kl} mm", "Измеряем отрезок kl = {kl} мм", "量得 kl = {kl} mm"),
+    "J_F":        ("The flywheel: {JF} = {muT}·kl/({wm}²·{d}) = {J}", "Маховик: {JF} = {muT}·kl/({wm}²·{d}) = {J}",
+                   "飞轮：{JF} = {muT}·kl/({wm}²·{d}) = {J}"),
+    # graphical differentiation (kinematic diagrams)
+    "s_curve":    ("Plot the slider's displacement {s}(φ) at positions 0…{m} from the scheme; {mus}",
+                   "Строим перемещение ползуна {s}(φ) по положениям 0…{m} с плана механизма; {mus}",
+                   "按机构位置图作滑块位移曲线 {s}(φ)，位置 0…{m}；{mus}"),
+    "chords":     ("Join neighbouring points of {f}(φ) by chords", "Соединяем соседние точки {f}(φ) хордами",
+                   "以弦连接 {f}(φ) 的相邻点"),
+    "pole_d":     ("Axes of {g}(φ); the pole {P} at {H} to the left of the origin",
+                   "Оси {g}(φ); полюс {P} на расстоянии {H} левее начала координат",
+                   "作 {g}(φ) 坐标轴；极点 {P} 位于原点左方 {H}"),
+    "rays_d":     ("From {P}, rays parallel to the chords of {f}(φ)", "Из полюса {P} — лучи, параллельные хордам {f}(φ)",
+                   "自 {P} 作平行于 {f}(φ) 各弦的射线"),
+    "project_d":  ("Carry each ray's cut on the ordinate axis to the middle of its interval",
+                   "Переносим отрезки, отсечённые лучами на оси ординат, на середины интервалов",
+                   "将各射线在纵轴上的截点移到对应区间中点"),
+    "curve_d":    ("Join the points by a smooth curve: {g}(φ); {mu}", "Соединяем точки плавной кривой: {g}(φ); {mu}",
+                   "连成光滑曲线 {g}(φ)；{mu}"),
+    "compare_d":  ("Compare with the velocity plans and the analytic values",
+                   "Сравниваем с планами скоростей и аналитическим расчётом", "与速度多边形及解析值比较"),
+    # graphical integration (work diagrams)
+    "moments":    ("Draw the moments {Md} and {Mr} over the cycle; {mu}", "Строим моменты {Md} и {Mr} за цикл; {mu}",
+                   "作一个周期内的力矩 {Md} 与 {Mr}；{mu}"),
+    "means":      ("Replace each strip of {Mr} by its mean ordinate", "Заменяем каждую полоску {Mr} её средней ординатой",
+                   "以平均纵坐标代替 {Mr} 的每一窄条"),
+    "pole_i":     ("The pole {P} at {H} left of the origin; rays from {P} to the mean ordinates carried onto the axis",
+                   "Полюс {P} на {H} левее начала; лучи из {P} к средним ординатам, перенесённым на ось",
+                   "极点 {P} 位于原点左方 {H}；自 {P} 向移到纵轴上的平均纵坐标作射线"),
+    "chords_i":   ("Chords parallel to the rays, interval after interval: {Ad}(φ) and {Ar}(φ); {mu}",
+                   "Хорды, параллельные лучам, участок за участком: {Ad}(φ) и {Ar}(φ); {mu}",
+                   "逐区间作平行于射线的弦：{Ad}(φ) 与 {Ar}(φ)；{mu}"),
+    "dE":         ("Their difference, the excess work: {eq}", "Их разность — избыточная работа: {eq}",
+                   "两者之差即盈亏功：{eq}"),
+    "accuracy":   ("Compare with the exact integrals", "Сравниваем с точными интегралами", "与精确积分比较"),
+    # Zhukovsky's lever
+    "lever":      ("The velocity plan turned 90° against ω_1: a rigid lever pivoted at p; {mu}",
+                   "План скоростей, повёрнутый на 90° против ω_1, — жёсткий рычаг с опорой в полюсе p; {mu}",
+                   "将速度多边形逆 ω_1 转 90°，视为绕极点 p 转动的刚性杠杆；{mu}"),
+    "load":       ("Apply the load at the image of its point: {F}", "Прикладываем нагрузку в образе её точки: {F}",
+                   "将载荷加在其作用点的影像上：{F}"),
+    "arm":        ("Its arm about p: {h}", "Её плечо относительно p: {h}", "其对 p 的力臂：{h}"),
+    "balance":    ("Moments about p: {Mr} = F·h·μ_v/ω_1, as by the power method",
+                   "Моменты относительно p: {Mr} = F·h·μ_v/ω_1 — как и по методу мощностей",
+                   "对 p 取矩：{Mr} = F·h·μ_v/ω_1，与功率法相同"),
+    # kinematic scheme in m positions
+    "frame":      ("The fixed pivots and guides to {mu}; the circle of the crank pin",
+                   "Неподвижные опоры и направляющие в масштабе {mu}; окружность кривошипа",
+                   "按 {mu} 作固定铰链与导路；曲柄销轨迹圆"),
+    "crank_pos":  ("Divide the crank circle into {m} equal parts from position 0: the crank {c} in each",
+                   "Делим окружность кривошипа на {m} равных частей от положения 0: кривошип {c} в каждом",
+                   "自位置 0 将曲柄圆 {m} 等分：各位置的曲柄 {c}"),
+    "output_pos": ("In each position find {pts} by the link lengths (the compass): the links {links}",
+                   "В каждом положении находим {pts} по длинам звеньев (засечками): звенья {links}",
+                   "在各位置按杆长（圆规截取）求 {pts}：构件 {links}"),
+    "paths":      ("Join each point's positions: its path", "Соединяем положения каждой точки: её траектория",
+                   "连接各点的各个位置：其轨迹"),
+    "extremes_s": ("The extreme positions of the output and its stroke", "Крайние положения выходного звена и его ход",
+                   "输出构件的极限位置及行程"),
+    "thick":      ("One position drawn thick, with its joints, blocks, centres of mass and ω_1",
+                   "Одно положение — толстыми линиями: шарниры, ползуны, центры масс и ω_1",
+                   "以粗线画出一个位置：铰链、滑块、质心与 ω_1"),
+}
+
+
+def _w(nt, key: str, **kw) -> str:
+    return in_language(WORDS[key], nt, **kw)
+
+
+# ----------------------------------------------------------------------------- pages
+
+def step_page(page="slide") -> tuple[Page, tuple[float, float, float, float], float, bool]:
+    """The page a step figure is built on, the caption box under it, the caption size and whether the
+    figure gets a title block.
+
+    ``"slide"`` is a 16:9 slide (338.7 × 190.5 mm, no frame, no title block, 6.5 mm captions for a
+    projector); ``"A4"`` … ``"A1"`` are landscape sheets with a frame and a title block. A
+    :class:`~graphmethods.scene.Page` is used with its bottom margin grown by the caption band.
+
+    >>> page, box, size, tb = step_page("slide")
+    >>> (page.width_mm, page.height_mm), box, size, tb
+    ((338.7, 190.5), (8.0, 166.5, 330.7, 186.5), 6.5, False)
+    """
+    if isinstance(page, Page):
+        base = page
+    else:
+        name = str(page).strip()
+        if name.lower() == "slide":
+            base = Page("slide", "landscape", margins_mm=(8.0, 8.0, 4.0, 8.0), frame=False)
+        elif name.upper() in ("A4", "A3", "A2", "A1"):
+            base = Page(name.upper(), "landscape", frame=True)
+        else:
+            raise InputError(f"page {page!r}: use slide, A4, A3, A2 or A1")
+    slide = base.size == "SLIDE"
+    band = SLIDE_BAND_MM if slide else SHEET_BAND_MM
+    t, r, b, left = base.margins_mm
+    page_ = base.with_(margins_mm=(t, r, b + band, left))
+    box = (left, base.height_mm - b - band, base.width_mm - r, base.height_mm - b)
+    return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM), not slide
+
+
+def _fit(caption_mm: float, box, captions) -> float:
+    """The caption size: the given one, smaller when the longest caption would not fit the box."""
+    width = box[2] - box[0] - 4.0
+    longest = max((text_width_mm(f"{len(captions)}. {c}", caption_mm) for c in captions), default=0.0)
+    return caption_mm if longest <= width else max(2.5, caption_mm * width / longest)
+
+
+def _build(figure, rules, box, caption_mm, rest) -> BuildUp:
+    caps = [c for c, _ in rules]
+    return partition(figure, rules, caption_box=box, caption_mm=_fit(caption_mm, box, caps), rest=rest)
+
+
+def _axis_scale(figure, name: str) -> Scale:
+    """The scale of the figure's axis called ``name``."""
+    axis = figure.element(name)
+    if not isinstance(axis, Axis):
+        raise InputError(f"{figure.name}: {name} is not an axis")
+    return axis.scale
+
+
+def _text_of(figure, name: str) -> str:
+    """The text of the figure's element called ``name`` (empty when there is none)."""
+    return next((str(getattr(e, "text", "")) for e in figure.elements if e.name == name), "")
+
+
+def _leader_of(names):
+    """Rule: the element named one of ``names``, or a leader line drawn to it (``leader-NAME``)."""
+    wanted = set(names)
+    return lambda n: n in wanted or (n.startswith("leader-") and n[len("leader-"):] in wanted)
+
+
+# ----------------------------------------------------------------------------- velocity plan
+
+def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", page="slide", m=None,
+                        omega_1=None, mu_v=None) -> BuildUp:
+    """The velocity plan of one position, step by step, from its construction records.
+
+    Parameters
+    ----------
+    linkage : Case, Study, Mechanism, Positions or VelocityPlans
+        As :func:`graphmethods.sheets.kinematics.velocity_plan` takes it.
+    position : int, optional
+        The position drawn (default: the fullest plan of the working stroke).
+    notation : {'en', 'ru', 'zh'}
+    page : 'slide', 'A4' … 'A1' or Page
+
+    Examples
+    --------
+    >>> from graphmethods.kinematics import SliderCrank
+    >>> bu = velocity_plan_steps(SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13)}), 1, omega_1=10.0)
+    >>> [c.split(":")[0] for c in bu.captions()][2:5]
+    ['Through a, draw the direction of v_{BA} ⊥ AB', 'Through p, draw the direction of v_{B} ∥ the guide', 'b is where the two lines meet']
+    """
+    from graphmethods.sheets import kinematics as K
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    lk = K._Linkage.of(linkage, m=m, omega_1=omega_1)
+    plans = lk.plans
+    k = K.fullest_position(plans) if position is None else position
+    figure = K.velocity_plan(linkage, k, m=m, omega_1=omega_1, mu_v=mu_v, notation=nt, page=pg, title_block=tb)
+    k = int(k)
+    mech = plans.positions.mechanism
+    s_v = figure.scales()[0]
+    unit = K._unit(nt, "m/s")
+    images, vectors = K._plan_layout(plans)
+    eq_text = {e.name: _text_of(figure, e.name) for e in figure.elements if e.name.startswith("equation-")}
+    label_of = {c.label: n for n, c in plans.constructions.items()}
+
+    def vec(start, end):
+        return f"vector-{start}{end}"
+
+    def value(symbol, start, end):
+        v = float(np.hypot(*(np.asarray(plans.v(label_of[end])[k]) - (0 if start == "p" else
+                                                                      np.asarray(plans.v(label_of[start])[k])))))
+        return f"{symbol} = {nt.number(v, sig=4)} {unit}"
+
+    rules = [(_w(nt, "pole", mu=s_v.caption(nt)), _leader_of(["title", "pole", "name-p", "scale-captions",
+                                                                  "legend", "equation-0"]))]
+    eq_i = 1
+    for name, c in plans.constructions.items():
+        x = c.label
+        if c.method == "pole":
+            continue
+        eq = eq_text.get(f"equation-{eq_i}", "")
+        if c.method in ("known", "intersection", "similarity", "proportion"):
+            eq_i += 1
+        if c.method == "known":
+            crank = next(ln for ln, (a, b) in mech.link_joints.items() if b == name)
+            rules.append((_w(nt, "known", link=K._sub(crank), eq=eq),
+                          _leader_of([vec("p", x), f"name-{x}", f"equation-{eq_i - 1}"])))
+        elif c.method == "intersection":
+            first = True
+            for ln in c.lines:
+                rel = "⊥" if ln.relation == "perpendicular" else "∥"
+                to = _w(nt, "guide") if ln.to == "guide" else K._sub(ln.to)
+                if ln.through == "p":
+                    v = f"v_{{{name}}}"
+                else:
+                    y = label_of[ln.through]
+                    v = f"v_{{{K._rel_name(mech, name, y)}}}"
+                names = [f"line-{name}-{ln.through}", f"label-line-{name}-{ln.through}"]
+                if first:
+                    names.append(f"equation-{eq_i - 1}")
+                    first = False
+                rules.append((_w(nt, "line", at=K._plan_markup(ln.through), v=v, rel=f"{rel} {to}"),
+                              _leader_of(names)))
+            found = [pv for pv in vectors if pv.end == x]
+            vals = ",  ".join(value(pv.symbol, pv.start, pv.end) for pv in found)
+            rules.append((_w(nt, "meet", x=K._plan_markup(x), values=vals),
+                          _leader_of([vec(pv.start, pv.end) for pv in found] + [f"name-{x}"])))
+        elif c.method in ("similarity", "proportion"):
+            rules.append((_w(nt, c.method, x=K._plan_markup(x), eq=eq),
+                          _leader_of([vec("p", x), f"name-{x}", f"equation-{eq_i - 1}"])))
+        else:  # "same": its image coincides with another one found before
+            other = next((cc.label for nn, cc in plans.constructions.items() if cc.label == x and nn != name), x)
+            rules.append((_w(nt, "same", x=K._sub(name), y=K._plan_markup(other)),
+                          _leader_of([vec("p", x)])))
+    rules.append((_w(nt, "read"), lambda n: False))
+    # drop steps with nothing of their own to draw (an image that coincides with one drawn before)
+    drawn = {e.name for e in figure.elements}
+    rules = [r for r in rules[:-1] if any(r[1](n) for n in drawn)] + [rules[-1]]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- energy indicator
+
+def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, work_unit: str = "J") -> BuildUp:
+    """The energy indicator diagram, step by step: the axis, one vector per interval, the closure,
+    the extremes and ΔW_max.
+
+    Parameters
+    ----------
+    cycle : ExcessWork or problem
+        As :func:`graphmethods.sheets.energy.energy_indicator` takes it.
+    """
+    from graphmethods.sheets import energy as E_
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = E_.energy_indicator(cycle, mu_E=mu_E, notation=nt, page=pg, title_block=tb, work_unit=work_unit)
+    ew, _ = E_._cycle(cycle, nt)
+    s_E = _axis_scale(figure, "axis-E")
+    u = nt.unit(work_unit)
+    lab = ew.labels
+    rules: list[tuple[str, Rule]] = [(_w(nt, "axis_E", E=nt.sym("E"), mu=s_E.caption(nt)),
+              ["title", "axis-E", "start-level", f"name-{lab[0]}", "scale-captions", "legend"])]
+    for i, A in enumerate(ew.work):
+        a, b = lab[i], lab[i + 1]
+        cap = _w(nt, "interval", ab=f"{a}{b}", A=nt.sym("A"), val=f"{nt.number(float(A))} {u}",
+                 mm=nt.number(abs(s_E.to_mm(float(A))), sig=4), dir=_w(nt, "up" if A > 0 else "down"), a=a, b=b)
+        rules.append((cap, [f"vector-{a}{b}", f"value-{i + 1}", f"name-{b}", f"level-{b}"]))
+    res = float(ew.residual)
+    closed = abs(res) <= 1e-9 * (float(np.abs(ew.work).sum()) or 1.0)
+    total = f"Σ{nt.sym('A')} = {nt.number(0.0 if closed else res)} {u}"
+    rules.append((_w(nt, "closure" if closed else "residual", sum=total), ["closure", "leader-closure"]))
+    rules.append((_w(nt, "extremes", hi=lab[ew.index_E_max], lo=lab[ew.index_E_min], dW=nt.sym("delta_W_max"),
+                     val=f"{nt.number(float(ew.delta_W_max))} {u}"),
+                  lambda n: n in ("level-max", "level-min", "dimension-delta-W-max") or n.endswith(("E_max", "E_min"))))
+    return _build(figure, rules, box, cap_mm, rest=None)
+
+
+# ----------------------------------------------------------------------------- Wittenbauer diagram
+
+def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=None,
+                      tangents: str = "exact") -> BuildUp:
+    """The Wittenbauer energy–mass diagram, step by step: axes, the points, the curve, the ray at
+    ψ_max, the ray at ψ_min, k and l, kl, and J_F.
+
+    Parameters
+    ----------
+    source : Study, Case or WittenbauerResult
+        As :func:`graphmethods.sheets.wittenbauer.wittenbauer_diagram` takes it.
+    """
+    from graphmethods.sheets import wittenbauer as W
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = W.wittenbauer_diagram(source, mu_J=mu_J, mu_T=mu_T, tangents=tangents, notation=nt, page=pg,
+                                   title_block=tb)
+    data = W.diagram_data(source, tangents=tangents, notation=nt)
+    s_T, s_J = _axis_scale(figure, "axis-T"), _axis_scale(figure, "axis-J")
+    res = data.result(s_J.per_mm, s_T.per_mm)
+    J, T = W.sym(nt, "J_e"), W.sym(nt, "dT")
+
+    def starts(*prefixes):
+        return lambda n: n.startswith(prefixes)
+
+    ray = {}
+    for key in ("max", "min"):
+        idx = res.index_omega_max if key == "max" else res.index_omega_min
+        psi = W.sym(nt, f"psi_{key}")
+        tan = res.tan_psi_max if key == "max" else res.tan_psi_min
+        ray[key] = (_w(nt, f"ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4), w=W.sym(nt, f"omega_{key}"),
+                       i=", ".join(str(int(i)) for i in idx)),
+                    starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
+                           f"label-omega-{key}", f"leader-omega-{key}"))
+    rules = [
+        (_w(nt, "axes_JT", J=J, T=T, muJ=s_J.caption(nt), muT=s_T.caption(nt)),
+         ["title", "axis-T", "axis-J", "scale-captions"]),
+        (_w(nt, "points", m=res.m - 1, J=J, T=T), starts("vertex-", "pos-", "leader-pos-")),
+        (_w(nt, "curve", J=J, T=T), ["curve"]),
+        ray["max"],
+        ray["min"],
+        (_w(nt, "kl_points"), ["point-k", "point-l", "name-k", "name-l"]),
+        (_w(nt, "kl", kl=nt.number(float(res.kl_mm))), ["dimension-kl", "label-kl", "leader-kl"]),
+        (_w(nt, "J_F", JF=W.sym(nt, "J_F"), muT=W.sym(nt, "mu_T"), wm=W.sym(nt, "omega_m"), d=W.sym(nt, "delta"),
+              J=f"{nt.number(float(res.J_F), sig=4)} {W.unit(nt, 'kg·m²')}"), lambda n: False),
+    ]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- graphical calculus
+
+def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The slider's kinematic diagrams by graphical differentiation, step by step: s(φ); its chords;
+    the v axes and the pole P₁; the rays; the points; v(φ); its chords; the a axes and P₂; the rays;
+    the points; a(φ); the comparison.
+
+    Parameters
+    ----------
+    subject : Case or linkage with one slider
+        As :func:`graphmethods.sheets.calculus.kinematic_diagrams` takes it.
+    """
+    from graphmethods.sheets import calculus as C
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = C.kinematic_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
+    s_, v_, a_ = C.sym(nt, "s"), C.sym(nt, "v"), C.sym(nt, "a")
+
+    def starts(*prefixes):
+        return lambda n: n.startswith(prefixes)
+
+    rules = [(_w(nt, "s_curve", s=s_, m=m, mus=_text_of(figure, "formula-s-1")),
+              starts("title", "axis-phi-s", "axis-s", "ordinate-s-", "dot-s-", "curve-s", "formula-s-",
+                     "scale-captions"))]
+    for f, g, pole, H, band in ((s_, v_, "pole-v-", "H1", "v"), (v_, a_, "pole-a-", "H2", "a")):
+        rules += [
+            (_w(nt, "chords", f=f), starts(f"chord-{'s' if band == 'v' else 'v'}-")),
+            (_w(nt, "pole_d", g=g, P=_text_of(figure, f"{pole}label"), H=_text_of(figure, f"dimension-{H}-text")),
+             starts(f"axis-phi-{band}", f"axis-{band}", pole, f"dimension-{H}")),
+            (_w(nt, "rays_d", P=_text_of(figure, f"{pole}label"), f=f), starts(f"ray-{band}-")),
+            (_w(nt, "project_d"), starts(f"projection-{band}-", f"dot-{band}-")),
+            (_w(nt, "curve_d", g=g, mu=_text_of(figure, f"formula-{band}-1")), starts(f"curve-{band}",
+                                                                                       f"formula-{band}-")),
+        ]
+    rules.append((_w(nt, "compare_d"), lambda n: False))
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The work diagrams by graphical integration (method of chords), step by step: M_d and M_r; the
+    mean ordinates; the pole and its rays; the chords A_d(φ), A_r(φ); ΔE = A_d − A_r; the accuracy.
+
+    Parameters
+    ----------
+    subject : Study, Case, cycle problem with moment curves, or (M_d, M_r)
+        As :func:`graphmethods.sheets.calculus.work_diagrams` takes it.
+    """
+    from graphmethods.sheets import calculus as C
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = C.work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
+    P = _text_of(figure, "pole-label")
+
+    def starts(*prefixes):
+        return lambda n: n.startswith(prefixes)
+
+    rules = [
+        (_w(nt, "moments", Md=nt.sym("M_d"), Mr=nt.sym("M_r"), mu=_text_of(figure, "formula-M-1")),
+         starts("title", "axis-phi-M", "axis-M", "curve-M_", "name-M-", "formula-M-", "scale-captions")),
+        (_w(nt, "means", Mr=nt.sym("M_r")), starts("mean-")),
+        (_w(nt, "pole_i", P=P, H=_text_of(figure, "dimension-H-text")), starts("pole-", "dimension-H", "ray-",
+                                                                               "projection-")),
+        (_w(nt, "chords_i", Ad=C.sym(nt, "A_d"), Ar=C.sym(nt, "A_r"), mu=_text_of(figure, "formula-A-1")),
+         starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
+        (_w(nt, "dE", eq=_text_of(figure, "formula-dE-1")), starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
+                                                                    "curve-dE", "dot-dE-", "formula-dE-")),
+        (_w(nt, "accuracy"), lambda n: False),
+    ]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- Zhukovsky's lever
+
+def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="slide") -> BuildUp:
+    """Zhukovsky's lever at one position, step by step: the plan turned 90° as a lever; the load at
+    the image of its point; its arm h about p; the balance of moments, M_r.
+
+    Parameters
+    ----------
+    study : Study or Case
+        As :func:`graphmethods.sheets.dynamics.zhukovsky_lever` takes it.
+    position : int, optional
+        The position (default: the one with the largest M_r).
+    """
+    from graphmethods.sheets import dynamics as D
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = D.zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
+    mu_v = next((sc for sc in figure.scales() if "v" in sc.symbol), figure.scales()[0])
+    rules = [
+        (_w(nt, "lever", mu=mu_v.caption(nt)),
+         lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
+        (_w(nt, "load", F=_text_of(figure, "label-F")), _leader_of(["force-F", "label-F"])),
+        (_w(nt, "arm", h=_text_of(figure, "label-h")), _leader_of(["dimension-h", "label-h"])),
+        (_w(nt, "balance", Mr=D.sym(nt, "M_r")), lambda n: False),
+    ]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- the kinematic scheme
+
+def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The kinematic scheme in m positions, step by step: the frame; the crank in m positions; the
+    other links found by their lengths; the paths of the centres of mass; the extreme positions; one
+    position drawn thick.
+
+    Parameters
+    ----------
+    linkage : Case, Study or Mechanism
+        As :func:`graphmethods.sheets.kinematics.kinematic_scheme` takes it.
+    """
+    from graphmethods.sheets import kinematics as K
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    figure = K.kinematic_scheme(linkage, m=m, notation=nt, page=pg, title_block=tb)
+    mech = K._Linkage.of(linkage, m=m).mech
+    pin = mech.crank_pin
+    crank = next(ln for ln, (a, b) in mech.link_joints.items() if b == pin)
+    others = [ln for ln in mech.link_joints if ln != crank]
+    moving = [j for j in dict.fromkeys(b for ln in others for b in mech.link_joints[ln])
+              if j != pin and not j.startswith("O")]
+    mu_l = figure.scales()[0]
+
+    def pos_of(links):
+        return lambda n: n.startswith("position-") and n.rsplit("-", 1)[-1] in links
+
+    def mark_of(points):
+        return lambda n: any(n.startswith(f"mark-{p}-") for p in points) and not n.endswith("-extreme")
+
+    rules = [
+        (_w(nt, "frame", mu=mu_l.caption(nt)),
+         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-"))
+         or (n.startswith("name-O"))),
+        (_w(nt, "crank_pos", m=m, c=K._sub(crank)),
+         lambda n: pos_of([crank])(n) or mark_of([pin])(n) or (n.startswith(f"number-{pin}-")
+                                                                  and not n.endswith("-extreme"))),
+        (_w(nt, "output_pos", pts=", ".join(moving) or pin, links=", ".join(K._sub(x) for x in others)),
+         lambda n: pos_of(others)(n) or mark_of(moving)(n) or (n.startswith("number-out-")
+                                                                and not n.endswith("-extreme"))),
+        (_w(nt, "paths"), lambda n: n.startswith("path-")),
+        (_w(nt, "extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
+         or n in ("dimension-H", "summary")),
+        (_w(nt, "thick"), lambda n: False),
+    ]
+    names = {e.name for e in figure.elements}
+    rules = [r for r in rules[:-1] if any(r[1](n) for n in names)] + [rules[-1]]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- by name
+
+#: figure name -> (step source, what it needs: "linkage" or "cycle")
+FIGURES: dict[str, tuple[Callable, str]] = {
+    "velocity-plan": (velocity_plan_steps, "linkage"),
+    "energy-indicator": (energy_indicator_steps, "cycle"),
+    "wittenbauer": (wittenbauer_steps, "study"),
+    "kinematic-diagrams": (differentiation_steps, "linkage"),
+    "work-diagrams": (integration_steps, "cycle"),
+    "zhukovsky-lever": (zhukovsky_steps, "study"),
+    "kinematic-scheme": (scheme_steps, "linkage"),
+}
+
+#: built-in problems: name -> problem file in graphmethods/problems/data (linkages) or a W problem
+LINKAGES = {"press": "slider_crank_press.json", "four-bar": "four_bar_rocker.json",
+            "slotted-lever": "slotted_lever.json", "shaper": "shaper.json"}
+CYCLES = ("W1", "W2", "W3", "W4")
+
+
+def resolve_case(case):
+    """A built-in name (press, four-bar, slotted-lever, shaper, W1…W4) or a problem file, as an object the
+    step sources take: a linkage :class:`~graphmethods.kinematics.Case` or a cycle problem.
+
+    >>> from graphmethods.kinematics import Case
+    >>> isinstance(resolve_case("press"), Case), resolve_case("w1").id
+    (True, 'W1')
+    """
+    from graphmethods import problems
+
+    if not isinstance(case, (str, pathlib.Path)):
+        return case
+    text = str(case).strip()
+    low = text.lower().replace("_", "-")
+    if low in LINKAGES:
+        from graphmethods.kinematics import read_case
+
+        return read_case(pathlib.Path(problems.__file__).parent / "data" / LINKAGES[low])
+    builtin = {"w1": problems.w1, "w2": problems.w2, "w3": problems.w3, "w4": problems.w4_drawing}
+    if low in builtin:
+        return builtin[low]()
+    p = pathlib.Path(text)
+    if not p.is_file():
+        raise InputError(f"case {text!r}: not a built-in problem ({', '.join(list(LINKAGES) + list(CYCLES))}) "
+                         f"and no such file")
+    from graphmethods.kinematics import read_case
+
+    return read_case(p)
+
+
+def build(case, figure: str, *, position: int | None = None, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The construction ``figure`` of ``case`` as steps.
+
+    Parameters
+    ----------
+    case : str, path or problem
+        A built-in name (``press``, ``four-bar``, ``slotted-lever``, ``shaper``, ``W1`` … ``W4``), a
+        linkage problem file, or a problem object.
+    figure : str
+        One of :data:`FIGURES`: ``velocity-plan``, ``energy-indicator``, ``wittenbauer``,
+        ``kinematic-diagrams``, ``work-diagrams``, ``zhukovsky-lever``, ``kinematic-scheme``.
+    position : int, optional
+        The position of a velocity plan or of Zhukovsky's lever.
+    m : int
+        Positions per crank turn of a linkage study.
+
+    Examples
+    --------
+    >>> bu = build("press", "wittenbauer", notation="ru")
+    >>> len(bu), bu.figure.notation
+    (8, 'ru')
+    """
+    from graphmethods.kinematics import Case
+
+    key = str(figure).strip().lower().replace("_", "-")
+    if key not in FIGURES:
+        raise InputError(f"figure {figure!r}: use one of {', '.join(FIGURES)}")
+    fn, needs = FIGURES[key]
+    obj = resolve_case(case)
+    is_linkage = isinstance(obj, Case)
+    if position is not None and key not in ("velocity-plan", "zhukovsky-lever"):
+        raise InputError(f"--position is for the velocity plan and Zhukovsky's lever only, not for {key}")
+    if needs == "linkage":
+        if not is_linkage:
+            raise InputError(f"{key} needs a linkage problem ({', '.join(LINKAGES)} or a problem file); {case} is "
+                             f"a cycle given by its works")
+        if key == "velocity-plan":
+            return fn(obj, position, notation=notation, page=page, m=m)
+        return fn(obj, notation=notation, page=page, m=m)
+    if is_linkage:
+        from graphmethods.dynamics.study import Study
+
+        obj = Study(obj, positions=m)
+    elif needs == "study":
+        raise InputError(f"{key} needs a linkage problem with masses and loads ({', '.join(LINKAGES)} or a "
+                         f"problem file); {case} gives works only")
+    if key == "work-diagrams":
+        return fn(obj, notation=notation, page=page, m=m)
+    if key == "zhukovsky-lever":
+        return fn(obj, position, notation=notation, page=page)
+    return fn(obj, notation=notation, page=page)
