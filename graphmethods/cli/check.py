@@ -25,7 +25,7 @@ def add_parser(sub) -> None:
     p.add_argument("problem", metavar="PROBLEM", help="W1, W2, W3, W4, press, KIND:SEED:N, or a problem file")
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file")
     p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
-    p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf or .png) at the student's page size")
+    p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="notation and language of the overlay (the report stays English)")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
@@ -53,8 +53,12 @@ def run(args) -> int:
             from graphmethods.render import mpl
 
             mpl.save_png(scene, path, overwrite=args.force)
+        elif suffix == ".dxf":
+            from graphmethods.render import dxf
+
+            dxf.save(scene, path, overwrite=args.force)
         else:
-            raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf or .png")
+            raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
     out = {"text": report.to_text, "markdown": report.to_markdown, "json": report.to_json}[args.format]()
     print(out.rstrip("\n"))
     if args.overlay:
