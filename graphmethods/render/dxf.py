@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import io
 import math
+import pathlib
 import re
 from dataclasses import dataclass
 
@@ -423,3 +424,194 @@ def save(scenes, path, *, overwrite: bool = False):
         If ``path`` exists and ``overwrite`` is false.
     """
     return write_atomic(path, to_bytes(scenes), overwrite=overwrite)
+
+
+# ----------------------------------------------------------------------------- reading a drawing made in CAD
+
+@dataclass(frozen=True)
+class CadText:
+    """A text of a drawing: its plain characters, the centre of its box (mm, y up) and its height (mm)."""
+
+    text: str
+    x: float
+    y: float
+    height: float
+
+
+@dataclass(frozen=True)
+class CadDrawing:
+    """What a drawing holds, flattened, in mm with y up: straight segments, filled polygons (arrowheads,
+    hatches, SOLIDs, tapered polyline segments), circles (x, y, r) and texts."""
+
+    segments: tuple[tuple[tuple[float, float], tuple[float, float]], ...]
+    fills: tuple[tuple[tuple[float, float], ...], ...]
+    circles: tuple[tuple[float, float, float], ...]
+    texts: tuple[CadText, ...]
+    source: str = ""
+
+
+def _text_centre(x: float, y: float, height: float, text: str, halign: int, valign: int) -> tuple[float, float]:
+    w = 0.65 * height * len(text)                 # about the width of a sans font's letters, cap height h
+    cx = {0: x + w / 2, 1: x, 2: x - w / 2, 4: x}.get(halign, x + w / 2)
+    cy = {0: y + height / 2, 1: y + height / 2, 2: y, 3: y - height / 2}.get(valign, y + height / 2)
+    return cx, cy
+
+
+def read_drawing(source) -> CadDrawing:
+    """Read a DXF drawing (a path, or the file's bytes) into a :class:`CadDrawing`.
+
+    LINE, LWPOLYLINE and 2D POLYLINE give segments (a segment of changing width, AutoCAD's way of
+    drawing an arrowhead, gives a filled triangle); SOLID, TRACE, 3DFACE and HATCH boundaries give
+    filled polygons; CIRCLE circles; TEXT and MTEXT texts; blocks (INSERT) are exploded. Model space only.
+
+    Raises
+    ------
+    InputError
+        If the file cannot be read as DXF.
+
+    Examples
+    --------
+    >>> from graphmethods.scene import Scene, Page, Scale, Vector, Text
+    >>> d = read_drawing(to_bytes(Scene(Page("A4"), (Vector((20, 100), (60, 100), name="v"), Text((10, 10), "p")))))
+    >>> len(d.segments), len(d.fills), [t.text for t in d.texts]
+    (1, 1, ['p'])
+    """
+    import ezdxf
+    from ezdxf.lldxf.const import DXFError
+
+    name = str(source) if not isinstance(source, (bytes, bytearray)) else "<dxf>"
+    try:
+        if isinstance(source, (bytes, bytearray)):
+            doc = ezdxf.read(io.StringIO(bytes(source).decode("utf-8", errors="replace")))
+        else:
+            doc = ezdxf.readfile(str(source))
+    except OSError as exc:
+        if isinstance(source, (bytes, bytearray)) or pathlib.Path(source).is_file():     # ezdxf: "is not a DXF file"
+            raise InputError(f"{name}: not a readable DXF drawing ({exc})") from None
+        raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+    except (DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:   # ezdxf on a cut file
+        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
+    segs: list = []
+    fills: list = []
+    circles: list = []
+    texts: list = []
+
+    def xy(v) -> tuple[float, float]:
+        return (float(v[0]), float(v[1]))
+
+    def visit(entity, depth: int = 0) -> None:
+        t = entity.dxftype()
+        if t == "INSERT" and depth < 8:
+            for e in entity.virtual_entities():
+                visit(e, depth + 1)
+        elif t == "LINE":
+            segs.append((xy(entity.dxf.start), xy(entity.dxf.end)))
+        elif t in ("LWPOLYLINE", "POLYLINE"):
+            if t == "LWPOLYLINE":
+                pts = [(float(x), float(y), float(s), float(e)) for x, y, s, e in entity.get_points("xyse")]
+                closed = bool(entity.closed)
+            else:
+                if entity.is_3d_polyline or entity.is_poly_face_mesh or entity.is_polygon_mesh:
+                    return
+                pts = [(float(v.dxf.location[0]), float(v.dxf.location[1]), float(v.dxf.get("start_width", 0.0)),
+                        float(v.dxf.get("end_width", 0.0))) for v in entity.vertices]
+                closed = bool(entity.is_closed)
+            n = len(pts)
+            for i in range(n if closed else n - 1):
+                (x0, y0, s0, e0), (x1, y1, _, _) = pts[i], pts[(i + 1) % n]
+                if abs(s0 - e0) > 1e-9 and math.hypot(x1 - x0, y1 - y0) > 1e-9:
+                    ux, uy = (x1 - x0) / math.hypot(x1 - x0, y1 - y0), (y1 - y0) / math.hypot(x1 - x0, y1 - y0)
+                    tip, base, w = ((x1, y1), (x0, y0), s0) if e0 < s0 else ((x0, y0), (x1, y1), e0)
+                    fills.append((tip, (base[0] - uy * w / 2, base[1] + ux * w / 2),
+                                  (base[0] + uy * w / 2, base[1] - ux * w / 2)))
+                else:
+                    segs.append(((x0, y0), (x1, y1)))
+        elif t in ("SOLID", "TRACE", "3DFACE"):
+            vs = [xy(entity.dxf.get(f"vtx{i}")) for i in range(4) if entity.dxf.hasattr(f"vtx{i}")]
+            if t != "3DFACE" and len(vs) == 4:
+                vs = [vs[0], vs[1], vs[3], vs[2]]          # SOLID's corner order
+            out = []
+            for v in vs:
+                if not out or math.dist(v, out[-1]) > 1e-9:
+                    out.append(v)
+            if len(out) > 1 and math.dist(out[0], out[-1]) <= 1e-9:
+                out.pop()
+            if len(out) >= 3:
+                fills.append(tuple(out))
+        elif t == "HATCH":
+            for path in entity.paths:
+                if hasattr(path, "vertices"):
+                    pts = [xy(v) for v in path.vertices]
+                else:
+                    pts = []
+                    for edge in path.edges:
+                        if hasattr(edge, "start") and hasattr(edge, "end") and not hasattr(edge, "radius"):
+                            pts.append(xy(edge.start))       # a line edge
+                        elif hasattr(edge, "center") and hasattr(edge, "radius"):
+                            circles.append((float(edge.center[0]), float(edge.center[1]), float(edge.radius)))
+                if len(pts) >= 3:
+                    fills.append(tuple(pts))
+        elif t == "CIRCLE":
+            circles.append((float(entity.dxf.center[0]), float(entity.dxf.center[1]), float(entity.dxf.radius)))
+        elif t == "TEXT":
+            h = float(entity.dxf.height)
+            text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
+            halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
+            at = entity.dxf.align_point if (halign or valign) and entity.dxf.hasattr("align_point") else entity.dxf.insert
+            cx, cy = _text_centre(float(at[0]), float(at[1]), h, text, halign, valign)
+            texts.append(CadText(text, cx, cy, h))
+        elif t == "MTEXT":
+            h = float(entity.dxf.get("char_height", 2.5))
+            text = entity.plain_text(split=False).strip()
+            ap = int(entity.dxf.get("attachment_point", 1))      # 1 top left … 9 bottom right
+            col, row = (ap - 1) % 3, (ap - 1) // 3
+            at = entity.dxf.insert
+            cx = float(at[0]) + {0: 0.65 * h * len(text) / 2, 1: 0.0, 2: -0.65 * h * len(text) / 2}[col]
+            cy = float(at[1]) + {0: -h / 2, 1: 0.0, 2: h / 2}[row]
+            texts.append(CadText(text, cx, cy, h))
+
+    for entity in doc.modelspace():
+        visit(entity)
+    return CadDrawing(tuple(segs), tuple(fills), tuple(circles), tuple(texts), source=name)
+
+
+class _OntoRenderer(DxfRenderer):
+    """Draws a scene into an existing drawing: every entity on one layer, page mm shifted to drawing mm."""
+
+    def __init__(self, doc, *, layer: str, shift: tuple[float, float]):
+        super().__init__(doc, 0.0, prefix=f"{layer}-")
+        self.layer, self.shift = layer, shift
+
+    def _xy(self, x: float, y: float) -> tuple[float, float]:
+        assert self.page is not None
+        return (_num(x + self.shift[0]), _num(self.page.height - y + self.shift[1]))
+
+    def _attribs(self, role: str, style: Style | None = None, color: str | None = None) -> dict:
+        attrs = super()._attribs(role, style, color)
+        attrs["layer"] = self.layer
+        return attrs
+
+
+def overlay_onto(source, scene: Scene, *, shift: tuple[float, float] = (0.0, 0.0), layer: str = "CHECK") -> bytes:
+    """A DXF drawing (path) with ``scene`` added on the layer ``layer`` (red): page mm (y down) become the
+    drawing's mm as ``(x + shift_x, height − y + shift_y)``. The student's entities are kept as they are.
+
+    Raises
+    ------
+    InputError
+        If the drawing cannot be read.
+    """
+    import ezdxf
+    from ezdxf.lldxf.const import DXFError
+
+    try:
+        doc = ezdxf.readfile(str(source))
+    except (OSError, DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:
+        raise InputError(f"{source}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
+    if layer not in doc.layers:
+        doc.layers.add(layer, color=1)                  # red
+    for name, (font, family, bold) in TEXT_STYLES.items():
+        if name not in doc.styles:
+            doc.styles.add(name, font=font).set_extended_font_data(family=family, italic=False, bold=bold)
+    draw(scene, _OntoRenderer(doc, layer=layer, shift=shift))
+    return _fixed_write(doc)

@@ -1,0 +1,194 @@
+"""Checking a drawing made in CAD (graphmethods.sheets.cad): the example drawings of
+graphmethods/problems/data/drawings (made by tests/drawings/make_student_drawings.py as a student draws,
+with planted mistakes) are read, measured and checked; exactly the planted mistakes are found."""
+
+import math
+import pathlib
+import shutil
+
+import numpy as np
+import pytest
+
+ezdxf = pytest.importorskip("ezdxf")
+
+from graphmethods import cli  # noqa: E402
+from graphmethods.errors import InputError  # noqa: E402
+from graphmethods.render import svg  # noqa: E402
+from graphmethods.render.recording import record  # noqa: E402
+from graphmethods.sheets import cad  # noqa: E402
+from graphmethods.sheets.classcheck import check_class, class_files  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+DRAWINGS = ROOT / "graphmethods" / "problems" / "data" / "drawings"
+ANSWERS = ROOT / "graphmethods" / "problems" / "data" / "answers"
+
+#: what tests/drawings/make_student_drawings.py planted: (new mistakes, their diagnosis, carried over)
+PLANTED = {
+    "press_plan_correct.dxf": ("press", set(), set(), set()),
+    "press_plan_mistakes.dxf": ("press", {"velocity_plan.ps2_mm", "drawing.ps2_deg", "results.v_B"}, {"scale_twice"},
+                                {"results.v_S2"}),
+    "w1_correct.dxf": ("W1", set(), set(), set()),
+    "w1_correct.svg": ("W1", set(), set(), set()),
+    "w1_mistakes.dxf": ("W1", {"energy_indicator.arrows_mm[2]", "results.omega_max", "results.omega_min", "results.J_F"},
+                        {"sign_flipped", "delta_not_halved", "n_as_omega"}, {"results.delta_W_max"}),
+    "w1_mistakes.svg": ("W1", {"energy_indicator.arrows_mm[2]", "results.omega_max", "results.omega_min", "results.J_F"},
+                        {"sign_flipped", "delta_not_halved", "n_as_omega"}, {"results.delta_W_max"}),
+}
+
+
+def press_velocities(phi, r=0.1, l=0.4, e=0.02, l_AS2=0.13, omega=2 * math.pi * 300 / 60):
+    """The press's velocities written out by hand (independent of the package): |v_A|, |v_B|, |v_BA|, |v_S2|."""
+    s, c = math.sin(phi), math.cos(phi)
+    q = e - r * s
+    w = math.sqrt(l * l - q * q)
+    v_B = omega * (-r * s + q * r * c / w)
+    omega_2 = omega * (-r * c / w)
+    v_S2 = math.hypot(omega * (-r * s) + l_AS2 * omega_2 * (-q / l), omega * (r * c) + l_AS2 * omega_2 * (w / l))
+    return {"pa": omega * r, "pb": abs(v_B), "ab": abs(omega_2) * l, "ps2": v_S2}
+
+
+@pytest.mark.parametrize("name", sorted(PLANTED))
+def test_exactly_the_planted_mistakes_are_found(name):
+    problem, wrong, codes, carried = PLANTED[name]
+    rep = cad.check_drawing(problem, DRAWINGS / name)
+    assert {i.key for i in rep.wrong} == wrong
+    assert {m.code for m in rep.mistakes} == codes
+    assert {i.key for i in rep.carried} == carried
+    assert len(rep.items) >= (12 if problem == "press" else 12)        # every item written on the sheet was read
+
+
+def test_the_correct_plan_is_measured_within_half_a_millimetre():
+    from graphmethods.kinematics import read_case
+
+    case = read_case(ROOT / "graphmethods" / "problems" / "data" / "slider_crank_press.json")
+    phi = float(case.mechanism.positions(m=12).phi[2])
+    rep = cad.check_drawing("press", DRAWINGS / "press_plan_correct.dxf")
+    sec = rep.answers["velocity_plan"]
+    assert sec["mu_v"] == 0.05 and sec["position"] == 2                 # read from the texts on the sheet
+    for seg, v in press_velocities(phi).items():
+        assert sec[f"{seg}_mm"] == pytest.approx(v / 0.05, abs=0.5), seg
+    assert set(rep.answers["results"]) == {"v_A", "v_B", "v_BA", "v_S2", "omega_2"}
+
+
+def test_dxf_and_svg_of_one_staircase_read_alike():
+    a = cad.check_drawing("W1", DRAWINGS / "w1_mistakes.dxf").answers
+    b = cad.check_drawing("W1", DRAWINGS / "w1_mistakes.svg").answers
+    assert a["energy_indicator"]["arrows_mm"] == pytest.approx(b["energy_indicator"]["arrows_mm"], abs=1e-3)
+    assert a["results"] == b["results"] and a["energy_indicator"]["step_mm"] == pytest.approx(16.0, abs=0.05)
+    works = np.array([-50, 550, 100, 125, -500, 25, -50]) / 5.0       # the drawn staircase, c–d flipped
+    assert np.allclose(a["energy_indicator"]["arrows_mm"], works, atol=0.5)
+
+
+def _without_labels(tmp_path) -> tuple[pathlib.Path, dict]:
+    doc = ezdxf.readfile(DRAWINGS / "press_plan_correct.dxf")
+    msp = doc.modelspace()
+    letters = {}
+    for e in list(msp.query("TEXT")):
+        if e.dxf.text in ("p", "a", "b", "s2"):
+            letters[e.dxf.text] = e
+            msp.delete_entity(e)
+    path = tmp_path / "unlabelled.dxf"
+    doc.saveas(path)
+    return path, letters
+
+
+def test_missing_labels_ask_for_a_mapping(tmp_path):
+    path, _ = _without_labels(tmp_path)
+    with pytest.raises(InputError, match=r"no label p, a, b near an arrow end.*--point p=X,Y"):
+        cad.check_drawing("press", path)
+    labelled = cad.check_drawing("press", DRAWINGS / "press_plan_correct.dxf")
+    ends = {k: tuple(v) for k, v in cad.name_points(cad.arrows(cad.read(DRAWINGS / "press_plan_correct.dxf")),
+                                                     cad.notes(cad.read(DRAWINGS / "press_plan_correct.dxf")).labels,
+                                                     ("p", "a", "b", "s2")).items()}
+    rep = cad.check_drawing("press", path, points={k: (x + 0.2, y - 0.2) for k, (x, y) in ends.items()})
+    assert [(i.key, i.verdict) for i in rep.items] == [(i.key, i.verdict) for i in labelled.items]
+    rc = cli.main(["check", "press", str(path)] + [f"--point={k}={x:.2f},{y:.2f}" for k, (x, y) in ends.items()])
+    assert rc == 0
+
+
+def test_overlay_in_red_over_the_students_own_drawing(tmp_path):
+    rep = cad.check_drawing("press", DRAWINGS / "press_plan_mistakes.dxf")
+    student = ezdxf.readfile(DRAWINGS / "press_plan_mistakes.dxf")
+    out = tmp_path / "o.dxf"
+    out.write_bytes(cad.overlay_dxf(rep))
+    doc = ezdxf.readfile(out)
+    before = sorted((e.dxftype(), e.dxf.layer) for e in student.modelspace())
+    kept = sorted((e.dxftype(), e.dxf.layer) for e in doc.modelspace() if e.dxf.layer != "CHECK")
+    assert kept == before                                                   # the student's drawing is untouched
+    check = [e for e in doc.modelspace() if e.dxf.layer == "CHECK"]
+    assert check and all(e.dxf.true_color == int(cad.RED.lstrip("#"), 16) for e in check)
+    pole = cad.name_points(cad.arrows(cad.read(DRAWINGS / "press_plan_mistakes.dxf")),
+                           cad.notes(cad.read(DRAWINGS / "press_plan_mistakes.dxf")).labels, ("p",))["p"]
+    (circle,) = [e for e in doc.groups.get("CHECK-check-plan-pole") if e.dxftype() == "CIRCLE"]
+    assert math.dist((circle.dxf.center.x, circle.dxf.center.y), tuple(pole)) < 1e-3   # drawn where the student drew
+    shaft = next(e for e in doc.groups.get("CHECK-check-plan-pa") if e.dxftype() == "LWPOLYLINE")
+    head = next(e for e in doc.groups.get("CHECK-check-plan-pa") if e.dxftype() == "SOLID")
+    start = shaft.get_points("xy")[0]
+    assert math.dist(start, tuple(pole)) < 1e-3
+    from graphmethods.kinematics import read_case
+
+    case = read_case(ROOT / "graphmethods" / "problems" / "data" / "slider_crank_press.json")
+    v_A = press_velocities(float(case.mechanism.positions(m=12).phi[2]))["pa"]
+    assert math.dist(start, (head.dxf.vtx0.x, head.dxf.vtx0.y)) == pytest.approx(v_A / 0.05, abs=1e-3)
+    scene = cad.overlay_on_drawing(rep)
+    rec = record(scene)
+    assert rec.group_ids()[0] == "student-drawing" and any(g.startswith("check-") for g in rec.group_ids())
+    red = [c for c in rec.calls if c.kind == "text" and "check-" in "".join(c.groups)]
+    assert red and all(c.data.color == cad.RED for c in red)
+    assert "ps2 = 59.82 mm?" in "".join(rec.texts()) or "59.82" in "".join(rec.texts())
+    assert svg.to_bytes(scene) == svg.to_bytes(cad.overlay_on_drawing(rep))
+
+
+def test_bad_drawings_are_input_errors(tmp_path, capsys):
+    bad = tmp_path / "bad.dxf"
+    bad.write_text("this is not a drawing", encoding="utf-8")
+    with pytest.raises(InputError, match="not a readable DXF"):
+        cad.check_drawing("press", bad)
+    rc = cli.main(["check", "press", str(bad)])
+    err = capsys.readouterr().err
+    assert rc == 2 and len(err.strip().splitlines()) == 1
+    with pytest.raises(InputError, match="no scale"):
+        cad.check_drawing("W1", DRAWINGS / "press_plan_correct.dxf")
+    with pytest.raises(InputError, match="not a readable SVG"):
+        (tmp_path / "x.svg").write_text("<svg", encoding="utf-8")
+        cad.check_drawing("W1", tmp_path / "x.svg")
+    rc = cli.main(["check", "press", str(DRAWINGS / "press_plan_correct.dxf"), "--point", "p=1"])
+    assert rc == 2 and "LABEL=X,Y" in capsys.readouterr().err
+
+
+def test_cli_check_of_a_drawing_writes_overlays(tmp_path, capsys):
+    rc = cli.main(["check", "W1", str(DRAWINGS / "w1_mistakes.dxf"), "--overlay", str(tmp_path / "o.dxf")])
+    out = capsys.readouterr().out
+    assert rc == 1 and "sign flipped" in out and "n (rev/min) used as ω" in out
+    assert "CHECK" in [ly.dxf.name for ly in ezdxf.readfile(tmp_path / "o.dxf").layers]
+    rc = cli.main(["check", "W1", str(DRAWINGS / "w1_correct.svg"), "--overlay", str(tmp_path / "o.svg")])
+    capsys.readouterr()
+    assert rc == 0 and b"student-drawing" in (tmp_path / "o.svg").read_bytes()
+
+
+def test_a_class_of_drawings_and_answers_files(tmp_path, capsys):
+    d = tmp_path / "class"
+    d.mkdir()
+    for name in PLANTED:
+        problem = PLANTED[name][0]
+        stem, suffix = name.rsplit(".", 1)
+        shutil.copy(DRAWINGS / name, d / f"{stem}-{suffix}__{problem}.{suffix}")
+    shutil.copy(ANSWERS / "w1_correct.toml", d)
+    (d / "broken__W1.dxf").write_text("0\nSECTION\n", encoding="utf-8")
+    rep = check_class(class_files(d))
+    by = {s.path.name: s for s in rep.submissions}
+    assert by["broken__W1.dxf"].report is None and "DXF" in by["broken__W1.dxf"].error
+    for name, (problem, wrong, codes, carried) in PLANTED.items():
+        stem, suffix = name.rsplit(".", 1)
+        s = by[f"{stem}-{suffix}__{problem}.{suffix}"]
+        assert {i.key for i in s.report.wrong} == wrong and s.student == f"{stem}-{suffix}"
+    assert rep.exit_status() == 3
+    rc = cli.main(["check-class", str(d), "--out", str(tmp_path / "out")])
+    capsys.readouterr()
+    assert rc == 3
+    students = tmp_path / "out" / "students"
+    assert (students / "press_plan_mistakes-dxf__press.dxf-overlay.dxf").exists()
+    assert (students / "w1_mistakes-svg__W1.svg-overlay.svg").exists()
+    assert not (students / "w1_mistakes-svg__W1.svg-overlay.dxf").exists()
+    table = (tmp_path / "out" / "class.csv").read_text(encoding="utf-8")
+    assert "direction of ps2" in table and "broken__W1.dxf" in table
