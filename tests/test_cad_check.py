@@ -192,3 +192,69 @@ def test_a_class_of_drawings_and_answers_files(tmp_path, capsys):
     assert not (students / "w1_mistakes-svg__W1.svg-overlay.dxf").exists()
     table = (tmp_path / "out" / "class.csv").read_text(encoding="utf-8")
     assert "direction of ps2" in table and "broken__W1.dxf" in table
+
+
+def test_a_worksheets_own_key_page_in_dxf_checks_correct(tmp_path, capsys):
+    """Round trip: the answer key page written as DXF by graphmethods is read back as a correct drawing."""
+    rc = cli.main(["worksheet", "velocity-plan", "--variants", "1", "--seed", "7", "--out", str(tmp_path / "c"),
+                   "--dxf", "--quiet"])
+    capsys.readouterr()
+    assert rc == 0
+    rep = cad.check_drawing("velocity-plan:7:1", tmp_path / "c" / "dxf" / "velocity-plan-01-key.dxf")
+    assert rep.ok and len(rep.items) == 13
+    assert rep.answers["velocity_plan"]["mu_v"] == 0.04                 # the caption μ_{v} = … read as one text
+
+
+def _student_draws_on(page: pathlib.Path, out: pathlib.Path, variant, *, typed: dict, jitter: float):
+    """A student opens the worksheet page in CAD, draws the plan from the printed pole and types the answers
+    into the table under the headings."""
+    drawing = cad.read(page)
+    (p_label,) = [t for t in drawing.texts if t.text == "p"]
+    pole = np.array(min(drawing.circles, key=lambda c: math.hypot(c[0] - p_label.x, c[1] - p_label.y))[:2])
+    mu_v = cad.notes(drawing).values["mu_v"]                           # the scale printed on the page
+    vec = variant.vectors()
+    pts = {k: pole + np.asarray(v, float) / mu_v + (np.array([jitter, -jitter]) if k != "p" else 0.0)
+           for k, v in vec.items()}
+    doc = ezdxf.readfile(page)
+    msp = doc.modelspace()
+    for f, t in (("p", "a"), ("p", "b"), ("a", "b"), ("p", "s2")):
+        s, e = pts[f], pts[t]
+        u = (e - s) / np.hypot(*(e - s))
+        base, n = e - 2.5 * u, np.array([-u[1], u[0]]) * 0.45
+        msp.add_line(tuple(s), tuple(base))
+        msp.add_solid([tuple(e), tuple(base + n), tuple(base - n)])
+    for k, (dx, dy) in zip(("a", "b", "s2"), ((1.5, 1.0), (-3.5, 1.0), (1.5, -3.5))):
+        msp.add_text(k, height=3.0).set_placement((pts[k][0] + dx, pts[k][1] + dy))
+    heads = {t.text.split(",")[0]: t for t in drawing.texts if t.text.endswith(("m/s", "rad/s"))}
+    for head, value in typed.items():
+        h = heads[head]
+        if value is None:              # the length of pb as drawn, in mm, typed for v_B
+            value = float(np.hypot(*(pts["b"] - pts["p"])))
+        msp.add_text(f"{value:.3f}".replace(".", ","), height=2.5).set_placement((h.x - 5, h.y - 8))
+    doc.saveas(out)
+
+
+def test_teacher_exports_variants_receives_dxf_and_checks_the_class(tmp_path, capsys):
+    cli.main(["worksheet", "velocity-plan", "--variants", "2", "--seed", "7", "--out", str(tmp_path / "c"), "--dxf",
+              "--quiet"])
+    capsys.readouterr()
+    from graphmethods.sheets import worksheets as ws
+
+    inbox = tmp_path / "inbox"
+    inbox.mkdir()
+    for i, (student, slip) in enumerate((("ivanova", False), ("chen", True)), start=1):
+        v = ws.parse_id(f"velocity-plan:7:{i}")
+        ans = v.answers()
+        typed = {"vA": ans["v_A"], "vB": ans["v_B"], "vBA": ans["v_BA"], "vS2": ans["v_S2"], "ω2": ans["omega_2"]}
+        if slip:                       # v_B typed as pb in mm: the scale forgotten
+            typed["vB"] = None
+        _student_draws_on(tmp_path / "c" / "dxf" / f"velocity-plan-{i:02d}-student.dxf",
+                          inbox / f"{student}__velocity-plan_7_{i}.dxf", v, typed=typed, jitter=0.15)
+    rc = cli.main(["check-class", str(inbox), "--out", str(tmp_path / "report")])
+    capsys.readouterr()
+    assert rc == 1
+    rep = check_class(class_files(inbox))
+    by = {s.student: s.report for s in rep.submissions}
+    assert by["ivanova"].ok and len(by["ivanova"].items) == 13
+    assert [(i.key, i.mistakes) for i in by["chen"].wrong] == [("results.v_B", ("scale_forgotten",))]
+    assert (tmp_path / "report" / "students" / "chen__velocity-plan_7_2.dxf-overlay.dxf").exists()

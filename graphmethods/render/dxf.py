@@ -558,8 +558,19 @@ def read_drawing(source) -> CadDrawing:
             text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
             halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
             at = entity.dxf.align_point if (halign or valign) and entity.dxf.hasattr("align_point") else entity.dxf.insert
-            cx, cy = _text_centre(float(at[0]), float(at[1]), h, text, halign, valign)
-            texts.append(CadText(text, cx, cy, h))
+            x, y = float(at[0]), float(at[1])
+            last = runs[-1] if runs else None
+            if (last is not None and text and halign == valign == 0 and last[4]
+                    and abs(h - last[5]) > 0.2 * max(h, last[5])          # a change of size: a sub/superscript
+                    and last[6] + 0.2 * last[5] * len(last[7]) - 0.1 <= x
+                    <= last[6] + 1.3 * last[5] * len(last[7]) + 0.6 * last[5]
+                    and abs(y - last[2]) <= 0.7 * max(h, last[3])):
+                # the next run of one label, written as its own TEXT (as render.dxf writes sub/superscripts)
+                y0, h0 = (y, h) if h > last[3] else (last[2], last[3])
+                runs[-1] = (last[0] + text, last[1], y0, h0, True, h, x, text, 0, 0)
+            else:
+                runs.append((text, x, y, h, halign == valign == 0, h, x, text, halign, valign))
+            return
         elif t == "MTEXT":
             h = float(entity.dxf.get("char_height", 2.5))
             text = entity.plain_text(split=False).strip()
@@ -570,8 +581,13 @@ def read_drawing(source) -> CadDrawing:
             cy = float(at[1]) + {0: -h / 2, 1: 0.0, 2: h / 2}[row]
             texts.append(CadText(text, cx, cy, h))
 
+    # TEXT entities: (text, x, y, height, left-aligned, last run's height, its x, its text, halign, valign)
+    runs: list = []
     for entity in doc.modelspace():
         visit(entity)
+    for text, x, y, h, *_, halign, valign in runs:
+        cx, cy = _text_centre(x, y, h, text, halign, valign)
+        texts.append(CadText(text, cx, cy, h))
     return CadDrawing(tuple(segs), tuple(fills), tuple(circles), tuple(texts), source=name)
 
 

@@ -374,8 +374,39 @@ class Notes:
     labels: tuple[CadText, ...]
 
 
+def _label_text(text: str) -> str:
+    """A point's letter as compared: NFKC (``s₂`` → ``s2``), no spaces, ``_`` or braces; case kept (plan
+    points are lower case, the mechanism's upper case)."""
+    return re.sub(r"[\s_{}]", "", unicodedata.normalize("NFKC", text))
+
+
+_ONLY_NUMBER = re.compile(r"^\s*" + _NUMBER + r"\s*$")
+
+
+def _table_values(d: CadDrawing) -> dict:
+    """Values typed into a table under a column heading (``vB, m/s`` above ``3.03``)."""
+    heads = []
+    for t in d.texts:
+        if "=" in t.text:
+            continue
+        key = SYMBOLS.get(normalise(unicodedata.normalize("NFKC", t.text).split(",")[0]))
+        if key is not None:
+            heads.append((key, t))
+    out: dict = {}
+    for t in d.texts:
+        m = _ONLY_NUMBER.match(unicodedata.normalize("NFKC", t.text))
+        if not m:
+            continue
+        below = [(h.y - t.y, key) for key, h in heads
+                 if abs(h.x - t.x) <= max(8.0, 0.4 * h.height * len(h.text)) and 0.0 < h.y - t.y <= 15.0]
+        if below:
+            out.setdefault(min(below)[1], _number(m.group(1)))
+    return out
+
+
 def notes(d: CadDrawing) -> Notes:
-    """Read the scales, results, position number and point labels written on a drawing."""
+    """Read the scales, results (``vB = 3.03 m/s``, or typed under a table's heading), the position number
+    and the point labels written on a drawing."""
     values: dict = {}
     labels = []
     position = None
@@ -392,10 +423,12 @@ def notes(d: CadDrawing) -> Notes:
             if pm and position is None:
                 position = int(pm.group(1))
                 continue
-            names = [normalise(x) for x in part.split(",")]
+            names = [_label_text(x) for x in part.split(",")]
             if names and all(_LABEL.match(x) for x in names) and part.strip():
                 for x in names:
                     labels.append(CadText(x, t.x, t.y, t.height))
+    for key, v in _table_values(d).items():
+        values.setdefault(key, v)
     return Notes(values, position, tuple(labels))
 
 
