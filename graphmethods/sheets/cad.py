@@ -1,6 +1,6 @@
-"""Checking a drawing made in CAD: the student's velocity plan or energy indicator diagram as DXF (or SVG),
-drawn at their own scales, read, measured and checked as :func:`graphmethods.sheets.check.check` checks
-an answers file.
+"""Checking a drawing made in CAD: the student's velocity plan, energy indicator or energy–mass diagram as
+DXF (or SVG), drawn at their own scales, read, measured and checked as
+:func:`graphmethods.sheets.check.check` checks an answers file.
 
 What is read (mm, y up; the DXF through :func:`graphmethods.render.dxf.read_drawing`, an SVG here):
 
@@ -20,6 +20,11 @@ From these the same answers dict an answers file would give is built, and the ex
 so the verdicts, the tolerances (±0.5 mm, propagated to J_F) and the names of the usual mistakes are
 those of ``graphmethods check``. A velocity plan adds the direction of each vector, within ±0.5° plus
 the angle 0.5 mm subtends at its length.
+
+An **energy–mass (Wittenbauer) diagram** of the press (or of a wittenbauer worksheet): kl between the
+letters ``k`` and ``l`` placed at the crossings of the tangent rays with the ordinate axis, the slope of
+each ray against ψ_max, ψ_min, and μ_J, μ_T, tg ψ, J_F from the texts; the axes (the longest upright and
+level arrows) place the overlay. Acceleration plans are not read yet.
 
 When the labels are missing, :func:`check_drawing` says which points it found and asks for a mapping
 (``points={"a": (x, y), ...}``, drawing mm).
@@ -70,6 +75,8 @@ SYMBOLS = {
     "ωm": "omega_m", "omegam": "omega_m", "ωср": "omega_m",
     "ωmax": "omega_max", "omegamax": "omega_max", "ωmin": "omega_min", "omegamin": "omega_min",
     "md": "M_d", "mд": "M_d",
+    "μj": "mu_J", "muj": "mu_J", "µj": "mu_J", "μt": "mu_T", "mut": "mu_T", "µt": "mu_T",
+    "tgψmax": "tan_psi_max", "tanψmax": "tan_psi_max", "tgψmin": "tan_psi_min", "tanψmin": "tan_psi_min",
 }
 _NUMBER = r"([-−+]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?)"
 _ASSIGN = re.compile(r"^([^=]+?)=(?:[^=]*=)*\s*" + _NUMBER)      # "ω2 = vBA/lAB = 3.7": the last value
@@ -599,6 +606,104 @@ def indicator_answers(d: CadDrawing, data: CycleData, *, mu_E: float | None = No
     return answers, chain
 
 
+def _crossings_near(d: CadDrawing, x: float, y: float, reach: float) -> list[np.ndarray]:
+    """Points where two of the drawing's segments cross, within ``reach`` mm of (x, y)."""
+    near = []
+    for a, b in d.segments:
+        A, B = np.asarray(a, float), np.asarray(b, float)
+        AB = B - A
+        L2 = float(AB @ AB)
+        if L2 < 1e-12:
+            continue
+        t = min(1.0, max(0.0, float((np.array([x, y]) - A) @ AB) / L2))
+        if float(np.hypot(*(A + t * AB - np.array([x, y])))) <= reach:
+            near.append((A, AB))
+    out = []
+    for i in range(len(near)):
+        for j in range(i + 1, len(near)):
+            (A, u), (C, v) = near[i], near[j]
+            den = u[0] * v[1] - u[1] * v[0]
+            if abs(den) < 1e-9 * math.sqrt(float(u @ u) * float(v @ v)):
+                continue
+            w = C - A
+            t, s_ = (w[0] * v[1] - w[1] * v[0]) / den, (w[0] * u[1] - w[1] * u[0]) / den
+            if -1e-6 <= t <= 1 + 1e-6 and -1e-6 <= s_ <= 1 + 1e-6:
+                P = A + t * u
+                if math.hypot(P[0] - x, P[1] - y) <= reach:
+                    out.append(P)
+    return out
+
+
+def _ray_items(d: CadDrawing, named: dict, answers: dict, data: LinkageData) -> list[Item]:
+    """The direction of the ray drawn through k (ψ_max) and through l (ψ_min) against the exact tangent
+    (±0.5° + atan(0.5 mm / the ray's length)); the ray is the longest sloping segment through the point."""
+    J, T, n_rpm, delta = checking._em_data(checking._Checker(checking.validate_answers(answers)), data)
+    sec = answers["energy_mass"]
+    w = 2.0 * math.pi * n_rpm / 60.0
+    c = sec["mu_J"] / (2.0 * sec["mu_T"]) * w * w
+    items = []
+    for letter, which, tan in (("k", "max", c * (1 + delta / 2) ** 2), ("l", "min", c * (1 - delta / 2) ** 2)):
+        P = named[letter]
+        best = None
+        for a, b in d.segments:
+            A, B = np.asarray(a, float), np.asarray(b, float)
+            u = B - A
+            L = float(np.hypot(*u))
+            if L < 5.0 or abs(u[0]) < 1e-6 * L:
+                continue
+            dist = abs(float(u[0] * (P[1] - A[1]) - u[1] * (P[0] - A[0]))) / L
+            if dist <= checking.TOL_MM and (best is None or L > best[0]):
+                best = (L, math.degrees(math.atan(u[1] / u[0])))
+        if best is None:
+            continue
+        exp = math.degrees(math.atan(tan))
+        dev = best[1] - exp
+        tol = TOL_DEG + math.degrees(math.atan2(checking.TOL_MM, best[0]))
+        items.append(Item(f"drawing.ray_{which}_deg", f"ray ψ_{which}", "°", round(exp, 3), round(best[1], 3),
+                          round(dev, 3), round(tol, 3), "ok" if abs(dev) <= tol else "wrong",
+                          note="±0.5° + atan(0.5 mm / length)"))
+    return items
+
+
+def em_answers(d: CadDrawing, data: LinkageData, *, points: dict | None = None) -> tuple[dict, dict]:
+    """(answers, points) of an energy–mass (Wittenbauer) diagram drawing: k and l are the crossings of the
+    tangent rays with the ordinate axis nearest the letters ``k`` and ``l``; μ_J, μ_T, tan ψ and J_F are read
+    from the texts."""
+    nts = notes(d)
+    for key, what in (("mu_J", "μJ = … kg·m²/mm"), ("mu_T", "μT = … J/mm")):
+        if key not in nts.values:
+            raise InputError(f"{d.source}: no scale {key}: write {what} on the drawing")
+    named: dict = {normalise(k): np.asarray(v, float) for k, v in (points or {}).items()}
+    for letter in ("k", "l"):
+        if letter in named:
+            continue
+        labs = [t for t in nts.labels if t.text == letter]
+        cands = [(math.hypot(P[0] - t.x, P[1] - t.y), tuple(P)) for t in labs
+                 for P in _crossings_near(d, t.x, t.y, LABEL_REACH_MM)]
+        if not cands:
+            raise InputError(f"{d.source}: no letter {letter} beside a crossing of a ray with the ordinate axis; write "
+                             f"it there, or give the mapping (--point {letter}=X,Y)")
+        named[letter] = np.asarray(min(cands)[1])
+    page, shift = _page_for(d)
+    sec: dict = {"positions": int(nts.values.get("positions", 12)), "mu_J": float(nts.values["mu_J"]),
+                 "mu_T": float(nts.values["mu_T"]), "kl_mm": round(float(np.hypot(*(named["k"] - named["l"]))), 3)}
+    for key in ("tan_psi_max", "tan_psi_min"):
+        if key in nts.values:
+            sec[key] = nts.values[key]
+    # the origin (J_e = 0, ΔT = 0): where the axes cross, the longest upright and level arrows
+    arrs = arrows(d)
+    ups = [a for a in arrs if abs(a.tip[0] - a.start[0]) <= 0.02 * a.length and a.tip[1] > a.start[1]]
+    levels = [a for a in arrs if abs(a.tip[1] - a.start[1]) <= 0.02 * a.length and a.tip[0] > a.start[0]]
+    if ups and levels:
+        up, level = max(ups, key=lambda a: a.length), max(levels, key=lambda a: a.length)
+        sec["origin_mm"] = _page_xy((up.start[0], level.start[1]), page, shift)
+    answers = {"page": {"size": page.size, "orientation": page.orientation}, "energy_mass": sec}
+    res = _results(nts.values, ("J_F",))
+    if res:
+        answers["results"] = res
+    return answers, named
+
+
 def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item]:
     """The direction of each vector of the plan against the expected one (±0.5° + atan(0.5 mm / length))."""
     ck = checking._Checker(checking.validate_answers(answers))
@@ -624,13 +729,14 @@ def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item
 
 def check_drawing(problem, source, *, student: str | None = None, position: int | None = None,
                   mu_v: float | None = None, mu_E: float | None = None, points: dict | None = None) -> DrawingReport:
-    """Check a velocity plan or energy indicator drawn in CAD (DXF or SVG) against ``problem``.
+    """Check a velocity plan, energy indicator or energy–mass diagram drawn in CAD (DXF or SVG) against ``problem``.
 
     Parameters
     ----------
     problem : str or CycleData or LinkageData
         As for :func:`graphmethods.sheets.check.check` (W1…W4 and indicator worksheets: an energy
-        indicator; press and velocity-plan worksheets: a velocity plan).
+        indicator; velocity-plan worksheets: a velocity plan; wittenbauer worksheets: an energy–mass
+        diagram; the press: a velocity plan, or an energy–mass diagram when the letters are k and l).
     source : path
         The drawing (``.dxf`` or ``.svg``), in mm at 1:1.
     student : str, optional
@@ -650,17 +756,22 @@ def check_drawing(problem, source, *, student: str | None = None, position: int 
         answers, _ = indicator_answers(d, data, mu_E=mu_E)
         extra: list[Item] = []
     else:
-        if data.em_variant is not None:
-            raise InputError(f"{data.id}: an energy–mass (Wittenbauer) diagram is not read from drawings yet; use an "
-                             f"answers file")
-        answers, named = plan_answers(d, data, position=position, mu_v=mu_v, points=points)
-        extra = _direction_items(named, answers, data)
+        kind = "em" if data.em_variant is not None else ("plan" if data.plan_variant is not None else None)
+        if kind is None:                 # the press: a plan if there are p, a, b, an energy–mass diagram if k, l
+            letters = {t.text for t in notes(d).labels}
+            kind = "em" if {"k", "l"} <= letters and not {"p", "a", "b"} <= letters else "plan"
+        if kind == "em":
+            answers, named = em_answers(d, data, points=points)
+            extra = _ray_items(d, named, answers, data)
+        else:
+            answers, named = plan_answers(d, data, position=position, mu_v=mu_v, points=points)
+            extra = _direction_items(named, answers, data)
     answers["student"] = student or pathlib.Path(source).stem.split("__")[0]
     answers["problem"] = str(data.id)
     rep = checking.check(data, answers)
     page, shift = _page_for(d)
     note = f"read from {pathlib.Path(source).name}: " + ", ".join(
-        f"{k} = {v}" for sec in ("velocity_plan", "energy_indicator") for k, v in answers.get(sec, {}).items()
+        f"{k} = {v}" for sec in ("velocity_plan", "energy_indicator", "energy_mass") for k, v in answers.get(sec, {}).items()
         if k != "origin_mm")
     return DrawingReport(rep.problem, rep.title, rep.student, rep.items + tuple(extra), rep.page,
                          rep.notes + (note,), data=rep.data, answers=rep.answers, drawing=d, shift=shift)

@@ -18,6 +18,8 @@ Planted mistakes (the same as in the answers files of ../../graphmethods/problem
 * press_plan_mistakes.dxf: s₂ put on ab with AS₂/AB measured from b (as₂ = 0.675·ab instead of 0.325·ab;
   no usual mistake: ps₂ is 0.8 mm short and 10° off); v_S2 written from that ps₂ (carried over);
   v_B = pb·μv·μv (the scale applied twice).
+* press_wittenbauer_mistakes.dxf: k and l marked on the vertical through the curve's leftmost point instead
+  of on the ordinate axis J_e = 0 (J_e not subtracted); J_F from that kl with n (rev/min) used as ω.
 * w1_mistakes.dxf, w1_mistakes.svg: the arrow c–d drawn up instead of down (a sign flipped; ΔW_max = 775 J
   follows, carried over); ω_max, ω_min from ω_m(1 ± δ) (δ not halved); n used as ω in J_F.
 """
@@ -204,6 +206,54 @@ def w1_svg(mistakes: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
+def press_wittenbauer(mistakes: bool):
+    """The press's energy–mass diagram at μ_J = 0.005 kg·m²/mm, μ_T = 4 J/mm on an A3 sheet: the curve through
+    the 12 positions (numbered), the axes, the two tangent rays drawn past the ordinate axis, k and l."""
+    from graphmethods.dynamics.study import Study
+    from graphmethods.dynamics.wittenbauer import wittenbauer
+
+    case = read_case(ROOT / "graphmethods" / "problems" / "data" / "slider_crank_press.json")
+    study = Study(case, positions=12, estimate=False)
+    J, T = np.asarray(study.J_e, float), np.asarray(study.delta_T, float)
+    mu_J, mu_T = 0.005, 4.0
+    res = wittenbauer(J_e=J, delta_T=T, omega_m=case.omega_m, delta=case.delta, mu_J=mu_J, mu_T=mu_T)
+    doc = ezdxf.new("R2010", setup=True)
+    doc.units = ezdxf.units.MM
+    msp = doc.modelspace()
+    msp.add_lwpolyline([(0, 0), (420, 0), (420, 297), (0, 297)], close=True)
+    o = np.array([60.0, 255.0])                                   # the origin: J_e = 0, ΔT = 0
+    arrow(msp, (o[0], 12.0), (o[0], 290.0), kind="solid")          # ΔT axis
+    arrow(msp, (40.0, o[1]), (190.0, o[1]), kind="solid")          # J_e axis
+    pts = [o + np.array([J[i] / mu_J, T[i] / mu_T]) + np.array(JITTER[i % 8]) * 0.5 for i in range(12)]
+    msp.add_lwpolyline([tuple(q) for q in pts], close=True)
+    for i, q in enumerate(pts):
+        msp.add_text(str(i), height=2.5).set_placement((q[0] + 1.2, q[1] + 1.0))
+    k = o + np.array([0.0, res.k_mm + 0.15])
+    l_ = o + np.array([0.0, res.l_mm - 0.2])
+    for start, tan in ((k, res.tan_psi_max), (l_, res.tan_psi_min)):
+        tan = math.tan(math.atan(tan) + math.radians(0.15 if tan > res.tan_psi_min else -0.1))   # a hand's slip
+        d = np.array([1.0, tan]) / math.hypot(1.0, tan)
+        msp.add_line(tuple(start - 12.0 * d), tuple(start + 170.0 * d))
+    kl = res.kl_mm + 0.35
+    if mistakes:                 # k and l on the vertical through the curve's leftmost point (J_e not subtracted)
+        x_min = o[0] + float(J.min()) / mu_J
+        msp.add_line((x_min, 12.0), (x_min, 280.0))
+        cross = []
+        for start, tan in ((k, res.tan_psi_max), (l_, res.tan_psi_min)):
+            tan = math.tan(math.atan(tan) + math.radians(0.15 if tan > res.tan_psi_min else -0.1))
+            cross.append(start + (x_min - start[0]) * np.array([1.0, tan]))
+        k, l_ = cross
+        kl = float(k[1] - l_[1])
+    msp.add_text("k", height=3.5).set_placement((k[0] - 4.5, k[1] + 1.2))
+    msp.add_text("l", height=3.5).set_placement((l_[0] - 3.8, l_[1] - 4.0))
+    omega = case.n_rpm if mistakes else case.omega_m             # n (rev/min) used as ω in J_F
+    J_F = mu_T * kl / (omega ** 2 * case.delta)
+    for i, text in enumerate(("Energy–mass diagram (Wittenbauer), press, m = 12", "μJ = 0,005 kg·m²/mm", "μT = 4 J/mm",
+                              f"tg ψmax = {res.tan_psi_max:.4f}", f"tg ψmin = {res.tan_psi_min:.4f}", f"JF = {J_F:.4g} kg·m²")):
+        msp.add_text(text, height=3.5).set_placement((250.0, 60.0 - 7.0 * i))
+    return doc
+
+
 def main() -> None:
     OUT.mkdir(parents=True, exist_ok=True)
     ezdxf.options.write_fixed_meta_data_for_testing = True      # no dates: the same files every run
@@ -212,6 +262,7 @@ def main() -> None:
         press_plan(mistakes).saveas(OUT / f"press_plan_{tag}.dxf")
         w1_dxf(mistakes).saveas(OUT / f"w1_{tag}.dxf")
         (OUT / f"w1_{tag}.svg").write_text(w1_svg(mistakes), encoding="utf-8")
+        press_wittenbauer(mistakes).saveas(OUT / f"press_wittenbauer_{tag}.dxf")
     print(f"wrote {', '.join(sorted(p.name for p in OUT.iterdir()))} in {OUT}")
 
 
