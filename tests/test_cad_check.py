@@ -278,3 +278,15 @@ def test_the_energy_mass_diagram_is_measured_where_it_was_drawn():
     assert sec["kl_mm"] == pytest.approx(res.kl_mm, abs=0.5)                # k and l found at the rays' crossings
     assert {i.key for i in rep.items} >= {"drawing.ray_max_deg", "drawing.ray_min_deg", "energy_mass.kl_mm"}
     assert sec["origin_mm"] == pytest.approx((60.0, 297.0 - 255.0), abs=1e-6)   # where the student's axes cross
+
+
+def test_a_drawing_in_centimetres_is_read_in_millimetres(tmp_path):
+    doc = ezdxf.readfile(DRAWINGS / "press_plan_correct.dxf")
+    for e in doc.modelspace():
+        e.scale_uniform(0.1)
+    doc.units = ezdxf.units.CM
+    doc.saveas(tmp_path / "cm.dxf")
+    mm = cad.check_drawing("press", DRAWINGS / "press_plan_correct.dxf")
+    cm = cad.check_drawing("press", tmp_path / "cm.dxf")
+    assert cm.ok and cm.answers["velocity_plan"]["pa_mm"] == pytest.approx(mm.answers["velocity_plan"]["pa_mm"],
+                                                                            abs=1e-6)

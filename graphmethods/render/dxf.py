@@ -588,7 +588,29 @@ def read_drawing(source) -> CadDrawing:
     for text, x, y, h, *_, halign, valign in runs:
         cx, cy = _text_centre(x, y, h, text, halign, valign)
         texts.append(CadText(text, cx, cy, h))
+    f = _to_mm(doc)
+    if f != 1.0:                          # a drawing in cm, m or inches: everything in mm
+        def s(p):
+            return (p[0] * f, p[1] * f)
+        segs = [(s(a), s(b)) for a, b in segs]
+        fills = [tuple(s(p) for p in poly) for poly in fills]
+        circles = [(x * f, y * f, r * f) for x, y, r in circles]
+        texts = [CadText(t.text, t.x * f, t.y * f, t.height * f) for t in texts]
     return CadDrawing(tuple(segs), tuple(fills), tuple(circles), tuple(texts), source=name)
+
+
+def _to_mm(doc) -> float:
+    """The factor from the drawing's units ($INSUNITS) to mm; 1 when unitless or mm (CAD's default in
+    metric drawings)."""
+    from ezdxf import units
+
+    u = int(doc.header.get("$INSUNITS", 0) or 0)
+    if u in (0, units.MM):
+        return 1.0
+    try:
+        return float(units.conversion_factor(u, units.MM))
+    except (KeyError, ValueError, IndexError):
+        raise InputError(f"the drawing's units ($INSUNITS = {u}) are not a length: draw in mm") from None
 
 
 class _OntoRenderer(DxfRenderer):
