@@ -530,7 +530,7 @@ def read_drawing(source) -> CadDrawing:
             vs = [xy(entity.dxf.get(f"vtx{i}")) for i in range(4) if entity.dxf.hasattr(f"vtx{i}")]
             if t != "3DFACE" and len(vs) == 4:
                 vs = [vs[0], vs[1], vs[3], vs[2]]          # SOLID's corner order
-            out = []
+            out: list[tuple[float, float]] = []
             for v in vs:
                 if not out or math.dist(v, out[-1]) > 1e-9:
                     out.append(v)
@@ -540,17 +540,17 @@ def read_drawing(source) -> CadDrawing:
                 fills.append(tuple(out))
         elif t == "HATCH":
             for path in entity.paths:
+                corners: list[tuple[float, float]] = []
                 if hasattr(path, "vertices"):
-                    pts = [xy(v) for v in path.vertices]
+                    corners = [xy(v) for v in path.vertices]
                 else:
-                    pts = []
                     for edge in path.edges:
                         if hasattr(edge, "start") and hasattr(edge, "end") and not hasattr(edge, "radius"):
-                            pts.append(xy(edge.start))       # a line edge
+                            corners.append(xy(edge.start))   # a line edge
                         elif hasattr(edge, "center") and hasattr(edge, "radius"):
                             circles.append((float(edge.center[0]), float(edge.center[1]), float(edge.radius)))
-                if len(pts) >= 3:
-                    fills.append(tuple(pts))
+                if len(corners) >= 3:
+                    fills.append(tuple(corners))
         elif t == "CIRCLE":
             circles.append((float(entity.dxf.center[0]), float(entity.dxf.center[1]), float(entity.dxf.radius)))
         elif t == "TEXT":
@@ -608,7 +608,7 @@ def _to_mm(doc) -> float:
     if u in (0, units.MM):
         return 1.0
     try:
-        return float(units.conversion_factor(u, units.MM))
+        return float(units.conversion_factor(units.InsertUnits(u), units.InsertUnits(units.MM)))
     except (KeyError, ValueError, IndexError):
         raise InputError(f"the drawing's units ($INSUNITS = {u}) are not a length: draw in mm") from None
 

@@ -583,7 +583,7 @@ def indicator_answers(d: CadDrawing, data: CycleData, *, mu_E: float | None = No
         chain.append(vertical[j])
         j = prev[j]
     chain.reverse()
-    labels = list(data.cycle.labels)
+    labels = list(data.cycle.labels)     # type: ignore[attr-defined]
     by_label = {}
     named = [lab for lab in nts.labels if lab.text in labels]
     for k, a in enumerate(chain):                  # the label nearest each arrow's start names it
@@ -829,7 +829,7 @@ class StudentDrawing(Element):
         return tuple(out)
 
 
-def overlay_on_drawing(report: DrawingReport, *, notation="en") -> Scene:
+def overlay_on_drawing(report: CheckReport, *, notation="en") -> Scene:
     """The check's overlay (the correct construction at the student's scales, where the student drew it,
     and the list of wrong items) in red over the student's own drawing."""
     if not isinstance(report, DrawingReport) or report.drawing is None:
@@ -840,11 +840,13 @@ def overlay_on_drawing(report: DrawingReport, *, notation="en") -> Scene:
     return Scene(report.page, tuple(els), title=over.title, notation=over.notation, name="overlay-on-drawing")
 
 
-def overlay_dxf(report: DrawingReport, *, notation="en") -> bytes:
+def overlay_dxf(report: CheckReport, *, notation="en") -> bytes:
     """The student's DXF with the check's overlay added in red on a layer ``CHECK``."""
     from graphmethods.render.dxf import overlay_onto
 
-    src = pathlib.Path(report.drawing.source) if report.drawing is not None else None
+    if not isinstance(report, DrawingReport) or report.drawing is None:
+        raise InputError("an overlay over a drawing needs the report of check_drawing")
+    src = pathlib.Path(report.drawing.source)
     if src is None or src.suffix.lower() != ".dxf":
         raise InputError("an overlay in DXF needs a DXF drawing")
     over = report.overlay(notation=notation)

@@ -229,6 +229,7 @@ def check_file(path, *, problem: str | None = None) -> Submission:
     path = pathlib.Path(path)
     student, from_name = names_from_file_name(path)
     named = problem or from_name
+    report: CheckReport
     try:
         if path.suffix.lower() in DRAWING_SUFFIXES:
             from graphmethods.sheets import cad
