@@ -69,7 +69,7 @@ def test_imports_only_go_downward():
 def test_import_graphmethods_is_light():
     code = (
         "import sys, graphmethods, graphmethods.kinematics, graphmethods.dynamics, graphmethods.scene;"
-        "heavy = [m for m in ('matplotlib', 'svgwrite', 'shapely') if m in sys.modules];"
+        "heavy = [m for m in ('matplotlib', 'svgwrite', 'shapely', 'ezdxf') if m in sys.modules];"
         "print(','.join(heavy))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)

@@ -454,7 +454,7 @@ def test_cli_formats_exit_status_and_overlay_files(tmp_path, capsys):
     pdf = tmp_path / "film.pdf"
     cli_check.run(_args("W3", str(ANSWERS / "w3_mistakes.toml"), "--overlay", str(pdf)))
     assert pdf.read_bytes().startswith(b"%PDF")
-    with pytest.raises(InputError, match=".svg, .pdf or .png"):
+    with pytest.raises(InputError, match=".svg, .pdf, .png or .dxf"):
         cli_check.run(_args("W3", str(ANSWERS / "w3_mistakes.toml"), "--overlay", str(tmp_path / "x.jpg")))
     with pytest.raises(InputError, match="no such answers file"):
         cli_check.run(_args("W3", str(tmp_path / "none.toml")))

@@ -24,6 +24,7 @@ COMMANDS = {
     "gallery": ("gallery", "build every gallery figure (SVG, optionally PNG)"),
     "worksheet": ("worksheet", "printable worksheets with answer keys (variants from a seed)"),
     "check": ("check", "check a student's hand drawing (answers file) and diagnose usual mistakes"),
+    "check-class": ("check_class", "check a folder of students' answers files and drawings: one class table"),
     "bench": ("bench", "measure speed against error (Markdown table and JSON)"),
     "steps": ("steps", "a construction step by step for a lecture: PDF slides, SVG frames, animation, HTML page"),
 }

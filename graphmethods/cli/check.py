@@ -3,6 +3,7 @@
     graphmethods check W1 graphmethods/problems/data/answers/w1_mistakes.toml
     graphmethods check press answers.toml --format json
     graphmethods check indicator:7:3 answers.toml --overlay film.pdf
+    graphmethods check press plan.dxf --overlay checked.dxf     # a drawing made in CAD (.dxf or .svg)
 
 PROBLEM is a built-in id (W1, W2, W3, W4, press), a worksheet variant id (KIND:SEED:N) or a problem
 file (a worksheet's problems/*.json, or a slider-crank case file). The report lists each item with
@@ -23,25 +24,59 @@ def add_parser(sub) -> None:
                        "diagnosis of the usual mistakes, and an overlay to print 1:1 on film.",
                        epilog="Examples of answers files: graphmethods/problems/data/answers/*.toml")
     p.add_argument("problem", metavar="PROBLEM", help="W1, W2, W3, W4, press, KIND:SEED:N, or a problem file")
-    p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file")
+    p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
+                   "(.dxf, .svg: a velocity plan or an energy indicator, read and measured)")
     p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
-    p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf or .png) at the student's page size")
+    p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="notation and language of the overlay (the report stays English)")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
+    drawing = p.add_argument_group("a drawing (.dxf, .svg): what is not written on it")
+    drawing.add_argument("--position", type=int, default=None, help="the position a velocity plan is drawn for")
+    drawing.add_argument("--mu-v", type=float, default=None, help="μ_v of the velocity plan, (m/s)/mm")
+    drawing.add_argument("--mu-E", type=float, default=None, help="μ_E of the energy indicator, J/mm")
+    drawing.add_argument("--point", action="append", default=[], metavar="LABEL=X,Y",
+                         help="a point whose letter is missing, in drawing mm (repeat for several)")
     p.set_defaults(func=run)
+
+
+def _drawing_report(args):
+    """The check of a drawing made in CAD (graphmethods.sheets.cad), with the options not written on it."""
+    from graphmethods.errors import InputError
+    from graphmethods.sheets import cad
+
+    points = {}
+    for spec in args.point:
+        try:
+            label, xy = spec.split("=", 1)
+            x, y = (float(v) for v in xy.split(","))
+        except ValueError:
+            raise InputError(f"--point {spec!r}: write LABEL=X,Y (drawing mm), e.g. --point b=120.5,80") from None
+        points[label.strip()] = (x, y)
+    return cad.check_drawing(args.problem, args.answers, position=args.position, mu_v=args.mu_v, mu_E=args.mu_E,
+                             points=points or None)
 
 
 def run(args) -> int:
     from graphmethods.errors import InputError
     from graphmethods.sheets.check import check
 
-    report = check(args.problem, pathlib.Path(args.answers))
+    is_drawing = pathlib.Path(args.answers).suffix.lower() in (".dxf", ".svg")
+    report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
     if args.overlay:
         path = pathlib.Path(args.overlay)
-        scene = report.overlay(notation=args.lang)
         suffix = path.suffix.lower()
-        if suffix == ".svg":
+        if is_drawing:                  # the check in red over the student's own drawing
+            from graphmethods.sheets import cad
+
+            scene = cad.overlay_on_drawing(report, notation=args.lang)
+        else:
+            scene = report.overlay(notation=args.lang)
+        if suffix == ".dxf" and is_drawing and pathlib.Path(args.answers).suffix.lower() == ".dxf":
+            from graphmethods.render.files import write_atomic
+
+            write_atomic(path, cad.overlay_dxf(report, notation=args.lang), overwrite=args.force)
+        elif suffix == ".svg":
             from graphmethods.render import svg
 
             svg.save(scene, path, overwrite=args.force)
@@ -53,8 +88,12 @@ def run(args) -> int:
             from graphmethods.render import mpl
 
             mpl.save_png(scene, path, overwrite=args.force)
+        elif suffix == ".dxf":
+            from graphmethods.render import dxf
+
+            dxf.save(scene, path, overwrite=args.force)
         else:
-            raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf or .png")
+            raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
     out = {"text": report.to_text, "markdown": report.to_markdown, "json": report.to_json}[args.format]()
     print(out.rstrip("\n"))
     if args.overlay:

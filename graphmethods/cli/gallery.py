@@ -7,6 +7,7 @@ golden files on purpose (and the PNGs of scripts that set ``PNG = True``).
 
     graphmethods gallery --out gallery-out          # SVG of every figure
     graphmethods gallery --out gallery-out --png    # and PNG
+    graphmethods gallery --out gallery-out --dxf    # and DXF (1 unit = 1 mm, layers by role)
     graphmethods gallery --regenerate               # rewrite gallery/*.svg (and marked PNGs)
 
 Heavy modules (the sheets, svgwrite, matplotlib) are imported only when the command runs.
@@ -83,6 +84,7 @@ def add_parser(sub) -> None:
     p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
+    p.add_argument("--dxf", action="store_true", help="also write a DXF of every figure (1 unit = 1 mm, layers by role)")
     p.add_argument("--regenerate", action="store_true",
                    help="rewrite the committed golden SVGs in the gallery folder (and PNGs of scripts with PNG = True)")
     p.set_defaults(func=run)
@@ -104,6 +106,8 @@ def run(args) -> int:
         module = load(path)
         want_png = args.png or (args.regenerate and getattr(module, "PNG", False))
         targets = [out / f"{path.stem}.svg"] + ([out / f"{path.stem}.png"] if want_png else [])
+        if getattr(args, "dxf", False) and not args.regenerate:
+            targets.append(out / f"{path.stem}.dxf")
         jobs.append((path, module, targets))
     if not overwrite:   # refuse before writing anything, so a refused run leaves no half-built gallery
         existing = [str(t) for _, _, targets in jobs for t in targets if t.exists()]
@@ -115,11 +119,16 @@ def run(args) -> int:
         scene = module.build()
         svg.save(scene, targets[0], overwrite=overwrite)
         line = f"wrote {targets[0]}"
-        if len(targets) > 1:
-            from graphmethods.render import mpl
+        for target in targets[1:]:
+            if target.suffix == ".png":
+                from graphmethods.render import mpl
 
-            mpl.save_png(scene, targets[1], dpi=PNG_DPI, overwrite=overwrite)
-            line += f" and {targets[1].name}"
+                mpl.save_png(scene, target, dpi=PNG_DPI, overwrite=overwrite)
+            else:
+                from graphmethods.render import dxf
+
+                dxf.save(scene, target, overwrite=overwrite)
+            line += f" and {target.name}"
         scales = "; ".join(s.caption() for s in scene.scales())
         print(line + (f"  ({scales})" if scales else ""), file=sys.stdout)
     print(f"{len(jobs)} figures in {out}")

@@ -11,7 +11,7 @@ their guide, other points' are magnitudes; ``omega_k`` uses the textbook link nu
 kinematic scheme in M positions, the velocity plans of all positions, one large velocity plan
 (``--plan-position K``; by default the working-stroke position whose plan is the fullest figure)
 and the table of velocities (drawn, and as Markdown), in ``--lang en|ru|zh`` and ``--format
-svg|pdf|png``. Existing files are never replaced without ``--force``; every figure is built
+svg|pdf|png|dxf``. Existing files are never replaced without ``--force``; every figure is built
 before the first file is written, so an error writes nothing.
 
     graphmethods kinematics press.json --figures out --lang ru --format pdf
@@ -35,8 +35,9 @@ def add_parser(sub) -> None:
     p.add_argument("--figures", metavar="DIR", default=None,
                    help="also write the figures (scheme, velocity plans, one large plan, velocity table) into DIR")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
-    p.add_argument("--format", choices=("svg", "pdf", "png"), default="svg", dest="fig_format",
-                   help="file format of the figures (default svg; the table is also written as Markdown)")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default="svg", dest="fig_format",
+                   help="file format of the figures (default svg; dxf: 1 unit = 1 mm, layers by role; the table is "
+                        "also written as Markdown)")
     p.add_argument("--plan-position", type=int, default=None, metavar="K",
                    help="the position drawn as one large velocity plan (default: the fullest plan of the working "
                         "stroke)")
@@ -186,6 +187,10 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
             from graphmethods.render import pdf
 
             blobs[out / f"{stem}_{key}.pdf"] = pdf.to_bytes(obj)
+        elif fmt == "dxf":
+            from graphmethods.render import dxf
+
+            blobs[out / f"{stem}_{key}.dxf"] = dxf.to_bytes(obj)
         else:
             from graphmethods.render import mpl
 

@@ -24,8 +24,8 @@ def add_parser(sub) -> None:
     p.add_argument("--positions", type=int, default=12, metavar="M", help="number of positions (default 12)")
     p.add_argument("--no-exact", action="store_true", help="skip the exact reference solution (faster)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--sheet", metavar="FILE.svg|.pdf", default=None,
-                   help="also write the dynamic-analysis sheet (SVG or PDF, scale-true)")
+    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
+                   help="also write the dynamic-analysis sheet (SVG, PDF or DXF, scale-true)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="notation and language of the sheet (default en)")
     p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
@@ -41,6 +41,10 @@ def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
         from graphmethods.render import pdf
 
         return pdf.to_bytes([scene])
+    if path.suffix.lower() == ".dxf":
+        from graphmethods.render import dxf
+
+        return dxf.to_bytes([scene])
     from graphmethods.render import svg
 
     return svg.to_bytes(scene)
@@ -48,8 +52,8 @@ def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
 
 def _check_target(path: pathlib.Path, force: bool) -> None:
     """Refuse early (before any work) a sheet file that cannot or must not be written."""
-    if path.suffix.lower() not in (".svg", ".pdf"):
-        raise InputError(f"--sheet {path}: give a file name ending in .svg or .pdf")
+    if path.suffix.lower() not in (".svg", ".pdf", ".dxf"):
+        raise InputError(f"--sheet {path}: give a file name ending in .svg, .pdf or .dxf")
     parent = path.parent if str(path.parent) else pathlib.Path(".")
     if not parent.is_dir():
         raise InputError(f"--sheet {path}: directory {parent} does not exist; create it first")

@@ -44,7 +44,17 @@ def add_parser(sub) -> None:
     p.add_argument("--out", required=True, metavar="DIR", help="output folder (created if missing)")
     p.add_argument("--force", action="store_true", help="replace existing files")
     p.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    p.add_argument("--dxf", action="store_true", help="also write each page as DXF in DIR/dxf/ (students draw on it in "
+                   "CAD; graphmethods check-class reads their drawings back)")
     p.set_defaults(func=run)
+
+
+def _dxf_names(out, kind: str, n: int) -> list:
+    """The DXF pages: DIR/dxf/KIND-NN-student.dxf and -key.dxf for each variant."""
+    import pathlib
+
+    d = pathlib.Path(out) / "dxf"
+    return [d / f"{kind}-{i:02d}-{part}.dxf" for i in range(1, n + 1) for part in ("student", "key")]
 
 
 def run(args) -> int:
@@ -54,6 +64,8 @@ def run(args) -> int:
     t0 = time.perf_counter()
     if not args.force:                    # refuse before building anything
         existing = ws.existing_outputs(args.out, args.kind, args.lang, max(int(args.variants), 1))
+        if getattr(args, "dxf", False):
+            existing += [p for p in _dxf_names(args.out, args.kind, max(int(args.variants), 1)) if p.exists()]
         if existing:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(map(str, existing[:3]))}{more} exist; use --force to replace them, "
@@ -62,6 +74,15 @@ def run(args) -> int:
     sheet = ws.worksheet(args.kind, variants=args.variants, seed=args.seed, notation=args.lang, progress=progress)
     paths = ws.write_worksheet(sheet, args.out, overwrite=args.force, progress=progress)
     n = len(sheet.variants)
+    if getattr(args, "dxf", False):
+        from graphmethods.render import dxf
+        from graphmethods.render.files import write_atomic
+
+        names = _dxf_names(args.out, args.kind, n)
+        names[0].parent.mkdir(parents=True, exist_ok=True)
+        for name, scene in zip(names, [s for pair in zip(sheet.students, sheet.keys) for s in pair]):
+            write_atomic(name, dxf.to_bytes(scene), overwrite=args.force)
+        print(f"wrote {len(names)} DXF pages in {names[0].parent} (1 unit = 1 mm)")
     print(f"wrote {paths[0]} ({2 * n} pages: {n} students', then {n} keys), {2 * n} SVG in "
           f"{paths[0].parent / 'svg'}, {n} problem files in {paths[0].parent / 'problems'} "
           f"in {time.perf_counter() - t0:.1f} s")
