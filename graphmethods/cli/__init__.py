@@ -24,6 +24,7 @@ COMMANDS = {
     "worksheet": "worksheet",
     "check": "check",
     "bench": "bench",
+    "motion": "motion",
 }
 
 

@@ -35,7 +35,7 @@ M_0/k as an exponential with the time constant J/k.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
@@ -135,6 +135,8 @@ class SteadyState:
         Extremes of ε over the last period (at the step points and dense samples), rad/s².
     remaining : float
         Estimated |ω − ω_limit| at the last period start, rad/s (Aitken).
+    phi_0, phi_T : float
+        The model's position 0 and period, rad (``to_dict`` gives the angles after position 0).
     """
 
     t_steady: float
@@ -152,6 +154,8 @@ class SteadyState:
     epsilon_max: float
     epsilon_min: float
     remaining: float
+    phi_0: float = 0.0
+    phi_T: float = TWO_PI
 
     @property
     def omega_m(self) -> float:
@@ -160,8 +164,9 @@ class SteadyState:
     def to_dict(self) -> dict:
         return {"t_steady": self.t_steady, "tol": self.tol, "periods": self.periods,
                 "omega_m": self.omega_m, "delta": self.delta, "omega_max": self.omega_max,
-                "omega_min": self.omega_min, "phi_omega_max_deg": math.degrees(self.phi_omega_max),
-                "phi_omega_min_deg": math.degrees(self.phi_omega_min),
+                "omega_min": self.omega_min,
+                "phi_omega_max_deg": math.degrees(float(np.mod(self.phi_omega_max - self.phi_0, self.phi_T))),
+                "phi_omega_min_deg": math.degrees(float(np.mod(self.phi_omega_min - self.phi_0, self.phi_T))),
                 "omega_m_textbook": self.omega_m_textbook, "omega_m_time": self.omega_m_time,
                 "omega_m_integral": self.omega_m_integral, "t_T": self.t_T,
                 "epsilon_max": self.epsilon_max, "epsilon_min": self.epsilon_min,
@@ -385,6 +390,8 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
         def dJ_e(p):
             return (J_e(p + hJ) - J_e(p - hJ)) / (2 * hJ)
 
+    clamp = [-math.inf, math.inf]        # φ for the moment, kept on one side of a break while landing on it
+
     def rhs(t, y):
         phi, omega = y[0], y[1]
         p = np.array([phi])
@@ -392,7 +399,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
         if not J > 0:
             raise MotionError(f"the total inertia J_F + J_e = {J:.6g} kg·m² at φ = {math.degrees(phi):.6g}° is "
                               f"not positive; add flywheel inertia")
-        m = M(phi, omega, t)
+        m = M(min(max(phi, clamp[0]), clamp[1]), omega, t)
         eps = (m - 0.5 * omega * omega * float(dJ_e(p)[0])) / J
         return np.array([omega, eps, m * omega, omega * omega])
 
@@ -471,12 +478,18 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
                     hi = mid
             if hi * h_try > 1e-13 * max(1.0, abs(t)):
                 h_land = hi * h_try
+                clamp[1] = next_break - 1e-12 * max(1.0, abs(next_break))   # the left limit up to the break
                 continue
-        if h_land is not None:
-            next_break = break_after(max(y_new[0], next_break))
-            h_land = None
         t_new = t + h_try
         k1 = K[6]
+        clamp[0] = -math.inf
+        if h_land is not None:
+            clamp[1] = math.inf
+            if h_try >= h_land * (1 - 1e-12):      # landed on the break: the next step starts on its right
+                clamp[0] = next_break + 1e-12 * max(1.0, abs(next_break))
+                next_break = break_after(max(y_new[0], next_break))
+            h_land = None
+            k1 = rhs(t_new, y_new)
         ts.append(t_new)
         Ys.append(y_new)
         Ks.append(K)
@@ -548,7 +561,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
               ended_by=ended_by, steady=None, phi_T=L, _K=Kall, _Y=Y, _rhs=rhs)
     if ended_by == "steady":
         st = _steady_state(res, boundary, steady_k, tol, remaining)
-        object.__setattr__(res, "steady", st)
+        object.__setattr__(res, "steady", replace(st, phi_0=model.phi_0))
     return res
 
 
@@ -690,4 +703,4 @@ def _steady_state(res: Run, boundary, k: int, tol: float, remaining: float) -> S
         t_steady=t_steady - float(res.t[0]), tol=tol, periods=k, omega_max=w_max, omega_min=w_min,
         phi_omega_max=p_max, phi_omega_min=p_min, omega_m_textbook=om_tb, omega_m_time=float(L / t_T),
         omega_m_integral=float((QB - QA) / L), delta=(w_max - w_min) / om_tb, t_T=float(t_T),
-        epsilon_max=float(eps.max()), epsilon_min=float(eps.min()), remaining=float(abs(remaining)))
+        epsilon_max=float(eps.max()), epsilon_min=float(eps.min()), remaining=float(abs(remaining)), phi_T=L)

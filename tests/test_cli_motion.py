@@ -1,0 +1,75 @@
+"""`graphmethods motion` through the command line (issue 18, Interface)."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from graphmethods.cli import main
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_W4_one_turn_json_arrays_and_summary(capsys):
+    code, out, err = run(capsys, "motion", "W4", "--turns", "1", "--json")
+    assert code == 0, err
+    res = json.loads(out)
+    t, phi, omega, eps = (np.array(res[k]) for k in ("t", "phi", "omega", "epsilon"))
+    assert t.size == phi.size == omega.size == eps.size > 10
+    assert omega[0] == 10.0 and phi[-1] == pytest.approx(2 * math.pi)
+    # the energy form with J_e = 0.8 and the W4 moments: ΔE(φ) = ∫(20 − M_r)dφ
+    M_r_int = np.where(phi <= math.pi, 20 * phi**2 / math.pi,
+                       40 * math.pi - 20 * (2 * math.pi - phi) ** 2 / math.pi)
+    np.testing.assert_allclose(omega, np.sqrt(100 + 2 * (20 * phi - M_r_int) / 0.8), rtol=1e-8)
+    s = res["summary"]
+    assert s["ended_by"] == "turns" and s["case"] == "W4-exact" and s["energy_residual"] < 1e-9
+
+
+def test_W3_run_down_with_a_brake_stops(capsys):
+    code, out, err = run(capsys, "motion", "W3", "--omega0", "10", "--drive-off-at", "0", "--brake", "20",
+                         "--t-end", "100", "--json")
+    assert code == 0, err
+    s = json.loads(out)["summary"]
+    assert s["ended_by"] == "stopped" and s["omega_end"] == 0.0
+    # the energy form: ½ J ω0² = ∫ (20 + M_r) dφ up to the stop, M_r = 60 on [0, π/4), 10 after (W3)
+    T0 = 0.5 * s["J_F"] * 100.0
+    phi = math.radians(s["phi_end_deg"])
+    turns, rest = divmod(phi, 2 * math.pi)
+    per_turn = 80 * math.pi / 4 + 30 * 7 * math.pi / 4
+    part = 80 * min(rest, math.pi / 4) + 30 * max(rest - math.pi / 4, 0.0)
+    assert turns * per_turn + part == pytest.approx(T0, rel=1e-9)
+
+
+def test_dc_motor_until_steady_reports_the_three_means(capsys):
+    code, out, err = run(capsys, "motion", "W4", "--omega0", "0", "--phi0", "10", "--motor", "dc:M0=80,omega0=20",
+                         "--until-steady", "--json")
+    assert code == 0, err
+    s = json.loads(out)["summary"]
+    st = s["steady"]
+    assert s["ended_by"] == "steady" and st["t_steady"] > 0
+    assert st["omega_m"] == pytest.approx(0.5 * (st["omega_max"] + st["omega_min"]))
+    # ∫M_d dφ = ∫M_r dφ over the period with M_d = 80(1 − ω/20): the φ-average of ω is 20(1 − 20/80) = 15
+    assert st["omega_m_integral"] == pytest.approx(15.0, rel=1e-7)
+    assert st["omega_m_time"] <= st["omega_m_integral"]        # harmonic ≤ arithmetic mean over φ
+    assert 0 <= st["phi_omega_max_deg"] < 360 and 0 <= st["phi_omega_min_deg"] < 360
+
+
+@pytest.mark.parametrize("argv, match", [
+    (["W1", "--turns", "1"], "areas or works"),
+    (["nonesuch", "--turns", "1"], "not a built-in"),
+    (["W4", "--turns", "-1"], "--turns"),
+    (["W4", "--t-end", "1", "--motor", "ac:P=1"], "induction:"),
+    (["W4", "--t-end", "1", "--motor", "induction:P=1000,n=1400"], "missing"),
+    (["W4", "--t-end", "1", "--moment", "2^omega"], "'^'"),
+    (["W4", "--t-end", "1", "--brake-at", "2"], "--brake"),
+    (["W4", "--omega0", "0", "--phi0", "270", "--t-end", "1", "--J-F", "1"], "cannot start"),
+])
+def test_bad_input_one_line_exit_2(capsys, argv, match):
+    code, out, err = run(capsys, "motion", *argv)
+    assert code == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and match in err
