@@ -455,6 +455,20 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
         for s in range(1, 7):
             K[s] = rhs(t + _C[s] * h_try, y + h_try * (_A[s] @ K[:s]))
         y_new = y + h_try * (_B @ K)
+        if h_land is None and y_new[0] > next_break and math.isfinite(next_break) and np.all(np.isfinite(y_new)):
+            # the step passes a break: take it again, ending on the break (located on this step's dense
+            # output: φ is smooth through a jump of M), with the moment's left limit up to it
+            lo, hi = 0.0, 1.0
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                if _dense_one(t, t + h_try, y, K, mid)[1][0] < next_break:
+                    lo = mid
+                else:
+                    hi = mid
+            if hi * h_try > 1e-13 * max(1.0, abs(t)):
+                h_land = hi * h_try
+                clamp[1] = next_break - 1e-12 * max(1.0, abs(next_break))   # the left limit up to the break
+                continue
         err = h_try * (_E @ K)
         sc_phi = rtol * TWO_PI
         sc_w = rtol * max(w_ref, abs(y_new[1]))
@@ -467,8 +481,11 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
                 raise MotionError(f"the step size fell below 1e-14 s at t = {t:.6g} s, φ = "
                                   f"{math.degrees(y[0]):.6g}°: the moment is singular there")
             continue
-        if h_land is None and y_new[0] > next_break and math.isfinite(next_break):
-            # the step passes a break: take it again, ending on the break (found on the dense output)
+        landing = h_land is not None and h_try >= h_land * (1 - 1e-12)
+        gap = next_break - y_new[0] if landing else 0.0
+        tol_phi = 1e-11 * max(1.0, abs(next_break))
+        if landing and gap < -tol_phi:
+            # past the break: this step (smooth, on the left limit) locates it well; take it again
             lo, hi = 0.0, 1.0
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
@@ -476,16 +493,16 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
                     lo = mid
                 else:
                     hi = mid
-            if hi * h_try > 1e-13 * max(1.0, abs(t)):
-                h_land = hi * h_try
-                clamp[1] = next_break - 1e-12 * max(1.0, abs(next_break))   # the left limit up to the break
-                continue
+            h_land = 0.5 * (lo + hi) * h_try
+            continue
         t_new = t + h_try
         k1 = K[6]
         clamp[0] = -math.inf
-        if h_land is not None:
+        if landing and gap > tol_phi:              # short of the break: go on towards it (Newton in time)
+            h_land = gap / max(y_new[1], 1e-300)
+        elif h_land is not None:
             clamp[1] = math.inf
-            if h_try >= h_land * (1 - 1e-12):      # landed on the break: the next step starts on its right
+            if landing:                            # on the break: the next step starts on its right side
                 clamp[0] = next_break + 1e-12 * max(1.0, abs(next_break))
                 next_break = break_after(max(y_new[0], next_break))
             h_land = None
@@ -546,11 +563,14 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
             else:
                 hi = mid
         hm = hi * (t_arr[i + 1] - t_arr[i])
-        Kall[-1] = _refit(rhs, t_arr[i], Y[i], hm)      # the shortened step, taken again
+        clamp[0] = -math.inf                             # the shortened step, taken again (up to φ_stop
+        clamp[1] = phi_stop - 1e-12 * max(1.0, abs(phi_stop)) if comp == 0 else math.inf   # from the left)
+        Kall[-1] = _refit(rhs, t_arr[i], Y[i], hm)
         ym = Y[i] + hm * (_B @ Kall[-1])
         ym[comp] = target                                  # the event, to the integrator's accuracy
         t_arr[-1], Y[-1] = t_arr[i] + hm, ym
         eps_list[-1] = Kall[-1][6][1]
+    clamp[0], clamp[1] = -math.inf, math.inf
     phi, omega, W, Q = Y.T
     J = J_F + model.J_e_at(phi)
     T = 0.5 * J * omega**2
