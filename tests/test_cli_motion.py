@@ -73,3 +73,42 @@ def test_bad_input_one_line_exit_2(capsys, argv, match):
     code, out, err = run(capsys, "motion", *argv)
     assert code == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and match in err
+
+
+def test_figures_are_written_scale_true_and_never_overwritten(capsys, tmp_path):
+    out = tmp_path / "fig"
+    code, _, err = run(capsys, "motion", "W4", "--turns", "2", "--figures", str(out), "--json")
+    assert code == 0, err
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["W4-exact_epsilon_phi.svg", "W4-exact_omega_phi.svg", "W4-exact_omega_t.svg"]
+    svg = (out / "W4-exact_omega_t.svg").read_text(encoding="utf-8")
+    assert 'width="297mm"' in svg and 'viewBox="0 0 297 210"' in svg
+    before = (out / "W4-exact_omega_phi.svg").read_bytes()
+    code, _, err = run(capsys, "motion", "W4", "--turns", "1", "--figures", str(out))
+    assert code == 2 and "--force" in err and (out / "W4-exact_omega_phi.svg").read_bytes() == before
+    # deterministic: the same run draws the same bytes
+    code, _, _ = run(capsys, "motion", "W4", "--turns", "2", "--figures", str(out), "--force")
+    assert code == 0 and (out / "W4-exact_omega_phi.svg").read_bytes() == before
+
+
+def test_motion_graph_draws_omega_to_scale():
+    from graphmethods.dynamics.motion import ReducedModel
+    from graphmethods.dynamics.regimes import run as integrate
+    from graphmethods.sheets.motion import motion_graph
+
+    res = integrate(ReducedModel(J_e=0.025, M_e=30.0), t_end=1.5)
+    scene = motion_graph(res, x="t", y="omega", problem="gear train")
+    s_t, s_w = scene.scales()
+    curve = scene.element("curve-omega")
+    (x0, y0), (x1, y1) = curve.points[0], curve.points[-1]
+    assert (x1 - x0) * s_t.per_mm == pytest.approx(1.5, rel=1e-9)          # 1.5 s drawn at μ_t
+    assert (y0 - y1) * s_w.per_mm == pytest.approx(1800.0, rel=1e-9)       # ω = 1800 s⁻¹ at μ_ω
+
+
+def test_a_moment_formula_of_speed_starting_with_a_minus(capsys):
+    # J dω/dt = −a ω² from ω0 (M_d − M_r of W4 integrate to zero each turn, so after whole turns only the
+    # drag has acted): check one turn against the energy form d(½Jω²)/dφ = M_W4(φ) − a ω²
+    code, out, err = run(capsys, "motion", "W4", "--moment", "-0.02*omega**2", "--turns", "1", "--json")
+    assert code == 0, err
+    s = json.loads(out)["summary"]
+    assert s["omega_end"] < 10.0 and s["energy_residual"] < 1e-9

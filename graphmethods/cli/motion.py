@@ -20,6 +20,19 @@ from graphmethods.errors import InputError
 from graphmethods.units import parse_number
 
 
+def preprocess_argv(argv: list[str]) -> list[str]:
+    """``--moment -0.02*omega**2`` -> ``--moment=-0.02*omega**2`` (argparse would take the value for an option)."""
+    out, i = [], 0
+    while i < len(argv):
+        if argv[i] in ("--moment", "--omega0", "--phi0", "--t0") and i + 1 < len(argv):
+            out.append(f"{argv[i]}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(argv[i])
+        i += 1
+    return out
+
+
 def add_parser(sub) -> None:
     p = sub.add_parser(
         "motion", help="motion from given initial conditions: start-up, steady running, run-down",
@@ -54,6 +67,12 @@ def add_parser(sub) -> None:
     p.add_argument("--rtol", default="1e-10", help="relative tolerance of the integrator (default 1e-10)")
     p.add_argument("--json", action="store_true", help="print one JSON object: arrays t, phi, omega, epsilon "
                                                        "and the summary")
+    p.add_argument("--figures", default=None, metavar="DIR",
+                   help="also draw ω(t), ω(φ) and ε(φ) into DIR (created if missing), scale-true")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
+    p.add_argument("--format", choices=("svg", "pdf", "png"), default="svg", dest="fig_format",
+                   help="file format of the figures (default svg)")
+    p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     p.set_defaults(func=run)
 
 
@@ -163,6 +182,8 @@ def run(args: argparse.Namespace) -> int:
     if args.motor is not None:
         summary["motor_ratio"] = drive.ratio
     summary.update(res.summary())
+    if args.figures is not None:
+        summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name)]
     if args.json:
         out = {"t": res.t.tolist(), "phi": res.phi.tolist(), "omega": res.omega.tolist(),
                "epsilon": res.epsilon.tolist(), "summary": summary}
@@ -177,3 +198,40 @@ def run(args: argparse.Namespace) -> int:
         for key, value in steady.items():
             print(f"  {key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"  {key.ljust(width)}  {value}")
     return 0
+
+
+def _write_figures(res, args, *, problem: str) -> list:
+    """Build all three figures, then write them (an existing file is kept unless --force)."""
+    import pathlib
+
+    from graphmethods.errors import OutputExistsError
+    from graphmethods.render.files import write_atomic
+    from graphmethods.sheets.motion import motion_figures
+
+    out = pathlib.Path(args.figures)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--figures {out}: it is a file; give a directory")
+    scenes = motion_figures(res, notation=args.lang, problem=problem)
+    paths = {out / f"{problem}_{key}.{args.fig_format}": scene for key, scene in scenes.items()}
+    if not args.force:
+        for path in paths:
+            if path.exists():
+                raise OutputExistsError(f"{path} exists; use --force to overwrite it")
+    blobs = {}
+    for path, scene in paths.items():
+        if args.fig_format == "svg":
+            from graphmethods.render import svg
+
+            blobs[path] = svg.to_bytes(scene)
+        elif args.fig_format == "pdf":
+            from graphmethods.render import pdf
+
+            blobs[path] = pdf.to_bytes([scene])
+        else:
+            from graphmethods.render import mpl
+
+            blobs[path] = mpl.to_png_bytes(scene)
+    out.mkdir(parents=True, exist_ok=True)
+    for path, data in blobs.items():
+        write_atomic(path, data, overwrite=args.force)
+    return list(blobs)

@@ -161,12 +161,17 @@ class SteadyState:
     def omega_m(self) -> float:
         return self.omega_m_textbook
 
+    def _from_0_deg(self, phi: float) -> float:
+        """An angle after position 0, degrees in [0, φ_T) (round-off of the period's ends taken as 0)."""
+        a = float(np.mod(phi - self.phi_0, self.phi_T))
+        return 0.0 if min(a, self.phi_T - a) <= 1e-9 * self.phi_T else math.degrees(a)
+
     def to_dict(self) -> dict:
         return {"t_steady": self.t_steady, "tol": self.tol, "periods": self.periods,
                 "omega_m": self.omega_m, "delta": self.delta, "omega_max": self.omega_max,
                 "omega_min": self.omega_min,
-                "phi_omega_max_deg": math.degrees(float(np.mod(self.phi_omega_max - self.phi_0, self.phi_T))),
-                "phi_omega_min_deg": math.degrees(float(np.mod(self.phi_omega_min - self.phi_0, self.phi_T))),
+                "phi_omega_max_deg": self._from_0_deg(self.phi_omega_max),
+                "phi_omega_min_deg": self._from_0_deg(self.phi_omega_min),
                 "omega_m_textbook": self.omega_m_textbook, "omega_m_time": self.omega_m_time,
                 "omega_m_integral": self.omega_m_integral, "t_T": self.t_T,
                 "epsilon_max": self.epsilon_max, "epsilon_min": self.epsilon_min,
