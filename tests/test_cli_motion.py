@@ -80,7 +80,8 @@ def test_figures_are_written_scale_true_and_never_overwritten(capsys, tmp_path):
     code, _, err = run(capsys, "motion", "W4", "--turns", "2", "--figures", str(out), "--json")
     assert code == 0, err
     names = sorted(p.name for p in out.iterdir())
-    assert names == ["W4-exact_epsilon_phi.svg", "W4-exact_omega_phi.svg", "W4-exact_omega_t.svg"]
+    assert names == ["W4-exact_epsilon_phi.svg", "W4-exact_omega_phi.svg", "W4-exact_omega_t.svg",
+                     "W4-exact_panels.svg"]
     svg = (out / "W4-exact_omega_t.svg").read_text(encoding="utf-8")
     assert 'width="297mm"' in svg and 'viewBox="0 0 297 210"' in svg
     before = (out / "W4-exact_omega_phi.svg").read_bytes()
@@ -112,3 +113,28 @@ def test_a_moment_formula_of_speed_starting_with_a_minus(capsys):
     assert code == 0, err
     s = json.loads(out)["summary"]
     assert s["omega_end"] < 10.0 and s["energy_residual"] < 1e-9
+
+
+def test_cycle_motion_and_the_three_panel_figure_W3():
+    # W3 with its approximate flywheel: J constant, so ω_max, ω_min = ω_m(1 ± δ/2) exactly
+    from graphmethods.problems import w3
+    from graphmethods.problems.cycle_motion import cycle_motion
+    from graphmethods.sheets.cycle_panels import cycle_panels
+
+    cm = cycle_motion(w3())
+    phi = np.linspace(0, 2 * math.pi, 20001)
+    w = cm.omega_at(phi)
+    w_m = math.pi * 100 / 30
+    assert w.max() == pytest.approx(w_m * (1 + 0.025), rel=1e-9) and w.min() == pytest.approx(w_m * (1 - 0.025),
+                                                                                                rel=1e-9)
+    assert phi[np.argmin(w)] == pytest.approx(math.pi / 4, abs=1e-3)      # where the step load ends
+    np.testing.assert_allclose(cm.epsilon_at(np.array([0.1, 1.0])), (16.25 - np.array([60.0, 10.0])) / cm.J)
+    scene = cycle_panels(w3())
+    s_phi, s_M, s_E, s_w = scene.scales()
+    # one φ scale for the three panels: each curve spans the period at μ_φ
+    for name in ("curve-M_r", "curve-delta_E", "curve-omega"):
+        pts = scene.element(name).points
+        assert (pts[-1][0] - pts[0][0]) * s_phi.per_mm == pytest.approx(2 * math.pi, rel=1e-9)
+    # the ΔE curve's lowest point is ΔW_max = 34.36 J below its start, at μ_E
+    pts = np.array(scene.element("curve-delta_E").points)
+    assert (pts[:, 1].max() - pts[0, 1]) * s_E.per_mm == pytest.approx(43.75 * math.pi / 4, rel=1e-6)

@@ -183,7 +183,7 @@ def run(args: argparse.Namespace) -> int:
         summary["motor_ratio"] = drive.ratio
     summary.update(res.summary())
     if args.figures is not None:
-        summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name)]
+        summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name, cycle=m.problem)]
     if args.json:
         out = {"t": res.t.tolist(), "phi": res.phi.tolist(), "omega": res.omega.tolist(),
                "epsilon": res.epsilon.tolist(), "summary": summary}
@@ -200,8 +200,9 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _write_figures(res, args, *, problem: str) -> list:
-    """Build all three figures, then write them (an existing file is kept unless --force)."""
+def _write_figures(res, args, *, problem: str, cycle=None) -> list:
+    """Build the figures (ω(t), ω(φ), ε(φ); and for a cycle problem the three-panel figure of its steady
+    cycle), then write them (an existing file is kept unless --force)."""
     import pathlib
 
     from graphmethods.errors import OutputExistsError
@@ -212,6 +213,10 @@ def _write_figures(res, args, *, problem: str) -> list:
     if out.exists() and not out.is_dir():
         raise InputError(f"--figures {out}: it is a file; give a directory")
     scenes = motion_figures(res, notation=args.lang, problem=problem)
+    if cycle is not None:                 # a cycle problem: also M_d/M_r, ΔE and ω on one φ axis
+        from graphmethods.sheets.cycle_panels import cycle_panels
+
+        scenes["panels"] = cycle_panels(cycle, notation=args.lang)
     paths = {out / f"{problem}_{key}.{args.fig_format}": scene for key, scene in scenes.items()}
     if not args.force:
         for path in paths:

@@ -53,6 +53,8 @@ class Machine:
         The problem's own starting speed, rad/s (W4), if any.
     omega_m : float or None
         Its mean speed, rad/s, if stated.
+    problem : CycleProblem or None
+        The cycle problem it was made from (None for a linkage).
     """
 
     name: str
@@ -61,6 +63,7 @@ class Machine:
     J_F: float
     omega_0: float | None
     omega_m: float | None
+    problem: object = None
 
 
 def _cycle_machine(p) -> Machine:
@@ -83,7 +86,7 @@ def _cycle_machine(p) -> Machine:
         omega_m = math.pi * p.n_rpm / 30.0
         if p.delta is not None:
             J_F = max(p.flywheel().J_F, 0.0)
-    return Machine(p.id, model, Md, J_F, p.omega_0, omega_m)
+    return Machine(p.id, model, Md, J_F, p.omega_0, omega_m, p)
 
 
 def _linkage_machine(case, name: str) -> Machine:
