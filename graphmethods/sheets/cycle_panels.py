@@ -125,5 +125,7 @@ def cycle_panels(problem, *, notation="en", title: str | None = None, samples: i
     els.append(Text((x0, sheet.caption_y - 6.0), "   ".join(s.caption(nt) for s in scales[2:]), size_mm=TEXT_MM,
                     name="scale-captions-2"))
     els.append(Text((x0, sheet.caption_y - 12.0), legend, size_mm=TEXT_MM, name="legend"))
-    return Scene(sheet.page(scales), tuple(els), title=sheet.title, notation=nt.code, name="cycle-panels",
+    # the title block's line holds the three value scales (all four are captioned under the figure)
+    short = scales[1:]
+    return Scene(sheet.page(short), tuple(els), title=sheet.title, notation=nt.code, name="cycle-panels",
                  notes=tuple(s.note for s in scales))
