@@ -220,3 +220,25 @@ def test_cli_bad_moment_input_one_line_exit_2(capsys, argv, match):
     code, out, err = run(capsys, "flywheel", *argv, "--n", "120", "--J", "30")
     assert code == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and match in err
+
+
+def test_common_period_found_automatically():
+    from graphmethods.dynamics.moment_cycle import common_period_deg
+
+    assert common_period_deg(lambda p: np.sin(2 * p)) == 180.0
+    assert common_period_deg(lambda p: np.sin(2 * p), lambda p: np.cos(3 * p)) == 360.0
+    assert common_period_deg(lambda p: 1 + np.sin(p / 2), lambda p: np.sin(p)) == 720.0         # four-stroke
+    assert common_period_deg(lambda p: np.sin(2 * p / 3)) == 540.0
+    with pytest.raises(InputError, match="no common period"):
+        common_period_deg(lambda p: np.sin(math.sqrt(2) * p))
+    cyc = moment_cycle(M_d="100 + 20*sin(2*phi)", M_r="100 + 50*sin(phi/2)", period_deg="auto")
+    assert cyc.period == pytest.approx(4 * math.pi)
+    # over 720° the works balance (both means 100), and ΔE closes
+    assert cyc.excess_work.residual == pytest.approx(0.0, abs=1e-9)
+
+
+def test_auto_period_refuses_a_points_file(tmp_path):
+    f = tmp_path / "p.csv"
+    f.write_text("0,1\n360,1\n", encoding="utf-8")
+    with pytest.raises(InputError, match="points file"):
+        moment_cycle(M_r=str(f), period_deg="auto")

@@ -23,7 +23,8 @@ def add_arguments(p) -> None:
     p.add_argument("--M-r", dest="M_r", default=None, metavar="M",
                    help="resisting moment, in the same forms as --M-d; missing: the balancing constant")
     p.add_argument("--period-deg", default=None, metavar="P",
-                   help="period of the moment curves, degrees (default 360; 720 for a four-stroke engine)")
+                   help="period of the moment curves, degrees (default 360; 720 for a four-stroke engine), or "
+                        "auto: the common period of the formulas")
 
 
 def join_values(argv: list[str]) -> list[str]:

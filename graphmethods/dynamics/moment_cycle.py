@@ -43,7 +43,8 @@ from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError
 from graphmethods.units import parse_number
 
-__all__ = ["MomentInput", "moment_input", "read_points_csv", "MomentCycle", "moment_cycle", "Acceleration"]
+__all__ = ["MomentInput", "moment_input", "read_points_csv", "MomentCycle", "moment_cycle", "Acceleration",
+           "common_period_deg"]
 
 #: Relative tolerance of a tie between energy levels (of ΔW_max) and between moments (of max |M|).
 TIE_RTOL = 1e-9
@@ -312,6 +313,24 @@ def _moment_extremes(D: MomentCurve, fn, sense: float) -> tuple[float, list[floa
     return sense * top, inner
 
 
+def _auto_period(M_d, M_r) -> float:
+    """The common period (degrees) of the formulas (360° for constants only); a points file needs
+    its period said."""
+    fns, spans = [], []
+    for text, name in ((M_d, "--M-d"), (M_r, "--M-r")):
+        if text is None:
+            continue
+        s = str(text).strip()
+        if s.lower().endswith(".csv") or (len(s) < 4096 and pathlib.Path(s).is_file()):
+            raise InputError(f"{name}: a points file is given over a period of its own; give --period-deg with it")
+        if looks_like_formula(s):
+            f = Formula(s, variables=("phi",))
+            fns.append(lambda p, f=f: f(phi=p))
+    if not fns:
+        return 360.0
+    return common_period_deg(*fns)
+
+
 def _exact_work(f, P: float) -> float:
     """∫_0^P f dφ by adaptive Gauss–Kronrod quadrature (J)."""
     from graphmethods.dynamics.motion import _Primitive
@@ -346,7 +365,41 @@ def _exact_table(table: ew.ExcessWork, f_d, f_r, P: float) -> ew.ExcessWork:
     return replace(table, phi=phi, E=E, work=np.diff(E))
 
 
-def moment_cycle(M_d=None, M_r=None, *, period_deg: float = 360.0) -> MomentCycle:
+#: Candidate periods for ``period_deg="auto"``: 360°·k/q, q = 1…12, up to four turns (degrees).
+def _candidate_periods(max_turns: int = 4) -> list[float]:
+    from fractions import Fraction
+
+    c = {Fraction(360 * k, q) for q in range(1, 13) for k in range(1, 12 * max_turns + 1)
+         if Fraction(360 * k, q) <= 360 * max_turns}
+    return [float(x) for x in sorted(c)]
+
+
+def common_period_deg(*functions, max_turns: int = 4, rtol: float = 1e-9) -> float:
+    """The common period (degrees) of moments given as functions of φ (rad): the smallest of
+    360°·k/q (q ≤ 12, up to ``max_turns`` turns) over which every one repeats.
+
+    A function repeats over P when |f(φ + P) − f(φ)| ≤ rtol·max|f| at 257 angles spread over
+    [0, max_turns·360°] (a constant repeats over any P). For a four-stroke engine's gas moment and a
+    pump's moment of period 360° it gives 720°.
+
+    >>> import numpy as np
+    >>> common_period_deg(lambda p: np.sin(2 * p), lambda p: np.cos(3 * p))
+    360.0
+    >>> common_period_deg(lambda p: 5 + np.sin(p / 2), lambda p: np.sin(2 * p))
+    720.0
+    """
+    x = np.radians(np.linspace(0.0, 360.0 * max_turns, 257)) + 0.1234567
+    vals = [np.asarray(f(x), dtype=float) for f in functions]
+    scale = max([float(np.max(np.abs(v))) for v in vals] + [1e-300])
+    for P in _candidate_periods(max_turns):
+        if all(float(np.max(np.abs(np.asarray(f(x + math.radians(P)), dtype=float) - v))) <= rtol * scale
+               for f, v in zip(functions, vals)):
+            return P
+    raise InputError(f"no common period of the moments up to {max_turns} turns (tried 360°·k/q, q ≤ 12); "
+                     f"give --period-deg")
+
+
+def moment_cycle(M_d=None, M_r=None, *, period_deg: float | str = 360.0) -> MomentCycle:
     """The cycle of two moments given as text (numbers, formulas in phi, CSV files); one may be missing.
 
     Parameters
@@ -354,8 +407,9 @@ def moment_cycle(M_d=None, M_r=None, *, period_deg: float = 360.0) -> MomentCycl
     M_d, M_r : str or None
         The driving and the resisting moment (N·m): a number, a formula in ``phi`` (rad) or the
         name of a CSV file of ``phi_deg,M`` points. A missing one balances the other's work.
-    period_deg : float
-        The period, degrees (360: one turn; 720: a four-stroke engine).
+    period_deg : float or "auto"
+        The period, degrees (360: one turn; 720: a four-stroke engine), or ``"auto"``: the common
+        period of the formulas (:func:`common_period_deg`; not with a points file).
 
     Returns
     -------
@@ -375,10 +429,9 @@ def moment_cycle(M_d=None, M_r=None, *, period_deg: float = 360.0) -> MomentCycl
     """
     if M_d is None and M_r is None:
         raise InputError("give the driving moment --M-d, the resisting moment --M-r, or both")
-    try:
-        P = math.radians(parse_number(period_deg, name="--period-deg"))
-    except InputError:
-        raise
+    if str(period_deg).strip().lower() == "auto":
+        period_deg = _auto_period(M_d, M_r)
+    P = math.radians(parse_number(period_deg, name="--period-deg"))
     if not P > 0:
         raise InputError(f"--period-deg {period_deg!r}: the period must be a positive angle (360 for one turn)")
     d = None if M_d is None else moment_input(M_d, period=P, name="--M-d")
