@@ -138,3 +138,24 @@ def test_cycle_motion_and_the_three_panel_figure_W3():
     # the ΔE curve's lowest point is ΔW_max = 34.36 J below its start, at μ_E
     pts = np.array(scene.element("curve-delta_E").points)
     assert (pts[:, 1].max() - pts[0, 1]) * s_E.per_mm == pytest.approx(43.75 * math.pi / 4, rel=1e-6)
+
+
+def test_open_energy_mass_curve_of_a_start_up():
+    from graphmethods.dynamics.motion import ReducedModel
+    from graphmethods.dynamics.motor import DCMotor
+    from graphmethods.dynamics.regimes import run as integrate
+    from graphmethods.sheets.motion import energy_mass_curve, motion_figures
+
+    model = ReducedModel(J_e=lambda p: 1.0 + 0.3 * np.cos(2 * p), M_e=lambda p: -20 - 10 * np.sin(p),
+                         dJ_e=lambda p: -0.6 * np.sin(2 * p))
+    res = integrate(model, J_F=0.5, drive=DCMotor(M_0=100.0, omega_0=20.0), until_steady=True)
+    assert res.T[0] == 0.0
+    np.testing.assert_allclose(res.J, 0.5 + model.J_e_at(res.phi), rtol=1e-15)
+    scene = energy_mass_curve(res)
+    s_J, s_T = scene.scales()
+    pts = np.array(scene.element("curve-T").points)
+    # T drawn to μ_T from the J axis; the start on it (T = 0), the end on the steady loop
+    axis_y = scene.element("axis-J").origin[1]
+    np.testing.assert_allclose((axis_y - pts[:, 1]) * s_T.per_mm, res.T[np.unique(
+        np.linspace(0, res.T.size - 1, min(res.T.size, 6000)).round().astype(int))], rtol=1e-9, atol=1e-9)
+    assert "energy_mass" in motion_figures(res)

@@ -191,6 +191,8 @@ class Run:
         Work of all the moments since the start, J.
     T : ndarray
         Kinetic energy ½ J(φ) ω², J.
+    J : ndarray
+        Total inertia J_F + J_e(φ) at the steps, kg·m².
     energy_residual : float
         max |T − T0 − W| over the run, relative to the largest of T and |W|: the energy balance.
     error_estimate : float
@@ -209,6 +211,7 @@ class Run:
     epsilon: np.ndarray
     work: np.ndarray
     T: np.ndarray
+    J: np.ndarray
     energy_residual: float
     error_estimate: float
     rtol: float
@@ -582,7 +585,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
     scale = max(float(np.max(T)), float(np.max(np.abs(W))), 1e-300)
     residual = float(np.max(np.abs(T - T[0] - W)) / scale)
     res = Run(t=_frozen(t_arr), phi=_frozen(phi), omega=_frozen(omega), epsilon=_frozen(np.array(eps_list)),
-              work=_frozen(W), T=_frozen(T), energy_residual=residual, error_estimate=float(err_sum), rtol=rtol,
+              work=_frozen(W), T=_frozen(T), J=_frozen(J), energy_residual=residual, error_estimate=float(err_sum), rtol=rtol,
               ended_by=ended_by, steady=None, phi_T=L, _K=Kall, _Y=Y, _rhs=rhs)
     if ended_by == "steady":
         st = _steady_state(res, boundary, steady_k, tol, remaining)

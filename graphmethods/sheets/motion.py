@@ -147,8 +147,59 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
                  name=name or f"motion-{y}-{x}", notes=tuple(notes))
 
 
+def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | None = None) -> Scene:
+    """The run in the energy–mass plane: T against the total inertia J = J_F + J_e(φ) (Wittenbauer's
+    diagram, open): a start-up leaves T = 0 and winds into the closed loop of the steady state; a
+    run-down winds back to T = 0. The J axis starts at a round value below the least J (a suppressed
+    zero); the start is marked with a circle, the end with a dot.
+
+    >>> from graphmethods.dynamics.motion import ReducedModel
+    >>> from graphmethods.dynamics.regimes import run
+    >>> import numpy as np
+    >>> r = run(ReducedModel(J_e=lambda p: 1 + 0.2 * np.cos(2 * p), M_e=lambda p: 5 + 3 * np.sin(p)), turns=3)
+    >>> energy_mass_curve(r).element("curve-T").points[0][1] > energy_mass_curve(r).element("curve-T").points[-1][1]
+    True
+    """
+    nt = get_notation(notation)
+    title = title or ("Energy–mass curve of the run T(J)", "Кривая энергия–масса движения T(J)",
+                      "运动过程的能量—质量曲线 T(J)")[_LANG.get(nt.code, 0)]
+    J, T = np.asarray(res.J, dtype=float), np.asarray(res.T, dtype=float)
+    sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem or "", title_block=True,
+                       default_page=Page("A4", "landscape", frame=True))
+    x0, _, x1, _ = sheet.box
+    px0, px1 = x0 + 22.0, x1 - 30.0
+    py0, py1 = sheet.top + 14.0, sheet.caption_y - 16.0
+    J_lo, J_hi = float(J.min()), float(J.max())
+    span = max(J_hi - J_lo, 1e-9 * max(J_hi, 1e-300))
+    s_J = given_scale(None, "μ_J", unit(nt, "kg·m²"), span * 1.25, px1 - px0, what="the inertia")
+    ticks = nice_ticks(J_lo - 0.2 * span, J_hi, s_J, min_gap_mm=12.0)
+    base = max([t for t in ticks if t <= J_lo] or [J_lo])
+    T_hi = max(float(T.max()), 1e-300)
+    s_T = given_scale(None, "μ_T", unit(nt, "J"), T_hi, py1 - py0, what="the energy")
+    origin = (px0 - s_J.to_mm(base), py0 + s_T.to_mm(T_hi))
+    f = Frame(origin, s_J, s_T)
+    # the J axis from its (suppressed) base; the T axis stands at J = base (its origin: T = 0 there)
+    ax_J = Axis(origin, s_J, "x", min_value=base, max_value=J_hi, label=quantity(nt, "J", "kg·m²"),
+                ticks=tuple(t for t in ticks if base <= t <= J_hi), size_mm=SMALL_MM, decimal=nt.decimal,
+                name="axis-J")
+    ax_T = Axis((px0, origin[1]), s_T, "y", min_value=0.0, max_value=T_hi, label=quantity(nt, "T", "J"),
+                ticks=tuple(v for v in nice_ticks(0.0, T_hi, s_T, min_gap_mm=8.0) if 0 <= v <= T_hi),
+                size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T", skip_zero_label=True)
+    keep = np.unique(np.linspace(0, J.size - 1, min(J.size, 6000)).round().astype(int))
+    els = [sheet.header(), ax_J, ax_T, Polyline(f.pts(J[keep], T[keep]), style=MAIN, name="curve-T"),
+           Point(f.pt(J[0], T[0]), radius_mm=1.1, filled=False, name="mark-start"),
+           Point(f.pt(J[-1], T[-1]), radius_mm=0.8, name="mark-end")]
+    els += sheet.captions((s_J, s_T))
+    return Scene(sheet.page((s_J, s_T)), tuple(els), title=sheet.title, notation=nt.code, name="energy-mass-run",
+                 notes=(s_J.note, s_T.note, f"the J axis starts at {base:g} kg·m²"))
+
+
 def motion_figures(res, *, notation="en", problem: str = "") -> dict:
-    """The three figures of a run by file stem: ω(t), ω(φ), ε(φ)."""
-    return {"omega_t": motion_graph(res, x="t", y="omega", notation=notation, problem=problem),
-            "omega_phi": motion_graph(res, x="phi", y="omega", notation=notation, problem=problem),
-            "epsilon_phi": motion_graph(res, x="phi", y="epsilon", notation=notation, problem=problem)}
+    """The figures of a run by file stem: ω(t), ω(φ), ε(φ), and T(J) when the inertia varies."""
+    out = {"omega_t": motion_graph(res, x="t", y="omega", notation=notation, problem=problem),
+           "omega_phi": motion_graph(res, x="phi", y="omega", notation=notation, problem=problem),
+           "epsilon_phi": motion_graph(res, x="phi", y="epsilon", notation=notation, problem=problem)}
+    J = np.asarray(res.J, dtype=float)
+    if float(J.max() - J.min()) > 1e-9 * float(J.max()):
+        out["energy_mass"] = energy_mass_curve(res, notation=notation, problem=problem)
+    return out
