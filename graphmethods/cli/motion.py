@@ -80,6 +80,7 @@ def parse_motor(spec: str, *, omega_m: float | None):
     """(motor, J_rotor·u²) from ``induction:...`` or ``dc:...``."""
     from graphmethods.dynamics.motor import DCMotor, InductionMotor
 
+    motor: InductionMotor | DCMotor
     kind, _, rest = spec.partition(":")
     kind = kind.strip().lower()
     fields = {}
@@ -189,7 +190,7 @@ def run(args: argparse.Namespace) -> int:
                "epsilon": res.epsilon.tolist(), "summary": summary}
         print(json.dumps(out))
         return 0
-    steady = summary.pop("steady", None)
+    steady: dict | None = summary.pop("steady", None)  # type: ignore[assignment]
     width = max(map(len, summary))
     for key, value in summary.items():
         print(f"{key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"{key.ljust(width)}  {value}")

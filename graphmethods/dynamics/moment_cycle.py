@@ -104,7 +104,8 @@ def read_points_csv(path, *, period: float, name: str = "M") -> MomentCurve:
         raise InputError(f"{name}: {p}: no such file (a CSV file of phi_deg,M points)") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(f"{name}: {p}: cannot read it ({exc.__class__.__name__})") from None
-    phi_deg, M = [], []
+    phi_deg: list[float] = []
+    M: list[float] = []
     for lineno, raw in enumerate(text.splitlines(), 1):
         line = raw.split("#", 1)[0].strip()
         if not line:
@@ -128,7 +129,7 @@ def read_points_csv(path, *, period: float, name: str = "M") -> MomentCurve:
         raise InputError(f"{name}: {p}: the first point must be at phi_deg = 0 (the start of the period), "
                          f"not {phi_deg[0]:g}")
     try:
-        return MomentCurve.points(np.radians(phi_deg), M, period=period)
+        return MomentCurve.points(np.radians(phi_deg).tolist(), M, period=period)
     except InputError as exc:
         raise InputError(f"{name}: {p}: {exc}") from None
 
@@ -316,7 +317,7 @@ def _moment_extremes(D: MomentCurve, fn, sense: float) -> tuple[float, list[floa
 def _auto_period(M_d, M_r) -> float:
     """The common period (degrees) of the formulas (360° for constants only); a points file needs
     its period said."""
-    fns, spans = [], []
+    fns = []
     for text, name in ((M_d, "--M-d"), (M_r, "--M-r")):
         if text is None:
             continue
@@ -348,6 +349,7 @@ def _exact_table(table: ew.ExcessWork, f_d, f_r, P: float) -> ew.ExcessWork:
     def D(p):
         return f_d(p) - f_r(p)
 
+    assert table.phi is not None and table.M_d is not None and table.M_r is not None
     phi = np.array(table.phi, dtype=float)
     knots = (table.M_d - table.M_r).phi
 
@@ -439,11 +441,11 @@ def moment_cycle(M_d=None, M_r=None, *, period_deg: float | str = 360.0) -> Mome
     exact = ((d is None or d.function is not None) and (r is None or r.function is not None)
              and any(m is not None and m.kind == "formula" for m in (d, r)))
     if exact:      # balance against the exact work of a formula, not that of its chords
-        if d is None:
+        if d is None and r is not None:
             c = _exact_work(r.function, P) / P
             d = MomentInput("constant", f"{c!r} (balances M_r)", MomentCurve.constant(c, period=P),
                             lambda phi: np.full(np.shape(phi), c))
-        elif r is None:
+        elif r is None and d is not None:
             c = _exact_work(d.function, P) / P
             r = MomentInput("constant", f"{c!r} (balances M_d)", MomentCurve.constant(c, period=P),
                             lambda phi: np.full(np.shape(phi), c))
@@ -462,8 +464,9 @@ def moment_cycle(M_d=None, M_r=None, *, period_deg: float | str = 360.0) -> Mome
         r = MomentInput("constant", f"{c!r} (balances M_d)", cr, lambda phi: np.full(np.shape(phi), c))
     table = ew.from_moments(cd, cr)
     if exact:
+        assert d is not None and r is not None
         table = _exact_table(table, d.function, r.function, P)
-    E, phi = table.E, table.phi
+    E, phi = table.E, np.asarray(table.phi, dtype=float)
     tie = TIE_RTOL * max(table.delta_W_max, 1e-300)
     phi_E_max = _distinct_angles(phi[E >= table.E_max - tie], P)
     phi_E_min = _distinct_angles(phi[E <= table.E_min + tie], P)

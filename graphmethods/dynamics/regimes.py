@@ -587,7 +587,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
     res = Run(t=_frozen(t_arr), phi=_frozen(phi), omega=_frozen(omega), epsilon=_frozen(np.array(eps_list)),
               work=_frozen(W), T=_frozen(T), J=_frozen(J), energy_residual=residual, error_estimate=float(err_sum), rtol=rtol,
               ended_by=ended_by, steady=None, phi_T=L, _K=Kall, _Y=Y, _rhs=rhs)
-    if ended_by == "steady":
+    if ended_by == "steady" and steady_k is not None:
         st = _steady_state(res, boundary, steady_k, tol, remaining)
         object.__setattr__(res, "steady", replace(st, phi_0=model.phi_0))
     return res

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -43,7 +44,7 @@ class CycleMotion:
         The mean speed and δ of the motion (textbook mean), when the problem is a flywheel problem.
     """
 
-    problem: object
+    problem: Any
     J: float
     T0: float
     omega_m: float | None

@@ -102,7 +102,8 @@ def _linkage_machine(case, name: str) -> Machine:
     keep = np.ones(phi.size, dtype=bool)
     for s in switches:
         keep &= np.abs(phi - s) > 1e-9
-    knots = list(zip(phi[keep], study._M_r_exact(phi[keep]), np.zeros(int(keep.sum()))))
+    knots: list[tuple[float, float, float]] = [(float(a), float(b), 0.0) for a, b in
+                                               zip(phi[keep], study._M_r_exact(phi[keep]))]
     for s in switches:
         left, right = study._M_r_exact(np.array([s - 1e-11, s + 1e-11]))
         knots += [(s, float(left), 0.0), (s, float(right), 1.0)]
