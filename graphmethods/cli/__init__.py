@@ -26,6 +26,7 @@ COMMANDS = {
     "check": ("check", "check a student's hand drawing (answers file) and diagnose usual mistakes"),
     "check-class": ("check_class", "check a folder of students' answers files and drawings: one class table"),
     "bench": ("bench", "measure speed against error (Markdown table and JSON)"),
+    "motion": ("motion", "motion from given initial conditions: start-up, steady running, run-down"),
     "steps": ("steps", "a construction step by step for a lecture: PDF slides, SVG frames, animation, HTML page"),
 }
 

@@ -14,6 +14,7 @@ import json
 import math
 import re
 
+from graphmethods.cli import flywheel_moments
 from graphmethods.errors import InputError
 from graphmethods.units import parse_number
 
@@ -23,6 +24,7 @@ LIST_OPTIONS = ("--areas", "--levels")
 def preprocess_argv(argv: list[str]) -> list[str]:
     """Join the values after --areas/--levels (up to the next --option) into one token, so that
     ``--areas -50 550`` and ``--areas -50,550`` both work (argparse would take ``-50`` for an option)."""
+    argv = flywheel_moments.join_values(argv)
     out, i = [], 0
     while i < len(argv):
         tok = argv[i]
@@ -54,10 +56,11 @@ def add_parser(sub) -> None:
         "or work in J without scales) or as running energy levels.",
         epilog="Example: graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --delta 1/300",
     )
-    cyc = p.add_mutually_exclusive_group(required=True)
+    cyc = p.add_mutually_exclusive_group(required=False)      # or --M-d/--M-r (flywheel_moments)
     cyc.add_argument("--areas", metavar="A1,A2,...", help="signed areas between M_d and M_r in order: mm² with --mu-M and "
                      "--mu-phi/--mu-phi-deg, otherwise work in J")
     cyc.add_argument("--levels", metavar="E0,E1,...", help="running energy levels in J, the last returning to the first")
+    flywheel_moments.add_arguments(p)
     p.add_argument("--mu-M", help="moment scale of the drawing, N·m per mm")
     p.add_argument("--mu-phi", help="angle scale of the drawing, rad per mm")
     p.add_argument("--mu-phi-deg", help="angle scale of the drawing, degrees per mm")
@@ -78,7 +81,15 @@ def run(args: argparse.Namespace) -> int:
     from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, mean_speed
 
     tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
-    if args.areas is not None:
+    mc = None
+    if flywheel_moments.given(args) == (args.areas is not None or args.levels is not None):
+        raise InputError("give the cycle once: --areas, --levels, or the moments --M-d/--M-r")
+    if flywheel_moments.given(args):
+        mc = flywheel_moments.cycle(args)
+        cycle = mc.excess_work
+    elif args.period_deg is not None:
+        raise InputError("--period-deg applies to the moments --M-d/--M-r only")
+    elif args.areas is not None:
         values = parse_list(args.areas, "--areas")
         scaled = args.mu_M is not None or args.mu_phi is not None or args.mu_phi_deg is not None
         if scaled:
@@ -112,11 +123,16 @@ def run(args: argparse.Namespace) -> int:
         J = parse_number(args.J, name="--J")
         delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
         out.update(J=J, delta=delta, J_F=J - J_e)
+    if mc is not None:
+        J_machine = J if args.delta is None else (fw.J_total if fw.needed else J_e)
+        out.update(flywheel_moments.extras(mc, J_machine))
     if args.json:
         print(json.dumps(out, indent=1))
         return 0
     print("Excess-work table")
     print(cycle.to_text())
+    if mc is not None:
+        print("\n".join(flywheel_moments.text_lines(out)))
     print(f"ω_m = {omega_m:.6g} rad/s (n = {out['n_rpm']:.6g} rev/min)")
     if args.delta is not None:
         print(f"[δ] = {out['delta']:.6g}; ω_max = {out['omega_max']:.6g}, ω_min = {out['omega_min']:.6g} rad/s")

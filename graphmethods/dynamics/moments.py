@@ -166,7 +166,8 @@ class MomentCurve:
             M_mid = cls._call(f, mid)
             dev = np.abs(M_mid - 0.5 * (M[:-1] + M[1:]))
             scale = max(scale, float(np.abs(M_mid).max()))
-            split = dev > tol * scale
+            # an interval already too narrow to halve (a jump of f) is left as it is
+            split = (dev > tol * scale) & (np.diff(phi) > 1e-13 * period)
             err = float(dev[~split].max()) if (~split).any() else err
             if not split.any():
                 break

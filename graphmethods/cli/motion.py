@@ -1,0 +1,243 @@
+"""``graphmethods motion CASE``: the machine's motion from given initial conditions.
+
+Start-up from rest, steady running, run-down after the drive is switched off or a brake applied:
+φ(t), ω(t), ε(t) by :func:`graphmethods.dynamics.regimes.run`, with a summary (the time to reach the
+steady state, ω_m, δ and the three mean speeds) once steady.
+
+    graphmethods motion press --motor induction:P=5500,n=1440,n_sync=1500,lam=2.2 --until-steady --json
+    graphmethods motion W4 --turns 1 --json
+    graphmethods motion W3 --omega0 10.47 --drive-off-at 0 --brake 20 --t-end 60
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+
+from graphmethods.errors import InputError
+from graphmethods.units import parse_number
+
+
+def preprocess_argv(argv: list[str]) -> list[str]:
+    """``--moment -0.02*omega**2`` -> ``--moment=-0.02*omega**2`` (argparse would take the value for an option)."""
+    out, i = [], 0
+    while i < len(argv):
+        if argv[i] in ("--moment", "--omega0", "--phi0", "--t0") and i + 1 < len(argv):
+            out.append(f"{argv[i]}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(argv[i])
+        i += 1
+    return out
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser(
+        "motion", help="motion from given initial conditions: start-up, steady running, run-down",
+        description="Integrate J_e(φ)dω/dt + ½ω²dJ_e/dφ = M(φ, ω, t) from φ0, ω0, t0 for a built-in problem "
+                    "(W3, W4, press, four-bar, slotted-lever, shaper) or a linkage problem file, and print "
+                    "t, φ, ω, ε (SI) and a summary.",
+        epilog="Example: graphmethods motion press --motor induction:P=5500,n=1440,n_sync=1500,lam=2.2 --until-steady")
+    p.add_argument("case", metavar="CASE", help="a built-in problem name or a linkage problem file (JSON)")
+    p.add_argument("--phi0", default=None, metavar="DEG", help="initial crank angle, degrees (default: position 0)")
+    p.add_argument("--omega0", default=None, metavar="RAD_S",
+                   help="initial speed, rad/s (default: the problem's own ω0, else 0: start from rest)")
+    p.add_argument("--t0", default="0", metavar="S", help="initial time, s (default 0)")
+    end = p.add_mutually_exclusive_group(required=True)
+    end.add_argument("--turns", default=None, metavar="N", help="run N crank turns")
+    end.add_argument("--t-end", default=None, metavar="S", help="run until this time, s")
+    end.add_argument("--until-steady", action="store_true", help="run until the motion is steady (periodic)")
+    p.add_argument("--tol", default="1e-3", help="with --until-steady: the band around the steady ω, relative "
+                                                 "to ω_m, that counts as steady (default 1e-3)")
+    p.add_argument("--motor", default=None, metavar="SPEC",
+                   help="drive by a motor instead of the problem's constant M_d: "
+                        "induction:P=W,n=RPM,lam=L,n_sync=RPM|s_nom=S[,ratio=U][,J_rotor=KG_M2] (Kloss) or "
+                        "dc:M0=N_M,omega0=RAD_S[,ratio=U][,J_rotor=KG_M2]; the ratio u = ω_motor/ω defaults to "
+                        "the motor's rated speed over the problem's mean speed")
+    p.add_argument("--drive-off-at", default=None, metavar="S", help="switch the drive off at this time, s")
+    p.add_argument("--brake", default=None, metavar="M_B[,C]",
+                   help="a brake moment M_B + C·ω (N·m) against the motion")
+    p.add_argument("--brake-at", default=None, metavar="S", help="apply the brake at this time, s (default t0)")
+    p.add_argument("--moment", default=None, metavar="FORMULA",
+                   help="a further moment in phi (rad), omega (rad/s) and t (s), N·m, e.g. \"-0.5*omega\"")
+    p.add_argument("--J-F", default=None, metavar="KG_M2",
+                   help="flywheel inertia on the crank, kg·m² (default: the problem's J_F for its [δ], else 0)")
+    p.add_argument("--rtol", default="1e-10", help="relative tolerance of the integrator (default 1e-10)")
+    p.add_argument("--json", action="store_true", help="print one JSON object: arrays t, phi, omega, epsilon "
+                                                       "and the summary")
+    p.add_argument("--figures", default=None, metavar="DIR",
+                   help="also draw ω(t), ω(φ) and ε(φ) into DIR (created if missing), scale-true")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
+    p.add_argument("--format", choices=("svg", "pdf", "png"), default="svg", dest="fig_format",
+                   help="file format of the figures (default svg)")
+    p.add_argument("--force", action="store_true", help="overwrite existing figure files")
+    p.set_defaults(func=run)
+
+
+def parse_motor(spec: str, *, omega_m: float | None):
+    """(motor, J_rotor·u²) from ``induction:...`` or ``dc:...``."""
+    from graphmethods.dynamics.motor import DCMotor, InductionMotor
+
+    motor: InductionMotor | DCMotor
+    kind, _, rest = spec.partition(":")
+    kind = kind.strip().lower()
+    fields = {}
+    for part in [x for x in re.split(r"[,;]", rest) if x.strip()]:
+        key, eq, value = part.partition("=")
+        if not eq:
+            raise InputError(f"--motor {spec!r}: {part!r} is not KEY=VALUE")
+        fields[key.strip()] = parse_number(value, name=f"--motor {key.strip()}")
+    J_rotor = fields.pop("J_rotor", 0.0)
+    try:
+        if kind == "induction":
+            need = {"P", "n", "lam"}
+            if not need <= set(fields):
+                raise InputError(f"--motor induction: give P (W), n (rev/min), lam and n_sync or s_nom; "
+                                 f"missing {', '.join(sorted(need - set(fields)))}")
+            unknown = set(fields) - {"P", "n", "lam", "n_sync", "s_nom", "ratio"}
+            if unknown:
+                raise InputError(f"--motor induction: unknown key(s) {', '.join(sorted(unknown))}")
+            ratio = fields.get("ratio") or (math.pi * fields["n"] / 30.0 / omega_m if omega_m else 1.0)
+            motor = InductionMotor(P_nom=fields["P"], n_nom=fields["n"], lam=fields["lam"], n_sync=fields.get("n_sync"),
+                                   s_nom=fields.get("s_nom"), ratio=ratio)
+        elif kind == "dc":
+            if not {"M0", "omega0"} <= set(fields):
+                raise InputError("--motor dc: give M0 (stall torque, N·m) and omega0 (no-load speed, rad/s)")
+            unknown = set(fields) - {"M0", "omega0", "ratio"}
+            if unknown:
+                raise InputError(f"--motor dc: unknown key(s) {', '.join(sorted(unknown))}")
+            motor = DCMotor(M_0=fields["M0"], omega_0=fields["omega0"], ratio=fields.get("ratio", 1.0))
+        else:
+            raise InputError(f"--motor {spec!r}: the kind is induction:... or dc:...")
+    except InputError as exc:
+        msg = str(exc)
+        raise InputError(msg if msg.startswith("--motor") else f"--motor: {msg}") from None
+    return motor, J_rotor * motor.ratio**2
+
+
+def _opt(value, name):
+    return None if value is None else parse_number(value, name=name)
+
+
+def run(args: argparse.Namespace) -> int:
+    from graphmethods.dynamics.formula import Formula
+    from graphmethods.dynamics.regimes import Brake, ConstantDrive
+    from graphmethods.dynamics.regimes import run as integrate
+    from graphmethods.problems.machine import machine
+
+    t0 = parse_number(args.t0, name="--t0")
+    turns, t_end = _opt(args.turns, "--turns"), _opt(args.t_end, "--t-end")
+    tol, rtol = parse_number(args.tol, name="--tol"), parse_number(args.rtol, name="--rtol")
+    if not 0 < tol < 1:
+        raise InputError(f"--tol {args.tol}: give a fraction between 0 and 1, e.g. 1e-3")
+    if not 1e-14 <= rtol <= 1e-3:
+        raise InputError(f"--rtol {args.rtol}: give a value between 1e-14 and 1e-3")
+    if turns is not None and not turns > 0:
+        raise InputError(f"--turns {args.turns}: give a positive number of turns")
+    if t_end is not None and not t_end > t0:
+        raise InputError(f"--t-end {args.t_end}: it must come after --t0 {t0:g} s")
+    extra = None
+    if args.moment is not None:
+        f = Formula(args.moment, variables=("phi", "omega", "t"))
+
+        def extra(phi, omega, t):
+            return f(phi=phi, omega=omega, t=t)
+    brake = None
+    if args.brake is not None:
+        parts = [x for x in re.split(r"[,;\s]+", args.brake.strip()) if x]
+        if not 1 <= len(parts) <= 2:
+            raise InputError(f"--brake {args.brake!r}: give M_B or M_B,C (N·m and N·m·s)")
+        vals = [parse_number(x, name="--brake") for x in parts]
+        brake = Brake(M_b=vals[0], c=vals[1] if len(vals) > 1 else 0.0,
+                      t_on=_opt(args.brake_at, "--brake-at") if args.brake_at is not None else -math.inf)
+    elif args.brake_at is not None:
+        raise InputError("--brake-at needs --brake M_B")
+
+    m = machine(args.case)
+    J_F = m.J_F if args.J_F is None else parse_number(args.J_F, name="--J-F")
+    extra_J = 0.0
+    if args.motor is not None:
+        drive, extra_J = parse_motor(args.motor, omega_m=m.omega_m)
+        model = m.model
+    elif m.M_d is not None:
+        drive = ConstantDrive(m.M_d)
+        model = m.model
+    else:
+        drive, model = None, m.model
+        if args.drive_off_at is not None:
+            raise InputError(f"{m.name}: its driving moment is a curve of φ, part of the model; give --motor "
+                             f"to have a drive to switch off")
+    omega_0 = _opt(args.omega0, "--omega0")
+    if omega_0 is None:
+        omega_0 = m.omega_0 if m.omega_0 is not None else 0.0
+    phi_0 = None if args.phi0 is None else math.radians(parse_number(args.phi0, name="--phi0"))
+    res = integrate(model, J_F=J_F + extra_J, drive=drive, drive_off_at=_opt(args.drive_off_at, "--drive-off-at"),
+                    brake=brake, extra=extra, phi_0=phi_0, omega_0=omega_0, t_0=t0, t_end=t_end, turns=turns,
+                    until_steady=args.until_steady, tol=tol, rtol=rtol, omega_ref=m.omega_m)
+    summary = {"case": m.name, "J_F": J_F, "J_rotor_reduced": extra_J,
+               "drive": ("motor " + args.motor) if args.motor else
+                        (f"constant M_d = {m.M_d!r} N·m" if m.M_d is not None else "M_d(φ) of the problem"),
+               "phi0_deg": math.degrees(res.phi[0]), "omega0": float(res.omega[0]), "t0": t0}
+    if args.motor is not None:
+        summary["motor_ratio"] = drive.ratio
+    summary.update(res.summary())
+    if args.figures is not None:
+        summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name, cycle=m.problem)]
+    if args.json:
+        out = {"t": res.t.tolist(), "phi": res.phi.tolist(), "omega": res.omega.tolist(),
+               "epsilon": res.epsilon.tolist(), "summary": summary}
+        print(json.dumps(out))
+        return 0
+    steady: dict | None = summary.pop("steady", None)  # type: ignore[assignment]
+    width = max(map(len, summary))
+    for key, value in summary.items():
+        print(f"{key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"{key.ljust(width)}  {value}")
+    if steady is not None:
+        print("steady state:")
+        for key, value in steady.items():
+            print(f"  {key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"  {key.ljust(width)}  {value}")
+    return 0
+
+
+def _write_figures(res, args, *, problem: str, cycle=None) -> list:
+    """Build the figures (ω(t), ω(φ), ε(φ); and for a cycle problem the three-panel figure of its steady
+    cycle), then write them (an existing file is kept unless --force)."""
+    import pathlib
+
+    from graphmethods.errors import OutputExistsError
+    from graphmethods.render.files import write_atomic
+    from graphmethods.sheets.motion import motion_figures
+
+    out = pathlib.Path(args.figures)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--figures {out}: it is a file; give a directory")
+    scenes = motion_figures(res, notation=args.lang, problem=problem)
+    if cycle is not None:                 # a cycle problem: also M_d/M_r, ΔE and ω on one φ axis
+        from graphmethods.sheets.cycle_panels import cycle_panels
+
+        scenes["panels"] = cycle_panels(cycle, notation=args.lang)
+    paths = {out / f"{problem}_{key}.{args.fig_format}": scene for key, scene in scenes.items()}
+    if not args.force:
+        for path in paths:
+            if path.exists():
+                raise OutputExistsError(f"{path} exists; use --force to overwrite it")
+    blobs = {}
+    for path, scene in paths.items():
+        if args.fig_format == "svg":
+            from graphmethods.render import svg
+
+            blobs[path] = svg.to_bytes(scene)
+        elif args.fig_format == "pdf":
+            from graphmethods.render import pdf
+
+            blobs[path] = pdf.to_bytes([scene])
+        else:
+            from graphmethods.render import mpl
+
+            blobs[path] = mpl.to_png_bytes(scene)
+    out.mkdir(parents=True, exist_ok=True)
+    for path, data in blobs.items():
+        write_atomic(path, data, overwrite=args.force)
+    return list(blobs)

@@ -1,0 +1,131 @@
+"""The three-panel figure of a cycle: M_d and M_r, ΔE and ω one above the other on one φ axis.
+
+The Chinese chapter's figure (机械的运转及其速度波动的调节): the moments, the energy they store and
+release, and the speed it gives, each to its own value scale but all to one φ scale, so a vertical
+through any angle reads the three together; the energy is highest and lowest where M_d and M_r cross,
+and ω with it. Drawn for a cycle problem given by moment curves (W3, W4), from
+:func:`graphmethods.problems.cycle_motion.cycle_motion`, on A4 portrait, scale-true.
+
+>>> from graphmethods.problems import w3
+>>> s = cycle_panels(w3())
+>>> [c.caption("en") for c in s.scales()]
+['μ_φ = 0.05236 rad/mm (3°/mm)', 'μ_M = 2 N·m/mm', 'μ_E = 1 J/mm', 'μ_ω = 0.02 (rad/s)/mm']
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, nice_ticks
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import pi_ticks
+from graphmethods.scene.primitives import MAIN, Style
+from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, quantity, suppressed_base, sym, unit
+from graphmethods.sheets.layout import TEXT_MM, given_angle_scale, given_scale
+
+DASHED = Style(width_mm=0.25, dash=(3.0, 1.2))
+GUIDE = Style(width_mm=0.13, dash=(1.2, 0.8))
+_TITLE = ("Moments, energy and speed over the cycle", "Моменты, энергия и скорость за цикл",
+          "等效力矩、能量与角速度在一个周期内的变化")
+_LANG = {"en": 0, "ru": 1, "zh": 2}
+
+
+def cycle_panels(problem, *, notation="en", title: str | None = None, samples: int = 1441) -> Scene:
+    """M_d and M_r (top), ΔE (middle) and ω (bottom) against φ on one angle scale (A4 portrait).
+
+    Parameters
+    ----------
+    problem : CycleProblem
+        A cycle problem given by moment curves, with ω0 or n and [δ].
+    notation : {"en", "ru", "zh"}
+    samples : int
+        Angles drawn over the period (the curves' knots and crossings are added).
+    """
+    from graphmethods.problems.cycle_motion import cycle_motion
+
+    nt = get_notation(notation)
+    cm = cycle_motion(problem)
+    ew = problem.excess_work
+    P = cm.period
+    D = ew.M_d - ew.M_r
+    phi = np.unique(np.concatenate([np.linspace(0.0, P, samples), D.phi - D.start, ew.phi - D.start]))
+    phi = phi[(phi >= 0) & (phi <= P)]
+    # jumps: draw both sides (left limit just before the knot)
+    left_d, Md = ew.M_d.limits(phi + D.start)
+    left_r, Mr = ew.M_r.limits(phi + D.start)
+    Md[-1], Mr[-1] = left_d[-1], left_r[-1]          # the period ends on its left limit (no wrap)
+    ph2 = np.repeat(phi, 2)
+    Md2 = np.column_stack([left_d, Md]).ravel()
+    Mr2 = np.column_stack([left_r, Mr]).ravel()
+    E = cm.delta_E(phi)
+    w = cm.omega_at(phi)
+    title = title or _TITLE[_LANG.get(nt.code, 0)]
+    wu = problem.work_unit
+    sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem.title, title_block=True,
+                       default_page=Page("A4", "portrait", frame=True))
+    x0, _, x1, _ = sheet.box
+    px0, px1 = x0 + 24.0, x1 - 22.0
+    top, bottom = sheet.top + 8.0, sheet.caption_y - 40.0
+    gap = 14.0
+    h = (bottom - top - 2 * gap) / 3.0
+    s_phi = given_angle_scale(None, sym(nt, "mu_phi"), P, px1 - px0)
+    M_hi = float(max(Md2.max(), Mr2.max(), 0.0))
+    M_lo = float(min(Md2.min(), Mr2.min(), 0.0))
+    s_M = given_scale(None, sym(nt, "mu_M"), unit(nt, wu if wu != "J" else "N·m"), M_hi - M_lo, h, what="the moments")
+    E_lo, E_hi = float(min(E.min(), 0.0)), float(max(E.max(), 0.0))
+    s_E = given_scale(None, "μ_E", unit(nt, wu), max(E_hi - E_lo, 1e-12), h, what="the energy")
+    w_lo, w_hi = float(w.min()), float(w.max())
+    uw = f"({unit(nt, 'rad/s')})"
+    w_base = suppressed_base(w_lo, w_hi, given_scale(None, sym(nt, "mu_omega"), uw,
+                                                     max(w_hi - w_lo, 1e-12) * 1.4, h, what="ω"), zero=None)
+    s_w = given_scale(None, sym(nt, "mu_omega"), uw, max(w_hi - w_base, 1e-12), h, what="ω")
+    ticks, labels = pi_ticks(P, s_phi, min_gap_mm=14.0)
+    els = [sheet.header()]
+    panels = [("M", s_M, M_lo, M_hi, quantity(nt, sym(nt, "M"), wu if wu != "J" else "N·m")),
+              ("E", s_E, E_lo, E_hi, quantity(nt, "ΔE", wu)),
+              ("omega", s_w, w_base, w_hi, quantity(nt, sym(nt, "omega"), "rad/s"))]
+    frames = {}
+    y_top = top
+    for key, s_y, lo, hi, label in panels:
+        origin = (px0, y_top + s_y.to_mm(hi))          # the page point of φ = 0 and the value 0
+        f = Frame(origin, s_phi, s_y)
+        level = lo if lo > 0 else 0.0                  # the φ axis at 0, or at the suppressed base
+        ax_phi = Axis((px0, f.pt(0.0, level)[1]), s_phi, "x", min_value=0.0, max_value=P, ticks=ticks,
+                      tick_labels=labels, label=sym(nt, "phi"), size_mm=SMALL_MM, name=f"{key}-axis-phi",
+                      labels_side="above" if hi <= 0 else "")
+        yt = tuple(v for v in nice_ticks(lo, hi, s_y, min_gap_mm=7.0) if lo <= v <= hi)
+        ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yt, label=label, size_mm=SMALL_MM,
+                    decimal=nt.decimal, name=f"{key}-axis-y", skip_zero_label=lo < 0)
+        els += [ax_phi, ax_y]
+        frames[key] = f
+        y_top += h + gap
+    fM, fE, fw = frames["M"], frames["E"], frames["omega"]
+    els.append(Polyline(fM.pts(ph2, Mr2), style=MAIN, name="curve-M_r"))
+    els.append(Polyline(fM.pts(ph2, Md2), style=DASHED, name="curve-M_d"))
+    k_top = int(np.argmax(Mr2))                       # M_r named at its peak
+    at = fM.pt(float(ph2[k_top]), float(Mr2[k_top]))
+    els.append(Text((at[0] + 2.0, at[1] - 1.5), sym(nt, "M_r"), size_mm=TEXT_MM, name="name-M_r"))
+    end = fM.pt(P, float(Md2[-1]))
+    els.append(Text((end[0] + 2.0, end[1] - 2.5), sym(nt, "M_d"), size_mm=TEXT_MM, name="name-M_d"))
+    els.append(Polyline(fE.pts(phi, E), style=MAIN, name="curve-delta_E"))
+    els.append(Polyline(fw.pts(phi, w), style=MAIN, name="curve-omega"))
+    # verticals through the boundaries of the excess-work table (the crossings), through all panels
+    for k, b in enumerate(np.asarray(ew.phi, dtype=float) - D.start):
+        if 1e-9 < b < P - 1e-9:
+            xa = fM.pt(b, 0.0)[0]
+            ya, yb = fM.pt(b, M_hi)[1], fw.pt(b, w_base)[1]
+            els.append(Polyline(((xa, ya), (xa, yb)), style=GUIDE, name=f"guide-{k}"))
+    n = nt.number
+    legend = (f"J = {n(cm.J, sig=4)} {unit(nt, problem.inertia_unit)}; ω_{{max}} = {n(w_hi, sig=4)}, "
+              f"ω_{{min}} = {n(w_lo, sig=4)} {unit(nt, 'rad/s')}")
+    if cm.delta is not None:
+        legend += f"; δ = {n(cm.delta, sig=3)}"
+    scales = (s_phi, s_M, s_E, s_w)
+    els += sheet.captions(scales[:2], legend="")
+    els.append(Text((x0, sheet.caption_y - 6.0), "   ".join(s.caption(nt) for s in scales[2:]), size_mm=TEXT_MM,
+                    name="scale-captions-2"))
+    els.append(Text((x0, sheet.caption_y - 12.0), legend, size_mm=TEXT_MM, name="legend"))
+    # the title block's line holds the three value scales (all four are captioned under the figure)
+    short = scales[1:]
+    return Scene(sheet.page(short), tuple(els), title=sheet.title, notation=nt.code, name="cycle-panels",
+                 notes=tuple(s.note for s in scales))
