@@ -10,12 +10,11 @@ Examples::
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import re
 
 from graphmethods.errors import InputError
-from graphmethods.units import parse_number
+from graphmethods.units import json_text, parse_number
 
 LIST_OPTIONS = ("--areas", "--levels")
 
@@ -102,6 +101,8 @@ def run(args: argparse.Namespace) -> int:
         omega_m=None if args.omega is None else parse_number(args.omega, name="--omega"),
     )
     J_e = parse_number(args.J_e, name="--J-e")
+    if J_e < 0:      # the same rule with --delta and with --J
+        raise InputError(f"--J-e = {args.J_e}: the mechanism's own inertia must not be negative (kg·m²)")
     out = cycle.to_dict()
     out.update(omega_m=omega_m, n_rpm=30.0 * omega_m / math.pi, J_e=J_e)
     if args.delta is not None:
@@ -110,10 +111,14 @@ def run(args: argparse.Namespace) -> int:
                    flywheel_needed=fw.needed)
     else:
         J = parse_number(args.J, name="--J")
+        if J < J_e:
+            raise InputError(f"--J {args.J} kg·m² is the total inertia on the shaft and cannot be less than the "
+                             f"mechanism's own --J-e {args.J_e} kg·m²")
         delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
         out.update(J=J, delta=delta, J_F=J - J_e)
+    text = json_text(out, indent=1)          # also refuses a result that is not finite, naming it
     if args.json:
-        print(json.dumps(out, indent=1))
+        print(text)
         return 0
     print("Excess-work table")
     print(cycle.to_text())

@@ -168,13 +168,17 @@ class ExcessWork:
     def rows(self) -> list[dict]:
         """The excess-work table, one row per interval: points, area, work, energy at its end."""
         rows = []
-        for i, A in enumerate(self.work):
-            row = {"interval": f"{self.labels[i]}–{self.labels[i + 1]}", "A_J": float(A), "E_J": float(self.E[i + 1])}
-            if self.areas_mm2 is not None:
-                row["f_mm2"] = float(self.areas_mm2[i])
-            if self.phi is not None:
-                row["phi_from_deg"] = math.degrees(self.phi[i])
-                row["phi_to_deg"] = math.degrees(self.phi[i + 1])
+        labels = self.labels                       # once: the table is linear in the number of intervals
+        work, E = self.work.tolist(), self.E.tolist()
+        areas = None if self.areas_mm2 is None else self.areas_mm2.tolist()
+        phi_deg = None if self.phi is None else np.degrees(self.phi).tolist()
+        for i, A in enumerate(work):
+            row = {"interval": f"{labels[i]}–{labels[i + 1]}", "A_J": A, "E_J": E[i + 1]}
+            if areas is not None:
+                row["f_mm2"] = areas[i]
+            if phi_deg is not None:
+                row["phi_from_deg"] = phi_deg[i]
+                row["phi_to_deg"] = phi_deg[i + 1]
             rows.append(row)
         return rows
 
@@ -258,6 +262,10 @@ def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
         raise InputError(f"closure_tol = {closure_tol!r} must be a non-negative number")
     total = float(np.abs(work).sum())
     residual = float(work.sum())
+    running = np.cumsum(work)
+    if not (math.isfinite(total) and np.isfinite(running).all()):
+        raise InputError(f"the {what} overflow when summed (their total or a running energy is beyond the float "
+                         f"range); give them in a unit that keeps the sums finite, e.g. kJ instead of J")
     if total == 0.0:
         return
     if abs(residual) > closure_tol * total:
