@@ -50,6 +50,9 @@ MAGNITUDE_MIN = 1e-100
 MAGNITUDE_MAX = 1e100
 #: Most crank positions per turn a construction is computed for (textbooks use 8 to 48).
 MAX_POSITIONS = 100_000
+#: Most positions the kinematics core computes at once (the error estimate of the Wittenbauer diagram at
+#: MAX_POSITIONS positions refines to 16 times as many).
+MAX_POSITIONS_COMPUTED = 2**21
 #: Most worksheet variants in one set (and the largest variant number of an id KIND:SEED:N).
 MAX_VARIANTS = 1000
 #: The coefficient of fluctuation δ lies in 0 < δ < DELTA_MAX everywhere (files, command line, API):

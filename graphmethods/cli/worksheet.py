@@ -51,9 +51,15 @@ def run(args) -> int:
     from graphmethods.errors import OutputExistsError
     from graphmethods.sheets import worksheets as ws
 
+    from graphmethods.errors import InputError
+    from graphmethods.units import MAX_VARIANTS, count
+
     t0 = time.perf_counter()
+    count(args.variants, "--variants", low=1, high=MAX_VARIANTS, why="checked before any variant is built")
+    if args.out.strip() == "":
+        raise InputError("--out is empty; give a folder (it is created if missing)")
     if not args.force:                    # refuse before building anything
-        existing = ws.existing_outputs(args.out, args.kind, args.lang, max(int(args.variants), 1))
+        existing = ws.existing_outputs(args.out, args.kind, args.lang, args.variants)
         if existing:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(map(str, existing[:3]))}{more} exist; use --force to replace them, "

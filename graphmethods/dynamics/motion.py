@@ -45,7 +45,7 @@ from typing import Callable
 
 import numpy as np
 
-from graphmethods.errors import InputError, MotionError
+from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded
 
 __all__ = [
     "ReducedModel",
@@ -600,7 +600,7 @@ class _Cycle:
             # The identity always gives J_F + min J_e ≥ 0 (take φ at min J_e in both brackets);
             # equality means the machine alone already runs within [δ] at some speed profile.
             if J_F + J_min <= 1e-9 * (abs(J_F) + float(self.Jx.max())):
-                raise MotionError(f"no flywheel is needed: the machine's own inertia keeps δ below "
+                raise NoFlywheelNeeded(f"no flywheel is needed: the machine's own inertia keeps δ below "
                                   f"[δ] = {delta:g} (the support-line identity gives J_F = {J_F:.6g} "
                                   f"kg·m² = −min J_e: zero total inertia where J_e is least)")
             return

@@ -51,7 +51,7 @@ from graphmethods.dynamics.motion import (
     _check_positive,
     _frozen,
 )
-from graphmethods.errors import InputError, MotionError, UnbalancedCycleError
+from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded, UnbalancedCycleError
 
 __all__ = ["Tangency", "WittenbauerResult", "wittenbauer", "wittenbauer_from_model"]
 
@@ -262,7 +262,7 @@ def _construct(J, dT, phi, *, omega_m, delta, mu_J, mu_T, tangents, rtol):
     # D ≥ 0 always (take the vertex of least J_e in both extremes); D = 0 means the rays meet
     # on the curve itself, at its vertex of least J_e: zero total inertia there, no origin O1
     if s["D"] <= 1e-9 * max(float(np.max(np.abs(dT))), s["a_max"] * float(J.max()), 1e-300):
-        raise MotionError(
+        raise NoFlywheelNeeded(
             f"no flywheel is needed: the rays meet on the curve (J_F + min J_e = "
             f"{s['D'] / (omega_m**2 * delta):.3g} kg·m²), so there is no origin O1; the machine's "
             f"own inertia keeps the fluctuation below δ = {delta:g}")

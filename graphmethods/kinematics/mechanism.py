@@ -29,6 +29,7 @@ from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics import vectors as V
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, Strokes, build_positions
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count
 
 
 @dataclass(frozen=True)
@@ -241,9 +242,8 @@ class Mechanism:
         start = strokes.phi_start if strokes is not None else self._default_start()
         if phi is None and phi_from_start is None:
             m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
+            m = count(m, "the number of positions m", low=3, high=MAX_POSITIONS_COMPUTED,
+                      why="checked before any work; textbooks use 8 to 48")
             self._check_full_turn()
             k = np.arange(m + 1)
             tr = (2.0 * math.pi / m) * k
