@@ -42,7 +42,20 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _tolerant_streams() -> None:
+    """On a terminal that cannot show every character (PYTHONIOENCODING=cp1252), print what it can and
+    write the rest as \\u escapes instead of failing with UnicodeEncodeError."""
+    for stream in (sys.stdout, sys.stderr):
+        enc = (getattr(stream, "encoding", None) or "").lower().replace("-", "").replace("_", "")
+        if enc not in ("utf8", "utf8sig") and hasattr(stream, "reconfigure"):
+            try:
+                stream.reconfigure(errors="backslashreplace")
+            except (ValueError, OSError):   # a stream that cannot be reconfigured keeps its rules
+                pass
+
+
 def main(argv: list[str] | None = None) -> int:
+    _tolerant_streams()
     argv = list(sys.argv[1:] if argv is None else argv)
     if argv and argv[0] in COMMANDS:
         mod = importlib.import_module(f"graphmethods.cli.{COMMANDS[argv[0]]}")
@@ -55,6 +68,11 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     except BrokenPipeError:
         return 1
+    except OSError as exc:          # reading or writing refused by the system: one line, what, where, why
+        where = f" {exc.filename}" if getattr(exc, "filename", None) else ""
+        why = (exc.strerror or str(exc) or type(exc).__name__).lower()
+        print(f"graphmethods {args.command}: error: cannot use{where}: {why}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:
         print("graphmethods: interrupted", file=sys.stderr)
         return 130

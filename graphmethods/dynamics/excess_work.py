@@ -35,7 +35,7 @@ import numpy as np
 
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError, UnbalancedCycleError
-from graphmethods.units import finite_array
+from graphmethods.units import finite_array, real
 
 #: Default closure tolerance for measured data (areas, works, levels): |Σ A_i| / Σ|A_i|.
 CLOSURE_TOL_MEASURED = 0.05
@@ -286,13 +286,7 @@ def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -
 
 
 def _positive(value, name: str, hint: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} = {value!r} is not a number; {hint}") from None
-    if not (v > 0 and math.isfinite(v)):
-        raise InputError(f"{name} = {value!r} must be a positive finite number; {hint}")
-    return v
+    return real(value, name, lo=0.0, lo_open=True, hint=hint)
 
 
 def from_work(work_J: Sequence[float], *, closure_tol: float = CLOSURE_TOL_MEASURED) -> ExcessWork:

@@ -250,7 +250,7 @@ def _swap_in(staging: pathlib.Path, out: pathlib.Path, names, stale, what: str) 
             done.append((target, kept))
             if name in names:
                 os.rename(staging / name, target)
-    except OSError as exc:
+    except BaseException as exc:             # an error, or an interrupt the mask could not hold back
         for target, kept in reversed(done):
             with contextlib.suppress(OSError):
                 if kept is not None:
@@ -258,4 +258,6 @@ def _swap_in(staging: pathlib.Path, out: pathlib.Path, names, stale, what: str) 
                 elif target.exists():
                     target.unlink()
         _remove_folders(new_dirs)
-        raise output_error(what, out, exc) from None
+        if isinstance(exc, OSError):
+            raise output_error(what, out, exc) from None
+        raise
