@@ -5,10 +5,12 @@ public API) is here, and every reader calls it:
 
 * a number is real and finite: ``True``/``False`` are not numbers, NaN and ±inf are refused, and
   so is an integer or a fraction too large for a float (a 400-digit integer);
-* its magnitude is zero or between :data:`MAGNITUDE_MIN` = 1e-100 and :data:`MAGNITUDE_MAX` = 1e100
-  in its own unit (m, kg, rev/min, ...), so that the squares and products of a few of them that
-  the methods form (ω², m·v², ΔW/(ω²δ)) stay within the range of a float; then its physical range
-  (δ between 0 and 1, a length > 0, ...) is checked by the caller through ``lo``/``hi``;
+* a single quantity (a speed, δ, a length, a mass, a scale) is zero or of magnitude between
+  :data:`MAGNITUDE_MIN` = 1e-100 and :data:`MAGNITUDE_MAX` = 1e100 in its own unit (m, kg, rev/min,
+  ...), so that the squares, products and quotients of a few of them that the methods form (ω²,
+  m·v², ΔW/(ω²δ)) stay within the range of a float; then its physical range (δ between 0 and 1, a
+  length > 0, ...) is checked by the caller through ``lo``/``hi``. The entries of a list (areas,
+  works, levels, ordinates) are summed, never divided by: only their upper bound applies;
 * an angle in degrees may be any finite number: it is reduced modulo 360 exactly
   (:func:`angle_deg`) before any trigonometry;
 * a count (positions, variants) is a whole number within a named limit (:data:`MAX_POSITIONS`,
@@ -68,7 +70,7 @@ def _shown(value) -> str:
 
 
 def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float | None = None,
-         lo_open: bool = False, hi_open: bool = False, hint: str = "") -> float:
+         lo_open: bool = False, hi_open: bool = False, hint: str = "", tiny_ok: bool = False) -> float:
     """A number entering the toolkit, checked by the policy above, as a float.
 
     Parameters
@@ -83,6 +85,9 @@ def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float
         Physical bounds; ``lo_open``/``hi_open`` exclude the bound itself.
     hint : str
         What to do, appended to the message.
+    tiny_ok : bool
+        Only the upper bound 1e100 applies: for a quantity that is only ever a numerator or a
+        term (ΔW_max, J_e), never a divisor.
 
     Raises
     ------
@@ -130,7 +135,7 @@ def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float
         raise InputError(f"{name} = {_shown(value)} is not finite (NaN); give a finite number{tail}")
     if math.isinf(v):
         raise InputError(f"{name} = {_shown(value)} is not finite; give a finite number{tail}")
-    if tiny or (v != 0.0 and not MAGNITUDE_MIN <= abs(v) <= MAGNITUDE_MAX):
+    if abs(v) > MAGNITUDE_MAX or not tiny_ok and (tiny or v != 0.0 and abs(v) < MAGNITUDE_MIN):
         raise InputError(f"{name} = {_shown(value)}{u} is outside the magnitudes this toolkit computes with "
                          f"(zero, or {MAGNITUDE_MIN:g} to {MAGNITUDE_MAX:g}); give it in a unit that brings it "
                          f"into that range")
@@ -176,26 +181,26 @@ def count(value, name: str, *, low: int, high: int, why: str = "") -> int:
     >>> count(12.7, "positions", low=3, high=MAX_POSITIONS)
     Traceback (most recent call last):
     ...
-    graphmethods.errors.InputError: positions = 12.7 must be a whole number from 3 to 100000
+    graphmethods.errors.InputError: positions = 12.7 must be an integer ≥ 3 and ≤ 100000
     """
-    limit = f"from {low} to {high}" + (f" ({why})" if why else "")
+    limit = f"an integer ≥ {low} and ≤ {high}" + (f" ({why})" if why else "")
     if isinstance(value, bool) or type(value).__name__ == "bool_":
-        raise InputError(f"{name} = {value!r} must be a whole number {limit}")
+        raise InputError(f"{name} = {value!r} must be {limit}")
     if isinstance(value, str):
         s = value.strip()
         if not s.lstrip("+-").isdigit() or len(s) > 30:
-            raise InputError(f"{name} = {_shown(value)} must be a whole number {limit}")
+            raise InputError(f"{name} = {_shown(value)} must be {limit}")
         value = int(s)
     if isinstance(value, Integral):
         n = int(value)
     elif isinstance(value, Real) and math.isfinite(float(value)) and float(value).is_integer():
         n = int(value)
     else:
-        raise InputError(f"{name} = {_shown(value)} must be a whole number {limit}")
+        raise InputError(f"{name} = {_shown(value)} must be {limit}")
     if n < low:
-        raise InputError(f"{name} = {n} must be at least {low} (a whole number {limit})")
+        raise InputError(f"{name} = {n} must be {limit}")
     if n > high:
-        raise InputError(f"{name} = {_shown(n)} is above the limit {high} (a whole number {limit})")
+        raise InputError(f"{name} = {_shown(n)} is above the limit {high}: it must be {limit}")
     return n
 
 
@@ -394,6 +399,8 @@ def finite_array(values, name: str):
             t = type(x)
             if t is float or t is int and -(10**100) <= x <= 10**100:
                 continue
+            if t is int:
+                values[i] = real(x, f"{name}[{i}]")      # a 400-digit integer: refused with its name
             if isinstance(x, (list, tuple, dict, set)) or hasattr(x, "__len__") and not isinstance(x, str):
                 raise InputError(f"{name}[{i}]: expected a flat list of numbers, got {_shown(x)}")
             values[i] = real(x, f"{name}[{i}]")
@@ -410,7 +417,9 @@ def finite_array(values, name: str):
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
         raise InputError(f"{name}[{i}] = {arr[i]!r} is not a finite number; remove or fix it")
-    big = (arr != 0) & ((np.abs(arr) < MAGNITUDE_MIN) | (np.abs(arr) > MAGNITUDE_MAX))
+    # a list's entries are summed and drawn, never divided by: only the upper bound applies (a tiny
+    # entry, e.g. a round-off residue, adds as nothing)
+    big = np.abs(arr) > MAGNITUDE_MAX
     if big.any():
         i = int(np.flatnonzero(big)[0])
         real(float(arr[i]), f"{name}[{i}]")

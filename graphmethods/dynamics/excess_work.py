@@ -258,8 +258,7 @@ class ExcessWork:
 
 # --------------------------------------------------------------------- constructors
 def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
-    if not (closure_tol >= 0 and math.isfinite(closure_tol)):
-        raise InputError(f"closure_tol = {closure_tol!r} must be a non-negative number")
+    closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed residual |ΣA|/Σ|A|, e.g. 0.05")
     total = float(np.abs(work).sum())
     residual = float(work.sum())
     running = np.cumsum(work)
@@ -280,6 +279,7 @@ def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
 def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -> ExcessWork:
     if work.size == 0:
         raise InputError(f"no {what} given; give the signed values of the intervals in order")
+    closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed residual |ΣA|/Σ|A|, e.g. 0.05")
     _check_closure(work, closure_tol, what)
     E = np.concatenate(([0.0], np.cumsum(work)))
     return ExcessWork(work=work, E=E, closure_tol=closure_tol, **extra)
@@ -375,6 +375,7 @@ def from_moments(
     >>> ew.work.round(4).tolist(), round(ew.delta_W_max, 4)
     ([-34.3612, 34.3612], 34.3612)
     """
+    closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed relative residual, e.g. 1e-6")
     M_d, M_r = balance(M_d, M_r)
     D = M_d - M_r
     if boundaries is not None:

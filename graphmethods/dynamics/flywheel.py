@@ -27,10 +27,10 @@ RIM_SPEED_LIMIT = {"cast iron": 25.0, "steel": 40.0}
 DENSITY = {"cast iron": 7200.0, "steel": 7850.0}
 
 
-def _finite(value, name: str, *, positive: bool = False, hint: str = "") -> float:
+def _finite(value, name: str, *, positive: bool = False, hint: str = "", tiny_ok: bool = False) -> float:
     # the toolkit's one policy for numbers that enter (graphmethods.units.real): no bools, finite,
-    # magnitudes 1e-100 … 1e100
-    return real(value, name, lo=0.0 if positive else None, lo_open=positive, hint=hint)
+    # magnitudes 1e-100 … 1e100 (only the upper bound for a numerator or a term: tiny_ok)
+    return real(value, name, lo=0.0 if positive else None, lo_open=positive, hint=hint, tiny_ok=tiny_ok)
 
 
 def mean_speed(*, n_rpm: float | None = None, omega_m: float | None = None) -> float:
@@ -136,12 +136,12 @@ def flywheel(
     >>> round(flywheel(575.0, delta=0.06, n_rpm=120.0).J_F, 2)
     60.69
     """
-    dW = _finite(delta_W_max, "delta_W_max")
+    dW = _finite(delta_W_max, "delta_W_max", tiny_ok=True)
     if dW < 0:
         raise InputError(f"delta_W_max = {dW:g} J must not be negative (it is E_max − E_min)")
     d = check_delta(delta)
     w = mean_speed(n_rpm=n_rpm, omega_m=omega_m)
-    J_e = _finite(J_e, "J_e", hint="the mechanism's reduced inertia in kg·m²")
+    J_e = _finite(J_e, "J_e", hint="the mechanism's reduced inertia in kg·m²", tiny_ok=True)
     if J_e < 0:
         raise InputError(f"J_e = {J_e:g} kg·m² must not be negative")
     J_total = finite_result(dW / (w * w * d), "the required inertia ΔW_max/(ω_m²[δ])", unit="kg·m²")
@@ -160,7 +160,7 @@ def fluctuation(delta_W_max: float, *, J: float, n_rpm: float | None = None, ome
     >>> round(fluctuation(575.0, J=60.68716728577524, n_rpm=120.0), 10)
     0.06
     """
-    dW = _finite(delta_W_max, "delta_W_max")
+    dW = _finite(delta_W_max, "delta_W_max", tiny_ok=True)
     if dW < 0:
         raise InputError(f"delta_W_max = {dW:g} J must not be negative (it is E_max − E_min)")
     J = _finite(J, "J", positive=True, hint="the total inertia on the shaft in kg·m²")

@@ -320,7 +320,7 @@ def read_answers(path) -> dict:
     >>> import pathlib
     >>> a = read_answers(pathlib.Path(__file__).parents[1] / "problems" / "data" / "answers" / "w3_correct.toml")
     >>> a["moment_diagram"]["areas_mm2"], a["results"]["omega_max_at"]
-    ((-1560, 1590), 0.0)
+    ((-1560.0, 1590.0), 0.0)
     """
     p = pathlib.Path(path)
     try:
