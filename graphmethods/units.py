@@ -132,9 +132,9 @@ def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float
     except (ValueError, ZeroDivisionError, TypeError):
         raise InputError(f"{name}: {_shown(value)} is not a number; write e.g. 0.05, 5e-2 or 1/20") from None
     if math.isnan(v):
-        raise InputError(f"{name} = {_shown(value)} is not finite (NaN); give a finite number{tail}")
+        raise InputError(f"{name} must be finite, got {_shown(value)} (not finite: NaN){tail}")
     if math.isinf(v):
-        raise InputError(f"{name} = {_shown(value)} is not finite; give a finite number{tail}")
+        raise InputError(f"{name} must be finite, got {_shown(value)} (not finite){tail}")
     if abs(v) > MAGNITUDE_MAX or not tiny_ok and (tiny or v != 0.0 and abs(v) < MAGNITUDE_MIN):
         raise InputError(f"{name} = {_shown(value)}{u} is outside the magnitudes this toolkit computes with "
                          f"(zero, or {MAGNITUDE_MIN:g} to {MAGNITUDE_MAX:g}); give it in a unit that brings it "

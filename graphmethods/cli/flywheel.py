@@ -106,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
     out = cycle.to_dict()
     out.update(omega_m=omega_m, n_rpm=30.0 * omega_m / math.pi, J_e=J_e)
     if args.delta is not None:
-        fw = flywheel(cycle.delta_W_max, delta=check_delta(parse_number(args.delta, name="--delta")), omega_m=omega_m, J_e=J_e)
+        fw = flywheel(cycle.delta_W_max, delta=check_delta(args.delta, "--delta"), omega_m=omega_m, J_e=J_e)
         out.update(delta=fw.delta, J_F=fw.J_F, J_total=fw.J_total, omega_max=fw.omega_max, omega_min=fw.omega_min,
                    flywheel_needed=fw.needed)
     else:

@@ -46,6 +46,7 @@ from typing import Callable
 import numpy as np
 
 from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded
+from graphmethods.units import real
 
 __all__ = [
     "ReducedModel",
@@ -329,10 +330,10 @@ def _check_count(m, name, minimum):
 
 
 def _check_positive(value, name):
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) \
-            or not math.isfinite(value) or value <= 0:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name}: give a positive finite number, got {value!r}")
-    return float(value)
+    # the toolkit's number policy (graphmethods.units.real): finite, magnitudes 1e-100 … 1e100
+    return real(value, name, lo=0.0, lo_open=True, hint="give a positive finite number")
 
 
 # --------------------------------------------------------------------------------------------

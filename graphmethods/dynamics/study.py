@@ -32,7 +32,7 @@ from graphmethods.dynamics.motion import FlywheelResult, ReducedModel, exact_fly
 from graphmethods.dynamics.reduction import (ReducedInertia, load_switch_angles, load_work, reduced_inertia,
                                              resisting_moment)
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
-from graphmethods.errors import NoFlywheelNeeded
+from graphmethods.errors import InputError, NoFlywheelNeeded
 from graphmethods.units import MAX_POSITIONS, count
 
 TWO_PI = 2.0 * math.pi
@@ -64,6 +64,11 @@ class Study:
     """
 
     def __init__(self, case, *, positions: int = 12, estimate: bool = True):
+        from graphmethods.kinematics.case import Case
+
+        if not isinstance(case, Case):
+            raise InputError(f"a Study needs a problem read with read_case(path) or case_from_dict(dict), "
+                             f"got {type(case).__name__}")
         self.case = case
         self.m = count(positions, "the number of positions", low=3, high=MAX_POSITIONS,
                        why="checked before any work; textbooks use 8 to 48")

@@ -772,7 +772,7 @@ _GENERATORS: dict[str, Callable] = {"indicator": _gen_indicator, "step-moment": 
 
 
 def _key(params: dict) -> str:
-    return json.dumps(params, sort_keys=True)
+    return json.dumps(params, sort_keys=True, allow_nan=False)
 
 
 def _check_kind(kind: str) -> str:
