@@ -43,8 +43,12 @@ import json
 import math
 from fractions import Fraction
 from numbers import Integral, Real
+from typing import TYPE_CHECKING
 
 from graphmethods.errors import InputError
+
+if TYPE_CHECKING:                 # numpy is imported when an array is first made, not with the package
+    import numpy as np
 
 #: Smallest non-zero magnitude a number entering the toolkit may have, in its own unit.
 MAGNITUDE_MIN = 1e-100
@@ -198,7 +202,7 @@ def count(value, name: str, *, low: int, high: int, why: str = "") -> int:
     else:
         raise InputError(f"{name} = {_shown(value)} must be {limit}")
     if n < low:
-        raise InputError(f"{name} = {n} must be {limit}")
+        raise InputError(f"{name} = {n} must be at least {low}: {limit}")
     if n > high:
         raise InputError(f"{name} = {_shown(n)} is above the limit {high}: it must be {limit}")
     return n
@@ -383,7 +387,7 @@ def convenient_at_most(value: float, series=CONVENIENT) -> float:
     return max(v for v in _candidates(value, series) if v <= value * (1 + 1e-12))
 
 
-def finite_array(values, name: str):
+def finite_array(values, name: str) -> "np.ndarray":
     """A flat, read-only float array of finite numbers, or an InputError naming the first bad entry.
 
     >>> finite_array([1, 2.5], "areas").tolist()

@@ -333,7 +333,10 @@ def test_fuzz_flywheel_cli(data):
         lambda xs: [f"{x:.6g}" for x in xs] + [f"{-sum(float(f'{x:.6g}') for x in xs):.6g}"])
     areas = data.draw(st.one_of(closing, closing, closing, st.lists(number_texts(), min_size=1, max_size=n),
                                 st.lists(st.sampled_from(["1e99", "-1e99", "1e-99", "5", "-5"]), min_size=2, max_size=6)))
-    argv = ["flywheel", "--areas" if data.draw(st.booleans()) else "--levels", *areas]
+    levels = data.draw(st.booleans())
+    if levels and areas:
+        areas = areas + [areas[0]]          # levels return to the first one
+    argv = ["flywheel", "--levels" if levels else "--areas", *areas]
     if data.draw(st.booleans()):
         argv += ["--mu-M", data.draw(typed(0.01, 1000)), "--mu-phi-deg", data.draw(typed(0.1, 10))]
     argv += ["--n" if data.draw(st.booleans()) else "--omega", data.draw(typed(1, 3000))]

@@ -20,7 +20,7 @@ from graphmethods import cli
 from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, mean_speed
 from graphmethods.errors import GraphmethodsError, InputError, OutputError
-from graphmethods.kinematics import case_from_dict, read_case
+from graphmethods.kinematics import case_from_dict
 from graphmethods.render.files import write_atomic, write_set
 from graphmethods.units import MAX_POSITIONS, MAX_VARIANTS, angle_deg, json_text, real
 

@@ -51,7 +51,7 @@ from graphmethods.dynamics.motion import (
     _check_positive,
     _frozen,
 )
-from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded, UnbalancedCycleError
+from graphmethods.errors import InputError, NoFlywheelNeeded, UnbalancedCycleError
 from graphmethods.units import DELTA_MAX, MAGNITUDE_MAX
 
 __all__ = ["Tangency", "WittenbauerResult", "wittenbauer", "wittenbauer_from_model"]
