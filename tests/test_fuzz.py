@@ -337,7 +337,7 @@ def test_fuzz_flywheel_cli(data):
     if levels and areas:
         areas = areas + [areas[0]]          # levels return to the first one
     argv = ["flywheel", "--levels" if levels else "--areas", *areas]
-    if data.draw(st.booleans()):
+    if data.draw(st.booleans()) and (not levels or data.draw(st.booleans())):   # scales belong to areas
         argv += ["--mu-M", data.draw(typed(0.01, 1000)), "--mu-phi-deg", data.draw(typed(0.1, 10))]
     argv += ["--n" if data.draw(st.booleans()) else "--omega", data.draw(typed(1, 3000))]
     argv += ["--delta" if data.draw(st.booleans()) else "--J", data.draw(typed(0.001, 0.5) | typed(0.1, 1e4))]

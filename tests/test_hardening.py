@@ -434,3 +434,14 @@ def test_bench_out_checked_before_the_run(tmp_path, capsys):
     t0 = time.perf_counter()
     refused(capsys, "bench", "--quick", "--only", "flywheel", "--out", tmp_path, says="--force")
     assert time.perf_counter() - t0 < 2
+
+
+def test_worksheet_force_replaces_the_whole_set_and_keeps_other_files(tmp_path, capsys):
+    out = tmp_path / "class"
+    assert run(capsys, "worksheet", "indicator", "--variants", "3", "--out", out, "--quiet")[0] == 0
+    (out / "svg" / "notes.txt").write_text("mine", encoding="utf-8")
+    assert run(capsys, "worksheet", "indicator", "--variants", "1", "--out", out, "--quiet", "--force")[0] == 0
+    files = sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file())
+    assert files == ["indicator-en.pdf", "problems/indicator-01.json", "svg/indicator-01-key.svg",
+                     "svg/indicator-01-student.svg", "svg/notes.txt"]          # no variant 2 or 3 left over
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["class"]
