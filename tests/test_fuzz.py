@@ -221,8 +221,12 @@ def mutated_case(data, base):
         if action == "set":
             case[key] = data.draw(hostile_json_values())
         elif action == "scale" and isinstance(case.get(key), (int, float)) and not isinstance(case.get(key), bool):
-            case[key] = case[key] * data.draw(st.sampled_from([0, -1, 1e-100, 1e-30, 1e-8, 1e8, 1e30, 1e99, 1e100,
-                                                               1.0000001, 10.0, 0.1]))
+            factor = data.draw(st.sampled_from([0, -1, 1e-100, 1e-30, 1e-8, 1e8, 1e30, 1e99, 1e100, 1.0000001, 10.0,
+                                                0.1]))
+            try:
+                case[key] = case[key] * factor
+            except OverflowError:            # a 400-digit integer set before: keep it as it is
+                pass
         elif action == "delete":
             case.pop(key, None)
         else:
