@@ -243,22 +243,25 @@ def first_nonfinite(obj, path: str = "") -> str | None:
             stack.extend(reversed([(f"{where}.{k}" if where else str(k), v) for k, v in x.items()]))
         elif isinstance(x, (list, tuple)) or hasattr(x, "tolist") and not isinstance(x, (str, bytes)):
             items = x.tolist() if hasattr(x, "tolist") else x
+            if isinstance(items, list) and all(type(v) is float or type(v) is int for v in items):
+                k = next((i for i, v in enumerate(items) if type(v) is float and not math.isfinite(v)), None)
+                if k is not None:
+                    return f"{where}[{k}]"
+                continue                                  # a flat list of numbers: checked at once
             if not isinstance(items, list):
                 items = [items]
             stack.extend(reversed([(f"{where}[{i}]", v) for i, v in enumerate(items)]))
     return None
 
 
-def json_text(obj, **kwargs) -> str:
-    """``json.dumps`` with ``allow_nan=False``: a result holding an infinity or NaN is refused with
-    the key named, never written as ``Infinity`` (which is not JSON).
+def check_finite(obj) -> None:
+    """Refuse a result holding an infinity or NaN anywhere (nested dicts, lists, arrays), naming its key.
 
-    >>> json_text({"J_F": 1.5})
-    '{"J_F": 1.5}'
-    >>> json_text({"J_F": float("inf")})
+    >>> check_finite({"E": [0.0, 1.0]})
+    >>> check_finite({"E": [0.0, float("nan")]})
     Traceback (most recent call last):
     ...
-    graphmethods.errors.InputError: J_F came out inf: the data lie outside the range this method can compute; give values of less extreme magnitude
+    graphmethods.errors.InputError: E[1] came out nan: the data lie outside the range this method can compute; give values of less extreme magnitude
     """
     where = first_nonfinite(obj)
     if where is not None:
@@ -269,6 +272,20 @@ def json_text(obj, **kwargs) -> str:
         except (KeyError, IndexError, TypeError, ValueError):
             bad = float("nan")
         finite_result(bad, where)
+
+
+def json_text(obj, **kwargs) -> str:
+    """``json.dumps`` with ``allow_nan=False``: a result holding an infinity or NaN is refused with
+    the key named (:func:`check_finite`), never written as ``Infinity`` (which is not JSON).
+
+    >>> json_text({"J_F": 1.5})
+    '{"J_F": 1.5}'
+    >>> json_text({"J_F": float("inf")})
+    Traceback (most recent call last):
+    ...
+    graphmethods.errors.InputError: J_F came out inf: the data lie outside the range this method can compute; give values of less extreme magnitude
+    """
+    check_finite(obj)
     return json.dumps(obj, allow_nan=False, **kwargs)
 
 

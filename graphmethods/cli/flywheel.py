@@ -14,7 +14,7 @@ import math
 import re
 
 from graphmethods.errors import InputError
-from graphmethods.units import json_text, parse_number
+from graphmethods.units import check_finite, json_text, parse_number
 
 LIST_OPTIONS = ("--areas", "--levels")
 
@@ -116,10 +116,10 @@ def run(args: argparse.Namespace) -> int:
                              f"mechanism's own --J-e {args.J_e} kg·m²")
         delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
         out.update(J=J, delta=delta, J_F=J - J_e)
-    text = json_text(out, indent=1)          # also refuses a result that is not finite, naming it
     if args.json:
-        print(text)
+        print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
         return 0
+    check_finite(out)
     print("Excess-work table")
     print(cycle.to_text())
     print(f"ω_m = {omega_m:.6g} rad/s (n = {out['n_rpm']:.6g} rev/min)")

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 
-from graphmethods.units import MAX_POSITIONS, count, json_text
+from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 #: Most positions the figures draw: the velocity table keeps rows at least 4 mm high on its page.
 FIGURES_MAX_POSITIONS = 30
@@ -237,7 +237,7 @@ def run(args) -> int:
             res["figures"] = [str(p) for p in written]
         print(json_text(res, ensure_ascii=False, indent=1))
     else:
-        json_text(res)             # the same finiteness check before the text is printed
+        check_finite(res)          # the same finiteness check before the text is printed
         print(_text(res))
         for p in written:
             print(f"wrote {p}")

@@ -11,7 +11,7 @@ import pathlib
 import sys
 
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.units import MAX_POSITIONS, count, json_text
+from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
 def add_parser(sub) -> None:
@@ -80,13 +80,13 @@ def run(args) -> int:
     study = Study(read_case(args.case), positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
-    text = json_text(out, indent=1)          # refuses a result that is not finite, naming it
+    check_finite(out)                        # a result that is not finite is refused, naming it
     if data is not None:            # written last: an error above leaves no file behind
         from graphmethods.render.files import write_atomic
 
         write_atomic(sheet, data, overwrite=args.force)
     if args.json:
-        print(text)
+        print(json_text(out, indent=1))
     else:
         width = max(map(len, out))
         for key, value in out.items():
