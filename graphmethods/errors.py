@@ -28,3 +28,15 @@ class MotionError(GraphmethodsError):
 
 class OutputExistsError(GraphmethodsError):
     """Refusing to overwrite an existing file without being asked (use overwrite=True / --force)."""
+
+
+class OutputError(GraphmethodsError):
+    """A file or folder that cannot be written: read-only file system, no permission, disk full, a folder
+    or a file in the way. The message says what, where and why; nothing partial is left behind."""
+
+
+class NoFlywheelNeeded(MotionError):
+    """The answer "no flywheel is needed": the machine's own inertia already keeps δ within [δ].
+
+    Raised where a construction cannot go on (the Wittenbauer rays meet on the curve, so there is no
+    origin O1); :meth:`graphmethods.dynamics.study.Study.summary` reports it as J_F = 0, not an error."""

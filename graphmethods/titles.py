@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from typing import Mapping
 
 from graphmethods.errors import InputError
+from graphmethods.units import check_text
 
 LANGUAGES = ("en", "ru", "zh")
 
@@ -80,13 +81,15 @@ class Title:
         if value is None:
             return cls()
         if isinstance(value, str):
-            return cls(value)
+            return cls(check_text(value, where))
         if isinstance(value, Mapping):
             for lang in value:
-                if lang not in LANGUAGES:
+                if not isinstance(lang, str) or lang not in LANGUAGES:
                     raise InputError(f"{where}: unknown language {lang!r}; give the title in "
                                      f"{', '.join(LANGUAGES[:-1])} and/or {LANGUAGES[-1]}")
             for lang, text in value.items():
+                if isinstance(text, str):
+                    check_text(text, f"{where} ({lang})")
                 if not isinstance(text, str) or not text.strip():
                     raise InputError(f"{where}: the {lang} title must be non-empty text; got {text!r} "
                                      f"(leave a language out to fall back to English)")

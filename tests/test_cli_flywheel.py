@@ -65,8 +65,8 @@ def test_text_output_shows_the_table(capsys):
 
 @pytest.mark.parametrize("argv, msg", [
     (["--areas", "50,-5x0", "--n", "600", "--delta", "0.1"], "not a number"),
-    (["--areas", "50,-50", "--n", "600", "--delta", "0"], "between 0 and 2"),
-    (["--areas", "50,-50", "--n", "600", "--delta", "2.5"], "between 0 and 2"),
+    (["--areas", "50,-50", "--n", "600", "--delta", "0"], "between 0 and 1"),
+    (["--areas", "50,-50", "--n", "600", "--delta", "2.5"], "between 0 and 1"),
     (["--areas", "50,-50", "--n", "-600", "--delta", "0.1"], "positive"),
     (["--areas", "50,-50", "--n", "0", "--delta", "0.1"], "positive"),
     (["--areas", "50,-550", "--n", "600", "--delta", "0.1"], "does not close"),

@@ -141,8 +141,8 @@ def test_rim_and_disc_sizing():
 
 
 @pytest.mark.parametrize("kw, msg", [
-    (dict(delta=0.0, n_rpm=100), "between 0 and 2"),
-    (dict(delta=2.0, n_rpm=100), "between 0 and 2"),
+    (dict(delta=0.0, n_rpm=100), "between 0 and 1"),
+    (dict(delta=2.0, n_rpm=100), "between 0 and 1"),
     (dict(delta=0.05, n_rpm=0), "positive"),
     (dict(delta=0.05, n_rpm=-5), "positive"),
     (dict(delta=float("nan"), n_rpm=100), "not finite"),

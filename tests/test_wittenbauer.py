@@ -127,7 +127,7 @@ def test_a_curve_that_does_not_close_is_refused():
 
 @pytest.mark.parametrize("kwargs, error, match", [
     (dict(mu_J=0.0), InputError, "mu_J"),
-    (dict(delta=2.0), InputError, "below 2"),
+    (dict(delta=2.0), InputError, "below 1"),
     (dict(tangents="approx"), InputError, "tangents"),
     (dict(J_e=[1.0, 2.0]), InputError, "columns"),
     (dict(J_e=[1.0, -1.0, 1.0, 1.0]), InputError, "negative"),

@@ -49,7 +49,20 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     return parser
 
 
+def _tolerant_streams() -> None:
+    """On a terminal that cannot show every character (PYTHONIOENCODING=cp1252), print what it can and
+    write the rest as \\u escapes instead of failing with UnicodeEncodeError."""
+    for stream in (sys.stdout, sys.stderr):
+        enc = (getattr(stream, "encoding", None) or "").lower().replace("-", "").replace("_", "")
+        if enc not in ("utf8", "utf8sig") and hasattr(stream, "reconfigure"):
+            try:
+                stream.reconfigure(errors="backslashreplace")
+            except (ValueError, OSError):   # a stream that cannot be reconfigured keeps its rules
+                pass
+
+
 def main(argv: list[str] | None = None) -> int:
+    _tolerant_streams()
     argv = list(sys.argv[1:] if argv is None else argv)
     command = argv[0] if argv and argv[0] in COMMANDS else ""
     if command:
@@ -63,6 +76,11 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     except BrokenPipeError:
         return 1
+    except OSError as exc:          # reading or writing refused by the system: one line, what, where, why
+        where = f" {exc.filename}" if getattr(exc, "filename", None) else ""
+        why = (exc.strerror or str(exc) or type(exc).__name__).lower()
+        print(f"graphmethods {args.command}: error: cannot use{where}: {why}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:
         print("graphmethods: interrupted", file=sys.stderr)
         return 130

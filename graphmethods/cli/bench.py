@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import pathlib
 import sys
 
@@ -28,9 +27,16 @@ def run(args) -> int:
         unknown = sorted(set(args.only) - set(bench.SECTIONS))
         if unknown:
             raise InputError(f"unknown section {', '.join(unknown)}; choose from {', '.join(bench.SECTIONS)}")
+    if args.out is not None and args.out.strip() == "":
+        raise InputError("--out is empty; give a folder (it is created if missing)")
     out = pathlib.Path(args.out) if args.out else None
-    if out is not None:
+    if out is not None:                  # checked before the run, not after it
+        if out.exists() and not out.is_dir():
+            raise InputError(f"--out {out} is a file; give a folder (it is created if missing)")
         targets = [out / "bench.md", out / "bench.json", out / "error_vs_time.svg"]
+        in_way = [str(t) for t in targets if t.is_dir()]
+        if in_way:
+            raise InputError(f"cannot write {in_way[0]}: a folder is in the way")
         existing = [str(t) for t in targets if t.exists()]
         if existing and not args.force:
             raise OutputExistsError(f"{', '.join(existing)} exist; add --force to overwrite")
@@ -39,9 +45,16 @@ def run(args) -> int:
     md = bench.to_markdown(rows)
     print(md)
     if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        (out / "bench.md").write_text(md, encoding="utf-8")
-        (out / "bench.json").write_text(json.dumps(bench.to_json(rows), indent=1), encoding="utf-8")
+        import tempfile
+
+        from graphmethods.render.files import write_set
+        from graphmethods.units import json_text
+
+        files = {"bench.md": md.encode("utf-8"), "bench.json": json_text(bench.to_json(rows), indent=1).encode("utf-8")}
         if any(r.section == "flywheel" for r in rows):
-            bench.plot_error_vs_time(rows, out / "error_vs_time.svg")
+            with tempfile.TemporaryDirectory() as tmp:
+                plot = pathlib.Path(tmp) / "error_vs_time.svg"
+                bench.plot_error_vs_time(rows, plot)
+                files["error_vs_time.svg"] = plot.read_bytes()
+        write_set(out, files, overwrite=args.force, what="--out folder")
     return 0

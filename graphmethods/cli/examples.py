@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import json
+from graphmethods.units import json_text
 
 
 def add_parser(sub) -> None:
@@ -42,5 +42,5 @@ def run(args) -> int:
             print(f"note: {prob.note}")
         print()
     if args.json:
-        print(json.dumps(results, indent=1))
+        print(json_text(results, indent=1))
     return 0

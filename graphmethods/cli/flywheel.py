@@ -10,13 +10,12 @@ Examples::
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import re
 
 from graphmethods.cli import flywheel_moments
 from graphmethods.errors import InputError
-from graphmethods.units import parse_number
+from graphmethods.units import check_finite, json_text, parse_number
 
 LIST_OPTIONS = ("--areas", "--levels")
 
@@ -113,22 +112,28 @@ def run(args: argparse.Namespace) -> int:
         omega_m=None if args.omega is None else parse_number(args.omega, name="--omega"),
     )
     J_e = parse_number(args.J_e, name="--J-e")
+    if J_e < 0:      # the same rule with --delta and with --J
+        raise InputError(f"--J-e = {args.J_e}: the mechanism's own inertia must not be negative (kg·m²)")
     out = cycle.to_dict()
     out.update(omega_m=omega_m, n_rpm=30.0 * omega_m / math.pi, J_e=J_e)
     if args.delta is not None:
-        fw = flywheel(cycle.delta_W_max, delta=check_delta(parse_number(args.delta, name="--delta")), omega_m=omega_m, J_e=J_e)
+        fw = flywheel(cycle.delta_W_max, delta=check_delta(args.delta, "--delta"), omega_m=omega_m, J_e=J_e)
         out.update(delta=fw.delta, J_F=fw.J_F, J_total=fw.J_total, omega_max=fw.omega_max, omega_min=fw.omega_min,
                    flywheel_needed=fw.needed)
     else:
         J = parse_number(args.J, name="--J")
+        if J < J_e:
+            raise InputError(f"--J {args.J} kg·m² is the total inertia on the shaft and cannot be less than the "
+                             f"mechanism's own --J-e {args.J_e} kg·m²")
         delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
         out.update(J=J, delta=delta, J_F=J - J_e)
     if mc is not None:
         J_machine = J if args.delta is None else (fw.J_total if fw.needed else J_e)
         out.update(flywheel_moments.extras(mc, J_machine))
     if args.json:
-        print(json.dumps(out, indent=1))
+        print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
         return 0
+    check_finite(out)
     print("Excess-work table")
     print(cycle.to_text())
     if mc is not None:

@@ -20,7 +20,7 @@ import importlib.util
 import pathlib
 import sys
 
-from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.errors import GraphmethodsError, InputError, OutputExistsError
 
 DEFAULT_DIR = "gallery"
 DEFAULT_OUT = "gallery-out"
@@ -99,11 +99,19 @@ def run(args) -> int:
             raise InputError("--regenerate rewrites the gallery folder itself; leave out --out")
         out, overwrite = pathlib.Path(args.dir), True
     else:
+        if args.out is not None and args.out.strip() == "":
+            raise InputError("--out is empty; give a folder (it is created if missing)")
         out, overwrite = pathlib.Path(args.out or DEFAULT_OUT), bool(args.force)
-        out.mkdir(parents=True, exist_ok=True)
+        if out.exists() and not out.is_dir():
+            raise InputError(f"--out {out} is a file; give a folder")
     jobs = []
     for path in paths:
-        module = load(path)
+        try:
+            module = load(path)
+        except GraphmethodsError:
+            raise
+        except Exception as exc:
+            raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); nothing was written") from None
         want_png = args.png or (args.regenerate and getattr(module, "PNG", False))
         targets = [out / f"{path.stem}.svg"] + ([out / f"{path.stem}.png"] if want_png else [])
         if getattr(args, "dxf", False) and not args.regenerate:
@@ -115,21 +123,32 @@ def run(args) -> int:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(existing[:3])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
-    for path, module, targets in jobs:
-        scene = module.build()
-        svg.save(scene, targets[0], overwrite=overwrite)
+    from graphmethods.render.files import write_set
+
+    blobs, lines = {}, []
+    for path, module, targets in jobs:      # build every figure first: a failing script writes nothing
+        try:
+            scene = module.build()
+        except GraphmethodsError as exc:
+            raise InputError(f"{path}: {exc}; nothing was written") from None
+        except Exception as exc:            # a gallery script is code: its failure is named, not a traceback
+            raise InputError(f"{path}: build() failed ({type(exc).__name__}: {exc}); nothing was written") from None
+        blobs[targets[0].name] = svg.to_bytes(scene)
         line = f"wrote {targets[0]}"
         for target in targets[1:]:
             if target.suffix == ".png":
                 from graphmethods.render import mpl
 
-                mpl.save_png(scene, target, dpi=PNG_DPI, overwrite=overwrite)
+                blobs[target.name] = mpl.to_png_bytes(scene, dpi=PNG_DPI)
             else:
                 from graphmethods.render import dxf
 
-                dxf.save(scene, target, overwrite=overwrite)
+                blobs[target.name] = dxf.to_bytes(scene)
             line += f" and {target.name}"
         scales = "; ".join(s.caption() for s in scene.scales())
-        print(line + (f"  ({scales})" if scales else ""), file=sys.stdout)
+        lines.append(line + (f"  ({scales})" if scales else ""))
+    write_set(out, blobs, overwrite=overwrite, what="gallery folder")
+    for line in lines:
+        print(line, file=sys.stdout)
     print(f"{len(jobs)} figures in {out}")
     return 0

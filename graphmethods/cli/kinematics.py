@@ -19,8 +19,12 @@ before the first file is written, so an error writes nothing.
 
 from __future__ import annotations
 
-import json
 import math
+
+from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
+
+#: Most positions the figures draw: the velocity table keeps rows at least 4 mm high on its page.
+FIGURES_MAX_POSITIONS = 30
 
 
 def add_parser(sub) -> None:
@@ -142,8 +146,16 @@ def figures(case, m: int, *, notation: str = "en", plan_position: int | None = N
     from graphmethods.dynamics.study import Study
     from graphmethods.sheets import kinematics as ks
 
+    from graphmethods.errors import InputError
+
+    if m > FIGURES_MAX_POSITIONS:
+        raise InputError(f"--figures draws at most {FIGURES_MAX_POSITIONS} positions (the velocity table's rows must "
+                         f"stay 4 mm high on its page); give --positions {FIGURES_MAX_POSITIONS} or fewer, or leave "
+                         f"out --figures for the numbers alone")
     study = Study(case, positions=m)
     k = ks.fullest_position(study.plans) if plan_position is None else plan_position
+    if isinstance(k, bool) or not 0 <= k <= m:
+        raise InputError(f"--plan-position {k}: give a position from 0 to {m}")
     plan = ks.velocity_plan(study, k, notation=notation)
     return {
         "kinematic_scheme": ks.kinematic_scheme(study, notation=notation),
@@ -159,7 +171,8 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
     """Build every figure, then write them all into ``directory`` (created if missing).
 
     Nothing is written when a figure cannot be built or a file exists (without ``overwrite``);
-    if a write fails midway, the files this call created are removed again.
+    the set is written into a temporary folder beside ``directory`` and renamed into place, so an
+    error or an interrupt leaves the old set or the new one (:func:`graphmethods.render.files.write_set`).
 
     Raises
     ------
@@ -169,8 +182,10 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
     import pathlib
 
     from graphmethods.errors import InputError, OutputExistsError
-    from graphmethods.render.files import write_atomic
+    from graphmethods.render.files import write_set
 
+    if str(directory).strip() == "":
+        raise InputError("--figures is empty; give a folder (it is created if missing)")
     scenes = figures(case, m, notation=notation, plan_position=plan_position)
     out = pathlib.Path(directory)
     if out.exists() and not out.is_dir():
@@ -201,32 +216,17 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
             more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
             raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, or another "
                                     f"--figures folder")
-    made_dir = not out.exists()
-    out.mkdir(parents=True, exist_ok=True)
-    written, created = [], []
-    try:
-        for path, data in blobs.items():
-            existed = path.exists()
-            write_atomic(path, data, overwrite=overwrite)
-            written.append(path)
-            if not existed:
-                created.append(path)
-    except BaseException:
-        for path in created:
-            path.unlink(missing_ok=True)
-        if made_dir and not any(out.iterdir()):
-            out.rmdir()
-        raise
-    return written
+    # the set is written into a temporary folder beside DIR and renamed into place as a whole
+    write_set(out, {p.name: data for p, data in blobs.items()}, overwrite=overwrite, what="--figures folder")
+    return list(blobs)
 
 
 def run(args) -> int:
     from graphmethods.errors import InputError
     from graphmethods.kinematics import read_case
 
+    count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
     case = read_case(args.case)
-    if args.positions < 3:
-        raise InputError(f"--positions must be at least 3, got {args.positions}")
     res = table(case, args.positions)
     written = []
     if args.figures is not None:
@@ -240,8 +240,9 @@ def run(args) -> int:
     if args.json:
         if written:
             res["figures"] = [str(p) for p in written]
-        print(json.dumps(res, ensure_ascii=False, indent=1))
+        print(json_text(res, ensure_ascii=False, indent=1))
     else:
+        check_finite(res)          # the same finiteness check before the text is printed
         print(_text(res))
         for p in written:
             print(f"wrote {p}")

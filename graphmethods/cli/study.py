@@ -7,11 +7,11 @@ An existing file is kept unless ``--force``; on any error nothing is written.
 
 from __future__ import annotations
 
-import json
 import pathlib
 import sys
 
 from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
 def add_parser(sub) -> None:
@@ -36,7 +36,13 @@ def add_parser(sub) -> None:
 def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
     from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
 
-    scene = dynamic_analysis_sheet(study, page=page, notation=lang)
+    from graphmethods.errors import NoFlywheelNeeded
+
+    try:
+        scene = dynamic_analysis_sheet(study, page=page, notation=lang)
+    except NoFlywheelNeeded as exc:
+        raise InputError(f"--sheet {path}: {exc}; the sheet has no flywheel to construct, so nothing was written "
+                         f"(run without --sheet for the numbers)") from None
     if path.suffix.lower() == ".pdf":
         from graphmethods.render import pdf
 
@@ -52,6 +58,8 @@ def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
 
 def _check_target(path: pathlib.Path, force: bool) -> None:
     """Refuse early (before any work) a sheet file that cannot or must not be written."""
+    if str(path).strip() in ("", "."):
+        raise InputError("--sheet is empty; give a file name ending in .svg, .pdf or .dxf")
     if path.suffix.lower() not in (".svg", ".pdf", ".dxf"):
         raise InputError(f"--sheet {path}: give a file name ending in .svg, .pdf or .dxf")
     parent = path.parent if str(path.parent) else pathlib.Path(".")
@@ -67,18 +75,22 @@ def run(args) -> int:
     from graphmethods.dynamics.study import Study
     from graphmethods.kinematics import read_case
 
-    sheet = pathlib.Path(args.sheet) if args.sheet else None
+    count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
+    sheet = pathlib.Path(args.sheet) if args.sheet is not None else None
     if sheet is not None:
+        if args.sheet.strip() == "":
+            raise InputError("--sheet is empty; give a file name ending in .svg or .pdf")
         _check_target(sheet, args.force)
     study = Study(read_case(args.case), positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
+    check_finite(out)                        # a result that is not finite is refused, naming it
     if data is not None:            # written last: an error above leaves no file behind
         from graphmethods.render.files import write_atomic
 
         write_atomic(sheet, data, overwrite=args.force)
     if args.json:
-        print(json.dumps(out, indent=1))
+        print(json_text(out, indent=1))
     else:
         width = max(map(len, out))
         for key, value in out.items():

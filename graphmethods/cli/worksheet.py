@@ -10,6 +10,7 @@ nothing is left behind on an error. Progress goes to stderr (``--quiet`` turns i
 
 from __future__ import annotations
 
+import pathlib
 import sys
 import time
 
@@ -49,40 +50,33 @@ def add_parser(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _dxf_names(out, kind: str, n: int) -> list:
-    """The DXF pages: DIR/dxf/KIND-NN-student.dxf and -key.dxf for each variant."""
-    import pathlib
-
-    d = pathlib.Path(out) / "dxf"
-    return [d / f"{kind}-{i:02d}-{part}.dxf" for i in range(1, n + 1) for part in ("student", "key")]
-
-
 def run(args) -> int:
     from graphmethods.errors import OutputExistsError
     from graphmethods.sheets import worksheets as ws
 
+    from graphmethods.errors import InputError
+    from graphmethods.units import MAX_VARIANTS, count
+
     t0 = time.perf_counter()
+    count(args.variants, "--variants", low=1, high=MAX_VARIANTS, why="checked before any variant is built")
+    if args.out.strip() == "":
+        raise InputError("--out is empty; give a folder (it is created if missing)")
     if not args.force:                    # refuse before building anything
-        existing = ws.existing_outputs(args.out, args.kind, args.lang, max(int(args.variants), 1))
+        existing = ws.existing_outputs(args.out, args.kind, args.lang, args.variants)
         if getattr(args, "dxf", False):
-            existing += [p for p in _dxf_names(args.out, args.kind, max(int(args.variants), 1)) if p.exists()]
+            existing += [p for p in map(pathlib.Path(args.out).joinpath, ws.dxf_names(args.kind, args.variants))
+                         if p.exists()]
         if existing:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(map(str, existing[:3]))}{more} exist; use --force to replace them, "
                                     f"or another --out")
     progress = None if args.quiet else Progress()
     sheet = ws.worksheet(args.kind, variants=args.variants, seed=args.seed, notation=args.lang, progress=progress)
-    paths = ws.write_worksheet(sheet, args.out, overwrite=args.force, progress=progress)
+    paths = ws.write_worksheet(sheet, args.out, overwrite=args.force, progress=progress,
+                               dxf=getattr(args, "dxf", False))
     n = len(sheet.variants)
     if getattr(args, "dxf", False):
-        from graphmethods.render import dxf
-        from graphmethods.render.files import write_atomic
-
-        names = _dxf_names(args.out, args.kind, n)
-        names[0].parent.mkdir(parents=True, exist_ok=True)
-        for name, scene in zip(names, [s for pair in zip(sheet.students, sheet.keys) for s in pair]):
-            write_atomic(name, dxf.to_bytes(scene), overwrite=args.force)
-        print(f"wrote {len(names)} DXF pages in {names[0].parent} (1 unit = 1 mm)")
+        print(f"wrote {2 * n} DXF pages in {paths[0].parent / 'dxf'} (1 unit = 1 mm)")
     print(f"wrote {paths[0]} ({2 * n} pages: {n} students', then {n} keys), {2 * n} SVG in "
           f"{paths[0].parent / 'svg'}, {n} problem files in {paths[0].parent / 'problems'} "
           f"in {time.perf_counter() - t0:.1f} s")

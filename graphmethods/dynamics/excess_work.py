@@ -35,7 +35,7 @@ import numpy as np
 
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError, UnbalancedCycleError
-from graphmethods.units import finite_array
+from graphmethods.units import finite_array, real
 
 #: Default closure tolerance for measured data (areas, works, levels): |Σ A_i| / Σ|A_i|.
 CLOSURE_TOL_MEASURED = 0.05
@@ -168,13 +168,17 @@ class ExcessWork:
     def rows(self) -> list[dict]:
         """The excess-work table, one row per interval: points, area, work, energy at its end."""
         rows = []
-        for i, A in enumerate(self.work):
-            row = {"interval": f"{self.labels[i]}–{self.labels[i + 1]}", "A_J": float(A), "E_J": float(self.E[i + 1])}
-            if self.areas_mm2 is not None:
-                row["f_mm2"] = float(self.areas_mm2[i])
-            if self.phi is not None:
-                row["phi_from_deg"] = math.degrees(self.phi[i])
-                row["phi_to_deg"] = math.degrees(self.phi[i + 1])
+        labels = self.labels                       # once: the table is linear in the number of intervals
+        work, E = self.work.tolist(), self.E.tolist()
+        areas = None if self.areas_mm2 is None else self.areas_mm2.tolist()
+        phi_deg = None if self.phi is None else np.degrees(self.phi).tolist()
+        for i, A in enumerate(work):
+            row = {"interval": f"{labels[i]}–{labels[i + 1]}", "A_J": A, "E_J": E[i + 1]}
+            if areas is not None:
+                row["f_mm2"] = areas[i]
+            if phi_deg is not None:
+                row["phi_from_deg"] = phi_deg[i]
+                row["phi_to_deg"] = phi_deg[i + 1]
             rows.append(row)
         return rows
 
@@ -256,10 +260,13 @@ class ExcessWork:
 
 # --------------------------------------------------------------------- constructors
 def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
-    if not (closure_tol >= 0 and math.isfinite(closure_tol)):
-        raise InputError(f"closure_tol = {closure_tol!r} must be a non-negative number")
+    closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed residual |ΣA|/Σ|A|, e.g. 0.05")
     total = float(np.abs(work).sum())
     residual = float(work.sum())
+    running = np.cumsum(work)
+    if not (math.isfinite(total) and np.isfinite(running).all()):
+        raise InputError(f"the {what} overflow when summed (their total or a running energy is beyond the float "
+                         f"range); give them in a unit that keeps the sums finite, e.g. kJ instead of J")
     if total == 0.0:
         return
     if abs(residual) > closure_tol * total:
@@ -274,19 +281,14 @@ def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
 def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -> ExcessWork:
     if work.size == 0:
         raise InputError(f"no {what} given; give the signed values of the intervals in order")
+    closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed residual |ΣA|/Σ|A|, e.g. 0.05")
     _check_closure(work, closure_tol, what)
     E = np.concatenate(([0.0], np.cumsum(work)))
     return ExcessWork(work=work, E=E, closure_tol=closure_tol, **extra)
 
 
 def _positive(value, name: str, hint: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} = {value!r} is not a number; {hint}") from None
-    if not (v > 0 and math.isfinite(v)):
-        raise InputError(f"{name} = {value!r} must be a positive finite number; {hint}")
-    return v
+    return real(value, name, lo=0.0, lo_open=True, hint=hint)
 
 
 def from_work(work_J: Sequence[float], *, closure_tol: float = CLOSURE_TOL_MEASURED) -> ExcessWork:
@@ -375,6 +377,7 @@ def from_moments(
     >>> ew.work.round(4).tolist(), round(ew.delta_W_max, 4)
     ([-34.3612, 34.3612], 34.3612)
     """
+    closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed relative residual, e.g. 1e-6")
     M_d, M_r = balance(M_d, M_r)
     D = M_d - M_r
     if boundaries is not None:

@@ -19,7 +19,7 @@ import math
 from dataclasses import asdict, dataclass
 
 from graphmethods.errors import InputError
-from graphmethods.units import n_from_omega, omega_from_n
+from graphmethods.units import DELTA_MAX, finite_result, n_from_omega, omega_from_n, real
 
 #: Rim speeds usually allowed, m/s (domain.md §6): cast iron 25–30, steel higher.
 RIM_SPEED_LIMIT = {"cast iron": 25.0, "steel": 40.0}
@@ -27,16 +27,10 @@ RIM_SPEED_LIMIT = {"cast iron": 25.0, "steel": 40.0}
 DENSITY = {"cast iron": 7200.0, "steel": 7850.0}
 
 
-def _finite(value, name: str, *, positive: bool = False, hint: str = "") -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} = {value!r} is not a number{'; ' + hint if hint else ''}") from None
-    if not math.isfinite(v):
-        raise InputError(f"{name} = {value!r} is not finite{'; ' + hint if hint else ''}")
-    if positive and not v > 0:
-        raise InputError(f"{name} = {value!r} must be positive{'; ' + hint if hint else ''}")
-    return v
+def _finite(value, name: str, *, positive: bool = False, hint: str = "", tiny_ok: bool = False) -> float:
+    # the toolkit's one policy for numbers that enter (graphmethods.units.real): no bools, finite,
+    # magnitudes 1e-100 … 1e100 (only the upper bound for a numerator or a term: tiny_ok)
+    return real(value, name, lo=0.0 if positive else None, lo_open=positive, hint=hint, tiny_ok=tiny_ok)
 
 
 def mean_speed(*, n_rpm: float | None = None, omega_m: float | None = None) -> float:
@@ -52,12 +46,15 @@ def mean_speed(*, n_rpm: float | None = None, omega_m: float | None = None) -> f
     return _finite(omega_m, "omega_m", positive=True, hint="the mean angular speed in rad/s")
 
 
-def check_delta(delta: float) -> float:
-    """Validate a coefficient of fluctuation: 0 < δ < 2 (ω_min = ω_m(1 − δ/2) must stay positive)."""
-    d = _finite(delta, "delta", hint="the coefficient of fluctuation, e.g. 0.05 or 1/300")
-    if not 0 < d < 2:
-        raise InputError(f"delta = {delta!r} must lie between 0 and 2 (typical values 1/300 … 1/5)")
-    return d
+def check_delta(delta: float, name: str = "delta") -> float:
+    """Validate a coefficient of fluctuation: 0 < δ < 1, the one rule of the command line, the
+    problem files and the API (:data:`graphmethods.units.DELTA_MAX`; typical values 1/300 … 1/5).
+
+    >>> check_delta("1/300") == 1 / 300
+    True
+    """
+    return real(delta, name, lo=0.0, lo_open=True, hi=DELTA_MAX, hi_open=True,
+                hint="the coefficient of fluctuation of steady running, typically 1/300 … 1/5")
 
 
 @dataclass(frozen=True)
@@ -139,28 +136,37 @@ def flywheel(
     >>> round(flywheel(575.0, delta=0.06, n_rpm=120.0).J_F, 2)
     60.69
     """
-    dW = _finite(delta_W_max, "delta_W_max")
+    dW = _finite(delta_W_max, "delta_W_max", tiny_ok=True)
     if dW < 0:
         raise InputError(f"delta_W_max = {dW:g} J must not be negative (it is E_max − E_min)")
     d = check_delta(delta)
     w = mean_speed(n_rpm=n_rpm, omega_m=omega_m)
-    J_e = _finite(J_e, "J_e", hint="the mechanism's reduced inertia in kg·m²")
+    J_e = _finite(J_e, "J_e", hint="the mechanism's reduced inertia in kg·m²", tiny_ok=True)
     if J_e < 0:
         raise InputError(f"J_e = {J_e:g} kg·m² must not be negative")
-    J_total = dW / (w * w * d)
+    J_total = finite_result(dW / (w * w * d), "the required inertia ΔW_max/(ω_m²[δ])", unit="kg·m²")
     return Flywheel(J_F=J_total - J_e, J_total=J_total, J_e=J_e, delta_W_max=dW, delta=d, omega_m=w)
 
 
 def fluctuation(delta_W_max: float, *, J: float, n_rpm: float | None = None, omega_m: float | None = None) -> float:
     """The coefficient of fluctuation δ = ΔW_max / (ω_m² J) that a total inertia J gives.
 
+    The result obeys the rule of :func:`check_delta`: an inertia too small for steady running
+    (δ ≥ 1) is refused, as ``--delta`` refuses such a δ.
+
     >>> round(fluctuation(575.0, J=60.68716728577524, n_rpm=120.0), 10)
     0.06
     """
-    dW = _finite(delta_W_max, "delta_W_max")
+    dW = _finite(delta_W_max, "delta_W_max", tiny_ok=True)
+    if dW < 0:
+        raise InputError(f"delta_W_max = {dW:g} J must not be negative (it is E_max − E_min)")
     J = _finite(J, "J", positive=True, hint="the total inertia on the shaft in kg·m²")
     w = mean_speed(n_rpm=n_rpm, omega_m=omega_m)
-    return dW / (w * w * J)
+    d = finite_result(dW / (w * w * J), "δ = ΔW_max/(ω_m² J)")
+    if d >= DELTA_MAX:
+        raise InputError(f"J = {J:g} kg·m² is too small for steady running: it gives δ = {d:.4g}, and δ must stay "
+                         f"below {DELTA_MAX:g}; the total inertia must exceed ΔW_max/ω_m² = {dW / (w * w):.4g} kg·m²")
+    return d
 
 
 def transfer(J_F: float, *, omega_from: float, omega_to: float) -> float:
@@ -172,7 +178,7 @@ def transfer(J_F: float, *, omega_from: float, omega_to: float) -> float:
     J_F = _finite(J_F, "J_F")
     w = _finite(omega_from, "omega_from", positive=True)
     wi = _finite(omega_to, "omega_to", positive=True)
-    return J_F * (w / wi) ** 2
+    return finite_result(J_F * (w / wi) ** 2, "J_F (ω/ω_i)²", unit="kg·m²")
 
 
 # --------------------------------------------------------------------- sizing

@@ -26,7 +26,7 @@ from typing import Callable, Iterable, Sequence
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.units import finite_array
+from graphmethods.units import finite_array, real
 
 TWO_PI = 2.0 * math.pi
 
@@ -112,14 +112,19 @@ class MomentCurve:
     @classmethod
     def steps(cls, steps: Iterable[Sequence[float]]) -> "MomentCurve":
         """Piecewise-constant curve from ``[(phi_start, phi_end, M), ...]`` (contiguous, in order)."""
-        rows = [tuple(s) for s in steps]
+        if isinstance(steps, (str, bytes)) or not hasattr(steps, "__iter__"):
+            raise InputError(f"steps: give a list of (phi_start, phi_end, M) steps, got {steps!r}")
+        try:
+            rows = [tuple(s) for s in steps]
+        except TypeError:
+            raise InputError(f"steps: each step is (phi_start, phi_end, M), got {steps!r}") from None
         if not rows:
             raise InputError("steps: give at least one (phi_start, phi_end, M) step")
         phi, M = [], []
         for i, row in enumerate(rows):
             if len(row) != 3:
                 raise InputError(f"steps[{i}] = {row!r}: each step is (phi_start, phi_end, M)")
-            a, b, m = (float(v) for v in row)
+            a, b, m = (real(v, f"steps[{i}][{j}]", tiny_ok=True) for j, v in enumerate(row))
             if not b > a:
                 raise InputError(f"steps[{i}]: phi_end {b:g} must exceed phi_start {a:g}")
             if i and abs(a - phi[-1]) > 1e-12 * max(1.0, abs(a)):
@@ -131,7 +136,9 @@ class MomentCurve:
     @classmethod
     def constant(cls, M: float, *, period: float = TWO_PI, start: float = 0.0) -> "MomentCurve":
         """A constant moment over one period."""
-        return cls(np.array([start, start + period]), np.array([float(M), float(M)]))
+        M, start = real(M, "M", tiny_ok=True), real(start, "start", tiny_ok=True)
+        period = real(period, "period", lo=0.0, lo_open=True)
+        return cls(np.array([start, start + period]), np.array([M, M]))
 
     @classmethod
     def function(

@@ -45,7 +45,8 @@ from typing import Callable
 
 import numpy as np
 
-from graphmethods.errors import InputError, MotionError
+from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded
+from graphmethods.units import real
 
 __all__ = [
     "ReducedModel",
@@ -346,10 +347,10 @@ def _check_count(m, name, minimum):
 
 
 def _check_positive(value, name):
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) \
-            or not math.isfinite(value) or value <= 0:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name}: give a positive finite number, got {value!r}")
-    return float(value)
+    # the toolkit's number policy (graphmethods.units.real): finite, magnitudes 1e-100 … 1e100
+    return real(value, name, lo=0.0, lo_open=True, hint="give a positive finite number")
 
 
 # --------------------------------------------------------------------------------------------
@@ -625,7 +626,7 @@ class _Cycle:
             # The identity always gives J_F + min J_e ≥ 0 (take φ at min J_e in both brackets);
             # equality means the machine alone already runs within [δ] at some speed profile.
             if J_F + J_min <= 1e-9 * (abs(J_F) + float(self.Jx.max())):
-                raise MotionError(f"no flywheel is needed: the machine's own inertia keeps δ below "
+                raise NoFlywheelNeeded(f"no flywheel is needed: the machine's own inertia keeps δ below "
                                   f"[δ] = {delta:g} (the support-line identity gives J_F = {J_F:.6g} "
                                   f"kg·m² = −min J_e: zero total inertia where J_e is least)")
             return

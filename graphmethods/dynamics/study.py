@@ -32,7 +32,8 @@ from graphmethods.dynamics.motion import FlywheelResult, ReducedModel, exact_fly
 from graphmethods.dynamics.reduction import (ReducedInertia, load_switch_angles, load_work, reduced_inertia,
                                              resisting_moment)
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
-from graphmethods.errors import InputError
+from graphmethods.errors import InputError, NoFlywheelNeeded
+from graphmethods.units import MAX_POSITIONS, count
 
 TWO_PI = 2.0 * math.pi
 
@@ -63,10 +64,14 @@ class Study:
     """
 
     def __init__(self, case, *, positions: int = 12, estimate: bool = True):
-        if isinstance(positions, bool) or not isinstance(positions, (int, np.integer)) or positions < 3:
-            raise InputError(f"the number of positions must be an integer ≥ 3, got {positions!r}")
+        from graphmethods.kinematics.case import Case
+
+        if not isinstance(case, Case):
+            raise InputError(f"a Study needs a problem read with read_case(path) or case_from_dict(dict), "
+                             f"got {type(case).__name__}")
         self.case = case
-        self.m = int(positions)
+        self.m = count(positions, "the number of positions", low=3, high=MAX_POSITIONS,
+                       why="checked before any work; textbooks use 8 to 48")
         self.estimate = estimate
         self.computed: list[str] = []
 
@@ -179,7 +184,7 @@ class Study:
                          mu_J=mu_J, mu_T=mu_T, phi=self.phi)
         m_fine = min(REFINE * self.m, FINE_CAP)
         if self.estimate and m_fine > self.m:
-            fine = Study(self.case, positions=m_fine, estimate=False)
+            fine = _fine_study(self.case, m_fine)
             wb = with_refined_estimate(wb, fine.wittenbauer.J_F, m_fine)
         return wb
 
@@ -195,7 +200,11 @@ class Study:
         With ``exact`` (default) the exact flywheel is solved too, and each method's relative
         error against it is reported; without it, nothing exact is computed.
         """
-        wb, fe = self.wittenbauer, self.flywheel_energy
+        fe = self.flywheel_energy
+        try:
+            wb = self.wittenbauer
+        except NoFlywheelNeeded as exc:      # an answer, not an error
+            return self._no_flywheel_summary(fe, str(exc))
         out = {
             "positions": self.m,
             "n_rpm": self.case.n_rpm,
@@ -216,7 +225,10 @@ class Study:
             "J_e_mean": float(np.mean(self.J_e[:-1])),
         }
         if exact:
-            ex = self.exact
+            try:
+                ex = self.exact
+            except NoFlywheelNeeded as exc:
+                return self._no_flywheel_summary(fe, str(exc))
             out.update({
                 "J_F_exact": ex.J_F,
                 "J_F_energy_rel_error": (fe.J_F - ex.J_F) / ex.J_F,
@@ -226,3 +238,22 @@ class Study:
                 "switch_angles_deg": [math.degrees(a) for a in self.switch_angles],
             })
         return out
+
+
+    def _no_flywheel_summary(self, fe, why: str) -> dict:
+        """The summary when the machine's own inertia keeps δ within [δ]: J_F = 0 is the answer."""
+        return {
+            "positions": self.m, "n_rpm": self.case.n_rpm, "omega_m": self.omega_m, "delta": self.delta,
+            "M_d": self.M_d, "delta_W_max": self.excess_work.delta_W_max,
+            "flywheel_needed": False, "J_F_energy": fe.J_F, "J_F_wittenbauer": 0.0, "J_F_exact": 0.0,
+            "J_e_min": float(self.J_e.min()), "J_e_max": float(self.J_e.max()),
+            "J_e_mean": float(np.mean(self.J_e[:-1])),
+            "note": "no flywheel is needed: the mechanism's own inertia keeps δ within [δ] (J_F = 0); " + why,
+        }
+
+def _fine_study(case, m: int) -> Study:
+    """The finer construction behind the error estimate: REFINE·m positions, beyond the user's limit
+    MAX_POSITIONS (the kinematics core checks its own, MAX_POSITIONS_COMPUTED)."""
+    fine = Study.__new__(Study)
+    fine.case, fine.m, fine.estimate, fine.computed = case, int(m), False, []
+    return fine

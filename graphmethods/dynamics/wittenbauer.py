@@ -51,7 +51,8 @@ from graphmethods.dynamics.motion import (
     _check_positive,
     _frozen,
 )
-from graphmethods.errors import InputError, MotionError, UnbalancedCycleError
+from graphmethods.errors import InputError, NoFlywheelNeeded, UnbalancedCycleError
+from graphmethods.units import DELTA_MAX, MAGNITUDE_MAX
 
 __all__ = ["Tangency", "WittenbauerResult", "wittenbauer", "wittenbauer_from_model"]
 
@@ -225,8 +226,14 @@ def _support(J, dT, omega_m, delta, tangents, rtol):
 
 
 def _check_arrays(J_e, delta_T, closure_rtol):
-    J = np.asarray(J_e, dtype=float)
-    dT = np.asarray(delta_T, dtype=float)
+    try:
+        J = np.asarray(J_e, dtype=float)
+        dT = np.asarray(delta_T, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError(f"J_e and delta_T: give two columns of numbers (got {J_e!r:.60} and {delta_T!r:.60})") from None
+    if np.abs(J).max(initial=0.0) > MAGNITUDE_MAX or np.abs(dT).max(initial=0.0) > MAGNITUDE_MAX:
+        raise InputError(f"J_e and delta_T: values beyond ±{MAGNITUDE_MAX:g} are outside the range the construction "
+                         f"computes with")
     if J.ndim != 1 or dT.shape != J.shape or J.size < 3:
         raise InputError(f"J_e and delta_T: give two 1-D columns of equal length m + 1 ≥ 3 for "
                          f"positions 0…m (got shapes {J.shape} and {dT.shape})")
@@ -262,7 +269,7 @@ def _construct(J, dT, phi, *, omega_m, delta, mu_J, mu_T, tangents, rtol):
     # D ≥ 0 always (take the vertex of least J_e in both extremes); D = 0 means the rays meet
     # on the curve itself, at its vertex of least J_e: zero total inertia there, no origin O1
     if s["D"] <= 1e-9 * max(float(np.max(np.abs(dT))), s["a_max"] * float(J.max()), 1e-300):
-        raise MotionError(
+        raise NoFlywheelNeeded(
             f"no flywheel is needed: the rays meet on the curve (J_F + min J_e = "
             f"{s['D'] / (omega_m**2 * delta):.3g} kg·m²), so there is no origin O1; the machine's "
             f"own inertia keeps the fluctuation below δ = {delta:g}")
@@ -308,8 +315,8 @@ def _construct(J, dT, phi, *, omega_m, delta, mu_J, mu_T, tangents, rtol):
 def _check_common(omega_m, delta, mu_J, mu_T, tangents, rtol):
     omega_m = _check_positive(omega_m, "omega_m")
     delta = _check_positive(delta, "delta")
-    if delta >= 2:
-        raise InputError(f"delta = {delta!r}: the coefficient of fluctuation must be below 2")
+    if delta >= DELTA_MAX:       # the one rule of graphmethods.units for δ
+        raise InputError(f"delta = {delta!r}: the coefficient of fluctuation must be below {DELTA_MAX:g}")
     mu_J = _check_positive(mu_J, "mu_J")
     mu_T = _check_positive(mu_T, "mu_T")
     if tangents not in _FACTORS:

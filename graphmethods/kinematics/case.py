@@ -38,7 +38,6 @@ M3 on the rocker while its swing ψ is between moment_from·ψ_max and moment_to
 
 from __future__ import annotations
 
-import json
 import math
 import pathlib
 from dataclasses import dataclass
@@ -52,7 +51,7 @@ from graphmethods.kinematics.shaper import Shaper
 from graphmethods.kinematics.slider_crank import SliderCrank
 from graphmethods.kinematics.slotted_lever import SlottedLever
 from graphmethods.titles import Title
-from graphmethods.units import omega_from_n, parse_number
+from graphmethods.units import DELTA_MAX, angle_deg, finite_result, json_value, omega_from_n, real
 
 
 @dataclass(frozen=True)
@@ -279,15 +278,18 @@ def _value(source: str, key: str, raw, check, meaning: str):
         return int(raw)
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise InputError(f"{where} must be a number; got {raw!r}")
-    value = parse_number(raw, name=where)
+    if key.endswith("_deg"):       # any finite angle, reduced exactly modulo 360
+        return angle_deg(raw, where)
+    # the toolkit's one policy for numbers (graphmethods.units.real), then the key's physical range
+    value = real(raw, where)
     if check == "positive" and not value > 0:
         raise InputError(f"{where} must be > 0; got {raw!r}")
     if check == "nonneg" and not value >= 0:
         raise InputError(f"{where} must be ≥ 0; got {raw!r}")
     if check == "fraction" and not 0.0 <= value <= 1.0:
         raise InputError(f"{where} must be a fraction between 0 and 1; got {raw!r}")
-    if check == "delta" and not 0.0 < value < 1.0:
-        raise InputError(f"{where} must be between 0 and 1 (e.g. 0.04 or 1/25); got {raw!r}")
+    if check == "delta" and not 0.0 < value < DELTA_MAX:
+        raise InputError(f"{where} must be between 0 and {DELTA_MAX:g} (e.g. 0.04 or 1/25); got {raw!r}")
     return value
 
 
@@ -333,13 +335,17 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     if not isinstance(data, Mapping):
         raise InputError(f"{source}: a problem file must hold one JSON object {{...}}, got {type(data).__name__}")
     kind = data.get("kind", "slider_crank")
-    if kind not in SPECS:
+    if not isinstance(kind, str) or kind not in SPECS:
         raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}")
     v = _validated(data, kind, source)
     title = Title.of(data.get("name"), where=f"{source}: key 'name'")
     sense = 1 if v["sense"] == "ccw" else -1
     common = dict(kind=kind, title=title, about=data.get("about", ""), source=source,
                   n_rpm=v["n_rpm"], delta=v["delta"])
+    omega = finite_result(omega_from_n(v["n_rpm"]), f"{source}: ω = πn/30 from key 'n_rpm'", unit="rad/s")
+    if not 0.0 < omega * omega < math.inf:
+        raise InputError(f"{source}: key 'n_rpm' = {v['n_rpm']:g} rev/min: ω² = (πn/30)² leaves the float range; "
+                         f"give the mean speed in rev/min between about 1e-90 and 1e90")
     try:
         if kind == "slider_crank":
             mech = SliderCrank(r=v["r"], l=v["l"], e=v["e"], assembly=v["assembly"], sense=sense,
@@ -419,8 +425,4 @@ def read_case(path) -> Case:
         raise InputError(f"{p}: no such file") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(f"{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise InputError(f"{p}: not valid JSON (line {exc.lineno}, column {exc.colno}: {exc.msg})") from None
-    return case_from_dict(data, source=str(p))
+    return case_from_dict(json_value(text, str(p)), source=str(p))

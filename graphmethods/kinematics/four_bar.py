@@ -139,19 +139,23 @@ class FourBar(Mechanism):
         out = []
         c_hi = (l1 * l1 + l2 * l2 - (l3 + l4) ** 2) / (2 * l1 * l2)
         c_lo = (l1 * l1 + l2 * l2 - (l3 - l4) ** 2) / (2 * l1 * l2)
-        if c_hi >= -1.0:
-            a = math.acos(min(1.0, c_hi))
+        eps = 1e-12
+        if c_hi >= -1.0 - eps:
+            a = math.acos(max(-1.0, min(1.0, c_hi)))
             if a < math.pi:
                 out.append(f"φ in ({_deg(g + a)}, {_deg(g + 2 * math.pi - a)}) where |O2A| > l3 + l4 = "
                            f"{_fmt(l3 + l4)} m (coupler and rocker cannot reach)")
             else:
                 out.append(f"φ = {_deg(g + math.pi)} where coupler and rocker come in line (toggle)")
-        if c_lo <= 1.0:
-            a = math.acos(max(-1.0, c_lo))
+        if c_lo <= 1.0 + eps:
+            a = math.acos(min(1.0, max(-1.0, c_lo)))
             if a > 0:
                 out.append(f"φ in ({_deg(g - a)}, {_deg(g + a)}) where |O2A| < |l3 − l4| = {_fmt(abs(l3 - l4))} m")
             else:
                 out.append(f"φ = {_deg(g)} where coupler and rocker fold onto each other (toggle)")
+        if not out:   # never an empty "assembly fails for ." (a change-point linkage's toggles, rounding aside)
+            out.append(f"the toggle positions, where coupler and rocker come in line (l1 = {_fmt(l1)}, "
+                       f"l2 = {_fmt(l2)}, l3 = {_fmt(l3)}, l4 = {_fmt(l4)} m)")
         return out
 
     def _check_full_turn(self) -> None:

@@ -29,6 +29,7 @@ from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics import vectors as V
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, Strokes, build_positions
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count, real
 
 
 @dataclass(frozen=True)
@@ -63,22 +64,29 @@ class PointOnLink:
                              f"e.g. ('AB', 0.13, 0.0); got {spec!r}")
         vals = []
         for what, x in zip(("distance", "angle"), spec[1:]):
-            if isinstance(x, bool) or not isinstance(x, (int, float, np.floating, np.integer)) or not math.isfinite(x):
+            if isinstance(x, bool) or not isinstance(x, (int, float, np.floating, np.integer)):
                 raise InputError(f"point {name!r}: {what} must be a finite number, got {x!r}")
-            vals.append(float(x))
+            vals.append(real(x, f"point {name!r}: {what}", tiny_ok=True))
         if vals[0] < 0:
             raise InputError(f"point {name!r}: distance must be ≥ 0 m (turn the angle by π instead), got {vals[0]}")
         return cls(name, spec[0], *vals)
 
 
+#: Largest angle in rad the API takes (files give degrees, reduced exactly modulo 360 when read).
+MAX_ANGLE_RAD = 1e6
+
+
 def _check_length(name: str, value, *, positive: bool = True, allow_zero: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name} must be a number in m, got {value!r}")
-    value = float(value)
-    if not math.isfinite(value):
-        raise InputError(f"{name} must be finite, got {value!r}")
+    # the toolkit's number policy: finite, magnitudes up to 1e100, and a length (a divisor) at least 1e-100;
+    # an offset or an angle is only a term: tiny is fine
+    value = real(value, name, tiny_ok=not positive)
     if positive and (value < 0 or (value == 0 and not allow_zero)):
         raise InputError(f"{name} must be {'≥' if allow_zero else '>'} 0 m, got {value!r}")
+    if name.startswith(("theta", "ground_angle")) and abs(value) > MAX_ANGLE_RAD:
+        raise InputError(f"{name} = {value:g} rad is beyond ±{MAX_ANGLE_RAD:g} rad; reduce it modulo 2π first "
+                         f"(or give degrees in a problem file, which are reduced exactly)")
     return value
 
 
@@ -241,9 +249,8 @@ class Mechanism:
         start = strokes.phi_start if strokes is not None else self._default_start()
         if phi is None and phi_from_start is None:
             m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
+            m = count(m, "the number of positions m", low=3, high=MAX_POSITIONS_COMPUTED,
+                      why="checked before any work; textbooks use 8 to 48")
             self._check_full_turn()
             k = np.arange(m + 1)
             tr = (2.0 * math.pi / m) * k
@@ -269,15 +276,23 @@ class Mechanism:
 
     @staticmethod
     def _angles(values, name: str) -> np.ndarray:
+        if isinstance(values, (bool, str, bytes)) or isinstance(values, np.ndarray) and values.dtype == bool:
+            raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}")
         try:
             a = np.array(values, dtype=float).reshape(-1)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}") from None
         if a.size == 0:
             raise InputError(f"{name}: give at least one crank angle")
+        if a.size > MAX_POSITIONS_COMPUTED:
+            raise InputError(f"{name}: {a.size} angles is above the limit {MAX_POSITIONS_COMPUTED}")
         bad = ~np.isfinite(a)
         if bad.any():
             raise InputError(f"{name}: angle #{int(np.argmax(bad))} is {a[bad][0]!r}; angles must be finite (rad)")
+        big = np.abs(a) > MAX_ANGLE_RAD
+        if big.any():
+            raise InputError(f"{name}: angle #{int(np.argmax(big))} = {a[big][0]:g} rad is beyond ±{MAX_ANGLE_RAD:g} rad; "
+                             f"reduce it modulo 2π first")
         return a
 
     def _check_full_turn(self) -> None:
@@ -357,7 +372,7 @@ class Mechanism:
         if not isinstance(positions, Positions) or positions.mechanism != self:
             raise InputError("velocity_plans needs Positions of this same linkage (from self.positions(...))")
         if isinstance(omega_1, bool) or not isinstance(omega_1, (int, float, np.floating, np.integer)) \
-                or not math.isfinite(omega_1) or omega_1 <= 0:
+                or not math.isfinite(real(omega_1, "omega_1")) or omega_1 <= 0:
             raise InputError(f"omega_1 is the crank speed in rad/s and must be > 0 (use sense=-1 for a "
                              f"clockwise crank), got {omega_1!r}")
         if not (0.0 <= sin_threshold < 1.0):

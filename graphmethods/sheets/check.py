@@ -63,7 +63,7 @@ from graphmethods.scene.elements import Element, Line, Point
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets import worksheets as ws
 from graphmethods.titles import Title
-from graphmethods.units import omega_from_n
+from graphmethods.units import MAX_POSITIONS, count, json_text, omega_from_n, real
 
 TOL_MM = 0.5
 TOL_REL = 1e-3
@@ -140,6 +140,19 @@ SCHEMA = {
                 "omega_min_at", "J_F", "v_A", "v_B", "v_BA", "v_S2", "omega_2", "omega_2_sense"),
 }
 TOP_LEVEL = ("problem", "student")
+
+#: What each key of the answers file holds (the number policy of graphmethods.units applies to all):
+#: "scale" a positive number, "count" the number of positions m, "index" a position number,
+#: "list" a flat list of numbers, "xy" two numbers, "at" a point label, an angle or a list of positions,
+#: "text" text; any other key a number.
+KEY_KINDS = {
+    "size": "text", "orientation": "text", "omega_2_sense": "text",
+    "mu_M": "scale", "mu_phi": "scale", "mu_phi_deg": "scale", "mu_E": "scale", "mu_v": "scale",
+    "mu_J": "scale", "mu_T": "scale", "step_mm": "scale",
+    "positions": "count", "position": "index",
+    "areas_mm2": "list", "arrows_mm": "list", "works_J": "list", "origin_mm": "xy",
+    "omega_max_at": "at", "omega_min_at": "at",
+}
 
 
 # ----------------------------------------------------------------------------- TOML
@@ -307,7 +320,7 @@ def read_answers(path) -> dict:
     >>> import pathlib
     >>> a = read_answers(pathlib.Path(__file__).parents[1] / "problems" / "data" / "answers" / "w3_correct.toml")
     >>> a["moment_diagram"]["areas_mm2"], a["results"]["omega_max_at"]
-    ((-1560, 1590), 0.0)
+    ((-1560.0, 1590.0), 0.0)
     """
     p = pathlib.Path(path)
     try:
@@ -339,22 +352,66 @@ def validate_answers(data: dict, *, source: str = "<answers>") -> dict:
         for k, v in value.items():
             if k not in SCHEMA[key]:
                 raise InputError(f"{source}: [{key}] has no key {k!r}; its keys are {', '.join(SCHEMA[key])}")
-            sec[k] = _answer_value(v, f"{source}: [{key}] {k}")
+            sec[k] = _typed_answer(KEY_KINDS.get(k, "number"), _answer_value(v, f"{source}: [{key}] {k}"),
+                                   f"{source}: [{key}] {k}")
         out[key] = sec
     return out
 
 
-def _answer_value(v, where: str):
+def _typed_answer(kind: str, v, where: str):
+    """One answer checked for what its key holds (see :data:`KEY_KINDS`), before any work."""
+    if kind == "text":
+        if not isinstance(v, str):
+            raise InputError(f"{where} must be text, got {v!r}")
+        return v
+    if kind == "at":
+        items = v if isinstance(v, tuple) else (v,)
+        if not items:
+            raise InputError(f"{where}: give a point label (\"b\"), an angle in degrees or positions [0, 6]")
+        for x in items:
+            if isinstance(x, tuple):
+                raise InputError(f"{where} must be a label, a number or a flat list, got {v!r}")
+        return v
+    if kind == "list":
+        if not isinstance(v, tuple):
+            raise InputError(f"{where} must be a list of numbers, e.g. [10, -110, 20], got {v!r}")
+        return tuple(real(x, f"{where}[{i}]") if not isinstance(x, (str, tuple)) else
+                     _not_a_number(x, f"{where}[{i}]") for i, x in enumerate(v))
+    if kind == "xy":
+        if not isinstance(v, tuple) or len(v) != 2:
+            raise InputError(f"{where} must be two numbers [x, y] in mm, got {v!r}")
+        return tuple(real(x, f"{where}[{i}]") if not isinstance(x, (str, tuple)) else
+                     _not_a_number(x, f"{where}[{i}]") for i, x in enumerate(v))
+    if isinstance(v, (str, tuple)):
+        _not_a_number(v, where)
+    if kind == "count":
+        return count(v, where, low=3, high=MAX_POSITIONS, why="the number of positions m")
+    if kind == "index":
+        return count(v, where, low=0, high=MAX_POSITIONS, why="a position number")
+    if kind == "scale":
+        return real(v, where, lo=0.0, lo_open=True, hint="a scale or a step is a positive number")
+    return real(v, where)
+
+
+def _not_a_number(v, where: str):
+    raise InputError(f"{where} must be a number, got {v!r}")
+
+
+def _answer_value(v, where: str, depth: int = 0):
     if isinstance(v, bool):
         raise InputError(f"{where}: expected a number or text, got {v!r}")
-    if isinstance(v, (int, float)):
+    if isinstance(v, int):
+        return v                          # its size is checked by the number policy (units.real)
+    if isinstance(v, float):
         if not math.isfinite(v):
             raise InputError(f"{where}: {v!r} is not finite")
-        return float(v) if isinstance(v, float) else v
+        return v
     if isinstance(v, str):
         return v
     if isinstance(v, (list, tuple)):
-        return tuple(_answer_value(x, where) for x in v)
+        if depth >= 2:
+            raise InputError(f"{where}: lists nested too deeply; give a flat list of numbers")
+        return tuple(_answer_value(x, where, depth + 1) for x in v)
     raise InputError(f"{where}: expected a number, text or list, got {v!r}")
 
 
@@ -560,7 +617,7 @@ class CheckReport:
                 "notes": list(self.notes)}
 
     def to_json(self) -> str:
-        return json.dumps(self.to_dict(), indent=1, ensure_ascii=False)
+        return json_text(self.to_dict(), indent=1, ensure_ascii=False)
 
     def _rows(self):
         for it in self.items:
@@ -712,12 +769,18 @@ class _Checker:
 
     def position(self, key: str, label: str, accepted, student, *, own_accepted=None, own_from: str = "") -> Item:
         acc = [str(a) for a in accepted]
-        s = student if isinstance(student, str) else _fmt(student)
-        if isinstance(student, float) and student.is_integer():
-            s = str(int(student))
-        if s in acc:
+
+        def one(x) -> str:
+            if isinstance(x, float) and x.is_integer():
+                return str(int(x))
+            return x.strip() if isinstance(x, str) else _fmt(x)
+
+        given = [one(x) for x in student] if isinstance(student, tuple) else [one(student)]
+        s = " and ".join(given)          # a list, as study prints it ([0, 6]): every one must be accepted
+        own = None if own_accepted is None else [str(a) for a in own_accepted]
+        if all(g in acc for g in given):
             verdict, note = "ok", ""
-        elif own_accepted is not None and s in [str(a) for a in own_accepted]:
+        elif own is not None and all(g in own for g in given):
             verdict, note = "carried", f"follows from {own_from}"
         else:
             verdict, note = "wrong", ""
@@ -863,10 +926,13 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
         s = ck.get("results", key)
         if s is None:
             continue
-        if isinstance(s, str):
+        if isinstance(s, tuple) and not all(isinstance(x, str) for x in s):
+            raise InputError(f"[results] {key}: give one point label (e.g. \"b\") or one angle in degrees, "
+                             f"or a list of labels; got {s!r}")
+        if isinstance(s, (str, tuple)):
             acc = _levels_accepted(E, L, tol_dW, which)
             own_acc = None if own_E is None else _levels_accepted(own_E, L, own_tol_dW, which)
-            ck.position(f"results.{key}", f"point of ω_{which}", acc, s.strip(), own_accepted=own_acc,
+            ck.position(f"results.{key}", f"point of ω_{which}", acc, s, own_accepted=own_acc,
                         own_from="the student's own levels")
         else:
             if c.phi is None:
@@ -901,7 +967,7 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
         s = ck.number("results", key)
         if s is None:
             continue
-        own = None if (om_s is None or key == "omega_m") else om_s * f_exact
+        own = None if (om_s is None or key == "omega_m" or not om_s > 0) else om_s * f_exact
         hyps = [("n_as_omega", n_rpm * f_exact), ("degrees_as_radians", 6 * n_rpm * f_exact)]
         if key != "omega_m":
             hyps.append(("delta_not_halved", w * f_wrong))
@@ -912,7 +978,7 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
         J_exp = c.delta_W_max / (w * w * d) - p.J_e
         tol = _rel(tol_dW / (w * w * d), J_exp)
         dW_base = c.delta_W_max if dW_student is None else dW_student
-        w_own = w if om_s is None else om_s
+        w_own = w if om_s is None or not om_s > 0 else om_s     # ω_m = 0 written: no result follows from it
         own = None
         if dW_student is not None or om_s is not None:
             own = dW_base / (w_own * w_own * d) - p.J_e
@@ -1158,6 +1224,11 @@ def check(problem, answers) -> CheckReport:
             _check_em(ck, data)
     if not ck.items:
         raise InputError("the answers hold nothing to check; see graphmethods/problems/data/answers for examples")
+    for it in ck.items:               # results are checked finite before they are reported
+        for what, v in (("expected", it.expected), ("student", it.student), ("tolerance", it.tolerance)):
+            if isinstance(v, float) and not math.isfinite(v):
+                raise InputError(f"{it.key}: the {what} value came out {v}: the answers' scales lie outside the "
+                                 f"range the check can compute with; give scales of less extreme magnitude")
     named = answers.get("problem")
     if named and named.strip().lower() != str(data.id).lower():
         ck.notes.append(f"the answers file names problem {named!r}; checked against {data.id}")

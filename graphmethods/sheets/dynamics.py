@@ -476,6 +476,8 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
     prefix : str
         Prepended to element names (several graphs on one sheet).
     """
+    if not y_to > y_from:    # every value the same (e.g. no load: M_d = M_r = 0): an axis 10 mm long
+        y_from, y_to = y_from - 5.0 * s_Y.per_mm, y_to + 5.0 * s_Y.per_mm
     f = Frame(origin, s_phi, s_Y)
     period = float(phi_k[-1] - phi_k[0])
     x_axis_y = f.pt(0.0, axis_level)[1]

@@ -37,11 +37,8 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import pathlib
 import re
-import secrets
-import shutil
 from dataclasses import dataclass, field, fields, replace
 from fractions import Fraction
 from functools import cached_property
@@ -58,7 +55,7 @@ from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
 from graphmethods.titles import Title
-from graphmethods.units import omega_from_n
+from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
 _KIND_CODE = {"indicator": 1, "step-moment": 2, "velocity-plan": 3, "wittenbauer": 4}
@@ -327,7 +324,7 @@ class Variant:
 
     def to_json(self) -> str:
         """:meth:`to_dict` as indented JSON text (deterministic)."""
-        return json.dumps(self.to_dict(), indent=1, ensure_ascii=False) + "\n"
+        return json_text(self.to_dict(), indent=1, ensure_ascii=False) + "\n"
 
 
 class _FlywheelVariant(Variant):
@@ -775,7 +772,7 @@ _GENERATORS: dict[str, Callable] = {"indicator": _gen_indicator, "step-moment": 
 
 
 def _key(params: dict) -> str:
-    return json.dumps(params, sort_keys=True)
+    return json.dumps(params, sort_keys=True, allow_nan=False)
 
 
 def _check_kind(kind: str) -> str:
@@ -784,9 +781,11 @@ def _check_kind(kind: str) -> str:
     return kind
 
 
-def _check_count(value, name: str, low: int) -> int:
+def _check_count(value, name: str, low: int, high: int = MAX_VARIANTS) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
         raise InputError(f"{name} must be an integer ≥ {low}, got {value!r}")
+    if value > high:
+        raise InputError(f"{name} = {value} is above the limit {high} (checked before any variant is built)")
     return int(value)
 
 
@@ -803,7 +802,7 @@ def variants(kind: str, *, count: int, seed: int) -> tuple[Variant, ...]:
     """
     _check_kind(kind)
     count = _check_count(count, "the number of variants", 1)
-    seed = _check_count(seed, "the seed", 0)
+    seed = _check_count(seed, "the seed", 0, high=2**63 - 1)
     gen, seen, out = _GENERATORS[kind], set(), []
     for number in range(1, count + 1):
         for attempt in range(100):
@@ -833,6 +832,10 @@ def parse_id(text: str) -> Variant | None:
     m = re.fullmatch(r"([a-z-]+):(\d+):(\d+)", str(text).strip())
     if not m or m.group(1) not in KINDS:
         return None
+    if len(m.group(3)) > 6 or int(m.group(3)) > MAX_VARIANTS:
+        raise InputError(f"{text}: variant number {m.group(3)[:20]} is above the limit {MAX_VARIANTS} of a worksheet set")
+    if len(m.group(2)) > 19 or int(m.group(2)) > 2**63 - 1:
+        raise InputError(f"{text}: seed {m.group(2)[:20]}… is above the limit 2**63 − 1")
     return variant(m.group(1), seed=int(m.group(2)), number=int(m.group(3)))
 
 
@@ -1887,9 +1890,16 @@ def file_names(ws: Worksheet) -> dict[str, object]:
     return out
 
 
-def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress=None) -> list[pathlib.Path]:
+def dxf_names(kind: str, n: int) -> list[str]:
+    """The DXF pages of a class set of ``n`` variants, relative to its folder (student, key, ...)."""
+    return [f"dxf/{kind}-{i:02d}-{part}.dxf" for i in range(1, n + 1) for part in ("student", "key")]
+
+
+def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress=None,
+                    dxf: bool = False) -> list[pathlib.Path]:
     """Write the class set into ``out_dir``: one PDF (students' pages, then keys), an SVG per page in
-    ``svg/``, a problem file per variant in ``problems/`` (``graphmethods check`` reads them).
+    ``svg/``, a problem file per variant in ``problems/`` (``graphmethods check`` reads them), and
+    with ``dxf`` every page as DXF in ``dxf/`` (1 unit = 1 mm, for students who draw in CAD).
 
     Everything is built in a temporary folder beside ``out_dir`` and moved in at the end, so an error
     leaves nothing behind; existing files are never replaced unless ``overwrite``.
@@ -1907,42 +1917,36 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json']
     """
     from graphmethods.render import pdf, svg
+    from graphmethods.render.files import write_set
 
+    if str(out_dir).strip() == "":
+        raise InputError("the worksheet folder name is empty; give a folder (it is created if missing)")
     out = pathlib.Path(out_dir)
     if out.exists() and not out.is_dir():
         raise InputError(f"{out} is a file; give a folder for the worksheet")
-    parent = out.parent if str(out.parent) else pathlib.Path(".")
-    if not parent.is_dir():
-        raise InputError(f"cannot write into {out}: folder {parent} does not exist; create it first")
     files = file_names(ws)
     existing = [name for name in files if (out / name).exists()]
     if existing and not overwrite:
         more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
         raise OutputExistsError(f"{', '.join(str(out / e) for e in existing[:3])}{more} exist; use --force "
                                 f"(overwrite=True) to replace them, or another folder")
-    tmp = parent / f".{out.name}.{secrets.token_hex(6)}.tmp"
-    tmp.mkdir()
-    try:
-        for sub in ("svg", "problems"):
-            (tmp / sub).mkdir()
-        for name, obj in files.items():
-            if isinstance(obj, list):
-                (tmp / name).write_bytes(pdf.to_bytes(_Reporting(obj, progress)))
-            elif isinstance(obj, Scene):
-                (tmp / name).write_bytes(svg.to_bytes(obj))
-            else:
-                (tmp / name).write_text(obj.to_json(), encoding="utf-8")
-        if not out.exists():
-            os.rename(tmp, out)
+    blobs: dict[str, bytes] = {}
+    for name, obj in files.items():
+        if isinstance(obj, list):
+            blobs[name] = pdf.to_bytes(_Reporting(obj, progress))
+        elif isinstance(obj, Scene):
+            blobs[name] = svg.to_bytes(obj)
         else:
-            for sub in ("svg", "problems"):
-                (out / sub).mkdir(exist_ok=True)
-            for name in files:
-                target = out / name
-                if target.exists() and not overwrite:     # appeared meanwhile
-                    raise OutputExistsError(f"{target} exists; use --force to replace it")
-                os.replace(tmp / name, target)
-    finally:
-        if tmp.exists():
-            shutil.rmtree(tmp, ignore_errors=True)
+            blobs[name] = obj.to_json().encode("utf-8")
+    if dxf:
+        from graphmethods.render import dxf as dxf_writer
+
+        pages = [s for pair in zip(ws.students, ws.keys) for s in pair]
+        blobs.update((name, dxf_writer.to_bytes(s)) for name, s in zip(dxf_names(ws.kind, len(ws.variants)), pages))
+    # the old set's variant files that the new set no longer has (a class of 30 replaced by one of 5)
+    stale = [f"{sub}/{p.name}" for sub, pattern in (("svg", f"{ws.kind}-*-student.svg"), ("svg", f"{ws.kind}-*-key.svg"),
+                                                    ("problems", f"{ws.kind}-*.json"), ("dxf", f"{ws.kind}-*.dxf"))
+             for p in sorted((out / sub).glob(pattern))
+             if re.fullmatch(rf"{ws.kind}-\d+(-student|-key)?\.(svg|json|dxf)", p.name)]
+    write_set(out, blobs, overwrite=overwrite, stale=stale if overwrite else (), what="worksheet folder")
     return [out / name for name in files]
