@@ -58,6 +58,7 @@ from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
 from graphmethods.titles import Title
+from graphmethods.sheets import answers
 from graphmethods.units import omega_from_n
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
@@ -1866,7 +1867,7 @@ def output_names(kind: str, notation, count: int) -> list[str]:
     for k in range(1, count + 1):
         out += [f"svg/{kind}-{k:0{width}d}-student.svg", f"svg/{kind}-{k:0{width}d}-key.svg",
                 f"problems/{kind}-{k:0{width}d}.json"]
-    return out
+    return out + [f"{kind}-answers.toml"]
 
 
 def existing_outputs(out_dir, kind: str, notation, count: int) -> list[pathlib.Path]:
@@ -1884,12 +1885,15 @@ def file_names(ws: Worksheet) -> dict[str, object]:
         out[next(names)] = s
         out[next(names)] = k
         out[next(names)] = v
+    page = ws.students[0].page
+    out[next(names)] = answers.template(ws.kind, page=(page.size, page.orientation), seed=ws.seed)
     return out
 
 
 def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress=None) -> list[pathlib.Path]:
     """Write the class set into ``out_dir``: one PDF (students' pages, then keys), an SVG per page in
-    ``svg/``, a problem file per variant in ``problems/`` (``graphmethods check`` reads them).
+    ``svg/``, a problem file per variant in ``problems/`` (``graphmethods check`` reads them), and a
+    blank answers file ``KIND-answers.toml`` (:func:`graphmethods.sheets.answers.template`).
 
     Everything is built in a temporary folder beside ``out_dir`` and moved in at the end, so an error
     leaves nothing behind; existing files are never replaced unless ``overwrite``.
@@ -1904,7 +1908,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     >>> import tempfile, pathlib
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "class"
     >>> [p.name for p in write_worksheet(worksheet("wittenbauer", variants=1, seed=3), out)]
-    ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json']
+    ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json', 'wittenbauer-answers.toml']
     """
     from graphmethods.render import pdf, svg
 
@@ -1930,6 +1934,8 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
                 (tmp / name).write_bytes(pdf.to_bytes(_Reporting(obj, progress)))
             elif isinstance(obj, Scene):
                 (tmp / name).write_bytes(svg.to_bytes(obj))
+            elif isinstance(obj, str):          # the blank answers file
+                (tmp / name).write_text(obj, encoding="utf-8")
             else:
                 (tmp / name).write_text(obj.to_json(), encoding="utf-8")
         if not out.exists():
