@@ -17,7 +17,7 @@ LAYERS = {
     "scene": 4,
     "render": 5,
     "sheets": 6,
-    "bench": 7, "cli": 8, "__main__": 9,
+    "gallery": 7, "bench": 7, "cli": 8, "__main__": 9,
 }
 
 
