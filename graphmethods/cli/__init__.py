@@ -18,6 +18,7 @@ from graphmethods.errors import GraphmethodsError
 COMMANDS = {
     "flywheel": "flywheel",
     "examples": "examples",
+    "problems": "problems",
     "kinematics": "kinematics",
     "study": "study",
     "gallery": "gallery",
@@ -32,8 +33,19 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"graphmethods: error: {message} (see graphmethods --help)\n")
 
 
+def version() -> str:
+    """The installed package's version (from its metadata), or "unknown" when it is run uninstalled."""
+    from importlib import metadata
+
+    try:
+        return metadata.version("graphmethods")
+    except metadata.PackageNotFoundError:
+        return "unknown (not installed)"
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="graphmethods", description="Exact, scale-true graphical methods of machine dynamics.")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {version()}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
     for name, module in COMMANDS.items():

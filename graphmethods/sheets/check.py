@@ -1019,7 +1019,8 @@ def check(problem, answers) -> CheckReport:
                                  "add the section with mu_J and mu_T")
             _check_em(ck, data)
     if not ck.items:
-        raise InputError("the answers hold nothing to check; see graphmethods/problems/data/answers for examples")
+        raise InputError("the answers hold nothing to check; fill in what was measured (a blank answers file: "
+                         "KIND-answers.toml, written by graphmethods worksheet)")
     named = answers.get("problem")
     if named and named.strip().lower() != str(data.id).lower():
         ck.notes.append(f"the answers file names problem {named!r}; checked against {data.id}")
