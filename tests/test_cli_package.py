@@ -81,3 +81,44 @@ def test_no_help_names_a_file_a_user_of_the_installed_package_lacks():
         text = re.sub(r"\s+", " ", text)
         for bad in ("shared/", "domain.md", "graphmethods/problems", "tests/", "cases/README", ".md §"):
             assert bad not in text, (bad, text[:80])
+
+
+# ----------------------------------------------------------------------------- notebooks
+
+def test_a_notebook_shows_the_excess_work_table_as_markdown():
+    from graphmethods.dynamics import excess_work as ew
+
+    cyc = ew.from_work([30, -70, 40])
+    md = cyc._repr_markdown_()
+    assert md == cyc.to_markdown()
+    rows = [ln for ln in md.splitlines() if ln.startswith("| ") and "–" in ln]
+    assert [r.split("|")[2].strip() for r in rows] == ["30", "-70", "40"]     # the works, in order
+    assert [r.split("|")[3].strip() for r in rows] == ["30", "-40", "0"]      # the running energy
+    assert "ΔW_max = 70 J" in md
+
+
+def test_a_notebook_shows_the_study_without_solving_the_exact_motion():
+    from graphmethods.dynamics.study import Study
+
+    study = Study(builtin.case("press"), positions=12)
+    md = study._repr_markdown_()
+    assert "exact" not in study.computed and "J_F_exact" not in md
+    cells = {ln.split("|")[1].strip(): ln.split("|")[2].strip() for ln in md.splitlines() if ln.startswith("| ")}
+    assert float(cells["J_F_wittenbauer"]) == pytest.approx(study.wittenbauer.J_F, rel=1e-5)
+    assert float(cells["delta_W_max"]) == pytest.approx(study.excess_work.delta_W_max, rel=1e-5)
+    study.exact
+    cells = {ln.split("|")[1].strip(): ln.split("|")[2].strip() for ln in study._repr_markdown_().splitlines()
+             if ln.startswith("| ")}
+    assert float(cells["J_F_exact"]) == pytest.approx(study.exact.J_F, rel=1e-5)
+
+
+def test_a_notebook_shows_the_check_report():
+    from graphmethods.sheets import check, worksheets
+
+    v = worksheets.variant("wittenbauer", seed=3, number=1)
+    a = v.answers()
+    rep = check.check(v.id, {"energy_mass": {"mu_J": v.mu_J, "mu_T": v.mu_T, "kl_mm": a["kl_mm"] + 10},
+                             "results": {"J_F": a["J_F"]}})
+    md = rep._repr_markdown_()
+    assert md == rep.to_markdown() and md.startswith(f"### Check of {v.id}")
+    assert "**wrong" in md and md.count("\n| ") == len(rep.items) + 1

@@ -215,6 +215,9 @@ class ExcessWork:
         lines += ["| " + " | ".join(r) + " |" for r in body]
         return "\n".join(lines + [""] + [f"- {s}" for s in self._summary()]) + "\n"
 
+    def _repr_markdown_(self) -> str:          # a notebook shows the table
+        return self.to_markdown()
+
     def to_text(self) -> str:
         """The excess-work table as aligned plain text.
 

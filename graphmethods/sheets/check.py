@@ -454,6 +454,9 @@ class CheckReport:
         lines += self._tail("- ")
         return "\n".join(lines) + "\n"
 
+    def _repr_markdown_(self) -> str:          # a notebook shows the report
+        return self.to_markdown()
+
     def _tail(self, bullet: str) -> list[str]:
         out = []
         if self.mistakes:
