@@ -44,6 +44,8 @@ def load(path) -> ModuleType:
     """Import one gallery script of a folder as a module (it is not on sys.path)."""
     path = pathlib.Path(path)
     spec = importlib.util.spec_from_file_location(f"graphmethods_gallery_{path.stem}", path)
+    if spec is None or spec.loader is None:
+        raise InputError(f"{path}: not a Python script that can be imported")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     _check_module(module, str(path))
