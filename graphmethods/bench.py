@@ -22,6 +22,8 @@ from typing import Callable
 
 import numpy as np
 
+from graphmethods.compat import trapezoid
+
 
 @dataclass
 class Row:
@@ -56,7 +58,7 @@ def zigzag_curves(n_points: int, n_crossings: int, *, seed: int = 0):
     M_r = 100 + 40 * np.sin(phi) + rng.normal(0, 0.01, n_points)
     k = max(n_crossings // 2, 1)
     M_d = M_r + 20 * np.sin(k * phi + 0.3)
-    M_d = M_d - (np.trapezoid(M_d - M_r, phi) / (2 * math.pi))
+    M_d = M_d - (trapezoid(M_d - M_r, phi) / (2 * math.pi))
     return phi, M_d, M_r
 
 

@@ -11,14 +11,14 @@ PKG = pathlib.Path(__file__).resolve().parents[1] / "graphmethods"
 # Layer of each top-level part of the package; a module may import only parts of
 # a lower or equal layer (equal: within its own part).
 LAYERS = {
-    "errors": 0, "units": 0, "titles": 0, "__init__": 0,
+    "errors": 0, "compat": 0, "units": 0, "titles": 0, "__init__": 0,
     "kinematics": 1,
     "dynamics": 2,
     "problems": 3,
     "scene": 4,
     "render": 5,
     "sheets": 6,
-    "bench": 7, "cli": 8, "__main__": 9,
+    "gallery": 7, "bench": 7, "cli": 8, "__main__": 9,
 }
 
 

@@ -111,6 +111,16 @@ def test_callable_moment_to_tolerance():
     assert cyc.phi.tolist() == pytest.approx([0, PI, 2 * PI], abs=1e-6)
 
 
+
+def test_a_difference_within_round_off_of_zero_starts_no_interval():
+    # M_d − M_r = 1e-14 at φ = 0 is the last bit of a balanced mean (its sign differs between numpy
+    # versions), not a crossing 1.6e-15 rad later: the intervals are [0, π] and [π, 2π] only
+    M_r = MomentCurve.points([0, PI / 2, PI, 3 * PI / 2, 2 * PI], [-1e-14, 10, 0, -10, 0])
+    cyc = ew.from_moments(M_d=MomentCurve.constant(0.0), M_r=M_r)
+    assert cyc.phi.tolist() == pytest.approx([0, PI, 2 * PI], abs=1e-12)
+    assert cyc.work.tolist() == pytest.approx([-10 * PI / 2, 10 * PI / 2], rel=1e-12)
+
+
 # ----------------------------------------------------------------- flywheel
 def test_flywheel_inverse_and_transfer():
     fw = flywheel(575.0, delta=0.06, n_rpm=120.0, J_e=5.0)

@@ -1,4 +1,7 @@
-"""Every gallery figure is a test: rebuilt, it must equal its committed SVG (after C14N)."""
+"""Every gallery figure is a test: rebuilt, it must equal its committed SVG (after C14N).
+
+The figures are the modules of graphmethods.gallery (they ship with the package); their golden
+SVGs stay in the source checkout's gallery/ folder."""
 
 import argparse
 import pathlib
@@ -7,12 +10,14 @@ import shutil
 
 import pytest
 
+import graphmethods.gallery as builtin
 from graphmethods.cli import gallery
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 
-GALLERY = pathlib.Path(__file__).resolve().parents[1] / "gallery"
-SCRIPTS = gallery.scripts(GALLERY)
+GALLERY = pathlib.Path(__file__).resolve().parents[1] / "gallery"          # the golden files
+SOURCES = pathlib.Path(builtin.__file__).parent                            # the figure modules
+NAMES = builtin.figure_names()
 REGENERATE = "graphmethods gallery --regenerate"
 
 
@@ -23,20 +28,27 @@ def _args(*argv):
     return p.parse_args(["gallery", *argv])
 
 
-@pytest.mark.parametrize("script", SCRIPTS, ids=[p.stem for p in SCRIPTS])
-def test_gallery_figure_equals_its_committed_svg(script):
-    golden = script.with_suffix(".svg")
+@pytest.mark.parametrize("name", NAMES)
+def test_gallery_figure_equals_its_committed_svg(name):
+    golden = GALLERY / f"{name}.svg"
     assert golden.exists(), f"{golden.name} is missing: run `{REGENERATE}` and commit it"
-    built = svg.to_string(gallery.build(script))
+    built = svg.to_string(gallery.build(name))
     diff = gallery.svg_diff(golden.read_text(encoding="utf-8"), built, name=golden.name)
     if diff is not None:
         shown = "\n".join(diff.splitlines()[:80])
-        pytest.fail(f"{golden.name} differs from what {script.name} builds now; if the change is intended, "
-                    f"run `{REGENERATE}` and commit the new files.\n{shown}", pytrace=False)
+        pytest.fail(f"{golden.name} differs from what graphmethods.gallery.{name} builds now; if the change is "
+                    f"intended, run `{REGENERATE}` and commit the new files.\n{shown}", pytrace=False)
+
+
+def test_every_golden_file_has_its_figure_and_the_gallery_folder_holds_no_scripts():
+    figures = set(NAMES)
+    goldens = {p.stem for p in GALLERY.glob("*.svg") if not p.stem.startswith("bench_")}
+    assert goldens == figures, f"golden files without a figure: {sorted(goldens - figures)}"
+    assert not list(GALLERY.glob("*.py"))          # the scripts live in graphmethods/gallery/ (they ship)
 
 
 def test_a_changed_svg_fails_the_comparison_with_a_readable_diff():
-    golden = SCRIPTS[0].with_suffix(".svg").read_text(encoding="utf-8")
+    golden = (GALLERY / f"{NAMES[0]}.svg").read_text(encoding="utf-8")
     changed = re.sub(r'points="(\d+)', lambda m: f'points="{int(m.group(1)) + 1}', golden, count=1)
     assert changed != golden
     diff = gallery.svg_diff(golden, changed, name="fig.svg")
@@ -56,25 +68,26 @@ def test_canonicalisation_ignores_attribute_order_and_quoting_only():
 
 
 def test_the_gallery_covers_w1_to_w4_in_three_notations():
-    names = {p.stem for p in SCRIPTS}
+    names = set(NAMES)
     for case, figs in {"w1": ("energy_indicator", "excess_work_table"), "w2": ("energy_indicator", "excess_work_table"),
                        "w3": ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph"),
                        "w4": ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph")}.items():
         for fig in figs:
             for nt in ("en", "ru", "zh"):
                 assert f"{case}_{fig}_{nt}" in names
-    for p in SCRIPTS:
-        module = gallery.load(p)
-        assert module.__doc__ and len(p.read_text(encoding="utf-8").splitlines()) < 25   # small, readable
+    for name in NAMES:
+        module = builtin.figure_module(name)
+        source = SOURCES / f"{name}.py"
+        assert module.__doc__ and len(source.read_text(encoding="utf-8").splitlines()) < 25   # small, readable
         if getattr(module, "PNG", False):
-            assert p.with_suffix(".png").exists(), f"{p.stem}.png (shown by the README) is missing"
+            assert (GALLERY / f"{name}.png").exists(), f"{name}.png (shown by the README) is missing"
 
 
 def test_cli_builds_into_a_folder_and_refuses_to_overwrite(tmp_path, capsys):
     src = tmp_path / "gal"
     src.mkdir()
     for name in ("w1_energy_indicator_zh.py", "w3_moment_diagram_ru.py"):
-        shutil.copy(GALLERY / name, src / name)
+        shutil.copy(SOURCES / name, src / name)
     out = tmp_path / "out"
     assert gallery.run(_args("--dir", str(src), "--out", str(out))) == 0
     assert sorted(p.name for p in out.iterdir()) == ["w1_energy_indicator_zh.svg", "w3_moment_diagram_ru.svg"]
@@ -92,7 +105,7 @@ def test_cli_builds_into_a_folder_and_refuses_to_overwrite(tmp_path, capsys):
 def test_cli_writes_pngs_on_request(tmp_path):
     src = tmp_path / "gal"
     src.mkdir()
-    shutil.copy(GALLERY / "w4_energy_graph_ru.py", src)
+    shutil.copy(SOURCES / "w4_energy_graph_ru.py", src)
     assert gallery.run(_args("--dir", str(src), "--out", str(tmp_path / "o"), "--png")) == 0
     assert (tmp_path / "o" / "w4_energy_graph_ru.png").read_bytes()[:4] == b"\x89PNG"
 
@@ -100,7 +113,7 @@ def test_cli_writes_pngs_on_request(tmp_path):
 def test_regenerate_rewrites_the_gallery_folder_itself(tmp_path):
     src = tmp_path / "gal"
     src.mkdir()
-    shutil.copy(GALLERY / "w2_excess_work_table_en.py", src)
+    shutil.copy(SOURCES / "w2_excess_work_table_en.py", src)
     (src / "w2_excess_work_table_en.svg").write_text("stale", encoding="utf-8")
     assert gallery.run(_args("--dir", str(src), "--regenerate")) == 0
     assert (src / "w2_excess_work_table_en.svg").read_bytes() == (GALLERY / "w2_excess_work_table_en.svg").read_bytes()
@@ -114,3 +127,18 @@ def test_cli_errors_name_the_problem(tmp_path):
     (tmp_path / "bad.py").write_text("x = 1\n", encoding="utf-8")
     with pytest.raises(InputError, match="must define build"):
         gallery.run(_args("--dir", str(tmp_path), "--out", str(tmp_path / "o")))
+
+
+def test_the_built_in_gallery_builds_every_figure_without_a_source_folder(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)                    # no gallery/ here, as after pip install
+    subset = NAMES[:3]
+    monkeypatch.setattr(builtin, "figure_names", lambda: subset)
+    assert gallery.run(_args("--out", "figs")) == 0
+    assert sorted(p.stem for p in (tmp_path / "figs").iterdir()) == subset
+    assert f"{len(subset)} figures in figs" in capsys.readouterr().out
+    for name in subset:
+        assert (tmp_path / "figs" / f"{name}.svg").read_bytes() == (GALLERY / f"{name}.svg").read_bytes()
+    with pytest.raises(InputError, match="run it from the project folder"):
+        gallery.run(_args("--regenerate"))
+    with pytest.raises(InputError, match="no built-in figure"):
+        gallery.build("w9_nothing")

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
+from graphmethods.compat import trapezoid
 from graphmethods.cli import main
 from graphmethods.dynamics import study as study_mod
 from graphmethods.dynamics.reduction import (Shaft, load_switch_angles, load_work, power_moment, reduce_drive,
@@ -57,7 +58,7 @@ def test_resisting_moment_and_its_switch_angles(press):
     x = np.linspace(a, b, 200_001)
     plans = mech.velocity_plans(mech.positions(phi_from_start=x))
     M_r = resisting_moment(mech.positions(phi_from_start=x), plans, load)
-    assert np.trapezoid(M_r, x) == pytest.approx(load_work(mech, load), rel=1e-8)
+    assert trapezoid(M_r, x) == pytest.approx(load_work(mech, load), rel=1e-8)
     v = press.values
     dx_B = slider_crank_closed_form(mech.positions(phi_from_start=x).phi, v["r"], v["l"], v["e"], v["l_AS2"])[0]
     np.testing.assert_allclose(M_r, v["F0"] * np.abs(dx_B), rtol=1e-10)
@@ -182,7 +183,7 @@ def test_indicator_diagram_on_the_return_stroke_against_the_closed_form(press):
     # its work over the return stroke is H × the diagram's area
     x = np.linspace(0, 2 * math.pi, 200_001)
     fine = mech.positions(phi_from_start=x)
-    assert np.trapezoid(diagram_moment(fine, mech.velocity_plans(fine), comp), x) == pytest.approx(
+    assert trapezoid(diagram_moment(fine, mech.velocity_plans(fine), comp), x) == pytest.approx(
         comp.work(H=fine.H), rel=1e-6)
 
 

@@ -267,8 +267,8 @@ def test_two_runs_give_identical_bytes_of_the_pdf_and_every_svg(tmp_path):
                                        str(tmp_path / out), "--quiet")) == 0
     a = sorted(p.relative_to(tmp_path / "a") for p in (tmp_path / "a").rglob("*") if p.is_file())
     b = sorted(p.relative_to(tmp_path / "b") for p in (tmp_path / "b").rglob("*") if p.is_file())
-    assert a == b and len(a) == 1 + 4 + 2
-    assert str(a[-1]) == "velocity-plan-zh.pdf"
+    assert a == b and len(a) == 1 + 4 + 2 + 1
+    assert [str(x) for x in a[-2:]] == ["velocity-plan-answers.toml", "velocity-plan-zh.pdf"]
     for rel in a:
         assert (tmp_path / "a" / rel).read_bytes() == (tmp_path / "b" / rel).read_bytes(), rel
     pdf = (tmp_path / "a" / "velocity-plan-zh.pdf").read_bytes()

@@ -19,6 +19,7 @@ from graphmethods.errors import GraphmethodsError
 COMMANDS = {
     "flywheel": ("flywheel", "excess-work table, ΔW_max and the flywheel (approximate method)"),
     "examples": ("examples", "solve and print the published worked examples W1–W4"),
+    "problems": ("problems", "list the built-in problems (their names work in place of a problem file)"),
     "kinematics": ("kinematics", "positions and velocity plans of a linkage problem file"),
     "study": ("study", "dynamic study of a linkage problem: J_e, M_r, the flywheel three ways"),
     "gallery": ("gallery", "build every gallery figure (SVG, optionally PNG)"),
@@ -36,9 +37,27 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"graphmethods: error: {message} (see graphmethods --help)\n")
 
 
+def version() -> str:
+    """The installed package's version (from its metadata), or "unknown" when it is run uninstalled."""
+    from importlib import metadata
+
+    try:
+        return metadata.version("graphmethods")
+    except metadata.PackageNotFoundError:
+        return "unknown (not installed)"
+
+
+class _Version(argparse.Action):
+    """``--version``: the metadata is read only when asked (it costs start-up time otherwise)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        parser.exit(0, f"graphmethods {version()}\n")
+
+
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     """The argument parser; only ``command``'s module is imported (every one when None, for tests)."""
     parser = _Parser(prog="graphmethods", description="Exact, scale-true graphical methods of machine dynamics.")
+    parser.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
     for name, (module, help_line) in COMMANDS.items():

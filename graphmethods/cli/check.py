@@ -22,7 +22,8 @@ def add_parser(sub) -> None:
                        description="Compare what a student measured and wrote (a TOML answers file) with the exact "
                        "construction at the student's own scales: verdict per item against drafting tolerances, "
                        "diagnosis of the usual mistakes, and an overlay to print 1:1 on film.",
-                       epilog="Examples of answers files: graphmethods/problems/data/answers/*.toml")
+                       epilog="A blank answers file for each worksheet kind is written by graphmethods worksheet "
+                       "(KIND-answers.toml); the keys are described in the README.")
     p.add_argument("problem", metavar="PROBLEM", help="W1, W2, W3, W4, press, KIND:SEED:N, or a problem file")
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
                    "(.dxf, .svg: a velocity plan or an energy indicator, read and measured)")

@@ -7,7 +7,7 @@ from graphmethods.units import json_text
 
 def add_parser(sub) -> None:
     p = sub.add_parser("examples", help="solve and print the published worked examples W1–W4",
-                       description="Solve the published worked examples W1–W4 (domain.md §9) and print them.")
+                       description="Solve the published worked examples W1–W4 and print them.")
     p.add_argument("--json", action="store_true", help="print one JSON object per example")
     p.set_defaults(func=run)
 

@@ -1,14 +1,16 @@
-"""``graphmethods gallery``: build every figure of the gallery (one small script per figure).
+"""``graphmethods gallery``: build every figure of the gallery (one small module per figure).
 
-Each ``gallery/<name>.py`` defines ``build() -> Scene``; its committed ``<name>.svg`` is
-the golden file the tests compare with. This command builds them all into a folder,
-never over an existing file unless ``--force``; ``--regenerate`` rewrites the committed
-golden files on purpose (and the PNGs of scripts that set ``PNG = True``).
+The figures are the modules of :mod:`graphmethods.gallery` (each defines ``build() -> Scene``), so
+the command works from an installed package. In a source checkout each figure's committed golden
+SVG is ``gallery/<name>.svg``, which the tests compare with. This command builds every figure into
+a folder, never over an existing file unless ``--force``; ``--regenerate`` rewrites the golden files
+of a source checkout on purpose (and the PNGs of figures that set ``PNG = True``); ``--dir`` builds
+your own folder of such scripts instead.
 
     graphmethods gallery --out gallery-out          # SVG of every figure
     graphmethods gallery --out gallery-out --png    # and PNG
     graphmethods gallery --out gallery-out --dxf    # and DXF (1 unit = 1 mm, layers by role)
-    graphmethods gallery --regenerate               # rewrite gallery/*.svg (and marked PNGs)
+    graphmethods gallery --regenerate               # rewrite gallery/*.svg (and marked PNGs), from the project folder
 
 Heavy modules (the sheets, svgwrite, matplotlib) are imported only when the command runs.
 """
@@ -19,43 +21,77 @@ import difflib
 import importlib.util
 import pathlib
 import sys
+from types import ModuleType
 
 from graphmethods.errors import GraphmethodsError, InputError, OutputExistsError
 
-DEFAULT_DIR = "gallery"
+DEFAULT_DIR = "gallery"     # where --regenerate writes the golden files: the source checkout's gallery/
 DEFAULT_OUT = "gallery-out"
 PNG_DPI = 150
 
 
 def scripts(directory) -> list[pathlib.Path]:
-    """The gallery scripts in ``directory`` (``*.py`` not starting with ``_``), sorted by name."""
+    """The gallery scripts in a folder of your own (``*.py`` not starting with ``_``), sorted by name."""
     d = pathlib.Path(directory)
     if not d.is_dir():
-        raise InputError(f"gallery folder {d} not found; run from the project folder or give --dir")
+        raise InputError(f"gallery folder {d} not found; give an existing folder of scripts to --dir")
     found = sorted(p for p in d.glob("*.py") if not p.name.startswith("_"))
     if not found:
         raise InputError(f"no gallery scripts (*.py) in {d}")
     return found
 
 
-def load(path) -> object:
-    """Import one gallery script as a module (it is not on sys.path)."""
+def load(path) -> ModuleType:
+    """Import one gallery script of a folder as a module (it is not on sys.path)."""
     path = pathlib.Path(path)
     spec = importlib.util.spec_from_file_location(f"graphmethods_gallery_{path.stem}", path)
+    if spec is None or spec.loader is None:
+        raise InputError(f"{path}: not a Python script that can be imported")
     module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    if not callable(getattr(module, "build", None)):
-        raise InputError(f"{path}: a gallery script must define build() returning a Scene")
+    try:
+        spec.loader.exec_module(module)
+    except Exception as exc:                # a script is code: its failure is named, not a traceback
+        raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); nothing was written") from None
+    _check_module(module, str(path))
     return module
 
 
-def build(path):
-    """The scene a gallery script builds."""
+def _check_module(module: ModuleType, where: str) -> None:
+    if not callable(getattr(module, "build", None)):
+        raise InputError(f"{where}: a gallery script must define build() returning a Scene")
+
+
+def figures(directory=None) -> list[tuple[str, ModuleType]]:
+    """(name, module) of every figure: the built-in ones, or the scripts of ``directory``."""
+    if directory is not None:
+        return [(p.stem, load(p)) for p in scripts(directory)]
+    from graphmethods import gallery as builtin
+
+    out = []
+    for name in builtin.figure_names():
+        module = builtin.figure_module(name)
+        _check_module(module, f"graphmethods.gallery.{name}")
+        out.append((name, module))
+    return out
+
+
+def build(figure):
+    """The scene a figure builds: a built-in figure's name, a module, or a script's path."""
     from graphmethods.scene import Scene
 
-    scene = load(path).build()
+    if isinstance(figure, ModuleType):
+        module, where = figure, figure.__name__
+    elif isinstance(figure, pathlib.Path) or str(figure).endswith(".py"):
+        module, where = load(figure), str(figure)
+    else:
+        from graphmethods import gallery as builtin
+
+        if figure not in builtin.figure_names():
+            raise InputError(f"no built-in figure {figure!r}")
+        module, where = builtin.figure_module(figure), f"graphmethods.gallery.{figure}"
+    scene = module.build()
     if not isinstance(scene, Scene):
-        raise InputError(f"{path}: build() returned {type(scene).__name__}, not a Scene")
+        raise InputError(f"{where}: build() returned {type(scene).__name__}, not a Scene")
     return scene
 
 
@@ -79,25 +115,31 @@ def svg_diff(expected: str, actual: str, *, name: str = "figure", context: int =
 
 def add_parser(sub) -> None:
     p = sub.add_parser("gallery", help="build every gallery figure (SVG, optionally PNG)",
-                       description="Build every figure of the gallery: each gallery/<name>.py defines build().")
-    p.add_argument("--dir", default=DEFAULT_DIR, help="the gallery folder (default: gallery)")
+                       description="Build every figure of the gallery (the textbook figures of the built-in "
+                       "problems) into a folder, as scale-true SVG (optionally PNG).")
+    p.add_argument("--dir", default=None,
+                   help="build the scripts of this folder instead (each <name>.py defines build() -> Scene)")
     p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
     p.add_argument("--dxf", action="store_true", help="also write a DXF of every figure (1 unit = 1 mm, layers by role)")
     p.add_argument("--regenerate", action="store_true",
-                   help="rewrite the committed golden SVGs in the gallery folder (and PNGs of scripts with PNG = True)")
+                   help="in a source checkout: rewrite the committed golden SVGs in gallery/ (or in --dir), "
+                        "and the PNGs of figures with PNG = True")
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
     from graphmethods.render import svg
 
-    paths = scripts(args.dir)
+    found = figures(args.dir)
     if args.regenerate:
         if args.out is not None:
             raise InputError("--regenerate rewrites the gallery folder itself; leave out --out")
-        out, overwrite = pathlib.Path(args.dir), True
+        out, overwrite = pathlib.Path(args.dir or DEFAULT_DIR), True
+        if not out.is_dir():
+            raise InputError(f"--regenerate rewrites the golden files of a source checkout: no folder {out} here; "
+                             f"run it from the project folder")
     else:
         if args.out is not None and args.out.strip() == "":
             raise InputError("--out is empty; give a folder (it is created if missing)")
@@ -105,18 +147,12 @@ def run(args) -> int:
         if out.exists() and not out.is_dir():
             raise InputError(f"--out {out} is a file; give a folder")
     jobs = []
-    for path in paths:
-        try:
-            module = load(path)
-        except GraphmethodsError:
-            raise
-        except Exception as exc:
-            raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); nothing was written") from None
+    for name, module in found:
         want_png = args.png or (args.regenerate and getattr(module, "PNG", False))
-        targets = [out / f"{path.stem}.svg"] + ([out / f"{path.stem}.png"] if want_png else [])
+        targets = [out / f"{name}.svg"] + ([out / f"{name}.png"] if want_png else [])
         if getattr(args, "dxf", False) and not args.regenerate:
-            targets.append(out / f"{path.stem}.dxf")
-        jobs.append((path, module, targets))
+            targets.append(out / f"{name}.dxf")
+        jobs.append((name, module, targets))
     if not overwrite:   # refuse before writing anything, so a refused run leaves no half-built gallery
         existing = [str(t) for _, _, targets in jobs for t in targets if t.exists()]
         if existing:
@@ -126,13 +162,13 @@ def run(args) -> int:
     from graphmethods.render.files import write_set
 
     blobs, lines = {}, []
-    for path, module, targets in jobs:      # build every figure first: a failing script writes nothing
+    for name, module, targets in jobs:      # build every figure first: a failing script writes nothing
         try:
-            scene = module.build()
+            scene = build(module)
         except GraphmethodsError as exc:
-            raise InputError(f"{path}: {exc}; nothing was written") from None
+            raise InputError(f"{name}: {exc}; nothing was written") from None
         except Exception as exc:            # a gallery script is code: its failure is named, not a traceback
-            raise InputError(f"{path}: build() failed ({type(exc).__name__}: {exc}); nothing was written") from None
+            raise InputError(f"{name}: build() failed ({type(exc).__name__}: {exc}); nothing was written") from None
         blobs[targets[0].name] = svg.to_bytes(scene)
         line = f"wrote {targets[0]}"
         for target in targets[1:]:

@@ -1,5 +1,7 @@
 """``graphmethods kinematics CASE.json``: positions and velocities of a linkage problem file.
 
+CASE is a problem file or a built-in problem's name (``graphmethods kinematics shaper``).
+
 Prints, per position 0…M (position M = position 0), the crank angle and the velocities at the
 mean crank speed n_rpm of the file: for the slider-crank press format at least ``phi_deg``
 (crank angle from +x, degrees), ``v_B`` (m/s, signed along +x), ``omega_2`` (rod, rad/s,
@@ -32,7 +34,8 @@ def add_parser(sub) -> None:
         "kinematics", help="positions and velocity plans of a linkage problem file",
         description="Positions 0…M of a linkage problem file (slider-crank press, four-bar, slotted lever, "
                     "shaper) and its velocities at the file's mean crank speed, from the velocity plans.")
-    p.add_argument("case", metavar="CASE.json", help="problem file (see shared/cases/README.md)")
+    p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name: press, shaper, "
+                   "four-bar, slotted-lever (graphmethods problems)")
     p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
                    help="number of equal crank steps per turn (default 12; positions 0…M)")
     p.add_argument("--json", action="store_true", help="print one JSON object whose 'positions' is the list")
@@ -223,10 +226,10 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
 
 def run(args) -> int:
     from graphmethods.errors import InputError
-    from graphmethods.kinematics import read_case
+    from graphmethods.problems import builtin
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
-    case = read_case(args.case)
+    case = builtin.case(args.case)
     res = table(case, args.positions)
     written = []
     if args.figures is not None:

@@ -1,5 +1,8 @@
 """``graphmethods study CASE.json --positions M``: the dynamic study of a linkage problem.
 
+CASE is a problem file or a built-in problem's name (``graphmethods study press``; the names:
+``graphmethods problems``).
+
 ``--sheet FILE.svg|.pdf`` also writes the A1 (or A2) dynamic-analysis sheet: the flywheel by
 the Wittenbauer method, drawn to scale (:func:`graphmethods.sheets.wittenbauer.dynamic_analysis_sheet`).
 An existing file is kept unless ``--force``; on any error nothing is written.
@@ -16,11 +19,12 @@ from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 def add_parser(sub) -> None:
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
-                       description="Solve a linkage problem file (e.g. ../shared/cases/slider_crank_press.json): "
+                       description="Solve a linkage problem (a problem file, or a built-in name such as press: "
+                       "see graphmethods problems): "
                        "M_d by work balance, ΔW_max, J_F by the ΔW_max method and by the Wittenbauer diagram at "
                        "M positions, the exact J_F, and where ω_max and ω_min occur. With --sheet, also draw the "
                        "dynamic-analysis sheet (M_e, ΔT, J_e turned 90°, the energy–mass diagram, the result).")
-    p.add_argument("case", metavar="CASE.json", help="problem file")
+    p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name (graphmethods problems)")
     p.add_argument("--positions", type=int, default=12, metavar="M", help="number of positions (default 12)")
     p.add_argument("--no-exact", action="store_true", help="skip the exact reference solution (faster)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -73,7 +77,7 @@ def _check_target(path: pathlib.Path, force: bool) -> None:
 
 def run(args) -> int:
     from graphmethods.dynamics.study import Study
-    from graphmethods.kinematics import read_case
+    from graphmethods.problems import builtin
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
     sheet = pathlib.Path(args.sheet) if args.sheet is not None else None
@@ -81,7 +85,7 @@ def run(args) -> int:
         if args.sheet.strip() == "":
             raise InputError("--sheet is empty; give a file name ending in .svg or .pdf")
         _check_target(sheet, args.force)
-    study = Study(read_case(args.case), positions=args.positions)
+    study = Study(builtin.case(args.case), positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
     check_finite(out)                        # a result that is not finite is refused, naming it

@@ -3,8 +3,9 @@
     graphmethods worksheet indicator --variants 30 --seed 7 --lang ru --out class-7
 
 writes ``class-7/indicator-ru.pdf`` (the students' pages, then the keys), an SVG per page in
-``class-7/svg/`` and a problem file per variant in ``class-7/problems/`` (``graphmethods check``
-reads them, or the variant's id ``indicator:7:N``). Existing files are kept unless ``--force``;
+``class-7/svg/``, a problem file per variant in ``class-7/problems/`` (``graphmethods check``
+reads them, or the variant's id ``indicator:7:N``) and the blank answers file
+``class-7/indicator-answers.toml``. Existing files are kept unless ``--force``;
 nothing is left behind on an error. Progress goes to stderr (``--quiet`` turns it off).
 """
 
@@ -80,6 +81,7 @@ def run(args) -> int:
     print(f"wrote {paths[0]} ({2 * n} pages: {n} students', then {n} keys), {2 * n} SVG in "
           f"{paths[0].parent / 'svg'}, {n} problem files in {paths[0].parent / 'problems'} "
           f"in {time.perf_counter() - t0:.1f} s")
+    print(f"blank answers file: {paths[-1]} (copy it for each student, fill it in)")
     print(f"check a student: graphmethods check {sheet.variants[0].id} ANSWERS.toml   "
           f"(or {paths[0].parent / 'problems'}/{args.kind}-NN.json)")
     return 0

@@ -52,6 +52,16 @@ def _logged(fn):
     return cached_property(wrapper)
 
 
+#: the unit of each key of :meth:`Study.summary` (for the Markdown table)
+_SUMMARY_UNITS = {
+    "n_rpm": "rev/min", "omega_m": "rad/s", "M_d": "N·m", "delta_W_max": "J", "J_F_energy": "kg·m²",
+    "J_F_wittenbauer": "kg·m²", "J_F_wittenbauer_error_estimate": "kg·m²", "kl_mm": "mm", "mu_J": "kg·m²/mm",
+    "mu_T": "J/mm", "J_e_min": "kg·m²", "J_e_max": "kg·m²", "J_e_mean": "kg·m²", "J_F_exact": "kg·m²",
+    "phi_omega_max_deg": "°", "phi_omega_min_deg": "°", "switch_angles_deg": "°",
+    "wittenbauer_positions_omega_max": "position", "wittenbauer_positions_omega_min": "position",
+}
+
+
 class Study:
     """The dynamic analysis of a linkage problem at m positions (see the module docstring).
 
@@ -194,6 +204,40 @@ class Study:
         return exact_flywheel(self.model, omega_m=self.omega_m, delta=self.delta)
 
     # ----------------------------------------------------------------- report
+    def to_markdown(self, *, exact: bool | None = None) -> str:
+        """The study's results as a Markdown table (quantity, value, unit), as a notebook shows it.
+
+        ``exact=None`` (default) reports the exact flywheel only when it has been computed already
+        (it takes about a second for the press), ``True`` computes it, ``False`` leaves it out.
+
+        >>> import pathlib
+        >>> from graphmethods.kinematics import read_case
+        >>> s = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+        >>> s.to_markdown().splitlines()[2]
+        '| quantity | value | unit |'
+        >>> "exact" in s.computed
+        False
+        """
+        use_exact = ("exact" in self.computed) if exact is None else exact
+        data = self.summary(exact=use_exact)
+        rows = [(k, data[k]) for k in data]
+        lines = ["| quantity | value | unit |", "|---|--:|---|"]
+        for key, value in rows:
+            if isinstance(value, list):
+                text = ", ".join(f"{v:.5g}" if isinstance(v, float) else str(v) for v in value)
+            elif isinstance(value, float):
+                text = f"{value * 100:.3g} %" if key.endswith("rel_error") else f"{value:.6g}"
+            else:
+                text = str(value)
+            lines.append(f"| {key} | {text} | {_SUMMARY_UNITS.get(key, '')} |")
+        title = getattr(self.case, "title", "")
+        head = f"**Dynamic study** of {title}, {self.m} positions" if str(title) else f"**Dynamic study**, {self.m} positions"
+        tail = [] if use_exact else ["", "(the exact flywheel is not computed yet: `study.to_markdown(exact=True)`)"]
+        return "\n".join([head, ""] + lines + tail) + "\n"
+
+    def _repr_markdown_(self) -> str:
+        return self.to_markdown()
+
     def summary(self, *, exact: bool = True) -> dict:
         """The study's results as a JSON-ready dict (the keys of shared/cases/README.md).
 

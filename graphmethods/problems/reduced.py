@@ -17,6 +17,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphmethods.compat import trapezoid
+
 from graphmethods.dynamics.motion import ReducedModel
 from graphmethods.titles import Title
 from graphmethods.units import omega_from_n
@@ -78,7 +80,7 @@ def four_stroke_engine(*, r: float = 0.06, lam: float = 0.25, m_p: float = 2.5, 
     # the consumer's constant moment balances the gas work over the period (computed once, finely)
     x = np.linspace(0.0, 4 * PI, 400_001)
     M_gas = gas_force(x) * analogue(x)
-    M_c = float(np.trapezoid(M_gas, x) / (4 * PI))
+    M_c = float(trapezoid(M_gas, x) / (4 * PI))
     model = ReducedModel(
         J_e=lambda p: J0 + m_p * analogue(p) ** 2,
         M_e=lambda p: gas_force(p) * analogue(p) - M_c,

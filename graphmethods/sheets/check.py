@@ -157,157 +157,16 @@ KEY_KINDS = {
 
 # ----------------------------------------------------------------------------- TOML
 
-def parse_toml(text: str, *, source: str = "<answers>") -> dict:
-    """Parse the TOML subset an answers file uses; the reader for Pythons without ``tomllib`` (3.10).
-
-    Supported: comments, ``[section]`` headers (bare names), ``key = value`` with bare keys, values
-    that are numbers (integers, floats, exponents, ``_`` separators), strings ("basic" with the
-    usual escapes, or 'literal'), ``true``/``false``, and flat arrays of those (over several lines,
-    trailing comma allowed). Anything else raises an :class:`InputError` naming the line.
-
-    >>> parse_toml('a = 1\\n[s]  # c\\nb = [1.5, -2e1,\\n  "x"]\\nc = \\'lit\\\\\\'')
-    {'a': 1, 's': {'b': [1.5, -20.0, 'x'], 'c': 'lit\\\\'}}
-    """
-    out: dict = {}
-    table = out
-    lines = text.splitlines()
-    i = 0
-    while i < len(lines):
-        lineno = i + 1
-        line = _strip_comment(lines[i], source, lineno).strip()
-        i += 1
-        if not line:
-            continue
-        if line.startswith("["):
-            m = re.fullmatch(r"\[\s*([A-Za-z0-9_-]+)\s*\]", line)
-            if not m:
-                raise InputError(f"{source}, line {lineno}: a section header is [name] with a bare name; got {line!r}")
-            name = m.group(1)
-            if name in out:
-                raise InputError(f"{source}, line {lineno}: section [{name}] appears twice")
-            table = out[name] = {}
-            continue
-        m = re.match(r"([A-Za-z0-9_-]+)\s*=\s*(.*)$", line)
-        if not m:
-            raise InputError(f"{source}, line {lineno}: expected key = value; got {line!r}")
-        key, value = m.group(1), m.group(2).strip()
-        if value.startswith("[") and value.count("[") > _closing(value):
-            while i < len(lines) and value.count("[") > _closing(value):     # an array over several lines
-                value += " " + _strip_comment(lines[i], source, i + 1).strip()
-                i += 1
-        if key in table:
-            raise InputError(f"{source}, line {lineno}: key {key!r} is given twice")
-        table[key] = _value(value, source, lineno)
-    return out
-
-
-def _closing(value: str) -> int:
-    return len(re.findall(r"\]", re.sub(r'"(\\.|[^"\\])*"|\'[^\']*\'', "", value)))
-
-
-def _strip_comment(line: str, source: str, lineno: int) -> str:
-    quote = None
-    k = 0
-    while k < len(line):
-        ch = line[k]
-        if quote:
-            if ch == "\\" and quote == '"':
-                k += 2
-                continue
-            if ch == quote:
-                quote = None
-        elif ch in "\"'":
-            quote = ch
-        elif ch == "#":
-            return line[:k]
-        k += 1
-    if quote:
-        raise InputError(f"{source}, line {lineno}: a string is not closed")
-    return line
-
-
-_ESC = {"n": "\n", "t": "\t", '"': '"', "\\": "\\", "r": "\r", "b": "\b", "f": "\f"}
-
-
-def _value(text: str, source: str, lineno: int):
-    text = text.strip()
-    if text.startswith("["):
-        if not text.endswith("]"):
-            raise InputError(f"{source}, line {lineno}: an array is not closed with ]")
-        inner = text[1:-1].strip()
-        items, cur, quote, k = [], "", None, 0
-        while k < len(inner):
-            ch = inner[k]
-            if quote:
-                cur += ch
-                if ch == "\\" and quote == '"' and k + 1 < len(inner):
-                    cur += inner[k + 1]
-                    k += 1
-                elif ch == quote:
-                    quote = None
-            elif ch in "\"'":
-                quote = ch
-                cur += ch
-            elif ch == "[":
-                raise InputError(f"{source}, line {lineno}: nested arrays are not supported in an answers file")
-            elif ch == ",":
-                items.append(cur)
-                cur = ""
-            else:
-                cur += ch
-            k += 1
-        items.append(cur)
-        if items and not items[-1].strip():
-            items.pop()                                   # trailing comma
-        if any(not it.strip() for it in items):
-            raise InputError(f"{source}, line {lineno}: an empty element in an array")
-        return [_value(it, source, lineno) for it in items]
-    if text.startswith('"'):
-        if len(text) < 2 or not text.endswith('"'):
-            raise InputError(f"{source}, line {lineno}: a string is not closed")
-        body, out, k = text[1:-1], "", 0
-        while k < len(body):
-            ch = body[k]
-            if ch == "\\":
-                nxt = body[k + 1:k + 2]
-                if nxt in _ESC:
-                    out += _ESC[nxt]
-                    k += 2
-                elif nxt in ("u", "U"):
-                    n = 4 if nxt == "u" else 8
-                    try:
-                        out += chr(int(body[k + 2:k + 2 + n], 16))
-                    except ValueError:
-                        raise InputError(f"{source}, line {lineno}: bad \\{nxt} escape") from None
-                    k += 2 + n
-                else:
-                    raise InputError(f"{source}, line {lineno}: unknown escape \\{nxt}")
-            elif ch == '"':
-                raise InputError(f"{source}, line {lineno}: unexpected quote inside a string")
-            else:
-                out += ch
-                k += 1
-        return out
-    if text.startswith("'"):
-        if len(text) < 2 or not text.endswith("'") or "'" in text[1:-1]:
-            raise InputError(f"{source}, line {lineno}: a 'literal string' is not closed")
-        return text[1:-1]
-    if text in ("true", "false"):
-        return text == "true"
-    if re.fullmatch(r"[+-]?(0|[1-9](_?\d)*)", text):
-        return int(text.replace("_", ""))
-    if re.fullmatch(r"[+-]?(0|[1-9](_?\d)*)(\.\d(_?\d)*)?([eE][+-]?\d(_?\d)*)?", text):
-        return float(text.replace("_", ""))
-    raise InputError(f"{source}, line {lineno}: {text!r} is not a number, string, true/false or array "
-                     f"(the answers file uses a small part of TOML)")
-
-
 def load_toml(text: str, *, source: str = "<answers>") -> dict:
-    """TOML text as a dict: with ``tomllib`` (Python ≥ 3.11), else with :func:`parse_toml`."""
+    """TOML text as a dict, read by the standard ``tomllib`` (Python ≥ 3.11) or its backport ``tomli``.
+
+    >>> load_toml('problem = "W1"\\n[results]\\nJ_F = 1.5e-1  # kg·m²')
+    {'problem': 'W1', 'results': {'J_F': 0.15}}
+    """
     try:
         import tomllib
-    except ModuleNotFoundError:          # Python 3.10
-        return parse_toml(text, source=source)
+    except ModuleNotFoundError:          # Python 3.10: the same parser, installed as a dependency
+        import tomli as tomllib  # type: ignore[no-redef]
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -352,9 +211,12 @@ def validate_answers(data: dict, *, source: str = "<answers>") -> dict:
         for k, v in value.items():
             if k not in SCHEMA[key]:
                 raise InputError(f"{source}: [{key}] has no key {k!r}; its keys are {', '.join(SCHEMA[key])}")
+            if v == "" or v == []:      # left blank in a template (graphmethods.sheets.answers): not answered
+                continue
             sec[k] = _typed_answer(KEY_KINDS.get(k, "number"), _answer_value(v, f"{source}: [{key}] {k}"),
                                    f"{source}: [{key}] {k}")
-        out[key] = sec
+        if sec or not value:            # a section whose every key is blank is not answered either
+            out[key] = sec
     return out
 
 
@@ -648,6 +510,9 @@ class CheckReport:
         lines.append("")
         lines += self._tail("- ")
         return "\n".join(lines) + "\n"
+
+    def _repr_markdown_(self) -> str:          # a notebook shows the report
+        return self.to_markdown()
 
     def _tail(self, bullet: str) -> list[str]:
         out = []
@@ -1223,7 +1088,8 @@ def check(problem, answers) -> CheckReport:
                                  "add the section with mu_J and mu_T")
             _check_em(ck, data)
     if not ck.items:
-        raise InputError("the answers hold nothing to check; see graphmethods/problems/data/answers for examples")
+        raise InputError("the answers hold nothing to check; fill in what was measured (a blank answers file: "
+                         "KIND-answers.toml, written by graphmethods worksheet)")
     for it in ck.items:               # results are checked finite before they are reported
         for what, v in (("expected", it.expected), ("student", it.student), ("tolerance", it.tolerance)):
             if isinstance(v, float) and not math.isfinite(v):

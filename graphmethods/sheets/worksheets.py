@@ -55,6 +55,7 @@ from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
 from graphmethods.titles import Title
+from graphmethods.sheets import answers
 from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
@@ -1869,7 +1870,7 @@ def output_names(kind: str, notation, count: int) -> list[str]:
     for k in range(1, count + 1):
         out += [f"svg/{kind}-{k:0{width}d}-student.svg", f"svg/{kind}-{k:0{width}d}-key.svg",
                 f"problems/{kind}-{k:0{width}d}.json"]
-    return out
+    return out + [f"{kind}-answers.toml"]
 
 
 def existing_outputs(out_dir, kind: str, notation, count: int) -> list[pathlib.Path]:
@@ -1887,6 +1888,8 @@ def file_names(ws: Worksheet) -> dict[str, object]:
         out[next(names)] = s
         out[next(names)] = k
         out[next(names)] = v
+    page = ws.students[0].page
+    out[next(names)] = answers.template(ws.kind, page=(page.size, page.orientation), seed=ws.seed)
     return out
 
 
@@ -1898,7 +1901,8 @@ def dxf_names(kind: str, n: int) -> list[str]:
 def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress=None,
                     dxf: bool = False) -> list[pathlib.Path]:
     """Write the class set into ``out_dir``: one PDF (students' pages, then keys), an SVG per page in
-    ``svg/``, a problem file per variant in ``problems/`` (``graphmethods check`` reads them), and
+    ``svg/``, a problem file per variant in ``problems/`` (``graphmethods check`` reads them), a
+    blank answers file ``KIND-answers.toml`` (:func:`graphmethods.sheets.answers.template`), and
     with ``dxf`` every page as DXF in ``dxf/`` (1 unit = 1 mm, for students who draw in CAD).
 
     Everything is built in a temporary folder beside ``out_dir`` and moved in at the end, so an error
@@ -1914,7 +1918,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     >>> import tempfile, pathlib
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "class"
     >>> [p.name for p in write_worksheet(worksheet("wittenbauer", variants=1, seed=3), out)]
-    ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json']
+    ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json', 'wittenbauer-answers.toml']
     """
     from graphmethods.render import pdf, svg
     from graphmethods.render.files import write_set
@@ -1936,6 +1940,8 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
             blobs[name] = pdf.to_bytes(_Reporting(obj, progress))
         elif isinstance(obj, Scene):
             blobs[name] = svg.to_bytes(obj)
+        elif isinstance(obj, str):          # the blank answers file
+            blobs[name] = obj.encode("utf-8")
         else:
             blobs[name] = obj.to_json().encode("utf-8")
     if dxf:

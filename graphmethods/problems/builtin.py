@@ -1,0 +1,104 @@
+"""The built-in problems by name: what ``graphmethods problems`` lists, and what every command that
+takes a problem file also takes (``graphmethods study press``, ``graphmethods kinematics shaper``).
+
+Two kinds: *cycle* problems, given as a cycle of works, areas or moments (the worked examples
+W1–W4: ``graphmethods examples``, ``graphmethods check``), and *linkage* problems, given as a
+problem file that ships with the package (``graphmethods kinematics``, ``graphmethods study``).
+
+>>> [p.name for p in listing() if p.kind != "cycle"]
+['press', 'shaper', 'four-bar', 'slotted-lever']
+>>> case("shaper").kind
+'shaper'
+"""
+
+from __future__ import annotations
+
+import pathlib
+from dataclasses import dataclass
+
+from graphmethods.errors import InputError
+
+DATA = pathlib.Path(__file__).parent / "data"
+
+#: linkage problems: name -> problem file in ``graphmethods/problems/data``
+LINKAGES = {
+    "press": "slider_crank_press.json",
+    "shaper": "shaper.json",
+    "four-bar": "four_bar_rocker.json",
+    "slotted-lever": "slotted_lever.json",
+}
+
+#: cycle problems: name -> function of :mod:`graphmethods.problems` that builds it
+CYCLES = {"W1": "w1", "W2": "w2", "W3": "w3", "W4": "w4_drawing", "W4-exact": "w4_exact"}
+
+
+@dataclass(frozen=True)
+class BuiltinProblem:
+    """One line of ``graphmethods problems``: the name to type, its kind and its English title."""
+
+    name: str
+    kind: str
+    title: str
+
+    def line(self) -> str:
+        """``name  kind  title``, the columns padded for a listing."""
+        return f"{self.name:<14}{self.kind:<15}{self.title}"
+
+
+def names() -> list[str]:
+    """Every built-in problem's name, cycle problems first."""
+    return [*CYCLES, *LINKAGES]
+
+
+def _key(name: str) -> str:
+    return str(name).strip().lower().replace("_", "-")
+
+
+def listing() -> list[BuiltinProblem]:
+    """The built-in problems with their kind (``cycle``, or the linkage's kind) and English title."""
+    import graphmethods.problems as problems
+    from graphmethods.kinematics import read_case
+    from graphmethods.problems.reference_cases import title_of
+
+    out = []
+    for name, func in CYCLES.items():
+        p = getattr(problems, func)()
+        out.append(BuiltinProblem(name, "cycle", title_of(p).title_in("en")))
+    for name, file in LINKAGES.items():
+        c = read_case(DATA / file)
+        out.append(BuiltinProblem(name, c.kind, title_of(c).title_in("en")))
+    return out
+
+
+def case_path(spec) -> pathlib.Path:
+    """The problem file a command reads: ``spec`` itself when it is a file, else the file of the
+    built-in linkage problem of that name.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is neither a file nor a built-in linkage problem (the message names them).
+    """
+    p = pathlib.Path(str(spec))
+    if p.is_file():
+        return p
+    key = _key(spec)
+    for name, file in LINKAGES.items():
+        if key == name:
+            return DATA / file
+    if key in {_key(c) for c in CYCLES}:
+        raise InputError(f"{spec} is a cycle problem (works, areas or moments), not a linkage: see "
+                         f"`graphmethods examples` and `graphmethods check {spec} ANSWERS.toml`; linkage problems: "
+                         f"{', '.join(LINKAGES)}")
+    if p.exists():
+        raise InputError(f"{spec}: a folder, not a problem file")
+    raise InputError(f"{spec}: no such problem file, and not a built-in problem (linkages: {', '.join(LINKAGES)}; "
+                     f"see `graphmethods problems`)")
+
+
+def case(spec):
+    """The linkage problem of a file or a built-in name, read and validated
+    (:func:`graphmethods.kinematics.read_case`)."""
+    from graphmethods.kinematics import read_case
+
+    return read_case(case_path(spec))

@@ -1,0 +1,126 @@
+"""The blank answers file of a worksheet kind: what ``graphmethods check`` reads, ready to fill in.
+
+``graphmethods worksheet`` writes one beside each class set (``KIND-answers.toml``). The student (or
+the teacher, from the student's sheet) replaces each ``""`` or ``[]`` by what was measured or
+written; a key left ``""`` or ``[]`` is not answered and not checked. The keys and units are those
+of :data:`graphmethods.sheets.check.SCHEMA`.
+
+>>> text = template("wittenbauer")
+>>> "[energy_mass]" in text and 'kl_mm = ""' in text
+True
+"""
+
+from __future__ import annotations
+
+from graphmethods.errors import InputError
+
+#: per kind: (section, [(key, comment)]) in the order a student works
+KEYS: dict[str, tuple[tuple[str, tuple[tuple[str, str], ...]], ...]] = {
+    "indicator": (
+        ("energy_indicator", (
+            ("mu_E", "J per mm: the energy scale you drew the indicator at (μ_E)"),
+            ("step_mm", "mm between two arrows along the horizontal"),
+            ("arrows_mm", "list: each arrow's length in mm, + up (gain), − down (loss), in order"))),
+        ("results", (
+            ("works_J", "list: the work of each interval in J, signed, in order"),
+            ("delta_W_max", "J: ΔW_max = E_max − E_min"),
+            ("omega_max_at", "the letter of the point of ω_max, e.g. \"b\""),
+            ("omega_min_at", "the letter of the point of ω_min"),
+            ("omega_m", "rad/s: the mean angular speed"),
+            ("omega_max", "rad/s"),
+            ("omega_min", "rad/s"),
+            ("J_F", "kg·m²: the flywheel's moment of inertia"))),
+    ),
+    "step-moment": (
+        ("moment_diagram", (
+            ("mu_M", "N·m per mm: the moment scale (μ_M)"),
+            ("mu_phi_deg", "degrees per mm: the angle scale (μ_φ); or mu_phi in rad per mm"),
+            ("areas_mm2", "list: each area between M_d and M_r in mm², + above M_r, − below, in order"))),
+        ("results", (
+            ("M_d", "N·m: the driving moment from the work balance"),
+            ("works_J", "list: the work of each interval in J, signed, in order"),
+            ("delta_W_max", "J: ΔW_max = E_max − E_min"),
+            ("omega_max_at", "where ω_max occurs: φ in degrees, or the point's letter"),
+            ("omega_min_at", "where ω_min occurs: φ in degrees, or the point's letter"),
+            ("omega_m", "rad/s: the mean angular speed"),
+            ("omega_max", "rad/s"),
+            ("omega_min", "rad/s"),
+            ("J_F", "kg·m²: the flywheel's moment of inertia"))),
+    ),
+    "velocity-plan": (
+        ("velocity_plan", (
+            ("mu_v", "(m/s) per mm: the velocity scale of your plan (μ_v)"),
+            ("pa_mm", "mm: the vector pa"),
+            ("pb_mm", "mm: the vector pb"),
+            ("ab_mm", "mm: the vector ab"),
+            ("ps2_mm", "mm: the vector ps₂"))),
+        ("results", (
+            ("v_A", "m/s"),
+            ("v_B", "m/s"),
+            ("v_BA", "m/s"),
+            ("v_S2", "m/s"),
+            ("omega_2", "rad/s: the connecting rod's angular speed, magnitude"),
+            ("omega_2_sense", "\"cw\" or \"ccw\""))),
+    ),
+    "wittenbauer": (
+        ("energy_mass", (
+            ("mu_J", "kg·m² per mm: the inertia scale (μ_J)"),
+            ("mu_T", "J per mm: the energy scale (μ_T)"),
+            ("tan_psi_max", "tan ψ_max, computed"),
+            ("tan_psi_min", "tan ψ_min, computed"),
+            ("kl_mm", "mm: the segment kl cut by the two rays on the ΔT axis"),
+            ("omega_max_at", "the position number where the ψ_max ray touches the curve"),
+            ("omega_min_at", "the position number where the ψ_min ray touches the curve"))),
+        ("results", (
+            ("J_F", "kg·m²: the flywheel's moment of inertia"),)),
+    ),
+}
+
+#: keys whose answer is a list (left blank as ``[]``)
+LISTS = frozenset({"arrows_mm", "works_J", "areas_mm2"})
+
+
+def template(kind: str, *, page: tuple[str, str] = ("A4", "portrait"), problem: str = "",
+             seed: int | None = None) -> str:
+    """The blank answers file of a worksheet kind, as TOML text with a comment on every key.
+
+    Parameters
+    ----------
+    kind : str
+        ``"indicator"``, ``"step-moment"``, ``"velocity-plan"`` or ``"wittenbauer"``.
+    page : (str, str)
+        The sheet the student draws on (size, orientation); the worksheet's own page by default.
+    problem : str
+        The problem id to put in (e.g. ``"indicator:7:3"``); left blank for a class set.
+    seed : int, optional
+        The class set's seed, named in the comment that says which PROBLEM to check against.
+
+    Returns
+    -------
+    str
+        TOML text that ``graphmethods check`` reads once its values are filled in.
+    """
+    if kind not in KEYS:
+        raise InputError(f"no answers template for kind {kind!r}; kinds: {', '.join(KEYS)}")
+    lines = [
+        f"# Answers of a \"{kind}\" worksheet; copy this file for each student, fill it in, then run",
+        "#     graphmethods check PROBLEM THE-COPY.toml",
+        f"# PROBLEM is the variant's id, {kind}:{'SEED' if seed is None else seed}:N with N the variant number "
+        f"printed on the sheet,",
+        f"# or its problem file problems/{kind}-NN.json.",
+        "# Replace each \"\" or [] by what you measured or wrote (a number, or a list of numbers);",
+        "# a key left \"\" or [] is not answered and not checked. Lengths in mm as measured on paper.",
+        f"problem = \"{problem}\"",
+        "student = \"\"",
+        "",
+        "[page]                      # the sheet you drew on",
+        f"size = \"{page[0]}\"",
+        f"orientation = \"{page[1]}\"",
+    ]
+    for section, keys in KEYS[kind]:
+        lines += ["", f"[{section}]"]
+        width = max(len(k) for k, _ in keys) + 5
+        for key, comment in keys:
+            blank = "[]" if key in LISTS else '""'
+            lines.append(f"{key} = {blank}".ljust(width + 3) + f"  # {comment}")
+    return "\n".join(lines) + "\n"
