@@ -379,8 +379,7 @@ def test_existing_out_file_refused(tmp_path, capsys):
     f.write_text("keep", encoding="utf-8")
     refused(capsys, "worksheet", "indicator", "--out", f, "--quiet", says="is a file")
     refused(capsys, "kinematics", DATA / "slider_crank_press.json", "--figures", f, says="is a file")
-    refused(capsys, "gallery", "--dir", pathlib.Path(__file__).resolve().parents[1] / "gallery", "--out", f,
-            says="is a file")
+    refused(capsys, "gallery", "--out", f, says="is a file")
     refused(capsys, "bench", "--quick", "--only", "flywheel", "--out", f, says="is a file")
     assert f.read_text(encoding="utf-8") == "keep"
 
@@ -442,6 +441,6 @@ def test_worksheet_force_replaces_the_whole_set_and_keeps_other_files(tmp_path, 
     (out / "svg" / "notes.txt").write_text("mine", encoding="utf-8")
     assert run(capsys, "worksheet", "indicator", "--variants", "1", "--out", out, "--quiet", "--force")[0] == 0
     files = sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file())
-    assert files == ["indicator-en.pdf", "problems/indicator-01.json", "svg/indicator-01-key.svg",
+    assert files == ["indicator-answers.toml", "indicator-en.pdf", "problems/indicator-01.json", "svg/indicator-01-key.svg",
                      "svg/indicator-01-student.svg", "svg/notes.txt"]          # no variant 2 or 3 left over
     assert sorted(p.name for p in tmp_path.iterdir()) == ["class"]

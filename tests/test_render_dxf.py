@@ -15,6 +15,7 @@ import pytest
 ezdxf = pytest.importorskip("ezdxf")
 
 from graphmethods import cli  # noqa: E402
+from graphmethods import gallery as gallery_figures  # noqa: E402
 from graphmethods.errors import OutputExistsError  # noqa: E402
 from graphmethods.kinematics import read_case  # noqa: E402
 from graphmethods.render import dxf  # noqa: E402
@@ -23,7 +24,6 @@ from graphmethods.sheets import kinematics as ks  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 DATA = ROOT / "graphmethods" / "problems" / "data"
-GALLERY = ROOT / "gallery"
 
 
 def read(data: bytes):
@@ -125,7 +125,7 @@ def test_every_layer_present_and_used():
     for name in ("w3_moment_diagram_en", "press_wittenbauer_en", "w1_energy_indicator_en"):
         from graphmethods.cli.gallery import build
 
-        scenes.append(build(GALLERY / f"{name}.py"))
+        scenes.append(build(name))
     used = set()
     for scene in scenes:
         doc = read(dxf.to_bytes(scene))
@@ -139,7 +139,7 @@ def test_every_layer_present_and_used():
 def test_hatching_curves_and_axes_on_their_layers():
     from graphmethods.cli.gallery import build
 
-    doc = read(dxf.to_bytes(build(GALLERY / "w3_moment_diagram_en.py")))
+    doc = read(dxf.to_bytes(build("w3_moment_diagram_en")))
     assert {e.dxf.layer for e in doc.groups.get("curve-M_d")} == {"CURVES"}
     assert {e.dxf.layer for e in doc.groups.get("region-1")} == {"HATCHING"}
     assert {e.dxf.layer for e in doc.groups.get("axis-M") if e.dxftype() != "TEXT"} == {"AXES"}
@@ -150,7 +150,7 @@ def test_hatching_curves_and_axes_on_their_layers():
 def test_nothing_outside_the_frame(name):
     from graphmethods.cli.gallery import build
 
-    scene = build(GALLERY / f"{name}.py")
+    scene = build(name)
     doc = read(dxf.to_bytes(scene))
     x0, y0, x1, y1 = scene.page.inner_box()
     H = scene.page.height_mm
@@ -246,7 +246,7 @@ def test_cli_study_sheet_and_check_overlay_as_dxf(tmp_path, capsys):
 def test_cli_gallery_writes_dxf(tmp_path, capsys):
     d = tmp_path / "g"
     d.mkdir()
-    shutil.copy(GALLERY / "w1_energy_indicator_en.py", d)
+    shutil.copy(pathlib.Path(gallery_figures.__file__).parent / "w1_energy_indicator_en.py", d)
     rc = cli.main(["gallery", "--dir", str(d), "--out", str(tmp_path / "out"), "--dxf"])
     out = capsys.readouterr().out
     assert rc == 0 and "w1_energy_indicator_en.dxf" in out

@@ -51,7 +51,8 @@ class _Version(argparse.Action):
     """``--version``: the metadata is read only when asked (it costs start-up time otherwise)."""
 
     def __call__(self, parser, namespace, values, option_string=None):
-        parser.exit(0, f"graphmethods {version()}\n")
+        print(f"graphmethods {version()}")
+        parser.exit(0)
 
 
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:

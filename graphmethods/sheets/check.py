@@ -10,10 +10,10 @@ the values they wrote (see :data:`SCHEMA` and the examples in ``graphmethods/pro
     orientation = "landscape"
     [energy_indicator]
     mu_E = 5.0                       # J/mm
-    arrows_mm = [10, -110, 20, -25, 100, -5, 10]
+    arrows_mm = [-10, 110, -20, 25, -100, 5, -10]
     [results]
     delta_W_max = 575.0              # J
-    omega_max_at = "b"
+    omega_max_at = "e"
     J_F = 43.69                      # kg·m²
 
 Each item gets the expected value at the student's scales, the deviation and a verdict:
@@ -236,7 +236,7 @@ def _typed_answer(kind: str, v, where: str):
         return v
     if kind == "list":
         if not isinstance(v, tuple):
-            raise InputError(f"{where} must be a list of numbers, e.g. [10, -110, 20], got {v!r}")
+            raise InputError(f"{where} must be a list of numbers, e.g. [-10, 110, -20], got {v!r}")
         return tuple(real(x, f"{where}[{i}]") if not isinstance(x, (str, tuple)) else
                      _not_a_number(x, f"{where}[{i}]") for i, x in enumerate(v))
     if kind == "xy":
