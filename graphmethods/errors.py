@@ -28,3 +28,11 @@ class MotionError(GraphmethodsError):
 
 class OutputExistsError(GraphmethodsError):
     """Refusing to overwrite an existing file without being asked (use overwrite=True / --force)."""
+
+
+class MissingFontError(GraphmethodsError):
+    """Text that no available font can draw in PNG/PDF (e.g. Chinese without a CJK font); nothing is written.
+
+    The message says which characters and how to get a font (install one, or set ``GRAPHMETHODS_CJK_FONT``).
+    SVG output does not raise it: the viewer chooses the font there.
+    """

@@ -111,8 +111,13 @@ def run(args) -> int:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(existing[:3])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
-    for path, module, targets in jobs:
-        scene = module.build()
+    built = [(module.build(), targets) for _, module, targets in jobs]
+    for scene, targets in built:
+        if len(targets) > 1:        # a PNG's text needs fonts: refuse (MissingFontError) before writing anything
+            from graphmethods.render import mpl
+
+            mpl.check_scene(scene)
+    for scene, targets in built:
         svg.save(scene, targets[0], overwrite=overwrite)
         line = f"wrote {targets[0]}"
         if len(targets) > 1:
