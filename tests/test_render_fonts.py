@@ -250,7 +250,7 @@ def test_the_png_draws_the_simplified_chinese_glyph(char):
         ref = _raster_outline(outline, upem, dpi=dpi, **place)
         h, w = min(ours.shape[0], ref.shape[0]), min(ours.shape[1], ref.shape[1])
         refs[face] = (ours[:h, :w] ^ ref[:h, :w]).sum() / ref.sum()      # pixels that differ, per inked pixel
-    assert refs[sc] < 0.1 and refs[sc] < 0.5 * refs[jp], refs
+    assert refs[sc] < 0.2 and refs[sc] < 0.5 * refs[jp], refs
 
 
 # ----------------------------------------------------------------- PDF text as poppler reads it
