@@ -36,6 +36,7 @@ import os
 import pathlib
 import re
 from dataclasses import dataclass
+from typing import Any
 
 from graphmethods.errors import MissingFontError
 from graphmethods.scene.markup import has_cjk
@@ -171,8 +172,8 @@ def _lookup() -> tuple[str, int] | None:
             found = _best_face(fname)
             if found is not None:
                 return found
-    fname = _mplfonts_font()
-    return (fname, 0) if fname is not None and _usable(fname, 0) else None
+    shipped = _mplfonts_font()
+    return (shipped, 0) if shipped is not None and _usable(shipped, 0) else None
 
 
 def _mplfonts_font() -> str | None:
@@ -273,8 +274,8 @@ def find_cjk_font() -> CJKFont | None:
 
     Examples
     --------
-    >>> font = find_cjk_font()
-    >>> font is None or font.family in CJK_FAMILIES or font.family != ""
+    >>> font = find_cjk_font()              # None on a machine without a CJK font
+    >>> font is None or (os.path.isfile(font.path) and font.index >= 0)
     True
     """
     global _rebuilt
@@ -359,11 +360,11 @@ class Face:
         from matplotlib import ft2font
 
         self.path, self.index = path, int(index)
-        kwargs = {"face_index": self.index} if self.index else {}
+        kwargs: dict[str, Any] = {"face_index": self.index} if self.index else {}
         if tuple(int(v) for v in matplotlib.__version__.split(".")[:2]) < (3, 11):
             # before 3.11 a face squeezes x by its hinting factor (8 by default): outlines, boxes, kerning
             kwargs["hinting_factor"] = 1
-        self._ft = ft2font.FT2Font(path, **kwargs)
+        self._ft: Any = ft2font.FT2Font(path, **kwargs)     # Any: its signatures differ across matplotlib 3.6-3.11
         self.units_per_em = int(self._ft.units_per_EM)
         self._cmap = self._ft.get_charmap()
         self._no_scale = _flag("LoadFlags", "NO_SCALE", "LOAD_NO_SCALE")

@@ -108,7 +108,7 @@ class _Fonts:
                 if current is not None:
                     shows.append((current.name, f"[{''.join(parts)}>]"))
                 current, parts = font, ["<"]
-            else:
+            elif prev is not None:
                 kern = face.kerning(prev, gid)
                 if kern:
                     parts.append(f"> {-1000.0 * kern / face.units_per_em:.1f} <".replace(".0 ", " "))
@@ -244,6 +244,7 @@ class _Writer:
         out = bytearray(b"%PDF-1.4\n%\xe2\xe3\xcf\xd3\n")
         offsets = []
         for i, body in enumerate(self.bodies, start=1):
+            assert body is not None, f"object {i} was reserved and never written"
             offsets.append(len(out))
             out += f"{i} 0 obj\n".encode("latin-1") + body + b"\nendobj\n"
         xref = len(out)
@@ -316,7 +317,9 @@ def _type0(w: _Writer, font: _Font) -> int:
                 f"/Ordering ({ordering}) /Supplement {supplement} >> /FontDescriptor {desc} 0 R /DW 1000 "
                 f"/W [{_widths(font)}]{' /CIDToGIDMap /Identity' if subtype == 'CIDFontType2' else ''} >>")
     unicode_map = w.stream(_to_unicode([(code, font.used[code][1]) for code in sorted(font.used)]))
-    return w.add(f"<< /Type /Font /Subtype /Type0 /BaseFont /{base} /Encoding /Identity-H "
+    # the Type 0 font's name: the CID font's, with "-Identity-H" after a CFF-based one (PDF 32000-1, 9.7.6.1)
+    type0_name = base if subtype == "CIDFontType2" else f"{base}-Identity-H"
+    return w.add(f"<< /Type /Font /Subtype /Type0 /BaseFont /{type0_name} /Encoding /Identity-H "
                  f"/DescendantFonts [{cid} 0 R] /ToUnicode {unicode_map} 0 R >>")
 
 
