@@ -419,13 +419,14 @@ class Face:
 
     def code(self, gid: int) -> int:
         """The 2-byte code a PDF shows glyph ``gid`` by: its CID in a CID-keyed CFF font, else ``gid``."""
-        if self.pdf_metrics().cid_keyed:
-            if self._cids is None:
+        if self._cids is None:
+            if self.pdf_metrics().cid_keyed:
                 f = _sfnt(self.path, self.index)
                 self._cids = [0 if n == ".notdef" else int(n[3:]) for n in f.getGlyphOrder()]
                 f.close()
-            return self._cids[gid]
-        return gid
+            else:
+                self._cids = []
+        return self._cids[gid] if self._cids else gid
 
     def subset(self, gids) -> bytes:
         """The font program with only glyphs ``gids`` (and .notdef): a TrueType font (glyph indices kept) or a

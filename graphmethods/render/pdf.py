@@ -24,6 +24,7 @@ class set of 60 pages is written in about a second.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 import zlib
@@ -95,11 +96,14 @@ class _Fonts:
         got = self._runs.get(key)
         if got is not None:
             return got
-        check_drawable(text, bold)
         fs = faces(text, bold=bold)
         width, shows, current, parts, prev = 0.0, [], None, [], None
         for ch in text:
-            face, gid = next((f, g) for f in fs if (g := f.glyph(ch)) is not None)
+            got = next(((f, g) for f in fs if (g := f.glyph(ch)) is not None), None)
+            if got is None:
+                check_drawable(text, bold)          # raises, naming the characters no face has
+                raise AssertionError(f"no glyph for {ch!r}")
+            face, gid = got
             font = self.font(face)
             code = face.code(gid)
             font.used.setdefault(code, (gid, ch))
@@ -234,8 +238,10 @@ class _Writer:
     def add(self, body: str | bytes) -> int:
         return self.put(self.reserve(), body)
 
-    def stream(self, data: bytes, extra: str = "", num: int | None = None) -> int:
-        packed = zlib.compress(data, 6)
+    def stream(self, data: bytes, extra: str = "", num: int | None = None, *, reused: bool = False) -> int:
+        """A Flate stream object; ``reused`` data (a font program, the same bytes in many documents) is
+        compressed once."""
+        packed = _deflate(data) if reused else zlib.compress(data, 6)
         head = f"<< /Length {len(packed)} /Filter /FlateDecode{extra} >>\nstream\n".encode("latin-1")
         body = head + packed + b"\nendstream"
         return self.put(num, body) if num else self.add(body)
@@ -253,6 +259,11 @@ class _Writer:
         out += (f"trailer\n<< /Size {len(self.bodies) + 1} /Root {root} 0 R /Info {info} 0 R >>\n"
                 f"startxref\n{xref}\n%%EOF\n").encode("latin-1")
         return bytes(out)
+
+
+@functools.lru_cache(maxsize=16)
+def _deflate(data: bytes) -> bytes:
+    return zlib.compress(data, 6)
 
 
 def _to_unicode(pairs: list[tuple[int, str]]) -> bytes:
@@ -306,9 +317,9 @@ def _type0(w: _Writer, font: _Font) -> int:
     base = f"{subset_tag(m.ps_name, font.used)}+{m.ps_name}"
     program = face.subset(gid for gid, _ in font.used.values())
     if m.outlines == "TrueType":
-        ref, subtype = f"/FontFile2 {w.stream(program, f' /Length1 {len(program)}')} 0 R", "CIDFontType2"
+        ref, subtype = f"/FontFile2 {w.stream(program, f' /Length1 {len(program)}', reused=True)} 0 R", "CIDFontType2"
     else:
-        ref, subtype = f"/FontFile3 {w.stream(program, ' /Subtype /CIDFontType0C')} 0 R", "CIDFontType0"
+        ref, subtype = f"/FontFile3 {w.stream(program, ' /Subtype /CIDFontType0C', reused=True)} 0 R", "CIDFontType0"
     desc = w.add(f"<< /Type /FontDescriptor /FontName /{base} /Flags 4 /FontBBox [{' '.join(map(_num, m.bbox))}] "
                  f"/ItalicAngle {_num(m.italic_angle)} /Ascent {_num(m.ascent)} /Descent {_num(m.descent)} "
                  f"/CapHeight {_num(m.cap_height)} /StemV 80 {ref} >>")
