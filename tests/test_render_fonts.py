@@ -4,6 +4,7 @@ words in reading order."""
 
 import io
 import os
+import pathlib
 import re
 import shutil
 import subprocess
@@ -19,7 +20,8 @@ from graphmethods.scene import Page, Scene, Text
 from graphmethods.sheets.worksheets import worksheet
 from pdf_reading import Pdf
 
-PRESS = "graphmethods/problems/data/slider_crank_press.json"
+PRESS = str(pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
+            / "slider_crank_press.json")
 
 
 def _clear_font_caches():
@@ -334,3 +336,33 @@ def test_pdftotext_reads_every_label_word_for_word_in_reading_order(lang, tmp_pa
                 later = [i for i in at if i > pos]
                 assert later, f"{lang} page {number}: {label_text!r} is read out of order"
                 pos = later[0]
+
+
+def test_a_real_stale_font_cache_is_rebuilt_and_the_chinese_sheet_written(tmp_path):
+    """matplotlib's own cache file, with the CJK fonts taken out (as if made before they were installed), in a
+    fresh process: the command rebuilds it once, finds the SC face, writes the sheet, and the cache is fixed."""
+    import json
+    import sys
+
+    import matplotlib
+
+    if fonts.find_cjk_font() is None:
+        pytest.skip("no CJK font on this machine (apt-get install fonts-noto-cjk)")
+    cache = next(pathlib.Path(matplotlib.get_cachedir()).glob(f"fontlist-v{fm.FontManager.__version__}.json"), None)
+    if cache is None:
+        pytest.skip("matplotlib keeps no font cache file here")
+    data = json.loads(cache.read_text(encoding="utf-8"))
+    data["ttflist"] = [e for e in data["ttflist"] if not fonts._covers(e["fname"]) and not e["fname"].endswith(".ttc")]
+    config = tmp_path / "mplconfig"
+    config.mkdir()
+    (config / cache.name).write_text(json.dumps(data), encoding="utf-8")
+    sheet = tmp_path / "sheet.pdf"
+    env = dict(os.environ, MPLCONFIGDIR=str(config))
+    env.pop("GRAPHMETHODS_CJK_FONT", None)
+    run = subprocess.run([sys.executable, "-m", "graphmethods", "study", PRESS, "--no-exact", "--sheet", str(sheet),
+                          "--lang", "zh"], capture_output=True, text=True, env=env)
+    assert run.returncode == 0, run.stderr
+    doc = Pdf(sheet.read_bytes())
+    assert any(b"CJK" in doc.dict(f) for f in doc.fonts(doc.pages()[0]).values())
+    rebuilt = json.loads((config / cache.name).read_text(encoding="utf-8"))
+    assert any(fonts._covers(e["fname"]) for e in rebuilt["ttflist"])
