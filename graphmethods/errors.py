@@ -40,3 +40,11 @@ class NoFlywheelNeeded(MotionError):
 
     Raised where a construction cannot go on (the Wittenbauer rays meet on the curve, so there is no
     origin O1); :meth:`graphmethods.dynamics.study.Study.summary` reports it as J_F = 0, not an error."""
+
+
+class MissingFontError(GraphmethodsError):
+    """Text that no available font can draw in PNG/PDF (e.g. Chinese without a CJK font); nothing is written.
+
+    The message says which characters and how to get a font (install one, or set ``GRAPHMETHODS_CJK_FONT``).
+    SVG output does not raise it: the viewer chooses the font there.
+    """

@@ -2,7 +2,7 @@
 streams, fonts with their ToUnicode maps, and the text shown (where, how large, which characters).
 
 It knows only the subset of PDF that graphmethods.render.pdf writes (one xref section, Flate streams,
-Type 3 fonts, ``Tm``/``Tf``/``TJ`` text), and fails loudly on anything else.
+Type 0 fonts with 2-byte codes, ``Tm``/``Tf``/``TJ`` text), and fails loudly on anything else.
 """
 
 from __future__ import annotations
@@ -85,7 +85,7 @@ class Pdf:
         cmap = self.stream(num).decode("ascii")
         out = {}
         for block in re.findall(r"beginbfchar\n(.*?)\nendbfchar", cmap, flags=re.S):
-            for code, uni in re.findall(r"<([0-9A-F]{2})> <([0-9A-F]+)>", block):
+            for code, uni in re.findall(r"<([0-9A-F]{4})> <([0-9A-F]+)>", block):
                 out[int(code, 16)] = bytes.fromhex(uni).decode("utf-16-be")
         return out
 
@@ -103,6 +103,7 @@ class Pdf:
                 for name, sz, array in re.findall(r"/(\w+) (\S+) Tf \[(.*?)\] TJ", shows):
                     size = float(sz)
                     for hexes in re.findall(r"<([0-9A-F]*)>", array):
-                        text += "".join(maps[name][int(hexes[i:i + 2], 16)] for i in range(0, len(hexes), 2))
+                        assert len(hexes) % 4 == 0, f"codes are 2 bytes: {hexes}"
+                        text += "".join(maps[name][int(hexes[i:i + 4], 16)] for i in range(0, len(hexes), 4))
                 out.append(Shown(x, y, size, text))
         return out

@@ -1,15 +1,26 @@
-"""Font files and their glyphs, through matplotlib's FreeType wrapper (imported lazily).
+"""Font files and their glyphs: which faces draw PNG and PDF text, and the font programs a PDF embeds.
 
 Two renderers draw text themselves: :mod:`graphmethods.render.mpl` (PNG, by family
-name) and :mod:`graphmethods.render.pdf` (PDF, glyph by glyph). Both take their fonts
-from here: DejaVu Sans (matplotlib's own font: Latin, Greek, Cyrillic) and, for
-Chinese, a CJK font found by :func:`find_cjk_font` (``GRAPHMETHODS_CJK_FONT``, the
-system's fonts, then the ``mplfonts`` package, which ships Noto Sans CJK SC under the
-SIL Open Font License). When there is none, a single :class:`CJKFontWarning` says so
-and how to get one, instead of silently drawing empty boxes.
+name) and :mod:`graphmethods.render.pdf` (PDF, glyph by glyph, embedding subsets of
+the font files). Both take their fonts from here:
 
-A :class:`Face` gives what a PDF needs of a font file, in font units: the glyph of a
-character, advance widths, pair kerning and outlines.
+- DejaVu Sans, matplotlib's own font (Latin, Greek, Cyrillic), regular and bold;
+- for Chinese, the Simplified Chinese face of a CJK font, found by
+  :func:`find_cjk_font`: the file in ``GRAPHMETHODS_CJK_FONT``, else the first of
+  :data:`CJK_FAMILIES` that matplotlib knows (regular weight), else any font that
+  covers Chinese, else the font of the ``mplfonts`` package
+  (``pip install 'graphmethods[cjk]'``: Noto Sans CJK SC, SIL Open Font License). In a
+  ``.ttc`` collection the face is chosen by name: Noto Sans CJK's first face is the
+  Japanese one, whose 直, 骨, 与 differ from the Chinese.
+
+When Chinese text is to be drawn and no font has it, matplotlib's font list is rebuilt
+once (it may have been cached before the font was installed); if there is still none,
+:class:`~graphmethods.errors.MissingFontError` says what to install or set. Text is
+never drawn as empty boxes.
+
+A :class:`Face` gives what a layout and a PDF need of a font face, in font units: the
+glyph of a character, advance widths, pair kerning, the code a PDF shows it by, and a
+subset of the font program.
 
 >>> face = faces("M_d", bold=False)[0]
 >>> face.units_per_em, face.advance(face.glyph("M"))
@@ -19,35 +30,90 @@ character, advance widths, pair kerning and outlines.
 from __future__ import annotations
 
 import functools
+import hashlib
+import io
 import os
 import pathlib
-import warnings
+import re
+from dataclasses import dataclass
+from typing import Any
 
+from graphmethods.errors import MissingFontError
 from graphmethods.scene.markup import has_cjk
 
 BASE_FAMILY = "DejaVu Sans"
 
-#: CJK families tried first, by name (the system's, Windows', macOS')
+#: CJK families, first choice first (Linux, Windows, macOS names). Simplified Chinese faces come first;
+#: the Japanese face of Noto Sans CJK is a last resort (its forms of 直, 骨, 与 are Japanese).
 CJK_FAMILIES = (
-    "Noto Sans CJK SC", "Noto Sans SC", "Source Han Sans SC", "Source Han Sans CN", "Noto Sans CJK JP",
-    "WenQuanYi Zen Hei", "WenQuanYi Micro Hei", "Microsoft YaHei", "SimHei", "PingFang SC", "Heiti SC",
-    "Hiragino Sans GB", "Droid Sans Fallback", "AR PL UMing CN", "AR PL UKai CN",
+    "Noto Sans CJK SC", "Noto Sans SC", "Source Han Sans SC", "Source Han Sans CN", "WenQuanYi Zen Hei",
+    "WenQuanYi Micro Hei", "Microsoft YaHei", "SimHei", "PingFang SC", "Heiti SC", "Hiragino Sans GB",
+    "Noto Serif CJK SC", "Source Han Serif SC", "AR PL UMing CN", "AR PL UKai CN", "Droid Sans Fallback",
+    "Noto Sans CJK TC", "Noto Sans CJK HK", "Noto Sans CJK JP", "Noto Sans CJK KR",
 )
 _PROBE = "盈亏功能量指示图"
 
-_warned = False
+#: what to do when Chinese text cannot be drawn (the end of every such error message)
+CJK_ADVICE = ("install a CJK font (Debian/Ubuntu: apt-get install fonts-noto-cjk; or pip install "
+              "'graphmethods[cjk]'), or set GRAPHMETHODS_CJK_FONT=/path/to/font.otf; SVG output needs none")
+
+_rebuilt = False
 
 
-class CJKFontWarning(UserWarning):
-    """No font with Chinese characters was found; Chinese text would draw as empty boxes."""
+@dataclass(frozen=True)
+class CJKFont:
+    """The face that draws Chinese: a font file, the face's index in it (0 unless a ``.ttc``) and its family."""
+
+    path: str
+    index: int
+    family: str
 
 
-def _covers(path: str) -> bool:
-    from matplotlib import ft2font
+def _mpl_reads_collections() -> bool:
+    """True on matplotlib >= 3.11: its font list and FreeType wrapper know every face of a ``.ttc``."""
+    from matplotlib import font_manager
+
+    return hasattr(font_manager, "FontPath")
+
+
+def _sfnt(path: str, index: int = 0):
+    """The face as a lazily read fontTools font (``index`` selects a face of a collection)."""
+    from fontTools.ttLib import TTFont
+
+    return TTFont(path, fontNumber=index, lazy=True, recalcTimestamp=False, recalcBBoxes=False)
+
+
+@functools.lru_cache(maxsize=None)
+def _faces_in(path: str) -> tuple[tuple[str, int], ...]:
+    """(family, weight class) of each face in a font file; () when it cannot be read."""
+    from fontTools.ttLib import TTCollection
 
     try:
-        cmap = ft2font.FT2Font(path).get_charmap()
-    except Exception:  # unreadable font file: not ours to fix
+        with open(path, "rb") as fh:
+            collection = fh.read(4) == b"ttcf"
+        fonts = TTCollection(path, lazy=True).fonts if collection else [_sfnt(path)]
+        out = []
+        try:
+            for f in fonts:
+                name = f["name"]
+                family = name.getDebugName(16) or name.getDebugName(1) or ""
+                out.append((family, int(f["OS/2"].usWeightClass) if "OS/2" in f else 400))
+        finally:
+            fonts[0].close()              # the faces of a collection share one open file
+        return tuple(out)
+    except Exception:  # not a font file fontTools reads: not ours to fix, and not usable
+        return ()
+
+
+@functools.lru_cache(maxsize=None)
+def _usable(path: str, index: int) -> bool:
+    """The face has distinct glyphs for Chinese characters and outlines a PDF can embed (TrueType or CFF)."""
+    try:
+        f = _sfnt(path, index)
+        if "glyf" not in f and "CFF " not in f:
+            return False
+        cmap = f.getBestCmap() or {}
+    except Exception:
         return False
     if not all(ord(c) in cmap for c in _PROBE):
         return False
@@ -55,77 +121,192 @@ def _covers(path: str) -> bool:
     return len({cmap[ord(c)] for c in _PROBE}) == len(set(_PROBE))
 
 
-@functools.lru_cache(maxsize=1)
-def find_cjk_font() -> str | None:
-    """Path of a font that covers Chinese, or None; registered with matplotlib's font manager.
+def _best_face(path: str, hint: int | None = None) -> tuple[str, int] | None:
+    """The face of ``path`` to draw Chinese with: the earliest of :data:`CJK_FAMILIES`, regular weight;
+    ``hint`` (the face matplotlib chose) breaks ties."""
+    def rank(item):
+        i, (family, weight) = item
+        pos = CJK_FAMILIES.index(family) if family in CJK_FAMILIES else len(CJK_FAMILIES)
+        return pos, abs(weight - 400), i != hint, i
 
-    Looks, in order, at the environment variable ``GRAPHMETHODS_CJK_FONT`` (a font
-    file), the system's fonts known to matplotlib (by family name, then by the
-    characters they cover), and the font shipped by the ``mplfonts`` package
-    (``pip install 'graphmethods[cjk]'``; Noto Sans CJK SC, SIL OFL).
-    """
-    from matplotlib import font_manager
+    for i, _ in sorted(enumerate(_faces_in(path)), key=rank):
+        if _usable(path, i):
+            return path, i
+    return None
 
-    candidates = []
+
+def _covers(path: str) -> bool:
+    """Quick test of the first face of a file (FreeType): has it the Chinese probe characters?"""
+    from matplotlib import ft2font
+
+    try:
+        cmap = ft2font.FT2Font(path).get_charmap()
+    except Exception:  # unreadable font file: not ours to fix
+        return False
+    return all(ord(c) in cmap for c in _PROBE)
+
+
+def _lookup() -> tuple[str, int] | None:
+    """(file, face index) of a CJK face, or None; no caching, no registering."""
+    from matplotlib import font_manager as fm
+
     env = os.environ.get("GRAPHMETHODS_CJK_FONT", "").strip()
     if env:
-        candidates.append(env)
-    entries = list(font_manager.fontManager.ttflist)
-    by_name = {}
-    for e in entries:
-        by_name.setdefault(e.name, e.fname)
-    candidates += [by_name[n] for n in CJK_FAMILIES if n in by_name]
-    candidates += sorted({e.fname for e in entries if e.name not in by_name or by_name[e.name] == e.fname})
+        found = _best_face(env) if os.path.isfile(env) else None
+        if found is None:
+            raise MissingFontError(f"GRAPHMETHODS_CJK_FONT={env} is not a font file with Chinese characters "
+                                   f"(TrueType or OpenType, .ttf/.otf/.ttc); give one, or unset it to use the "
+                                   f"system's fonts")
+        return found
+    try:
+        path = fm.findfont(fm.FontProperties(family=list(CJK_FAMILIES), weight="normal", style="normal"),
+                           fallback_to_default=False)
+    except ValueError:
+        path = None
+    if path:
+        found = _best_face(str(path), getattr(path, "face_index", None))
+        if found is not None:
+            return found
+    for fname in sorted({e.fname for e in fm.fontManager.ttflist}):
+        if _covers(fname):
+            found = _best_face(fname)
+            if found is not None:
+                return found
+    shipped = _mplfonts_font()
+    return (shipped, 0) if shipped is not None and _usable(shipped, 0) else None
+
+
+def _mplfonts_font() -> str | None:
+    """Noto Sans CJK SC as the ``mplfonts`` package ships it (``pip install 'graphmethods[cjk]'``), or None."""
     try:
         import importlib.util
 
         spec = importlib.util.find_spec("mplfonts")
     except (ImportError, ValueError):
         spec = None
-    if spec is not None and spec.submodule_search_locations:
-        for loc in spec.submodule_search_locations:
-            candidates.append(str(pathlib.Path(loc) / "fonts" / "NotoSansCJKsc-Regular.otf"))
-    if env and not (os.path.isfile(env) and _covers(env)):
-        warnings.warn(f"graphmethods: GRAPHMETHODS_CJK_FONT={env} is not a font file with Chinese characters; "
-                      f"looking for another", CJKFontWarning, stacklevel=2)
-    for path in candidates:
-        if path and os.path.isfile(path) and _covers(path):
-            font_manager.fontManager.addfont(path)
-            return path
+    for loc in (spec.submodule_search_locations or []) if spec is not None else []:
+        fname = pathlib.Path(loc) / "fonts" / "NotoSansCJKsc-Regular.otf"
+        if fname.is_file():
+            return str(fname)
     return None
 
 
+def _rebuild_font_list() -> None:
+    """matplotlib's font list made anew from the fonts installed now (and its cache file rewritten), in place,
+    as matplotlib itself does when a cached font file has gone missing."""
+    from matplotlib import font_manager as fm
+
+    load = getattr(fm, "_load_fontmanager", None)
+    new = load(try_read_cache=False) if load is not None else fm.FontManager()
+    vars(fm.fontManager).update(vars(new))
+    cached = getattr(fm.fontManager, "_findfont_cached", None)
+    if cached is not None and hasattr(cached, "cache_clear"):
+        cached.cache_clear()
+
+
+def _extract_face(path: str, index: int) -> str:
+    """One face of a collection as a font file of its own, in matplotlib's cache folder (made once).
+
+    matplotlib < 3.11 reads only the first face of a ``.ttc`` (the Japanese one in Noto Sans CJK)."""
+    import matplotlib
+
+    st = os.stat(path)
+    key = hashlib.sha256(f"{os.path.realpath(path)}|{st.st_size}|{st.st_mtime_ns}|{index}".encode()).hexdigest()[:12]
+    font = _sfnt(path, index)
+    out = pathlib.Path(matplotlib.get_cachedir()) / "graphmethods-fonts" / \
+        f"{pathlib.Path(path).stem}-{index}-{key}.{'otf' if 'CFF ' in font else 'ttf'}"
+    if not out.is_file():
+        out.parent.mkdir(parents=True, exist_ok=True)
+        tmp = out.with_name(f".{out.name}.{os.getpid()}.tmp")
+        try:
+            font.save(str(tmp))
+            os.replace(tmp, out)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
+    font.close()
+    return str(out)
+
+
+def _same(a: str, b: str) -> bool:
+    return os.path.realpath(a) == os.path.realpath(b)
+
+
+def _register(path: str, index: int) -> CJKFont:
+    """Make the face known to matplotlib (so PNG text finds it by family) and return it as matplotlib resolves
+    its family, so that PNG and PDF draw with the same face."""
+    from matplotlib import font_manager as fm
+
+    if index and not _mpl_reads_collections():
+        path, index = _extract_face(path, index), 0
+
+    def entries():
+        return [e for e in fm.fontManager.ttflist if _same(e.fname, path) and getattr(e, "index", 0) == index]
+
+    if not entries():
+        fm.fontManager.addfont(path)
+    known = entries()
+    family = known[0].name if known else _faces_in(path)[index][0]
+    try:
+        got = fm.findfont(fm.FontProperties(family=[family], weight="normal", style="normal"),
+                          fallback_to_default=False)
+    except ValueError:
+        got = None
+    if got and not (_same(str(got), path) and getattr(got, "face_index", 0) == index) \
+            and _usable(str(got), getattr(got, "face_index", 0)):
+        path, index = str(got), getattr(got, "face_index", 0)     # another file of the same family wins there
+    return CJKFont(path, index, family)
+
+
 @functools.lru_cache(maxsize=1)
-def cjk_family() -> str | None:
-    path = find_cjk_font()
-    if path is None:
-        return None
-    from matplotlib.font_manager import FontProperties
+def find_cjk_font() -> CJKFont | None:
+    """The face that draws Chinese in PNG and PDF, registered with matplotlib; None when there is none.
 
-    return FontProperties(fname=path).get_name()
+    Looks, in order, at ``GRAPHMETHODS_CJK_FONT`` (a font file; in a collection, its Chinese face),
+    matplotlib's fonts by the family names :data:`CJK_FAMILIES` (regular weight), any font covering Chinese,
+    and the ``mplfonts`` package. When nothing is found, matplotlib's font list is rebuilt once (a cache made
+    before the font was installed) and the search repeated.
+
+    Raises
+    ------
+    MissingFontError
+        If ``GRAPHMETHODS_CJK_FONT`` names no font file with Chinese characters.
+
+    Examples
+    --------
+    >>> font = find_cjk_font()              # None on a machine without a CJK font
+    >>> font is None or (os.path.isfile(font.path) and font.index >= 0)
+    True
+    """
+    global _rebuilt
+    found = _lookup()
+    if found is None and not _rebuilt:
+        _rebuilt = True
+        _rebuild_font_list()
+        found = _lookup()
+    return None if found is None else _register(*found)
 
 
-def warn_no_cjk() -> None:
-    global _warned
-    if _warned:
-        return
-    _warned = True
-    warnings.warn(
-        "graphmethods: no font with Chinese characters was found, so the Chinese text of this figure cannot be "
-        "drawn in PNG/PDF (it would show as empty boxes). Get one with `pip install 'graphmethods[cjk]'` (mplfonts: Noto Sans CJK SC, "
-        "SIL Open Font License), or install your system's Noto CJK fonts (Debian/Ubuntu: fonts-noto-cjk), or set "
-        "GRAPHMETHODS_CJK_FONT=/path/to/font.otf. SVG output is not affected: the viewer chooses the font.",
-        CJKFontWarning, stacklevel=3)
+def require_cjk() -> CJKFont:
+    """The CJK face (see :func:`find_cjk_font`), or :class:`~graphmethods.errors.MissingFontError` saying
+    what to install or set."""
+    font = find_cjk_font()
+    if font is None:
+        raise MissingFontError("no font with Chinese characters was found (matplotlib's font list was rebuilt "
+                               f"and searched again), so Chinese text cannot be drawn in PNG/PDF: {CJK_ADVICE}")
+    return font
 
 
 def families(text: str) -> list[str]:
-    """Font families for ``text``: DejaVu Sans, then the CJK font when the text has Chinese (or a warning)."""
+    """Font families for ``text``: DejaVu Sans, then the CJK face's family when the text has Chinese.
+
+    Raises
+    ------
+    MissingFontError
+        If the text has Chinese and no font has it.
+    """
     if has_cjk(text):
-        fam = cjk_family()
-        if fam is None:
-            warn_no_cjk()
-            return [BASE_FAMILY]
-        return [BASE_FAMILY, fam]
+        return [BASE_FAMILY, require_cjk().family]
     return [BASE_FAMILY]
 
 
@@ -136,13 +317,33 @@ def _flag(enum: str, member: str, old: str):
     return getattr(getattr(ft2font, enum), member) if hasattr(ft2font, enum) else getattr(ft2font, old)
 
 
+@dataclass(frozen=True)
+class PdfMetrics:
+    """What a PDF font descriptor says of a face, in 1/1000 em: its PostScript name, the kind of outlines
+    (``"TrueType"`` or ``"CFF"``), whether the CFF is CID-keyed and its (registry, ordering, supplement),
+    ascent, descent, cap height, bounding box and italic angle (degrees)."""
+
+    ps_name: str
+    outlines: str
+    cid_keyed: bool
+    ros: tuple[str, str, int]
+    ascent: float
+    descent: float
+    cap_height: float
+    bbox: tuple[float, float, float, float]
+    italic_angle: float
+
+
 class Face:
-    """One font file: glyphs of characters, advances, kerning and outlines in font units.
+    """One face of a font file: glyphs of characters, advances and kerning in font units, and for a PDF the
+    code of each glyph, the font's metrics and a subset of its program.
 
     Parameters
     ----------
     path : str
-        A TrueType or OpenType font file.
+        A TrueType or OpenType font file (``.ttf``, ``.otf``, ``.ttc``).
+    index : int
+        The face in a collection (0 for a single font).
 
     Examples
     --------
@@ -150,46 +351,38 @@ class Face:
     >>> a, v = face.glyph("A"), face.glyph("V")
     >>> face.kerning(a, v) < 0 < face.advance(a)          # A and V tuck together
     True
-    >>> face.outline(a)[1][:4]                            # bounding box (font units, y up)
-    (16, 0, 1384, 1493)
+    >>> face.code(a) == a, face.pdf_metrics().ps_name     # a TrueType face: PDF codes are glyph indices
+    (True, 'DejaVuSans')
     """
 
-    def __init__(self, path: str):
+    def __init__(self, path: str, index: int = 0):
         import matplotlib
         from matplotlib import ft2font
 
-        self.path = path
+        self.path, self.index = path, int(index)
+        kwargs: dict[str, Any] = {"face_index": self.index} if self.index else {}
         if tuple(int(v) for v in matplotlib.__version__.split(".")[:2]) < (3, 11):
             # before 3.11 a face squeezes x by its hinting factor (8 by default): outlines, boxes, kerning
-            self._ft = ft2font.FT2Font(path, hinting_factor=1)
-        else:
-            self._ft = ft2font.FT2Font(path)
+            kwargs["hinting_factor"] = 1
+        self._ft: Any = ft2font.FT2Font(path, **kwargs)     # Any: its signatures differ across matplotlib 3.6-3.11
         self.units_per_em = int(self._ft.units_per_EM)
         self._cmap = self._ft.get_charmap()
         self._no_scale = _flag("LoadFlags", "NO_SCALE", "LOAD_NO_SCALE")
         self._unscaled = _flag("Kerning", "UNSCALED", "KERNING_UNSCALED")
-        self._glyphs: dict[int, tuple[int, tuple[int, int, int, int], str]] = {}
+        self._advances: dict[int, int] = {}
         self._kerns: dict[tuple[int, int], int] = {}
+        self._cids: list[int] | None = None
 
     def glyph(self, char: str) -> int | None:
         """Glyph index of ``char``, or None when the font has none."""
         return self._cmap.get(ord(char)) or None
 
-    def _load(self, gid: int):
-        got = self._glyphs.get(gid)
-        if got is None:
-            g = self._ft.load_glyph(gid, self._no_scale)
-            verts, codes = self._ft.get_path()
-            verts = verts * 64.0                      # FreeType's 26.6 fixed point back to font units
-            bbox = tuple(int(b) for b in g.bbox)
-            if len(verts) and abs(verts[:, 1].max() + bbox[1]) < abs(verts[:, 1].max() - bbox[3]):
-                verts[:, 1] = -verts[:, 1]            # a matplotlib that hands outlines over y down
-            got = self._glyphs[gid] = (int(g.horiAdvance), bbox, _outline_ops(verts, codes))
-        return got
-
     def advance(self, gid: int) -> int:
         """Advance width of glyph ``gid`` in font units."""
-        return self._load(gid)[0]
+        adv = self._advances.get(gid)
+        if adv is None:
+            adv = self._advances[gid] = int(self._ft.load_glyph(gid, self._no_scale).horiAdvance)
+        return adv
 
     def kerning(self, left: int, right: int) -> int:
         """Pair kerning between two glyphs in font units (0 when the font has none)."""
@@ -199,71 +392,139 @@ class Face:
             k = self._kerns[key] = int(self._ft.get_kerning(left, right, self._unscaled))
         return k
 
-    def outline(self, gid: int) -> tuple[str, tuple[int, int, int, int]]:
-        """PDF path operators of glyph ``gid`` (font units, y up, filled non-zero) and its bounding box."""
-        _, bbox, ops = self._load(gid)
-        return ops, bbox
+    @functools.lru_cache(maxsize=None)
+    def pdf_metrics(self) -> PdfMetrics:
+        """The face's name, kind of outlines and descriptor metrics (1/1000 em), read with fontTools."""
+        f = _sfnt(self.path, self.index)
+        try:
+            em = 1000.0 / f["head"].unitsPerEm
+            name = f["name"].getDebugName(6) or f["name"].getDebugName(4) or "Font"
+            ps_name = re.sub(r"[^A-Za-z0-9._-]", "", name) or "Font"
+            cid_keyed, ros = False, ("Adobe", "Identity", 0)
+            if "CFF " in f:
+                top = f["CFF "].cff.topDictIndex[0]
+                if hasattr(top, "ROS"):
+                    cid_keyed, ros = True, (str(top.ROS[0]), str(top.ROS[1]), int(top.ROS[2]))
+            head, hhea = f["head"], f["hhea"]
+            os2 = f["OS/2"] if "OS/2" in f else None
+            cap = getattr(os2, "sCapHeight", 0) if os2 is not None else 0
+            return PdfMetrics(
+                ps_name=ps_name, outlines="CFF" if "CFF " in f else "TrueType", cid_keyed=cid_keyed, ros=ros,
+                ascent=round(hhea.ascent * em, 3), descent=round(hhea.descent * em, 3),
+                cap_height=round((cap or hhea.ascent) * em, 3),
+                bbox=tuple(round(v * em, 3) for v in (head.xMin, head.yMin, head.xMax, head.yMax)),
+                italic_angle=float(f["post"].italicAngle) if "post" in f else 0.0)
+        finally:
+            f.close()
+
+    def code(self, gid: int) -> int:
+        """The 2-byte code a PDF shows glyph ``gid`` by: its CID in a CID-keyed CFF font, else ``gid``."""
+        if self._cids is None:
+            if self.pdf_metrics().cid_keyed:
+                f = _sfnt(self.path, self.index)
+                self._cids = [0 if n == ".notdef" else int(n[3:]) for n in f.getGlyphOrder()]
+                f.close()
+            else:
+                self._cids = []
+        return self._cids[gid] if self._cids else gid
+
+    def subset(self, gids) -> bytes:
+        """The font program with only glyphs ``gids`` (and .notdef): a TrueType font (glyph indices kept) or a
+        bare CFF table (CIDs kept), deterministic (no timestamps change); cached per glyph set."""
+        return _subset(self.path, self.index, tuple(sorted(set(gids) | {0})))
 
 
-def _num(x: float) -> str:
-    s = f"{x:.2f}".rstrip("0").rstrip(".")
-    return "0" if s in ("-0", "") else s
+@functools.lru_cache(maxsize=32)
+def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
+    from fontTools import subset
 
-
-def _outline_ops(verts, codes) -> str:
-    """FreeType's outline (matplotlib path codes: 1 move, 2 line, 3 quadratic, 4 cubic, 79 close)
-    as PDF operators; quadratic pieces become the equal cubics."""
-    out = []
-    i, n = 0, len(codes)
-    cur = start = (0.0, 0.0)
-    while i < n:
-        c = codes[i]
-        if c == 1:
-            cur = start = (verts[i][0], verts[i][1])
-            out.append(f"{_num(cur[0])} {_num(cur[1])} m")
-            i += 1
-        elif c == 2:
-            cur = (verts[i][0], verts[i][1])
-            out.append(f"{_num(cur[0])} {_num(cur[1])} l")
-            i += 1
-        elif c == 3:
-            (qx, qy), (x, y) = verts[i], verts[i + 1]
-            c1 = (cur[0] + 2.0 / 3.0 * (qx - cur[0]), cur[1] + 2.0 / 3.0 * (qy - cur[1]))
-            c2 = (x + 2.0 / 3.0 * (qx - x), y + 2.0 / 3.0 * (qy - y))
-            out.append(" ".join(_num(v) for v in (*c1, *c2, x, y)) + " c")
-            cur = (x, y)
-            i += 2
-        elif c == 4:
-            pts = verts[i:i + 3]
-            out.append(" ".join(_num(v) for p in pts for v in p) + " c")
-            cur = (pts[2][0], pts[2][1])
-            i += 3
-        else:                       # CLOSEPOLY (its vertex is ignored) or STOP
-            out.append("h")
-            cur = start
-            i += 1
-    return " ".join(out)
+    font = _sfnt(path, index)
+    cff = "CFF " in font
+    keep = {"head", "hhea", "hmtx", "maxp"} | ({"CFF "} if cff else {"glyf", "loca"})
+    dropped = [tag for tag in font.keys() if tag not in keep and tag != "GlyphOrder"]
+    for tag in dropped:            # before subsetting: fontTools would otherwise read the layout tables
+        del font[tag]
+    opts = subset.Options()
+    opts.drop_tables = sorted(set(opts.drop_tables) | set(dropped))
+    opts.notdef_outline = True
+    opts.layout_features = []
+    opts.name_IDs = []
+    opts.hinting = cff             # CFF hints are small and their removal slow; TrueType hinting is dropped
+    # codes are glyph indices (TrueType, name-keyed CFF) or CIDs, which a CID-keyed CFF keeps in its charset
+    opts.retain_gids = not (cff and hasattr(font["CFF "].cff.topDictIndex[0], "ROS"))
+    opts.recalc_timestamp = False
+    opts.recalc_bounds = False
+    sub = subset.Subsetter(opts)
+    sub.populate(gids=list(gids))
+    sub.subset(font)
+    try:
+        if cff:
+            return font["CFF "].compile(font)
+        buf = io.BytesIO()
+        font.save(buf)
+        return buf.getvalue()
+    finally:
+        font.close()
 
 
 @functools.lru_cache(maxsize=None)
-def _face(path: str) -> Face:
-    return Face(path)
+def _face(path: str, index: int = 0) -> Face:
+    return Face(path, index)
 
 
 @functools.lru_cache(maxsize=None)
 def _base_path(bold: bool) -> str:
     from matplotlib.font_manager import FontProperties, findfont
 
-    return findfont(FontProperties(family=BASE_FAMILY, weight="bold" if bold else "normal"))
+    return str(findfont(FontProperties(family=BASE_FAMILY, weight="bold" if bold else "normal")))
 
 
 def faces(text: str, *, bold: bool) -> tuple[Face, ...]:
-    """The faces that draw ``text``, first choice first: DejaVu Sans (bold or regular), then the CJK font
-    when the text has Chinese. CJK fonts rarely ship a bold face, so Chinese text is drawn regular."""
+    """The faces that draw ``text``, first choice first: DejaVu Sans (bold or regular), then the CJK face
+    when the text has Chinese. CJK fonts rarely ship a bold face, so a line with Chinese is drawn regular.
+
+    Raises
+    ------
+    MissingFontError
+        If the text has Chinese and no font has it.
+    """
     if has_cjk(text):
-        path = find_cjk_font()
-        if path is None:
-            warn_no_cjk()
-            return (_face(_base_path(bold)),)
-        return (_face(_base_path(False)), _face(path))
+        cjk = require_cjk()
+        return (_face(_base_path(False)), _face(cjk.path, cjk.index))
     return (_face(_base_path(bold)),)
+
+
+@functools.lru_cache(maxsize=16384)
+def check_drawable(text: str, bold: bool = False) -> None:
+    """Refuse text with characters no face draws, before anything is written.
+
+    Raises
+    ------
+    MissingFontError
+        Naming the characters (and, for Chinese, what to install or set).
+
+    Examples
+    --------
+    >>> check_drawable("ψ_max = 30°, Мд")
+    >>> check_drawable("नमस्ते")                         # Devanagari: DejaVu Sans has none
+    Traceback (most recent call last):
+    ...
+    graphmethods.errors.MissingFontError: cannot draw 'त' (U+0924), 'न' (U+0928), ... no glyph for them; change the text or write SVG
+    """
+    fs = faces(text, bold=bold)
+    missing = sorted({ch for ch in text if all(f.glyph(ch) is None for f in fs)})
+    if missing:
+        chars = ", ".join(f"{ch!r} (U+{ord(ch):04X})" for ch in missing[:5]) + (" and more" if len(missing) > 5 else "")
+        names = BASE_FAMILY + (f" and {require_cjk().family}" if len(fs) > 1 else "")
+        raise MissingFontError(f"cannot draw {chars} in PNG/PDF: {names} {'have' if len(fs) > 1 else 'has'} no "
+                               f"glyph for {'them' if len(missing) > 1 else 'it'}; change the text or write SVG")
+
+
+def check_scene(scene) -> None:
+    """:func:`check_drawable` for every label of ``scene`` (to refuse before a batch writes any file)."""
+    from graphmethods.render.recording import record
+
+    for call in record(scene).calls:
+        if call.kind == "text":
+            for chunk, _ in call.data.runs:
+                check_drawable(chunk, call.data.bold)

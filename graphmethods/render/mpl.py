@@ -5,7 +5,9 @@ no global state is touched: figures are built with ``matplotlib.figure.Figure``
 and the Agg canvas directly (no pyplot, no ``matplotlib.use``). PNG output is
 deterministic (no software or date metadata). PDF is written by
 :mod:`graphmethods.render.pdf`; both take their fonts from
-:mod:`graphmethods.render.fonts` (DejaVu Sans; a CJK font for Chinese).
+:mod:`graphmethods.render.fonts` (DejaVu Sans; the Simplified Chinese face of a CJK
+font for Chinese). Text that no font can draw is refused with
+:class:`~graphmethods.errors.MissingFontError` before any file is written.
 
 >>> from graphmethods.scene import Scene, Page, Text
 >>> png = to_png_bytes(Scene(Page("A4"), (Text((20, 20), "ψ_{max} = 30°; M_д"),)), dpi=30)
@@ -17,11 +19,10 @@ from __future__ import annotations
 
 import functools
 import io
-import warnings
 
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
-from graphmethods.render.fonts import CJKFontWarning, families, find_cjk_font  # noqa: F401 (re-exported)
+from graphmethods.render.fonts import check_drawable, check_scene, families, find_cjk_font  # noqa: F401
 from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
 
 PT_PER_MM = 72.0 / 25.4
@@ -177,6 +178,8 @@ class MplRenderer:
         self._labels.items.append((x, y, text, _font(size_mm * PT_PER_MM, tuple(family), weight), color, ha))
 
     def text(self, label):
+        for chunk, _ in label.runs:
+            check_drawable(chunk, label.bold)
         family = families(label.text)
         # CJK fonts rarely ship a bold face; a half-bold line (Latin bold, CJK regular) looks wrong
         weight = "bold" if label.bold and len(family) == 1 else "normal"
@@ -200,20 +203,21 @@ class MplRenderer:
 
 
 def figure(scene, *, dpi: float = 150.0):
-    """The scene drawn on a matplotlib ``Figure`` (page size in inches = mm / 25.4)."""
-    with warnings.catch_warnings():
-        # one clear CJKFontWarning replaces matplotlib's warning per missing glyph
-        warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from", category=UserWarning)
-        return draw(scene, MplRenderer(dpi=dpi))
+    """The scene drawn on a matplotlib ``Figure`` (page size in inches = mm / 25.4).
+
+    Raises
+    ------
+    MissingFontError
+        If a label has characters no font draws (e.g. Chinese without a CJK font).
+    """
+    return draw(scene, MplRenderer(dpi=dpi))
 
 
 def to_png_bytes(scene, *, dpi: float = 200.0) -> bytes:
     """PNG of ``scene`` at ``dpi`` (deterministic; no software or date metadata)."""
     fig = figure(scene, dpi=dpi)
     buf = io.BytesIO()
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from", category=UserWarning)
-        fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None})
+    fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None})
     return buf.getvalue()
 
 
