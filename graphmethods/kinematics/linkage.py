@@ -669,13 +669,11 @@ class Linkage:
                 na, nb = "dead centre (slider at +guide end)", "dead centre (slider at −guide end)"
             t_ab = float(np.mod(self.sense * (pb - pa), TWO_PI))
             ws = self.working_stroke
+            far_a = self._farther_at(pa, pb)
             if ws in ("toward_crank", "away_from_crank") and self.output[0] == "point":
-                c = self.ground[self.crank.centre]
-                st = self.solve(np.array([pa, pb]), level=0)
-                da, db = np.abs(st.z[self.output[1]] - c)
-                start_a = (da >= db) if ws == "toward_crank" else (da < db)
+                start_a = far_a if ws == "toward_crank" else not far_a
             elif abs(t_ab - math.pi) < 1e-12:
-                start_a = True
+                start_a = far_a                    # equal strokes: start where the output is farther out
             elif ws == "fast":
                 start_a = t_ab < math.pi
             else:
@@ -688,6 +686,19 @@ class Linkage:
                           return_angle=TWO_PI - w, K=w / (TWO_PI - w), start_name=ns, end_name=ne)
         self._cache["strokes"] = res
         return res
+
+    def _farther_at(self, pa: float, pb: float) -> bool:
+        """Is the output's joint (the slider, or the rocker's moving joint) farther from the crank's
+        centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)"""
+        kind, name = self.output
+        joint = name
+        if kind == "link":
+            joint = next((g.outputs()[0][0] for g in self.groups if name in g.links), None)
+        if joint is None:
+            return True
+        st = self.solve(np.array([pa, pb]), level=0)
+        da, db = np.abs(st.z[joint] - self.ground[self.crank.centre])
+        return bool(da >= db)
 
     # ------------------------------------------------------------------ outputs
     def _output_s(self, mo: Motion):

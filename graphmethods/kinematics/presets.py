@@ -118,3 +118,33 @@ def six_bar_press(*, l_O1A: float = 0.08, l_AB: float = 0.30, l_O2B: float = 0.2
                        points, {"O1A": ("1", "O1", "A", 0.0), "AB": ("2", "A", "B", 0.0), "O2B": ("3", "O2", "B", 0.0),
                                 "CD": ("4", "C", "D", 0.0)}),
                    sense=sense, output="D", working_stroke=working_stroke, name="six-bar press")
+
+
+def from_mechanism(mech) -> Linkage:
+    """The core linkage of one of the four classic classes (``SliderCrank``, ``FourBar``,
+    ``SlottedLever``, ``Shaper``), with the same dimensions, branch, sense, working stroke and
+    extra points; point names and link numbers are the same (links by number: "1", "2", ...).
+
+    >>> from graphmethods.kinematics import SliderCrank
+    >>> lk = from_mechanism(SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13)}))
+    >>> lk.structure().formula, [p.name for p in lk.points]
+    ('I(0,1) → II(2,3)', ['S2'])
+    """
+    from graphmethods.kinematics.four_bar import FourBar
+    from graphmethods.kinematics.shaper import Shaper
+    from graphmethods.kinematics.slider_crank import SliderCrank
+    from graphmethods.kinematics.slotted_lever import SlottedLever
+
+    pts = {p.name: (p.link, p.distance, p.angle) for p in mech.points}
+    common = dict(sense=mech.sense, working_stroke=mech.working_stroke, points=pts)
+    if isinstance(mech, SliderCrank):
+        return slider_crank(r=mech.r, l=mech.l, e=mech.e, assembly=mech.assembly, **common)
+    if isinstance(mech, FourBar):
+        return four_bar(l1=mech.l1, l2=mech.l2, l3=mech.l3, l4=mech.l4, ground_angle=mech.ground_angle,
+                        assembly=mech.assembly, **common)
+    if isinstance(mech, Shaper):
+        return shaper(r=mech.r, l_O1O3=mech.l_O1O3, l_O3B=mech.l_O3B, l_BC=mech.l_BC, y_guide=mech.y_guide,
+                      theta_O3=mech.theta_O3, assembly=mech.assembly, **common)
+    if isinstance(mech, SlottedLever):
+        return slotted_lever(r=mech.r, l_O1O3=mech.l_O1O3, l_O3B=mech.l_O3B, theta_O3=mech.theta_O3, **common)
+    raise InputError(f"no core preset for {type(mech).__name__}")
