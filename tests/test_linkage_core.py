@@ -132,6 +132,8 @@ def rpr_linkages(draw):
     d = draw(st.floats(0.1, 0.5))
     e = draw(st.sampled_from([0.0, draw(st.floats(-0.04, 0.04))]))
     ang = draw(st.floats(-3, 3))
+    # the pin keeps away from the pivot: near it ω₃ ~ v/ρ and the differences of the test lose accuracy
+    assume(abs(r - d) > 0.05 + abs(e))
     g = RPR(P="A", Q="O3", coincident="A3", e=e, links=("2", "3"), branch=draw(branches))
     return Linkage(ground={"O1": (0, 0), "O3": (d * math.cos(ang), d * math.sin(ang))}, crank=Crank("O1", "A", r),
                    groups=[g], sense=draw(senses), points=[Point("B", "3", "O3", 0.7, draw(st.floats(-0.3, 0.3)))])

@@ -150,6 +150,14 @@ class Case:
         """Mean crank speed, rad/s."""
         return omega_from_n(self.n_rpm)
 
+    @property
+    def linkage(self):
+        """The problem's linkage on the kinematics core (:class:`~graphmethods.kinematics.linkage.Linkage`:
+        accelerations, structure), the same linkage as ``mechanism``."""
+        from graphmethods.kinematics.presets import from_mechanism
+
+        return from_mechanism(self.mechanism)
+
     def __getattr__(self, key):
         # every validated key is also an attribute: case.m2, case.F0, ...
         values = self.__dict__.get("values")
@@ -333,8 +341,12 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     if not isinstance(data, Mapping):
         raise InputError(f"{source}: a problem file must hold one JSON object {{...}}, got {type(data).__name__}")
     kind = data.get("kind", "slider_crank")
+    if kind == "linkage":
+        from graphmethods.kinematics.linkage_file import linkage_case
+
+        return linkage_case(data, source=source)
     if kind not in SPECS:
-        raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}")
+        raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}, linkage")
     v = _validated(data, kind, source)
     title = Title.of(data.get("name"), where=f"{source}: key 'name'")
     sense = 1 if v["sense"] == "ccw" else -1

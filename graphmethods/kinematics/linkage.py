@@ -252,17 +252,20 @@ class Linkage:
         output: the stroke toward the crank's centre starts at the farther extreme).
     name : str
         For messages.
+    start : float
+        Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
     """
 
     def __init__(self, *, ground: Mapping, crank: Crank, groups: Sequence[Group] = (),
                  points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
-                 working_stroke: str = "slow", name: str = "linkage"):
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0):
         if isinstance(sense, bool) or sense not in (1, -1):
             raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
             raise InputError(f"{name}: working_stroke must be slow, fast, toward_crank or away_from_crank; "
                              f"got {working_stroke!r}")
         self.name = name
+        self._start = float(_norm(start))
         self.sense = int(sense)
         self.working_stroke = working_stroke
         self.ground = {}
@@ -485,7 +488,7 @@ class Linkage:
         return a
 
     def motion(self, m: int | None = None, *, phi=None, phi_from_start=None, omega_1: float = 1.0,
-               epsilon_1: float = 0.0) -> Motion:
+               epsilon_1: float = 0.0, level: int = 2) -> Motion:
         """The linkage at m + 1 positions 0…m (or at given crank angles), with velocities and
         accelerations.
 
@@ -501,6 +504,8 @@ class Linkage:
             Crank speed, rad/s (> 0; 1 gives the velocity analogues).
         epsilon_1 : float
             Crank angular acceleration, rad/s², positive when speeding up.
+        level : int
+            2 (default): positions, velocities and accelerations; 1: no accelerations; 0: positions only.
 
         Raises
         ------
@@ -535,7 +540,7 @@ class Linkage:
             ang = self._check_phi(phi, "phi")
             tr = np.mod(self.sense * (ang - start), TWO_PI)
             tr = np.where(tr > TWO_PI - 1e-13, 0.0, tr)
-        st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels)
+        st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)
         extreme = np.zeros(ang.shape[0], dtype=bool)
         if strokes is not None:
             for ph in (strokes.phi_start, strokes.phi_end):
@@ -555,13 +560,14 @@ class Linkage:
             return
         kind, name = self.output
         if kind == "point":
-            st.v[name] = np.where(mask, 0j, st.v[name])
-        else:
+            if name in st.v:
+                st.v[name] = np.where(mask, 0j, st.v[name])
+        elif name in st.omega:
             st.omega[name] = np.where(mask, 0.0, st.omega[name])
 
     # ------------------------------------------------------------------ full turn, extremes
     def _default_start(self) -> float:
-        return 0.0
+        return self._start
 
     def check_full_turn(self, samples: int = 2048) -> None:
         """Raise AssemblyError if some group cannot be assembled, or passes a toggle, somewhere in a
@@ -701,11 +707,18 @@ class Linkage:
         return bool(da >= db)
 
     # ------------------------------------------------------------------ outputs
+    def _ends(self) -> State:
+        """The linkage at the start and the end of the working stroke (cached)."""
+        if "ends" not in self._cache:
+            st_ = self.strokes()
+            self._cache["ends"] = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
+        return self._cache["ends"]
+
     def _output_s(self, mo: Motion):
         if self.output is None or self.output[0] != "point" or mo.strokes is None:
             return None
         name = self.output[1]
-        st = self.solve(np.array([mo.strokes.phi_start, mo.strokes.phi_end]), level=0)
+        st = self._ends()
         gx, gy = self.guides[name]
         u = complex(gx, gy)
         zs, ze = st.z[name]
@@ -717,7 +730,7 @@ class Linkage:
         st_ = self.strokes()
         if st_ is None or self.output[0] != "point":
             return None
-        st = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
+        st = self._ends()
         zs, ze = st.z[self.output[1]]
         return float(abs(ze - zs))
 
@@ -725,7 +738,7 @@ class Linkage:
         if self.output is None or self.output[0] != "link" or mo.strokes is None:
             return None
         link = self.output[1]
-        st = self.solve(np.array([mo.strokes.phi_start, mo.strokes.phi_end]), level=0)
+        st = self._ends()
         th_s, th_e = st.theta[link]
         swing = float(_wrap(th_e - th_s))
         sign = 1.0 if swing >= 0 else -1.0
@@ -737,7 +750,7 @@ class Linkage:
         st_ = self.strokes()
         if st_ is None or self.output[0] != "link":
             return None
-        st = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
+        st = self._ends()
         th_s, th_e = st.theta[self.output[1]]
         return float(abs(_wrap(th_e - th_s)))
 

@@ -61,7 +61,7 @@ def four_bar(*, l1: float, l2: float, l3: float, l4: float, ground_angle: float 
     return Linkage(ground={"O1": (0.0, 0.0), "O2": O2}, crank=Crank("O1", "A", r=l2), groups=[g],
                    points=_points(points, {"O1A": ("1", "O1", "A", 0.0), "AB": ("2", "A", "B", 0.0),
                                            "O2B": ("3", "O2", "B", 0.0)}),
-                   sense=sense, output="3", working_stroke=working_stroke, name="four-bar")
+                   sense=sense, output="3", working_stroke=working_stroke, name="four-bar", start=ground_angle)
 
 
 def _lever(r, l_O1O3, theta_O3):

@@ -137,7 +137,7 @@ class RRR(Group):
                      known=((f"v_{P}", st.v[P]), (f"v_{Q}", st.v[Q])),
                      lines=((f"⟂ {P}{C}", st.v[P], uP), (f"⟂ {Q}{C}", st.v[Q], uQ)), meet=st.v[C], sin_between=s)
         out = [vel]
-        if st.a:
+        if C in st.a:
             w1, w2 = st.omega[self.links[0]], st.omega[self.links[1]]
             nP = -w1 * w1 * (c - st.z[P])
             nQ = -w2 * w2 * (c - st.z[Q])

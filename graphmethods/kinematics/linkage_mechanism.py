@@ -1,0 +1,191 @@
+"""Any core :class:`~graphmethods.kinematics.linkage.Linkage` seen as a :class:`Mechanism`.
+
+The dynamics (reduced model, study, flywheel) read a linkage through the ``Mechanism`` interface:
+``positions(m=...)`` -> :class:`Positions`, ``velocity_plans(...)`` -> :class:`VelocityPlans`,
+``strokes()``, ``guides``, link numbers. :class:`LinkageMechanism` gives that interface to any
+linkage built from Assur groups; links are named by their textbook numbers (``"2"``), the
+plans' construction records come from the groups, and accelerations are at hand through
+:meth:`LinkageMechanism.motion`.
+
+>>> from graphmethods.kinematics.presets import six_bar_press
+>>> mech = LinkageMechanism(six_bar_press(points={"S4": ("CD", 0.175)}))
+>>> plans = mech.velocity_plans(mech.positions(m=12), omega_1=10.0)
+>>> plans.constructions["D"].equation
+'v_D = v_C + v_DC'
+>>> float(plans.v_along_guide("D")[0]), mech.link_name(3)
+(0.0, '3')
+"""
+
+from __future__ import annotations
+
+import math
+from types import MappingProxyType
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.kinematics import vectors as V
+from graphmethods.kinematics.groups import GROUND, RPP, RPR
+from graphmethods.kinematics.linkage import Linkage
+from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
+from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
+from graphmethods.kinematics.positions import Positions, build_positions
+
+
+def _xy(c: np.ndarray) -> np.ndarray:
+    return np.column_stack((c.real, c.imag))
+
+
+class LinkageMechanism(Mechanism):
+    """A core linkage behind the ``Mechanism`` interface (see the module docstring).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The linkage.
+    kind : str
+        Its name in messages.
+    """
+
+    def __init__(self, linkage: Linkage, *, kind: str | None = None):
+        if not isinstance(linkage, Linkage):
+            raise InputError(f"expected a Linkage, got {type(linkage).__name__}")
+        self.linkage = linkage
+        self.kind = kind or linkage.name
+        self.sense = linkage.sense
+        self.working_stroke = linkage.working_stroke
+        self.crank_pin = linkage.crank.pin
+        st = linkage.solve(np.zeros(1), level=0)
+        self.joints = tuple(k for k in st.z if k not in {p.name for p in linkage.points}
+                            or k in self._driving_points())
+        self.points = tuple(PointOnLink(p.name, p.link, p.distance, p.angle) for p in linkage.points
+                            if p.name not in self._driving_points())
+        self.link_numbers = MappingProxyType({int(k): k for k in linkage.links if k.isdigit()})
+        self.link_joints = MappingProxyType({})
+
+    def _driving_points(self) -> set:
+        """Extra points that later groups are driven from (they are joints: a lever's end B)."""
+        used = set()
+        for g in self.linkage.groups:
+            used |= g.inputs()[0]
+        return {p.name for p in self.linkage.points} & used
+
+    def __eq__(self, other):
+        return self is other
+
+    def __hash__(self):
+        return id(self)
+
+    def __repr__(self):
+        return f"LinkageMechanism({self.linkage.structure().formula}, {self.kind!r})"
+
+    # ------------------------------------------------------------------ interface
+    @property
+    def omega_links(self) -> tuple[str, ...]:
+        return tuple(self.linkage.links)
+
+    def link_name(self, link) -> str:
+        key = str(int(link)) if isinstance(link, (int, np.integer)) and not isinstance(link, bool) else link
+        if isinstance(key, str) and key in self.linkage.links:
+            return key
+        raise InputError(f"{self.kind}: unknown link {link!r}; links: {', '.join(self.linkage.links)}")
+
+    @property
+    def guides(self) -> dict[str, tuple[float, float]]:
+        return self.linkage.guides
+
+    def strokes(self):
+        return self.linkage.strokes()
+
+    def motion(self, *args, **kw):
+        """The core's :meth:`Linkage.motion` (accelerations included)."""
+        return self.linkage.motion(*args, **kw)
+
+    def positions(self, m: int | None = None, *, phi=None, phi_from_start=None) -> Positions:
+        lk = self.linkage
+        mo = lk.motion(m=m, phi=phi, phi_from_start=phi_from_start, level=0)
+        strokes = mo.strokes
+        start = strokes.phi_start if strokes is not None else lk._default_start()
+        geom = {k: (c.real.copy(), c.imag.copy()) for k, c in mo.z.items()}
+        out = {}
+        if lk.output is not None and strokes is not None:
+            if lk.output[0] == "point":
+                gx, gy = lk.guides[lk.output[1]]
+                zs, ze = lk._ends().z[lk.output[1]]
+                d = 1.0 if ((ze - zs) * complex(gx, -gy)).real >= 0 else -1.0
+                out = {"s": mo.s, "H": lk.stroke_H(), "stroke_direction": np.array([d * gx, d * gy])}
+            else:
+                out = {"psi": mo.psi, "psi_max": lk.psi_max()}
+        pos = build_positions(self, np.array(mo.phi), m=None if mo.index is None else len(mo.phi) - 1,
+                              phi_start=start, strokes=strokes, geom=geom,
+                              theta={k: np.array(v) for k, v in mo.theta.items()},
+                              phi_from_start=np.array(mo.phi_from_start), output=out)
+        return pos
+
+    def velocity_plans(self, positions: Positions | int | None = None, *, omega_1: float = 1.0,
+                       sin_threshold: float = 1e-3) -> VelocityPlans:
+        if positions is None or isinstance(positions, (int, np.integer)):
+            positions = self.positions(positions)
+        if not isinstance(positions, Positions) or positions.mechanism is not self:
+            raise InputError("velocity_plans needs Positions of this same linkage (from self.positions(...))")
+        if isinstance(omega_1, bool) or not isinstance(omega_1, (int, float, np.floating, np.integer)) \
+                or not math.isfinite(omega_1) or omega_1 <= 0:
+            raise InputError(f"omega_1 is the crank speed in rad/s and must be > 0, got {omega_1!r}")
+        lk = self.linkage
+        st = lk.solve(positions.phi, omega_1=float(omega_1), level=1,
+                      labels=positions.index)
+        lk._snap(st, np.asarray(positions.extreme))
+        n = positions.n
+        cons = [PointConstruction(name=k, method="pole", equation=f"v_{k} = 0") for k in lk.ground]
+        cr = lk.crank
+        cons.append(PointConstruction(name=cr.pin, method="known",
+                                      equation=f"v_{cr.pin} = ω₁·l_{cr.centre}{cr.pin}, ⟂ {cr.centre}{cr.pin}, "
+                                               f"in the sense of ω₁"))
+        sins = []
+        for step in lk._steps:
+            if hasattr(step, "records"):
+                for rec in step.records(st):
+                    if rec.plan != "velocity":
+                        continue
+                    lines = tuple(ConstructionLine(
+                        through=self._plan_label(st, pt), relation="perpendicular" if lab.startswith("⟂") else "parallel",
+                        to=lab[2:], point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
+                        for lab, pt, d in rec.lines)
+                    sins.append(np.abs(rec.sin_between))
+                    cons.append(PointConstruction(name=rec.point, method="intersection", equation=rec.equation,
+                                                  lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
+                    if isinstance(step, RPP):
+                        cons.append(PointConstruction(name=step.R, method="same", on=step.coincident,
+                                                      equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
+            else:
+                cons.append(PointConstruction(name=step.name, method="similarity", on=f"{step.origin}",
+                                              equation=f"v_{step.name} = v_{step.origin} + ω_{step.link} × "
+                                                       f"{step.origin}{step.name} (similarity theorem)"))
+        sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
+        vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
+        return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
+                             vectors=MappingProxyType(vectors),
+                             omegas=MappingProxyType({k: V.frozen(np.asarray(w, float)) for k, w in st.omega.items()}),
+                             constructions=MappingProxyType({c.name: c for c in cons}),
+                             sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
+                             sin_threshold=float(sin_threshold))
+
+    @staticmethod
+    def _plan_label(st, point_vec) -> str:
+        for k, v in st.v.items():
+            if v is point_vec:
+                return k.lower()
+        return "p" if not np.any(point_vec) else "?"
+
+    def derivatives(self, phi):
+        """dX/dφ and dθ/dφ of every point and link (the velocities at ω₁ = 1, counterclockwise)."""
+        phi = self._angles(phi, "phi")
+        st = self.linkage.solve(phi, omega_1=1.0, level=1)
+        s = self.sense
+        return ({k: _xy(c) * s for k, c in st.v.items()}, {k: w * s for k, w in st.omega.items()})
+
+    def _link_length(self, canon: str) -> float:  # pragma: no cover - not used by the core
+        raise InputError("links of a core linkage have no single length")
+
+
+__all__ = ["LinkageMechanism", "GROUND", "RPR"]

@@ -1,0 +1,96 @@
+"""Problem files of any linkage ("kind": "linkage"): reading, validation, and the dynamics on them."""
+
+import copy
+import json
+import math
+import pathlib
+
+import numpy as np
+import pytest
+
+from graphmethods.dynamics.study import Study
+from graphmethods.errors import AssemblyError, InputError
+from graphmethods.kinematics import case_from_dict, read_case
+
+DATA = pathlib.Path(__file__).parents[1] / "graphmethods" / "problems" / "data"
+PRESS = json.loads((DATA / "slider_crank_press.json").read_text())
+
+
+def press_as_linkage() -> dict:
+    """The slider-crank press problem written in the linkage format."""
+    p = PRESS
+    return {
+        "kind": "linkage", "name": "press as a linkage",
+        "fixed": {"O": [0, 0]}, "crank": {"centre": "O", "pin": "A", "r": p["r"]},
+        "groups": [{"type": "RRP", "links": [2, 3], "P": "A", "C": "B", "l": p["l"],
+                    "guide": {"link": 0, "through": [0, p["e"]], "angle_deg": 0}, "branch": 1}],
+        "points": {"S2": {"link": 2, "from": "A", "distance": p["l_AS2"]}},
+        "output": "B", "working_stroke": "toward_crank",
+        "masses": {"1": {"J": p["J1"]}, "2": {"m": p["m2"], "J": p["J_S2"], "at": "S2"}, "3": {"m": p["m3"], "at": "B"}},
+        "load": {"force": p["F0"], "on": "B", "from": p["force_from"], "to": p["force_to"]},
+        "n_rpm": p["n_rpm"], "delta": p["delta"],
+    }
+
+
+def test_the_press_written_as_a_linkage_gives_the_press_study():
+    """The whole dynamics on the core equals the dynamics on the slider-crank class."""
+    old = Study(read_case(DATA / "slider_crank_press.json"), positions=24).summary()
+    new = Study(case_from_dict(press_as_linkage()), positions=24).summary()
+    for key in ("M_d", "delta_W_max", "J_F_energy", "J_F_wittenbauer", "J_e_min", "J_e_max", "J_e_mean", "J_F_exact",
+                "phi_omega_max_deg", "phi_omega_min_deg"):
+        assert new[key] == pytest.approx(old[key], rel=1e-9, abs=1e-9), key
+
+
+def test_six_bar_press_file_reduced_model_against_differences_of_positions():
+    case = read_case(DATA / "six_bar_press.json")
+    assert case.linkage.structure().formula == "I(0,1) → II(2,3) → II(4,5)"
+    study = Study(case, positions=12)
+    lk = case.linkage
+    phi = np.array(study.positions.phi)
+    h = 1e-5
+    sp, sm = lk.solve(phi + lk.sense * h, level=0), lk.solve(phi - lk.sense * h, level=0)
+    J = np.zeros_like(phi)
+    for it in case.inertias:
+        v = (sp.z[it.point] - sm.z[it.point]) / (2 * h)
+        th = np.angle(np.exp(1j * (sp.theta[it.link] - sm.theta[it.link]))) / (2 * h)
+        J += it.m * np.abs(v) ** 2 + it.J * th ** 2
+    assert np.abs(study.J_e - J).max() <= 1e-7 * J.max()
+    H = lk.stroke_H()
+    assert study.M_d == pytest.approx(6000.0 * H * 0.8 / (2 * math.pi), rel=1e-12)
+    s = study.summary()
+    assert s["J_F_exact"] > 0 and abs(s["J_F_wittenbauer_rel_error"]) < 0.3
+
+
+def bad(mutate):
+    d = copy.deepcopy(press_as_linkage())
+    mutate(d)
+    return d
+
+
+@pytest.mark.parametrize("mutate, match", [
+    (lambda d: d.pop("crank"), r"key 'crank': is missing"),
+    (lambda d: d["groups"][0].update(type="RRX"), r"key 'groups\[0\].type': must be one of"),
+    (lambda d: d["groups"][0].update(l=-1), r"key 'groups\[0\].l': must be > 0"),
+    (lambda d: d["groups"][0].update(branch=2), r"key 'groups\[0\].branch': must be 1 or -1"),
+    (lambda d: d["groups"][0].pop("C"), r"key 'groups\[0\].C': is missing"),
+    (lambda d: d["groups"][0].update(links=[2]), r"key 'groups\[0\].links'"),
+    (lambda d: d["groups"][0]["guide"].update(through="X"), r"needs X"),
+    (lambda d: d.update(colour=3), r"key 'colour': unknown key"),
+    (lambda d: d["masses"]["2"].update(at="S9"), r"key 'masses.2.at': no point 'S9'"),
+    (lambda d: d["masses"].update({"7": {"m": 1, "at": "B"}}), r"key 'masses.7': no moving link 7"),
+    (lambda d: d["load"].update(on="A"), r"key 'load.on': a force acts on the output slider 'B'"),
+    (lambda d: d["load"].update({"from": 0.9, "to": 0.1}), r"key 'load.from': must be less than"),
+    (lambda d: d.update(delta=2), r"key 'delta': must be between 0 and 1"),
+    (lambda d: d["points"]["S2"].update(link=9), r"point 'S2' is on link '9'"),
+])
+def test_bad_files_give_one_line_naming_the_key(mutate, match):
+    with pytest.raises(InputError, match=match) as exc:
+        case_from_dict(bad(mutate), source="press.json")
+    assert "\n" not in str(exc.value) and str(exc.value).startswith("press.json: ")
+
+
+def test_a_linkage_that_cannot_assemble_names_the_position_and_the_condition():
+    d = bad(lambda d: d["groups"][0].update(l=0.1))
+    with pytest.raises(AssemblyError, match=r"press.json: .*RRP \(2, 3\): cannot be assembled at angle #\d+ .*"
+                                            r"from the guide of B, farther than AB = 0.1 m"):
+        case_from_dict(d, source="press.json")
