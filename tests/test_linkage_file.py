@@ -94,3 +94,49 @@ def test_a_linkage_that_cannot_assemble_names_the_position_and_the_condition():
     with pytest.raises(AssemblyError, match=r"press.json: .*RRP \(2, 3\): cannot be assembled at angle #\d+ .*"
                                             r"from the guide of B, farther than AB = 0.1 m"):
         case_from_dict(d, source="press.json")
+
+
+LINKAGE_FILES = sorted(p.name for p in DATA.glob("*.json") if json.loads(p.read_text()).get("kind") == "linkage")
+
+
+def test_at_least_five_course_mechanisms_ship_as_linkage_files():
+    assert {"six_bar_press.json", "slotting_machine.json", "whitworth_quick_return.json",
+            "two_slider_compressor.json"} <= set(LINKAGE_FILES)
+    for name in LINKAGE_FILES:
+        title = json.loads((DATA / name).read_text())["name"]
+        assert set(title) == {"en", "ru", "zh"}, name
+
+
+@pytest.mark.parametrize("name", LINKAGE_FILES)
+def test_linkage_files_study_and_reduced_inertia(name):
+    case = read_case(DATA / name)
+    lk = case.linkage
+    assert lk.structure().dof == 1
+    study = Study(case, positions=12, estimate=False)
+    phi = np.array(study.positions.phi)
+    h = 1e-5
+    sp, sm = lk.solve(phi + lk.sense * h, level=0), lk.solve(phi - lk.sense * h, level=0)
+    J = np.zeros_like(phi)
+    for it in case.inertias:
+        v = (sp.z[it.point] - sm.z[it.point]) / (2 * h)
+        th = np.angle(np.exp(1j * (sp.theta[it.link] - sm.theta[it.link]))) / (2 * h)
+        J += it.m * np.abs(v) ** 2 + it.J * th ** 2
+    assert np.abs(study.J_e - J).max() <= 1e-7 * J.max()
+    ld = case.load
+    span = lk.stroke_H() if ld.kind == "force" else lk.psi_max()
+    assert study.M_d == pytest.approx(ld.magnitude * span * (ld.end - ld.start) / (2 * math.pi), rel=1e-12)
+    assert study.excess_work.delta_W_max > 0
+
+
+def test_course_mechanisms_closed_forms():
+    """Strokes and time ratios that the geometry gives by hand."""
+    sm = read_case(DATA / "slotting_machine.json").linkage
+    assert sm.stroke_H() == pytest.approx(2 * 0.6 * (0.10 / 0.30), rel=1e-12)          # 2·O3B·sin(ψ/2)
+    beta = 2 * math.asin(0.10 / 0.30)
+    assert sm.strokes().K == pytest.approx((math.pi + beta) / (math.pi - beta), rel=1e-12)
+    ww = read_case(DATA / "whitworth_quick_return.json").linkage
+    assert ww.strokes().K == pytest.approx(2.0, rel=1e-12)                             # asin(d/r) = 30°
+    assert ww.stroke_H() == pytest.approx(2 * 0.15, rel=1e-12)
+    assert ww.strokes() is not None and np.ptp(np.unwrap(ww.motion(m=12).theta["3"])) > 1.9 * math.pi     # the lever turns fully
+    vc = read_case(DATA / "two_slider_compressor.json").linkage
+    assert vc.stroke_H() == pytest.approx(0.12, rel=1e-12) and vc.strokes().K == pytest.approx(1.0, abs=1e-12)
