@@ -684,6 +684,8 @@ class Linkage:
                 start_a = t_ab < math.pi
             else:
                 start_a = t_ab > math.pi
+            if abs(t_ab - math.pi) < 1e-12:
+                t_ab = math.pi                     # equal strokes (to the precision of the extremes)
             if start_a:
                 start, end, w, ns, ne = pa, pb, t_ab, na, nb
             else:

@@ -12,8 +12,8 @@ plans' construction records come from the groups, and accelerations are at hand 
 >>> plans = mech.velocity_plans(mech.positions(m=12), omega_1=10.0)
 >>> plans.constructions["D"].equation
 'v_D = v_C + v_DC'
->>> float(plans.v_along_guide("D")[0]), mech.link_name(3)
-(0.0, '3')
+>>> float(plans.v_along_guide("D")[0]), mech.link_name(3), mech.link_name("DC")
+(0.0, 'O2B', 'CD')
 """
 
 from __future__ import annotations
@@ -55,13 +55,72 @@ class LinkageMechanism(Mechanism):
         self.sense = linkage.sense
         self.working_stroke = linkage.working_stroke
         self.crank_pin = linkage.crank.pin
+        self.fixed_joints = tuple(linkage.ground)
+        driving = self._driving_points()
         st = linkage.solve(np.zeros(1), level=0)
-        self.joints = tuple(k for k in st.z if k not in {p.name for p in linkage.points}
-                            or k in self._driving_points())
-        self.points = tuple(PointOnLink(p.name, p.link, p.distance, p.angle) for p in linkage.points
-                            if p.name not in self._driving_points())
-        self.link_numbers = MappingProxyType({int(k): k for k in linkage.links if k.isdigit()})
-        self.link_joints = MappingProxyType({})
+        self.joints = tuple(k for k in st.z if k not in {p.name for p in linkage.points} or k in driving)
+        names, joints = self._link_names(driving)
+        self._canon = names                                  # link number -> canonical name
+        self._number = {v: k for k, v in names.items()}
+        self.link_joints = MappingProxyType(joints)
+        self.link_numbers = MappingProxyType({int(k): v for k, v in names.items()
+                                              if k.isdigit() and not self._slides_on_frame(k)})
+        self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
+                            if p.name not in driving)
+
+    def _slides_on_frame(self, link: str) -> bool:
+        """A slider on a guide of the frame (it translates: no angular velocity to report)."""
+        from graphmethods.kinematics.groups import PRP, RRP
+        for g in self.linkage.groups:
+            if isinstance(g, RRP) and g.links[1] == link and g.guide.link == GROUND:
+                return True
+            if isinstance(g, RPP) and g.links[1] == link and g.guide.link == GROUND:
+                return True
+            if isinstance(g, PRP) and ((g.links[0] == link and g.guide_1.link == GROUND)
+                                       or (g.links[1] == link and g.guide_2.link == GROUND)):
+                return True
+        return False
+
+    def _link_names(self, driving: set):
+        """Canonical names of the links as the classic classes name them: by their two joints ("AB",
+        "O2B"), "block" for a block on a slotted link; and those joints."""
+        from graphmethods.kinematics.groups import PRP, RRP, RRR
+        lk = self.linkage
+        cr = lk.crank
+        names = {cr.link: cr.centre + cr.pin}
+        joints = {cr.centre + cr.pin: (cr.centre, cr.pin)}
+        blocks = [g for g in lk.groups if isinstance(g, (RPR, RPP))]
+        for g in lk.groups:
+            pairs = []
+            if isinstance(g, RRR):
+                pairs = [(g.links[0], g.P, g.C), (g.links[1], g.Q, g.C)]
+            elif isinstance(g, RRP):
+                pairs = [(g.links[0], g.P, g.C)]
+                names[g.links[1]] = f"slider{g.links[1]}"
+            elif isinstance(g, RPR):
+                ends = [p for p in lk.points if p.link == g.links[1] and p.origin == g.Q and p.name in driving] \
+                    or [p for p in lk.points if p.link == g.links[1] and p.origin == g.Q]
+                end = max(ends, key=lambda p: p.distance).name if ends else g.coincident
+                pairs = [(g.links[1], g.Q, end)]
+                names[g.links[0]] = "block" if len(blocks) == 1 else f"block{g.links[0]}"
+            elif isinstance(g, RPP):
+                names[g.links[0]] = "block" if len(blocks) == 1 else f"block{g.links[0]}"
+                names[g.links[1]] = f"slider{g.links[1]}"
+            elif isinstance(g, PRP):
+                names[g.links[0]] = f"slider{g.links[0]}"
+                names[g.links[1]] = f"slider{g.links[1]}"
+            for num, x, y in pairs:
+                names[num] = x + y
+                joints[x + y] = (x, y)
+        return names, joints
+
+    def _on(self, p) -> str:
+        """A point's link written by its joints, first joint = where its distance starts ("AB", "BA")."""
+        canon = self._canon[p.link]
+        x, y = self.link_joints.get(canon, (None, None))
+        if x is None:
+            return canon
+        return x + y if p.origin == x else y + x if p.origin == y else canon
 
     def _driving_points(self) -> set:
         """Extra points that later groups are driven from (they are joints: a lever's end B)."""
@@ -82,13 +141,26 @@ class LinkageMechanism(Mechanism):
     # ------------------------------------------------------------------ interface
     @property
     def omega_links(self) -> tuple[str, ...]:
-        return tuple(self.linkage.links)
+        return tuple(self._canon[k] for k in self.linkage.links)
 
     def link_name(self, link) -> str:
-        key = str(int(link)) if isinstance(link, (int, np.integer)) and not isinstance(link, bool) else link
-        if isinstance(key, str) and key in self.linkage.links:
-            return key
-        raise InputError(f"{self.kind}: unknown link {link!r}; links: {', '.join(self.linkage.links)}")
+        """Canonical name of a link given by its textbook number (3 or "3") or its joints ("AB", "BA")."""
+        if isinstance(link, (int, np.integer)) and not isinstance(link, bool):
+            link = str(int(link))
+        if isinstance(link, str):
+            if link in self._canon:
+                return self._canon[link]
+            if link in self._number:
+                return link
+            for canon, (x, y) in self.link_joints.items():
+                if link in (x + y, y + x):
+                    return canon
+        raise InputError(f"{self.kind}: unknown link {link!r}; links: "
+                         + ", ".join(f"{k} = {v}" for k, v in self._canon.items()))
+
+    def number(self, link) -> str:
+        """Textbook number (as text) of a link given by number or name."""
+        return self._number[self.link_name(link)]
 
     @property
     def guides(self) -> dict[str, tuple[float, float]]:
@@ -118,7 +190,7 @@ class LinkageMechanism(Mechanism):
                 out = {"psi": mo.psi, "psi_max": lk.psi_max()}
         pos = build_positions(self, np.array(mo.phi), m=None if mo.index is None else len(mo.phi) - 1,
                               phi_start=start, strokes=strokes, geom=geom,
-                              theta={k: np.array(v) for k, v in mo.theta.items()},
+                              theta={self._canon[k]: np.array(v) for k, v in mo.theta.items()},
                               phi_from_start=np.array(mo.phi_from_start), output=out)
         return pos
 
@@ -158,23 +230,35 @@ class LinkageMechanism(Mechanism):
                         cons.append(PointConstruction(name=step.R, method="same", on=step.coincident,
                                                       equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
             else:
-                cons.append(PointConstruction(name=step.name, method="similarity", on=f"{step.origin}",
-                                              equation=f"v_{step.name} = v_{step.origin} + ω_{step.link} × "
-                                                       f"{step.origin}{step.name} (similarity theorem)"))
+                on = self._on(step)
+                lever = next((g for g in lk.groups if isinstance(g, RPR) and g.links[1] == step.link), None)
+                if lever is not None and step.origin == lever.Q:
+                    cons.append(PointConstruction(
+                        name=step.name, method="proportion", on=on,
+                        equation=f"p{step.name.lower()} = p{lever.coincident.lower()} · {lever.Q}{step.name}/"
+                                 f"{lever.Q}{lever.coincident} (points of the slotted link by proportion)"))
+                else:
+                    x = on[:len(step.origin)] if on.startswith(step.origin) else step.origin
+                    y = on[len(x):]
+                    cons.append(PointConstruction(
+                        name=step.name, method="similarity", on=on,
+                        equation=f"{step.name.lower()} on {x.lower()}{y.lower()}: {x.lower()}{step.name.lower()}/"
+                                 f"{x.lower()}{y.lower()} = {x}{step.name}/{x}{y} (similarity theorem)"))
         sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
         vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
         return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
                              vectors=MappingProxyType(vectors),
-                             omegas=MappingProxyType({k: V.frozen(np.asarray(w, float)) for k, w in st.omega.items()}),
+                             omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
+                                                      for k, w in st.omega.items()}),
                              constructions=MappingProxyType({c.name: c for c in cons}),
                              sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
                              sin_threshold=float(sin_threshold))
 
-    @staticmethod
-    def _plan_label(st, point_vec) -> str:
+    def _plan_label(self, st, point_vec) -> str:
+        """The plan image a construction line is drawn through: p for the fixed points, else the point's."""
         for k, v in st.v.items():
             if v is point_vec:
-                return k.lower()
+                return "p" if k in self.linkage.ground else k.lower()
         return "p" if not np.any(point_vec) else "?"
 
     def derivatives(self, phi):
@@ -182,7 +266,7 @@ class LinkageMechanism(Mechanism):
         phi = self._angles(phi, "phi")
         st = self.linkage.solve(phi, omega_1=1.0, level=1)
         s = self.sense
-        return ({k: _xy(c) * s for k, c in st.v.items()}, {k: w * s for k, w in st.omega.items()})
+        return ({k: _xy(c) * s for k, c in st.v.items()}, {self._canon[k]: w * s for k, w in st.omega.items()})
 
     def _link_length(self, canon: str) -> float:  # pragma: no cover - not used by the core
         raise InputError("links of a core linkage have no single length")
