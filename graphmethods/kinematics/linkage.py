@@ -84,9 +84,15 @@ class Point:
     distance: float
     angle: float = 0.0
 
+    @property
+    def offset(self) -> complex:
+        """distance·e^(i·angle): the point from its origin in the link's own frame (x along the link)."""
+        return self.distance * complex(math.cos(self.angle), math.sin(self.angle))
+
     def __post_init__(self):
         object.__setattr__(self, "distance", check_length(f"point {self.name}: distance", self.distance,
                                                           positive=False))
+        object.__setattr__(self, "angle", check_length(f"point {self.name}: angle", self.angle, positive=False))
         if self.distance < 0:
             raise InputError(f"point {self.name}: distance must be ≥ 0 m (turn the angle by π instead), "
                              f"got {self.distance}")
@@ -440,7 +446,7 @@ class Linkage:
         st = State(phi=phi, labels=labels)
         zero_c = np.zeros(n, dtype=complex)
         for k, c in self.ground.items():
-            st.z[k] = np.full(n, c)
+            st.z[k] = np.full(n, c)          # noqa: one array per fixed joint (it is a point of the result)
             st.v[k] = zero_c
             st.a[k] = zero_c
         cr = self.crank
@@ -449,9 +455,10 @@ class Linkage:
         e = np.exp(1j * phi)
         st.z[cr.pin] = st.z[cr.centre] + cr.r * e
         st.theta[cr.link] = phi.copy()
+        st.e[cr.link] = e
         for step in self._steps:
             if isinstance(step, Point):
-                st.z[step.name] = st.z[step.origin] + step.distance * np.exp(1j * (st.theta[step.link] + step.angle))
+                st.z[step.name] = st.z[step.origin] + step.offset * st.e[step.link]
             else:
                 step.positions(st)
         if level >= 1:
@@ -551,7 +558,7 @@ class Linkage:
         return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
                       index=None if labels is None else _ro(labels), omega_1=float(omega_1),
                       epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
-                      theta=ro(st.theta), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
+                      theta=ro({k: st.theta[k] for k in st.theta.keys()}), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
                       conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
 
     def _snap(self, st: State, mask: np.ndarray) -> None:

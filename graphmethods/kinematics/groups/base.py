@@ -46,7 +46,9 @@ def solve2(e1, e2, rhs):
     Returns ``(x, y, det)`` with ``det = e1 × e2``; where det is 0 the values are not finite
     (callers check ``det`` first).
     """
-    det = cross(e1, e2)
+    det = np.asarray(cross(e1, e2))
+    if det.all():
+        return cross(rhs, e2) / det, cross(e1, rhs) / det, det
     with np.errstate(divide="ignore", invalid="ignore"):
         x = cross(rhs, e2) / det
         y = cross(e1, rhs) / det
@@ -56,6 +58,39 @@ def solve2(e1, e2, rhs):
 def fmt(x: float) -> str:
     """A length or number for a message (6 significant digits)."""
     return f"{x:.6g}"
+
+
+class _Angles(dict):
+    """Link angles computed when first asked for, from the links' unit directions."""
+
+    def __init__(self, directions: dict):
+        super().__init__()
+        self._e = directions
+
+    def __missing__(self, link):
+        th = np.angle(np.broadcast_to(self._e[link], self._n)) if link in self._e else None
+        if th is None:
+            raise KeyError(link)
+        self[link] = th
+        return th
+
+    def __contains__(self, link):
+        return dict.__contains__(self, link) or link in self._e
+
+    def keys(self):
+        return list(dict.fromkeys([*dict.keys(self), *self._e]))
+
+    def __iter__(self):
+        return iter(self.keys())
+
+    def items(self):
+        return [(k, self[k]) for k in self.keys()]
+
+    def values(self):
+        return [self[k] for k in self.keys()]
+
+    def __len__(self):
+        return len(self.keys())
 
 
 @dataclass
@@ -70,8 +105,11 @@ class State:
         Textbook position numbers (for messages), else None.
     z, v, a : dict name -> complex ndarray (n,)
         Position (m), velocity (m/s), acceleration (m/s²) of every point.
+    e : dict link -> complex ndarray (n,)
+        Unit direction of every link (its own direction: P→C, the slot, the guide).
     theta, omega, epsilon : dict link -> ndarray (n,)
-        Angle (rad), angular velocity (rad/s), angular acceleration (rad/s²) of every link.
+        Angle (rad, computed from ``e`` when asked for), angular velocity (rad/s), angular
+        acceleration (rad/s²) of every link.
     relative : dict name -> dict
         Per group, the sliding quantities (relative velocity and acceleration along a guide,
         Coriolis terms) as complex arrays.
@@ -84,12 +122,29 @@ class State:
     z: dict = field(default_factory=dict)
     v: dict = field(default_factory=dict)
     a: dict = field(default_factory=dict)
+    e: dict = field(default_factory=dict)
     theta: dict = field(default_factory=dict)
     omega: dict = field(default_factory=dict)
     epsilon: dict = field(default_factory=dict)
     relative: dict = field(default_factory=dict)
     conditioning: dict = field(default_factory=dict)
     kinematic: bool = True
+
+    @property
+    def zeros(self) -> np.ndarray:
+        """A shared read-only array of n zeros (the angular velocity of a translating link)."""
+        z = self.__dict__.get("_zeros")
+        if z is None:
+            z = np.zeros(self.phi.shape)
+            z.flags.writeable = False
+            self.__dict__["_zeros"] = z
+        return z
+
+    def __post_init__(self):
+        angles = _Angles(self.e)
+        angles._n = self.phi.shape
+        angles.update(self.theta)
+        self.theta = angles
 
     @property
     def n(self) -> int:
@@ -125,24 +180,17 @@ class Guide:
     def line(self, st: State):
         """(G, u, omega, epsilon): a point of the line, its unit direction, and the turning of the
         link that carries it (zeros for the frame), each over the positions."""
-        if isinstance(self.through, str):
-            G = st.z[self.through]
-        else:
-            G = np.full(st.n, complex(self.through))
+        G = st.z[self.through] if isinstance(self.through, str) else complex(self.through)
+        turn = complex(math.cos(self.angle), math.sin(self.angle))
         if self.link == GROUND:
-            u = np.full(st.n, complex(math.cos(self.angle), math.sin(self.angle)))
-            zero = np.zeros(st.n)
-            return G, u, zero, zero
-        th = st.theta[self.link] + self.angle
-        zero = np.zeros(st.n)
-        return G, np.exp(1j * th), st.omega.get(self.link, zero), st.epsilon.get(self.link, zero)
+            return G, turn, 0.0, 0.0          # scalars: they broadcast over the positions
+        return G, st.e[self.link] * turn, st.omega.get(self.link, 0.0), st.epsilon.get(self.link, 0.0)
 
     def kinematics(self, st: State):
         """(v_G, a_G): velocity and acceleration of the guide's point (zeros for the frame)."""
-        zero = np.zeros(st.n, dtype=complex)
         if isinstance(self.through, str):
-            return st.v[self.through], st.a.get(self.through, zero)
-        return zero, zero
+            return st.v[self.through], st.a.get(self.through, 0j)
+        return 0j, 0j
 
     def describe(self) -> str:
         where = self.through if isinstance(self.through, str) else f"({fmt(complex(self.through).real)}, " \
@@ -207,6 +255,13 @@ class Group:
     def name(self) -> str:
         return f"{self.kind} ({self.links[0]}, {self.links[1]})"
 
+    def _name(self) -> str:
+        try:
+            return self.__dict__["_cached_name"]
+        except KeyError:
+            object.__setattr__(self, "_cached_name", self.name)
+            return self.__dict__["_cached_name"]
+
     def fail(self, st: State, bad: np.ndarray, why) -> None:
         """Raise AssemblyError at the first position where ``bad`` holds; ``why(i)`` explains it."""
         if bad.any():
@@ -215,6 +270,9 @@ class Group:
 
     def check_det(self, st: State, det: np.ndarray, what: str) -> None:
         """Refuse a position where the two construction lines are exactly parallel (a toggle)."""
+        det = np.asarray(det)
+        if det.all():
+            return
         bad = (det == 0.0) | ~np.isfinite(det)
         if bad.any():
             i = int(np.argmax(bad))

@@ -67,16 +67,16 @@ class PRP(Group):
         G1, u1, _, _ = self.guide_1.line(st)
         G2, u2, _, _ = self.guide_2.line(st)
         s1, s2, det = solve2(u1, -u2, G2 - G1)
-        self.fail(st, np.abs(det) <= 1e-15, lambda i: f"the two guides of {self.C} are parallel "
-                                                     f"(angle {fmt(float(np.degrees(np.angle(u2[i] / u1[i]))))}°)")
-        st.z[self.C] = G1 + s1 * u1
-        st.relative[self.name] = {"s1": s1, "s2": s2}
-        for link, g in zip(self.links, (self.guide_1, self.guide_2)):
-            th = np.zeros(st.n) if g.link == GROUND else st.theta[g.link]
-            st.theta[link] = th + g.angle
+        n = (st.n,)
+        bad = np.broadcast_to(np.abs(det) <= 1e-15, n)
+        self.fail(st, bad, lambda i: f"the two guides of {self.C} are parallel")
+        st.z[self.C] = np.broadcast_to(G1 + s1 * u1, n).copy()
+        st.relative[self._name()] = {"s1": np.broadcast_to(s1, n), "s2": np.broadcast_to(s2, n)}
+        st.e[self.links[0]] = np.broadcast_to(u1, n)
+        st.e[self.links[1]] = np.broadcast_to(u2, n)
 
     def velocities(self, st: State) -> None:
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         _, u1, w1, _ = self.guide_1.line(st)
         _, u2, w2, _ = self.guide_2.line(st)
         vG1, _ = self.guide_1.kinematics(st)
@@ -85,14 +85,15 @@ class PRP(Group):
         v2 = vG2 + 1j * w2 * rel["s2"] * u2
         sd1, sd2, det = solve2(u1, -u2, v2 - v1)
         self.check_det(st, det, f"the guides of {self.C} are parallel")
-        st.conditioning[self.name] = np.abs(det)
-        st.v[self.C] = v1 + sd1 * u1
+        n = (st.n,)
+        st.conditioning[self._name()] = np.broadcast_to(np.abs(det), n)
+        st.v[self.C] = np.broadcast_to(v1 + sd1 * u1, n)
         for link, w in zip(self.links, (w1, w2)):
-            st.omega[link] = w
+            st.omega[link] = np.broadcast_to(w, n)
         rel.update(s1_dot=sd1, s2_dot=sd2, v_guide_1=v1, v_guide_2=v2, v_rel_1=sd1 * u1, v_rel_2=sd2 * u2)
 
     def accelerations(self, st: State) -> None:
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         _, u1, w1, e1 = self.guide_1.line(st)
         _, u2, w2, e2 = self.guide_2.line(st)
         _, aG1 = self.guide_1.kinematics(st)
@@ -102,17 +103,19 @@ class PRP(Group):
         k1 = 2j * w1 * rel["s1_dot"] * u1
         k2 = 2j * w2 * rel["s2_dot"] * u2
         sdd1, sdd2, _ = solve2(u1, -u2, a2 + k2 - a1 - k1)
-        st.a[self.C] = a1 + k1 + sdd1 * u1
+        n = (st.n,)
+        st.a[self.C] = np.broadcast_to(a1 + k1 + sdd1 * u1, n)
         for link, e in zip(self.links, (e1, e2)):
-            st.epsilon[link] = e
+            st.epsilon[link] = np.broadcast_to(e, n)
         rel.update(s1_ddot=sdd1, s2_ddot=sdd2, a_guide_1=a1, a_guide_2=a2, a_coriolis_1=k1, a_coriolis_2=k2,
                    a_rel_1=sdd1 * u1, a_rel_2=sdd2 * u2)
 
     def records(self, st: State) -> tuple:
         C = self.C
-        rel = st.relative[self.name]
+        rel = {k: np.broadcast_to(v, (st.n,)) for k, v in st.relative[self._name()].items()}
         _, u1, _, _ = self.guide_1.line(st)
         _, u2, _, _ = self.guide_2.line(st)
+        u1, u2 = np.broadcast_to(u1, (st.n,)), np.broadcast_to(u2, (st.n,))
         s = cross(u1, u2)
         g1, g2 = self.guide_1.link, self.guide_2.link
         out = [Record(point=C, plan="velocity", equation=f"v_{C} = v_{C}{g1} + v_{C}{C}{g1} = v_{C}{g2} + v_{C}{C}{g2}",

@@ -92,29 +92,30 @@ class RPP(Group):
         self.fail(st, np.abs(det) <= 1e-15, lambda i: f"the slot of link {self.links[1]} is parallel to its guide")
         st.z[self.R] = G + s2 * u2
         st.z[self.coincident] = st.z[self.P]
-        st.relative[self.name] = {"s1": s1, "s2": s2}
-        th = (np.zeros(st.n) if self.guide.link == GROUND else st.theta[self.guide.link]) + self.guide.angle
-        st.theta[self.links[1]] = th
-        st.theta[self.links[0]] = th + self.slot_angle
+        st.relative[self._name()] = {"s1": s1, "s2": s2}
+        n = (st.n,)
+        st.e[self.links[1]] = np.broadcast_to(u2, n)
+        st.e[self.links[0]] = np.broadcast_to(u1, n)
 
     def velocities(self, st: State) -> None:
         G, u2, u1, w, _ = self._lines(st)
         vG, _ = self.guide.kinematics(st)
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         P = st.z[self.P]
         sd1, sd2, det = solve2(u1, u2, st.v[self.P] - vG - 1j * w * (P - G))
         self.check_det(st, det, f"the slot of link {self.links[1]} is parallel to its guide")
-        st.conditioning[self.name] = np.abs(det)
+        n = (st.n,)
+        st.conditioning[self._name()] = np.broadcast_to(np.abs(det), n)
         st.v[self.R] = vG + 1j * w * (st.z[self.R] - G) + sd2 * u2
         st.v[self.coincident] = st.v[self.P] - sd1 * u1
-        st.omega[self.links[0]] = w
-        st.omega[self.links[1]] = w
+        st.omega[self.links[0]] = np.broadcast_to(w, n)
+        st.omega[self.links[1]] = np.broadcast_to(w, n)
         rel.update(s1_dot=sd1, s2_dot=sd2, v_rel=-sd1 * u1, v_guide=vG + 1j * w * (st.z[self.R] - G))
 
     def accelerations(self, st: State) -> None:
         G, u2, u1, w, e = self._lines(st)
         _, aG = self.guide.kinematics(st)
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         P = st.z[self.P]
         sd1, sd2 = rel["s1_dot"], rel["s2_dot"]
         rhs = st.a[self.P] - aG - (1j * e - w * w) * (P - G) - 2j * w * (sd1 * u1 + sd2 * u2)
@@ -124,15 +125,17 @@ class RPP(Group):
         st.a[self.R] = a_guide + 2j * w * sd2 * u2 + sdd2 * u2
         k = 2j * w * sd1 * u1
         st.a[self.coincident] = st.a[self.P] - k - sdd1 * u1
-        st.epsilon[self.links[0]] = e
-        st.epsilon[self.links[1]] = e
+        st.epsilon[self.links[0]] = np.broadcast_to(e, (st.n,))
+        st.epsilon[self.links[1]] = np.broadcast_to(e, (st.n,))
         rel.update(s1_ddot=sdd1, s2_ddot=sdd2, a_rel=-sdd1 * u1, a_coriolis=-k, a_guide=a_guide,
                    a_coriolis_guide=2j * w * sd2 * u2)
 
     def records(self, st: State) -> tuple:
         P, R, A3 = self.P, self.R, self.coincident
         _, u2, u1, _, _ = self._lines(st)
-        rel = st.relative[self.name]
+        n = (st.n,)
+        u2, u1 = np.broadcast_to(u2, n), np.broadcast_to(u1, n)
+        rel = {k: np.broadcast_to(v, n) for k, v in st.relative[self._name()].items()}
         s = cross(u1, u2)
         out = [Record(point=A3, plan="velocity", equation=f"v_{A3} = v_{P} + v_{A3}{P} = v_{R}",
                       known=((f"v_{P}", st.v[P]), (f"v_{R}(guide)", rel["v_guide"])),

@@ -99,26 +99,25 @@ class RPR(Group):
         u = R / (s + 1j * e)
         u = u / np.abs(u)
         st.z[self.coincident] = st.z[self.P]
-        st.relative[self.name] = {"s": s, "u": u}
-        th = np.angle(u)
-        st.theta[self.links[0]] = th
-        st.theta[self.links[1]] = th.copy()
+        st.relative[self._name()] = {"s": s, "u": u}
+        st.e[self.links[0]] = u
+        st.e[self.links[1]] = u
 
     def velocities(self, st: State) -> None:
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         u = rel["u"]
         R = st.z[self.P] - st.z[self.Q]
         # v_P − v_Q = ṡ·u + ω·i·(P − Q)
         sd, w, det = solve2(u, 1j * R, st.v[self.P] - st.v[self.Q])
         self.check_det(st, det, f"the slot of link {self.links[1]} is perpendicular to {self.Q}{self.P}")
-        st.conditioning[self.name] = np.abs(det) / np.maximum(np.abs(R), 1e-300)
+        st.conditioning[self._name()] = np.abs(det) / np.maximum(np.abs(R), 1e-300)
         st.omega[self.links[0]] = w
         st.omega[self.links[1]] = w.copy()
         st.v[self.coincident] = st.v[self.Q] + 1j * w * R
         rel.update(s_dot=sd, v_rel=-sd * u)           # v_A3A2 = v_A3 − v_A2 = −ṡ·u
 
     def accelerations(self, st: State) -> None:
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         u, sd = rel["u"], rel["s_dot"]
         R = st.z[self.P] - st.z[self.Q]
         w = st.omega[self.links[1]]
@@ -131,7 +130,7 @@ class RPR(Group):
 
     def records(self, st: State) -> tuple:
         P, Q, A3 = self.P, self.Q, self.coincident
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         u = rel["u"]
         R = st.z[P] - st.z[Q]
         n = 1j * R / np.maximum(np.abs(R), 1e-300)

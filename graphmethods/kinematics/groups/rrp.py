@@ -98,32 +98,31 @@ class RRP(Group):
         s = dot(u, R) + self.branch * w
         C = G + s * u
         st.z[self.C] = C
-        st.relative[self.name] = {"s": s}
-        st.theta[self.links[0]] = np.angle(C - st.z[self.P])
-        th_g = np.zeros(st.n) if self.guide.link == GROUND else st.theta[self.guide.link]
-        st.theta[self.links[1]] = th_g + self.guide.angle
+        st.relative[self._name()] = {"s": s}
+        st.e[self.links[0]] = (C - st.z[self.P]) / l
+        st.e[self.links[1]] = u                       # a scalar on the frame: it broadcasts
 
     def velocities(self, st: State) -> None:
         G, u, wg, _ = self.guide.line(st)
         vG, _ = self.guide.kinematics(st)
         C = st.z[self.C]
-        s = st.relative[self.name]["s"]
+        s = st.relative[self._name()]["s"]
         rP = C - st.z[self.P]
         # v_G + iω_g·s·u + ṡ·u = v_P + ω·i·rP
         sd, w, det = solve2(u, -1j * rP, st.v[self.P] - vG - 1j * wg * s * u)
         self.check_det(st, det, f"the rod {self.P}{self.C} stands perpendicular to the guide")
-        st.conditioning[self.name] = np.abs(det) / self.l
+        st.conditioning[self._name()] = np.abs(det) / self.l
         st.omega[self.links[0]] = w
-        st.omega[self.links[1]] = wg
+        st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else wg
         v_guide = vG + 1j * wg * s * u
         st.v[self.C] = v_guide + sd * u              # exactly along a guide of the frame
-        st.relative[self.name].update(s_dot=sd, v_rel=sd * u, v_guide=v_guide)
+        st.relative[self._name()].update(s_dot=sd, v_rel=sd * u, v_guide=v_guide)
 
     def accelerations(self, st: State) -> None:
         G, u, wg, eg = self.guide.line(st)
         _, aG = self.guide.kinematics(st)
         C = st.z[self.C]
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         s, sd = rel["s"], rel["s_dot"]
         rP = C - st.z[self.P]
         w = st.omega[self.links[0]]
@@ -131,7 +130,7 @@ class RRP(Group):
         a_k = 2j * wg * sd * u                              # Coriolis, 2ω_g × v_rel
         sdd, e, _ = solve2(u, -1j * rP, st.a[self.P] - w * w * rP - a_guide - a_k)
         st.epsilon[self.links[0]] = e
-        st.epsilon[self.links[1]] = eg
+        st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else eg
         st.a[self.C] = a_guide + a_k + sdd * u
         rel.update(s_ddot=sdd, a_rel=sdd * u, a_coriolis=a_k, a_guide=a_guide)
 
@@ -139,22 +138,24 @@ class RRP(Group):
         P, C = self.P, self.C
         c = st.z[C]
         G, u, wg, _ = self.guide.line(st)
+        u = np.broadcast_to(u, c.shape)
         uP = 1j * (c - st.z[P]) / self.l
         s = cross(uP, u)
-        rel = st.relative[self.name]
+        rel = st.relative[self._name()]
         moving = self.guide.link != GROUND
         gname = f"v_{C}{self.guide.link}" if moving else ""
         vel_eq = f"v_{C} = v_{P} + v_{C}{P}" + (f" = {gname} + v_{C}{C}{self.guide.link}" if moving else "")
+        v_guide = np.broadcast_to(rel["v_guide"], c.shape)
         vel = Record(point=C, plan="velocity", equation=vel_eq,
-                     known=((f"v_{P}", st.v[P]),) + (((gname, rel["v_guide"]),) if moving else ()),
-                     lines=((f"⟂ {P}{C}", st.v[P], uP), ("∥ guide", rel["v_guide"], u)), meet=st.v[C],
+                     known=((f"v_{P}", st.v[P]),) + (((gname, v_guide),) if moving else ()),
+                     lines=((f"⟂ {P}{C}", st.v[P], uP), ("∥ guide", v_guide, u)), meet=st.v[C],
                      sin_between=s)
         out = [vel]
         if "a_rel" in rel:
             w = st.omega[self.links[0]]
             nP = -w * w * (c - st.z[P])
             known = ((f"a_{P}", st.a[P]), (f"a^n_{C}{P}", nP))
-            base = rel["a_guide"]
+            base = np.broadcast_to(rel["a_guide"], c.shape)
             eq = f"a_{C} = a_{P} + a^n_{C}{P} + a^τ_{C}{P}"
             if moving:
                 known += ((f"a_{C}{self.guide.link}", rel["a_guide"]), ("a^k", rel["a_coriolis"]))

@@ -86,6 +86,9 @@ class RRR(Group):
     def positions(self, st: State) -> None:
         P, D, d, prod = self._heron(st)
         l1, l2 = self.l_PC, self.l_QC
+        if prod.min() > 0.0:                      # every position assembles (the usual case)
+            self._place(st, P, D, d, prod)
+            return
         tol = 4e-15 * (l1 + l2 + d)
         far = d > l1 + l2 + tol
         near = d < abs(l1 - l2) - tol
@@ -101,13 +104,17 @@ class RRR(Group):
                     f"{fmt(abs(l1 - l2))} m (the links cannot meet)")
 
         self.fail(st, far | near | zero, why)
+        self._place(st, P, D, d, prod)
+
+    def _place(self, st: State, P, D, d, prod) -> None:
+        l1, l2 = self.l_PC, self.l_QC
         h = np.sqrt(np.maximum(prod, 0.0)) / (2.0 * d)
         a = (l1 * l1 - l2 * l2 + d * d) / (2.0 * d)
         e = D / d
         C = P + (a + 1j * self.branch * h) * e
         st.z[self.C] = C
-        st.theta[self.links[0]] = np.angle(C - P)
-        st.theta[self.links[1]] = np.angle(C - st.z[self.Q])
+        st.e[self.links[0]] = (C - P) / l1
+        st.e[self.links[1]] = (C - st.z[self.Q]) / l2
 
     def velocities(self, st: State) -> None:
         C = st.z[self.C]
@@ -115,7 +122,7 @@ class RRR(Group):
         # v_P + ω_i·i·rP = v_Q + ω_j·i·rQ
         w1, w2, det = solve2(1j * rP, -1j * rQ, st.v[self.Q] - st.v[self.P])
         self.check_det(st, det, f"the links {self.P}{self.C} and {self.Q}{self.C} are in line")
-        st.conditioning[self.name] = np.abs(det) / (np.abs(rP) * np.abs(rQ))
+        st.conditioning[self._name()] = np.abs(det) / (np.abs(rP) * np.abs(rQ))
         st.omega[self.links[0]], st.omega[self.links[1]] = w1, w2
         st.v[self.C] = st.v[self.P] + 1j * w1 * rP
 
