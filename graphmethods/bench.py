@@ -272,7 +272,7 @@ def six_bar_closed_form(phi, omega_1: float, epsilon_1: float, *, r=0.08, l_AB=0
     >>> import numpy as np
     >>> out = six_bar_closed_form(np.array([0.0]), 1.0, 0.0)
     >>> sorted(out)[:4]
-    ['D', 'a_D', 'eps_3', 'eps_4']
+    ['B', 'C', 'D', 'a_D']
     """
     c, s = np.cos(phi), np.sin(phi)
     Ax, Ay = r * c, r * s
