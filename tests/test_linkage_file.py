@@ -101,7 +101,7 @@ LINKAGE_FILES = sorted(p.name for p in DATA.glob("*.json") if json.loads(p.read_
 
 def test_at_least_five_course_mechanisms_ship_as_linkage_files():
     assert {"six_bar_press.json", "slotting_machine.json", "whitworth_quick_return.json",
-            "two_slider_compressor.json"} <= set(LINKAGE_FILES)
+            "two_slider_compressor.json", "single_cylinder_engine.json"} <= set(LINKAGE_FILES)
     for name in LINKAGE_FILES:
         title = json.loads((DATA / name).read_text())["name"]
         assert set(title) == {"en", "ru", "zh"}, name
@@ -123,8 +123,9 @@ def test_linkage_files_study_and_reduced_inertia(name):
         J += it.m * np.abs(v) ** 2 + it.J * th ** 2
     assert np.abs(study.J_e - J).max() <= 1e-7 * J.max()
     ld = case.load
-    span = lk.stroke_H() if ld.kind == "force" else lk.psi_max()
-    assert study.M_d == pytest.approx(ld.magnitude * span * (ld.end - ld.start) / (2 * math.pi), rel=1e-12)
+    if ld.kind != "diagram":        # (the engine's diagram load is checked by its own test)
+        span = lk.stroke_H() if ld.kind == "force" else lk.psi_max()
+        assert study.M_d == pytest.approx(ld.magnitude * span * (ld.end - ld.start) / (2 * math.pi), rel=1e-12)
     assert study.excess_work.delta_W_max > 0
 
 
@@ -140,3 +141,32 @@ def test_course_mechanisms_closed_forms():
     assert ww.strokes() is not None and np.ptp(np.unwrap(ww.motion(m=12).theta["3"])) > 1.9 * math.pi     # the lever turns fully
     vc = read_case(DATA / "two_slider_compressor.json").linkage
     assert vc.stroke_H() == pytest.approx(0.12, rel=1e-12) and vc.strokes().K == pytest.approx(1.0, abs=1e-12)
+
+
+def test_single_cylinder_engine_gas_force_from_the_indicator_diagram():
+    data = json.loads((DATA / "single_cylinder_engine.json").read_text())
+    case = read_case(DATA / "single_cylinder_engine.json")
+    study = Study(case, positions=24)
+    H = case.linkage.stroke_H()
+    assert H == pytest.approx(0.1, rel=1e-12)                    # 2r, centred
+    exp_, comp = data["load"]["diagram"]
+    area = lambda p: float(np.trapezoid(p["F"], p["s"]))         # noqa: E731 - work per unit stroke
+    # the constant moment balances the cycle: it resists (negative) by the net gas work over a turn
+    assert study.M_d == pytest.approx(-H * (area(exp_) - area(comp)) / (2 * math.pi), rel=1e-12)
+    work = study.positions.working
+    M_r = np.asarray(study.M_r)
+    inner = ~np.asarray(study.positions.extreme)
+    assert np.all(M_r[work & inner] < 0) and np.all(M_r[~work & inner] > 0)   # gas drives, then resists
+    fine = Study(case, positions=192, estimate=False).summary()
+    assert fine["J_F_wittenbauer"] == pytest.approx(fine["J_F_exact"], rel=0.01)
+
+
+def test_bad_diagram_loads_name_the_key():
+    d = json.loads((DATA / "single_cylinder_engine.json").read_text())
+    d["load"]["diagram"][1]["s"][3] = 0.05
+    with pytest.raises(InputError, match=r"key 'load.diagram\[1\].s': the stroke fractions must not decrease"):
+        case_from_dict(d, source="engine.json")
+    d = json.loads((DATA / "single_cylinder_engine.json").read_text())
+    d["load"]["diagram"][0]["drives"] = "yes"
+    with pytest.raises(InputError, match=r"key 'load.diagram\[0\].drives'"):
+        case_from_dict(d, source="engine.json")

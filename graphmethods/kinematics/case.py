@@ -102,6 +102,26 @@ class Load:
 
 
 @dataclass(frozen=True)
+class DiagramLoad:
+    """Forces on a slider given as diagrams against the stroke (an indicator diagram), as course
+    problems give them: each part is one stroke's force F (N, ≥ 0) against the stroke fraction s/H
+    (from the start of the working stroke on both strokes), piecewise linear, and whether it drives
+    the slider (gas expanding) or resists its motion (gas compressed, a cutting force).
+
+    Attributes
+    ----------
+    at : str
+        The slider point.
+    parts : tuple of (x, F, stroke, drives)
+        ``x`` and ``F`` tuples of floats, ``stroke`` ``"working"`` or ``"return"``, ``drives`` bool.
+    """
+
+    at: str
+    parts: tuple
+    kind: str = "diagram"
+
+
+@dataclass(frozen=True)
 class Case:
     """A problem file, validated (see the module docstring).
 

@@ -227,7 +227,7 @@ def build_linkage(data: Mapping, *, source: str = "<dict>") -> Linkage:
 
 def linkage_case(data: Mapping, *, source: str = "<dict>"):
     """Validate a ``"kind": "linkage"`` problem and build its :class:`~graphmethods.kinematics.case.Case`."""
-    from graphmethods.kinematics.case import Case, Inertia, Load
+    from graphmethods.kinematics.case import Inertia
 
     rd = _Reader(source)
     unknown = [k for k in data if k not in TOP_KEYS]
@@ -260,7 +260,60 @@ def linkage_case(data: Mapping, *, source: str = "<dict>"):
         inertias.append(Inertia(link, at, m, J))
     if "load" not in data:
         rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or {\"moment\": ..., \"on\": 3, ...}")
-    ld = rd.obj("load", data["load"], ("force", "moment", "on", "from", "to"))
+    ld = rd.obj("load", data["load"], ("force", "moment", "diagram", "on", "from", "to"))
+    if "diagram" in ld:
+        load = _diagram_load(rd, ld, lk)
+    else:
+        load = _step_load(rd, ld, lk)
+    n_rpm = rd.number("n_rpm", data["n_rpm"] if "n_rpm" in data else rd.err("n_rpm", "is missing (rev/min)"),
+                      "positive")
+    delta = rd.number("delta", data["delta"] if "delta" in data else rd.err("delta", "is missing ([δ])"), "delta")
+    title = Title.of(data.get("name"), where=f"{source}: key 'name'")
+    values = {k: data[k] for k in data}
+    return LinkageCase(kind="linkage", title=title, about=data.get("about", ""), source=source, mechanism=mech,
+                       n_rpm=n_rpm, delta=delta, inertias=tuple(inertias), load=load,
+                       values=MappingProxyType(values))
+
+
+def _diagram_load(rd: _Reader, ld: Mapping, lk: Linkage):
+    """``{"diagram": [{"stroke": "working", "s": [...], "F": [...], "drives": true}, ...], "on": "B"}``."""
+    from graphmethods.kinematics.case import DiagramLoad
+
+    if any(k in ld for k in ("force", "moment", "from", "to")):
+        rd.err("load", "a diagram load gives its forces in \"diagram\" only (no force, moment, from, to)")
+    if lk.output is None or lk.output[0] != "point" or lk.strokes() is None:
+        rd.err("load.diagram", "a force diagram acts on the output slider; this linkage's output is not a slider")
+    on = str(ld.get("on", lk.output[1]))
+    if on != lk.output[1]:
+        rd.err("load.on", f"the diagram acts on the output slider {lk.output[1]!r}; got {on!r} (set \"output\")")
+    parts = ld["diagram"]
+    if not isinstance(parts, list) or not parts:
+        rd.err("load.diagram", "must be a list of strokes: [{\"stroke\": \"working\", \"s\": [...], \"F\": [...], "
+                               "\"drives\": true}, ...]")
+    out = []
+    for i, p in enumerate(parts):
+        key = f"load.diagram[{i}]"
+        p = rd.obj(key, p, ("stroke", "s", "F", "drives"))
+        stroke = p.get("stroke", "working")
+        if stroke not in ("working", "return"):
+            rd.err(f"{key}.stroke", f'must be "working" or "return"; got {stroke!r}')
+        drives = p.get("drives", False)
+        if not isinstance(drives, bool):
+            rd.err(f"{key}.drives", f"must be true (the force drives the slider) or false (it resists); got {drives!r}")
+        xs, Fs = p.get("s"), p.get("F")
+        if not isinstance(xs, list) or not isinstance(Fs, list) or len(xs) != len(Fs) or len(xs) < 2:
+            rd.err(f"{key}.s", "s and F must be lists of the same length, two points or more")
+        x = tuple(rd.number(f"{key}.s[{j}]", v, "fraction") for j, v in enumerate(xs))
+        F = tuple(rd.number(f"{key}.F[{j}]", v, "nonneg") for j, v in enumerate(Fs))
+        if any(b < a for a, b in zip(x, x[1:])):
+            rd.err(f"{key}.s", "the stroke fractions must not decrease (repeat one for a jump)")
+        out.append((x, F, stroke, drives))
+    return DiagramLoad(on, tuple(out))
+
+
+def _step_load(rd: _Reader, ld: Mapping, lk: Linkage):
+    from graphmethods.kinematics.case import Load
+
     kind = "force" if "force" in ld else "moment" if "moment" in ld else None
     if kind is None or ("force" in ld and "moment" in ld):
         rd.err("load", "give exactly one of force (N, on the output slider) or moment (N·m, on the output rocker)")
@@ -278,15 +331,7 @@ def linkage_case(data: Mapping, *, source: str = "<dict>"):
         rd.err("load.on", f"a force acts on the output slider {lk.output[1]!r}; got {on!r} (set \"output\")")
     if kind == "moment" and (lk.output[0] != "link" or on != lk.output[1]):
         rd.err("load.on", f"a moment acts on the output rocker (link {lk.output[1]}); got {on!r} (set \"output\")")
-    load = Load(kind, on, mag, start, end)
-    n_rpm = rd.number("n_rpm", data["n_rpm"] if "n_rpm" in data else rd.err("n_rpm", "is missing (rev/min)"),
-                      "positive")
-    delta = rd.number("delta", data["delta"] if "delta" in data else rd.err("delta", "is missing ([δ])"), "delta")
-    title = Title.of(data.get("name"), where=f"{source}: key 'name'")
-    values = {k: data[k] for k in data}
-    return LinkageCase(kind="linkage", title=title, about=data.get("about", ""), source=source, mechanism=mech,
-                       n_rpm=n_rpm, delta=delta, inertias=tuple(inertias), load=load,
-                       values=MappingProxyType(values))
+    return Load(kind, on, mag, start, end)
 
 
 def _case_class():
