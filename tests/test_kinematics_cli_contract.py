@@ -78,3 +78,10 @@ def test_bad_contract_options_are_one_line_errors(run, press_case_path):
                         (("--epsilon-1", "nan"), "--epsilon-1")):
         rc, out, err = run(press_case_path, *argv)
         assert rc == 2 and out == "" and match in err and err.count("\n") == 1
+
+
+def test_structure_is_printed(run):
+    rc, out, _ = run(DATA / "whitworth_quick_return.json", "--positions", "4", "--json")
+    res = json.loads(out)
+    assert res["structure"] == "I(0,1) → II(2,3) → II(4,5)" and res["dof"] == 1
+    assert [g["type"] for g in res["groups"]] == ["crank", "RPR", "RRP"]

@@ -156,6 +156,9 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         "m": m if phi_deg is None else None,
         "links": {str(k): v for k, v in mech.link_numbers.items()},
         "structure": case.linkage.structure().formula,
+        "dof": case.linkage.structure().dof,
+        "groups": [{"type": g.kind, "class": g.cls, "order": g.order, "links": list(g.links)}
+                   for g in case.linkage.structure().groups],
     }
     if st is not None:
         out.update(phi_start_deg=math.degrees(st.phi_start), phi_end_deg=math.degrees(st.phi_end),
