@@ -170,3 +170,43 @@ def test_bad_diagram_loads_name_the_key():
     d["load"]["diagram"][0]["drives"] = "yes"
     with pytest.raises(InputError, match=r"key 'load.diagram\[0\].drives'"):
         case_from_dict(d, source="engine.json")
+
+
+def test_the_four_bar_and_the_shaper_written_as_linkages_give_their_studies():
+    """A rocker output with a moment load, and a slotted lever driving a ram, through the whole dynamics."""
+    fb = json.loads((DATA / "four_bar_rocker.json").read_text())
+    four_bar = {
+        "kind": "linkage", "fixed": {"O1": [0, 0], "O2": [fb["l1"], 0]},
+        "crank": {"centre": "O1", "pin": "A", "r": fb["l2"]},
+        "groups": [{"type": "RRR", "links": [2, 3], "P": "A", "Q": "O2", "C": "B", "l_PC": fb["l3"], "l_QC": fb["l4"]}],
+        "points": {"S2": {"link": 2, "from": "A", "distance": fb["l_AS2"]},
+                   "S3": {"link": 3, "from": "O2", "distance": fb["l_O2S3"]}},
+        "output": 3,
+        "masses": {"1": {"J": fb["J1"]}, "2": {"m": fb["m2"], "J": fb["J_S2"], "at": "S2"},
+                   "3": {"m": fb["m3"], "J": fb["J_S3"], "at": "S3"}},
+        "load": {"moment": fb["M3"], "on": 3, "from": fb["moment_from"], "to": fb["moment_to"]},
+        "n_rpm": fb["n_rpm"], "delta": fb["delta"]}
+    sh = json.loads((DATA / "shaper.json").read_text())
+    th = math.radians(sh.get("theta_O3_deg", -90.0))
+    shaper = {
+        "kind": "linkage", "fixed": {"O1": [0, 0], "O3": [sh["l_O1O3"] * math.cos(th), sh["l_O1O3"] * math.sin(th)]},
+        "crank": {"centre": "O1", "pin": "A", "r": sh["r"]},
+        "groups": [{"type": "RPR", "links": [2, 3], "P": "A", "Q": "O3", "point": "A3"},
+                   {"type": "RRP", "links": [4, 5], "P": "B", "C": "C", "l": sh["l_BC"],
+                    "guide": {"link": 0, "through": [0, sh["y_guide"]], "angle_deg": 0}, "branch": sh.get("assembly", 1)}],
+        "points": {"B": {"link": 3, "from": "O3", "distance": sh["l_O3B"]},
+                   "S3": {"link": 3, "from": "O3", "distance": sh["l_O3S3"]},
+                   "S4": {"link": 4, "from": "B", "distance": sh["l_BS4"]}},
+        "output": "C",
+        "masses": {"1": {"J": sh["J1"]}, "2": {"m": sh.get("m2", 0.0), "at": "A"},
+                   "3": {"m": sh["m3"], "J": sh["J_S3"], "at": "S3"}, "4": {"m": sh["m4"], "J": sh["J_S4"], "at": "S4"},
+                   "5": {"m": sh["m5"], "at": "C"}},
+        "load": {"force": sh["F0"], "on": "C", "from": sh["force_from"], "to": sh["force_to"]},
+        "n_rpm": sh["n_rpm"], "delta": sh["delta"]}
+    for fname, data in (("four_bar_rocker.json", four_bar), ("shaper.json", shaper)):
+        old = Study(read_case(DATA / fname), positions=24).summary()
+        new = Study(case_from_dict(data), positions=24).summary()
+        for key in ("M_d", "delta_W_max", "J_F_energy", "J_F_wittenbauer", "J_e_min", "J_e_max", "J_F_exact"):
+            assert new[key] == pytest.approx(old[key], rel=1e-9, abs=1e-9), (fname, key)
+        for key in ("phi_omega_max_deg", "phi_omega_min_deg"):   # a flat extremum, located to the solver's tolerance
+            assert new[key] == pytest.approx(old[key], abs=1e-4), (fname, key)
