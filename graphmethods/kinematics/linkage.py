@@ -154,8 +154,9 @@ class Motion:
         Crank speed (rad/s, > 0, in its sense) and angular acceleration (rad/s², + speeding up).
     points : tuple of str
         Every point, in solving order (fixed joints first).
-    z, v, a : mapping name -> complex ndarray (n,)
-        Positions (m), velocities (m/s), accelerations (m/s²) as x + iy.
+    z, v_, a_ : mapping name -> complex ndarray (n,)
+        Positions (m), velocities (m/s), accelerations (m/s²) as x + iy; :meth:`xy`, :meth:`v`,
+        :meth:`a` give them as (n, 2) arrays.
     theta, omega, epsilon : mapping link -> ndarray (n,)
         Link angles (rad), angular velocities (rad/s), angular accelerations (rad/s²).
     relative : mapping group -> mapping
