@@ -210,3 +210,17 @@ def test_the_four_bar_and_the_shaper_written_as_linkages_give_their_studies():
             assert new[key] == pytest.approx(old[key], rel=1e-9, abs=1e-9), (fname, key)
         for key in ("phi_omega_max_deg", "phi_omega_min_deg"):   # a flat extremum, located to the solver's tolerance
             assert new[key] == pytest.approx(old[key], abs=1e-4), (fname, key)
+
+
+def test_figures_that_draw_a_step_load_refuse_an_indicator_diagram(tmp_path, capsys):
+    from graphmethods import cli
+    from graphmethods.sheets import dynamics as sd
+    case = read_case(DATA / "single_cylinder_engine.json")
+    study = Study(case, positions=12)
+    with pytest.raises(InputError, match="indicator diagram"):
+        sd.moment_graph(study)
+    sd.inertia_graph(study)                      # J_e does not depend on the load
+    out = tmp_path / "sheet.svg"
+    rc = cli.main(["study", str(DATA / "single_cylinder_engine.json"), "--sheet", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 2 and "indicator diagram" in err and err.count("\n") == 1 and not out.exists()
