@@ -19,6 +19,7 @@ plans' construction records come from the groups, and accelerations are at hand 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from types import MappingProxyType
 
 import numpy as np
@@ -30,6 +31,28 @@ from graphmethods.kinematics.linkage import Linkage
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, build_positions
+
+
+class _LazyConstructions(Mapping):
+    """The plan's construction records, built on first use (the reduced model never needs them)."""
+
+    def __init__(self, build):
+        self._build = build
+        self._data = None
+
+    def _get(self) -> dict:
+        if self._data is None:
+            self._data = self._build()
+        return self._data
+
+    def __getitem__(self, key):
+        return self._get()[key]
+
+    def __iter__(self):
+        return iter(self._get())
+
+    def __len__(self):
+        return len(self._get())
 
 
 def _xy(c: np.ndarray) -> np.ndarray:
@@ -208,12 +231,26 @@ class LinkageMechanism(Mechanism):
                       labels=positions.index)
         lk._snap(st, np.asarray(positions.extreme))
         n = positions.n
+        sins = [np.broadcast_to(np.abs(c), (n,)) for c in st.conditioning.values()]
+        constructions = _LazyConstructions(lambda: self._constructions(st))
+        sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
+        vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
+        return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
+                             vectors=MappingProxyType(vectors),
+                             omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
+                                                      for k, w in st.omega.items()}),
+                             constructions=constructions,
+                             sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
+                             sin_threshold=float(sin_threshold))
+
+    def _constructions(self, st) -> dict:
+        """How every point of the plan is found (built when a figure first asks for it)."""
+        lk = self.linkage
         cons = [PointConstruction(name=k, method="pole", equation=f"v_{k} = 0") for k in lk.ground]
         cr = lk.crank
         cons.append(PointConstruction(name=cr.pin, method="known",
                                       equation=f"v_{cr.pin} = ω₁·l_{cr.centre}{cr.pin}, ⟂ {cr.centre}{cr.pin}, "
                                                f"in the sense of ω₁"))
-        sins = []
         for step in lk._steps:
             if hasattr(step, "records"):
                 for rec in step.records(st):
@@ -223,7 +260,6 @@ class LinkageMechanism(Mechanism):
                         through=self._plan_label(st, pt), relation="perpendicular" if lab.startswith("⟂") else "parallel",
                         to=lab[2:], point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
                         for lab, pt, d in rec.lines)
-                    sins.append(np.abs(rec.sin_between))
                     cons.append(PointConstruction(name=rec.point, method="intersection", equation=rec.equation,
                                                   lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
                     if isinstance(step, RPP):
@@ -244,15 +280,7 @@ class LinkageMechanism(Mechanism):
                         name=step.name, method="similarity", on=on,
                         equation=f"{step.name.lower()} on {x.lower()}{y.lower()}: {x.lower()}{step.name.lower()}/"
                                  f"{x.lower()}{y.lower()} = {x}{step.name}/{x}{y} (similarity theorem)"))
-        sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
-        vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
-        return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
-                             vectors=MappingProxyType(vectors),
-                             omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
-                                                      for k, w in st.omega.items()}),
-                             constructions=MappingProxyType({c.name: c for c in cons}),
-                             sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
-                             sin_threshold=float(sin_threshold))
+        return {c.name: c for c in cons}
 
     def _plan_label(self, st, point_vec) -> str:
         """The plan image a construction line is drawn through: p for the fixed points, else the point's."""
