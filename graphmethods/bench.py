@@ -324,6 +324,14 @@ def bench_linkage(sizes=(12, 10**2, 10**3, 10**4, 10**5, 10**6), *, repeat=5) ->
         rep = max(repeat, min(200, int(2e5 // n)))
         t_core = median_time(lambda: lk.solve(phi, omega_1=w, epsilon_1=e), repeat=rep)
         t_hand = median_time(lambda: six_bar_closed_form(phi, w, e), repeat=rep)
+        best_core = best_hand = math.inf            # alternating best-of runs: the ratio on a busy machine
+        for _ in range(max(3, min(rep, 20))):
+            t0 = time.perf_counter()
+            lk.solve(phi, omega_1=w, epsilon_1=e)
+            t1 = time.perf_counter()
+            six_bar_closed_form(phi, w, e)
+            t2 = time.perf_counter()
+            best_core, best_hand = min(best_core, t1 - t0), min(best_hand, t2 - t1)
         st = lk.solve(phi, omega_1=w, epsilon_1=e)
         cf = six_bar_closed_form(phi, w, e)
         err = 0.0
@@ -332,7 +340,8 @@ def bench_linkage(sizes=(12, 10**2, 10**3, 10**4, 10**5, 10**6), *, repeat=5) ->
                          (st.omega["4"], cf["omega_4"]), (st.epsilon["4"], cf["eps_4"])):
             err = max(err, float(np.abs(got - ref).max() / np.abs(ref).max()))
         rows.append(Row("linkage", "six-bar press", "core: Assur groups (p + v + a)", n, t_core, err,
-                        note="vs hand-written closed form, max rel.", extra={"ratio": t_core / t_hand}))
+                        note="vs hand-written closed form, max rel.",
+                        extra={"ratio": t_core / t_hand, "ratio_best": best_core / best_hand, "best_s": best_core}))
         rows.append(Row("linkage", "six-bar press", "hand-written numpy closed form", n, t_hand, None))
     return rows
 
