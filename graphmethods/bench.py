@@ -264,6 +264,90 @@ def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
     return rows
 
 
+# --------------------------------------------------------------------- the linkage core
+def six_bar_closed_form(phi, omega_1: float, epsilon_1: float, *, r=0.08, l_AB=0.30, l_O2B=0.20, O2=(0.25, 0.10),
+                        l_O2C=0.30, l_CD=0.35, y_guide=0.42) -> dict:
+    """The six-bar press of :func:`graphmethods.kinematics.presets.six_bar_press` written out by hand in
+    real numpy arithmetic (no groups): B, C, D and their velocities and accelerations, ω and ε of the
+    rocker (3) and the link CD (4). Counterclockwise crank, ram D to the right of C.
+
+    >>> import numpy as np
+    >>> out = six_bar_closed_form(np.array([0.0]), 1.0, 0.0)
+    >>> sorted(out)[:4]
+    ['B', 'C', 'D', 'a_D']
+    """
+    c, s = np.cos(phi), np.sin(phi)
+    Ax, Ay = r * c, r * s
+    Dx, Dy = O2[0] - Ax, O2[1] - Ay
+    d2 = Dx * Dx + Dy * Dy
+    d = np.sqrt(d2)
+    a = (l_AB * l_AB - l_O2B * l_O2B + d2) / (2.0 * d)
+    h = np.sqrt(l_AB * l_AB - a * a)
+    ex, ey = Dx / d, Dy / d
+    Bx, By = Ax + a * ex - h * ey, Ay + a * ey + h * ex
+    vAx, vAy = -omega_1 * Ay, omega_1 * Ax
+    aAx, aAy = -epsilon_1 * Ay - omega_1**2 * Ax, epsilon_1 * Ax - omega_1**2 * Ay
+    px, py = Bx - Ax, By - Ay                         # A→B
+    qx, qy = Bx - O2[0], By - O2[1]                   # O2→B
+    det = px * qy - py * qx
+    w2 = -(vAx * qx + vAy * qy) / det                 # v_A + ω2 × AB = ω3 × O2B
+    w3 = -(vAx * px + vAy * py) / det
+    rx = aAx - w2 * w2 * px + w3 * w3 * qx
+    ry = aAy - w2 * w2 * py + w3 * w3 * qy
+    e2 = -(rx * qx + ry * qy) / det
+    e3 = -(rx * px + ry * py) / det
+    k = l_O2C / l_O2B
+    Cx, Cy = O2[0] + k * qx, O2[1] + k * qy
+    vCx, vCy = -w3 * qy * k, w3 * qx * k
+    aCx, aCy = (-e3 * qy - w3 * w3 * qx) * k, (e3 * qx - w3 * w3 * qy) * k
+    q = y_guide - Cy
+    w = np.sqrt(l_CD * l_CD - q * q)
+    xD = Cx + w
+    vD = vCx + q * vCy / w
+    aD = aCx + (q * aCy - vCy * vCy) / w - q * q * vCy * vCy / w**3
+    w4 = -vCy / w                                     # CD's angle is atan2(q, w)
+    e4 = (-aCy * w + vCy * (q * vCy / w)) / (w * w)
+    return {"B": (Bx, By), "C": (Cx, Cy), "D": xD, "v_D": vD, "a_D": aD, "omega_3": w3, "eps_3": e3,
+            "omega_4": w4, "eps_4": e4}
+
+
+def bench_linkage(sizes=(12, 10**2, 10**3, 10**4, 10**5, 10**6), *, repeat=5) -> list[Row]:
+    """Positions, velocities and accelerations of the six-bar press by the core (Assur groups) against
+    the same linkage written out by hand in numpy, side by side in one run; the error is the largest
+    difference of D's position, velocity, acceleration and the rocker's ω, ε, each relative to its
+    maximum."""
+    from graphmethods.kinematics.presets import six_bar_press
+
+    lk = six_bar_press()
+    rows = []
+    w, e = 10.0, 3.0
+    for n in sizes:
+        phi = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+        rep = max(repeat, min(200, int(2e5 // n)))
+        t_core = median_time(lambda: lk.solve(phi, omega_1=w, epsilon_1=e), repeat=rep)
+        t_hand = median_time(lambda: six_bar_closed_form(phi, w, e), repeat=rep)
+        best_core = best_hand = math.inf            # alternating best-of runs: the ratio on a busy machine
+        for _ in range(max(3, min(rep, 20))):
+            t0 = time.perf_counter()
+            lk.solve(phi, omega_1=w, epsilon_1=e)
+            t1 = time.perf_counter()
+            six_bar_closed_form(phi, w, e)
+            t2 = time.perf_counter()
+            best_core, best_hand = min(best_core, t1 - t0), min(best_hand, t2 - t1)
+        st = lk.solve(phi, omega_1=w, epsilon_1=e)
+        cf = six_bar_closed_form(phi, w, e)
+        err = 0.0
+        for got, ref in ((st.z["D"].real, cf["D"]), (st.v["D"].real, cf["v_D"]), (st.a["D"].real, cf["a_D"]),
+                         (st.omega["3"], cf["omega_3"]), (st.epsilon["3"], cf["eps_3"]),
+                         (st.omega["4"], cf["omega_4"]), (st.epsilon["4"], cf["eps_4"])):
+            err = max(err, float(np.abs(got - ref).max() / np.abs(ref).max()))
+        rows.append(Row("linkage", "six-bar press", "core: Assur groups (p + v + a)", n, t_core, err,
+                        note="vs hand-written closed form, max rel.",
+                        extra={"ratio": t_core / t_hand, "ratio_best": best_core / best_hand, "best_s": best_core}))
+        rows.append(Row("linkage", "six-bar press", "hand-written numpy closed form", n, t_hand, None))
+    return rows
+
+
 # --------------------------------------------------------------------- graphical calculus
 def bench_calculus(ms=(6, 12, 24, 48, 96), *, repeat=3) -> list[Row]:
     """Method-of-chords constructions on the press: largest error against the exact result
@@ -391,6 +475,7 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
 SECTIONS = {
     "flywheel": bench_flywheel,
     "kinematics": bench_kinematics,
+    "linkage": bench_linkage,
     "calculus": bench_calculus,
     "areas": bench_areas,
     "sheet": bench_sheet,
@@ -402,6 +487,7 @@ SECTIONS = {
 QUICK = {
     "flywheel": dict(m_values=(12, 24, 96, 360), repeat=1),
     "kinematics": dict(n=10_000, repeat=2),
+    "linkage": dict(sizes=(12, 10**3, 10**4), repeat=3),
     "calculus": dict(ms=(6, 12, 24), repeat=1),
     "areas": dict(sizes=(10**3, 10**4, 10**5), crossings=(2, 10**4), repeat=3),
     "sheet": dict(repeat=2),

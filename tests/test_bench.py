@@ -71,3 +71,11 @@ def test_worksheet_rows_count_the_pages_and_compare_the_pdf_writers():
                                                   ("PDF: graphmethods.render.pdf", 1), ("PDF: matplotlib backend", 1)]
     assert "4 pages" in rows[0].note
     assert rows[1].extra["speedup_vs_matplotlib"] == pytest.approx(rows[2].extra["ratio_to_ours"])
+
+
+def test_linkage_rows_core_equals_the_hand_written_six_bar_and_keeps_pace():
+    rows = bench.bench_linkage(sizes=(12, 10**4), repeat=3)
+    core = {r.size: r for r in rows if r.method.startswith("core")}
+    assert set(core) == {12, 10**4} and all(r.error < 1e-12 for r in core.values())
+    # within 4× of the hand-written closed form (best of alternating runs: medians swing on a shared machine)
+    assert core[10**4].extra["ratio_best"] < 4.0

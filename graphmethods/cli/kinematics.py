@@ -38,6 +38,12 @@ def add_parser(sub) -> None:
                    "four-bar, slotted-lever (graphmethods problems)")
     p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
                    help="number of equal crank steps per turn (default 12; positions 0…M)")
+    p.add_argument("--phi-deg", default=None, metavar="A[,B,...]",
+                   help="analyse at these crank angles (degrees from +x, counterclockwise) instead of M positions")
+    p.add_argument("--epsilon-1", type=float, default=0.0, metavar="E",
+                   help="crank angular acceleration, rad/s², + when the crank speeds up (default 0)")
+    p.add_argument("--n", type=float, default=None, metavar="N",
+                   help="mean crank speed, rev/min (default: the file's n_rpm)")
     p.add_argument("--json", action="store_true", help="print one JSON object whose 'positions' is the list")
     p.add_argument("--figures", metavar="DIR", default=None,
                    help="also write the figures (scheme, velocity plans, one large plan, velocity table) into DIR")
@@ -57,16 +63,65 @@ def _clean(x: float) -> float:
     return 0.0 if x == 0.0 else x
 
 
-def table(case, m: int) -> dict:
-    """The result as a JSON-ready dict (also used by the text output)."""
+def _phi_list(text: str) -> list[float]:
+    """Crank angles from ``--phi-deg A[,B,...]`` (degrees)."""
+    from graphmethods.errors import InputError
+
+    out = []
+    for part in str(text).split(","):
+        try:
+            x = float(part)
+        except ValueError:
+            raise InputError(f"--phi-deg: {part.strip()!r} is not an angle in degrees; give e.g. 30 or 0,90,180") from None
+        if not math.isfinite(x):
+            raise InputError(f"--phi-deg: {part.strip()!r} must be a finite angle in degrees")
+        out.append(x)
+    return out
+
+
+def _state(case, motion, i: int) -> tuple[dict, dict]:
+    """``points`` (xy, v, a of every moving point) and ``links`` (ω, ε by textbook number) at position i."""
+    fixed = set(case.linkage.ground)
+    points = {}
+    for name in motion.points:
+        if name in fixed:
+            continue
+        z, v, a = motion.z[name][i], motion.v_[name][i], motion.a_[name][i]
+        points[name] = {"xy": [_clean(z.real), _clean(z.imag)], "v": [_clean(v.real), _clean(v.imag)],
+                        "a": [_clean(a.real), _clean(a.imag)]}
+    links = {k: {"omega": _clean(motion.omega[k][i]), "epsilon": _clean(motion.epsilon[k][i])}
+             for k in case.linkage.links}
+    return points, links
+
+
+def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_rpm: float | None = None) -> dict:
+    """The result as a JSON-ready dict (also used by the text output).
+
+    Per position: the flat keys (``phi_deg``, ``v_B``, ``omega_2``, ...) from the velocity plans, and
+    the whole state from the kinematics core: ``points`` (xy, v, a of every moving point, m, m/s,
+    m/s²) and ``links`` (ω, ε of every link by textbook number, rad/s, rad/s²), at the mean crank
+    speed (or ``n_rpm``) with the crank's angular acceleration ``epsilon_1``; at positions 0…m, or at
+    the crank angles ``phi_deg`` (degrees).
+    """
     import numpy as np
 
+    from graphmethods.units import omega_from_n
+
     mech = case.mechanism
-    pos = mech.positions(m=m)
-    plan = mech.velocity_plans(pos, omega_1=case.omega_m)
+    omega_1 = case.omega_m if n_rpm is None else omega_from_n(n_rpm)
+    if phi_deg is not None:
+        phi = np.radians(np.asarray(phi_deg, dtype=float))
+        pos = mech.positions(phi=phi)
+        motion = case.linkage.motion(phi=phi, omega_1=omega_1, epsilon_1=epsilon_1)
+    else:
+        pos = mech.positions(m=m)
+        motion = case.linkage.motion(m=m, omega_1=omega_1, epsilon_1=epsilon_1)
+    plan = mech.velocity_plans(pos, omega_1=omega_1)
     st = pos.strokes
     cols: dict[str, np.ndarray] = {
-        "position": pos.index, "phi_deg": pos.phi_deg, "phi_from_start_deg": np.degrees(pos.phi_from_start)}
+        "position": pos.index if pos.index is not None else np.full(pos.n, -1),
+        "phi_deg": pos.phi_deg if phi_deg is None else np.mod(np.asarray(phi_deg, dtype=float), 360.0),
+        "phi_from_start_deg": np.degrees(pos.phi_from_start)}
     units = {"phi_deg": "°", "phi_from_start_deg": "°"}
     if pos.s is not None:
         slider = next(iter(mech.guides))
@@ -85,7 +140,7 @@ def table(case, m: int) -> dict:
         if case.kind == "slider_crank" and name == "B":
             cols["v_BA"] = np.hypot(*(plan.v_rel("B", "A").T))
             units["v_BA"] = "m/s"
-        if name == "A3":
+        if name == "A3" and case.kind in ("slotted_lever", "shaper"):
             u = pos.xy("A") - pos.xy("O3")
             u = u / np.hypot(u[:, 0], u[:, 1])[:, None]
             rel = plan.v_rel("A3", "A")
@@ -98,12 +153,20 @@ def table(case, m: int) -> dict:
     rows = []
     for i in range(pos.n):
         row = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
+        if pos.index is None:
+            row["position"] = None
         row["ill_conditioned"] = bool(plan.ill_conditioned[i])
+        row["points"], row["links"] = _state(case, motion, i)
         rows.append(row)
     out = {
-        "case": case.name, "kind": case.kind, "source": case.source, "n_rpm": case.n_rpm,
-        "omega_1": case.omega_m, "sense": "ccw" if mech.sense == 1 else "cw", "m": m,
+        "case": case.name, "kind": case.kind, "source": case.source, "n_rpm": case.n_rpm if n_rpm is None else n_rpm,
+        "omega_1": omega_1, "epsilon_1": epsilon_1, "sense": "ccw" if mech.sense == 1 else "cw",
+        "m": m if phi_deg is None else None,
         "links": {str(k): v for k, v in mech.link_numbers.items()},
+        "structure": case.linkage.structure().formula,
+        "dof": case.linkage.structure().dof,
+        "groups": [{"type": g.kind, "class": g.cls, "order": g.order, "links": list(g.links)}
+                   for g in case.linkage.structure().groups],
     }
     if st is not None:
         out.update(phi_start_deg=math.degrees(st.phi_start), phi_end_deg=math.degrees(st.phi_end),
@@ -121,13 +184,15 @@ def table(case, m: int) -> dict:
 def _text(res: dict) -> str:
     lines = [f"{res['case'] or res['kind']}  ({res['kind']}, {res['source']})",
              f"n = {res['n_rpm']:g} rev/min, ω₁ = {res['omega_1']:.6g} rad/s ({res['sense']}), "
-             f"m = {res['m']} positions from {res.get('start', 'φ = 0')}"]
+             + (f"m = {res['m']} positions from {res.get('start', 'φ = 0')}" if res["m"] is not None
+                else "at the given crank angles"),
+             f"structure {res['structure']}"]
     if "K" in res:
         lines.append(f"working stroke {res['working_angle_deg']:.4f}°, return {res['return_angle_deg']:.4f}°, "
                      f"K = {res['K']:.4f}" + (f", stroke H = {res['stroke_H']:.6g} m" if "stroke_H" in res else "")
                      + (f", swing ψ_max = {res['psi_max_deg']:.4f}°" if "psi_max_deg" in res else ""))
     lines.append("links: " + ", ".join(f"{k} = {v}" for k, v in res["links"].items()))
-    keys = [k for k in res["positions"][0] if k != "ill_conditioned"]
+    keys = [k for k in res["positions"][0] if k not in ("ill_conditioned", "points", "links")]
     head = [k if k not in res["units"] else f"{k} [{res['units'][k]}]" for k in keys]
     width = [max(10, len(h)) for h in head]
     lines.append("  ".join(h.rjust(w) for h, w in zip(head, width)))
@@ -135,9 +200,11 @@ def _text(res: dict) -> str:
         cells = []
         for k, w in zip(keys, width):
             v = row[k]
-            cells.append(str(v).rjust(w) if k == "position" else f"{v:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
+            cells.append(("-" if v is None else str(v)).rjust(w) if k == "position"
+                         else f"{v:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
         lines.append("  ".join(cells) + ("  ill-conditioned" if row["ill_conditioned"] else ""))
-    lines.append(f"position {res['m']} = position 0")
+    if res["m"] is not None:
+        lines.append(f"position {res['m']} = position 0")
     return "\n".join(lines)
 
 
@@ -230,8 +297,15 @@ def run(args) -> int:
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
     case = builtin.case(args.case)
-    res = table(case, args.positions)
+    if not math.isfinite(args.epsilon_1):
+        raise InputError(f"--epsilon-1 must be a finite angular acceleration in rad/s², got {args.epsilon_1}")
+    if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
+        raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
+    phi_deg = None if args.phi_deg is None else _phi_list(args.phi_deg)
+    res = table(case, args.positions, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=args.n)
     written = []
+    if args.figures is not None and phi_deg is not None:
+        raise InputError("--figures draws the positions 0…M; leave out --phi-deg")
     if args.figures is not None:
         import pathlib
 

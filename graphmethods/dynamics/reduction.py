@@ -95,6 +95,11 @@ def _stroke_fraction(positions, load) -> np.ndarray:
     return positions.psi / positions.psi_max
 
 
+def _diagrams(load) -> list:
+    return [ForceDiagram(load.at, x=tuple(x), F=tuple(F), against="stroke", stroke=stroke, opposes=not drives)
+            for x, F, stroke, drives in load.parts]
+
+
 def load_active(positions, load) -> np.ndarray:
     """Where the working-stroke load acts: on the working stroke, between its stroke fractions."""
     frac = _stroke_fraction(positions, load)
@@ -108,6 +113,8 @@ def resisting_moment(positions, plans, load) -> np.ndarray:
     A force F opposing the slider gives F |v_B|/ω₁; a moment M opposing a rocker gives
     M |ω_i|/ω₁; zero where the load does not act.
     """
+    if load.kind == "diagram":        # signed: negative where a diagram drives
+        return sum(diagram_moment(positions, plans, d) for d in _diagrams(load))
     if load.kind == "force":
         analogue = np.abs(plans.v_along_guide(load.at)) / plans.omega_1
     else:
@@ -124,6 +131,8 @@ def load_switch_angles(mechanism, load) -> tuple[float, float]:
     strokes = mechanism.strokes()
     if strokes is None:
         raise InputError("this linkage has no working stroke; a working-stroke load needs one")
+    if load.kind == "diagram":        # diagrams change over the strokes; they start and end at the dead centres
+        return 0.0, float(strokes.working_angle)
     lo = np.zeros(2)
     hi = np.full(2, strokes.working_angle)
     target = np.array([load.start, load.end])
@@ -143,6 +152,8 @@ def load_work(mechanism, load) -> float:
     A force does F·H·(end − start); a moment M·ψ_max·(end − start).
     """
     pos = mechanism.positions(m=4)
+    if load.kind == "diagram":        # resisting work minus driving work
+        return sum((1.0 if d.opposes else -1.0) * d.work(H=pos.H) for d in _diagrams(load))
     span = pos.H if load.kind == "force" else pos.psi_max
     return load.magnitude * span * (load.end - load.start)
 

@@ -1,5 +1,11 @@
 """Linkages in m positions and their velocity plans (numpy only; SI floats in, frozen results out).
 
+The core: any linkage of class II as a :class:`Linkage` (fixed joints, a :class:`Crank`, Assur
+groups from :mod:`graphmethods.kinematics.groups` in solving order, extra :class:`Point` s) with
+positions, velocities and accelerations (:meth:`Linkage.motion`), its structure and its
+strokes; :mod:`graphmethods.kinematics.presets` builds the textbook ones, and
+:class:`LinkageMechanism` gives any of them the interface below.
+
 Mechanisms (frozen dataclasses, dimensions in m, keyword-only):
 :class:`SliderCrank`, :class:`FourBar`, :class:`SlottedLever`, :class:`Shaper`.
 Each gives ``positions(m=12)`` (or ``positions(phi=...)``) -> :class:`Positions` and
@@ -17,6 +23,8 @@ that the plans are checked against. Problem files are read by :func:`read_case`.
 from graphmethods.kinematics.case import (Case, FourBarCase, Inertia, Load, ShaperCase, SliderCrankCase,
                                           SlottedLeverCase, case_from_dict, read_case)
 from graphmethods.kinematics.four_bar import FourBar
+from graphmethods.kinematics.linkage import Crank, Linkage, Motion, Point, Structure
+from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans, convenient_scale
 from graphmethods.kinematics.positions import Positions, Strokes
@@ -25,6 +33,7 @@ from graphmethods.kinematics.slider_crank import SliderCrank
 from graphmethods.kinematics.slotted_lever import SlottedLever
 
 __all__ = [
+    "Crank", "Linkage", "LinkageMechanism", "Motion", "Point", "Structure",
     "Case", "ConstructionLine", "FourBar", "FourBarCase", "Inertia", "Load", "Mechanism", "PointConstruction",
     "PointOnLink", "Positions", "Shaper", "ShaperCase", "SliderCrank", "SliderCrankCase", "SlottedLever",
     "SlottedLeverCase", "Strokes", "VelocityPlans", "case_from_dict", "convenient_scale", "read_case",

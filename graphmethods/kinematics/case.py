@@ -101,6 +101,26 @@ class Load:
 
 
 @dataclass(frozen=True)
+class DiagramLoad:
+    """Forces on a slider given as diagrams against the stroke (an indicator diagram), as course
+    problems give them: each part is one stroke's force F (N, ≥ 0) against the stroke fraction s/H
+    (from the start of the working stroke on both strokes), piecewise linear, and whether it drives
+    the slider (gas expanding) or resists its motion (gas compressed, a cutting force).
+
+    Attributes
+    ----------
+    at : str
+        The slider point.
+    parts : tuple of (x, F, stroke, drives)
+        ``x`` and ``F`` tuples of floats, ``stroke`` ``"working"`` or ``"return"``, ``drives`` bool.
+    """
+
+    at: str
+    parts: tuple
+    kind: str = "diagram"
+
+
+@dataclass(frozen=True)
 class Case:
     """A problem file, validated (see the module docstring).
 
@@ -148,6 +168,14 @@ class Case:
     def omega_m(self) -> float:
         """Mean crank speed, rad/s."""
         return omega_from_n(self.n_rpm)
+
+    @property
+    def linkage(self):
+        """The problem's linkage on the kinematics core (:class:`~graphmethods.kinematics.linkage.Linkage`:
+        accelerations, structure), the same linkage as ``mechanism``."""
+        from graphmethods.kinematics.presets import from_mechanism
+
+        return from_mechanism(self.mechanism)
 
     def __getattr__(self, key):
         # every validated key is also an attribute: case.m2, case.F0, ...
@@ -335,8 +363,12 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     if not isinstance(data, Mapping):
         raise InputError(f"{source}: a problem file must hold one JSON object {{...}}, got {type(data).__name__}")
     kind = data.get("kind", "slider_crank")
+    if kind == "linkage":
+        from graphmethods.kinematics.linkage_file import linkage_case
+
+        return linkage_case(data, source=source)
     if not isinstance(kind, str) or kind not in SPECS:
-        raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}")
+        raise InputError(f"{source}: unknown kind {kind!r}; known kinds: {', '.join(SPECS)}, linkage")
     v = _validated(data, kind, source)
     title = Title.of(data.get("name"), where=f"{source}: key 'name'")
     sense = 1 if v["sense"] == "ccw" else -1

@@ -5,7 +5,7 @@ Two kinds: *cycle* problems, given as a cycle of works, areas or moments (the wo
 W1–W4: ``graphmethods examples``, ``graphmethods check``), and *linkage* problems, given as a
 problem file that ships with the package (``graphmethods kinematics``, ``graphmethods study``).
 
->>> [p.name for p in listing() if p.kind != "cycle"]
+>>> [p.name for p in listing() if p.kind != "cycle"][:4]
 ['press', 'shaper', 'four-bar', 'slotted-lever']
 >>> case("shaper").kind
 'shaper'
@@ -26,6 +26,11 @@ LINKAGES = {
     "shaper": "shaper.json",
     "four-bar": "four_bar_rocker.json",
     "slotted-lever": "slotted_lever.json",
+    "six-bar-press": "six_bar_press.json",
+    "slotting-machine": "slotting_machine.json",
+    "whitworth": "whitworth_quick_return.json",
+    "two-slider": "two_slider_compressor.json",
+    "engine": "single_cylinder_engine.json",
 }
 
 #: cycle problems: name -> function of :mod:`graphmethods.problems` that builds it

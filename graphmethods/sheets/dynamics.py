@@ -365,6 +365,16 @@ def as_study(obj, positions: int = 12):
                      f"graphmethods.kinematics.read_case, got {type(obj).__name__}")
 
 
+def require_step_load(study, figure: str) -> None:
+    """Refuse a figure that draws the load as a working-stroke force or moment against a constant
+    driving moment when the problem gives its load as force diagrams (an engine's indicator diagram)."""
+    if getattr(study.case.load, "kind", None) == "diagram":
+        raise InputError(f"{figure}: this problem's load is given as force diagrams (an indicator diagram); the "
+                         f"figure draws a working-stroke load against a constant driving moment and does not draw "
+                         f"diagram loads yet; the study's numbers (graphmethods study --json) and the J_e, ΔT and "
+                         f"speed graphs are available")
+
+
 def problem_text(study, nt="en") -> str:
     """The problem's title (its kind when it has none) and the number of positions, in the notation's language.
 
@@ -752,6 +762,7 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     31.054517
     """
     study = as_study(study)
+    require_step_load(study, "moment graph")
     nt = get_notation(notation)
     M_r, phi_k, M_d = moment_curves(study)
     curves = [CurveSpec("M_r", phi_k, M_r, MAIN, sym(nt, "M_r")),
@@ -988,6 +999,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     from graphmethods.scene import Page
 
     study = as_study(study)
+    require_step_load(study, "Zhukovsky lever")
     nt = get_notation(notation)
     m = study.m
     plans = study.plans

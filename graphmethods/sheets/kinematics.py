@@ -366,7 +366,8 @@ class _Parts:
 
 
 def _parts(mech, pos) -> _Parts:
-    fixed = tuple(j for j in mech.joints if np.ptp(pos.coords[j], axis=0).max() == 0.0 and j.startswith("O"))
+    fixed = getattr(mech, "fixed_joints", None) or tuple(
+        j for j in mech.joints if np.ptp(pos.coords[j], axis=0).max() == 0.0 and j.startswith("O"))
     links = tuple(mech.link_joints.values())
     sliders = dict(mech.guides)
     pin = mech.crank_pin
@@ -1111,7 +1112,9 @@ def _equations(plans, k: int, nt, lk) -> list[str]:
             lo = plans.label(name)
             lines.append(f"{ix}{_sub(lo)}/{ix}{iy} = {_sub(x + name)}/{_sub(x + y)}")
         elif c.method == "proportion":
-            lines.append(f"pb = pa_{{3}}·{_sub('O3B')}/{_sub('O3A')}" if "A3" in mech.joints else c.equation)
+            pivot = c.on[:-len(name)] if c.on.endswith(name) and len(c.on) > len(name) else "O3"
+            lines.append(f"p{_sub(plans.label(name))} = pa_{{3}}·{_sub(pivot + name)}/{_sub(pivot + 'A')}"
+                         if "A3" in mech.joints else c.equation)
     return lines
 
 

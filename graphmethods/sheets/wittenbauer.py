@@ -46,7 +46,7 @@ from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import (
     PROJECTION, SMALL_MM, TEXT_MM, TWO_PI, CurveSpec, SheetFrame, as_study, clear_ticks, delta_T_curve,
     fine_angles, given_angle_scale, given_scale, inertia_curve, moment_curves, phi_graph_elements, problem_text,
-    quantity, sym, turned_inertia_elements, unit, value_text,
+    quantity, require_step_load, sym, turned_inertia_elements, unit, value_text,
 )
 
 RAY = Style(width_mm=0.35)
@@ -145,6 +145,7 @@ def diagram_data(source, *, tangents: str = "exact", notation="en") -> DiagramDa
         return DiagramData(np.asarray(source.x_mm) * source.mu_J, np.asarray(source.y_mm) * source.mu_T,
                            np.asarray(source.phi), source.omega_m, source.delta, source.tangents)
     study = as_study(source)
+    require_step_load(study, "energy–mass diagram")
     return DiagramData(np.asarray(study.J_e, dtype=float), np.asarray(study.delta_T, dtype=float),
                        np.asarray(study.phi, dtype=float), float(study.omega_m), float(study.delta), tangents,
                        problem_text(study, notation), estimate=study.wittenbauer if tangents == "exact" else None)
@@ -557,6 +558,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     (('A2', 'landscape'), False)
     """
     study = as_study(study)
+    require_step_load(study, "dynamic-analysis sheet")
     nt = get_notation(notation)
     m = study.m
     sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study, nt),

@@ -1,0 +1,167 @@
+"""The RRP dyad: a link P–C pinned at a known point P and at C to a slider that moves along a guide.
+
+Link ``links[0]`` is the rod P–C (length ``l``); link ``links[1]`` is the slider (block) at C,
+which slides along a :class:`~graphmethods.kinematics.groups.base.Guide` on the frame or on a
+moving link (then it turns with that link). The mirror group (PRR: the guide first, then the
+rod) is the same group: the order of its pairs along the chain does not change the solution.
+The branch +1 puts C ahead of the foot of P on the guide (along the guide's direction), −1
+behind it. The rod's angle is the direction P→C; the slider's is the guide's.
+
+Positions: with h the signed distance of P from the guide line and w = √(l² − h²),
+C = F + σ·w·u (F the foot of P, u the guide's direction). Velocities, as the plan is drawn:
+``v_C = v_P + v_CP`` with v_CP ⟂ PC, and v_C = v_C(guide) + v_rel with v_rel ∥ the guide.
+Accelerations: ``a_C = a_P + a^n_CP + a^τ_CP = a_C(guide) + a^k + a^r`` with the Coriolis
+term a^k = 2·ω_guide × v_rel (zero on the frame) and a^r ∥ the guide.
+
+>>> import numpy as np
+>>> from graphmethods.kinematics.groups.base import Guide, State
+>>> st = State(phi=np.zeros(1))
+>>> st.z["A"] = np.array([0.0 + 0.3j]); st.v["A"] = np.array([-1.0 + 0j]); st.a["A"] = np.zeros(1, complex)
+>>> g = RRP(P="A", C="B", l=0.5, guide=Guide("0", 0j, 0.0), links=("2", "3"))
+>>> g.positions(st); g.velocities(st)
+>>> complex(st.z["B"][0]), complex(st.v["B"][0])
+((0.4+0j), (-1+0j))
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphmethods.kinematics.groups.base import (GROUND, Group, Guide, Record, State, check_branch, check_length, cross,
+                                                 dot, fmt, solve2)
+
+
+@dataclass(frozen=True, eq=False)
+class RRP(Group):
+    """RRP dyad (see the module docstring).
+
+    Parameters
+    ----------
+    P : str
+        The known joint of the rod.
+    C : str
+        The slider's joint (found).
+    l : float
+        Rod P–C, m.
+    guide : Guide
+        The guide the slider moves along.
+    links : (str, str)
+        Textbook numbers of the rod and the slider.
+    branch : int
+        +1: C ahead of the foot of P along the guide; −1: behind it.
+    """
+
+    P: str
+    C: str
+    l: float
+    guide: Guide
+    links: tuple = ("2", "3")
+    branch: int = 1
+
+    kind = "RRP"
+
+    def __post_init__(self):
+        object.__setattr__(self, "l", check_length(f"{self.P}{self.C}", self.l))
+        object.__setattr__(self, "branch", check_branch(self.name, self.branch))
+
+    @property
+    def pairs(self):
+        return (("R", "?", self.links[0], self.P), ("R", self.links[0], self.links[1], self.C),
+                ("P", self.guide.link, self.links[1], self.C))
+
+    def inputs(self):
+        pts = {self.P} | ({self.guide.through} if isinstance(self.guide.through, str) else set())
+        return pts, ({self.guide.link} - {GROUND})
+
+    def outputs(self):
+        return (self.C,), self.links
+
+    def _geometry(self, st: State):
+        G, u, _, _ = self.guide.line(st)
+        R = st.z[self.P] - G
+        h = cross(u, R)
+        return G, u, R, h
+
+    def margin(self, st: State) -> np.ndarray:
+        h = self._geometry(st)[3]
+        return (self.l - h) * (self.l + h)
+
+    def positions(self, st: State) -> None:
+        G, u, R, h = self._geometry(st)
+        l = self.l
+        bad = np.abs(h) > l * (1.0 + 1e-15)
+        self.fail(st, bad, lambda i: f"{self.P} is {fmt(abs(h[i]))} m from the guide of {self.C}, farther than "
+                                     f"{self.P}{self.C} = {fmt(l)} m")
+        w = np.sqrt(np.maximum((l - h) * (l + h), 0.0))
+        s = dot(u, R) + self.branch * w
+        C = G + s * u
+        st.z[self.C] = C
+        st.relative[self._name()] = {"s": s}
+        st.e[self.links[0]] = (C - st.z[self.P]) / l
+        st.e[self.links[1]] = u                       # a scalar on the frame: it broadcasts
+
+    def velocities(self, st: State) -> None:
+        G, u, wg, _ = self.guide.line(st)
+        vG, _ = self.guide.kinematics(st)
+        C = st.z[self.C]
+        s = st.relative[self._name()]["s"]
+        rP = C - st.z[self.P]
+        # v_G + iω_g·s·u + ṡ·u = v_P + ω·i·rP
+        sd, w, det = solve2(u, -1j * rP, st.v[self.P] - vG - 1j * wg * s * u)
+        self.check_det(st, det, f"the rod {self.P}{self.C} stands perpendicular to the guide")
+        st.conditioning[self._name()] = np.abs(det) / self.l
+        st.omega[self.links[0]] = w
+        st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else wg
+        v_guide = vG + 1j * wg * s * u
+        st.v[self.C] = v_guide + sd * u              # exactly along a guide of the frame
+        st.relative[self._name()].update(s_dot=sd, v_rel=sd * u, v_guide=v_guide)
+
+    def accelerations(self, st: State) -> None:
+        G, u, wg, eg = self.guide.line(st)
+        _, aG = self.guide.kinematics(st)
+        C = st.z[self.C]
+        rel = st.relative[self._name()]
+        s, sd = rel["s"], rel["s_dot"]
+        rP = C - st.z[self.P]
+        w = st.omega[self.links[0]]
+        a_guide = aG + (1j * eg - wg * wg) * s * u          # the guide's point under C
+        a_k = 2j * wg * sd * u                              # Coriolis, 2ω_g × v_rel
+        sdd, e, _ = solve2(u, -1j * rP, st.a[self.P] - w * w * rP - a_guide - a_k)
+        st.epsilon[self.links[0]] = e
+        st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else eg
+        st.a[self.C] = a_guide + a_k + sdd * u
+        rel.update(s_ddot=sdd, a_rel=sdd * u, a_coriolis=a_k, a_guide=a_guide)
+
+    def records(self, st: State) -> tuple:
+        P, C = self.P, self.C
+        c = st.z[C]
+        G, u, wg, _ = self.guide.line(st)
+        u = np.broadcast_to(u, c.shape)
+        uP = 1j * (c - st.z[P]) / self.l
+        s = cross(uP, u)
+        rel = st.relative[self._name()]
+        moving = self.guide.link != GROUND
+        gname = f"v_{C}{self.guide.link}" if moving else ""
+        vel_eq = f"v_{C} = v_{P} + v_{C}{P}" + (f" = {gname} + v_{C}{C}{self.guide.link}" if moving else "")
+        v_guide = np.broadcast_to(rel["v_guide"], c.shape)
+        vel = Record(point=C, plan="velocity", equation=vel_eq,
+                     known=((f"v_{P}", st.v[P]),) + (((gname, v_guide),) if moving else ()),
+                     lines=((f"⟂ {P}{C}", st.v[P], uP), ("∥ guide", v_guide, u)), meet=st.v[C],
+                     sin_between=s)
+        out = [vel]
+        if "a_rel" in rel:
+            w = st.omega[self.links[0]]
+            nP = -w * w * (c - st.z[P])
+            known = ((f"a_{P}", st.a[P]), (f"a^n_{C}{P}", nP))
+            base = np.broadcast_to(rel["a_guide"], c.shape)
+            eq = f"a_{C} = a_{P} + a^n_{C}{P} + a^τ_{C}{P}"
+            if moving:
+                known += ((f"a_{C}{self.guide.link}", rel["a_guide"]), ("a^k", rel["a_coriolis"]))
+                base = base + rel["a_coriolis"]
+                eq += f" = a_{C}{self.guide.link} + a^k + a^r"
+            out.append(Record(point=C, plan="acceleration", equation=eq, known=known,
+                              lines=((f"⟂ {P}{C}", st.a[P] + nP, uP), ("∥ guide", base, u)), meet=st.a[C],
+                              sin_between=s))
+        return tuple(out)

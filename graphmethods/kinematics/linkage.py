@@ -1,0 +1,783 @@
+"""Any planar linkage of class II: fixed joints + a driving crank + Assur groups in solving order.
+
+A :class:`Linkage` is solved group by group, vectorised over all positions at once: positions,
+velocities and accelerations of every point, angle, ω and ε of every link, and the
+construction records of the velocity and acceleration plans. The crank turns at ω₁ in its
+``sense`` with the angular acceleration ε₁ (positive when it speeds up in its own sense).
+
+The structure is an output too (:meth:`Linkage.structure`): the groups in order with class and
+order, the formula as courses write it, ``I(0,1) → II(2,3) → II(4,5)``, and the degree of
+freedom by Chebyshev's formula W = 3n − 2p₅ − p₄.
+
+The output (the last slider on the frame, or the last link pivoted on the frame) has its
+extreme positions found numerically to machine precision (:meth:`Linkage.strokes`); positions
+0…m are numbered from the start of the working stroke, in the crank's sense.
+
+>>> import math
+>>> from graphmethods.kinematics.groups import RRP, Guide
+>>> press = Linkage(ground={"O": (0.0, 0.0)}, crank=Crank("O", "A", r=0.1),
+...                 groups=[RRP(P="A", C="B", l=0.4, guide=Guide("0", 0j, 0.0), links=("2", "3"))],
+...                 points=[Point("S2", link="2", origin="A", distance=0.13)])
+>>> press.structure().formula
+'I(0,1) → II(2,3)'
+>>> mo = press.motion(m=12, omega_1=10.0)
+>>> mo.xy("B")[0].tolist(), mo.v("B")[0].tolist()      # far dead centre
+([0.5, 0.0], [0.0, 0.0])
+>>> round(float(mo.a("B")[0, 0]), 12)                 # −ω²r(1 + r/l)
+-12.5
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any, Iterable, Mapping, Sequence
+
+import numpy as np
+
+from graphmethods.errors import AssemblyError, InputError
+from graphmethods.kinematics.groups.base import GROUND, Group, Guide, State, check_length, fmt
+from graphmethods.kinematics.positions import Strokes
+
+TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True)
+class Crank:
+    """The driving link (class I mechanism): pin = centre + r·(cos φ, sin φ).
+
+    Attributes
+    ----------
+    centre : str
+        The fixed joint it turns about.
+    pin : str
+        Its moving joint (the crank pin, A).
+    r : float
+        Length, m.
+    link : str
+        Textbook number (``"1"``).
+    """
+
+    centre: str
+    pin: str
+    r: float
+    link: str = "1"
+
+    def __post_init__(self):
+        object.__setattr__(self, "r", check_length(f"crank {self.centre}{self.pin}", self.r))
+
+
+@dataclass(frozen=True)
+class Point:
+    """An extra point fixed on a link (a centre of mass, a coupler point, the end of a lever).
+
+    It lies ``distance`` (m) from the link's point ``origin`` at ``angle`` (rad) from the link's
+    own direction (for a link P–C found by a group, the direction P→C; for a slotted link the
+    slot's direction; for the crank the direction centre→pin). Its velocity and acceleration
+    follow by similarity: ``v = v_origin + ω × r``, ``a = a_origin + ε × r − ω²·r``.
+    """
+
+    name: str
+    link: str
+    origin: str
+    distance: float
+    angle: float = 0.0
+
+    @property
+    def offset(self) -> complex:
+        """distance·e^(i·angle): the point from its origin in the link's own frame (x along the link)."""
+        return self.distance * complex(math.cos(self.angle), math.sin(self.angle))
+
+    def __post_init__(self):
+        object.__setattr__(self, "distance", check_length(f"point {self.name}: distance", self.distance,
+                                                          positive=False))
+        object.__setattr__(self, "angle", check_length(f"point {self.name}: angle", self.angle, positive=False))
+        if self.distance < 0:
+            raise InputError(f"point {self.name}: distance must be ≥ 0 m (turn the angle by π instead), "
+                             f"got {self.distance}")
+
+
+@dataclass(frozen=True)
+class GroupInfo:
+    """One structural group: its class, order, kind and links."""
+
+    kind: str
+    cls: int
+    order: int
+    links: tuple
+
+
+@dataclass(frozen=True)
+class Structure:
+    """The structural analysis of a linkage.
+
+    Attributes
+    ----------
+    groups : tuple of GroupInfo
+        The driving mechanism (class I: frame and crank) and the Assur groups, in solving order.
+    formula : str
+        As courses write it: ``"I(0,1) → II(2,3) → II(4,5)"``.
+    n_moving : int
+        Number of moving links n.
+    p_lower, p_higher : int
+        Lower (revolute, prismatic) pairs p₅ and higher pairs p₄.
+    dof : int
+        Chebyshev's degree of freedom W = 3n − 2p₅ − p₄.
+    mechanism_class : int
+        The highest class of its groups.
+    """
+
+    groups: tuple
+    formula: str
+    n_moving: int
+    p_lower: int
+    p_higher: int
+    dof: int
+    mechanism_class: int
+
+
+@dataclass(frozen=True, eq=False)
+class Motion:
+    """A linkage solved at n positions (see :meth:`Linkage.motion`). SI units, counterclockwise +.
+
+    Attributes
+    ----------
+    linkage : Linkage
+    phi : ndarray (n,)
+        Crank angles from +x, rad.
+    phi_from_start : ndarray (n,)
+        Crank rotation from position 0 in the crank's sense, rad.
+    index : ndarray (n,) of int or None
+        Textbook position numbers 0…m (None at arbitrary angles).
+    omega_1, epsilon_1 : float
+        Crank speed (rad/s, > 0, in its sense) and angular acceleration (rad/s², + speeding up).
+    points : tuple of str
+        Every point, in solving order (fixed joints first).
+    z, v_, a_ : mapping name -> complex ndarray (n,)
+        Positions (m), velocities (m/s), accelerations (m/s²) as x + iy; :meth:`xy`, :meth:`v`,
+        :meth:`a` give them as (n, 2) arrays.
+    theta, omega, epsilon : mapping link -> ndarray (n,)
+        Link angles (rad), angular velocities (rad/s), angular accelerations (rad/s²).
+    relative : mapping group -> mapping
+        Sliding quantities of each group (relative velocity and acceleration, Coriolis terms).
+    conditioning : ndarray (n,)
+        Smallest |sin| between two construction lines over the groups (1 with no group).
+    extreme : ndarray (n,) of bool
+        Positions at an extreme position of the output (to 1e-13 rad).
+    strokes : Strokes or None
+    """
+
+    linkage: Any
+    phi: np.ndarray
+    phi_from_start: np.ndarray
+    index: np.ndarray | None
+    omega_1: float
+    epsilon_1: float
+    points: tuple
+    z: Mapping[str, np.ndarray]
+    v_: Mapping[str, np.ndarray]
+    a_: Mapping[str, np.ndarray]
+    theta: Mapping[str, np.ndarray]
+    omega: Mapping[str, np.ndarray]
+    epsilon: Mapping[str, np.ndarray]
+    relative: Mapping[str, Mapping]
+    conditioning: np.ndarray
+    extreme: np.ndarray
+    strokes: Strokes | None
+    _state: Any = None
+
+    @property
+    def n(self) -> int:
+        return int(self.phi.shape[0])
+
+    def _get(self, table, name: str, what: str) -> np.ndarray:
+        try:
+            c = table[name]
+        except KeyError:
+            raise InputError(f"no point {name!r} in this linkage; points: {', '.join(self.points)}") from None
+        return np.column_stack((c.real, c.imag))
+
+    def xy(self, name: str) -> np.ndarray:
+        """Coordinates of ``name``, (n, 2), m."""
+        return self._get(self.z, name, "position")
+
+    def v(self, name: str) -> np.ndarray:
+        """Velocity of ``name``, (n, 2), m/s."""
+        return self._get(self.v_, name, "velocity")
+
+    def a(self, name: str) -> np.ndarray:
+        """Acceleration of ``name``, (n, 2), m/s²."""
+        return self._get(self.a_, name, "acceleration")
+
+    def link(self, number) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(θ, ω, ε) of link ``number`` (textbook number, ``"2"`` or 2)."""
+        key = str(number)
+        if key not in self.omega:
+            raise InputError(f"no link {number!r}; links: {', '.join(self.omega)}")
+        return self.theta[key], self.omega[key], self.epsilon[key]
+
+    def records(self) -> tuple:
+        """The construction records of every group's velocity and acceleration plans, in order."""
+        out = []
+        for g in self.linkage.groups:
+            out.extend(g.records(self._state))
+        return tuple(out)
+
+    @property
+    def s(self) -> np.ndarray | None:
+        """Output slider's displacement from the start of the working stroke (m, + in the working
+        sense), or None."""
+        return self.linkage._output_s(self)
+
+    @property
+    def psi(self) -> np.ndarray | None:
+        """Output rocker's angle from its start extreme (rad, + in the working sense), or None."""
+        return self.linkage._output_psi(self)
+
+
+class Linkage:
+    """A planar linkage: fixed joints, a crank, class-II groups in solving order, extra points.
+
+    Parameters
+    ----------
+    ground : mapping name -> (x, y)
+        The fixed joints, m.
+    crank : Crank
+        The driving link.
+    groups : sequence of Group
+        The Assur groups in the order they are solved (each needs only what is known before it).
+    points : sequence of Point, optional
+        Extra points on the links.
+    sense : int
+        +1: the crank turns counterclockwise; −1 clockwise.
+    output : str, optional
+        The output: a point on a guide of the frame (``"B"``) or a link number (``"3"``); by
+        default the last group's slider on the frame, else its link pivoted on the frame.
+    working_stroke : str
+        ``"slow"`` (default), ``"fast"``, ``"toward_crank"`` or ``"away_from_crank"`` (a slider
+        output: the stroke toward the crank's centre starts at the farther extreme).
+    name : str
+        For messages.
+    start : float
+        Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
+    """
+
+    def __init__(self, *, ground: Mapping, crank: Crank, groups: Sequence[Group] = (),
+                 points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0):
+        if isinstance(sense, bool) or sense not in (1, -1):
+            raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
+        if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
+            raise InputError(f"{name}: working_stroke must be slow, fast, toward_crank or away_from_crank; "
+                             f"got {working_stroke!r}")
+        self.name = name
+        self._start = float(_norm(start))
+        self.sense = int(sense)
+        self.working_stroke = working_stroke
+        self.ground = {}
+        for k, xy in ground.items():
+            try:
+                x, y = (float(c) for c in xy)
+            except (TypeError, ValueError):
+                raise InputError(f"{name}: fixed joint {k!r} must be (x, y) in m, got {xy!r}") from None
+            if not (math.isfinite(x) and math.isfinite(y)):
+                raise InputError(f"{name}: fixed joint {k!r} must have finite coordinates, got {xy!r}")
+            self.ground[str(k)] = complex(x, y)
+        self.crank = crank
+        self.groups = tuple(groups)
+        self.points = tuple(points)
+        self._check_order()
+        self.output = self._choose_output(output)
+        self._cache: dict = {}
+
+    # ------------------------------------------------------------------ structure
+    def _check_order(self) -> None:
+        """Check that every group needs only what is known before it; place each extra point right
+        after its link is known (so a later group can be driven from it: the end of a lever)."""
+        known_pts = set(self.ground)
+        if self.crank.centre not in self.ground:
+            raise InputError(f"{self.name}: the crank turns about {self.crank.centre!r}, which is not a fixed joint "
+                             f"({', '.join(self.ground)})")
+        if self.crank.pin in known_pts:
+            raise InputError(f"{self.name}: the crank pin {self.crank.pin!r} is already a fixed joint")
+        known_pts.add(self.crank.pin)
+        known_links = {GROUND, self.crank.link}
+        pending = list(self.points)
+        names = [p.name for p in pending]
+        dup = sorted({x for x in names if names.count(x) > 1})
+        if dup:
+            raise InputError(f"{self.name}: extra point {dup[0]!r} is given twice")
+        steps: list = []
+
+        def place():
+            moved = True
+            while moved:
+                moved = False
+                for p in list(pending):
+                    if p.link in known_links and p.link != GROUND and p.origin in known_pts:
+                        if p.name in known_pts:
+                            raise InputError(f"{self.name}: extra point {p.name!r} clashes with a joint or point name")
+                        steps.append(p)
+                        known_pts.add(p.name)
+                        pending.remove(p)
+                        moved = True
+
+        place()
+        for g in self.groups:
+            if not isinstance(g, Group):
+                raise InputError(f"{self.name}: {g!r} is not an Assur group")
+            pts, links = g.inputs()
+            missing = sorted(p for p in pts if p not in known_pts)
+            if missing:
+                raise InputError(f"{self.name}: group {g.name} needs {', '.join(missing)}, which no earlier group "
+                                 f"or point finds; list the groups in solving order")
+            lmiss = sorted(k for k in links if k not in known_links)
+            if lmiss:
+                raise InputError(f"{self.name}: group {g.name} needs link {', '.join(lmiss)} solved before it")
+            outs, new_links = g.outputs()
+            for p in outs:
+                if p in known_pts or p in names:
+                    raise InputError(f"{self.name}: point {p!r} of group {g.name} is already defined")
+                known_pts.add(p)
+            for k in new_links:
+                if k in known_links:
+                    raise InputError(f"{self.name}: link {k!r} of group {g.name} is already numbered")
+                known_links.add(k)
+            steps.append(g)
+            place()
+        for p in pending:
+            if p.link not in known_links or p.link == GROUND:
+                raise InputError(f"{self.name}: point {p.name!r} is on link {p.link!r}, which is not a moving link "
+                                 f"({', '.join(sorted(known_links - {GROUND}))})")
+            raise InputError(f"{self.name}: point {p.name!r} is measured from {p.origin!r}, which is not a "
+                             f"point of the linkage")
+        self._steps = tuple(steps)
+        self._links = tuple(sorted(known_links - {GROUND}, key=lambda k: (len(k), k)))
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        """Textbook numbers of the moving links."""
+        return self._links
+
+    def structure(self) -> Structure:
+        """Groups in order with class and order, the structural formula, Chebyshev's W.
+
+        >>> from graphmethods.kinematics.presets import six_bar_press
+        >>> s = six_bar_press().structure()
+        >>> s.formula, s.dof, s.n_moving, s.p_lower
+        ('I(0,1) → II(2,3) → II(4,5)', 1, 5, 7)
+        """
+        infos = [GroupInfo("crank", 1, 0, ("0", self.crank.link))]
+        parts = [f"I(0,{self.crank.link})"]
+        p5 = 1
+        for g in self.groups:
+            infos.append(GroupInfo(g.kind, 2, 2, tuple(g.links)))
+            parts.append(f"II({g.links[0]},{g.links[1]})")
+            p5 += len(g.pairs)
+        n = len(self.links)
+        return Structure(groups=tuple(infos), formula=" → ".join(parts), n_moving=n, p_lower=p5, p_higher=0,
+                         dof=3 * n - 2 * p5, mechanism_class=2 if self.groups else 1)
+
+    def _choose_output(self, output):
+        guides = self.guides
+        if output is not None:
+            output = str(output)
+            if output in guides:
+                return ("point", output)
+            if output in self.links:
+                return ("link", output)
+            raise InputError(f"{self.name}: output {output!r} is neither a slider on a guide of the frame "
+                             f"({', '.join(guides) or 'none'}) nor a link ({', '.join(self.links)})")
+        for g in reversed(self.groups):
+            for p, _ in self._group_sliders(g):
+                return ("point", p)
+            for link, pivot in self._group_rockers(g):
+                return ("link", link)
+        return None
+
+    @staticmethod
+    def _group_sliders(g):
+        from graphmethods.kinematics.groups import PRP, RPP, RRP
+        if isinstance(g, RRP) and g.guide.link == GROUND:
+            yield g.C, g.guide
+        elif isinstance(g, RPP) and g.guide.link == GROUND:
+            yield g.R, g.guide
+        elif isinstance(g, PRP):
+            for gd in (g.guide_1, g.guide_2):
+                if gd.link == GROUND:
+                    yield g.C, gd
+                    break
+
+    def _group_rockers(self, g):
+        from graphmethods.kinematics.groups import RPR, RRR
+        if isinstance(g, RRR):
+            if g.Q in self.ground:
+                yield g.links[1], g.Q
+            elif g.P in self.ground:
+                yield g.links[0], g.P
+        elif isinstance(g, RPR) and g.Q in self.ground:
+            yield g.links[1], g.Q
+
+    @property
+    def guides(self) -> dict[str, tuple[float, float]]:
+        """Sliders on guides of the frame -> unit direction of the guide."""
+        out = {}
+        for g in self.groups:
+            for p, gd in self._group_sliders(g):
+                out[p] = (math.cos(gd.angle), math.sin(gd.angle))
+        return out
+
+    @property
+    def pivots(self) -> dict[str, str]:
+        """Links pivoted on the frame (other than the crank) -> their fixed joint."""
+        out = {}
+        for g in self.groups:
+            for link, pivot in self._group_rockers(g):
+                out[link] = pivot
+        return out
+
+    # ------------------------------------------------------------------ solving
+    def solve(self, phi, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
+              labels=None) -> State:
+        """Solve the linkage at crank angles ``phi`` (rad); level 0 positions, 1 + velocities,
+        2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`."""
+        phi = np.asarray(phi, dtype=float).reshape(-1)
+        n = phi.shape[0]
+        st = State(phi=phi, labels=labels)
+        zero_c = np.zeros(n, dtype=complex)
+        for k, c in self.ground.items():
+            st.z[k] = np.full(n, c)          # noqa: one array per fixed joint (it is a point of the result)
+            st.v[k] = zero_c
+            st.a[k] = zero_c
+        cr = self.crank
+        Om = self.sense * float(omega_1)
+        Ep = self.sense * float(epsilon_1)
+        e = np.exp(1j * phi)
+        st.z[cr.pin] = st.z[cr.centre] + cr.r * e
+        st.theta[cr.link] = phi.copy()
+        st.e[cr.link] = e
+        for step in self._steps:
+            if isinstance(step, Point):
+                st.z[step.name] = st.z[step.origin] + step.offset * st.e[step.link]
+            else:
+                step.positions(st)
+        if level >= 1:
+            st.omega[cr.link] = np.full(n, Om)
+            st.v[cr.pin] = 1j * Om * cr.r * e
+            for step in self._steps:
+                if isinstance(step, Point):
+                    r = st.z[step.name] - st.z[step.origin]
+                    st.v[step.name] = st.v[step.origin] + 1j * st.omega[step.link] * r
+                else:
+                    step.velocities(st)
+        if level >= 2:
+            st.epsilon[cr.link] = np.full(n, Ep)
+            st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
+            for step in self._steps:
+                if isinstance(step, Point):
+                    r = st.z[step.name] - st.z[step.origin]
+                    w = st.omega[step.link]
+                    st.a[step.name] = st.a[step.origin] + (1j * st.epsilon[step.link] - w * w) * r
+                else:
+                    step.accelerations(st)
+        return st
+
+    def _check_phi(self, values, name):
+        try:
+            a = np.array(values, dtype=float).reshape(-1)
+        except (TypeError, ValueError):
+            raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}") from None
+        if a.size == 0:
+            raise InputError(f"{name}: give at least one crank angle")
+        bad = ~np.isfinite(a)
+        if bad.any():
+            raise InputError(f"{name}: angle #{int(np.argmax(bad))} is {a[bad][0]!r}; angles must be finite (rad)")
+        return a
+
+    def motion(self, m: int | None = None, *, phi=None, phi_from_start=None, omega_1: float = 1.0,
+               epsilon_1: float = 0.0, level: int = 2) -> Motion:
+        """The linkage at m + 1 positions 0…m (or at given crank angles), with velocities and
+        accelerations.
+
+        Parameters
+        ----------
+        m : int, optional
+            Equal crank steps per turn (≥ 3) from the start of the working stroke (default 12).
+        phi : array_like, optional
+            Crank angles from +x, rad, instead.
+        phi_from_start : array_like, optional
+            Crank rotation from position 0 in the crank's sense, rad, instead.
+        omega_1 : float
+            Crank speed, rad/s (> 0; 1 gives the velocity analogues).
+        epsilon_1 : float
+            Crank angular acceleration, rad/s², positive when speeding up.
+        level : int
+            2 (default): positions, velocities and accelerations; 1: no accelerations; 0: positions only.
+
+        Raises
+        ------
+        AssemblyError
+            A position where a group cannot be assembled or is at a toggle (named).
+        """
+        for nm, val, pos in (("omega_1", omega_1, True), ("epsilon_1", epsilon_1, False)):
+            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)) \
+                    or not math.isfinite(val) or (pos and val <= 0):
+                raise InputError(f"{nm} must be a finite number{' > 0 (rad/s)' if pos else ' (rad/s²)'}, got {val!r}")
+        if sum(x is not None for x in (m, phi, phi_from_start)) > 1:
+            raise InputError("give only one of m, phi or phi_from_start")
+        strokes = self.strokes()
+        start = strokes.phi_start if strokes is not None else self._default_start()
+        labels = None
+        if phi is None and phi_from_start is None:
+            m = 12 if m is None else m
+            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
+                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
+            m = int(m)
+            self.check_full_turn()
+            k = np.arange(m + 1)
+            tr = (TWO_PI / m) * k
+            tr[m] = TWO_PI
+            ang = _norm(start + self.sense * tr)
+            ang[m] = ang[0]
+            labels = k
+        elif phi_from_start is not None:
+            tr = self._check_phi(phi_from_start, "phi_from_start")
+            ang = _norm(start + self.sense * tr)
+        else:
+            ang = self._check_phi(phi, "phi")
+            tr = np.mod(self.sense * (ang - start), TWO_PI)
+            tr = np.where(tr > TWO_PI - 1e-13, 0.0, tr)
+        st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)
+        extreme = np.zeros(ang.shape[0], dtype=bool)
+        if strokes is not None:
+            for ph in (strokes.phi_start, strokes.phi_end):
+                extreme |= np.abs(np.mod(ang - ph + math.pi, TWO_PI) - math.pi) <= 1e-13
+            self._snap(st, extreme)
+        cond = np.minimum.reduce(list(st.conditioning.values())) if st.conditioning else np.ones(ang.shape[0])
+        ro = MappingProxyType
+        return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
+                      index=None if labels is None else _ro(labels), omega_1=float(omega_1),
+                      epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
+                      theta=ro({k: st.theta[k] for k in st.theta.keys()}), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
+                      conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
+
+    def _snap(self, st: State, mask: np.ndarray) -> None:
+        """At the extreme positions the output stands still exactly (as the plan draws it)."""
+        if not mask.any() or self.output is None:
+            return
+        kind, name = self.output
+        if kind == "point":
+            if name in st.v:
+                st.v[name] = np.where(mask, 0j, st.v[name])
+        elif name in st.omega:
+            st.omega[name] = np.where(mask, 0.0, st.omega[name])
+
+    # ------------------------------------------------------------------ full turn, extremes
+    def _default_start(self) -> float:
+        return self._start
+
+    def check_full_turn(self, samples: int = 2048) -> None:
+        """Raise AssemblyError if some group cannot be assembled, or passes a toggle, somewhere in a
+        full crank turn (its assembly margin reaches zero, where the branch could jump)."""
+        if "full_turn" in self._cache:
+            return
+        phi = np.linspace(0.0, TWO_PI, samples, endpoint=False)
+        st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
+        for g in self.groups:
+            mg = g.margin(st)
+            scale = float(np.max(np.abs(mg))) or 1.0
+            i = int(np.argmin(mg))
+            # refine the smallest margin between its neighbours (golden section)
+            lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
+            f = lambda x: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
+            gr = (math.sqrt(5) - 1) / 2
+            for _ in range(80):
+                a = hi - gr * (hi - lo)
+                b = lo + gr * (hi - lo)
+                if f(a) < f(b):
+                    hi = b
+                else:
+                    lo = a
+            x = 0.5 * (lo + hi)
+            if f(x) <= 1e-12 * scale:
+                raise AssemblyError(f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x) % 360:.6g}° "
+                                    f"(its links come in line): the crank cannot turn through it on one branch, "
+                                    f"the assembly would jump; change the lengths or study the range with phi=")
+        self._cache["full_turn"] = True
+
+    def _out_value(self, st: State):
+        """(coordinate, its derivative, its second derivative) of the output over the positions."""
+        kind, name = self.output
+        if kind == "point":
+            gx, gy = self.guides[name]
+            u = complex(gx, gy)
+            c = lambda z: z.real * u.real + z.imag * u.imag  # noqa: E731
+            return c(st.z[name]), c(st.v.get(name, st.z[name])), c(st.a.get(name, st.z[name]))
+        return st.theta[name], st.omega.get(name), st.epsilon.get(name)
+
+    def extremes(self) -> tuple | None:
+        """Crank angles (rad) where the output is at its largest and smallest coordinate (its
+        dead centres), found to machine precision; None if the output turns fully or there is no
+        output."""
+        if "extremes" in self._cache:
+            return self._cache["extremes"]
+        res = None
+        if self.output is not None:
+            res = self._find_extremes()
+        self._cache["extremes"] = res
+        return res
+
+    def _find_extremes(self):
+        N = 720
+        phi = np.linspace(0.0, TWO_PI, N, endpoint=False)
+        try:
+            self.check_full_turn()
+            st = self.solve(phi, omega_1=1.0, epsilon_1=0.0)
+        except AssemblyError:
+            return None                 # the crank cannot turn fully: no strokes (study a range with phi=)
+        _, f, _ = self._out_value(st)
+        f1 = np.roll(f, -1)
+        idx = np.flatnonzero((f == 0.0) | (np.sign(f) * np.sign(f1) < 0))
+        if idx.size == 0:
+            return None
+        lo = phi[idx].copy()
+        hi = lo + TWO_PI / N
+        flo = f[idx].copy()
+        x = np.where(flo == 0.0, lo, 0.5 * (lo + hi))
+        for _ in range(100):
+            s2 = self.solve(x, omega_1=1.0, epsilon_1=0.0)
+            _, fx, dfx = self._out_value(s2)
+            same = np.sign(fx) == np.sign(flo)
+            lo = np.where(same & (fx != 0), x, lo)
+            flo = np.where(same & (fx != 0), fx, flo)
+            hi = np.where(~same & (fx != 0), x, hi)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                xn = x - fx / dfx
+            ok = np.isfinite(xn) & (xn > lo) & (xn < hi)
+            xn = np.where(ok, xn, 0.5 * (lo + hi))
+            xn = np.where(fx == 0.0, x, xn)
+            if np.all(np.abs(xn - x) <= 1e-15 * (1 + np.abs(x))):
+                x = xn
+                break
+            x = xn
+        s3 = self.solve(x, level=0)
+        c, _, _ = self._out_value(s3)
+        if self.output[0] == "link":
+            c = np.unwrap(c) if c.size > 1 else c
+        i_max, i_min = int(np.argmax(c)), int(np.argmin(c))
+        if i_max == i_min:
+            return None
+        return float(_norm(x[i_max])), float(_norm(x[i_min]))
+
+    def strokes(self) -> Strokes | None:
+        """The extreme positions of the output, the working and return crank angles and K."""
+        if "strokes" in self._cache:
+            return self._cache["strokes"]
+        ext = self.extremes()
+        res = None
+        if ext is not None:
+            pa, pb = ext                           # coordinate max, min
+            na, nb = "output at its largest coordinate", "output at its smallest coordinate"
+            if self.output[0] == "point":
+                na, nb = "dead centre (slider at +guide end)", "dead centre (slider at −guide end)"
+            t_ab = float(np.mod(self.sense * (pb - pa), TWO_PI))
+            ws = self.working_stroke
+            far_a = self._farther_at(pa, pb)
+            if ws in ("toward_crank", "away_from_crank") and self.output[0] == "point":
+                start_a = far_a if ws == "toward_crank" else not far_a
+            elif abs(t_ab - math.pi) < 1e-12:
+                start_a = far_a                    # equal strokes: start where the output is farther out
+            elif ws == "fast":
+                start_a = t_ab < math.pi
+            else:
+                start_a = t_ab > math.pi
+            if abs(t_ab - math.pi) < 1e-12:
+                t_ab = math.pi                     # equal strokes (to the precision of the extremes)
+            if start_a:
+                start, end, w, ns, ne = pa, pb, t_ab, na, nb
+            else:
+                start, end, w, ns, ne = pb, pa, TWO_PI - t_ab, nb, na
+            res = Strokes(phi_start=float(_norm(start)), phi_end=float(_norm(end)), working_angle=w,
+                          return_angle=TWO_PI - w, K=w / (TWO_PI - w), start_name=ns, end_name=ne)
+        self._cache["strokes"] = res
+        return res
+
+    def _farther_at(self, pa: float, pb: float) -> bool:
+        """Is the output's joint (the slider, or the rocker's moving joint) farther from the crank's
+        centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)"""
+        kind, name = self.output
+        joint = name
+        if kind == "link":
+            joint = next((g.outputs()[0][0] for g in self.groups if name in g.links), None)
+        if joint is None:
+            return True
+        st = self.solve(np.array([pa, pb]), level=0)
+        da, db = np.abs(st.z[joint] - self.ground[self.crank.centre])
+        return bool(da >= db)
+
+    # ------------------------------------------------------------------ outputs
+    def _ends(self) -> State:
+        """The linkage at the start and the end of the working stroke (cached)."""
+        if "ends" not in self._cache:
+            st_ = self.strokes()
+            self._cache["ends"] = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
+        return self._cache["ends"]
+
+    def _output_s(self, mo: Motion):
+        if self.output is None or self.output[0] != "point" or mo.strokes is None:
+            return None
+        name = self.output[1]
+        st = self._ends()
+        gx, gy = self.guides[name]
+        u = complex(gx, gy)
+        zs, ze = st.z[name]
+        d = 1.0 if ((ze - zs) * u.conjugate()).real >= 0 else -1.0
+        return d * (((mo.z[name] - zs) * u.conjugate()).real)
+
+    def stroke_H(self) -> float | None:
+        """The output slider's stroke H, m (None for a rocker output)."""
+        st_ = self.strokes()
+        if st_ is None or self.output[0] != "point":
+            return None
+        st = self._ends()
+        zs, ze = st.z[self.output[1]]
+        return float(abs(ze - zs))
+
+    def _output_psi(self, mo: Motion):
+        if self.output is None or self.output[0] != "link" or mo.strokes is None:
+            return None
+        link = self.output[1]
+        st = self._ends()
+        th_s, th_e = st.theta[link]
+        swing = float(_wrap(th_e - th_s))
+        sign = 1.0 if swing >= 0 else -1.0
+        psi = sign * _wrap(mo.theta[link] - th_s)
+        return np.where(np.abs(psi) < 1e-15, 0.0, psi)
+
+    def psi_max(self) -> float | None:
+        """The output rocker's swing, rad (None for a slider output)."""
+        st_ = self.strokes()
+        if st_ is None or self.output[0] != "link":
+            return None
+        st = self._ends()
+        th_s, th_e = st.theta[self.output[1]]
+        return float(abs(_wrap(th_e - th_s)))
+
+
+def _norm(a):
+    a = np.mod(np.asarray(a, dtype=float), TWO_PI)
+    return np.where(a >= TWO_PI, 0.0, a) + 0.0
+
+
+def _wrap(a):
+    return np.mod(np.asarray(a, dtype=float) + np.pi, TWO_PI) - np.pi
+
+
+def _ro(a: np.ndarray) -> np.ndarray:
+    a = np.array(a)
+    a.flags.writeable = False
+    return a
+
+
+__all__ = ["Crank", "GroupInfo", "Linkage", "Motion", "Point", "Structure", "fmt"]

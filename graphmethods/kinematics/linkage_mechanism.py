@@ -1,0 +1,303 @@
+"""Any core :class:`~graphmethods.kinematics.linkage.Linkage` seen as a :class:`Mechanism`.
+
+The dynamics (reduced model, study, flywheel) read a linkage through the ``Mechanism`` interface:
+``positions(m=...)`` -> :class:`Positions`, ``velocity_plans(...)`` -> :class:`VelocityPlans`,
+``strokes()``, ``guides``, link numbers. :class:`LinkageMechanism` gives that interface to any
+linkage built from Assur groups; links are named by their textbook numbers (``"2"``), the
+plans' construction records come from the groups, and accelerations are at hand through
+:meth:`LinkageMechanism.motion`.
+
+>>> from graphmethods.kinematics.presets import six_bar_press
+>>> mech = LinkageMechanism(six_bar_press(points={"S4": ("CD", 0.175)}))
+>>> plans = mech.velocity_plans(mech.positions(m=12), omega_1=10.0)
+>>> plans.constructions["D"].equation
+'v_D = v_C + v_DC'
+>>> float(plans.v_along_guide("D")[0]), mech.link_name(3), mech.link_name("DC")
+(0.0, 'O2B', 'CD')
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from types import MappingProxyType
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.kinematics import vectors as V
+from graphmethods.kinematics.groups import GROUND, RPP, RPR
+from graphmethods.kinematics.linkage import Linkage
+from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
+from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
+from graphmethods.kinematics.positions import Positions, build_positions
+
+
+class _LazyConstructions(Mapping):
+    """The plan's construction records, built on first use (the reduced model never needs them)."""
+
+    def __init__(self, build):
+        self._build = build
+        self._data = None
+
+    def _get(self) -> dict:
+        if self._data is None:
+            self._data = self._build()
+        return self._data
+
+    def __getitem__(self, key):
+        return self._get()[key]
+
+    def __iter__(self):
+        return iter(self._get())
+
+    def __len__(self):
+        return len(self._get())
+
+
+def _xy(c: np.ndarray) -> np.ndarray:
+    return np.column_stack((c.real, c.imag))
+
+
+class LinkageMechanism(Mechanism):
+    """A core linkage behind the ``Mechanism`` interface (see the module docstring).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The linkage.
+    kind : str
+        Its name in messages.
+    """
+
+    def __init__(self, linkage: Linkage, *, kind: str | None = None):
+        if not isinstance(linkage, Linkage):
+            raise InputError(f"expected a Linkage, got {type(linkage).__name__}")
+        self.linkage = linkage
+        self.kind = kind or linkage.name
+        self.sense = linkage.sense
+        self.working_stroke = linkage.working_stroke
+        self.crank_pin = linkage.crank.pin
+        self.fixed_joints = tuple(linkage.ground)
+        driving = self._driving_points()
+        st = linkage.solve(np.zeros(1), level=0)
+        self.joints = tuple(k for k in st.z if k not in {p.name for p in linkage.points} or k in driving)
+        names, joints = self._link_names(driving)
+        self._canon = names                                  # link number -> canonical name
+        self._number = {v: k for k, v in names.items()}
+        self.link_joints = MappingProxyType(joints)
+        self.link_numbers = MappingProxyType({int(k): v for k, v in names.items()
+                                              if k.isdigit() and not self._slides_on_frame(k)})
+        self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
+                            if p.name not in driving)
+
+    def _slides_on_frame(self, link: str) -> bool:
+        """A slider on a guide of the frame (it translates: no angular velocity to report)."""
+        from graphmethods.kinematics.groups import PRP, RRP
+        for g in self.linkage.groups:
+            if isinstance(g, RRP) and g.links[1] == link and g.guide.link == GROUND:
+                return True
+            if isinstance(g, RPP) and g.links[1] == link and g.guide.link == GROUND:
+                return True
+            if isinstance(g, PRP) and ((g.links[0] == link and g.guide_1.link == GROUND)
+                                       or (g.links[1] == link and g.guide_2.link == GROUND)):
+                return True
+        return False
+
+    def _link_names(self, driving: set):
+        """Canonical names of the links as the classic classes name them: by their two joints ("AB",
+        "O2B"), "block" for a block on a slotted link; and those joints."""
+        from graphmethods.kinematics.groups import PRP, RRP, RRR
+        lk = self.linkage
+        cr = lk.crank
+        names = {cr.link: cr.centre + cr.pin}
+        joints = {cr.centre + cr.pin: (cr.centre, cr.pin)}
+        blocks = [g for g in lk.groups if isinstance(g, (RPR, RPP))]
+        for g in lk.groups:
+            pairs = []
+            if isinstance(g, RRR):
+                pairs = [(g.links[0], g.P, g.C), (g.links[1], g.Q, g.C)]
+            elif isinstance(g, RRP):
+                pairs = [(g.links[0], g.P, g.C)]
+                names[g.links[1]] = f"slider{g.links[1]}"
+            elif isinstance(g, RPR):
+                ends = [p for p in lk.points if p.link == g.links[1] and p.origin == g.Q and p.name in driving] \
+                    or [p for p in lk.points if p.link == g.links[1] and p.origin == g.Q]
+                end = max(ends, key=lambda p: p.distance).name if ends else g.coincident
+                pairs = [(g.links[1], g.Q, end)]
+                names[g.links[0]] = "block" if len(blocks) == 1 else f"block{g.links[0]}"
+            elif isinstance(g, RPP):
+                names[g.links[0]] = "block" if len(blocks) == 1 else f"block{g.links[0]}"
+                names[g.links[1]] = f"slider{g.links[1]}"
+            elif isinstance(g, PRP):
+                names[g.links[0]] = f"slider{g.links[0]}"
+                names[g.links[1]] = f"slider{g.links[1]}"
+            for num, x, y in pairs:
+                names[num] = x + y
+                joints[x + y] = (x, y)
+        return names, joints
+
+    def _on(self, p) -> str:
+        """A point's link written by its joints, first joint = where its distance starts ("AB", "BA")."""
+        canon = self._canon[p.link]
+        x, y = self.link_joints.get(canon, (None, None))
+        if x is None:
+            return canon
+        return x + y if p.origin == x else y + x if p.origin == y else canon
+
+    def _driving_points(self) -> set:
+        """Extra points that later groups are driven from (they are joints: a lever's end B)."""
+        used = set()
+        for g in self.linkage.groups:
+            used |= g.inputs()[0]
+        return {p.name for p in self.linkage.points} & used
+
+    def __eq__(self, other):
+        return self is other
+
+    def __hash__(self):
+        return id(self)
+
+    def __repr__(self):
+        return f"LinkageMechanism({self.linkage.structure().formula}, {self.kind!r})"
+
+    # ------------------------------------------------------------------ interface
+    @property
+    def omega_links(self) -> tuple[str, ...]:
+        return tuple(self._canon[k] for k in self.linkage.links)
+
+    def link_name(self, link) -> str:
+        """Canonical name of a link given by its textbook number (3 or "3") or its joints ("AB", "BA")."""
+        if isinstance(link, (int, np.integer)) and not isinstance(link, bool):
+            link = str(int(link))
+        if isinstance(link, str):
+            if link in self._canon:
+                return self._canon[link]
+            if link in self._number:
+                return link
+            for canon, (x, y) in self.link_joints.items():
+                if link in (x + y, y + x):
+                    return canon
+        raise InputError(f"{self.kind}: unknown link {link!r}; links: "
+                         + ", ".join(f"{k} = {v}" for k, v in self._canon.items()))
+
+    def number(self, link) -> str:
+        """Textbook number (as text) of a link given by number or name."""
+        return self._number[self.link_name(link)]
+
+    @property
+    def guides(self) -> dict[str, tuple[float, float]]:
+        return self.linkage.guides
+
+    def strokes(self):
+        return self.linkage.strokes()
+
+    def motion(self, *args, **kw):
+        """The core's :meth:`Linkage.motion` (accelerations included)."""
+        return self.linkage.motion(*args, **kw)
+
+    def positions(self, m: int | None = None, *, phi=None, phi_from_start=None) -> Positions:
+        lk = self.linkage
+        mo = lk.motion(m=m, phi=phi, phi_from_start=phi_from_start, level=0)
+        strokes = mo.strokes
+        start = strokes.phi_start if strokes is not None else lk._default_start()
+        geom = {k: (c.real.copy(), c.imag.copy()) for k, c in mo.z.items()}
+        out = {}
+        if lk.output is not None and strokes is not None:
+            if lk.output[0] == "point":
+                gx, gy = lk.guides[lk.output[1]]
+                zs, ze = lk._ends().z[lk.output[1]]
+                d = 1.0 if ((ze - zs) * complex(gx, -gy)).real >= 0 else -1.0
+                out = {"s": mo.s, "H": lk.stroke_H(), "stroke_direction": np.array([d * gx, d * gy])}
+            else:
+                out = {"psi": mo.psi, "psi_max": lk.psi_max()}
+        pos = build_positions(self, np.array(mo.phi), m=None if mo.index is None else len(mo.phi) - 1,
+                              phi_start=start, strokes=strokes, geom=geom,
+                              theta={self._canon[k]: np.array(v) for k, v in mo.theta.items()},
+                              phi_from_start=np.array(mo.phi_from_start), output=out)
+        return pos
+
+    def velocity_plans(self, positions: Positions | int | None = None, *, omega_1: float = 1.0,
+                       sin_threshold: float = 1e-3) -> VelocityPlans:
+        if positions is None or isinstance(positions, (int, np.integer)):
+            positions = self.positions(positions)
+        if not isinstance(positions, Positions) or positions.mechanism is not self:
+            raise InputError("velocity_plans needs Positions of this same linkage (from self.positions(...))")
+        if isinstance(omega_1, bool) or not isinstance(omega_1, (int, float, np.floating, np.integer)) \
+                or not math.isfinite(omega_1) or omega_1 <= 0:
+            raise InputError(f"omega_1 is the crank speed in rad/s and must be > 0, got {omega_1!r}")
+        lk = self.linkage
+        st = lk.solve(positions.phi, omega_1=float(omega_1), level=1,
+                      labels=positions.index)
+        lk._snap(st, np.asarray(positions.extreme))
+        n = positions.n
+        sins = [np.broadcast_to(np.abs(c), (n,)) for c in st.conditioning.values()]
+        constructions = _LazyConstructions(lambda: self._constructions(st))
+        sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
+        vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
+        return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
+                             vectors=MappingProxyType(vectors),
+                             omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
+                                                      for k, w in st.omega.items()}),
+                             constructions=constructions,
+                             sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
+                             sin_threshold=float(sin_threshold))
+
+    def _constructions(self, st) -> dict:
+        """How every point of the plan is found (built when a figure first asks for it)."""
+        lk = self.linkage
+        cons = [PointConstruction(name=k, method="pole", equation=f"v_{k} = 0") for k in lk.ground]
+        cr = lk.crank
+        cons.append(PointConstruction(name=cr.pin, method="known",
+                                      equation=f"v_{cr.pin} = ω₁·l_{cr.centre}{cr.pin}, ⟂ {cr.centre}{cr.pin}, "
+                                               f"in the sense of ω₁"))
+        for step in lk._steps:
+            if hasattr(step, "records"):
+                for rec in step.records(st):
+                    if rec.plan != "velocity":
+                        continue
+                    lines = tuple(ConstructionLine(
+                        through=self._plan_label(st, pt), relation="perpendicular" if lab.startswith("⟂") else "parallel",
+                        to=lab[2:], point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
+                        for lab, pt, d in rec.lines)
+                    cons.append(PointConstruction(name=rec.point, method="intersection", equation=rec.equation,
+                                                  lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
+                    if isinstance(step, RPP):
+                        cons.append(PointConstruction(name=step.R, method="same", on=step.coincident,
+                                                      equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
+            else:
+                on = self._on(step)
+                lever = next((g for g in lk.groups if isinstance(g, RPR) and g.links[1] == step.link), None)
+                if lever is not None and step.origin == lever.Q:
+                    cons.append(PointConstruction(
+                        name=step.name, method="proportion", on=on,
+                        equation=f"p{step.name.lower()} = p{lever.coincident.lower()} · {lever.Q}{step.name}/"
+                                 f"{lever.Q}{lever.coincident} (points of the slotted link by proportion)"))
+                else:
+                    x = on[:len(step.origin)] if on.startswith(step.origin) else step.origin
+                    y = on[len(x):]
+                    cons.append(PointConstruction(
+                        name=step.name, method="similarity", on=on,
+                        equation=f"{step.name.lower()} on {x.lower()}{y.lower()}: {x.lower()}{step.name.lower()}/"
+                                 f"{x.lower()}{y.lower()} = {x}{step.name}/{x}{y} (similarity theorem)"))
+        return {c.name: c for c in cons}
+
+    def _plan_label(self, st, point_vec) -> str:
+        """The plan image a construction line is drawn through: p for the fixed points, else the point's."""
+        for k, v in st.v.items():
+            if v is point_vec:
+                return "p" if k in self.linkage.ground else k.lower()
+        return "p" if not np.any(point_vec) else "?"
+
+    def derivatives(self, phi):
+        """dX/dφ and dθ/dφ of every point and link (the velocities at ω₁ = 1, counterclockwise)."""
+        phi = self._angles(phi, "phi")
+        st = self.linkage.solve(phi, omega_1=1.0, level=1)
+        s = self.sense
+        return ({k: _xy(c) * s for k, c in st.v.items()}, {self._canon[k]: w * s for k, w in st.omega.items()})
+
+    def _link_length(self, canon: str) -> float:  # pragma: no cover - not used by the core
+        raise InputError("links of a core linkage have no single length")
+
+
+__all__ = ["LinkageMechanism", "GROUND", "RPR"]
