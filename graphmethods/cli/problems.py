@@ -26,7 +26,7 @@ def run(args) -> int:
         print(json.dumps([{"name": r.name, "kind": r.kind, "title": r.title} for r in rows], indent=1,
                          ensure_ascii=False))
         return 0
-    print(f"{'name':<14}{'kind':<15}title")
+    print(f"{'name':<18}{'kind':<15}title")
     for r in rows:
         print(r.line())
     print("cycle problems: graphmethods examples, graphmethods check NAME ANSWERS.toml; "

@@ -47,7 +47,7 @@ class BuiltinProblem:
 
     def line(self) -> str:
         """``name  kind  title``, the columns padded for a listing."""
-        return f"{self.name:<14}{self.kind:<15}{self.title}"
+        return f"{self.name:<18}{self.kind:<15}{self.title}"
 
 
 def names() -> list[str]:
