@@ -8,6 +8,7 @@ import pathlib
 import numpy as np
 import pytest
 
+from graphmethods.compat import trapezoid
 from graphmethods.dynamics.study import Study
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics import case_from_dict, read_case
@@ -150,7 +151,7 @@ def test_single_cylinder_engine_gas_force_from_the_indicator_diagram():
     H = case.linkage.stroke_H()
     assert H == pytest.approx(0.1, rel=1e-12)                    # 2r, centred
     exp_, comp = data["load"]["diagram"]
-    area = lambda p: float(np.trapezoid(p["F"], p["s"]))         # noqa: E731 - work per unit stroke
+    area = lambda p: float(trapezoid(p["F"], p["s"]))         # noqa: E731 - work per unit stroke
     # the constant moment balances the cycle: it resists (negative) by the net gas work over a turn
     assert study.M_d == pytest.approx(-H * (area(exp_) - area(comp)) / (2 * math.pi), rel=1e-12)
     work = study.positions.working
