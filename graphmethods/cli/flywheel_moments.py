@@ -12,6 +12,8 @@ and, for the machine with a constant inertia (``--J``, or the total inertia once
 
 from __future__ import annotations
 
+from graphmethods.cli._argv import join_option_values
+
 MOMENT_OPTIONS = ("--M-d", "--M-r")
 
 
@@ -29,15 +31,7 @@ def add_arguments(p) -> None:
 
 def join_values(argv: list[str]) -> list[str]:
     """``--M-r -20*sin(phi)`` -> ``--M-r=-20*sin(phi)`` (argparse would take the value for an option)."""
-    out, i = [], 0
-    while i < len(argv):
-        if argv[i] in MOMENT_OPTIONS and i + 1 < len(argv):
-            out.append(f"{argv[i]}={argv[i + 1]}")
-            i += 2
-            continue
-        out.append(argv[i])
-        i += 1
-    return out
+    return join_option_values(argv, MOMENT_OPTIONS)
 
 
 def given(args) -> bool:

@@ -17,20 +17,13 @@ import math
 import re
 
 from graphmethods.errors import InputError
+from graphmethods.cli._argv import join_option_values
 from graphmethods.units import parse_number
 
 
 def preprocess_argv(argv: list[str]) -> list[str]:
     """``--moment -0.02*omega**2`` -> ``--moment=-0.02*omega**2`` (argparse would take the value for an option)."""
-    out, i = [], 0
-    while i < len(argv):
-        if argv[i] in ("--moment", "--omega0", "--phi0", "--t0") and i + 1 < len(argv):
-            out.append(f"{argv[i]}={argv[i + 1]}")
-            i += 2
-            continue
-        out.append(argv[i])
-        i += 1
-    return out
+    return join_option_values(argv, ("--moment", "--omega0", "--phi0", "--t0"))
 
 
 def add_parser(sub) -> None:

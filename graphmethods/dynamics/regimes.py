@@ -466,13 +466,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
         if h_land is None and y_new[0] > next_break and math.isfinite(next_break) and np.all(np.isfinite(y_new)):
             # the step passes a break: take it again, ending on the break (located on this step's dense
             # output: φ is smooth through a jump of M), with the moment's left limit up to it
-            lo, hi = 0.0, 1.0
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                if _dense_one(t, t + h_try, y, K, mid)[1][0] < next_break:
-                    lo = mid
-                else:
-                    hi = mid
+            lo, hi = _crossing(t, h_try, y, K, next_break)
             if hi * h_try > 1e-13 * max(1.0, abs(t)):
                 h_land = hi * h_try
                 clamp[1] = next_break - 1e-12 * max(1.0, abs(next_break))   # the left limit up to the break
@@ -494,13 +488,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
         tol_phi = 1e-11 * max(1.0, abs(next_break))
         if landing and gap < -tol_phi:
             # past the break: this step (smooth, on the left limit) locates it well; take it again
-            lo, hi = 0.0, 1.0
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                if _dense_one(t, t + h_try, y, K, mid)[1][0] < next_break:
-                    lo = mid
-                else:
-                    hi = mid
+            lo, hi = _crossing(t, h_try, y, K, next_break)
             h_land = 0.5 * (lo + hi) * h_try
             continue
         t_new = t + h_try
@@ -597,6 +585,19 @@ def _frozen(a):
     a = np.array(a, dtype=float)
     a.setflags(write=False)
     return a
+
+
+def _crossing(t, h, y, K, level):
+    """The fractions (lo, hi) of the step [t, t + h] between which φ of its dense output reaches
+    ``level`` (bisection to the resolution of a float)."""
+    lo, hi = 0.0, 1.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if _dense_one(t, t + h, y, K, mid)[1][0] < level:
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi
 
 
 def _dense_one(t0, t1, y0, K, theta):

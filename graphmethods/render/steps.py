@@ -129,21 +129,9 @@ def _group(parent, lid: str, kind: str, step: int, children, visible: bool) -> E
     return g
 
 
-def _indent(elem, level: int = 0) -> None:
-    """Indent for readable files, never inside ``<text>`` (whitespace there would show)."""
-    if elem.tag.rsplit("}", 1)[-1] in ("text", "title") or len(elem) == 0:
-        return
-    pad = "\n" + "  " * (level + 1)
-    elem.text = pad
-    for child in elem:
-        _indent(child, level + 1)
-        child.tail = pad
-    elem[-1].tail = "\n" + "  " * level
-
-
 def _serialise(root: ET.Element) -> str:
     ET.register_namespace("", SVG_NS)
-    _indent(root)
+    _svg.indent(root)
     return ET.tostring(root, encoding="unicode")
 
 

@@ -39,14 +39,15 @@ def clean_text(text: str) -> str:
     return _NOT_XML.sub("\ufffd", text)
 
 
-def _indent(elem, level: int = 0) -> None:
-    """Indent for readable diffs, never inside <text> (whitespace there would show)."""
-    if elem.tag in ("text", "title") or len(elem) == 0:
+def indent(elem, level: int = 0) -> None:
+    """Indent an SVG tree for readable files and diffs, never inside ``<text>`` (whitespace there would
+    show); tags with or without the SVG namespace."""
+    if elem.tag.rsplit("}", 1)[-1] in ("text", "title") or len(elem) == 0:
         return
     pad = "\n" + "  " * (level + 1)
     elem.text = pad
     for child in elem:
-        _indent(child, level + 1)
+        indent(child, level + 1)
         child.tail = pad
     elem[-1].tail = "\n" + "  " * level
 
@@ -136,7 +137,7 @@ class SvgRenderer:
 
     def end(self) -> str:
         root = self.dwg.get_xml()
-        _indent(root)
+        indent(root)
         return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
 
 
