@@ -159,3 +159,16 @@ def test_open_energy_mass_curve_of_a_start_up():
     np.testing.assert_allclose((axis_y - pts[:, 1]) * s_T.per_mm, res.T[np.unique(
         np.linspace(0, res.T.size - 1, min(res.T.size, 6000)).round().astype(int))], rtol=1e-9, atol=1e-9)
     assert "energy_mass" in motion_figures(res)
+
+
+def test_a_run_too_long_is_refused_before_any_work_and_every_built_in_name_is_known(capsys):
+    from graphmethods.cli import main
+    from graphmethods.cli.motion import MAX_TURNS
+    from graphmethods.problems.builtin import LINKAGES
+
+    assert main(["motion", "W3", "--omega0", "10", "--turns", "1e20"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"at most {MAX_TURNS}" in err
+    assert main(["motion", "nosuch", "--turns", "1"]) == 2
+    err = capsys.readouterr().err
+    assert all(name in err for name in LINKAGES)

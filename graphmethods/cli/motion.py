@@ -21,6 +21,11 @@ from graphmethods.cli._argv import join_option_values
 from graphmethods.units import parse_number
 
 
+#: bounds of a run from the command line: a run past them is refused, not left to go on for hours
+MAX_TURNS = 10_000
+MAX_STEPS = 20_000
+
+
 def preprocess_argv(argv: list[str]) -> list[str]:
     """``--moment -0.02*omega**2`` -> ``--moment=-0.02*omega**2`` (argparse would take the value for an option)."""
     return join_option_values(argv, ("--moment", "--omega0", "--phi0", "--t0"))
@@ -127,8 +132,9 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"--tol {args.tol}: give a fraction between 0 and 1, e.g. 1e-3")
     if not 1e-14 <= rtol <= 1e-3:
         raise InputError(f"--rtol {args.rtol}: give a value between 1e-14 and 1e-3")
-    if turns is not None and not turns > 0:
-        raise InputError(f"--turns {args.turns}: give a positive number of turns")
+    if turns is not None and not 0 < turns <= MAX_TURNS:
+        raise InputError(f"--turns {args.turns}: give a positive number of turns, at most {MAX_TURNS} "
+                         f"(checked before any work)")
     if t_end is not None and not t_end > t0:
         raise InputError(f"--t-end {args.t_end}: it must come after --t0 {t0:g} s")
     extra = None
@@ -168,7 +174,7 @@ def run(args: argparse.Namespace) -> int:
     phi_0 = None if args.phi0 is None else math.radians(parse_number(args.phi0, name="--phi0"))
     res = integrate(model, J_F=J_F + extra_J, drive=drive, drive_off_at=_opt(args.drive_off_at, "--drive-off-at"),
                     brake=brake, extra=extra, phi_0=phi_0, omega_0=omega_0, t_0=t0, t_end=t_end, turns=turns,
-                    until_steady=args.until_steady, tol=tol, rtol=rtol, omega_ref=m.omega_m)
+                    until_steady=args.until_steady, tol=tol, rtol=rtol, omega_ref=m.omega_m, max_steps=MAX_STEPS)
     summary = {"case": m.name, "J_F": J_F, "J_rotor_reduced": extra_J,
                "drive": ("motor " + args.motor) if args.motor else
                         (f"constant M_d = {m.M_d!r} N·m" if m.M_d is not None else "M_d(φ) of the problem"),

@@ -26,12 +26,9 @@ import numpy as np
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.dynamics.motion import ReducedModel
 from graphmethods.errors import InputError
+from graphmethods.problems.builtin import DATA, LINKAGES
 
 TWO_PI = 2.0 * math.pi
-DATA = pathlib.Path(__file__).parent / "data"
-#: Built-in linkage problems by name -> file in problems/data.
-LINKAGES = {"press": "slider_crank_press.json", "four-bar": "four_bar_rocker.json",
-            "slotted-lever": "slotted_lever.json", "shaper": "shaper.json"}
 #: Positions a linkage is tabulated at.
 TABLE_POSITIONS = 3600
 
@@ -115,8 +112,8 @@ def _linkage_machine(case, name: str) -> Machine:
 
 
 def machine(spec) -> Machine:
-    """The machine of a built-in problem name (W3, W4, W4-exact, press, four-bar, slotted-lever,
-    shaper) or of a linkage problem file (JSON)."""
+    """The machine of a built-in problem name (W1–W4, W4-exact and the linkages of
+    :data:`graphmethods.problems.builtin.LINKAGES`) or of a linkage problem file (JSON)."""
     from graphmethods import problems
 
     text = str(spec).strip()
