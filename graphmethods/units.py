@@ -304,6 +304,26 @@ def check_text(value: str, name: str) -> str:
     return value
 
 
+def read_text(path, *, missing: str = "no such file", prefix: str = "") -> str:
+    """The UTF-8 text of a user's file, or one :class:`InputError` line: ``{prefix}{path}: {missing}``
+    when it does not exist, ``{prefix}{path}: cannot read it (...)`` when it cannot be read.
+
+    >>> read_text("/no/such/answers.toml", missing="no such answers file")
+    Traceback (most recent call last):
+    ...
+    graphmethods.errors.InputError: /no/such/answers.toml: no such answers file
+    """
+    import pathlib
+
+    p = pathlib.Path(path)
+    try:
+        return p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError(f"{prefix}{p}: {missing}") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"{prefix}{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+
+
 def json_value(text: str, source: str):
     """Parse JSON text entering the toolkit: nesting deeper than :data:`MAX_JSON_DEPTH` and text that is
     not valid Unicode are refused with one line naming ``source``.

@@ -41,7 +41,7 @@ from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.formula import Formula, looks_like_formula
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError
-from graphmethods.units import parse_number
+from graphmethods.units import parse_number, read_text
 
 __all__ = ["MomentInput", "moment_input", "read_points_csv", "MomentCycle", "moment_cycle", "Acceleration",
            "common_period_deg"]
@@ -98,12 +98,7 @@ def read_points_csv(path, *, period: float, name: str = "M") -> MomentCurve:
     20.0
     """
     p = pathlib.Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{name}: {p}: no such file (a CSV file of phi_deg,M points)") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{name}: {p}: cannot read it ({exc.__class__.__name__})") from None
+    text = read_text(p, missing="no such file (a CSV file of phi_deg,M points)", prefix=f"{name}: ")
     phi_deg: list[float] = []
     M: list[float] = []
     for lineno, raw in enumerate(text.splitlines(), 1):

@@ -51,7 +51,7 @@ from graphmethods.kinematics.shaper import Shaper
 from graphmethods.kinematics.slider_crank import SliderCrank
 from graphmethods.kinematics.slotted_lever import SlottedLever
 from graphmethods.titles import Title
-from graphmethods.units import DELTA_MAX, angle_deg, finite_result, json_value, omega_from_n, real
+from graphmethods.units import DELTA_MAX, angle_deg, finite_result, json_value, omega_from_n, read_text, real
 
 
 @dataclass(frozen=True)
@@ -451,10 +451,4 @@ def read_case(path) -> Case:
         Unreadable file, invalid JSON, a bad key or impossible dimensions (one line).
     """
     p = pathlib.Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{p}: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
-    return case_from_dict(json_value(text, str(p)), source=str(p))
+    return case_from_dict(json_value(read_text(p), str(p)), source=str(p))

@@ -37,7 +37,7 @@ from typing import Any, Iterable, Mapping, Sequence
 import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics.groups.base import GROUND, Group, Guide, State, check_length, fmt
+from graphmethods.kinematics.groups.base import GROUND, Group, State, check_length, fmt
 from graphmethods.kinematics.positions import Strokes
 
 TWO_PI = 2.0 * math.pi

@@ -59,11 +59,11 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, Scene, Text, in_language
 from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Element, Line, Point
+from graphmethods.scene.elements import Element, Line
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets import worksheets as ws
 from graphmethods.titles import Title
-from graphmethods.units import MAX_POSITIONS, count, json_text, omega_from_n, real
+from graphmethods.units import MAX_POSITIONS, count, json_text, omega_from_n, read_text, real
 
 TOL_MM = 0.5
 TOL_REL = 1e-3
@@ -182,12 +182,7 @@ def read_answers(path) -> dict:
     ((-1560.0, 1590.0), 0.0)
     """
     p = pathlib.Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{p}: no such answers file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+    text = read_text(p, missing="no such answers file")
     return validate_answers(load_toml(text, source=str(p)), source=str(p))
 
 

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, cross, fmt, solve2
+from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, cross, solve2
 
 
 @dataclass(frozen=True, eq=False)
