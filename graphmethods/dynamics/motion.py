@@ -39,8 +39,9 @@ same grid.
 
 from __future__ import annotations
 
+import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
@@ -579,19 +580,31 @@ class _Cycle:
         x[-1] = a + L
         self.x = x
         self.out_index = np.searchsorted(x, self.out)
-        self.Ex = self.E(x)
+        h = np.diff(x)
+        self._nodes = x[:-1, None] + h[:, None] * (0.5 * (_GL6_X + 1.0))
+        self.wq = h[:, None] * (0.5 * _GL6_W)
+        # M_e at 6 Gauss points of every grid step (steps of ~2π/n_search inside which M_e is
+        # smooth: jumps are at grid points) gives ΔE on the grid and at the Gauss points (a
+        # degree-5 running integral on each step), anchored at the quadrature's panel edges
+        Mq = model.M_e_at(self._nodes.ravel()).reshape(self._nodes.shape) - self.E.slope
+        steps = np.concatenate([[0.0], np.cumsum(np.sum(Mq * self.wq, axis=1))])
+        E = self.E
+        panel = np.clip(np.searchsorted(E.x, x, side="right") - 1, 0, E.x.size - 2)
+        start = np.searchsorted(x, E.x)                 # every panel edge is a grid point
+        anchor = E.cum - E.slope * (E.x - a)
+        self.Ex = anchor[panel] + steps - steps[start[panel]]
         self.Ex[0] = 0.0
         self.Ex[-1] = 0.0
-        self.Jx = model.J_e_at(x)
-        h = np.diff(x)
-        pts = x[:-1, None] + h[:, None] * (0.5 * (_GL6_X + 1.0))
-        self.wq = h[:, None] * (0.5 * _GL6_W)
-        # ΔE at the Gauss nodes from M_e there: a degree-5 running integral on each grid step
-        # (steps of ~2π/n_search inside which M_e is smooth: jumps are at grid points)
-        Mq = model.M_e_at(pts.ravel()).reshape(pts.shape) - self.E.slope
+        # the steps inside a panel against the panel's own Gauss–Kronrod value: their error
+        self.step_error = float(np.max(np.abs(np.diff(anchor) - np.diff(steps[start]))))
         self.Eq = self.Ex[:-1, None] + (0.5 * h)[:, None] * (Mq @ _GL6_S.T)
-        self.Jq = model.J_e_at(pts.ravel()).reshape(pts.shape)
+        self.Jx = model.J_e_at(x)
         self.E_min = min(float(self.Ex.min()), float(self.Eq.min()))
+
+    @functools.cached_property
+    def Jq(self) -> np.ndarray:
+        """J_e at the Gauss points of every grid step (for time integrals), kg·m²."""
+        return self.model.J_e_at(self._nodes.ravel()).reshape(self._nodes.shape)
 
     # exact functions of φ
     def g(self, alpha):
@@ -621,7 +634,10 @@ class _Cycle:
             return float(np.sum(self.wq / np.sqrt(u)))
 
     def check_inertia(self, J_F, *, delta=None):
-        J_min = float(min(self.Jx.min(), self.Jq.min()))
+        J_min = float(self.Jx.min())
+        if J_F + J_min > 1e-3 * (abs(J_F) + float(self.Jx.max())):
+            return       # clear on the grid: between grid points J_e dips by O(step²) at most
+        J_min = min(J_min, float(self.Jq.min()))
         if delta is not None:
             # The identity always gives J_F + min J_e ≥ 0 (take φ at min J_e in both brackets);
             # equality means the machine alone already runs within [δ] at some speed profile.
@@ -757,7 +773,8 @@ class FlywheelResult(_FromPosition0):
     closure_residual : float
         ∫ M_e dφ over the period before balancing, J.
     motion : MotionResult
-        The steady motion with this J_F, solved independently (``motion.delta`` reproduces [δ]).
+        The steady motion with this J_F, solved independently (``motion.delta`` reproduces [δ]);
+        solved when first asked for (it costs about twice the flywheel itself).
     """
 
     J_F: float
@@ -775,7 +792,12 @@ class FlywheelResult(_FromPosition0):
     closure_residual: float
     phi_0: float
     phi_T: float
-    motion: MotionResult
+    solve_motion: Callable[[], MotionResult] = field(repr=False)
+
+    @functools.cached_property
+    def motion(self) -> MotionResult:
+        """The steady motion with this J_F (T0 from the mean speed, then the extremes of ω)."""
+        return self.solve_motion()
 
     @property
     def delta_check(self) -> float:
@@ -872,7 +894,7 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str) -> MotionResu
     T = T0 + cyc.Ex[idx]
     omega = np.sqrt(2.0 * T / J)
     # accuracy: quadrature error of ΔE and the zoom search's spread, relative to the kinetic energy
-    acc = (cyc.E.error + max(s_max, s_min) * (J_F + float(cyc.Jx.max()))) / max(T0 + cyc.E_min, 1e-300)
+    acc = (cyc.E.error + cyc.step_error + max(s_max, s_min) * (J_F + float(cyc.Jx.max()))) / max(T0 + cyc.E_min, 1e-300)
     return MotionResult(
         phi=_frozen(phi), omega=_frozen(omega), t=_frozen(t_nodes[idx]), epsilon=_frozen(eps(phi)),
         T=_frozen(T), delta_E=_frozen(cyc.Ex[idx]), J=_frozen(J), J_F=float(J_F), T0=float(T0),
@@ -1037,13 +1059,13 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
         c = c1
         sol = solve(c)
     J_F, T0, p_max, p_min, b_max, b_min, spread = sol
-    rel = (2 * cyc.E.error + spread) / abs(b_max - b_min) if b_max != b_min else math.inf
+    rel = (2 * (cyc.E.error + cyc.step_error) + spread) / abs(b_max - b_min) if b_max != b_min else math.inf
     # the motion with this J_F, solved from J_F alone (T0 from the mean speed, then the extremes of
     # ω) on the same ΔE quadrature: its δ is an independent check of the support-line construction
     cyc.check_inertia(J_F)
-    motion = _motion_from_T0(cyc, J_F, _solve_T0(cyc, J_F, omega_m, mean), mean)
     return FlywheelResult(
         J_F=float(J_F), delta=delta, omega_m=omega_m, mean=mean, omega_max=c + half,
         omega_min=c - half, phi_omega_max=p_max, phi_omega_min=p_min, b_max=float(b_max),
         b_min=float(b_min), T0=float(T0), rel_accuracy=float(rel), closure_residual=cyc.residual,
-        phi_0=cyc.a, phi_T=cyc.L, motion=motion)
+        phi_0=cyc.a, phi_T=cyc.L,
+        solve_motion=lambda: _motion_from_T0(cyc, J_F, _solve_T0(cyc, J_F, omega_m, mean), mean))
