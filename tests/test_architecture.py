@@ -18,7 +18,7 @@ LAYERS = {
     "scene": 4,
     "render": 5,
     "sheets": 6,
-    "gallery": 7, "bench": 7, "cli": 8, "__main__": 9,
+    "bench_reference": 2, "gallery": 7, "bench": 7, "cli": 8, "__main__": 9,
 }
 
 

@@ -11,7 +11,7 @@ from graphmethods.cli import main
 
 @pytest.fixture(scope="module")
 def flywheel_rows():
-    return bench.bench_flywheel(m_values=(12, 96), repeat=1)
+    return bench.bench_flywheel(m_values=(12, 96), repeat=1, linkages=("four-bar",))
 
 
 def test_error_estimates_are_within_twice_the_true_error(flywheel_rows):
@@ -22,18 +22,55 @@ def test_error_estimates_are_within_twice_the_true_error(flywheel_rows):
 
 def test_every_problem_has_an_exact_reference_and_both_methods(flywheel_rows):
     cases = {r.case for r in flywheel_rows}
-    assert len(cases) == 4
-    for case in cases:
-        methods = {r.method for r in flywheel_rows if r.case == case}
+    assert len(cases) == 5
+    for case in cases - {"four-bar"}:
+        methods = {r.method for r in flywheel_rows if r.case == case} - {
+            "exact: independent scipy solver (bench_reference.py)"}
         assert methods == {"exact", "Wittenbauer (chords)", "ΔW_max method"}
     press_exact = next(r for r in flywheel_rows if r.case.startswith("press") and r.method == "exact")
     assert round(press_exact.extra["J_F"], 2) == 13.94
+    (four_bar,) = [r for r in flywheel_rows if r.case == "four-bar"]
+    assert four_bar.method == "exact" and four_bar.error <= 1e-12 and four_bar.holds
+
+
+def test_methods_are_timed_apart(flywheel_rows):
+    for case in {r.case for r in flywheel_rows} - {"four-bar"}:
+        w = [r.seconds for r in flywheel_rows if r.case == case and r.method.startswith("Wittenbauer")]
+        e = [r.seconds for r in flywheel_rows if r.case == case and r.method.startswith("ΔW_max")]
+        assert len(w) == len(e) == 2 and w != e
+
+
+def test_the_independent_scipy_solver_agrees_with_ours():
+    pytest.importorskip("scipy")
+    from graphmethods.bench_reference import press_flywheel
+    from graphmethods.dynamics.study import Study
+
+    for changes in ({}, {"m3": 200.0, "F0": 500.0, "delta": 0.3}):
+        s = Study(bench._press_case(**changes))
+        assert press_flywheel(bench._press_data(**changes)) == pytest.approx(s.exact.J_F, rel=1e-12)
+    rows = bench.bench_flywheel(m_values=(), repeat=1, linkages=())
+    exact = [r for r in rows if r.method == "exact" and r.case.startswith(("press", "heavy"))]
+    assert len(exact) == 2 and all(r.error <= 1e-12 and "ratio to scipy" in r.extra for r in exact)
+
+
+def test_paired_timings_interleave_and_take_the_median_ratio():
+    calls = []
+    pair = bench.paired(lambda: calls.append("a"), lambda: calls.append("b"), repeat=4)
+    assert calls == ["a", "b", "b", "a", "a", "b", "b", "a"]
+    assert pair.a > 0 and pair.b > 0 and pair.ratio > 0
+
+
+def test_markdown_shows_targets_and_whether_they_hold():
+    rows = [bench.Row("s", "c", "m", target="≤ 2×", holds=False), bench.Row("s", "c", "n", target="≤ 3×", holds=True)]
+    md = bench.to_markdown(rows)
+    assert "| target | holds |" in md and "| ≤ 2× | **no** |" in md and "| ≤ 3× | yes |" in md
 
 
 def test_kinematics_rows_agree_with_the_analytic_derivative():
     rows = bench.bench_kinematics(n=2000, repeat=1)
     plans = [r for r in rows if r.method.startswith("velocity plans")]
     assert len(plans) == 4 and all(r.error < 1e-12 for r in plans)
+    assert len([r for r in rows if r.method == "positions"]) == 4
     fd = {r.method: r.error for r in rows if r.case == "slider_crank" and r.method.startswith("central")}
     assert fd["central differences h = 0.0001"] < fd["central differences h = 0.01"]
 
@@ -73,9 +110,16 @@ def test_worksheet_rows_count_the_pages_and_compare_the_pdf_writers():
     assert rows[1].extra["speedup_vs_matplotlib"] == pytest.approx(rows[2].extra["ratio_to_ours"])
 
 
-def test_linkage_rows_core_equals_the_hand_written_six_bar_and_keeps_pace():
+def test_linkage_rows_core_equals_the_hand_written_six_bar_and_carry_their_targets():
     rows = bench.bench_linkage(sizes=(12, 10**4), repeat=3)
     core = {r.size: r for r in rows if r.method.startswith("core")}
     assert set(core) == {12, 10**4} and all(r.error < 1e-12 for r in core.values())
-    # within 4× of the hand-written closed form (best of alternating runs: medians swing on a shared machine)
-    assert core[10**4].extra["ratio_best"] < 4.0
+    assert core[12].target.startswith("≤ 0.5 ms") and core[10**4].target == "≤ 4× closed form"
+    assert all(isinstance(r.holds, bool) for r in core.values())
+
+
+def test_gallery_rows_name_the_slowest_and_the_label_share():
+    rows = bench.bench_gallery(repeat=1, names=("w1_energy_indicator_en", "press_velocity_plan_en"))
+    total, share = rows
+    assert total.size == 2 and "slowest: " in total.note and share.target == "≤ 10 %"
+    assert 0 < float(share.note.split()[0]) < 100

@@ -39,8 +39,9 @@ same grid.
 
 from __future__ import annotations
 
+import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
@@ -328,11 +329,16 @@ class ReducedModel:
 
     def dJ_e_at(self, phi) -> np.ndarray:
         """dJ_e/dφ, kg·m²/rad (given, or a central difference of J_e with step 1e-6·φ_T)."""
-        if self.dJ_e is not None:
-            return self._call(self.dJ_e, "dJ_e", phi)
-        h = 1e-6 * self.phi_T
+        return self.J_e_and_slope_at(phi)[1]
+
+    def J_e_and_slope_at(self, phi) -> tuple[np.ndarray, np.ndarray]:
+        """J_e and dJ_e/dφ together: without a given dJ_e, J_e at φ − h, φ, φ + h in one call."""
         phi = np.asarray(phi, dtype=float)
-        return (self.J_e_at(phi + h) - self.J_e_at(phi - h)) / (2 * h)
+        if self.dJ_e is not None:
+            return self.J_e_at(phi), self._call(self.dJ_e, "dJ_e", phi)
+        h = 1e-6 * self.phi_T
+        lo, mid, hi = self.J_e_at(np.stack([phi - h, phi, phi + h]))
+        return mid, (hi - lo) / (2 * h)
 
     def positions(self, m: int) -> np.ndarray:
         """The angles of positions 0…m (m + 1 values, rad), uniformly spaced over the period."""
@@ -413,15 +419,20 @@ class _Primitive:
         self.slope = self.residual / (self.b - self.a)
 
     def __call__(self, x):
+        return self.with_integrand(x)[0]
+
+    def with_integrand(self, x):
+        """F(x) and f(x) (balanced) from one call of f: the 15 Gauss points of each x and x itself."""
         x = np.asarray(x, dtype=float)
         flat = x.ravel()
         i = np.clip(np.searchsorted(self.x, flat, side="right") - 1, 0, self.x.size - 2)
         x0 = self.x[i]
         half = 0.5 * (flat - x0)
-        pts = (x0 + half)[:, None] + half[:, None] * _GL15_X
-        part = (self.f(pts.ravel()).reshape(pts.shape) @ _GL15_W) * half
+        pts = np.concatenate([(x0 + half)[:, None] + half[:, None] * _GL15_X, flat[:, None]], axis=1)
+        fx = self.f(pts.ravel()).reshape(pts.shape)
+        part = (fx[:, :-1] @ _GL15_W) * half
         out = self.cum[i] + part - self.slope * (flat - self.a)
-        return out.reshape(x.shape)
+        return out.reshape(x.shape), (fx[:, -1] - self.slope).reshape(x.shape)
 
 
 # --------------------------------------------------------------------------------------------
@@ -579,19 +590,31 @@ class _Cycle:
         x[-1] = a + L
         self.x = x
         self.out_index = np.searchsorted(x, self.out)
-        self.Ex = self.E(x)
+        h = np.diff(x)
+        self._nodes = x[:-1, None] + h[:, None] * (0.5 * (_GL6_X + 1.0))
+        self.wq = h[:, None] * (0.5 * _GL6_W)
+        # M_e at 6 Gauss points of every grid step (steps of ~2π/n_search inside which M_e is
+        # smooth: jumps are at grid points) gives ΔE on the grid and at the Gauss points (a
+        # degree-5 running integral on each step), anchored at the quadrature's panel edges
+        Mq = model.M_e_at(self._nodes.ravel()).reshape(self._nodes.shape) - self.E.slope
+        steps = np.concatenate([[0.0], np.cumsum(np.sum(Mq * self.wq, axis=1))])
+        E = self.E
+        panel = np.clip(np.searchsorted(E.x, x, side="right") - 1, 0, E.x.size - 2)
+        start = np.searchsorted(x, E.x)                 # every panel edge is a grid point
+        anchor = E.cum - E.slope * (E.x - a)
+        self.Ex = anchor[panel] + steps - steps[start[panel]]
         self.Ex[0] = 0.0
         self.Ex[-1] = 0.0
-        self.Jx = model.J_e_at(x)
-        h = np.diff(x)
-        pts = x[:-1, None] + h[:, None] * (0.5 * (_GL6_X + 1.0))
-        self.wq = h[:, None] * (0.5 * _GL6_W)
-        # ΔE at the Gauss nodes from M_e there: a degree-5 running integral on each grid step
-        # (steps of ~2π/n_search inside which M_e is smooth: jumps are at grid points)
-        Mq = model.M_e_at(pts.ravel()).reshape(pts.shape) - self.E.slope
+        # the steps inside a panel against the panel's own Gauss–Kronrod value: their error
+        self.step_error = float(np.max(np.abs(np.diff(anchor) - np.diff(steps[start]))))
         self.Eq = self.Ex[:-1, None] + (0.5 * h)[:, None] * (Mq @ _GL6_S.T)
-        self.Jq = model.J_e_at(pts.ravel()).reshape(pts.shape)
+        self.Jx = model.J_e_at(x)
         self.E_min = min(float(self.Ex.min()), float(self.Eq.min()))
+
+    @functools.cached_property
+    def Jq(self) -> np.ndarray:
+        """J_e at the Gauss points of every grid step (for time integrals), kg·m²."""
+        return self.model.J_e_at(self._nodes.ravel()).reshape(self._nodes.shape)
 
     # exact functions of φ
     def g(self, alpha):
@@ -621,7 +644,10 @@ class _Cycle:
             return float(np.sum(self.wq / np.sqrt(u)))
 
     def check_inertia(self, J_F, *, delta=None):
-        J_min = float(min(self.Jx.min(), self.Jq.min()))
+        J_min = float(self.Jx.min())
+        if J_F + J_min > 1e-3 * (abs(J_F) + float(self.Jx.max())):
+            return       # clear on the grid: between grid points J_e dips by O(step²) at most
+        J_min = min(J_min, float(self.Jq.min()))
         if delta is not None:
             # The identity always gives J_F + min J_e ≥ 0 (take φ at min J_e in both brackets);
             # equality means the machine alone already runs within [δ] at some speed profile.
@@ -757,7 +783,8 @@ class FlywheelResult(_FromPosition0):
     closure_residual : float
         ∫ M_e dφ over the period before balancing, J.
     motion : MotionResult
-        The steady motion with this J_F, solved independently (``motion.delta`` reproduces [δ]).
+        The steady motion with this J_F, solved independently (``motion.delta`` reproduces [δ]);
+        solved when first asked for (it costs about twice the flywheel itself).
     """
 
     J_F: float
@@ -775,7 +802,12 @@ class FlywheelResult(_FromPosition0):
     closure_residual: float
     phi_0: float
     phi_T: float
-    motion: MotionResult
+    solve_motion: Callable[[], MotionResult] = field(repr=False)
+
+    @functools.cached_property
+    def motion(self) -> MotionResult:
+        """The steady motion with this J_F (T0 from the mean speed, then the extremes of ω)."""
+        return self.solve_motion()
 
     @property
     def delta_check(self) -> float:
@@ -793,8 +825,13 @@ def _check_mean(mean):
     return mean
 
 
-def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str) -> float:
-    """Kinetic energy at position 0 that gives the prescribed mean speed."""
+def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str, *, guess: float | None = None):
+    """Kinetic energy at position 0 that gives the prescribed mean speed, and (textbook mean) the
+    exact extremes of ω found on the way, ``((φ_max, ω_max, spread), (φ_min, ω_min, spread))``.
+
+    ``guess`` (from the support lines of the flywheel) replaces the bracketing stage: the Newton
+    polish converges to the same root from it, in one or two steps instead of several.
+    """
     T_lo = -cyc.E_min
     scale = 0.5 * (J_F + float(cyc.Jx.mean())) * omega_m**2
 
@@ -808,26 +845,30 @@ def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str) -> float:
             u = np.maximum(T0 + cyc.Ex, 0.0) / (J_F + cyc.Jx)
             return 0.5 * (math.sqrt(2 * u.max()) + math.sqrt(2 * u.min())) - omega_m
 
-    g_lo = G(T_lo)
-    if g_lo >= 0:
-        raise MotionError(
-            f"with J_F = {J_F:.6g} kg·m² the speed fluctuates too much for a mean of "
-            f"{omega_m:.6g} rad/s: even with ω_min → 0 the mean would be {g_lo + omega_m:.6g} rad/s; "
-            f"increase J_F or the mean speed")
-    T_hi = T_lo + max(scale, 1e-300)
-    g_hi = G(T_hi)
-    for _ in range(200):
-        if g_hi > 0:
-            break
-        T_hi = T_lo + 2 * (T_hi - T_lo)
+    if guess is not None and mean == "textbook" and guess > T_lo:
+        T0 = float(guess)
+    else:
+        g_lo = G(T_lo)
+        if g_lo >= 0:
+            raise MotionError(
+                f"with J_F = {J_F:.6g} kg·m² the speed fluctuates too much for a mean of "
+                f"{omega_m:.6g} rad/s: even with ω_min → 0 the mean would be {g_lo + omega_m:.6g} rad/s; "
+                f"increase J_F or the mean speed")
+        T_hi = T_lo + max(scale, 1e-300)
         g_hi = G(T_hi)
-    T0 = _brent_root(G, T_lo, T_hi, g_lo, g_hi)
+        for _ in range(200):
+            if g_hi > 0:
+                break
+            T_hi = T_lo + 2 * (T_hi - T_lo)
+            g_hi = G(T_hi)
+        T0 = _brent_root(G, T_lo, T_hi, g_lo, g_hi)
     if mean == "time":
-        return T0
+        return T0, None
     # Polish with the exact extrema (Newton; dω/dT0 = 1/(ω J) at the extreme, by the envelope theorem).
     for _ in range(12):
-        p_max, w_max, _ = cyc.omega_extreme(T0, J_F, +1)
-        p_min, w_min, _ = cyc.omega_extreme(T0, J_F, -1)
+        hi = cyc.omega_extreme(T0, J_F, +1)
+        lo = cyc.omega_extreme(T0, J_F, -1)
+        (p_max, w_max, _), (p_min, w_min, _) = hi, lo
         Jmax = J_F + float(cyc.model.J_e_at(p_max))
         Jmin = J_F + float(cyc.model.J_e_at(p_min))
         resid = 0.5 * (w_max + w_min) - omega_m
@@ -836,13 +877,14 @@ def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str) -> float:
         T0 -= step
         if abs(step) <= 1e-15 * abs(T0) or resid == 0:
             break
-    return T0
+    # the extremes at the last step's start: T0 has moved by at most 1e-15 of itself since
+    return T0, (hi, lo)
 
 
-def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str) -> MotionResult:
+def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, extremes=None, *, mean: str) -> MotionResult:
     model, a, L = cyc.model, cyc.a, cyc.L
-    p_max, w_max, s_max = cyc.omega_extreme(T0, J_F, +1)
-    p_min, w_min, s_min = cyc.omega_extreme(T0, J_F, -1)
+    hi, lo = extremes or (cyc.omega_extreme(T0, J_F, +1), cyc.omega_extreme(T0, J_F, -1))
+    (p_max, w_max, s_max), (p_min, w_min, s_min) = hi, lo
     if not w_min > 0:
         raise MotionError(f"the machine stops at φ = {math.degrees(p_min):.6g}°: the kinetic energy "
                           f"falls to zero there; increase J_F or the mean speed")
@@ -854,14 +896,17 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str) -> MotionResu
     omega_m_time = L / t_T
     omega_m = omega_m_tb if mean == "textbook" else omega_m_time
 
-    M_bal = lambda p: model.M_e_at(p) - cyc.E.slope          # noqa: E731 - the balanced moment
+    def eps_from(E, M, J_e, dJ_e):
+        J = J_F + J_e
+        w2 = 2.0 * np.maximum(T0 + E, 0.0) / J
+        return (M - 0.5 * w2 * dJ_e) / J
 
     def eps(p):
-        J = J_F + model.J_e_at(p)
-        w2 = 2.0 * np.maximum(T0 + cyc.E(p), 0.0) / J
-        return (M_bal(p) - 0.5 * w2 * model.dJ_e_at(p)) / J
+        J_e, dJ_e = model.J_e_and_slope_at(p)
+        return eps_from(*cyc.E.with_integrand(p), J_e, dJ_e)
 
-    ex = eps(cyc.x)
+    # on the grid ΔE and J_e are known already
+    ex = eps_from(cyc.Ex, model.M_e_at(cyc.x) - cyc.E.slope, cyc.Jx, model.dJ_e_at(cyc.x))
     p_e1, e1, _ = _refine_max(eps, cyc.x, ex, a=a, L=L)
     p_e2, e2, _ = _refine_min(eps, cyc.x, ex, a=a, L=L)
     eps_max, p_eps = (e1, p_e1) if abs(e1) >= abs(e2) else (e2, p_e2)
@@ -872,9 +917,9 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, mean: str) -> MotionResu
     T = T0 + cyc.Ex[idx]
     omega = np.sqrt(2.0 * T / J)
     # accuracy: quadrature error of ΔE and the zoom search's spread, relative to the kinetic energy
-    acc = (cyc.E.error + max(s_max, s_min) * (J_F + float(cyc.Jx.max()))) / max(T0 + cyc.E_min, 1e-300)
+    acc = (cyc.E.error + cyc.step_error + max(s_max, s_min) * (J_F + float(cyc.Jx.max()))) / max(T0 + cyc.E_min, 1e-300)
     return MotionResult(
-        phi=_frozen(phi), omega=_frozen(omega), t=_frozen(t_nodes[idx]), epsilon=_frozen(eps(phi)),
+        phi=_frozen(phi), omega=_frozen(omega), t=_frozen(t_nodes[idx]), epsilon=_frozen(ex[idx]),
         T=_frozen(T), delta_E=_frozen(cyc.Ex[idx]), J=_frozen(J), J_F=float(J_F), T0=float(T0),
         mean=mean, omega_m=float(omega_m), omega_m_textbook=float(omega_m_tb),
         omega_m_time=float(omega_m_time), delta=float((w_max - w_min) / omega_m),
@@ -935,8 +980,7 @@ def periodic_motion(model: ReducedModel, *, J_F: float, omega_m: float, mean: st
     n_search = _check_count(n_search, "n_search", 16)
     cyc = _Cycle(model, positions=positions, n_search=n_search, closure_rtol=closure_rtol)
     cyc.check_inertia(J_F)
-    T0 = _solve_T0(cyc, J_F, omega_m, mean)
-    return _motion_from_T0(cyc, J_F, T0, mean)
+    return _motion_from_T0(cyc, J_F, *_solve_T0(cyc, J_F, omega_m, mean), mean=mean)
 
 
 # --------------------------------------------------------------------------------------------
@@ -1037,13 +1081,13 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
         c = c1
         sol = solve(c)
     J_F, T0, p_max, p_min, b_max, b_min, spread = sol
-    rel = (2 * cyc.E.error + spread) / abs(b_max - b_min) if b_max != b_min else math.inf
+    rel = (2 * (cyc.E.error + cyc.step_error) + spread) / abs(b_max - b_min) if b_max != b_min else math.inf
     # the motion with this J_F, solved from J_F alone (T0 from the mean speed, then the extremes of
     # ω) on the same ΔE quadrature: its δ is an independent check of the support-line construction
     cyc.check_inertia(J_F)
-    motion = _motion_from_T0(cyc, J_F, _solve_T0(cyc, J_F, omega_m, mean), mean)
     return FlywheelResult(
         J_F=float(J_F), delta=delta, omega_m=omega_m, mean=mean, omega_max=c + half,
         omega_min=c - half, phi_omega_max=p_max, phi_omega_min=p_min, b_max=float(b_max),
         b_min=float(b_min), T0=float(T0), rel_accuracy=float(rel), closure_residual=cyc.residual,
-        phi_0=cyc.a, phi_T=cyc.L, motion=motion)
+        phi_0=cyc.a, phi_T=cyc.L,
+        solve_motion=lambda: _motion_from_T0(cyc, J_F, *_solve_T0(cyc, J_F, omega_m, mean, guess=T0), mean=mean))
