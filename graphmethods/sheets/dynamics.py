@@ -247,15 +247,22 @@ def format_number(v: float, decimal: str = ".") -> str:
     return format_value(v, decimal=decimal)
 
 
-def clear_ticks(axis: Axis, occ: Occupancy) -> Axis:
-    """The axis with the tick labels that something registered runs through left out (the marks stay)."""
+def clear_ticks(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
+    """The axis with the tick labels that something registered runs through left out (the marks stay).
+
+    With ``keep_values``, when lines would clear every value, those that cover no text stay
+    (a thin line through a number rather than an axis without values).
+    """
     labels = list(axis.tick_labels) if axis.tick_labels is not None else None
     texts = [p for p in axis.primitives() if isinstance(p, Label)]
     if labels is None:
         labels = [format_number(v, axis.decimal) for v in axis.ticks]
     shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-    for i, lab in zip(shown, texts):
-        if not occ.is_free(label_bbox(lab)):
+    free = [occ.is_free(label_bbox(lab)) for lab in texts[:len(shown)]]
+    if keep_values and shown and not any(free):
+        free = [occ.is_free(label_bbox(lab), lines=False) for lab in texts[:len(shown)]]
+    for i, ok in zip(shown, free):
+        if not ok:
             labels[i] = ""
     return replace(axis, tick_labels=tuple(labels))
 
