@@ -10,6 +10,7 @@ segments, segments that end on a box edge, boxes that touch).
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from graphmethods.sheets import layout
 from graphmethods.sheets.layout import Occupancy, _segment_hits_box
 
 
@@ -48,10 +49,15 @@ def test_is_free_and_crossings_decide_as_the_plain_test(lines, boxes, probes, pa
     for b in boxes:
         occ.add_box(b)
     within = (2.0, 2.0, 38.0, 38.0)
-    for b in probes:
-        assert occ.is_free(b) == plain_is_free(occ, b)
-        assert occ.is_free(b, lines=False) == plain_is_free(occ, b, lines=False)
-        assert occ.is_free(b, within=within) == plain_is_free(occ, b, within=within)
+    few = layout._FEW
+    try:
+        for layout._FEW in (0, few):            # the numpy path for every query, then the hybrid one
+            for b in probes:
+                assert occ.is_free(b) == plain_is_free(occ, b)
+                assert occ.is_free(b, lines=False) == plain_is_free(occ, b, lines=False)
+                assert occ.is_free(b, within=within) == plain_is_free(occ, b, within=within)
+    finally:
+        layout._FEW = few
     assert occ.crossings(probes).tolist() == plain_crossings(occ, probes)
 
 

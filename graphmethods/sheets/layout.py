@@ -67,6 +67,8 @@ def _segments_cross(p, q, a, b) -> bool:
 #: slack (mm) of the bounding-box prefilter: a segment whose extent misses a box by more than this
 #: cannot touch it; the decision itself is the exact clipping arithmetic of :func:`_segment_hits_box`
 _NEAR_MM = 1e-6
+#: up to this many segments near a box are tested one by one (same decisions, less overhead)
+_FEW = 24
 
 
 def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
@@ -101,7 +103,7 @@ def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     shape = (len(boxes), len(seg))
     t0, t1 = np.zeros(shape), np.ones(shape)
     hit = np.ones(shape, dtype=bool)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
             pk = np.broadcast_to(pk, shape)
             zero = pk == 0
@@ -186,10 +188,11 @@ class Occupancy:
             return False
         if not lines:
             return True
-        near = self._near(g)
-        if not near.any():
-            return True
-        return not bool(segments_hit_boxes(self._seg[near], np.asarray(g)).any())
+        idx = np.flatnonzero(self._near(g))
+        if len(idx) <= _FEW:           # a few near segments: the scalar test is quicker than numpy's set-up
+            segs = self.segments
+            return not any(_segment_hits_box(segs[i][0], segs[i][1], g) for i in idx.tolist())
+        return not bool(segments_hit_boxes(self._seg[idx], np.asarray(g)).any())
 
     def crossings(self, boxes) -> np.ndarray:
         """How many registered segments pass through each box grown by the padding (an int per box)."""
