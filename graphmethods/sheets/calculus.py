@@ -185,8 +185,13 @@ def _register(occ: Occupancy, *elements) -> None:
         occ.add_primitives(e.primitives())
 
 
-def _clear_tick_labels(axis: Axis, occ: Occupancy) -> Axis:
-    """The axis with the tick labels that would cover something already drawn left out (marks stay)."""
+def _clear_tick_labels(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
+    """The axis with the tick labels that would cover something already drawn left out (marks stay).
+
+    With ``keep_values`` (a value axis) an axis is never left without values: when every label
+    on its side would cover something, they go on the other side; when that is full too, the
+    labels that cover no text stay (a thin line may run through a number).
+    """
     from dataclasses import replace
 
     from graphmethods.scene.primitives import Label as PLabel
@@ -194,11 +199,38 @@ def _clear_tick_labels(axis: Axis, occ: Occupancy) -> Axis:
     labels = list(axis.tick_labels) if axis.tick_labels is not None else \
         [format_value(v, decimal=axis.decimal) for v in axis.ticks]
     shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-    texts = [p for p in replace(axis, label="").primitives() if isinstance(p, PLabel)]
-    for i, lab in zip(shown, texts):
-        if not occ.is_free(label_bbox(lab)):
-            labels[i] = ""
-    return replace(axis, tick_labels=tuple(labels))
+
+    def kept(ax: Axis, lines: bool) -> list[str]:
+        texts = [p for p in replace(ax, label="").primitives() if isinstance(p, PLabel)]
+        out = list(labels)
+        for i, lab in zip(shown, texts):
+            if not occ.is_free(label_bbox(lab), lines=lines):
+                out[i] = ""
+        return out
+
+    out = kept(axis, True)
+    if keep_values and shown and not any(out[i] for i in shown):
+        other = replace(axis, labels_side="right") if axis.direction == "y" and axis.labels_side in ("", "left") \
+            else axis
+        out = kept(other, True)
+        if any(out[i] for i in shown):
+            return replace(other, tick_labels=tuple(out))
+        out = kept(axis, False)
+    return replace(axis, tick_labels=tuple(out))
+
+
+def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:
+    """The position numbers a φ axis had to leave out, set beside their ticks where there is room
+    (above the axis where a curve runs below it, and the other way round)."""
+    out = []
+    for k, (v, want, have) in enumerate(zip(full.ticks, full.tick_labels or (), kept.tick_labels or ())):
+        if not want or have or (full.skip_zero_label and v == 0):
+            continue
+        lab = occ.first_free(full.pos(v), want, ("s", "n", "se", "ne", "sw", "nw"), (2.3, 3.5), SMALL_MM, None)
+        if lab is not None:
+            occ.add_label(lab)
+            out.append(Text((lab.x, lab.y), want, size_mm=SMALL_MM, anchor=lab.anchor, name=f"{name}-{k}"))
+    return out
 
 
 def _number_labels(m: int, step_mm: float) -> tuple[str, ...]:
@@ -460,9 +492,11 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
     ax_phi_s, ax_s = b_s.axes(nt=nt, y_label=nt.quantity(sym_s, unit(nt, "m")), m=m, name="s")
     _register(occ, curve_s, *ordinates_s, *chords_s)
-    ax_phi_s, ax_s = _clear_tick_labels(ax_phi_s, occ), _clear_tick_labels(ax_s, occ)
+    full_s = ax_phi_s
+    ax_phi_s, ax_s = _clear_tick_labels(ax_phi_s, occ), _clear_tick_labels(ax_s, occ, keep_values=True)
     _register(occ, ax_phi_s, ax_s)
-    elements += [ax_phi_s, ax_s] + ordinates_s + chords_s + [curve_s] + dots_s
+    pos_s = _lost_positions(full_s, ax_phi_s, occ, "pos-s")
+    elements += [ax_phi_s, ax_s] + ordinates_s + chords_s + [curve_s] + dots_s + pos_s
 
     # ---- strip 2: v by the chords of s
     v = sd.v
@@ -495,10 +529,12 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     ax_phi_v, ax_v = b_v.axes(nt=nt, y_label=nt.quantity(sym_v, unit(nt, u_v)), m=m, name="v")
     pole_els_v = _pole(b_v, v.H_mm, f"{P_name}_1", "pole-v", occ)
     _register(occ, curve_v, *rays_v, *proj_v, *chords_v)
-    ax_phi_v, ax_v = _clear_tick_labels(ax_phi_v, occ), _clear_tick_labels(ax_v, occ)
+    full_v = ax_phi_v
+    ax_phi_v, ax_v = _clear_tick_labels(ax_phi_v, occ), _clear_tick_labels(ax_v, occ, keep_values=True)
     _register(occ, ax_phi_v, ax_v)
+    pos_v = _lost_positions(full_v, ax_phi_v, occ, "pos-v")
     dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {unit(nt, 'mm')}", "H1", occ)
-    elements += ([ax_phi_v, ax_v] + rays_v + proj_v + chords_v + [curve_v] + dots_v + pole_els_v + dim_v)
+    elements += ([ax_phi_v, ax_v] + rays_v + proj_v + chords_v + [curve_v] + dots_v + pole_els_v + dim_v + pos_v)
 
     # ---- strip 3: a by the chords of v
     a = sd.a
@@ -519,10 +555,12 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     ax_phi_a, ax_a = b_a.axes(nt=nt, y_label=nt.quantity(sym_a, unit(nt, u_a)), m=m, name="a")
     pole_els_a = _pole(b_a, a.H_mm, f"{P_name}_2", "pole-a", occ)
     _register(occ, curve_a, *rays_a, *proj_a)
-    ax_phi_a, ax_a = _clear_tick_labels(ax_phi_a, occ), _clear_tick_labels(ax_a, occ)
+    full_a = ax_phi_a
+    ax_phi_a, ax_a = _clear_tick_labels(ax_phi_a, occ), _clear_tick_labels(ax_a, occ, keep_values=True)
     _register(occ, ax_phi_a, ax_a)
+    pos_a = _lost_positions(full_a, ax_phi_a, occ, "pos-a")
     dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {unit(nt, 'mm')}", "H2", occ)
-    elements += ([ax_phi_a, ax_a] + rays_a + proj_a + [curve_a] + dots_a + pole_els_a + dim_a)
+    elements += ([ax_phi_a, ax_a] + rays_a + proj_a + [curve_a] + dots_a + pole_els_a + dim_a + pos_a)
 
     # ---- right column: the formula of each scale beside its graph, then the comparison table
     rx = x1 - right_col
@@ -762,13 +800,15 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
                               name="M")
     pole_els = _pole(b_M, H, P_name, "pole", occ)
     _register(occ, curve_d, curve_r, *steps, *projections, *rays)
-    ax_phi_M, ax_M = _clear_tick_labels(ax_phi_M, occ), _clear_tick_labels(ax_M, occ)
+    full_M = ax_phi_M
+    ax_phi_M, ax_M = _clear_tick_labels(ax_phi_M, occ), _clear_tick_labels(ax_M, occ, keep_values=True)
     _register(occ, ax_phi_M, ax_M)
+    pos_M = _lost_positions(full_M, ax_phi_M, occ, "pos-M")
     ords_M = np.concatenate((np.asarray(wd.A_r.mean_ordinate), np.asarray(wd.A_d.mean_ordinate))) / s_M.per_mm
     dim = _h_dimension(b_M, H, ords_M, f"H = {nt.number(H)} {unit(nt, 'mm')}", "H", occ)
     names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
                            "M")
-    elements += ([ax_phi_M, ax_M] + steps + projections + rays + [curve_d, curve_r] + pole_els + dim + names_M)
+    elements += ([ax_phi_M, ax_M] + steps + projections + rays + [curve_d, curve_r] + pole_els + dim + names_M + pos_M)
 
     # ---- strip 2: the work diagrams, chords parallel to the rays
     A_lo, A_hi = float(A_vals.min()), float(A_vals.max())
@@ -780,11 +820,13 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
     ax_phi_A, ax_A = b_A.axes(nt=nt, y_label=nt.quantity(nt.sym("A"), unit(nt, work_unit)), m=len(x) - 1, name="A")
     _register(occ, chords_d, chords_r)
-    ax_phi_A, ax_A = _clear_tick_labels(ax_phi_A, occ), _clear_tick_labels(ax_A, occ)
+    full_A = ax_phi_A
+    ax_phi_A, ax_A = _clear_tick_labels(ax_phi_A, occ), _clear_tick_labels(ax_A, occ, keep_values=True)
     _register(occ, ax_phi_A, ax_A)
+    pos_A = _lost_positions(full_A, ax_phi_A, occ, "pos-A")
     names_A = _curve_names(occ, ((chords_d, sym(nt, "A_d"), b_A.origin[1]), (chords_r, sym(nt, "A_r"), b_A.origin[1])),
                            "A")
-    elements += [ax_phi_A, ax_A, chords_d, chords_r] + dots_A + names_A
+    elements += [ax_phi_A, ax_A, chords_d, chords_r] + dots_A + names_A + pos_A
 
     # ---- strip 3: ΔE = A_d − A_r
     dE = wd.delta_E
@@ -797,9 +839,11 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     ax_phi_E, ax_E = b_E.axes(nt=nt, y_label=nt.quantity(nt.sym("dE"), unit(nt, work_unit)), m=len(x) - 1,
                               name="dE")
     _register(occ, curve_E, *ordinates_E)
-    ax_phi_E, ax_E = _clear_tick_labels(ax_phi_E, occ), _clear_tick_labels(ax_E, occ)
+    full_E = ax_phi_E
+    ax_phi_E, ax_E = _clear_tick_labels(ax_phi_E, occ), _clear_tick_labels(ax_E, occ, keep_values=True)
     _register(occ, ax_phi_E, ax_E)
-    elements += [ax_phi_E, ax_E] + ordinates_E + [curve_E] + dots_E
+    pos_E = _lost_positions(full_E, ax_phi_E, occ, "pos-E")
+    elements += [ax_phi_E, ax_E] + ordinates_E + [curve_E] + dots_E + pos_E
 
     # ---- right column: formulas and the accuracy of each construction
     rx = x1 - right_col

@@ -303,27 +303,8 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
 
 
 def _crossings(occ: Occupancy, boxes) -> np.ndarray:
-    """How many registered line segments cross each box (Liang–Barsky, vectorised over the segments)."""
-    if not occ.segments:
-        return np.zeros(len(boxes), dtype=int)
-    seg = np.asarray(occ.segments, dtype=float)            # (n, 2, 2)
-    px, py = seg[:, 0, 0], seg[:, 0, 1]
-    dx, dy = seg[:, 1, 0] - px, seg[:, 1, 1] - py
-    out = []
-    pad = occ.pad
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for x0, y0, x1, y1 in boxes:
-            x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
-            t0, t1 = np.zeros(len(px)), np.ones(len(px))
-            hit = np.ones(len(px), dtype=bool)
-            for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
-                zero = pk == 0
-                hit &= ~(zero & (qk < 0))
-                t = np.where(zero, 0.0, qk / np.where(zero, 1.0, pk))
-                t0 = np.where(~zero & (pk < 0), np.maximum(t0, t), t0)
-                t1 = np.where(~zero & (pk > 0), np.minimum(t1, t), t1)
-            out.append(int((hit & (t0 <= t1)).sum()))
-    return np.asarray(out)
+    """How many registered line segments cross each box (:meth:`Occupancy.crossings`, vectorised)."""
+    return occ.crossings(boxes)
 
 
 def _clean_further(occ, at, text, dirs, gaps, gap, size_mm, within, hard):

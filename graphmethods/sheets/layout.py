@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, TitleBlock, markup
@@ -62,13 +64,72 @@ def _segments_cross(p, q, a, b) -> bool:
     return d1 * d2 < 0 and d3 * d4 < 0
 
 
+#: slack (mm) of the bounding-box prefilter: a segment whose extent misses a box by more than this
+#: cannot touch it; the decision itself is the exact clipping arithmetic of :func:`_segment_hits_box`
+_NEAR_MM = 1e-6
+#: up to this many segments near a box are tested one by one (same decisions, less overhead)
+_FEW = 24
+
+
+def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """Which segments pass through which boxes: Liang–Barsky clipping over numpy arrays.
+
+    The same arithmetic as :func:`_segment_hits_box` (the same divisions, the same
+    comparisons), so the answers are the same bit for bit, for every pair at once.
+
+    Parameters
+    ----------
+    seg : ndarray, shape (n, 4), mm
+        Segments as rows ``x0, y0, x1, y1``.
+    boxes : ndarray, shape (k, 4), mm
+        Boxes as rows ``x0, y0, x1, y1`` (page coordinates, y down).
+
+    Returns
+    -------
+    ndarray of bool, shape (k, n)
+        ``[i, j]`` is true when segment j passes through (or touches) box i.
+
+    Examples
+    --------
+    >>> seg = np.array([[0.0, 10.0, 100.0, 10.0], [0.0, 0.0, 0.0, 5.0]])
+    >>> segments_hit_boxes(seg, np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])).tolist()
+    [[True, False], [False, False]]
+    """
+    seg = np.asarray(seg, dtype=float).reshape(-1, 4)
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    px, py = seg[None, :, 0], seg[None, :, 1]
+    dx, dy = seg[None, :, 2] - seg[None, :, 0], seg[None, :, 3] - seg[None, :, 1]
+    x0, y0, x1, y1 = (boxes[:, i, None] for i in range(4))
+    shape = (len(boxes), len(seg))
+    t0, t1 = np.zeros(shape), np.ones(shape)
+    hit = np.ones(shape, dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+            pk = np.broadcast_to(pk, shape)
+            zero = pk == 0
+            hit &= ~(zero & (qk < 0))
+            t = qk / np.where(zero, 1.0, pk)
+            t0 = np.where(pk < 0, np.maximum(t0, t), t0)
+            t1 = np.where(pk > 0, np.minimum(t1, t), t1)
+    return hit & (t0 <= t1)
+
+
 class Occupancy:
-    """What is drawn already (line segments and boxes), to place labels where nothing is."""
+    """What is drawn already (line segments and boxes), to place labels where nothing is.
+
+    The free-space tests run over numpy arrays of everything registered (kept in step with the
+    lists ``segments`` and ``boxes``), with a bounding-box prefilter; the decisions are those of
+    the plain clipping test :func:`_segment_hits_box`, segment by segment.
+    """
 
     def __init__(self, *, pad_mm: float = 0.6):
         self.pad = pad_mm
         self.segments: list[tuple] = []
         self.boxes: list[Box] = []
+        self._seg = np.empty((0, 4))
+        self._seg_lo = np.empty((0, 2))
+        self._seg_hi = np.empty((0, 2))
+        self._box = np.empty((0, 4))
 
     def add_line(self, points) -> None:
         pts = [tuple(map(float, p)) for p in points]
@@ -90,16 +151,62 @@ class Occupancy:
             elif isinstance(p, Label):
                 self.add_label(p)
 
+    def segment_array(self) -> np.ndarray:
+        """The registered segments as an (n, 4) array of ``x0, y0, x1, y1`` (mm), kept up to date."""
+        if len(self._seg) != len(self.segments):
+            new = np.asarray(self.segments[len(self._seg):], dtype=float).reshape(-1, 4)
+            self._seg = np.vstack((self._seg, new))
+            self._seg_lo = np.vstack((self._seg_lo, np.minimum(new[:, :2], new[:, 2:])))
+            self._seg_hi = np.vstack((self._seg_hi, np.maximum(new[:, :2], new[:, 2:])))
+        return self._seg
+
+    def box_array(self) -> np.ndarray:
+        """The registered boxes as an (n, 4) array (mm), kept up to date."""
+        if len(self._box) != len(self.boxes):
+            new = np.asarray(self.boxes[len(self._box):], dtype=float).reshape(-1, 4)
+            self._box = np.vstack((self._box, new))
+        return self._box
+
+    def _near(self, g: Box) -> np.ndarray:
+        """Which segments' extents come within ``_NEAR_MM`` of the box ``g``."""
+        seg = self.segment_array()
+        if not len(seg):
+            return np.zeros(0, dtype=bool)
+        lo, hi = self._seg_lo, self._seg_hi
+        e = _NEAR_MM
+        return ((lo[:, 0] <= g[2] + e) & (hi[:, 0] >= g[0] - e) & (lo[:, 1] <= g[3] + e) & (hi[:, 1] >= g[1] - e))
+
     def is_free(self, box: Box, *, within: Box | None = None, lines: bool = True) -> bool:
         """Nothing registered within the padding of ``box`` (boxes, and line segments unless ``lines=False``)."""
         pad = self.pad
         if within is not None and not (box[0] >= within[0] and box[1] >= within[1] and box[2] <= within[2]
                                        and box[3] <= within[3]):
             return False
-        grown = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
-        if any(_boxes_overlap(grown, b) for b in self.boxes):
+        g = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
+        b = self.box_array()
+        if len(b) and bool(np.any((g[0] < b[:, 2]) & (b[:, 0] < g[2]) & (g[1] < b[:, 3]) & (b[:, 1] < g[3]))):
             return False
-        return not lines or not any(_segment_hits_box(p, q, grown) for p, q in self.segments)
+        if not lines:
+            return True
+        idx = np.flatnonzero(self._near(g))
+        if len(idx) <= _FEW:           # a few near segments: the scalar test is quicker than numpy's set-up
+            segs = self.segments
+            return not any(_segment_hits_box(segs[i][0], segs[i][1], g) for i in idx.tolist())
+        return not bool(segments_hit_boxes(self._seg[idx], np.asarray(g)).any())
+
+    def crossings(self, boxes) -> np.ndarray:
+        """How many registered segments pass through each box grown by the padding (an int per box)."""
+        boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+        seg = self.segment_array()
+        if not len(seg) or not len(boxes):
+            return np.zeros(len(boxes), dtype=int)
+        pad = self.pad
+        grown = boxes + np.array([-pad, -pad, pad, pad])
+        u = (grown[:, 0].min(), grown[:, 1].min(), grown[:, 2].max(), grown[:, 3].max())
+        near = self._near(u)
+        if not near.any():
+            return np.zeros(len(boxes), dtype=int)
+        return segments_hit_boxes(seg[near], grown).sum(axis=1).astype(int)
 
     def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
         """The first label beside ``at`` (directions × gaps) whose box is free; None when none is."""
@@ -154,7 +261,9 @@ class Occupancy:
 
     def _line_blocked(self, p, q) -> bool:
         """Does the segment p–q cross a registered label box? (A leader may cross lines.)"""
-        return any(_segment_hits_box(p, q, b) for b in self.boxes)
+        b = self.box_array()
+        seg = np.array([[p[0], p[1], q[0], q[1]]], dtype=float)
+        return bool(len(b)) and bool(segments_hit_boxes(seg, b).any())
 
     @staticmethod
     def block_size(lines: tuple[str, ...], *, size_mm: float, line_mm: float) -> tuple[float, float]:

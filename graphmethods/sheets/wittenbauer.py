@@ -10,7 +10,11 @@ dimensioned; and a table of the result, J_F = μ_T·kl/(ω_m²[δ]).
 :func:`dynamic_analysis_sheet` is the A1 (or A2) sheet of a course project: the M_d, M_r(φ)
 graph, the ΔT(φ) graph whose levels are projected horizontally onto the diagram, the
 J_e(φ) graph turned 90° whose values are projected vertically onto it, the diagram with
-its rays, k, l and kl, and the result table. It computes only what it draws: positions,
+its rays, k, l and kl, and the result table. The diagram's μ_J is picked for the diagram (its
+J axis 0…J_e max over the width beside the graphs; the turned graph follows it so the
+projections meet), and its rays are clipped to its own frame, from the ordinate axis to the
+curve, so they never run across the other graphs; O1, almost always far off, is given in the
+table. It computes only what it draws: positions,
 velocity plans, J_e, M_r and ΔT at the m positions; never the exact motion.
 
 The construction itself (support lines, tangencies, the error estimate) is
@@ -35,7 +39,6 @@ import numpy as np
 
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
-from graphmethods.units import convenient_at_least
 from graphmethods.scene import (
     Axis, Dimension, Line, Page, Point, Polyline, Scale, Scene, Table, Text, nice_ticks, pick_scale,
 )
@@ -208,7 +211,7 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
 
 def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(), J_to: float, T_hi: float,
                      T_lo: float, within=None, prefix: str = "", y_top_mm: float | None = None,
-                     label_step: int | None = None, register_only=()) -> list:
+                     label_step: int | None = None, register_only=(), own_frame: bool = False) -> list:
     """The energy–mass diagram at ``origin`` (page point of J_e = 0, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
 
     Parameters
@@ -223,6 +226,10 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         Reach of the abscissa (kg·m²) and range of the ordinate axis (J).
     y_top_mm : float, optional
         The rays stop where they rise this high above the abscissa (room kept above the diagram).
+    own_frame : bool
+        Clip the rays to the diagram's own frame instead of ``clip``: from the ordinate axis
+        (or just as far left of it as the marks of ψ need) to just past the curve, between the
+        levels T_lo and T_hi (10 mm margin). O1 is drawn only when it lies in that frame.
 
     Returns
     -------
@@ -255,14 +262,6 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{prefix}axis-J")
     curve = Polyline(tuple(P(x, y) for x, y in zip(X[:-1], Y[:-1])), style=MAIN, closed=True,
                      name=f"{prefix}curve")
-    # the rays, from the frame (or O1) to just past the curve
-    O1x = float(res.O1_mm[0])
-    rays = []
-    for key, b, tan, idx in (("max", res.k_mm, res.tan_psi_max, res.index_omega_max),
-                             ("min", res.l_mm, res.tan_psi_min, res.index_omega_min)):
-        lo, hi = ray_span(intercept_mm=b, tan=tan, origin=origin, clip=clip, avoid=avoid, O1_x=O1x,
-                          x_from=float(X[list(idx)].max()) + 2.0, x_to=float(X.max()) + 8.0, y_top=y_top_mm)
-        rays.append(Line(P(lo, b + tan * lo), P(hi, b + tan * hi), style=RAY, name=f"{prefix}ray-{key}"))
     k_pt, l_pt = P(0.0, res.k_mm), P(0.0, res.l_mm)
     # kl and the angles ψ go right of the ordinate axis (inside the wedge of the rays) when the curve
     # leaves room there, else left of it (ψ then marked as the vertical angle, between the rays' lower
@@ -275,6 +274,17 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     dim = Dimension(l_pt, k_pt, "", offset_mm=off * side * (1.0 if res.kl_mm > 0 else -1.0), size_mm=TEXT_MM,
                     name=f"{prefix}dimension-kl")
     R = R if right else off + 10.0
+    if own_frame:        # the diagram's own frame: the rays never run across the rest of the sheet
+        clip = (ox if right else ox - (R + 6.0), oy - s_T.to_mm(T_hi) - 10.0,
+                ox + max(float(X.max()), s_J.to_mm(J_to)) + 10.0, oy - s_T.to_mm(T_lo) + 10.0)
+    # the rays, from the frame (or O1) to just past the curve
+    O1x = float(res.O1_mm[0])
+    rays = []
+    for key, b, tan, idx in (("max", res.k_mm, res.tan_psi_max, res.index_omega_max),
+                             ("min", res.l_mm, res.tan_psi_min, res.index_omega_min)):
+        lo, hi = ray_span(intercept_mm=b, tan=tan, origin=origin, clip=clip, avoid=avoid, O1_x=O1x,
+                          x_from=float(X[list(idx)].max()) + 2.0, x_to=float(X.max()) + 8.0, y_top=y_top_mm)
+        rays.append(Line(P(lo, b + tan * lo), P(hi, b + tan * hi), style=RAY, name=f"{prefix}ray-{key}"))
     psi_els = []
     for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
         psi_els.append(Line(pt, (pt[0] + side * (R + 4.0), pt[1]), style=THIN,
@@ -284,9 +294,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     occ.register(curve, *rays, dim, *psi_els, *register_only)
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
-    ax_T = clear_ticks(ax_T, occ)
+    ax_T = clear_ticks(ax_T, occ, keep_values=True)
     occ.register(ax_T)
-    ax_J = clear_ticks(ax_J, occ)
+    ax_J = clear_ticks(ax_J, occ, keep_values=True)
     occ.register(ax_J)
     els = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
     # vertices, k, l, tangencies
@@ -531,9 +541,12 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     Left: the reduced moments M_d, M_r(φ) above ΔT(φ) (one φ scale, positions aligned).
     Right: J_e(φ) turned 90° above the energy–mass diagram, sharing its J_e scale; ΔT levels
     are projected horizontally from the ΔT graph and J_e values vertically from the turned
-    graph, meeting at the numbered points of the curve. Both rays run from the frame to the
-    curve with ψ_max and ψ_min marked; k, l and kl are dimensioned; the result table gives
-    δ, ω_m, the scales, kl, J_F, the positions of ω_max and ω_min, and the error estimate.
+    graph, meeting at the numbered points of the curve. μ_J is picked for the diagram: its
+    J axis (0…J_e max, so that k and l lie on the ordinate axis) over the width left between the
+    graphs and the result table. Both rays run inside the diagram's own frame, from the
+    ordinate axis (k, l) to just past the curve, with ψ_max and ψ_min marked; k, l and kl are
+    dimensioned; the result table gives δ, ω_m, the scales, kl, J_F, the positions of ω_max and
+    ω_min, the error estimate and O1 (named off the sheet unless it falls in the frame).
 
     Only the positions, velocity plans, J_e, M_r and ΔT at the m positions are computed
     (never the exact motion).
@@ -614,19 +627,14 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     table_w = _table(probe_rows, (0, 0)).width_mm
     J_label_w = markup.text_width_mm(quantity(nt, sym(nt, "J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
     room_J = x1 - table_w - 12.0 - J_label_w - (left_end + 40.0)
+    # μ_J fits the diagram's content (0…J_e max) to the width beside the graphs; the rays are clipped
+    # to the diagram's own frame, so flat rays cost nothing (they no longer run across the sheet)
     s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, room_J, what="the J_e axis")
-    if mu_J is None:   # no flatter rays than tan ψ = 0.35: they would run far across the sheet
-        steep = convenient_at_least(2.0 * s_T.per_mm * 0.35 / data.omega_m**2)
-        if steep > s_J.per_mm:
-            s_J = Scale(s_J.symbol, s_J.unit, steep, note=f"picked: rays no flatter than tan ψ = 0.35 need "
-                                                            f"≥ {steep:g} {s_J.unit}/mm; chose {steep:g}")
     res = data.result(s_J.per_mm, s_T.per_mm)
-    # the ordinate axis: far enough right that the upper ray passes under the ΔT graph, if there is room
+    # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
     x_a_min = left_end + 40.0
     x_a_max = x1 - table_w - 12.0 - J_label_w - s_J.to_mm(J_to)
-    T_low_mm = s_T.to_mm(float(dT_fine.min()))
-    need = (res.k_mm - T_low_mm + 6.0) / res.tan_psi_max if res.k_mm > T_low_mm - 6.0 else 0.0
-    x_a = min(max(x_L + L_phi + need, (x_a_min + x_a_max) / 2, x_a_min), x_a_max)
+    x_a = max(x_a_min, (x_a_min + x_a_max) / 2)
     occ = sheet.occ
     page_probe = sheet.probe
     clip = page_probe.inner_box()
@@ -645,7 +653,8 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     occ.register(*proj)
     # the diagram first: its rays and labels take precedence
     diag = diagram_elements(res, origin=(x_a, y0_T), nt=nt, occ=occ, clip=clip, avoid=avoid, J_to=J_to, T_hi=T_hi,
-                            T_lo=T_lo, within=sheet.box, prefix="D-", y_top_mm=s_T.to_mm(T_hi) + 4.0)
+                            T_lo=T_lo, within=sheet.box, prefix="D-", y_top_mm=s_T.to_mm(T_hi) + 4.0,
+                            own_frame=True)
     turned = turned_inertia_elements(origin=(x_a, y_Jt), s_J=s_J, s_phi=s_phi, m=m, phi=phi, J=J_fine, phi_k=phi_k,
                                      J_k=J_k, nt=nt, occ=occ, J_to=J_to, prefix="J-", within=sheet.box)
     within_left = (x0, sheet.top, x_a - 10.0, sheet.caption_y - 6.0)
@@ -661,8 +670,8 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                                y_from=min(float(dT_fine.min()), 0.0), y_to=max(float(dT_fine.max()), 0.0),
                                axis_level=0.0, y_label=quantity(nt, sym(nt, "dT"), "J"), dots=(phi_k, dT_k),
                                prefix="T-", within=within_left)
-    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, M_d, s_M, s_phi),
-                                 on_sheet=O1_on_sheet(res, (x_a, y0_T), clip)))
+    O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
+    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, M_d, s_M, s_phi), on_sheet=O1_drawn))
     w = _table(rows, (0, 0)).width_mm
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
     table = _place_table(occ, rows, cands)
@@ -677,11 +686,14 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                           ("D", _w(nt, "wittenbauer"), (x_a + 12.0, d_top - 6.0))):
         lab = make_label(at, text, size_mm=TEXT_MM + 0.8, bold=True)
         found = False
-        for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0):
-            for dy in (0.0, -4.0, 4.0, -8.0, 8.0, -12.0, 12.0):
-                trial = make_label((at[0] + dx, at[1] + dy), text, size_mm=TEXT_MM + 0.8, bold=True)
-                if occ.is_free(bold_bbox(trial), within=sheet.box):
-                    lab, found = trial, True
+        for lines in (True, False):    # free of everything; else of texts and boxes (thin lines may cross it)
+            for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0, 10.0, 20.0, 40.0):
+                for dy in (0.0, -4.0, 4.0, -8.0, 8.0, -12.0, 12.0):
+                    trial = make_label((at[0] + dx, at[1] + dy), text, size_mm=TEXT_MM + 0.8, bold=True)
+                    if occ.is_free(bold_bbox(trial), within=sheet.box, lines=lines):
+                        lab, found = trial, True
+                        break
+                if found:
                     break
             if found:
                 break

@@ -1,0 +1,81 @@
+"""Label placement's free-space test, vectorised, decides exactly as the plain clipping test.
+
+:meth:`Occupancy.is_free` and :meth:`Occupancy.crossings` run over numpy arrays with a
+bounding-box prefilter; here they are compared, decision by decision, with the scalar
+Liang–Barsky test :func:`graphmethods.sheets.layout._segment_hits_box` and the scalar box test
+written out below, on random scenes and on the hard cases (axis-parallel and zero-length
+segments, segments that end on a box edge, boxes that touch).
+"""
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from graphmethods.sheets import layout
+from graphmethods.sheets.layout import Occupancy, _segment_hits_box
+
+
+def plain_is_free(occ: Occupancy, box, *, within=None, lines=True) -> bool:
+    pad = occ.pad
+    if within is not None and not (box[0] >= within[0] and box[1] >= within[1] and box[2] <= within[2]
+                                   and box[3] <= within[3]):
+        return False
+    g = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
+    if any(g[0] < b[2] and b[0] < g[2] and g[1] < b[3] and b[1] < g[3] for b in occ.boxes):
+        return False
+    return not lines or not any(_segment_hits_box(p, q, g) for p, q in occ.segments)
+
+
+def plain_crossings(occ: Occupancy, boxes) -> list[int]:
+    pad = occ.pad
+    return [sum(_segment_hits_box(p, q, (b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad)) for p, q in occ.segments)
+            for b in boxes]
+
+
+# coordinates on a 0.5 mm grid make ties (a segment ending on an edge, boxes touching) common
+coord = st.integers(0, 80).map(lambda i: i * 0.5)
+fine = st.floats(0.0, 40.0, allow_nan=False)
+point = st.tuples(st.one_of(coord, fine), st.one_of(coord, fine))
+box = st.tuples(point, st.floats(0.0, 6.0), st.floats(0.0, 4.0)).map(
+    lambda t: (t[0][0], t[0][1], t[0][0] + t[1], t[0][1] + t[2]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.lists(point, min_size=1, max_size=5), max_size=12), st.lists(box, max_size=6),
+       st.lists(box, min_size=1, max_size=12), st.sampled_from([0.0, 0.6]))
+def test_is_free_and_crossings_decide_as_the_plain_test(lines, boxes, probes, pad):
+    occ = Occupancy(pad_mm=pad)
+    for pts in lines:
+        occ.add_line(pts)
+    for b in boxes:
+        occ.add_box(b)
+    within = (2.0, 2.0, 38.0, 38.0)
+    few = layout._FEW
+    try:
+        for layout._FEW in (0, few):            # the numpy path for every query, then the hybrid one
+            for b in probes:
+                assert occ.is_free(b) == plain_is_free(occ, b)
+                assert occ.is_free(b, lines=False) == plain_is_free(occ, b, lines=False)
+                assert occ.is_free(b, within=within) == plain_is_free(occ, b, within=within)
+    finally:
+        layout._FEW = few
+    assert occ.crossings(probes).tolist() == plain_crossings(occ, probes)
+
+
+def test_registering_after_a_query_is_seen_by_the_next_one():
+    occ = Occupancy()
+    assert occ.is_free((10, 10, 20, 12))
+    occ.add_line(((0, 11), (100, 11)))
+    assert not occ.is_free((10, 10, 20, 12)) and occ.crossings([(10, 10, 20, 12), (10, 20, 20, 22)]).tolist() == [1, 0]
+    occ.add_box((30, 30, 31, 31))
+    assert not occ.is_free((30.5, 30.5, 40, 40), lines=False)
+    assert occ._line_blocked((25, 25), (35, 35)) and not occ._line_blocked((25, 40), (35, 40))
+
+
+def test_hard_cases_decide_as_the_plain_test():
+    occ = Occupancy(pad_mm=0.0)
+    occ.add_line(((10.0, 0.0), (10.0, 5.0)))          # vertical, ends on the probe's edge below
+    occ.add_line(((0.0, 20.0), (5.0, 20.0)))          # horizontal, ends on the probe's left edge
+    occ.add_line(((50.0, 50.0), (50.0, 50.0)))        # a point
+    for b in ((8.0, 5.0, 12.0, 7.0), (5.0, 18.0, 9.0, 22.0), (49.0, 49.0, 51.0, 51.0), (50.0, 50.0, 52.0, 52.0),
+              (10.0 + 1e-12, 0.0, 11.0, 1.0), (0.0, 20.0 + 1e-12, 5.0, 21.0)):
+        assert occ.is_free(b) == plain_is_free(occ, b), b
