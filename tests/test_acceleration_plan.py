@@ -10,7 +10,10 @@ import pytest
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics import acceleration_plan as AP
-from graphmethods.kinematics.acceleration_plan import acceleration_plan, acceleration_plans
+from graphmethods.kinematics.acceleration_plan import (
+    acceleration_plan,
+    acceleration_plans,
+)
 from graphmethods.kinematics.groups import PRP, RPP, RPR, RRP, Guide
 from graphmethods.kinematics.linkage import Crank, Linkage, Point
 from graphmethods.kinematics.presets import four_bar, slider_crank, slotted_lever
@@ -215,7 +218,7 @@ def test_four_bar_angular_accelerations_by_finite_differences_of_positions():
         return np.array([float(np.unwrap([mo.theta["2"][0]])[0]), float(mo.theta["3"][0])])
 
     for phi in (0.4, 1.9, 3.3, 5.0):
-        def d2(h):
+        def d2(h, phi=phi):
             return (theta(phi + h) - 2 * theta(phi) + theta(phi - h)) / h ** 2
         ref = (4 * d2(1e-3) - d2(2e-3)) / 3 * w * w
         p = acceleration_plan(lk, phi=phi, omega_1=w)
