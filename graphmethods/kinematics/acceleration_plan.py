@@ -68,6 +68,12 @@ class Component:
         end − start, m/s².
     known : bool
         True: a known component (drawn solid); False: found by the construction (dashed).
+    link : str
+        For a normal, tangential or Coriolis component, the link whose ω (ε) it is made of
+        (the turning guide's for Coriolis), else ``""``.
+    factor : float
+        What multiplies it: the length l (m) for a normal (ω²·l) or tangential (ε·l) component,
+        |v_rel| (m/s) for a Coriolis one (2·ω·v_rel); 0 otherwise.
     """
 
     symbol: str
@@ -76,6 +82,8 @@ class Component:
     end: str
     vector: complex
     known: bool
+    link: str = ""
+    factor: float = 0.0
 
     @property
     def magnitude(self) -> float:
@@ -317,8 +325,8 @@ class _Builder:
         if e1 != 0.0:
             n = self.aux(f"n_{A}", an)
             lab = self.put(A, an + at)
-            comps = [Component(f"a^n_{A}", "normal", "π", n, an, True),
-                     Component(f"a^τ_{A}", "tangential", n, lab, at, True),
+            comps = [Component(f"a^n_{A}", "normal", "π", n, an, True, cr.link, cr.r),
+                     Component(f"a^τ_{A}", "tangential", n, lab, at, True, cr.link, cr.r),
                      Component(f"a_{A}", "absolute", "π", lab, an + at, True)]
             eq = f"a_{A} = a^n_{A}{O} + a^τ_{A}{O}"
         else:
@@ -361,7 +369,7 @@ class _Builder:
         kl = self.labels[known]
         n = self.aux(f"n_{point}{known}", self.image(known) + an)
         r = self.z[point] - self.z[known]
-        comp = Component(f"a^n_{point}{known}", "normal", kl, n, an, True)
+        comp = Component(f"a^n_{point}{known}", "normal", kl, n, an, True, link, abs(r))
         line = Line(f"⟂ {known}{point}", n, self.images[n], 1j * r / abs(r))
         return n, comp, line
 
@@ -380,7 +388,7 @@ class _Builder:
         comps.append(Component(f"a_{point}{guide.link}", "absolute", "π", g, base, True))
         ak = 2j * wg * v_rel
         k = self.aux(f"k_{name}", base + ak)
-        comps.append(Component(f"a^k_{name}", "coriolis", g, k, ak, True))
+        comps.append(Component(f"a^k_{name}", "coriolis", g, k, ak, True, guide.link, abs(v_rel)))
         return k, comps, Line("∥ guide", k, self.images[k], u), g
 
     def rrr(self, g: RRR) -> None:
@@ -392,8 +400,8 @@ class _Builder:
         t1, t2 = c - self.images[n1], c - self.images[n2]
         self.tangential(g.links[0], P, C, t1)
         self.tangential(g.links[1], Q, C, t2)
-        comps = (c1, c2, Component(f"a^τ_{C}{P}", "tangential", n1, lab, t1, False),
-                 Component(f"a^τ_{C}{Q}", "tangential", n2, lab, t2, False),
+        comps = (c1, c2, Component(f"a^τ_{C}{P}", "tangential", n1, lab, t1, False, g.links[0], c1.factor),
+                 Component(f"a^τ_{C}{Q}", "tangential", n2, lab, t2, False, g.links[1], c2.factor),
                  Component(f"a_{C}", "absolute", "π", lab, c, False))
         for link, pt in ((g.links[0], P), (g.links[0], C), (g.links[1], Q), (g.links[1], C)):
             self.member(link, pt)
@@ -411,7 +419,7 @@ class _Builder:
         lab = self.put(C, c)
         t1 = c - self.images[n1]
         self.tangential(g.links[0], P, C, t1)
-        comps = [c1, *gcomps, Component(f"a^τ_{C}{P}", "tangential", n1, lab, t1, False)]
+        comps = [c1, *gcomps, Component(f"a^τ_{C}{P}", "tangential", n1, lab, t1, False, g.links[0], c1.factor)]
         eq = f"a_{C} = a_{P} + a^n_{C}{P} + a^τ_{C}{P}"
         if gl != GROUND:
             comps.append(Component(f"a^r_{C}{C}{gl}", "relative", k, lab, c - self.images[k], False))
@@ -441,9 +449,9 @@ class _Builder:
         t2 = a3 - self.images[n2]
         self.tangential(g.links[1], Q, A3, t2)
         self.eps[g.links[0]] = self.eps[g.links[1]]
-        comps = (Component(f"a^k_{A3}{block}", "coriolis", pl, k, ak, True), c2,
+        comps = (Component(f"a^k_{A3}{block}", "coriolis", pl, k, ak, True, g.links[1], abs(v_rel)), c2,
                  Component(f"a^r_{A3}{block}", "relative", k, lab, a3 - self.images[k], False),
-                 Component(f"a^τ_{A3}{Q}", "tangential", n2, lab, t2, False),
+                 Component(f"a^τ_{A3}{Q}", "tangential", n2, lab, t2, False, g.links[1], c2.factor),
                  Component(f"a_{A3}", "absolute", "π", lab, a3, False))
         self.member(g.links[1], Q)
         self.member(g.links[1], A3)
@@ -488,7 +496,7 @@ class _Builder:
         self.eps[g.links[0]] = self.eps[yoke]
         e = self.eps[yoke]
         aR = a3 + (1j * e - w * w) * (self.z[R] - self.z[A3])
-        comps = [Component(f"a^k_{A3}{block}", "coriolis", pl, k, ak, True), *cs2,
+        comps = [Component(f"a^k_{A3}{block}", "coriolis", pl, k, ak, True, yoke, abs(v_rel)), *cs2,
                  Component(f"a^r_{A3}{block}", "relative", k, lab, a3 - self.images[k], False),
                  Component(f"a^r_{A3}{g.guide.link}", "relative", k2, lab, a3 - self.images[k2], False),
                  Component(f"a_{A3}", "absolute", "π", lab, a3, False)]
