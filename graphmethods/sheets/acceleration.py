@@ -34,8 +34,23 @@ import re
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
-from graphmethods.scene import Frame, Line, Point, Scale, Scene, Table, Text, Vector, in_language, markup
+from graphmethods.kinematics.acceleration_plan import (
+    AccelerationPlan,
+    Component,
+    acceleration_plans,
+)
+from graphmethods.scene import (
+    Frame,
+    Line,
+    Point,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+)
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.primitives import DASHED, Style
 from graphmethods.sheets import kinematics as K
@@ -239,9 +254,9 @@ def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
                 continue
             e = plan.epsilon[c.link]
             rel = c.symbol.split("_", 1)[1]
-            out.append((c.link, f"ε_{{{c.link}}} = {symbol(c.symbol)}/l_{{{rel[len(s.point):] + s.point}}} = "
+            out.append((c.link, (f"ε_{{{c.link}}} = {symbol(c.symbol)}/l_{{{rel[len(s.point):] + s.point}}} = "
                                 f"{nt.number(c.magnitude, sig=4)}/{nt.number(c.factor, sig=4)} = "
-                                f"{nt.number(abs(e), sig=4)} {unit}, {K._sense_word(nt, e)}"))
+                                f"{nt.number(abs(e), sig=4)} {unit}, {K._sense_word(nt, e)}")))
     return out
 
 
@@ -312,7 +327,7 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     plan = plans[k]
     sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=str(k)),
                   problem=pr.problem if problem is None else problem, title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
+    x0, _y0, x1, _y1 = sheet.box
     eqs = _equations(plan, pr.linkage, nt)
     eps = _eps_texts(plan, pr.linkage, nt)
     comps = plan.components
@@ -431,7 +446,7 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
     n = len(plans)
     sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
                   problem=pr.problem if problem is None else problem, title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
+    x0, _y0, x1, _y1 = sheet.box
     area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
     W, H = area[2] - area[0], area[3] - area[1]
     ext = []
@@ -546,7 +561,7 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     cols, rows = acceleration_rows(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
     sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "table"), problem=pr.problem if problem is None
                   else problem, title_block=title_block, has_scales=False)
-    x0, y0, x1, y1 = sheet.box
+    x0, _y0, x1, _y1 = sheet.box
     ua, ue = _unit(nt, "m/s²"), _unit(nt, "rad/s²")
     head = [K._word(nt, "position"), K._quantity(nt, "φ", "°")]
     for c in cols[2:]:

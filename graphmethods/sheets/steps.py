@@ -114,8 +114,9 @@ WORDS = {
                    "将各射线在纵轴上的截点移到对应区间中点"),
     "curve_d":    ("Join the points by a smooth curve: {g}(φ); {mu}", "Соединяем точки плавной кривой: {g}(φ); {mu}",
                    "连成光滑曲线 {g}(φ)；{mu}"),
-    "compare_d":  ("Compare with the velocity plans and the analytic values",
-                   "Сравниваем с планами скоростей и аналитическим расчётом", "与速度多边形及解析值比较"),
+    "compare_d":  ("Compare with the velocity and acceleration plans and the analytic values",
+                   "Сравниваем с планами скоростей, ускорений и аналитическим расчётом",
+                   "与速度多边形、加速度多边形及解析值比较"),
     # graphical integration (work diagrams)
     "moments":    ("Draw the moments {Md} and {Mr} over the cycle; {mu}", "Строим моменты {Md} и {Mr} за цикл; {mu}",
                    "作一个周期内的力矩 {Md} 与 {Mr}；{mu}"),
