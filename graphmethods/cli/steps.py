@@ -34,7 +34,7 @@ def add_parser(sub) -> None:
                    help="velocity-plan, energy-indicator, wittenbauer, kinematic-diagrams, work-diagrams, "
                         "zhukovsky-lever or kinematic-scheme")
     p.add_argument("--position", type=int, default=None, metavar="K",
-                   help="the position of a velocity plan or of Zhukovsky's lever (default: chosen by the figure)")
+                   help="the position of a velocity or acceleration plan or of Zhukovsky's lever (default: chosen by the figure)")
     p.add_argument("--format", choices=("pdf", "svg", "html", "animated-svg"), default="pdf", dest="out_format",
                    help="pdf (one page per step, default), svg (numbered frames), html (one page), animated-svg")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")
