@@ -219,10 +219,9 @@ def figures(case, m: int, *, notation: str = "en", plan_position: int | None = N
     file's mean crank speed and ``epsilon_1``.
     """
     from graphmethods.dynamics.study import Study
+    from graphmethods.errors import InputError
     from graphmethods.sheets import acceleration as sa
     from graphmethods.sheets import kinematics as ks
-
-    from graphmethods.errors import InputError
 
     if m > FIGURES_MAX_POSITIONS:
         raise InputError(f"--figures draws at most {FIGURES_MAX_POSITIONS} positions (the velocity table's rows must "
