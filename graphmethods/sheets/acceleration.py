@@ -570,13 +570,22 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     body = []
     for r in rows:
         body.append((str(int(r[0])), K._num(nt, r[1], 1)) + tuple(K._num(nt, v, 3) for v in r[2:]))
-    size = TABLE_MM
-    table = Table((x0, sheet.top + 2.0), (tuple(head),) + tuple(body), size_mm=size, row_height_mm=6.0,
-                  align="c" * len(head), name="table")
+    rows_all = (tuple(head),) + tuple(body)
+    avail = (sheet.caption_y - 10.0) - (sheet.top + 2.0)
+    row_h = min(6.0, avail / len(rows_all))
+    if row_h < 4.0:
+        raise InputError(f"{len(body)} positions do not fit on this sheet (rows would be {row_h:.1f} mm); "
+                         f"give fewer positions or a larger page")
+    size = min(TABLE_MM, row_h * 0.55)
+    table = Table((x0, sheet.top + 2.0), rows_all, size_mm=size, row_height_mm=row_h, align="c" * len(head),
+                  name="table")
     while table.top_right[0] > x1 and size > 2.0:
         size -= 0.2
-        table = Table((x0, sheet.top + 2.0), (tuple(head),) + tuple(body), size_mm=size, row_height_mm=6.0,
-                      align="c" * len(head), name="table")
+        table = Table((x0, sheet.top + 2.0), rows_all, size_mm=size, row_height_mm=row_h, align="c" * len(head),
+                      name="table")
+    if table.top_right[0] > x1:
+        raise InputError(f"the table is {table.width_mm:.0f} mm wide but the sheet leaves {x1 - x0:.0f} mm; "
+                         f"give a larger page")
     note = Text((x0, table.bottom_left[1] + 6.0), f"{pr.speed_text(nt)};  {_word(nt, 'signed')}",
                 size_mm=TEXT_MM, name="note")
     return sheet.scene([sheet.header(), table, note], (), name=name)
