@@ -7,6 +7,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics import acceleration_plan as AP
@@ -248,3 +250,28 @@ def test_bad_input_says_what_to_do():
         acceleration_plan(lk, 1).a("Z")
     with pytest.raises(InputError, match="omega_1"):
         acceleration_plan(lk, 1, omega_1=0.0)
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(kind=st.sampled_from(["slider-crank", "four-bar", "slotted-lever"]),
+       a=st.floats(0.05, 0.2), ratio=st.floats(2.2, 5.0), e=st.floats(-0.5, 0.5), phi=st.floats(0.0, 6.28),
+       w=st.floats(0.5, 50.0), eps=st.floats(-100.0, 100.0), sense=st.sampled_from([1, -1]))
+def test_any_textbook_linkage_any_angle_is_the_core(kind, a, ratio, e, phi, w, eps, sense):
+    """Property: for random dimensions, crank angle, ω₁ and ε₁ the constructed plan is the core's answer."""
+    from graphmethods.errors import AssemblyError
+
+    if kind == "slider-crank":
+        lk = slider_crank(r=a, l=a * ratio, e=e * a, sense=sense, points={"S2": ("AB", a * ratio / 3, 0.4)})
+    elif kind == "four-bar":
+        lk = four_bar(l1=a * ratio, l2=a, l3=a * ratio * (0.9 + e / 2), l4=a * ratio * 0.7, sense=sense,
+                      points={"S2": ("AB", a, 0.3)})
+    else:
+        lk = slotted_lever(r=a, l_O1O3=a * ratio, l_O3B=a * ratio * 2, sense=sense)
+    try:
+        core = lk.motion(phi=[phi], omega_1=w, epsilon_1=eps)
+    except (AssemblyError, InputError):
+        assume(False)
+    plan = acceleration_plans(lk, phi=[phi], omega_1=w, epsilon_1=eps)
+    assume(min(s.sin_between for s in plan[0].steps) > 1e-3)            # away from a toggle
+    err, big = _worst(lk, plan, core)
+    assert err <= 1e-9 * max(big, 1.0)

@@ -48,3 +48,10 @@ def test_captions_in_the_figures_language(lang, word):
     bu = S.build("four-bar", "acceleration-plan", notation=lang)
     assert bu.figure.notation == lang
     assert sum(word in c for c in bu.captions()) == 2          # two dashed directions: ⊥ AB, ⊥ O2B
+
+
+def test_a_course_mechanism_by_its_built_in_name():
+    bu = S.build("six-bar-press", "acceleration-plan", position=3, notation="zh")
+    caps = [markup.plain(c) for c in bu.captions()]
+    assert sum("两线交点" in c for c in caps) == 2                  # b (RRR) and d (RRP)
+    assert record(bu.scene_at(len(bu))).calls == record(bu.figure).calls

@@ -745,17 +745,19 @@ def resolve_case(case):
         return case
     text = str(case).strip()
     low = text.lower().replace("_", "-")
-    if low in LINKAGES:
+    from graphmethods.problems import builtin as every
+
+    if low in LINKAGES or low in every.LINKAGES:
         from graphmethods.kinematics import read_case
 
-        return read_case(pathlib.Path(problems.__file__).parent / "data" / LINKAGES[low])
+        return read_case(every.DATA / (LINKAGES.get(low) or every.LINKAGES[low]))
     builtin = {"w1": problems.w1, "w2": problems.w2, "w3": problems.w3, "w4": problems.w4_drawing}
     if low in builtin:
         return builtin[low]()
     p = pathlib.Path(text)
     if not p.is_file():
-        raise InputError(f"case {text!r}: not a built-in problem ({', '.join(list(LINKAGES) + list(CYCLES))}) "
-                         f"and no such file")
+        known = list(dict.fromkeys([*LINKAGES, *every.LINKAGES])) + list(CYCLES)
+        raise InputError(f"case {text!r}: not a built-in problem ({', '.join(known)}) and no such file")
     from graphmethods.kinematics import read_case
 
     return read_case(p)
