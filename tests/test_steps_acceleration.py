@@ -55,3 +55,24 @@ def test_a_course_mechanism_by_its_built_in_name():
     caps = [markup.plain(c) for c in bu.captions()]
     assert sum("两线交点" in c for c in caps) == 2                  # b (RRR) and d (RRP)
     assert record(bu.scene_at(len(bu))).calls == record(bu.figure).calls
+
+
+@pytest.mark.parametrize("case", sorted(builtin.LINKAGES))
+def test_on_a_slide_the_plan_fits_and_its_labels_keep_apart(case):
+    """On a slide the equations may go in two columns; no two labels overlap, all stays on the page, and
+    each equation's values line comes with the step that draws its component."""
+    import itertools
+
+    from graphmethods.scene.elements import label_bbox
+    from graphmethods.scene.primitives import Label
+
+    bu = S.build(case, "acceleration-plan")
+    fig = bu.figure
+    bx = fig.bbox()
+    assert bx[0] >= 0 and bx[1] >= 0 and bx[2] <= fig.page.width_mm and bx[3] <= fig.page.height_mm - 20.0
+    boxes = [label_bbox(p) for p in fig.primitives() if isinstance(p, Label)]
+    for a, b in itertools.combinations(boxes, 2):
+        assert min(a[2], b[2]) - max(a[0], b[0]) <= 0.3 or min(a[3], b[3]) - max(a[1], b[1]) <= 0.3
+    values = [i for i, e in enumerate(fig.elements) if e.name.startswith("values-")]
+    last = set(bu.steps[-1].elements)
+    assert values and not last & set(values)

@@ -339,12 +339,36 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
            f"{pr.speed_text(nt)}")
     right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0])
     split = min(max(x1 - right_w - 6.0, x0 + 0.45 * (x1 - x0)), x0 + 0.66 * (x1 - x0))
-    eq_lines = [phi]
-    for a, b in eqs:
-        eq_lines.append(a)
-        if b:
-            eq_lines.append("    " + b)
-    eq_h = len(eq_lines) * 5.4 + 2.0
+    # the equations under the plan: one column, or two on a slide (a short page) when every line fits
+    blocks = [[("equation-phi", phi, 0.0)]] + [[(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, 6.0)] if b else [])
+                                               for j, (a, b) in enumerate(eqs)]
+    half = (x1 - x0) / 2 - 4.0
+    two = getattr(sheet.probe, "size", "") == "SLIDE" and len(blocks) > 2
+    if two:                                    # each known value on a line of its own
+        blocks = [[("equation-phi", phi, 0.0)]] + [
+            [(f"equation-{j}", a, 0.0)] + [(f"values-{j}" + (f"-{i}" if i else ""), t, 6.0)
+                                           for i, t in enumerate(b.split(";  ") if b else [])]
+            for j, (a, b) in enumerate(eqs)]
+        two = all(markup.text_width_mm(t, TEXT_MM) + dx <= half for b_ in blocks for _, t, dx in b_)
+        if not two:
+            blocks = [[("equation-phi", phi, 0.0)]] + [
+                [(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, 6.0)] if b else []) for j, (a, b) in enumerate(eqs)]
+    n_lines = sum(len(b_) for b_ in blocks)
+    cut, count = len(blocks), 0
+    if two:
+        for i, b_ in enumerate(blocks):
+            count += len(b_)
+            if count >= n_lines / 2:
+                cut = i + 1
+                break
+    columns = [blocks[:cut], blocks[cut:]] if two else [blocks]
+    eq_h = max(sum(len(b_) for b_ in col) for col in columns) * 5.4 + 2.0
+    right_bottom = sheet.top + 2.0 + probe.height_mm + 6.0 + 5.6 * len(eps)
+    if two and sheet.caption_y - 7.0 - eq_h < right_bottom:          # the table would reach the equations
+        blocks = [[("equation-phi", phi, 0.0)]] + [
+            [(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, 6.0)] if b else []) for j, (a, b) in enumerate(eqs)]
+        columns = [blocks]
+        eq_h = sum(len(b_) for b_ in blocks) * 5.4 + 2.0
     area = (x0, sheet.top - 2.0, split - 4.0, sheet.caption_y - 7.0 - eq_h)
     if area[3] - area[1] < 40.0:
         raise InputError("the plan and its equations do not fit on this page; give a larger page")
@@ -400,14 +424,13 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     # under the plan: φ and the equations; beside it: the table and ε
     ey = area[3] + 7.0
     text_els = []
-    text_els.append(Text((x0, ey), phi, size_mm=TEXT_MM, name="equation-phi"))
-    row = 1
-    for j, (a, b) in enumerate(eqs):
-        text_els.append(Text((x0, ey + row * 5.4), a, size_mm=TEXT_MM, name=f"equation-{j}"))
-        row += 1
-        if b:
-            text_els.append(Text((x0 + 6.0, ey + row * 5.4), b, size_mm=TEXT_MM, name=f"values-{j}"))
-            row += 1
+    for c_, col in enumerate(columns):
+        cx = x0 + c_ * (half + 8.0)
+        row = 0
+        for b_ in col:
+            for nm, t, dx in b_:
+                text_els.append(Text((cx + dx, ey + row * 5.4), t, size_mm=TEXT_MM, name=nm))
+                row += 1
     tx, ty = split + 2.0, sheet.top + 2.0
     rows = [head]
     for c in comps:

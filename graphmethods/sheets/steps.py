@@ -425,7 +425,7 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
                                  eq=first_value(j, cn)), _leader_of([vec(cn), name(cn.end)] + eq_names)))
                 rules.append((_w(nt, "a_crank_t", n=SA.image(cn.end), a=SA.symbol(ct.symbol),
                                  link=K._sub(cr.centre + cr.pin), eq=first_value(j, ct), A=cr.pin),
-                              _leader_of([vec(ct), vec(ca), name(x)])))
+                              _leader_of([vec(ct), vec(ca), name(x), f"values-{j}-1"])))
             continue
         if st_.method != "intersection":
             c = st_.components[0]
@@ -435,8 +435,8 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
             rules.append((cap, _leader_of([vec(c), name(x), f"equation-{j}"])))
             continue
         first = True
-        for c in (c for c in st_.components if c.known):
-            names = [vec(c), name(c.end)] + (eq_names if first else [])
+        for i, c in enumerate(c for c in st_.components if c.known):
+            names = [vec(c), name(c.end)] + (eq_names if first else [f"values-{j}-{i}"])   # its own values line
             first = False
             if c.kind == "normal":
                 centre = c.symbol.split("_", 1)[1][len(st_.point):]
