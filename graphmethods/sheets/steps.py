@@ -75,6 +75,8 @@ WORDS = {
                    "自 {n} 沿 ε_1 方向作 {a} ⊥ {link}：{eq}；πa 即 a_{{{A}}}"),
     "a_normal":   ("From {at} draw {a} ∥ {link} toward {C}: {eq}", "Из точки {at} проводим {a} ∥ {link} к точке {C}: {eq}",
                    "自 {at} 作 {a} ∥ {link}，指向 {C}：{eq}"),
+    "a_normal_pi": ("From π draw {a} ∥ {link} toward {C}: {eq}", "Из полюса π проводим {a} ∥ {link} к точке {C}: {eq}",
+                    "自 π 作 {a} ∥ {link}，指向 {C}：{eq}"),
     "a_coriolis": ("From {at} draw the Coriolis component {a}, {dir}: {eq}",
                    "Из точки {at} проводим кориолисово ускорение {a}, {dir}: {eq}",
                    "自 {at} 作哥氏加速度 {a}，{dir}：{eq}"),
@@ -440,7 +442,8 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
             first = False
             if c.kind == "normal":
                 centre = c.symbol.split("_", 1)[1][len(st_.point):]
-                rules.append((_w(nt, "a_normal", at=SA.image(c.start), a=SA.symbol(c.symbol),
+                rules.append((_w(nt, "a_normal_pi" if c.start == "π" else "a_normal", at=SA.image(c.start),
+                                 a=SA.symbol(c.symbol),
                                  link=K._sub(centre + st_.point), C=K._sub(centre), eq=first_value(j, c)),
                               _leader_of(names)))
             elif c.kind == "coriolis":
