@@ -218,7 +218,9 @@ def test_slider_diagrams_references_agree_and_v_at_positions_is_the_central_diff
     rows = sd.comparison()
     assert rows[0]["error"] == sd.v.accuracy.at_nodes and rows[2]["error"] == sd.a.accuracy.at_nodes
     assert rows[0]["error_mm"] == pytest.approx(rows[0]["error"] / sd.v.mu)
-    assert [r["unit"] for r in rows] == ["m/s", "m/s", "m/s²"]
+    assert [r["unit"] for r in rows] == ["m/s", "m/s", "m/s²", "m/s²"]
+    np.testing.assert_allclose(sd.a_plans, sd.a_exact, atol=1e-12)              # the acceleration plans
+    assert rows[3]["against"] == "acceleration plans" and rows[3]["error"] == pytest.approx(rows[2]["error"], abs=1e-12)
     an = slider_diagrams(mech, 12, mu_phi=PI / 90, mu_s=0.004)
     np.testing.assert_allclose(an.v.values * 20.0, sd.v.values, rtol=1e-12)      # v = ω ds/dφ
     np.testing.assert_allclose(an.a.values * 400.0, sd.a.values, rtol=1e-9)       # a = ω² d²s/dφ²

@@ -277,7 +277,7 @@ def test_kinematics_figures_limit_names_a_real_option(tmp_path, capsys):
     assert "--positions 30 or fewer" in err and "page" not in err.split("(")[0]
     code, _, _ = run(capsys, "kinematics", DATA / "slider_crank_press.json", "--positions", "30", "--figures",
                      tmp_path / "g")
-    assert code == 0 and len(list((tmp_path / "g").iterdir())) == 5
+    assert code == 0 and len(list((tmp_path / "g").iterdir())) == 8
 
 
 def test_empty_output_names_refused(tmp_path, capsys, monkeypatch):

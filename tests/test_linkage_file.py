@@ -225,3 +225,18 @@ def test_figures_that_draw_a_step_load_refuse_an_indicator_diagram(tmp_path, cap
     rc = cli.main(["study", str(DATA / "single_cylinder_engine.json"), "--sheet", str(out)])
     err = capsys.readouterr().err
     assert rc == 2 and "indicator diagram" in err and err.count("\n") == 1 and not out.exists()
+
+
+def test_fixed_that_is_not_an_object_is_refused_by_name():
+    """Found by the fuzz test: "fixed": 1.0 raised a TypeError instead of naming the key."""
+    import json
+
+    from graphmethods.errors import InputError
+    from graphmethods.kinematics.case import case_from_dict
+    from graphmethods.problems import builtin
+
+    data = json.loads((builtin.DATA / "single_cylinder_engine.json").read_text(encoding="utf-8"))
+    for bad in (1.0, "O", [0, 0], None):
+        data["fixed"] = bad
+        with pytest.raises(InputError, match="key 'fixed'"):
+            case_from_dict(data)

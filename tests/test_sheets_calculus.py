@@ -161,7 +161,7 @@ def test_kinematic_diagrams_caption_each_graph_with_its_formula_and_compare(pres
     assert "μv = μs/(μt·H1) = 0.12 (m/s)/mm" in texts and "μa = μv/(μt·H2) = 3.6 (m/s²)/mm" in texts
     assert "H1 = 30 mm (picked to fit)" in texts and any(t.startswith("μt = 0.001111 s/mm") for t in texts)
     rows = scene.element("comparison-table").rows
-    assert [r[1] for r in rows[1:]] == ["analytic", "velocity plans", "analytic"]
+    assert [r[1] for r in rows[1:]] == ["analytic", "velocity plans", "analytic", "acceleration plans"]
     sd = gc.slider_diagrams(press.mechanism, 12, mu_phi=math.pi / 90, mu_s=0.004, omega_1=press.omega_m,
                             H1_mm=30, H2_mm=30)
     cmp = sd.comparison()

@@ -371,11 +371,13 @@ def test_cli_writes_the_figures_and_refuses_to_overwrite(run, tmp_path):
     assert rc == 0 and err == ""
     res = json.loads(stdout)
     names = sorted(p.name for p in out.iterdir())
-    assert names == ["slider_crank_press_kinematic_scheme.svg", "slider_crank_press_velocity_plan_1.svg",
+    assert names == ["slider_crank_press_acceleration_plan_1.svg", "slider_crank_press_acceleration_plans.svg",
+                     "slider_crank_press_acceleration_table.svg",
+                     "slider_crank_press_kinematic_scheme.svg", "slider_crank_press_velocity_plan_1.svg",
                      "slider_crank_press_velocity_plans.svg", "slider_crank_press_velocity_table.md",
                      "slider_crank_press_velocity_table.svg"]
     assert sorted(pathlib.Path(p).name for p in res["figures"]) == names and len(res["positions"]) == 13
-    scheme = (out / names[0]).read_bytes()
+    scheme = (out / names[3]).read_bytes()
     assert scheme == svg.to_bytes(ks.kinematic_scheme(Study(PRESS)))
     before = {p.name: p.stat().st_mtime_ns for p in out.iterdir()}
     (out / names[1]).unlink()
@@ -385,7 +387,8 @@ def test_cli_writes_the_figures_and_refuses_to_overwrite(run, tmp_path):
     assert all(p.stat().st_mtime_ns == before[p.name] for p in out.iterdir())
     rc, stdout, _ = run(case, "--figures", out, "--lang", "ru", "--force")
     assert rc == 0 and stdout.splitlines()[-1].startswith("wrote ")
-    assert "План механизма" in (out / names[0]).read_text(encoding="utf-8")
+    assert "План механизма" in (out / names[3]).read_text(encoding="utf-8")
+    assert "План ускорений" in (out / names[0]).read_text(encoding="utf-8")
 
 
 def test_cli_an_error_writes_nothing(run, tmp_path):
@@ -405,7 +408,8 @@ def test_cli_png_and_pdf(run, tmp_path, fmt, magic):
     rc, _, _ = run(DATA / "shaper.json", "--figures", tmp_path, "--format", fmt, "-m", 6, "--plan-position", 2)
     assert rc == 0
     files = sorted(tmp_path.glob(f"*.{fmt}"))
-    assert [p.name for p in files] == [f"shaper_{n}.{fmt}" for n in ("kinematic_scheme", "velocity_plan_2",
-                                                                     "velocity_plans", "velocity_table")]
+    assert [p.name for p in files] == [f"shaper_{n}.{fmt}" for n in (
+        "acceleration_plan_2", "acceleration_plans", "acceleration_table", "kinematic_scheme", "velocity_plan_2",
+        "velocity_plans", "velocity_table")]
     assert all(p.read_bytes()[:4] == magic for p in files)
     assert "| 0 (6) |" in (tmp_path / "shaper_velocity_table.md").read_text(encoding="utf-8")

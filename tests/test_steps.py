@@ -23,7 +23,7 @@ from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 
 SVG = "{http://www.w3.org/2000/svg}"
 LINKAGES = tuple(S.LINKAGES)
-CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "energy-indicator") for c in ("W1", "W2", "W3", "W4", "press")]
+CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "acceleration-plan") for c in LINKAGES] + [(c, "energy-indicator") for c in ("W1", "W2", "W3", "W4", "press")]
          + [(c, "wittenbauer") for c in ("press", "shaper", "four-bar")]
          + [(c, "kinematic-diagrams") for c in ("press", "shaper")]
          + [(c, "work-diagrams") for c in ("press", "W3")]
@@ -77,7 +77,7 @@ def test_each_step_draws_the_previous_ones_and_the_last_is_the_finished_figure(b
 
 DIRECT = [("press", "velocity-plan"), ("shaper", "velocity-plan"), ("W1", "energy-indicator"),
           ("press", "wittenbauer"), ("press", "kinematic-diagrams"), ("W3", "work-diagrams"),
-          ("press", "zhukovsky-lever"), ("slotted-lever", "kinematic-scheme")]
+          ("press", "zhukovsky-lever"), ("slotted-lever", "kinematic-scheme"), ("shaper", "acceleration-plan")]
 
 
 @pytest.mark.parametrize("case,figure", DIRECT, ids=[f"{c}-{f}" for c, f in DIRECT])
@@ -89,6 +89,11 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
     if figure == "velocity-plan":
         pos = K.fullest_position(K._Linkage.of(obj).plans)
         direct = K.velocity_plan(obj, pos, page=page, title_block=tb)
+    elif figure == "acceleration-plan":
+        from graphmethods.sheets import acceleration as SA
+
+        pr = SA._Problem(obj, m=None, omega_1=None, epsilon_1=0.0)
+        direct = SA.acceleration_plan(obj, SA._default_position(pr.plans(), pr.linkage), page=page, title_block=tb)
     elif figure == "energy-indicator":
         direct = energy_indicator(obj, page=page, title_block=tb)
     elif figure == "kinematic-diagrams":
@@ -106,7 +111,10 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
     assert record(bu.scene_at(len(bu))).calls == record(direct).calls
 
 
-@pytest.mark.parametrize("case,figure", CASES[:4] + CASES[4:5], ids=[f"{c}-{f}" for c, f in CASES[:4] + CASES[4:5]])
+SLIDES = CASES[:5] + [("W1", "energy-indicator")]
+
+
+@pytest.mark.parametrize("case,figure", SLIDES, ids=[f"{c}-{f}" for c, f in SLIDES])
 def test_slides_grey_the_earlier_steps_and_colour_the_new_one(built, case, figure):
     bu = built(case, figure)
     for k in range(1, len(bu) + 1):
@@ -379,7 +387,8 @@ def test_cli_default_name_and_positions(tmp_path, capsys, monkeypatch):
     (["W2", "wittenbauer"], "masses and loads"),
     (["press", "plan"], "use one of velocity-plan"),
     (["press", "velocity-plan", "--position", "99"], "position 99"),
-    (["press", "wittenbauer", "--position", "2"], "velocity plan and Zhukovsky's lever only"),
+    (["press", "wittenbauer", "--position", "2"], "velocity and acceleration plans and Zhukovsky's lever only"),
+    (["press", "acceleration-plan", "--position", "12"], "position 12"),
     (["four-bar", "kinematic-diagrams"], "no slider"),
     (["W1", "work-diagrams"], "needs moment curves"),
     (["press", "velocity-plan", "--page", "B5"], "use slide, A4"),

@@ -12,7 +12,9 @@ their guide, other points' are magnitudes; ``omega_k`` uses the textbook link nu
 ``--figures DIR`` also writes the figures of the problem into DIR (created if missing): the
 kinematic scheme in M positions, the velocity plans of all positions, one large velocity plan
 (``--plan-position K``; by default the working-stroke position whose plan is the fullest figure)
-and the table of velocities (drawn, and as Markdown), in ``--lang en|ru|zh`` and ``--format
+and the table of velocities (drawn, and as Markdown), the acceleration plans of all positions,
+the large acceleration plan of the same position and the table of accelerations (at
+``--epsilon-1``), in ``--lang en|ru|zh`` and ``--format
 svg|pdf|png|dxf``. Existing files are never replaced without ``--force``; every figure is built
 before the first file is written, so an error writes nothing.
 
@@ -46,7 +48,8 @@ def add_parser(sub) -> None:
                    help="mean crank speed, rev/min (default: the file's n_rpm)")
     p.add_argument("--json", action="store_true", help="print one JSON object whose 'positions' is the list")
     p.add_argument("--figures", metavar="DIR", default=None,
-                   help="also write the figures (scheme, velocity plans, one large plan, velocity table) into DIR")
+                   help="also write the figures (scheme, velocity plans, one large plan, velocity table, the same "
+                        "for accelerations) into DIR")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
     p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default="svg", dest="fig_format",
                    help="file format of the figures (default svg; dxf: 1 unit = 1 mm, layers by role; the table is "
@@ -208,15 +211,17 @@ def _text(res: dict) -> str:
     return "\n".join(lines)
 
 
-def figures(case, m: int, *, notation: str = "en", plan_position: int | None = None) -> dict:
+def figures(case, m: int, *, notation: str = "en", plan_position: int | None = None, epsilon_1: float = 0.0) -> dict:
     """The figures of a problem file as scenes: file suffix -> Scene, plus ``"velocity_table.md"`` -> str.
 
-    Positions and velocity plans are built once (a lazy Study) and shared by every figure.
+    Positions and velocity plans are built once (a lazy Study) and shared by every figure; the
+    acceleration plans (all positions, the large one of the same position, the table) are at the
+    file's mean crank speed and ``epsilon_1``.
     """
     from graphmethods.dynamics.study import Study
-    from graphmethods.sheets import kinematics as ks
-
     from graphmethods.errors import InputError
+    from graphmethods.sheets import acceleration as sa
+    from graphmethods.sheets import kinematics as ks
 
     if m > FIGURES_MAX_POSITIONS:
         raise InputError(f"--figures draws at most {FIGURES_MAX_POSITIONS} positions (the velocity table's rows must "
@@ -233,11 +238,14 @@ def figures(case, m: int, *, notation: str = "en", plan_position: int | None = N
         f"velocity_plan_{k}": plan,
         "velocity_table": ks.velocity_table(study, notation=notation),
         "velocity_table.md": ks.velocity_table_markdown(study, notation=notation),
+        "acceleration_plans": sa.acceleration_plan_grid(study, epsilon_1=epsilon_1, notation=notation),
+        f"acceleration_plan_{k}": sa.acceleration_plan(study, k, epsilon_1=epsilon_1, notation=notation),
+        "acceleration_table": sa.acceleration_table(study, epsilon_1=epsilon_1, notation=notation),
     }
 
 
 def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", fmt: str = "svg",
-                  plan_position: int | None = None, overwrite: bool = False) -> list:
+                  plan_position: int | None = None, overwrite: bool = False, epsilon_1: float = 0.0) -> list:
     """Build every figure, then write them all into ``directory`` (created if missing).
 
     Nothing is written when a figure cannot be built or a file exists (without ``overwrite``);
@@ -256,7 +264,7 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
 
     if str(directory).strip() == "":
         raise InputError("--figures is empty; give a folder (it is created if missing)")
-    scenes = figures(case, m, notation=notation, plan_position=plan_position)
+    scenes = figures(case, m, notation=notation, plan_position=plan_position, epsilon_1=epsilon_1)
     out = pathlib.Path(directory)
     if out.exists() and not out.is_dir():
         raise InputError(f"--figures {out}: it is a file, not a directory")
@@ -311,7 +319,7 @@ def run(args) -> int:
 
         written = write_figures(case, args.positions, args.figures, stem=pathlib.Path(args.case).stem,
                                 notation=args.lang, fmt=args.fig_format, plan_position=args.plan_position,
-                                overwrite=args.force)
+                                overwrite=args.force, epsilon_1=args.epsilon_1)
     elif args.force or args.plan_position is not None or args.lang != "en" or args.fig_format != "svg":
         raise InputError("--lang, --format, --plan-position and --force apply to the figures; add --figures DIR")
     if args.json:

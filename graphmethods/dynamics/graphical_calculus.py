@@ -593,6 +593,9 @@ class SliderDiagrams:
         The velocity plans' v along the working stroke at the positions.
     v_exact, a_exact : ndarray (m+1,)
         Analytic v and a at the positions.
+    a_plans : ndarray (m+1,)
+        The acceleration plans' a along the working stroke at the positions
+        (:mod:`graphmethods.kinematics.acceleration_plan`, constant crank speed).
     """
 
     point: str
@@ -606,6 +609,7 @@ class SliderDiagrams:
     v_plans: np.ndarray
     v_exact: np.ndarray
     a_exact: np.ndarray
+    a_plans: np.ndarray
 
     @property
     def m(self) -> int:
@@ -649,7 +653,8 @@ class SliderDiagrams:
                 ("v", "mid-intervals", "analytic", self.v.values, self.v.exact_values, u_v, self.v.mu, self.v.x),
                 ("v", "positions", "velocity plans", self.v_at_positions, self.v_plans, u_v, self.v.mu,
                  self.phi * t),
-                ("a", "positions", "analytic", self.a.values, self.a_exact, u_a, self.a.mu, self.phi * t)):
+                ("a", "positions", "analytic", self.a.values, self.a_exact, u_a, self.a.mu, self.phi * t),
+                ("a", "positions", "acceleration plans", self.a.values, self.a_plans, u_a, self.a.mu, self.phi * t)):
             diff = np.abs(np.asarray(got) - np.asarray(ref))
             k = int(np.argmax(diff))
             rows.append({"quantity": q, "where": where, "against": against, "error": float(diff[k]), "unit": unit,
@@ -697,7 +702,7 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
     >>> round(float(sd.a.values[0]), 3), round(float(sd.a_exact[0]), 3)   # at the far dead centre: ω²r(1 + r/l)
     (12.062, 12.5)
     >>> [(r["quantity"], r["against"], round(r["error"], 4)) for r in sd.comparison()]
-    [('v', 'analytic', 0.014), ('v', 'velocity plans', 0.0586), ('a', 'analytic', 0.4377)]
+    [('v', 'analytic', 0.014), ('v', 'velocity plans', 0.0586), ('a', 'analytic', 0.4377), ('a', 'acceleration plans', 0.4377)]
     """
     if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
         raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
@@ -737,9 +742,22 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
     plans = mechanism.velocity_plans(pos, omega_1=1.0 if omega_1 is None else omega_1)
     d = float(np.dot(pos.stroke_direction, guide))
     v_plans = d * plans.v_along_guide(point)
+    a_plans = d * _plan_accelerations(mechanism, pos, point, guide, 1.0 if omega_1 is None else omega_1)
     return SliderDiagrams(point=point, omega_1=omega_1, phi=_frozen(phi), s=_frozen(s), mu_phi=mu_phi, mu_s=mu_s,
                           v=v, a=a, v_plans=_frozen(v_plans), v_exact=_frozen(exact_v(phi * t)),
-                          a_exact=_frozen(exact_a(phi * t)))
+                          a_exact=_frozen(exact_a(phi * t)), a_plans=_frozen(a_plans))
+
+
+def _plan_accelerations(mechanism, pos, point: str, guide, omega_1: float) -> np.ndarray:
+    """The slider's acceleration along ``guide`` from the acceleration plans at the positions, m/s²."""
+    from graphmethods.kinematics.acceleration_plan import acceleration_plans
+    from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
+    from graphmethods.kinematics.presets import from_mechanism
+
+    lk = mechanism.linkage if isinstance(mechanism, LinkageMechanism) else from_mechanism(mechanism)
+    plans = acceleration_plans(lk, phi=np.asarray(pos.phi, dtype=float), omega_1=omega_1)
+    g = complex(float(guide[0]), float(guide[1]))
+    return np.array([(p.a(point) * g.conjugate()).real for p in plans])
 
 
 # ----------------------------------------------------------------------------- work diagrams

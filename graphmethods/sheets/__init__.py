@@ -4,6 +4,8 @@
   :func:`energy_indicator`, :func:`energy_graph`;
 - linkages (:mod:`~graphmethods.sheets.kinematics`): :func:`kinematic_scheme`, :func:`velocity_plan_grid`,
   :func:`velocity_plan`, :func:`velocity_table`;
+- accelerations (:mod:`~graphmethods.sheets.acceleration`): :func:`acceleration_plan`,
+  :func:`acceleration_plan_grid`, :func:`acceleration_table`;
 - the reduced model (:mod:`~graphmethods.sheets.dynamics`): :func:`inertia_graph`, :func:`moment_graph`,
   :func:`delta_T_graph`, :func:`speed_graph`, :func:`acceleration_graph`, :func:`zhukovsky_lever`;
 - the flywheel (:mod:`~graphmethods.sheets.wittenbauer`): :func:`wittenbauer_diagram`,
@@ -19,6 +21,7 @@ Every function takes keyword scales (picked and captioned when not given) and ``
 1
 """
 
+from graphmethods.sheets.acceleration import acceleration_plan, acceleration_plan_grid, acceleration_table
 from graphmethods.sheets.calculus import kinematic_diagrams, work_diagrams
 from graphmethods.sheets.dynamics import (acceleration_graph, delta_T_graph, inertia_graph, moment_graph,
                                           speed_graph, zhukovsky_lever)
@@ -27,7 +30,7 @@ from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan, velo
 from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, wittenbauer_diagram
 
 __all__ = [
-    "acceleration_graph", "delta_T_graph", "dynamic_analysis_sheet", "energy_graph", "energy_indicator",
+    "acceleration_graph", "acceleration_plan", "acceleration_plan_grid", "acceleration_table", "delta_T_graph", "dynamic_analysis_sheet", "energy_graph", "energy_indicator",
     "excess_work_table", "inertia_graph", "kinematic_diagrams", "kinematic_scheme", "moment_diagram",
     "moment_graph", "speed_graph", "velocity_plan", "velocity_plan_grid", "velocity_table", "wittenbauer_diagram",
     "work_diagrams", "zhukovsky_lever",

@@ -61,6 +61,7 @@ WORDS = {
     "on_sheet": ("on the sheet", "на чертеже", "图上"),
     "analytic": ("analytic", "аналитически", "解析解"),
     "plans": ("velocity plans", "планы скоростей", "速度图"),
+    "acc_plans": ("acceleration plans", "планы ускорений", "加速度图"),
     "accuracy_work": ("Accuracy against the exact integrals", "Точность относительно точных интегралов",
                       "相对精确积分的作图误差"),
     "at_mid": ("at mid-intervals", "в серединах", "区间中点"),
@@ -72,8 +73,9 @@ WORDS = {
     "positions": ("positions", "положения", "位置"),
     "drawn": ("{M} drawn through the positions", "{M} построен по точкам положений", "{M}按各位置绘制"),
     "closure": ("closure", "замыкание", "闭合"),
-    "comparison": ("Largest differences from the velocity plans and the analytic values",
-                   "Наибольшие расхождения с планами скоростей и аналитическим расчётом", "与速度图及解析解的最大误差"),
+    "comparison": ("Largest differences from the velocity and acceleration plans and the analytic values",
+                   "Наибольшие расхождения с планами скоростей, ускорений и аналитическим расчётом",
+                   "与速度图、加速度图及解析解的最大误差"),
 }
 
 #: symbols (markup) of this module, en / ru / zh
@@ -369,7 +371,8 @@ def _fmt(nt, value: float, sig: int = 3) -> str:
 def _comparison_rows(nt, sd, sym_v: str, sym_a: str):
     rows = [(word(nt, "construction"), word(nt, "against"), word(nt, "largest"), word(nt, "on_sheet"))]
     what = {"mid-intervals": word(nt, "at_mid"), "positions": word(nt, "at_positions")}
-    against = {"analytic": word(nt, "analytic"), "velocity plans": word(nt, "plans")}
+    against = {"analytic": word(nt, "analytic"), "velocity plans": word(nt, "plans"),
+               "acceleration plans": word(nt, "acc_plans")}
     for r in sd.comparison():
         q = sym_v if r["quantity"] == "v" else sym_a
         rows.append((f"{q}, {what[r['where']]}", against[r["against"]],

@@ -63,6 +63,34 @@ WORDS = {
                    "Снимаем скорости: длина × μ_v; угловые скорости звеньев",
                    "量取各速度（长度 × μ_v），求各构件角速度"),
     "guide":      ("the guide", "направляющей", "导路"),
+    # acceleration plan
+    "a_pole":     ("Choose the pole π and the acceleration scale {mu}", "Выбираем полюс π и масштаб ускорений {mu}",
+                   "选取极点 π 和加速度比例尺 {mu}"),
+    "a_crank":    ("From π draw πa ∥ {link} toward {O}: {eq}", "Из полюса π проводим πa ∥ {link} к точке {O}: {eq}",
+                   "自 π 作 πa ∥ {link}，指向 {O}：{eq}"),
+    "a_crank_n":  ("From π draw {a} ∥ {link} toward {O}: {eq}", "Из полюса π проводим {a} ∥ {link} к точке {O}: {eq}",
+                   "自 π 作 {a} ∥ {link}，指向 {O}：{eq}"),
+    "a_crank_t":  ("From {n} draw {a} ⊥ {link} in the sense of ε_1: {eq}; πa is a_{{{A}}}",
+                   "Из точки {n} проводим {a} ⊥ {link} в сторону ε_1: {eq}; πa — это a_{{{A}}}",
+                   "自 {n} 沿 ε_1 方向作 {a} ⊥ {link}：{eq}；πa 即 a_{{{A}}}"),
+    "a_normal":   ("From {at} draw {a} ∥ {link} toward {C}: {eq}", "Из точки {at} проводим {a} ∥ {link} к точке {C}: {eq}",
+                   "自 {at} 作 {a} ∥ {link}，指向 {C}：{eq}"),
+    "a_normal_pi": ("From π draw {a} ∥ {link} toward {C}: {eq}", "Из полюса π проводим {a} ∥ {link} к точке {C}: {eq}",
+                    "自 π 作 {a} ∥ {link}，指向 {C}：{eq}"),
+    "a_coriolis": ("From {at} draw the Coriolis component {a}, {dir}: {eq}",
+                   "Из точки {at} проводим кориолисово ускорение {a}, {dir}: {eq}",
+                   "自 {at} 作哥氏加速度 {a}，{dir}：{eq}"),
+    "a_guide":    ("{x}: the point of link {g} under {C}, by similarity", "{x} — точка звена {g} под {C}, по подобию",
+                   "{x}：构件 {g} 上与 {C} 重合之点，按影像原理"),
+    "a_line":     ("Through {at}, draw the direction of {a} {rel}", "Через {at} проводим направление {a} {rel}",
+                   "过 {at} 作 {a} 的方向线 {rel}"),
+    "a_meet":     ("{x} is where the two lines meet: {values}", "Точка {x} — пересечение двух линий: {values}",
+                   "两线交点即 {x}：{values}"),
+    "a_read":     ("Read off each acceleration as length × μ_a, and ε = a^τ/l of every link with its sense",
+                   "Снимаем ускорения: длина × μ_a; угловые ускорения ε = a^τ/l и их направления",
+                   "量取各加速度（长度 × μ_a），由 ε = a^τ/l 求各构件角加速度及其转向"),
+    "a_dir":      ("v_{{{rel}}} turned 90° in the sense of ω_{{{n}}}", "v_{{{rel}}}, повёрнутая на 90° в сторону ω_{{{n}}}",
+                   "v_{{{rel}}} 沿 ω_{{{n}}} 转 90°"),
     # energy indicator
     "axis_E":     ("Draw the axis of {E} to {mu} and the start level through a",
                    "Строим ось {E} в масштабе {mu} и начальный уровень через точку a",
@@ -114,8 +142,9 @@ WORDS = {
                    "将各射线在纵轴上的截点移到对应区间中点"),
     "curve_d":    ("Join the points by a smooth curve: {g}(φ); {mu}", "Соединяем точки плавной кривой: {g}(φ); {mu}",
                    "连成光滑曲线 {g}(φ)；{mu}"),
-    "compare_d":  ("Compare with the velocity plans and the analytic values",
-                   "Сравниваем с планами скоростей и аналитическим расчётом", "与速度多边形及解析值比较"),
+    "compare_d":  ("Compare with the velocity and acceleration plans and the analytic values",
+                   "Сравниваем с планами скоростей, ускорений и аналитическим расчётом",
+                   "与速度多边形、加速度多边形及解析值比较"),
     # graphical integration (work diagrams)
     "moments":    ("Draw the moments {Md} and {Mr} over the cycle; {mu}", "Строим моменты {Md} и {Mr} за цикл; {mu}",
                    "作一个周期内的力矩 {Md} 与 {Mr}；{mu}"),
@@ -318,6 +347,130 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
     # drop steps with nothing of their own to draw (an image that coincides with one drawn before)
     drawn = {e.name for e in figure.elements}
     rules = [r for r in rules[:-1] if any(r[1](n) for n in drawn)] + [rules[-1]]
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+# ----------------------------------------------------------------------------- acceleration plan
+
+def acceleration_plan_steps(linkage, position: int | None = None, *, notation="en", page="slide", m=None,
+                            omega_1=None, epsilon_1: float = 0.0, mu_a=None) -> BuildUp:
+    """The acceleration plan of one position, step by step, from its construction.
+
+    The pole and μ_a; the crank pin's components; for every group each known component (the
+    normal ones ω²·l toward the centre, the Coriolis ones with their direction) and each dashed
+    direction of an unknown component, then the point where the two lines meet; the images by
+    similarity; finally the table and ε of every link.
+
+    Parameters
+    ----------
+    linkage : Case, Study, Mechanism or Linkage
+        As :func:`graphmethods.sheets.acceleration.acceleration_plan` takes it.
+    position : int, optional
+        The position drawn (default: the fullest plan of the working stroke).
+    notation : {'en', 'ru', 'zh'}
+    page : 'slide', 'A4' … 'A1' or Page
+
+    Examples
+    --------
+    >>> from graphmethods.kinematics.presets import slider_crank
+    >>> bu = acceleration_plan_steps(slider_crank(r=0.1, l=0.4, points={"S2": ("AB", 0.2)}), 1, omega_1=10.0)
+    >>> [c.split(":")[0] for c in bu.captions()][2:5]
+    ['From a draw a^n_{BA} ∥ AB toward A', 'Through n_{BA}, draw the direction of a^τ_{BA} ⊥ AB', 'Through π, draw the direction of a_{B} ∥ the guide']
+    """
+    from graphmethods.sheets import acceleration as SA
+    from graphmethods.sheets import kinematics as K
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    pr = SA._Problem(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
+    plans = pr.plans()
+    k = SA._default_position(plans, pr.linkage) if position is None else SA._check_position(position,
+                                                                                              len(plans) - 1)
+    figure = SA.acceleration_plan(linkage, k, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a, notation=nt,
+                                  page=pg, title_block=tb)
+    plan = plans[k]
+    s_a = figure.scales()[0]
+    unit = SA._unit(nt, "m/s²")
+    cr = pr.linkage.crank
+    eqs = SA._equations(plan, pr.linkage, nt)
+
+    def vec(c) -> str:
+        return SA._elname(c)
+
+    def name(label: str) -> str:
+        return f"name-{SA._id(label)}"
+
+    def val(c) -> str:
+        return f"{SA.symbol(c.symbol)} = {nt.number(c.magnitude, sig=4)} {unit}"
+
+    def first_value(j: int, c) -> str:
+        """The part of the values line of step j that gives component c."""
+        for part in eqs[j][1].split(";  "):
+            if part.startswith(SA.symbol(c.symbol) + " ="):
+                return part
+        return val(c)
+
+    rules: list = [(_w(nt, "a_pole", mu=s_a.caption(nt)),
+                    _leader_of(["title", "pole", "name-pi", "scale-captions", "legend", "equation-phi"]))]
+    for j, st_ in enumerate(plan.steps):
+        x = st_.label
+        eq_names = [f"equation-{j}", f"values-{j}"]
+        if st_.method == "crank":
+            link = f"{cr.pin}{cr.centre}"
+            if len(st_.components) == 1:
+                c = st_.components[0]
+                rules.append((_w(nt, "a_crank", link=K._sub(link), O=K._sub(cr.centre), eq=first_value(j, c)),
+                              _leader_of([vec(c), name(x)] + eq_names)))
+            else:
+                cn, ct, ca = st_.components
+                rules.append((_w(nt, "a_crank_n", a=SA.symbol(cn.symbol), link=K._sub(link), O=K._sub(cr.centre),
+                                 eq=first_value(j, cn)), _leader_of([vec(cn), name(cn.end)] + eq_names)))
+                rules.append((_w(nt, "a_crank_t", n=SA.image(cn.end), a=SA.symbol(ct.symbol),
+                                 link=K._sub(cr.centre + cr.pin), eq=first_value(j, ct), A=cr.pin),
+                              _leader_of([vec(ct), vec(ca), name(x), f"values-{j}-1"])))
+            continue
+        if st_.method != "intersection":
+            c = st_.components[0]
+            word = "similarity" if st_.method == "similarity" else "same"
+            cap = (_w(nt, "similarity", x=SA.image(x), eq=eqs[j][0]) if word == "similarity"
+                   else _w(nt, "same", x=SA.image(x), y=SA.image(plan.labels[st_.on[0]]) if st_.on else ""))
+            rules.append((cap, _leader_of([vec(c), name(x), f"equation-{j}"])))
+            continue
+        first = True
+        for i, c in enumerate(c for c in st_.components if c.known):
+            names = [vec(c), name(c.end)] + (eq_names if first else [f"values-{j}-{i}"])   # its own values line
+            first = False
+            if c.kind == "normal":
+                centre = c.symbol.split("_", 1)[1][len(st_.point):]
+                rules.append((_w(nt, "a_normal_pi" if c.start == "π" else "a_normal", at=SA.image(c.start),
+                                 a=SA.symbol(c.symbol),
+                                 link=K._sub(centre + st_.point), C=K._sub(centre), eq=first_value(j, c)),
+                              _leader_of(names)))
+            elif c.kind == "coriolis":
+                rel = c.symbol.split("_", 1)[1]
+                rules.append((_w(nt, "a_coriolis", at=SA.image(c.start), a=SA.symbol(c.symbol),
+                                 dir=_w(nt, "a_dir", rel=rel, n=c.link), eq=first_value(j, c)), _leader_of(names)))
+            else:                                           # the guide's point under the slider
+                rules.append((_w(nt, "a_guide", x=SA.image(c.end), g=c.link or "?", C=K._sub(st_.point)),
+                              _leader_of(names)))
+        for ln in st_.lines:
+            along = next((c for c in st_.components if not c.known and c.start == ln.through and c.kind != "absolute"),
+                         None)
+            if along is None:
+                along = next(c for c in st_.components if c.kind == "absolute")
+            rel = ln.label.replace("⟂", "⊥").split(" ", 1)
+            to = _w(nt, "guide") if rel[1] in ("guide", "slot") else K._sub(rel[1])
+            lname = f"line-{st_.point}-{SA._id(ln.through)}"
+            names = [lname, f"label-{lname}"] + (eq_names if first else [])
+            first = False
+            rules.append((_w(nt, "a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol), rel=f"{rel[0]} {to}"),
+                          _leader_of(names)))
+        found = [c for c in st_.components if not c.known]
+        vals = ",  ".join(val(c) for c in found)
+        rules.append((_w(nt, "a_meet", x=SA.image(x), values=vals), _leader_of([vec(c) for c in found] + [name(x)])))
+    rules.append((_w(nt, "a_read"), lambda n: False))
+    names_ = {e.name for e in figure.elements}
+    rules = [r for r in rules[:-1] if any(r[1](n) for n in names_)] + [rules[-1]]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
@@ -566,6 +719,7 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
 #: figure name -> (step source, what it needs: "linkage" or "cycle")
 FIGURES: dict[str, tuple[Callable, str]] = {
     "velocity-plan": (velocity_plan_steps, "linkage"),
+    "acceleration-plan": (acceleration_plan_steps, "linkage"),
     "energy-indicator": (energy_indicator_steps, "cycle"),
     "wittenbauer": (wittenbauer_steps, "study"),
     "kinematic-diagrams": (differentiation_steps, "linkage"),
@@ -594,17 +748,19 @@ def resolve_case(case):
         return case
     text = str(case).strip()
     low = text.lower().replace("_", "-")
-    if low in LINKAGES:
+    from graphmethods.problems import builtin as every
+
+    if low in LINKAGES or low in every.LINKAGES:
         from graphmethods.kinematics import read_case
 
-        return read_case(pathlib.Path(problems.__file__).parent / "data" / LINKAGES[low])
+        return read_case(every.DATA / (LINKAGES.get(low) or every.LINKAGES[low]))
     builtin = {"w1": problems.w1, "w2": problems.w2, "w3": problems.w3, "w4": problems.w4_drawing}
     if low in builtin:
         return builtin[low]()
     p = pathlib.Path(text)
     if not p.is_file():
-        raise InputError(f"case {text!r}: not a built-in problem ({', '.join(list(LINKAGES) + list(CYCLES))}) "
-                         f"and no such file")
+        known = list(dict.fromkeys([*LINKAGES, *every.LINKAGES])) + list(CYCLES)
+        raise InputError(f"case {text!r}: not a built-in problem ({', '.join(known)}) and no such file")
     from graphmethods.kinematics import read_case
 
     return read_case(p)
@@ -640,13 +796,14 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     fn, needs = FIGURES[key]
     obj = resolve_case(case)
     is_linkage = isinstance(obj, Case)
-    if position is not None and key not in ("velocity-plan", "zhukovsky-lever"):
-        raise InputError(f"--position is for the velocity plan and Zhukovsky's lever only, not for {key}")
+    if position is not None and key not in ("velocity-plan", "acceleration-plan", "zhukovsky-lever"):
+        raise InputError(f"--position is for the velocity and acceleration plans and Zhukovsky's lever only, not "
+                         f"for {key}")
     if needs == "linkage":
         if not is_linkage:
             raise InputError(f"{key} needs a linkage problem ({', '.join(LINKAGES)} or a problem file); {case} is "
                              f"a cycle given by its works")
-        if key == "velocity-plan":
+        if key in ("velocity-plan", "acceleration-plan"):
             return fn(obj, position, notation=notation, page=page, m=m)
         return fn(obj, notation=notation, page=page, m=m)
     if is_linkage:

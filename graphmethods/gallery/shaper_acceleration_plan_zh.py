@@ -1,0 +1,14 @@
+"""Shaper: slotted lever, connecting link and ram (problems/data/shaper.json): one large acceleration
+plan with its construction lines, the equations under it, the table of vector lengths and ε of the
+links, Chinese notation.
+"""
+
+from importlib.resources import files
+
+from graphmethods.kinematics import read_case
+from graphmethods.sheets import acceleration
+
+
+def build():
+    case = read_case(files("graphmethods.problems") / "data" / "shaper.json")
+    return acceleration.acceleration_plan(case, notation="zh")

@@ -1,0 +1,14 @@
+"""Whitworth quick-return mechanism (a course mechanism: rotating slotted lever and ram)
+(problems/data/whitworth_quick_return.json): one large acceleration plan with its construction
+lines, the equations under it, the table of vector lengths and ε of the links, Chinese notation.
+"""
+
+from importlib.resources import files
+
+from graphmethods.kinematics import read_case
+from graphmethods.sheets import acceleration
+
+
+def build():
+    case = read_case(files("graphmethods.problems") / "data" / "whitworth_quick_return.json")
+    return acceleration.acceleration_plan(case, notation="zh")
