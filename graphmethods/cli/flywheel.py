@@ -77,7 +77,7 @@ def add_parser(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from graphmethods.dynamics import excess_work as ew
-    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, mean_speed
+    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
 
     tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
     mc = None
@@ -127,6 +127,9 @@ def run(args: argparse.Namespace) -> int:
                              f"mechanism's own --J-e {args.J_e} kg·m²")
         delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
         out.update(J=J, delta=delta, J_F=J - J_e)
+    J_run = out["J"] if args.delta is None else (fw.J_total if fw.needed else J_e)
+    if J_run > 0:        # ω at the boundaries a, b, c, … of the steady cycle (J constant, textbook mean)
+        out["omega_at_boundaries"] = [float(w) for w in level_speeds(cycle.E, J=J_run, omega_m=omega_m)]
     if mc is not None:
         J_machine = J if args.delta is None else (fw.J_total if fw.needed else J_e)
         out.update(flywheel_moments.extras(mc, J_machine))
@@ -139,6 +142,9 @@ def run(args: argparse.Namespace) -> int:
     if mc is not None:
         print("\n".join(flywheel_moments.text_lines(out)))
     print(f"ω_m = {omega_m:.6g} rad/s (n = {out['n_rpm']:.6g} rev/min)")
+    if "omega_at_boundaries" in out:
+        print("ω at the boundaries, rad/s: " + ", ".join(f"{lab} {w:.6g}" for lab, w in
+                                                         zip(cycle.labels, out["omega_at_boundaries"])))
     if args.delta is not None:
         print(f"[δ] = {out['delta']:.6g}; ω_max = {out['omega_max']:.6g}, ω_min = {out['omega_min']:.6g} rad/s")
         print(f"required total inertia ΔW_max/(ω_m²[δ]) = {out['J_total']:.6g} kg·m²")

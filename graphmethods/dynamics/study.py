@@ -151,6 +151,32 @@ class Study:
         pos = self.mechanism.positions(phi_from_start=x.ravel())
         return resisting_moment(pos, self.mechanism.velocity_plans(pos), self.case.load).reshape(x.shape)
 
+    @property
+    def is_engine(self) -> bool:
+        """True when the load's net work drives the crank (an engine's gas force from its indicator
+        diagram): the driving moment is then the curve and the constant from the work balance resists."""
+        return self.M_d < 0.0
+
+    def moment_curves(self, phi) -> tuple[np.ndarray, np.ndarray]:
+        """The reduced driving and resisting moments M_d(φ), M_r(φ) at crank rotations ``phi`` (rad
+        from position 0), N·m, both as a user names them: for a working machine M_d is the constant
+        of the work balance and M_r the load's moment; for an engine (:attr:`is_engine`) M_d is the
+        load's moment (positive where it drives, negative on the compression stroke) and M_r the
+        constant. M_d − M_r is the same reduced moment either way.
+
+        >>> from graphmethods.problems.builtin import case
+        >>> e = Study(case("engine"))
+        >>> M_d, M_r = e.moment_curves(np.array([0.5, 4.0]))
+        >>> e.is_engine, bool(M_d[0] > 0 > M_d[1]), round(float(M_r[0]), 2) == round(-e.M_d, 2)
+        (True, True, True)
+        """
+        x = np.asarray(phi, dtype=float)
+        load = np.asarray(self._M_r_exact(x), dtype=float)
+        const = np.full_like(load, self.M_d)
+        if self.is_engine:
+            return -load, -const
+        return const, load
+
     @_logged
     def model(self) -> ReducedModel:
         """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""
