@@ -177,6 +177,34 @@ class Study:
             return -load, -const
         return const, load
 
+    def translating(self, point: str | None = None):
+        """The translating equivalent link at ``point`` (default: the point the load acts on, the
+        slider or ram): m_e = Σ[m(v_S/v)² + J_S(ω/v)²] straight from the plans, and
+        F_e = (M_d − M_r)/(v/ω₁), the power of every force and moment over the link's speed, at
+        positions 0…m except the dead centres (see :mod:`graphmethods.dynamics.translating`).
+
+        >>> from graphmethods.problems.builtin import case
+        >>> t = Study(case("scotch-yoke"), positions=4).translating()
+        >>> t.index.tolist(), t.dead_centres.tolist(), t.m_e.round(4).tolist()
+        ([1, 3], [0, 2, 4], [30.5, 30.5])
+        """
+        from graphmethods.dynamics.translating import equivalent_mass
+
+        if point is None:
+            if getattr(self.case.load, "kind", None) not in ("force", "diagram"):
+                raise InputError("this problem's load is a moment on a turning link; name the point of a translating "
+                                 "link (a slider or ram) for the equivalent mass")
+            point = str(self.case.load.at)
+        tr = equivalent_mass(self.plans, self.case.inertias, point=point)
+        M_e = (self.M_d - self.M_r)[tr.index]
+        from dataclasses import replace
+
+        F_e = np.array(M_e / tr.v_q)
+        F_e.setflags(write=False)
+        phi = np.array(self.phi[tr.index])
+        phi.setflags(write=False)
+        return replace(tr, F_e=F_e, phi=phi)
+
     @_logged
     def model(self) -> ReducedModel:
         """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""
