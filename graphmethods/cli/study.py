@@ -30,6 +30,11 @@ def add_parser(sub) -> None:
     p.add_argument("--translating", nargs="?", const="", default=None, metavar="POINT",
                    help="also reduce to a translating link at POINT (default: the point the load acts on): "
                         "m_e (kg) and F_e (N) at every position but the dead centres")
+    p.add_argument("--eta", default=None, metavar="ETA[,ETA...]",
+                   help="efficiency of the drive between the motor and the crank; several, comma-separated, are "
+                        "mechanisms in series (η = η1·η2·…); adds N_mean = M_d·ω_m, M_d/η and the motor's rated power")
+    p.add_argument("--reserve", default="1", metavar="K", help="with --eta: reserve factor on the motor's power "
+                                                               "(default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
                    help="also write the dynamic-analysis sheet (SVG, PDF or DXF, scale-true)")
@@ -91,6 +96,12 @@ def run(args) -> int:
     study = Study(builtin.case(args.case), positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
+    if args.eta is not None:
+        from graphmethods.dynamics.power import efficiency_series
+        from graphmethods.units import parse_number
+
+        etas = [parse_number(x, name="--eta") for x in str(args.eta).split(",")]
+        out["power"] = study.power(eta=efficiency_series(etas), reserve=parse_number(args.reserve, name="--reserve"))
     if args.translating is not None:
         tr = study.translating(args.translating or None)
         point = args.translating or str(study.case.load.at)
@@ -105,7 +116,9 @@ def run(args) -> int:
     else:
         width = max(map(len, out))
         for key, value in out.items():
-            if key == "translating":
+            if key == "power":
+                value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
+            elif key == "translating":
                 value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "
                          + ", ".join(f"{x:.5g}" for x in value["F_e"]) + " N at positions "
                          + ", ".join(map(str, value["positions"])) + " (dead centres: "

@@ -177,6 +177,32 @@ class Study:
             return -load, -const
         return const, load
 
+    def power(self, *, eta: float = 1.0, reserve: float = 1.0) -> dict:
+        """The mean power N = M_m·ω_m (W) and, for a working machine, the motor for it.
+
+        M_m is the mean driving moment: M_d of the work balance for a working machine, the constant
+        resistance for an engine (N is then the engine's mean power). With a drive of efficiency η
+        between the motor and the crank (``eta``; mechanisms in series or parallel combined with
+        :mod:`graphmethods.dynamics.power`) the driving moment becomes M_d/η, and the motor is the
+        next IEC rated power above N/η·reserve.
+
+        >>> from graphmethods.problems.builtin import case
+        >>> p = Study(case("press")).power(eta=0.85)
+        >>> round(p["N_mean"], 1), round(p["M_d_with_losses"], 2), p["motor_P_rated_kW"]
+        (4506.0, 168.74, 5.5)
+        """
+        from graphmethods.dynamics.power import choose_motor, mean_power, moment_with_losses
+
+        M_m = -self.M_d if self.is_engine else self.M_d
+        out = {"N_mean": mean_power(M_m=M_m, omega_m=self.omega_m), "M_m": M_m}
+        if self.is_engine:
+            out["note"] = "an engine: N_mean is the mean power it gives at ω_m (no motor to choose)"
+            return out
+        m = choose_motor(out["N_mean"], eta=eta, reserve=reserve)
+        out.update(eta=m.eta, reserve=m.reserve, M_d_with_losses=moment_with_losses(self.M_d, eta=eta),
+                   N_required=m.N_required, motor_P_rated_kW=m.P_rated_kW)
+        return out
+
     def translating(self, point: str | None = None):
         """The translating equivalent link at ``point`` (default: the point the load acts on, the
         slider or ram): m_e = Σ[m(v_S/v)² + J_S(ω/v)²] straight from the plans, and
