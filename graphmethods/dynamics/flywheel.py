@@ -301,7 +301,7 @@ def rim_flywheel(
 
 @dataclass(frozen=True)
 class DiscFlywheel:
-    """A solid disc flywheel: J = m D²/8, m = ρπD²B/4 (m, kg, m/s)."""
+    """A solid disc flywheel: J = m D²/8, m = ρπD²B/4 (m, kg, m/s); ``speed_ok`` against ``speed_limit``."""
 
     J: float
     D: float
@@ -309,9 +309,20 @@ class DiscFlywheel:
     m: float
     rho: float
     rim_speed: float
+    speed_limit: float = RIM_SPEED_LIMIT["steel"]
+
+    @property
+    def speed_ok(self) -> bool:
+        return self.rim_speed <= self.speed_limit
+
+    @property
+    def flywheel_moment(self) -> float:
+        """m D², kg·m²."""
+        return self.m * self.D**2
 
 
-def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["steel"]) -> DiscFlywheel:
+def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["steel"],
+                  speed_limit: float = RIM_SPEED_LIMIT["steel"]) -> DiscFlywheel:
     """Size a solid disc of diameter D for inertia J: B = 32 J / (ρ π D⁴).
 
     >>> d = disc_flywheel(2.0, D=0.5, n_rpm=300.0)
@@ -324,7 +335,8 @@ def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["ste
     n = _finite(n_rpm, "n", positive=True)
     m = 8.0 * J / D**2
     B = 4.0 * m / (rho * math.pi * D**2)
-    return DiscFlywheel(J=J, D=D, B=B, m=m, rho=rho, rim_speed=math.pi * D * n / 60.0)
+    v_lim = _finite(speed_limit, "speed_limit", positive=True)
+    return DiscFlywheel(J=J, D=D, B=B, m=m, rho=rho, rim_speed=math.pi * D * n / 60.0, speed_limit=v_lim)
 
 
 def mass_at_radius_of_gyration(J: float, *, k: float) -> float:
