@@ -79,3 +79,11 @@ def test_linkage_rows_core_equals_the_hand_written_six_bar_and_keeps_pace():
     assert set(core) == {12, 10**4} and all(r.error < 1e-12 for r in core.values())
     # within 4× of the hand-written closed form (best of alternating runs: medians swing on a shared machine)
     assert core[10**4].extra["ratio_best"] < 4.0
+
+
+def test_startup_row_reaches_the_periodic_solution_within_its_target():
+    rows = bench.bench_motion(rtols=(1e-8,), repeat=1)
+    ref, start = rows
+    assert ref.method.startswith("motor study") and ref.error < 1e-12
+    assert start.error is not None and start.error < bench.STARTUP_TARGET["error"]
+    assert "target" in start.note and isinstance(start.extra["target_met"], bool)
