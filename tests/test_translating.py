@@ -85,3 +85,20 @@ def test_study_translating_on_the_command_line(capsys):
     code = main(["study", "press", "--no-exact", "--translating", "S2"])
     out, err = capsys.readouterr()
     assert code == 2 and "straight line" in err
+
+
+def test_equivalent_mass_graph_draws_the_closed_form():
+    from graphmethods.sheets.translating_graph import equivalent_mass_graph
+
+    s = equivalent_mass_graph(Study(case("scotch-yoke"), positions=12))
+    s_phi, s_m = s.scales()
+    axis_y = s.element("axis-phi").origin[1]
+    x0 = s.element("axis-Y").origin[0]
+    branches = [s.element(f"curve-m_e-{k}") for k in (1, 2)]
+    m_min = M3 + M2 + J1 / R**2
+    for b in branches:
+        pts = np.array(b.points)
+        phi = (pts[:, 0] - x0) * s_phi.per_mm
+        m_e = (axis_y - pts[:, 1]) * s_m.per_mm
+        np.testing.assert_allclose(m_e, M3 + (M2 + J1 / R**2) / np.sin(phi) ** 2, rtol=2e-3, atol=2e-3 * s_m.per_mm)
+        assert m_e.max() <= 6 * m_min * (1 + 1e-9)
