@@ -168,6 +168,49 @@ def bench_startup(repeat=5) -> list[Row]:
     return rows
 
 
+# --------------------------------------------------------------------- motion: start-up to the steady state
+#: The start-up row's target: ω_max and ω_min of the steady state reached from rest within this
+#: fraction of ω_m of the periodic solution (issue 18: "within 1e-6"), in at most this many seconds.
+STARTUP_TARGET = {"error": 1e-6, "seconds": 10.0}
+
+
+def bench_motion(rtols=(1e-6, 1e-8, 1e-10), *, repeat=1) -> list[Row]:
+    """The press driven by a DC motor (M = 1000(1 − ω/40) N·m on the crank, J_F of the press) from rest
+    until steady (band 1e-6 of ω_m): time and the error of ω_max, ω_min against the periodic solution of
+    the motor study (:func:`~graphmethods.dynamics.motor.motor_motion`, 7200 steps), per integrator rtol."""
+    from graphmethods.dynamics.motor import DCMotor, motor_motion
+    from graphmethods.dynamics.regimes import run
+    from graphmethods.problems.machine import machine
+
+    m = machine("press")
+    motor = DCMotor(M_0=1000.0, omega_0=40.0)
+    t_ref = median_time(lambda: motor_motion(m.model, motor, J_F=m.J_F, steps=7200), repeat=repeat)
+    ref = motor_motion(m.model, motor, J_F=m.J_F, steps=7200)
+    rows = [Row("motion", "press, DC motor, periodic", "motor study (7200 steps)", 7200, t_ref, ref.accuracy,
+                note=f"ω_max {ref.omega_max:.9g}, ω_min {ref.omega_min:.9g} rad/s")]
+    for rtol in rtols:
+        out = {}
+
+        def go(rtol=rtol):
+            out["r"] = run(m.model, J_F=m.J_F, drive=motor, omega_0=0.0, until_steady=True, rtol=rtol, tol=1e-6)
+
+        t = median_time(go, repeat=repeat)
+        r = out["r"]
+        st = r.steady
+        if st is None:
+            rows.append(Row("motion", "press, DC motor, from rest", f"start-up, rtol {rtol:g}", None, t, None,
+                            note=f"ended by {r.ended_by}, not steady"))
+            continue
+        err = max(abs(st.omega_max - ref.omega_max), abs(st.omega_min - ref.omega_min)) / ref.omega_m
+        met = err <= STARTUP_TARGET["error"] and t <= STARTUP_TARGET["seconds"]
+        rows.append(Row("motion", "press, DC motor, from rest", f"start-up to steady, rtol {rtol:g}", r.steps, t, err,
+                        note=f"t_steady {st.t_steady:.4g} s; energy residual {r.energy_residual:.2g}; target "
+                             f"≤ {STARTUP_TARGET['error']:g} in ≤ {STARTUP_TARGET['seconds']:g} s: "
+                             f"{'met' if met else 'NOT met'}",
+                        extra={"target_met": met}))
+    return rows
+
+
 # --------------------------------------------------------------------- flywheel: methods against exact
 M_VALUES = (12, 24, 48, 96, 360, 3600, 100_000)
 
@@ -649,6 +692,7 @@ SECTIONS = {
     "worksheet": bench_worksheet,
     "startup": bench_startup,
     "gallery": bench_gallery,
+    "motion": bench_motion,
 }
 
 #: Arguments of each section for --quick (CI): small sizes, few repeats.
@@ -662,6 +706,7 @@ QUICK = {
     "worksheet": dict(variants=4, kinds=("wittenbauer",), repeat=3, cli=False),
     "startup": dict(repeat=3),
     "gallery": dict(repeat=3),
+    "motion": dict(rtols=(1e-8,), repeat=1),
 }
 
 

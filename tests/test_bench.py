@@ -123,3 +123,11 @@ def test_gallery_rows_name_the_slowest_and_the_label_share():
     total, share = rows
     assert total.size == 2 and "slowest: " in total.note and share.target == "≤ 10 %"
     assert 0 < float(share.note.split()[0]) < 100
+
+
+def test_startup_row_reaches_the_periodic_solution_within_its_target():
+    rows = bench.bench_motion(rtols=(1e-8,), repeat=1)
+    ref, start = rows
+    assert ref.method.startswith("motor study") and ref.error < 1e-12
+    assert start.error is not None and start.error < bench.STARTUP_TARGET["error"]
+    assert "target" in start.note and isinstance(start.extra["target_met"], bool)

@@ -28,6 +28,7 @@ COMMANDS = {
     "check-class": ("check_class", "check a folder of students' answers files and drawings: one class table"),
     "bench": ("bench", "measure speed against error (Markdown table and JSON)"),
     "motion": ("motion", "motion from given initial conditions: start-up, steady running, run-down"),
+    "drive": ("drive", "a drive of several masses reduced to one shaft: J', c', natural frequencies"),
     "steps": ("steps", "a construction step by step for a lecture: PDF slides, SVG frames, animation, HTML page"),
 }
 

@@ -71,13 +71,88 @@ def add_parser(sub) -> None:
     goal.add_argument("--J", help="total inertia on the shaft, kg·m²: find the δ it gives")
     p.add_argument("--J-e", default="0", help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
     p.add_argument("--closure-tol", default=None, help="allowed closure residual |ΣA|/Σ|A| (default 0.05)")
+    p.add_argument("--rim", nargs="?", const="", default=None, metavar="D",
+                   help="size a rim (spoked) flywheel for J_F: mean rim diameter D in m (default: the largest the "
+                        "rim-speed limit allows)")
+    p.add_argument("--disc", default=None, metavar="D", help="size a solid disc flywheel of diameter D (m) for J_F")
+    p.add_argument("--material", choices=("cast-iron", "steel"), default=None,
+                   help="flywheel material (density, rim-speed limit): default cast iron for a rim, steel for a disc")
+    p.add_argument("--H-over-B", default="1.5", help="rim: radial thickness over width (default 1.5)")
+    p.add_argument("--figure", default=None, metavar="FILE.svg|.pdf|.png",
+                   help="with --rim or --disc: draw the flywheel(s) to scale, dimensioned, with the table")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figure (default en)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing figure file")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.set_defaults(func=run)
 
 
+def _sizing(args: argparse.Namespace, J_F: float, n_rpm: float, out: dict):
+    """The rim and disc flywheels of --rim/--disc for J_F (kg·m²) at n_rpm, added to ``out``."""
+    from graphmethods.dynamics.flywheel import DENSITY, RIM_SPEED_LIMIT, disc_flywheel, rim_flywheel
+
+    if args.rim is None and args.disc is None:
+        if args.figure is not None:
+            raise InputError("--figure draws the flywheel: add --rim [D] or --disc D")
+        return None, None
+    if not J_F > 0:
+        raise InputError(f"J_F = {J_F:.6g} kg·m²: no flywheel is needed, so there is nothing to size")
+    mat = None if args.material is None else args.material.replace("-", " ")
+    rim = disc = None
+    if args.rim is not None:
+        m = mat or "cast iron"
+        rim = rim_flywheel(J_F, n_rpm=n_rpm, D=None if args.rim == "" else parse_number(args.rim, name="--rim"),
+                           rho=DENSITY[m], H_over_B=parse_number(args.H_over_B, name="--H-over-B"),
+                           speed_limit=RIM_SPEED_LIMIT[m])
+        out["rim"] = {"material": m, "D": rim.D, "D1": rim.D1, "D2": rim.D2, "H": rim.H, "B": rim.B, "m": rim.m,
+                      "J_rim": rim.J_rim, "mD2": rim.flywheel_moment, "rim_speed": rim.rim_speed,
+                      "speed_limit": rim.speed_limit, "speed_ok": rim.speed_ok}
+    if args.disc is not None:
+        m = mat or "steel"
+        disc = disc_flywheel(J_F, D=parse_number(args.disc, name="--disc"), n_rpm=n_rpm, rho=DENSITY[m],
+                             speed_limit=RIM_SPEED_LIMIT[m])
+        out["disc"] = {"material": m, "D": disc.D, "B": disc.B, "m": disc.m, "mD2": disc.flywheel_moment,
+                       "rim_speed": disc.rim_speed, "speed_limit": disc.speed_limit, "speed_ok": disc.speed_ok}
+    return rim, disc
+
+
+def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
+    """The flywheel figure's path and bytes (checked before any file is written), or (None, None)."""
+    import pathlib
+
+    from graphmethods.errors import OutputExistsError
+
+    if args.figure is None:
+        return None, None
+    path = pathlib.Path(args.figure)
+    suffix = path.suffix.lower()
+    if suffix not in (".svg", ".pdf", ".png"):
+        raise InputError(f"--figure {path}: give a file name ending in .svg, .pdf or .png")
+    if path.exists() and not args.force:
+        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
+    if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
+        raise InputError(f"--figure {path}: its folder does not exist or it is a folder")
+    from graphmethods.sheets.flywheel_design import flywheel_design
+
+    if rim is None:              # a disc alone: drawn in the rim's place
+        scene = flywheel_design(disc, None, notation=args.lang)
+    else:
+        scene = flywheel_design(rim, disc, notation=args.lang)
+    if suffix == ".svg":
+        from graphmethods.render import svg
+
+        return path, svg.to_bytes(scene)
+    if suffix == ".pdf":
+        from graphmethods.render import pdf
+
+        return path, pdf.to_bytes([scene])
+    from graphmethods.render import mpl
+
+    return path, mpl.to_png_bytes(scene)
+
+
 def run(args: argparse.Namespace) -> int:
     from graphmethods.dynamics import excess_work as ew
-    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, mean_speed
+    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
 
     tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
     mc = None
@@ -127,9 +202,20 @@ def run(args: argparse.Namespace) -> int:
                              f"mechanism's own --J-e {args.J_e} kg·m²")
         delta = fluctuation(cycle.delta_W_max, J=J, omega_m=omega_m)
         out.update(J=J, delta=delta, J_F=J - J_e)
+    J_run = out["J"] if args.delta is None else (fw.J_total if fw.needed else J_e)
+    if J_run > 0:        # ω at the boundaries a, b, c, … of the steady cycle (J constant, textbook mean)
+        out["omega_at_boundaries"] = [float(w) for w in level_speeds(cycle.E, J=J_run, omega_m=omega_m)]
     if mc is not None:
         J_machine = J if args.delta is None else (fw.J_total if fw.needed else J_e)
         out.update(flywheel_moments.extras(mc, J_machine))
+    rim, disc = _sizing(args, float(out["J_F"]), float(out["n_rpm"]), out)
+    fig_path, fig_data = _figure_bytes(args, rim, disc)
+    if fig_path is not None:
+        from graphmethods.render.files import write_atomic
+
+        check_finite(out)
+        write_atomic(fig_path, fig_data, overwrite=args.force)
+        out["figure"] = str(fig_path)
     if args.json:
         print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
         return 0
@@ -139,6 +225,9 @@ def run(args: argparse.Namespace) -> int:
     if mc is not None:
         print("\n".join(flywheel_moments.text_lines(out)))
     print(f"ω_m = {omega_m:.6g} rad/s (n = {out['n_rpm']:.6g} rev/min)")
+    if "omega_at_boundaries" in out:
+        print("ω at the boundaries, rad/s: " + ", ".join(f"{lab} {w:.6g}" for lab, w in
+                                                         zip(cycle.labels, out["omega_at_boundaries"])))
     if args.delta is not None:
         print(f"[δ] = {out['delta']:.6g}; ω_max = {out['omega_max']:.6g}, ω_min = {out['omega_min']:.6g} rad/s")
         print(f"required total inertia ΔW_max/(ω_m²[δ]) = {out['J_total']:.6g} kg·m²")
@@ -148,4 +237,12 @@ def run(args: argparse.Namespace) -> int:
     else:
         print(f"δ = ΔW_max/(ω_m² J) = {out['delta']:.6g} (1/{1 / out['delta']:.4g}) with J = {out['J']:.6g} kg·m²"
               if out["delta"] > 0 else "δ = 0: no fluctuation")
+    for key in ("rim", "disc"):
+        if key in out:
+            d = out[key]
+            print(f"{key} flywheel ({d['material']}): " + ", ".join(
+                f"{k} {v:.4g}" for k, v in d.items() if isinstance(v, float)) + (
+                "" if d["speed_ok"] else "  -- the rim speed is OVER the limit: a smaller D, steel, or a faster shaft"))
+    if "figure" in out:
+        print(f"wrote {out['figure']}")
     return 0

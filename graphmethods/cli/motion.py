@@ -183,7 +183,8 @@ def run(args: argparse.Namespace) -> int:
         summary["motor_ratio"] = drive.ratio
     summary.update(res.summary())
     if args.figures is not None:
-        summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name, cycle=m.problem)]
+        summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name, cycle=m.problem,
+                                                             case=None if m.problem is not None else args.case)]
     if args.json:
         out = {"t": res.t.tolist(), "phi": res.phi.tolist(), "omega": res.omega.tolist(),
                "epsilon": res.epsilon.tolist(), "summary": summary}
@@ -200,9 +201,9 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _write_figures(res, args, *, problem: str, cycle=None) -> list:
-    """Build the figures (ω(t), ω(φ), ε(φ); and for a cycle problem the three-panel figure of its steady
-    cycle), then write them (an existing file is kept unless --force)."""
+def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
+    """Build the figures (ω(t), ω(φ), ε(φ); and for a cycle problem or a linkage ``case`` with n and [δ]
+    the three-panel figure of its steady cycle), then write them (an existing file is kept unless --force)."""
     import pathlib
 
     from graphmethods.errors import OutputExistsError
@@ -217,6 +218,16 @@ def _write_figures(res, args, *, problem: str, cycle=None) -> list:
         from graphmethods.sheets.cycle_panels import cycle_panels
 
         scenes["panels"] = cycle_panels(cycle, notation=args.lang)
+    elif case is not None:                # a linkage: the same figure of its steady cycle with the exact J_F
+        from graphmethods.dynamics.study import Study
+        from graphmethods.errors import NoFlywheelNeeded
+        from graphmethods.problems.builtin import case as read_builtin
+        from graphmethods.sheets.cycle_panels import linkage_panels
+
+        try:
+            scenes["panels"] = linkage_panels(Study(read_builtin(case)), notation=args.lang)
+        except NoFlywheelNeeded:          # no flywheel for [δ]: the other figures still tell the motion
+            pass
     paths = {out / f"{problem}_{key}.{args.fig_format}": scene for key, scene in scenes.items()}
     if not args.force:
         for path in paths:

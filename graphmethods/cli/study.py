@@ -27,6 +27,14 @@ def add_parser(sub) -> None:
     p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name (graphmethods problems)")
     p.add_argument("--positions", type=int, default=12, metavar="M", help="number of positions (default 12)")
     p.add_argument("--no-exact", action="store_true", help="skip the exact reference solution (faster)")
+    p.add_argument("--translating", nargs="?", const="", default=None, metavar="POINT",
+                   help="also reduce to a translating link at POINT (default: the point the load acts on): "
+                        "m_e (kg) and F_e (N) at every position but the dead centres")
+    p.add_argument("--eta", default=None, metavar="ETA[,ETA...]",
+                   help="efficiency of the drive between the motor and the crank; several, comma-separated, are "
+                        "mechanisms in series (η = η1·η2·…); adds N_mean = M_d·ω_m, M_d/η and the motor's rated power")
+    p.add_argument("--reserve", default="1", metavar="K", help="with --eta: reserve factor on the motor's power "
+                                                               "(default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
                    help="also write the dynamic-analysis sheet (SVG, PDF or DXF, scale-true)")
@@ -88,6 +96,16 @@ def run(args) -> int:
     study = Study(builtin.case(args.case), positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
+    if args.eta is not None:
+        from graphmethods.dynamics.power import efficiency_series
+        from graphmethods.units import parse_number
+
+        etas = [parse_number(x, name="--eta") for x in str(args.eta).split(",")]
+        out["power"] = study.power(eta=efficiency_series(etas), reserve=parse_number(args.reserve, name="--reserve"))
+    if args.translating is not None:
+        tr = study.translating(args.translating or None)
+        point = args.translating or str(study.case.load.at)
+        out["translating"] = {"point": point, **tr.to_dict()}
     check_finite(out)                        # a result that is not finite is refused, naming it
     if data is not None:            # written last: an error above leaves no file behind
         from graphmethods.render.files import write_atomic
@@ -98,7 +116,14 @@ def run(args) -> int:
     else:
         width = max(map(len, out))
         for key, value in out.items():
-            if isinstance(value, float):
+            if key == "power":
+                value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
+            elif key == "translating":
+                value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "
+                         + ", ".join(f"{x:.5g}" for x in value["F_e"]) + " N at positions "
+                         + ", ".join(map(str, value["positions"])) + " (dead centres: "
+                         + ", ".join(map(str, value["dead_centre_positions"])) + ")")
+            elif isinstance(value, float):
                 value = f"{value:.6g}"
             print(f"{key.ljust(width)}  {value}")
     if sheet is not None:

@@ -18,6 +18,9 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass
 
+import numpy as np
+from numpy.typing import ArrayLike
+
 from graphmethods.errors import InputError
 from graphmethods.units import DELTA_MAX, finite_result, n_from_omega, omega_from_n, real
 
@@ -169,6 +172,46 @@ def fluctuation(delta_W_max: float, *, J: float, n_rpm: float | None = None, ome
     return d
 
 
+def level_speeds(E: ArrayLike, *, J: float, omega_m: float) -> np.ndarray:
+    """ω at the energy levels of a steady cycle with a constant total inertia (the textbook mean).
+
+    With J constant the energy form gives ω_max² − ω_min² = 2ΔW_max/J and, with the textbook mean,
+    ω_max + ω_min = 2ω_m; so ω_min = ω_m − ΔW_max/(2Jω_m) and ω_k = sqrt(ω_min² + 2(E_k − E_min)/J).
+
+    Parameters
+    ----------
+    E : array_like
+        Energy levels at the boundaries of the cycle, J (any origin).
+    J : float
+        Total inertia on the shaft (J_e + J_F), kg·m², keyword-only.
+    omega_m : float
+        Mean speed (ω_max + ω_min)/2, rad/s.
+
+    Returns
+    -------
+    ndarray
+        ω at each level, rad/s.
+
+    Examples
+    --------
+    >>> w = level_speeds([0.0, -50.0, 500.0, 400.0, 525.0, 25.0, 50.0, 0.0], J=43.69, omega_m=20 * np.pi)
+    >>> round(float(w.max() + w.min()) / 2 / (20 * np.pi), 12), round(float(w[4] - w[1]) * 43.69 * 20 * np.pi, 6)
+    (1.0, 575.0)
+    """
+    levels = np.asarray(E, dtype=float)
+    J = _finite(J, "J", positive=True, hint="the total inertia on the shaft, kg·m²")
+    omega_m = _finite(omega_m, "omega_m", positive=True, hint="rad/s")
+    if levels.ndim != 1 or levels.size < 2 or not np.all(np.isfinite(levels)):
+        raise InputError("the energy levels must be two or more finite numbers, J")
+    dW = float(levels.max() - levels.min())
+    w_min = omega_m - dW / (2.0 * J * omega_m)
+    if not w_min > 0:
+        raise InputError(f"with J = {J:g} kg·m² the speed would fall to zero or below (ΔW_max = {dW:g} J against "
+                         f"½Jω_m² = {0.5 * J * omega_m**2:g} J); give a larger J")
+    omega: np.ndarray = np.sqrt(w_min**2 + 2.0 * (levels - levels.min()) / J)
+    return omega
+
+
 def transfer(J_F: float, *, omega_from: float, omega_to: float) -> float:
     """A flywheel moved to another shaft: J_Fi = J_F (ω/ω_i)², kg·m².
 
@@ -258,7 +301,7 @@ def rim_flywheel(
 
 @dataclass(frozen=True)
 class DiscFlywheel:
-    """A solid disc flywheel: J = m D²/8, m = ρπD²B/4 (m, kg, m/s)."""
+    """A solid disc flywheel: J = m D²/8, m = ρπD²B/4 (m, kg, m/s); ``speed_ok`` against ``speed_limit``."""
 
     J: float
     D: float
@@ -266,9 +309,20 @@ class DiscFlywheel:
     m: float
     rho: float
     rim_speed: float
+    speed_limit: float = RIM_SPEED_LIMIT["steel"]
+
+    @property
+    def speed_ok(self) -> bool:
+        return self.rim_speed <= self.speed_limit
+
+    @property
+    def flywheel_moment(self) -> float:
+        """m D², kg·m²."""
+        return self.m * self.D**2
 
 
-def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["steel"]) -> DiscFlywheel:
+def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["steel"],
+                  speed_limit: float = RIM_SPEED_LIMIT["steel"]) -> DiscFlywheel:
     """Size a solid disc of diameter D for inertia J: B = 32 J / (ρ π D⁴).
 
     >>> d = disc_flywheel(2.0, D=0.5, n_rpm=300.0)
@@ -281,7 +335,8 @@ def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["ste
     n = _finite(n_rpm, "n", positive=True)
     m = 8.0 * J / D**2
     B = 4.0 * m / (rho * math.pi * D**2)
-    return DiscFlywheel(J=J, D=D, B=B, m=m, rho=rho, rim_speed=math.pi * D * n / 60.0)
+    v_lim = _finite(speed_limit, "speed_limit", positive=True)
+    return DiscFlywheel(J=J, D=D, B=B, m=m, rho=rho, rim_speed=math.pi * D * n / 60.0, speed_limit=v_lim)
 
 
 def mass_at_radius_of_gyration(J: float, *, k: float) -> float:

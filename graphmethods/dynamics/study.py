@@ -151,6 +151,86 @@ class Study:
         pos = self.mechanism.positions(phi_from_start=x.ravel())
         return resisting_moment(pos, self.mechanism.velocity_plans(pos), self.case.load).reshape(x.shape)
 
+    @property
+    def is_engine(self) -> bool:
+        """True when the load's net work drives the crank (an engine's gas force from its indicator
+        diagram): the driving moment is then the curve and the constant from the work balance resists."""
+        return self.M_d < 0.0
+
+    def moment_curves(self, phi) -> tuple[np.ndarray, np.ndarray]:
+        """The reduced driving and resisting moments M_d(φ), M_r(φ) at crank rotations ``phi`` (rad
+        from position 0), N·m, both as a user names them: for a working machine M_d is the constant
+        of the work balance and M_r the load's moment; for an engine (:attr:`is_engine`) M_d is the
+        load's moment (positive where it drives, negative on the compression stroke) and M_r the
+        constant. M_d − M_r is the same reduced moment either way.
+
+        >>> from graphmethods.problems.builtin import case
+        >>> e = Study(case("engine"))
+        >>> M_d, M_r = e.moment_curves(np.array([0.5, 4.0]))
+        >>> e.is_engine, bool(M_d[0] > 0 > M_d[1]), round(float(M_r[0]), 2) == round(-e.M_d, 2)
+        (True, True, True)
+        """
+        x = np.asarray(phi, dtype=float)
+        load = np.asarray(self._M_r_exact(x), dtype=float)
+        const = np.full_like(load, self.M_d)
+        if self.is_engine:
+            return -load, -const
+        return const, load
+
+    def power(self, *, eta: float = 1.0, reserve: float = 1.0) -> dict:
+        """The mean power N = M_m·ω_m (W) and, for a working machine, the motor for it.
+
+        M_m is the mean driving moment: M_d of the work balance for a working machine, the constant
+        resistance for an engine (N is then the engine's mean power). With a drive of efficiency η
+        between the motor and the crank (``eta``; mechanisms in series or parallel combined with
+        :mod:`graphmethods.dynamics.power`) the driving moment becomes M_d/η, and the motor is the
+        next IEC rated power above N/η·reserve.
+
+        >>> from graphmethods.problems.builtin import case
+        >>> p = Study(case("press")).power(eta=0.85)
+        >>> round(p["N_mean"], 1), round(p["M_d_with_losses"], 2), p["motor_P_rated_kW"]
+        (4506.0, 168.74, 5.5)
+        """
+        from graphmethods.dynamics.power import choose_motor, mean_power, moment_with_losses
+
+        M_m = -self.M_d if self.is_engine else self.M_d
+        out = {"N_mean": mean_power(M_m=M_m, omega_m=self.omega_m), "M_m": M_m}
+        if self.is_engine:
+            out["note"] = "an engine: N_mean is the mean power it gives at ω_m (no motor to choose)"
+            return out
+        m = choose_motor(out["N_mean"], eta=eta, reserve=reserve)
+        out.update(eta=m.eta, reserve=m.reserve, M_d_with_losses=moment_with_losses(self.M_d, eta=eta),
+                   N_required=m.N_required, motor_P_rated_kW=m.P_rated_kW)
+        return out
+
+    def translating(self, point: str | None = None):
+        """The translating equivalent link at ``point`` (default: the point the load acts on, the
+        slider or ram): m_e = Σ[m(v_S/v)² + J_S(ω/v)²] straight from the plans, and
+        F_e = (M_d − M_r)/(v/ω₁), the power of every force and moment over the link's speed, at
+        positions 0…m except the dead centres (see :mod:`graphmethods.dynamics.translating`).
+
+        >>> from graphmethods.problems.builtin import case
+        >>> t = Study(case("scotch-yoke"), positions=4).translating()
+        >>> t.index.tolist(), t.dead_centres.tolist(), t.m_e.round(4).tolist()
+        ([1, 3], [0, 2, 4], [30.5, 30.5])
+        """
+        from graphmethods.dynamics.translating import equivalent_mass
+
+        if point is None:
+            if getattr(self.case.load, "kind", None) not in ("force", "diagram"):
+                raise InputError("this problem's load is a moment on a turning link; name the point of a translating "
+                                 "link (a slider or ram) for the equivalent mass")
+            point = str(self.case.load.at)
+        tr = equivalent_mass(self.plans, self.case.inertias, point=point)
+        M_e = (self.M_d - self.M_r)[tr.index]
+        from dataclasses import replace
+
+        F_e = np.array(M_e / tr.v_q)
+        F_e.setflags(write=False)
+        phi = np.array(self.phi[tr.index])
+        phi.setflags(write=False)
+        return replace(tr, F_e=F_e, phi=phi)
+
     @_logged
     def model(self) -> ReducedModel:
         """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""

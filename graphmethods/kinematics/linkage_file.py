@@ -277,7 +277,8 @@ def linkage_case(data: Mapping, *, source: str = "<dict>"):
 
 
 def _diagram_load(rd: _Reader, ld: Mapping, lk: Linkage):
-    """``{"diagram": [{"stroke": "working", "s": [...], "F": [...], "drives": true}, ...], "on": "B"}``."""
+    """``{"diagram": [{"stroke": "working", "s": [...], "F": [...], "drives": true}, ...], "on": "B"}``; a part
+    may give the indicator diagram's gauge pressure ``"p"`` (Pa) and the bore ``"bore"`` (m) instead of F."""
     from graphmethods.kinematics.case import DiagramLoad
 
     if any(k in ld for k in ("force", "moment", "from", "to")):
@@ -294,18 +295,29 @@ def _diagram_load(rd: _Reader, ld: Mapping, lk: Linkage):
     out = []
     for i, p in enumerate(parts):
         key = f"load.diagram[{i}]"
-        p = rd.obj(key, p, ("stroke", "s", "F", "drives"))
+        p = rd.obj(key, p, ("stroke", "s", "F", "p", "bore", "drives"))
         stroke = p.get("stroke", "working")
         if stroke not in ("working", "return"):
             rd.err(f"{key}.stroke", f'must be "working" or "return"; got {stroke!r}')
         drives = p.get("drives", False)
         if not isinstance(drives, bool):
             rd.err(f"{key}.drives", f"must be true (the force drives the slider) or false (it resists); got {drives!r}")
-        xs, Fs = p.get("s"), p.get("F")
+        if ("F" in p) == ("p" in p):
+            rd.err(key, "give the force F (N) or the indicator diagram's gauge pressure p (Pa, with the bore in m), "
+                        "one of them")
+        area = 1.0
+        if "p" in p:             # an indicator diagram: pressure against the stroke, F = p·πD²/4
+            if "bore" not in p:
+                rd.err(f"{key}.bore", "is missing: the cylinder's bore D (m) turns the pressure p into F = p·πD²/4")
+            area = math.pi * rd.number(f"{key}.bore", p["bore"], "positive") ** 2 / 4.0
+        elif "bore" in p:
+            rd.err(f"{key}.bore", "goes with a pressure p (Pa); with a force F leave it out")
+        fk = "p" if "p" in p else "F"
+        xs, Fs = p.get("s"), p.get(fk)
         if not isinstance(xs, list) or not isinstance(Fs, list) or len(xs) != len(Fs) or len(xs) < 2:
-            rd.err(f"{key}.s", "s and F must be lists of the same length, two points or more")
+            rd.err(f"{key}.s", f"s and {fk} must be lists of the same length, two points or more")
         x = tuple(rd.number(f"{key}.s[{j}]", v, "fraction") for j, v in enumerate(xs))
-        F = tuple(rd.number(f"{key}.F[{j}]", v, "nonneg") for j, v in enumerate(Fs))
+        F = tuple(area * rd.number(f"{key}.{fk}[{j}]", v, "nonneg") for j, v in enumerate(Fs))
         if any(b < a for a, b in zip(x, x[1:])):
             rd.err(f"{key}.s", "the stroke fractions must not decrease (repeat one for a jump)")
         out.append((x, F, stroke, drives))

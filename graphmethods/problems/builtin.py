@@ -31,6 +31,7 @@ LINKAGES = {
     "whitworth": "whitworth_quick_return.json",
     "two-slider": "two_slider_compressor.json",
     "engine": "single_cylinder_engine.json",
+    "scotch-yoke": "scotch_yoke_pump.json",
 }
 
 #: cycle problems: name -> function of :mod:`graphmethods.problems` that builds it

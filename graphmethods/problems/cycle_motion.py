@@ -9,7 +9,10 @@ curves of φ, with a constant inertia J (J_e, plus the flywheel J_F for its [δ]
   :func:`~graphmethods.dynamics.motion.periodic_motion` (ω_max, ω_min = ω_m(1 ± δ/2) with the
   approximate J_F, as the textbook's constant-J_e method promises);
 
-and ε(φ) = (M_d − M_r)/J. A problem given only as areas or works has no M(φ) and is refused.
+and ε(φ) = (M_d − M_r)/J. A problem given only as areas or works (W1, W2) has no M(φ): between
+its boundaries neither ω nor ε is defined, but at the boundaries a, b, c, … the energy levels E_k
+give ω_k = sqrt(ω_min² + 2(E_k − E_min)/J) with the textbook mean (:func:`boundary_speeds`); ε needs
+the moments and is refused with that reason.
 
 >>> from graphmethods.problems import w4_exact
 >>> cm = cycle_motion(w4_exact())
@@ -94,3 +97,93 @@ def cycle_motion(problem) -> CycleMotion:
                          breaks=tuple(float(v) for v in np.unique(D.phi[:-1])))
     mo = periodic_motion(model, J_F=0.0, omega_m=omega_m)
     return CycleMotion(problem, J_total, mo.T0, mo.omega_m, mo.delta)
+
+
+@dataclass(frozen=True, eq=False)
+class BoundarySpeeds:
+    """ω at the boundaries of a cycle given as areas or works (W1, W2), J constant.
+
+    Attributes
+    ----------
+    labels : tuple of str
+        The boundaries a, b, c, … (the last is the period's end, equal to a).
+    E : ndarray
+        Energy levels at them, J (or the problem's work unit), from the first.
+    omega : ndarray
+        ω at them, rad/s.
+    J : float
+        The constant inertia J_e + J_F, kg·m² (or the problem's unit).
+    omega_m, delta : float
+        The mean speed (ω_max + ω_min)/2, rad/s, and δ of this motion.
+    """
+
+    labels: tuple[str, ...]
+    E: np.ndarray
+    omega: np.ndarray
+    J: float
+    omega_m: float
+    delta: float
+
+    def to_dict(self) -> dict:
+        return {"labels": list(self.labels), "E": [float(v) for v in self.E],
+                "omega": [float(v) for v in self.omega], "J": self.J, "omega_m": self.omega_m, "delta": self.delta}
+
+
+def boundary_speeds(problem, *, J: float | None = None) -> BoundarySpeeds:
+    """ω at the boundaries of a cycle problem (areas, works or curves), J constant.
+
+    The steady motion with the textbook mean ω_m = πn/30: with J = J_e + J_F (J_F of the approximate
+    method for [δ], unless ``J`` gives the total inertia) the energy form gives
+    ω_max² − ω_min² = 2ΔW_max/J and ω_max + ω_min = 2ω_m, so ω_min = ω_m − ΔW_max/(2 J ω_m) and
+    ω_k² = ω_min² + 2(E_k − E_min)/J.
+
+    Parameters
+    ----------
+    problem : CycleProblem
+        With n (rev/min) and, unless ``J`` is given, [δ].
+    J : float, optional
+        The total inertia on the shaft, kg·m² (keyword-only); by default J_e + J_F for [δ].
+
+    Returns
+    -------
+    BoundarySpeeds
+
+    Examples
+    --------
+    W1: n = 600 rev/min, [δ] = 1/300, ΔW_max = 575 J from b (lowest) to e (highest):
+
+    >>> from graphmethods.problems import w1
+    >>> b = boundary_speeds(w1())
+    >>> [round(float(w), 4) for w in b.omega[[1, 4]]], round(b.delta, 6)
+    ([62.7271, 62.9366], 0.003333)
+    """
+    ew = problem.excess_work
+    if problem.n_rpm is None:
+        raise InputError(f"problem {problem.id} states no speed n: the speeds at its boundaries are not defined; "
+                         f"give n (rev/min)")
+    omega_m = math.pi * float(problem.n_rpm) / 30.0
+    if J is None:
+        if problem.delta is None:
+            raise InputError(f"problem {problem.id} states no [δ]: give the total inertia J (kg·m²) instead")
+        fw = problem.flywheel()
+        J_total = float(fw.J_total) if fw.needed else float(problem.J_e)
+    else:
+        J_total = float(J)
+    if not (math.isfinite(J_total) and J_total > 0):
+        raise InputError(f"problem {problem.id}: the total inertia J = {J_total!r} must be a positive number of "
+                         f"kg·m²")
+    from graphmethods.dynamics.flywheel import level_speeds
+
+    E = np.asarray(ew.E, dtype=float)
+    try:
+        omega = level_speeds(E, J=J_total, omega_m=omega_m)
+    except InputError as exc:
+        raise InputError(f"problem {problem.id}: {exc}") from None
+    return BoundarySpeeds(tuple(ew.labels), omega=_ro(omega), E=_ro(E), J=J_total, omega_m=omega_m,
+                          delta=float((omega.max() - omega.min()) / omega_m))
+
+
+def _ro(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, dtype=float)
+    a.setflags(write=False)
+    return a

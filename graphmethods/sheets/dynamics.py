@@ -323,13 +323,13 @@ def as_study(obj, positions: int = 12):
 
 
 def require_step_load(study, figure: str) -> None:
-    """Refuse a figure that draws the load as a working-stroke force or moment against a constant
-    driving moment when the problem gives its load as force diagrams (an engine's indicator diagram)."""
+    """Refuse a figure that draws the load as one working-stroke force (the Zhukovsky lever) when the
+    problem gives its load as force diagrams (an engine's indicator diagram)."""
     if getattr(study.case.load, "kind", None) == "diagram":
         raise InputError(f"{figure}: this problem's load is given as force diagrams (an indicator diagram); the "
-                         f"figure draws a working-stroke load against a constant driving moment and does not draw "
-                         f"diagram loads yet; the study's numbers (graphmethods study --json) and the J_e, ΔT and "
-                         f"speed graphs are available")
+                         f"figure applies one working-stroke force and does not draw diagram loads yet; the moment "
+                         f"graph, the energy–mass diagram, the dynamic-analysis sheet and the study's numbers "
+                         f"(graphmethods study --json) are available")
 
 
 def problem_text(study, nt="en") -> str:
@@ -701,6 +701,36 @@ def moment_curves(study) -> tuple[np.ndarray, np.ndarray, float]:
     return np.asarray(M_r.M, dtype=float), np.asarray(M_r.phi, dtype=float), float(M_d.mean())
 
 
+@dataclass(frozen=True)
+class DrawnMoments:
+    """The reduced moments as a graph draws them: one curve through the positions (straight chords)
+    and one constant from the work balance. For a working machine the curve is M_r and the constant
+    M_d; for an engine (:attr:`graphmethods.dynamics.study.Study.is_engine`) the curve is the driving
+    moment M_d of the indicator diagram (negative on the compression stroke) and the constant the
+    resistance M_r."""
+
+    curves: tuple
+    dots: tuple
+    lo: float
+    hi: float
+    constant_key: str
+    constant: float
+
+
+def drawn_moments(study, nt) -> DrawnMoments:
+    """:class:`DrawnMoments` of a study in the notation ``nt`` (its curve names)."""
+    M_r, phi_k, M_d = moment_curves(study)
+    ends = np.array([0.0, TWO_PI])
+    if study.is_engine:
+        curve, ck, cv, key = -M_r, "M_r", -M_d, "M_d"
+    else:
+        curve, ck, cv, key = M_r, "M_d", M_d, "M_r"
+    curves = (CurveSpec(key, phi_k, curve, MAIN, sym(nt, key)),
+              CurveSpec(ck, ends, np.array([cv, cv]), MAIN, sym(nt, ck)))
+    return DrawnMoments(curves, (phi_k, curve), float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck,
+                        float(cv))
+
+
 def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, title=None, title_block: bool = True,
                  name: str = "moment-graph") -> Scene:
     """The reduced moments M_d and M_r against φ, as the graphical method draws them.
@@ -719,17 +749,14 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     31.054517
     """
     study = as_study(study)
-    require_step_load(study, "moment graph")
     nt = get_notation(notation)
-    M_r, phi_k, M_d = moment_curves(study)
-    curves = [CurveSpec("M_r", phi_k, M_r, MAIN, sym(nt, "M_r")),
-              CurveSpec("M_d", np.array([0.0, TWO_PI]), np.array([M_d, M_d]), MAIN, sym(nt, "M_d"))]
-    legend = f"{sym(nt, 'M_d')} = {value_text(nt, M_d, 'N·m')} ({word(nt, 'work_balance')})"
+    dm = drawn_moments(study, nt)
+    legend = f"{sym(nt, dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({word(nt, 'work_balance')})"
     return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'moment_graph')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}",
-                        page=page, title_block=title_block, name=name, curves=curves, y_lo=0.0,
-                        y_hi=float(max(M_r.max(), M_d)), y_symbol=sym(nt, "M"), y_unit="N·m",
+                        page=page, title_block=title_block, name=name, curves=list(dm.curves), y_lo=dm.lo,
+                        y_hi=dm.hi, y_symbol=sym(nt, "M"), y_unit="N·m",
                         scale_symbol=sym(nt, "mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
-                        dots=(phi_k, M_r), legend=legend, zero=True)
+                        dots=dm.dots, legend=legend, zero=True)
 
 
 # ----------------------------------------------------------------------------- 3. ΔT(φ) or T(φ)

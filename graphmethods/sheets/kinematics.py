@@ -346,6 +346,14 @@ class _Parts:
     paths: tuple[str, ...]
 
 
+def _translating_yokes(mech) -> list:
+    """The RPP groups of a linkage whose yoke slides on the frame (a sine mechanism, a Scotch yoke)."""
+    from graphmethods.kinematics.groups import RPP
+
+    lk = getattr(mech, "linkage", None)
+    return [g for g in getattr(lk, "groups", ()) if isinstance(g, RPP) and g.guide.link == "0"]
+
+
 def _parts(mech, pos) -> _Parts:
     fixed = getattr(mech, "fixed_joints", None) or tuple(
         j for j in mech.joints if np.ptp(pos.coords[j], axis=0).max() == 0.0 and j.startswith("O"))
@@ -354,8 +362,8 @@ def _parts(mech, pos) -> _Parts:
     pin = mech.crank_pin
     centre = next(x for x, y in links if y == pin)
     block = None
-    if "A3" in mech.joints:
-        pivot = next(x for x, y in links if x in fixed and x != centre)
+    pivot = next((x for x, y in links if x in fixed and x != centre), None) if "A3" in mech.joints else None
+    if pivot is not None:        # a block on a turning slotted lever (a yoke that translates has no pivot)
         block = (pin, pivot)
     if sliders:
         output = next(iter(sliders))
@@ -540,6 +548,14 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
             d = pos.coords[bp][thick] - pos.coords[pivot][thick]
             top_els.append(SliderBlock(P(pos.coords[bp][thick]), angle_deg=_paper_deg(d), length_mm=8.0,
                                        height_mm=4.5, name=f"block-{bp}"))
+        for g in _translating_yokes(mech):       # a yoke (RPP on the frame's guide): its slot through R, the block at P
+            R_xy, P_xy = pos.coords[g.R][thick], pos.coords[g.P][thick]
+            sd = np.array([math.cos(g.guide.angle + g.slot_angle), math.sin(g.guide.angle + g.slot_angle)])
+            base = R_xy + g.e * np.array([-sd[1], sd[0]])
+            half = 1.15 * r
+            top_els.append(Line(P(base - sd * half), P(base + sd * half), style=THICK, name=f"yoke-{g.R}"))
+            top_els.append(SliderBlock(P(P_xy), angle_deg=_paper_deg(sd), length_mm=8.0, height_mm=4.5,
+                                       name=f"block-{g.P}"))
         for j in mech.joints:
             if j in parts.fixed or j in parts.sliders or j == "A3" or (parts.rocker_block and j == parts.rocker_block[0]):
                 continue
@@ -1112,9 +1128,9 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
         link = mech.link_numbers[num]
         w = float(plans.omega(link)[k])
         x, y = mech.link_joints.get(link, (None, None))
-        if x is None:                                   # the block turns with the rocker
-            other = next(nn for nn, ll in mech.link_numbers.items() if nn != num and nn >= 2)
-            out.append(f"ω_{{{num}}} = ω_{{{other}}}")
+        if x is None:                                   # the block turns with the rocker, or translates
+            other = next((nn for nn, ll in mech.link_numbers.items() if nn != num and nn >= 2), None)
+            out.append(f"ω_{{{num}}} = ω_{{{other}}}" if other is not None else f"ω_{{{num}}} = 0")
             continue
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
         num_sym = f"v_{{{y}}}" if x.startswith("O") else f"v_{{{_rel_name(mech, y, x)}}}"

@@ -48,8 +48,8 @@ from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import (
     PROJECTION, SMALL_MM, TEXT_MM, TWO_PI, CurveSpec, SheetFrame, as_study, clear_ticks, delta_T_curve,
-    fine_angles, given_angle_scale, given_scale, inertia_curve, moment_curves, phi_graph_elements, problem_text,
-    quantity, require_step_load, sym, turned_inertia_elements, unit, value_text,
+    drawn_moments, fine_angles, given_angle_scale, given_scale, inertia_curve, phi_graph_elements, problem_text,
+    quantity, sym, turned_inertia_elements, unit, value_text,
 )
 
 RAY = Style(width_mm=0.35)
@@ -69,6 +69,7 @@ WORDS = {
     "delta":            ("coefficient of fluctuation", "коэффициент неравномерности", "速度不均匀系数"),
     "omega_m":          ("mean angular velocity", "средняя угловая скорость", "平均角速度"),
     "M_d":              ("driving moment", "движущий момент", "等效驱动力矩"),
+    "M_r":              ("resisting moment", "момент сопротивления", "等效阻抗力矩"),
     "scale_J":          ("scale of J_e", "масштаб J_п", "J_e比例尺"),
     "scale_T":          ("scale of ΔT", "масштаб ΔT", "ΔE比例尺"),
     "scale_M":          ("scale of M", "масштаб M", "M比例尺"),
@@ -148,7 +149,6 @@ def diagram_data(source, *, tangents: str = "exact", notation="en") -> DiagramDa
         return DiagramData(np.asarray(source.x_mm) * source.mu_J, np.asarray(source.y_mm) * source.mu_T,
                            np.asarray(source.phi), source.omega_m, source.delta, source.tangents)
     study = as_study(source)
-    require_step_load(study, "energy–mass diagram")
     return DiagramData(np.asarray(study.J_e, dtype=float), np.asarray(study.delta_T, dtype=float),
                        np.asarray(study.phi, dtype=float), float(study.omega_m), float(study.delta), tangents,
                        problem_text(study, notation), estimate=study.wittenbauer if tangents == "exact" else None)
@@ -571,7 +571,6 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     (('A2', 'landscape'), False)
     """
     study = as_study(study)
-    require_step_load(study, "dynamic-analysis sheet")
     nt = get_notation(notation)
     m = study.m
     sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study, nt),
@@ -582,12 +581,12 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     phi = fine_angles(m)
     J_fine = inertia_curve(study, phi).J_e
     dT_fine = delta_T_curve(study, phi)
-    M_r_k, _, M_d = moment_curves(study)
+    dm = drawn_moments(study, nt)
     J_to = float(max(J_k.max(), J_fine.max()))
     _, T_hi, T_lo = data.extent()
     T_hi = max(T_hi, float(dT_fine.max()))
     T_lo = min(T_lo, float(dT_fine.min()))
-    M_hi = float(max(M_r_k.max(), M_d))
+    M_hi, M_lo = dm.hi, dm.lo
     W, H = x1 - x0, sheet.caption_y - sheet.top
     # the rows: [M graph | turned J_e graph] over [ΔT graph | diagram]
     y_Jt = sheet.top + 14.0                                  # the turned graph's J_e axis
@@ -618,12 +617,12 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     d_top = y_Jt + L_phi + 22.0                               # the diagram's top
     s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, d_bottom - d_top, what="the ΔT axis")
     y0_T = d_top + s_T.to_mm(T_hi)                           # the level ΔT = 0
-    s_M = given_scale(mu_M, sym(nt, "mu_M"), unit(nt, "N·m"), M_hi, y_Jt + L_phi - 10.0 - (sheet.top + 16.0),
-                      what="the moment graph")
-    y_M0 = y_Jt + L_phi - 10.0                                # the M graph's φ axis
+    s_M = given_scale(mu_M, sym(nt, "mu_M"), unit(nt, "N·m"), M_hi - M_lo,
+                      y_Jt + L_phi - 10.0 - (sheet.top + 16.0), what="the moment graph")
+    y_M0 = y_Jt + L_phi - 10.0 - s_M.to_mm(-M_lo)             # the M graph's φ axis (an engine's M_d dips below)
     x_L = x0 + 22.0
     left_end = x_L + L_phi + 12.0
-    probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, M_d, s_M, s_phi)))
+    probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi)))
     table_w = _table(probe_rows, (0, 0)).width_mm
     J_label_w = markup.text_width_mm(quantity(nt, sym(nt, "J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
     room_J = x1 - table_w - 12.0 - J_label_w - (left_end + 40.0)
@@ -659,11 +658,9 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                                      J_k=J_k, nt=nt, occ=occ, J_to=J_to, prefix="J-", within=sheet.box)
     within_left = (x0, sheet.top, x_a - 10.0, sheet.caption_y - 6.0)
     M_els = phi_graph_elements(origin=(x_L, y_M0), s_phi=s_phi, s_Y=s_M, m=m, phi_k=phi_k,
-                               curves=[CurveSpec("M_r", phi_k, M_r_k, MAIN, sym(nt, "M_r")),
-                                       CurveSpec("M_d", np.array([0.0, TWO_PI]), np.array([M_d, M_d]), MAIN,
-                                                 sym(nt, "M_d"))],
-                               nt=nt, occ=occ, y_from=0.0, y_to=M_hi, axis_level=0.0,
-                               y_label=quantity(nt, sym(nt, "M"), "N·m"), dots=(phi_k, M_r_k), prefix="M-",
+                               curves=list(dm.curves),
+                               nt=nt, occ=occ, y_from=M_lo, y_to=M_hi, axis_level=0.0,
+                               y_label=quantity(nt, sym(nt, "M"), "N·m"), dots=dm.dots, prefix="M-",
                                within=within_left)
     T_els = phi_graph_elements(origin=(x_L, y0_T), s_phi=s_phi, s_Y=s_T, m=m, phi_k=phi_k,
                                curves=[CurveSpec("dT", phi, dT_fine, MAIN, "")], nt=nt, occ=occ,
@@ -671,7 +668,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                                axis_level=0.0, y_label=quantity(nt, sym(nt, "dT"), "J"), dots=(phi_k, dT_k),
                                prefix="T-", within=within_left)
     O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
-    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, M_d, s_M, s_phi), on_sheet=O1_drawn))
+    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, dm, s_M, s_phi), on_sheet=O1_drawn))
     w = _table(rows, (0, 0)).width_mm
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
     table = _place_table(occ, rows, cands)
@@ -709,10 +706,11 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
 
 
-def _extra_rows(nt, M_d: float, s_M: Scale, s_phi: Scale) -> tuple:
+def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:
     n = get_notation(nt).number
     mm = get_notation(nt).unit("mm")
-    return ((_w(nt, "M_d"), f"{sym(nt, 'M_d')} = {value_text(nt, M_d, 'N·m')}"),
+    k = dm.constant_key
+    return ((_w(nt, k), f"{sym(nt, k)} = {value_text(nt, dm.constant, 'N·m')}"),
             (_w(nt, "scale_M"), f"{sym(nt, 'mu_M')} = {n(s_M.per_mm)} {unit(nt, 'N·m')}/{mm}"),
             (_w(nt, "scale_phi"), f"{sym(nt, 'mu_phi')} = {n(s_phi.per_mm)} {unit(nt, 'rad')}/{mm}"))
 

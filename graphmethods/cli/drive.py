@@ -1,0 +1,106 @@
+"""``graphmethods drive``: a drive of several masses reduced to one shaft (two-, three-, n-mass models).
+
+    graphmethods drive --J 0.08,0.5,12 --u 6,2,1 --c 2000,40000 --c-u 6,1 --M 30,0,-160
+    graphmethods drive ... --json --figure drive.svg --lang ru
+
+Each mass J_i (kg·m²) turns at u_i·ω, each elastic shaft between two masses has the stiffness c_j
+(N·m/rad) and turns at its own u_j·ω; the reduced chain has J_i' = J_i u_i², c_j' = c_j u_j²,
+M_i' = M_i u_i, and its natural frequencies. An existing figure file is kept unless --force.
+"""
+
+from __future__ import annotations
+
+import argparse
+import pathlib
+
+from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.cli.flywheel import parse_list
+from graphmethods.units import json_text
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("drive", help="a drive of several masses reduced to one shaft: J', c', natural frequencies",
+                       description="Reduce a chain of masses and elastic shafts (a motor, gears, the machine) to one "
+                                   "shaft by the squares of the speed ratios, and find its natural frequencies.",
+                       epilog="Example: graphmethods drive --J 0.08,0.5,12 --u 6,2,1 --c 2000,40000 --c-u 6,1")
+    p.add_argument("--J", required=True, metavar="J1,J2,...", help="the masses' inertias in order, kg·m²")
+    p.add_argument("--u", default=None, metavar="U1,U2,...",
+                   help="their speed ratios ω_i/ω to the shaft reduced to (default all 1)")
+    p.add_argument("--c", required=True, metavar="C1,...", help="the stiffnesses of the shafts between them, N·m/rad")
+    p.add_argument("--c-u", default=None, metavar="U1,...", help="the shafts' speed ratios (default all 1)")
+    p.add_argument("--M", default=None, metavar="M1,M2,...", help="moments on the masses, N·m (+ driving)")
+    p.add_argument("--names", default=None, metavar="NAME1,NAME2,...", help="names of the masses")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--figure", default=None, metavar="FILE.svg|.pdf|.png", help="also draw the reduced scheme")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figure (default en)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing figure file")
+    p.set_defaults(func=run)
+
+
+def _list(text: str | None, name: str, n: int, default: float) -> list[float]:
+    if text is None:
+        return [default] * n
+    values = parse_list(text, name)
+    if len(values) != n:
+        raise InputError(f"{name}: give {n} values, one per {'mass' if name in ('--u', '--M') else 'shaft'}; "
+                         f"got {len(values)}")
+    return values
+
+
+def run(args: argparse.Namespace) -> int:
+    from graphmethods.dynamics.multimass import Mass, Shaft, reduce_chain
+
+    J = parse_list(args.J, "--J")
+    n = len(J)
+    u = _list(args.u, "--u", n, 1.0)
+    M = _list(args.M, "--M", n, 0.0)
+    c = parse_list(args.c, "--c")
+    cu = _list(args.c_u, "--c-u", len(c), 1.0)
+    names = [s.strip() for s in args.names.split(",")] if args.names else [str(i + 1) for i in range(n)]
+    if len(names) != n:
+        raise InputError(f"--names: give {n} names, one per mass; got {len(names)}")
+    chain = reduce_chain([Mass(nm, j, ui, mi) for nm, j, ui, mi in zip(names, J, u, M)],
+                         [Shaft(f"{i + 1}", ci, ui) for i, (ci, ui) in enumerate(zip(c, cu))])
+    path = pathlib.Path(args.figure) if args.figure is not None else None
+    blob = None
+    if path is not None:
+        suffix = path.suffix.lower()
+        if suffix not in (".svg", ".pdf", ".png"):
+            raise InputError(f"--figure {path}: give a file name ending in .svg, .pdf or .png")
+        if path.exists() and not args.force:
+            raise OutputExistsError(f"{path} exists; use --force to overwrite it")
+        if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
+            raise InputError(f"--figure {path}: its folder does not exist or it is a folder; give a file in a folder "
+                             f"that exists")
+        from graphmethods.sheets.drive_scheme import drive_scheme
+
+        scene = drive_scheme(chain, notation=args.lang)
+        if suffix == ".svg":
+            from graphmethods.render import svg
+
+            blob = svg.to_bytes(scene)
+        elif suffix == ".pdf":
+            from graphmethods.render import pdf
+
+            blob = pdf.to_bytes([scene])
+        else:
+            from graphmethods.render import mpl
+
+            blob = mpl.to_png_bytes(scene)
+    out = chain.to_dict()
+    if path is not None and blob is not None:
+        from graphmethods.render.files import write_atomic
+
+        write_atomic(path, blob, overwrite=args.force)
+        out["figure"] = str(path)
+    if args.json:
+        print(json_text(out, indent=1))
+        return 0
+    width = max(map(len, out))
+    for key, value in out.items():
+        if isinstance(value, list):
+            value = ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in value)
+        elif isinstance(value, float):
+            value = f"{value:.6g}"
+        print(f"{key.ljust(width)}  {value}")
+    return 0

@@ -1,0 +1,121 @@
+"""The reduced scheme of a drive of several masses (two-, three-, n-mass torsional models).
+
+Top: the drive as given, each mass a disc on its shaft with its speed ratio u_i = ω_i/ω; bottom:
+the same chain reduced to one shaft, J_i' = J_i·u_i² and c_j' = c_j·u_j² written at the discs and
+the shafts. A scheme, not a drawing to scale: disc heights only grow with J' (its fourth root, so
+that a 100 times larger inertia is about three times taller); the numbers are in the table beside
+it with the natural frequencies. A4 landscape, en/ru/zh.
+
+>>> from graphmethods.dynamics.multimass import Mass, Shaft, reduce_chain
+>>> d = reduce_chain([Mass("1", 0.05, 4.0), Mass("2", 2.0, 1.0)], [Shaft("1", 800.0, 4.0)])
+>>> s = drive_scheme(d)
+>>> s.name, s.element("reduced-disc-2").name
+('drive-scheme', 'reduced-disc-2')
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from graphmethods.scene import Line, Page, Polyline, Scene, Text
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import Table
+from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.sheets.dynamics import SheetFrame, unit
+from graphmethods.sheets.layout import TEXT_MM
+
+THICK = Style(width_mm=0.5)
+_LANG = {"en": 0, "ru": 1, "zh": 2}
+_W = {
+    "title": ("Drive of several masses and its reduced scheme", "Многомассовый привод и его приведённая схема",
+              "多质量传动系统及其等效简图"),
+    "given": ("the drive (u = ω_i/ω)", "привод (u = ω_i/ω)", "传动系统 (u = ω_i/ω)"),
+    "reduced": ("reduced to the shaft u = 1", "приведённая схема (к валу u = 1)", "等效到 u = 1 的轴"),
+    "mass": ("mass", "масса", "质量"),
+    "shaft": ("shaft", "вал", "轴"),
+    "freq": ("natural frequencies", "собственные частоты", "固有频率"),
+    "rigid": ("rigid drive", "жёсткий привод", "刚性传动"),
+}
+
+
+def _w(nt: Any, key: str) -> str:
+    return _W[key][_LANG.get(nt.code, 0)]
+
+
+def _disc(x: float, y: float, h: float, name: str, style: Style) -> Polyline:
+    return Polyline(((x - 2.5, y - h / 2), (x + 2.5, y - h / 2), (x + 2.5, y + h / 2), (x - 2.5, y + h / 2)),
+                    closed=True, style=style, name=name)
+
+
+def _spring(x0: float, x1: float, y: float, name: str) -> Polyline:
+    """A shaft with a zigzag in its middle third (the elastic element)."""
+    a, b = x0 + (x1 - x0) / 3, x1 - (x1 - x0) / 3
+    zig = [(x0, y), (a, y)]
+    k = 6
+    for i in range(1, k):
+        zig.append((a + (b - a) * i / k, y + (2.0 if i % 2 else -2.0)))
+    zig += [(b, y), (x1, y)]
+    return Polyline(tuple(zig), style=MAIN, name=name)
+
+
+def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, title: str | None = None,
+                 problem: str = "") -> Scene:
+    """The drive and its reduced scheme (see the module docstring).
+
+    Parameters
+    ----------
+    chain : ReducedChain
+        From :func:`graphmethods.dynamics.multimass.reduce_chain`.
+    notation : {"en", "ru", "zh"}
+    """
+    nt = get_notation(notation)
+    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "title"), problem=problem, title_block=True,
+                       default_page=Page("A4", "landscape", frame=True))
+    x0, _, x1, _ = sheet.box
+    n = len(chain.names)
+    J = np.asarray(chain.J, dtype=float)
+    h = 10.0 + 22.0 * (J / J.max()) ** 0.25
+    left, right = x0 + 25.0, x0 + 0.52 * (x1 - x0)
+    xs = [left + (right - left) * i / max(n - 1, 1) for i in range(n)]
+    num = nt.number
+    els: list[Any] = [sheet.header()]
+    rows_y = ((sheet.top + 38.0, "given"), (sheet.top + 105.0, "reduced"))
+    for y, key in rows_y:
+        reduced = key == "reduced"
+        Jr = J if reduced else np.asarray(chain.J_given, dtype=float)
+        hh = h if reduced else 10.0 + 22.0 * (Jr / Jr.max()) ** 0.25
+        els.append(Text((x0, y - 30.0), _w(nt, key), size_mm=TEXT_MM + 0.5, bold=True, name=f"heading-{key}"))
+        for j in range(n - 1):
+            els.append(_spring(xs[j] + 2.5, xs[j + 1] - 2.5, y, f"{key}-shaft-{j + 1}"))
+            mid = (xs[j] + xs[j + 1]) / 2
+            text = (f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {unit(nt, 'N·m/rad')}" if reduced else
+                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}, u = {num(float(chain.u_shafts[j]), sig=4)}")
+            els.append(Text((mid, y - 6.0), text, size_mm=TEXT_MM, anchor="middle", name=f"{key}-label-c-{j + 1}"))
+        for i in range(n):
+            els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
+            text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)}" if reduced else
+                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)}, u = {num(float(chain.u[i]), sig=4)}")
+            els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), text, size_mm=TEXT_MM, anchor="middle",
+                            name=f"{key}-label-J-{i + 1}"))
+            if not reduced:
+                els.append(Text((xs[i], y + float(hh[i]) / 2 + 11.0), chain.names[i], size_mm=TEXT_MM - 0.4,
+                                anchor="middle", name=f"label-name-{i + 1}"))
+        els.append(Line((left - 12.0, y), (left - 2.5, y), style=THIN, name=f"{key}-axis-in"))
+    # the table: per mass J', per shaft c'; the frequencies and the rigid drive under it
+    rows: list[tuple[str, ...]] = [("", "J, " + unit(nt, "kg·m²"), "u", "J', " + unit(nt, "kg·m²"),
+                                    "c, " + unit(nt, "N·m/rad"), "c'")]
+    for i in range(n):
+        c_txt = (num(float(chain.c_given[i]), sig=5), num(float(chain.c[i]), sig=5)) if i < n - 1 else ("", "")
+        rows.append((f"{i + 1} {chain.names[i]}", num(float(chain.J_given[i]), sig=5), num(float(chain.u[i]), sig=4),
+                     num(float(J[i]), sig=5), *c_txt))
+    els.append(Table((x0 + 0.6 * (x1 - x0), sheet.top + 8.0), tuple(rows), align="lrrrrr", size_mm=2.8,
+                     name="table"))
+    freq = ", ".join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
+    els.append(Text((x0, sheet.caption_y - 14.0), f"{_w(nt, 'freq')}: ω = {freq} {unit(nt, 'rad/s')}",
+                    size_mm=TEXT_MM, name="frequencies"))
+    els.append(Text((x0, sheet.caption_y - 8.0), f"{_w(nt, 'rigid')}: J_e = ΣJ' = {num(chain.J_e, sig=5)} "
+                    f"{unit(nt, 'kg·m²')}, M_e = ΣM' = {num(chain.M_e, sig=5)} {unit(nt, 'N·m')}",
+                    size_mm=TEXT_MM, name="rigid"))
+    return Scene(sheet.page(()), tuple(els), title=sheet.title, notation=nt.code, name="drive-scheme")
