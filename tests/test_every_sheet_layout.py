@@ -40,13 +40,12 @@ LINKAGE_FIGURES = ("kinematic_scheme", "velocity_plan_grid", "velocity_plan", "v
 CYCLE_FIGURES = ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph", "work_diagrams")
 
 _NO_SLIDER = "the slider's diagrams need a linkage with one slider"
-_INDICATOR = "load is given as force diagrams"
+_INDICATOR = "indicator diagram"
 _NO_CURVES = "needs (the )?moment curves"
 #: (problem, figure) -> what the refusal says
 NOT_DRAWN = {
     **{(p, "kinematic_diagrams"): _NO_SLIDER for p in ("four-bar", "slotted-lever", "two-slider")},
-    **{("engine", f): _INDICATOR for f in ("moment_graph", "zhukovsky_lever", "wittenbauer_diagram",
-                                           "dynamic_analysis_sheet")},
+    ("engine", "zhukovsky_lever"): _INDICATOR,
     **{(p, f): _NO_CURVES for p in ("W1", "W2", "W4") for f in ("moment_diagram", "energy_graph", "work_diagrams")},
 }
 
