@@ -340,14 +340,14 @@ def bench_flywheel(m_values=M_VALUES, *, repeat=3, linkages=EXACT_LINKAGES) -> l
                            repeat)
         exact = exact_flywheel(prob.model, omega_m=prob.omega_m, delta=prob.delta)
 
-        def run(m, prob=prob, estimate=True):
+        def chords(m, prob=prob, estimate=True):
             g = chord_flywheels(prob.model, positions=m, omega_m=prob.omega_m, delta=prob.delta, estimate=estimate)
             return {"wittenbauer": g.wittenbauer, "energy": g.energy, "phi0": prob.model.phi_0,
                     "excess_work": g.excess_work, "M_max": float(np.abs(g.M_e).max())}
 
         # one construction gives both values; the ΔW_max row is timed without the 16m error estimate
-        rows += _flywheel_rows(prob.name, exact, [(m, lambda m=m: run(m), lambda m=m: run(m),
-                                                   lambda m=m: run(m, estimate=False)) for m in m_values],
+        rows += _flywheel_rows(prob.name, exact, [(m, lambda m=m: chords(m), lambda m=m: chords(m),
+                                                   lambda m=m: chords(m, estimate=False)) for m in m_values],
                                prob.model.phi_T, repeat)
     for name in linkages:
         s = Study(builtin.case(name))
