@@ -123,8 +123,8 @@ def _text(res: dict, lang: str) -> str:
     w = WORDS[lang]
     where = (f"{w['position']} {res['position']} / {res['m']}, " if res["position"] is not None else "")
     lines = [f"{w['title']}: {res['case'] or res['kind']}  ({res['source']})",
-             f"{where}{w['phi']} = {res['phi_deg']:.4f}°, {w['omega']} = {res['omega_1']:.6g} rad/s "
-             f"({res['sense']}), {w['eps']} = {res['epsilon_1']:g} rad/s², {res['structure']}",
+             (f"{where}{w['phi']} = {res['phi_deg']:.4f}°, {w['omega']} = {res['omega_1']:.6g} rad/s "
+              f"({res['sense']}), {w['eps']} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
              f"{w['gravity']}: {w['yes'] if res['gravity'] else w['no']}", "", w["links"],
              f"{w['link']:>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  {'M_i [N·m]':>12}  {'h [m]':>10}"]
     for k, d in res["links"].items():
@@ -136,10 +136,10 @@ def _text(res: dict, lang: str) -> str:
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
     lines += ["", w["balance"],
               f"  {w['plans']:<28} {res['M_balance']:14.6f} N·m",
-              f"  {w['lever']:<28} {res['M_balance_lever']:14.6f} N·m   {w['diff']} "
-              f"{res['difference_lever_percent']:.2e} %",
-              f"  {w['power']:<28} {res['M_balance_power']:14.6f} N·m   {w['diff']} "
-              f"{res['difference_power_percent']:.2e} %"]
+              (f"  {w['lever']:<28} {res['M_balance_lever']:14.6f} N·m   {w['diff']} "
+               f"{res['difference_lever_percent']:.2e} %"),
+              (f"  {w['power']:<28} {res['M_balance_power']:14.6f} N·m   {w['diff']} "
+               f"{res['difference_power_percent']:.2e} %")]
     return "\n".join(lines)
 
 
