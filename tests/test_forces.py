@@ -140,7 +140,7 @@ def test_global_least_squares_gives_the_same_reactions(name):
         A = np.zeros((3 * len(links), ncol))
         b = np.zeros(3 * len(links))
 
-        def add(link, Fx, Fy, M, col=None, coeff=None):
+        def add(A, b, link, Fx, Fy, M, col=None, coeff=None):
             if link == "0":
                 return
             r0 = row[link]
@@ -156,26 +156,26 @@ def test_global_least_squares_gives_the_same_reactions(name):
         for link, it in masses:                      # d'Alembert: −m a, −J ε, weight
             S, a = mo.z[it.point][i], mo.a_[it.point][i]
             F = -it.m * a - 1j * it.m * G
-            add(link, F.real, F.imag, S.real * F.imag - S.imag * F.real - it.J * mo.epsilon[link][i])
+            add(A, b, link, F.real, F.imag, S.real * F.imag - S.imag * F.real - it.J * mo.epsilon[link][i])
         for link, f in loads:
             F, S = f.F[i], f.at[i]
-            add(link, F.real, F.imag, S.real * F.imag - S.imag * F.real + f.M[i])
+            add(A, b, link, F.real, F.imag, S.real * F.imag - S.imag * F.real + f.M[i])
         for k, r in enumerate(pairs):
             P = r.at[i]
             if r.kind == "R":
                 cols = [(1.0, 0.0), (0.0, 1.0)]
                 for c, (ux, uy) in enumerate(cols):    # unit force along x / y at P on link "on"
                     m = P.real * uy - P.imag * ux
-                    add(r.on, 0, 0, 0, 2 * k + c, (ux, uy, m))
-                    add(r.by, 0, 0, 0, 2 * k + c, (-ux, -uy, -m))
+                    add(A, b, r.on, 0, 0, 0, 2 * k + c, (ux, uy, m))
+                    add(A, b, r.by, 0, 0, 0, 2 * k + c, (-ux, -uy, -m))
             else:
                 nrm = 1j * r.guide[i]
                 m = P.real * nrm.imag - P.imag * nrm.real
-                add(r.on, 0, 0, 0, 2 * k, (nrm.real, nrm.imag, m))
-                add(r.by, 0, 0, 0, 2 * k, (-nrm.real, -nrm.imag, -m))
-                add(r.on, 0, 0, 0, 2 * k + 1, (0.0, 0.0, 1.0))
-                add(r.by, 0, 0, 0, 2 * k + 1, (0.0, 0.0, -1.0))
-        add(lk.crank.link, 0, 0, 0, ncol - 1, (0.0, 0.0, 1.0))
+                add(A, b, r.on, 0, 0, 0, 2 * k, (nrm.real, nrm.imag, m))
+                add(A, b, r.by, 0, 0, 0, 2 * k, (-nrm.real, -nrm.imag, -m))
+                add(A, b, r.on, 0, 0, 0, 2 * k + 1, (0.0, 0.0, 1.0))
+                add(A, b, r.by, 0, 0, 0, 2 * k + 1, (0.0, 0.0, -1.0))
+        add(A, b, lk.crank.link, 0, 0, 0, ncol - 1, (0.0, 0.0, 1.0))
         assert A.shape[0] == A.shape[1]                      # statically determinate: W = 1
         x, *_ = np.linalg.lstsq(A, b, rcond=None)
         scale = max(float(np.max(np.abs(x[:-1]))), 1.0)
@@ -225,7 +225,9 @@ def test_horizontal_engine_textbook_example():
     gas = Force("F_g", F=np.array([-F_L + 0j]), at=mo.z["B"], M=np.zeros(1))
     fa = kinetostatics(mo, masses=[Mass("3", "B", m3, 0.0)], loads=[("3", gas)])
     # the piston's acceleration by differentiating x(θ) = r cos θ + √(l² − r² sin² θ) twice
-    x = lambda t: r * math.cos(t) + math.sqrt(l * l - (r * math.sin(t)) ** 2)  # noqa: E731
+    def x(t):
+        return r * math.cos(t) + math.sqrt(l * l - (r * math.sin(t)) ** 2)
+
     h = 1e-4
     a = omega ** 2 * (x(theta + h) - 2 * x(theta) + x(theta - h)) / h ** 2
     F_P = F_L + m3 * a                         # gas force toward the crank less the inertia force

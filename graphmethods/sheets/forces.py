@@ -1,0 +1,190 @@
+"""The force plans of one position: each group's polygon at one μ_F, and the results beside them.
+
+For each Assur group, in the order they are solved (the last group first), the group's force
+plan as the course draws it: the known forces laid head to tail (solid; the tangential parts
+found first from the moments about the middle joint, the inertia forces, weights, the load, the
+reactions of the groups solved before), closed by the unknowns (dashed) along their directions
+(thin lines through the ends); then the crank's polygon closed by R_01. One scale μ_F for every
+polygon, a convenient value picked to fit (reported). Beside them: every reaction's magnitude
+and the balancing moment from the force plans, Zhukovsky's lever and the power balance, with
+their differences in per cent.
+
+>>> from graphmethods.problems import builtin
+>>> s = force_plans(builtin.case("press"), position=3, notation="ru")
+>>> s.title
+'Планы сил, положение 3'
+>>> sorted(e.name for e in s.elements if e.name.startswith("closing-"))[:2]
+['closing-0-0', 'closing-0-1']
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.problems.reference_cases import title_of
+from graphmethods.scene import Line, Page, Table, Text, Vector, in_language
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.primitives import THIN
+from graphmethods.sheets.layout import TEXT_MM, Sheet, given_scale
+
+SMALL_MM = 2.8
+TABLE_MM = 3.2
+
+_W = {
+    "title": ("Force plans, position {k}", "Планы сил, положение {k}", "力多边形, 位置 {k}"),
+    "title_phi": ("Force plans, φ = {phi}°", "Планы сил, φ = {phi}°", "力多边形, φ = {phi}°"),
+    "group": ("group {g}", "группа {g}", "杆组 {g}"),
+    "crank": ("crank {g}", "кривошип {g}", "原动件 {g}"),
+    "pair": ("pair", "пара", "运动副"),
+    "plans": ("M_b from the force plans", "M_ур по планам сил", "M_b 力多边形法"),
+    "lever": ("M_b from Zhukovsky's lever", "M_ур по рычагу Жуковского", "M_b 茹可夫斯基杠杆法"),
+    "power": ("M_b from the power balance", "M_ур по балансу мощностей", "M_b 功率平衡法"),
+    "diff": ("difference", "расхождение", "相对误差"),
+    "weights": ("with weights (g = 9.81 m/s²)", "с учётом сил тяжести (g = 9,81 м/с²)", "计入重力 (g = 9.81 m/s²)"),
+    "legend": ("known forces solid, unknown dashed", "известные силы сплошные, искомые штриховые",
+               "已知力为实线, 待求力为虚线"),
+}
+
+
+def _w(key: str, nt, **fill) -> str:
+    return in_language(_W[key], nt, **fill)
+
+
+def _markup(label: str) -> str:
+    """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}``, ``R_01@…`` → ``R_{01}``."""
+    label = label.split("@")[0]
+    m = re.fullmatch(r"([A-Za-z]+)(\^[^_]+)?_(.+)", label)
+    if not m:
+        return label
+    sup = "^{" + m.group(2)[1:] + "}" if m.group(2) else ""
+    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
+
+
+def force_plans(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                gravity: bool = False, mu_F=None, notation="en", page=None, title=None,
+                title_block: bool = True, name: str = "force-plans"):
+    """The force plans of every group and of the crank in one position (see the module docstring).
+
+    Parameters
+    ----------
+    case : Case
+        A problem file (``builtin.case("shaper")``).
+    position : int, optional
+        Position 0…m (default 2); or ``phi_deg``, the crank angle in degrees.
+    gravity : bool
+        Add the weights.
+    mu_F : float or Scale, optional
+        N per mm of every polygon; a convenient value is picked to fit when not given.
+    notation : {"en", "ru", "zh"}
+
+    Raises
+    ------
+    InputError
+        A position outside 0…m, or a given μ_F at which a polygon does not fit.
+    """
+    from graphmethods.dynamics.forces import case_forces
+
+    nt = get_notation(notation)
+    if phi_deg is None:
+        k = 2 if position is None else position
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
+            raise InputError(f"position {position!r}: give a position number 0…{m}")
+        fa = case_forces(case, m=m, gravity=gravity)
+        i = int(k)
+        head = _w("title", nt, k=i)
+    else:
+        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
+        i = 0
+        head = _w("title_phi", nt, phi=nt.number(float(phi_deg), sig=5))
+    sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
+                  default_page=Page("A3", "landscape", frame=True))
+    x0, _, x1, _ = sheet.box
+    # ------------------------------------------------------------------ the table beside the plans
+    rows = [(_w("pair", nt), nt.quantity("|R|", "N"))]
+    for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
+        rows.append((_markup(key), nt.number(float(abs(r.R[i])), sig=5)))
+    Mb = float(fa.M_balance[i])
+    res_lines = [f"{_w('plans', nt)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
+    for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
+        d = float(fa.difference_percent(other)[i])
+        res_lines.append(f"{_w(key, nt)} = {nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}")
+        res_lines.append(f"    {_w('diff', nt)} {d:.1e} %")
+    if gravity:
+        res_lines.append(_w("weights", nt))
+    probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0)
+    from graphmethods.scene import markup
+
+    right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in res_lines])
+    split = x1 - right_w - 6.0
+    area = (x0 + 2.0, sheet.top + 8.0, split - 6.0, sheet.caption_y - 10.0)
+    # ------------------------------------------------------------------ the polygons and μ_F
+    polys = [pl.polygons[0] for pl in fa.plans]
+    n_p = len(polys)
+    gap = 8.0
+    pw = (area[2] - area[0] - gap * (n_p - 1)) / n_p
+    ph = area[3] - area[1]
+
+    def path(poly):
+        pts = [0j]
+        for _, F in poly.known:
+            pts.append(pts[-1] + complex(F[i]))
+        for _, _, F in poly.closing:
+            pts.append(pts[-1] + complex(F[i]))
+        return np.array(pts)
+
+    paths = [path(p) for p in polys]
+    need = max(max(float(np.ptp(p.real)) / pw, float(np.ptp(p.imag)) / ph) for p in paths)
+    if need <= 0:
+        raise InputError("every force is zero in this position; there is no force plan to draw")
+    biggest = max(max(float(np.ptp(p.real)), float(np.ptp(p.imag) * pw / ph)) for p in paths)
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), biggest, pw - 2.0, what="the force plans")
+    els: list = [sheet.header()]
+    occ = sheet.occ
+    labels = []
+    for j, (pl, poly, pts) in enumerate(zip(fa.plans, polys, paths)):
+        left = area[0] + j * (pw + gap)
+        lo = np.array([pts.real.min(), pts.imag.min()]) / s_F.per_mm
+        hi = np.array([pts.real.max(), pts.imag.max()]) / s_F.per_mm
+        cx = left + pw / 2 - (lo[0] + hi[0]) / 2
+        cy = area[1] + ph / 2 + (lo[1] + hi[1]) / 2
+
+        def at(z: complex) -> tuple[float, float]:
+            return (cx + z.real / s_F.per_mm, cy - z.imag / s_F.per_mm)   # noqa: B023
+
+        cap = (_w("crank", nt, g=pl.links[0]) if pl.group.startswith("I ")
+               else _w("group", nt, g=pl.group))
+        els.append(Text((left, area[1] - 4.0), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
+        sides = [(lbl, F, True, None) for lbl, F in poly.known] + \
+                [(lbl, F, False, d) for lbl, d, F in poly.closing]
+        for s, (lbl, F, known, d) in enumerate(sides):
+            a, b = at(complex(pts[s])), at(complex(pts[s + 1]))
+            kind = "known" if known else "closing"
+            if math.dist(a, b) >= 0.3:
+                v = Vector(a, b, known=known, head_length_mm=2.5, name=f"{kind}-{j}-{s - (0 if known else len(poly.known))}")
+                els.append(v)
+                occ.add_primitives(v.primitives())
+                labels.append((v.mid, _markup(lbl), f"label-{j}-{s}"))
+            if d is not None:
+                u = complex(d[i])
+                e = np.array([u.real, -u.imag])
+                A, B = np.array(a), np.array(b)
+                ln = Line(tuple((A - 6.0 * e).tolist()), tuple((B + 6.0 * e).tolist()) if math.dist(a, b) >= 0.3
+                          else tuple((A + 6.0 * e).tolist()), style=THIN, name=f"direction-{j}-{s}")
+                els.append(ln)
+    for mid, text, nm in labels:
+        lab = occ.place_label(mid, text, size_mm=SMALL_MM, within=(area[0] - 4, area[1] - 2, area[2] + 4,
+                                                                    area[3] + 4))
+        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
+    tx = split + 2.0
+    table = Table((tx, sheet.top + 2.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0, name="table")
+    els.append(table)
+    ty = table.bottom_left[1] + 7.0
+    for t_i, t in enumerate(res_lines):
+        els.append(Text((tx, ty + t_i * 5.6), t, size_mm=TEXT_MM, name=f"result-{t_i}"))
+    scales = (s_F,)
+    els += sheet.captions(scales, legend=_w("legend", nt), reserve=True)
+    return sheet.scene(els, scales, name=name, notes=(s_F.note,) if s_F.note else ())

@@ -1,0 +1,55 @@
+"""The force-plans figure: every drawn side is its force over μ_F, every polygon closes on paper,
+three languages, bad positions and scales refused."""
+
+import numpy as np
+import pytest
+
+from graphmethods.dynamics.forces import case_forces
+from graphmethods.errors import InputError
+from graphmethods.problems import builtin
+from graphmethods.scene import Vector
+from graphmethods.sheets.forces import force_plans
+
+
+@pytest.mark.parametrize("name, k", [("press", 3), ("shaper", 2), ("four-bar", 2), ("six-bar-press", 7)])
+def test_sides_are_the_forces_to_scale_and_the_polygons_close(name, k):
+    case = builtin.case(name)
+    scene = force_plans(case, position=k)
+    mu = scene.scales()[0].per_mm
+    fa = case_forces(case, m=12)
+    vecs = {e.name: e for e in scene.elements if isinstance(e, Vector)}
+    for j, plan in enumerate(fa.plans):
+        poly = plan.polygons[0]
+        sides = [("known", s, F) for s, (_, F) in enumerate(poly.known)] + \
+                [("closing", s, F) for s, (_, _, F) in enumerate(poly.closing)]
+        origin = None
+        walked = 0j                             # Σ of the sides so far, N
+        for kind, s, F in sides:
+            v = vecs.get(f"{kind}-{j}-{s}")
+            if v is None:                       # too short to draw (under 0.3 mm)
+                assert abs(F[k]) / mu < 0.3
+            else:
+                assert v.length_mm * mu == pytest.approx(abs(F[k]), rel=1e-9)
+                if origin is None:
+                    origin = complex(v.start[0], -v.start[1]) - walked / mu
+                # head to tail: each side starts where the sides before it end
+                assert complex(v.start[0], -v.start[1]) == pytest.approx(origin + walked / mu, abs=1e-9)
+                assert complex(v.end[0], -v.end[1]) == pytest.approx(origin + (walked + F[k]) / mu, abs=1e-9)
+            walked += complex(F[k])
+        assert abs(walked) / mu <= 1e-9                  # the polygon closes
+
+
+def test_three_languages_and_the_scale_is_reported():
+    titles = {lang: force_plans(builtin.case("press"), position=3, notation=lang).title for lang in ("en", "ru", "zh")}
+    assert titles == {"en": "Force plans, position 3", "ru": "Планы сил, положение 3", "zh": "力多边形, 位置 3"}
+    s = force_plans(builtin.case("press"), position=3, mu_F=100.0)
+    assert s.scales()[0].per_mm == 100.0
+
+
+def test_a_given_mu_F_that_does_not_fit_and_a_bad_position_are_refused():
+    with pytest.raises(InputError, match="force plans"):
+        force_plans(builtin.case("press"), position=3, mu_F=0.5)
+    with pytest.raises(InputError, match="position 13"):
+        force_plans(builtin.case("press"), position=13)
+    s = force_plans(builtin.case("press"), phi_deg=100.0)
+    assert "100" in s.title and np.isfinite(s.scales()[0].per_mm)
