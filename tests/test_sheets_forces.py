@@ -53,3 +53,27 @@ def test_a_given_mu_F_that_does_not_fit_and_a_bad_position_are_refused():
         force_plans(builtin.case("press"), position=13)
     s = force_plans(builtin.case("press"), phi_deg=100.0)
     assert "100" in s.title and np.isfinite(s.scales()[0].per_mm)
+
+
+@pytest.mark.parametrize("name, k", [("press", 3), ("shaper", 2), ("four-bar", 2), ("whitworth", 5)])
+def test_the_drawn_lever_is_in_equilibrium_about_the_pole(name, k):
+    """Measured on paper: every force's drawn length × μ_F is its value, and Σ (image × F) about p,
+    with the images measured in mm × μ_l, is zero with F_b included."""
+    from graphmethods.sheets.forces import zhukovsky_forces
+
+    case = builtin.case(name)
+    scene = zhukovsky_forces(case, position=k)
+    mu_l, mu_F = (s.per_mm for s in scene.scales())
+    pole = next(e for e in scene.elements if e.name == "pole").at
+    fa = case_forces(case, m=12)
+    vecs = [e for e in scene.elements if isinstance(e, Vector)]
+    assert len(vecs) == sum(1 for f in fa.lever.forces if abs(f.F[k]) > 0) + 1
+    total, scale = 0.0, 0.0
+    for v in vecs:
+        img = complex(v.start[0] - pole[0], -(v.start[1] - pole[1])) * mu_l
+        F = complex(v.end[0] - v.start[0], -(v.end[1] - v.start[1])) * mu_F
+        total += (img.conjugate() * F).imag
+        scale += abs(img) * abs(F)
+    assert abs(total) <= 1e-9 * scale
+    fb = next(v for v in vecs if v.name == "F_b")
+    assert fb.length_mm * mu_F == pytest.approx(abs(fa.lever.F_balance[k]), rel=1e-9)

@@ -188,3 +188,121 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
     scales = (s_F,)
     els += sheet.captions(scales, legend=_w("legend", nt), reserve=True)
     return sheet.scene(els, scales, name=name, notes=(s_F.note,) if s_F.note else ())
+
+
+_WL = {
+    "title": ("Zhukovsky's lever with every force, position {k}", "Рычаг Жуковского со всеми силами, положение {k}",
+              "茹可夫斯基杠杆 (全部力), 位置 {k}"),
+    "title_phi": ("Zhukovsky's lever with every force, φ = {phi}°", "Рычаг Жуковского со всеми силами, φ = {phi}°",
+                  "茹可夫斯基杠杆 (全部力), φ = {phi}°"),
+    "turned": ("velocity plan of analogues v/ω₁ turned 90° counterclockwise, pole p",
+               "план аналогов скоростей v/ω₁, повёрнутый на 90° против часовой, полюс p",
+               "速度类比图 v/ω₁ 逆时针转 90°, 极点 p"),
+    "couple": ("a moment M as two forces ±M/l at two points of its link, l apart",
+               "момент M заменён парой сил ±M/l в двух точках звена на расстоянии l",
+               "力矩 M 以其构件上相距 l 的两点的一对力 ±M/l 代替"),
+    "equation": ("Σ M_p = 0:  F_b = {Fb} N at a, ⊥ OA", "Σ M_p = 0:  F_ур = {Fb} Н в точке a, ⊥ OA",
+                 "Σ M_p = 0:  F_b = {Fb} N 作用于 a, ⊥ OA"),
+    "result": ("M_b = F_b·l_{{OA}} = {Mb} N·m", "M_ур = F_ур·l_{{OA}} = {Mb} Н·м", "M_b = F_b·l_{{OA}} = {Mb} N·m"),
+    "plans": ("from the force plans: {Mb} N·m (difference {d} %)", "по планам сил: {Mb} Н·м (расхождение {d} %)",
+              "力多边形法: {Mb} N·m (相对误差 {d} %)"),
+    "legend": ("forces at the images of their points", "силы в образах своих точек", "力作用于其点的影像"),
+}
+
+
+def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                     gravity: bool = False, mu_l=None, mu_F=None, notation="en", page=None, title=None,
+                     title_block: bool = True, name: str = "zhukovsky-forces"):
+    """Zhukovsky's lever with every force of the force analysis (inertia forces, couples as pairs of
+    forces, weights, the load) at the images of their points, and the balancing force F_b at the
+    image of the crank pin; M_b = F_b·l_{{OA}} beside the force plans' value.
+
+    The plan of analogues v/ω₁ (m) turned 90° counterclockwise is drawn to μ_l (m per mm), the
+    forces to μ_F (N per mm); both picked as convenient values when not given.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> s = zhukovsky_forces(builtin.case("four-bar"), position=2)
+    >>> [e.name for e in s.elements if e.name == "F_b"]
+    ['F_b']
+    """
+    from graphmethods.dynamics.forces import case_forces
+    from graphmethods.scene import Point, markup
+    from graphmethods.scene.scale import pick_scale
+
+    nt = get_notation(notation)
+    if phi_deg is None:
+        k = 2 if position is None else position
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
+            raise InputError(f"position {position!r}: give a position number 0…{m}")
+        fa = case_forces(case, m=m, gravity=gravity)
+        i = int(k)
+        head = in_language(_WL["title"], nt, k=i)
+    else:
+        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
+        i = 0
+        head = in_language(_WL["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    mo, lev = fa.motion, fa.lever
+    lk = mo.linkage
+    sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
+                  default_page=Page("A3", "landscape", frame=True))
+    x0, _, x1, _ = sheet.box
+    Fb = complex(lev.F_balance[i])
+    Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
+    d = float(fa.difference_percent(lev.M_balance)[i])
+    texts = [in_language(_WL["turned"], nt), in_language(_WL["couple"], nt),
+             in_language(_WL["equation"], nt, Fb=nt.number(abs(Fb), sig=5)),
+             in_language(_WL["result"], nt, Mb=nt.number(Mb_l, sig=6)),
+             in_language(_WL["plans"], nt, Mb=nt.number(Mb, sig=6), d=f"{d:.1e}")]
+    right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
+    split = x1 - right_w - 6.0
+    area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)
+    fixed = set(lk.ground)
+    images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
+    items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
+    items.append(("F_b", complex(lev.image_pin[i]), Fb))
+    F_max = max(abs(F) for _, _, F in items)
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, 28.0, what="the largest force on the lever")
+    cloud = np.array([0j] + list(images.values()) + [z for _, z, _ in items])
+    span_x, span_y = float(np.ptp(cloud.real)), float(np.ptp(cloud.imag))
+    room_x, room_y = area[2] - area[0] - 2 * 32.0, area[3] - area[1] - 2 * 32.0
+    if mu_l is None:
+        s_l = pick_scale(max(span_x * room_y / room_x, span_y, 1e-12), room_y, symbol="μ_l", unit=nt.unit("m"))
+    else:
+        s_l = given_scale(mu_l, "μ_l", nt.unit("m"), max(span_x * room_y / room_x, span_y), room_y,
+                          what="the lever")
+    cx = (area[0] + area[2]) / 2 - (float(cloud.real.min()) + float(cloud.real.max())) / 2 / s_l.per_mm
+    cy = (area[1] + area[3]) / 2 + (float(cloud.imag.min()) + float(cloud.imag.max())) / 2 / s_l.per_mm
+
+    def at(z: complex) -> tuple[float, float]:
+        return (cx + z.real / s_l.per_mm, cy - z.imag / s_l.per_mm)
+
+    els: list = [sheet.header()]
+    occ = sheet.occ
+    pole = at(0j)
+    els.append(Point(pole, radius_mm=0.7, name="pole"))
+    for p, z in images.items():
+        if abs(z) / s_l.per_mm >= 0.3:
+            ln = Line(pole, at(z), style=THIN, name=f"ray-{p}")
+            els.append(ln)
+            occ.add_primitives(ln.primitives())
+    vec_labels = []
+    for j, (label, z, F) in enumerate(items):
+        a = at(z)
+        b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
+        v = Vector(a, b, known=True, head_length_mm=2.5, name="F_b" if label == "F_b" else f"force-{j}")
+        els.append(v)
+        occ.add_primitives(v.primitives())
+        vec_labels.append((b, _markup(label), f"label-force-{j}"))
+    names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
+    for where, text, nm in [(pole, "p", "label-pole")] + names + vec_labels:
+        lab = occ.place_label(where, _markup(text) if "_" not in text else text, size_mm=SMALL_MM,
+                              within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
+        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
+    tx = split + 2.0
+    for t_i, t in enumerate(texts):
+        els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
+    scales = (s_l, s_F)
+    els += sheet.captions(scales, legend=in_language(_WL["legend"], nt), reserve=True)
+    return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))

@@ -46,7 +46,7 @@ from graphmethods.dynamics.forces.base import (
     reaction,
     resultant,
 )
-from graphmethods.dynamics.forces.lever import Lever, Rigid, power_balance, zhukovsky
+from graphmethods.dynamics.forces.lever import Lever, power_balance, zhukovsky
 from graphmethods.errors import InputError
 
 #: standard gravity, m/s² (acts along −y of the file's frame)
@@ -182,21 +182,22 @@ def _carriers(lk: Any) -> tuple[dict[str, str], dict[str, tuple[str, str]]]:
     return one, two
 
 
-def _rigid_refs(lk: Any) -> dict[str, str]:
-    """A point of each link whose velocity is that of the link (for the lever and the power)."""
-    refs = {lk.crank.link: lk.crank.centre}
+def _rigid_refs(lk: Any) -> dict[str, tuple[str, str | None]]:
+    """Two points of each link: one whose velocity is that of the link (for the lever and the
+    power) and a second one (None: along the link's own direction, 0.1 m) for a couple's forces."""
+    refs: dict[str, tuple[str, str | None]] = {lk.crank.link: (lk.crank.centre, lk.crank.pin)}
     for g in lk.groups:
         l2, l3 = g.links
         if g.kind == "RRR":
-            refs[l2], refs[l3] = g.P, g.Q
+            refs[l2], refs[l3] = (g.P, g.C), (g.Q, g.C)
         elif g.kind == "RRP":
-            refs[l2], refs[l3] = g.P, g.C
+            refs[l2], refs[l3] = (g.P, g.C), (g.C, None)
         elif g.kind == "RPR":
-            refs[l2], refs[l3] = g.P, g.Q
+            refs[l2], refs[l3] = (g.P, g.Q), (g.Q, g.P)
         elif g.kind == "PRP":
-            refs[l2], refs[l3] = g.C, g.C
+            refs[l2], refs[l3] = (g.C, None), (g.C, None)
         else:
-            refs[l2], refs[l3] = g.P, g.R
+            refs[l2], refs[l3] = (g.P, g.R), (g.R, g.P)
     return refs
 
 
@@ -301,8 +302,12 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
                                                        ((r01.key, None, R_01),)),)))
     # ------------------------------------------------------------------ the two checks
     refs = _rigid_refs(lk)
-    rigid: Rigid = {k: (kin.z[p], np.broadcast_to(np.asarray(motion.omega[k], dtype=float), (n,)),
-                        np.asarray(motion.v_[p], dtype=complex)) for k, p in refs.items()}
+    rigid: dict[str, tuple[Cx, Fl, Cx, Cx]] = {}
+    for k, (p, q) in refs.items():
+        d = kin.z[q] - kin.z[p] if q is not None else 0.1 * kin.direction(k)
+        d = np.where(np.abs(d) > 0, d, 0.1 * kin.direction(k))
+        rigid[k] = (kin.z[p], np.broadcast_to(np.asarray(motion.omega[k], dtype=float), (n,)),
+                    np.asarray(motion.v_[p], dtype=complex), np.asarray(d, dtype=complex))
     moving = {k: v for k, v in frozen_applied.items() if v}
     lever = zhukovsky(rigid, moving, centre=O, pin=kin.z[cr.pin], omega_1=motion.omega_1, sense=lk.sense)
     M_power = power_balance(rigid, moving, omega_1=motion.omega_1, sense=lk.sense)

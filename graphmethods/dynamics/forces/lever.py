@@ -10,7 +10,7 @@ The power balance: ``M_b·ω₁ + Σ F·v + Σ M·ω = 0`` over every force (ine
 >>> import numpy as np
 >>> from graphmethods.dynamics.forces.base import Force
 >>> # a crank O–A (0.1 m) at 10 rad/s ccw, 100 N at A along −y in position φ = 0
->>> pts = {"1": (np.array([0j]), np.array([10.0]), np.array([0j]))}
+>>> pts = {"1": (np.array([0j]), np.array([10.0]), np.array([0j]), np.array([0.1 + 0j]))}
 >>> f = Force("F", F=np.array([-100j]), at=np.array([0.1 + 0j]), M=np.zeros(1))
 >>> lev = zhukovsky(pts, {"1": [f]}, centre=np.array([0j]), pin=np.array([0.1 + 0j]), omega_1=10.0, sense=1)
 >>> round(float(lev.M_balance[0]), 9), round(float(power_balance(pts, {"1": [f]}, omega_1=10.0, sense=1)[0]), 9)
@@ -26,12 +26,12 @@ import numpy as np
 
 from graphmethods.dynamics.forces.base import Cx, Fl, Force, cross
 
-#: link -> (reference point z, its link's ω, the reference point's velocity v), each (n,)
-Rigid = Mapping[str, tuple[Cx, Fl, Cx]]
+#: link -> (a point O of it, its ω, v_O, and d: from O to a second point of the link), each (n,)
+Rigid = Mapping[str, tuple[Cx, Fl, Cx, Cx]]
 
 
 def _velocity(rigid: Rigid, link: str, z: Cx) -> Cx:
-    O, w, vO = rigid[link]
+    O, w, vO, _ = rigid[link]
     out: Cx = vO + 1j * w * (z - O)
     return out
 
@@ -76,8 +76,9 @@ def zhukovsky(rigid: Rigid, loads: Mapping[str, Sequence[Force]], *, centre: Cx,
 
     Parameters
     ----------
-    rigid : mapping link -> (O, ω, v_O)
-        A point of each link with its velocity (m, m/s) and the link's ω (rad/s), (n,) each.
+    rigid : mapping link -> (O, ω, v_O, d)
+        A point of each link with its velocity (m, m/s), the link's ω (rad/s), and d (m) from O to
+        a second point of the link (where a couple's second force goes), (n,) each.
     loads : mapping link -> forces
         Every force and couple on the moving links (not the reactions), N, N·m.
     centre, pin : complex ndarray (n,)
@@ -88,20 +89,20 @@ def zhukovsky(rigid: Rigid, loads: Mapping[str, Sequence[Force]], *, centre: Cx,
     items = []
     total: Fl = np.zeros(np.shape(pin), dtype=float)
     for link, forces in loads.items():
-        O, _, _ = rigid[link]
+        O, _, _, d = rigid[link]
         for f in forces:
-            pairs: list[tuple[Cx, Cx]] = []
+            pairs: list[tuple[str, Cx, Cx]] = []
             if np.any(f.F != 0):
-                pairs.append((f.at, f.F))
+                pairs.append((f.label, f.at, f.F))
             if np.any(f.M != 0):
-                # the couple as F at O + d and −F at O with d × F = M (d: 1 m along x)
-                d = np.ones(np.shape(O), dtype=complex)
+                # the couple as F at O + d and −F at O with d × F = M (F ⟂ d, |F| = |M|/|d|)
                 F = f.M * 1j * d / np.abs(d) ** 2
-                pairs += [(O + d, F), (O + 0 * d, -F)]
-            for at, F in pairs:
+                name = "M" + f.label[1:] if f.label.startswith("F") else f.label
+                pairs += [(name, O + d, F), (name, O + 0 * d, -F)]
+            for label, at, F in pairs:
                 img = 1j * _velocity(rigid, link, at) / omega_1
                 mom = cross(img, F)
-                items.append(LeverForce(f.label, link, img, F, mom))
+                items.append(LeverForce(label, link, img, F, mom))
                 total = total + mom
     img_A = 1j * (1j * sense * omega_1 * (pin - centre)) / omega_1
     r = np.abs(pin - centre)
@@ -116,7 +117,7 @@ def power_balance(rigid: Rigid, loads: Mapping[str, Sequence[Force]], *, omega_1
     first = next(iter(rigid.values()))[0]
     P: Fl = np.zeros(np.shape(first), dtype=float)
     for link, forces in loads.items():
-        _, w, _ = rigid[link]
+        _, w, _, _ = rigid[link]
         for f in forces:
             v = _velocity(rigid, link, f.at)
             p = np.real(np.conj(v) * f.F) + f.M * w
