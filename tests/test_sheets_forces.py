@@ -77,3 +77,27 @@ def test_the_drawn_lever_is_in_equilibrium_about_the_pole(name, k):
     assert abs(total) <= 1e-9 * scale
     fb = next(v for v in vecs if v.name == "F_b")
     assert fb.length_mm * mu_F == pytest.approx(abs(fa.lever.F_balance[k]), rel=1e-9)
+
+
+@pytest.mark.parametrize("name, k", [("press", 3), ("shaper", 2), ("four-bar", 2), ("two-slider", 5)])
+def test_the_scheme_draws_every_force_from_its_point_to_scale(name, k):
+    from graphmethods.sheets.forces import force_scheme
+
+    case = builtin.case(name)
+    scene = force_scheme(case, position=k, gravity=True)
+    mu_l, mu_F = (s.per_mm for s in scene.scales())
+    fa = case_forces(case, m=12, gravity=True)
+    # the paper frame from two joints: the crank's centre and pin
+    cr = fa.motion.linkage.crank
+    pO = next(e for e in scene.elements if e.name == f"pivot-{cr.centre}").at
+    zO = complex(fa.motion.z[cr.centre][k])
+    drawn = [e for e in scene.elements if isinstance(e, Vector) and e.name.startswith("force-")]
+    want = [f for fs in fa.applied.values() for f in fs if abs(f.F[k]) / mu_F >= 0.3]
+    assert len(drawn) == len(want)
+    for v, f in zip(drawn, want):
+        start = zO + complex(v.start[0] - pO[0], -(v.start[1] - pO[1])) * mu_l
+        assert start == pytest.approx(complex(f.at[k]), abs=1e-9)
+        F = complex(v.end[0] - v.start[0], -(v.end[1] - v.start[1])) * mu_F
+        assert F == pytest.approx(complex(f.F[k]), rel=1e-9, abs=1e-9 * abs(f.F[k]))
+    moments = [e.name for e in scene.elements if e.name.startswith("moment-")]
+    assert len(moments) == sum(1 for fs in fa.applied.values() for f in fs if f.M[k] != 0)

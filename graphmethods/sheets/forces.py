@@ -40,9 +40,9 @@ _W = {
     "group": ("group {g}", "группа {g}", "杆组 {g}"),
     "crank": ("crank {g}", "кривошип {g}", "原动件 {g}"),
     "pair": ("pair", "пара", "运动副"),
-    "plans": ("M_b from the force plans", "M_ур по планам сил", "M_b 力多边形法"),
-    "lever": ("M_b from Zhukovsky's lever", "M_ур по рычагу Жуковского", "M_b 茹可夫斯基杠杆法"),
-    "power": ("M_b from the power balance", "M_ур по балансу мощностей", "M_b 功率平衡法"),
+    "plans": ("M_b from the force plans", "M_{ур} по планам сил", "M_b 力多边形法"),
+    "lever": ("M_b from Zhukovsky's lever", "M_{ур} по рычагу Жуковского", "M_b 茹可夫斯基杠杆法"),
+    "power": ("M_b from the power balance", "M_{ур} по балансу мощностей", "M_b 功率平衡法"),
     "diff": ("difference", "расхождение", "相对误差"),
     "weights": ("with weights (g = 9.81 m/s²)", "с учётом сил тяжести (g = 9,81 м/с²)", "计入重力 (g = 9.81 m/s²)"),
     "legend": ("known forces solid, unknown dashed", "известные силы сплошные, искомые штриховые",
@@ -201,9 +201,9 @@ _WL = {
     "couple": ("a moment M as two forces ±M/l at two points of its link, l apart",
                "момент M заменён парой сил ±M/l в двух точках звена на расстоянии l",
                "力矩 M 以其构件上相距 l 的两点的一对力 ±M/l 代替"),
-    "equation": ("Σ M_p = 0:  F_b = {Fb} N at a, ⊥ OA", "Σ M_p = 0:  F_ур = {Fb} Н в точке a, ⊥ OA",
+    "equation": ("Σ M_p = 0:  F_b = {Fb} N at a, ⊥ OA", "Σ M_p = 0:  F_{{ур}} = {Fb} Н в точке a, ⊥ OA",
                  "Σ M_p = 0:  F_b = {Fb} N 作用于 a, ⊥ OA"),
-    "result": ("M_b = F_b·l_{{OA}} = {Mb} N·m", "M_ур = F_ур·l_{{OA}} = {Mb} Н·м", "M_b = F_b·l_{{OA}} = {Mb} N·m"),
+    "result": ("M_b = F_b·l_{{OA}} = {Mb} N·m", "M_{{ур}} = F_{{ур}}·l_{{OA}} = {Mb} Н·м", "M_b = F_b·l_{{OA}} = {Mb} N·m"),
     "plans": ("from the force plans: {Mb} N·m (difference {d} %)", "по планам сил: {Mb} Н·м (расхождение {d} %)",
               "力多边形法: {Mb} N·m (相对误差 {d} %)"),
     "legend": ("forces at the images of their points", "силы в образах своих точек", "力作用于其点的影像"),
@@ -305,4 +305,151 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
         els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
     scales = (s_l, s_F)
     els += sheet.captions(scales, legend=in_language(_WL["legend"], nt), reserve=True)
+    return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))
+
+
+_WS = {
+    "title": ("Forces on the linkage, position {k}", "Силы, действующие на механизм, положение {k}",
+              "机构上的作用力, 位置 {k}"),
+    "title_phi": ("Forces on the linkage, φ = {phi}°", "Силы, действующие на механизм, φ = {phi}°",
+                  "机构上的作用力, φ = {phi}°"),
+    "inertia": ("inertia forces F_i = −m·a_S at the centres of mass, moments M_i = −J_S·ε",
+                "силы инерции F_и = −m·a_S в центрах масс, моменты M_и = −J_S·ε",
+                "惯性力 F_I = −m·a_S 作用于质心, 惯性力矩 M_I = −J_S·ε"),
+    "balance": ("balancing moment M_b = {Mb} N·m", "уравновешивающий момент M_{{ур}} = {Mb} Н·м",
+                "平衡力矩 M_b = {Mb} N·m"),
+    "legend": ("moments: arcs in their sense", "моменты: дуги в их направлении", "力矩: 按其转向的圆弧"),
+}
+
+
+def force_scheme(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                 gravity: bool = False, mu_l=None, mu_F=None, notation="en", page=None, title=None,
+                 title_block: bool = True, name: str = "force-scheme"):
+    """The linkage in one position with every applied force: the inertia forces at the centres of
+    mass, the weights (``gravity``), the working load, each drawn to μ_F from its point; the
+    inertia and load moments as arcs in their sense; the balancing moment on the crank. The
+    scheme is drawn to μ_l (m per mm); both scales convenient values picked to fit.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> s = force_scheme(builtin.case("press"), position=3)
+    >>> sorted(e.name for e in s.elements if e.name.startswith("force-"))
+    ['force-0', 'force-1', 'force-2']
+    """
+    from graphmethods.dynamics.forces import case_forces
+    from graphmethods.scene import markup
+    from graphmethods.scene.scale import pick_scale
+    from graphmethods.sheets.kinematic_symbols import (
+        FixedPivot,
+        PinJoint,
+        RotationArrow,
+        SliderBlock,
+    )
+
+    nt = get_notation(notation)
+    if phi_deg is None:
+        k = 2 if position is None else position
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
+            raise InputError(f"position {position!r}: give a position number 0…{m}")
+        fa = case_forces(case, m=m, gravity=gravity)
+        i = int(k)
+        head = in_language(_WS["title"], nt, k=i)
+    else:
+        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
+        i = 0
+        head = in_language(_WS["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    mo = fa.motion
+    lk = mo.linkage
+    sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
+                  default_page=Page("A3", "landscape", frame=True))
+    x0, _, x1, _ = sheet.box
+    texts = [in_language(_WS["inertia"], nt),
+             in_language(_WS["balance"], nt, Mb=nt.number(float(fa.M_balance[i]), sig=6))]
+    right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
+    split = x1 - right_w - 6.0
+    area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)
+    z = {p: complex(mo.z[p][i]) for p in mo.points}
+    # the links as segments between their points
+    segs: list[tuple[str, str]] = [(lk.crank.centre, lk.crank.pin)]
+    blocks: list[tuple[str, complex]] = []
+    for g in lk.groups:
+        if g.kind == "RRR":
+            segs += [(g.P, g.C), (g.Q, g.C)]
+        elif g.kind == "RRP":
+            segs.append((g.P, g.C))
+            blocks.append((g.C, complex(np.broadcast_to(mo._state.e[g.links[1]], (mo.n,))[i])))
+        elif g.kind == "RPR":
+            segs.append((g.Q, g.P))
+            blocks.append((g.P, complex(np.broadcast_to(mo._state.e[g.links[1]], (mo.n,))[i])))
+        elif g.kind == "PRP":
+            blocks += [(g.C, complex(np.broadcast_to(mo._state.e[ln], (mo.n,))[i])) for ln in g.links]
+        else:
+            segs.append((g.P, g.R))
+            blocks.append((g.P, complex(np.broadcast_to(mo._state.e[g.links[0]], (mo.n,))[i])))
+    segs += [(p.origin, p.name) for p in lk.points]
+    forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i]))
+              for fs in fa.applied.values() for f in fs]
+    F_max = max([abs(F) for _, F, _, _ in forces] + [0.0])
+    if F_max == 0.0:
+        raise InputError("no force acts in this position; there is nothing to draw")
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, 30.0, what="the largest force")
+    cloud = np.array(list(z.values()))
+    room_x, room_y = area[2] - area[0] - 2 * 34.0, area[3] - area[1] - 2 * 34.0
+    span = max(float(np.ptp(cloud.real)) * room_y / room_x, float(np.ptp(cloud.imag)), 1e-12)
+    s_l = (pick_scale(span, room_y, symbol="μ_l", unit=nt.unit("m")) if mu_l is None
+           else given_scale(mu_l, "μ_l", nt.unit("m"), span, room_y, what="the scheme"))
+    cx = (area[0] + area[2]) / 2 - (float(cloud.real.min()) + float(cloud.real.max())) / 2 / s_l.per_mm
+    cy = (area[1] + area[3]) / 2 + (float(cloud.imag.min()) + float(cloud.imag.max())) / 2 / s_l.per_mm
+
+    def at(w: complex) -> tuple[float, float]:
+        return (cx + w.real / s_l.per_mm, cy - w.imag / s_l.per_mm)
+
+    els: list = [sheet.header()]
+    occ = sheet.occ
+    for a, b in segs:
+        if abs(z[a] - z[b]) > 0:
+            ln = Line(at(z[a]), at(z[b]), name=f"link-{a}-{b}")
+            els.append(ln)
+            occ.add_primitives(ln.primitives())
+    for p in lk.ground:
+        els.append(FixedPivot(at(z[p]), name=f"pivot-{p}"))
+    for j, (p, u) in enumerate(blocks):
+        els.append(SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}"))
+    joints = {q for s in segs for q in s} - set(lk.ground)
+    els += [PinJoint(at(z[p]), name=f"joint-{p}") for p in sorted(joints)]
+    for el in els[1:]:
+        occ.add_primitives(el.primitives())
+    labels = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
+    n_f = 0
+    for label, F, where, M in forces:
+        a = at(where)
+        if abs(F) / s_F.per_mm >= 0.3:
+            b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
+            v = Vector(a, b, head_length_mm=2.5, name=f"force-{n_f}")
+            n_f += 1
+            els.append(v)
+            occ.add_primitives(v.primitives())
+            labels.append((b, _markup(label), f"label-{label}"))
+        if M != 0.0:
+            mlabel = "M" + label[1:] if label.startswith("F") else label
+            arc = RotationArrow(a, radius_mm=6.0, start_deg=200.0, sweep_deg=100.0 if M > 0 else -100.0,
+                                name=f"moment-{mlabel}")
+            els.append(arc)
+            occ.add_primitives(arc.primitives())
+            labels.append(((a[0] - 6.0, a[1]), f"{_markup(mlabel)} = {nt.number(M, sig=4)} {nt.unit('N·m')}",
+                           f"label-{mlabel}"))
+    cr = lk.crank
+    Mb = float(fa.M_balance[i])
+    els.append(RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
+                             label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b"))
+    for where, text, nm in labels:
+        lab = occ.place_label(where, text, size_mm=SMALL_MM, within=(area[0] - 4, area[1] - 4, area[2] + 4,
+                                                                      area[3] + 4))
+        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
+    tx = split + 2.0
+    for t_i, t in enumerate(texts):
+        els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
+    scales = (s_l, s_F)
+    els += sheet.captions(scales, legend=in_language(_WS["legend"], nt), reserve=True)
     return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))

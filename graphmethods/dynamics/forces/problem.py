@@ -66,7 +66,8 @@ def working_load(case: Any, motion: Any, positions: Any) -> list[tuple[str, Forc
         th = ends.theta[link]
         swing = float(np.mod(th[1] - th[0] + math.pi, 2 * math.pi) - math.pi)
         M = np.where(load_active(positions, load), -math.copysign(load.magnitude, swing), 0.0)
-        at = np.asarray(motion.z[lk.crank.centre], dtype=complex)
+        where = lk.pivots.get(link, lk.crank.centre)     # a couple: drawn at the rocker's pivot
+        at = np.asarray(motion.z[where], dtype=complex)
         return [(link, Force(f"M_c{link}", np.zeros(n, dtype=complex), at, M))]
     point = load.at
     link = link_number(case, None, point)
