@@ -21,6 +21,7 @@ COMMANDS = {
     "examples": ("examples", "solve and print the published worked examples W1–W4"),
     "problems": ("problems", "list the built-in problems (their names work in place of a problem file)"),
     "kinematics": ("kinematics", "positions and velocity plans of a linkage problem file"),
+    "forces": ("forces", "force (kinetostatic) analysis in one position: reactions and the balancing moment"),
     "study": ("study", "dynamic study of a linkage problem: J_e, M_r, the flywheel three ways"),
     "gallery": ("gallery", "build every gallery figure (SVG, optionally PNG)"),
     "worksheet": ("worksheet", "printable worksheets with answer keys (variants from a seed)"),

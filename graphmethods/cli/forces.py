@@ -1,0 +1,167 @@
+"""``graphmethods forces CASE (--phi-deg A | --position K)``: the force analysis in one position.
+
+CASE is a problem file or a built-in problem's name (``graphmethods forces shaper --position 3``).
+The crank turns at the file's mean speed (or ``--n``, rev/min) with ``--epsilon-1`` (rad/s², +
+speeding up); the working load is the file's at that position; ``--gravity`` adds the weights
+(g = 9.81 m/s² along −y of the file's frame).
+
+With ``--json`` one JSON object: ``"links"`` (per link number the inertia force ``"F_i"`` [Fx, Fy]
+in N at the centre of mass, the inertia moment ``"M_i"`` in N·m, counterclockwise +, and ``"h"``,
+the distance F_i is moved to replace both, m), ``"reactions"`` (per pair ``"R_ij"``, the force
+link i exerts on link j, [Rx, Ry] in N, frame = 0), ``"M_balance"`` (the balancing moment on the
+crank from the force plans, N·m, counterclockwise +), ``"M_balance_lever"`` (Zhukovsky's lever),
+``"M_balance_power"`` (the power balance) and their differences in per cent, and ``"pairs"``
+(where each reaction acts; a prismatic pair's couple and the offset h of its normal force).
+Without ``--json`` the same as a table, in ``--lang en|ru|zh``.
+"""
+
+from __future__ import annotations
+
+import math
+
+from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
+
+WORDS = {
+    "en": {"title": "Force analysis", "position": "position", "phi": "crank angle φ", "omega": "ω₁",
+           "eps": "ε₁", "gravity": "weights", "yes": "included (g = 9.81 m/s², −y)", "no": "left out",
+           "links": "Inertia loads", "link": "link", "pairs": "Reactions (force of link i on link j)",
+           "pair": "pair", "balance": "Balancing moment on the crank (counterclockwise +)",
+           "plans": "from the force plans", "lever": "from Zhukovsky's lever", "power": "from the power balance",
+           "diff": "difference"},
+    "ru": {"title": "Силовой расчёт", "position": "положение", "phi": "угол кривошипа φ", "omega": "ω₁",
+           "eps": "ε₁", "gravity": "силы тяжести", "yes": "учтены (g = 9,81 м/с², −y)", "no": "не учтены",
+           "links": "Силы и моменты инерции", "link": "звено", "pairs": "Реакции (сила звена i на звено j)",
+           "pair": "пара", "balance": "Уравновешивающий момент на кривошипе (против часовой +)",
+           "plans": "по планам сил", "lever": "по рычагу Жуковского", "power": "по балансу мощностей",
+           "diff": "расхождение"},
+    "zh": {"title": "动态静力分析", "position": "位置", "phi": "曲柄转角 φ", "omega": "ω₁", "eps": "ε₁",
+           "gravity": "重力", "yes": "计入 (g = 9.81 m/s², −y)", "no": "不计", "links": "惯性力与惯性力矩",
+           "link": "构件", "pairs": "运动副反力 (构件 i 对构件 j 的力)", "pair": "运动副",
+           "balance": "曲柄上的平衡力矩 (逆时针为正)", "plans": "力多边形法", "lever": "茹可夫斯基杠杆法",
+           "power": "功率平衡法", "diff": "相对误差"},
+}
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser(
+        "forces", help="force (kinetostatic) analysis in one position: reactions and the balancing moment",
+        description="The force analysis of a linkage problem in one position: inertia forces and moments, the "
+                    "reaction in every pair group by group, the balancing moment on the crank from the force "
+                    "plans, checked by Zhukovsky's lever and the power balance.")
+    p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name (graphmethods problems)")
+    where = p.add_mutually_exclusive_group(required=True)
+    where.add_argument("--phi-deg", type=float, default=None, metavar="A",
+                       help="the crank angle, degrees from +x, counterclockwise")
+    where.add_argument("--position", type=int, default=None, metavar="K",
+                       help="position K of 0…M, counted from the start of the working stroke")
+    p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
+                   help="equal crank steps per turn for --position (default 12)")
+    p.add_argument("--gravity", action="store_true", help="add the weights (g = 9.81 m/s² along −y)")
+    p.add_argument("--n", type=float, default=None, metavar="N",
+                   help="mean crank speed, rev/min (default: the file's n_rpm)")
+    p.add_argument("--epsilon-1", type=float, default=0.0, metavar="E",
+                   help="crank angular acceleration, rad/s², + when the crank speeds up (default 0)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language of the table (default en)")
+    p.set_defaults(func=run)
+
+
+def _v(z: complex) -> list[float]:
+    return [float(z.real) + 0.0, float(z.imag) + 0.0]
+
+
+def _f(x: float) -> float:
+    return float(x) + 0.0
+
+
+def result(case, *, phi_deg: float | None = None, position: int | None = None, m: int = 12,
+           gravity: bool = False, n_rpm: float | None = None, epsilon_1: float = 0.0) -> dict:
+    """The force analysis as a JSON-ready dict (see the module docstring)."""
+    from graphmethods.dynamics.forces import case_forces
+    from graphmethods.units import omega_from_n
+
+    omega_1 = case.omega_m if n_rpm is None else omega_from_n(n_rpm)
+    if phi_deg is not None:
+        fa = case_forces(case, phi_deg=[phi_deg], omega_1=omega_1, epsilon_1=epsilon_1, gravity=gravity)
+        i = 0
+    else:
+        fa = case_forces(case, m=m, omega_1=omega_1, epsilon_1=epsilon_1, gravity=gravity)
+        i = int(position)
+    mo = fa.motion
+    lk = mo.linkage
+    links = {}
+    for k in lk.links:
+        F, M = fa.inertia_of(k)
+        Fi, Mi = complex(F[i]), float(M[i])
+        h = 0.0 if Mi == 0.0 else (abs(Mi) / abs(Fi) if Fi != 0 else None)
+        links[k] = {"F_i": _v(Fi), "M_i": _f(Mi), "h": h}
+    reactions, pairs = {}, {}
+    for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
+        reactions[key] = _v(complex(r.R[i]))
+        info = {"kind": "revolute" if r.kind == "R" else "prismatic", "at": _v(complex(r.at[i]))}
+        if r.kind == "P":
+            info["M"] = _f(r.M[i])
+            hh = float(r.h[i])
+            info["h"] = _f(hh) if math.isfinite(hh) else None
+        pairs[key] = info
+    Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
+    return {
+        "case": case.name, "kind": case.kind, "source": case.source,
+        "position": None if phi_deg is not None else int(position), "m": None if phi_deg is not None else m,
+        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0),
+        "n_rpm": case.n_rpm if n_rpm is None else n_rpm, "omega_1": omega_1, "epsilon_1": epsilon_1,
+        "sense": "ccw" if lk.sense == 1 else "cw", "gravity": 9.81 if gravity else 0.0,
+        "structure": lk.structure().formula,
+        "links": links, "reactions": reactions, "pairs": pairs,
+        "M_balance": _f(Mb), "M_balance_lever": _f(Ml), "M_balance_power": _f(Mp),
+        "difference_lever_percent": _f(fa.difference_percent(fa.M_balance_lever)[i]),
+        "difference_power_percent": _f(fa.difference_percent(fa.M_balance_power)[i]),
+    }
+
+
+def _text(res: dict, lang: str) -> str:
+    w = WORDS[lang]
+    where = (f"{w['position']} {res['position']} / {res['m']}, " if res["position"] is not None else "")
+    lines = [f"{w['title']}: {res['case'] or res['kind']}  ({res['source']})",
+             (f"{where}{w['phi']} = {res['phi_deg']:.4f}°, {w['omega']} = {res['omega_1']:.6g} rad/s "
+              f"({res['sense']}), {w['eps']} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
+             f"{w['gravity']}: {w['yes'] if res['gravity'] else w['no']}", "", w["links"],
+             f"{w['link']:>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  {'M_i [N·m]':>12}  {'h [m]':>10}"]
+    for k, d in res["links"].items():
+        fx, fy = d["F_i"]
+        h = "-" if d["h"] is None else f"{d['h']:.5f}"
+        lines.append(f"{k:>6}  {fx:12.3f}  {fy:12.3f}  {math.hypot(fx, fy):12.3f}  {d['M_i']:12.4f}  {h:>10}")
+    lines += ["", w["pairs"], f"{w['pair']:>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
+    for k, (rx, ry) in res["reactions"].items():
+        lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
+    lines += ["", w["balance"],
+              f"  {w['plans']:<28} {res['M_balance']:14.6f} N·m",
+              (f"  {w['lever']:<28} {res['M_balance_lever']:14.6f} N·m   {w['diff']} "
+               f"{res['difference_lever_percent']:.2e} %"),
+              (f"  {w['power']:<28} {res['M_balance_power']:14.6f} N·m   {w['diff']} "
+               f"{res['difference_power_percent']:.2e} %")]
+    return "\n".join(lines)
+
+
+def run(args) -> int:
+    from graphmethods.errors import InputError
+    from graphmethods.problems import builtin
+
+    if args.phi_deg is not None and not math.isfinite(args.phi_deg):
+        raise InputError(f"--phi-deg must be a finite angle in degrees, got {args.phi_deg}")
+    m = count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
+    if args.position is not None and not 0 <= args.position <= m:
+        raise InputError(f"--position {args.position}: give a position from 0 to {m} (--positions {m})")
+    if not math.isfinite(args.epsilon_1):
+        raise InputError(f"--epsilon-1 must be a finite angular acceleration in rad/s², got {args.epsilon_1}")
+    if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
+        raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
+    case = builtin.case(args.case)
+    res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=args.n,
+                 epsilon_1=args.epsilon_1)
+    if args.json:
+        print(json_text(res, ensure_ascii=False, indent=1))
+    else:
+        check_finite({k: v for k, v in res.items() if k != "pairs"})
+        print(_text(res, args.lang))
+    return 0

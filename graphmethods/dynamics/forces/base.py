@@ -1,0 +1,252 @@
+"""What the force analysis of every group shares: applied forces, reactions, force-plan records.
+
+Plane vectors are complex numbers x + iy over the positions (arrays of shape (n,)), as in the
+kinematics core; moments are counterclockwise positive. A force ``F`` applied at ``at`` with a
+couple ``M`` has the moment ``(at − X) × F + M`` about a point X.
+
+A reaction ``R_ij`` is the force link i exerts on link j (frame = 0) at their pair; a revolute
+pair transmits a force through its joint, a prismatic pair a force perpendicular to the guide
+and a couple (the normal force's line of action is moved off the slider's joint by
+h = M/N along the guide).
+
+>>> import numpy as np
+>>> f = Force("G_2", F=np.array([-10j]), at=np.array([0.2 + 0j]), M=np.zeros(1))
+>>> float(moment_about([f], np.array([0j]))[0])         # 0.2 m × (−10 N) about the origin
+-2.0
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from graphmethods.errors import InputError
+
+Cx = NDArray[np.complex128]
+Fl = NDArray[np.float64]
+
+GROUND = "0"
+
+
+def cross(a: Cx | complex, b: Cx | complex) -> Fl:
+    """z-component of a × b for complex plane vectors (Im(conj(a)·b))."""
+    out: Fl = np.imag(np.conj(a) * b)
+    return out
+
+
+def unit(z: Cx) -> Cx:
+    """z/|z| (complex plane vectors)."""
+    out: Cx = z / np.abs(z)
+    return out
+
+
+def solve2(e1: Cx, e2: Cx, rhs: Cx) -> tuple[Fl, Fl]:
+    """Real x, y with ``x·e1 + y·e2 = rhs`` (Cramer's rule, vectorised): the intersection of two
+    directions in a force plan. A parallel pair gives inf/NaN: callers check first."""
+    det = cross(e1, e2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x: Fl = cross(rhs, e2) / det
+        y: Fl = cross(e1, rhs) / det
+    return x, y
+
+
+@dataclass(frozen=True, eq=False)
+class Force:
+    """A force on a link (an inertia force, a weight, the working load, a reaction from a group
+    solved before), over the positions.
+
+    Attributes
+    ----------
+    label : str
+        As the figure writes it: ``"F_i2"``, ``"G_2"``, ``"F_load"``, ``"R_43"``, ``"M_i2"``.
+    F : complex ndarray (n,)
+        The force, N (0 for a pure couple).
+    at : complex ndarray (n,)
+        Its point of application, m.
+    M : ndarray (n,)
+        A couple applied with it, N·m, counterclockwise + (the inertia moment, a load moment, the
+        couple of a prismatic pair).
+    """
+
+    label: str
+    F: Cx
+    at: Cx
+    M: Fl
+
+
+def resultant(forces: Sequence[Force], n: int) -> Cx:
+    """Σ F over the forces, N (n,)."""
+    total: Cx = np.zeros(n, dtype=complex)
+    for f in forces:
+        total = total + f.F
+    return total
+
+
+def moment_about(forces: Sequence[Force], X: Cx) -> Fl:
+    """Σ [(at − X) × F + M] over the forces, N·m (n,)."""
+    total: Fl = np.zeros(np.shape(X), dtype=float)
+    for f in forces:
+        total = total + cross(f.at - X, f.F) + f.M
+    return total
+
+
+def pair_key(i: str, j: str) -> str:
+    """``"R_12"`` for links 1 and 2 (``"R_10_11"`` when a number has two digits)."""
+    return f"R_{i}{j}" if len(i) == 1 and len(j) == 1 else f"R_{i}_{j}"
+
+
+def _order(i: str) -> tuple[int, str]:
+    return (len(i), i)
+
+
+@dataclass(frozen=True, eq=False)
+class Reaction:
+    """The reaction in one kinematic pair, over the positions.
+
+    Attributes
+    ----------
+    key : str
+        ``"R_ij"`` with i before j (the lower link number first).
+    by, on : str
+        The link numbers i and j: ``R`` is the force link i exerts on link j.
+    kind : str
+        ``"R"`` (revolute: the force acts through the joint) or ``"P"`` (prismatic).
+    R : complex ndarray (n,)
+        Force of link i on link j, N.
+    at : complex ndarray (n,)
+        The joint (revolute) or the slider's joint on the guide (prismatic), m.
+    M : ndarray (n,)
+        The couple link i exerts on link j about ``at`` (prismatic pairs; 0 for revolute), N·m.
+    guide : complex ndarray (n,) or None
+        The guide's unit direction (prismatic pairs).
+    """
+
+    key: str
+    by: str
+    on: str
+    kind: str
+    R: Cx
+    at: Cx
+    M: Fl
+    guide: Cx | None = None
+
+    @property
+    def h(self) -> Fl:
+        """Where the normal force of a prismatic pair acts: its signed distance from ``at`` along
+        the guide, m (M/(u × R)); 0 for a revolute pair, NaN where the normal force is zero."""
+        if self.guide is None:
+            return np.zeros(self.R.shape)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out: Fl = self.M / cross(self.guide, self.R)
+        return out
+
+
+def reaction(by: str, on: str, kind: str, R: Cx, at: Cx, M: Fl | None = None, guide: Cx | None = None) -> Reaction:
+    """The reaction ``R`` of link ``by`` on link ``on``, stored as ``R_ij`` with i the lower number
+    (the force and couple turned round when ``by`` is the higher one)."""
+    M = np.zeros(R.shape) if M is None else np.broadcast_to(M, R.shape).astype(float)
+    if _order(by) > _order(on):
+        return Reaction(pair_key(on, by), on, by, kind, -R, at, -M, guide)
+    return Reaction(pair_key(by, on), by, on, kind, R, at, M, guide)
+
+
+def on_link(r: Reaction, link: str) -> Force:
+    """The reaction as a force on ``link`` (one of its two links)."""
+    if link == r.on:
+        return Force(r.key, r.R, r.at, r.M)
+    if link == r.by:
+        name = pair_key(r.on, r.by)
+        return Force(name, -r.R, r.at, -r.M)
+    raise InputError(f"{r.key} does not act on link {link}")
+
+
+@dataclass(frozen=True, eq=False)
+class Polygon:
+    """One force polygon of a plan: the known forces laid head to tail in order, closed by the
+    unknowns.
+
+    Attributes
+    ----------
+    links : tuple of str
+        The links whose equilibrium it draws.
+    known : tuple of (str, complex ndarray)
+        The known forces in drawing order (label, N).
+    closing : tuple of (str, complex ndarray or None, complex ndarray)
+        The unknowns that close it: label, the direction of its line (unit; None when the
+        unknown's direction is not known in advance and it is simply the closing side) and the
+        force found, N.
+    """
+
+    links: tuple[str, ...]
+    known: tuple[tuple[str, Cx], ...]
+    closing: tuple[tuple[str, Cx | None, Cx], ...]
+
+    @property
+    def residual(self) -> Fl:
+        """|Σ of every side| over the positions, N (0 to rounding: the polygon closes)."""
+        total: Cx = np.zeros(np.shape(self.closing[0][2]), dtype=complex)
+        for _, F in self.known:
+            total = total + F
+        for _, _, F in self.closing:
+            total = total + F
+        out: Fl = np.abs(total)
+        return out
+
+
+@dataclass(frozen=True, eq=False)
+class ForcePlan:
+    """How one group's reactions are found (the course's construction), over the positions.
+
+    Attributes
+    ----------
+    group : str
+        ``"RRR (2, 3)"``.
+    links : tuple of str
+    steps : tuple of str
+        The construction in words, in order (the moment equations first).
+    first : tuple of (str, complex ndarray)
+        The components found before the plan from moment equations (the tangential parts
+        R^τ of the outer reactions, a normal force from the moments about a pivot).
+    polygons : tuple of Polygon
+        The group's plan, then the polygon of one link that gives the inner reaction.
+    """
+
+    group: str
+    links: tuple[str, ...]
+    steps: tuple[str, ...]
+    first: tuple[tuple[str, Cx], ...]
+    polygons: tuple[Polygon, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class GroupForces:
+    """What a group solver returns: the reactions in its three pairs and its force plan."""
+
+    reactions: tuple[Reaction, ...]
+    plan: ForcePlan
+
+
+@dataclass(frozen=True, eq=False)
+class Kin:
+    """The kinematic state a group solver reads: positions of every point and every link's unit
+    direction, over the positions (from the kinematics core's :class:`Motion`)."""
+
+    z: dict[str, Cx]
+    e: dict[str, Cx]
+    n: int
+
+    def direction(self, link: str) -> Cx:
+        out: Cx = np.broadcast_to(np.asarray(self.e[link], dtype=complex), (self.n,))
+        return out
+
+
+def xy(z: complex) -> list[float]:
+    """[x, y] of a plane vector rounded to 1e-9 (no −0): for messages, JSON and doctests.
+
+    >>> xy(complex(-1e-17, 2.5))
+    [0.0, 2.5]
+    """
+    return [round(float(np.real(z)), 9) + 0.0, round(float(np.imag(z)), 9) + 0.0]

@@ -1,0 +1,68 @@
+"""Force analysis of the RPP dyad (block 2 pinned at P in the slot of yoke 3, which slides on a guide).
+
+As courses solve it: the block's moments about P give the couple of the slot on it; the yoke's
+force plan ``ΣF_3 + R_23 + R_43 = 0`` closes with R_23 ⟂ the slot and R_43 ⟂ the guide; the
+yoke's moments give the couple of the guide; the block's polygon gives R_12.
+
+>>> import numpy as np
+>>> from graphmethods.dynamics.forces.base import Force, Kin, xy
+>>> from graphmethods.kinematics.groups import RPP, Guide
+>>> g = RPP(P="A", R="C", coincident="A3", guide=Guide("0", 0j, 0.0), slot_angle=np.pi / 2)
+>>> kin = Kin(z={"A": np.array([0.06 + 0.08j]), "C": np.array([0.06 + 0j])},
+...           e={"2": np.array([1j]), "3": np.array([1 + 0j])}, n=1)
+>>> load = Force("F", F=np.array([-100 + 0j]), at=np.array([0.06 + 0j]), M=np.zeros(1))   # on the yoke
+>>> res = solve(g, kin, {"3": [load]}, {"A": "1"}.__getitem__)
+>>> [(r.key, xy(r.R[0])) for r in res.reactions]
+[('R_12', [100.0, 0.0]), ('R_23', [100.0, 0.0]), ('R_03', [0.0, 0.0])]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+
+from graphmethods.dynamics.forces.base import (
+    Force,
+    ForcePlan,
+    GroupForces,
+    Kin,
+    Polygon,
+    cross,
+    moment_about,
+    reaction,
+    resultant,
+    solve2,
+)
+from graphmethods.kinematics.groups import RPP
+
+
+def solve(g: RPP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
+    """Reactions of an RPP group (see the module docstring; parameters as :func:`..rrr.solve`)."""
+    l2, l3 = g.links
+    P, Rz = kin.z[g.P], kin.z[g.R]
+    a, gl = carrier(g.P), g.guide.link
+    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
+    n = kin.n
+    u1, u2 = kin.direction(l2), kin.direction(l3)
+    n1, n2 = 1j * u1, 1j * u2
+    Mc_32 = -moment_about(f2, P)                   # couple of the slot on the block, about P
+    F2, F3 = resultant(f2, n), resultant(f3, n)
+    # yoke: ΣF_3 − N1·n1 + N2·n2 = 0  (R_23 = −R_32 = −N1·n1)
+    N1, N2 = solve2(-n1, n2, -F3)
+    R_32, R_g3 = N1 * n1, N2 * n2
+    # yoke about R: M_R(F_3) + (P − R) × (−R_32) − Mc_32 + M_g3 = 0
+    M_g3 = -(moment_about(f3, Rz) + cross(P - Rz, -R_32) - Mc_32)
+    R_a2 = -(F2 + R_32)
+    reactions = (reaction(a, l2, "R", R_a2, P), reaction(l3, l2, "P", R_32, P, Mc_32, u1),
+                 reaction(gl, l3, "P", R_g3, Rz, M_g3, u2))
+    ta, tg = f"{a}{l2}", f"{gl}{l3}"
+    plan = ForcePlan(
+        group=g.name, links=(l2, l3),
+        steps=(f"link {l2}: ΣM_{g.P} = 0 gives the couple of the slot on the block",
+               f"link {l3}: ΣF_{l3} + R_{l2}{l3} + R_{tg} = 0, R_{l2}{l3} ⟂ slot, R_{tg} ⟂ guide",
+               f"link {l3}: ΣM_{g.R} = 0 gives the line of R_{tg}",
+               f"link {l2}: ΣF_{l2} + R_{l3}{l2} + R_{ta} = 0"),
+        first=(),
+        polygons=(
+            Polygon((l3,), tuple((f.label, f.F) for f in f3), ((f"R_{l2}{l3}", n1, -R_32), (f"R_{tg}", n2, R_g3))),
+            Polygon((l2,), (*((f.label, f.F) for f in f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
+    return GroupForces(reactions, plan)

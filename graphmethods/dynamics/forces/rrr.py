@@ -1,0 +1,88 @@
+"""Force analysis of the RRR dyad (links P–C and Q–C pinned at C; P, Q on links solved before).
+
+As courses solve it: the moments of link 2 (P–C) about C give the tangential part of R_12 at P,
+``R^τ_12 = −M_C(link 2)/|PC|`` ⟂ PC (the normal part passes through C), and likewise link 3
+gives R^τ_43 at Q; then the group's force plan
+``R^τ_12 + ΣF_2 + ΣF_3 + R^τ_43 + R^n_43 + R^n_12 = 0`` closes with the two normal parts along
+PC and QC; the polygon of link 2 alone gives the inner reaction R_32.
+
+>>> import numpy as np
+>>> from graphmethods.dynamics.forces.base import Force, Kin, xy
+>>> from graphmethods.kinematics.groups import RRR
+>>> g = RRR(P="A", Q="D", C="C", l_PC=2 ** 0.5, l_QC=2 ** 0.5, links=("2", "3"))
+>>> kin = Kin(z={"A": np.array([0j]), "D": np.array([2 + 0j]), "C": np.array([1 + 1j])}, e={}, n=1)
+>>> load = Force("F", F=np.array([-10j]), at=np.array([1 + 1j]), M=np.zeros(1))   # 10 N down at C
+>>> res = solve(g, kin, {"2": [], "3": [load]}, {"A": "1", "D": "0"}.__getitem__)
+>>> [(r.key, xy(r.R[0])) for r in res.reactions]     # two struts in compression
+[('R_12', [5.0, 5.0]), ('R_03', [-5.0, 5.0]), ('R_23', [5.0, 5.0])]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+
+from graphmethods.dynamics.forces.base import (
+    Force,
+    ForcePlan,
+    GroupForces,
+    Kin,
+    Polygon,
+    cross,
+    moment_about,
+    on_link,
+    reaction,
+    resultant,
+    solve2,
+    unit,
+)
+from graphmethods.kinematics.groups import RRR
+
+
+def solve(g: RRR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
+    """Reactions of an RRR group (see the module docstring).
+
+    Parameters
+    ----------
+    g : RRR
+        The group.
+    kin : Kin
+        Positions of its points, m.
+    loads : mapping link -> forces
+        Every force on its two links (inertia, weight, load, reactions of later groups), N.
+    carrier : callable
+        The link that carries a known joint (``carrier("A") == "1"``).
+    """
+    l2, l3 = g.links
+    P, Q, C = kin.z[g.P], kin.z[g.Q], kin.z[g.C]
+    a, b = carrier(g.P), carrier(g.Q)
+    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
+    n = kin.n
+    u2, u3 = unit(C - P), unit(C - Q)
+    t2dir, t3dir = 1j * u2, 1j * u3
+    # moments about C: (P − C) × R^τ + M_C = 0
+    Rt2 = -moment_about(f2, C) / cross(P - C, t2dir) * t2dir
+    Rt3 = -moment_about(f3, C) / cross(Q - C, t3dir) * t3dir
+    F2, F3 = resultant(f2, n), resultant(f3, n)
+    x, y = solve2(u2, u3, -(Rt2 + F2 + F3 + Rt3))
+    Rn2, Rn3 = x * u2, y * u3
+    R_a2 = Rt2 + Rn2
+    R_b3 = Rt3 + Rn3
+    R_32 = -(R_a2 + F2)
+    reactions = (reaction(a, l2, "R", R_a2, P), reaction(b, l3, "R", R_b3, Q), reaction(l3, l2, "R", R_32, C))
+    ta, tb = f"{a}{l2}", f"{b}{l3}"
+    plan = ForcePlan(
+        group=g.name, links=(l2, l3),
+        steps=(f"link {l2}: ΣM_{g.C} = 0 gives R^τ_{ta} ⟂ {g.P}{g.C}",
+               f"link {l3}: ΣM_{g.C} = 0 gives R^τ_{tb} ⟂ {g.Q}{g.C}",
+               f"plan: R^τ_{ta} + ΣF_{l2} + ΣF_{l3} + R^τ_{tb} + R^n_{tb} + R^n_{ta} = 0, R^n ∥ the links",
+               f"link {l2}: R_{ta} + ΣF_{l2} + R_{l3}{l2} = 0"),
+        first=((f"R^τ_{ta}", Rt2), (f"R^τ_{tb}", Rt3)),
+        polygons=(
+            Polygon((l2, l3), ((f"R^τ_{ta}", Rt2), *((f.label, f.F) for f in f2), *((f.label, f.F) for f in f3),
+                               (f"R^τ_{tb}", Rt3)),
+                    ((f"R^n_{tb}", u3, Rn3), (f"R^n_{ta}", u2, Rn2))),
+            Polygon((l2,), ((f"R_{ta}", R_a2), *((f.label, f.F) for f in f2)), ((f"R_{l3}{l2}", None, R_32),))))
+    return GroupForces(reactions, plan)
+
+
+__all__ = ["on_link", "solve"]
