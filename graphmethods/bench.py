@@ -17,8 +17,8 @@ import statistics
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
-from typing import Callable
 
 import numpy as np
 
@@ -222,10 +222,10 @@ def bench_flywheel(m_values=M_VALUES, *, repeat=3) -> list[Row]:
 def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
     """Velocity analogues from the constructed plans against the analytic derivative and against
     central finite differences; and plans + reduction for n positions."""
+    import pathlib
+
     from graphmethods.dynamics.reduction import reduced_inertia
     from graphmethods.kinematics import read_case
-
-    import pathlib
 
     data = pathlib.Path(__file__).parent / "problems" / "data"
     rows = []

@@ -18,8 +18,8 @@ title is still printed, in the language it was written in, rather than left out.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 from graphmethods.errors import InputError
 from graphmethods.units import check_text
@@ -46,7 +46,7 @@ class Title:
     texts: tuple[tuple[str, str], ...] = ()
 
     @classmethod
-    def of(cls, value, *, where: str = "title") -> "Title":
+    def of(cls, value, *, where: str = "title") -> Title:
         """A Title from a plain string, a mapping by language, a Title (returned as it is) or None.
 
         Parameters

@@ -1,7 +1,6 @@
 """The benchmark's measurements are right (not its times: those are reported, never asserted)."""
 
 import json
-import math
 
 import pytest
 

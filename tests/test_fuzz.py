@@ -26,8 +26,7 @@ import re
 import signal
 
 import pytest
-from hypothesis import HealthCheck, Phase, given, settings
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, Phase, given, settings, strategies as st
 
 from graphmethods import cli
 from graphmethods.dynamics import excess_work as ew

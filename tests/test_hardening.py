@@ -364,7 +364,7 @@ def test_set_writers_full_disk(tmp_path, capsys, monkeypatch, argv):
     real_open = builtins.open
 
     def full(file, mode="r", *a, **k):
-        if "x" in mode or "w" in mode and "b" in mode:
+        if "x" in mode or ("w" in mode and "b" in mode):
             raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
         return real_open(file, mode, *a, **k)
 

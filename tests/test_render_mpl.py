@@ -7,7 +7,7 @@ import warnings
 import pytest
 
 from graphmethods.errors import OutputExistsError
-from graphmethods.render import fonts, mpl
+from graphmethods.render import mpl
 from graphmethods.scene import Page, Scale, Scene, Text, Vector
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

@@ -6,16 +6,16 @@ import shutil
 import subprocess
 
 import pytest
+from pdf_reading import Pdf
 
 from graphmethods import problems, sheets
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import fonts, pdf
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, Scale, Scene, Text, Vector
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT
 from graphmethods.scene.elements import Polyline
+from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT
 from graphmethods.scene.primitives import Style
-from pdf_reading import Pdf
 
 PT_PER_MM = 72 / 25.4
 

@@ -9,13 +9,24 @@ import sys
 import xml.etree.ElementTree as ET
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.scene import (
-    Axis, Dimension, Page, Point, Region, Scale, ScaleCaptions, Scene, Table, Text, TitleBlock, Vector, markup,
+    Axis,
+    Dimension,
+    Page,
+    Point,
+    Region,
+    Scale,
+    ScaleCaptions,
+    Scene,
+    Table,
+    Text,
+    TitleBlock,
+    Vector,
+    markup,
 )
 
 NS = {"svg": "http://www.w3.org/2000/svg"}
@@ -172,8 +183,8 @@ def test_save_into_a_missing_directory_says_so(tmp_path):
 
 
 def test_non_finite_coordinates_are_refused_not_written():
-    from graphmethods.scene.primitives import Path as PPath
     from graphmethods.render.base import draw
+    from graphmethods.scene.primitives import Path as PPath
 
     class Bad(Text):
         def primitives(self):

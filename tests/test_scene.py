@@ -5,17 +5,38 @@ import subprocess
 import sys
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    NOTATIONS, Axis, Dimension, Frame, Line, Notation, Page, Point, Region, Scale, ScaleCaptions, Scene, SignMark,
-    Table, Text, TitleBlock, Vector, format_mm, format_value, in_language, markup, nice_ticks, notation, pi_ticks,
-    pick_angle_scale, pick_scale,
+    NOTATIONS,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Notation,
+    Page,
+    Point,
+    Region,
+    Scale,
+    ScaleCaptions,
+    Scene,
+    SignMark,
+    Table,
+    Text,
+    TitleBlock,
+    Vector,
+    format_mm,
+    format_value,
+    in_language,
+    markup,
+    nice_ticks,
+    notation,
+    pi_ticks,
+    pick_angle_scale,
+    pick_scale,
 )
 from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, walk
-
 
 # ----------------------------------------------------------------------------- numbers
 

@@ -9,15 +9,11 @@ import numpy as np
 import pytest
 
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.render import steps as R
-from graphmethods.render import svg
+from graphmethods.render import steps as R, svg
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, markup
 from graphmethods.scene.steps import NEW_COLOUR, OLD_COLOUR
-from graphmethods.sheets import calculus as C
-from graphmethods.sheets import dynamics as D
-from graphmethods.sheets import kinematics as K
-from graphmethods.sheets import steps as S
+from graphmethods.sheets import calculus as C, dynamics as D, kinematics as K, steps as S
 from graphmethods.sheets.energy import energy_indicator
 from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 

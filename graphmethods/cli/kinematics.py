@@ -214,9 +214,8 @@ def figures(case, m: int, *, notation: str = "en", plan_position: int | None = N
     Positions and velocity plans are built once (a lazy Study) and shared by every figure.
     """
     from graphmethods.dynamics.study import Study
-    from graphmethods.sheets import kinematics as ks
-
     from graphmethods.errors import InputError
+    from graphmethods.sheets import kinematics as ks
 
     if m > FIGURES_MAX_POSITIONS:
         raise InputError(f"--figures draws at most {FIGURES_MAX_POSITIONS} positions (the velocity table's rows must "

@@ -38,9 +38,8 @@ def add_parser(sub) -> None:
 
 
 def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
-    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
-
     from graphmethods.errors import NoFlywheelNeeded
+    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
 
     try:
         scene = dynamic_analysis_sheet(study, page=page, notation=lang)

@@ -28,8 +28,8 @@ W1 (diesel generator; the staircase goes down first, b is the lowest point, e th
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 import numpy as np
 

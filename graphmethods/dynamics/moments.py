@@ -20,8 +20,8 @@ all exactly alike.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from typing import Callable, Iterable, Sequence
 
 import numpy as np
 
@@ -79,7 +79,7 @@ class MomentCurve:
 
     # ----------------------------------------------------------------- constructors
     @classmethod
-    def _valid(cls, phi: np.ndarray, M: np.ndarray, approx_error: float = 0.0) -> "MomentCurve":
+    def _valid(cls, phi: np.ndarray, M: np.ndarray, approx_error: float = 0.0) -> MomentCurve:
         """A curve on knots already validated (those of another curve): only M is checked."""
         if not np.isfinite(M).all():
             raise InputError("the moments overflow: the sum or difference of the curves is not finite")
@@ -90,7 +90,7 @@ class MomentCurve:
         return curve
 
     @classmethod
-    def points(cls, phi: Sequence[float], M: Sequence[float], *, period: float | None = None) -> "MomentCurve":
+    def points(cls, phi: Sequence[float], M: Sequence[float], *, period: float | None = None) -> MomentCurve:
         """Piecewise-linear curve through the points (φ_k, M_k).
 
         If ``period`` is given and the points stop short of ``phi[0] + period``, the curve
@@ -110,7 +110,7 @@ class MomentCurve:
         return cls(phi, M)
 
     @classmethod
-    def steps(cls, steps: Iterable[Sequence[float]]) -> "MomentCurve":
+    def steps(cls, steps: Iterable[Sequence[float]]) -> MomentCurve:
         """Piecewise-constant curve from ``[(phi_start, phi_end, M), ...]`` (contiguous, in order)."""
         if isinstance(steps, (str, bytes)) or not hasattr(steps, "__iter__"):
             raise InputError(f"steps: give a list of (phi_start, phi_end, M) steps, got {steps!r}")
@@ -134,7 +134,7 @@ class MomentCurve:
         return cls(np.array(phi), np.array(M))
 
     @classmethod
-    def constant(cls, M: float, *, period: float = TWO_PI, start: float = 0.0) -> "MomentCurve":
+    def constant(cls, M: float, *, period: float = TWO_PI, start: float = 0.0) -> MomentCurve:
         """A constant moment over one period."""
         M, start = real(M, "M", tiny_ok=True), real(start, "start", tiny_ok=True)
         period = real(period, "period", lo=0.0, lo_open=True)
@@ -149,7 +149,7 @@ class MomentCurve:
         start: float = 0.0,
         tol: float = 1e-9,
         max_points: int = 2**21,
-    ) -> "MomentCurve":
+    ) -> MomentCurve:
         """Sample a callable ``f(phi) -> M`` (vectorised over numpy arrays) into chords.
 
         Intervals are halved until the chord's midpoint is within ``tol`` (relative to the
@@ -240,7 +240,7 @@ class MomentCurve:
             slope = np.where(h > 0, (M[j + 1] - M[j]) / np.where(h > 0, h, 1.0), 0.0)
         return E[j] + M[j] * t + 0.5 * slope * t * t
 
-    def with_knots(self, phi) -> "MomentCurve":
+    def with_knots(self, phi) -> MomentCurve:
         """The same curve with extra knots at the given angles (no change to its values)."""
         x = np.unique(np.clip(np.asarray(phi, dtype=float), self.phi[0], self.phi[-1]))
         zero = MomentCurve(np.concatenate(([self.phi[0]], x, [self.phi[-1]])), np.zeros(x.size + 2))
@@ -274,13 +274,13 @@ class MomentCurve:
         x = self.start + np.mod(x - self.start, self.period)
         return self.limits(x)[1]
 
-    def __add__(self, other: "MomentCurve") -> "MomentCurve":
+    def __add__(self, other: MomentCurve) -> MomentCurve:
         return _combine(self, other, +1.0)
 
-    def __sub__(self, other: "MomentCurve") -> "MomentCurve":
+    def __sub__(self, other: MomentCurve) -> MomentCurve:
         return _combine(self, other, -1.0)
 
-    def __neg__(self) -> "MomentCurve":
+    def __neg__(self) -> MomentCurve:
         return MomentCurve(self.phi, -self.M, self.approx_error)
 
 

@@ -40,8 +40,8 @@ same grid.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -255,7 +255,7 @@ class ReducedModel:
 
     @classmethod
     def from_samples(cls, *, J_e, M_e, phi_T: float = TWO_PI, phi_0: float = 0.0,
-                     interpolation: str = "linear", M_e_interpolation: str | None = None) -> "ReducedModel":
+                     interpolation: str = "linear", M_e_interpolation: str | None = None) -> ReducedModel:
         """A model from values at uniformly spaced positions 0…m (position m = position 0 + φ_T).
 
         Parameters

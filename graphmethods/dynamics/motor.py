@@ -41,14 +41,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphmethods.dynamics.motion import (
-    MotionResult,
-    ReducedModel,
-    _check_count,
-    _check_mean,
-    _check_positive,
-    _frozen,
-)
+from graphmethods.dynamics.motion import MotionResult, ReducedModel, _check_count, _check_mean, _check_positive, _frozen
 from graphmethods.errors import InputError, MotionError
 from graphmethods.units import omega_from_n
 

@@ -22,9 +22,9 @@ exactly, so the exact solver sees the jumps where they are, not between position
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -238,7 +238,7 @@ def diagram_moment(positions, plans, diagram: ForceDiagram) -> np.ndarray:
         F = diagram.value(positions.phi_from_start)
     else:
         if positions.s is None:
-            raise InputError(f"a force diagram against the stroke needs a slider output; this linkage has none")
+            raise InputError("a force diagram against the stroke needs a slider output; this linkage has none")
         on_stroke = positions.working if diagram.stroke == "working" else ~positions.working | positions.extreme
         F = np.where(on_stroke, diagram.value(positions.s / positions.H), 0.0)
     M = F * speed

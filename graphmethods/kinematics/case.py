@@ -40,9 +40,10 @@ from __future__ import annotations
 
 import math
 import pathlib
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, Mapping
+from typing import Any
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.four_bar import FourBar

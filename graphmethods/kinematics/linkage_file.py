@@ -42,8 +42,9 @@ key                   meaning
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from types import MappingProxyType
-from typing import Any, Mapping
+from typing import Any
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Guide

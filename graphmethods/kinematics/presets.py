@@ -16,7 +16,7 @@ distance in m, angle in rad from the line first joint → second joint.
 from __future__ import annotations
 
 import math
-from typing import Mapping
+from collections.abc import Mapping
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.groups import GROUND, RPR, RRP, RRR, Guide

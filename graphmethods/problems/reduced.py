@@ -18,7 +18,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.compat import trapezoid
-
 from graphmethods.dynamics.motion import ReducedModel
 from graphmethods.titles import Title
 from graphmethods.units import omega_from_n

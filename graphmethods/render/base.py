@@ -16,7 +16,7 @@ from __future__ import annotations
 from typing import Any, Protocol, runtime_checkable
 
 from graphmethods.scene import markup
-from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, Style, XY
+from graphmethods.scene.primitives import XY, Circle, Group, Label, Path, Polygon, Style
 from graphmethods.scene.scene import Scene, make_id
 
 

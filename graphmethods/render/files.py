@@ -29,7 +29,7 @@ import secrets
 import shutil
 import signal
 import threading
-from typing import Mapping
+from collections.abc import Mapping
 
 from graphmethods.errors import InputError, OutputError, OutputExistsError
 

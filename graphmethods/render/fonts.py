@@ -83,7 +83,7 @@ def _sfnt(path: str, index: int = 0):
     return TTFont(path, fontNumber=index, lazy=True, recalcTimestamp=False, recalcBBoxes=False)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _faces_in(path: str) -> tuple[tuple[str, int], ...]:
     """(family, weight class) of each face in a font file; () when it cannot be read."""
     from fontTools.ttLib import TTCollection
@@ -105,7 +105,7 @@ def _faces_in(path: str) -> tuple[tuple[str, int], ...]:
         return ()
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _usable(path: str, index: int) -> bool:
     """The face has distinct glyphs for Chinese characters and outlines a PDF can embed (TrueType or CFF)."""
     try:
@@ -392,7 +392,7 @@ class Face:
             k = self._kerns[key] = int(self._ft.get_kerning(left, right, self._unscaled))
         return k
 
-    @functools.lru_cache(maxsize=None)
+    @functools.cache
     def pdf_metrics(self) -> PdfMetrics:
         """The face's name, kind of outlines and descriptor metrics (1/1000 em), read with fontTools."""
         f = _sfnt(self.path, self.index)
@@ -467,12 +467,12 @@ def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
         font.close()
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _face(path: str, index: int = 0) -> Face:
     return Face(path, index)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _base_path(bold: bool) -> str:
     from matplotlib.font_manager import FontProperties, findfont
 

@@ -27,7 +27,7 @@ from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
 
 PT_PER_MM = 72.0 / 25.4
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _font(size_pt: float, family: tuple, weight: str):
     """FontProperties, one object per (size, family, weight): matplotlib caches its fonts by them."""
     from matplotlib.font_manager import FontProperties
@@ -47,7 +47,7 @@ def _extent(renderer, text: str, prop) -> tuple[float, float, float]:
     return got
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _label_batch_class():
     """An Artist drawing many labels straight through ``renderer.draw_text``.
 

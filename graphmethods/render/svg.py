@@ -20,8 +20,8 @@ import xml.etree.ElementTree as ET
 
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
-from graphmethods.scene.numbers import format_mm as fmt
 from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
+from graphmethods.scene.numbers import format_mm as fmt
 
 #: font list: DejaVu Sans (Greek, Cyrillic), then common CJK fonts for Chinese text
 FONT_FAMILY = ("'DejaVu Sans', 'Liberation Sans', Arial, 'Noto Sans CJK SC', 'Source Han Sans SC', "

@@ -31,9 +31,19 @@ from graphmethods.errors import InputError
 from graphmethods.scene import markup
 from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import (
-    AXIS, MAIN, THIN, VECTOR, XY, Circle, Label, Path, Polygon, Style, walk,
+    AXIS,
+    MAIN,
+    THIN,
+    VECTOR,
+    XY,
+    Circle,
+    Group as PGroup,
+    Label,
+    Path,
+    Polygon,
+    Style,
+    walk,
 )
-from graphmethods.scene.primitives import Group as PGroup
 from graphmethods.scene.scale import Scale
 
 #: vertical metrics of the default font, in em: ascent above the baseline, descent below, cap height
@@ -411,7 +421,7 @@ class Vector(Element):
         object.__setattr__(self, "end", _pt(self.end))
 
     @classmethod
-    def of(cls, start, *, value: float, scale: Scale, angle_deg: float = 0.0, **kw) -> "Vector":
+    def of(cls, start, *, value: float, scale: Scale, angle_deg: float = 0.0, **kw) -> Vector:
         """The vector of a physical ``value`` drawn ``value/μ`` mm long at ``angle_deg``.
 
         The angle is as seen on paper, counterclockwise from the +x direction; a

@@ -17,9 +17,9 @@ changes the whole figure.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Mapping
 
 from graphmethods.errors import InputError
 from graphmethods.scene.numbers import format_value

@@ -105,7 +105,7 @@ class Page:
     def height_mm(self) -> float:
         return self._dims()[1]
 
-    def with_(self, **changes) -> "Page":
+    def with_(self, **changes) -> Page:
         """A copy with some fields changed."""
         from dataclasses import replace
 

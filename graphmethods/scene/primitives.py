@@ -47,7 +47,7 @@ class Style:
     dash: tuple[float, ...] | None = None
     fill: str | None = None
 
-    def with_(self, **changes) -> "Style":
+    def with_(self, **changes) -> Style:
         """A copy with some fields changed."""
         from dataclasses import replace
 
@@ -122,7 +122,7 @@ class Group:
     """A named container; ``name`` becomes the group's id in SVG output."""
 
     name: str
-    children: tuple["Primitive", ...]
+    children: tuple[Primitive, ...]
 
 
 Primitive = Union[Path, Polygon, Circle, Label, Group]

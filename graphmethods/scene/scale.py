@@ -21,8 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.units import CONVENIENT, convenient_at_least
 from graphmethods.scene.numbers import format_value
+from graphmethods.units import CONVENIENT, convenient_at_least
 
 #: the convenient mantissas textbooks use; 1.5 and 3 are allowed on request
 SERIES = CONVENIENT

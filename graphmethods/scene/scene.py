@@ -90,11 +90,11 @@ class Scene:
                 raise InputError(f"scene {self.name}: {e!r} is not a figure element")
         object.__setattr__(self, "elements", els)
 
-    def add(self, *elements: Element) -> "Scene":
+    def add(self, *elements: Element) -> Scene:
         """A new scene with ``elements`` appended."""
         return replace(self, elements=self.elements + tuple(elements))
 
-    def with_(self, **changes) -> "Scene":
+    def with_(self, **changes) -> Scene:
         """A copy with some fields changed."""
         return replace(self, **changes)
 

@@ -23,8 +23,9 @@ function that builds the figure and lists its rules.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Callable, Sequence, Union
+from typing import Union
 
 from graphmethods.errors import InputError
 from graphmethods.scene.elements import Element, Text

@@ -53,7 +53,7 @@ from graphmethods.scene import Page, Scene
 from graphmethods.scene.elements import CAP, Element
 from graphmethods.scene.primitives import Group, Label, Path, Polygon, Style
 from graphmethods.sheets import check as checking
-from graphmethods.sheets.check import CheckReport, Item, LinkageData, CycleData, load_problem
+from graphmethods.sheets.check import CheckReport, CycleData, Item, LinkageData, load_problem
 from graphmethods.sheets.worksheets import RED, SEGMENTS
 
 #: how far a label may be from the point it names, mm

@@ -31,14 +31,28 @@ import numpy as np
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Page, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, nice_ticks,
-    pick_angle_scale, pick_scale,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Page,
+    Point,
+    Polyline,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    format_value,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+    pick_angle_scale,
+    pick_scale,
 )
-from graphmethods.scene import format_value, in_language, markup
-from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, problem_title, standard_page
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, problem_title
 
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables

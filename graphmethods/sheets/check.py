@@ -57,8 +57,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, Text, in_language
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, Text, in_language, notation as get_notation
 from graphmethods.scene.elements import Element, Line
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets import worksheets as ws

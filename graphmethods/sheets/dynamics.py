@@ -39,14 +39,33 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, nice_ticks,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Point,
+    Polyline,
+    Scale,
+    ScaleCaptions,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
 )
-from graphmethods.scene import in_language, markup
-from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.layout import (
-    TEXT_MM, TITLE_MM, Occupancy, Sheet, given_angle_scale, given_scale, problem_title,
+    TEXT_MM,
+    TITLE_MM,
+    Occupancy,
+    Sheet,
+    given_angle_scale,
+    given_scale,
+    problem_title,
 )
 
 SMALL_MM = 2.8          # tick labels, position numbers

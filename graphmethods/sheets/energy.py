@@ -21,15 +21,34 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Point, Polyline, Region, Scale, Scene, SignMark, Table, Text,
-    Vector, nice_ticks, pi_ticks,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Point,
+    Polyline,
+    Region,
+    Scale,
+    Scene,
+    SignMark,
+    Table,
+    Text,
+    Vector,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+    pi_ticks,
 )
-from graphmethods.scene import markup
-from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import Group, label_bbox
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.sheets.layout import (
-    TEXT_MM, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale, problem_title,
+    TEXT_MM,
+    Occupancy,
+    Sheet,
+    angle_deg_text,
+    given_angle_scale,
+    given_scale,
+    problem_title,
 )
 
 SMALL_MM = 2.8          # tick labels, values beside vectors
@@ -237,8 +256,7 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
     _register(occ, *ordinates)
 
     # the intervals: hatched regions with sign, area and work
-    from shapely.geometry import Polygon as SPolygon
-    from shapely.geometry import box as sbox
+    from shapely.geometry import Polygon as SPolygon, box as sbox
 
     outlines, polys = [], []
     for i in range(len(ew.work)):

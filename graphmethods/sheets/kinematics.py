@@ -48,13 +48,23 @@ import numpy as np
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import (
-    Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, in_language, markup,
+    Frame,
+    Line,
+    Point,
+    Polyline,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+    notation as get_notation,
 )
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Dimension, Group
-from graphmethods.scene.primitives import DASHED, THIN, Path, Style
+from graphmethods.scene.elements import Dimension
+from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, standard_page
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.units import convenient_at_least
 
 SMALL_MM = 2.8          # position numbers, plan labels
@@ -153,7 +163,7 @@ class _Linkage:
         self._plans = plans
 
     @classmethod
-    def of(cls, obj, *, m=None, omega_1=None) -> "_Linkage":
+    def of(cls, obj, *, m=None, omega_1=None) -> _Linkage:
         from graphmethods.dynamics.study import Study
         from graphmethods.kinematics import Case, Mechanism, Positions, VelocityPlans
 

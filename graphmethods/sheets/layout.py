@@ -18,8 +18,7 @@ import math
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, TitleBlock, markup
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Page, Scale, TitleBlock, markup, notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label, place_label
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale

@@ -30,13 +30,12 @@ True
 from __future__ import annotations
 
 import pathlib
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, in_language
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Axis, Page, Scale, in_language, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.steps import BuildUp, Rule, partition
 

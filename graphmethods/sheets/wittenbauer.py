@@ -35,19 +35,50 @@ import numpy as np
 
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
-from graphmethods.units import convenient_at_least
 from graphmethods.scene import (
-    Axis, Dimension, Line, Page, Point, Polyline, Scale, Scene, Table, Text, nice_ticks, pick_scale,
+    Axis,
+    Dimension,
+    Line,
+    Page,
+    Point,
+    Polyline,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+    pick_scale,
 )
-from graphmethods.scene import in_language, markup
-from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox, make_label
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import (
-    PROJECTION, SMALL_MM, TEXT_MM, TWO_PI, CurveSpec, SheetFrame, as_study, clear_ticks, delta_T_curve,
-    fine_angles, given_angle_scale, given_scale, inertia_curve, moment_curves, phi_graph_elements, problem_text,
-    quantity, require_step_load, sym, turned_inertia_elements, unit, value_text,
+    PROJECTION,
+    SMALL_MM,
+    TEXT_MM,
+    TWO_PI,
+    CurveSpec,
+    SheetFrame,
+    as_study,
+    clear_ticks,
+    delta_T_curve,
+    fine_angles,
+    given_angle_scale,
+    given_scale,
+    inertia_curve,
+    moment_curves,
+    phi_graph_elements,
+    problem_text,
+    quantity,
+    require_step_load,
+    sym,
+    turned_inertia_elements,
+    unit,
+    value_text,
 )
+from graphmethods.units import convenient_at_least
 
 RAY = Style(width_mm=0.35)
 TABLE_MM = 3.0

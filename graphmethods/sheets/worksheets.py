@@ -39,10 +39,11 @@ import json
 import math
 import pathlib
 import re
-from dataclasses import dataclass, field, fields, replace
+from collections.abc import Callable
+from dataclasses import dataclass, fields, replace
 from fractions import Fraction
 from functools import cached_property
-from typing import Callable, ClassVar
+from typing import ClassVar
 
 import numpy as np
 
@@ -50,12 +51,23 @@ from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import flywheel
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.scene import Axis, Page, Scale, Scene, Table, Text, Vector, in_language, markup, nice_ticks
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
+from graphmethods.scene import (
+    Axis,
+    Page,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+)
+from graphmethods.scene.elements import Element, Line, Point, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
-from graphmethods.titles import Title
 from graphmethods.sheets import answers
+from graphmethods.titles import Title
 from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
@@ -434,7 +446,7 @@ class StepMomentVariant(_FlywheelVariant):
     def steps(self) -> list[tuple[float, float, float]]:
         """(φ from, φ to, M_r) in degrees and N·m for a step curve."""
         p, M = self.phi_deg, self.M_r
-        return [(p[i], p[i + 1], M[i]) for i in range(0, len(p) - 1) if p[i + 1] > p[i]]
+        return [(p[i], p[i + 1], M[i]) for i in range(len(p) - 1) if p[i + 1] > p[i]]
 
     def answers(self) -> dict:
         c, f = self.excess_work, self.flywheel
@@ -1728,7 +1740,6 @@ def _em_layout(v: EnergyMassVariant, top: float, H: float):
 
 
 def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
-    from graphmethods.sheets.layout import Occupancy
 
     sh = _Sheet(v, nt, key)
     nt = sh.nt

@@ -29,8 +29,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import (GROUND, Group, Guide, Record, State, check_branch, check_length, cross,
-                                                 dot, fmt, solve2)
+from graphmethods.kinematics.groups.base import (
+    GROUND,
+    Group,
+    Guide,
+    Record,
+    State,
+    check_branch,
+    check_length,
+    cross,
+    dot,
+    fmt,
+    solve2,
+)
 
 
 @dataclass(frozen=True, eq=False)
