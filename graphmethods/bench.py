@@ -209,12 +209,12 @@ def bench_flywheel(m_values=M_VALUES, *, repeat=3) -> list[Row]:
         exact = exact_flywheel(prob.model, omega_m=prob.omega_m, delta=prob.delta)
         rows.append(Row("flywheel", prob.name, "exact", None, t_exact, exact.rel_accuracy, extra={"J_F": exact.J_F}))
 
-        def run(m, prob=prob):
+        def run_chords(m, prob=prob):
             g = chord_flywheels(prob.model, positions=m, omega_m=prob.omega_m, delta=prob.delta)
             return {"wittenbauer": g.wittenbauer, "energy": g.energy, "phi0": prob.model.phi_0,
                     "excess_work": g.excess_work, "M_max": float(np.abs(g.M_e).max())}
 
-        rows += _flywheel_rows(prob.name, exact, [(m, lambda m=m: run(m)) for m in m_values], prob.model.phi_T, repeat)
+        rows += _flywheel_rows(prob.name, exact, [(m, lambda m=m: run_chords(m)) for m in m_values], prob.model.phi_T, repeat)
     return rows
 
 
@@ -294,7 +294,7 @@ def six_bar_closed_form(phi, omega_1: float, epsilon_1: float, *, r=0.08, l_AB=0
     w3 = -(vAx * px + vAy * py) / det
     rx = aAx - w2 * w2 * px + w3 * w3 * qx
     ry = aAy - w2 * w2 * py + w3 * w3 * qy
-    e2 = -(rx * qx + ry * qy) / det
+    _e2 = -(rx * qx + ry * qy) / det                   # computed (and dropped) as the core computes it
     e3 = -(rx * px + ry * py) / det
     k = l_O2C / l_O2B
     Cx, Cy = O2[0] + k * qx, O2[1] + k * qy

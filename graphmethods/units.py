@@ -104,14 +104,14 @@ def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: n = 10000000000000000000…(401 characters) rev/min is outside the magnitudes this toolkit computes with (zero, or 1e-100 to 1e+100); give it in a unit that brings it into that range
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     tail = f"; {hint}" if hint else ""
     u = f" {unit}" if unit else ""
     if isinstance(value, bool) or type(value).__name__ == "bool_":
         raise InputError(f"{name} = {value!r} is a truth value, not a number{tail or '; give a number such as 0.05'}")
     tiny = False
     try:
-        if isinstance(value, Integral) or isinstance(value, Real):
+        if isinstance(value, (Integral, Real)):
             v = float(value)
         elif isinstance(value, str):
             s = value.strip()
@@ -211,7 +211,7 @@ def finite_result(value, name: str, *, unit: str = "", why: str = "") -> float:
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: J_F came out inf kg·m²: the data lie outside the range this method can compute; give values of less extreme magnitude
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     v = float(value)
     if not math.isfinite(v):
         u = f" {unit}" if unit else ""
@@ -258,7 +258,7 @@ def check_finite(obj) -> None:
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: E[1] came out nan: the data lie outside the range this method can compute; give values of less extreme magnitude
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     where = first_nonfinite(obj)
     if where is not None:
         bad = obj
@@ -280,7 +280,7 @@ def json_text(obj, **kwargs) -> str:
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: J_F came out inf: the data lie outside the range this method can compute; give values of less extreme magnitude
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     check_finite(obj)
     return json.dumps(obj, allow_nan=False, **kwargs)
 

@@ -99,7 +99,7 @@ def run_cli(test: str, argv: list[str], *, json_out: bool = False) -> int:
                 code = exc.code
     except Hang:
         c["hangs"] += 1
-        raise AssertionError(f"hang: {argv}")
+        raise AssertionError(f"hang: {argv}") from None
     except BaseException as exc:
         c["tracebacks"] += 1
         raise AssertionError(f"traceback {type(exc).__name__}: {exc} for {argv}") from exc
@@ -136,7 +136,7 @@ def call_api(test: str, fn, *args, **kwargs):
         return None
     except Hang:
         c["hangs"] += 1
-        raise AssertionError(f"hang: {fn.__name__}{args}{kwargs}")
+        raise AssertionError(f"hang: {fn.__name__}{args}{kwargs}") from None
     except BaseException as exc:
         c["tracebacks"] += 1
         raise AssertionError(f"{type(exc).__name__}: {exc} from {fn.__name__}{args}{kwargs}") from exc

@@ -101,7 +101,7 @@ def test_gear_train_reduction_and_flywheel_transfer():
 # ----------------------------------------------------------------- the study: laziness
 def test_drawing_only_the_moment_diagram_does_not_compute_J_e(press):
     s = Study(press, positions=12)
-    s.excess_work                                    # what a moment diagram draws
+    s.excess_work  # noqa: B018 - computed on access: what a moment diagram draws
     assert "inertia" not in s.computed and "exact" not in s.computed and "model" not in s.computed
 
 

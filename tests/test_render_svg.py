@@ -144,9 +144,9 @@ def test_no_dates_and_same_bytes_twice():
 
 def test_same_bytes_in_a_fresh_process_with_another_hash_seed():
     here = hashlib.sha256(svg.to_bytes(demo_scene())).hexdigest()
-    code = ("import hashlib, sys; sys.path.insert(0, %r); import test_render_svg as t;"
+    code = (f"import hashlib, sys; sys.path.insert(0, {os.path.dirname(__file__)!r}); import test_render_svg as t;"
             "from graphmethods.render import svg;"
-            "print(hashlib.sha256(svg.to_bytes(t.demo_scene())).hexdigest())") % os.path.dirname(__file__)
+            "print(hashlib.sha256(svg.to_bytes(t.demo_scene())).hexdigest())")
     for seed in ("1", "4242"):
         out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                              env={**os.environ, "PYTHONHASHSEED": seed})

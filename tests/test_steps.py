@@ -173,7 +173,7 @@ def test_velocity_plan_captions_give_the_values_the_drawing_measures(built):
 def test_energy_indicator_captions_give_each_vector_as_drawn(built):
     bu = built("W1", "energy-indicator")
     rec = record(bu.figure)
-    for cap, step in zip(bu.captions()[1:8], bu.steps[1:8]):
+    for cap, _step in zip(bu.captions()[1:8], bu.steps[1:8]):
         ab, mm = re.search(r"Interval (\w\w):.* ([\d.]+) mm (up|down)", cap).group(1, 2)
         assert rec.vector_length_mm(f"vector-{ab}") == pytest.approx(float(mm), rel=1e-3)
     assert "575 J" in bu.captions()[-1]

@@ -238,7 +238,10 @@ class ExcessWork:
         """
         head, body = self._table(unit)
         widths = [max(len(r[k]) for r in [head] + body) for k in range(len(head))]
-        fmt = lambda r: "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
+
+        def fmt(r: list[str]) -> str:
+            return "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
+
         return "\n".join([fmt(head)] + [fmt(r) for r in body] + self._summary(unit))
 
     def to_dict(self) -> dict:

@@ -128,7 +128,8 @@ class MomentCurve:
             if not b > a:
                 raise InputError(f"steps[{i}]: phi_end {b:g} must exceed phi_start {a:g}")
             if i and abs(a - phi[-1]) > 1e-12 * max(1.0, abs(a)):
-                raise InputError(f"steps[{i}] starts at {a:g} rad but the previous step ended at {phi[-1]:g}; steps must be contiguous")
+                raise InputError(f"steps[{i}] starts at {a:g} rad but the previous step ended at {phi[-1]:g}; "
+                                 "steps must be contiguous")
             phi += [a, b]
             M += [m, m]
         return cls(np.array(phi), np.array(M))
@@ -203,7 +204,8 @@ class MomentCurve:
         bad = ~np.isfinite(M)
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
-            raise InputError(f"the moment function gave {M[i]!r} at phi = {phi[i]:g} rad; it must be finite over the whole period")
+            raise InputError(f"the moment function gave {M[i]!r} at phi = {phi[i]:g} rad; "
+                             "it must be finite over the whole period")
         return M
 
     # ----------------------------------------------------------------- queries
@@ -252,7 +254,7 @@ class MomentCurve:
 
     def limits(self, x) -> tuple[np.ndarray, np.ndarray]:
         """Left and right limits M(x−), M(x+) at angles x inside the period (they differ at jumps)."""
-        p, M = self.phi, self.M
+        p = self.phi
         x = np.asarray(x, dtype=float)
         n = p.size
         j = np.clip(np.searchsorted(p, x, side="right") - 1, 0, n - 2)   # last knot <= x

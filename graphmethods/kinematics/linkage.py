@@ -393,7 +393,7 @@ class Linkage:
         for g in reversed(self.groups):
             for p, _ in self._group_sliders(g):
                 return ("point", p)
-            for link, pivot in self._group_rockers(g):
+            for link, _pivot in self._group_rockers(g):
                 return ("link", link)
         return None
 
@@ -448,7 +448,7 @@ class Linkage:
         st = State(phi=phi, labels=labels)
         zero_c = np.zeros(n, dtype=complex)
         for k, c in self.ground.items():
-            st.z[k] = np.full(n, c)          # noqa: one array per fixed joint (it is a point of the result)
+            st.z[k] = np.full(n, c)          # one array per fixed joint (it is a point of the result)
             st.v[k] = zero_c
             st.a[k] = zero_c
         cr = self.crank
@@ -560,7 +560,8 @@ class Linkage:
         return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
                       index=None if labels is None else _ro(labels), omega_1=float(omega_1),
                       epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
-                      theta=ro({k: st.theta[k] for k in st.theta.keys()}), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
+                      theta=ro({k: st.theta[k] for k in st.theta}), omega=ro(st.omega), epsilon=ro(st.epsilon),
+                      relative=ro(st.relative),
                       conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
 
     def _snap(self, st: State, mask: np.ndarray) -> None:
@@ -591,7 +592,7 @@ class Linkage:
             i = int(np.argmin(mg))
             # refine the smallest margin between its neighbours (golden section)
             lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
-            f = lambda x: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
+            f = lambda x, g=g: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
             gr = (math.sqrt(5) - 1) / 2
             for _ in range(80):
                 a = hi - gr * (hi - lo)

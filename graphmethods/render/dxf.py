@@ -324,7 +324,7 @@ def _new_document():
     doc.header["$LWDISPLAY"] = 1              # show lineweights
     doc.header["$LTSCALE"] = 1.0
     doc.header["$TEXTSTYLE"] = "GM-SANS"
-    for role, (name, color, description) in LAYERS.items():
+    for _role, (name, color, description) in LAYERS.items():
         layer = doc.layers.add(name, color=color)
         layer.description = description
     for name, (font, family, bold) in TEXT_STYLES.items():

@@ -392,7 +392,7 @@ class Face:
             k = self._kerns[key] = int(self._ft.get_kerning(left, right, self._unscaled))
         return k
 
-    @functools.cache
+    @functools.cache  # noqa: B019 - one instance per font file (the faces are cached), kept for the run
     def pdf_metrics(self) -> PdfMetrics:
         """The face's name, kind of outlines and descriptor metrics (1/1000 em), read with fontTools."""
         f = _sfnt(self.path, self.index)
@@ -406,7 +406,7 @@ class Face:
                 if hasattr(top, "ROS"):
                     cid_keyed, ros = True, (str(top.ROS[0]), str(top.ROS[1]), int(top.ROS[2]))
             head, hhea = f["head"], f["hhea"]
-            os2 = f["OS/2"] if "OS/2" in f else None
+            os2 = f.get("OS/2", None)
             cap = getattr(os2, "sCapHeight", 0) if os2 is not None else 0
             return PdfMetrics(
                 ps_name=ps_name, outlines="CFF" if "CFF " in f else "TrueType", cid_keyed=cid_keyed, ros=ros,
@@ -441,7 +441,7 @@ def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
     font = _sfnt(path, index)
     cff = "CFF " in font
     keep = {"head", "hhea", "hmtx", "maxp"} | ({"CFF "} if cff else {"glyf", "loca"})
-    dropped = [tag for tag in font.keys() if tag not in keep and tag != "GlyphOrder"]
+    dropped = [tag for tag in font.keys() if tag not in keep and tag != "GlyphOrder"]  # noqa: SIM118 - TTFont has no __iter__
     for tag in dropped:            # before subsetting: fontTools would otherwise read the layout tables
         del font[tag]
     opts = subset.Options()
@@ -510,7 +510,7 @@ def check_drawable(text: str, bold: bool = False) -> None:
     Traceback (most recent call last):
     ...
     graphmethods.errors.MissingFontError: cannot draw 'त' (U+0924), 'न' (U+0928), ... no glyph for them; change the text or write SVG
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     fs = faces(text, bold=bold)
     missing = sorted({ch for ch in text if all(f.glyph(ch) is None for f in fs)})
     if missing:

@@ -72,7 +72,7 @@ def _label_batch_class():
                 xy[:, 1] = renderer.get_canvas_width_height()[1] - xy[:, 1]
             gc = renderer.new_gc()
             try:
-                for (x, y, text, prop, color, ha), (px, py) in zip(self.items, xy):
+                for (_x, _y, text, prop, color, ha), (px, py) in zip(self.items, xy):
                     if ha != "left":
                         w = _extent(renderer, text, prop)[0]
                         px -= w if ha == "right" else w / 2.0

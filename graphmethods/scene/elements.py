@@ -87,13 +87,21 @@ def bbox(prims) -> tuple[float, float, float, float] | None:
     for p in walk(prims):
         if isinstance(p, (Path, Polygon)) and p.points:
             a = np.asarray(p.points)
-            xs0.append(a[:, 0].min()); xs1.append(a[:, 0].max())
-            ys0.append(a[:, 1].min()); ys1.append(a[:, 1].max())
+            xs0.append(a[:, 0].min())
+            xs1.append(a[:, 0].max())
+            ys0.append(a[:, 1].min())
+            ys1.append(a[:, 1].max())
         elif isinstance(p, Circle):
-            xs0.append(p.cx - p.r); xs1.append(p.cx + p.r); ys0.append(p.cy - p.r); ys1.append(p.cy + p.r)
+            xs0.append(p.cx - p.r)
+            xs1.append(p.cx + p.r)
+            ys0.append(p.cy - p.r)
+            ys1.append(p.cy + p.r)
         elif isinstance(p, Label):
             b = label_bbox(p)
-            xs0.append(b[0]); ys0.append(b[1]); xs1.append(b[2]); ys1.append(b[3])
+            xs0.append(b[0])
+            ys0.append(b[1])
+            xs1.append(b[2])
+            ys1.append(b[3])
     if not xs0:
         return None
     return (float(min(xs0)), float(min(ys0)), float(max(xs1)), float(max(ys1)))
@@ -620,7 +628,7 @@ def pi_ticks(period: float, scale: Scale, *, min_gap_mm: float = 8.0) -> tuple[t
     for den in (12, 6, 4, 2, 1):
         if scale.to_mm(math.pi / den) >= min_gap_mm:
             break
-    n = int(math.floor(period / (math.pi / den) + 1e-9))
+    n = math.floor(period / (math.pi / den) + 1e-9)
     values, labels = [], []
     for i in range(n + 1):
         f = Fraction(i, den)

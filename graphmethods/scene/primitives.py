@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Union
 
 XY = tuple[float, float]
 
@@ -125,7 +124,7 @@ class Group:
     children: tuple[Primitive, ...]
 
 
-Primitive = Union[Path, Polygon, Circle, Label, Group]
+Primitive = Path | Polygon | Circle | Label | Group
 
 
 def walk(prims):

@@ -138,7 +138,7 @@ def pick_scale(span_value: float, span_mm: float, *, series=SERIES, allow_15_3: 
     if not (math.isfinite(span_value) and math.isfinite(span_mm)) or span_mm <= 0:
         raise InputError(f"pick_scale for {symbol}: cannot fit {span_value!r} {unit} into {span_mm!r} mm; "
                          f"the span must be finite and the paper length positive")
-    mantissas = tuple(sorted(set(float(m) for m in series) | (set(SERIES_EXTRA) if allow_15_3 else set())))
+    mantissas = tuple(sorted({float(m) for m in series} | (set(SERIES_EXTRA) if allow_15_3 else set())))
     if not mantissas or any(not (1.0 <= m < 10.0) for m in mantissas):
         raise InputError(f"pick_scale: series {series!r} must hold mantissas in [1, 10)")
     if span_value == 0:

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Union
 
 from graphmethods.errors import InputError
 from graphmethods.scene.elements import Element, Text
@@ -40,7 +39,7 @@ NEW_WIDTH_MM = 0.35
 #: elements never tinted: the figure's title stays black on every slide
 UNTINTED = ("title",)
 
-Rule = Union[str, Sequence[str], Callable[[str], bool]]
+Rule = str | Sequence[str] | Callable[[str], bool]
 
 
 @dataclass(frozen=True)
@@ -208,7 +207,7 @@ def partition(figure: Scene, rules, *, caption_box, caption_mm: float = 5.0, res
         An element no rule matches (without ``rest``), or a step left empty.
     """
     tests = []
-    for caption, rule in rules:
+    for _caption, rule in rules:
         if callable(rule):
             tests.append(rule)
         else:

@@ -473,7 +473,7 @@ def name_points(arrs: list[Arrow], labels, wanted: tuple[str, ...], *, points: d
             if dist <= LABEL_REACH_MM:
                 pairs.append((dist, lab.text, j))
     taken: set = set()
-    for dist, text, j in sorted(pairs):
+    for _dist, text, j in sorted(pairs):
         if text in named or j in taken:
             continue
         named[text] = pts[j]

@@ -412,7 +412,8 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
         omega_1 = omega_case
     if analogues:
         omega_1 = None
-    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "kinematic_title"),
+    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
+                  title=title or word(nt, "kinematic_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
@@ -664,7 +665,8 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
 
     nt = get_notation(notation)
     M_d, M_r, phi, study, prob = _moment_subject(subject, m, nt)
-    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "work_title"),
+    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
+                  title=title or word(nt, "work_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     period = float(phi[-1] - phi[0])

@@ -525,7 +525,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
     lines = [Polyline(f.pts(c.phi, c.values), style=c.style, name=f"{prefix}curve-{c.key}") for c in curves]
     lvl = []
     x_end = f.pt(period, 0.0)[0]
-    for value, text, key in levels:
+    for value, _text, key in levels:
         y = f.pt(0.0, value)[1]
         lvl.append(Line((origin[0], y), (x_end + 2.0, y), style=LEVEL, name=f"{prefix}level-{key}"))
     occ.register(*lines, *lvl)
@@ -1036,7 +1036,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
         v = np.asarray(v, dtype=float)
         return np.array([v[1], -v[0]]) if sense > 0 else np.array([-v[1], v[0]])
 
-    names = [p for p in plans.order]
+    names = list(plans.order)
     images = {p: turned(plans.v(p)[k]) for p in names}          # m/s, turned
     F = np.asarray(ld.force, dtype=float)
     F_abs = float(np.hypot(*F))

@@ -290,7 +290,7 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
                     w, h = occ.block_size(lines, size_mm=size, line_mm=lmm)
                     placed = occ.place_block(_box_centres(inner, w, h, pole) + cands, lines, size_mm=size,
                                              line_mm=lmm, within=plot_box, check_lines=False,
-                                             inside=lambda bx: inner.contains(sbox(*bx)))
+                                             inside=lambda bx, inner=inner: inner.contains(sbox(*bx)))
                     if placed is not None:
                         break
                 if placed is not None:

@@ -468,7 +468,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     def coords(p, names, idx=None):
         return [p.coords[j] if idx is None else p.coords[j][idx] for j in names]
 
-    joints = [j for j in mech.joints] + list(parts.extra)
+    joints = list(mech.joints) + list(parts.extra)
     pts = coords(pos, joints, drawn)
     if ext_pos is not None:
         pts += coords(ext_pos, joints)
@@ -1246,7 +1246,7 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     _register(occ, *vecs, pole)
     hard = Occupancy(pad_mm=0.3)
     _register(hard, *vecs)
-    for ln_el, (cname, lnk) in zip(cons, [(cn, ln) for cn, c in plans.constructions.items()
+    for ln_el, (_cname, lnk) in zip(cons, [(cn, ln) for cn, c in plans.constructions.items()
                                           if c.method == "intersection" for ln in c.lines]):
         end = ln_el.end
         d = np.asarray(ln_el.end) - np.asarray(ln_el.start)

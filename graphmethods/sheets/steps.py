@@ -247,7 +247,7 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
     >>> bu = velocity_plan_steps(SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13)}), 1, omega_1=10.0)
     >>> [c.split(":")[0] for c in bu.captions()][2:5]
     ['Through a, draw the direction of v_{BA} ⊥ AB', 'Through p, draw the direction of v_{B} ∥ the guide', 'b is where the two lines meet']
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     from graphmethods.sheets import kinematics as K
 
     nt = get_notation(notation)
@@ -542,8 +542,7 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
 
     rules = [
         (_w(nt, "frame", mu=mu_l.caption(nt)),
-         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-"))
-         or (n.startswith("name-O"))),
+         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-", "name-O"))),
         (_w(nt, "crank_pos", m=m, c=K._sub(crank)),
          lambda n: pos_of([crank])(n) or mark_of([pin])(n) or (n.startswith(f"number-{pin}-")
                                                                   and not n.endswith("-extreme"))),

@@ -233,7 +233,7 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
     """Label directions pointing away from a centre, best first."""
     ang = math.degrees(math.atan2(dy_up, dx)) % 360
     names = ("e", "ne", "n", "nw", "w", "sw", "s", "se")
-    i = int(round(ang / 45.0)) % 8
+    i = round(ang / 45.0) % 8
     return tuple(names[(i + d) % 8] for d in (0, 1, -1, 2, -2, 3, -3, 4))
 
 
@@ -606,7 +606,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     T_hi = max(T_hi, float(dT_fine.max()))
     T_lo = min(T_lo, float(dT_fine.min()))
     M_hi = float(max(M_r_k.max(), M_d))
-    W, H = x1 - x0, sheet.caption_y - sheet.top
+    W = x1 - x0
     # the rows: [M graph | turned J_e graph] over [ΔT graph | diagram]
     y_Jt = sheet.top + 14.0                                  # the turned graph's J_e axis
     d_bottom = sheet.caption_y - 10.0

@@ -1240,7 +1240,7 @@ def moment_regions(frame, cycle, *, wrong: dict | None = None, nt="en", occ=None
         lab = occ.place_label((c.x, c.y), txt, ("n", "s", "e", "w", "ne", "se"), size_mm=SMALL_MM, gap_mm=0.5)
         els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                              name=f"{name}-student-{i + 1}"))
-    for key, curve, el in (("M_d", M_d, cd), ("M_r", M_r, cr)):
+    for key, _curve, el in (("M_d", M_d, cd), ("M_r", M_r, cr)):
         lab = occ.place_label(el.end, sym(key, nt), ("e", "ne", "se"), size_mm=TEXT_MM, gap_mm=1.5)
         els.append(Text((lab.x, lab.y), sym(key, nt), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-{key}-name"))
     return els
@@ -1930,7 +1930,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "class"
     >>> [p.name for p in write_worksheet(worksheet("wittenbauer", variants=1, seed=3), out)]
     ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json', 'wittenbauer-answers.toml']
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     from graphmethods.render import pdf, svg
     from graphmethods.render.files import write_set
 
