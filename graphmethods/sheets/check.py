@@ -51,6 +51,7 @@ import json
 import math
 import pathlib
 import re
+import sys
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -162,10 +163,10 @@ def load_toml(text: str, *, source: str = "<answers>") -> dict:
     >>> load_toml('problem = "W1"\\n[results]\\nJ_F = 1.5e-1  # kg·m²')
     {'problem': 'W1', 'results': {'J_F': 0.15}}
     """
-    try:
+    if sys.version_info >= (3, 11):
         import tomllib
-    except ModuleNotFoundError:          # Python 3.10: the same parser, installed as a dependency
-        import tomli as tomllib  # type: ignore[no-redef]
+    else:                                # Python 3.10: the same parser, installed as a dependency
+        import tomli as tomllib
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
