@@ -11,6 +11,7 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
 import pathlib
 import statistics
@@ -19,6 +20,7 @@ import sys
 import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -41,7 +43,7 @@ class Row:
 
 def median_time(fn: Callable[[], object], *, repeat: int = 5, min_seconds: float = 0.0) -> float:
     """Median wall time of ``fn()`` over ``repeat`` runs (more runs while under ``min_seconds``)."""
-    times = []
+    times: list[float] = []
     start = time.perf_counter()
     while len(times) < repeat or (time.perf_counter() - start < min_seconds and len(times) < 50):
         t0 = time.perf_counter()
@@ -241,7 +243,8 @@ def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
         for name, d in dxy.items():
             if name not in plans.vectors:
                 continue
-            v = plans.analogue(name) * mech.sense
+            # every classic mechanism has a sense; their base class (on its way out) does not declare it
+            v = plans.analogue(name) * mech.sense  # type: ignore[attr-defined]
             scale = float(np.abs(d).max()) or 1.0
             worst = max(worst, float(np.abs(v - d).max()) / scale)
         rows.append(Row("kinematics", case.kind, "velocity plans (construction)", n, t_plan, worst,
@@ -357,7 +360,7 @@ def bench_calculus(ms=(6, 12, 24, 48, 96), *, repeat=3) -> list[Row]:
     case = _press_case()
     rows = []
     for m in ms:
-        t = median_time(lambda m=m: gc.accuracy_table(case, ms=(m,)), repeat=repeat)
+        t = median_time(functools.partial(gc.accuracy_table, case, ms=(m,)), repeat=repeat)
         for r in gc.accuracy_table(case, ms=(m,)):
             rows.append(Row("calculus", f"press: {r['construction']}", f"chords, {r['where']}", m, t, None,
                             note=f"max error {r['error']:.3g} {r['unit']} = {r['error_mm']:.2g} mm",
@@ -472,7 +475,7 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
     plt.close(fig)
 
 
-SECTIONS = {
+SECTIONS: dict[str, Callable[..., list[Row]]] = {
     "flywheel": bench_flywheel,
     "kinematics": bench_kinematics,
     "linkage": bench_linkage,
@@ -484,7 +487,7 @@ SECTIONS = {
 }
 
 #: Arguments of each section for --quick (CI): small sizes, few repeats.
-QUICK = {
+QUICK: dict[str, dict[str, Any]] = {
     "flywheel": dict(m_values=(12, 24, 96, 360), repeat=1),
     "kinematics": dict(n=10_000, repeat=2),
     "linkage": dict(sizes=(12, 10**3, 10**4), repeat=3),

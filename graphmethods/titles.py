@@ -93,7 +93,7 @@ class Title:
                 if not isinstance(text, str) or not text.strip():
                     raise InputError(f"{where}: the {lang} title must be non-empty text; got {text!r} "
                                      f"(leave a language out to fall back to English)")
-            texts = tuple((lang, value[lang]) for lang in LANGUAGES if lang in value)
+            texts: tuple[tuple[str, str], ...] = tuple((lang, value[lang]) for lang in LANGUAGES if lang in value)
             if not texts:
                 raise InputError(f"{where}: a title by language needs at least one of "
                                  f"{', '.join(LANGUAGES)}; got an empty mapping")

@@ -193,8 +193,10 @@ def count(value, name: str, *, low: int, high: int, why: str = "") -> int:
         if not s.lstrip("+-").isdigit() or len(s) > 30:
             raise InputError(f"{name} = {_shown(value)} must be {limit}")
         value = int(s)
-    if isinstance(value, Integral) or (isinstance(value, Real) and math.isfinite(float(value)) and float(value).is_integer()):
+    if isinstance(value, Integral):
         n = int(value)
+    elif isinstance(value, Real) and math.isfinite(float(value)) and float(value).is_integer():
+        n = int(float(value))
     else:
         raise InputError(f"{name} = {_shown(value)} must be {limit}")
     if n < low:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from graphmethods.units import json_text
 
 
@@ -18,7 +20,7 @@ def run(args) -> int:
     results = {}
     for prob in all_examples():
         ew = prob.excess_work
-        res = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict(),
+        res: dict[str, Any] = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict(),
                "work_unit": prob.work_unit}
         if prob.n_rpm is not None and prob.delta is not None:
             res["flywheel"] = prob.flywheel().to_dict()

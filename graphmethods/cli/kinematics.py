@@ -22,6 +22,7 @@ before the first file is written, so an error writes nothing.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
@@ -152,7 +153,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
             units[f"omega_{k}"] = "rad/s"
     rows = []
     for i in range(pos.n):
-        row = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
+        row: dict[str, Any] = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
         if pos.index is None:
             row["position"] = None
         row["ill_conditioned"] = bool(plan.ill_conditioned[i])

@@ -152,6 +152,7 @@ class ExcessWork:
         """
         if self.M_d is None:
             raise InputError("ΔE(φ) needs moment curves; this cycle was given as areas, works or levels")
+        assert self.M_r is not None                  # both curves, or neither
         return (self.M_d - self.M_r).integral(phi)
 
     def energy_curve(self, samples: int = 721) -> tuple[np.ndarray, np.ndarray]:
@@ -159,6 +160,7 @@ class ExcessWork:
         ``samples`` evenly spaced angles, all exact (ΔE is piecewise quadratic)."""
         if self.M_d is None:
             raise InputError("the energy graph needs moment curves; draw the energy indicator instead")
+        assert self.M_r is not None and self.phi is not None
         D = self.M_d - self.M_r
         even = np.linspace(D.phi[0], D.phi[-1], samples)
         phi = np.unique(np.concatenate((D.phi, self.phi, even)))

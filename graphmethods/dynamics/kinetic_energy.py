@@ -74,6 +74,7 @@ def kinetic_energy(ew: ExcessWork, *, J_e: float, T0: float | None = None, omega
     if (T0 is None) == (omega_0 is None):
         raise InputError("give the starting state once: T0 (J) or omega_0 (rad/s)")
     if T0 is None:
+        assert omega_0 is not None
         if not (math.isfinite(omega_0) and omega_0 > 0):
             raise InputError(f"omega_0 = {omega_0!r} must be a positive speed in rad/s")
         T0 = 0.5 * J_e * omega_0**2

@@ -90,24 +90,25 @@ class MomentCurve:
         return curve
 
     @classmethod
-    def points(cls, phi: Sequence[float], M: Sequence[float], *, period: float | None = None) -> MomentCurve:
+    def points(cls, phi: Sequence[float] | np.ndarray, M: Sequence[float] | np.ndarray, *,
+               period: float | None = None) -> MomentCurve:
         """Piecewise-linear curve through the points (φ_k, M_k).
 
         If ``period`` is given and the points stop short of ``phi[0] + period``, the curve
         is closed by a straight line back to the first value (the curve is periodic).
         """
-        phi = finite_array(phi, "phi")
-        M = finite_array(M, "M")
+        x = finite_array(phi, "phi")
+        y = finite_array(M, "M")
         if period is not None:
             if not period > 0:
                 raise InputError(f"period = {period!r} rad must be positive (2π for one turn, 4π for two)")
-            end = phi[0] + period
-            if phi.size and phi[-1] > end * (1 + 1e-12):
-                raise InputError(f"the points run to {phi[-1]:g} rad, past the period end {end:g} rad")
-            if phi.size and phi[-1] < end:
-                phi = np.append(phi, end)
-                M = np.append(M, M[0])
-        return cls(phi, M)
+            end = x[0] + period
+            if x.size and x[-1] > end * (1 + 1e-12):
+                raise InputError(f"the points run to {x[-1]:g} rad, past the period end {end:g} rad")
+            if x.size and x[-1] < end:
+                x = np.append(x, end)
+                y = np.append(y, y[0])
+        return cls(x, y)
 
     @classmethod
     def steps(cls, steps: Iterable[Sequence[float]]) -> MomentCurve:
@@ -120,7 +121,8 @@ class MomentCurve:
             raise InputError(f"steps: each step is (phi_start, phi_end, M), got {steps!r}") from None
         if not rows:
             raise InputError("steps: give at least one (phi_start, phi_end, M) step")
-        phi, M = [], []
+        phi: list[float] = []
+        M: list[float] = []
         for i, row in enumerate(rows):
             if len(row) != 3:
                 raise InputError(f"steps[{i}] = {row!r}: each step is (phi_start, phi_end, M)")
@@ -333,6 +335,7 @@ def balance(M_d: MomentCurve | None = None, M_r: MomentCurve | None = None) -> t
     if M_d is None and M_r is None:
         raise InputError("give M_d, M_r or both")
     if M_d is None:
+        assert M_r is not None
         M_d = MomentCurve.constant(M_r.mean(), period=M_r.period, start=M_r.start)
     elif M_r is None:
         M_r = MomentCurve.constant(M_d.mean(), period=M_d.period, start=M_d.start)

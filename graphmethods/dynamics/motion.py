@@ -42,6 +42,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -648,6 +649,12 @@ def _frozen(a):
 
 class _FromPosition0:
     """Angles of ω_max and ω_min measured from position 0 (needs phi_omega_max/min, phi_0, phi_T)."""
+
+    if TYPE_CHECKING:                   # given by the result classes that take this in
+        phi_omega_max: float
+        phi_omega_min: float
+        phi_0: float
+        phi_T: float
 
     @property
     def phi_omega_max_from_0(self) -> float:

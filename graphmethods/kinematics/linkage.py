@@ -723,6 +723,7 @@ class Linkage:
         """The linkage at the start and the end of the working stroke (cached)."""
         if "ends" not in self._cache:
             st_ = self.strokes()
+            assert st_ is not None, "only an output with a working stroke has ends"
             self._cache["ends"] = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
         return self._cache["ends"]
 

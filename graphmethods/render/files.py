@@ -43,7 +43,9 @@ def os_reason(exc: OSError) -> str:
              errno.EISDIR: "a folder is in the way", errno.ENOTDIR: "a file is in the way of a folder",
              errno.EEXIST: "it exists", errno.ENOENT: "a folder on the way does not exist",
              errno.ENAMETOOLONG: "the name is too long"}
-    return words.get(exc.errno, (exc.strerror or str(exc) or type(exc).__name__).lower())
+    if exc.errno in words:
+        return words[exc.errno]
+    return (exc.strerror or str(exc) or type(exc).__name__).lower()
 
 
 def output_error(what: str, path, exc: OSError) -> OutputError:

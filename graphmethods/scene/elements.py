@@ -115,7 +115,7 @@ class Element:
     def primitives(self) -> tuple:  # pragma: no cover - every element overrides it
         raise NotImplementedError
 
-    def draw(self) -> Group:
+    def draw(self) -> PGroup:
         """The element as one named :class:`~graphmethods.scene.primitives.Group`."""
         return PGroup(self.name, tuple(self.primitives()))
 
@@ -604,7 +604,7 @@ def nice_ticks(v_min: float, v_max: float, scale: Scale, *, min_gap_mm: float = 
     """
     need = scale.to_value(min_gap_mm)
     k = math.floor(math.log10(need))
-    step = None
+    step: float | None = None
     for e in (k, k + 1):
         for m in (1.0, 2.0, 2.5, 5.0):
             c = float(f"{m!r}e{e}")
@@ -613,6 +613,7 @@ def nice_ticks(v_min: float, v_max: float, scale: Scale, *, min_gap_mm: float = 
                 break
         if step is not None:
             break
+    assert step is not None                    # 5 × 10^(k+1) > 10^k ≥ need
     i0, i1 = math.ceil(v_min / step - 1e-9), math.floor(v_max / step + 1e-9)
     return tuple(float(round(i * step, 12)) for i in range(i0, i1 + 1))
 

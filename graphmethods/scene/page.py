@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
 from graphmethods.scene.elements import Table
-from graphmethods.scene.primitives import Path, Style
+from graphmethods.scene.primitives import Path, Primitive, Style
 
 #: ISO 216 sizes in mm, (short side, long side); SLIDE is a 16:9 presentation slide (13.333 × 7.5 in)
 PAPER = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0), "A1": (594.0, 841.0),
@@ -125,7 +125,7 @@ class Page:
         return (x0 + pad, y0 + pad, x1 - pad, y1 - pad)
 
     def primitives(self) -> tuple:
-        prims = []
+        prims: list[Primitive] = []
         x0, y0, x1, y1 = self.inner_box()
         if self.frame:
             prims.append(Path(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), FRAME, closed=True))
