@@ -583,7 +583,7 @@ def indicator_answers(d: CadDrawing, data: CycleData, *, mu_E: float | None = No
         chain.append(vertical[j])
         j = prev[j]
     chain.reverse()
-    labels = list(data.cycle.labels)     # type: ignore[attr-defined]
+    labels = list(data.cycle.labels)
     by_label = {}
     named = [lab for lab in nts.labels if lab.text in labels]
     for k, a in enumerate(chain):                  # the label nearest each arrow's start names it

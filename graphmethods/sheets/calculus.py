@@ -308,8 +308,16 @@ def _table(rows, *, align: str, name: str, right: float | None = None, left: flo
     widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(rows))
                    + 2 * pad + 1.0 for j in range(len(rows[0])))
     w, h = sum(widths), 6.0 * len(rows)
-    x = left if left is not None else right - w
-    y = top if top is not None else bottom - h
+    if left is not None:
+        x = left
+    else:
+        assert right is not None, "a table is placed by its left or its right edge"
+        x = right - w
+    if top is not None:
+        y = top
+    else:
+        assert bottom is not None, "a table is placed by its top or its bottom edge"
+        y = bottom - h
     return Table((x, y), rows, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
                  padding_mm=pad, name=name)
 

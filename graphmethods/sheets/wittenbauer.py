@@ -52,7 +52,7 @@ from graphmethods.scene import (
     notation as get_notation,
     pick_scale,
 )
-from graphmethods.scene.elements import label_bbox, make_label
+from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import (
     PROJECTION,
@@ -306,7 +306,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     dim = Dimension(l_pt, k_pt, "", offset_mm=off * side * (1.0 if res.kl_mm > 0 else -1.0), size_mm=TEXT_MM,
                     name=f"{prefix}dimension-kl")
     R = R if right else off + 10.0
-    psi_els = []
+    psi_els: list[Element] = []
     for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
         psi_els.append(Line(pt, (pt[0] + side * (R + 4.0), pt[1]), style=THIN,
                             name=f"{prefix}psi-{key}-reference"))
@@ -319,7 +319,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     occ.register(ax_T)
     ax_J = clear_ticks(ax_J, occ)
     occ.register(ax_J)
-    els = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
+    els: list[Element] = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
     # vertices, k, l, tangencies
     for i in range(m):
         p = P(X[i], Y[i])
@@ -341,15 +341,15 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         text = sym(nt, f"psi_{key}")
         a = psi / 2 if right else math.pi + psi / 2
         mid = (pt[0] + (R + 1.5) * math.cos(a), pt[1] - (R + 1.5) * math.sin(a))
-        dirs = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
+        dirs: tuple[str, ...] = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
         lab, leader = occ.place_label_with_leader(mid, text, dirs, size_mm=TEXT_MM, gap_mm=0.8, within=within)
         els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-psi-{key}"))
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-psi-{key}"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-psi-{key}"))
     # kl written beside its dimension line, where it covers nothing
     kl_text = f"kl = {nt.number(res.kl_mm)} {nt.unit('mm')}"
-    a, b = np.asarray(dim.line_start), np.asarray(dim.line_end)
-    spots = [tuple((a + (b - a) * t).tolist()) for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)]
+    d0, d1 = np.asarray(dim.line_start), np.asarray(dim.line_end)
+    spots = [tuple((d0 + (d1 - d0) * t).tolist()) for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)]
     dirs = ("e", "w") if right else ("w", "e")
     lab = None
     for spot in spots:
@@ -360,7 +360,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     if lab is None:
         lab, leader = occ.place_label_with_leader(spots[0], kl_text, dirs, size_mm=TEXT_MM + 0.3, within=within)
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-kl"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-kl"))
     els.append(Text((lab.x, lab.y), kl_text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor, name=f"{prefix}label-kl"))
     # position numbers, away from the curve's middle
     cx, cy = float(X[:-1].mean()), float(Y[:-1].mean())
@@ -371,7 +371,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
                                                   gap_mm=1.0, within=within)
         els.append(Text((lab.x, lab.y), str(i), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}pos-{i}"))
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-pos-{i}"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-pos-{i}"))
     for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
         i = idx[0]
         p = P(X[i], Y[i])
@@ -381,7 +381,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         lab, leader = occ.place_label_with_leader(p, text, dirs, size_mm=TEXT_MM, gap_mm=2.5, within=within)
         els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-omega-{key}"))
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-omega-{key}"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-omega-{key}"))
     O1 = P(*res.O1_mm)
     if clip[0] <= O1[0] <= clip[2] and clip[1] <= O1[1] <= clip[3]:
         els.append(Point(O1, radius_mm=0.8, name=f"{prefix}point-O1"))
@@ -661,7 +661,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     occ = sheet.occ
     page_probe = sheet.probe
     clip = page_probe.inner_box()
-    avoid = ()
+    avoid: tuple[tuple[float, float, float, float], ...] = ()
     if page_probe.title_block is not None:
         tb = page_probe.title_block.table(clip[2], clip[3])
         avoid = ((x0 - 20.0, tb.at[1], clip[2], clip[3]),)
