@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
@@ -80,7 +81,7 @@ class Page:
     frame: bool = False
     title_block: TitleBlock | None = None
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         size = str(self.size).upper()
         if size not in PAPER:
             raise InputError(f"page size {self.size!r}: use one of {', '.join(PAPER)}")
@@ -105,7 +106,7 @@ class Page:
     def height_mm(self) -> float:
         return self._dims()[1]
 
-    def with_(self, **changes) -> Page:
+    def with_(self, **changes: Any) -> Page:
         """A copy with some fields changed."""
         from dataclasses import replace
 
@@ -124,7 +125,7 @@ class Page:
             y1 -= self.title_block.table(x1, y1).height_mm + 2.0
         return (x0 + pad, y0 + pad, x1 - pad, y1 - pad)
 
-    def primitives(self) -> tuple:
+    def primitives(self) -> tuple[Primitive, ...]:
         prims: list[Primitive] = []
         x0, y0, x1, y1 = self.inner_box()
         if self.frame:

@@ -14,7 +14,9 @@ primitives and nothing else: :class:`Path` (open or closed polyline),
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+from typing import Any
 
 XY = tuple[float, float]
 
@@ -46,7 +48,7 @@ class Style:
     dash: tuple[float, ...] | None = None
     fill: str | None = None
 
-    def with_(self, **changes) -> Style:
+    def with_(self, **changes: Any) -> Style:
         """A copy with some fields changed."""
         from dataclasses import replace
 
@@ -127,7 +129,7 @@ class Group:
 Primitive = Path | Polygon | Circle | Label | Group
 
 
-def walk(prims):
+def walk(prims: Iterable[Primitive]) -> Iterator[Primitive]:
     """Yield every primitive in ``prims`` depth-first, groups included, in drawing order."""
     for p in prims:
         yield p

@@ -365,7 +365,7 @@ class SheetFrame(Sheet):
         cap = ScaleCaptions((x0, y), tuple(scales), notation=self.nt, size_mm=TEXT_MM, name="scale-captions")
         for at, anchor in (((x0, y), "start"), ((x1, y), "end"), (((x0 + x1) / 2, y), "middle")):
             trial = replace(cap, at=at, anchor=anchor)
-            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives()):
+            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives() if isinstance(p, Label)):
                 cap = trial
                 break
         self.occ.register(cap)
