@@ -88,7 +88,7 @@ def run(args) -> int:
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
     check_finite(out)                        # a result that is not finite is refused, naming it
-    if data is not None:            # written last: an error above leaves no file behind
+    if data is not None and sheet is not None:   # written last: an error above leaves no file behind
         from graphmethods.render.files import write_atomic
 
         write_atomic(sheet, data, overwrite=args.force)
