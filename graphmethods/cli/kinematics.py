@@ -264,22 +264,10 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
     for key, obj in scenes.items():
         if isinstance(obj, str):
             blobs[out / f"{stem}_{key}"] = obj.encode("utf-8")
-        elif fmt == "svg":
-            from graphmethods.render import svg
-
-            blobs[out / f"{stem}_{key}.svg"] = svg.to_bytes(obj)
-        elif fmt == "pdf":
-            from graphmethods.render import pdf
-
-            blobs[out / f"{stem}_{key}.pdf"] = pdf.to_bytes(obj)
-        elif fmt == "dxf":
-            from graphmethods.render import dxf
-
-            blobs[out / f"{stem}_{key}.dxf"] = dxf.to_bytes(obj)
         else:
-            from graphmethods.render import mpl
+            from graphmethods.render import formats
 
-            blobs[out / f"{stem}_{key}.png"] = mpl.to_png_bytes(obj)
+            blobs[out / f"{stem}_{key}.{fmt}"] = formats.to_bytes(obj, f".{fmt}")
     if not overwrite:
         existing = [str(p) for p in blobs if p.exists()]
         if existing:

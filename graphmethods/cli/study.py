@@ -46,17 +46,9 @@ def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
     except NoFlywheelNeeded as exc:
         raise InputError(f"--sheet {path}: {exc}; the sheet has no flywheel to construct, so nothing was written "
                          f"(run without --sheet for the numbers)") from None
-    if path.suffix.lower() == ".pdf":
-        from graphmethods.render import pdf
+    from graphmethods.render import formats
 
-        return pdf.to_bytes([scene])
-    if path.suffix.lower() == ".dxf":
-        from graphmethods.render import dxf
-
-        return dxf.to_bytes([scene])
-    from graphmethods.render import svg
-
-    return svg.to_bytes(scene)
+    return formats.to_bytes(scene, path.suffix)        # .svg, .pdf or .dxf (checked before any work)
 
 
 def _check_target(path: pathlib.Path, force: bool) -> None:
