@@ -30,8 +30,10 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError, UnbalancedCycleError
@@ -142,7 +144,7 @@ class ExcessWork:
         return None if self.phi is None else float(self.phi[self.index_E_min])
 
     # ----------------------------------------------------------------- energy along the cycle
-    def energy(self, phi) -> np.ndarray:
+    def energy(self, phi: ArrayLike) -> NDArray[np.float64]:
         """ΔE(φ) = ∫ (M_d − M_r) dφ from the start of the period, J (moment-curve input only).
 
         >>> from math import pi
@@ -167,7 +169,7 @@ class ExcessWork:
         return phi, self.energy(phi)
 
     # ----------------------------------------------------------------- the table
-    def rows(self) -> list[dict]:
+    def rows(self) -> list[dict[str, Any]]:
         """The excess-work table, one row per interval: points, area, work, energy at its end."""
         rows = []
         labels = self.labels                       # once: the table is linear in the number of intervals
@@ -246,7 +248,7 @@ class ExcessWork:
 
         return "\n".join([fmt(head)] + [fmt(r) for r in body] + self._summary(unit))
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         """A JSON-ready dict of the table and results."""
         d = {
             "labels": list(self.labels),
@@ -286,7 +288,7 @@ def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
         )
 
 
-def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -> ExcessWork:
+def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra: Any) -> ExcessWork:
     if work.size == 0:
         raise InputError(f"no {what} given; give the signed values of the intervals in order")
     closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed residual |ΣA|/Σ|A|, e.g. 0.05")
@@ -295,7 +297,7 @@ def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -
     return ExcessWork(work=work, E=E, closure_tol=closure_tol, **extra)
 
 
-def _positive(value, name: str, hint: str) -> float:
+def _positive(value: object, name: str, hint: str) -> float:
     return real(value, name, lo=0.0, lo_open=True, hint=hint)
 
 

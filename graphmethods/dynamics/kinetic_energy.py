@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -59,7 +60,7 @@ class KineticEnergy:
         """Coefficient of fluctuation (ω_max − ω_min)/ω_m."""
         return (self.omega_max - self.omega_min) / self.omega_m
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         return {"T": self.T.tolist(), "omega": self.omega.tolist(), "omega_m": self.omega_m,
                 "delta": self.delta, "J_e": self.J_e, "T0": self.T0}
 

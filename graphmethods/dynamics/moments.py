@@ -24,6 +24,7 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.units import finite_array, real
@@ -57,7 +58,7 @@ class MomentCurve:
     M: np.ndarray
     approx_error: float = 0.0
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         phi = finite_array(self.phi, "phi")
         M = finite_array(self.M, "M")
         if phi.size != M.size:
@@ -199,7 +200,7 @@ class MomentCurve:
         return cls(phi, M, approx_error=err)
 
     @staticmethod
-    def _call(f, phi: np.ndarray) -> np.ndarray:
+    def _call(f: Callable[[NDArray[np.float64]], ArrayLike], phi: NDArray[np.float64]) -> NDArray[np.float64]:
         M = np.asarray(f(phi), dtype=float)
         if M.shape != phi.shape:
             M = np.broadcast_to(M, phi.shape).astype(float)
@@ -225,7 +226,7 @@ class MomentCurve:
         """∫ M dφ over the period, J."""
         return float(np.sum(0.5 * (self.M[1:] + self.M[:-1]) * np.diff(self.phi)))
 
-    def integral(self, phi) -> np.ndarray:
+    def integral(self, phi: ArrayLike) -> NDArray[np.float64]:
         """∫ M dφ from the start of the period to each φ (J), exact for the chords.
 
         >>> c = MomentCurve.points([0.0, 2.0], [0.0, 4.0])
@@ -242,9 +243,10 @@ class MomentCurve:
         t = x - p[j]
         with np.errstate(invalid="ignore", divide="ignore"):
             slope = np.where(h > 0, (M[j + 1] - M[j]) / np.where(h > 0, h, 1.0), 0.0)
-        return E[j] + M[j] * t + 0.5 * slope * t * t
+        out: NDArray[np.float64] = E[j] + M[j] * t + 0.5 * slope * t * t
+        return out
 
-    def with_knots(self, phi) -> MomentCurve:
+    def with_knots(self, phi: ArrayLike) -> MomentCurve:
         """The same curve with extra knots at the given angles (no change to its values)."""
         x = np.unique(np.clip(np.asarray(phi, dtype=float), self.phi[0], self.phi[-1]))
         zero = MomentCurve(np.concatenate(([self.phi[0]], x, [self.phi[-1]])), np.zeros(x.size + 2))
@@ -254,25 +256,26 @@ class MomentCurve:
         """The mean moment over the period, N·m (the constant with the same work)."""
         return self.work() / self.period
 
-    def limits(self, x) -> tuple[np.ndarray, np.ndarray]:
+    def limits(self, x: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Left and right limits M(x−), M(x+) at angles x inside the period (they differ at jumps)."""
         p = self.phi
-        x = np.asarray(x, dtype=float)
+        xs = np.asarray(x, dtype=float)
         n = p.size
-        j = np.clip(np.searchsorted(p, x, side="right") - 1, 0, n - 2)   # last knot <= x
-        i = np.clip(np.searchsorted(p, x, side="left"), 1, n - 1)        # first knot >= x
-        right = self._interp(j, j + 1, x)
-        left = self._interp(i - 1, i, x)
+        j = np.clip(np.searchsorted(p, xs, side="right") - 1, 0, n - 2)   # last knot <= x
+        i = np.clip(np.searchsorted(p, xs, side="left"), 1, n - 1)        # first knot >= x
+        right = self._interp(j, j + 1, xs)
+        left = self._interp(i - 1, i, xs)
         return left, right
 
-    def _interp(self, a, b, x):
+    def _interp(self, a: NDArray[np.intp], b: NDArray[np.intp], x: NDArray[np.float64]) -> NDArray[np.float64]:
         p, M = self.phi, self.M
         h = p[b] - p[a]
         with np.errstate(invalid="ignore", divide="ignore"):
             t = np.where(h > 0, (x - p[a]) / np.where(h > 0, h, 1.0), 0.0)
-        return M[a] + t * (M[b] - M[a])
+        out: NDArray[np.float64] = M[a] + t * (M[b] - M[a])
+        return out
 
-    def __call__(self, phi):
+    def __call__(self, phi: ArrayLike) -> NDArray[np.float64]:
         """M(φ), right-continuous at jumps; φ is taken modulo the period."""
         x = np.asarray(phi, dtype=float)
         x = self.start + np.mod(x - self.start, self.period)
