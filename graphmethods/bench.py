@@ -11,6 +11,7 @@ True
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import pathlib
@@ -18,8 +19,9 @@ import statistics
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
-from typing import Callable
+from typing import Any
 
 import numpy as np
 
@@ -44,7 +46,7 @@ class Row:
 
 def median_time(fn: Callable[[], object], *, repeat: int = 5, min_seconds: float = 0.0) -> float:
     """Median wall time of ``fn()`` over ``repeat`` runs (more runs while under ``min_seconds``)."""
-    times = []
+    times: list[float] = []
     start = time.perf_counter()
     while len(times) < repeat or (time.perf_counter() - start < min_seconds and len(times) < 50):
         t0 = time.perf_counter()
@@ -70,7 +72,8 @@ def paired(fn_a: Callable[[], object], fn_b: Callable[[], object], *, repeat: in
     >>> p.a > 0 and p.b > 0 and p.ratio > 0
     True
     """
-    ta, tb = [], []
+    ta: list[float] = []
+    tb: list[float] = []
     for i in range(max(1, repeat)):
         for first in ((fn_a, ta), (fn_b, tb)) if i % 2 == 0 else ((fn_b, tb), (fn_a, ta)):
             fn, into = first
@@ -359,10 +362,10 @@ def bench_flywheel(m_values=M_VALUES, *, repeat=3, linkages=EXACT_LINKAGES) -> l
 def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
     """Velocity analogues from the constructed plans against the analytic derivative and against
     central finite differences; and plans + reduction for n positions."""
+    import pathlib
+
     from graphmethods.dynamics.reduction import reduced_inertia
     from graphmethods.kinematics import read_case
-
-    import pathlib
 
     data = pathlib.Path(__file__).parent / "problems" / "data"
     rows = []
@@ -379,7 +382,8 @@ def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
         for name, d in dxy.items():
             if name not in plans.vectors:
                 continue
-            v = plans.analogue(name) * mech.sense
+            # every classic mechanism has a sense; their base class (on its way out) does not declare it
+            v = plans.analogue(name) * mech.sense  # type: ignore[attr-defined]
             scale = float(np.abs(d).max()) or 1.0
             worst = max(worst, float(np.abs(v - d).max()) / scale)
         rows.append(Row("kinematics", case.kind, "positions", n, t_pos, None))
@@ -433,7 +437,7 @@ def six_bar_closed_form(phi, omega_1: float, epsilon_1: float, *, r=0.08, l_AB=0
     w3 = -(vAx * px + vAy * py) / det
     rx = aAx - w2 * w2 * px + w3 * w3 * qx
     ry = aAy - w2 * w2 * py + w3 * w3 * qy
-    e2 = -(rx * qx + ry * qy) / det
+    _e2 = -(rx * qx + ry * qy) / det                   # computed (and dropped) as the core computes it
     e3 = -(rx * px + ry * py) / det
     k = l_O2C / l_O2B
     Cx, Cy = O2[0] + k * qx, O2[1] + k * qy
@@ -517,7 +521,7 @@ def bench_calculus(ms=(6, 12, 24, 48, 96), *, repeat=3) -> list[Row]:
     case = _press_case()
     rows = []
     for m in ms:
-        t = median_time(lambda m=m: gc.accuracy_table(case, ms=(m,)), repeat=repeat)
+        t = median_time(functools.partial(gc.accuracy_table, case, ms=(m,)), repeat=repeat)
         for r in gc.accuracy_table(case, ms=(m,)):
             rows.append(Row("calculus", f"press: {r['construction']}", f"chords, {r['where']}", m, t, None,
                             note=f"max error {r['error']:.3g} {r['unit']} = {r['error_mm']:.2g} mm",
@@ -552,18 +556,31 @@ def bench_sheet(*, repeat=5) -> list[Row]:
 LABEL_PLACEMENT = {"_place", "_crossings", "_clean_further", "_plan_labels"}
 
 
+#: sheets/layout.py's functions that are not label placement
+_NOT_PLACEMENT = {"standard_page", "problem_title", "angle_deg_text", "given_scale", "given_angle_scale"}
+
+
+def _is_placement(path: str, func: str) -> bool:
+    path = path.replace("\\", "/")
+    if path.endswith("sheets/layout.py"):
+        return func not in _NOT_PLACEMENT
+    return "/graphmethods/sheets/" in path and func in LABEL_PLACEMENT
+
+
 def _label_share(stats) -> float:
     """The share of the profiled time spent placing labels (tottime summed, so nothing twice)."""
     total = placing = 0.0
     for (path, _line, func), (_cc, _nc, tottime, _ct, _callers) in stats.stats.items():
         total += tottime
-        if path.replace("\\", "/").endswith("sheets/layout.py") and func not in ("standard_page", "problem_title",
-                                                                                  "angle_deg_text", "given_scale",
-                                                                                  "given_angle_scale"):
-            placing += tottime
-        elif "/graphmethods/sheets/" in path.replace("\\", "/") and func in LABEL_PLACEMENT:
+        if _is_placement(path, func):
             placing += tottime
     return placing / total if total else 0.0
+
+
+def _build_svg(module) -> str:
+    from graphmethods.render import svg
+
+    return svg.to_string(module.build())
 
 
 def bench_gallery(*, repeat=1, slowest=5, names=None) -> list[Row]:
@@ -578,9 +595,9 @@ def bench_gallery(*, repeat=1, slowest=5, names=None) -> list[Row]:
 
     names = list(names or gallery.figure_names())
     modules = [gallery.figure_module(n) for n in names]
-    times = {}
+    times: dict[str, float] = {}
     for name, module in zip(names, modules):
-        times[name] = median_time(lambda module=module: svg.to_string(module.build()), repeat=repeat)
+        times[name] = median_time(functools.partial(_build_svg, module), repeat=repeat)
     profile = cProfile.Profile()
     profile.enable()
     for module in modules:
@@ -588,7 +605,7 @@ def bench_gallery(*, repeat=1, slowest=5, names=None) -> list[Row]:
     profile.disable()
     share = _label_share(pstats.Stats(profile))
     total = sum(times.values())
-    worst = sorted(times, key=times.get, reverse=True)[:slowest]
+    worst = sorted(times, key=lambda n: times[n], reverse=True)[:slowest]
     rows = [Row("gallery", f"{len(names)} figures", "build + SVG, each figure", len(names), total, None,
                 note="slowest: " + ", ".join(f"{n} {times[n]:.2f} s" for n in worst)),
             Row("gallery", f"{len(names)} figures", "label placement, share of the time", len(names), None, None,
@@ -682,7 +699,7 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
     plt.close(fig)
 
 
-SECTIONS = {
+SECTIONS: dict[str, Callable[..., list[Row]]] = {
     "flywheel": bench_flywheel,
     "kinematics": bench_kinematics,
     "linkage": bench_linkage,
@@ -696,7 +713,7 @@ SECTIONS = {
 }
 
 #: Arguments of each section for --quick (CI): small sizes, few repeats.
-QUICK = {
+QUICK: dict[str, dict[str, Any]] = {
     "flywheel": dict(m_values=(12, 24, 96, 360), repeat=3),
     "kinematics": dict(n=10_000, repeat=3),
     "linkage": dict(sizes=(12, 10**3, 10**4), repeat=3),

@@ -16,7 +16,8 @@ It needs scipy, which the toolkit itself does not: ``pip install 'graphmethods[b
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 

@@ -13,6 +13,6 @@ from __future__ import annotations
 import numpy as np
 
 #: the trapezoidal rule, ``trapezoid(y, x)``: numpy ≥ 2.0's ``np.trapezoid``, else ``np.trapz``
-trapezoid = getattr(np, "trapezoid", None) or getattr(np, "trapz")
+trapezoid = getattr(np, "trapezoid", None) or getattr(np, "trapz")  # noqa: B009 - np.trapz is gone from numpy 2.4
 
 __all__ = ["trapezoid"]

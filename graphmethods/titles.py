@@ -18,8 +18,8 @@ title is still printed, in the language it was written in, rather than left out.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 from graphmethods.errors import InputError
 from graphmethods.units import check_text
@@ -46,7 +46,7 @@ class Title:
     texts: tuple[tuple[str, str], ...] = ()
 
     @classmethod
-    def of(cls, value, *, where: str = "title") -> "Title":
+    def of(cls, value, *, where: str = "title") -> Title:
         """A Title from a plain string, a mapping by language, a Title (returned as it is) or None.
 
         Parameters
@@ -93,7 +93,7 @@ class Title:
                 if not isinstance(text, str) or not text.strip():
                     raise InputError(f"{where}: the {lang} title must be non-empty text; got {text!r} "
                                      f"(leave a language out to fall back to English)")
-            texts = tuple((lang, value[lang]) for lang in LANGUAGES if lang in value)
+            texts: tuple[tuple[str, str], ...] = tuple((lang, value[lang]) for lang in LANGUAGES if lang in value)
             if not texts:
                 raise InputError(f"{where}: a title by language needs at least one of "
                                  f"{', '.join(LANGUAGES)}; got an empty mapping")

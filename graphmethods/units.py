@@ -104,16 +104,14 @@ def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: n = 10000000000000000000…(401 characters) rev/min is outside the magnitudes this toolkit computes with (zero, or 1e-100 to 1e+100); give it in a unit that brings it into that range
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     tail = f"; {hint}" if hint else ""
     u = f" {unit}" if unit else ""
     if isinstance(value, bool) or type(value).__name__ == "bool_":
         raise InputError(f"{name} = {value!r} is a truth value, not a number{tail or '; give a number such as 0.05'}")
     tiny = False
     try:
-        if isinstance(value, Integral):
-            v = float(value)
-        elif isinstance(value, Real):
+        if isinstance(value, (Integral, Real)):
             v = float(value)
         elif isinstance(value, str):
             s = value.strip()
@@ -139,7 +137,7 @@ def real(value, name: str, *, unit: str = "", lo: float | None = None, hi: float
         raise InputError(f"{name} must be finite, got {_shown(value)} (not finite: NaN){tail}")
     if math.isinf(v):
         raise InputError(f"{name} must be finite, got {_shown(value)} (not finite){tail}")
-    if abs(v) > MAGNITUDE_MAX or not tiny_ok and (tiny or v != 0.0 and abs(v) < MAGNITUDE_MIN):
+    if abs(v) > MAGNITUDE_MAX or (not tiny_ok and (tiny or (v != 0.0 and abs(v) < MAGNITUDE_MIN))):
         raise InputError(f"{name} = {_shown(value)}{u} is outside the magnitudes this toolkit computes with "
                          f"(zero, or {MAGNITUDE_MIN:g} to {MAGNITUDE_MAX:g}); give it in a unit that brings it "
                          f"into that range")
@@ -198,7 +196,7 @@ def count(value, name: str, *, low: int, high: int, why: str = "") -> int:
     if isinstance(value, Integral):
         n = int(value)
     elif isinstance(value, Real) and math.isfinite(float(value)) and float(value).is_integer():
-        n = int(value)
+        n = int(float(value))
     else:
         raise InputError(f"{name} = {_shown(value)} must be {limit}")
     if n < low:
@@ -215,7 +213,7 @@ def finite_result(value, name: str, *, unit: str = "", why: str = "") -> float:
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: J_F came out inf kg·m²: the data lie outside the range this method can compute; give values of less extreme magnitude
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     v = float(value)
     if not math.isfinite(v):
         u = f" {unit}" if unit else ""
@@ -233,7 +231,7 @@ def first_nonfinite(obj, path: str = "") -> str | None:
     stack = [(path, obj)]
     while stack:
         where, x = stack.pop()
-        if isinstance(x, float) or type(x).__module__ == "numpy" and hasattr(x, "dtype") and x.ndim == 0:
+        if isinstance(x, float) or (type(x).__module__ == "numpy" and hasattr(x, "dtype") and x.ndim == 0):
             try:
                 if not math.isfinite(float(x)):
                     return where or "the value"
@@ -241,7 +239,7 @@ def first_nonfinite(obj, path: str = "") -> str | None:
                 pass
         elif isinstance(x, dict):
             stack.extend(reversed([(f"{where}.{k}" if where else str(k), v) for k, v in x.items()]))
-        elif isinstance(x, (list, tuple)) or hasattr(x, "tolist") and not isinstance(x, (str, bytes)):
+        elif isinstance(x, (list, tuple)) or (hasattr(x, "tolist") and not isinstance(x, (str, bytes))):
             items = x.tolist() if hasattr(x, "tolist") else x
             if isinstance(items, list) and all(type(v) is float or type(v) is int for v in items):
                 k = next((i for i, v in enumerate(items) if type(v) is float and not math.isfinite(v)), None)
@@ -262,7 +260,7 @@ def check_finite(obj) -> None:
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: E[1] came out nan: the data lie outside the range this method can compute; give values of less extreme magnitude
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     where = first_nonfinite(obj)
     if where is not None:
         bad = obj
@@ -284,7 +282,7 @@ def json_text(obj, **kwargs) -> str:
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: J_F came out inf: the data lie outside the range this method can compute; give values of less extreme magnitude
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     check_finite(obj)
     return json.dumps(obj, allow_nan=False, **kwargs)
 
@@ -299,7 +297,7 @@ def check_text(value: str, name: str) -> str:
         value.encode("utf-8")
     except UnicodeEncodeError as exc:
         bad = value[exc.start]
-        raise InputError(f"{name}: the text holds {ascii(bad)}, half of a UTF-16 surrogate pair and not a character "
+        raise InputError(f"{name}: the text holds {bad!a}, half of a UTF-16 surrogate pair and not a character "
                          f"(at position {exc.start}); write the character itself") from None
     return value
 
@@ -424,7 +422,7 @@ def convenient_at_most(value: float, series=CONVENIENT) -> float:
     return max(v for v in _candidates(value, series) if v <= value * (1 + 1e-12))
 
 
-def finite_array(values, name: str) -> "np.ndarray":
+def finite_array(values, name: str) -> np.ndarray:
     """A flat, read-only float array of finite numbers, or an InputError naming the first bad entry.
 
     >>> finite_array([1, 2.5], "areas").tolist()
@@ -432,17 +430,17 @@ def finite_array(values, name: str) -> "np.ndarray":
     """
     import numpy as np
 
-    if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") and not hasattr(values, "__iter__"):
+    if isinstance(values, (str, bytes)) or (not hasattr(values, "__len__") and not hasattr(values, "__iter__")):
         raise InputError(f"{name}: expected a list of numbers, got {_shown(values)}")
     if not isinstance(values, np.ndarray):
         values = list(values)
         for i, x in enumerate(values):
             t = type(x)
-            if t is float or t is int and -(10**100) <= x <= 10**100:
+            if t is float or (t is int and -(10**100) <= x <= 10**100):
                 continue
             if t is int:
                 values[i] = real(x, f"{name}[{i}]")      # a 400-digit integer: refused with its name
-            if isinstance(x, (list, tuple, dict, set)) or hasattr(x, "__len__") and not isinstance(x, str):
+            if isinstance(x, (list, tuple, dict, set)) or (hasattr(x, "__len__") and not isinstance(x, str)):
                 raise InputError(f"{name}[{i}]: expected a flat list of numbers, got {_shown(x)}")
             values[i] = real(x, f"{name}[{i}]")
     elif values.dtype == bool:

@@ -7,15 +7,11 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
-from hypothesis import strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics import acceleration_plan as AP
-from graphmethods.kinematics.acceleration_plan import (
-    acceleration_plan,
-    acceleration_plans,
-)
+from graphmethods.kinematics.acceleration_plan import acceleration_plan, acceleration_plans
 from graphmethods.kinematics.groups import PRP, RPP, RPR, RRP, Guide
 from graphmethods.kinematics.linkage import Crank, Linkage, Point
 from graphmethods.kinematics.presets import four_bar, slider_crank, slotted_lever

@@ -23,7 +23,7 @@ def _fill(text: str, values: dict) -> str:
 def _values(v) -> dict:
     data, ans = v.data(), v.answers()
     out = {}
-    for section, keys in answers.KEYS[v.kind]:
+    for _section, keys in answers.KEYS[v.kind]:
         for key, _ in keys:
             value = data.get(key, ans.get(key))
             if isinstance(value, list) and key not in answers.LISTS:

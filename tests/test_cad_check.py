@@ -181,7 +181,7 @@ def test_a_class_of_drawings_and_answers_files(tmp_path, capsys):
     rep = check_class(class_files(d))
     by = {s.path.name: s for s in rep.submissions}
     assert by["broken__W1.dxf"].report is None and "DXF" in by["broken__W1.dxf"].error
-    for name, (problem, wrong, codes, carried) in PLANTED.items():
+    for name, (problem, wrong, _codes, _carried) in PLANTED.items():
         stem, suffix = name.rsplit(".", 1)
         s = by[f"{stem}-{suffix}__{problem}.{suffix}"]
         assert {i.key for i in s.report.wrong} == wrong and s.student == f"{stem}-{suffix}"

@@ -7,18 +7,14 @@ import pathlib
 import re
 import sys
 
-import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.cli import check as cli_check
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
-from graphmethods.sheets import check as ck
-from graphmethods.sheets import worksheets as ws
-
+from graphmethods.sheets import check as ck, worksheets as ws
 
 ANSWERS = pathlib.Path(ck.__file__).parents[1] / "problems" / "data" / "answers"
 FILES = sorted(ANSWERS.glob("*.toml"))

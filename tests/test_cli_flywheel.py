@@ -8,7 +8,6 @@ import sys
 import pytest
 
 from graphmethods.cli import main
-from graphmethods.units import parse_number
 
 
 def run(capsys, *argv):

@@ -9,8 +9,14 @@ import numpy as np
 import pytest
 
 from graphmethods.cli import main
-from graphmethods.dynamics.power import (IEC_RATED_KW, choose_motor, efficiency_parallel, efficiency_series,
-                                         mean_power, moment_with_losses)
+from graphmethods.dynamics.power import (
+    IEC_RATED_KW,
+    choose_motor,
+    efficiency_parallel,
+    efficiency_series,
+    mean_power,
+    moment_with_losses,
+)
 from graphmethods.dynamics.study import Study
 from graphmethods.errors import InputError
 from graphmethods.kinematics.linkage_file import linkage_case

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 from graphmethods.dynamics import excess_work as ew
-from graphmethods.dynamics.flywheel import flywheel, fluctuation, rim_flywheel, disc_flywheel, transfer
+from graphmethods.dynamics.flywheel import disc_flywheel, fluctuation, flywheel, rim_flywheel, transfer
 from graphmethods.dynamics.kinetic_energy import kinetic_energy
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError, MotionError, UnbalancedCycleError

@@ -26,8 +26,7 @@ import re
 import signal
 
 import pytest
-from hypothesis import HealthCheck, Phase, given, settings
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, Phase, given, settings, strategies as st
 
 from graphmethods import cli
 from graphmethods.dynamics import excess_work as ew
@@ -100,7 +99,7 @@ def run_cli(test: str, argv: list[str], *, json_out: bool = False) -> int:
                 code = exc.code
     except Hang:
         c["hangs"] += 1
-        raise AssertionError(f"hang: {argv}")
+        raise AssertionError(f"hang: {argv}") from None
     except BaseException as exc:
         c["tracebacks"] += 1
         raise AssertionError(f"traceback {type(exc).__name__}: {exc} for {argv}") from exc
@@ -137,7 +136,7 @@ def call_api(test: str, fn, *args, **kwargs):
         return None
     except Hang:
         c["hangs"] += 1
-        raise AssertionError(f"hang: {fn.__name__}{args}{kwargs}")
+        raise AssertionError(f"hang: {fn.__name__}{args}{kwargs}") from None
     except BaseException as exc:
         c["tracebacks"] += 1
         raise AssertionError(f"{type(exc).__name__}: {exc} from {fn.__name__}{args}{kwargs}") from exc

@@ -6,9 +6,15 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from graphmethods.dynamics.graphical_calculus import (accuracy_table, differentiate_by_chords, exact_integral,
-                                                      integrate_by_chords, slider_diagrams, slider_motion,
-                                                      work_diagrams)
+from graphmethods.dynamics.graphical_calculus import (
+    accuracy_table,
+    differentiate_by_chords,
+    exact_integral,
+    integrate_by_chords,
+    slider_diagrams,
+    slider_motion,
+    work_diagrams,
+)
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
 from graphmethods.kinematics import SliderCrank

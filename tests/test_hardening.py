@@ -364,7 +364,7 @@ def test_set_writers_full_disk(tmp_path, capsys, monkeypatch, argv):
     real_open = builtins.open
 
     def full(file, mode="r", *a, **k):
-        if "x" in mode or "w" in mode and "b" in mode:
+        if "x" in mode or ("w" in mode and "b" in mode):
             raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
         return real_open(file, mode, *a, **k)
 
@@ -394,7 +394,7 @@ def test_force_replace_is_all_or_nothing(tmp_path, monkeypatch):
     for fail_at in range(1, 8):
         calls = [0]
 
-        def rename(src, dst, _n=fail_at):
+        def rename(src, dst, _n=fail_at, calls=calls):
             calls[0] += 1
             if calls[0] == _n:
                 raise KeyboardInterrupt if _n % 2 else OSError(errno.EIO, "I/O error")

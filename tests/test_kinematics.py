@@ -4,12 +4,18 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
-from hypothesis import strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from graphmethods.errors import AssemblyError, GraphmethodsError, InputError
-from graphmethods.kinematics import (FourBar, Positions, Shaper, SliderCrank, SlottedLever, VelocityPlans,
-                                     convenient_scale)
+from graphmethods.kinematics import (
+    FourBar,
+    Positions,
+    Shaper,
+    SliderCrank,
+    SlottedLever,
+    VelocityPlans,
+    convenient_scale,
+)
 
 REL = 1e-12  # the plans must agree with the analytic derivative to 1e-12 of each quantity's cycle maximum
 

@@ -9,8 +9,18 @@ import pytest
 
 from graphmethods import cli
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics import (FourBar, FourBarCase, Shaper, ShaperCase, SliderCrank, SliderCrankCase,
-                                     SlottedLever, SlottedLeverCase, case_from_dict, read_case)
+from graphmethods.kinematics import (
+    FourBar,
+    FourBarCase,
+    Shaper,
+    ShaperCase,
+    SliderCrank,
+    SliderCrankCase,
+    SlottedLever,
+    SlottedLeverCase,
+    case_from_dict,
+    read_case,
+)
 
 DATA = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
 PRESS = {"r": 0.1, "l": 0.4, "e": 0.02, "l_AS2": 0.13, "m2": 8.0, "J_S2": 0.12, "m3": 12.0, "J1": 0.5,

@@ -7,8 +7,7 @@ written out below, on random scenes and on the hard cases (axis-parallel and zer
 segments, segments that end on a box edge, boxes that touch).
 """
 
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.sheets import layout
 from graphmethods.sheets.layout import Occupancy, _segment_hits_box

@@ -5,8 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
-from hypothesis import strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics import presets
@@ -26,9 +25,9 @@ def _fd(solves, base, attr, order):
     for k in getattr(base, attr):
         b = getattr(base, attr)[k]
         if attr == "theta":
-            d = lambda s: np.angle(np.exp(1j * (s.theta[k] - b)))  # noqa: E731 - unwrapped difference
+            d = lambda s, k=k, b=b: np.angle(np.exp(1j * (s.theta[k] - b)))  # noqa: E731 - unwrapped difference
         else:
-            d = lambda s: getattr(s, attr)[k] - b  # noqa: E731
+            d = lambda s, k=k, b=b: getattr(s, attr)[k] - b  # noqa: E731
         if order == 1:
             out[k] = sum(c * (d(p) - d(m)) for c, (p, m) in zip(C1, solves))
         else:

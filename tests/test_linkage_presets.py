@@ -1,16 +1,14 @@
 """The four classic kinds as presets on the core: every result equal to the classes' within 1e-12."""
 
 import json
-import math
 import pathlib
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
+from test_kinematics import four_bars, shapers, slider_cranks, slotted_levers
 
 from graphmethods.kinematics import presets, read_case
-from test_kinematics import four_bars, shapers, slider_cranks, slotted_levers
 
 PRESS = pathlib.Path(__file__).parents[2] / "shared" / "cases" / "slider_crank_press.json"
 if not PRESS.exists():

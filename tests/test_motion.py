@@ -6,8 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.dynamics.motion import ReducedModel, exact_flywheel, periodic_motion
 from graphmethods.errors import GraphmethodsError, InputError, MotionError

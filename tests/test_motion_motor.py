@@ -12,7 +12,6 @@ from graphmethods.dynamics.motor import DCMotor, InductionMotor, motor_motion
 from graphmethods.errors import InputError, MotionError
 from graphmethods.units import omega_from_n
 
-
 # ---- characteristics ---------------------------------------------------------------------------
 
 def test_dc_motor_line_and_its_inverse():

@@ -9,8 +9,7 @@ import pytest
 
 from graphmethods.cli import main
 from graphmethods.dynamics.multimass import Mass, Shaft, reduce_chain
-from graphmethods.dynamics.reduction import Shaft as GearShaft
-from graphmethods.dynamics.reduction import reduce_drive
+from graphmethods.dynamics.reduction import Shaft as GearShaft, reduce_drive
 from graphmethods.errors import InputError
 
 MASSES = [Mass("motor", 0.08, 6.0, 30.0), Mass("gear", 0.5, 2.0), Mass("crank", 12.0, 1.0, -160.0)]

@@ -7,14 +7,22 @@ import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
-from graphmethods.compat import trapezoid
 from graphmethods.cli import main
+from graphmethods.compat import trapezoid
 from graphmethods.dynamics import study as study_mod
-from graphmethods.dynamics.reduction import (Shaft, load_switch_angles, load_work, power_moment, reduce_drive,
-                                             reduced_inertia, resisting_moment, zhukovsky_lever)
+from graphmethods.dynamics.reduction import (
+    Shaft,
+    load_switch_angles,
+    load_work,
+    power_moment,
+    reduce_drive,
+    reduced_inertia,
+    resisting_moment,
+    zhukovsky_lever,
+)
 from graphmethods.dynamics.study import Study
 from graphmethods.errors import InputError
-from graphmethods.kinematics import Inertia, SliderCrank, read_case
+from graphmethods.kinematics import SliderCrank, read_case
 
 PI = math.pi
 
@@ -93,7 +101,7 @@ def test_gear_train_reduction_and_flywheel_transfer():
 # ----------------------------------------------------------------- the study: laziness
 def test_drawing_only_the_moment_diagram_does_not_compute_J_e(press):
     s = Study(press, positions=12)
-    s.excess_work                                    # what a moment diagram draws
+    s.excess_work  # noqa: B018 - computed on access: what a moment diagram draws
     assert "inertia" not in s.computed and "exact" not in s.computed and "model" not in s.computed
 
 
@@ -128,8 +136,9 @@ def test_press_wittenbauer_converges_to_the_exact_value(press):
 
 
 def test_builtin_press_data_is_the_reference_file(press_case_path):
-    from graphmethods import problems
     import pathlib
+
+    from graphmethods import problems
     builtin = pathlib.Path(problems.__file__).parent / "data" / "slider_crank_press.json"
     assert json.loads(builtin.read_text()) == json.loads(press_case_path.read_text())
 

@@ -14,8 +14,7 @@ import pytest
 
 ezdxf = pytest.importorskip("ezdxf")
 
-from graphmethods import cli  # noqa: E402
-from graphmethods import gallery as gallery_figures  # noqa: E402
+from graphmethods import cli, gallery as gallery_figures  # noqa: E402
 from graphmethods.errors import OutputExistsError  # noqa: E402
 from graphmethods.kinematics import read_case  # noqa: E402
 from graphmethods.render import dxf  # noqa: E402

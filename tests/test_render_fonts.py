@@ -11,6 +11,7 @@ import subprocess
 
 import pytest
 from matplotlib import font_manager as fm
+from pdf_reading import Pdf
 
 from graphmethods.cli import main
 from graphmethods.errors import MissingFontError
@@ -18,7 +19,6 @@ from graphmethods.render import fonts, mpl, pdf
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, Scene, Text
 from graphmethods.sheets.worksheets import worksheet
-from pdf_reading import Pdf
 
 PRESS = str(pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
             / "slider_crank_press.json")

@@ -7,7 +7,7 @@ import warnings
 import pytest
 
 from graphmethods.errors import OutputExistsError
-from graphmethods.render import fonts, mpl
+from graphmethods.render import mpl
 from graphmethods.scene import Page, Scale, Scene, Text, Vector
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -63,9 +63,9 @@ def test_save_refuses_to_overwrite(tmp_path):
 
 def test_drawing_touches_no_global_matplotlib_state():
     code = ("import matplotlib; before = matplotlib.get_backend();"
-            "import sys; sys.path.insert(0, %r); import test_render_mpl as t;"
+            "import sys; sys.path.insert(0, {!r}); import test_render_mpl as t;"
             "from graphmethods.render import mpl; mpl.to_png_bytes(t.small_scene(), dpi=20);"
-            "print('pyplot' in sys.modules, matplotlib.get_backend() == before)") % __file__.rsplit("/", 1)[0]
+            "print('pyplot' in sys.modules, matplotlib.get_backend() == before)").format(__file__.rsplit("/", 1)[0])
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.split() == ["False", "True"]
 

@@ -4,18 +4,19 @@ scene puts it, as wide as matplotlib lays it out; paths in millimetres; determin
 import io
 import shutil
 import subprocess
+from pathlib import Path
 
 import pytest
+from pdf_reading import Pdf
 
 from graphmethods import problems, sheets
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import fonts, pdf
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, Scale, Scene, Text, Vector
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT
 from graphmethods.scene.elements import Polyline
+from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT
 from graphmethods.scene.primitives import Style
-from pdf_reading import Pdf
 
 PT_PER_MM = 72 / 25.4
 
@@ -172,7 +173,7 @@ def test_the_embedded_program_is_a_subset_of_the_font_with_its_outlines_and_widt
         assert widths[gid] == pytest.approx(1000 * original["hmtx"][gname][0] / original["head"].unitsPerEm, abs=1e-3)
     # only the glyphs used (and .notdef) keep outlines
     drawn = [g for g in sub.getGlyphOrder() if sub["glyf"][g].numberOfContours != 0]
-    assert len(drawn) == 3 and len(program) < 60_000 < len(open(fonts._base_path(False), "rb").read())
+    assert len(drawn) == 3 and len(program) < 60_000 < len(Path(fonts._base_path(False)).read_bytes())
 
 
 def test_paths_are_drawn_in_page_millimetres():

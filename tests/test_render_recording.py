@@ -2,8 +2,7 @@
 
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.render.base import Renderer, draw

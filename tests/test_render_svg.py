@@ -9,13 +9,24 @@ import sys
 import xml.etree.ElementTree as ET
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.scene import (
-    Axis, Dimension, Page, Point, Region, Scale, ScaleCaptions, Scene, Table, Text, TitleBlock, Vector, markup,
+    Axis,
+    Dimension,
+    Page,
+    Point,
+    Region,
+    Scale,
+    ScaleCaptions,
+    Scene,
+    Table,
+    Text,
+    TitleBlock,
+    Vector,
+    markup,
 )
 
 NS = {"svg": "http://www.w3.org/2000/svg"}
@@ -133,9 +144,9 @@ def test_no_dates_and_same_bytes_twice():
 
 def test_same_bytes_in_a_fresh_process_with_another_hash_seed():
     here = hashlib.sha256(svg.to_bytes(demo_scene())).hexdigest()
-    code = ("import hashlib, sys; sys.path.insert(0, %r); import test_render_svg as t;"
+    code = (f"import hashlib, sys; sys.path.insert(0, {os.path.dirname(__file__)!r}); import test_render_svg as t;"
             "from graphmethods.render import svg;"
-            "print(hashlib.sha256(svg.to_bytes(t.demo_scene())).hexdigest())") % os.path.dirname(__file__)
+            "print(hashlib.sha256(svg.to_bytes(t.demo_scene())).hexdigest())")
     for seed in ("1", "4242"):
         out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                              env={**os.environ, "PYTHONHASHSEED": seed})
@@ -172,8 +183,8 @@ def test_save_into_a_missing_directory_says_so(tmp_path):
 
 
 def test_non_finite_coordinates_are_refused_not_written():
-    from graphmethods.scene.primitives import Path as PPath
     from graphmethods.render.base import draw
+    from graphmethods.scene.primitives import Path as PPath
 
     class Bad(Text):
         def primitives(self):

@@ -5,17 +5,38 @@ import subprocess
 import sys
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    NOTATIONS, Axis, Dimension, Frame, Line, Notation, Page, Point, Region, Scale, ScaleCaptions, Scene, SignMark,
-    Table, Text, TitleBlock, Vector, format_mm, format_value, in_language, markup, nice_ticks, notation, pi_ticks,
-    pick_angle_scale, pick_scale,
+    NOTATIONS,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Notation,
+    Page,
+    Point,
+    Region,
+    Scale,
+    ScaleCaptions,
+    Scene,
+    SignMark,
+    Table,
+    Text,
+    TitleBlock,
+    Vector,
+    format_mm,
+    format_value,
+    in_language,
+    markup,
+    nice_ticks,
+    notation,
+    pi_ticks,
+    pick_angle_scale,
+    pick_scale,
 )
 from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, walk
-
 
 # ----------------------------------------------------------------------------- numbers
 
@@ -212,7 +233,7 @@ def test_dimension_line_is_offset_and_measures_its_points():
     assert d.line_start == (5.0, 50.0) and d.line_end == (5.0, 10.0)
     heads = [p for p in d.primitives() if isinstance(p, Polygon)]
     assert {h.points[0] for h in heads} == {(5.0, 50.0), (5.0, 10.0)}   # arrow tips on the extension lines
-    label = [p for p in d.primitives() if isinstance(p, Label)][0]
+    label = next(p for p in d.primitives() if isinstance(p, Label))
     assert label.anchor == "start" and label.x > 5.0
 
 

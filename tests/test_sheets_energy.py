@@ -6,8 +6,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 from figure_checks import assert_fits_and_labels_apart
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods import problems, sheets
 from graphmethods.dynamics import excess_work as ew

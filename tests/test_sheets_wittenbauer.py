@@ -12,8 +12,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 from figure_checks import assert_fits_and_labels_apart
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.cli import main
 from graphmethods.dynamics.study import Study

@@ -9,21 +9,18 @@ import numpy as np
 import pytest
 
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.render import steps as R
-from graphmethods.render import svg
+from graphmethods.render import steps as R, svg
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, markup
 from graphmethods.scene.steps import NEW_COLOUR, OLD_COLOUR
-from graphmethods.sheets import calculus as C
-from graphmethods.sheets import dynamics as D
-from graphmethods.sheets import kinematics as K
-from graphmethods.sheets import steps as S
+from graphmethods.sheets import calculus as C, dynamics as D, kinematics as K, steps as S
 from graphmethods.sheets.energy import energy_indicator
 from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 
 SVG = "{http://www.w3.org/2000/svg}"
 LINKAGES = tuple(S.LINKAGES)
-CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "acceleration-plan") for c in LINKAGES] + [(c, "energy-indicator") for c in ("W1", "W2", "W3", "W4", "press")]
+CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "acceleration-plan") for c in LINKAGES]
+         + [(c, "energy-indicator") for c in ("W1", "W2", "W3", "W4", "press")]
          + [(c, "wittenbauer") for c in ("press", "shaper", "four-bar")]
          + [(c, "kinematic-diagrams") for c in ("press", "shaper")]
          + [(c, "work-diagrams") for c in ("press", "W3")]
@@ -185,7 +182,7 @@ def test_velocity_plan_captions_give_the_values_the_drawing_measures(built):
 def test_energy_indicator_captions_give_each_vector_as_drawn(built):
     bu = built("W1", "energy-indicator")
     rec = record(bu.figure)
-    for cap, step in zip(bu.captions()[1:8], bu.steps[1:8]):
+    for cap, _step in zip(bu.captions()[1:8], bu.steps[1:8]):
         ab, mm = re.search(r"Interval (\w\w):.* ([\d.]+) mm (up|down)", cap).group(1, 2)
         assert rec.vector_length_mm(f"vector-{ab}") == pytest.approx(float(mm), rel=1e-3)
     assert "575 J" in bu.captions()[-1]

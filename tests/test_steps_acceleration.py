@@ -9,8 +9,7 @@ from graphmethods.kinematics.presets import slider_crank
 from graphmethods.problems import builtin
 from graphmethods.render.recording import record
 from graphmethods.scene import markup
-from graphmethods.sheets import acceleration as SA
-from graphmethods.sheets import steps as S
+from graphmethods.sheets import acceleration as SA, steps as S
 
 
 def test_slotted_lever_steps_follow_the_construction_with_coriolis():

@@ -11,12 +11,11 @@ import pathlib
 
 import numpy as np
 import pytest
+from browser import Browser, find_chromium
 
 from graphmethods.render import steps as R
 from graphmethods.scene import markup
 from graphmethods.sheets import steps as S
-
-from browser import Browser, find_chromium
 
 pytestmark = pytest.mark.skipif(find_chromium() is None,
                                 reason="no Chromium on PATH (Debian package chromium; .ci/run installs it where "

@@ -15,8 +15,7 @@ from graphmethods.problems import CycleProblem
 from graphmethods.problems.reduced import four_stroke_engine, smooth_machine
 from graphmethods.problems.reference_cases import CASE_TITLES, title_of
 from graphmethods.render.recording import record
-from graphmethods.sheets import check as chk
-from graphmethods.sheets import worksheets as ws
+from graphmethods.sheets import check as chk, worksheets as ws
 from graphmethods.titles import LANGUAGES, Title, text_in
 
 DATA = pathlib.Path(problems.__file__).parent / "data"

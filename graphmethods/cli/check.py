@@ -77,24 +77,12 @@ def run(args) -> int:
             from graphmethods.render.files import write_atomic
 
             write_atomic(path, cad.overlay_dxf(report, notation=args.lang), overwrite=args.force)
-        elif suffix == ".svg":
-            from graphmethods.render import svg
-
-            svg.save(scene, path, overwrite=args.force)
-        elif suffix == ".pdf":
-            from graphmethods.render import pdf
-
-            pdf.save(scene, path, overwrite=args.force)
-        elif suffix == ".png":
-            from graphmethods.render import mpl
-
-            mpl.save_png(scene, path, overwrite=args.force)
-        elif suffix == ".dxf":
-            from graphmethods.render import dxf
-
-            dxf.save(scene, path, overwrite=args.force)
         else:
-            raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
+            from graphmethods.render import formats
+
+            if suffix not in formats.FORMATS:
+                raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
+            formats.save(scene, path, overwrite=args.force)
     out = {"text": report.to_text, "markdown": report.to_markdown, "json": report.to_json}[args.format]()
     print(out.rstrip("\n"))
     if args.overlay:

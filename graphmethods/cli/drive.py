@@ -13,8 +13,8 @@ from __future__ import annotations
 import argparse
 import pathlib
 
-from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.cli.flywheel import parse_list
+from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.units import json_text
 
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from graphmethods.units import json_text
 
 
@@ -18,7 +20,7 @@ def run(args) -> int:
     results = {}
     for prob in all_examples():
         ew = prob.excess_work
-        res = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict(),
+        res: dict[str, Any] = {"title": str(prob.title), "source": prob.source, "excess_work": ew.to_dict(),
                "work_unit": prob.work_unit}
         if prob.n_rpm is not None and prob.delta is not None:
             res["flywheel"] = prob.flywheel().to_dict()
@@ -36,8 +38,10 @@ def run(args) -> int:
             print(f"n = {fw['n_rpm']:.6g} rev/min, [δ] = {fw['delta']:.6g}:  J_F = {fw['J_F']:.4f} kg·m²")
         if "kinetic_energy" in res:
             ke = res["kinetic_energy"]
-            print(f"T, {prob.work_unit} = " + ", ".join(f"{t:.4f}" for t in ke["T"]) + f"   (J_e = {ke['J_e']:g} {prob.inertia_unit}, T0 = {ke['T0']:g} {prob.work_unit})")
-            print("ω, s⁻¹ = " + ", ".join(f"{w:.4f}" for w in ke["omega"]) + f"   ω_m = {ke['omega_m']:.4f}, δ = {ke['delta']:.4f}")
+            print(f"T, {prob.work_unit} = " + ", ".join(f"{t:.4f}" for t in ke["T"])
+                  + f"   (J_e = {ke['J_e']:g} {prob.inertia_unit}, T0 = {ke['T0']:g} {prob.work_unit})")
+            print("ω, s⁻¹ = " + ", ".join(f"{w:.4f}" for w in ke["omega"])
+                  + f"   ω_m = {ke['omega_m']:.4f}, δ = {ke['delta']:.4f}")
         if prob.note:
             print(f"note: {prob.note}")
         print()

@@ -18,6 +18,7 @@ Without ``--json`` the same as a table, in ``--lang en|ru|zh``.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
@@ -86,19 +87,20 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
         i = 0
     else:
         fa = case_forces(case, m=m, omega_1=omega_1, epsilon_1=epsilon_1, gravity=gravity)
-        i = int(position)
+        i = int(position or 0)
     mo = fa.motion
     lk = mo.linkage
-    links = {}
+    links: dict[str, dict[str, Any]] = {}
     for k in lk.links:
         F, M = fa.inertia_of(k)
         Fi, Mi = complex(F[i]), float(M[i])
         h = 0.0 if Mi == 0.0 else (abs(Mi) / abs(Fi) if Fi != 0 else None)
         links[k] = {"F_i": _v(Fi), "M_i": _f(Mi), "h": h}
-    reactions, pairs = {}, {}
+    reactions: dict[str, list[float]] = {}
+    pairs: dict[str, dict[str, Any]] = {}
     for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
         reactions[key] = _v(complex(r.R[i]))
-        info = {"kind": "revolute" if r.kind == "R" else "prismatic", "at": _v(complex(r.at[i]))}
+        info: dict[str, Any] = {"kind": "revolute" if r.kind == "R" else "prismatic", "at": _v(complex(r.at[i]))}
         if r.kind == "P":
             info["M"] = _f(r.M[i])
             hh = float(r.h[i])
@@ -107,7 +109,7 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
-        "position": None if phi_deg is not None else int(position), "m": None if phi_deg is not None else m,
+        "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
         "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0),
         "n_rpm": case.n_rpm if n_rpm is None else n_rpm, "omega_1": omega_1, "epsilon_1": epsilon_1,
         "sense": "ccw" if lk.sense == 1 else "cw", "gravity": 9.81 if gravity else 0.0,

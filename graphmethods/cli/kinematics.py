@@ -24,6 +24,7 @@ before the first file is written, so an error writes nothing.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
@@ -155,7 +156,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
             units[f"omega_{k}"] = "rad/s"
     rows = []
     for i in range(pos.n):
-        row = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
+        row: dict[str, Any] = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
         if pos.index is None:
             row["position"] = None
         row["ill_conditioned"] = bool(plan.ill_conditioned[i])
@@ -220,8 +221,7 @@ def figures(case, m: int, *, notation: str = "en", plan_position: int | None = N
     """
     from graphmethods.dynamics.study import Study
     from graphmethods.errors import InputError
-    from graphmethods.sheets import acceleration as sa
-    from graphmethods.sheets import kinematics as ks
+    from graphmethods.sheets import acceleration as sa, kinematics as ks
 
     if m > FIGURES_MAX_POSITIONS:
         raise InputError(f"--figures draws at most {FIGURES_MAX_POSITIONS} positions (the velocity table's rows must "
@@ -272,22 +272,10 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
     for key, obj in scenes.items():
         if isinstance(obj, str):
             blobs[out / f"{stem}_{key}"] = obj.encode("utf-8")
-        elif fmt == "svg":
-            from graphmethods.render import svg
-
-            blobs[out / f"{stem}_{key}.svg"] = svg.to_bytes(obj)
-        elif fmt == "pdf":
-            from graphmethods.render import pdf
-
-            blobs[out / f"{stem}_{key}.pdf"] = pdf.to_bytes(obj)
-        elif fmt == "dxf":
-            from graphmethods.render import dxf
-
-            blobs[out / f"{stem}_{key}.dxf"] = dxf.to_bytes(obj)
         else:
-            from graphmethods.render import mpl
+            from graphmethods.render import formats
 
-            blobs[out / f"{stem}_{key}.png"] = mpl.to_png_bytes(obj)
+            blobs[out / f"{stem}_{key}.{fmt}"] = formats.to_bytes(obj, f".{fmt}")
     if not overwrite:
         existing = [str(p) for p in blobs if p.exists()]
         if existing:

@@ -16,10 +16,9 @@ import json
 import math
 import re
 
-from graphmethods.errors import InputError
 from graphmethods.cli._argv import join_option_values
+from graphmethods.errors import InputError
 from graphmethods.units import parse_number
-
 
 #: bounds of a run from the command line: a run past them is refused, not left to go on for hours
 MAX_TURNS = 10_000
@@ -121,8 +120,7 @@ def _opt(value, name):
 
 def run(args: argparse.Namespace) -> int:
     from graphmethods.dynamics.formula import Formula
-    from graphmethods.dynamics.regimes import Brake, ConstantDrive
-    from graphmethods.dynamics.regimes import run as integrate
+    from graphmethods.dynamics.regimes import Brake, ConstantDrive, run as integrate
     from graphmethods.problems.machine import machine
 
     t0 = parse_number(args.t0, name="--t0")

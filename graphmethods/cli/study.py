@@ -46,26 +46,17 @@ def add_parser(sub) -> None:
 
 
 def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
-    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
-
     from graphmethods.errors import NoFlywheelNeeded
+    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
 
     try:
         scene = dynamic_analysis_sheet(study, page=page, notation=lang)
     except NoFlywheelNeeded as exc:
         raise InputError(f"--sheet {path}: {exc}; the sheet has no flywheel to construct, so nothing was written "
                          f"(run without --sheet for the numbers)") from None
-    if path.suffix.lower() == ".pdf":
-        from graphmethods.render import pdf
+    from graphmethods.render import formats
 
-        return pdf.to_bytes([scene])
-    if path.suffix.lower() == ".dxf":
-        from graphmethods.render import dxf
-
-        return dxf.to_bytes([scene])
-    from graphmethods.render import svg
-
-    return svg.to_bytes(scene)
+    return formats.to_bytes(scene, path.suffix)        # .svg, .pdf or .dxf (checked before any work)
 
 
 def _check_target(path: pathlib.Path, force: bool) -> None:
@@ -107,7 +98,7 @@ def run(args) -> int:
         point = args.translating or str(study.case.load.at)
         out["translating"] = {"point": point, **tr.to_dict()}
     check_finite(out)                        # a result that is not finite is refused, naming it
-    if data is not None:            # written last: an error above leaves no file behind
+    if data is not None and sheet is not None:   # written last: an error above leaves no file behind
         from graphmethods.render.files import write_atomic
 
         write_atomic(sheet, data, overwrite=args.force)

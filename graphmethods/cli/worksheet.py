@@ -52,10 +52,8 @@ def add_parser(sub) -> None:
 
 
 def run(args) -> int:
-    from graphmethods.errors import OutputExistsError
+    from graphmethods.errors import InputError, OutputExistsError
     from graphmethods.sheets import worksheets as ws
-
-    from graphmethods.errors import InputError
     from graphmethods.units import MAX_VARIANTS, count
 
     t0 = time.perf_counter()

@@ -28,10 +28,12 @@ W1 (diesel generator; the staircase goes down first, b is the lowest point, e th
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError, UnbalancedCycleError
@@ -142,7 +144,7 @@ class ExcessWork:
         return None if self.phi is None else float(self.phi[self.index_E_min])
 
     # ----------------------------------------------------------------- energy along the cycle
-    def energy(self, phi) -> np.ndarray:
+    def energy(self, phi: ArrayLike) -> NDArray[np.float64]:
         """ΔE(φ) = ∫ (M_d − M_r) dφ from the start of the period, J (moment-curve input only).
 
         >>> from math import pi
@@ -152,6 +154,7 @@ class ExcessWork:
         """
         if self.M_d is None:
             raise InputError("ΔE(φ) needs moment curves; this cycle was given as areas, works or levels")
+        assert self.M_r is not None                  # both curves, or neither
         return (self.M_d - self.M_r).integral(phi)
 
     def energy_curve(self, samples: int = 721) -> tuple[np.ndarray, np.ndarray]:
@@ -159,13 +162,14 @@ class ExcessWork:
         ``samples`` evenly spaced angles, all exact (ΔE is piecewise quadratic)."""
         if self.M_d is None:
             raise InputError("the energy graph needs moment curves; draw the energy indicator instead")
+        assert self.M_r is not None and self.phi is not None
         D = self.M_d - self.M_r
         even = np.linspace(D.phi[0], D.phi[-1], samples)
         phi = np.unique(np.concatenate((D.phi, self.phi, even)))
         return phi, self.energy(phi)
 
     # ----------------------------------------------------------------- the table
-    def rows(self) -> list[dict]:
+    def rows(self) -> list[dict[str, Any]]:
         """The excess-work table, one row per interval: points, area, work, energy at its end."""
         rows = []
         labels = self.labels                       # once: the table is linear in the number of intervals
@@ -238,10 +242,13 @@ class ExcessWork:
         """
         head, body = self._table(unit)
         widths = [max(len(r[k]) for r in [head] + body) for k in range(len(head))]
-        fmt = lambda r: "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
+
+        def fmt(r: list[str]) -> str:
+            return "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
+
         return "\n".join([fmt(head)] + [fmt(r) for r in body] + self._summary(unit))
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         """A JSON-ready dict of the table and results."""
         d = {
             "labels": list(self.labels),
@@ -281,7 +288,7 @@ def _check_closure(work: np.ndarray, closure_tol: float, what: str) -> None:
         )
 
 
-def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -> ExcessWork:
+def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra: Any) -> ExcessWork:
     if work.size == 0:
         raise InputError(f"no {what} given; give the signed values of the intervals in order")
     closure_tol = real(closure_tol, "closure_tol", lo=0.0, hint="the allowed residual |ΣA|/Σ|A|, e.g. 0.05")
@@ -290,7 +297,7 @@ def _from_work_array(work: np.ndarray, closure_tol: float, what: str, **extra) -
     return ExcessWork(work=work, E=E, closure_tol=closure_tol, **extra)
 
 
-def _positive(value, name: str, hint: str) -> float:
+def _positive(value: object, name: str, hint: str) -> float:
     return real(value, name, lo=0.0, lo_open=True, hint=hint)
 
 

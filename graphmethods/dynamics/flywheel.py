@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -30,7 +31,7 @@ RIM_SPEED_LIMIT = {"cast iron": 25.0, "steel": 40.0}
 DENSITY = {"cast iron": 7200.0, "steel": 7850.0}
 
 
-def _finite(value, name: str, *, positive: bool = False, hint: str = "", tiny_ok: bool = False) -> float:
+def _finite(value: object, name: str, *, positive: bool = False, hint: str = "", tiny_ok: bool = False) -> float:
     # the toolkit's one policy for numbers that enter (graphmethods.units.real): no bools, finite,
     # magnitudes 1e-100 … 1e100 (only the upper bound for a numerator or a term: tiny_ok)
     return real(value, name, lo=0.0 if positive else None, lo_open=positive, hint=hint, tiny_ok=tiny_ok)
@@ -105,7 +106,7 @@ class Flywheel:
         """The same flywheel placed on a shaft turning at ω_i instead: J_F (ω_m/ω_i)², kg·m²."""
         return transfer(self.J_F, omega_from=self.omega_m, omega_to=omega_i)
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         d = asdict(self)
         d.update(n_rpm=self.n_rpm, omega_max=self.omega_max, omega_min=self.omega_min, needed=self.needed)
         return d

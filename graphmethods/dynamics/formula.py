@@ -17,13 +17,13 @@ over arrays. The Greek letters φ, ω and π may be written for phi, omega and p
 Traceback (most recent call last):
     ...
 graphmethods.errors.InputError: formula 'a + 1': unknown name 'a' at column 1; use phi, pi, e or one of the functions (sin, cos, ...)
-"""
+"""  # noqa: E501 - a doctest's expected output is one line
 
 from __future__ import annotations
 
 import ast
 import math
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -59,7 +60,7 @@ class KineticEnergy:
         """Coefficient of fluctuation (ω_max − ω_min)/ω_m."""
         return (self.omega_max - self.omega_min) / self.omega_m
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         return {"T": self.T.tolist(), "omega": self.omega.tolist(), "omega_m": self.omega_m,
                 "delta": self.delta, "J_e": self.J_e, "T0": self.T0}
 
@@ -74,6 +75,7 @@ def kinetic_energy(ew: ExcessWork, *, J_e: float, T0: float | None = None, omega
     if (T0 is None) == (omega_0 is None):
         raise InputError("give the starting state once: T0 (J) or omega_0 (rad/s)")
     if T0 is None:
+        assert omega_0 is not None
         if not (math.isfinite(omega_0) and omega_0 > 0):
             raise InputError(f"omega_0 = {omega_0!r} must be a positive speed in rad/s")
         T0 = 0.5 * J_e * omega_0**2

@@ -32,8 +32,8 @@ from __future__ import annotations
 import math
 import pathlib
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 

@@ -20,10 +20,11 @@ all exactly alike.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from typing import Callable, Iterable, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.units import finite_array, real
@@ -57,7 +58,7 @@ class MomentCurve:
     M: np.ndarray
     approx_error: float = 0.0
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         phi = finite_array(self.phi, "phi")
         M = finite_array(self.M, "M")
         if phi.size != M.size:
@@ -79,7 +80,7 @@ class MomentCurve:
 
     # ----------------------------------------------------------------- constructors
     @classmethod
-    def _valid(cls, phi: np.ndarray, M: np.ndarray, approx_error: float = 0.0) -> "MomentCurve":
+    def _valid(cls, phi: np.ndarray, M: np.ndarray, approx_error: float = 0.0) -> MomentCurve:
         """A curve on knots already validated (those of another curve): only M is checked."""
         if not np.isfinite(M).all():
             raise InputError("the moments overflow: the sum or difference of the curves is not finite")
@@ -90,27 +91,28 @@ class MomentCurve:
         return curve
 
     @classmethod
-    def points(cls, phi: Sequence[float], M: Sequence[float], *, period: float | None = None) -> "MomentCurve":
+    def points(cls, phi: Sequence[float] | np.ndarray, M: Sequence[float] | np.ndarray, *,
+               period: float | None = None) -> MomentCurve:
         """Piecewise-linear curve through the points (φ_k, M_k).
 
         If ``period`` is given and the points stop short of ``phi[0] + period``, the curve
         is closed by a straight line back to the first value (the curve is periodic).
         """
-        phi = finite_array(phi, "phi")
-        M = finite_array(M, "M")
+        x = finite_array(phi, "phi")
+        y = finite_array(M, "M")
         if period is not None:
             if not period > 0:
                 raise InputError(f"period = {period!r} rad must be positive (2π for one turn, 4π for two)")
-            end = phi[0] + period
-            if phi.size and phi[-1] > end * (1 + 1e-12):
-                raise InputError(f"the points run to {phi[-1]:g} rad, past the period end {end:g} rad")
-            if phi.size and phi[-1] < end:
-                phi = np.append(phi, end)
-                M = np.append(M, M[0])
-        return cls(phi, M)
+            end = x[0] + period
+            if x.size and x[-1] > end * (1 + 1e-12):
+                raise InputError(f"the points run to {x[-1]:g} rad, past the period end {end:g} rad")
+            if x.size and x[-1] < end:
+                x = np.append(x, end)
+                y = np.append(y, y[0])
+        return cls(x, y)
 
     @classmethod
-    def steps(cls, steps: Iterable[Sequence[float]]) -> "MomentCurve":
+    def steps(cls, steps: Iterable[Sequence[float]]) -> MomentCurve:
         """Piecewise-constant curve from ``[(phi_start, phi_end, M), ...]`` (contiguous, in order)."""
         if isinstance(steps, (str, bytes)) or not hasattr(steps, "__iter__"):
             raise InputError(f"steps: give a list of (phi_start, phi_end, M) steps, got {steps!r}")
@@ -120,7 +122,8 @@ class MomentCurve:
             raise InputError(f"steps: each step is (phi_start, phi_end, M), got {steps!r}") from None
         if not rows:
             raise InputError("steps: give at least one (phi_start, phi_end, M) step")
-        phi, M = [], []
+        phi: list[float] = []
+        M: list[float] = []
         for i, row in enumerate(rows):
             if len(row) != 3:
                 raise InputError(f"steps[{i}] = {row!r}: each step is (phi_start, phi_end, M)")
@@ -128,13 +131,14 @@ class MomentCurve:
             if not b > a:
                 raise InputError(f"steps[{i}]: phi_end {b:g} must exceed phi_start {a:g}")
             if i and abs(a - phi[-1]) > 1e-12 * max(1.0, abs(a)):
-                raise InputError(f"steps[{i}] starts at {a:g} rad but the previous step ended at {phi[-1]:g}; steps must be contiguous")
+                raise InputError(f"steps[{i}] starts at {a:g} rad but the previous step ended at {phi[-1]:g}; "
+                                 "steps must be contiguous")
             phi += [a, b]
             M += [m, m]
         return cls(np.array(phi), np.array(M))
 
     @classmethod
-    def constant(cls, M: float, *, period: float = TWO_PI, start: float = 0.0) -> "MomentCurve":
+    def constant(cls, M: float, *, period: float = TWO_PI, start: float = 0.0) -> MomentCurve:
         """A constant moment over one period."""
         M, start = real(M, "M", tiny_ok=True), real(start, "start", tiny_ok=True)
         period = real(period, "period", lo=0.0, lo_open=True)
@@ -149,7 +153,7 @@ class MomentCurve:
         start: float = 0.0,
         tol: float = 1e-9,
         max_points: int = 2**21,
-    ) -> "MomentCurve":
+    ) -> MomentCurve:
         """Sample a callable ``f(phi) -> M`` (vectorised over numpy arrays) into chords.
 
         Intervals are halved until the chord's midpoint is within ``tol`` (relative to the
@@ -196,14 +200,15 @@ class MomentCurve:
         return cls(phi, M, approx_error=err)
 
     @staticmethod
-    def _call(f, phi: np.ndarray) -> np.ndarray:
+    def _call(f: Callable[[NDArray[np.float64]], ArrayLike], phi: NDArray[np.float64]) -> NDArray[np.float64]:
         M = np.asarray(f(phi), dtype=float)
         if M.shape != phi.shape:
             M = np.broadcast_to(M, phi.shape).astype(float)
         bad = ~np.isfinite(M)
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
-            raise InputError(f"the moment function gave {M[i]!r} at phi = {phi[i]:g} rad; it must be finite over the whole period")
+            raise InputError(f"the moment function gave {M[i]!r} at phi = {phi[i]:g} rad; "
+                             "it must be finite over the whole period")
         return M
 
     # ----------------------------------------------------------------- queries
@@ -221,7 +226,7 @@ class MomentCurve:
         """∫ M dφ over the period, J."""
         return float(np.sum(0.5 * (self.M[1:] + self.M[:-1]) * np.diff(self.phi)))
 
-    def integral(self, phi) -> np.ndarray:
+    def integral(self, phi: ArrayLike) -> NDArray[np.float64]:
         """∫ M dφ from the start of the period to each φ (J), exact for the chords.
 
         >>> c = MomentCurve.points([0.0, 2.0], [0.0, 4.0])
@@ -238,9 +243,10 @@ class MomentCurve:
         t = x - p[j]
         with np.errstate(invalid="ignore", divide="ignore"):
             slope = np.where(h > 0, (M[j + 1] - M[j]) / np.where(h > 0, h, 1.0), 0.0)
-        return E[j] + M[j] * t + 0.5 * slope * t * t
+        out: NDArray[np.float64] = E[j] + M[j] * t + 0.5 * slope * t * t
+        return out
 
-    def with_knots(self, phi) -> "MomentCurve":
+    def with_knots(self, phi: ArrayLike) -> MomentCurve:
         """The same curve with extra knots at the given angles (no change to its values)."""
         x = np.unique(np.clip(np.asarray(phi, dtype=float), self.phi[0], self.phi[-1]))
         zero = MomentCurve(np.concatenate(([self.phi[0]], x, [self.phi[-1]])), np.zeros(x.size + 2))
@@ -250,37 +256,38 @@ class MomentCurve:
         """The mean moment over the period, N·m (the constant with the same work)."""
         return self.work() / self.period
 
-    def limits(self, x) -> tuple[np.ndarray, np.ndarray]:
+    def limits(self, x: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Left and right limits M(x−), M(x+) at angles x inside the period (they differ at jumps)."""
-        p, M = self.phi, self.M
-        x = np.asarray(x, dtype=float)
+        p = self.phi
+        xs = np.asarray(x, dtype=float)
         n = p.size
-        j = np.clip(np.searchsorted(p, x, side="right") - 1, 0, n - 2)   # last knot <= x
-        i = np.clip(np.searchsorted(p, x, side="left"), 1, n - 1)        # first knot >= x
-        right = self._interp(j, j + 1, x)
-        left = self._interp(i - 1, i, x)
+        j = np.clip(np.searchsorted(p, xs, side="right") - 1, 0, n - 2)   # last knot <= x
+        i = np.clip(np.searchsorted(p, xs, side="left"), 1, n - 1)        # first knot >= x
+        right = self._interp(j, j + 1, xs)
+        left = self._interp(i - 1, i, xs)
         return left, right
 
-    def _interp(self, a, b, x):
+    def _interp(self, a: NDArray[np.intp], b: NDArray[np.intp], x: NDArray[np.float64]) -> NDArray[np.float64]:
         p, M = self.phi, self.M
         h = p[b] - p[a]
         with np.errstate(invalid="ignore", divide="ignore"):
             t = np.where(h > 0, (x - p[a]) / np.where(h > 0, h, 1.0), 0.0)
-        return M[a] + t * (M[b] - M[a])
+        out: NDArray[np.float64] = M[a] + t * (M[b] - M[a])
+        return out
 
-    def __call__(self, phi):
+    def __call__(self, phi: ArrayLike) -> NDArray[np.float64]:
         """M(φ), right-continuous at jumps; φ is taken modulo the period."""
         x = np.asarray(phi, dtype=float)
         x = self.start + np.mod(x - self.start, self.period)
         return self.limits(x)[1]
 
-    def __add__(self, other: "MomentCurve") -> "MomentCurve":
+    def __add__(self, other: MomentCurve) -> MomentCurve:
         return _combine(self, other, +1.0)
 
-    def __sub__(self, other: "MomentCurve") -> "MomentCurve":
+    def __sub__(self, other: MomentCurve) -> MomentCurve:
         return _combine(self, other, -1.0)
 
-    def __neg__(self) -> "MomentCurve":
+    def __neg__(self) -> MomentCurve:
         return MomentCurve(self.phi, -self.M, self.approx_error)
 
 
@@ -331,6 +338,7 @@ def balance(M_d: MomentCurve | None = None, M_r: MomentCurve | None = None) -> t
     if M_d is None and M_r is None:
         raise InputError("give M_d, M_r or both")
     if M_d is None:
+        assert M_r is not None
         M_d = MomentCurve.constant(M_r.mean(), period=M_r.period, start=M_r.start)
     elif M_r is None:
         M_r = MomentCurve.constant(M_d.mean(), period=M_d.period, start=M_d.start)

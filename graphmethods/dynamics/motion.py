@@ -41,8 +41,9 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -256,7 +257,7 @@ class ReducedModel:
 
     @classmethod
     def from_samples(cls, *, J_e, M_e, phi_T: float = TWO_PI, phi_0: float = 0.0,
-                     interpolation: str = "linear", M_e_interpolation: str | None = None) -> "ReducedModel":
+                     interpolation: str = "linear", M_e_interpolation: str | None = None) -> ReducedModel:
         """A model from values at uniformly spaced positions 0…m (position m = position 0 + φ_T).
 
         Parameters
@@ -674,6 +675,12 @@ def _frozen(a):
 
 class _FromPosition0:
     """Angles of ω_max and ω_min measured from position 0 (needs phi_omega_max/min, phi_0, phi_T)."""
+
+    if TYPE_CHECKING:                   # given by the result classes that take this in
+        phi_omega_max: float
+        phi_omega_min: float
+        phi_0: float
+        phi_T: float
 
     @property
     def phi_omega_max_from_0(self) -> float:

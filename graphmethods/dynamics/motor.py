@@ -41,14 +41,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphmethods.dynamics.motion import (
-    MotionResult,
-    ReducedModel,
-    _check_count,
-    _check_mean,
-    _check_positive,
-    _frozen,
-)
+from graphmethods.dynamics.motion import MotionResult, ReducedModel, _check_count, _check_mean, _check_positive, _frozen
 from graphmethods.errors import InputError, MotionError
 from graphmethods.units import omega_from_n
 
@@ -200,9 +193,10 @@ class InductionMotor:
 
 
 class _Stall(Exception):
-    def __init__(self, k, T):
+    def __init__(self, k: int, T: float) -> None:
         super().__init__(k, T)
         self.k, self.T = k, T
+        self.T_start = math.nan                  # the starting energy, set by the caller that knows it
 
 
 def _one_period(T0, h, J0, Jm, J1, M0, Mm, M1, M_d):
@@ -270,7 +264,8 @@ def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
             s.T_start = T0
             raise
 
-    def describe(stall: _Stall):
+    def describe(stall: _Stall | None) -> str:
+        assert stall is not None                 # no trajectory: a stall was met
         phi = st.x[stall.k]
         return (f"the machine stops: starting position 0 with the kinetic energy {stall.T_start:.6g} J, "
                 f"the energy runs out near φ = "

@@ -22,9 +22,9 @@ exactly, so the exact solver sees the jumps where they are, not between position
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -114,7 +114,7 @@ def resisting_moment(positions, plans, load) -> np.ndarray:
     M |ω_i|/ω₁; zero where the load does not act.
     """
     if load.kind == "diagram":        # signed: negative where a diagram drives
-        return sum(diagram_moment(positions, plans, d) for d in _diagrams(load))
+        return np.asarray(sum(diagram_moment(positions, plans, d) for d in _diagrams(load)))
     if load.kind == "force":
         analogue = np.abs(plans.v_along_guide(load.at)) / plans.omega_1
     else:
@@ -209,7 +209,7 @@ class ForceDiagram:
 
     def value(self, x) -> np.ndarray:
         """F at ``x`` (right-continuous at a jump), 0 outside the diagram, N."""
-        curve = MomentCurve(self.x, self.F)
+        curve = MomentCurve(np.asarray(self.x, dtype=float), np.asarray(self.F, dtype=float))
         x = np.asarray(x, dtype=float)
         inside = (x >= curve.phi[0]) & (x <= curve.phi[-1])
         return np.where(inside, curve.limits(np.clip(x, curve.phi[0], curve.phi[-1]))[1], 0.0)
@@ -219,7 +219,7 @@ class ForceDiagram:
         if self.against != "stroke":
             raise InputError("the work of a diagram against the crank angle depends on the velocities; "
                              "integrate diagram_moment over the positions instead")
-        return H * MomentCurve(self.x, self.F).work()
+        return H * MomentCurve(np.asarray(self.x, dtype=float), np.asarray(self.F, dtype=float)).work()
 
 
 def diagram_moment(positions, plans, diagram: ForceDiagram) -> np.ndarray:
@@ -238,7 +238,7 @@ def diagram_moment(positions, plans, diagram: ForceDiagram) -> np.ndarray:
         F = diagram.value(positions.phi_from_start)
     else:
         if positions.s is None:
-            raise InputError(f"a force diagram against the stroke needs a slider output; this linkage has none")
+            raise InputError("a force diagram against the stroke needs a slider output; this linkage has none")
         on_stroke = positions.working if diagram.stroke == "working" else ~positions.working | positions.extreme
         F = np.where(on_stroke, diagram.value(positions.s / positions.H), 0.0)
     M = F * speed

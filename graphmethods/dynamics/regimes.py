@@ -35,8 +35,8 @@ M_0/k as an exponential with the time constant J/k.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Callable
 
 import numpy as np
 

@@ -29,8 +29,13 @@ from graphmethods.dynamics.flywheel import Flywheel, flywheel
 from graphmethods.dynamics.graphical import FINE_CAP, REFINE, diagram_scales, with_refined_estimate
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.dynamics.motion import FlywheelResult, ReducedModel, exact_flywheel
-from graphmethods.dynamics.reduction import (ReducedInertia, load_switch_angles, load_work, reduced_inertia,
-                                             resisting_moment)
+from graphmethods.dynamics.reduction import (
+    ReducedInertia,
+    load_switch_angles,
+    load_work,
+    reduced_inertia,
+    resisting_moment,
+)
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError, NoFlywheelNeeded
 from graphmethods.units import MAX_POSITIONS, count

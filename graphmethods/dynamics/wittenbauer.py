@@ -43,14 +43,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.dynamics.motion import (
-    TWO_PI,
-    ReducedModel,
-    _balanced_energy,
-    _check_count,
-    _check_positive,
-    _frozen,
-)
+from graphmethods.dynamics.motion import TWO_PI, ReducedModel, _balanced_energy, _check_count, _check_positive, _frozen
 from graphmethods.errors import InputError, NoFlywheelNeeded, UnbalancedCycleError
 from graphmethods.units import DELTA_MAX, MAGNITUDE_MAX
 

@@ -20,8 +20,17 @@ that the plans are checked against. Problem files are read by :func:`read_case`.
 ((13, 2), (13,))
 """
 
-from graphmethods.kinematics.case import (Case, FourBarCase, Inertia, Load, ShaperCase, SliderCrankCase,
-                                          SlottedLeverCase, case_from_dict, read_case)
+from graphmethods.kinematics.case import (
+                                          Case,
+                                          FourBarCase,
+                                          Inertia,
+                                          Load,
+                                          ShaperCase,
+                                          SliderCrankCase,
+                                          SlottedLeverCase,
+                                          case_from_dict,
+                                          read_case,
+)
 from graphmethods.kinematics.four_bar import FourBar
 from graphmethods.kinematics.linkage import Crank, Linkage, Motion, Point, Structure
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism

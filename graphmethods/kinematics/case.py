@@ -40,9 +40,10 @@ from __future__ import annotations
 
 import math
 import pathlib
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, Mapping
+from typing import Any
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.four_bar import FourBar
@@ -378,6 +379,9 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     if not 0.0 < omega * omega < math.inf:
         raise InputError(f"{source}: key 'n_rpm' = {v['n_rpm']:g} rev/min: ω² = (πn/30)² leaves the float range; "
                          f"give the mean speed in rev/min between about 1e-90 and 1e90")
+    mech: Mechanism
+    inertias: tuple[Inertia, ...]
+    cls: type[Case]
     try:
         if kind == "slider_crank":
             mech = SliderCrank(r=v["r"], l=v["l"], e=v["e"], assembly=v["assembly"], sense=sense,

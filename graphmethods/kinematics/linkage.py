@@ -30,9 +30,10 @@ extreme positions found numerically to machine precision (:meth:`Linkage.strokes
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, Iterable, Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -392,7 +393,7 @@ class Linkage:
         for g in reversed(self.groups):
             for p, _ in self._group_sliders(g):
                 return ("point", p)
-            for link, pivot in self._group_rockers(g):
+            for link, _pivot in self._group_rockers(g):
                 return ("link", link)
         return None
 
@@ -447,7 +448,7 @@ class Linkage:
         st = State(phi=phi, labels=labels)
         zero_c = np.zeros(n, dtype=complex)
         for k, c in self.ground.items():
-            st.z[k] = np.full(n, c)          # noqa: one array per fixed joint (it is a point of the result)
+            st.z[k] = np.full(n, c)          # one array per fixed joint (it is a point of the result)
             st.v[k] = zero_c
             st.a[k] = zero_c
         cr = self.crank
@@ -559,7 +560,8 @@ class Linkage:
         return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
                       index=None if labels is None else _ro(labels), omega_1=float(omega_1),
                       epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
-                      theta=ro({k: st.theta[k] for k in st.theta.keys()}), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
+                      theta=ro({k: st.theta[k] for k in st.theta}), omega=ro(st.omega), epsilon=ro(st.epsilon),
+                      relative=ro(st.relative),
                       conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
 
     def _snap(self, st: State, mask: np.ndarray) -> None:
@@ -590,7 +592,7 @@ class Linkage:
             i = int(np.argmin(mg))
             # refine the smallest margin between its neighbours (golden section)
             lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
-            f = lambda x: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
+            f = lambda x, g=g: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
             gr = (math.sqrt(5) - 1) / 2
             for _ in range(80):
                 a = hi - gr * (hi - lo)
@@ -721,6 +723,7 @@ class Linkage:
         """The linkage at the start and the end of the working stroke (cached)."""
         if "ends" not in self._cache:
             st_ = self.strokes()
+            assert st_ is not None, "only an output with a working stroke has ends"
             self._cache["ends"] = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
         return self._cache["ends"]
 

@@ -42,8 +42,9 @@ key                   meaning
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from types import MappingProxyType
-from typing import Any, Mapping
+from typing import Any, NoReturn
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Guide
@@ -70,7 +71,7 @@ class _Reader:
     def __init__(self, source: str):
         self.source = source
 
-    def err(self, key: str, msg: str):
+    def err(self, key: str, msg: str) -> NoReturn:
         raise InputError(f"{self.source}: key {key!r}: {msg}")
 
     def number(self, key: str, raw, check: str = "real") -> float:

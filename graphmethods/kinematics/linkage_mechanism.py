@@ -140,9 +140,9 @@ class LinkageMechanism(Mechanism):
     def _on(self, p) -> str:
         """A point's link written by its joints, first joint = where its distance starts ("AB", "BA")."""
         canon = self._canon[p.link]
-        x, y = self.link_joints.get(canon, (None, None))
-        if x is None:
+        if canon not in self.link_joints:
             return canon
+        x, y = self.link_joints[canon]
         return x + y if p.origin == x else y + x if p.origin == y else canon
 
     def _driving_points(self) -> set:

@@ -19,9 +19,10 @@ coordinates (m) of every named point at every position.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Mapping
+from typing import Any
 
 import numpy as np
 
@@ -189,7 +190,8 @@ def build_positions(mech, phi: np.ndarray, *, m: int | None, phi_start: float, s
         c[:, 0] = x
         c[:, 1] = y
         coords[name] = _ro(c)
-    out = {k: (_ro(np.array(v, dtype=float)) if isinstance(v, np.ndarray) else v) for k, v in (output or {}).items()}
+    out: dict[str, Any] = {k: (_ro(np.array(v, dtype=float)) if isinstance(v, np.ndarray) else v)
+                           for k, v in (output or {}).items()}
     return Positions(
         mechanism=mech, phi=_ro(np.array(phi, dtype=float)), phi_from_start=_ro(np.array(phi_from_start, dtype=float)),
         m=m, index=index, strokes=strokes, extreme=_ro(extreme), working=working,

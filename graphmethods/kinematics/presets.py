@@ -16,7 +16,7 @@ distance in m, angle in rad from the line first joint → second joint.
 from __future__ import annotations
 
 import math
-from typing import Mapping
+from collections.abc import Mapping
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.groups import GROUND, RPR, RRP, RRR, Guide
@@ -32,7 +32,7 @@ def _points(points: Mapping | None, links: Mapping[str, tuple[str, str, str, flo
             raise InputError(f"point {name!r}: give (link, distance_m) or (link, distance_m, angle_rad)")
         key, d = spec[0], spec[1]
         ang = float(spec[2]) if len(spec) == 3 else 0.0
-        for canon, (num, x, y, off) in links.items():
+        for _canon, (num, x, y, off) in links.items():
             if key == x + y:
                 out.append(Point(name, num, x, d, ang - off))
                 break
@@ -90,8 +90,9 @@ def shaper(*, r: float, l_O1O3: float, l_O3B: float, l_BC: float, y_guide: float
     ram = RRP(P="B", C="C", l=l_BC, guide=Guide(GROUND, complex(0.0, y_guide), 0.0), links=("4", "5"),
               branch=assembly)
     lk = Linkage(ground=ground, crank=crank, groups=[g, ram],
-                     points=[Point("B", "3", "O3", l_O3B)] + _points(points, {"O1A": ("1", "O1", "A", 0.0), "O3B": ("3", "O3", "B", 0.0),
-                                             "BC": ("4", "B", "C", 0.0)}),
+                     points=[Point("B", "3", "O3", l_O3B)]
+                     + _points(points, {"O1A": ("1", "O1", "A", 0.0), "O3B": ("3", "O3", "B", 0.0),
+                                        "BC": ("4", "B", "C", 0.0)}),
                      sense=sense, output="C", working_stroke=working_stroke, name="shaper")
     return lk
 

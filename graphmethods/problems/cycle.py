@@ -63,6 +63,8 @@ class CycleProblem:
         if self.work_J is not None:
             return ew.from_work(self.work_J)
         if self.areas_mm2 is not None:
+            if self.mu_M is None:
+                raise InputError(f"{self.id}: areas_mm2 need mu_M (N·m per mm of the moment axis) to become works")
             return ew.from_areas(self.areas_mm2, mu_M=self.mu_M, mu_phi=self.mu_phi)
         if self.M_d is not None or self.M_r is not None:
             return ew.from_moments(self.M_d, self.M_r, boundaries=self.boundaries)

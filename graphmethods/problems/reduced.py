@@ -13,12 +13,12 @@ permissible [δ]. The data are in the style of textbook problems (not taken from
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
 from graphmethods.compat import trapezoid
-
 from graphmethods.dynamics.motion import ReducedModel
 from graphmethods.titles import Title
 from graphmethods.units import omega_from_n
@@ -40,7 +40,7 @@ class ReducedProblem:
     model: ReducedModel
     omega_m: float
     delta: float
-    title: Title | None = None
+    title: Title | str | Mapping[str, str] | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "title", Title.of(self.name if self.title is None else self.title,

@@ -61,4 +61,4 @@ def title_of(problem) -> Title:
     own = Title.of(getattr(problem, "title", None))
     if any(own.translated(lang) for lang in LANGUAGES if lang != "en"):
         return own                          # the file translates its title itself
-    return CASE_TITLES.get((getattr(problem, "kind", None), own.title_in("en")), own)
+    return CASE_TITLES.get((str(getattr(problem, "kind", "")), own.title_in("en")), own)

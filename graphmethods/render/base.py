@@ -16,7 +16,7 @@ from __future__ import annotations
 from typing import Any, Protocol, runtime_checkable
 
 from graphmethods.scene import markup
-from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, Style, XY
+from graphmethods.scene.primitives import XY, Circle, Group, Label, Path, Polygon, Primitive, Style
 from graphmethods.scene.scene import Scene, make_id
 
 
@@ -49,7 +49,7 @@ class Renderer(Protocol):
         """Finish the page and return the backend's result."""
 
 
-def _emit(prim, renderer) -> None:
+def _emit(prim: Primitive, renderer: Renderer) -> None:
     if isinstance(prim, Group):
         renderer.begin_group(prim.name)
         for child in prim.children:
@@ -67,7 +67,7 @@ def _emit(prim, renderer) -> None:
         raise TypeError(f"not a drawing primitive: {prim!r}")
 
 
-def draw(scene: Scene, renderer):
+def draw(scene: Scene, renderer: Renderer) -> Any:
     """Draw ``scene`` with ``renderer`` and return what ``renderer.end()`` returns."""
     renderer.begin(scene.page.width_mm, scene.page.height_mm, title=markup.plain(scene.title),
                    name=make_id(scene.name))

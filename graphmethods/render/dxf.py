@@ -32,17 +32,24 @@ from __future__ import annotations
 
 import io
 import math
+import os
 import pathlib
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Literal
 
 from graphmethods.errors import InputError
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
 from graphmethods.scene.elements import CAP
 from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT, text_width_mm
-from graphmethods.scene.primitives import Label, Style
+from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
+
+if TYPE_CHECKING:                      # ezdxf is imported only when a DXF is written or read
+    from ezdxf.document import Drawing
+    from ezdxf.entities import DXFGraphic
 
 #: DXF release written: AutoCAD 2010 (AC1024), read by AutoCAD, KOMPAS, nanoCAD, LibreCAD, BricsCAD, QCAD
 DXF_VERSION = "R2010"
@@ -95,7 +102,7 @@ def lineweight(width_mm: float) -> int:
     return min(_LINEWEIGHTS, key=lambda v: (abs(v - w), v))
 
 
-def _words_in(ids: tuple[str, ...], words) -> bool:
+def _words_in(ids: tuple[str, ...], words: Iterable[str]) -> bool:
     return any(w in gid for gid in ids for w in words)
 
 
@@ -177,13 +184,13 @@ class DxfRenderer:
     Several renderers (one per page) share a document; each page is placed right of the previous one.
     """
 
-    def __init__(self, doc, offset_x_mm: float = 0.0, *, prefix: str = ""):
+    def __init__(self, doc: Drawing, offset_x_mm: float = 0.0, *, prefix: str = ""):
         self.doc = doc
         self.msp = doc.modelspace()
         self.offset_x = float(offset_x_mm)
         self.prefix = prefix
         self._stack: list[str] = []
-        self._entities: list[list] = []           # entities of each open top-level group
+        self._entities: list[list[DXFGraphic]] = []    # entities of each open top-level group
         self._vector_role: dict[tuple[str, ...], str] = {}
         self.page: _Page | None = None
 
@@ -192,8 +199,8 @@ class DxfRenderer:
         assert self.page is not None
         return (_num(self.offset_x + x), _num(self.page.height - y))
 
-    def _attribs(self, role: str, style: Style | None = None, color: str | None = None) -> dict:
-        attrs: dict = {"layer": LAYERS[role][0]}
+    def _attribs(self, role: str, style: Style | None = None, color: str | None = None) -> dict[str, Any]:
+        attrs: dict[str, Any] = {"layer": LAYERS[role][0]}
         rgb = _rgb(color if color is not None else (style.stroke if style is not None else None))
         if rgb is not None:
             attrs["true_color"] = rgb
@@ -214,7 +221,7 @@ class DxfRenderer:
                                    description="graphmethods dash " + " ".join(f"{d:g}" for d in parts) + " mm")
         return name
 
-    def _keep(self, entity) -> None:
+    def _keep(self, entity: DXFGraphic) -> None:
         if self._entities:
             self._entities[-1].append(entity)
 
@@ -229,15 +236,15 @@ class DxfRenderer:
         return role
 
     # -- Renderer protocol
-    def begin(self, width_mm, height_mm, *, title, name):
+    def begin(self, width_mm: float, height_mm: float, *, title: str, name: str) -> None:
         self.page = _Page(self.offset_x, float(width_mm), float(height_mm), name)
 
-    def begin_group(self, id):
+    def begin_group(self, id: str) -> None:
         self._stack.append(id)
         if len(self._stack) == 1:
             self._entities.append([])
 
-    def end_group(self):
+    def end_group(self) -> None:
         gid = self._stack.pop()
         if not self._stack:
             entities = self._entities.pop()
@@ -247,14 +254,14 @@ class DxfRenderer:
                     group = self.doc.groups.new(name)
                     group.extend(entities)
 
-    def path(self, points, style, closed):
+    def path(self, points: tuple[XY, ...], style: Style, closed: bool) -> None:
         if len(points) < 2 or not style.stroke or style.stroke == "none":
             return
         attrs = self._attribs(self._role("path", style), style)
         pts = [self._xy(x, y) for x, y in points]
         self._keep(self.msp.add_lwpolyline(pts, close=bool(closed), dxfattribs=attrs))
 
-    def polygon(self, points, style):
+    def polygon(self, points: tuple[XY, ...], style: Style) -> None:
         if len(points) < 2:
             return
         role = self._role("polygon", style)
@@ -271,7 +278,7 @@ class DxfRenderer:
             attrs = self._attribs(role, style)
             self._keep(self.msp.add_lwpolyline(pts, close=True, dxfattribs=attrs))
 
-    def circle(self, cx, cy, r, style):
+    def circle(self, cx: float, cy: float, r: float, style: Style) -> None:
         role = self._role("circle", style)
         c = self._xy(cx, cy)
         if style.fill and style.fill != "none" and not _is_white(style.fill):
@@ -282,7 +289,7 @@ class DxfRenderer:
         if style.stroke and style.stroke != "none" and style.width_mm > 0:
             self._keep(self.msp.add_circle(c, _num(r), dxfattribs=self._attribs(role, style)))
 
-    def text(self, label: Label):
+    def text(self, label: Label) -> None:
         from ezdxf.enums import TextEntityAlignment
 
         runs = [(t, s) for t, s in label.runs if t]
@@ -310,11 +317,11 @@ class DxfRenderer:
             self._keep(e)
             x += w
 
-    def end(self):
+    def end(self) -> _Page | None:
         return self.page
 
 
-def _new_document():
+def _new_document() -> Drawing:
     import ezdxf  # the only import of ezdxf in graphmethods
     from ezdxf import units
 
@@ -324,7 +331,7 @@ def _new_document():
     doc.header["$LWDISPLAY"] = 1              # show lineweights
     doc.header["$LTSCALE"] = 1.0
     doc.header["$TEXTSTYLE"] = "GM-SANS"
-    for role, (name, color, description) in LAYERS.items():
+    for _role, (name, color, description) in LAYERS.items():
         layer = doc.layers.add(name, color=color)
         layer.description = description
     for name, (font, family, bold) in TEXT_STYLES.items():
@@ -337,21 +344,21 @@ class _FixedMetadata:
     """While open, ezdxf writes fixed dates, GUIDs and its marker without a time (its option for
     reproducible files); the option is put back as it was on leaving."""
 
-    def __enter__(self):
+    def __enter__(self) -> _FixedMetadata:
         import ezdxf
 
         self.saved = ezdxf.options.write_fixed_meta_data_for_testing
         ezdxf.options.write_fixed_meta_data_for_testing = True
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> Literal[False]:
         import ezdxf
 
         ezdxf.options.write_fixed_meta_data_for_testing = self.saved
         return False
 
 
-def _fixed_write(doc) -> bytes:
+def _fixed_write(doc: Drawing) -> bytes:
     """The document as DXF bytes with fixed dates and GUIDs (ezdxf stamps the time on every write)."""
     with _FixedMetadata():
         for var in ("$TDCREATE", "$TDUCREATE", "$TDUPDATE", "$TDUUPDATE"):
@@ -371,7 +378,7 @@ def _fixed_write(doc) -> bytes:
     return doc.encode(stream.getvalue())
 
 
-def document(scenes):
+def document(scenes: Scene | Iterable[Scene]) -> Drawing:
     """An ezdxf document of ``scenes`` (one or several, laid left to right).
 
     Returns
@@ -402,7 +409,7 @@ def document(scenes):
     return doc
 
 
-def to_bytes(scenes) -> bytes:
+def to_bytes(scenes: Scene | Iterable[Scene]) -> bytes:
     """DXF (R2010, UTF-8) of one scene or several; the same scenes give the same bytes.
 
     Examples
@@ -415,7 +422,8 @@ def to_bytes(scenes) -> bytes:
     return _fixed_write(document(scenes))
 
 
-def save(scenes, path, *, overwrite: bool = False):
+def save(scenes: Scene | Iterable[Scene], path: str | os.PathLike[str], *,
+         overwrite: bool = False) -> pathlib.Path:
     """Write one scene or several as DXF atomically; refuses to replace a file unless ``overwrite``.
 
     Raises
@@ -457,7 +465,7 @@ def _text_centre(x: float, y: float, height: float, text: str, halign: int, vali
     return cx, cy
 
 
-def read_drawing(source) -> CadDrawing:
+def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawing:
     """Read a DXF drawing (a path, or the file's bytes) into a :class:`CadDrawing`.
 
     LINE, LWPOLYLINE and 2D POLYLINE give segments (a segment of changing width, AutoCAD's way of
@@ -491,15 +499,15 @@ def read_drawing(source) -> CadDrawing:
         raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {exc})") from None
     except (DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:   # ezdxf on a cut file
         raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
-    segs: list = []
-    fills: list = []
-    circles: list = []
-    texts: list = []
+    segs: list[tuple[XY, XY]] = []
+    fills: list[tuple[XY, ...]] = []
+    circles: list[tuple[float, float, float]] = []
+    texts: list[CadText] = []
 
-    def xy(v) -> tuple[float, float]:
+    def xy(v: Any) -> tuple[float, float]:           # an ezdxf Vec2/Vec3 or a point tuple
         return (float(v[0]), float(v[1]))
 
-    def visit(entity, depth: int = 0) -> None:
+    def visit(entity: Any, depth: int = 0) -> None:    # any DXF entity (its attributes differ by type)
         t = entity.dxftype()
         if t == "INSERT" and depth < 8:
             for e in entity.virtual_entities():
@@ -582,7 +590,7 @@ def read_drawing(source) -> CadDrawing:
             texts.append(CadText(text, cx, cy, h))
 
     # TEXT entities: (text, x, y, height, left-aligned, last run's height, its x, its text, halign, valign)
-    runs: list = []
+    runs: list[tuple[Any, ...]] = []
     for entity in doc.modelspace():
         visit(entity)
     for text, x, y, h, *_, halign, valign in runs:
@@ -590,7 +598,7 @@ def read_drawing(source) -> CadDrawing:
         texts.append(CadText(text, cx, cy, h))
     f = _to_mm(doc)
     if f != 1.0:                          # a drawing in cm, m or inches: everything in mm
-        def s(p):
+        def s(p: XY) -> XY:
             return (p[0] * f, p[1] * f)
         segs = [(s(a), s(b)) for a, b in segs]
         fills = [tuple(s(p) for p in poly) for poly in fills]
@@ -599,7 +607,7 @@ def read_drawing(source) -> CadDrawing:
     return CadDrawing(tuple(segs), tuple(fills), tuple(circles), tuple(texts), source=name)
 
 
-def _to_mm(doc) -> float:
+def _to_mm(doc: Drawing) -> float:
     """The factor from the drawing's units ($INSUNITS) to mm; 1 when unitless or mm (CAD's default in
     metric drawings)."""
     from ezdxf import units
@@ -616,7 +624,7 @@ def _to_mm(doc) -> float:
 class _OntoRenderer(DxfRenderer):
     """Draws a scene into an existing drawing: every entity on one layer, page mm shifted to drawing mm."""
 
-    def __init__(self, doc, *, layer: str, shift: tuple[float, float]):
+    def __init__(self, doc: Drawing, *, layer: str, shift: tuple[float, float]):
         super().__init__(doc, 0.0, prefix=f"{layer}-")
         self.layer, self.shift = layer, shift
 
@@ -624,13 +632,14 @@ class _OntoRenderer(DxfRenderer):
         assert self.page is not None
         return (_num(x + self.shift[0]), _num(self.page.height - y + self.shift[1]))
 
-    def _attribs(self, role: str, style: Style | None = None, color: str | None = None) -> dict:
+    def _attribs(self, role: str, style: Style | None = None, color: str | None = None) -> dict[str, Any]:
         attrs = super()._attribs(role, style, color)
         attrs["layer"] = self.layer
         return attrs
 
 
-def overlay_onto(source, scene: Scene, *, shift: tuple[float, float] = (0.0, 0.0), layer: str = "CHECK") -> bytes:
+def overlay_onto(source: str | os.PathLike[str], scene: Scene, *, shift: tuple[float, float] = (0.0, 0.0),
+                 layer: str = "CHECK") -> bytes:
     """A DXF drawing (path) with ``scene`` added on the layer ``layer`` (red): page mm (y down) become the
     drawing's mm as ``(x + shift_x, height − y + shift_y)``. The student's entities are kept as they are.
 

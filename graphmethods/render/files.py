@@ -29,7 +29,7 @@ import secrets
 import shutil
 import signal
 import threading
-from typing import Mapping
+from collections.abc import Iterable, Iterator, Mapping
 
 from graphmethods.errors import InputError, OutputError, OutputExistsError
 
@@ -43,15 +43,17 @@ def os_reason(exc: OSError) -> str:
              errno.EISDIR: "a folder is in the way", errno.ENOTDIR: "a file is in the way of a folder",
              errno.EEXIST: "it exists", errno.ENOENT: "a folder on the way does not exist",
              errno.ENAMETOOLONG: "the name is too long"}
-    return words.get(exc.errno, (exc.strerror or str(exc) or type(exc).__name__).lower())
+    if exc.errno in words:
+        return words[exc.errno]
+    return (exc.strerror or str(exc) or type(exc).__name__).lower()
 
 
-def output_error(what: str, path, exc: OSError) -> OutputError:
+def output_error(what: str, path: str | os.PathLike[str], exc: OSError) -> OutputError:
     """One line for an OS error while writing: what, where, why."""
     return OutputError(f"cannot write {what} {path}: {os_reason(exc)}")
 
 
-def check_target(path, *, overwrite: bool = False, what: str = "file") -> pathlib.Path:
+def check_target(path: str | os.PathLike[str], *, overwrite: bool = False, what: str = "file") -> pathlib.Path:
     """Refuse, before any work, a file name that cannot or must not be written.
 
     >>> check_target("")
@@ -61,19 +63,19 @@ def check_target(path, *, overwrite: bool = False, what: str = "file") -> pathli
     """
     if str(path).strip() == "":
         raise InputError(f"the {what} name is empty; give a {what} name")
-    path = pathlib.Path(path)
-    parent = path.parent if str(path.parent) else pathlib.Path(".")
+    target = pathlib.Path(path)
+    parent = target.parent if str(target.parent) else pathlib.Path(".")
     if not parent.is_dir():
-        raise InputError(f"cannot write {path}: directory {parent} does not exist; create it first")
-    if path.is_dir():
-        raise InputError(f"cannot write {path}: it is a directory; give a file name")
-    if path.exists() and not overwrite:
-        raise OutputExistsError(f"{path} exists; pass overwrite=True (or --force) to replace it")
-    return path
+        raise InputError(f"cannot write {target}: directory {parent} does not exist; create it first")
+    if target.is_dir():
+        raise InputError(f"cannot write {target}: it is a directory; give a file name")
+    if target.exists() and not overwrite:
+        raise OutputExistsError(f"{target} exists; pass overwrite=True (or --force) to replace it")
+    return target
 
 
 @contextlib.contextmanager
-def interrupts_held():
+def interrupts_held() -> Iterator[None]:
     """Hold back SIGINT and SIGTERM for the few renames that commit a set (delivered right after)."""
     can = hasattr(signal, "pthread_sigmask") and threading.current_thread() is threading.main_thread()
     if can:
@@ -85,7 +87,7 @@ def interrupts_held():
             signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
-def write_atomic(path, data: bytes, *, overwrite: bool = False) -> pathlib.Path:
+def write_atomic(path: str | os.PathLike[str], data: bytes, *, overwrite: bool = False) -> pathlib.Path:
     """Write ``data`` to ``path`` through a temporary file and a rename.
 
     Readers never see a partial file, an error leaves no file behind, and an
@@ -148,13 +150,14 @@ def _make_folder(folder: pathlib.Path, what: str) -> list[pathlib.Path]:
     return made
 
 
-def _remove_folders(made) -> None:
+def _remove_folders(made: Iterable[pathlib.Path]) -> None:
     for d in reversed(list(made)):
         with contextlib.suppress(OSError):
             d.rmdir()                        # only if still empty
 
 
-def write_set(directory, files: Mapping[str, bytes], *, overwrite: bool = False, stale=(),
+def write_set(directory: str | os.PathLike[str], files: Mapping[str, bytes], *, overwrite: bool = False,
+              stale: Iterable[str] = (),
               what: str = "folder") -> list[pathlib.Path]:
     """Write a set of files (relative path -> bytes) into ``directory`` as a whole.
 
@@ -229,7 +232,8 @@ def write_set(directory, files: Mapping[str, bytes], *, overwrite: bool = False,
     return [out / name for name in files]
 
 
-def _swap_in(staging: pathlib.Path, out: pathlib.Path, names, stale, what: str) -> None:
+def _swap_in(staging: pathlib.Path, out: pathlib.Path, names: Iterable[str], stale: Iterable[str],
+             what: str) -> None:
     """Rename the staged files over ``out``'s, keeping the old ones in ``staging/.old`` until all are in;
     on any error put everything back as it was."""
     backup = staging / ".old"

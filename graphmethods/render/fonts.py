@@ -35,11 +35,15 @@ import io
 import os
 import pathlib
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmethods.errors import MissingFontError
 from graphmethods.scene.markup import has_cjk
+
+if TYPE_CHECKING:
+    from graphmethods.scene.scene import Scene
 
 BASE_FAMILY = "DejaVu Sans"
 
@@ -76,14 +80,14 @@ def _mpl_reads_collections() -> bool:
     return hasattr(font_manager, "FontPath")
 
 
-def _sfnt(path: str, index: int = 0):
+def _sfnt(path: str, index: int = 0) -> Any:         # a fontTools TTFont (fontTools ships no types)
     """The face as a lazily read fontTools font (``index`` selects a face of a collection)."""
     from fontTools.ttLib import TTFont
 
     return TTFont(path, fontNumber=index, lazy=True, recalcTimestamp=False, recalcBBoxes=False)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _faces_in(path: str) -> tuple[tuple[str, int], ...]:
     """(family, weight class) of each face in a font file; () when it cannot be read."""
     from fontTools.ttLib import TTCollection
@@ -105,7 +109,7 @@ def _faces_in(path: str) -> tuple[tuple[str, int], ...]:
         return ()
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _usable(path: str, index: int) -> bool:
     """The face has distinct glyphs for Chinese characters and outlines a PDF can embed (TrueType or CFF)."""
     try:
@@ -124,7 +128,7 @@ def _usable(path: str, index: int) -> bool:
 def _best_face(path: str, hint: int | None = None) -> tuple[str, int] | None:
     """The face of ``path`` to draw Chinese with: the earliest of :data:`CJK_FAMILIES`, regular weight;
     ``hint`` (the face matplotlib chose) breaks ties."""
-    def rank(item):
+    def rank(item: tuple[int, tuple[str, int]]) -> tuple[int, int, bool, int]:
         i, (family, weight) = item
         pos = CJK_FAMILIES.index(family) if family in CJK_FAMILIES else len(CJK_FAMILIES)
         return pos, abs(weight - 400), i != hint, i
@@ -240,7 +244,7 @@ def _register(path: str, index: int) -> CJKFont:
     if index and not _mpl_reads_collections():
         path, index = _extract_face(path, index), 0
 
-    def entries():
+    def entries() -> list[Any]:                        # matplotlib's FontEntry records
         return [e for e in fm.fontManager.ttflist if _same(e.fname, path) and getattr(e, "index", 0) == index]
 
     if not entries():
@@ -310,7 +314,7 @@ def families(text: str) -> list[str]:
     return [BASE_FAMILY]
 
 
-def _flag(enum: str, member: str, old: str):
+def _flag(enum: str, member: str, old: str) -> Any:
     """A FreeType flag by its matplotlib >= 3.10 enum name, or its older module constant."""
     from matplotlib import ft2font
 
@@ -392,7 +396,7 @@ class Face:
             k = self._kerns[key] = int(self._ft.get_kerning(left, right, self._unscaled))
         return k
 
-    @functools.lru_cache(maxsize=None)
+    @functools.cache  # noqa: B019 - one instance per font file (the faces are cached), kept for the run
     def pdf_metrics(self) -> PdfMetrics:
         """The face's name, kind of outlines and descriptor metrics (1/1000 em), read with fontTools."""
         f = _sfnt(self.path, self.index)
@@ -406,7 +410,7 @@ class Face:
                 if hasattr(top, "ROS"):
                     cid_keyed, ros = True, (str(top.ROS[0]), str(top.ROS[1]), int(top.ROS[2]))
             head, hhea = f["head"], f["hhea"]
-            os2 = f["OS/2"] if "OS/2" in f else None
+            os2 = f.get("OS/2", None)
             cap = getattr(os2, "sCapHeight", 0) if os2 is not None else 0
             return PdfMetrics(
                 ps_name=ps_name, outlines="CFF" if "CFF " in f else "TrueType", cid_keyed=cid_keyed, ros=ros,
@@ -428,7 +432,7 @@ class Face:
                 self._cids = []
         return self._cids[gid] if self._cids else gid
 
-    def subset(self, gids) -> bytes:
+    def subset(self, gids: Iterable[int]) -> bytes:
         """The font program with only glyphs ``gids`` (and .notdef): a TrueType font (glyph indices kept) or a
         bare CFF table (CIDs kept), deterministic (no timestamps change); cached per glyph set."""
         return _subset(self.path, self.index, tuple(sorted(set(gids) | {0})))
@@ -441,7 +445,7 @@ def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
     font = _sfnt(path, index)
     cff = "CFF " in font
     keep = {"head", "hhea", "hmtx", "maxp"} | ({"CFF "} if cff else {"glyf", "loca"})
-    dropped = [tag for tag in font.keys() if tag not in keep and tag != "GlyphOrder"]
+    dropped = [tag for tag in font.keys() if tag not in keep and tag != "GlyphOrder"]  # noqa: SIM118 - TTFont has no __iter__
     for tag in dropped:            # before subsetting: fontTools would otherwise read the layout tables
         del font[tag]
     opts = subset.Options()
@@ -459,7 +463,7 @@ def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
     sub.subset(font)
     try:
         if cff:
-            return font["CFF "].compile(font)
+            return bytes(font["CFF "].compile(font))
         buf = io.BytesIO()
         font.save(buf)
         return buf.getvalue()
@@ -467,12 +471,12 @@ def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
         font.close()
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _face(path: str, index: int = 0) -> Face:
     return Face(path, index)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _base_path(bold: bool) -> str:
     from matplotlib.font_manager import FontProperties, findfont
 
@@ -510,7 +514,7 @@ def check_drawable(text: str, bold: bool = False) -> None:
     Traceback (most recent call last):
     ...
     graphmethods.errors.MissingFontError: cannot draw 'त' (U+0924), 'न' (U+0928), ... no glyph for them; change the text or write SVG
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     fs = faces(text, bold=bold)
     missing = sorted({ch for ch in text if all(f.glyph(ch) is None for f in fs)})
     if missing:
@@ -520,7 +524,7 @@ def check_drawable(text: str, bold: bool = False) -> None:
                                f"glyph for {'them' if len(missing) > 1 else 'it'}; change the text or write SVG")
 
 
-def check_scene(scene) -> None:
+def check_scene(scene: Scene) -> None:
     """:func:`check_drawable` for every label of ``scene`` (to refuse before a batch writes any file)."""
     from graphmethods.render.recording import record
 

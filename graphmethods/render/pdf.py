@@ -27,14 +27,18 @@ from __future__ import annotations
 import functools
 import hashlib
 import math
+import os
+import pathlib
 import zlib
+from collections.abc import Iterable
 
 from graphmethods.errors import InputError
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
-from graphmethods.render.fonts import check_drawable, faces
+from graphmethods.render.fonts import Face, check_drawable, faces
 from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT, plain
 from graphmethods.scene.numbers import format_mm as fmt
+from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
 
 PT_PER_MM = 72.0 / 25.4
@@ -63,7 +67,7 @@ class _Font:
     """One face in the document, as one Type 0 font: 2-byte codes (Identity-H) that are the face's glyph codes
     (glyph indices, or CIDs in a CID-keyed CFF font), and the first character each code showed."""
 
-    def __init__(self, face, name: str):
+    def __init__(self, face: Face, name: str):
         self.face, self.name = face, name
         self.used: dict[int, tuple[int, str]] = {}       # code -> (glyph index, the character it shows)
 
@@ -71,12 +75,12 @@ class _Font:
 class _Fonts:
     """The glyphs a document uses, shared by its pages: which font and code draws each."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.fonts: list[_Font] = []
         self._by_face: dict[int, _Font] = {}     # id(face) -> its font
-        self._runs: dict = {}
+        self._runs: dict[tuple[str, bool], tuple[float, tuple[tuple[str, str], ...]]] = {}
 
-    def font(self, face) -> _Font:
+    def font(self, face: Face) -> _Font:
         got = self._by_face.get(id(face))
         if got is None:
             got = self._by_face[id(face)] = _Font(face, f"F{len(self.fonts) + 1}")
@@ -97,13 +101,17 @@ class _Fonts:
         if got is not None:
             return got
         fs = faces(text, bold=bold)
-        width, shows, current, parts, prev = 0.0, [], None, [], None
+        width = 0.0
+        shows: list[tuple[str, str]] = []
+        parts: list[str] = []
+        current: _Font | None = None
+        prev: int | None = None
         for ch in text:
-            got = next(((f, g) for f in fs if (g := f.glyph(ch)) is not None), None)
-            if got is None:
+            hit = next(((f, g) for f in fs if (g := f.glyph(ch)) is not None), None)
+            if hit is None:
                 check_drawable(text, bold)          # raises, naming the characters no face has
                 raise AssertionError(f"no glyph for {ch!r}")
-            face, gid = got
+            face, gid = hit
             font = self.font(face)
             code = face.code(gid)
             font.used.setdefault(code, (gid, ch))
@@ -135,16 +143,16 @@ class PdfRenderer:
         self.fonts = fonts
         self.ops: list[str] = []
 
-    def begin(self, width_mm, height_mm, *, title, name):
+    def begin(self, width_mm: float, height_mm: float, *, title: str, name: str) -> None:
         self.size_mm = (float(width_mm), float(height_mm))
         h_pt = f"{height_mm * PT_PER_MM:.4f}"
         self.ops = [f"{PT_PER_MM:.6f} 0 0 {-PT_PER_MM:.6f} 0 {h_pt} cm 0 J 1 j"]
-        self._state = {}
+        self._state: dict[str, str] = {}
 
-    def begin_group(self, id):
+    def begin_group(self, id: str) -> None:
         pass
 
-    def end_group(self):
+    def end_group(self) -> None:
         pass
 
     def _set(self, op: str, value: str) -> None:
@@ -152,7 +160,7 @@ class PdfRenderer:
             self._state[op] = value
             self.ops.append(f"{value} {op}")
 
-    def _stroke_style(self, style) -> bool:
+    def _stroke_style(self, style: Style) -> bool:
         if not style.stroke or style.stroke == "none" or style.width_mm <= 0:
             return False
         self._set("RG", _rgb(style.stroke))
@@ -160,46 +168,46 @@ class PdfRenderer:
         self._set("d", f"[{' '.join(fmt(d) for d in style.dash or ())}] 0")
         return True
 
-    def _fill_style(self, style) -> bool:
+    def _fill_style(self, style: Style) -> bool:
         if not style.fill or style.fill == "none":
             return False
         self._set("rg", _rgb(style.fill))
         return True
 
     @staticmethod
-    def _outline(points, closed: bool) -> str:
+    def _outline(points: tuple[XY, ...], closed: bool) -> str:
         (x0, y0), *rest = points
         ops = [f"{fmt(x0)} {fmt(y0)} m"] + [f"{fmt(x)} {fmt(y)} l" for x, y in rest]
         if closed:
             ops.append("h")
         return " ".join(ops)
 
-    def _paint(self, outline: str, style, closed: bool) -> None:
+    def _paint(self, outline: str, style: Style, closed: bool) -> None:
         fill = closed and self._fill_style(style)
         stroke = self._stroke_style(style)
         if fill or stroke:
             self.ops.append(f"{outline} {'B' if fill and stroke else 'f' if fill else 'S'}")
 
-    def path(self, points, style, closed):
+    def path(self, points: tuple[XY, ...], style: Style, closed: bool) -> None:
         if len(points) >= 2:
             self._paint(self._outline(points, closed), style, closed=False)
 
-    def polygon(self, points, style):
+    def polygon(self, points: tuple[XY, ...], style: Style) -> None:
         if len(points) >= 2:
             self._paint(self._outline(points, True), style, closed=True)
 
-    def circle(self, cx, cy, r, style):
+    def circle(self, cx: float, cy: float, r: float, style: Style) -> None:
         k = _KAPPA * r
         quarter = ((cx + r, cy), (cx + r, cy + k), (cx + k, cy + r), (cx, cy + r))
         ops = [f"{fmt(cx + r)} {fmt(cy)} m"]
         for turn in range(4):                 # four quarter arcs, each the previous one turned 90°
-            pts = quarter[1:]
+            pts: tuple[tuple[float, float], ...] = quarter[1:]
             for _ in range(turn):
                 pts = tuple((cx - (y - cy), cy + (x - cx)) for x, y in pts)
             ops.append(" ".join(f"{fmt(x)} {fmt(y)}" for x, y in pts) + " c")
         self._paint(" ".join(ops) + " h", style, closed=True)
 
-    def text(self, label):
+    def text(self, label: Label) -> None:
         laid = []
         for chunk, shift in label.runs:
             size = label.size_mm * (1.0 if shift == 0 else SCRIPT_SCALE)
@@ -217,14 +225,14 @@ class PdfRenderer:
         parts.append("ET")
         self.ops.append(" ".join(parts))
 
-    def end(self):
+    def end(self) -> tuple[tuple[float, float], bytes]:
         return self.size_mm, "\n".join(self.ops).encode("ascii")
 
 
 class _Writer:
     """Numbered objects and the cross-reference table of one PDF file."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.bodies: list[bytes | None] = []
 
     def reserve(self) -> int:
@@ -286,7 +294,7 @@ def _num(x: float) -> str:
     return "0" if s in ("-0", "") else s
 
 
-def subset_tag(ps_name: str, codes) -> str:
+def subset_tag(ps_name: str, codes: Iterable[int]) -> str:
     """Six capital letters naming a font subset, from a hash of the font's name and the codes it keeps (the
     same glyphs give the same tag, so the same document gives the same bytes).
 
@@ -334,7 +342,7 @@ def _type0(w: _Writer, font: _Font) -> int:
                  f"/DescendantFonts [{cid} 0 R] /ToUnicode {unicode_map} 0 R >>")
 
 
-def to_bytes(scenes) -> bytes:
+def to_bytes(scenes: Scene | Iterable[Scene]) -> bytes:
     """PDF with one page per scene, in order (a single scene is allowed); the same scenes give the same bytes.
 
     ``scenes`` may be any iterable (it is read once, page by page, so a caller can report progress).
@@ -368,7 +376,7 @@ def to_bytes(scenes) -> bytes:
     return w.finish(catalog, info)
 
 
-def save(scenes, path, *, overwrite: bool = False):
+def save(scenes: Scene | Iterable[Scene], path: str | os.PathLike[str], *, overwrite: bool = False) -> pathlib.Path:
     """Write one scene or several (one page each) as PDF atomically; refuses to replace a file unless
     ``overwrite``."""
     return write_atomic(path, to_bytes(scenes), overwrite=overwrite)

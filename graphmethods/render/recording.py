@@ -14,7 +14,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from graphmethods.errors import InputError
-from graphmethods.scene.primitives import Label, Style
+from graphmethods.scene.primitives import XY, Label, Style
+from graphmethods.scene.scene import Scene
 
 
 @dataclass(frozen=True)
@@ -30,38 +31,38 @@ class Call:
 class RecordingRenderer:
     """Records every call; :meth:`in_group` and friends query what was drawn."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.calls: list[Call] = []
         self._stack: list[str] = []
         self.width_mm = self.height_mm = 0.0
         self.title = self.name = ""
 
     # -- Renderer protocol
-    def begin(self, width_mm, height_mm, *, title, name):
+    def begin(self, width_mm: float, height_mm: float, *, title: str, name: str) -> None:
         self.width_mm, self.height_mm, self.title, self.name = width_mm, height_mm, title, name
         self.calls.append(Call("begin", (), (width_mm, height_mm, title, name)))
 
-    def begin_group(self, id):
+    def begin_group(self, id: str) -> None:
         self.calls.append(Call("begin_group", tuple(self._stack), id))
         self._stack.append(id)
 
-    def end_group(self):
+    def end_group(self) -> None:
         self._stack.pop()
         self.calls.append(Call("end_group", tuple(self._stack)))
 
-    def path(self, points, style, closed):
+    def path(self, points: tuple[XY, ...], style: Style, closed: bool) -> None:
         self.calls.append(Call("path", tuple(self._stack), (tuple(points), closed), style))
 
-    def polygon(self, points, style):
+    def polygon(self, points: tuple[XY, ...], style: Style) -> None:
         self.calls.append(Call("polygon", tuple(self._stack), tuple(points), style))
 
-    def circle(self, cx, cy, r, style):
+    def circle(self, cx: float, cy: float, r: float, style: Style) -> None:
         self.calls.append(Call("circle", tuple(self._stack), (cx, cy, r), style))
 
-    def text(self, label: Label):
+    def text(self, label: Label) -> None:
         self.calls.append(Call("text", tuple(self._stack), label))
 
-    def end(self):
+    def end(self) -> RecordingRenderer:
         self.calls.append(Call("end", ()))
         return self
 
@@ -93,8 +94,10 @@ class RecordingRenderer:
         return math.dist(start, tip)
 
 
-def record(scene) -> RecordingRenderer:
+def record(scene: Scene) -> RecordingRenderer:
     """Draw ``scene`` into a :class:`RecordingRenderer` and return it."""
     from graphmethods.render.base import draw
 
-    return draw(scene, RecordingRenderer())
+    rec = RecordingRenderer()
+    draw(scene, rec)
+    return rec

@@ -30,8 +30,10 @@ from __future__ import annotations
 
 import html as _html
 import json
+import os
 import pathlib
 import xml.etree.ElementTree as ET
+from collections.abc import Iterable
 
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg as _svg
@@ -52,7 +54,7 @@ WORDS = {
 }
 
 
-def _check(bu) -> BuildUp:
+def _check(bu: object) -> BuildUp:
     if not isinstance(bu, BuildUp):
         raise InputError(f"expected the steps of a construction (graphmethods.sheets.steps), got {type(bu).__name__}")
     return bu
@@ -92,7 +94,7 @@ def _fragment(scene: Scene, prefix: str) -> list[ET.Element]:
     return out
 
 
-def _layers(bu: BuildUp, *, captions: bool):
+def _layers(bu: BuildUp, *, captions: bool) -> list[tuple[str, str, int, list[ET.Element]]]:
     """The base (page frame and title block) and, per step, the grey and the coloured layer:
     a list of (id, kind, step, children)."""
     fig = bu.figure
@@ -118,7 +120,8 @@ def _root(bu: BuildUp, *, height_mm: float | None = None) -> ET.Element:
     return root
 
 
-def _group(parent, lid: str, kind: str, step: int, children, visible: bool) -> ET.Element:
+def _group(parent: ET.Element, lid: str, kind: str, step: int, children: Iterable[ET.Element],
+           visible: bool) -> ET.Element:
     g = ET.SubElement(parent, f"{{{SVG_NS}}}g", {"id": lid})
     if kind != "base":
         g.set("class", kind)
@@ -326,7 +329,7 @@ def html_page(bu: BuildUp) -> str:
 
 # ----------------------------------------------------------------------------- files
 
-def outputs(bu: BuildUp, fmt_: str, path, *, seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
+def outputs(bu: BuildUp, fmt_: str, path: str | os.PathLike[str], *, seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
     """The files a format writes, with their bytes: one file, or for ``svg`` one frame per step named
     ``STEM-01.svg``, ``STEM-02.svg``, … beside ``path``; ``seconds`` per step of an animated SVG."""
     bu = _check(bu)
@@ -345,7 +348,8 @@ def outputs(bu: BuildUp, fmt_: str, path, *, seconds: float = 3.0) -> list[tuple
     raise InputError(f"format {fmt_!r}: use one of {', '.join(FORMATS)}")
 
 
-def save(bu: BuildUp, path, fmt_: str, *, overwrite: bool = False, seconds: float = 3.0) -> list[pathlib.Path]:
+def save(bu: BuildUp, path: str | os.PathLike[str], fmt_: str, *, overwrite: bool = False,
+         seconds: float = 3.0) -> list[pathlib.Path]:
     """Write the construction as ``fmt_`` (pdf, svg frames, html, animated-svg) to ``path``.
 
     Everything is built before the first file is written, an existing file is kept unless

@@ -15,13 +15,18 @@ True
 
 from __future__ import annotations
 
+import os
+import pathlib
 import re
 import xml.etree.ElementTree as ET
+from typing import Any
 
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
-from graphmethods.scene.numbers import format_mm as fmt
 from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
+from graphmethods.scene.numbers import format_mm as fmt
+from graphmethods.scene.primitives import XY, Label, Style
+from graphmethods.scene.scene import Scene
 
 #: font list: DejaVu Sans (Greek, Cyrillic), then common CJK fonts for Chinese text
 FONT_FAMILY = ("'DejaVu Sans', 'Liberation Sans', Arial, 'Noto Sans CJK SC', 'Source Han Sans SC', "
@@ -39,7 +44,7 @@ def clean_text(text: str) -> str:
     return _NOT_XML.sub("\ufffd", text)
 
 
-def indent(elem, level: int = 0) -> None:
+def indent(elem: ET.Element, level: int = 0) -> None:
     """Indent an SVG tree for readable files and diffs, never inside ``<text>`` (whitespace there would
     show); tags with or without the SVG namespace."""
     if elem.tag.rsplit("}", 1)[-1] in ("text", "title") or len(elem) == 0:
@@ -55,14 +60,15 @@ def indent(elem, level: int = 0) -> None:
 class SvgRenderer:
     """A :class:`~graphmethods.render.base.Renderer` that builds an SVG document with svgwrite."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         import svgwrite  # the only import of svgwrite in graphmethods
 
-        self._svgwrite = svgwrite
-        self.dwg = None
-        self._stack = []
+        # svgwrite ships no type information: its drawing and elements are Any here
+        self._svgwrite: Any = svgwrite
+        self.dwg: Any = None
+        self._stack: list[Any] = []
 
-    def begin(self, width_mm, height_mm, *, title, name):
+    def begin(self, width_mm: float, height_mm: float, *, title: str, name: str) -> None:
         W, H = fmt(width_mm), fmt(height_mm)
         self.dwg = self._svgwrite.Drawing(size=(f"{W}mm", f"{H}mm"), viewBox=f"0 0 {W} {H}", profile="full",
                                           debug=False)
@@ -74,18 +80,18 @@ class SvgRenderer:
         self.dwg.add(root)
         self._stack = [root]
 
-    def _add(self, elem):
+    def _add(self, elem: Any) -> Any:
         self._stack[-1].add(elem)
         return elem
 
-    def begin_group(self, id):
+    def begin_group(self, id: str) -> None:
         self._stack.append(self._add(self.dwg.g(id=id)))
 
-    def end_group(self):
+    def end_group(self) -> None:
         self._stack.pop()
 
     @staticmethod
-    def _stroke(elem, style, filled: bool):
+    def _stroke(elem: Any, style: Style, filled: bool) -> Any:
         elem["fill"] = style.fill if (filled and style.fill) else "none"
         if style.stroke and style.width_mm > 0:
             elem["stroke"] = style.stroke
@@ -94,21 +100,21 @@ class SvgRenderer:
                 elem["stroke-dasharray"] = " ".join(fmt(d) for d in style.dash)
         return elem
 
-    def path(self, points, style, closed):
+    def path(self, points: tuple[XY, ...], style: Style, closed: bool) -> None:
         pts = [(fmt(x), fmt(y)) for x, y in points]
         elem = self.dwg.polygon(pts) if closed else self.dwg.polyline(pts)
         self._add(self._stroke(elem, style, filled=False))
 
-    def polygon(self, points, style):
+    def polygon(self, points: tuple[XY, ...], style: Style) -> None:
         pts = [(fmt(x), fmt(y)) for x, y in points]
         self._add(self._stroke(self.dwg.polygon(pts), style, filled=True))
 
-    def circle(self, cx, cy, r, style):
+    def circle(self, cx: float, cy: float, r: float, style: Style) -> None:
         elem = self.dwg.circle()
         elem["cx"], elem["cy"], elem["r"] = fmt(cx), fmt(cy), fmt(r)
         self._add(self._stroke(elem, style, filled=True))
 
-    def text(self, label):
+    def text(self, label: Label) -> None:
         size = label.size_mm
         elem = self.dwg.text("")
         elem["x"], elem["y"], elem["font-size"] = fmt(label.x), fmt(label.y), fmt(size)
@@ -141,17 +147,18 @@ class SvgRenderer:
         return '<?xml version="1.0" encoding="utf-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
 
 
-def to_string(scene) -> str:
+def to_string(scene: Scene) -> str:
     """The SVG document of ``scene`` (str); byte-identical for the same scene in any process."""
-    return draw(scene, SvgRenderer())
+    text: str = draw(scene, SvgRenderer())
+    return text
 
 
-def to_bytes(scene) -> bytes:
+def to_bytes(scene: Scene) -> bytes:
     """The SVG document of ``scene`` encoded as UTF-8."""
     return to_string(scene).encode("utf-8")
 
 
-def save(scene, path, *, overwrite: bool = False):
+def save(scene: Scene, path: str | os.PathLike[str], *, overwrite: bool = False) -> pathlib.Path:
     """Write ``scene`` as SVG to ``path`` atomically; refuses to replace a file unless ``overwrite``.
 
     Raises

@@ -21,11 +21,27 @@ Importing this package loads numpy only (shapely is imported when a region is ha
 
 from graphmethods.scene import markup
 from graphmethods.scene.elements import (
-    Axis, Curve, Dimension, Element, Frame, Group, Line, Point, Polyline, Region, ScaleCaptions, SignMark, Table,
-    Text, Vector, bbox, label_bbox, nice_ticks, pi_ticks,
+    Axis,
+    Curve,
+    Dimension,
+    Element,
+    Frame,
+    Group,
+    Line,
+    Point,
+    Polyline,
+    Region,
+    ScaleCaptions,
+    SignMark,
+    Table,
+    Text,
+    Vector,
+    bbox,
+    label_bbox,
+    nice_ticks,
+    pi_ticks,
 )
-from graphmethods.scene.notation import NOTATIONS, Notation, in_language
-from graphmethods.scene.notation import get as notation
+from graphmethods.scene.notation import NOTATIONS, Notation, get as notation, in_language
 from graphmethods.scene.numbers import format_mm, format_value
 from graphmethods.scene.page import PAPER, Page, TitleBlock
 from graphmethods.scene.primitives import Style

@@ -23,24 +23,43 @@ a vector of length value/μ, :class:`Axis` ticks values.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
 from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import (
-    AXIS, MAIN, THIN, VECTOR, XY, Circle, Label, Path, Polygon, Style, walk,
+    AXIS,
+    MAIN,
+    THIN,
+    VECTOR,
+    XY,
+    Circle,
+    Group as PGroup,
+    Label,
+    Path,
+    Polygon,
+    Primitive,
+    Style,
+    walk,
 )
-from graphmethods.scene.primitives import Group as PGroup
 from graphmethods.scene.scale import Scale
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
+
+    from graphmethods.scene.notation import Notation
 
 #: vertical metrics of the default font, in em: ascent above the baseline, descent below, cap height
 ASCENT, DESCENT, CAP = 0.76, 0.24, 0.73
 
 
-def _pt(p) -> XY:
+def _pt(p: Sequence[float] | NDArray[np.float64]) -> XY:
     try:
         x, y = p
         x, y = float(x), float(y)
@@ -51,7 +70,7 @@ def _pt(p) -> XY:
     return (x, y)
 
 
-def _pts(points) -> tuple[XY, ...]:
+def _pts(points: ArrayLike) -> tuple[XY, ...]:
     arr = np.asarray(points, dtype=float)
     if arr.ndim != 2 or arr.shape[1] != 2:
         raise InputError(f"expected a list of (x_mm, y_mm) points, got shape {arr.shape}")
@@ -71,19 +90,27 @@ def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
 
-def bbox(prims) -> tuple[float, float, float, float] | None:
+def bbox(prims: Iterable[Primitive]) -> tuple[float, float, float, float] | None:
     """Box ``(x0, y0, x1, y1)`` in mm around primitives (labels estimated); None when empty."""
     xs0, ys0, xs1, ys1 = [], [], [], []
     for p in walk(prims):
         if isinstance(p, (Path, Polygon)) and p.points:
             a = np.asarray(p.points)
-            xs0.append(a[:, 0].min()); xs1.append(a[:, 0].max())
-            ys0.append(a[:, 1].min()); ys1.append(a[:, 1].max())
+            xs0.append(a[:, 0].min())
+            xs1.append(a[:, 0].max())
+            ys0.append(a[:, 1].min())
+            ys1.append(a[:, 1].max())
         elif isinstance(p, Circle):
-            xs0.append(p.cx - p.r); xs1.append(p.cx + p.r); ys0.append(p.cy - p.r); ys1.append(p.cy + p.r)
+            xs0.append(p.cx - p.r)
+            xs1.append(p.cx + p.r)
+            ys0.append(p.cy - p.r)
+            ys1.append(p.cy + p.r)
         elif isinstance(p, Label):
             b = label_bbox(p)
-            xs0.append(b[0]); ys0.append(b[1]); xs1.append(b[2]); ys1.append(b[3])
+            xs0.append(b[0])
+            ys0.append(b[1])
+            xs1.append(b[2])
+            ys1.append(b[3])
     if not xs0:
         return None
     return (float(min(xs0)), float(min(ys0)), float(max(xs1)), float(max(ys1)))
@@ -94,21 +121,21 @@ class Element:
 
     name: str
 
-    def primitives(self) -> tuple:  # pragma: no cover - every element overrides it
+    def primitives(self) -> tuple[Primitive, ...]:  # pragma: no cover - every element overrides it
         raise NotImplementedError
 
-    def draw(self) -> Group:
+    def draw(self) -> PGroup:
         """The element as one named :class:`~graphmethods.scene.primitives.Group`."""
         return PGroup(self.name, tuple(self.primitives()))
 
-    def bbox(self):
+    def bbox(self) -> tuple[float, float, float, float] | None:
         """Estimated box ``(x0, y0, x1, y1)`` in mm the element covers."""
         return bbox(self.primitives())
 
 
 # --------------------------------------------------------------------------- text
 
-def make_label(at, text: str, *, size_mm: float = 3.5, anchor: str = "start", valign: str = "baseline",
+def make_label(at: Sequence[float], text: str, *, size_mm: float = 3.5, anchor: str = "start", valign: str = "baseline",
                bold: bool = False, markup_: bool = True, color: str = "#000000") -> Label:
     """A :class:`Label` placed by its anchor and vertical alignment (baseline, middle, top, bottom)."""
     if anchor not in ("start", "middle", "end"):
@@ -154,7 +181,7 @@ class Text(Element):
     markup: bool = True
     name: str = "text"
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         return (make_label(self.at, self.text, size_mm=self.size_mm, anchor=self.anchor, valign=self.valign,
                            bold=self.bold, markup_=self.markup),)
 
@@ -178,7 +205,7 @@ class Line(Element):
     def mid(self) -> XY:
         return ((self.start[0] + self.end[0]) / 2, (self.start[1] + self.end[1]) / 2)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         return (Path((_pt(self.start), _pt(self.end)), self.style),)
 
 
@@ -195,7 +222,7 @@ class Polyline(Element):
     closed: bool = False
     name: str = "curve"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "points", _pts(self.points))
         if len(self.points) < 2:
             raise InputError(f"{self.name}: a polyline needs at least two points, got {len(self.points)}")
@@ -208,7 +235,7 @@ class Polyline(Element):
     def end(self) -> XY:
         return self.points[-1]
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         return (Path(self.points, self.style, self.closed),)
 
 
@@ -234,13 +261,13 @@ class Frame:
         """Page point of the values (xv, yv)."""
         return (self.origin[0] + self.x.to_mm(float(xv)), self.origin[1] - self.y.to_mm(float(yv)))
 
-    def pts(self, xs, ys) -> tuple[XY, ...]:
+    def pts(self, xs: ArrayLike, ys: ArrayLike) -> tuple[XY, ...]:
         """Page points of arrays of values (vectorised)."""
         X = self.origin[0] + self.x.to_mm(np.asarray(xs, dtype=float))
         Y = self.origin[1] - self.y.to_mm(np.asarray(ys, dtype=float))
         return tuple(zip(X.tolist(), Y.tolist()))
 
-    def curve(self, xs, ys, *, style: Style = MAIN, name: str = "curve") -> Polyline:
+    def curve(self, xs: ArrayLike, ys: ArrayLike, *, style: Style = MAIN, name: str = "curve") -> Polyline:
         """A :class:`Polyline` through the values."""
         return Polyline(self.pts(xs, ys), style=style, name=name)
 
@@ -280,12 +307,12 @@ class Region(Element):
     outline_style: Style | None = None
     name: str = "region"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "outline", _pts(self.outline))
         if self.hatch_spacing_mm <= 0:
             raise InputError(f"{self.name}: hatch spacing must be positive, got {self.hatch_spacing_mm} mm")
 
-    def shape(self):
+    def shape(self) -> BaseGeometry:
         """The region as a shapely geometry (valid), without the keep-clear boxes."""
         import shapely
         from shapely.geometry import Polygon as SPolygon
@@ -321,7 +348,7 @@ class Region(Element):
         p = base - reach * d
         q = base + reach * d
         lines = shapely.linestrings(np.stack([p, q], axis=1))
-        cut = shapely.intersection(lines, geom)
+        cut = np.asarray(shapely.intersection(lines, geom))     # one geometry per line (an array)
         parts = shapely.get_parts(cut[~shapely.is_empty(cut)])
         out = []
         edge = geom.boundary
@@ -334,8 +361,8 @@ class Region(Element):
             out.append(((float(c[0, 0]), float(c[0, 1])), (float(c[-1, 0]), float(c[-1, 1]))))
         return out
 
-    def primitives(self):
-        prims = []
+    def primitives(self) -> tuple[Primitive, ...]:
+        prims: list[Primitive] = []
         if self.fill:
             prims.append(Polygon(self.outline, Style(stroke=None, width_mm=0.0, fill=self.fill)))
         prims.extend(Path(seg, self.style) for seg in self.hatch_segments())
@@ -358,16 +385,16 @@ class SignMark(Element):
     style: Style = Style(width_mm=0.35)
     name: str = "sign"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         sign = {"+": "+", "-": "-", "−": "-"}.get(self.sign)
         if sign is None:
             raise InputError(f"{self.name}: sign must be '+' or '−', got {self.sign!r}")
         object.__setattr__(self, "sign", sign)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         x, y = _pt(self.at)
         h = self.size_mm / 2
-        prims = [Path(((x - h, y), (x + h, y)), self.style)]
+        prims: list[Primitive] = [Path(((x - h, y), (x + h, y)), self.style)]
         if self.sign == "+":
             prims.append(Path(((x, y - h), (x, y + h)), self.style))
         return tuple(prims)
@@ -406,12 +433,12 @@ class Vector(Element):
     style: Style = VECTOR
     name: str = "vector"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "start", _pt(self.start))
         object.__setattr__(self, "end", _pt(self.end))
 
     @classmethod
-    def of(cls, start, *, value: float, scale: Scale, angle_deg: float = 0.0, **kw) -> "Vector":
+    def of(cls, start: Sequence[float], *, value: float, scale: Scale, angle_deg: float = 0.0, **kw: Any) -> Vector:
         """The vector of a physical ``value`` drawn ``value/μ`` mm long at ``angle_deg``.
 
         The angle is as seen on paper, counterclockwise from the +x direction; a
@@ -434,7 +461,7 @@ class Vector(Element):
     def mid(self) -> XY:
         return ((self.start[0] + self.end[0]) / 2, (self.start[1] + self.end[1]) / 2)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         L = self.length_mm
         if L < 1e-9:
             return (Circle(self.start[0], self.start[1], 0.5, Style(stroke=None, width_mm=0, fill="#000000")),)
@@ -450,7 +477,7 @@ _DIRS = {"n": (0, -1), "ne": (1, -1), "e": (1, 0), "se": (1, 1), "s": (0, 1), "s
          "nw": (-1, -1)}
 
 
-def place_label(at, text: str, direction: str, *, gap_mm: float = 1.2, size_mm: float = 3.5,
+def place_label(at: Sequence[float], text: str, direction: str, *, gap_mm: float = 1.2, size_mm: float = 3.5,
                 bold: bool = False, markup_: bool = True) -> Label:
     """A label beside the point ``at`` in compass ``direction`` (n, ne, e, ... nw), ``gap_mm`` away."""
     if direction not in _DIRS:
@@ -482,10 +509,10 @@ class Point(Element):
     gap_mm: float = 1.0
     name: str = "point"
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         x, y = _pt(self.at)
         style = Style(stroke=None, width_mm=0.0, fill="#000000") if self.filled else THIN.with_(fill="#ffffff")
-        prims = [Circle(x, y, self.radius_mm, style)]
+        prims: list[Primitive] = [Circle(x, y, self.radius_mm, style)]
         if self.label:
             prims.append(place_label((x, y), self.label, self.label_dir, gap_mm=self.gap_mm + self.radius_mm,
                                      size_mm=self.size_mm))
@@ -516,12 +543,13 @@ class Dimension(Element):
     style: Style = THIN
     name: str = "dimension"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "start", _pt(self.start))
         object.__setattr__(self, "end", _pt(self.end))
 
-    def _frame(self):
-        p1, p2 = np.asarray(self.start), np.asarray(self.end)
+    def _frame(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64],
+                              NDArray[np.float64]]:
+        p1, p2 = np.asarray(self.start, dtype=float), np.asarray(self.end, dtype=float)
         L = float(np.hypot(*(p2 - p1)))
         u = (p2 - p1) / L if L > 0 else np.array([1.0, 0.0])
         n = np.array([-u[1], u[0]])
@@ -546,10 +574,10 @@ class Dimension(Element):
         a, b = self.line_start, self.line_end
         return ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         p1, p2, L, u, n = self._frame()
         q1, q2 = p1 + self.offset_mm * n, p2 + self.offset_mm * n
-        prims = []
+        prims: list[Primitive] = []
         if abs(self.offset_mm) > 1e-9:
             sgn = 1.0 if self.offset_mm > 0 else -1.0
             for p, q in ((p1, q1), (p2, q2)):
@@ -586,7 +614,7 @@ def nice_ticks(v_min: float, v_max: float, scale: Scale, *, min_gap_mm: float = 
     """
     need = scale.to_value(min_gap_mm)
     k = math.floor(math.log10(need))
-    step = None
+    step: float | None = None
     for e in (k, k + 1):
         for m in (1.0, 2.0, 2.5, 5.0):
             c = float(f"{m!r}e{e}")
@@ -595,6 +623,7 @@ def nice_ticks(v_min: float, v_max: float, scale: Scale, *, min_gap_mm: float = 
                 break
         if step is not None:
             break
+    assert step is not None                    # 5 × 10^(k+1) > 10^k ≥ need
     i0, i1 = math.ceil(v_min / step - 1e-9), math.floor(v_max / step + 1e-9)
     return tuple(float(round(i * step, 12)) for i in range(i0, i1 + 1))
 
@@ -610,7 +639,7 @@ def pi_ticks(period: float, scale: Scale, *, min_gap_mm: float = 8.0) -> tuple[t
     for den in (12, 6, 4, 2, 1):
         if scale.to_mm(math.pi / den) >= min_gap_mm:
             break
-    n = int(math.floor(period / (math.pi / den) + 1e-9))
+    n = math.floor(period / (math.pi / den) + 1e-9)
     values, labels = [], []
     for i in range(n + 1):
         f = Fraction(i, den)
@@ -672,7 +701,7 @@ class Axis(Element):
     labels_side: str = ""
     name: str = "axis"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         allowed = {"x": ("", "below", "above"), "y": ("", "left", "right")}.get(self.direction, ())
         if self.labels_side not in allowed:
             raise InputError(f"{self.name}: labels_side {self.labels_side!r} does not suit a {self.direction} axis; "
@@ -704,9 +733,9 @@ class Axis(Element):
 
     end = tip
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         d = np.array([1.0, 0.0]) if self.direction == "x" else np.array([0.0, -1.0])
-        prims = [Path((self.start, self.tip), AXIS), _arrowhead(self.tip, d, 3.0, 1.1)]
+        prims: list[Primitive] = [Path((self.start, self.tip), AXIS), _arrowhead(self.tip, d, 3.0, 1.1)]
         labels = self.tick_labels
         if labels is None:
             labels = tuple(format_value(v, decimal=self.decimal) for v in self.ticks)
@@ -772,7 +801,7 @@ class Table(Element):
     min_col_mm: float = 8.0
     name: str = "table"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         rows = tuple(tuple(str(c) for c in r) for r in self.rows)
         if not rows:
             raise InputError(f"{self.name}: a table needs at least one row")
@@ -821,11 +850,11 @@ class Table(Element):
         y0 = self.at[1] + i * self.row_height_mm
         return (x0, y0, x0 + widths[j], y0 + self.row_height_mm)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         widths = self.column_widths()
         x0, y0 = self.at
         W, H = sum(widths), self.height_mm
-        prims = [Path(((x0, y0), (x0 + W, y0), (x0 + W, y0 + H), (x0, y0 + H)), AXIS, closed=True)]
+        prims: list[Primitive] = [Path(((x0, y0), (x0 + W, y0), (x0 + W, y0 + H), (x0, y0 + H)), AXIS, closed=True)]
         for i in range(1, len(self.rows)):
             y = y0 + i * self.row_height_mm
             prims.append(Path(((x0, y), (x0 + W, y)), AXIS if i == self.header_rows else THIN))
@@ -859,7 +888,7 @@ class ScaleCaptions(Element):
 
     at: XY
     scales: tuple[Scale, ...]
-    notation: object = None
+    notation: Notation | str | None = None
     size_mm: float = 3.5
     gap_mm: float = 10.0
     anchor: str = "start"
@@ -868,13 +897,13 @@ class ScaleCaptions(Element):
     def captions(self) -> tuple[str, ...]:
         return tuple(s.caption(self.notation) for s in self.scales)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         texts = self.captions()
         widths = [markup.text_width_mm(t, self.size_mm) for t in texts]
         total = sum(widths) + self.gap_mm * max(0, len(texts) - 1)
         x, y = _pt(self.at)
         x -= {"start": 0.0, "middle": total / 2, "end": total}[self.anchor]
-        prims = []
+        prims: list[Primitive] = []
         for t, w in zip(texts, widths):
             prims.append(make_label((x, y), t, size_mm=self.size_mm, anchor="start"))
             x += w + self.gap_mm
@@ -888,7 +917,7 @@ class Group(Element):
     elements: tuple[Element, ...] = ()
     name: str = "group"
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         return tuple(e.draw() for e in self.elements)
 
 

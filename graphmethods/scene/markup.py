@@ -68,15 +68,15 @@ def parse(text: str) -> tuple[Run, ...]:
     >>> parse("M_d"), parse("10^{-3}"), parse(r"a\\_b")
     ((('M', 0), ('d', -1)), (('10', 0), ('-3', 1)), (('a_b', 0),))
     """
-    runs: list[list] = []
+    runs: list[tuple[str, int]] = []
 
     def add(chunk: str, shift: int) -> None:
         if not chunk:
             return
         if runs and runs[-1][1] == shift:
-            runs[-1][0] += chunk
+            runs[-1] = (runs[-1][0] + chunk, shift)
         else:
-            runs.append([chunk, shift])
+            runs.append((chunk, shift))
 
     i, n = 0, len(text)
     while i < n:
@@ -99,7 +99,7 @@ def parse(text: str) -> tuple[Run, ...]:
         else:
             add(ch, 0)
             i += 1
-    return tuple((t, s) for t, s in runs)
+    return tuple(runs)
 
 
 def literal(text: str) -> str:

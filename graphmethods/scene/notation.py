@@ -17,9 +17,9 @@ changes the whole figure.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Mapping
 
 from graphmethods.errors import InputError
 from graphmethods.scene.numbers import format_value
@@ -152,7 +152,7 @@ def _build(code: str) -> Notation:
 NOTATIONS = MappingProxyType({code: _build(code) for code in _PROFILES})
 
 
-def get(notation=None) -> Notation:
+def get(notation: Notation | str | None = None) -> Notation:
     """The profile for ``"en"``, ``"ru"`` or ``"zh"`` (``None`` means ``"en"``; a Notation passes through).
 
     Raises
@@ -170,7 +170,7 @@ def get(notation=None) -> Notation:
         raise InputError(f"unknown notation {notation!r}; use one of {', '.join(_PROFILES)}") from None
 
 
-def in_language(words: tuple[str, str, str], notation=None, **fill) -> str:
+def in_language(words: tuple[str, str, str], notation: Notation | str | None = None, **fill: object) -> str:
     """The text of an ``(en, ru, zh)`` triple in a notation's language, ``{placeholders}`` filled.
 
     The sheets keep their own vocabulary as tables of such triples; this picks one text for

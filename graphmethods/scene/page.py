@@ -10,11 +10,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
 from graphmethods.scene.elements import Table
-from graphmethods.scene.primitives import Path, Style
+from graphmethods.scene.primitives import Path, Primitive, Style
 
 #: ISO 216 sizes in mm, (short side, long side); SLIDE is a 16:9 presentation slide (13.333 × 7.5 in)
 PAPER = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0), "A1": (594.0, 841.0),
@@ -80,7 +81,7 @@ class Page:
     frame: bool = False
     title_block: TitleBlock | None = None
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         size = str(self.size).upper()
         if size not in PAPER:
             raise InputError(f"page size {self.size!r}: use one of {', '.join(PAPER)}")
@@ -105,7 +106,7 @@ class Page:
     def height_mm(self) -> float:
         return self._dims()[1]
 
-    def with_(self, **changes) -> "Page":
+    def with_(self, **changes: Any) -> Page:
         """A copy with some fields changed."""
         from dataclasses import replace
 
@@ -124,8 +125,8 @@ class Page:
             y1 -= self.title_block.table(x1, y1).height_mm + 2.0
         return (x0 + pad, y0 + pad, x1 - pad, y1 - pad)
 
-    def primitives(self) -> tuple:
-        prims = []
+    def primitives(self) -> tuple[Primitive, ...]:
+        prims: list[Primitive] = []
         x0, y0, x1, y1 = self.inner_box()
         if self.frame:
             prims.append(Path(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), FRAME, closed=True))

@@ -14,8 +14,9 @@ primitives and nothing else: :class:`Path` (open or closed polyline),
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
-from typing import Union
+from typing import Any
 
 XY = tuple[float, float]
 
@@ -47,7 +48,7 @@ class Style:
     dash: tuple[float, ...] | None = None
     fill: str | None = None
 
-    def with_(self, **changes) -> "Style":
+    def with_(self, **changes: Any) -> Style:
         """A copy with some fields changed."""
         from dataclasses import replace
 
@@ -122,13 +123,13 @@ class Group:
     """A named container; ``name`` becomes the group's id in SVG output."""
 
     name: str
-    children: tuple["Primitive", ...]
+    children: tuple[Primitive, ...]
 
 
-Primitive = Union[Path, Polygon, Circle, Label, Group]
+Primitive = Path | Polygon | Circle | Label | Group
 
 
-def walk(prims):
+def walk(prims: Iterable[Primitive]) -> Iterator[Primitive]:
     """Yield every primitive in ``prims`` depth-first, groups included, in drawing order."""
     for p in prims:
         yield p

@@ -16,13 +16,19 @@ fit the paper, and says what it chose.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, overload
 
 import numpy as np
+from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
-from graphmethods.units import CONVENIENT, convenient_at_least
 from graphmethods.scene.numbers import format_value
+from graphmethods.units import CONVENIENT, convenient_at_least
+
+if TYPE_CHECKING:
+    from graphmethods.scene.notation import Notation
 
 #: the convenient mantissas textbooks use; 1.5 and 3 are allowed on request
 SERIES = CONVENIENT
@@ -60,7 +66,7 @@ class Scale:
     alt_per_mm: float = 0.0
     alt_unit: str = ""
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         try:
             value = float(self.per_mm)
         except (TypeError, ValueError):
@@ -70,19 +76,29 @@ class Scale:
                              f"finite number of units per mm")
         object.__setattr__(self, "per_mm", value)
 
-    def to_mm(self, value):
+    @overload
+    def to_mm(self, value: float) -> float: ...
+    @overload
+    def to_mm(self, value: NDArray[np.float64] | Sequence[float]) -> NDArray[np.float64]: ...
+
+    def to_mm(self, value: float | NDArray[np.float64] | Sequence[float]) -> float | NDArray[np.float64]:
         """Paper length in mm of a physical ``value`` (float or array): value / μ."""
         if isinstance(value, (int, float)):
             return float(value) / self.per_mm
         return np.asarray(value, dtype=float) / self.per_mm
 
-    def to_value(self, mm):
+    @overload
+    def to_value(self, mm: float) -> float: ...
+    @overload
+    def to_value(self, mm: NDArray[np.float64] | Sequence[float]) -> NDArray[np.float64]: ...
+
+    def to_value(self, mm: float | NDArray[np.float64] | Sequence[float]) -> float | NDArray[np.float64]:
         """Physical value of a paper length in mm (float or array): mm · μ."""
         if isinstance(mm, (int, float)):
             return float(mm) * self.per_mm
         return np.asarray(mm, dtype=float) * self.per_mm
 
-    def caption(self, notation=None) -> str:
+    def caption(self, notation: Notation | str | None = None) -> str:
         """The caption under a figure, in markup: ``"μ_M = 100 N·m/mm"``.
 
         ``notation`` (a :class:`~graphmethods.scene.notation.Notation` or its code)
@@ -100,7 +116,7 @@ class Scale:
         return text
 
 
-def pick_scale(span_value: float, span_mm: float, *, series=SERIES, allow_15_3: bool = False,
+def pick_scale(span_value: float, span_mm: float, *, series: Iterable[float] = SERIES, allow_15_3: bool = False,
                symbol: str = "μ", unit: str = "") -> Scale:
     """The smallest convenient scale whose drawing of ``span_value`` fits in ``span_mm``.
 
@@ -138,7 +154,7 @@ def pick_scale(span_value: float, span_mm: float, *, series=SERIES, allow_15_3: 
     if not (math.isfinite(span_value) and math.isfinite(span_mm)) or span_mm <= 0:
         raise InputError(f"pick_scale for {symbol}: cannot fit {span_value!r} {unit} into {span_mm!r} mm; "
                          f"the span must be finite and the paper length positive")
-    mantissas = tuple(sorted(set(float(m) for m in series) | (set(SERIES_EXTRA) if allow_15_3 else set())))
+    mantissas = tuple(sorted({float(m) for m in series} | (set(SERIES_EXTRA) if allow_15_3 else set())))
     if not mantissas or any(not (1.0 <= m < 10.0) for m in mantissas):
         raise InputError(f"pick_scale: series {series!r} must hold mantissas in [1, 10)")
     if span_value == 0:

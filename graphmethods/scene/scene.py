@@ -15,12 +15,14 @@ ids made from the element names (never from a global counter).
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene.elements import Axis, Element, ScaleCaptions, bbox
 from graphmethods.scene.page import Page
-from graphmethods.scene.primitives import Group, walk
+from graphmethods.scene.primitives import Group, Primitive, walk
 from graphmethods.scene.scale import Scale
 
 _ID_BAD = re.compile(r"[^A-Za-z0-9_.-]+")
@@ -38,8 +40,8 @@ def make_id(name: str) -> str:
     return s
 
 
-def _unique(prims, used: set) -> tuple:
-    out = []
+def _unique(prims: Iterable[Primitive], used: set[str]) -> tuple[Primitive, ...]:
+    out: list[Primitive] = []
     for p in prims:
         if isinstance(p, Group):
             base = make_id(p.name)
@@ -83,18 +85,18 @@ class Scene:
     extra_scales: tuple[Scale, ...] = ()
     notes: tuple[str, ...] = ()
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         els = tuple(self.elements)
         for e in els:
             if not isinstance(e, Element):
                 raise InputError(f"scene {self.name}: {e!r} is not a figure element")
         object.__setattr__(self, "elements", els)
 
-    def add(self, *elements: Element) -> "Scene":
+    def add(self, *elements: Element) -> Scene:
         """A new scene with ``elements`` appended."""
         return replace(self, elements=self.elements + tuple(elements))
 
-    def with_(self, **changes) -> "Scene":
+    def with_(self, **changes: Any) -> Scene:
         """A copy with some fields changed."""
         return replace(self, **changes)
 
@@ -107,9 +109,9 @@ class Scene:
 
     def axes(self) -> tuple[Axis, ...]:
         """The axes drawn (top-level elements and inside groups)."""
-        out = []
+        out: list[Axis] = []
 
-        def visit(els):
+        def visit(els: Iterable[Element]) -> None:
             for e in els:
                 if isinstance(e, Axis):
                     out.append(e)
@@ -138,13 +140,13 @@ class Scene:
         element; ids unique."""
         page = self.page.primitives()
         prims = ([Group("page", page)] if page else []) + [e.draw() for e in self.elements]
-        return _unique(prims, set())
+        return tuple(g for g in _unique(prims, set()) if isinstance(g, Group))     # all groups, as given
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         """Every primitive, depth first (groups included)."""
         return tuple(walk(self.groups()))
 
-    def bbox(self):
+    def bbox(self) -> tuple[float, float, float, float] | None:
         """Estimated box (x0, y0, x1, y1) in mm of everything drawn."""
         return bbox(self.groups())
 
@@ -154,4 +156,4 @@ class Scene:
         # name at call time so that the scene model never imports a backend.
         import importlib
 
-        return importlib.import_module("graphmethods.render.svg").to_string(self)
+        return str(importlib.import_module("graphmethods.render.svg").to_string(self))

@@ -23,12 +23,12 @@ function that builds the figure and lists its rules.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Callable, Sequence, Union
 
 from graphmethods.errors import InputError
 from graphmethods.scene.elements import Element, Text
-from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon
+from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, Primitive
 from graphmethods.scene.scene import Scene
 
 #: colour of the step being drawn, and of the steps drawn before it
@@ -39,7 +39,7 @@ NEW_WIDTH_MM = 0.35
 #: elements never tinted: the figure's title stays black on every slide
 UNTINTED = ("title",)
 
-Rule = Union[str, Sequence[str], Callable[[str], bool]]
+Rule = str | Sequence[str] | Callable[[str], bool]
 
 
 @dataclass(frozen=True)
@@ -58,7 +58,7 @@ class Step:
     elements: tuple[int, ...]
 
 
-def _tint_prim(p, colour: str, min_width_mm: float = 0.0):
+def _tint_prim(p: Primitive, colour: str, min_width_mm: float = 0.0) -> Primitive:
     if isinstance(p, Group):
         return Group(p.name, tuple(_tint_prim(c, colour, min_width_mm) for c in p.children))
     if isinstance(p, Label):
@@ -87,10 +87,10 @@ class Tinted(Element):
     min_width_mm: float = 0.0
     name: str = ""
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "name", self.element.name)
 
-    def primitives(self):
+    def primitives(self) -> tuple[Primitive, ...]:
         return tuple(_tint_prim(p, self.colour, self.min_width_mm) for p in self.element.primitives())
 
 
@@ -123,7 +123,7 @@ class BuildUp:
     caption_box: tuple[float, float, float, float]
     caption_mm: float = 5.0
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         n = len(self.figure.elements)
         seen = sorted(i for s in self.steps for i in s.elements)
         if seen != list(range(n)):
@@ -185,7 +185,8 @@ class BuildUp:
                        name=f"{self.figure.name}-step-{k}")
 
 
-def partition(figure: Scene, rules, *, caption_box, caption_mm: float = 5.0, rest: int | None = None) -> BuildUp:
+def partition(figure: Scene, rules: Sequence[tuple[str, Rule]], *, caption_box: tuple[float, float, float, float],
+              caption_mm: float = 5.0, rest: int | None = None) -> BuildUp:
     """Split ``figure`` into steps by rules on its element names.
 
     Parameters
@@ -206,8 +207,8 @@ def partition(figure: Scene, rules, *, caption_box, caption_mm: float = 5.0, res
     InputError
         An element no rule matches (without ``rest``), or a step left empty.
     """
-    tests = []
-    for caption, rule in rules:
+    tests: list[Callable[[str], bool]] = []
+    for _caption, rule in rules:
         if callable(rule):
             tests.append(rule)
         else:

@@ -34,11 +34,7 @@ import re
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.kinematics.acceleration_plan import (
-    AccelerationPlan,
-    Component,
-    acceleration_plans,
-)
+from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
 from graphmethods.scene import (
     Frame,
     Line,
@@ -50,8 +46,8 @@ from graphmethods.scene import (
     Vector,
     in_language,
     markup,
+    notation as get_notation,
 )
-from graphmethods.scene import notation as get_notation
 from graphmethods.scene.primitives import DASHED, Style
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -428,8 +424,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
         cx = x0 + c_ * (half + 8.0)
         row = 0
         for b_ in col:
-            for nm, t, dx in b_:
-                text_els.append(Text((cx + dx, ey + row * 5.4), t, size_mm=TEXT_MM, name=nm))
+            for nm, line, dx in b_:
+                text_els.append(Text((cx + dx, ey + row * 5.4), line, size_mm=TEXT_MM, name=nm))
                 row += 1
     tx, ty = split + 2.0, sheet.top + 2.0
     rows = [head]
@@ -497,7 +493,9 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
     s_a = _pick_mu_a(mu_a, need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
     elements: list = [sheet.header()]
-    cells, drawn, labels = [], [], []
+    cells: list = []
+    drawn: list = []
+    labels: list = []
     for k, p in enumerate(plans):
         r, c = divmod(k, columns)
         bx0, by0 = area[0] + c * cw, area[1] + r * ch

@@ -53,7 +53,7 @@ from graphmethods.scene import Page, Scene
 from graphmethods.scene.elements import CAP, Element
 from graphmethods.scene.primitives import Group, Label, Path, Polygon, Style
 from graphmethods.sheets import check as checking
-from graphmethods.sheets.check import CheckReport, Item, LinkageData, CycleData, load_problem
+from graphmethods.sheets.check import CheckReport, CycleData, Item, LinkageData, load_problem
 from graphmethods.sheets.worksheets import RED, SEGMENTS
 
 #: how far a label may be from the point it names, mm
@@ -473,7 +473,7 @@ def name_points(arrs: list[Arrow], labels, wanted: tuple[str, ...], *, points: d
             if dist <= LABEL_REACH_MM:
                 pairs.append((dist, lab.text, j))
     taken: set = set()
-    for dist, text, j in sorted(pairs):
+    for _dist, text, j in sorted(pairs):
         if text in named or j in taken:
             continue
         named[text] = pts[j]
@@ -583,7 +583,7 @@ def indicator_answers(d: CadDrawing, data: CycleData, *, mu_E: float | None = No
         chain.append(vertical[j])
         j = prev[j]
     chain.reverse()
-    labels = list(data.cycle.labels)     # type: ignore[attr-defined]
+    labels = list(data.cycle.labels)
     by_label = {}
     named = [lab for lab in nts.labels if lab.text in labels]
     for k, a in enumerate(chain):                  # the label nearest each arrow's start names it

@@ -31,14 +31,28 @@ import numpy as np
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Page, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, nice_ticks,
-    pick_angle_scale, pick_scale,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Page,
+    Point,
+    Polyline,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    format_value,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+    pick_angle_scale,
+    pick_scale,
 )
-from graphmethods.scene import format_value, in_language, markup
-from graphmethods.scene import notation as get_notation
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, problem_title, standard_page
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, problem_title
 
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables
@@ -328,8 +342,16 @@ def _table(rows, *, align: str, name: str, right: float | None = None, left: flo
     widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(rows))
                    + 2 * pad + 1.0 for j in range(len(rows[0])))
     w, h = sum(widths), 6.0 * len(rows)
-    x = left if left is not None else right - w
-    y = top if top is not None else bottom - h
+    if left is not None:
+        x = left
+    else:
+        assert right is not None, "a table is placed by its left or its right edge"
+        x = right - w
+    if top is not None:
+        y = top
+    else:
+        assert bottom is not None, "a table is placed by its top or its bottom edge"
+        y = bottom - h
     return Table((x, y), rows, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
                  padding_mm=pad, name=name)
 
@@ -433,7 +455,8 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
         omega_1 = omega_case
     if analogues:
         omega_1 = None
-    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "kinematic_title"),
+    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
+                  title=title or word(nt, "kinematic_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
@@ -691,7 +714,8 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
 
     nt = get_notation(notation)
     M_d, M_r, phi, study, prob = _moment_subject(subject, m, nt)
-    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0, title=title or word(nt, "work_title"),
+    sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
+                  title=title or word(nt, "work_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     period = float(phi[-1] - phi[0])

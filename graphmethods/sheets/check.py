@@ -51,19 +51,24 @@ import json
 import math
 import pathlib
 import re
+import sys
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, Text, in_language
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, Text, in_language, notation as get_notation
 from graphmethods.scene.elements import Element, Line
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets import worksheets as ws
 from graphmethods.titles import Title
 from graphmethods.units import MAX_POSITIONS, count, json_text, omega_from_n, read_text, real
+
+if TYPE_CHECKING:
+    from graphmethods.dynamics.excess_work import ExcessWork
+    from graphmethods.kinematics.case import Case
 
 TOL_MM = 0.5
 TOL_REL = 1e-3
@@ -163,10 +168,10 @@ def load_toml(text: str, *, source: str = "<answers>") -> dict:
     >>> load_toml('problem = "W1"\\n[results]\\nJ_F = 1.5e-1  # kg·m²')
     {'problem': 'W1', 'results': {'J_F': 0.15}}
     """
-    try:
+    if sys.version_info >= (3, 11):
         import tomllib
-    except ModuleNotFoundError:          # Python 3.10: the same parser, installed as a dependency
-        import tomli as tomllib  # type: ignore[no-redef]
+    else:                                # Python 3.10: the same parser, installed as a dependency
+        import tomli as tomllib
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -280,7 +285,7 @@ class CycleData:
 
     id: str
     title: Title
-    cycle: object                         # ExcessWork
+    cycle: ExcessWork
     n_rpm: float | None
     delta: float | None
     J_e: float = 0.0
@@ -294,9 +299,9 @@ class LinkageData:
 
     id: str
     title: Title
-    case: object | None = None            # kinematics Case (velocity plan at positions, Study)
-    plan_variant: object | None = None    # worksheets.PlanVariant
-    em_variant: object | None = None      # worksheets.EnergyMassVariant
+    case: Case | None = None                  # velocity plan at positions, Study
+    plan_variant: ws.PlanVariant | None = None
+    em_variant: ws.EnergyMassVariant | None = None
 
 
 def load_problem(spec) -> CycleData | LinkageData:
@@ -324,23 +329,23 @@ def load_problem(spec) -> CycleData | LinkageData:
         return LinkageData("press", title_of(case), case=case)
     v = ws.parse_id(text)
     if v is None:
-        p = pathlib.Path(text)
-        if not p.exists():
+        fp = pathlib.Path(text)
+        if not fp.exists():
             raise InputError(f"problem {text!r}: not a built-in id ({', '.join(PROBLEM_IDS)}), not a worksheet id "
                              f"KIND:SEED:N, and no such file")
         try:
-            data = json.loads(p.read_text(encoding="utf-8"))
+            data = json.loads(fp.read_text(encoding="utf-8"))
         except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-            raise InputError(f"{p}: not a readable JSON problem file ({exc})") from None
+            raise InputError(f"{fp}: not a readable JSON problem file ({exc})") from None
         if isinstance(data, dict) and data.get("format") == ws.PROBLEM_FORMAT:
-            v = ws.variant_from_dict(data, source=str(p))
+            v = ws.variant_from_dict(data, source=str(fp))
         else:
             from graphmethods.kinematics import case_from_dict
 
-            case = case_from_dict(data, source=str(p))
+            case = case_from_dict(data, source=str(fp))
             if case.kind != "slider_crank":
-                raise InputError(f"{p}: the check knows slider-crank problems; this one is a {case.kind}")
-            return LinkageData(str(p), title_of(case) or Title.of(p.stem), case=case)
+                raise InputError(f"{fp}: the check knows slider-crank problems; this one is a {case.kind}")
+            return LinkageData(str(fp), title_of(case) or Title.of(fp.stem), case=case)
     return _from_variant(v)
 
 
@@ -419,7 +424,7 @@ class CheckReport:
     items: tuple
     page: Page
     notes: tuple = ()
-    data: object = field(default=None, repr=False)
+    data: CycleData | LinkageData | None = field(default=None, repr=False)
     answers: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -571,7 +576,7 @@ class _Checker:
         self.items: list[Item] = []
         self.notes: list[str] = []
 
-    def get(self, section: str, key: str, default=None):
+    def get(self, section: str, key: str, default: Any = None) -> Any:
         return self.a.get(section, {}).get(key, default)
 
     def need(self, section: str, key: str, why: str):
@@ -584,7 +589,7 @@ class _Checker:
             raise InputError(f"[{section}] {key} = {v!r} must be positive")
         return float(v)
 
-    def number(self, section: str, key: str):
+    def number(self, section: str, key: str) -> float | None:
         v = self.get(section, key)
         if v is None:
             return None
@@ -592,7 +597,7 @@ class _Checker:
             raise InputError(f"[{section}] {key} must be a number, got {v!r}")
         return float(v)
 
-    def numbers(self, section: str, key: str):
+    def numbers(self, section: str, key: str) -> list[float] | None:
         v = self.get(section, key)
         if v is None:
             return None
@@ -605,6 +610,7 @@ class _Checker:
               hypotheses=(), hyp_tol=None, note: str = "") -> Item:
         """Judge a numeric item (see the module docstring)."""
         dev = student - expected
+        codes: tuple[str, ...]
         if abs(dev) <= tol:
             verdict, codes = "ok", ()
         else:
@@ -614,15 +620,15 @@ class _Checker:
                 note = f"follows from {own_from}: expected {_fmt(own)} from those"
             else:
                 verdict = "wrong"
-                codes = []
+                found: list[str] = []
                 for hyp in hypotheses:
                     code, h = hyp[0], hyp[1]
                     if h is None or not math.isfinite(h):
                         continue
                     t = hyp[2] if len(hyp) > 2 else (tol if hyp_tol is None else hyp_tol(h))
-                    if abs(student - h) <= t and code not in codes:
-                        codes.append(code)
-                codes = tuple(codes)
+                    if abs(student - h) <= t and code not in found:
+                        found.append(code)
+                codes = tuple(found)
         it = Item(key, label, unit, float(expected), float(student), float(dev), float(tol), verdict, codes, note)
         self.items.append(it)
         return it
@@ -673,8 +679,8 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
     # ---- moment diagram: areas
     f_student = ck.numbers("moment_diagram", "areas_mm2")
     tol_A = [TOL_REL * abs(a) for a in A]                # work tolerances (computed, not drawn)
-    tol_f = None                                         # the student's area tolerances, mm²
-    k_student = None
+    tol_f: list[float] = []                              # the student's area tolerances, mm²
+    k_student: float | None = None
     if "moment_diagram" in ck.a:
         mu_M = ck.need("moment_diagram", "mu_M", "N·m per mm of the moment diagram")
         if ck.get("moment_diagram", "mu_phi") is not None:
@@ -704,7 +710,7 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
     # the base the work hypotheses start from: the student's areas, or the data's
     if f_student is not None:
         f_base, k_base = np.asarray(f_student), k_student
-    elif p.areas_given and c.areas_mm2 is not None:
+    elif p.areas_given and c.areas_mm2 is not None and c.mu_M is not None and c.mu_phi is not None:
         f_base, k_base = np.asarray(c.areas_mm2, dtype=float), float(c.mu_M * c.mu_phi)
     else:
         f_base, k_base = None, None
@@ -715,11 +721,11 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
         w_student = None
     if w_student is not None:
         for i in range(n):
-            own = None if f_student is None else f_student[i] * k_student
+            own = None if f_student is None or k_student is None else f_student[i] * k_student
             base = A[i] if own is None else own
-            hyps = [("sign_flipped", -base), ("degrees_as_radians", base * 180.0 / math.pi),
+            hyps: list[tuple[Any, ...]] = [("sign_flipped", -base), ("degrees_as_radians", base * 180.0 / math.pi),
                     ("degrees_as_radians", base * math.pi / 180.0)]
-            if f_base is not None:
+            if f_base is not None and k_base is not None:
                 hyps += [("scale_forgotten", f_base[i]), ("scale_twice", f_base[i] * k_base ** 2)]
             ck.value(f"results.works_J[{i}]", f"work {names[i]}", "J", A[i], w_student[i], _rel(tol_A[i], A[i]),
                      own=own, own_tol=_rel(tol_A[i], own or 0.0), own_from="the student's area",
@@ -729,11 +735,11 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
     if w_student is not None:
         own_A = np.asarray(w_student)
         own_tol_A = [TOL_REL * abs(x) for x in own_A]
-    elif f_student is not None:
+    elif f_student is not None and k_student is not None:
         own_A = np.asarray(f_student) * k_student
         own_tol_A = [t * k_student for t in tol_f]
     else:
-        own_A, own_tol_A = None, None
+        own_A, own_tol_A = None, []
     # ---- energy indicator: arrows
     arrows = ck.numbers("energy_indicator", "arrows_mm")
     if "energy_indicator" in ck.a:
@@ -791,7 +797,7 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
                              f"or a list of labels; got {s!r}")
         if isinstance(s, (str, tuple)):
             acc = _levels_accepted(E, L, tol_dW, which)
-            own_acc = None if own_E is None else _levels_accepted(own_E, L, own_tol_dW, which)
+            own_acc = None if own_E is None or own_tol_dW is None else _levels_accepted(own_E, L, own_tol_dW, which)
             ck.position(f"results.{key}", f"point of ω_{which}", acc, s, own_accepted=own_acc,
                         own_from="the student's own levels")
         else:
@@ -806,11 +812,12 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
             ck.value(f"results.{key}", f"angle of ω_{which}", "°", best, float(s), tol_deg,
                      note="±0.5 mm on the φ axis" if k_student is not None else "±1°")
     # ---- M_d, ω's and J_F
-    if ck.get("results", "M_d") is not None:
+    M_d_student = ck.number("results", "M_d")
+    if M_d_student is not None:
         if p.M_d is None:
             ck.notes.append("M_d is not checked: this problem gives no constant driving moment")
         else:
-            ck.value("results.M_d", "M_d", "N·m", p.M_d, ck.number("results", "M_d"), _rel(0.0, p.M_d),
+            ck.value("results.M_d", "M_d", "N·m", p.M_d, M_d_student, _rel(0.0, p.M_d),
                      hypotheses=[("degrees_as_radians", p.M_d * 180 / math.pi),
                                  ("degrees_as_radians", p.M_d * math.pi / 180)], hyp_tol=lambda h: _rel(0.0, h),
                      note="0.1 %")
@@ -818,7 +825,7 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
     if asks and (p.n_rpm is None or p.delta is None):
         ck.notes.append(f"{', '.join(asks)} not checked: problem {p.id} gives no n and [δ]")
         return
-    if not asks:
+    if not asks or p.n_rpm is None or p.delta is None:
         return
     n_rpm, d = float(p.n_rpm), float(p.delta)
     w = omega_from_n(n_rpm)
@@ -855,7 +862,7 @@ def _check_cycle(ck: _Checker, p: CycleData) -> None:
                  own_from="the student's own ΔW_max and ω_m", hypotheses=hyps, note="from the ΔW_max tolerance, + 0.1 %")
 
 
-def _plan_data(ck: _Checker, p: LinkageData):
+def _plan_data(ck: _Checker, p: LinkageData) -> tuple[dict[str, np.ndarray], float, float | None, float]:
     """(vectors by label, l_AB, n_rpm or None, ω₁) of the velocity plan the student drew."""
     if p.plan_variant is not None:
         v = p.plan_variant
@@ -863,6 +870,7 @@ def _plan_data(ck: _Checker, p: LinkageData):
             ck.notes.append("velocity_plan.position ignored: this problem has one position")
         return v.vectors(), v.l, None, v.omega_1
     case = p.case
+    assert case is not None                  # a linkage problem is a case file or a worksheet variant
     pos_k = ck.get("velocity_plan", "position")
     m = int(ck.get("velocity_plan", "positions", 12))
     if pos_k is None or isinstance(pos_k, (str, tuple)) or not float(pos_k).is_integer() or not 0 <= pos_k <= m:
@@ -871,10 +879,11 @@ def _plan_data(ck: _Checker, p: LinkageData):
     positions = mech.positions(m=m)
     plan = mech.velocity_plans(positions, omega_1=case.omega_m)
     k = int(pos_k)
-    vec = {}
+    vec: dict[str, np.ndarray] = {}
     for name in plan.order:
         vec.setdefault(plan.label(name), np.asarray(plan.v(name)[k], dtype=float))
-    return vec, float(case.mechanism.l), float(case.n_rpm), float(case.omega_m)
+    return vec, float(case.mechanism.l), float(case.n_rpm), float(case.omega_m)  # type: ignore[attr-defined]
+    # (.l: a slider-crank's connecting rod; the check takes slider-crank cases only)
 
 
 def _check_plan(ck: _Checker, p: LinkageData) -> None:
@@ -920,6 +929,7 @@ def _check_plan(ck: _Checker, p: LinkageData) -> None:
         if p.plan_variant is not None:
             exp_sense = p.plan_variant.answers()["omega_2_sense"]
         else:
+            assert p.case is not None
             k = int(ck.get("velocity_plan", "position"))
             m = int(ck.get("velocity_plan", "positions", 12))
             w2 = float(p.case.mechanism.velocity_plans(p.case.mechanism.positions(m=m),
@@ -928,7 +938,7 @@ def _check_plan(ck: _Checker, p: LinkageData) -> None:
         ck.position("results.omega_2_sense", "sense of ω_2", [exp_sense], str(sense).strip().lower())
 
 
-def _em_data(ck: _Checker, p: LinkageData):
+def _em_data(ck: _Checker, p: LinkageData) -> tuple[np.ndarray, np.ndarray, float, float]:
     """(J_e, ΔT, n_rpm, δ) of the energy–mass diagram the student drew."""
     if p.em_variant is not None:
         v = p.em_variant
@@ -938,6 +948,7 @@ def _em_data(ck: _Checker, p: LinkageData):
     m = ck.get("energy_mass", "positions", 12)
     if isinstance(m, (str, tuple)) or not float(m).is_integer() or m < 3:
         raise InputError("[energy_mass] positions must be the number of positions m (an integer ≥ 3)")
+    assert p.case is not None
     study = Study(p.case, positions=int(m), estimate=False)
     return np.asarray(study.J_e, dtype=float), np.asarray(study.delta_T, dtype=float), p.case.n_rpm, p.case.delta
 
@@ -972,7 +983,7 @@ def _check_em(ck: _Checker, p: LinkageData) -> None:
             continue
         exp = exact[k] if abs(val - exact[k]) <= abs(val - textbook[k]) else textbook[k]
         f = (1 + d / 2) ** 2 if k == 0 else (1 - d / 2) ** 2
-        hyps = [("delta_not_halved", wrong_d[k]), ("n_as_omega", c * n_rpm ** 2 * f),
+        hyps: list[tuple[Any, ...]] = [("delta_not_halved", wrong_d[k]), ("n_as_omega", c * n_rpm ** 2 * f),
                 ("scale_forgotten", w * w * f / 2)]
         ck.value(f"energy_mass.{key}", key.replace("tan_psi_", "tan ψ_"), "", exp, val, _rel(0.0, exp),
                  hypotheses=hyps, hyp_tol=lambda h: _rel(0.0, h), note="0.1 % ((1 ± δ/2)² or (1 ± δ))")
@@ -1014,13 +1025,13 @@ def _check_em(ck: _Checker, p: LinkageData) -> None:
     if J_s is not None:
         J_exp = mu_T * kl_exp / (w * w * d)
         tol_abs = mu_T * TOL_MM / (w * w * d)
-        base = kl_exp if kl_s is None else kl_s
+        kl_base = kl_exp if kl_s is None else kl_s
         own = None if kl_s is None else mu_T * kl_s / (w * w * d)
         hyps = []
         for code, factor in (("n_as_omega", mu_T / (n_rpm ** 2 * d)), ("scale_forgotten", 1.0 / (w * w * d)),
                              ("delta_not_halved", mu_T / (2 * w * w * d)),
                              ("degrees_as_radians", mu_T / ((6 * n_rpm) ** 2 * d))):
-            h = factor * base
+            h = factor * kl_base
             hyps.append((code, h, factor * TOL_MM + TOL_REL * abs(h)))
         ck.value("results.J_F", "J_F", "kg·m²", J_exp, J_s, _rel(tol_abs, J_exp), own=own,
                  own_tol=_rel(tol_abs, own or 0.0), own_from="the student's kl", hypotheses=hyps,
@@ -1122,6 +1133,7 @@ def _overlay_label(it: Item, report: CheckReport, nt) -> str:
     if name in per_interval:
         if idx is None:
             return _w(nt, per_interval[name][1])
+        assert isinstance(report.data, CycleData)       # per-interval keys belong to cycle problems
         L = report.data.cycle.labels
         i = int(idx)
         return _w(nt, per_interval[name][0], i=ws.markup.literal(f"{L[i]}–{L[i + 1]}"))
@@ -1218,7 +1230,7 @@ def _overlay(report: CheckReport, notation) -> Scene:
 
     if isinstance(data, CycleData):
         c = data.cycle
-        if "moment_diagram" in a and c.M_d is not None:
+        if "moment_diagram" in a and c.M_d is not None and c.M_r is not None and c.period is not None:
             md = a["moment_diagram"]
             mu_M = float(md["mu_M"])
             mu_phi = float(md["mu_phi"]) if "mu_phi" in md else math.radians(float(md["mu_phi_deg"]))
@@ -1248,7 +1260,7 @@ def _overlay(report: CheckReport, notation) -> Scene:
                                 wrong=wrong, name="ei")
             els += ws.extremes(first, o[1], c.work, mu_E=mu_E, step_mm=step, nt=nt, occ=occ, name="ei-ext")
             els.append(cross((first, o[1]), "ei-origin"))
-    else:
+    elif isinstance(data, LinkageData):
         if "velocity_plan" in a:
             vec, l_AB, _, _ = _plan_data(_Checker(a), data)
             mu_v = float(a["velocity_plan"]["mu_v"])
@@ -1262,6 +1274,7 @@ def _overlay(report: CheckReport, notation) -> Scene:
             else:
                 k = int(a["velocity_plan"]["position"])
                 m = int(a["velocity_plan"].get("positions", 12))
+                assert data.case is not None
                 pos = data.case.mechanism.positions(m=m)
                 A, B = pos.xy("A")[k], pos.xy("B")[k]
             u = (B - A) / np.hypot(*(B - A))

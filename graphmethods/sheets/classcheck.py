@@ -25,8 +25,8 @@ import html
 import io
 import pathlib
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 from graphmethods.errors import GraphmethodsError, InputError
 from graphmethods.sheets.check import CheckReport, check, read_answers

@@ -18,8 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, nice_ticks
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.elements import pi_ticks
 from graphmethods.scene.primitives import MAIN, Style
 from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, quantity, suppressed_base, sym, unit

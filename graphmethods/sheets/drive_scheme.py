@@ -19,8 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.scene import Line, Page, Polyline, Scene, Text
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Line, Page, Polyline, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Table
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import SheetFrame, unit

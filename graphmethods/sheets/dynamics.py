@@ -34,19 +34,39 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, replace
+from typing import TypeVar
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, nice_ticks,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Point,
+    Polyline,
+    Scale,
+    ScaleCaptions,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
 )
-from graphmethods.scene import in_language, markup
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import label_bbox, make_label
+from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.layout import (
-    TEXT_MM, TITLE_MM, Occupancy, Sheet, given_angle_scale, given_scale, problem_title,
+    TEXT_MM,
+    TITLE_MM,
+    Occupancy,
+    Sheet,
+    given_angle_scale,
+    given_scale,
+    problem_title,
 )
 
 SMALL_MM = 2.8          # tick labels, position numbers
@@ -247,7 +267,10 @@ def format_number(v: float, decimal: str = ".") -> str:
     return format_value(v, decimal=decimal)
 
 
-def clear_ticks(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
+AxisT = TypeVar("AxisT", bound=Axis)
+
+
+def clear_ticks(axis: AxisT, occ: Occupancy, *, keep_values: bool = False) -> AxisT:
     """The axis with the tick labels that something registered runs through left out (the marks stay).
 
     With ``keep_values``, when lines would clear every value, those that cover no text stay
@@ -281,6 +304,8 @@ class SheetFrame(Sheet):
     """The shared :class:`~graphmethods.sheets.layout.Sheet`, with a faster occupancy (these sheets place many
     labels), a title box as wide as the title, and captions moved clear of lines."""
 
+    occ: FastOccupancy
+
     def __init__(self, *, nt, page, title: str, problem: str, title_block: bool, default_page):
         super().__init__(nt=get_notation(nt), page=page, title=title, problem=problem, title_block=title_block,
                          default_page=default_page)
@@ -288,15 +313,16 @@ class SheetFrame(Sheet):
         self.occ = FastOccupancy()
         self.occ.add_box((x0, y0, x0 + markup.text_width_mm(title, TITLE_MM) * 1.08, y0 + TITLE_MM + 1.5))
 
-    def captions(self, scales, legend: str = "") -> list:
-        """The scale captions on the bottom line (left), a legend at its right end; both kept off lines."""
+    def captions(self, scales, legend: str = "", *, reserve: bool = False) -> list:
+        """The scale captions on the bottom line (left), a legend at its right end; both kept off lines
+        (always registered: ``reserve`` is accepted as the base class takes it)."""
         x0, _, x1, _ = self.box
         y = self.caption_y
-        els = []
+        els: list[Element] = []
         cap = ScaleCaptions((x0, y), tuple(scales), notation=self.nt, size_mm=TEXT_MM, name="scale-captions")
         for at, anchor in (((x0, y), "start"), ((x1, y), "end"), (((x0 + x1) / 2, y), "middle")):
             trial = replace(cap, at=at, anchor=anchor)
-            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives()):
+            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives() if isinstance(p, Label)):
                 cap = trial
                 break
         self.occ.register(cap)
@@ -463,7 +489,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
     lines = [Polyline(f.pts(c.phi, c.values), style=c.style, name=f"{prefix}curve-{c.key}") for c in curves]
     lvl = []
     x_end = f.pt(period, 0.0)[0]
-    for value, text, key in levels:
+    for value, _text, key in levels:
         y = f.pt(0.0, value)[1]
         lvl.append(Line((origin[0], y), (x_end + 2.0, y), style=LEVEL, name=f"{prefix}level-{key}"))
     occ.register(*lines, *lvl)
@@ -477,7 +503,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
         if name and ax.label:
             b = label_bbox(name[0])
             occ.add_box((b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5))
-    els = [ax_phi, ax_Y] + lvl + lines
+    els: list[Element] = [ax_phi, ax_Y, *lvl, *lines]
     # position numbers under (or over) the φ axis ticks, on the other side where a curve runs through
     order = ("n", "s") if side == "above" else ("s", "n")
     for k, text in enumerate(position_labels(m, spacing)):
@@ -509,14 +535,14 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
                                                   gap_mm=2.0, within=within)
         els.append(Text((lab.x, lab.y), mk.text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{mk.key}"))
         if leader is not None:
-            els.append(Line(*leader, style=THIN, name=f"{prefix}leader-{mk.key}"))
+            els.append(Line(leader[0], leader[1], style=THIN, name=f"{prefix}leader-{mk.key}"))
     for c, line in zip(curves, lines):
         if not c.label:
             continue
         size = TEXT_MM + 0.4
         n = len(line.points)
-        spots = [(line.end, ("e", "ne", "se"))] + [(line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw"))
-                                                  for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
+        spots: list[tuple[tuple[float, float], tuple[str, ...]]] = [(line.end, ("e", "ne", "se"))] + [
+            (line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw")) for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
         far = int(np.argmax(np.abs(np.asarray(c.values, dtype=float) - axis_level)))
         if abs(float(c.values[-1]) - axis_level) < 0.05 * abs(float(c.values[far]) - axis_level):
             spots.insert(0, (line.points[far], ("ne", "nw", "n", "e", "w")))   # it ends on the axis: name its peak
@@ -528,7 +554,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
         if lab is None:
             lab, leader = occ.place_label_with_leader(line.points[n // 2], c.label, size_mm=size, within=within)
             if leader is not None:
-                els.append(Line(*leader, style=THIN, name=f"{prefix}leader-{c.key}"))
+                els.append(Line(leader[0], leader[1], style=THIN, name=f"{prefix}leader-{c.key}"))
         else:
             occ.add_label(lab)
         els.append(Text((lab.x, lab.y), c.label, size_mm=size, anchor=lab.anchor, name=f"{prefix}name-{c.key}"))
@@ -1001,7 +1027,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
         v = np.asarray(v, dtype=float)
         return np.array([v[1], -v[0]]) if sense > 0 else np.array([-v[1], v[0]])
 
-    names = [p for p in plans.order]
+    names = list(plans.order)
     images = {p: turned(plans.v(p)[k]) for p in names}          # m/s, turned
     F = np.asarray(ld.force, dtype=float)
     F_abs = float(np.hypot(*F))
@@ -1125,7 +1151,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
         q = at(paper(images[p]))
         els.append(Point(q, radius_mm=0.6, name=f"image-{lab_text}"))
         occ.add_box((q[0] - 0.7, q[1] - 0.7, q[0] + 0.7, q[1] + 0.7))
-    labels = []
+    labels: list[Element] = []
     for p in [None] + names:
         text = "p" if p is None else plans.label(p)
         if p is not None and text == "p":
@@ -1137,7 +1163,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
                                               size_mm=TEXT_MM, gap_mm=1.5, within=sheet.box)
     labels.append(Text((lab.x, lab.y), F_text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-F"))
     if leader is not None:
-        labels.append(Line(*leader, style=THIN, name="leader-F"))
+        labels.append(Line(leader[0], leader[1], style=THIN, name="leader-F"))
     # the result, worked out on the drawing, beside the power method's value
     M_lever = F_abs * h_mm * s_v.per_mm / omega_1
     rows = (

@@ -21,15 +21,34 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Frame, Line, Point, Polyline, Region, Scale, Scene, SignMark, Table, Text,
-    Vector, nice_ticks, pi_ticks,
+    Axis,
+    Dimension,
+    Frame,
+    Line,
+    Point,
+    Polyline,
+    Region,
+    Scale,
+    Scene,
+    SignMark,
+    Table,
+    Text,
+    Vector,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+    pi_ticks,
 )
-from graphmethods.scene import markup
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Group, label_bbox
-from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
+from graphmethods.scene.elements import Element, Group, label_bbox
+from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label, Style
 from graphmethods.sheets.layout import (
-    TEXT_MM, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale, problem_title,
+    TEXT_MM,
+    Occupancy,
+    Sheet,
+    angle_deg_text,
+    given_angle_scale,
+    given_scale,
+    problem_title,
 )
 
 SMALL_MM = 2.8          # tick labels, values beside vectors
@@ -237,8 +256,7 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
     _register(occ, *ordinates)
 
     # the intervals: hatched regions with sign, area and work
-    from shapely.geometry import Polygon as SPolygon
-    from shapely.geometry import box as sbox
+    from shapely.geometry import Polygon as SPolygon, box as sbox
 
     outlines, polys = [], []
     for i in range(len(ew.work)):
@@ -260,7 +278,8 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
         f_val = f"{nt.number(float(A) * area_per_J, plus=True)} {nt.unit('mm²')}"
         A_val = f"{nt.number(float(A), plus=True)} {nt.unit(work_unit)}"
         f_sym, A_sym = f"{nt.sym('f')}_{{{i + 1}}}", f"{nt.sym('A')}_{{{i + 1}}}"
-        layouts = (("", f"{f_sym} = {f_val}", f"{A_sym} = {A_val}"),            # sign above two lines
+        layouts: tuple[tuple[str, ...], ...] = (
+                  ("", f"{f_sym} = {f_val}", f"{A_sym} = {A_val}"),            # sign above two lines
                    ("", f"{f_sym} =", f_val, f"{A_sym} =", A_val))               # narrow: five lines
         inner = poly.buffer(-0.6)
         cands, pole = _interior_candidates(poly)
@@ -272,7 +291,7 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
                     w, h = occ.block_size(lines, size_mm=size, line_mm=lmm)
                     placed = occ.place_block(_box_centres(inner, w, h, pole) + cands, lines, size_mm=size,
                                              line_mm=lmm, within=plot_box, check_lines=False,
-                                             inside=lambda bx: inner.contains(sbox(*bx)))
+                                             inside=lambda bx, inner=inner: inner.contains(sbox(*bx)))
                     if placed is not None:
                         break
                 if placed is not None:
@@ -297,12 +316,12 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
                     tx, ty = (bb[0] if bb[0] > pole[0] else bb[2]), (bb[1] + bb[3]) / 2
                 leader = Line((tx, ty), pole, style=THIN, name=f"leader-{i + 1}")
                 occ.add_line((leader.start, leader.end))
-        keep = ()
+        keep: tuple[tuple[float, float, float, float], ...] = ()
         if placed is not None:
             labels, bb = placed
             if leader is None:
                 keep = ((bb[0] - 0.6, bb[1] - 0.6, bb[2] + 0.6, bb[3] + 0.6),)
-            els = [SignMark(((bb[0] + bb[2]) / 2, bb[1] + line_mm / 2), "+" if gain else "−", size_mm=size * 0.9,
+            els: list[Element] = [SignMark(((bb[0] + bb[2]) / 2, bb[1] + line_mm / 2), "+" if gain else "−", size_mm=size * 0.9,
                             name=f"sign-{i + 1}")]
             els += [Text((lab.x, lab.y), t, size_mm=size, anchor="middle", name=f"label-{i + 1}")
                     for lab, t in zip(labels[1:], lines[1:])]
@@ -331,15 +350,15 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
         text, size = nt.sym(key), TEXT_MM + 0.5
         spots = [(el.end, ("e",))] + [(P(phi0 + t * period, float(curve(phi0 + t * period))), ("n", "s", "nw", "sw"))
                                       for t in (0.93, 0.85, 0.75, 0.6)] + [(el.end, ("ne", "se", "n", "s"))]
-        lab = None
+        nlab: Label | None = None
         for at, dirs in spots:
-            lab = occ.first_free(at, text, dirs, (1.5, 3.0), size, (px0 + 1, py0 - 8, x1, py1 + 9))
-            if lab is not None:
+            nlab = occ.first_free(at, text, dirs, (1.5, 3.0), size, (px0 + 1, py0 - 8, x1, py1 + 9))
+            if nlab is not None:
                 break
-        if lab is None:
-            lab = occ.place_label(el.end, text, ("e",), size_mm=size, gap_mm=1.5, register=False)
-        occ.add_label(lab)
-        names.append(Text((lab.x, lab.y), text, size_mm=size, anchor=lab.anchor, name=f"name-{key}"))
+        if nlab is None:
+            nlab = occ.place_label(el.end, text, ("e",), size_mm=size, gap_mm=1.5, register=False)
+        occ.add_label(nlab)
+        names.append(Text((nlab.x, nlab.y), text, size_mm=size, anchor=nlab.anchor, name=f"name-{key}"))
 
     scales = (s_phi, s_M)
     elements = ([sheet.header()] + regions + ordinates + [ax_phi, ax_M, cd, cr] + annotations + points + names
@@ -424,7 +443,7 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
              name="delta-W-max"),
     ]
     elements = [sheet.header(), table] + summary
-    scales = ()
+    scales: tuple[Scale, ...] = ()
     if has_scales:
         scales = (Scale(nt.sym("mu_M"), moment_unit, ew.mu_M), Scale(nt.sym("mu_phi"), "rad", ew.mu_phi))
         elements += sheet.captions(scales)
@@ -521,12 +540,12 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
         lab = occ.place_label(at, ew.labels[k], dirs, size_mm=TEXT_MM + 0.3, gap_mm=1.0)
         labels.append(Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
                            name=f"name-{ew.labels[k]}"))
-    values = []
+    values: list[Element] = []
     for k, vec in enumerate(vectors):
         text = nt.number(float(ew.work[k]), plus=True)
         lab = occ.place_label(vec.mid, text, ("w", "e", "nw", "sw", "ne", "se"), size_mm=SMALL_MM, gap_mm=1.2)
         values.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"value-{k + 1}"))
-    marks = []
+    marks: list[Element] = []
     for k, key in ((imax, "E_max"), (imin, "E_min")):
         at = at_point(k)
         marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
@@ -536,7 +555,7 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
         lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0, within=sheet.box)
         marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
         if leader is not None:
-            marks.append(Line(*leader, style=THIN, name=f"leader-{key}"))
+            marks.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{key}"))
     # closure
     res = ew.residual
     scale_total = float(np.abs(ew.work).sum()) or 1.0
@@ -548,7 +567,7 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
                                               size_mm=SMALL_MM, gap_mm=3.0, within=sheet.box)
     closure = Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name="closure")
     if leader is not None:
-        values.append(Line(*leader, style=THIN, name="leader-closure"))
+        values.append(Line(leader[0], leader[1], style=THIN, name="leader-closure"))
     scales = (s_E,)
     elements = ([sheet.header(), ax, start_line] + levels + ext + vectors + [dim] + marks + labels + values
                 + [closure] + sheet.captions(scales, legend=nt.word("gain_loss")))
@@ -595,9 +614,9 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
             raise InputError("give T0 (J), or both J_e (kg·m²) and omega_0 (rad/s), for the kinetic-energy graph")
         T0 = 0.5 * float(J_e) * float(omega_0) ** 2
     kinetic = T0 is not None
-    if kinetic and not (math.isfinite(T0) and T0 > 0):
+    if T0 is not None and not (math.isfinite(T0) and T0 > 0):
         raise InputError(f"T0 = {T0!r} must be a positive kinetic energy in {work_unit}")
-    base = float(T0) if kinetic else 0.0
+    base = float(T0) if T0 is not None else 0.0
     phi, dE = ew.energy_curve(samples)
     phi0, period = float(ew.phi[0]), float(ew.period)
     Y = dE + base
@@ -651,7 +670,7 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
     dim = Dimension((x_dim, P(*ext_pts[k_min])[1]), (x_dim, P(*ext_pts[k_max])[1]), dim_text,
                     size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
     _register(occ, *guides, dim)
-    marks = []
+    marks: list[Element] = []
     for key, (ph, v) in ext_pts.items():
         at = P(ph, v)
         marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
@@ -673,7 +692,7 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
                                                   within=(px0 + 1, py0 - 10, x1, y1))
         marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
         if leader is not None:
-            marks.append(Line(*leader, style=THIN, name=f"leader-{key}"))
+            marks.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{key}"))
     extra = []
     if kinetic:
         at = P(phi0, base)

@@ -16,8 +16,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from graphmethods.scene import Line, Page, Scene, Text
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Line, Page, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Dimension, Region, Table
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.dynamics import SheetFrame, unit

@@ -26,8 +26,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Line, Page, Table, Text, Vector, in_language
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Line, Page, Table, Text, Vector, in_language, notation as get_notation
 from graphmethods.scene.primitives import THIN
 from graphmethods.sheets.layout import TEXT_MM, Sheet, given_scale
 
@@ -159,8 +158,8 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
                else _w("group", nt, g=pl.group))
         els.append(Text((left, area[1] - 4.0), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
         sides = [(lbl, F, True, None) for lbl, F in poly.known] + \
-                [(lbl, F, False, d) for lbl, d, F in poly.closing]
-        for s, (lbl, F, known, d) in enumerate(sides):
+                [(lbl, F, False, dirs) for lbl, dirs, F in poly.closing]
+        for s, (lbl, _F, known, direction) in enumerate(sides):
             a, b = at(complex(pts[s])), at(complex(pts[s + 1]))
             kind = "known" if known else "closing"
             if math.dist(a, b) >= 0.3:
@@ -168,8 +167,8 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
                 els.append(v)
                 occ.add_primitives(v.primitives())
                 labels.append((v.mid, _markup(lbl), f"label-{j}-{s}"))
-            if d is not None:
-                u = complex(d[i])
+            if direction is not None:
+                u = complex(direction[i])
                 e = np.array([u.real, -u.imag])
                 A, B = np.array(a), np.array(b)
                 ln = Line(tuple((A - 6.0 * e).tolist()), tuple((B + 6.0 * e).tolist()) if math.dist(a, b) >= 0.3
@@ -340,12 +339,7 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
     from graphmethods.dynamics.forces import case_forces
     from graphmethods.scene import markup
     from graphmethods.scene.scale import pick_scale
-    from graphmethods.sheets.kinematic_symbols import (
-        FixedPivot,
-        PinJoint,
-        RotationArrow,
-        SliderBlock,
-    )
+    from graphmethods.sheets.kinematic_symbols import FixedPivot, PinJoint, RotationArrow, SliderBlock
 
     nt = get_notation(notation)
     if phi_deg is None:
@@ -423,28 +417,28 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
     labels = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
     n_f = 0
     for label, F, where, M in forces:
-        a = at(where)
+        start = at(where)
         if abs(F) / s_F.per_mm >= 0.3:
-            b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
-            v = Vector(a, b, head_length_mm=2.5, name=f"force-{n_f}")
+            tip = (start[0] + F.real / s_F.per_mm, start[1] - F.imag / s_F.per_mm)
+            v = Vector(start, tip, head_length_mm=2.5, name=f"force-{n_f}")
             n_f += 1
             els.append(v)
             occ.add_primitives(v.primitives())
-            labels.append((b, _markup(label), f"label-{label}"))
+            labels.append((tip, _markup(label), f"label-{label}"))
         if M != 0.0:
             mlabel = "M" + label[1:] if label.startswith("F") else label
-            arc = RotationArrow(a, radius_mm=6.0, start_deg=200.0, sweep_deg=100.0 if M > 0 else -100.0,
+            arc = RotationArrow(start, radius_mm=6.0, start_deg=200.0, sweep_deg=100.0 if M > 0 else -100.0,
                                 name=f"moment-{mlabel}")
             els.append(arc)
             occ.add_primitives(arc.primitives())
-            labels.append(((a[0] - 6.0, a[1]), f"{_markup(mlabel)} = {nt.number(M, sig=4)} {nt.unit('N·m')}",
+            labels.append(((start[0] - 6.0, start[1]), f"{_markup(mlabel)} = {nt.number(M, sig=4)} {nt.unit('N·m')}",
                            f"label-{mlabel}"))
     cr = lk.crank
     Mb = float(fa.M_balance[i])
     els.append(RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
                              label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b"))
-    for where, text, nm in labels:
-        lab = occ.place_label(where, text, size_mm=SMALL_MM, within=(area[0] - 4, area[1] - 4, area[2] + 4,
+    for at_mm, text, nm in labels:
+        lab = occ.place_label(at_mm, text, size_mm=SMALL_MM, within=(area[0] - 4, area[1] - 4, area[2] + 4,
                                                                       area[3] + 4))
         els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
     tx = split + 2.0

@@ -42,19 +42,30 @@ import math
 import re
 from dataclasses import dataclass
 from functools import cached_property
+from typing import cast
 
 import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import (
-    Frame, Line, Point, Polyline, Scale, ScaleCaptions, Scene, Table, Text, Vector, in_language, markup,
+    Frame,
+    Line,
+    Point,
+    Polyline,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+    notation as get_notation,
 )
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Dimension, Group
-from graphmethods.scene.primitives import DASHED, THIN, Path, Style
+from graphmethods.scene.elements import Dimension, Element
+from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Occupancy, Sheet, standard_page
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.units import convenient_at_least
 
 SMALL_MM = 2.8          # position numbers, plan labels
@@ -153,7 +164,7 @@ class _Linkage:
         self._plans = plans
 
     @classmethod
-    def of(cls, obj, *, m=None, omega_1=None) -> "_Linkage":
+    def of(cls, obj, *, m=None, omega_1=None) -> _Linkage:
         from graphmethods.dynamics.study import Study
         from graphmethods.kinematics import Case, Mechanism, Positions, VelocityPlans
 
@@ -174,10 +185,11 @@ class _Linkage:
             if omega_1 is not None and omega_1 != obj.omega_1:
                 raise InputError(f"these velocity plans are for ω₁ = {obj.omega_1:g} rad/s, not {omega_1:g}; "
                                  f"give the mechanism or its positions to draw them at another speed")
-            if m is not None and m != obj.positions.m:
-                raise InputError(f"these velocity plans are for m = {obj.positions.m} positions, not {m}")
-            return cls(obj.positions.mechanism, m=obj.positions.m, omega_1=obj.omega_1,
-                       positions=lambda: obj.positions, plans=lambda: obj)
+            plan_pos = cast("Positions", obj.positions)       # VelocityPlans (on its way out) types it as object
+            if m is not None and m != plan_pos.m:
+                raise InputError(f"these velocity plans are for m = {plan_pos.m} positions, not {m}")
+            return cls(plan_pos.mechanism, m=plan_pos.m, omega_1=obj.omega_1,
+                       positions=lambda: plan_pos, plans=lambda: obj)
         if isinstance(obj, Positions):
             if m is not None and m != obj.m:
                 raise InputError(f"these positions are for m = {obj.m}, not {m}")
@@ -447,7 +459,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     def coords(p, names, idx=None):
         return [p.coords[j] if idx is None else p.coords[j][idx] for j in names]
 
-    joints = [j for j in mech.joints] + list(parts.extra)
+    joints = list(mech.joints) + list(parts.extra)
     pts = coords(pos, joints, drawn)
     if ext_pos is not None:
         pts += coords(ext_pos, joints)
@@ -520,11 +532,10 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     _register(occ, *thin_els, *thick_els)
 
     # ---- guides of the sliders: the hatched surface on the side the links leave free
-    symbol_els = []
+    symbol_els: list[Element] = []
     for j, (gx, gy) in parts.sliders.items():
         u = np.array([gx, gy], dtype=float)
-        sp = [pos.coords[j][drawn]] + ([ext_pos.coords[j]] if ext_pos is not None else [])
-        sp = np.concatenate(sp)
+        sp = np.concatenate([pos.coords[j][drawn]] + ([ext_pos.coords[j]] if ext_pos is not None else []))
         proj = sp @ u
         a_m, b_m = sp[np.argmin(proj)], sp[np.argmax(proj)]
         ua = np.array([u[0], -u[1]])       # on paper
@@ -539,7 +550,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     _register(occ, *symbol_els)
 
     # ---- blocks, joints, points of the thick position
-    top_els = []
+    top_els: list[Element] = []
     if thick is not None:
         for j, (gx, gy) in parts.sliders.items():
             top_els.append(SliderBlock(P(pos.coords[j][thick]), angle_deg=_paper_deg((gx, gy)), name=f"block-{j}"))
@@ -590,8 +601,8 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
     out_items = _numbered(pos, parts, drawn, ext, ext_pos, parts.output)
     if guide is not None:
-        side = "s" if guide.side > 0 else "n"
-        numbers = _output_numbers(out_items, P, occ, sheet.box, side=side)
+        out_side: str | None = "s" if guide.side > 0 else "n"
+        numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
     else:
         pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
         numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
@@ -605,12 +616,12 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
 
         boxes = [label_bbox(p) for t in numbers for p in t.primitives()]
         axis_y = a[1]
-        reach = max([axis_y - bb[1] for bb in boxes] if side == "n" else [bb[3] - axis_y for bb in boxes]) \
+        reach = max([axis_y - bb[1] for bb in boxes] if out_side == "n" else [bb[3] - axis_y for bb in boxes]) \
             if boxes else 0.0
         text = _word(nt, "stroke", H=nt.number(pos.H, sig=4), u=unit_l)
-        lift = (max(reach, 2.0) + 0.8) * (-1.0 if side == "n" else 1.0)       # measured from beyond the numbers
+        lift = (max(reach, 2.0) + 0.8) * (-1.0 if out_side == "n" else 1.0)       # measured from beyond the numbers
         left, right = (left[0], left[1] + lift), (right[0], right[1] + lift)
-        dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if side == "n" else \
+        dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if out_side == "n" else \
             Dimension(left, right, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H")
         dims.append(dim)
         _register(occ, dim)
@@ -710,10 +721,10 @@ def _ground_direction(at, segments) -> float:
                 dirs += [a, a + 180.0]
     if not dirs:
         return 270.0
-    dirs = np.asarray(dirs)
+    dirs_a = np.asarray(dirs)
 
     def gap(cand):
-        return float(np.abs((dirs - cand + 180.0) % 360.0 - 180.0).min())
+        return float(np.abs((dirs_a - cand + 180.0) % 360.0 - 180.0).min())
 
     best = 270.0                                   # the ground below, as drawn by hand ...
     if gap(270.0) < 8.0:                           # ... unless a link runs straight into it
@@ -731,7 +742,7 @@ def _rotation_arrow(centre, r_mm: float, sense: int, occ: Occupancy, segments):
     radius = float(min(max(0.45 * r_mm, 5.0), 9.0))
     sweep = 70.0 * sense
     lines = linestrings(np.array([[A, B] for _, _, A, B in segments], dtype=float)) if segments else None
-    best = None
+    best: tuple[int, RotationArrow] | None = None
     for mid in np.arange(135.0, 135.0 + 360.0, 15.0):
         arr = RotationArrow(centre, radius, float(mid - sweep / 2), sweep, name="omega-1")
         if lines is None:
@@ -740,6 +751,7 @@ def _rotation_arrow(centre, r_mm: float, sense: int, occ: Occupancy, segments):
         hits = int(intersects(linestrings(np.array(arr.arc_points())), lines).sum())
         if best is None or hits < best[0]:
             best = (hits, arr)
+    assert best is not None                    # the loop runs at least once
     arr = best[1]
 
     def label(occ_):
@@ -824,11 +836,12 @@ def _rel_name(mech, x: str, y: str) -> str:
     return x + y
 
 
-def _plan_layout(plans) -> tuple[list[tuple[str, str]], list[_PlanVector]]:
+def _plan_layout(plans) -> tuple[list[tuple[str, str | None]], list[_PlanVector]]:
     """The images of a plan (label, point name; poles once as "p") and its vectors in construction order:
     p→x for every moving point, y→x for the relative velocity of every intersection."""
     mech = plans.positions.mechanism
-    images, vectors = [("p", None)], []
+    images: list[tuple[str, str | None]] = [("p", None)]
+    vectors: list[_PlanVector] = []
     seen = {"p"}
     for name, c in plans.constructions.items():
         if c.method == "pole":
@@ -950,11 +963,11 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     x0, y0, x1, y1 = sheet.box
     area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
     W, H = area[2] - area[0], area[3] - area[1]
-    ext = []
+    spans = []
     for k in drawn:
         xy = np.array(list(_image_xy(plans, images, k).values()))
-        ext.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
-    ext = np.array(ext)
+        spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
+    ext = np.array(spans)
     ill = np.asarray(plans.ill_conditioned)[drawn]
     fit = ~ill if (~ill).any() else np.ones_like(ill)
     n = len(drawn)
@@ -979,7 +992,9 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     s_v = _pick_mu_v(mu_v, need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
     elements: list = [sheet.header()]
-    cells, drawn_els, label_els = [], [], []
+    cells: list[Element] = []
+    drawn_els: list[Element] = []
+    label_els: list[Element] = []
     for idx, k in enumerate(drawn):
         r, c = divmod(idx, columns)
         bx0, by0 = area[0] + c * cw, area[1] + r * ch
@@ -994,15 +1009,15 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         cells.append(htext)
         occ.add_primitives(htext.primitives())
         inner = (box[0] + pad_x - 0.8, box[1] + head_mm + pad_y - 0.8, box[2] - pad_x + 0.8, box[3] - pad_y + 0.8)
-        xy = _image_xy(plans, images, k)
-        arr = np.array(list(xy.values()))
+        xy_k = _image_xy(plans, images, k)
+        arr = np.array(list(xy_k.values()))
         lo, hi = arr.min(axis=0), arr.max(axis=0)
         w_mm, h_mm = s_v.to_mm(float(hi[0] - lo[0])), s_v.to_mm(float(hi[1] - lo[1]))
         if w_mm > inner[2] - inner[0] + 1e-6 or h_mm > inner[3] - inner[1] + 1e-6:
             lines = [_word(nt, "off_scale") + ":"]
             for v in vectors:
                 if v.start == "p" and not v.known:
-                    val = float(np.hypot(*(xy[v.end])))
+                    val = float(np.hypot(*(xy_k[v.end])))
                     lines.append(f"{v.symbol} = {nt.number(val, sig=4)} {_unit(nt, 'm/s')}")
             for i, t in enumerate(lines):
                 label_els.append(Text((inner[0], inner[1] + 4.0 + i * (SMALL_MM + 1.4)), t, size_mm=SMALL_MM,
@@ -1011,7 +1026,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         mid = ((inner[0] + inner[2]) / 2, (inner[1] + inner[3]) / 2)
         f = Frame((mid[0] - s_v.to_mm(float(lo[0] + hi[0]) / 2), mid[1] + s_v.to_mm(float(lo[1] + hi[1]) / 2)),
                   s_v, s_v)
-        pts = {lb: f.pt(*v) for lb, v in xy.items()}
+        pts = {lb: f.pt(*v) for lb, v in xy_k.items()}
         vecs = _plan_vectors(pts, vectors, prefix=prefix)
         pole = Point(pts["p"], radius_mm=0.55, name=f"{prefix}pole")
         _register(occ, *vecs, pole)
@@ -1097,7 +1112,7 @@ def _equations(plans, k: int, nt, lk) -> list[str]:
             y = next(n for n, cc in plans.constructions.items() if cc.label == rel[0].through) if rel else None
             parts = []
             for ln in c.lines:
-                what = f"v_{{{name}}}" if ln.through == "p" else f"v_{{{_rel_name(mech, name, y)}}}"
+                what = f"v_{{{name}}}" if ln.through == "p" or y is None else f"v_{{{_rel_name(mech, name, y)}}}"
                 parts.append(f"{what} {_line_label(ln, nt)}")
             eq = f"v_{{{name}}} = v_{{{y}}} + v_{{{_rel_name(mech, name, y)}}}" if y else f"v_{{{name}}}"
             lines.append(f"{eq};  " + ",  ".join(parts))
@@ -1233,7 +1248,7 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     _register(occ, *vecs, pole)
     hard = Occupancy(pad_mm=0.3)
     _register(hard, *vecs)
-    for ln_el, (cname, lnk) in zip(cons, [(cn, ln) for cn, c in plans.constructions.items()
+    for ln_el, (_cname, lnk) in zip(cons, [(cn, ln) for cn, c in plans.constructions.items()
                                           if c.method == "intersection" for ln in c.lines]):
         end = ln_el.end
         d = np.asarray(ln_el.end) - np.asarray(ln_el.start)
@@ -1248,8 +1263,8 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     tx = split + 2.0
     ty = sheet.top + 2.0
     text_els = []
-    for i, t in enumerate([phi] + eqs):
-        text_els.append(Text((tx, ty + i * 5.6), t, size_mm=TEXT_MM, name=f"equation-{i}"))
+    for i, line in enumerate([phi] + eqs):
+        text_els.append(Text((tx, ty + i * 5.6), line, size_mm=TEXT_MM, name=f"equation-{i}"))
     rows = [(_word(nt, "vector"), _word(nt, "length"), _quantity(nt, _word(nt, "value"), "m/s"))]
     for v in vectors:
         L = math.dist(pts[v.start], pts[v.end])
@@ -1375,6 +1390,7 @@ def velocity_rows(linkage, *, m: int | None = None, omega_1: float | None = None
     ill = list(np.asarray(plans.ill_conditioned)[drawn])
     values = np.column_stack(data)
     if plans_e is not None:
+        assert ext is not None                 # plans_e is made for ext only
         labels.append(ext.label)
         ill.append(bool(plans_e.ill_conditioned[0]))
         order = np.argsort(values[:, 0], kind="stable")

@@ -20,9 +20,8 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, TitleBlock, markup
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import label_bbox, make_label, place_label
+from graphmethods.scene import Page, Scale, TitleBlock, markup, notation as get_notation
+from graphmethods.scene.elements import Element, label_bbox, make_label, place_label
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
 from graphmethods.titles import text_in
@@ -136,7 +135,8 @@ class Occupancy:
         self.segments.extend(zip(pts, pts[1:]))
 
     def add_box(self, box: Box) -> None:
-        self.boxes.append(tuple(map(float, box)))
+        x0, y0, x1, y1 = map(float, box)
+        self.boxes.append((x0, y0, x1, y1))
 
     def add_label(self, label: Label) -> None:
         self.add_box(label_bbox(label))
@@ -230,7 +230,7 @@ class Occupancy:
 
     def place_label_with_leader(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
                                 size_mm: float = 3.5, gap_mm: float = 1.2, within: Box | None = None
-                                ) -> tuple[Label, tuple | None]:
+                                ) -> tuple[Label, tuple[tuple[float, float], tuple[float, float]] | None]:
         """A label beside ``at``; when nothing beside it is free, further away with a leader line.
 
         Returns the label and the leader ``((x0, y0), (x1, y1))`` from the label to ``at`` (or None).
@@ -389,7 +389,7 @@ class Sheet:
         from graphmethods.scene import ScaleCaptions, Text
 
         x0, _, x1, _ = self.box
-        els = [ScaleCaptions((x0, self.caption_y), tuple(scales), notation=self.nt, size_mm=TEXT_MM,
+        els: list[Element] = [ScaleCaptions((x0, self.caption_y), tuple(scales), notation=self.nt, size_mm=TEXT_MM,
                              name="scale-captions")]
         if legend:
             els.append(Text((x1, self.caption_y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))

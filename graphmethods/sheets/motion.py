@@ -21,8 +21,7 @@ import math
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, nice_ticks
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, quantity, sym, unit
 from graphmethods.sheets.layout import TEXT_MM, given_scale

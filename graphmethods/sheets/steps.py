@@ -30,13 +30,12 @@ True
 from __future__ import annotations
 
 import pathlib
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, in_language
-from graphmethods.scene import notation as get_notation
+from graphmethods.scene import Axis, Page, Scale, in_language, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.steps import BuildUp, Rule, partition
 
@@ -277,7 +276,7 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
     >>> bu = velocity_plan_steps(SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13)}), 1, omega_1=10.0)
     >>> [c.split(":")[0] for c in bu.captions()][2:5]
     ['Through a, draw the direction of v_{BA} ⊥ AB', 'Through p, draw the direction of v_{B} ∥ the guide', 'b is where the two lines meet']
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     from graphmethods.sheets import kinematics as K
 
     nt = get_notation(notation)
@@ -374,11 +373,13 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
     --------
     >>> from graphmethods.kinematics.presets import slider_crank
     >>> bu = acceleration_plan_steps(slider_crank(r=0.1, l=0.4, points={"S2": ("AB", 0.2)}), 1, omega_1=10.0)
-    >>> [c.split(":")[0] for c in bu.captions()][2:5]
-    ['From a draw a^n_{BA} ∥ AB toward A', 'Through n_{BA}, draw the direction of a^τ_{BA} ⊥ AB', 'Through π, draw the direction of a_{B} ∥ the guide']
+    >>> for caption in bu.captions()[2:5]:
+    ...     print(caption.split(":")[0])
+    From a draw a^n_{BA} ∥ AB toward A
+    Through n_{BA}, draw the direction of a^τ_{BA} ⊥ AB
+    Through π, draw the direction of a_{B} ∥ the guide
     """
-    from graphmethods.sheets import acceleration as SA
-    from graphmethods.sheets import kinematics as K
+    from graphmethods.sheets import acceleration as SA, kinematics as K
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
@@ -458,8 +459,8 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
                          None)
             if along is None:
                 along = next(c for c in st_.components if c.kind == "absolute")
-            rel = ln.label.replace("⟂", "⊥").split(" ", 1)
-            to = _w(nt, "guide") if rel[1] in ("guide", "slot") else K._sub(rel[1])
+            relation = ln.label.replace("⟂", "⊥").split(" ", 1)
+            to = _w(nt, "guide") if relation[1] in ("guide", "slot") else K._sub(relation[1])
             lname = f"line-{st_.point}-{SA._id(ln.through)}"
             names = [lname, f"label-{lname}"] + (eq_names if first else [])
             first = False
@@ -696,8 +697,7 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
 
     rules = [
         (_w(nt, "frame", mu=mu_l.caption(nt)),
-         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-"))
-         or (n.startswith("name-O"))),
+         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-", "name-O"))),
         (_w(nt, "crank_pos", m=m, c=K._sub(crank)),
          lambda n: pos_of([crank])(n) or mark_of([pin])(n) or (n.startswith(f"number-{pin}-")
                                                                   and not n.endswith("-extreme"))),

@@ -55,7 +55,7 @@ def equivalent_mass_graph(study: Any, *, point: str | None = None, cap: float = 
     # branches: runs of kept samples, split at the dead centres (gaps in the positions) and at the cap
     idx = np.asarray(fine.index)
     breaks = np.flatnonzero((np.diff(idx) > 1) | (np.diff(keep.astype(int)) != 0)) + 1
-    curves = []
+    curves: list = []
     for seg in np.split(np.arange(phi.size), breaks):
         if seg.size >= 2 and keep[seg].all():
             curves.append(CurveSpec(f"m_e-{len(curves) + 1}", phi[seg], m_e[seg], MAIN, "m_e" if not curves else ""))

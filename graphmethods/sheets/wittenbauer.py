@@ -40,16 +40,46 @@ import numpy as np
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
 from graphmethods.scene import (
-    Axis, Dimension, Line, Page, Point, Polyline, Scale, Scene, Table, Text, nice_ticks, pick_scale,
+    Axis,
+    Dimension,
+    Line,
+    Page,
+    Point,
+    Polyline,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+    pick_scale,
 )
-from graphmethods.scene import in_language, markup
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import label_bbox, make_label
+from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.dynamics import (
-    PROJECTION, SMALL_MM, TEXT_MM, TWO_PI, CurveSpec, SheetFrame, as_study, clear_ticks, delta_T_curve,
-    drawn_moments, fine_angles, given_angle_scale, given_scale, inertia_curve, phi_graph_elements, problem_text,
-    quantity, sym, turned_inertia_elements, unit, value_text,
+    PROJECTION,
+    SMALL_MM,
+    TEXT_MM,
+    TWO_PI,
+    CurveSpec,
+    SheetFrame,
+    as_study,
+    clear_ticks,
+    delta_T_curve,
+    drawn_moments,
+    fine_angles,
+    given_angle_scale,
+    given_scale,
+    inertia_curve,
+    phi_graph_elements,
+    problem_text,
+    quantity,
+    sym,
+    turned_inertia_elements,
+    unit,
+    value_text,
 )
 
 RAY = Style(width_mm=0.35)
@@ -205,7 +235,7 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
     """Label directions pointing away from a centre, best first."""
     ang = math.degrees(math.atan2(dy_up, dx)) % 360
     names = ("e", "ne", "n", "nw", "w", "sw", "s", "se")
-    i = int(round(ang / 45.0)) % 8
+    i = round(ang / 45.0) % 8
     return tuple(names[(i + d) % 8] for d in (0, 1, -1, 2, -2, 3, -3, 4))
 
 
@@ -285,7 +315,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         lo, hi = ray_span(intercept_mm=b, tan=tan, origin=origin, clip=clip, avoid=avoid, O1_x=O1x,
                           x_from=float(X[list(idx)].max()) + 2.0, x_to=float(X.max()) + 8.0, y_top=y_top_mm)
         rays.append(Line(P(lo, b + tan * lo), P(hi, b + tan * hi), style=RAY, name=f"{prefix}ray-{key}"))
-    psi_els = []
+    psi_els: list[Element] = []
     for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
         psi_els.append(Line(pt, (pt[0] + side * (R + 4.0), pt[1]), style=THIN,
                             name=f"{prefix}psi-{key}-reference"))
@@ -298,7 +328,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     occ.register(ax_T)
     ax_J = clear_ticks(ax_J, occ, keep_values=True)
     occ.register(ax_J)
-    els = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
+    els: list[Element] = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
     # vertices, k, l, tangencies
     for i in range(m):
         p = P(X[i], Y[i])
@@ -320,15 +350,15 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         text = sym(nt, f"psi_{key}")
         a = psi / 2 if right else math.pi + psi / 2
         mid = (pt[0] + (R + 1.5) * math.cos(a), pt[1] - (R + 1.5) * math.sin(a))
-        dirs = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
+        dirs: tuple[str, ...] = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
         lab, leader = occ.place_label_with_leader(mid, text, dirs, size_mm=TEXT_MM, gap_mm=0.8, within=within)
         els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-psi-{key}"))
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-psi-{key}"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-psi-{key}"))
     # kl written beside its dimension line, where it covers nothing
     kl_text = f"kl = {nt.number(res.kl_mm)} {nt.unit('mm')}"
-    a, b = np.asarray(dim.line_start), np.asarray(dim.line_end)
-    spots = [tuple((a + (b - a) * t).tolist()) for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)]
+    d0, d1 = np.asarray(dim.line_start), np.asarray(dim.line_end)
+    spots = [tuple((d0 + (d1 - d0) * t).tolist()) for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)]
     dirs = ("e", "w") if right else ("w", "e")
     lab = None
     for spot in spots:
@@ -339,7 +369,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     if lab is None:
         lab, leader = occ.place_label_with_leader(spots[0], kl_text, dirs, size_mm=TEXT_MM + 0.3, within=within)
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-kl"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-kl"))
     els.append(Text((lab.x, lab.y), kl_text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor, name=f"{prefix}label-kl"))
     # position numbers, away from the curve's middle
     cx, cy = float(X[:-1].mean()), float(Y[:-1].mean())
@@ -350,7 +380,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
                                                   gap_mm=1.0, within=within)
         els.append(Text((lab.x, lab.y), str(i), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}pos-{i}"))
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-pos-{i}"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-pos-{i}"))
     for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
         i = idx[0]
         p = P(X[i], Y[i])
@@ -360,7 +390,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         lab, leader = occ.place_label_with_leader(p, text, dirs, size_mm=TEXT_MM, gap_mm=2.5, within=within)
         els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-omega-{key}"))
         if leader is not None:
-            els.append(Line(*leader, style=Style(width_mm=0.13), name=f"{prefix}leader-omega-{key}"))
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-omega-{key}"))
     O1 = P(*res.O1_mm)
     if clip[0] <= O1[0] <= clip[2] and clip[1] <= O1[1] <= clip[3]:
         els.append(Point(O1, radius_mm=0.8, name=f"{prefix}point-O1"))
@@ -587,7 +617,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     T_hi = max(T_hi, float(dT_fine.max()))
     T_lo = min(T_lo, float(dT_fine.min()))
     M_hi, M_lo = dm.hi, dm.lo
-    W, H = x1 - x0, sheet.caption_y - sheet.top
+    W = x1 - x0
     # the rows: [M graph | turned J_e graph] over [ΔT graph | diagram]
     y_Jt = sheet.top + 14.0                                  # the turned graph's J_e axis
     d_bottom = sheet.caption_y - 10.0
@@ -637,7 +667,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     occ = sheet.occ
     page_probe = sheet.probe
     clip = page_probe.inner_box()
-    avoid = ()
+    avoid: tuple[tuple[float, float, float, float], ...] = ()
     if page_probe.title_block is not None:
         tb = page_probe.title_block.table(clip[2], clip[3])
         avoid = ((x0 - 20.0, tb.at[1], clip[2], clip[3]),)

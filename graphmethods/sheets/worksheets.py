@@ -39,10 +39,11 @@ import json
 import math
 import pathlib
 import re
-from dataclasses import dataclass, field, fields, replace
+from collections.abc import Callable
+from dataclasses import dataclass, fields, replace
 from fractions import Fraction
 from functools import cached_property
-from typing import Callable, ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -50,12 +51,23 @@ from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import flywheel
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.scene import Axis, Page, Scale, Scene, Table, Text, Vector, in_language, markup, nice_ticks
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Element, Line, Point, Polyline, Region, make_label
-from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Style
-from graphmethods.titles import Title
+from graphmethods.scene import (
+    Axis,
+    Page,
+    Scale,
+    Scene,
+    Table,
+    Text,
+    Vector,
+    in_language,
+    markup,
+    nice_ticks,
+    notation as get_notation,
+)
+from graphmethods.scene.elements import Element, Line, Point, Region, make_label
+from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Path, Polygon, Primitive, Style
 from graphmethods.sheets import answers
+from graphmethods.titles import Title
 from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
@@ -294,6 +306,7 @@ class Variant:
     """Base of the worksheet variants: an id, its data as a dict, its expected answers."""
 
     kind: ClassVar[str] = ""
+    __dataclass_fields__: ClassVar[dict[str, Any]]     # every variant is a dataclass (fields() reads them)
     seed: int
     number: int
 
@@ -434,7 +447,7 @@ class StepMomentVariant(_FlywheelVariant):
     def steps(self) -> list[tuple[float, float, float]]:
         """(φ from, φ to, M_r) in degrees and N·m for a step curve."""
         p, M = self.phi_deg, self.M_r
-        return [(p[i], p[i + 1], M[i]) for i in range(0, len(p) - 1) if p[i + 1] > p[i]]
+        return [(p[i], p[i + 1], M[i]) for i in range(len(p) - 1) if p[i + 1] > p[i]]
 
     def answers(self) -> dict:
         c, f = self.excess_work, self.flywheel
@@ -488,7 +501,7 @@ class PlanVariant(Variant):
 
     def vectors(self) -> dict[str, np.ndarray]:
         """Plan vectors (m/s) by plan label: ``{"p": (0, 0), "a": …, "b": …, "s2": …}``."""
-        out = {}
+        out: dict[str, np.ndarray] = {}
         for name in self.plan.order:
             out.setdefault(self.plan.label(name), np.asarray(self.plan.v(name)[0], dtype=float))
         return out
@@ -666,7 +679,8 @@ def _gen_step_moment(rng) -> dict:
             values = [int(rng.integers(1, 13)) * 5 for _ in range(cuts)]
             if any(a == b for a, b in zip(values, values[1:])):
                 continue
-            phi, M = [], []
+            phi: list[float] = []
+            M: list[float] = []
             for a, b, m in zip(bounds, bounds[1:], values):
                 phi += [a, b]
                 M += [m, m]
@@ -964,7 +978,7 @@ def ground(at, *, width_mm: float = 9.0, name: str = "ground") -> Shapes:
     """A fixed pivot: pin circle on a small triangle standing on a hatched base."""
     x, y = at
     base = y + 4.5
-    prims = [Path(((x, y), (x - 2.6, base), (x + 2.6, base)), THIN.with_(width_mm=0.35), closed=True),
+    prims: list[Primitive] = [Path(((x, y), (x - 2.6, base), (x + 2.6, base)), THIN.with_(width_mm=0.35), closed=True),
              Path(((x - width_mm / 2, base), (x + width_mm / 2, base)), THIN.with_(width_mm=0.35))]
     k = int(width_mm // 1.8)
     for i in range(k + 1):
@@ -999,7 +1013,7 @@ def arc(centre, radius: float, a0_deg: float, a1_deg: float, *, arrow: bool = Fa
     cx, cy = centre
     t = np.radians(np.linspace(a0_deg, a1_deg, max(8, int(abs(a1_deg - a0_deg) / 5) + 2)))
     pts = tuple(zip((cx + radius * np.cos(t)).tolist(), (cy - radius * np.sin(t)).tolist()))
-    prims = [Path(pts, style)]
+    prims: list[Primitive] = [Path(pts, style)]
     if arrow:
         end = np.array(pts[-1])
         d = end - np.array(pts[-2])
@@ -1065,7 +1079,7 @@ def staircase(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, 
         vecs.append(vec)
     for e in els + vecs:
         occ.add_primitives(e.primitives())
-    texts = []
+    texts: list[Element] = []
     for k in range(n + 1):
         at = (xs[0], y0) if k == 0 else (xs[k - 1], y(E[k]))
         dirs = ("w", "nw", "sw") if k == 0 else ("e", "ne", "se", "w", "nw", "sw", "n", "s")
@@ -1100,7 +1114,7 @@ def extremes(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, n
     def at(k):
         return (first_x + max(k - 1, 0) * step_mm, y0 - s_E.to_mm(float(E[k])))
 
-    els = []
+    els: list[Element] = []
     for k, key in ((i_max, "max"), (i_min, "min")):
         p = at(k)
         els.append(Line(p, (x_dim + 2.0, p[1]), style=DASHED, name=f"{name}-level-{key}"))
@@ -1228,7 +1242,7 @@ def moment_regions(frame, cycle, *, wrong: dict | None = None, nt="en", occ=None
         lab = occ.place_label((c.x, c.y), txt, ("n", "s", "e", "w", "ne", "se"), size_mm=SMALL_MM, gap_mm=0.5)
         els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                              name=f"{name}-student-{i + 1}"))
-    for key, curve, el in (("M_d", M_d, cd), ("M_r", M_r, cr)):
+    for key, _curve, el in (("M_d", M_d, cd), ("M_r", M_r, cr)):
         lab = occ.place_label(el.end, sym(key, nt), ("e", "ne", "se"), size_mm=TEXT_MM, gap_mm=1.5)
         els.append(Text((lab.x, lab.y), sym(key, nt), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-{key}-name"))
     return els
@@ -1366,7 +1380,8 @@ class _Sheet:
     def statement(self, fmt: dict) -> None:
         # each filled-in value (a scale, a number with its unit) stays on one line
         fmt = {k: v.replace(" ", NBSP) if isinstance(v, str) else v for k, v in fmt.items()}
-        parts = in_language(STATEMENTS[self.v.kind], self.nt)
+        # one tuple of paragraphs per language, picked alike (in_language's triple of texts, without fill)
+        parts: tuple[str, ...] = in_language(STATEMENTS[self.v.kind], self.nt)  # type: ignore[arg-type,assignment]
         self.paragraph(parts[0].format(**fmt), name="given")
         for k, task in enumerate(parts[1:]):
             self.paragraph(task.format(**fmt), indent=4.0, name=f"task-{k + 1}")
@@ -1728,7 +1743,6 @@ def _em_layout(v: EnergyMassVariant, top: float, H: float):
 
 
 def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
-    from graphmethods.sheets.layout import Occupancy
 
     sh = _Sheet(v, nt, key)
     nt = sh.nt
@@ -1783,7 +1797,7 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     return sh.scene((s_J, s_T))
 
 
-_PAGES = {"indicator": _indicator_page, "step-moment": _step_page, "velocity-plan": _plan_page,
+_PAGES: dict[str, Callable[..., Scene]] = {"indicator": _indicator_page, "step-moment": _step_page, "velocity-plan": _plan_page,
           "wittenbauer": _em_page}
 
 
@@ -1919,7 +1933,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "class"
     >>> [p.name for p in write_worksheet(worksheet("wittenbauer", variants=1, seed=3), out)]
     ['wittenbauer-en.pdf', 'wittenbauer-01-student.svg', 'wittenbauer-01-key.svg', 'wittenbauer-01.json', 'wittenbauer-answers.toml']
-    """
+    """  # noqa: E501 - a doctest's expected output is one line
     from graphmethods.render import pdf, svg
     from graphmethods.render.files import write_set
 
@@ -1943,6 +1957,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
         elif isinstance(obj, str):          # the blank answers file
             blobs[name] = obj.encode("utf-8")
         else:
+            assert isinstance(obj, Variant)     # the problem files
             blobs[name] = obj.to_json().encode("utf-8")
     if dxf:
         from graphmethods.render import dxf as dxf_writer

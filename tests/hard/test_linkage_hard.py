@@ -14,7 +14,7 @@ from graphmethods.kinematics.groups import GROUND, RPP, RRP, Guide
 from graphmethods.kinematics.linkage import Crank, Linkage
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
-from test_linkage_core import assert_matches_fd  # noqa: E402
+from test_linkage_core import assert_matches_fd
 
 
 def test_hard_slider_crank_at_its_dead_centre():
@@ -53,7 +53,7 @@ def test_hard_four_bar_1e_9_rad_from_a_toggle():
     s = lk.solve(phi, omega_1=1.0)
     th3, th4 = float(s.theta["2"][0]), float(s.theta["3"][0])
     assert abs(math.sin(th3 - th4)) < 1e-3          # nearly in line
-    from graphmethods.kinematics import FourBar     # the old class: ω from h (exact near the toggle)
+    from graphmethods.kinematics import FourBar  # the old class: ω from h (exact near the toggle)
     _, d_th = FourBar(l1=l1, l2=l2, l3=l3, l4=l4).derivatives(phi)
     assert abs(s.omega["3"][0] - d_th["O2B"][0]) <= 1e-6 * abs(d_th["O2B"][0])
     assert np.isfinite(s.epsilon["3"]).all() and abs(s.omega["3"][0]) > 10

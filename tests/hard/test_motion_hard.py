@@ -14,7 +14,7 @@ from graphmethods.dynamics.motor import DCMotor, motor_motion
 from graphmethods.errors import MotionError
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
-from test_motion_press import brute_force_flywheel, press_model  # noqa: E402
+from test_motion_press import brute_force_flywheel, press_model
 
 pytestmark = pytest.mark.hard
 

@@ -8,14 +8,13 @@ import sys
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.dynamics.motion import ReducedModel, exact_flywheel
 from graphmethods.dynamics.wittenbauer import wittenbauer, wittenbauer_from_model
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))
-from test_motion_press import press_model  # noqa: E402
+from test_motion_press import press_model
 
 pytestmark = pytest.mark.hard
 

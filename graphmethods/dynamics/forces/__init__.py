@@ -6,14 +6,7 @@ driver :func:`kinetostatics` (:mod:`.analysis`), the checks (:mod:`.lever`), and
 (:func:`case_forces`, :mod:`.problem`).
 """
 
-from graphmethods.dynamics.forces.analysis import (
-                                                   G_STANDARD,
-                                                   SOLVERS,
-                                                   ForceAnalysis,
-                                                   Inertia,
-                                                   Mass,
-                                                   kinetostatics,
-)
+from graphmethods.dynamics.forces.analysis import G_STANDARD, SOLVERS, ForceAnalysis, Inertia, Mass, kinetostatics
 from graphmethods.dynamics.forces.base import Force, ForcePlan, Polygon, Reaction
 from graphmethods.dynamics.forces.lever import Lever, power_balance, zhukovsky
 from graphmethods.dynamics.forces.problem import case_forces, working_load

@@ -167,7 +167,7 @@ class ForceAnalysis:
 def _carriers(lk: Any) -> tuple[dict[str, str], dict[str, tuple[str, str]]]:
     """Which link carries each joint (for the revolute pairs of later groups); joints shared by the two
     links of a group (the middle joint C) are ambiguous."""
-    one = {k: GROUND for k in lk.ground}
+    one = dict.fromkeys(lk.ground, GROUND)
     one[lk.crank.pin] = lk.crank.link
     two: dict[str, tuple[str, str]] = {}
     for p in lk.points:

@@ -21,12 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.dynamics.forces.analysis import (
-    G_STANDARD,
-    ForceAnalysis,
-    Mass,
-    kinetostatics,
-)
+from graphmethods.dynamics.forces.analysis import G_STANDARD, ForceAnalysis, Mass, kinetostatics
 from graphmethods.dynamics.forces.base import Force
 from graphmethods.dynamics.reduction import _diagrams, load_active
 from graphmethods.errors import InputError

@@ -89,10 +89,10 @@ class RPR(Group):
         tol = 1e-15 * max(abs(e), 1.0)
         if e == 0.0:
             bad = rho == 0.0
-            why = lambda i: f"{self.P} passes through the pivot {self.Q}: the slot's direction is undefined"  # noqa
+            why = lambda i: f"{self.P} passes through the pivot {self.Q}: the slot's direction is undefined"  # noqa: E731
         else:
             bad = rho < abs(e) - tol
-            why = lambda i: (f"|{self.P}{self.Q}| = {fmt(rho[i])} m is less than the slot's offset |e| = "  # noqa
+            why = lambda i: (f"|{self.P}{self.Q}| = {fmt(rho[i])} m is less than the slot's offset |e| = "  # noqa: E731
                              f"{fmt(abs(e))} m")
         self.fail(st, bad, why)
         s = self.branch * np.sqrt(np.maximum((rho - abs(e)) * (rho + abs(e)), 0.0))

@@ -29,8 +29,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import (GROUND, Group, Guide, Record, State, check_branch, check_length, cross,
-                                                 dot, fmt, solve2)
+from graphmethods.kinematics.groups.base import (
+    GROUND,
+    Group,
+    Guide,
+    Record,
+    State,
+    check_branch,
+    check_length,
+    cross,
+    dot,
+    fmt,
+    solve2,
+)
 
 
 @dataclass(frozen=True, eq=False)
@@ -154,7 +165,7 @@ class RRP(Group):
         if "a_rel" in rel:
             w = st.omega[self.links[0]]
             nP = -w * w * (c - st.z[P])
-            known = ((f"a_{P}", st.a[P]), (f"a^n_{C}{P}", nP))
+            known: tuple[tuple[str, np.ndarray], ...] = ((f"a_{P}", st.a[P]), (f"a^n_{C}{P}", nP))
             base = np.broadcast_to(rel["a_guide"], c.shape)
             eq = f"a_{C} = a_{P} + a^n_{C}{P} + a^τ_{C}{P}"
             if moving:
