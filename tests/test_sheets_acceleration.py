@@ -48,7 +48,9 @@ def test_drawn_vectors_times_mu_a_are_the_cores_accelerations(name):
             ref = complex(mo.a_[point][k])
             assert abs(drawn - ref) <= 1e-12 * max(abs(ref), 1.0), (name, k, point, drawn, ref)
             checked += 1
-        assert checked >= 2
+        distinct = {complex(round(plan.a(q).real, 9), round(plan.a(q).imag, 9)) for q in plan.labels
+                    if q not in lk.ground and abs(plan.a(q)) >= 1e-9}
+        assert checked >= min(2, len(distinct))        # a Scotch yoke has one image besides π
 
 
 def test_every_component_is_drawn_to_scale_and_the_table_says_so():

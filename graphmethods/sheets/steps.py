@@ -464,7 +464,7 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
             lname = f"line-{st_.point}-{SA._id(ln.through)}"
             names = [lname, f"label-{lname}"] + (eq_names if first else [])
             first = False
-            rules.append((_w(nt, "a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol), rel=f"{rel[0]} {to}"),
+            rules.append((_w(nt, "a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol), rel=f"{relation[0]} {to}"),
                           _leader_of(names)))
         found = [c for c in st_.components if not c.known]
         vals = ",  ".join(val(c) for c in found)
