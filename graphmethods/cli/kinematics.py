@@ -20,7 +20,7 @@ before the first file is written, so an error writes nothing.
 
     graphmethods kinematics press.json --figures out --lang ru --format pdf
 
-``--sheet FILE.svg|.pdf|.dxf`` writes the A1 (``--page A2``) kinematic-analysis sheet, the course
+``--sheet FILE.svg|.pdf|.dxf`` writes the A1 kinematic-analysis sheet, the course
 project's first sheet, in ``--lang``: the scheme in M positions, the velocity plans, the
 acceleration plans of ``--plan-positions K[,L,...]`` (default: a working-stroke and a return-stroke
 position) and the slider's kinematic diagrams when there is a slider
@@ -69,7 +69,8 @@ def add_parser(sub) -> None:
     p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
                    help="also write the kinematic-analysis sheet (scheme, velocity plans, acceleration plans, the "
                         "slider's diagrams; SVG, PDF or DXF, scale-true)")
-    p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
+    p.add_argument("--page", type=str.upper, choices=("A1",), default="A1",
+                   help="sheet size: A1 (the sheet's four parts need it)")
     p.add_argument("--plan-positions", default=None, metavar="K[,L,...]",
                    help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
                         "and a return-stroke position)")
@@ -355,8 +356,8 @@ def run(args) -> int:
         ks = None if args.plan_positions is None else _position_list(args.plan_positions)
         sheet_data = scene_bytes(kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page,
                                                           notation=args.lang), sheet)
-    elif args.plan_positions is not None or args.page != "A1":
-        raise InputError("--plan-positions and --page apply to the sheet; add --sheet FILE")
+    elif args.plan_positions is not None:
+        raise InputError("--plan-positions applies to the sheet; add --sheet FILE")
     res = table(case, args.positions, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=args.n)
     written = []
     if args.figures is not None and phi_deg is not None:

@@ -503,8 +503,10 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
                            f"label-{mlabel}"))
     cr = lk.crank
     Mb = float(fa.M_balance[i])
-    els.append(RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
-                             label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b"))
+    arc_b = RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
+                          label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b")
+    els.append(arc_b)
+    occ.add_primitives(arc_b.primitives())        # the labels below keep off M_b's arc and its name
     for where, text, nm in labels:
         els += _label(occ, where, text, nm, within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
     tx = split + 2.0

@@ -1,4 +1,4 @@
-"""The course project's first sheet: the kinematic analysis of a linkage, on A1 or A2.
+"""The course project's first sheet: the kinematic analysis of a linkage, on A1.
 
 Top left: the kinematic scheme in m positions (:func:`~graphmethods.sheets.kinematics.kinematic_scheme`);
 top right: the velocity plans of every position (:func:`~graphmethods.sheets.kinematics.velocity_plan_grid`);
@@ -9,7 +9,7 @@ s(φ), v(φ), a(φ) when the linkage has a slider (:func:`~graphmethods.sheets.c
 Each part keeps its own scales, written under it; the title block names the scheme's.
 
 >>> from graphmethods.problems import builtin
->>> s = kinematic_analysis_sheet(builtin.case("press"), page="A2")
+>>> s = kinematic_analysis_sheet(builtin.case("press"))
 >>> [e.name for e in s.elements][1:]
 ['scheme', 'velocity-plans', 'acceleration-plan-1', 'acceleration-plan-9', 'kinematic-diagrams']
 """
@@ -20,10 +20,11 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Scene, in_language
+from graphmethods.scene import Page, Scene, in_language
 from graphmethods.scene import notation as get_notation
 from graphmethods.sheets.composition import inset, region_page
-from graphmethods.sheets.force_analysis_sheet import _case, sheet_page
+from graphmethods.sheets.force_analysis_sheet import _case
+from graphmethods.sheets.force_analysis_sheet import sheet_page as _sheet_page
 from graphmethods.sheets.layout import Sheet
 
 _W = {"title": ("Kinematic analysis", "Кинематический анализ", "运动分析")}
@@ -67,13 +68,15 @@ def kinematic_analysis_sheet(subject, *, m: int = 12, plan_positions=None, page=
     plan_positions : sequence of int, optional
         The positions (0…m−1) whose acceleration plans are drawn, 1 to 4 of them; by default
         :func:`default_plan_positions`.
-    page : {"A1", "A2"} or Page
+    page : "A1" or Page
+        A1 landscape with a frame (A2 leaves the slider's diagrams and the acceleration plans too little
+        room: refused).
     notation : {"en", "ru", "zh"}
 
     Raises
     ------
     InputError
-        A plan position outside 0…m−1, repeated, more than four; a page other than A1/A2.
+        A plan position outside 0…m−1, repeated, more than four; a page other than A1.
     """
     from graphmethods.sheets.acceleration import acceleration_plan
     from graphmethods.sheets.calculus import kinematic_diagrams
@@ -92,7 +95,10 @@ def kinematic_analysis_sheet(subject, *, m: int = 12, plan_positions=None, page=
     if len(set(ks)) != len(ks):
         raise InputError(f"plan positions {ks!r}: each position once")
     ks = [int(k) for k in ks]
-    pg = sheet_page(page, "kinematic-analysis")
+    if not isinstance(page, Page) and str(page).upper() != "A1":
+        raise InputError(f"page {page!r}: the kinematic-analysis sheet holds four parts (scheme, velocity plans, "
+                         f"acceleration plans, the slider's diagrams) and is drawn on A1")
+    pg = _sheet_page(page, "kinematic-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or in_language(_W["title"], nt), problem=title_of(case),
                   title_block=title_block, default_page=pg)
     x0, _, x1, _ = sheet.box
