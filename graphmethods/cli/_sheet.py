@@ -5,6 +5,7 @@ from __future__ import annotations
 import pathlib
 
 from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.scene import Scene
 
 SUFFIXES = (".svg", ".pdf", ".dxf")
 
@@ -26,7 +27,7 @@ def check_sheet_target(text: str, force: bool) -> pathlib.Path:
     return path
 
 
-def scene_bytes(scene, path: pathlib.Path) -> bytes:
+def scene_bytes(scene: Scene, path: pathlib.Path) -> bytes:
     """The scene as the file ``path`` names it: SVG, PDF or DXF."""
     suffix = path.suffix.lower()
     if suffix == ".pdf":

@@ -6,7 +6,7 @@ size whose inner box is one region (no frame, no title block), so the figure dra
 the sheet's own coordinates inside that region, with its own heading and scale captions. The
 figure's elements are then gathered under one named group by :func:`inset`.
 
->>> from graphmethods.scene import Page
+>>> from graphmethods.scene import Page, Scene
 >>> p = region_page(Page("A1", "landscape"), (20.0, 30.0, 300.0, 200.0))
 >>> p.inner_box(), p.content_box(), p.frame, p.title_block is None
 ((20.0, 30.0, 300.0, 200.0), (20.0, 30.0, 300.0, 200.0), False, True)
@@ -15,7 +15,7 @@ figure's elements are then gathered under one named group by :func:`inset`.
 from __future__ import annotations
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Page
+from graphmethods.scene import Page, Scene
 from graphmethods.scene.elements import Group
 from graphmethods.scene.scale import Scale
 
@@ -45,7 +45,7 @@ def region_page(sheet_page: Page, box: Box) -> Page:
     return Page(sheet_page.size, sheet_page.orientation, margins_mm=(y0, W - x1, H - y1, x0), frame=False)
 
 
-def inset(scene, name: str) -> tuple[Group, tuple[Scale, ...]]:
+def inset(scene: Scene, name: str) -> tuple[Group, tuple[Scale, ...]]:
     """A figure drawn on a :func:`region_page`, as one group ``name`` of the sheet, and its scales.
 
     >>> from graphmethods.scene import Scene, Text

@@ -16,6 +16,8 @@ differences in per cent. Each part keeps its own scales, written under it and in
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from graphmethods.errors import InputError
@@ -38,7 +40,7 @@ _W = {
 }
 
 
-def _case(subject):
+def _case(subject: Any) -> Any:
     """The problem Case of a Case or a Study."""
     case = getattr(subject, "case", subject)
     if not hasattr(case, "linkage"):
@@ -47,7 +49,7 @@ def _case(subject):
     return case
 
 
-def sheet_page(page, what: str) -> Page:
+def sheet_page(page: str | Page, what: str) -> Page:
     """A1 or A2 landscape with a frame (a left binding margin of 20 mm), or the Page given."""
     if isinstance(page, Page):
         return page
@@ -57,9 +59,9 @@ def sheet_page(page, what: str) -> Page:
     return Page(size, "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True)
 
 
-def force_analysis_sheet(subject, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
-                         gravity: bool = False, page="A1", notation="en", title=None, title_block: bool = True,
-                         name: str = "force-analysis") -> Scene:
+def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                         gravity: bool = False, page: str | Page = "A1", notation: Any = "en",
+                         title: str | None = None, title_block: bool = True, name: str = "force-analysis") -> Scene:
     """The force-analysis sheet of one position (see the module docstring).
 
     Parameters
@@ -95,12 +97,10 @@ def force_analysis_sheet(subject, position: int | None = None, *, phi_deg: float
         fa = case_forces(case, m=m, gravity=gravity)
         i = int(k)
         head = in_language(_W["title"], nt, k=i)
-        where = {"position": i, "m": m}
     else:
         fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
         i = 0
         head = in_language(_W["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
-        where = {"phi_deg": float(phi_deg)}
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
@@ -123,12 +123,12 @@ def force_analysis_sheet(subject, position: int | None = None, *, phi_deg: float
     gap = 8.0
     split_x = x0 + 0.42 * (x1 - x0)            # the scheme: the left column, the whole height
     split_y = top + 0.5 * H                    # the lever and the result over the force plans
-    part = {"notation": nt, "title_block": False, "gravity": gravity}
-    pos = {"position": where["position"], "m": m} if "position" in where else {"phi_deg": where["phi_deg"]}
-    s_scheme = force_scheme(case, **pos, **part, page=region_page(pg, (x0, top, split_x - gap / 2, bottom)))
-    s_lever = zhukovsky_forces(case, **pos, **part,
+    at_k = i if phi_deg is None else None
+    kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
+    s_scheme = force_scheme(case, at_k, **kw, page=region_page(pg, (x0, top, split_x - gap / 2, bottom)))
+    s_lever = zhukovsky_forces(case, at_k, **kw,
                                page=region_page(pg, (split_x + gap / 2, top, x1 - col_w - gap, split_y)))
-    s_plans = force_plans(case, **pos, **part, page=region_page(pg, (split_x + gap / 2, split_y + gap, x1, bottom)))
+    s_plans = force_plans(case, at_k, **kw, page=region_page(pg, (split_x + gap / 2, split_y + gap, x1, bottom)))
     g_scheme, sc1 = inset(s_scheme, "scheme")
     g_lever, sc2 = inset(s_lever, "lever")
     g_plans, sc3 = inset(s_plans, "plans")

@@ -16,12 +16,16 @@ Each part keeps its own scales, written under it; the title block names the sche
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any
+
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scene, in_language
+from graphmethods.scene import Page, Scale, Scene, in_language
 from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.force_analysis_sheet import _case
 from graphmethods.sheets.force_analysis_sheet import sheet_page as _sheet_page
@@ -33,7 +37,7 @@ _W = {"title": ("Kinematic analysis", "Кинематический анализ
 MAX_PLANS = 4
 
 
-def default_plan_positions(case, m: int = 12) -> tuple[int, int]:
+def default_plan_positions(case: Any, m: int = 12) -> tuple[int, int]:
     """Two positions whose acceleration plans the sheet draws: on the working stroke the one whose velocity
     plan is the fullest figure, and the middle position of the return stroke (extreme positions left out);
     a linkage without extreme positions: the quarter and three quarters of the turn.
@@ -55,7 +59,8 @@ def default_plan_positions(case, m: int = 12) -> tuple[int, int]:
     return (int(work), int(back[len(back) // 2]))
 
 
-def kinematic_analysis_sheet(subject, *, m: int = 12, plan_positions=None, page="A1", notation="en", title=None,
+def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Sequence[int] | None = None,
+                             page: str | Page = "A1", notation: Any = "en", title: str | None = None,
                              title_block: bool = True, name: str = "kinematic-analysis") -> Scene:
     """The kinematic-analysis sheet (see the module docstring).
 
@@ -106,14 +111,13 @@ def kinematic_analysis_sheet(subject, *, m: int = 12, plan_positions=None, page=
     gap = 8.0
     split_y = top + 0.52 * (bottom - top)
     split_x = x0 + 0.45 * (x1 - x0)
-    part = {"notation": nt, "title_block": False, "m": m}
-    s_scheme = kinematic_scheme(case, **part, page=region_page(pg, (x0, top, split_x - gap / 2, split_y)))
-    s_vel = velocity_plan_grid(case, **part, page=region_page(pg, (split_x + gap / 2, top, x1, split_y)))
+    s_scheme = kinematic_scheme(case, notation=nt, title_block=False, m=m, page=region_page(pg, (x0, top, split_x - gap / 2, split_y)))
+    s_vel = velocity_plan_grid(case, notation=nt, title_block=False, m=m, page=region_page(pg, (split_x + gap / 2, top, x1, split_y)))
     parts = [(s_scheme, "scheme"), (s_vel, "velocity-plans")]
     lower = (split_y + gap, bottom)
     right = x1
     try:
-        probe = kinematic_diagrams(case, **part, page=region_page(pg, (x1 - 0.4 * (x1 - x0), *lower[:1], x1,
+        probe = kinematic_diagrams(case, notation=nt, title_block=False, m=m, page=region_page(pg, (x1 - 0.4 * (x1 - x0), *lower[:1], x1,
                                                                        lower[1])))
     except InputError:                  # no slider: the acceleration plans take the whole row
         probe = None
@@ -122,11 +126,12 @@ def kinematic_analysis_sheet(subject, *, m: int = 12, plan_positions=None, page=
     w = (right - x0 - gap * (len(ks) - 1)) / len(ks)
     for j, k in enumerate(ks):
         left = x0 + j * (w + gap)
-        parts.append((acceleration_plan(case, k, **part, page=region_page(pg, (left, lower[0], left + w, lower[1]))),
+        parts.append((acceleration_plan(case, k, notation=nt, title_block=False, m=m, page=region_page(pg, (left, lower[0], left + w, lower[1]))),
                       f"acceleration-plan-{k}"))
     if probe is not None:
         parts.append((probe, "kinematic-diagrams"))
-    groups, scales = [], ()
+    groups: list[Group] = []
+    scales: tuple[Scale, ...] = ()
     for scene, nm in parts:
         g, sc = inset(scene, nm)
         groups.append(g)
