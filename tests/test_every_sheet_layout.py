@@ -36,7 +36,8 @@ LANGS = ("en", "ru", "zh")
 
 LINKAGE_FIGURES = ("kinematic_scheme", "velocity_plan_grid", "velocity_plan", "velocity_table", "inertia_graph",
                    "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
-                   "wittenbauer_diagram", "dynamic_analysis_sheet", "kinematic_diagrams", "work_diagrams")
+                   "wittenbauer_diagram", "dynamic_analysis_sheet", "kinematic_diagrams", "work_diagrams",
+                   "force_analysis_sheet", "kinematic_analysis_sheet")
 CYCLE_FIGURES = ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph", "work_diagrams")
 
 _NO_SLIDER = "the slider's diagrams need a linkage with one slider"

@@ -13,6 +13,11 @@ crank from the force plans, N·m, counterclockwise +), ``"M_balance_lever"`` (Zh
 ``"M_balance_power"`` (the power balance) and their differences in per cent, and ``"pairs"``
 (where each reaction acts; a prismatic pair's couple and the offset h of its normal force).
 Without ``--json`` the same as a table, in ``--lang en|ru|zh``.
+
+``--sheet FILE.svg|.pdf|.dxf`` also writes the A1 (``--page A2``) force-analysis sheet of that
+position, in ``--lang``: the scheme with every force, the force plans, Zhukovsky's lever and the
+result table (:func:`graphmethods.sheets.force_analysis_sheet.force_analysis_sheet`), at the file's
+mean speed with ε₁ = 0. An existing file is kept unless ``--force``; on any error nothing is written.
 """
 
 from __future__ import annotations
@@ -63,7 +68,12 @@ def add_parser(sub) -> None:
     p.add_argument("--epsilon-1", type=float, default=0.0, metavar="E",
                    help="crank angular acceleration, rad/s², + when the crank speeds up (default 0)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language of the table (default en)")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
+                   help="language of the table and the sheet (default en)")
+    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
+                   help="also write the force-analysis sheet of this position (SVG, PDF or DXF, scale-true)")
+    p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
     p.set_defaults(func=run)
 
 
@@ -158,7 +168,23 @@ def run(args) -> int:
         raise InputError(f"--epsilon-1 must be a finite angular acceleration in rad/s², got {args.epsilon_1}")
     if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
         raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
+    sheet = None
+    if args.sheet is not None:
+        from graphmethods.cli._sheet import check_sheet_target
+
+        if args.n is not None or args.epsilon_1 != 0.0:
+            raise InputError("--sheet draws the file's mean speed with ε₁ = 0; leave out --n and --epsilon-1 "
+                             "(or run them without --sheet)")
+        sheet = check_sheet_target(args.sheet, args.force)
     case = builtin.case(args.case)
+    data = None
+    if sheet is not None:
+        from graphmethods.cli._sheet import scene_bytes
+        from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
+
+        scene = force_analysis_sheet(case, args.position, phi_deg=args.phi_deg, m=m, gravity=args.gravity,
+                                     page=args.page, notation=args.lang)
+        data = scene_bytes(scene, sheet)
     res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=args.n,
                  epsilon_1=args.epsilon_1)
     if args.json:
@@ -166,4 +192,11 @@ def run(args) -> int:
     else:
         check_finite({k: v for k, v in res.items() if k != "pairs"})
         print(_text(res, args.lang))
+    if data is not None and sheet is not None:     # written last: an error above leaves no file behind
+        import sys
+
+        from graphmethods.render.files import write_atomic
+
+        write_atomic(sheet, data, overwrite=args.force)
+        print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

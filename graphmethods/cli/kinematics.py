@@ -19,6 +19,15 @@ svg|pdf|png|dxf``. Existing files are never replaced without ``--force``; every 
 before the first file is written, so an error writes nothing.
 
     graphmethods kinematics press.json --figures out --lang ru --format pdf
+
+``--sheet FILE.svg|.pdf|.dxf`` writes the A1 kinematic-analysis sheet, the course
+project's first sheet, in ``--lang``: the scheme in M positions, the velocity plans, the
+acceleration plans of ``--plan-positions K[,L,...]`` (default: a working-stroke and a return-stroke
+position) and the slider's kinematic diagrams when there is a slider
+(:func:`graphmethods.sheets.kinematic_analysis_sheet.kinematic_analysis_sheet`), at the file's mean
+speed with ε₁ = 0. An existing file is kept unless ``--force``; on any error nothing is written.
+
+    graphmethods kinematics shaper --sheet shaper-kinematics.pdf --plan-positions 2,9
 """
 
 from __future__ import annotations
@@ -58,6 +67,14 @@ def add_parser(sub) -> None:
     p.add_argument("--plan-position", type=int, default=None, metavar="K",
                    help="the position drawn as one large velocity plan (default: the fullest plan of the working "
                         "stroke)")
+    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
+                   help="also write the kinematic-analysis sheet (scheme, velocity plans, acceleration plans, the "
+                        "slider's diagrams; SVG, PDF or DXF, scale-true)")
+    p.add_argument("--page", type=str.upper, choices=("A1",), default="A1",
+                   help="sheet size: A1 (the sheet's four parts need it)")
+    p.add_argument("--plan-positions", default=None, metavar="K[,L,...]",
+                   help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
+                        "and a return-stroke position)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     p.set_defaults(func=run)
 
@@ -80,6 +97,20 @@ def _phi_list(text: str) -> list[float]:
         if not math.isfinite(x):
             raise InputError(f"--phi-deg: {part.strip()!r} must be a finite angle in degrees")
         out.append(x)
+    return out
+
+
+def _position_list(text: str) -> list[int]:
+    """Position numbers from ``--plan-positions K[,L,...]``."""
+    from graphmethods.errors import InputError
+
+    out = []
+    for part in str(text).split(","):
+        try:
+            out.append(int(part))
+        except ValueError:
+            raise InputError(f"--plan-positions: {part.strip()!r} is not a position number; give e.g. 2 or 2,9"
+                             ) from None
     return out
 
 
@@ -298,6 +329,21 @@ def run(args) -> int:
     if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
         raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
     phi_deg = None if args.phi_deg is None else _phi_list(args.phi_deg)
+    sheet, sheet_data = None, None
+    if args.sheet is not None:
+        from graphmethods.cli._sheet import check_sheet_target, scene_bytes
+        from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
+
+        if phi_deg is not None or args.n is not None or args.epsilon_1 != 0.0:
+            raise InputError("--sheet draws the positions 0…M at the file's mean speed with ε₁ = 0; leave out "
+                             "--phi-deg, --n and --epsilon-1 (or run them without --sheet)")
+        count(args.positions, "--positions", low=3, high=FIGURES_MAX_POSITIONS, why="the sheet draws every position")
+        sheet = check_sheet_target(args.sheet, args.force)
+        ks = None if args.plan_positions is None else _position_list(args.plan_positions)
+        sheet_data = scene_bytes(kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page,
+                                                          notation=args.lang), sheet)
+    elif args.plan_positions is not None:
+        raise InputError("--plan-positions applies to the sheet; add --sheet FILE")
     res = table(case, args.positions, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=args.n)
     written = []
     if args.figures is not None and phi_deg is not None:
@@ -308,8 +354,10 @@ def run(args) -> int:
         written = write_figures(case, args.positions, args.figures, stem=pathlib.Path(args.case).stem,
                                 notation=args.lang, fmt=args.fig_format, plan_position=args.plan_position,
                                 overwrite=args.force, epsilon_1=args.epsilon_1)
-    elif args.force or args.plan_position is not None or args.lang != "en" or args.fig_format != "svg":
-        raise InputError("--lang, --format, --plan-position and --force apply to the figures; add --figures DIR")
+    elif args.plan_position is not None or args.fig_format != "svg" or (
+            sheet is None and (args.force or args.lang != "en")):
+        raise InputError("--lang, --format, --plan-position and --force apply to the figures; add --figures DIR "
+                         "(--lang and --force also to --sheet FILE)")
     if args.json:
         if written:
             res["figures"] = [str(p) for p in written]
@@ -319,4 +367,11 @@ def run(args) -> int:
         print(_text(res))
         for p in written:
             print(f"wrote {p}")
+    if sheet is not None and sheet_data is not None:      # written last: an error above leaves no file behind
+        import sys
+
+        from graphmethods.render.files import write_atomic
+
+        write_atomic(sheet, sheet_data, overwrite=args.force)
+        print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

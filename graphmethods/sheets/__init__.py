@@ -10,7 +10,10 @@
   :func:`delta_T_graph`, :func:`speed_graph`, :func:`acceleration_graph`, :func:`zhukovsky_lever`;
 - the flywheel (:mod:`~graphmethods.sheets.wittenbauer`): :func:`wittenbauer_diagram`,
   :func:`dynamic_analysis_sheet`;
-- graphical calculus (:mod:`~graphmethods.sheets.calculus`): :func:`kinematic_diagrams`, :func:`work_diagrams`.
+- graphical calculus (:mod:`~graphmethods.sheets.calculus`): :func:`kinematic_diagrams`, :func:`work_diagrams`;
+- the course project's A1 sheets: :func:`kinematic_analysis_sheet` (the first,
+  :mod:`~graphmethods.sheets.kinematic_analysis_sheet`) and :func:`force_analysis_sheet` (the second,
+  :mod:`~graphmethods.sheets.force_analysis_sheet`).
 
 Every function takes keyword scales (picked and captioned when not given) and ``notation="en"|"ru"|"zh"``.
 
@@ -32,13 +35,16 @@ from graphmethods.sheets.dynamics import (
                                           zhukovsky_lever,
 )
 from graphmethods.sheets.energy import energy_graph, energy_indicator, excess_work_table, moment_diagram
+from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
+from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
 from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan, velocity_plan_grid, velocity_table
 from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, wittenbauer_diagram
 
 __all__ = [
     "acceleration_graph", "acceleration_plan", "acceleration_plan_grid", "acceleration_table", "delta_T_graph",
     "dynamic_analysis_sheet", "energy_graph", "energy_indicator",
-    "excess_work_table", "inertia_graph", "kinematic_diagrams", "kinematic_scheme", "moment_diagram",
+    "excess_work_table", "force_analysis_sheet", "inertia_graph", "kinematic_analysis_sheet",
+    "kinematic_diagrams", "kinematic_scheme", "moment_diagram",
     "moment_graph", "speed_graph", "velocity_plan", "velocity_plan_grid", "velocity_table", "wittenbauer_diagram",
     "work_diagrams", "zhukovsky_lever",
 ]

@@ -4,7 +4,9 @@ For each Assur group, in the order they are solved (the last group first), the g
 plan as the course draws it: the known forces laid head to tail (solid; the tangential parts
 found first from the moments about the middle joint, the inertia forces, weights, the load, the
 reactions of the groups solved before), closed by the unknowns (dashed) along their directions
-(thin lines through the ends); then the crank's polygon closed by R_01. One scale μ_F for every
+(thin lines through the ends), and on it each link's own polygon closed by the inner reaction
+(``R_12 + F_i2 + R_32 = 0``: R_12 and R_32 dashed between the group polygon's vertices); then the
+crank's polygon closed by R_01. One scale μ_F for every
 polygon, a convenient value picked to fit (reported). Beside them: every reaction's magnitude
 and the balancing moment from the force plans, Zhukovsky's lever and the power balance, with
 their differences in per cent.
@@ -53,14 +55,70 @@ def _w(key: str, nt, **fill) -> str:
     return in_language(_W[key], nt, **fill)
 
 
-def _markup(label: str) -> str:
-    """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}``, ``R_01@…`` → ``R_{01}``."""
+#: the inertia and balancing subscripts as the books write them: Russian F_и, M_и, F_ур, M_ур; Chinese F_I, M_I
+_SUBSCRIPTS = {"ru": {"i": "и", "b": "ур"}, "zh": {"i": "I"}}
+
+
+def _markup(label: str, nt=None) -> str:
+    """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}`` (ru ``F_{и2}``, zh ``F_{I2}``), ``F_b`` → ``F_{b}``
+    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``.
+
+    >>> _markup("F_i2"), _markup("M_i3", "ru"), _markup("F_i2", "zh"), _markup("F_b", "ru")
+    ('F_{i2}', 'M_{и3}', 'F_{I2}', 'F_{ур}')
+    """
     label = label.split("@")[0]
     m = re.fullmatch(r"([A-Za-z]+)(\^[^_]+)?_(.+)", label)
     if not m:
         return label
     sup = "^{" + m.group(2)[1:] + "}" if m.group(2) else ""
-    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
+    sub = m.group(3)
+    code = None if nt is None else (nt if isinstance(nt, str) else nt.code)
+    words = _SUBSCRIPTS.get(code or "", {})
+    if m.group(1) in ("F", "M") and not sup:
+        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()) and "i" in words:
+            sub = words["i"] + sub[1:]
+        elif sub == "b" and "b" in words:
+            sub = words["b"]
+    return f"{m.group(1)}{sup}_{{{sub}}}"
+
+
+def _inner_sides(poly, inner, pts: np.ndarray, i: int) -> list:
+    """The sides of a link's own polygon (the inner reaction's: ``R_12 + F_i2 + R_32 = 0``) not already drawn
+    in its group's polygon, laid on that polygon: the first force they share is made to coincide, so the
+    inner reaction closes between two of the group polygon's vertices, as the books draw it. Each side is
+    ``((label, F), z_start, z_end)`` in N (complex). None when the two share no force after the first side.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.dynamics.forces import case_forces
+    >>> pl = case_forces(builtin.case("press"), m=12).plans[0]
+    >>> pts = np.cumsum([0j] + [complex(F[3]) for _, F in pl.polygons[0].known]
+    ...                 + [complex(F[3]) for _, _, F in pl.polygons[0].closing])
+    >>> [lbl for (lbl, _), _, _ in _inner_sides(pl.polygons[0], pl.polygons[1], pts, 3)]
+    ['R_12', 'R_32']
+    """
+    main = [lbl for lbl, _ in poly.known]
+    drawn = set(main) | {lbl for lbl, _, _ in poly.closing}
+    sides = [(lbl, F) for lbl, F in inner.known] + [(lbl, F) for lbl, _, F in inner.closing]
+    for q, (lbl, _) in enumerate(sides):
+        if q > 0 and lbl in main:
+            z = complex(pts[main.index(lbl)]) - sum(complex(F[i]) for _, F in sides[:q])
+            out = []
+            for lb, F in sides:
+                z1 = z + complex(F[i])
+                if lb not in drawn:
+                    out.append(((lb, F), z, z1))
+                z = z1
+            return out
+    return []
+
+
+def _label(occ, where, text: str, name: str, *, within) -> list:
+    """A label beside its point, or further off with a leader line when nothing beside it is free."""
+    lab, leader = occ.place_label_with_leader(where, text, size_mm=SMALL_MM, within=within)
+    out: list = [Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=name)]
+    if leader is not None:
+        out.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{name}"))
+    return out
 
 
 def force_plans(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
@@ -166,7 +224,7 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
                 v = Vector(a, b, known=known, head_length_mm=2.5, name=f"{kind}-{j}-{s - (0 if known else len(poly.known))}")
                 els.append(v)
                 occ.add_primitives(v.primitives())
-                labels.append((v.mid, _markup(lbl), f"label-{j}-{s}"))
+                labels.append((v.mid, _markup(lbl, nt), f"label-{j}-{s}"))
             if direction is not None:
                 u = complex(direction[i])
                 e = np.array([u.real, -u.imag])
@@ -174,16 +232,22 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
                 ln = Line(tuple((A - 6.0 * e).tolist()), tuple((B + 6.0 * e).tolist()) if math.dist(a, b) >= 0.3
                           else tuple((A + 6.0 * e).tolist()), style=THIN, name=f"direction-{j}-{s}")
                 els.append(ln)
+        for t, inner in enumerate(pl.polygons[1:]):
+            for (lbl, _F), z0, z1 in _inner_sides(poly, inner, pts, i):
+                a, b = at(z0), at(z1)
+                if math.dist(a, b) >= 0.3:
+                    v = Vector(a, b, known=False, head_length_mm=2.5, name=f"inner-{j}-{t}-{lbl}")
+                    els.append(v)
+                    occ.add_primitives(v.primitives())
+                    labels.append((v.mid, _markup(lbl, nt), f"label-inner-{j}-{t}-{lbl}"))
     for mid, text, nm in labels:
-        lab = occ.place_label(mid, text, size_mm=SMALL_MM, within=(area[0] - 4, area[1] - 2, area[2] + 4,
-                                                                    area[3] + 4))
-        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
+        els += _label(occ, mid, text, nm, within=(area[0] - 4, area[1] - 2, area[2] + 4, area[3] + 4))
     tx = split + 2.0
     table = Table((tx, sheet.top + 2.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0, name="table")
     els.append(table)
     ty = table.bottom_left[1] + 7.0
-    for t_i, t in enumerate(res_lines):
-        els.append(Text((tx, ty + t_i * 5.6), t, size_mm=TEXT_MM, name=f"result-{t_i}"))
+    for t_i, line in enumerate(res_lines):
+        els.append(Text((tx, ty + t_i * 5.6), line, size_mm=TEXT_MM, name=f"result-{t_i}"))
     scales = (s_F,)
     els += sheet.captions(scales, legend=_w("legend", nt), reserve=True)
     return sheet.scene(els, scales, name=name, notes=(s_F.note,) if s_F.note else ())
@@ -293,12 +357,10 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
         v = Vector(a, b, known=True, head_length_mm=2.5, name="F_b" if label == "F_b" else f"force-{j}")
         els.append(v)
         occ.add_primitives(v.primitives())
-        vec_labels.append((b, _markup(label), f"label-force-{j}"))
+        vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
     for where, text, nm in [(pole, "p", "label-pole")] + names + vec_labels:
-        lab = occ.place_label(where, _markup(text) if "_" not in text else text, size_mm=SMALL_MM,
-                              within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
-        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
+        els += _label(occ, where, text, nm, within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
     tx = split + 2.0
     for t_i, t in enumerate(texts):
         els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
@@ -424,23 +486,23 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
             n_f += 1
             els.append(v)
             occ.add_primitives(v.primitives())
-            labels.append((tip, _markup(label), f"label-{label}"))
+            labels.append((tip, _markup(label, nt), f"label-{label}"))
         if M != 0.0:
             mlabel = "M" + label[1:] if label.startswith("F") else label
             arc = RotationArrow(start, radius_mm=6.0, start_deg=200.0, sweep_deg=100.0 if M > 0 else -100.0,
                                 name=f"moment-{mlabel}")
             els.append(arc)
             occ.add_primitives(arc.primitives())
-            labels.append(((start[0] - 6.0, start[1]), f"{_markup(mlabel)} = {nt.number(M, sig=4)} {nt.unit('N·m')}",
+            labels.append(((start[0] - 6.0, start[1]), f"{_markup(mlabel, nt)} = {nt.number(M, sig=4)} {nt.unit('N·m')}",
                            f"label-{mlabel}"))
     cr = lk.crank
     Mb = float(fa.M_balance[i])
-    els.append(RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
-                             label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b"))
+    arc_b = RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
+                          label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b")
+    els.append(arc_b)
+    occ.add_primitives(arc_b.primitives())        # the labels below keep off M_b's arc and its name
     for at_mm, text, nm in labels:
-        lab = occ.place_label(at_mm, text, size_mm=SMALL_MM, within=(area[0] - 4, area[1] - 4, area[2] + 4,
-                                                                      area[3] + 4))
-        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=nm))
+        els += _label(occ, at_mm, text, nm, within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
     tx = split + 2.0
     for t_i, t in enumerate(texts):
         els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))

@@ -1,0 +1,145 @@
+"""The course project's first sheet: the kinematic analysis of a linkage, on A1.
+
+Top left: the kinematic scheme in m positions (:func:`~graphmethods.sheets.kinematics.kinematic_scheme`);
+top right: the velocity plans of every position (:func:`~graphmethods.sheets.kinematics.velocity_plan_grid`);
+below: the acceleration plan of each chosen position with every construction line
+(:func:`~graphmethods.sheets.acceleration.acceleration_plan`; by default two: the fullest plan of the
+working stroke and the middle of the return stroke), and at the right the slider's kinematic diagrams
+s(φ), v(φ), a(φ) when the linkage has a slider (:func:`~graphmethods.sheets.calculus.kinematic_diagrams`).
+Each part keeps its own scales, written under it; the title block names the scheme's.
+
+>>> from graphmethods.problems import builtin
+>>> s = kinematic_analysis_sheet(builtin.case("press"))
+>>> [e.name for e in s.elements][1:]
+['scheme', 'velocity-plans', 'acceleration-plan-1', 'acceleration-plan-9', 'kinematic-diagrams']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.problems.reference_cases import title_of
+from graphmethods.scene import Page, Scale, Scene, in_language, notation as get_notation
+from graphmethods.scene.elements import Group
+from graphmethods.sheets.composition import inset, region_page
+from graphmethods.sheets.force_analysis_sheet import _case, sheet_page as _sheet_page
+from graphmethods.sheets.layout import Sheet
+
+_W = {"title": ("Kinematic analysis", "Кинематический анализ", "运动分析")}
+
+#: most acceleration plans one sheet draws (each needs a readable share of the lower row)
+MAX_PLANS = 4
+
+
+def default_plan_positions(case: Any, m: int = 12) -> tuple[int, int]:
+    """Two positions whose acceleration plans the sheet draws: on the working stroke the one whose velocity
+    plan is the fullest figure, and the middle position of the return stroke (extreme positions left out);
+    a linkage without extreme positions: the quarter and three quarters of the turn.
+
+    >>> from graphmethods.problems import builtin
+    >>> default_plan_positions(builtin.case("press"))
+    (1, 9)
+    """
+    from graphmethods.sheets.kinematics import fullest_position
+
+    mech = case.mechanism
+    pos = mech.positions(m=m)
+    if pos.working is None or pos.extreme is None:
+        return (m // 4, (3 * m) // 4)
+    work = fullest_position(mech.velocity_plans(pos, omega_1=case.omega_m))
+    back = [k for k in range(m) if not pos.working[k] and not pos.extreme[k]]
+    if not back:
+        back = [k for k in range(m) if k != work]
+    return (int(work), int(back[len(back) // 2]))
+
+
+def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Sequence[int] | None = None,
+                             page: str | Page = "A1", notation: Any = "en", title: str | None = None,
+                             title_block: bool = True, name: str = "kinematic-analysis") -> Scene:
+    """The kinematic-analysis sheet (see the module docstring).
+
+    Parameters
+    ----------
+    subject : Case or Study
+        A linkage problem (``builtin.case("shaper")``).
+    m : int
+        Positions per turn (12 as the books draw them).
+    plan_positions : sequence of int, optional
+        The positions (0…m−1) whose acceleration plans are drawn, 1 to 4 of them; by default
+        :func:`default_plan_positions`.
+    page : "A1" or Page
+        A1 landscape with a frame (A2 leaves the slider's diagrams and the acceleration plans too little
+        room: refused).
+    notation : {"en", "ru", "zh"}
+
+    Raises
+    ------
+    InputError
+        A plan position outside 0…m−1, repeated, more than four; a page other than A1.
+    """
+    from graphmethods.sheets.acceleration import acceleration_plan
+    from graphmethods.sheets.calculus import kinematic_diagrams
+    from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan_grid
+
+    case = _case(subject)
+    nt = get_notation(notation)
+    if plan_positions is None:
+        plan_positions = default_plan_positions(case, m)
+    ks = list(plan_positions)
+    if not 1 <= len(ks) <= MAX_PLANS:
+        raise InputError(f"plan positions {ks!r}: give 1 to {MAX_PLANS} positions for the acceleration plans")
+    for k in ks:
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) < m:
+            raise InputError(f"plan position {k!r}: give position numbers 0…{m - 1}")
+    if len(set(ks)) != len(ks):
+        raise InputError(f"plan positions {ks!r}: each position once")
+    ks = [int(k) for k in ks]
+    if not isinstance(page, Page) and str(page).upper() != "A1":
+        raise InputError(f"page {page!r}: the kinematic-analysis sheet holds four parts (scheme, velocity plans, "
+                         f"acceleration plans, the slider's diagrams) and is drawn on A1")
+    pg = _sheet_page(page, "kinematic-analysis")
+    sheet = Sheet(nt=nt, page=None, title=title or in_language(_W["title"], nt), problem=title_of(case),
+                  title_block=title_block, default_page=pg)
+    x0, _, x1, _ = sheet.box
+    top, bottom = sheet.top, sheet.caption_y + 1.0
+    gap = 8.0
+    split_y = top + 0.52 * (bottom - top)
+    split_x = x0 + 0.45 * (x1 - x0)
+    s_scheme = kinematic_scheme(case, notation=nt, title_block=False, m=m,
+                                page=region_page(pg, (x0, top, split_x - gap / 2, split_y)))
+    s_vel = velocity_plan_grid(case, notation=nt, title_block=False, m=m,
+                               page=region_page(pg, (split_x + gap / 2, top, x1, split_y)))
+    parts = [(s_scheme, "scheme"), (s_vel, "velocity-plans")]
+    lower = (split_y + gap, bottom)
+    right = x1
+    try:
+        probe = kinematic_diagrams(case, notation=nt, title_block=False, m=m,
+                                   page=region_page(pg, (x1 - 0.4 * (x1 - x0), lower[0], x1, lower[1])))
+    except InputError:                  # no slider: the acceleration plans take the whole row
+        probe = None
+    if probe is not None:
+        right = x1 - 0.4 * (x1 - x0) - gap
+    w = (right - x0 - gap * (len(ks) - 1)) / len(ks)
+    for j, k in enumerate(ks):
+        left = x0 + j * (w + gap)
+        cell = region_page(pg, (left, lower[0], left + w, lower[1]))
+        parts.append((acceleration_plan(case, k, notation=nt, title_block=False, m=m, page=cell),
+                      f"acceleration-plan-{k}"))
+    if probe is not None:
+        parts.append((probe, "kinematic-diagrams"))
+    groups: list[Group] = []
+    scales: tuple[Scale, ...] = ()
+    for scene, nm in parts:
+        g, sc = inset(scene, nm)
+        groups.append(g)
+        scales += sc
+    notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
+    return Scene(sheet.page(s_scheme.scales()), (sheet.header(), *groups), title=sheet.title,
+                 notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+__all__ = ["default_plan_positions", "kinematic_analysis_sheet"]

@@ -1,0 +1,97 @@
+"""The A1 kinematic-analysis sheet (the course project's first sheet) and ``graphmethods kinematics --sheet``."""
+
+import numpy as np
+import pytest
+
+from graphmethods import cli
+from graphmethods.errors import InputError
+from graphmethods.problems import builtin
+from graphmethods.sheets.kinematic_analysis_sheet import default_plan_positions, kinematic_analysis_sheet
+
+
+@pytest.mark.parametrize("name, slider", [("press", True), ("shaper", True), ("four-bar", False),
+                                          ("six-bar-press", True)])
+def test_the_sheet_holds_the_scheme_the_velocity_plans_the_chosen_acceleration_plans_and_the_diagrams(name, slider):
+    case = builtin.case(name)
+    s = kinematic_analysis_sheet(case, plan_positions=(2, 7))
+    names = [e.name for e in s.elements]
+    assert names[1:3] == ["scheme", "velocity-plans"]
+    assert [n for n in names if n.startswith("acceleration-plan-")] == ["acceleration-plan-2", "acceleration-plan-7"]
+    assert ("kinematic-diagrams" in names) == slider
+    x0, y0, x1, y1 = s.page.inner_box()
+    boxes = {n: s.element(n).bbox() for n in names[1:]}
+    for a, A in boxes.items():                      # the parts lie apart inside the frame
+        assert x0 <= A[0] and A[2] <= x1 and y0 <= A[1] and A[3] <= y1
+        for b, B in boxes.items():
+            if a < b:
+                assert A[2] <= B[0] or B[2] <= A[0] or A[3] <= B[1] or B[3] <= A[1], (a, b)
+    # the acceleration plan of position 7 on the sheet is that position's: its crank-pin vector πa is
+    # ω₁²·l_OA / μ_a long (ε₁ = 0), measured on the drawing
+    plan = s.element("acceleration-plan-7")
+    (mu_a,) = [sc for e in plan.elements if type(e).__name__ == "ScaleCaptions" for sc in e.scales
+               if sc.symbol.startswith("μ_a")]
+    lk = case.linkage
+    mo = lk.motion(m=12, omega_1=case.omega_m)
+    a_A = abs(complex(mo.a_[lk.crank.pin][7]))
+    assert a_A == pytest.approx(case.omega_m ** 2 * abs(complex(mo.z[lk.crank.pin][7] - mo.z[lk.crank.centre][7])),
+                                rel=1e-12)
+    lengths = [np.hypot(e.end[0] - e.start[0], e.end[1] - e.start[1]) for e in plan.elements
+               if type(e).__name__ == "Vector"]
+    assert any(abs(L - a_A / mu_a.per_mm) < 1e-6 for L in lengths)
+
+
+def test_the_default_positions_are_one_of_the_working_and_one_of_the_return_stroke():
+    for name in ("press", "shaper", "slotting-machine", "whitworth"):
+        case = builtin.case(name)
+        pos = case.mechanism.positions(m=12)
+        w, r = default_plan_positions(case)
+        assert pos.working[w] and not pos.extreme[w]
+        assert not pos.working[r] and not pos.extreme[r]
+
+
+def test_bad_plan_positions_and_pages_are_refused():
+    case = builtin.case("press")
+    for ks, words in (((12,), "0…11"), ((1, 1), "each position once"), ((), "1 to 4"), ((1, 2, 3, 4, 5), "1 to 4"),
+                      ((True,), "plan position")):
+        with pytest.raises(InputError, match=words):
+            kinematic_analysis_sheet(case, plan_positions=ks)
+    for page in ("A2", "A3"):
+        with pytest.raises(InputError, match="drawn on A1"):
+            kinematic_analysis_sheet(case, page=page)
+
+
+@pytest.fixture
+def run(capsys):
+    def _run(*argv):
+        rc = cli.main(["kinematics", *map(str, argv)])
+        out, err = capsys.readouterr()
+        return rc, out, err
+    return _run
+
+
+def test_kinematics_sheet_is_written_and_never_overwritten_without_force(run, tmp_path):
+    f = tmp_path / "k.svg"
+    rc, out, _ = run("shaper", "--sheet", f, "--plan-positions", "2,9", "--lang", "ru")
+    assert rc == 0 and "wrote" in out and f.read_bytes().startswith(b"<?xml")
+    before = f.read_bytes()
+    rc, _, err = run("shaper", "--sheet", f)
+    assert rc == 2 and "--force" in err and f.read_bytes() == before
+    rc, _, _ = run("shaper", "--sheet", f, "--force", "--plan-positions", "2,9", "--lang", "ru")
+    assert rc == 0 and f.read_bytes() == before           # the same input, the same bytes
+    dxf = tmp_path / "k.dxf"
+    rc, _, _ = run("four-bar", "--sheet", dxf, "--page", "A1", "--json")
+    assert rc == 0 and dxf.stat().st_size > 0
+
+
+@pytest.mark.parametrize("argv, words", [
+    (("--sheet", "k.svg", "--plan-positions", "2,x"), "not a position number"),
+    (("--sheet", "k.svg", "--plan-positions", "12"), "0…11"),
+    (("--sheet", "k.svg", "--epsilon-1", "3"), "leave out"),
+    (("--sheet", "k.png"), "ending in .svg"),
+    (("--plan-positions", "2"), "add --sheet"),
+])
+def test_kinematics_sheet_bad_input_is_one_line_exit_2_and_no_file(run, tmp_path, monkeypatch, argv, words):
+    monkeypatch.chdir(tmp_path)
+    rc, _, err = run("press", *argv)
+    assert rc == 2 and words in err and len(err.strip().splitlines()) == 1
+    assert list(tmp_path.iterdir()) == []
