@@ -22,15 +22,12 @@ that the plans are checked against. Problem files are read by :func:`read_case`.
 
 from graphmethods.kinematics.case import (Case, FourBarCase, Inertia, Load, ShaperCase, SliderCrankCase,
                                           SlottedLeverCase, case_from_dict, read_case)
-from graphmethods.kinematics.four_bar import FourBar
+from graphmethods.kinematics.classic import FourBar, Shaper, SliderCrank, SlottedLever
 from graphmethods.kinematics.linkage import Crank, Linkage, Motion, Point, Structure
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans, convenient_scale
 from graphmethods.kinematics.positions import Positions, Strokes
-from graphmethods.kinematics.shaper import Shaper
-from graphmethods.kinematics.slider_crank import SliderCrank
-from graphmethods.kinematics.slotted_lever import SlottedLever
 
 __all__ = [
     "Crank", "Linkage", "LinkageMechanism", "Motion", "Point", "Structure",

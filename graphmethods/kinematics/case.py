@@ -45,11 +45,8 @@ from types import MappingProxyType
 from typing import Any, Mapping
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics.four_bar import FourBar
+from graphmethods.kinematics.classic import FourBar, Shaper, SliderCrank, SlottedLever
 from graphmethods.kinematics.mechanism import Mechanism
-from graphmethods.kinematics.shaper import Shaper
-from graphmethods.kinematics.slider_crank import SliderCrank
-from graphmethods.kinematics.slotted_lever import SlottedLever
 from graphmethods.titles import Title
 from graphmethods.units import DELTA_MAX, angle_deg, finite_result, json_value, omega_from_n, read_text, real
 
@@ -173,9 +170,7 @@ class Case:
     def linkage(self):
         """The problem's linkage on the kinematics core (:class:`~graphmethods.kinematics.linkage.Linkage`:
         accelerations, structure), the same linkage as ``mechanism``."""
-        from graphmethods.kinematics.presets import from_mechanism
-
-        return from_mechanism(self.mechanism)
+        return self.mechanism.linkage
 
     def __getattr__(self, key):
         # every validated key is also an attribute: case.m2, case.F0, ...
