@@ -11,7 +11,7 @@ plans' construction records come from the groups, and accelerations are at hand 
 >>> mech = LinkageMechanism(six_bar_press(points={"S4": ("CD", 0.175)}))
 >>> plans = mech.velocity_plans(mech.positions(m=12), omega_1=10.0)
 >>> plans.constructions["D"].equation
-'v_D = v_C + v_DC'
+'v_D = v_C + v_DC;  v_D ∥ guide, v_DC ⟂ CD'
 >>> float(plans.v_along_guide("D")[0]), mech.link_name(3), mech.link_name("DC")
 (0.0, 'O2B', 'CD')
 """
@@ -31,6 +31,12 @@ from graphmethods.kinematics.linkage import Linkage
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, build_positions
+
+
+#: |sin| between two construction lines at or below which they are parallel (a toggle: refused)
+TOGGLE_SIN = 1e-14
+#: at an extreme position, a velocity below this fraction of the position's largest is an exact zero
+AT_REST = 1e-12
 
 
 class _LazyConstructions(Mapping):
@@ -198,6 +204,9 @@ class LinkageMechanism(Mechanism):
     def link_name(self, link) -> str:
         """Canonical name of a link given by its textbook number (3 or "3") or its joints ("AB", "BA")."""
         if isinstance(link, (int, np.integer)) and not isinstance(link, bool):
+            if str(int(link)) not in self._canon:
+                raise InputError(f"{self.kind}: no link number {int(link)}; links: "
+                                 + ", ".join(f"{k} = {v}" for k, v in sorted(self.link_numbers.items())))
             link = str(int(link))
         if isinstance(link, str):
             if link in self._canon:
@@ -230,7 +239,9 @@ class LinkageMechanism(Mechanism):
         mo = lk.motion(m=m, phi=phi, phi_from_start=phi_from_start, level=0)
         strokes = mo.strokes
         start = strokes.phi_start if strokes is not None else lk._default_start()
-        geom = {k: (c.real.copy(), c.imag.copy()) for k, c in mo.z.items()}
+        order = self.joints + tuple(p.name for p in self.points)
+        order += tuple(k for k in mo.z if k not in order)
+        geom = {k: (mo.z[k].real.copy(), mo.z[k].imag.copy()) for k in order}
         out = {}
         if lk.output is not None and strokes is not None:
             if lk.output[0] == "point":
@@ -261,10 +272,16 @@ class LinkageMechanism(Mechanism):
                       labels=positions.index)
         lk._snap(st, np.asarray(positions.extreme))
         n = positions.n
+        extreme = np.asarray(positions.extreme)
         sins = [np.broadcast_to(np.abs(c), (n,)) for c in st.conditioning.values()]
-        constructions = _LazyConstructions(lambda: self._constructions(st))
         sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
-        vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
+        toggle = (sin_min <= TOGGLE_SIN) & ~extreme
+        if toggle.any():
+            self._raise_toggle(positions, int(np.argmax(toggle)), st)
+        self._snap_at_rest(st, extreme)
+        constructions = _LazyConstructions(lambda: self._constructions(st))
+        order = self.joints + tuple(p.name for p in self.points)
+        vectors = {k: V.frozen(_xy(st.v[k])) for k in order + tuple(k for k in st.v if k not in order)}
         return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
                              vectors=MappingProxyType(vectors),
                              omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
@@ -272,6 +289,46 @@ class LinkageMechanism(Mechanism):
                              constructions=constructions,
                              sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
                              sin_threshold=float(sin_threshold))
+
+    def _raise_toggle(self, positions: Positions, i: int, st) -> None:
+        """Refuse a position where two construction lines are parallel (a toggle), naming it."""
+        from graphmethods.errors import AssemblyError
+        from graphmethods.kinematics.groups import RRP, RRR
+        name = min(st.conditioning, key=lambda k: float(np.broadcast_to(st.conditioning[k], (positions.n,))[i]))
+        g = next((g for g in self.linkage.groups if g._name() == name), None)
+        if isinstance(g, RRR):
+            what = f"the links {self.link_name(g.links[0])} and {self.link_name(g.links[1])} are in line (toggle)"
+        elif isinstance(g, RRP):
+            what = f"the link {self.link_name(g.links[0])} stands perpendicular to the guide of {g.C} (toggle)"
+        else:
+            what = f"the group {name} is at a toggle"
+        raise AssemblyError(f"{self.kind}: {self._where(positions.phi, positions.index, i)}: {what}; the two "
+                            f"construction lines are parallel and the velocity is infinite for a turning crank; "
+                            f"move the position off the toggle")
+
+    @staticmethod
+    def _snap_at_rest(st, extreme: np.ndarray) -> None:
+        """At an extreme position the output and whatever stops with it stand still: velocities and
+        angular velocities below 1e-12 of that position's largest are the rounding of an exact zero
+        and are put exactly at the pole (as the plan draws them)."""
+        if not extreme.any():
+            return
+        rows = np.flatnonzero(extreme)
+        vmax = np.max([np.abs(np.broadcast_to(v, extreme.shape))[rows] for v in st.v.values()], axis=0)
+        for k, v in st.v.items():
+            v = np.array(np.broadcast_to(v, extreme.shape))
+            small = np.abs(v[rows]) <= AT_REST * vmax
+            if small.any():
+                v[rows[small]] = 0.0
+                st.v[k] = v
+        if st.omega:
+            wmax = np.max([np.abs(np.broadcast_to(w, extreme.shape))[rows] for w in st.omega.values()], axis=0)
+            for k, w in st.omega.items():
+                w = np.array(np.broadcast_to(w, extreme.shape), dtype=float)
+                small = np.abs(w[rows]) <= AT_REST * wmax
+                if small.any():
+                    w[rows[small]] = 0.0
+                    st.omega[k] = w
 
     def _constructions(self, st) -> dict:
         """How every point of the plan is found (built when a figure first asks for it)."""
@@ -317,6 +374,9 @@ class LinkageMechanism(Mechanism):
                         name=step.name, method="similarity", on=on,
                         equation=f"{step.name.lower()} on {x.lower()}{y.lower()}: {x.lower()}{step.name.lower()}/"
                                  f"{x.lower()}{y.lower()} = {x}{step.name}/{x}{y}{ang} (similarity theorem)"))
+        extra = [p.name for p in self.points]           # points on links last, as the book adds them
+        cons = [c for c in cons if c.name not in extra] + sorted(
+            (c for c in cons if c.name in extra), key=lambda c: extra.index(c.name))
         return {c.name: c for c in cons}
 
     def _textbook(self, g, equation: str) -> tuple[str, dict[str, str]]:
