@@ -221,3 +221,29 @@ def test_the_shared_press_file_is_read_as_it_is():
     mo = case.linkage.motion(m=12, omega_1=case.omega_m)
     assert abs(float(np.hypot(*mo.xy("B")[0])) - (case.r + case.l)) <= 1e-12
     assert_same(case.mechanism, m_list=(12, 48), omega_1=case.omega_m)
+
+
+def test_sheets_read_the_structure_from_data_not_from_names():
+    """A slotted lever whose joints carry none of the textbook names (pivots P and Q, the pin K, its
+    point on the lever K3): the scheme finds the fixed joints, the block and the point under the pin
+    from the linkage's groups, and the plan writes the relative velocity with the block's number."""
+    from graphmethods.kinematics import LinkageMechanism
+    from graphmethods.kinematics.groups import RPR
+    from graphmethods.kinematics.linkage import Crank, Linkage, Point
+    from graphmethods.sheets import kinematics as K
+    from graphmethods.render.recording import record
+
+    lk = Linkage(ground={"P": (0.0, 0.0), "Q": (0.0, -0.3)}, crank=Crank("P", "K", r=0.1),
+                 groups=[RPR(P="K", Q="Q", coincident="K3", links=("2", "3"))],
+                 points=[Point("E", "3", "Q", 0.5)], output="3", name="renamed lever")
+    mech = LinkageMechanism(lk)
+    named = classic.SlottedLever(r=0.1, l_O1O3=0.3, l_O3B=0.5)
+    parts, parts0 = K._parts(mech, mech.positions(12)), K._parts(named, named.positions(12))
+    assert parts.fixed == ("P", "Q") and parts0.fixed == ("O1", "O3")
+    assert parts.rocker_block == ("K", "Q") and parts0.rocker_block == ("A", "O3")
+    assert parts.coincident == ("K3",) and parts0.coincident == ("A3",)
+    assert K._rel_name(mech, "K3", "K") == "K3K2" and K._rel_name(named, "A3", "A") == "A3A2"
+    ids = record(K.kinematic_scheme(mech, mu_l=0.005)).group_ids()
+    ids0 = record(K.kinematic_scheme(named, mu_l=0.005)).group_ids()
+    for g, (pin, co, pivot) in ((ids, ("K", "K3", "Q")), (ids0, ("A", "A3", "O3"))):
+        assert f"block-{pin}" in g and f"joint-{co}" not in g and f"name-{co}" not in g and f"name-{pivot}" in g

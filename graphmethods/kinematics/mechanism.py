@@ -111,6 +111,10 @@ class Mechanism:
     working_strokes: tuple[str, ...] = ("slow", "fast")
     #: mechanism name for messages
     kind: str = "linkage"
+    #: the fixed joints (drawn on hatched ground; their plan image is the pole)
+    fixed_joints: tuple[str, ...] = ()
+    #: blocks on slotted links: (pin on the block, its point on the slotted link, pivot, block number, link number)
+    slotted_links: tuple[tuple[str, str, str, str, str], ...] = ()
 
     # ---------------------------------------------------------------- validation
     def _validate_common(self) -> None:

@@ -363,26 +363,25 @@ class _Parts:
     pin: str
     extra: tuple[str, ...]
     paths: tuple[str, ...]
+    coincident: tuple[str, ...] = ()         # points of slotted links under a block's pin (A3): not drawn
 
 
 def _parts(mech, pos) -> _Parts:
-    fixed = getattr(mech, "fixed_joints", None) or tuple(
-        j for j in mech.joints if np.ptp(pos.coords[j], axis=0).max() == 0.0 and j.startswith("O"))
+    fixed = tuple(mech.fixed_joints)
     links = tuple(mech.link_joints.values())
     sliders = dict(mech.guides)
     pin = mech.crank_pin
     centre = next(x for x, y in links if y == pin)
-    block = None
-    if "A3" in mech.joints:
-        pivot = next(x for x, y in links if x in fixed and x != centre)
-        block = (pin, pivot)
+    slotted = tuple(mech.slotted_links)              # (pin on the block, its point on the slotted link, pivot, ...)
+    block = (slotted[0][0], slotted[0][2]) if slotted else None
+    coincident = {sl[1] for sl in slotted}
     if sliders:
         output = next(iter(sliders))
     else:
         output = next(y for x, y in links if x in fixed and x != centre)
     extra = tuple(p.name for p in mech.points)
-    moving = [j for j in mech.joints if j not in fixed and j not in (pin, "A3") and j not in sliders]
-    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra)
+    moving = [j for j in mech.joints if j not in fixed and j != pin and j not in coincident and j not in sliders]
+    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident))
 
 
 def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | None = 0, trajectories: bool = True,
@@ -560,7 +559,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
             top_els.append(SliderBlock(P(pos.coords[bp][thick]), angle_deg=_paper_deg(d), length_mm=8.0,
                                        height_mm=4.5, name=f"block-{bp}"))
         for j in mech.joints:
-            if j in parts.fixed or j in parts.sliders or j == "A3" or (parts.rocker_block and j == parts.rocker_block[0]):
+            if j in parts.fixed or j in parts.sliders or j in parts.coincident or (parts.rocker_block and j == parts.rocker_block[0]):
                 continue
             top_els.append(PinJoint(P(pos.coords[j][thick]), name=f"joint-{j}"))
         for j in parts.extra:
@@ -625,7 +624,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     ref = thick if thick is not None else 0
     centroid = np.mean([P(pos.coords[j][ref]) for j in mech.joints], axis=0)
     for j in list(mech.joints) + list(parts.extra):
-        if j == "A3":
+        if j in parts.coincident:
             continue
         at = P(pos.coords[j][ref])
         away = np.asarray(at) - centroid
@@ -822,8 +821,9 @@ class _PlanVector:
 
 def _rel_name(mech, x: str, y: str) -> str:
     """Name of the relative velocity of X with respect to Y (``"BA"``; ``"A3A2"`` on a slotted lever)."""
-    if "A3" in mech.joints and y == mech.crank_pin:
-        y = y + "2"
+    for pin, _, _, block, _ in mech.slotted_links:
+        if y == pin:
+            return x + y + block
     return x + y
 
 
@@ -1112,9 +1112,9 @@ def _equations(plans, k: int, nt, lk) -> list[str]:
             lo = plans.label(name)
             lines.append(f"{ix}{_sub(lo)}/{ix}{iy} = {_sub(x + name)}/{_sub(x + y)}")
         elif c.method == "proportion":
-            pivot = c.on[:-len(name)] if c.on.endswith(name) and len(c.on) > len(name) else "O3"
-            lines.append(f"p{_sub(plans.label(name))} = pa_{{3}}·{_sub(pivot + name)}/{_sub(pivot + 'A')}"
-                         if "A3" in mech.joints else c.equation)
+            sl = next((sl for sl in mech.slotted_links if c.on and c.on.startswith(sl[2])), None)
+            lines.append(f"p{_sub(plans.label(name))} = p{_sub(plans.label(sl[1]))}·{_sub(sl[2] + name)}/"
+                         f"{_sub(sl[2] + sl[0])}" if sl is not None else c.equation)
     return lines
 
 
@@ -1136,7 +1136,7 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
             out.append(f"ω_{{{num}}} = ω_{{{other}}}")
             continue
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
-        num_sym = f"v_{{{y}}}" if x.startswith("O") else f"v_{{{_rel_name(mech, y, x)}}}"
+        num_sym = f"v_{{{y}}}" if x in mech.fixed_joints else f"v_{{{_rel_name(mech, y, x)}}}"
         out.append(f"ω_{{{num}}} = {num_sym}/l_{{{link}}} = {nt.number(abs(w) * L, sig=4)}/{nt.number(L, sig=4)} = "
                    f"{nt.number(abs(w), sig=4)} {_unit(nt, 'rad/s')}, {_sense_word(nt, w)}")
     return out
