@@ -591,9 +591,18 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     # ---- position numbers at the output point, the stroke H beyond them, numbers at the crank pin
     guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
     out_items = _numbered(pos, parts, drawn, ext, ext_pos, parts.output)
+    free = None                                           # a guide at an angle: the numbers' side on paper
     if guide is not None:
         side = "s" if guide.side > 0 else "n"
-        numbers = _output_numbers(out_items, P, occ, sheet.box, side=side)
+        gs, ge = np.asarray(guide.start, float), np.asarray(guide.end, float)
+        ug = (ge - gs) / float(np.hypot(*(ge - gs)))
+        if abs(ug[1]) > 1e-9:
+            free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
+            toward = math.degrees(math.atan2(-free[1], free[0]))
+            dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward)
+        else:
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=side)
     else:
         pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
         numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
@@ -610,10 +619,21 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
         reach = max([axis_y - bb[1] for bb in boxes] if side == "n" else [bb[3] - axis_y for bb in boxes]) \
             if boxes else 0.0
         text = _word(nt, "stroke", H=nt.number(pos.H, sig=4), u=unit_l)
-        lift = (max(reach, 2.0) + 0.8) * (-1.0 if side == "n" else 1.0)       # measured from beyond the numbers
-        left, right = (left[0], left[1] + lift), (right[0], right[1] + lift)
-        dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if side == "n" else \
-            Dimension(left, right, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H")
+        if free is not None:                              # along a guide at an angle, beyond its numbers
+            a_, b_ = np.asarray(a, float), np.asarray(b, float)
+            corners = [np.array([x, y]) for bb in boxes for x in (bb[0], bb[2]) for y in (bb[1], bb[3])]
+            reach = max([float((c - a_) @ free) for c in corners], default=0.0)
+            lift = (max(reach, 2.0) + 0.8) * free
+            p1, p2 = a_ + lift, b_ + lift
+            if float(np.array([-(p2 - p1)[1], (p2 - p1)[0]]) @ free) < 0:
+                p1, p2 = p2, p1                           # the dimension's offset goes to the free side
+            dim = Dimension(tuple(p1.tolist()), tuple(p2.tolist()), text, offset_mm=4.0, size_mm=TEXT_MM,
+                            name="dimension-H")
+        else:
+            lift = (max(reach, 2.0) + 0.8) * (-1.0 if side == "n" else 1.0)       # measured from beyond the numbers
+            left, right = (left[0], left[1] + lift), (right[0], right[1] + lift)
+            dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if side == "n" \
+                else Dimension(left, right, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H")
         dims.append(dim)
         _register(occ, dim)
     numbers += _crank_numbers(_numbered(pos, parts, drawn, ext, ext_pos, parts.pin), P(c_xy), P, occ, sheet.box)
@@ -774,10 +794,11 @@ def _crank_numbers(items, centre, P, occ, box) -> list:
     return out
 
 
-def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None) -> list:
+def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None) -> list:
     """The position numbers at the output point: for a slider in a row on the free side of its guide
-    (``side`` "n" or "s"; points closer than 2 mm share a label, "1, 11"); for a rocker outward from
-    its pivot."""
+    (``side`` "n" or "s" for a horizontal guide, or the compass ``dirs`` and angle ``prefer`` (deg) of
+    the free side of a guide at an angle; points closer than 2 mm share a label, "1, 11"); for a
+    rocker outward from its pivot."""
     out = []
     groups: list[list] = []
     for tag, text, xy in items:
@@ -792,9 +813,9 @@ def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None) -> list
         tag, o, _ = g[0]
         text = ", ".join(t for _, _, t in g)
         if side is not None:
-            prefer = 90.0 if side == "n" else 270.0
-            out.append(_place(occ, tuple(o), text, prefer, size_mm=SMALL_MM, within=box,
-                              dirs=(side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
+            toward = prefer if prefer is not None else (90.0 if side == "n" else 270.0)
+            out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box,
+                              dirs=dirs or (side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
                               name=f"number-out-{tag}"))
             continue
         prefer = math.degrees(math.atan2(-(o - pivot)[1], (o - pivot)[0]))
