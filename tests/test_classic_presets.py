@@ -68,6 +68,10 @@ def assert_positions_equal(po, pn):
     close(wrap(po.phi - pn.phi), 0.0 * po.phi, 1.0, "phi")
     close(po.phi_from_start, pn.phi_from_start, 1.0, "phi_from_start")
     assert po.m == pn.m
+    assert (po.strokes is None) == (pn.strokes is None)
+    if po.strokes is not None:
+        assert (po.strokes.start_name, po.strokes.end_name) == (pn.strokes.start_name, pn.strokes.end_name)
+        close(po.strokes.K, pn.strokes.K, po.strokes.K, "K")
     assert (po.index is None) == (pn.index is None)
     if po.index is not None:
         assert po.index.tolist() == pn.index.tolist()

@@ -237,7 +237,7 @@ class LinkageMechanism(Mechanism):
     def positions(self, m: int | None = None, *, phi=None, phi_from_start=None) -> Positions:
         lk = self.linkage
         mo = lk.motion(m=m, phi=phi, phi_from_start=phi_from_start, level=0)
-        strokes = mo.strokes
+        strokes = self.strokes() if mo.strokes is not None else None     # with this kind's names of its extremes
         start = strokes.phi_start if strokes is not None else lk._default_start()
         order = self.joints + tuple(p.name for p in self.points)
         order += tuple(k for k in mo.z if k not in order)
