@@ -8,15 +8,15 @@ import dataclasses
 import math
 import pathlib
 
+import classic_reference as ref
 import numpy as np
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-import classic_reference as ref
+from graphmethods.dynamics.study import Study
 from graphmethods.errors import AssemblyError
 from graphmethods.kinematics import classic, read_case
-from graphmethods.dynamics.study import Study
 
 DATA = pathlib.Path(__file__).parents[1] / "graphmethods" / "problems" / "data"
 FILES = ["slider_crank_press", "four_bar_rocker", "slotted_lever", "shaper"]
@@ -122,7 +122,7 @@ def assert_plans_equal(vo, vn):
 def assert_same(new, m_list=(12,), omega_1=2.5, phi=None):
     old = old_of(new)
     assert_interface_equal(old, new)
-    runs = [dict(m=m) for m in m_list] + ([dict(phi=phi)] if phi is not None else [])
+    runs = [{"m": m} for m in m_list] + ([{"phi": phi}] if phi is not None else [])
     for kw in runs:
         po, pn = old.positions(**kw), new.positions(**kw)
         assert_positions_equal(po, pn)
@@ -174,7 +174,7 @@ def test_built_in_classic_problems_same_dynamics(name):
 def classic_mechanisms(draw):
     kind = draw(st.sampled_from(["SliderCrank", "FourBar", "SlottedLever", "Shaper"]))
     sense = draw(st.sampled_from([1, -1]))
-    f = lambda lo, hi: draw(st.floats(lo, hi))  # noqa: E731
+    f = lambda lo, hi: draw(st.floats(lo, hi))
     if kind == "SliderCrank":
         r = f(0.02, 0.2)
         e = f(-0.5, 0.5) * r
@@ -197,8 +197,8 @@ def classic_mechanisms(draw):
         return fb
     d = f(0.2, 0.4)
     r = f(0.2, 0.8) * d
-    lever = dict(r=r, l_O1O3=d, l_O3B=(d + r) * f(1.0, 1.5), theta_O3=f(-2.0, -1.0), sense=sense,
-                 working_stroke=draw(st.sampled_from(["slow", "fast"])))
+    lever = {"r": r, "l_O1O3": d, "l_O3B": (d + r) * f(1.0, 1.5), "theta_O3": f(-2.0, -1.0), "sense": sense,
+             "working_stroke": draw(st.sampled_from(["slow", "fast"]))}
     if kind == "SlottedLever":
         return classic.SlottedLever(**lever, points={"S3": ("O3B", f(0.0, 0.2))})
     try:
@@ -234,8 +234,8 @@ def test_sheets_read_the_structure_from_data_not_from_names():
     from graphmethods.kinematics import LinkageMechanism
     from graphmethods.kinematics.groups import RPR
     from graphmethods.kinematics.linkage import Crank, Linkage, Point
-    from graphmethods.sheets import kinematics as K
     from graphmethods.render.recording import record
+    from graphmethods.sheets import kinematics as K
 
     lk = Linkage(ground={"P": (0.0, 0.0), "Q": (0.0, -0.3)}, crank=Crank("P", "K", r=0.1),
                  groups=[RPR(P="K", Q="Q", coincident="K3", links=("2", "3"))],

@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import replace
+from types import MappingProxyType
 from typing import Any
 
 import numpy as np
@@ -53,21 +54,16 @@ class _Classic(LinkageMechanism):
     _extreme_names: tuple[str, str] = ("", "")
     kind = "linkage"
 
-    def __init__(self, **kw: Any) -> None:
-        self._setup(**kw)
-        pts = {p.name: (p.link, p.distance, p.angle) for p in self.points}
-        super().__init__(self._build(pts), kind=self.kind)
-        object.__setattr__(self, "points", tuple(self.points))
-
-    def _setup(self, *, sense: int = 1, working_stroke: str | None = None, points: Any = (),
-               **dims: float) -> None:
+    def _finish(self, *, sense: int, working_stroke: str, points: Any) -> None:
+        """Check the dimensions (set by the kind's ``__init__``) and the common arguments, then build
+        the preset linkage and become its :class:`LinkageMechanism`."""
         self.sense = sense
-        self.working_stroke = self.working_strokes[0] if working_stroke is None else working_stroke
+        self.working_stroke = working_stroke
         self.points = points
-        for k, v in dims.items():
-            setattr(self, k, v)
         self._check()
         self._validate_common()
+        pts = {p.name: (p.link, p.distance, p.angle) for p in self.points}
+        LinkageMechanism.__init__(self, self._build(pts), kind=self.kind)
 
     def _check(self) -> None:  # pragma: no cover - each kind checks its dimensions
         raise NotImplementedError
@@ -120,7 +116,7 @@ class SliderCrank(_Classic):
     """
 
     joints = ("O", "A", "B")
-    link_joints = {"OA": ("O", "A"), "AB": ("A", "B")}
+    link_joints = MappingProxyType({"OA": ("O", "A"), "AB": ("A", "B")})
     working_strokes = ("toward_crank", "away_from_crank", "slow", "fast")
     kind = "slider-crank"
     _dims = ("r", "l", "e", "assembly")
@@ -128,8 +124,8 @@ class SliderCrank(_Classic):
 
     def __init__(self, *, r: float, l: float, e: float = 0.0, assembly: int = 1, sense: int = 1,
                  working_stroke: str = "toward_crank", points: Any = ()) -> None:
-        super().__init__(r=r, l=l, e=e, assembly=assembly, sense=sense, working_stroke=working_stroke,
-                         points=points)
+        self.r, self.l, self.e, self.assembly = r, l, e, assembly
+        self._finish(sense=sense, working_stroke=working_stroke, points=points)
 
     def _check(self) -> None:
         self.r = _check_length("r", self.r)
@@ -177,7 +173,7 @@ class FourBar(_Classic):
     """
 
     joints = ("O1", "A", "B", "O2")
-    link_joints = {"O1A": ("O1", "A"), "AB": ("A", "B"), "O2B": ("O2", "B")}
+    link_joints = MappingProxyType({"O1A": ("O1", "A"), "AB": ("A", "B"), "O2B": ("O2", "B")})
     working_strokes = ("slow", "fast")
     kind = "four-bar"
     _dims = ("l1", "l2", "l3", "l4", "ground_angle", "assembly")
@@ -185,8 +181,9 @@ class FourBar(_Classic):
 
     def __init__(self, *, l1: float, l2: float, l3: float, l4: float, ground_angle: float = 0.0,
                  assembly: int = 1, sense: int = 1, working_stroke: str = "slow", points: Any = ()) -> None:
-        super().__init__(l1=l1, l2=l2, l3=l3, l4=l4, ground_angle=ground_angle, assembly=assembly, sense=sense,
-                         working_stroke=working_stroke, points=points)
+        self.l1, self.l2, self.l3, self.l4 = l1, l2, l3, l4
+        self.ground_angle, self.assembly = ground_angle, assembly
+        self._finish(sense=sense, working_stroke=working_stroke, points=points)
 
     def _check(self) -> None:
         for name in ("l1", "l2", "l3", "l4"):
@@ -214,7 +211,7 @@ class FourBar(_Classic):
     def turns_fully(self) -> bool:
         """True if the crank O1A can make full turns (crank-rocker or double crank)."""
         l1, l2, l3, l4 = self.l1, self.l2, self.l3, self.l4
-        return l1 + l2 < l3 + l4 and abs(l1 - l2) > abs(l3 - l4)
+        return bool(l1 + l2 < l3 + l4 and abs(l1 - l2) > abs(l3 - l4))
 
     @property
     def grashof(self) -> str:
@@ -338,17 +335,17 @@ class SlottedLever(_Classic):
     'v_A3 = v_A2 + v_A3A2;  v_A3 ⟂ O3A, v_A3A2 ∥ O3A'
     """
 
-    joints = ("O1", "A", "A3", "O3", "B")
-    link_joints = {"O1A": ("O1", "A"), "O3B": ("O3", "B")}
+    joints: tuple[str, ...] = ("O1", "A", "A3", "O3", "B")
+    link_joints = MappingProxyType({"O1A": ("O1", "A"), "O3B": ("O3", "B")})
     working_strokes = ("slow", "fast")
     kind = "slotted lever"
-    _dims = ("r", "l_O1O3", "l_O3B", "theta_O3")
+    _dims: tuple[str, ...] = ("r", "l_O1O3", "l_O3B", "theta_O3")
     _extreme_names = ("rocker extreme (crank ⟂ rocker)", "rocker extreme (crank ⟂ rocker)")
 
     def __init__(self, *, r: float, l_O1O3: float, l_O3B: float, theta_O3: float = -math.pi / 2, sense: int = 1,
                  working_stroke: str = "slow", points: Any = ()) -> None:
-        super().__init__(r=r, l_O1O3=l_O1O3, l_O3B=l_O3B, theta_O3=theta_O3, sense=sense,
-                         working_stroke=working_stroke, points=points)
+        self.r, self.l_O1O3, self.l_O3B, self.theta_O3 = r, l_O1O3, l_O3B, theta_O3
+        self._finish(sense=sense, working_stroke=working_stroke, points=points)
 
     def _check(self) -> None:
         for name in ("r", "l_O1O3", "l_O3B"):
@@ -402,15 +399,16 @@ class Shaper(SlottedLever):
     """
 
     joints = ("O1", "A", "A3", "O3", "B", "C")
-    link_joints = {"O1A": ("O1", "A"), "O3B": ("O3", "B"), "BC": ("B", "C")}
+    link_joints = MappingProxyType({"O1A": ("O1", "A"), "O3B": ("O3", "B"), "BC": ("B", "C")})
     kind = "shaper"
     _dims = ("r", "l_O1O3", "l_O3B", "l_BC", "y_guide", "theta_O3", "assembly")
 
     def __init__(self, *, r: float, l_O1O3: float, l_O3B: float, l_BC: float, y_guide: float,
                  theta_O3: float = -math.pi / 2, assembly: int = 1, sense: int = 1, working_stroke: str = "slow",
                  points: Any = ()) -> None:
-        _Classic.__init__(self, r=r, l_O1O3=l_O1O3, l_O3B=l_O3B, l_BC=l_BC, y_guide=y_guide, theta_O3=theta_O3,
-                          assembly=assembly, sense=sense, working_stroke=working_stroke, points=points)
+        self.r, self.l_O1O3, self.l_O3B, self.theta_O3 = r, l_O1O3, l_O3B, theta_O3
+        self.l_BC, self.y_guide, self.assembly = l_BC, y_guide, assembly
+        self._finish(sense=sense, working_stroke=working_stroke, points=points)
 
     def _check(self) -> None:
         super()._check()
@@ -418,7 +416,7 @@ class Shaper(SlottedLever):
         self.y_guide = _check_length("y_guide", self.y_guide, positive=False)
         if self.assembly not in (1, -1) or isinstance(self.assembly, bool):
             raise InputError(f"{self.kind}: assembly must be +1 or -1, got {self.assembly!r}")
-        ox, oy = self.O3
+        _, oy = self.O3
         beta = math.asin(self.r / self.l_O1O3)
         centre = self.theta_O3 + math.pi               # rocker direction O3 -> O1
         cands = [centre - beta, centre + beta]
@@ -431,14 +429,14 @@ class Shaper(SlottedLever):
             _fail(f"shaper: the link BC = {_fmt(self.l_BC)} m cannot reach the ram's guide y = {_fmt(self.y_guide)} m "
                   f"when the rocker is at {math.degrees(cands[i]) % 360:.4g}° (B is {_fmt(abs(q[i]))} m from the "
                   f"guide); make l_BC > {_fmt(abs(q[i]))} m or move the guide")
-        t = np.linspace(centre - beta, centre + beta, 4097)
-        qq = self.y_guide - (oy + self.l_O3B * np.sin(t))
+        ts = np.linspace(centre - beta, centre + beta, 4097)
+        qq = self.y_guide - (oy + self.l_O3B * np.sin(ts))
         w = self.assembly * np.sqrt(self.l_BC ** 2 - qq * qq)
-        f = (qq * np.cos(t) - w * np.sin(t)) / self.l_BC    # sin(angle BC − angle O3B)
+        f = (qq * np.cos(ts) - w * np.sin(ts)) / self.l_BC    # sin(angle BC − angle O3B)
         if not (np.all(f > 1e-9) or np.all(f < -1e-9)):
             j = int(np.argmin(np.abs(f)))
             _fail(f"shaper: the link BC comes in line with the rocker O3B when the rocker is at "
-                  f"{math.degrees(t[j]) % 360:.4g}°: the ram would stop and reverse before the rocker's extreme "
+                  f"{math.degrees(ts[j]) % 360:.4g}°: the ram would stop and reverse before the rocker's extreme "
                   f"position; change l_BC, y_guide or assembly")
 
     def _build(self, points: Mapping[str, tuple[str, float, float]]) -> Linkage:

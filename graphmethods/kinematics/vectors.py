@@ -29,7 +29,7 @@ def perp(x, y):
     return -y, x
 
 
-def wrap(angle):
+def wrap(angle: "float | np.ndarray") -> np.ndarray:
     """Angle(s) wrapped into [−π, π) (radians)."""
     return np.mod(np.asarray(angle, dtype=float) + np.pi, TWO_PI) - np.pi
 
