@@ -26,7 +26,7 @@ from typing import Mapping
 import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics import vectors as V
+from classic_reference import vectors as V
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, Strokes, build_positions
 from graphmethods.units import MAX_POSITIONS_COMPUTED, count, real

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics import vectors as V
+from classic_reference import vectors as V
 from classic_reference.mechanism import PointConstruction, _check_length, _fmt, fail, line
 from graphmethods.kinematics.positions import Positions
 from classic_reference.slotted_lever import SlottedLever
