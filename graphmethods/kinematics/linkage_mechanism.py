@@ -35,8 +35,6 @@ from graphmethods.kinematics.positions import Positions, build_positions
 
 #: |sin| between two construction lines at or below which they are parallel (a toggle: refused)
 TOGGLE_SIN = 1e-14
-#: at an extreme position, a velocity below this fraction of the position's largest is an exact zero
-AT_REST = 1e-12
 
 
 class _LazyConstructions(Mapping):
@@ -306,29 +304,56 @@ class LinkageMechanism(Mechanism):
                             f"construction lines are parallel and the velocity is infinite for a turning crank; "
                             f"move the position off the toggle")
 
-    @staticmethod
-    def _snap_at_rest(st, extreme: np.ndarray) -> None:
-        """At an extreme position the output and whatever stops with it stand still: velocities and
-        angular velocities below 1e-12 of that position's largest are the rounding of an exact zero
-        and are put exactly at the pole (as the plan draws them)."""
+    def _at_rest(self, st, i: int) -> tuple[set, set]:
+        """The points and links that stand still when the output is at an extreme position: the output
+        itself; a rocker's joints and points and the block sliding on it; and, when a slider on a frame
+        guide stops while the link driving it turns about a fixed joint, that link as well unless the
+        two are in line at position ``i`` (its velocity is ⟂ to both): the shaper's lever, not the
+        Whitworth's; and a link whose
+        two joints rest (the shaper's BC)."""
+        from graphmethods.kinematics.groups import RRP, RRR
+        lk = self.linkage
+        if lk.output is None:
+            return set(), set()
+        kind, name = lk.output
+        links, points = ({name}, set()) if kind == "link" else (set(), {name})
+        ground = set(lk.ground)
+        for _ in range(len(lk.groups) + len(lk.points) + 1):
+            before = (len(links), len(points))
+            for g in lk.groups:
+                if isinstance(g, RRP) and g.C in points and g.guide.link == GROUND:
+                    for p in lk.points:
+                        if p.name == g.P and p.origin in ground and p.link != lk.crank.link:
+                            u = st.z[g.P][i] - st.z[p.origin][i]
+                            w = st.z[g.C][i] - st.z[g.P][i]
+                            if abs((u.conjugate() * w).imag) > 1e-9 * abs(u) * abs(w):   # not in line
+                                links.add(p.link)
+                if isinstance(g, RPR) and g.links[1] in links and g.Q in ground:
+                    links.add(g.links[0])
+                    points.add(g.coincident)
+                if isinstance(g, RRR) and g.links[1] in links and g.Q in ground:
+                    points.add(g.C)
+                if isinstance(g, (RRP, RRR)) and g.P in points and g.C in points:
+                    links.add(g.links[0])                 # a link with two points at rest rests
+            points |= {p.name for p in lk.points if p.link in links and (p.origin in ground or p.origin in points)}
+            if (len(links), len(points)) == before:
+                break
+        return links, points
+
+    def _snap_at_rest(self, st, extreme: np.ndarray) -> None:
+        """At an extreme position what stands still (:meth:`_at_rest`) is put exactly at the pole."""
         if not extreme.any():
             return
-        rows = np.flatnonzero(extreme)
-        vmax = np.max([np.abs(np.broadcast_to(v, extreme.shape))[rows] for v in st.v.values()], axis=0)
-        for k, v in st.v.items():
-            v = np.array(np.broadcast_to(v, extreme.shape))
-            small = np.abs(v[rows]) <= AT_REST * vmax
-            if small.any():
-                v[rows[small]] = 0.0
-                st.v[k] = v
-        if st.omega:
-            wmax = np.max([np.abs(np.broadcast_to(w, extreme.shape))[rows] for w in st.omega.values()], axis=0)
-            for k, w in st.omega.items():
-                w = np.array(np.broadcast_to(w, extreme.shape), dtype=float)
-                small = np.abs(w[rows]) <= AT_REST * wmax
-                if small.any():
-                    w[rows[small]] = 0.0
-                    st.omega[k] = w
+        for i in np.flatnonzero(extreme):
+            links, points = self._at_rest(st, int(i))
+            for k in points:
+                if k in st.v:
+                    st.v[k] = np.array(np.broadcast_to(st.v[k], extreme.shape))
+                    st.v[k][i] = 0.0
+            for k in links:
+                if k in st.omega:
+                    st.omega[k] = np.array(np.broadcast_to(st.omega[k], extreme.shape), dtype=float)
+                    st.omega[k][i] = 0.0
 
     def _constructions(self, st) -> dict:
         """How every point of the plan is found (built when a figure first asks for it)."""
