@@ -225,3 +225,11 @@ def test_figures_that_draw_a_step_load_refuse_an_indicator_diagram(tmp_path, cap
     rc = cli.main(["study", str(DATA / "single_cylinder_engine.json"), "--sheet", str(out)])
     err = capsys.readouterr().err
     assert rc == 2 and "indicator diagram" in err and err.count("\n") == 1 and not out.exists()
+
+
+def test_fixed_joints_that_are_not_an_object_are_one_line():
+    """"fixed": 1.0 (a number where the joints belong) is refused naming the key, not a TypeError."""
+    data = json.loads((DATA / "six_bar_press.json").read_text())
+    for bad in (1.0, [0, 0], "O1"):
+        with pytest.raises(InputError, match="fixed.*must be an object"):
+            case_from_dict({**data, "fixed": bad}, source="f.json")
