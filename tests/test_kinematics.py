@@ -273,7 +273,8 @@ def test_slider_crank_strokes_closed_form():
     st_ = mech.strokes()
     far = math.atan2(0.02, math.sqrt(0.5 ** 2 - 0.02 ** 2))
     near = math.atan2(-0.02, -math.sqrt(0.3 ** 2 - 0.02 ** 2)) % (2 * math.pi)
-    assert st_.phi_start == pytest.approx(far, abs=1e-15) and st_.phi_end == pytest.approx(near, abs=1e-15)
+    # the core finds the dead centres by Newton on the slider's velocity: a few ulp of the closed form
+    assert st_.phi_start == pytest.approx(far, abs=4e-15) and st_.phi_end == pytest.approx(near, abs=4e-15)
     assert st_.working_angle == pytest.approx(near - far, rel=1e-14)
     pos = mech.positions(m=12)
     assert pos.H == pytest.approx(math.sqrt(0.25 - 4e-4) - math.sqrt(0.09 - 4e-4), rel=1e-14)

@@ -175,12 +175,13 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         if case.kind == "slider_crank" and name == "B":
             cols["v_BA"] = np.hypot(*(plan.v_rel("B", "A").T))
             units["v_BA"] = "m/s"
-        if name == "A3" and case.kind in ("slotted_lever", "shaper"):
-            u = pos.xy("A") - pos.xy("O3")
-            u = u / np.hypot(u[:, 0], u[:, 1])[:, None]
-            rel = plan.v_rel("A3", "A")
-            cols["v_A3A2"] = rel[:, 0] * u[:, 0] + rel[:, 1] * u[:, 1]
-            units["v_A3A2"] = "m/s"
+        for pin, co, pivot, block, _ in getattr(mech, "slotted_links", ()):
+            if name == co and case.kind in ("slotted_lever", "shaper"):
+                u = pos.xy(pin) - pos.xy(pivot)
+                u = u / np.hypot(u[:, 0], u[:, 1])[:, None]
+                rel = plan.v_rel(co, pin)
+                cols[f"v_{co}{pin}{block}"] = rel[:, 0] * u[:, 0] + rel[:, 1] * u[:, 1]
+                units[f"v_{co}{pin}{block}"] = "m/s"
     for k, link in mech.link_numbers.items():
         if k >= 2:
             cols[f"omega_{k}"] = plan.omega(link)

@@ -751,10 +751,8 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
 def _plan_accelerations(mechanism, pos, point: str, guide, omega_1: float) -> np.ndarray:
     """The slider's acceleration along ``guide`` from the acceleration plans at the positions, m/s²."""
     from graphmethods.kinematics.acceleration_plan import acceleration_plans
-    from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
-    from graphmethods.kinematics.presets import from_mechanism
 
-    lk = mechanism.linkage if isinstance(mechanism, LinkageMechanism) else from_mechanism(mechanism)
+    lk = mechanism.linkage          # every mechanism is a linkage of the core
     plans = acceleration_plans(lk, phi=np.asarray(pos.phi, dtype=float), omega_1=omega_1)
     g = complex(float(guide[0]), float(guide[1]))
     return np.array([(p.a(point) * g.conjugate()).real for p in plans])

@@ -6,12 +6,13 @@ positions, velocities and accelerations (:meth:`Linkage.motion`), its structure 
 strokes; :mod:`graphmethods.kinematics.presets` builds the textbook ones, and
 :class:`LinkageMechanism` gives any of them the interface below.
 
-Mechanisms (frozen dataclasses, dimensions in m, keyword-only):
-:class:`SliderCrank`, :class:`FourBar`, :class:`SlottedLever`, :class:`Shaper`.
-Each gives ``positions(m=12)`` (or ``positions(phi=...)``) -> :class:`Positions` and
-``velocity_plans(positions, omega_1=1.0)`` -> :class:`VelocityPlans`, vectorised over all
-positions at once; ``derivatives(phi)`` is the analytic derivative of the position equations
-that the plans are checked against. Problem files are read by :func:`read_case`.
+The four classic kinds of the problem files are presets on the core
+(:mod:`graphmethods.kinematics.classic`, dimensions in m, keyword-only): :class:`SliderCrank`,
+:class:`FourBar`, :class:`SlottedLever`, :class:`Shaper`. Each, like any
+:class:`LinkageMechanism`, gives ``positions(m=12)`` (or ``positions(phi=...)``) ->
+:class:`Positions` and ``velocity_plans(positions, omega_1=1.0)`` -> :class:`VelocityPlans`,
+vectorised over all positions at once; ``derivatives(phi)`` is the derivative of the position
+equations, ``motion(...)`` adds accelerations. Problem files are read by :func:`read_case`.
 
 >>> from graphmethods.kinematics import SliderCrank
 >>> mech = SliderCrank(r=0.1, l=0.4, e=0.02, points={"S2": ("AB", 0.13, 0.0)})
@@ -31,15 +32,12 @@ from graphmethods.kinematics.case import (
                                           case_from_dict,
                                           read_case,
 )
-from graphmethods.kinematics.four_bar import FourBar
+from graphmethods.kinematics.classic import FourBar, Shaper, SliderCrank, SlottedLever
 from graphmethods.kinematics.linkage import Crank, Linkage, Motion, Point, Structure
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans, convenient_scale
 from graphmethods.kinematics.positions import Positions, Strokes
-from graphmethods.kinematics.shaper import Shaper
-from graphmethods.kinematics.slider_crank import SliderCrank
-from graphmethods.kinematics.slotted_lever import SlottedLever
 
 __all__ = [
     "Crank", "Linkage", "LinkageMechanism", "Motion", "Point", "Structure",

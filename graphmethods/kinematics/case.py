@@ -46,11 +46,8 @@ from types import MappingProxyType
 from typing import Any
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics.four_bar import FourBar
-from graphmethods.kinematics.mechanism import Mechanism
-from graphmethods.kinematics.shaper import Shaper
-from graphmethods.kinematics.slider_crank import SliderCrank
-from graphmethods.kinematics.slotted_lever import SlottedLever
+from graphmethods.kinematics.classic import FourBar, Shaper, SliderCrank, SlottedLever
+from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
 from graphmethods.units import DELTA_MAX, angle_deg, finite_result, json_value, omega_from_n, read_text, real
 
@@ -135,7 +132,7 @@ class Case:
         Free text from the file.
     source : str
         Where it was read from (file path or ``"<dict>"``).
-    mechanism : Mechanism
+    mechanism : LinkageMechanism
         The linkage with its centres of mass as extra points.
     n_rpm : float
         Mean crank speed, rev/min.
@@ -153,7 +150,7 @@ class Case:
     title: Title
     about: str
     source: str
-    mechanism: Mechanism
+    mechanism: LinkageMechanism
     n_rpm: float
     delta: float
     inertias: tuple
@@ -174,9 +171,7 @@ class Case:
     def linkage(self):
         """The problem's linkage on the kinematics core (:class:`~graphmethods.kinematics.linkage.Linkage`:
         accelerations, structure), the same linkage as ``mechanism``."""
-        from graphmethods.kinematics.presets import from_mechanism
-
-        return from_mechanism(self.mechanism)
+        return self.mechanism.linkage
 
     def __getattr__(self, key):
         # every validated key is also an attribute: case.m2, case.F0, ...
@@ -379,7 +374,7 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     if not 0.0 < omega * omega < math.inf:
         raise InputError(f"{source}: key 'n_rpm' = {v['n_rpm']:g} rev/min: ω² = (πn/30)² leaves the float range; "
                          f"give the mean speed in rev/min between about 1e-90 and 1e90")
-    mech: Mechanism
+    mech: LinkageMechanism
     inertias: tuple[Inertia, ...]
     cls: type[Case]
     try:

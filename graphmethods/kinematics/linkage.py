@@ -560,8 +560,7 @@ class Linkage:
         return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
                       index=None if labels is None else _ro(labels), omega_1=float(omega_1),
                       epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
-                      theta=ro({k: st.theta[k] for k in st.theta}), omega=ro(st.omega), epsilon=ro(st.epsilon),
-                      relative=ro(st.relative),
+                      theta=ro(st.theta), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
                       conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
 
     def _snap(self, st: State, mask: np.ndarray) -> None:

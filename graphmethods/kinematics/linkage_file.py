@@ -178,8 +178,8 @@ def _group(rd: _Reader, i: int, raw):
 def build_linkage(data: Mapping, *, source: str = "<dict>") -> Linkage:
     """The :class:`Linkage` of a ``"kind": "linkage"`` problem (only its kinematic keys are read)."""
     rd = _Reader(source)
-    raw = data.get("fixed")
-    fixed = rd.obj("fixed", raw, tuple(raw) if isinstance(raw, Mapping) else ()) if "fixed" in data \
+    raw_fixed = data.get("fixed")
+    fixed = rd.obj("fixed", raw_fixed, tuple(raw_fixed) if isinstance(raw_fixed, Mapping) else ()) if "fixed" in data \
         else rd.err("fixed", "is missing (the fixed joints, e.g. {\"O1\": [0, 0]})")
     ground = {rd.text("fixed", k): rd.xy(f"fixed.{k}", v) for k, v in fixed.items()}
     if not ground:

@@ -11,7 +11,7 @@ plans' construction records come from the groups, and accelerations are at hand 
 >>> mech = LinkageMechanism(six_bar_press(points={"S4": ("CD", 0.175)}))
 >>> plans = mech.velocity_plans(mech.positions(m=12), omega_1=10.0)
 >>> plans.constructions["D"].equation
-'v_D = v_C + v_DC'
+'v_D = v_C + v_DC;  v_D ∥ guide, v_DC ⟂ CD'
 >>> float(plans.v_along_guide("D")[0]), mech.link_name(3), mech.link_name("DC")
 (0.0, 'O2B', 'CD')
 """
@@ -31,6 +31,9 @@ from graphmethods.kinematics.linkage import Linkage
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, build_positions
+
+#: |sin| between two construction lines at or below which they are parallel (a toggle: refused)
+TOGGLE_SIN = 1e-14
 
 
 class _LazyConstructions(Mapping):
@@ -80,16 +83,42 @@ class LinkageMechanism(Mechanism):
         self.crank_pin = linkage.crank.pin
         self.fixed_joints = tuple(linkage.ground)
         driving = self._driving_points()
-        st = linkage.solve(np.zeros(1), level=0)
-        self.joints = tuple(k for k in st.z if k not in {p.name for p in linkage.points} or k in driving)
-        names, joints = self._link_names(driving)
+        names, joints, ends = self._link_names(driving)
+        driving = driving | ends                             # a slotted link's end is a joint too (O3B)
         self._canon = names                                  # link number -> canonical name
         self._number = {v: k for k, v in names.items()}
+        self.joints = self._joint_order(driving)
         self.link_joints = MappingProxyType(joints)
+        self._translating = frozenset(k for k in names if self._slides_on_frame(k))
         self.link_numbers = MappingProxyType({int(k): v for k, v in names.items()
-                                              if k.isdigit() and not self._slides_on_frame(k)})
+                                              if k.isdigit() and k not in self._translating})
         self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
                             if p.name not in driving)
+
+    def _joint_order(self, driving: set) -> tuple[str, ...]:
+        """Joints in drawing order: the crank's centre and pin, then each group's new points followed
+        by the fixed joints it hangs on and the link ends it adds (O1, A, B, O2; O1, A, A3, O3, B)."""
+        lk = self.linkage
+        order = [lk.crank.centre, lk.crank.pin]
+        ground = set(lk.ground)
+        for g in lk.groups:
+            ins = g.inputs()[0]
+            outs = g.outputs()[0]
+            order += [k for k in outs if k not in order]
+            order += sorted(k for k in ins if k in ground and k not in order)
+            links = set(g.links)
+            order += [p.name for p in lk.points if p.name in driving and p.link in links and p.name not in order]
+        order += [k for k in lk.ground if k not in order]
+        order += [p.name for p in lk.points if p.name in driving and p.name not in order]
+        return tuple(order)
+
+    @property
+    def slotted_links(self) -> tuple[tuple[str, str, str, str, str], ...]:
+        """Every block sliding on a slotted link that turns about a joint (the RPR groups) as
+        (pin on the block, its coincident point on the slotted link, the link's pivot, block number,
+        slotted link number): ``("A", "A3", "O3", "2", "3")`` for the slotted lever."""
+        return tuple((g.P, g.coincident, g.Q, g.links[0], g.links[1])
+                     for g in self.linkage.groups if isinstance(g, RPR))
 
     def _slides_on_frame(self, link: str) -> bool:
         """A slider on a guide of the frame (it translates: no angular velocity to report)."""
@@ -112,6 +141,7 @@ class LinkageMechanism(Mechanism):
         cr = lk.crank
         names = {cr.link: cr.centre + cr.pin}
         joints = {cr.centre + cr.pin: (cr.centre, cr.pin)}
+        ends_set: set = set()
         blocks = [g for g in lk.groups if isinstance(g, (RPR, RPP))]
         for g in lk.groups:
             pairs = []
@@ -125,6 +155,8 @@ class LinkageMechanism(Mechanism):
                     or [p for p in lk.points if p.link == g.links[1] and p.origin == g.Q]
                 end = max(ends, key=lambda p: p.distance).name if ends else g.coincident
                 pairs = [(g.links[1], g.Q, end)]
+                if ends:
+                    ends_set.add(end)
                 names[g.links[0]] = "block" if len(blocks) == 1 else f"block{g.links[0]}"
             elif isinstance(g, RPP):
                 names[g.links[0]] = "block" if len(blocks) == 1 else f"block{g.links[0]}"
@@ -135,7 +167,7 @@ class LinkageMechanism(Mechanism):
             for num, x, y in pairs:
                 names[num] = x + y
                 joints[x + y] = (x, y)
-        return names, joints
+        return names, joints, ends_set
 
     def _on(self, p) -> str:
         """A point's link written by its joints, first joint = where its distance starts ("AB", "BA")."""
@@ -164,11 +196,14 @@ class LinkageMechanism(Mechanism):
     # ------------------------------------------------------------------ interface
     @property
     def omega_links(self) -> tuple[str, ...]:
-        return tuple(self._canon[k] for k in self.linkage.links)
+        return tuple(self._canon[k] for k in self.linkage.links if k not in self._translating)
 
     def link_name(self, link) -> str:
         """Canonical name of a link given by its textbook number (3 or "3") or its joints ("AB", "BA")."""
         if isinstance(link, (int, np.integer)) and not isinstance(link, bool):
+            if str(int(link)) not in self._canon:
+                raise InputError(f"{self.kind}: no link number {int(link)}; links: "
+                                 + ", ".join(f"{k} = {v}" for k, v in sorted(self.link_numbers.items())))
             link = str(int(link))
         if isinstance(link, str):
             if link in self._canon:
@@ -199,9 +234,11 @@ class LinkageMechanism(Mechanism):
     def positions(self, m: int | None = None, *, phi=None, phi_from_start=None) -> Positions:
         lk = self.linkage
         mo = lk.motion(m=m, phi=phi, phi_from_start=phi_from_start, level=0)
-        strokes = mo.strokes
+        strokes = self.strokes() if mo.strokes is not None else None     # with this kind's names of its extremes
         start = strokes.phi_start if strokes is not None else lk._default_start()
-        geom = {k: (c.real.copy(), c.imag.copy()) for k, c in mo.z.items()}
+        order = self.joints + tuple(p.name for p in self.points)
+        order += tuple(k for k in mo.z if k not in order)
+        geom = {k: (mo.z[k].real.copy(), mo.z[k].imag.copy()) for k in order}
         out = {}
         if lk.output is not None and strokes is not None:
             if lk.output[0] == "point":
@@ -213,7 +250,8 @@ class LinkageMechanism(Mechanism):
                 out = {"psi": mo.psi, "psi_max": lk.psi_max()}
         pos = build_positions(self, np.array(mo.phi), m=None if mo.index is None else len(mo.phi) - 1,
                               phi_start=start, strokes=strokes, geom=geom,
-                              theta={self._canon[k]: np.array(v) for k, v in mo.theta.items()},
+                              theta={self._canon[k]: np.array(v) for k, v in mo.theta.items()
+                                     if k not in self._translating},
                               phi_from_start=np.array(mo.phi_from_start), output=out)
         return pos
 
@@ -231,17 +269,90 @@ class LinkageMechanism(Mechanism):
                       labels=positions.index)
         lk._snap(st, np.asarray(positions.extreme))
         n = positions.n
+        extreme = np.asarray(positions.extreme)
         sins = [np.broadcast_to(np.abs(c), (n,)) for c in st.conditioning.values()]
-        constructions = _LazyConstructions(lambda: self._constructions(st))
         sin_min = np.minimum.reduce(sins) if sins else np.ones(n)
-        vectors = {k: V.frozen(_xy(c)) for k, c in st.v.items()}
+        toggle = (sin_min <= TOGGLE_SIN) & ~extreme
+        if toggle.any():
+            self._raise_toggle(positions, int(np.argmax(toggle)), st)
+        self._snap_at_rest(st, extreme)
+        constructions = _LazyConstructions(lambda: self._constructions(st))
+        order = self.joints + tuple(p.name for p in self.points)
+        vectors = {k: V.frozen(_xy(st.v[k])) for k in order + tuple(k for k in st.v if k not in order)}
         return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
                              vectors=MappingProxyType(vectors),
                              omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
-                                                      for k, w in st.omega.items()}),
+                                                      for k, w in st.omega.items() if k not in self._translating}),
                              constructions=constructions,
                              sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
                              sin_threshold=float(sin_threshold))
+
+    def _raise_toggle(self, positions: Positions, i: int, st) -> None:
+        """Refuse a position where two construction lines are parallel (a toggle), naming it."""
+        from graphmethods.errors import AssemblyError
+        from graphmethods.kinematics.groups import RRP, RRR
+        name = min(st.conditioning, key=lambda k: float(np.broadcast_to(st.conditioning[k], (positions.n,))[i]))
+        g = next((g for g in self.linkage.groups if g._name() == name), None)
+        if isinstance(g, RRR):
+            what = f"the links {self.link_name(g.links[0])} and {self.link_name(g.links[1])} are in line (toggle)"
+        elif isinstance(g, RRP):
+            what = f"the link {self.link_name(g.links[0])} stands perpendicular to the guide of {g.C} (toggle)"
+        else:
+            what = f"the group {name} is at a toggle"
+        raise AssemblyError(f"{self.kind}: {self._where(positions.phi, positions.index, i)}: {what}; the two "
+                            f"construction lines are parallel and the velocity is infinite for a turning crank; "
+                            f"move the position off the toggle")
+
+    def _at_rest(self, st, i: int) -> tuple[set, set]:
+        """The points and links that stand still when the output is at an extreme position: the output
+        itself; a rocker's joints and points and the block sliding on it; and, when a slider on a frame
+        guide stops while the link driving it turns about a fixed joint, that link as well unless the
+        two are in line at position ``i`` (its velocity is ⟂ to both): the shaper's lever, not the
+        Whitworth's; and a link whose
+        two joints rest (the shaper's BC)."""
+        from graphmethods.kinematics.groups import RRP, RRR
+        lk = self.linkage
+        if lk.output is None:
+            return set(), set()
+        kind, name = lk.output
+        links, points = ({name}, set()) if kind == "link" else (set(), {name})
+        ground = set(lk.ground)
+        for _ in range(len(lk.groups) + len(lk.points) + 1):
+            before = (len(links), len(points))
+            for g in lk.groups:
+                if isinstance(g, RRP) and g.C in points and g.guide.link == GROUND:
+                    for p in lk.points:
+                        if p.name == g.P and p.origin in ground and p.link != lk.crank.link:
+                            u = st.z[g.P][i] - st.z[p.origin][i]
+                            w = st.z[g.C][i] - st.z[g.P][i]
+                            if abs((u.conjugate() * w).imag) > 1e-9 * abs(u) * abs(w):   # not in line
+                                links.add(p.link)
+                if isinstance(g, RPR) and g.links[1] in links and g.Q in ground:
+                    links.add(g.links[0])
+                    points.add(g.coincident)
+                if isinstance(g, RRR) and g.links[1] in links and g.Q in ground:
+                    points.add(g.C)
+                if isinstance(g, (RRP, RRR)) and g.P in points and g.C in points:
+                    links.add(g.links[0])                 # a link with two points at rest rests
+            points |= {p.name for p in lk.points if p.link in links and (p.origin in ground or p.origin in points)}
+            if (len(links), len(points)) == before:
+                break
+        return links, points
+
+    def _snap_at_rest(self, st, extreme: np.ndarray) -> None:
+        """At an extreme position what stands still (:meth:`_at_rest`) is put exactly at the pole."""
+        if not extreme.any():
+            return
+        for i in np.flatnonzero(extreme):
+            links, points = self._at_rest(st, int(i))
+            for k in points:
+                if k in st.v:
+                    st.v[k] = np.array(np.broadcast_to(st.v[k], extreme.shape))
+                    st.v[k][i] = 0.0
+            for k in links:
+                if k in st.omega:
+                    st.omega[k] = np.array(np.broadcast_to(st.omega[k], extreme.shape), dtype=float)
+                    st.omega[k][i] = 0.0
 
     def _constructions(self, st) -> dict:
         """How every point of the plan is found (built when a figure first asks for it)."""
@@ -256,11 +367,12 @@ class LinkageMechanism(Mechanism):
                 for rec in step.records(st):
                     if rec.plan != "velocity":
                         continue
+                    equation, rename = self._textbook(step, rec.equation)
                     lines = tuple(ConstructionLine(
                         through=self._plan_label(st, pt), relation="perpendicular" if lab.startswith("⟂") else "parallel",
-                        to=lab[2:], point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
+                        to=rename.get(lab[2:], lab[2:]), point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
                         for lab, pt, d in rec.lines)
-                    cons.append(PointConstruction(name=rec.point, method="intersection", equation=rec.equation,
+                    cons.append(PointConstruction(name=rec.point, method="intersection", equation=equation,
                                                   lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
                     if isinstance(step, RPP):
                         cons.append(PointConstruction(name=step.R, method="same", on=step.coincident,
@@ -268,7 +380,12 @@ class LinkageMechanism(Mechanism):
             else:
                 on = self._on(step)
                 lever = next((g for g in lk.groups if isinstance(g, RPR) and g.links[1] == step.link), None)
-                if lever is not None and step.origin == lever.Q:
+                if lever is not None and step.origin == lever.Q and step.name in self.joints:
+                    cons.append(PointConstruction(
+                        name=step.name, method="proportion", on=on,
+                        equation=f"p{step.name.lower()} = p{lever.coincident.lower()} · {lever.Q}{step.name}/"
+                                 f"{lever.Q}{lever.P} (points of the rocker by proportion)"))
+                elif lever is not None and step.origin == lever.Q and on not in self.link_joints:
                     cons.append(PointConstruction(
                         name=step.name, method="proportion", on=on,
                         equation=f"p{step.name.lower()} = p{lever.coincident.lower()} · {lever.Q}{step.name}/"
@@ -276,11 +393,33 @@ class LinkageMechanism(Mechanism):
                 else:
                     x = on[:len(step.origin)] if on.startswith(step.origin) else step.origin
                     y = on[len(x):]
+                    ang = "" if step.angle == 0.0 else f", turned {math.degrees(step.angle):.6g}°"
                     cons.append(PointConstruction(
                         name=step.name, method="similarity", on=on,
                         equation=f"{step.name.lower()} on {x.lower()}{y.lower()}: {x.lower()}{step.name.lower()}/"
-                                 f"{x.lower()}{y.lower()} = {x}{step.name}/{x}{y} (similarity theorem)"))
+                                 f"{x.lower()}{y.lower()} = {x}{step.name}/{x}{y}{ang} (similarity theorem)"))
+        extra = [p.name for p in self.points]           # points on links last, as the book adds them
+        cons = [c for c in cons if c.name not in extra] + sorted(
+            (c for c in cons if c.name in extra), key=lambda c: extra.index(c.name))
         return {c.name: c for c in cons}
+
+    def _textbook(self, g, equation: str) -> tuple[str, dict[str, str]]:
+        """The velocity equation as the book writes it, with the directions of both vectors, for a
+        group on the frame (``v_B = v_A + v_BA;  v_B ⟂ O2B, v_BA ⟂ AB``), and the renamed link of its
+        construction lines (a slotted link by its pivot and the pin: O3A); else the group's own."""
+        from graphmethods.kinematics.groups import RRP, RRR
+        ground = self.linkage.ground
+        if isinstance(g, RRR) and g.Q in ground:
+            P, Q, C = g.P, g.Q, g.C
+            return f"v_{C} = v_{P} + v_{C}{P};  v_{C} ⟂ {Q}{C}, v_{C}{P} ⟂ {P}{C}", {}
+        if isinstance(g, RRP) and g.guide.link == GROUND:
+            P, C = g.P, g.C
+            return f"v_{C} = v_{P} + v_{C}{P};  v_{C} ∥ guide, v_{C}{P} ⟂ {P}{C}", {}
+        if isinstance(g, RPR) and g.Q in ground:
+            P, Q, co, blk = g.P, g.Q, g.coincident, g.links[0]
+            return (f"v_{co} = v_{P}{blk} + v_{co}{P}{blk};  v_{co} ⟂ {Q}{P}, v_{co}{P}{blk} ∥ {Q}{P}",
+                    {f"{Q}{co}": f"{Q}{P}"})
+        return equation, {}
 
     def _plan_label(self, st, point_vec) -> str:
         """The plan image a construction line is drawn through: p for the fixed points, else the point's."""
@@ -294,7 +433,8 @@ class LinkageMechanism(Mechanism):
         phi = self._angles(phi, "phi")
         st = self.linkage.solve(phi, omega_1=1.0, level=1)
         s = self.sense
-        return ({k: _xy(c) * s for k, c in st.v.items()}, {self._canon[k]: w * s for k, w in st.omega.items()})
+        return ({k: _xy(c) * s for k, c in st.v.items()},
+                {self._canon[k]: w * s for k, w in st.omega.items() if k not in self._translating})
 
     def _link_length(self, canon: str) -> float:  # pragma: no cover - not used by the core
         raise InputError("links of a core linkage have no single length")

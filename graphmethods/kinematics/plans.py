@@ -25,8 +25,8 @@ the angular velocities the ratios ω_i/ω₁.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 import numpy as np
 

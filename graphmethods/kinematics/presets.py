@@ -1,7 +1,8 @@
 """The textbook linkages as :class:`~graphmethods.kinematics.linkage.Linkage` objects on the core.
 
 The four kinds of the problem files (slider-crank, four-bar, slotted lever, shaper) with the
-same frames, point names and link numbers as their classes in this package, and the course
+same frames, point names and link numbers as the problem files (:mod:`graphmethods.kinematics.classic`
+gives them the checks and names of those files), and the course
 mechanisms built from the same groups (six-bar press, ...). Extra points are given as
 ``{"S2": ("AB", 0.13, 0.0)}``: link by its joints (first joint = where the distance starts),
 distance in m, angle in rad from the line first joint → second joint.
@@ -46,7 +47,8 @@ def _points(points: Mapping | None, links: Mapping[str, tuple[str, str, str, flo
 
 def slider_crank(*, r: float, l: float, e: float = 0.0, assembly: int = 1, sense: int = 1,
                  working_stroke: str = "toward_crank", points: Mapping | None = None) -> Linkage:
-    """Offset slider-crank O–A–B, slider B on the line y = e (as :class:`SliderCrank`)."""
+    """Offset slider-crank O–A–B, slider B on the line y = e (as
+    :class:`~graphmethods.kinematics.classic.SliderCrank` builds it)."""
     g = RRP(P="A", C="B", l=l, guide=Guide(GROUND, complex(0.0, e), 0.0), links=("2", "3"), branch=assembly)
     return Linkage(ground={"O": (0.0, 0.0)}, crank=Crank("O", "A", r=r), groups=[g],
                    points=_points(points, {"OA": ("1", "O", "A", 0.0), "AB": ("2", "A", "B", 0.0)}),
@@ -55,7 +57,8 @@ def slider_crank(*, r: float, l: float, e: float = 0.0, assembly: int = 1, sense
 
 def four_bar(*, l1: float, l2: float, l3: float, l4: float, ground_angle: float = 0.0, assembly: int = 1,
              sense: int = 1, working_stroke: str = "slow", points: Mapping | None = None) -> Linkage:
-    """Four-bar O1–A–B–O2 (as :class:`FourBar`): crank 1 = O1A, coupler 2 = AB, rocker 3 = O2B."""
+    """Four-bar O1–A–B–O2 (as :class:`~graphmethods.kinematics.classic.FourBar` builds it): crank
+    1 = O1A, coupler 2 = AB, rocker 3 = O2B."""
     O2 = (l1 * math.cos(ground_angle), l1 * math.sin(ground_angle))
     g = RRR(P="A", Q="O2", C="B", l_PC=l3, l_QC=l4, links=("2", "3"), branch=assembly)
     return Linkage(ground={"O1": (0.0, 0.0), "O2": O2}, crank=Crank("O1", "A", r=l2), groups=[g],
@@ -71,7 +74,8 @@ def _lever(r, l_O1O3, theta_O3):
 
 def slotted_lever(*, r: float, l_O1O3: float, l_O3B: float, theta_O3: float = -math.pi / 2, sense: int = 1,
                   working_stroke: str = "slow", points: Mapping | None = None) -> Linkage:
-    """Crank and slotted lever O1–A, block 2, lever 3 = O3B (as :class:`SlottedLever`); r may
+    """Crank and slotted lever O1–A, block 2, lever 3 = O3B (as
+    :class:`~graphmethods.kinematics.classic.SlottedLever` builds it); r may
     exceed O1O3 (a rotating slotted lever: no extreme positions)."""
     ground, crank, g = _lever(r, l_O1O3, theta_O3)
     pts = [Point("B", "3", "O3", l_O3B)] + _points(points, {"O1A": ("1", "O1", "A", 0.0),
@@ -82,7 +86,8 @@ def slotted_lever(*, r: float, l_O1O3: float, l_O3B: float, theta_O3: float = -m
 
 def shaper(*, r: float, l_O1O3: float, l_O3B: float, l_BC: float, y_guide: float, theta_O3: float = -math.pi / 2,
            assembly: int = 1, sense: int = 1, working_stroke: str = "slow", points: Mapping | None = None) -> Linkage:
-    """Shaper (as :class:`Shaper`): slotted lever, link 4 = BC, ram 5 = C on the line y = y_guide.
+    """Shaper (as :class:`~graphmethods.kinematics.classic.Shaper` builds it): slotted lever, link
+    4 = BC, ram 5 = C on the line y = y_guide.
 
     The lever's end B is an extra point of link 3; the group BC–ram is an RRP on it.
     """
@@ -119,33 +124,3 @@ def six_bar_press(*, l_O1A: float = 0.08, l_AB: float = 0.30, l_O2B: float = 0.2
                        points, {"O1A": ("1", "O1", "A", 0.0), "AB": ("2", "A", "B", 0.0), "O2B": ("3", "O2", "B", 0.0),
                                 "CD": ("4", "C", "D", 0.0)}),
                    sense=sense, output="D", working_stroke=working_stroke, name="six-bar press")
-
-
-def from_mechanism(mech) -> Linkage:
-    """The core linkage of one of the four classic classes (``SliderCrank``, ``FourBar``,
-    ``SlottedLever``, ``Shaper``), with the same dimensions, branch, sense, working stroke and
-    extra points; point names and link numbers are the same (links by number: "1", "2", ...).
-
-    >>> from graphmethods.kinematics import SliderCrank
-    >>> lk = from_mechanism(SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13)}))
-    >>> lk.structure().formula, [p.name for p in lk.points]
-    ('I(0,1) → II(2,3)', ['S2'])
-    """
-    from graphmethods.kinematics.four_bar import FourBar
-    from graphmethods.kinematics.shaper import Shaper
-    from graphmethods.kinematics.slider_crank import SliderCrank
-    from graphmethods.kinematics.slotted_lever import SlottedLever
-
-    pts = {p.name: (p.link, p.distance, p.angle) for p in mech.points}
-    common = dict(sense=mech.sense, working_stroke=mech.working_stroke, points=pts)
-    if isinstance(mech, SliderCrank):
-        return slider_crank(r=mech.r, l=mech.l, e=mech.e, assembly=mech.assembly, **common)
-    if isinstance(mech, FourBar):
-        return four_bar(l1=mech.l1, l2=mech.l2, l3=mech.l3, l4=mech.l4, ground_angle=mech.ground_angle,
-                        assembly=mech.assembly, **common)
-    if isinstance(mech, Shaper):
-        return shaper(r=mech.r, l_O1O3=mech.l_O1O3, l_O3B=mech.l_O3B, l_BC=mech.l_BC, y_guide=mech.y_guide,
-                      theta_O3=mech.theta_O3, assembly=mech.assembly, **common)
-    if isinstance(mech, SlottedLever):
-        return slotted_lever(r=mech.r, l_O1O3=mech.l_O1O3, l_O3B=mech.l_O3B, theta_O3=mech.theta_O3, **common)
-    raise InputError(f"no core preset for {type(mech).__name__}")

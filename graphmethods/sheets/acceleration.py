@@ -133,8 +133,6 @@ class _Problem:
 
     def __init__(self, obj, *, m, omega_1, epsilon_1) -> None:
         from graphmethods.kinematics.linkage import Linkage
-        from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
-        from graphmethods.kinematics.presets import from_mechanism
 
         if isinstance(epsilon_1, bool) or not isinstance(epsilon_1, (int, float)) or not math.isfinite(epsilon_1):
             raise InputError(f"epsilon_1 is the crank's angular acceleration in rad/s² (a finite number), "
@@ -149,7 +147,7 @@ class _Problem:
             return
         lk = K._Linkage.of(obj, m=m, omega_1=omega_1)
         mech = lk.mech
-        self.linkage = mech.linkage if isinstance(mech, LinkageMechanism) else from_mechanism(mech)
+        self.linkage = mech.linkage          # every mechanism is a linkage of the core
         self.m = 12 if lk.m is None else lk.m
         self.omega_1, self.problem, self.n_rpm = lk.omega_1, lk.problem, lk.n_rpm
 

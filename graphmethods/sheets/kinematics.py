@@ -356,6 +356,7 @@ class _Parts:
     pin: str
     extra: tuple[str, ...]
     paths: tuple[str, ...]
+    coincident: tuple[str, ...] = ()         # points of slotted links under a block's pin (A3): not drawn
 
 
 def _translating_yokes(mech) -> list:
@@ -367,23 +368,21 @@ def _translating_yokes(mech) -> list:
 
 
 def _parts(mech, pos) -> _Parts:
-    fixed = getattr(mech, "fixed_joints", None) or tuple(
-        j for j in mech.joints if np.ptp(pos.coords[j], axis=0).max() == 0.0 and j.startswith("O"))
+    fixed = tuple(mech.fixed_joints)
     links = tuple(mech.link_joints.values())
     sliders = dict(mech.guides)
     pin = mech.crank_pin
     centre = next(x for x, y in links if y == pin)
-    block = None
-    pivot = next((x for x, y in links if x in fixed and x != centre), None) if "A3" in mech.joints else None
-    if pivot is not None:        # a block on a turning slotted lever (a yoke that translates has no pivot)
-        block = (pin, pivot)
+    slotted = tuple(mech.slotted_links)              # (pin on the block, its point on the slotted link, pivot, ...)
+    block = (slotted[0][0], slotted[0][2]) if slotted else None
+    coincident = {sl[1] for sl in slotted}
     if sliders:
         output = next(iter(sliders))
     else:
         output = next(y for x, y in links if x in fixed and x != centre)
     extra = tuple(p.name for p in mech.points)
-    moving = [j for j in mech.joints if j not in fixed and j not in (pin, "A3") and j not in sliders]
-    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra)
+    moving = [j for j in mech.joints if j not in fixed and j != pin and j not in coincident and j not in sliders]
+    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident))
 
 
 def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | None = 0, trajectories: bool = True,
@@ -568,7 +567,8 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
             top_els.append(SliderBlock(P(P_xy), angle_deg=_paper_deg(sd), length_mm=8.0, height_mm=4.5,
                                        name=f"block-{g.P}"))
         for j in mech.joints:
-            if j in parts.fixed or j in parts.sliders or j == "A3" or (parts.rocker_block and j == parts.rocker_block[0]):
+            if (j in parts.fixed or j in parts.sliders or j in parts.coincident
+                    or (parts.rocker_block and j == parts.rocker_block[0])):
                 continue
             top_els.append(PinJoint(P(pos.coords[j][thick]), name=f"joint-{j}"))
         for j in parts.extra:
@@ -600,9 +600,18 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     # ---- position numbers at the output point, the stroke H beyond them, numbers at the crank pin
     guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
     out_items = _numbered(pos, parts, drawn, ext, ext_pos, parts.output)
+    free = None                                           # a guide at an angle: the numbers' side on paper
     if guide is not None:
         out_side: str | None = "s" if guide.side > 0 else "n"
-        numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
+        gs, ge = np.asarray(guide.start, float), np.asarray(guide.end, float)
+        ug = (ge - gs) / float(np.hypot(*(ge - gs)))
+        if abs(ug[1]) > 1e-9:
+            free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
+            toward = math.degrees(math.atan2(-free[1], free[0]))
+            dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward)
+        else:
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
     else:
         pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
         numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
@@ -619,10 +628,21 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
         reach = max([axis_y - bb[1] for bb in boxes] if out_side == "n" else [bb[3] - axis_y for bb in boxes]) \
             if boxes else 0.0
         text = _word(nt, "stroke", H=nt.number(pos.H, sig=4), u=unit_l)
-        lift = (max(reach, 2.0) + 0.8) * (-1.0 if out_side == "n" else 1.0)       # measured from beyond the numbers
-        left, right = (left[0], left[1] + lift), (right[0], right[1] + lift)
-        dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if out_side == "n" else \
-            Dimension(left, right, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H")
+        if free is not None:                              # along a guide at an angle, beyond its numbers
+            a_, b_ = np.asarray(a, float), np.asarray(b, float)
+            corners = [np.array([x, y]) for bb in boxes for x in (bb[0], bb[2]) for y in (bb[1], bb[3])]
+            reach = max([float((c - a_) @ free) for c in corners], default=0.0)
+            lift = (max(reach, 2.0) + 0.8) * free
+            p1, p2 = a_ + lift, b_ + lift
+            if float(np.array([-(p2 - p1)[1], (p2 - p1)[0]]) @ free) < 0:
+                p1, p2 = p2, p1                           # the dimension's offset goes to the free side
+            dim = Dimension(tuple(p1.tolist()), tuple(p2.tolist()), text, offset_mm=4.0, size_mm=TEXT_MM,
+                            name="dimension-H")
+        else:
+            rise = (max(reach, 2.0) + 0.8) * (-1.0 if out_side == "n" else 1.0)       # measured from beyond the numbers
+            left, right = (left[0], left[1] + rise), (right[0], right[1] + rise)
+            dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if out_side == "n" \
+                else Dimension(left, right, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H")
         dims.append(dim)
         _register(occ, dim)
     numbers += _crank_numbers(_numbered(pos, parts, drawn, ext, ext_pos, parts.pin), P(c_xy), P, occ, sheet.box)
@@ -633,7 +653,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     ref = thick if thick is not None else 0
     centroid = np.mean([P(pos.coords[j][ref]) for j in mech.joints], axis=0)
     for j in list(mech.joints) + list(parts.extra):
-        if j == "A3":
+        if j in parts.coincident:
             continue
         at = P(pos.coords[j][ref])
         away = np.asarray(at) - centroid
@@ -784,10 +804,11 @@ def _crank_numbers(items, centre, P, occ, box) -> list:
     return out
 
 
-def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None) -> list:
+def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None) -> list:
     """The position numbers at the output point: for a slider in a row on the free side of its guide
-    (``side`` "n" or "s"; points closer than 2 mm share a label, "1, 11"); for a rocker outward from
-    its pivot."""
+    (``side`` "n" or "s" for a horizontal guide, or the compass ``dirs`` and angle ``prefer`` (deg) of
+    the free side of a guide at an angle; points closer than 2 mm share a label, "1, 11"); for a
+    rocker outward from its pivot."""
     out = []
     groups: list[list] = []
     for tag, text, xy in items:
@@ -802,9 +823,9 @@ def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None) -> list
         tag, o, _ = g[0]
         text = ", ".join(t for _, _, t in g)
         if side is not None:
-            prefer = 90.0 if side == "n" else 270.0
-            out.append(_place(occ, tuple(o), text, prefer, size_mm=SMALL_MM, within=box,
-                              dirs=(side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
+            toward = prefer if prefer is not None else (90.0 if side == "n" else 270.0)
+            out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box,
+                              dirs=dirs or (side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
                               name=f"number-out-{tag}"))
             continue
         prefer = math.degrees(math.atan2(-(o - pivot)[1], (o - pivot)[0]))
@@ -831,8 +852,9 @@ class _PlanVector:
 
 def _rel_name(mech, x: str, y: str) -> str:
     """Name of the relative velocity of X with respect to Y (``"BA"``; ``"A3A2"`` on a slotted lever)."""
-    if "A3" in mech.joints and y == mech.crank_pin:
-        y = y + "2"
+    for pin, _, _, block, _ in mech.slotted_links:
+        if y == pin:
+            return x + y + block
     return x + y
 
 
@@ -1124,9 +1146,9 @@ def _equations(plans, k: int, nt, lk) -> list[str]:
             lo = plans.label(name)
             lines.append(f"{ix}{_sub(lo)}/{ix}{iy} = {_sub(x + name)}/{_sub(x + y)}")
         elif c.method == "proportion":
-            pivot = c.on[:-len(name)] if c.on.endswith(name) and len(c.on) > len(name) else "O3"
-            lines.append(f"p{_sub(plans.label(name))} = pa_{{3}}·{_sub(pivot + name)}/{_sub(pivot + 'A')}"
-                         if "A3" in mech.joints else c.equation)
+            sl = next((sl for sl in mech.slotted_links if c.on and c.on.startswith(sl[2])), None)
+            lines.append(f"p{_sub(plans.label(name))} = p{_sub(plans.label(sl[1]))}·{_sub(sl[2] + name)}/"
+                         f"{_sub(sl[2] + sl[0])}" if sl is not None else c.equation)
     return lines
 
 
@@ -1148,7 +1170,7 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
             out.append(f"ω_{{{num}}} = ω_{{{other}}}" if other is not None else f"ω_{{{num}}} = 0")
             continue
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
-        num_sym = f"v_{{{y}}}" if x.startswith("O") else f"v_{{{_rel_name(mech, y, x)}}}"
+        num_sym = f"v_{{{y}}}" if x in mech.fixed_joints else f"v_{{{_rel_name(mech, y, x)}}}"
         out.append(f"ω_{{{num}}} = {num_sym}/l_{{{link}}} = {nt.number(abs(w) * L, sig=4)}/{nt.number(L, sig=4)} = "
                    f"{nt.number(abs(w), sig=4)} {_unit(nt, 'rad/s')}, {_sense_word(nt, w)}")
     return out

@@ -686,7 +686,7 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
     crank = next(ln for ln, (a, b) in mech.link_joints.items() if b == pin)
     others = [ln for ln in mech.link_joints if ln != crank]
     moving = [j for j in dict.fromkeys(b for ln in others for b in mech.link_joints[ln])
-              if j != pin and not j.startswith("O")]
+              if j != pin and j not in mech.fixed_joints]
     mu_l = figure.scales()[0]
 
     def pos_of(links):

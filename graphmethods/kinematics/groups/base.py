@@ -78,7 +78,7 @@ class _Angles(dict):
         return dict.__contains__(self, link) or link in self._e
 
     def keys(self):
-        return list(dict.fromkeys([*dict.keys(self), *self._e]))
+        return list(dict.fromkeys([*self._e, *dict.keys(self)]))     # solving order, however they were asked for
 
     def __iter__(self):
         return iter(self.keys())

@@ -36,9 +36,8 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.kinematics import vectors as V
-from graphmethods.kinematics.mechanism import (Mechanism, PointConstruction, _check_length, _deg, _fmt, fail, known,
-                                               line, pole)
+from classic_reference import vectors as V
+from classic_reference.mechanism import Mechanism, PointConstruction, _check_length, _deg, _fmt, fail, known, line, pole
 from graphmethods.kinematics.positions import Positions
 
 

@@ -29,10 +29,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics import vectors as V
-from graphmethods.kinematics.mechanism import PointConstruction, _check_length, _fmt, fail, line
+from classic_reference import vectors as V
+from classic_reference.mechanism import PointConstruction, _check_length, _fmt, fail, line
+from classic_reference.slotted_lever import SlottedLever
 from graphmethods.kinematics.positions import Positions
-from graphmethods.kinematics.slotted_lever import SlottedLever
 
 
 @dataclass(frozen=True, kw_only=True)
