@@ -19,6 +19,7 @@ from graphmethods.sheets import dynamics as D
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets import steps as S
 from graphmethods.sheets.energy import energy_indicator
+from graphmethods.sheets.forces import force_plans, zhukovsky_forces
 from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -27,7 +28,9 @@ CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "acceleration-plan") fo
          + [(c, "wittenbauer") for c in ("press", "shaper", "four-bar")]
          + [(c, "kinematic-diagrams") for c in ("press", "shaper")]
          + [(c, "work-diagrams") for c in ("press", "W3")]
-         + [(c, "zhukovsky-lever") for c in ("press", "four-bar")]
+         + [(c, "zhukovsky-load") for c in ("press", "four-bar")]
+         + [(c, "force-plans") for c in LINKAGES + ("six-bar-press",)]
+         + [(c, "zhukovsky-lever") for c in LINKAGES]
          + [(c, "kinematic-scheme") for c in LINKAGES])
 
 
@@ -77,7 +80,8 @@ def test_each_step_draws_the_previous_ones_and_the_last_is_the_finished_figure(b
 
 DIRECT = [("press", "velocity-plan"), ("shaper", "velocity-plan"), ("W1", "energy-indicator"),
           ("press", "wittenbauer"), ("press", "kinematic-diagrams"), ("W3", "work-diagrams"),
-          ("press", "zhukovsky-lever"), ("slotted-lever", "kinematic-scheme"), ("shaper", "acceleration-plan")]
+          ("press", "zhukovsky-load"), ("slotted-lever", "kinematic-scheme"), ("shaper", "acceleration-plan"),
+          ("shaper", "force-plans"), ("four-bar", "zhukovsky-lever")]
 
 
 @pytest.mark.parametrize("case,figure", DIRECT, ids=[f"{c}-{f}" for c, f in DIRECT])
@@ -102,8 +106,12 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
         direct = C.work_diagrams(obj, page=page, title_block=tb)
     elif figure == "kinematic-scheme":
         direct = K.kinematic_scheme(obj, m=12, page=page, title_block=tb)
-    elif figure == "zhukovsky-lever":
+    elif figure == "zhukovsky-load":
         direct = D.zhukovsky_lever(obj, page=page, title_block=tb)
+    elif figure == "force-plans":
+        direct = force_plans(obj, 2, page=page, title_block=tb)
+    elif figure == "zhukovsky-lever":
+        direct = zhukovsky_forces(obj, 2, page=page, title_block=tb)
     else:
         from graphmethods.dynamics.study import Study
 
@@ -387,7 +395,7 @@ def test_cli_default_name_and_positions(tmp_path, capsys, monkeypatch):
     (["W2", "wittenbauer"], "masses and loads"),
     (["press", "plan"], "use one of velocity-plan"),
     (["press", "velocity-plan", "--position", "99"], "position 99"),
-    (["press", "wittenbauer", "--position", "2"], "velocity and acceleration plans and Zhukovsky's lever only"),
+    (["press", "wittenbauer", "--position", "2"], "velocity, acceleration and force plans and Zhukovsky's lever only"),
     (["press", "acceleration-plan", "--position", "12"], "position 12"),
     (["four-bar", "kinematic-diagrams"], "no slider"),
     (["W1", "work-diagrams"], "needs moment curves"),

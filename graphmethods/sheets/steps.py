@@ -13,9 +13,14 @@ names that figure function gives, in the order the construction records say:
   the ray at ψ_min; k and l; kl; J_F.
 - :func:`differentiation_steps` (the slider's s, v, a by graphical differentiation),
   :func:`integration_steps` (work diagrams by the method of chords), :func:`zhukovsky_steps`
-  (Zhukovsky's lever) and :func:`scheme_steps` (the kinematic scheme in m positions).
+  (Zhukovsky's lever with the working load alone) and :func:`scheme_steps` (the kinematic scheme
+  in m positions).
+- :func:`force_plans_steps`: μ_F; for each group, in the order they are solved, the known forces
+  end to end, the two unknown directions, their meeting point, the reactions; the crank closed by
+  R_01; the table and M_b. :func:`zhukovsky_forces_steps`: the plan turned 90° as a lever, each
+  force at the image of its point with its moment about p, F_b from Σ M_p = 0, M_b.
 
-A new construction (the acceleration plan, the force plan) plugs in as one more function of
+A new construction plugs in as one more function of
 the same shape that returns a :class:`~graphmethods.scene.steps.BuildUp`; :data:`FIGURES` lists
 them by name for :func:`build` and the command line.
 
@@ -663,6 +668,225 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
+# ----------------------------------------------------------------------------- the force plans
+
+WORDS_F = {
+    "f_scale":   ("One force scale for every plan, so the largest polygon fits: {mu}",
+                  "Один масштаб сил для всех планов, чтобы поместился наибольший: {mu}",
+                  "所有力多边形取同一比例尺，使最大者能画下：{mu}"),
+    "f_known":   ("{g}: lay the known forces end to end at μ_F: {forces}",
+                  "{g}: откладываем известные силы одну за другой в масштабе μ_F: {forces}",
+                  "{g}：按 μ_F 将已知力首尾相接：{forces}"),
+    "f_first":   ("; {parts} found first, from the links' moment equations (ΣM = 0)",
+                  "; {parts} — заранее, из уравнений моментов звеньев (ΣM = 0)",
+                  "；{parts} 先由各构件的力矩方程 (ΣM = 0) 求得"),
+    "f_dirs":    (("Through the end of the chain, the line of {X} {relX}; through its start, the line of {Y} {relY}: "
+                   "their directions are known, not their sizes"),
+                  ("Через конец цепочки — линию {X} {relX}; через её начало — линию {Y} {relY}: направления "
+                   "известны, величины нет"),
+                  "过力链终点作 {X} 的作用线 {relX}；过起点作 {Y} 的作用线 {relY}：方向已知，大小未知"),
+    "f_meet":    ("The two lines meet: the polygon closes, {X} = {x} and {Y} = {y}",
+                  "Линии пересекаются — многоугольник замкнут: {X} = {x}, {Y} = {y}",
+                  "两线相交，力多边形封闭：{X} = {x}，{Y} = {y}"),
+    "f_close":   ("{X} closes the polygon (the frame takes what is left): {X} = {x}",
+                  "{X} замыкает многоугольник (остальное воспринимает стойка): {X} = {x}",
+                  "{X} 使力多边形封闭（其余由机架承受）：{X} = {x}"),
+    "f_react":   ("The reactions of the group: {list}", "Реакции в парах группы: {list}", "该杆组各运动副反力：{list}"),
+    "f_result":  (("Every reaction's size; M_b from the plans = {Mb}, checked by Zhukovsky's lever ({dl} %) "
+                   "and the power balance ({dp} %)"),
+                  ("Величины всех реакций; M_{{ур}} по планам сил = {Mb}, проверка рычагом Жуковского ({dl} %) "
+                   "и балансом мощностей ({dp} %)"),
+                  "各反力大小；力多边形法 M_b = {Mb}，以茹可夫斯基杠杆（{dl} %）和功率平衡（{dp} %）校核"),
+    "par":       ("∥ {x}", "∥ {x}", "∥ {x}"),
+    "perp":      ("⊥ {x}", "⊥ {x}", "⊥ {x}"),
+    "perp_g":    ("⊥ the guide", "⊥ направляющей", "⊥ 导路"),
+    "known_dir": ("along its known line", "по известной линии", "沿已知作用线"),
+    # Zhukovsky's lever with every force
+    "z_lever":   ("The velocity plan of analogues v/ω_1 turned 90°: a rigid lever pivoted at p; {mu}",
+                  "План аналогов скоростей v/ω_1, повёрнутый на 90°, — жёсткий рычаг с опорой в p; {mu}",
+                  "将速度类比图 v/ω_1 转 90°，视为绕 p 转动的刚性杠杆；{mu}"),
+    "z_force":   ("{F} at the image of its point: its moment about p is {M}",
+                  "{F} — в образе своей точки: её момент относительно p равен {M}",
+                  "{F} 加在其作用点的影像上：对 p 之矩为 {M}"),
+    "z_couple":  ("{F} as two forces ±M/l at two points of its link: their moment about p is {M}",
+                  "{F} — пара сил ±M/l в двух точках звена: их момент относительно p равен {M}",
+                  "{F} 化为其构件上两点的一对力 ±M/l：对 p 之矩为 {M}"),
+    "z_balance": ("Σ M_p = 0 gives the balancing force at a, ⊥ OA: {Fb} = {x}",
+                  "Из Σ M_p = 0 — уравновешивающая сила в точке a, ⊥ OA: {Fb} = {x}",
+                  "由 Σ M_p = 0 得作用于 a 且 ⊥ OA 的平衡力：{Fb} = {x}"),
+    "z_result":  ("{Mb} = {Fb}·l_{{OA}} = {x}; the force plans give {y} (difference {d} %)",
+                  "{Mb} = {Fb}·l_{{OA}} = {x}; по планам сил {y} (расхождение {d} %)",
+                  "{Mb} = {Fb}·l_{{OA}} = {x}；力多边形法 {y}（相对误差 {d} %）"),
+}
+WORDS.update(WORDS_F)
+
+
+def _forces_at(case, position: int | None, m: int):
+    """The force analysis the force figures draw, and the position index in it."""
+    from graphmethods.dynamics.forces import case_forces
+
+    k = 2 if position is None else position
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
+        raise InputError(f"position {position!r}: give a position number 0…{m}")
+    return case_forces(case, m=m), int(k)
+
+
+def _relation(nt, d: complex, group, motion, i: int) -> str:
+    """How a closing side's known direction ``d`` is drawn: ∥ or ⊥ a segment between two of the
+    group's points, or ⊥ the guide of one of its links."""
+    pts = [getattr(group, a) for a in ("P", "Q", "C", "R") if isinstance(getattr(group, a, None), str)]
+    pts = [p for p in pts if p in motion.z]
+    pairs = [(a, b) for n_a, a in enumerate(pts) for b in pts[n_a + 1:]]
+    for key, test in (("par", lambda c: abs((np.conj(c) * d).imag)), ("perp", lambda c: abs((np.conj(c) * d).real))):
+        for a, b in pairs:
+            seg = complex(motion.z[b][i] - motion.z[a][i])
+            if abs(seg) > 0 and test(seg / abs(seg)) < 1e-9:
+                return _w(nt, key, x=f"{a}{b}")
+    for ln in group.links:
+        e = complex(np.broadcast_to(motion._state.e[ln], (motion.n,))[i])
+        if abs(e) > 0 and abs((np.conj(e / abs(e)) * d).real) < 1e-9:
+            return _w(nt, "perp_g")
+    return _w(nt, "known_dir")
+
+
+def force_plans_steps(case, position: int | None = None, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The force plans of one position, step by step, group by group in the order they are solved:
+    μ_F; for each group the known forces laid end to end, the two unknown directions, their meeting
+    point (the polygon closes), the reactions; the crank's polygon closed by R_01; the table of
+    reactions and M_b with its two checks.
+
+    Parameters
+    ----------
+    case : Case
+        A linkage problem with masses (as :func:`graphmethods.sheets.forces.force_plans` takes it).
+    position : int, optional
+        Position 0…m (default 2, as the figure).
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> bu = force_plans_steps(builtin.case("press"), 3)
+    >>> bu.captions()[1]
+    "group RRP (2, 3): lay the known forces end to end at μ_F: R^{τ}_{12}, F_{i2}, F_{i3}, F_{c3}; R^{τ}_{12} found first, from the links' moment equations (ΣM = 0)"
+    >>> bu.scene_at(len(bu)) == bu.figure
+    True
+    """
+    from graphmethods.sheets import forces as SF
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    fa, i = _forces_at(case, position, m)
+    figure = SF.force_plans(case, i, m=m, notation=nt, page=pg, title_block=tb)
+    names = {e.name for e in figure.elements}
+    groups = {g.name: g for g in fa.motion.linkage.groups}
+    newton = nt.unit("N")
+
+    def size(F) -> str:
+        return f"{nt.number(float(abs(F[i])), sig=5)} {newton}"
+
+    rules: list = [(_w(nt, "f_scale", mu=figure.scales()[0].caption(nt)), ["title", "scale-captions", "legend"])]
+    solved: set[str] = set()
+    for j, pl in enumerate(fa.plans):
+        poly = pl.polygons[0]
+        nk = len(poly.known)
+        head = _text_of(figure, f"caption-{j}")
+        known = _w(nt, "f_known", g=head, forces=", ".join(SF._markup(lbl) for lbl, _ in poly.known))
+        if pl.first:
+            known += _w(nt, "f_first", parts=", ".join(SF._markup(lbl) for lbl, _ in pl.first))
+        rules.append((known, lambda n, j=j, nk=nk: n == f"caption-{j}" or n.startswith(f"known-{j}-") or any(
+            n == f"label-{j}-{s}" for s in range(nk))))
+        closing = poly.closing
+        labels = [SF._markup(lbl) for lbl, _, _ in closing]
+        if len(closing) == 2 and all(d is not None for _, d, _ in closing):
+            g = groups.get(pl.group)
+            rel = [_relation(nt, complex(d[i]), g, fa.motion, i) if g is not None else _w(nt, "known_dir")
+                   for _, d, _ in closing]
+            rules.append((_w(nt, "f_dirs", X=labels[0], relX=rel[0], Y=labels[1], relY=rel[1]),
+                          lambda n, j=j: n.startswith(f"direction-{j}-")))
+            rules.append((_w(nt, "f_meet", X=labels[0], x=size(closing[0][2]), Y=labels[1], y=size(closing[1][2])),
+                          lambda n, j=j: n.startswith(f"closing-{j}-")))
+            mine = [r for r in fa.reactions.values() if (r.by in pl.links or r.on in pl.links)
+                    and not ({r.by, r.on} & solved)]
+            listed = "; ".join(f"{SF._markup(r.key)} = {size(r.R)}" for r in sorted(mine, key=lambda r: r.key))
+            rules.append((_w(nt, "f_react", list=listed), lambda n, j=j, nk=nk: n.startswith(f"label-{j}-")
+                          and int(n.rsplit("-", 1)[1]) >= nk))
+        else:
+            rules.append((_w(nt, "f_close", X=labels[-1], x=size(closing[-1][2])),
+                          lambda n, j=j: n.startswith((f"closing-{j}-", f"direction-{j}-", f"label-{j}-"))))
+        solved |= set(pl.links)
+    Mb = float(fa.M_balance[i])
+    rules.append((_w(nt, "f_result", Mb=f"{nt.number(Mb, sig=6)} {nt.unit('N·m')}",
+                     dl=f"{float(fa.difference_percent(fa.M_balance_lever)[i]):.1e}",
+                     dp=f"{float(fa.difference_percent(fa.M_balance_power)[i]):.1e}"),
+                  lambda n: n == "table" or n.startswith("result-")))
+    rules = [r for r in rules if any(r[1](n) if callable(r[1]) else n in r[1] for n in names)]
+    return _build(figure, rules, box, cap_mm, rest=None)
+
+
+def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", page="slide",
+                           m: int = 12) -> BuildUp:
+    """Zhukovsky's lever with every force of the force analysis, step by step: the velocity plan of
+    analogues turned 90° as a lever; each force (a couple as two forces) at the image of its point,
+    with its moment about p; the balancing force from Σ M_p = 0; M_b beside the force plans'.
+
+    Parameters
+    ----------
+    case : Case
+        As :func:`graphmethods.sheets.forces.zhukovsky_forces` takes it.
+    position : int, optional
+        Position 0…m (default 2, as the figure).
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> bu = zhukovsky_forces_steps(builtin.case("four-bar"), 2, notation="ru")
+    >>> bu.captions()[-1].split(" = ")[0]
+    'M_{ур}'
+    """
+    from graphmethods.sheets import forces as SF
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    fa, i = _forces_at(case, position, m)
+    figure = SF.zhukovsky_forces(case, i, m=m, notation=nt, page=pg, title_block=tb)
+    lev = fa.lever
+    nm_ = nt.unit("N·m")
+    items = [f for f in lev.forces if abs(f.F[i]) > 0]
+    mu = "; ".join(s.caption(nt) for s in figure.scales())
+    rules: list = [(_w(nt, "z_lever", mu=mu),
+                    lambda n: n in ("title", "pole", "label-pole", "text-0", "scale-captions", "legend")
+                    or n.startswith(("ray-", "image-")))]
+    couple_said = False
+    j = 0
+    while j < len(items):
+        lbl = items[j].label
+        idx = [j]
+        while j + len(idx) < len(items) and items[j + len(idx)].label == lbl:
+            idx.append(j + len(idx))
+        moment = sum(float(items[t].moment[i]) for t in idx)
+        if abs(moment) < 1e-9 * max(abs(float(lev.M_balance[i])), 1e-300):
+            moment = 0.0                  # a force through p (or along its own image's ray): rounding only
+        couple = len(idx) > 1
+        text = "z_couple" if couple else "z_force"
+        wanted = {f"force-{t}" for t in idx} | {f"label-force-{t}" for t in idx}
+        if couple and not couple_said:
+            wanted.add("text-1")
+            couple_said = True
+        rules.append((_w(nt, text, F=SF._markup(lbl), M=f"{nt.number(moment, sig=4)} {nm_}"),
+                      lambda n, w=frozenset(wanted): n in w))
+        j += len(idx)
+    Fb = "F_{ур}" if nt.code == "ru" else "F_b"
+    Mb = "M_{ур}" if nt.code == "ru" else "M_b"
+    rules.append((_w(nt, "z_balance", Fb=Fb, x=f"{nt.number(float(abs(lev.F_balance[i])), sig=5)} {nt.unit('N')}"),
+                  lambda n: n in ("F_b", f"label-force-{len(items)}", "text-2")
+                  or (n == "text-1" and not couple_said)))
+    rules.append((_w(nt, "z_result", Mb=Mb, Fb=Fb, x=f"{nt.number(float(lev.M_balance[i]), sig=6)} {nm_}",
+                     y=f"{nt.number(float(fa.M_balance[i]), sig=6)} {nm_}",
+                     d=f"{float(fa.difference_percent(lev.M_balance)[i]):.1e}"),
+                  lambda n: n in ("text-3", "text-4")))
+    return _build(figure, rules, box, cap_mm, rest=None)
+
+
 # ----------------------------------------------------------------------------- the kinematic scheme
 
 def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildUp:
@@ -724,9 +948,14 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "wittenbauer": (wittenbauer_steps, "study"),
     "kinematic-diagrams": (differentiation_steps, "linkage"),
     "work-diagrams": (integration_steps, "cycle"),
-    "zhukovsky-lever": (zhukovsky_steps, "study"),
+    "force-plans": (force_plans_steps, "linkage"),
+    "zhukovsky-lever": (zhukovsky_forces_steps, "linkage"),
+    "zhukovsky-load": (zhukovsky_steps, "study"),
     "kinematic-scheme": (scheme_steps, "linkage"),
 }
+
+#: the figures drawn in one position (``--position K``)
+POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
 
 #: built-in problems: name -> problem file in graphmethods/problems/data (linkages) or a W problem
 LINKAGES = {"press": "slider_crank_press.json", "four-bar": "four_bar_rocker.json",
@@ -776,9 +1005,10 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
         linkage problem file, or a problem object.
     figure : str
         One of :data:`FIGURES`: ``velocity-plan``, ``energy-indicator``, ``wittenbauer``,
-        ``kinematic-diagrams``, ``work-diagrams``, ``zhukovsky-lever``, ``kinematic-scheme``.
+        ``kinematic-diagrams``, ``work-diagrams``, ``force-plans``, ``zhukovsky-lever`` (every force,
+        M_b), ``zhukovsky-load`` (the working load alone, M_r), ``kinematic-scheme``.
     position : int, optional
-        The position of a velocity plan or of Zhukovsky's lever.
+        The position of a velocity, acceleration or force plan or of Zhukovsky's lever.
     m : int
         Positions per crank turn of a linkage study.
 
@@ -796,14 +1026,14 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     fn, needs = FIGURES[key]
     obj = resolve_case(case)
     is_linkage = isinstance(obj, Case)
-    if position is not None and key not in ("velocity-plan", "acceleration-plan", "zhukovsky-lever"):
-        raise InputError(f"--position is for the velocity and acceleration plans and Zhukovsky's lever only, not "
-                         f"for {key}")
+    if position is not None and key not in POSITIONED:
+        raise InputError(f"--position is for the velocity, acceleration and force plans and Zhukovsky's lever only, "
+                         f"not for {key}")
     if needs == "linkage":
         if not is_linkage:
             raise InputError(f"{key} needs a linkage problem ({', '.join(LINKAGES)} or a problem file); {case} is "
                              f"a cycle given by its works")
-        if key in ("velocity-plan", "acceleration-plan"):
+        if key in POSITIONED:
             return fn(obj, position, notation=notation, page=page, m=m)
         return fn(obj, notation=notation, page=page, m=m)
     if is_linkage:
@@ -815,6 +1045,6 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
                          f"problem file); {case} gives works only")
     if key == "work-diagrams":
         return fn(obj, notation=notation, page=page, m=m)
-    if key == "zhukovsky-lever":
+    if key == "zhukovsky-load":
         return fn(obj, position, notation=notation, page=page)
     return fn(obj, notation=notation, page=page)
