@@ -89,7 +89,7 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
     """Built independently with the figure function on the same page, the figure is the last step."""
     page, _, _, tb = S.step_page("slide")
     obj = S.resolve_case(case)
-    bu = S.build(case, figure)
+    bu = S.build(case, figure, page=S.SLIDE_PAGE)      # the slide at 1 : 1 (not enlarged for a projector)
     if figure == "velocity-plan":
         pos = K.fullest_position(K._Linkage.of(obj).plans)
         direct = K.velocity_plan(obj, pos, page=page, title_block=tb)
@@ -186,8 +186,9 @@ def test_velocity_plan_captions_give_the_values_the_drawing_measures(built):
     meet = next(c for c in bu.captions() if "meet" in c)
     got = dict(re.findall(r"(v_\{\w+\}) = ([\d.]+) m/s", meet))
     assert set(got) == {"v_{B}", "v_{BA}"}
-    assert float(got["v_{B}"]) == pytest.approx(rec.vector_length_mm("vector-pb") * mu_v, rel=1e-3)
-    assert float(got["v_{BA}"]) == pytest.approx(rec.vector_length_mm("vector-ab") * mu_v, rel=1e-3)
+    z = bu.enlarged                          # a slide for a projector: μ is per mm of the drawing at 1 : 1
+    assert float(got["v_{B}"]) == pytest.approx(rec.vector_length_mm("vector-pb") / z * mu_v, rel=1e-3)
+    assert float(got["v_{BA}"]) == pytest.approx(rec.vector_length_mm("vector-ab") / z * mu_v, rel=1e-3)
 
 
 def test_energy_indicator_captions_give_each_vector_as_drawn(built):
@@ -195,7 +196,7 @@ def test_energy_indicator_captions_give_each_vector_as_drawn(built):
     rec = record(bu.figure)
     for cap, step in zip(bu.captions()[1:8], bu.steps[1:8]):
         ab, mm = re.search(r"Interval (\w\w):.* ([\d.]+) mm (up|down)", cap).group(1, 2)
-        assert rec.vector_length_mm(f"vector-{ab}") == pytest.approx(float(mm), rel=1e-3)
+        assert rec.vector_length_mm(f"vector-{ab}") / bu.enlarged == pytest.approx(float(mm), rel=1e-3)
     assert "575 J" in bu.captions()[-1]
 
 
@@ -323,7 +324,7 @@ def test_pdf_has_one_page_per_step_with_its_caption(built):
         box = doc.media_box(page)
         assert box[2] - box[0] == pytest.approx(338.7 * 72 / 25.4, abs=0.01)
         shown = [s.text for s in doc.shown(page)]
-        big = [s for s in doc.shown(page) if s.size > 5.0]
+        big = [s for s in doc.shown(page) if abs(s.size - bu.caption_mm) < 0.01]     # the caption's main runs
         text = "".join(s.text for s in big)
         assert text.replace(" ", "").startswith(f"{k}.") and "".join(shown)
         main_runs = "".join(t for t, shift in markup.parse(f"{k}. {bu.steps[k - 1].caption}") if shift == 0)
@@ -434,5 +435,6 @@ def test_the_velocity_plan_matches_the_plan_records_in_every_step(built):
         for name in ("A", "B", "S2", "S3"):
             gid = f"vector-p{plans.label(name)}"
             if gid in rec.group_ids():
-                assert rec.vector_length_mm(gid) * mu_v == pytest.approx(float(plans.speed(name)[k]), rel=2e-3)
+                assert rec.vector_length_mm(gid) / bu.enlarged * mu_v == pytest.approx(float(plans.speed(name)[k]),
+                                                                                       rel=2e-3)
     assert math.isfinite(mu_v) and np.isfinite(plans.speed("B")[k])

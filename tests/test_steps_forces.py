@@ -71,6 +71,7 @@ def test_force_plan_captions_give_what_the_drawing_measures(built, case):
     """Each closing side's value in the caption is its drawn length × μ_F (0.3 % = the caption's
     5 digits and the drawing's 3 decimals of a mm)."""
     bu = built(case, "force-plans")
+    assert bu.enlarged > 1.0
     mu_F = bu.figure.scales()[0].per_mm
     rec = record(bu.figure)
     meets = [c for c in bu.captions() if c.startswith("The two lines meet")]
@@ -81,7 +82,8 @@ def test_force_plan_captions_give_what_the_drawing_measures(built, case):
         values = [float(v) for v in re.findall(rf"= {NUMBER} N", cap)]
         assert len(values) == len(drawn) == 2
         for name, value in zip(drawn, values):
-            assert rec.vector_length_mm(name) * mu_F == pytest.approx(value, rel=3e-3, abs=mu_F * 2e-3)
+            # a slide for a projector is drawn bu.enlarged : 1; μ_F is per mm of the drawing at 1 : 1
+            assert rec.vector_length_mm(name) / bu.enlarged * mu_F == pytest.approx(value, rel=3e-3, abs=mu_F * 2e-3)
 
 
 @pytest.mark.parametrize("case", ["press", "four-bar", "six-bar-press"])

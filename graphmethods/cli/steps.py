@@ -12,7 +12,9 @@ CASE is a built-in problem (press, four-bar, slotted-lever, shaper, the other bu
 acceleration-plan, force-plans, zhukovsky-lever (every force of the force analysis, M_b),
 zhukovsky-load (the working load alone, M_r), energy-indicator, wittenbauer, kinematic-diagrams,
 work-diagrams or kinematic-scheme. ``--format pdf`` writes one page
-per step (a 16:9 slide by default, ``--page A4`` … ``A1`` for sheets), ``svg`` one numbered frame
+per step (a 16:9 slide by default, its drawing enlarged z : 1 for a projector, up to 1.9 : 1 so the
+smallest text is 1/40 of the slide's height where the figure's layout allows; ``--page A4`` …
+``A1`` for sheets), ``svg`` one numbered frame
 per step (``STEM-01.svg`` …), ``animated-svg`` one SVG that plays the steps by itself in a
 browser, ``html`` one self-contained page stepped with buttons and the arrow keys. Every file is
 built before the first is written; an existing file is kept unless ``--force``.
@@ -46,7 +48,8 @@ def add_parser(sub) -> None:
                    help="pdf (one page per step, default), svg (numbered frames), html (one page), animated-svg")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")
     p.add_argument("--page", default="slide", metavar="PAGE",
-                   help="slide (16:9, default), A4, A3, A2 or A1 (landscape, with frame and title block)")
+                   help="slide (16:9, default: the drawing enlarged z : 1 so its text reads on a projector; scales "
+                        "as at 1 : 1), A4, A3, A2 or A1 (landscape, with frame and title block)")
     p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
                    help="positions per crank turn of a linkage's dynamic study (default 12)")
     p.add_argument("--seconds", type=float, default=3.0, metavar="S",

@@ -42,8 +42,18 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Page, Scale, in_language
 from graphmethods.scene import notation as get_notation
+from graphmethods.scene import markup
 from graphmethods.scene.markup import text_width_mm
-from graphmethods.scene.steps import BuildUp, Rule, partition
+from graphmethods.scene.steps import (
+    LINE_PITCH,
+    PROJECTOR_TEXT,
+    BuildUp,
+    DesignPage,
+    Rule,
+    enlarge,
+    partition,
+    wrap,
+)
 
 #: the caption band under the figure, mm, and the caption size, by page kind
 SLIDE_BAND_MM, SLIDE_CAPTION_MM = 20.0, 6.5
@@ -210,31 +220,169 @@ def step_page(page="slide") -> tuple[Page, tuple[float, float, float, float], fl
 
     >>> page, box, size, tb = step_page("slide")
     >>> (page.width_mm, page.height_mm), box, size, tb
-    ((338.7, 190.5), (8.0, 166.5, 330.7, 186.5), 6.5, False)
+    ((338.7, 190.5), (8.0, 168.0, 330.7, 186.5), 6.5, False)
     """
     if isinstance(page, Page):
         base = page
     else:
         name = str(page).strip()
         if name.lower() == "slide":
-            base = Page("slide", "landscape", margins_mm=(8.0, 8.0, 4.0, 8.0), frame=False)
+            base = SLIDE_PAGE
         elif name.upper() in ("A4", "A3", "A2", "A1"):
             base = Page(name.upper(), "landscape", frame=True)
         else:
             raise InputError(f"page {page!r}: use slide, A4, A3, A2 or A1")
     slide = base.size == "SLIDE"
-    band = SLIDE_BAND_MM if slide else SHEET_BAND_MM
+    z = float(getattr(base, "enlarged", 1.0))          # a design page: everything 1/z of the slide's
+    band = (SLIDE_BAND_MM if slide else SHEET_BAND_MM) / z
     t, r, b, left = base.margins_mm
     page_ = base.with_(margins_mm=(t, r, b + band, left))
-    box = (left, base.height_mm - b - band, base.width_mm - r, base.height_mm - b)
-    return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM), not slide
+    # the caption box starts a little below the figure's page: the descenders of the figure's last
+    # line (its scale captions, 1 mm above the page's inner box) stay out of it
+    box = (left, base.height_mm - b - band + CAPTION_GAP_MM / z, base.width_mm - r, base.height_mm - b)
+    return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM) / z, not slide
+
+
+#: the gap between the figure's page and the caption box, mm
+CAPTION_GAP_MM = 1.5
+
+#: the 16:9 slide the steps are shown on (no frame, no title block)
+SLIDE_PAGE = Page("slide", "landscape", margins_mm=(8.0, 8.0, 4.0, 8.0), frame=False)
+#: how much a slide's design page may be enlarged, tried from the largest down
+ZOOMS = (1.9, 1.8, 1.7, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)
+
+
+def design_slide(z: float) -> Page:
+    """The slide laid out at 1/z of its size (margins too), to be drawn z : 1 (:class:`DesignPage`).
+
+    >>> p = design_slide(2.0)
+    >>> p.width_mm, p.margins_mm
+    (169.35, (4.0, 4.0, 2.0, 4.0))
+    """
+    if z == 1.0:
+        return SLIDE_PAGE
+    return DesignPage("slide", "landscape", margins_mm=tuple(m / z for m in SLIDE_PAGE.margins_mm), frame=False,
+                      enlarged=z)
+
+
+def smallest_text_mm(bu: BuildUp) -> float:
+    """The smallest text of the steps' slides, mm: the figure's labels and the step captions."""
+    from graphmethods.render.recording import record
+
+    sizes = [c.data.size_mm for c in record(bu.figure).calls if c.kind == "text"]
+    return min(sizes + [bu.caption_mm])
+
+
+def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
+    """Steps on a 16:9 slide with text sized for a projector.
+
+    The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
+    about 1/70 of its height. So the figure is laid out on a smaller design page, 1/z of the
+    slide, and the whole drawing (text, lines, captions) is drawn z : 1: nothing is laid out
+    anew, so nothing can come to overlap or leave the frame. z is the smallest of :data:`ZOOMS`
+    that makes the smallest text :data:`~graphmethods.scene.steps.PROJECTOR_TEXT` of the slide's
+    height (1/40: 4.8 mm), or, for a figure too dense for that, the largest at which its layout
+    still fits. The scales and millimetres written stay those of the drawing at 1 : 1; a note on
+    the slide says so.
+
+    Parameters
+    ----------
+    make : callable
+        Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
+    """
+    bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
+    failure: InputError | None = None
+    fallback: BuildUp | None = None
+    for n, z in enumerate(ZOOMS):
+        try:
+            bu = make(design_slide(z))
+        except InputError as exc:
+            failure = failure or exc
+            continue
+        if z == 1.0:
+            fallback = bu
+        if layout_faults(bu):                  # the figure's layout does not hold on so small a page
+            continue
+        need = bound / (smallest_text_mm(bu) / z)
+        for w in reversed([w for w in ZOOMS[n + 1:] if w >= need - 1e-9]):
+            try:                               # a smaller enlargement is enough: more room for the figure
+                other = make(design_slide(w))
+            except InputError:
+                continue
+            if not layout_faults(other):
+                bu = other
+                break
+        return _on_slide(bu)
+    if fallback is not None:
+        return _on_slide(fallback)
+    assert failure is not None
+    raise failure
+
+
+def layout_faults(bu: BuildUp) -> list[str]:
+    """What in the finished figure leaves the page's inner box (down to the caption box) or covers
+    other text: estimated label boxes (as the layout estimates them) and every line's points.
+
+    >>> layout_faults(build("W1", "energy-indicator", page="A4"))
+    []
+    """
+    from graphmethods.render.recording import record
+    from graphmethods.scene.elements import label_bbox
+
+    fig = bu.figure
+    x0, y0, x1, _ = fig.page.inner_box()
+    y1 = bu.caption_box[1]                     # down to the caption box
+    tol = 0.05
+    faults: list[str] = []
+    boxes: list[tuple[str, tuple[float, float, float, float]]] = []
+    for c in record(fig).calls:
+        owner = c.groups[0] if c.groups else ""
+        if c.kind == "text":
+            b = label_bbox(c.data)
+            boxes.append((owner, b))
+        elif c.kind in ("path", "polygon"):
+            points = c.data[0] if c.kind == "path" else c.data
+            xs, ys = [p[0] for p in points], [p[1] for p in points]
+            b = (min(xs), min(ys), max(xs), max(ys))
+        else:
+            continue
+        if b[0] < x0 - tol or b[1] < y0 - tol or b[2] > x1 + tol or b[3] > y1 + tol:
+            faults.append(f"{owner} leaves the page's inner box")
+    for i, (na, a) in enumerate(boxes):
+        for nb, b in boxes[i + 1:]:
+            if na != nb and min(a[2], b[2]) - max(a[0], b[0]) > 0.3 and min(a[3], b[3]) - max(a[1], b[1]) > 0.3:
+                faults.append(f"{na} covers {nb}")
+    return faults
+
+
+def _on_slide(bu: BuildUp) -> BuildUp:
+    """The steps drawn on the whole slide: enlarged from their design page (z = 1: as they are),
+    the caption band inside the slide's margins."""
+    z = float(getattr(bu.figure.page, "enlarged", 1.0))
+    return enlarge(bu, SLIDE_PAGE, note_mm=SLIDE_NOTE_MM / z)
+
+
+#: the enlargement note's size on the slide, mm
+SLIDE_NOTE_MM = 5.0
 
 
 def _fit(caption_mm: float, box, captions) -> float:
-    """The caption size: the given one, smaller when the longest caption would not fit the box."""
-    width = box[2] - box[0] - 4.0
-    longest = max((text_width_mm(f"{len(captions)}. {c}", caption_mm) for c in captions), default=0.0)
-    return caption_mm if longest <= width else max(2.5, caption_mm * width / longest)
+    """The caption size: the given one, or smaller until every caption, broken into lines at
+    spaces, fits the box (as many lines as its height holds)."""
+    from graphmethods.scene.elements import ASCENT, DESCENT
+
+    width, height = box[2] - box[0] - 4.0, box[3] - box[1]
+    size = caption_mm
+    while size > 0.4 * caption_mm:
+        # n lines take (n − 1) pitches plus one line's height with a superscript and a subscript
+        tall = (ASCENT + 0.1 + DESCENT + markup.SUB_SHIFT) * size
+        rows = max(1, int((height - tall) // (LINE_PITCH * size)) + 1)
+        if all(len(wrap(f"{len(captions)}. {c}", size, width)) <= rows
+               and all(text_width_mm(line, size) <= width for line in wrap(f"{len(captions)}. {c}", size, width))
+               for c in captions):
+            return size
+        size *= 0.95
+    return size
 
 
 def _build(figure, rules, box, caption_mm, rest) -> BuildUp:
@@ -1034,17 +1182,28 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             raise InputError(f"{key} needs a linkage problem ({', '.join(LINKAGES)} or a problem file); {case} is "
                              f"a cycle given by its works")
         if key in POSITIONED:
-            return fn(obj, position, notation=notation, page=page, m=m)
-        return fn(obj, notation=notation, page=page, m=m)
-    if is_linkage:
-        from graphmethods.dynamics.study import Study
+            def make(pg):
+                return fn(obj, position, notation=notation, page=pg, m=m)
+        else:
+            def make(pg):
+                return fn(obj, notation=notation, page=pg, m=m)
+    else:
+        if is_linkage:
+            from graphmethods.dynamics.study import Study
 
-        obj = Study(obj, positions=m)
-    elif needs == "study":
-        raise InputError(f"{key} needs a linkage problem with masses and loads ({', '.join(LINKAGES)} or a "
-                         f"problem file); {case} gives works only")
-    if key == "work-diagrams":
-        return fn(obj, notation=notation, page=page, m=m)
-    if key == "zhukovsky-load":
-        return fn(obj, position, notation=notation, page=page)
-    return fn(obj, notation=notation, page=page)
+            obj = Study(obj, positions=m)
+        elif needs == "study":
+            raise InputError(f"{key} needs a linkage problem with masses and loads ({', '.join(LINKAGES)} or a "
+                             f"problem file); {case} gives works only")
+        if key == "work-diagrams":
+            def make(pg):
+                return fn(obj, notation=notation, page=pg, m=m)
+        elif key == "zhukovsky-load":
+            def make(pg):
+                return fn(obj, position, notation=notation, page=pg)
+        else:
+            def make(pg):
+                return fn(obj, notation=notation, page=pg)
+    if isinstance(page, str) and page.strip().lower() == "slide":
+        return for_projector(make)
+    return make(page)
