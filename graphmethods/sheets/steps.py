@@ -291,32 +291,37 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
         Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
     """
     bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
-    failure: InputError | None = None
-    fallback: BuildUp | None = None
-    for n, z in enumerate(ZOOMS):
+    reference = make(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+    drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
+
+    def holds(bu: BuildUp, z: float) -> bool:
+        """No overlap, nothing out of the page, and the construction drawn on the slide at least
+        :data:`KEEP_SIZE` as large as at 1 : 1 (a figure that keeps fixed margins for its labels
+        would otherwise shrink its drawing to make room)."""
+        if layout_faults(bu):
+            return False
+        return all(z / sc.per_mm >= KEEP_SIZE / drawn[sc.symbol, sc.unit] for sc in bu.figure.scales()
+                   if (sc.symbol, sc.unit) in drawn and sc.unit not in ("rad", "°"))
+
+    def attempt(z: float) -> BuildUp | None:
         try:
             bu = make(design_slide(z))
-        except InputError as exc:
-            failure = failure or exc
+        except InputError:
+            return None
+        return bu if holds(bu, z) else None
+
+    for n, z in enumerate(ZOOMS[:-1]):
+        found = attempt(z)
+        if found is None:
             continue
-        if z == 1.0:
-            fallback = bu
-        if layout_faults(bu):                  # the figure's layout does not hold on so small a page
-            continue
-        need = bound / (smallest_text_mm(bu) / z)
-        for w in reversed([w for w in ZOOMS[n + 1:] if w >= need - 1e-9]):
-            try:                               # a smaller enlargement is enough: more room for the figure
-                other = make(design_slide(w))
-            except InputError:
-                continue
-            if not layout_faults(other):
-                bu = other
+        need = bound / (smallest_text_mm(found) / z)
+        for w in reversed([w for w in ZOOMS[n + 1:-1] if w >= need - 1e-9]):
+            other = attempt(w)                 # a smaller enlargement is enough: more room for the figure
+            if other is not None:
+                found = other
                 break
-        return _on_slide(bu)
-    if fallback is not None:
-        return _on_slide(fallback)
-    assert failure is not None
-    raise failure
+        return _on_slide(found)
+    return _on_slide(reference)
 
 
 def layout_faults(bu: BuildUp) -> list[str]:
@@ -361,6 +366,9 @@ def _on_slide(bu: BuildUp) -> BuildUp:
     z = float(getattr(bu.figure.page, "enlarged", 1.0))
     return enlarge(bu, SLIDE_PAGE, note_mm=SLIDE_NOTE_MM / z)
 
+
+#: an enlarged slide draws the construction at least this fraction of its size at 1 : 1
+KEEP_SIZE = 0.75
 
 #: the enlargement note's size on the slide, mm
 SLIDE_NOTE_MM = 5.0
