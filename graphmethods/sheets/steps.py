@@ -310,18 +310,20 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
             return None
         return bu if holds(bu, z) else None
 
-    for n, z in enumerate(ZOOMS[:-1]):
-        found = attempt(z)
-        if found is None:
-            continue
-        need = bound / (smallest_text_mm(found) / z)
-        for w in reversed([w for w in ZOOMS[n + 1:-1] if w >= need - 1e-9]):
-            other = attempt(w)                 # a smaller enlargement is enough: more room for the figure
-            if other is not None:
-                found = other
-                break
-        return _on_slide(found)
-    return _on_slide(reference)
+    need = bound / smallest_text_mm(reference)          # the text sizes do not depend on the page
+    # the candidates, largest first: the smallest enlargement that is enough, and every one below it
+    enough = [w for w in ZOOMS[:-1] if w >= need - 1e-9]
+    candidates = [w for w in ZOOMS[:-1] if w <= (enough[-1] if enough else ZOOMS[0]) + 1e-9]
+    # a smaller enlargement leaves more room, so the ones that hold are a tail of the list: bisect
+    lo, hi, best = 0, len(candidates) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        found = attempt(candidates[mid])
+        if found is not None:
+            best, hi = found, mid - 1
+        else:
+            lo = mid + 1
+    return _on_slide(best if best is not None else reference)
 
 
 def layout_faults(bu: BuildUp) -> list[str]:
