@@ -40,9 +40,8 @@ from typing import Callable
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, in_language
+from graphmethods.scene import Axis, Page, Scale, in_language, markup
 from graphmethods.scene import notation as get_notation
-from graphmethods.scene import markup
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.steps import (
     LINE_PITCH,
