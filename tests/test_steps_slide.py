@@ -111,3 +111,29 @@ def test_the_slide_says_its_enlargement_and_its_scales_are_those_at_one_to_one(s
 def test_sheet_pages_are_not_enlarged(slides):
     bu = S.build("press", "force-plans", page="A3")
     assert bu.enlarged == 1.0 and bu.figure.page.size == "A3" and bu.figure.page.frame
+
+
+@pytest.mark.parametrize("case,lang", [("press", "en"), ("shaper", "ru")])
+def test_any_figure_on_a_projector_slide(case, lang):
+    """A figure function's figure (here the force scheme) on a slide for a projector: the same
+    enlargement rule, nothing out of the slide's margins, and μ as at 1 : 1 (a force's drawn length
+    is z·|F|/μ_F, |F| from the force analysis)."""
+    from graphmethods.dynamics.forces import case_forces
+    from graphmethods.sheets.forces import force_scheme
+
+    c = S.resolve_case(case)
+    s = S.projector_figure(lambda pg: force_scheme(c, 3, page=pg, title_block=False, notation=lang))
+    assert s.page.size == "SLIDE" and (s.page.width_mm, s.page.height_mm) == (338.7, 190.5)
+    note = [n for n in s.notes if n.startswith("drawn")]
+    z = float(re.match(r"drawn ([\d.]+) : 1", note[0]).group(1)) if note else 1.0
+    x0, y0, x1, y1 = s.page.inner_box()
+    rec = record(s)
+    for c_ in rec.calls:
+        if c_.kind == "text":
+            b = label_bbox(c_.data)
+            # the last line's descenders may reach CAPTION_GAP_MM into the bottom margin (4 mm)
+            assert x0 - 0.05 <= b[0] and b[2] <= x1 + 0.05 and y0 - 0.05 <= b[1] and b[3] <= y1 + S.CAPTION_GAP_MM
+    fa = case_forces(c, m=12)
+    mu_F = next(sc for sc in s.scales() if "F" in sc.symbol).per_mm
+    first = next(f for fs in fa.applied.values() for f in fs if abs(f.F[3]) / mu_F >= 0.3)
+    assert rec.vector_length_mm("force-0") == pytest.approx(z * abs(first.F[3]) / mu_F, rel=2e-3)

@@ -40,7 +40,7 @@ from typing import Callable
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, in_language, markup
+from graphmethods.scene import Axis, Page, Scale, Scene, in_language, markup
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.steps import (
@@ -359,6 +359,29 @@ def layout_faults(bu: BuildUp) -> list[str]:
             if na != nb and min(a[2], b[2]) - max(a[0], b[0]) > 0.3 and min(a[3], b[3]) - max(a[1], b[1]) > 0.3:
                 faults.append(f"{na} covers {nb}")
     return faults
+
+
+def projector_figure(make: Callable[[Page], Scene]) -> Scene:
+    """Any figure on a 16:9 slide with its text sized for a projector, as :func:`for_projector`
+    sizes the steps' slides (no caption band): ``make`` draws the figure on a given page.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import force_scheme
+    >>> s = projector_figure(lambda pg: force_scheme(builtin.case("press"), 3, page=pg, title_block=False))
+    >>> s.page.size, any(n.startswith("drawn 1.1 : 1") for n in s.notes)
+    ('SLIDE', True)
+    """
+    from graphmethods.scene.steps import Step
+
+    def as_steps(page: Page) -> BuildUp:
+        fig = make(page)
+        x0, _, x1, y1 = page.inner_box()
+        y1 += CAPTION_GAP_MM / float(getattr(page, "enlarged", 1.0))   # the last line's descenders, in the margin
+        return BuildUp(fig, (Step("", tuple(range(len(fig.elements)))),), (x0, y1, x1, y1), caption_mm=1e3)
+
+    return for_projector(as_steps).figure
 
 
 def _on_slide(bu: BuildUp) -> BuildUp:
