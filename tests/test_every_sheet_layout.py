@@ -54,8 +54,6 @@ NOT_DRAWN = {
 KNOWN = {
     **{("W4-exact", "work_diagrams", lang): "the ΔE band is 12 mm tall at μ_A = 2.618 J/mm: nice_ticks gives it "
        "no tick but 0, which is not written" for lang in LANGS},
-    **{("slotting-machine", "kinematic_scheme", lang): "the scheme dimensions the stroke H along horizontal guides "
-       "only; on a vertical ram H sits on the position numbers" for lang in LANGS},
 }
 
 CASES = [(p, f) for p in builtin.names() for f in (CYCLE_FIGURES if p in builtin.CYCLES else LINKAGE_FIGURES)]

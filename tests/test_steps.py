@@ -15,6 +15,7 @@ from graphmethods.scene import Page, markup
 from graphmethods.scene.steps import NEW_COLOUR, OLD_COLOUR
 from graphmethods.sheets import calculus as C, dynamics as D, kinematics as K, steps as S
 from graphmethods.sheets.energy import energy_indicator
+from graphmethods.sheets.forces import force_plans, zhukovsky_forces
 from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -24,7 +25,9 @@ CASES = ([(c, "velocity-plan") for c in LINKAGES] + [(c, "acceleration-plan") fo
          + [(c, "wittenbauer") for c in ("press", "shaper", "four-bar")]
          + [(c, "kinematic-diagrams") for c in ("press", "shaper")]
          + [(c, "work-diagrams") for c in ("press", "W3")]
-         + [(c, "zhukovsky-lever") for c in ("press", "four-bar")]
+         + [(c, "zhukovsky-load") for c in ("press", "four-bar")]
+         + [(c, "force-plans") for c in LINKAGES + ("six-bar-press",)]
+         + [(c, "zhukovsky-lever") for c in LINKAGES]
          + [(c, "kinematic-scheme") for c in LINKAGES])
 
 
@@ -74,7 +77,8 @@ def test_each_step_draws_the_previous_ones_and_the_last_is_the_finished_figure(b
 
 DIRECT = [("press", "velocity-plan"), ("shaper", "velocity-plan"), ("W1", "energy-indicator"),
           ("press", "wittenbauer"), ("press", "kinematic-diagrams"), ("W3", "work-diagrams"),
-          ("press", "zhukovsky-lever"), ("slotted-lever", "kinematic-scheme"), ("shaper", "acceleration-plan")]
+          ("press", "zhukovsky-load"), ("slotted-lever", "kinematic-scheme"), ("shaper", "acceleration-plan"),
+          ("shaper", "force-plans"), ("four-bar", "zhukovsky-lever")]
 
 
 @pytest.mark.parametrize("case,figure", DIRECT, ids=[f"{c}-{f}" for c, f in DIRECT])
@@ -82,7 +86,7 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
     """Built independently with the figure function on the same page, the figure is the last step."""
     page, _, _, tb = S.step_page("slide")
     obj = S.resolve_case(case)
-    bu = S.build(case, figure)
+    bu = S.build(case, figure, page=S.SLIDE_PAGE)      # the slide at 1 : 1 (not enlarged for a projector)
     if figure == "velocity-plan":
         pos = K.fullest_position(K._Linkage.of(obj).plans)
         direct = K.velocity_plan(obj, pos, page=page, title_block=tb)
@@ -99,8 +103,12 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
         direct = C.work_diagrams(obj, page=page, title_block=tb)
     elif figure == "kinematic-scheme":
         direct = K.kinematic_scheme(obj, m=12, page=page, title_block=tb)
-    elif figure == "zhukovsky-lever":
+    elif figure == "zhukovsky-load":
         direct = D.zhukovsky_lever(obj, page=page, title_block=tb)
+    elif figure == "force-plans":
+        direct = force_plans(obj, 2, page=page, title_block=tb)
+    elif figure == "zhukovsky-lever":
+        direct = zhukovsky_forces(obj, 2, page=page, title_block=tb)
     else:
         from graphmethods.dynamics.study import Study
 
@@ -175,8 +183,9 @@ def test_velocity_plan_captions_give_the_values_the_drawing_measures(built):
     meet = next(c for c in bu.captions() if "meet" in c)
     got = dict(re.findall(r"(v_\{\w+\}) = ([\d.]+) m/s", meet))
     assert set(got) == {"v_{B}", "v_{BA}"}
-    assert float(got["v_{B}"]) == pytest.approx(rec.vector_length_mm("vector-pb") * mu_v, rel=1e-3)
-    assert float(got["v_{BA}"]) == pytest.approx(rec.vector_length_mm("vector-ab") * mu_v, rel=1e-3)
+    z = bu.enlarged                          # a slide for a projector: μ is per mm of the drawing at 1 : 1
+    assert float(got["v_{B}"]) == pytest.approx(rec.vector_length_mm("vector-pb") / z * mu_v, rel=1e-3)
+    assert float(got["v_{BA}"]) == pytest.approx(rec.vector_length_mm("vector-ab") / z * mu_v, rel=1e-3)
 
 
 def test_energy_indicator_captions_give_each_vector_as_drawn(built):
@@ -184,7 +193,7 @@ def test_energy_indicator_captions_give_each_vector_as_drawn(built):
     rec = record(bu.figure)
     for cap, _step in zip(bu.captions()[1:8], bu.steps[1:8]):
         ab, mm = re.search(r"Interval (\w\w):.* ([\d.]+) mm (up|down)", cap).group(1, 2)
-        assert rec.vector_length_mm(f"vector-{ab}") == pytest.approx(float(mm), rel=1e-3)
+        assert rec.vector_length_mm(f"vector-{ab}") / bu.enlarged == pytest.approx(float(mm), rel=1e-3)
     assert "575 J" in bu.captions()[-1]
 
 
@@ -312,7 +321,7 @@ def test_pdf_has_one_page_per_step_with_its_caption(built):
         box = doc.media_box(page)
         assert box[2] - box[0] == pytest.approx(338.7 * 72 / 25.4, abs=0.01)
         shown = [s.text for s in doc.shown(page)]
-        big = [s for s in doc.shown(page) if s.size > 5.0]
+        big = [s for s in doc.shown(page) if abs(s.size - bu.caption_mm) < 0.01]     # the caption's main runs
         text = "".join(s.text for s in big)
         assert text.replace(" ", "").startswith(f"{k}.") and "".join(shown)
         main_runs = "".join(t for t, shift in markup.parse(f"{k}. {bu.steps[k - 1].caption}") if shift == 0)
@@ -384,7 +393,7 @@ def test_cli_default_name_and_positions(tmp_path, capsys, monkeypatch):
     (["W2", "wittenbauer"], "masses and loads"),
     (["press", "plan"], "use one of velocity-plan"),
     (["press", "velocity-plan", "--position", "99"], "position 99"),
-    (["press", "wittenbauer", "--position", "2"], "velocity and acceleration plans and Zhukovsky's lever only"),
+    (["press", "wittenbauer", "--position", "2"], "velocity, acceleration and force plans and Zhukovsky's lever only"),
     (["press", "acceleration-plan", "--position", "12"], "position 12"),
     (["four-bar", "kinematic-diagrams"], "no slider"),
     (["W1", "work-diagrams"], "needs moment curves"),
@@ -423,5 +432,6 @@ def test_the_velocity_plan_matches_the_plan_records_in_every_step(built):
         for name in ("A", "B", "S2", "S3"):
             gid = f"vector-p{plans.label(name)}"
             if gid in rec.group_ids():
-                assert rec.vector_length_mm(gid) * mu_v == pytest.approx(float(plans.speed(name)[k]), rel=2e-3)
+                assert rec.vector_length_mm(gid) / bu.enlarged * mu_v == pytest.approx(float(plans.speed(name)[k]),
+                                                                                       rel=2e-3)
     assert math.isfinite(mu_v) and np.isfinite(plans.speed("B")[k])

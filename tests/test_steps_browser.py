@@ -83,9 +83,10 @@ def browser():
 
 @pytest.mark.parametrize("case,figure,lang,k", [("press", "velocity-plan", "en", 4),
                                                 ("press", "wittenbauer", "ru", 5),
-                                                ("W1", "energy-indicator", "zh", 3)])
+                                                ("W1", "energy-indicator", "zh", 3),
+                                                ("press", "force-plans", "ru", 4)])
 def test_the_arrow_keys_step_through_the_construction_offline(browser, tmp_path, case, figure, lang, k):
-    bu = S.build(case, figure, notation=lang)
+    bu = S.build(case, figure, position=3 if figure == "force-plans" else None, notation=lang)
     n = len(bu)
     page = tmp_path / f"{case}_{figure}_{lang}.html"
     page.write_text(R.html_page(bu), encoding="utf-8")

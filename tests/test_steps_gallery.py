@@ -31,7 +31,8 @@ def _load(path):
 
 def test_the_gallery_has_the_press_plan_and_wittenbauer_in_three_languages():
     names = {p.stem for p in SCRIPTS}
-    assert names >= {f"press_{fig}_{lang}" for fig in ("velocity_plan", "wittenbauer") for lang in ("en", "ru", "zh")}
+    figures = ("velocity_plan", "wittenbauer", "force_plans", "zhukovsky_lever")
+    assert names >= {f"press_{fig}_{lang}" for fig in figures for lang in ("en", "ru", "zh")}
 
 
 @pytest.mark.parametrize("script", SCRIPTS, ids=[p.stem for p in SCRIPTS])

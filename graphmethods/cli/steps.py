@@ -5,12 +5,16 @@
     graphmethods steps W1 energy-indicator --format animated-svg --out w1.svg
     graphmethods steps shaper velocity-plan --position 3 --format svg --out frames/shaper.svg
     graphmethods steps slotted-lever acceleration-plan --position 2 --format html --lang ru
+    graphmethods steps press force-plans --position 3 --format pdf --lang zh
 
 CASE is a built-in problem (press, four-bar, slotted-lever, shaper, the other built-in linkages of
 ``graphmethods problems``, W1…W4) or a linkage problem file; FIGURE is velocity-plan,
-acceleration-plan, energy-indicator, wittenbauer, kinematic-diagrams, work-diagrams,
-zhukovsky-lever or kinematic-scheme. ``--format pdf`` writes one page
-per step (a 16:9 slide by default, ``--page A4`` … ``A1`` for sheets), ``svg`` one numbered frame
+acceleration-plan, force-plans, zhukovsky-lever (every force of the force analysis, M_b),
+zhukovsky-load (the working load alone, M_r), energy-indicator, wittenbauer, kinematic-diagrams,
+work-diagrams or kinematic-scheme. ``--format pdf`` writes one page
+per step (a 16:9 slide by default, its drawing enlarged z : 1 for a projector, up to 1.9 : 1 so the
+smallest text is 1/40 of the slide's height where the figure's layout allows; ``--page A4`` …
+``A1`` for sheets), ``svg`` one numbered frame
 per step (``STEM-01.svg`` …), ``animated-svg`` one SVG that plays the steps by itself in a
 browser, ``html`` one self-contained page stepped with buttons and the arrow keys. Every file is
 built before the first is written; an existing file is kept unless ``--force``.
@@ -34,15 +38,18 @@ def add_parser(sub) -> None:
                    help="press, four-bar, slotted-lever, shaper (or another built-in linkage), W1, W2, W3, W4, or a "
                         "linkage problem file")
     p.add_argument("figure", metavar="FIGURE",
-                   help="velocity-plan, acceleration-plan, energy-indicator, wittenbauer, kinematic-diagrams, "
-                        "work-diagrams, zhukovsky-lever or kinematic-scheme")
+                   help="velocity-plan, acceleration-plan, force-plans, zhukovsky-lever (every force, M_b), "
+                        "zhukovsky-load (the load alone, M_r), energy-indicator, wittenbauer, kinematic-diagrams, "
+                        "work-diagrams or kinematic-scheme")
     p.add_argument("--position", type=int, default=None, metavar="K",
-                   help="the position of a velocity or acceleration plan or of Zhukovsky's lever (default: chosen by the figure)")
+                   help="the position of a velocity, acceleration or force plan or of Zhukovsky's lever (default: chosen "
+                        "by the figure)")
     p.add_argument("--format", choices=("pdf", "svg", "html", "animated-svg"), default="pdf", dest="out_format",
                    help="pdf (one page per step, default), svg (numbered frames), html (one page), animated-svg")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")
     p.add_argument("--page", default="slide", metavar="PAGE",
-                   help="slide (16:9, default), A4, A3, A2 or A1 (landscape, with frame and title block)")
+                   help="slide (16:9, default: the drawing enlarged z : 1 so its text reads on a projector; scales "
+                        "as at 1 : 1), A4, A3, A2 or A1 (landscape, with frame and title block)")
     p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
                    help="positions per crank turn of a linkage's dynamic study (default 12)")
     p.add_argument("--seconds", type=float, default=3.0, metavar="S",

@@ -27,8 +27,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
 from graphmethods.errors import InputError
-from graphmethods.scene.elements import Element, Text
-from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, Primitive
+from graphmethods.scene import markup
+from graphmethods.scene.elements import Element, Text, make_label
+from graphmethods.scene.page import PAPER, Page
+from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, Primitive, Style
 from graphmethods.scene.scene import Scene
 
 #: colour of the step being drawn, and of the steps drawn before it
@@ -116,12 +118,17 @@ class BuildUp:
         Where the caption goes under the figure (x0, y0, x1, y1); the figure leaves it free.
     caption_mm : float, mm
         Caption text size.
+    enlarged : float
+        The figure is drawn ``enlarged`` : 1 (a slide for a projector, :func:`enlarge`): its scales,
+        and the millimetres its texts and captions quote, are those of the drawing at 1 : 1, so a
+        length measured on the page is ``enlarged`` times the one they mean.
     """
 
     figure: Scene
     steps: tuple[Step, ...]
     caption_box: tuple[float, float, float, float]
     caption_mm: float = 5.0
+    enlarged: float = 1.0
 
     def __post_init__(self) -> None:
         n = len(self.figure.elements)
@@ -167,13 +174,17 @@ class BuildUp:
         k = self._check(k)
         return tuple(tinted(self.figure.elements[i], colour) for i in sorted(self.steps[k - 1].elements))
 
-    def caption_element(self, k: int, *, numbered: bool = True) -> Text:
-        """Step ``k``'s caption as a text element centred in the caption box."""
+    def caption_element(self, k: int, *, numbered: bool = True) -> Element:
+        """Step ``k``'s caption centred in the caption box: one line, or as many lines (broken at
+        spaces) as it needs to stay inside the box's width."""
         k = self._check(k)
         x0, y0, x1, y1 = self.caption_box
         text = f"{k}. {self.steps[k - 1].caption}" if numbered else self.steps[k - 1].caption
-        return Text(((x0 + x1) / 2, (y0 + y1) / 2), text, size_mm=self.caption_mm, anchor="middle", valign="middle",
-                    name="step-caption")
+        lines = wrap(text, self.caption_mm, x1 - x0 - 4.0)
+        if len(lines) == 1:
+            return Text(((x0 + x1) / 2, (y0 + y1) / 2), text, size_mm=self.caption_mm, anchor="middle",
+                        valign="middle", name="step-caption")
+        return CaptionLines(((x0 + x1) / 2, (y0 + y1) / 2), tuple(lines), self.caption_mm, name="step-caption")
 
     def slide(self, k: int, *, new: str = NEW_COLOUR, old: str = OLD_COLOUR) -> Scene:
         """Step ``k`` for a lecture: steps before it in ``old`` colour, its own elements in ``new``,
@@ -195,7 +206,8 @@ def partition(figure: Scene, rules: Sequence[tuple[str, Rule]], *, caption_box: 
         The finished figure.
     rules : sequence of (caption, rule)
         One per step, in order. A rule is an element name, a sequence of names, or a predicate
-        ``name -> bool``; an element goes to the first step whose rule it matches.
+        ``name -> bool``; an element goes to the first step whose rule it matches (a leader line
+        ``leader-NAME`` that no rule names goes with its label ``NAME``).
     caption_box : (x0, y0, x1, y1), mm
         Where the captions go.
     rest : int, optional
@@ -215,8 +227,15 @@ def partition(figure: Scene, rules: Sequence[tuple[str, Rule]], *, caption_box: 
             names = {rule} if isinstance(rule, str) else set(rule)
             tests.append(names.__contains__)
     chosen: list[list[int]] = [[] for _ in tests]
+
+    def step_of(name: str) -> int | None:
+        k = next((j for j, t in enumerate(tests) if t(name)), None)
+        if k is None and name.startswith("leader-"):          # a label's leader line goes with its label
+            return step_of(name[len("leader-"):])
+        return k
+
     for i, e in enumerate(figure.elements):
-        k = next((j for j, t in enumerate(tests) if t(e.name)), None)
+        k = step_of(e.name)
         if k is None:
             if rest is None:
                 raise InputError(f"{figure.name}: no step draws the element {e.name!r}")
@@ -228,3 +247,173 @@ def partition(figure: Scene, rules: Sequence[tuple[str, Rule]], *, caption_box: 
         raise InputError(f"{figure.name}: no element for the step {empty[0]!r}")
     x0, y0, x1, y1 = (float(v) for v in caption_box)
     return BuildUp(figure, tuple(steps), (x0, y0, x1, y1), caption_mm)
+
+
+# ----------------------------------------------------------------------------- captions on lines
+
+#: line pitch of a caption broken over several lines, in font sizes
+LINE_PITCH = 1.3
+
+
+def _words(text: str) -> list[str]:
+    """``text`` split at the spaces outside markup braces (``v_{B A}`` stays one word)."""
+    out, depth, cur = [], 0, ""
+    for ch in text:
+        depth += (ch == "{") - (ch == "}")
+        if ch == " " and depth == 0:
+            out.append(cur)
+            cur = ""
+        else:
+            cur += ch
+    out.append(cur)
+    return [w for w in out if w]
+
+
+def wrap(text: str, size_mm: float, width_mm: float) -> list[str]:
+    """``text`` (markup) broken at spaces into lines no wider than ``width_mm`` at ``size_mm``
+    (a word wider than the width gets a line of its own).
+
+    >>> wrap("Through a, draw the direction of v_{BA} ⊥ AB", 5.0, 60.0)
+    ['Through a, draw the', 'direction of v_{BA} ⊥ AB']
+    """
+    lines: list[str] = []
+    for word in _words(text):
+        if lines and markup.text_width_mm(f"{lines[-1]} {word}", size_mm) <= width_mm:
+            lines[-1] = f"{lines[-1]} {word}"
+        else:
+            lines.append(word)
+    return lines or [""]
+
+
+@dataclass(frozen=True)
+class CaptionLines(Element):
+    """Lines of markup centred one under the other about ``at`` (the middle of the block), mm.
+
+    >>> el = CaptionLines((100.0, 50.0), ("one", "two"), 5.0, name="c")
+    >>> [round(p.y, 3) for p in el.primitives()]
+    [47.75, 54.25]
+    """
+
+    at: tuple[float, float]
+    lines: tuple[str, ...]
+    size_mm: float
+    name: str = ""
+
+    def primitives(self) -> tuple[Label, ...]:
+        from graphmethods.scene.elements import ASCENT, DESCENT
+
+        x, y = self.at
+        pitch = LINE_PITCH * self.size_mm
+        up, down = (ASCENT + 0.1) * self.size_mm, (DESCENT + markup.SUB_SHIFT) * self.size_mm
+        first = y - ((len(self.lines) - 1) * pitch + up + down) / 2 + up      # the block centred on y
+        return tuple(make_label((x, first + i * pitch), line, size_mm=self.size_mm, anchor="middle")
+                     for i, line in enumerate(self.lines))
+
+
+# ----------------------------------------------------------------------------- slides for a projector
+
+#: the height of the smallest text on a projected slide, as a fraction of the slide's height
+PROJECTOR_TEXT = 1.0 / 40.0
+
+
+@dataclass(frozen=True)
+class DesignPage(Page):
+    """A page laid out at ``1/enlarged`` of its paper size, to be drawn enlarged ``enlarged`` : 1
+    (a 16:9 slide laid out at 1/1.8 of 338.7 × 190.5 mm: its 2.6 mm labels are projected at 4.7 mm).
+
+    >>> p = DesignPage("slide", enlarged=2.0, frame=False)
+    >>> p.width_mm, p.height_mm, p.size
+    (169.35, 95.25, 'SLIDE')
+    """
+
+    enlarged: float = 1.0
+
+    def _dims(self) -> tuple[float, float]:
+        short, long = PAPER[str(self.size).upper()]
+        z = float(self.enlarged)
+        return (long / z, short / z) if self.orientation == "landscape" else (short / z, long / z)
+
+
+def _enlarge_style(st: Style, z: float) -> Style:
+    return st.with_(width_mm=st.width_mm * z, dash=tuple(d * z for d in st.dash) if st.dash else st.dash)
+
+
+def _enlarge_prim(p: Primitive, z: float) -> Primitive:
+    if isinstance(p, Group):
+        return Group(p.name, tuple(_enlarge_prim(c, z) for c in p.children))
+    if isinstance(p, Label):
+        return replace(p, x=p.x * z, y=p.y * z, size_mm=p.size_mm * z)
+    if isinstance(p, (Path, Polygon)):
+        return replace(p, points=tuple((x * z, y * z) for x, y in p.points), style=_enlarge_style(p.style, z))
+    if isinstance(p, Circle):
+        return replace(p, cx=p.cx * z, cy=p.cy * z, r=p.r * z, style=_enlarge_style(p.style, z))
+    return p  # pragma: no cover - the scene model produces only the five kinds
+
+
+@dataclass(frozen=True)
+class Enlarged(Element):
+    """An element drawn ``factor`` times larger about the page's origin: coordinates, text sizes,
+    line widths and dashes.
+
+    >>> from graphmethods.scene.elements import Line
+    >>> Enlarged(Line((1, 2), (3, 2), name="l"), 2.0).primitives()[0].points
+    ((2.0, 4.0), (6.0, 4.0))
+    """
+
+    element: Element
+    factor: float
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "name", self.element.name)
+
+    def primitives(self) -> tuple[Primitive, ...]:
+        return tuple(_enlarge_prim(p, self.factor) for p in self.element.primitives())
+
+
+#: the note on an enlarged slide, in the figure's language
+ENLARGED_NOTE = ("drawn {z} : 1 for the projector; μ and mm as at 1 : 1",
+                 "увеличено {z} : 1 для проектора; μ и мм — как при 1 : 1",
+                 "为投影放大 {z} : 1；μ 与 mm 按 1 : 1")
+
+
+def enlarge(bu: BuildUp, page: Page, *, note_mm: float) -> BuildUp:
+    """``bu``, laid out on a :class:`DesignPage`, drawn on ``page`` (its full size) ``z`` : 1
+    (z = the design page's ``enlarged``): every element and the caption box enlarged; the scales
+    stay those of the drawing at 1 : 1 (every μ and every millimetre the figure and its captions
+    quote refer to it), and a note at the top right of the slide says so (it joins step 1).
+
+    Parameters
+    ----------
+    bu : BuildUp
+        Built on a :class:`DesignPage` whose paper is ``page``'s.
+    page : Page
+        The page drawn on; its margins hold the figure and the caption band.
+    note_mm : float
+        Size of the note at 1 : 1, mm.
+    """
+    from graphmethods.scene.notation import get as get_notation, in_language
+
+    design = bu.figure.page
+    z = float(getattr(design, "enlarged", 1.0))
+    fig = bu.figure
+    els = tuple(Enlarged(e, z) for e in fig.elements)
+    steps = bu.steps
+    if z != 1.0:
+        x1, y0 = design.inner_box()[2], design.inner_box()[1]
+        nt = get_notation(fig.notation)
+        title = next((e for e in fig.elements if e.name == "title"), None)
+        right = title.bbox() if title is not None else None
+        # the title is bold: 12 % wider than the estimate of regular text
+        free = x1 - (right[0] + 1.12 * (right[2] - right[0]) if right is not None else design.inner_box()[0]) - 3.0
+        words = in_language(ENLARGED_NOTE, nt, z=nt.number(z))
+        if markup.text_width_mm(words, note_mm) > free:         # beside a long title: the ratio alone
+            words = f"{nt.number(z)} : 1"
+        els += (Enlarged(Text((x1, y0 + note_mm), words, size_mm=note_mm, anchor="end", name="enlarged"), z),)
+        steps = (Step(steps[0].caption, steps[0].elements + (len(fig.elements),)),) + steps[1:]
+    x0, cy0, cx1, cy1 = bu.caption_box
+    scene = replace(fig, page=page, elements=els, extra_scales=fig.scales(),
+                    notes=fig.notes + ((f"drawn {z:g} : 1 on the {page.size.lower()}; scales per mm at 1 : 1",)
+                                       if z != 1.0 else ()))
+    box = (round(x0 * z, 9), round(cy0 * z, 9), round(cx1 * z, 9), round(cy1 * z, 9))
+    return BuildUp(scene, steps, box, bu.caption_mm * z, enlarged=z * bu.enlarged)

@@ -13,9 +13,14 @@ names that figure function gives, in the order the construction records say:
   the ray at ψ_min; k and l; kl; J_F.
 - :func:`differentiation_steps` (the slider's s, v, a by graphical differentiation),
   :func:`integration_steps` (work diagrams by the method of chords), :func:`zhukovsky_steps`
-  (Zhukovsky's lever) and :func:`scheme_steps` (the kinematic scheme in m positions).
+  (Zhukovsky's lever with the working load alone) and :func:`scheme_steps` (the kinematic scheme
+  in m positions).
+- :func:`force_plans_steps`: μ_F; for each group, in the order they are solved, the known forces
+  end to end, the two unknown directions, their meeting point, the reactions; the crank closed by
+  R_01; the table and M_b. :func:`zhukovsky_forces_steps`: the plan turned 90° as a lever, each
+  force at the image of its point with its moment about p, F_b from Σ M_p = 0, M_b.
 
-A new construction (the acceleration plan, the force plan) plugs in as one more function of
+A new construction plugs in as one more function of
 the same shape that returns a :class:`~graphmethods.scene.steps.BuildUp`; :data:`FIGURES` lists
 them by name for :func:`build` and the command line.
 
@@ -35,9 +40,9 @@ from collections.abc import Callable
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, in_language, notation as get_notation
+from graphmethods.scene import Axis, Page, Scale, Scene, in_language, markup, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
-from graphmethods.scene.steps import BuildUp, Rule, partition
+from graphmethods.scene.steps import LINE_PITCH, PROJECTOR_TEXT, BuildUp, DesignPage, Rule, enlarge, partition, wrap
 
 #: the caption band under the figure, mm, and the caption size, by page kind
 SLIDE_BAND_MM, SLIDE_CAPTION_MM = 20.0, 6.5
@@ -204,31 +209,202 @@ def step_page(page="slide") -> tuple[Page, tuple[float, float, float, float], fl
 
     >>> page, box, size, tb = step_page("slide")
     >>> (page.width_mm, page.height_mm), box, size, tb
-    ((338.7, 190.5), (8.0, 166.5, 330.7, 186.5), 6.5, False)
+    ((338.7, 190.5), (8.0, 168.0, 330.7, 186.5), 6.5, False)
     """
     if isinstance(page, Page):
         base = page
     else:
         name = str(page).strip()
         if name.lower() == "slide":
-            base = Page("slide", "landscape", margins_mm=(8.0, 8.0, 4.0, 8.0), frame=False)
+            base = SLIDE_PAGE
         elif name.upper() in ("A4", "A3", "A2", "A1"):
             base = Page(name.upper(), "landscape", frame=True)
         else:
             raise InputError(f"page {page!r}: use slide, A4, A3, A2 or A1")
     slide = base.size == "SLIDE"
-    band = SLIDE_BAND_MM if slide else SHEET_BAND_MM
+    z = float(getattr(base, "enlarged", 1.0))          # a design page: everything 1/z of the slide's
+    band = (SLIDE_BAND_MM if slide else SHEET_BAND_MM) / z
     t, r, b, left = base.margins_mm
     page_ = base.with_(margins_mm=(t, r, b + band, left))
-    box = (left, base.height_mm - b - band, base.width_mm - r, base.height_mm - b)
-    return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM), not slide
+    # the caption box starts a little below the figure's page: the descenders of the figure's last
+    # line (its scale captions, 1 mm above the page's inner box) stay out of it
+    box = (left, base.height_mm - b - band + CAPTION_GAP_MM / z, base.width_mm - r, base.height_mm - b)
+    return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM) / z, not slide
+
+
+#: the gap between the figure's page and the caption box, mm
+CAPTION_GAP_MM = 1.5
+
+#: the 16:9 slide the steps are shown on (no frame, no title block)
+SLIDE_PAGE = Page("slide", "landscape", margins_mm=(8.0, 8.0, 4.0, 8.0), frame=False)
+#: how much a slide's design page may be enlarged, tried from the largest down
+ZOOMS = (1.9, 1.8, 1.7, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)
+
+
+def design_slide(z: float) -> Page:
+    """The slide laid out at 1/z of its size (margins too), to be drawn z : 1 (:class:`DesignPage`).
+
+    >>> p = design_slide(2.0)
+    >>> p.width_mm, p.margins_mm
+    (169.35, (4.0, 4.0, 2.0, 4.0))
+    """
+    if z == 1.0:
+        return SLIDE_PAGE
+    t, r, b, left = SLIDE_PAGE.margins_mm
+    return DesignPage("slide", "landscape", margins_mm=(t / z, r / z, b / z, left / z), frame=False, enlarged=z)
+
+
+def smallest_text_mm(bu: BuildUp) -> float:
+    """The smallest text of the steps' slides, mm: the figure's labels and the step captions."""
+    from graphmethods.render.recording import record
+
+    sizes = [c.data.size_mm for c in record(bu.figure).calls if c.kind == "text"]
+    return min(sizes + [bu.caption_mm])
+
+
+def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
+    """Steps on a 16:9 slide with text sized for a projector.
+
+    The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
+    about 1/70 of its height. So the figure is laid out on a smaller design page, 1/z of the
+    slide, and the whole drawing (text, lines, captions) is drawn z : 1: nothing is laid out
+    anew, so nothing can come to overlap or leave the frame. z is the smallest of :data:`ZOOMS`
+    that makes the smallest text :data:`~graphmethods.scene.steps.PROJECTOR_TEXT` of the slide's
+    height (1/40: 4.8 mm), or, for a figure too dense for that, the largest at which its layout
+    still fits. The scales and millimetres written stay those of the drawing at 1 : 1; a note on
+    the slide says so.
+
+    Parameters
+    ----------
+    make : callable
+        Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
+    """
+    bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
+    reference = make(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+    drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
+
+    def holds(bu: BuildUp, z: float) -> bool:
+        """No overlap, nothing out of the page, and the construction drawn on the slide at least
+        :data:`KEEP_SIZE` as large as at 1 : 1 (a figure that keeps fixed margins for its labels
+        would otherwise shrink its drawing to make room)."""
+        if layout_faults(bu):
+            return False
+        return all(z / sc.per_mm >= KEEP_SIZE / drawn[sc.symbol, sc.unit] for sc in bu.figure.scales()
+                   if (sc.symbol, sc.unit) in drawn and sc.unit not in ("rad", "°"))
+
+    def attempt(z: float) -> BuildUp | None:
+        try:
+            bu = make(design_slide(z))
+        except InputError:
+            return None
+        return bu if holds(bu, z) else None
+
+    need = bound / smallest_text_mm(reference)          # the text sizes do not depend on the page
+    # the candidates, largest first: the smallest enlargement that is enough, and every one below it
+    enough = [w for w in ZOOMS[:-1] if w >= need - 1e-9]
+    candidates = [w for w in ZOOMS[:-1] if w <= (enough[-1] if enough else ZOOMS[0]) + 1e-9]
+    # a smaller enlargement leaves more room, so the ones that hold are a tail of the list: bisect
+    lo, hi, best = 0, len(candidates) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        found = attempt(candidates[mid])
+        if found is not None:
+            best, hi = found, mid - 1
+        else:
+            lo = mid + 1
+    return _on_slide(best if best is not None else reference)
+
+
+def layout_faults(bu: BuildUp) -> list[str]:
+    """What in the finished figure leaves the page's inner box (down to the caption box) or covers
+    other text: estimated label boxes (as the layout estimates them) and every line's points.
+
+    >>> layout_faults(build("W1", "energy-indicator", page="A4"))
+    []
+    """
+    from graphmethods.render.recording import record
+    from graphmethods.scene.elements import label_bbox
+
+    fig = bu.figure
+    x0, y0, x1, _ = fig.page.inner_box()
+    y1 = bu.caption_box[1]                     # down to the caption box
+    tol = 0.05
+    faults: list[str] = []
+    boxes: list[tuple[str, tuple[float, float, float, float]]] = []
+    for c in record(fig).calls:
+        owner = c.groups[0] if c.groups else ""
+        if c.kind == "text":
+            b = label_bbox(c.data)
+            boxes.append((owner, b))
+        elif c.kind in ("path", "polygon"):
+            points = c.data[0] if c.kind == "path" else c.data
+            xs, ys = [p[0] for p in points], [p[1] for p in points]
+            b = (min(xs), min(ys), max(xs), max(ys))
+        else:
+            continue
+        if b[0] < x0 - tol or b[1] < y0 - tol or b[2] > x1 + tol or b[3] > y1 + tol:
+            faults.append(f"{owner} leaves the page's inner box")
+    for i, (na, a) in enumerate(boxes):
+        for nb, b in boxes[i + 1:]:
+            if na != nb and min(a[2], b[2]) - max(a[0], b[0]) > 0.3 and min(a[3], b[3]) - max(a[1], b[1]) > 0.3:
+                faults.append(f"{na} covers {nb}")
+    return faults
+
+
+def projector_figure(make: Callable[[Page], Scene]) -> Scene:
+    """Any figure on a 16:9 slide with its text sized for a projector, as :func:`for_projector`
+    sizes the steps' slides (no caption band): ``make`` draws the figure on a given page.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import force_scheme
+    >>> s = projector_figure(lambda pg: force_scheme(builtin.case("press"), 3, page=pg, title_block=False))
+    >>> s.page.size, any(n.startswith("drawn 1.1 : 1") for n in s.notes)
+    ('SLIDE', True)
+    """
+    from graphmethods.scene.steps import Step
+
+    def as_steps(page: Page) -> BuildUp:
+        fig = make(page)
+        x0, _, x1, y1 = page.inner_box()
+        y1 += CAPTION_GAP_MM / float(getattr(page, "enlarged", 1.0))   # the last line's descenders, in the margin
+        return BuildUp(fig, (Step("", tuple(range(len(fig.elements)))),), (x0, y1, x1, y1), caption_mm=1e3)
+
+    return for_projector(as_steps).figure
+
+
+def _on_slide(bu: BuildUp) -> BuildUp:
+    """The steps drawn on the whole slide: enlarged from their design page (z = 1: as they are),
+    the caption band inside the slide's margins."""
+    z = float(getattr(bu.figure.page, "enlarged", 1.0))
+    return enlarge(bu, SLIDE_PAGE, note_mm=SLIDE_NOTE_MM / z)
+
+
+#: an enlarged slide draws the construction at least this fraction of its size at 1 : 1
+KEEP_SIZE = 0.75
+
+#: the enlargement note's size on the slide, mm
+SLIDE_NOTE_MM = 5.0
 
 
 def _fit(caption_mm: float, box, captions) -> float:
-    """The caption size: the given one, smaller when the longest caption would not fit the box."""
-    width = box[2] - box[0] - 4.0
-    longest = max((text_width_mm(f"{len(captions)}. {c}", caption_mm) for c in captions), default=0.0)
-    return caption_mm if longest <= width else max(2.5, caption_mm * width / longest)
+    """The caption size: the given one, or smaller until every caption, broken into lines at
+    spaces, fits the box (as many lines as its height holds)."""
+    from graphmethods.scene.elements import ASCENT, DESCENT
+
+    width, height = box[2] - box[0] - 4.0, box[3] - box[1]
+    size = caption_mm
+    while size > 0.4 * caption_mm:
+        # n lines take (n − 1) pitches plus one line's height with a superscript and a subscript
+        tall = (ASCENT + 0.1 + DESCENT + markup.SUB_SHIFT) * size
+        rows = max(1, int((height - tall) // (LINE_PITCH * size)) + 1)
+        if all(len(wrap(f"{len(captions)}. {c}", size, width)) <= rows
+               and all(text_width_mm(line, size) <= width for line in wrap(f"{len(captions)}. {c}", size, width))
+               for c in captions):
+            return size
+        size *= 0.95
+    return size
 
 
 def _build(figure, rules, box, caption_mm, rest) -> BuildUp:
@@ -664,6 +840,228 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
+# ----------------------------------------------------------------------------- the force plans
+
+WORDS_F = {
+    "f_scale":   ("One force scale for every plan, so the largest polygon fits: {mu}",
+                  "Один масштаб сил для всех планов, чтобы поместился наибольший: {mu}",
+                  "所有力多边形取同一比例尺，使最大者能画下：{mu}"),
+    "f_known":   ("{g}: lay the known forces end to end at μ_F: {forces}",
+                  "{g}: откладываем известные силы одну за другой в масштабе μ_F: {forces}",
+                  "{g}：按 μ_F 将已知力首尾相接：{forces}"),
+    "f_first":   ("; {parts} found first, from the links' moment equations (ΣM = 0)",
+                  "; {parts} — заранее, из уравнений моментов звеньев (ΣM = 0)",
+                  "；{parts} 先由各构件的力矩方程 (ΣM = 0) 求得"),
+    "f_dirs":    (("Through the end of the chain, the line of {X} {relX}; through its start, the line of {Y} {relY}: "
+                   "their directions are known, not their sizes"),
+                  ("Через конец цепочки — линию {X} {relX}; через её начало — линию {Y} {relY}: направления "
+                   "известны, величины нет"),
+                  "过力链终点作 {X} 的作用线 {relX}；过起点作 {Y} 的作用线 {relY}：方向已知，大小未知"),
+    "f_meet":    ("The two lines meet: the polygon closes, {X} = {x} and {Y} = {y}",
+                  "Линии пересекаются — многоугольник замкнут: {X} = {x}, {Y} = {y}",
+                  "两线相交，力多边形封闭：{X} = {x}，{Y} = {y}"),
+    "f_close":   ("{X} closes the polygon (the frame takes what is left): {X} = {x}",
+                  "{X} замыкает многоугольник (остальное воспринимает стойка): {X} = {x}",
+                  "{X} 使力多边形封闭（其余由机架承受）：{X} = {x}"),
+    "f_react":   ("The reactions of the group: {list}", "Реакции в парах группы: {list}", "该杆组各运动副反力：{list}"),
+    "f_result":  (("Every reaction's size; M_b from the plans = {Mb}, checked by Zhukovsky's lever ({dl} %) "
+                   "and the power balance ({dp} %)"),
+                  ("Величины всех реакций; M_{{ур}} по планам сил = {Mb}, проверка рычагом Жуковского ({dl} %) "
+                   "и балансом мощностей ({dp} %)"),
+                  "各反力大小；力多边形法 M_b = {Mb}，以茹可夫斯基杠杆（{dl} %）和功率平衡（{dp} %）校核"),
+    "par":       ("∥ {x}", "∥ {x}", "∥ {x}"),
+    "perp":      ("⊥ {x}", "⊥ {x}", "⊥ {x}"),
+    "perp_g":    ("⊥ the guide", "⊥ направляющей", "⊥ 导路"),
+    "known_dir": ("along its known line", "по известной линии", "沿已知作用线"),
+    # Zhukovsky's lever with every force
+    "z_lever":   ("The velocity plan of analogues v/ω_1 turned 90°: a rigid lever pivoted at p; {mu}",
+                  "План аналогов скоростей v/ω_1, повёрнутый на 90°, — жёсткий рычаг с опорой в p; {mu}",
+                  "将速度类比图 v/ω_1 转 90°，视为绕 p 转动的刚性杠杆；{mu}"),
+    "z_force":   ("{F} at the image of its point: its moment about p is {M}",
+                  "{F} — в образе своей точки: её момент относительно p равен {M}",
+                  "{F} 加在其作用点的影像上：对 p 之矩为 {M}"),
+    "z_couple":  ("{F} as two forces ±M/l at two points of its link: their moment about p is {M}",
+                  "{F} — пара сил ±M/l в двух точках звена: их момент относительно p равен {M}",
+                  "{F} 化为其构件上两点的一对力 ±M/l：对 p 之矩为 {M}"),
+    "z_balance": ("Σ M_p = 0 gives the balancing force at a, ⊥ OA: {Fb} = {x}",
+                  "Из Σ M_p = 0 — уравновешивающая сила в точке a, ⊥ OA: {Fb} = {x}",
+                  "由 Σ M_p = 0 得作用于 a 且 ⊥ OA 的平衡力：{Fb} = {x}"),
+    "z_result":  ("{Mb} = {Fb}·l_{{OA}} = {x}; the force plans give {y} (difference {d} %)",
+                  "{Mb} = {Fb}·l_{{OA}} = {x}; по планам сил {y} (расхождение {d} %)",
+                  "{Mb} = {Fb}·l_{{OA}} = {x}；力多边形法 {y}（相对误差 {d} %）"),
+}
+WORDS.update(WORDS_F)
+
+
+def _forces_at(case, position: int | None, m: int):
+    """The force analysis the force figures draw, and the position index in it."""
+    from graphmethods.dynamics.forces import case_forces
+
+    k = 2 if position is None else position
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
+        raise InputError(f"position {position!r}: give a position number 0…{m}")
+    return case_forces(case, m=m), int(k)
+
+
+def _relation(nt, d: complex, group, motion, i: int) -> str:
+    """How a closing side's known direction ``d`` is drawn: ∥ or ⊥ a segment between two of the
+    group's points, or ⊥ the guide of one of its links."""
+    pts = [getattr(group, a) for a in ("P", "Q", "C", "R") if isinstance(getattr(group, a, None), str)]
+    pts = [p for p in pts if p in motion.z]
+    pairs = [(a, b) for n_a, a in enumerate(pts) for b in pts[n_a + 1:]]
+    for key, test in (("par", lambda c: abs((np.conj(c) * d).imag)), ("perp", lambda c: abs((np.conj(c) * d).real))):
+        for a, b in pairs:
+            seg = complex(motion.z[b][i] - motion.z[a][i])
+            if abs(seg) > 0 and test(seg / abs(seg)) < 1e-9:
+                return _w(nt, key, x=f"{a}{b}")
+    for ln in group.links:
+        e = complex(np.broadcast_to(motion._state.e[ln], (motion.n,))[i])
+        if abs(e) > 0 and abs((np.conj(e / abs(e)) * d).real) < 1e-9:
+            return _w(nt, "perp_g")
+    return _w(nt, "known_dir")
+
+
+def force_plans_steps(case, position: int | None = None, *, notation="en", page="slide", m: int = 12) -> BuildUp:
+    """The force plans of one position, step by step, group by group in the order they are solved:
+    μ_F; for each group the known forces laid end to end, the two unknown directions, their meeting
+    point (the polygon closes), the reactions; the crank's polygon closed by R_01; the table of
+    reactions and M_b with its two checks.
+
+    Parameters
+    ----------
+    case : Case
+        A linkage problem with masses (as :func:`graphmethods.sheets.forces.force_plans` takes it).
+    position : int, optional
+        Position 0…m (default 2, as the figure).
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> bu = force_plans_steps(builtin.case("press"), 3)
+    >>> caption = bu.captions()[1]
+    >>> caption.split(": R")[0]
+    'group RRP (2, 3): lay the known forces end to end at μ_F'
+    >>> bu.scene_at(len(bu)) == bu.figure
+    True
+    """
+    from graphmethods.sheets import forces as SF
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    fa, i = _forces_at(case, position, m)
+    figure = SF.force_plans(case, i, m=m, notation=nt, page=pg, title_block=tb)
+    names = {e.name for e in figure.elements}
+    groups = {g.name: g for g in fa.motion.linkage.groups}
+    newton = nt.unit("N")
+
+    def size(F) -> str:
+        return f"{nt.number(float(abs(F[i])), sig=5)} {newton}"
+
+    rules: list = [(_w(nt, "f_scale", mu=figure.scales()[0].caption(nt)), ["title", "scale-captions", "legend"])]
+    solved: set[str] = set()
+    for j, pl in enumerate(fa.plans):
+        poly = pl.polygons[0]
+        nk = len(poly.known)
+        head = _text_of(figure, f"caption-{j}")
+        known = _w(nt, "f_known", g=head, forces=", ".join(SF._markup(lbl) for lbl, _ in poly.known))
+        if pl.first:
+            known += _w(nt, "f_first", parts=", ".join(SF._markup(lbl) for lbl, _ in pl.first))
+        rules.append((known, lambda n, j=j, nk=nk: n == f"caption-{j}" or n.startswith(f"known-{j}-") or any(
+            n == f"label-{j}-{s}" for s in range(nk))))
+        closing = poly.closing
+        labels = [SF._markup(lbl) for lbl, _, _ in closing]
+        if len(closing) == 2 and all(d is not None for _, d, _ in closing):
+            g = groups.get(pl.group)
+            rel = [_relation(nt, complex(d[i]), g, fa.motion, i) if g is not None else _w(nt, "known_dir")
+                   for _, d, _ in closing]
+            rules.append((_w(nt, "f_dirs", X=labels[0], relX=rel[0], Y=labels[1], relY=rel[1]),
+                          lambda n, j=j: n.startswith(f"direction-{j}-")))
+            rules.append((_w(nt, "f_meet", X=labels[0], x=size(closing[0][2]), Y=labels[1], y=size(closing[1][2])),
+                          lambda n, j=j: n.startswith(f"closing-{j}-")))
+            mine = [r for r in fa.reactions.values() if (r.by in pl.links or r.on in pl.links)
+                    and not ({r.by, r.on} & solved)]
+            listed = "; ".join(f"{SF._markup(r.key)} = {size(r.R)}" for r in sorted(mine, key=lambda r: r.key))
+            rules.append((_w(nt, "f_react", list=listed), lambda n, j=j, nk=nk: (
+                n.startswith(f"label-{j}-") and int(n.rsplit("-", 1)[1]) >= nk)
+                or n.startswith((f"inner-{j}-", f"label-inner-{j}-"))))      # each link's own polygon
+        else:
+            rules.append((_w(nt, "f_close", X=labels[-1], x=size(closing[-1][2])),
+                          lambda n, j=j: n.startswith((f"closing-{j}-", f"direction-{j}-", f"label-{j}-",
+                                                       f"inner-{j}-", f"label-inner-{j}-"))))
+        solved |= set(pl.links)
+    Mb = float(fa.M_balance[i])
+    rules.append((_w(nt, "f_result", Mb=f"{nt.number(Mb, sig=6)} {nt.unit('N·m')}",
+                     dl=f"{float(fa.difference_percent(fa.M_balance_lever)[i]):.1e}",
+                     dp=f"{float(fa.difference_percent(fa.M_balance_power)[i]):.1e}"),
+                  lambda n: n == "table" or n.startswith("result-")))
+    rules = [r for r in rules if any(r[1](n) if callable(r[1]) else n in r[1] for n in names)]
+    return _build(figure, rules, box, cap_mm, rest=None)
+
+
+def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", page="slide",
+                           m: int = 12) -> BuildUp:
+    """Zhukovsky's lever with every force of the force analysis, step by step: the velocity plan of
+    analogues turned 90° as a lever; each force (a couple as two forces) at the image of its point,
+    with its moment about p; the balancing force from Σ M_p = 0; M_b beside the force plans'.
+
+    Parameters
+    ----------
+    case : Case
+        As :func:`graphmethods.sheets.forces.zhukovsky_forces` takes it.
+    position : int, optional
+        Position 0…m (default 2, as the figure).
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> bu = zhukovsky_forces_steps(builtin.case("four-bar"), 2, notation="ru")
+    >>> bu.captions()[-1].split(" = ")[0]
+    'M_{ур}'
+    """
+    from graphmethods.sheets import forces as SF
+
+    nt = get_notation(notation)
+    pg, box, cap_mm, tb = step_page(page)
+    fa, i = _forces_at(case, position, m)
+    figure = SF.zhukovsky_forces(case, i, m=m, notation=nt, page=pg, title_block=tb)
+    lev = fa.lever
+    nm_ = nt.unit("N·m")
+    items = [f for f in lev.forces if abs(f.F[i]) > 0]
+    mu = "; ".join(s.caption(nt) for s in figure.scales())
+    rules: list = [(_w(nt, "z_lever", mu=mu),
+                    lambda n: n in ("title", "pole", "label-pole", "text-0", "scale-captions", "legend")
+                    or n.startswith(("ray-", "image-")))]
+    couple_said = False
+    j = 0
+    while j < len(items):
+        lbl = items[j].label
+        idx = [j]
+        while j + len(idx) < len(items) and items[j + len(idx)].label == lbl:
+            idx.append(j + len(idx))
+        moment = sum(float(items[t].moment[i]) for t in idx)
+        if abs(moment) < 1e-9 * max(abs(float(lev.M_balance[i])), 1e-300):
+            moment = 0.0                  # a force through p (or along its own image's ray): rounding only
+        couple = len(idx) > 1
+        text = "z_couple" if couple else "z_force"
+        wanted = {f"force-{t}" for t in idx} | {f"label-force-{t}" for t in idx}
+        if couple and not couple_said:
+            wanted.add("text-1")
+            couple_said = True
+        rules.append((_w(nt, text, F=SF._markup(lbl), M=f"{nt.number(moment, sig=4)} {nm_}"),
+                      lambda n, w=frozenset(wanted): n in w))
+        j += len(idx)
+    Fb = "F_{ур}" if nt.code == "ru" else "F_b"
+    Mb = "M_{ур}" if nt.code == "ru" else "M_b"
+    rules.append((_w(nt, "z_balance", Fb=Fb, x=f"{nt.number(float(abs(lev.F_balance[i])), sig=5)} {nt.unit('N')}"),
+                  lambda n: n in ("F_b", f"label-force-{len(items)}", "text-2")
+                  or (n == "text-1" and not couple_said)))
+    rules.append((_w(nt, "z_result", Mb=Mb, Fb=Fb, x=f"{nt.number(float(lev.M_balance[i]), sig=6)} {nm_}",
+                     y=f"{nt.number(float(fa.M_balance[i]), sig=6)} {nm_}",
+                     d=f"{float(fa.difference_percent(lev.M_balance)[i]):.1e}"),
+                  lambda n: n in ("text-3", "text-4")))
+    return _build(figure, rules, box, cap_mm, rest=None)
+
+
 # ----------------------------------------------------------------------------- the kinematic scheme
 
 def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildUp:
@@ -724,9 +1122,14 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "wittenbauer": (wittenbauer_steps, "study"),
     "kinematic-diagrams": (differentiation_steps, "linkage"),
     "work-diagrams": (integration_steps, "cycle"),
-    "zhukovsky-lever": (zhukovsky_steps, "study"),
+    "force-plans": (force_plans_steps, "linkage"),
+    "zhukovsky-lever": (zhukovsky_forces_steps, "linkage"),
+    "zhukovsky-load": (zhukovsky_steps, "study"),
     "kinematic-scheme": (scheme_steps, "linkage"),
 }
+
+#: the figures drawn in one position (``--position K``)
+POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
 
 #: built-in problems: name -> problem file in graphmethods/problems/data (linkages) or a W problem
 LINKAGES = {"press": "slider_crank_press.json", "four-bar": "four_bar_rocker.json",
@@ -776,9 +1179,10 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
         linkage problem file, or a problem object.
     figure : str
         One of :data:`FIGURES`: ``velocity-plan``, ``energy-indicator``, ``wittenbauer``,
-        ``kinematic-diagrams``, ``work-diagrams``, ``zhukovsky-lever``, ``kinematic-scheme``.
+        ``kinematic-diagrams``, ``work-diagrams``, ``force-plans``, ``zhukovsky-lever`` (every force,
+        M_b), ``zhukovsky-load`` (the working load alone, M_r), ``kinematic-scheme``.
     position : int, optional
-        The position of a velocity plan or of Zhukovsky's lever.
+        The position of a velocity, acceleration or force plan or of Zhukovsky's lever.
     m : int
         Positions per crank turn of a linkage study.
 
@@ -796,25 +1200,36 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     fn, needs = FIGURES[key]
     obj = resolve_case(case)
     is_linkage = isinstance(obj, Case)
-    if position is not None and key not in ("velocity-plan", "acceleration-plan", "zhukovsky-lever"):
-        raise InputError(f"--position is for the velocity and acceleration plans and Zhukovsky's lever only, not "
-                         f"for {key}")
+    if position is not None and key not in POSITIONED:
+        raise InputError(f"--position is for the velocity, acceleration and force plans and Zhukovsky's lever only, "
+                         f"not for {key}")
     if needs == "linkage":
         if not is_linkage:
             raise InputError(f"{key} needs a linkage problem ({', '.join(LINKAGES)} or a problem file); {case} is "
                              f"a cycle given by its works")
-        if key in ("velocity-plan", "acceleration-plan"):
-            return fn(obj, position, notation=notation, page=page, m=m)
-        return fn(obj, notation=notation, page=page, m=m)
-    if is_linkage:
-        from graphmethods.dynamics.study import Study
+        if key in POSITIONED:
+            def make(pg):
+                return fn(obj, position, notation=notation, page=pg, m=m)
+        else:
+            def make(pg):
+                return fn(obj, notation=notation, page=pg, m=m)
+    else:
+        if is_linkage:
+            from graphmethods.dynamics.study import Study
 
-        obj = Study(obj, positions=m)
-    elif needs == "study":
-        raise InputError(f"{key} needs a linkage problem with masses and loads ({', '.join(LINKAGES)} or a "
-                         f"problem file); {case} gives works only")
-    if key == "work-diagrams":
-        return fn(obj, notation=notation, page=page, m=m)
-    if key == "zhukovsky-lever":
-        return fn(obj, position, notation=notation, page=page)
-    return fn(obj, notation=notation, page=page)
+            obj = Study(obj, positions=m)
+        elif needs == "study":
+            raise InputError(f"{key} needs a linkage problem with masses and loads ({', '.join(LINKAGES)} or a "
+                             f"problem file); {case} gives works only")
+        if key == "work-diagrams":
+            def make(pg):
+                return fn(obj, notation=notation, page=pg, m=m)
+        elif key == "zhukovsky-load":
+            def make(pg):
+                return fn(obj, position, notation=notation, page=pg)
+        else:
+            def make(pg):
+                return fn(obj, notation=notation, page=pg)
+    if isinstance(page, str) and page.strip().lower() == "slide":
+        return for_projector(make)
+    return make(page)
