@@ -1,0 +1,94 @@
+"""Make the acceleration-plan examples (run once; the files are committed and tests check that exactly the
+planted mistakes are found):
+
+    python tests/drawings/make_acceleration_examples.py
+
+* graphmethods/problems/data/answers/*_acc_*.toml: typed answers (lengths measured to 0.1 mm, as a student
+  reads a ruler; ε to 3 significant figures), a correct one per linkage and one per usual mistake;
+* graphmethods/problems/data/drawings/*_acc_*.dxf: acceleration plans drawn as a student draws them in CAD
+  (LINEs with SOLID or polyline-width heads, TEXT letters beside the points at varying offsets, hand errors of
+  up to 0.2 mm), correct and with the Coriolis sense reversed (slotted lever) and a normal component drawn
+  away from its centre (press).
+
+A mistaken plan is the construction with that mistake made (graphmethods.sheets.check_acceleration.Problem):
+the student draws it through to the end, so every later vector follows from the mistake.
+"""
+
+from __future__ import annotations
+
+import pathlib
+
+from graphmethods.kinematics import read_case
+from graphmethods.sheets import check_acceleration as ca
+from graphmethods.sheets.acceleration import _Problem
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+DATA = ROOT / "graphmethods" / "problems" / "data"
+MU_A = {"press": 1.0, "slotted-lever": 0.04}
+POSITION = {"press": 2, "slotted-lever": 2}
+FILE = {"press": "slider_crank_press.json", "slotted-lever": "slotted_lever.json"}
+
+
+def problem(name: str) -> ca.Problem:
+    pr = _Problem(read_case(DATA / FILE[name]), m=12, omega_1=None, epsilon_1=0.0)
+    return ca.Problem(pr.linkage, POSITION[name], 12, pr.omega_1, 0.0)
+
+
+def answers_text(name: str, stem: str, comment: str, plan, mu_a: float, crank: str, *, problem_id: str,
+                 position: bool = True) -> str:
+    lines = [f"# {comment}", f'problem = "{problem_id}"', f'student = "Example student ({stem})"', "",
+             "[page]", 'size = "A4"', 'orientation = "landscape"', "", "[acceleration_plan]"]
+    if position:
+        lines += ["positions = 12", f"position = {plan.position}"]
+    lines.append(f"mu_a = {mu_a:g}")
+    for c in ca.vectors(plan):
+        lines.append(f"{ca.key_of(c.symbol)}_mm = {c.magnitude / mu_a:.1f}")
+    for link in ca.turning_links(plan, crank):
+        e = plan.epsilon[link]
+        lines.append(f"epsilon_{link} = {float(f'{abs(e):.3g}'):g}")
+        lines.append(f'epsilon_{link}_sense = "{"ccw" if e > 0 else "cw"}"')
+    return "\n".join(lines) + "\n"
+
+
+TYPED = {
+    # file stem: (problem, mistake kw for Problem.plan, comment)
+    "press_acc_correct": ("press", {}, "The press's acceleration plan in position 2, correct."),
+    "press_acc_mistakes": ("press", {"reversed_link": "2"},
+                           "Planted: a^n_BA drawn from a away from the centre A (normal_reversed); a^τ_BA, a_B, "
+                           "a_S2 and ε_2 follow from it."),
+    "slotted_lever_acc_correct": ("slotted-lever", {}, "The slotted lever's acceleration plan in position 2, correct."),
+    "slotted_lever_acc_mistakes": ("slotted-lever", {"coriolis_factor": -2j},
+                                   "Planted: the Coriolis component turned the wrong way (coriolis_reversed); "
+                                   "the rest of the plan follows from it."),
+    "slotted_lever_acc_factor": ("slotted-lever", {"coriolis_factor": 1j},
+                                 "Planted: a^k = ω3·v_rel, the factor 2 missing (coriolis_factor_2)."),
+    "slotted_lever_acc_no_coriolis": ("slotted-lever", {"coriolis_factor": 0j},
+                                    "Planted: the Coriolis component forgotten (coriolis_forgotten): no a^k, "
+                                    "a^r drawn from a."),
+    "slotted_lever_acc_length": ("slotted-lever", {"length_link": "3", "length": 0.5},
+                                 "Planted: a^n_A3O3 = ω3²·O3B (the lever's whole length) instead of ω3²·O3A3 "
+                                 "(normal_wrong_length)."),
+}
+
+
+def main() -> None:
+    out = DATA / "answers"
+    for stem, (name, kw, comment) in TYPED.items():
+        pr = problem(name)
+        plan = pr.plan(**kw)
+        text = answers_text(name, stem, comment, plan, MU_A[name], pr.linkage.crank.link, problem_id=name)
+        (out / f"{stem}.toml").write_text(text, encoding="utf-8")
+    # a worksheet variant whose crank speeds up (ε₁ ≠ 0): its a^τ_A forgotten
+    from graphmethods.sheets import worksheets as ws
+
+    v = ws.variant("acceleration-plan", seed=1, number=4)
+    assert v.epsilon_1 != 0.0
+    pr = ca.Problem(v.linkage, v.position, 12, v.omega_1, 0.0, v.mu_a)
+    text = answers_text("", "crank", "Planted: the crank's a^τ_A = ε1·OA forgotten (crank_tangential_forgotten); "
+                        "the plan is drawn from a^n_A alone.", pr.plan(), v.mu_a, v.linkage.crank.link,
+                        problem_id=v.id, position=False)
+    (out / "worksheet_acc_crank.toml").write_text(text, encoding="utf-8")
+
+
+if __name__ == "__main__":
+    main()
