@@ -10,6 +10,7 @@ import pytest
 from graphmethods.errors import InputError
 from graphmethods.render.recording import record
 from graphmethods.sheets import check as ck
+from graphmethods.sheets import check_acceleration as ca
 from graphmethods.sheets import worksheets as ws
 
 
@@ -197,3 +198,79 @@ def test_the_command_line_worksheet_and_check(tmp_path, capsys):
     ans.write_text(filled, encoding="utf-8")
     assert main(["check", str(out / "problems" / "acceleration-plan-02.json"), str(ans)]) == 0
     assert "all 2 items correct" in capsys.readouterr().out
+
+
+# ----------------------------------------------------------------------------- acceleration plans drawn in CAD
+
+ezdxf = pytest.importorskip("ezdxf")
+DRAWINGS = __import__("pathlib").Path(ck.__file__).parents[1] / "problems" / "data" / "drawings"
+
+
+class _SlottedLever:
+    """The built-in slotted lever (problems/data/slotted_lever.json) as the hand formulas above need it."""
+
+    mechanism, r, d, l, l_S, epsilon_1 = "slotted-lever", 0.10, 0.30, 0.50, 0.25, 0.0
+    omega_1 = 2 * math.pi * 60 / 60
+
+    def __init__(self, phi):
+        self.plan = type("P", (), {"phi": phi})()
+
+
+def test_a_drawing_is_measured_where_the_student_drew_it():
+    from graphmethods.sheets import cad
+
+    rep = cad.check_drawing("slotted-lever", DRAWINGS / "slotted_lever_acc_correct.dxf")
+    sec = rep.answers["acceleration_plan"]
+    assert rep.ok and sec["mu_a"] == 0.04 and sec["position"] == 2
+    plan = ca.problem_of(ck._Checker(rep.answers), rep.data).plan()
+    hand = by_hand(_SlottedLever(plan.phi))
+    for key, point in (("a_B", "B"), ("a_S3", "S3")):
+        assert sec[f"{key}_mm"] * 0.04 == pytest.approx(abs(hand["a"][point]), abs=0.3 * 0.04)  # hand error ≤ 0.3 mm
+        assert sec[f"{key}_deg"] == pytest.approx(math.degrees(np.angle(hand["a"][point])), abs=1.0)
+    assert sec["epsilon_3"] == pytest.approx(abs(hand["epsilon"]), rel=0.02)
+
+
+def test_the_overlay_over_a_drawing_puts_the_correct_plan_at_the_students_pole_in_red(tmp_path):
+    from graphmethods.sheets import cad
+
+    rep = cad.check_drawing("slotted-lever", DRAWINGS / "slotted_lever_acc_mistakes.dxf")
+    scene = cad.overlay_on_drawing(rep, notation="en")
+    rec = record(scene)
+    plan = ca.problem_of(ck._Checker(rep.answers), rep.data).plan()
+    hand = by_hand(_SlottedLever(plan.phi))
+    assert rec.vector_length_mm("check-acc-a_B") * 0.04 == pytest.approx(abs(hand["a"]["B"]), rel=1e-4)
+    start = rec.in_group("check-acc-a_B", "path")[0].data[0][0]
+    assert start == pytest.approx(rep.answers["acceleration_plan"]["origin_mm"], abs=1e-3)
+    assert all(p.style.stroke == ws.RED for p in rec.in_group("check-acc-a_B", "path"))
+    out = tmp_path / "o.dxf"
+    out.write_bytes(cad.overlay_dxf(rep))
+    doc = ezdxf.readfile(out)
+    assert doc.layers.has_entry("CHECK") and len(doc.modelspace().query('*[layer=="CHECK"]')) > 20
+    assert len(doc.modelspace().query('*[layer=="Plan"]')) == len(
+        ezdxf.readfile(DRAWINGS / "slotted_lever_acc_mistakes.dxf").modelspace().query('*[layer=="Plan"]'))
+
+
+def test_a_worksheets_key_page_in_dxf_reads_back_correct(tmp_path, capsys):
+    from graphmethods.cli import main
+    from graphmethods.sheets import cad
+
+    assert main(["worksheet", "acceleration-plan", "--variants", "2", "--seed", "5", "--out", str(tmp_path / "c"),
+                 "--dxf", "--quiet"]) == 0
+    for n in (1, 2):
+        rep = cad.check_drawing(f"acceleration-plan:5:{n}", tmp_path / "c" / "dxf" / f"acceleration-plan-0{n}-key.dxf")
+        keys = {i.key for i in rep.items}
+        assert rep.ok and {"acceleration_plan.a_A_mm", "acceleration_plan.a_B_mm", "acceleration_plan.a_B_deg"} <= keys
+
+
+def test_a_drawing_without_a_pole_or_a_scale_says_what_to_write(tmp_path):
+    from graphmethods.sheets import cad
+
+    doc = ezdxf.readfile(DRAWINGS / "press_acc_correct.dxf")
+    for t in doc.modelspace().query("TEXT"):
+        if t.dxf.text.startswith("μa"):
+            doc.modelspace().delete_entity(t)
+    doc.saveas(tmp_path / "no_scale.dxf")
+    with pytest.raises(InputError, match="μa"):
+        cad.check_drawing("press", tmp_path / "no_scale.dxf")
+    rep = cad.check_drawing("press", tmp_path / "no_scale.dxf", mu_a=1.0)
+    assert rep.ok

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import pathlib
 
+import numpy as np
+
 from graphmethods.kinematics import read_case
 from graphmethods.sheets import check_acceleration as ca
 from graphmethods.sheets.acceleration import _Problem
@@ -71,7 +73,66 @@ TYPED = {
 }
 
 
+LETTER = {"n_BA": "n2", "n_A3O3": "n3", "k_A3A2": "k", "n_A": "n1"}
+DRAWN = {
+    # file: (problem, mistake kw, μ_a of the student's drawing)
+    "press_acc_correct.dxf": ("press", {}, 1.0),
+    "press_acc_mistakes.dxf": ("press", {"reversed_link": "2"}, 1.0),
+    "slotted_lever_acc_correct.dxf": ("slotted-lever", {}, 0.04),
+    "slotted_lever_acc_mistakes.dxf": ("slotted-lever", {"coriolis_factor": -2j}, 0.04),
+}
+
+
+def drawing(name: str, kw: dict, mu_a: float):
+    """The plan (with the mistake made) as a student draws it in CAD at ``mu_a``."""
+    import make_student_drawings as sd
+
+    pr = problem(name)
+    plan = pr.plan(**kw)
+    comps = ca.vectors(plan)
+    labels = sorted({lb for c in comps for lb in (c.start, c.end)} - {"π"})
+    z = {lb: plan.images[lb] / mu_a for lb in ["π", *labels]}
+    xs, ys = [v.real for v in z.values()], [v.imag for v in z.values()]
+    pole = np.array([160.0 - (min(xs) + max(xs)) / 2, 110.0 - (min(ys) + max(ys)) / 2])
+    pts = {"π": pole}
+    for j, lb in enumerate(labels):
+        pts[lb] = pole + np.array([z[lb].real, z[lb].imag]) + np.array(sd.JITTER[j % len(sd.JITTER)])
+    doc = sd.new_doc()
+    msp = doc.modelspace()
+    sd.frame(msp)
+    for st in plan.steps:                         # the construction lines, each past the point found
+        for ln in st.lines:
+            P0 = pts[ln.through]
+            d = np.array([ln.direction.real, ln.direction.imag])
+            t = float((pts[st.label] - P0) @ d)
+            msp.add_line(tuple(P0 + d * (min(0.0, t) - 10.0)), tuple(P0 + d * (max(0.0, t) + 10.0)),
+                         dxfattribs={"layer": "Construction"})
+    for j, c in enumerate(comps):
+        sd.arrow(msp, pts[c.start], pts[c.end], kind="solid" if j % 2 == 0 else "width")
+    msp.add_circle(tuple(pole), 0.6, dxfattribs={"layer": "Plan"})
+    for j, lb in enumerate(["π", *labels]):       # each letter beside its point, away from the nearest other one
+        P = pts[lb]
+        q = min((Q for k, Q in pts.items() if k != lb and float(np.hypot(*(Q - P))) > 0.5),
+                key=lambda Q: float(np.hypot(*(Q - P))))
+        away = (P - q) / float(np.hypot(*(P - q)))
+        at = P + away * (2.6 + 0.3 * (j % 3)) + np.array([-1.0, -1.7])      # the text's corner, its middle there
+        msp.add_text(LETTER.get(lb, lb), height=3.5, dxfattribs={"layer": "Text"}).set_placement(tuple(at))
+    sd.note(msp, f"Acceleration plan, position {plan.position}", 25, 195)
+    sd.note(msp, f"μa = {mu_a:g} (m/s²)/mm".replace(".", ","), 25, 189)
+    crank = pr.linkage.crank.link
+    for i, link in enumerate(ca.turning_links(plan, crank)):
+        tau = next(c for c in comps if c.kind == "tangential" and c.link == link)
+        L = float(np.hypot(*(pts[tau.end] - pts[tau.start])))
+        sd.note(msp, f"ε{link} = aτ/l = {L * mu_a / plan.lengths[link]:.3f} rad/s²", 25, 20 - 6 * i)
+    return doc
+
+
 def main() -> None:
+    import sys
+
+    sys.path.insert(0, str(pathlib.Path(__file__).parent))
+    for fname, (name, kw, mu_a) in DRAWN.items():
+        drawing(name, kw, mu_a).saveas(DATA / "drawings" / fname)
     out = DATA / "answers"
     for stem, (name, kw, comment) in TYPED.items():
         pr = problem(name)
