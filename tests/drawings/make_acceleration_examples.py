@@ -5,7 +5,8 @@ planted mistakes are found):
 
 * graphmethods/problems/data/answers/*_acc_*.toml: typed answers (lengths measured to 0.1 mm, as a student
   reads a ruler; ε to 3 significant figures), a correct one per linkage and one per usual mistake;
-* graphmethods/problems/data/drawings/*_acc_*.dxf: acceleration plans drawn as a student draws them in CAD
+* graphmethods/problems/data/drawings/*_acc_*.dxf (and the slotted lever's mistakes as Inkscape SVG too):
+  acceleration plans drawn as a student draws them in CAD
   (LINEs with SOLID or polyline-width heads, TEXT letters beside the points at varying offsets, hand errors of
   up to 0.2 mm), correct and with the Coriolis sense reversed (slotted lever) and a normal component drawn
   away from its centre (press).
@@ -83,6 +84,70 @@ DRAWN = {
 }
 
 
+def layout(name: str, kw: dict, mu_a: float):
+    """(plan, its vectors, the points drawn (mm, y up, hand errors added), each letter's corner, the notes)."""
+    import make_student_drawings as sd
+
+    pr = problem(name)
+    plan = pr.plan(**kw)
+    comps = ca.vectors(plan)
+    labels = sorted({lb for c in comps for lb in (c.start, c.end)} - {"π"})
+    z = {lb: plan.images[lb] / mu_a for lb in ["π", *labels]}
+    xs, ys = [v.real for v in z.values()], [v.imag for v in z.values()]
+    pole = np.array([160.0 - (min(xs) + max(xs)) / 2, 110.0 - (min(ys) + max(ys)) / 2])
+    pts = {"π": pole}
+    for j, lb in enumerate(labels):
+        pts[lb] = pole + np.array([z[lb].real, z[lb].imag]) + np.array(sd.JITTER[j % len(sd.JITTER)])
+    letters = {}
+    for j, lb in enumerate(["π", *labels]):
+        P = pts[lb]
+        q = min((Q for k, Q in pts.items() if k != lb and float(np.hypot(*(Q - P))) > 0.5),
+                key=lambda Q: float(np.hypot(*(Q - P))))
+        away = (P - q) / float(np.hypot(*(P - q)))
+        letters[LETTER.get(lb, lb)] = P + away * (2.6 + 0.3 * (j % 3)) + np.array([-1.0, -1.7])
+    notes = [f"Acceleration plan, position {plan.position}", f"μa = {mu_a:g} (m/s²)/mm".replace(".", ",")]
+    for link in ca.turning_links(plan, pr.linkage.crank.link):
+        tau = next(c for c in comps if c.kind == "tangential" and c.link == link)
+        L = float(np.hypot(*(pts[tau.end] - pts[tau.start])))
+        notes.append(f"ε{link} = aτ/l = {L * mu_a / plan.lengths[link]:.3f} rad/s²")
+    return plan, comps, pts, letters, notes
+
+
+def svg_drawing(name: str, kw: dict, mu_a: float) -> str:
+    """The same plan as Inkscape writes it: y down, a translated group, relative paths, marker-end heads."""
+    plan, comps, pts, letters, notes = layout(name, kw, mu_a)
+    H = 210.0
+
+    def P(q):
+        return q[0] - 5.0, H - q[1] + 2.0
+
+    out = ['<?xml version="1.0" encoding="UTF-8" standalone="no"?>',
+           '<svg xmlns="http://www.w3.org/2000/svg" width="297mm" height="210mm" viewBox="0 0 297 210" version="1.1">',
+           '<defs><marker id="Arrow2" orient="auto" style="overflow:visible"><path d="M 0,0 L -3,1 L -3,-1 z" '
+           'style="fill:#000000"/></marker></defs>',
+           '<g id="layer1" transform="translate(5,-2)">',
+           '<path style="fill:none;stroke:#000000;stroke-width:0.25" d="m 15,7 h 272 v 196 h -272 z"/>']
+    for st in plan.steps:
+        for ln in st.lines:
+            d = np.array([ln.direction.real, ln.direction.imag])
+            t = float((pts[st.label] - pts[ln.through]) @ d)
+            a, b = pts[ln.through] + d * (min(0.0, t) - 10.0), pts[ln.through] + d * (max(0.0, t) + 10.0)
+            (ax, ay), (bx, by) = P(a), P(b)
+            out.append(f'<path style="fill:none;stroke:#808080;stroke-width:0.18" d="M {ax:.3f},{ay:.3f} L {bx:.3f},{by:.3f}"/>')
+    for c in comps:
+        (sx, sy), (tx, ty) = P(pts[c.start]), P(pts[c.end])
+        out.append(f'<path style="fill:none;stroke:#000000;stroke-width:0.35;marker-end:url(#Arrow2)" '
+                   f'd="m {sx:.3f},{sy:.3f} {tx - sx:.3f},{ty - sy:.3f}"/>')
+    for text, at in letters.items():
+        x, y = P(at)
+        out.append(f'<text xml:space="preserve" style="font-size:4.9px;font-family:Arial" x="{x:.3f}" y="{y:.3f}">'
+                   f'<tspan x="{x:.3f}" y="{y:.3f}">{text}</tspan></text>')
+    for i, text in enumerate(notes):
+        out.append(f'<text style="font-size:4.2px" x="20" y="{15 + 6 * i if i < 2 else 190:.3f}">{text}</text>')
+    out += ["</g>", "</svg>"]
+    return "\n".join(out) + "\n"
+
+
 def drawing(name: str, kw: dict, mu_a: float):
     """The plan (with the mistake made) as a student draws it in CAD at ``mu_a``."""
     import make_student_drawings as sd
@@ -130,9 +195,14 @@ def drawing(name: str, kw: dict, mu_a: float):
 def main() -> None:
     import sys
 
+    import ezdxf
+
     sys.path.insert(0, str(pathlib.Path(__file__).parent))
+    ezdxf.options.write_fixed_meta_data_for_testing = True      # no dates: the same files every run
     for fname, (name, kw, mu_a) in DRAWN.items():
         drawing(name, kw, mu_a).saveas(DATA / "drawings" / fname)
+    (DATA / "drawings" / "slotted_lever_acc_mistakes.svg").write_text(
+        svg_drawing("slotted-lever", {"coriolis_factor": -2j}, 0.04), encoding="utf-8")
     out = DATA / "answers"
     for stem, (name, kw, comment) in TYPED.items():
         pr = problem(name)
