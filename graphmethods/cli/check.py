@@ -5,7 +5,7 @@
     graphmethods check indicator:7:3 answers.toml --overlay film.pdf
     graphmethods check press plan.dxf --overlay checked.dxf     # a drawing made in CAD (.dxf or .svg)
 
-PROBLEM is a built-in id (W1, W2, W3, W4, press), a worksheet variant id (KIND:SEED:N) or a problem
+PROBLEM is a built-in id (W1, W2, W3, W4, press, slotted-lever), a worksheet variant id (KIND:SEED:N) or a problem
 file (a worksheet's problems/*.json, or a slider-crank case file). The report lists each item with
 its expected value at the student's scales, the deviation, the tolerance and the verdict, then the
 usual mistakes recognised. Exit status 0 when everything is right, 1 when something is wrong.
@@ -24,9 +24,11 @@ def add_parser(sub) -> None:
                        "diagnosis of the usual mistakes, and an overlay to print 1:1 on film.",
                        epilog="A blank answers file for each worksheet kind is written by graphmethods worksheet "
                        "(KIND-answers.toml); the keys are described in the README.")
-    p.add_argument("problem", metavar="PROBLEM", help="W1, W2, W3, W4, press, KIND:SEED:N, or a problem file")
+    p.add_argument("problem", metavar="PROBLEM",
+                   help="W1, W2, W3, W4, press, slotted-lever, KIND:SEED:N, or a problem file")
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
-                   "(.dxf, .svg: a velocity plan or an energy indicator, read and measured)")
+                   "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, read and "
+                   "measured)")
     p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
     p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
@@ -36,6 +38,7 @@ def add_parser(sub) -> None:
     drawing.add_argument("--position", type=int, default=None, help="the position a velocity plan is drawn for")
     drawing.add_argument("--mu-v", type=float, default=None, help="μ_v of the velocity plan, (m/s)/mm")
     drawing.add_argument("--mu-E", type=float, default=None, help="μ_E of the energy indicator, J/mm")
+    drawing.add_argument("--mu-a", type=float, default=None, help="μ_a of the acceleration plan, (m/s²)/mm")
     drawing.add_argument("--point", action="append", default=[], metavar="LABEL=X,Y",
                          help="a point whose letter is missing, in drawing mm (repeat for several)")
     p.set_defaults(func=run)
@@ -55,7 +58,7 @@ def _drawing_report(args):
             raise InputError(f"--point {spec!r}: write LABEL=X,Y (drawing mm), e.g. --point b=120.5,80") from None
         points[label.strip()] = (x, y)
     return cad.check_drawing(args.problem, args.answers, position=args.position, mu_v=args.mu_v, mu_E=args.mu_E,
-                             points=points or None)
+                             mu_a=args.mu_a, points=points or None)
 
 
 def run(args) -> int:

@@ -308,6 +308,11 @@ class _Builder:
         w = self.w[link]
         return w * w * (self.z[centre] - self.z[point])
 
+    def coriolis(self, link: str, omega: float, v_rel: complex) -> complex:
+        """a^k = 2·ω × v_rel of a point sliding on ``link`` turning at ``omega``: v_rel turned 90° in
+        the sense of ω (a subclass can draw a student's mistake here)."""
+        return 2j * omega * v_rel
+
     # -------------------------------------------------------------- the construction
     def crank(self) -> None:
         cr = self.lk.crank
@@ -386,7 +391,7 @@ class _Builder:
         base = self.on(guide.link, self.z[point])
         g = self.aux(f"{point.lower()}_{guide.link}", base)
         comps.append(Component(f"a_{point}{guide.link}", "absolute", "π", g, base, True))
-        ak = 2j * wg * v_rel
+        ak = self.coriolis(guide.link, wg, v_rel)
         k = self.aux(f"k_{name}", base + ak)
         comps.append(Component(f"a^k_{name}", "coriolis", g, k, ak, True, guide.link, abs(v_rel)))
         return k, comps, Line("∥ guide", k, self.images[k], u), g
@@ -438,7 +443,7 @@ class _Builder:
         block = P if P[-1:].isdigit() else P + g.links[0]
         w3 = self.w[g.links[1]]
         v_rel = self.v[A3] - self.v[P]                      # v_A3A2
-        ak = 2j * w3 * v_rel                                # v_rel turned 90° in the sense of ω₃
+        ak = self.coriolis(g.links[1], w3, v_rel)                               # v_rel turned 90° in the sense of ω₃
         pl = self.labels[P]
         k = self.aux(f"k_{A3}{block}", self.image(P) + ak)
         u = complex(np.broadcast_to(self.st.e[g.links[1]], self.st.phi.shape)[self.i])
@@ -484,7 +489,7 @@ class _Builder:
         u2 = complex(np.broadcast_to(self.st.e[yoke], self.st.phi.shape)[self.i])
         u1 = complex(np.broadcast_to(self.st.e[g.links[0]], self.st.phi.shape)[self.i])
         v_rel = self.v[A3] - self.v[P]
-        ak = 2j * w * v_rel
+        ak = self.coriolis(yoke, w, v_rel)
         pl = self.labels[P]
         k = self.aux(f"k_{A3}{block}", self.image(P) + ak)
         l1 = Line("∥ slot", k, self.images[k], u1)

@@ -62,6 +62,27 @@ KEYS: dict[str, tuple[tuple[str, tuple[tuple[str, str], ...]], ...]] = {
             ("omega_2", "rad/s: the connecting rod's angular speed, magnitude"),
             ("omega_2_sense", "\"cw\" or \"ccw\""))),
     ),
+    "acceleration-plan": (
+        ("acceleration_plan", (
+            ("mu_a", "(m/s²) per mm: the acceleration scale of your plan (μ_a)"),
+            ("an_A_mm", "mm: a^n_A (only when ε₁ ≠ 0; else a_A is the whole vector πa)"),
+            ("at_A_mm", "mm: a^τ_A = ε₁·OA (only when ε₁ ≠ 0)"),
+            ("a_A_mm", "mm: πa"),
+            ("an_BA_mm", "mm: a^n_BA (slider-crank)"),
+            ("at_BA_mm", "mm: a^τ_BA (slider-crank)"),
+            ("a_B_mm", "mm: πb"),
+            ("a_S2_mm", "mm: πs₂ (slider-crank)"),
+            ("ak_A3A2_mm", "mm: the Coriolis component a^k_A3A2 (slotted lever)"),
+            ("an_A3O3_mm", "mm: a^n_A3O3 (slotted lever)"),
+            ("ar_A3A2_mm", "mm: the relative component a^r_A3A2, along the slot (slotted lever)"),
+            ("at_A3O3_mm", "mm: a^τ_A3O3 (slotted lever)"),
+            ("a_A3_mm", "mm: πa₃ (slotted lever)"),
+            ("a_S3_mm", "mm: πs₃ (slotted lever)"),
+            ("epsilon_2", "rad/s²: ε of the connecting rod, magnitude (slider-crank)"),
+            ("epsilon_2_sense", "\"cw\" or \"ccw\" (slider-crank)"),
+            ("epsilon_3", "rad/s²: ε of the slotted lever, magnitude (slotted lever)"),
+            ("epsilon_3_sense", "\"cw\" or \"ccw\" (slotted lever)"))),
+    ),
     "wittenbauer": (
         ("energy_mass", (
             ("mu_J", "kg·m² per mm: the inertia scale (μ_J)"),
@@ -87,7 +108,7 @@ def template(kind: str, *, page: tuple[str, str] = ("A4", "portrait"), problem: 
     Parameters
     ----------
     kind : str
-        ``"indicator"``, ``"step-moment"``, ``"velocity-plan"`` or ``"wittenbauer"``.
+        ``"indicator"``, ``"step-moment"``, ``"velocity-plan"``, ``"wittenbauer"`` or ``"acceleration-plan"``.
     page : (str, str)
         The sheet the student draws on (size, orientation); the worksheet's own page by default.
     problem : str

@@ -24,7 +24,14 @@ the angle 0.5 mm subtends at its length.
 An **energy–mass (Wittenbauer) diagram** of the press (or of a wittenbauer worksheet): kl between the
 letters ``k`` and ``l`` placed at the crossings of the tangent rays with the ordinate axis, the slope of
 each ray against ψ_max, ψ_min, and μ_J, μ_T, tg ψ, J_F from the texts; the axes (the longest upright and
-level arrows) place the overlay. Acceleration plans are not read yet.
+level arrows) place the overlay.
+
+An **acceleration plan** (an acceleration-plan worksheet, the slotted lever, or the press when the pole is
+lettered ``π``): the pole π and the lettered images (``a``, ``b``, ``s2``, ``a3`` …, the ends of the normal
+components ``n2``/``n3`` or ``nBA``, of the Coriolis one ``k``), each vector of the plan measured (length and
+direction) between its two letters, μ_a (``μa = 0,04 (m/s²)/mm``) and ε (``ε3 = 3.73 rad/s²``) from the
+texts; checked by :mod:`graphmethods.sheets.check_acceleration` (a Coriolis component drawn the wrong way
+or a normal one away from its centre shows in the direction of that vector).
 
 When the labels are missing, :func:`check_drawing` says which points it found and asks for a mapping
 (``points={"a": (x, y), ...}``, drawing mm).
@@ -704,6 +711,78 @@ def em_answers(d: CadDrawing, data: LinkageData, *, points: dict | None = None) 
     return answers, named
 
 
+_EPS_TEXT = re.compile(r"^(?:ε|eps|epsilon)_?\{?(\d+)\}?\s*=(?:[^=]*=)*\s*" + _NUMBER)
+_PI = ("π", "pi", "Π")
+
+
+def _aliases(plan) -> dict[str, str]:
+    """How a student may letter each image of the plan -> the image's label: ``a3``, ``s3``; an end of a
+    normal component ``n_BA`` as ``nBA`` or ``n`` + its link (``n2``); of a Coriolis one as ``k`` too."""
+    from graphmethods.sheets import check_acceleration as ca
+
+    out: dict[str, str] = dict.fromkeys(_PI, "π")
+    comps = ca.vectors(plan)
+    for c in comps:
+        for lb in (c.start, c.end):
+            if lb == "π":
+                continue
+            out.setdefault(_label_text(lb), lb)
+    n_k = sum(1 for c in comps if c.kind == "coriolis")
+    for c in comps:
+        if c.kind == "normal" and c.end.startswith("n_"):
+            out.setdefault(f"n{c.link}", c.end)
+        if c.kind == "coriolis" and n_k == 1:
+            out.setdefault("k", c.end)
+    return out
+
+
+def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None, mu_a: float | None = None,
+                points: dict | None = None) -> tuple[dict, dict]:
+    """(answers, measured points) of an acceleration plan drawing: the ``[acceleration_plan]`` section with
+    every vector's length (mm) and direction (degrees from +x, counterclockwise) between its letters."""
+    from graphmethods.sheets import check_acceleration as ca
+    from graphmethods.sheets.check import _Checker
+
+    nts = notes(d)
+    arrs = arrows(d)
+    if len(arrs) < 2 and not points:
+        raise InputError(f"{d.source}: found {len(arrs)} arrow(s); an acceleration plan needs its vectors drawn as "
+                         f"lines with arrowheads (filled triangles, SOLIDs or polyline width)")
+    mu = mu_a if mu_a is not None else nts.values.get("mu_E")           # μa is read as the key of μ_E
+    if mu is None:
+        raise InputError(f"{d.source}: no scale: write μa = … (m/s²)/mm on the drawing, or give --mu-a")
+    sec: dict = {"mu_a": float(mu)}
+    if data.accel_variant is None:
+        k = position if position is not None else nts.position
+        if k is None:
+            raise InputError(f"{d.source}: which position is drawn? write 'position K' on the drawing, or give "
+                             f"--position")
+        sec["position"], sec["positions"] = int(k), 12
+    plan = ca.problem_of(_Checker({"acceleration_plan": sec}), data).plan()
+    alias = _aliases(plan)
+    labels = [replace(t, text=alias[t.text]) for t in nts.labels if t.text in alias]
+    given = {alias.get(_label_text(k), k): v for k, v in (points or {}).items()}
+    wanted = tuple(dict.fromkeys(lb for c in ca.vectors(plan) for lb in (c.start, c.end)
+                                 if lb == "π" or any(t.text == lb for t in labels) or lb in given))
+    named = name_points(arrs, labels, wanted, points=given or None)
+    if "π" not in named:
+        raise InputError(f"{d.source}: no pole π found; write π beside the pole")
+    page, shift = _page_for(d)
+    sec["origin_mm"] = _page_xy(named["π"], page, shift)
+    for c in ca.vectors(plan):
+        if c.start in named and c.end in named:
+            v = named[c.end] - named[c.start]
+            key = ca.key_of(c.symbol)
+            sec[f"{key}_mm"] = round(float(np.hypot(*v)), 3)
+            sec[f"{key}_deg"] = round(math.degrees(math.atan2(v[1], v[0])), 3)
+    for t in d.texts:
+        m = _EPS_TEXT.match(unicodedata.normalize("NFKC", t.text).strip())
+        if m:
+            sec.setdefault(f"epsilon_{m.group(1)}", _number(m.group(2)))
+    answers = {"page": {"size": page.size, "orientation": page.orientation}, "acceleration_plan": sec}
+    return answers, named
+
+
 def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item]:
     """The direction of each vector of the plan against the expected one (±0.5° + atan(0.5 mm / length))."""
     ck = checking._Checker(checking.validate_answers(answers))
@@ -728,7 +807,8 @@ def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item
 
 
 def check_drawing(problem, source, *, student: str | None = None, position: int | None = None,
-                  mu_v: float | None = None, mu_E: float | None = None, points: dict | None = None) -> DrawingReport:
+                  mu_v: float | None = None, mu_E: float | None = None, points: dict | None = None,
+                  mu_a: float | None = None) -> DrawingReport:
     """Check a velocity plan, energy indicator or energy–mass diagram drawn in CAD (DXF or SVG) against ``problem``.
 
     Parameters
@@ -741,7 +821,7 @@ def check_drawing(problem, source, *, student: str | None = None, position: int 
         The drawing (``.dxf`` or ``.svg``), in mm at 1:1.
     student : str, optional
         The student's name (default: the file's name).
-    position, mu_v, mu_E : optional
+    position, mu_v, mu_E, mu_a : optional
         The position drawn and the scales, when not written on the drawing.
     points : dict, optional
         Label -> (x, y) drawing mm, for points whose labels are missing.
@@ -757,10 +837,16 @@ def check_drawing(problem, source, *, student: str | None = None, position: int 
         extra: list[Item] = []
     else:
         kind = "em" if data.em_variant is not None else ("plan" if data.plan_variant is not None else None)
+        if data.accel_variant is not None or (data.case is not None and data.case.kind != "slider_crank"):
+            kind = "acc"
         if kind is None:                 # the press: a plan if there are p, a, b, an energy–mass diagram if k, l
             letters = {t.text for t in notes(d).labels}
-            kind = "em" if {"k", "l"} <= letters and not {"p", "a", "b"} <= letters else "plan"
-        if kind == "em":
+            kind = ("acc" if letters & set(_PI) else
+                    "em" if {"k", "l"} <= letters and not {"p", "a", "b"} <= letters else "plan")
+        if kind == "acc":
+            answers, named = acc_answers(d, data, position=position, mu_a=mu_a, points=points)
+            extra = []
+        elif kind == "em":
             answers, named = em_answers(d, data, points=points)
             extra = _ray_items(d, named, answers, data)
         else:
@@ -771,8 +857,8 @@ def check_drawing(problem, source, *, student: str | None = None, position: int 
     rep = checking.check(data, answers)
     page, shift = _page_for(d)
     note = f"read from {pathlib.Path(source).name}: " + ", ".join(
-        f"{k} = {v}" for sec in ("velocity_plan", "energy_indicator", "energy_mass") for k, v in answers.get(sec, {}).items()
-        if k != "origin_mm")
+        f"{k} = {v}" for sec in ("velocity_plan", "energy_indicator", "energy_mass", "acceleration_plan")
+        for k, v in answers.get(sec, {}).items() if k != "origin_mm")
     return DrawingReport(rep.problem, rep.title, rep.student, rep.items + tuple(extra), rep.page,
                          rep.notes + (note,), data=rep.data, answers=rep.answers, drawing=d, shift=shift)
 

@@ -62,7 +62,7 @@ from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, Scene, Text, in_language, notation as get_notation
 from graphmethods.scene.elements import Element, Line
 from graphmethods.scene.primitives import Circle, Path, Style
-from graphmethods.sheets import worksheets as ws
+from graphmethods.sheets import check_acceleration as ca, worksheets as ws
 from graphmethods.titles import Title
 from graphmethods.units import MAX_POSITIONS, count, json_text, omega_from_n, read_text, real
 
@@ -72,7 +72,7 @@ if TYPE_CHECKING:
 
 TOL_MM = 0.5
 TOL_REL = 1e-3
-PROBLEM_IDS = ("W1", "W2", "W3", "W4", "W4-drawing", "W4-exact", "press")
+PROBLEM_IDS = ("W1", "W2", "W3", "W4", "W4-drawing", "W4-exact", "press", "slotted-lever")
 
 #: the usual mistakes: code -> what the student did
 MISTAKES = {
@@ -83,6 +83,7 @@ MISTAKES = {
     "scale_twice": "the scale factor applied twice",
     "J_e_not_subtracted": "J_e not subtracted",
     "delta_not_halved": "ω_max, ω_min = ω_m(1 ± δ) used instead of ω_m(1 ± δ/2) (in tan ψ: (1 ± δ)² for (1 ± δ/2)²)",
+    **ca.MISTAKES,                        # those of an acceleration plan
 }
 
 # ----------------------------------------------------------------------------- words (en, ru, zh)
@@ -114,6 +115,7 @@ WORDS = {
     "angle_of":       ("angle of {omega}", "угол φ при {omega}", "{omega} 所在转角 φ"),
     "position_of":    ("position of {omega}", "положение {omega}", "{omega} 所在位置"),
     "sense_of":       ("sense of {omega}", "направление {omega}", "{omega} 的转向"),
+    "direction_of":   ("direction of {v}", "направление вектора {v}", "{v} 的方向"),
     # the usual mistakes (the keys of MISTAKES), short
     "sign_flipped":   ("sign flipped in the staircase", "перепутан знак избыточной работы",
                        "盈亏功正负号颠倒"),
@@ -125,6 +127,7 @@ WORDS = {
     "J_e_not_subtracted": ("{J_e} not subtracted", "не вычтен {J_e}", "未减去 {J_e}"),
     # ω_max = ω_m(1 + δ) for ω_m(1 + δ/2), and squared in tan ψ (and in J_F through ω_max² − ω_min²)
     "delta_not_halved": ("(1 ± δ) instead of (1 ± δ/2)", "(1 ± δ) вместо (1 ± δ/2)", "用 (1 ± δ) 代替了 (1 ± δ/2)"),
+    **ca.WORDS,
 }
 
 
@@ -141,6 +144,7 @@ SCHEMA = {
     "velocity_plan": ("position", "positions", "mu_v", "pa_mm", "pb_mm", "ab_mm", "ps2_mm", "origin_mm"),
     "energy_mass": ("positions", "mu_J", "mu_T", "tan_psi_max", "tan_psi_min", "kl_mm", "omega_max_at",
                     "omega_min_at", "origin_mm"),
+    "acceleration_plan": ca.SECTION_KEYS,           # its vectors' keys depend on the linkage
     "results": ("M_d", "works_J", "delta_W_max", "omega_m", "omega_max", "omega_min", "omega_max_at",
                 "omega_min_at", "J_F", "v_A", "v_B", "v_BA", "v_S2", "omega_2", "omega_2_sense"),
 }
@@ -213,8 +217,8 @@ def validate_answers(data: dict, *, source: str = "<answers>") -> dict:
                 raise InputError(f"{source}: [{key}] has no key {k!r}; its keys are {', '.join(SCHEMA[key])}")
             if v == "" or v == []:      # left blank in a template (graphmethods.sheets.answers): not answered
                 continue
-            sec[k] = _typed_answer(KEY_KINDS.get(k, "number"), _answer_value(v, f"{source}: [{key}] {k}"),
-                                   f"{source}: [{key}] {k}")
+            kind = KEY_KINDS.get(k, "text" if k.endswith("_sense") else "number")
+            sec[k] = _typed_answer(kind, _answer_value(v, f"{source}: [{key}] {k}"), f"{source}: [{key}] {k}")
         if sec or not value:            # a section whose every key is blank is not answered either
             out[key] = sec
     return out
@@ -302,6 +306,7 @@ class LinkageData:
     case: Case | None = None                  # velocity plan at positions, Study
     plan_variant: ws.PlanVariant | None = None
     em_variant: ws.EnergyMassVariant | None = None
+    accel_variant: object | None = None   # acceleration_worksheet.AccelerationPlanVariant
 
 
 def load_problem(spec) -> CycleData | LinkageData:
@@ -327,6 +332,11 @@ def load_problem(spec) -> CycleData | LinkageData:
         path = pathlib.Path(problems.__file__).parent / "data" / "slider_crank_press.json"
         case = read_case(path)
         return LinkageData("press", title_of(case), case=case)
+    if low == "slotted-lever":            # acceleration plans only (the velocity plan check knows slider-cranks)
+        from graphmethods.kinematics import read_case
+
+        case = read_case(pathlib.Path(problems.__file__).parent / "data" / "slotted_lever.json")
+        return LinkageData("slotted-lever", title_of(case), case=case)
     v = ws.parse_id(text)
     if v is None:
         fp = pathlib.Path(text)
@@ -357,6 +367,8 @@ def _from_variant(v) -> CycleData | LinkageData:
         return CycleData(v.id, title, v.excess_work, v.n_rpm, v.delta_value, v.J_e, M_d=v.M_d)
     if v.kind == "velocity-plan":
         return LinkageData(v.id, title, plan_variant=v)
+    if v.kind == "acceleration-plan":
+        return LinkageData(v.id, title, accel_variant=v)
     return LinkageData(v.id, title, em_variant=v)
 
 
@@ -1070,7 +1082,7 @@ def check(problem, answers) -> CheckReport:
         answers = validate_answers(answers)
     ck = _Checker(answers)
     if isinstance(data, CycleData):
-        for sec in ("velocity_plan", "energy_mass"):
+        for sec in ("velocity_plan", "energy_mass", "acceleration_plan"):
             if sec in answers:
                 raise InputError(f"[{sec}] does not belong to {data.id}, a cycle problem (areas, works, moments)")
         for key in ("v_A", "v_B", "v_BA", "v_S2", "omega_2", "omega_2_sense"):
@@ -1082,6 +1094,12 @@ def check(problem, answers) -> CheckReport:
             if sec in answers:
                 raise InputError(f"[{sec}] is not checked for {data.id}, a linkage problem; use [velocity_plan] and "
                                  f"[energy_mass]")
+        if data.accel_variant is not None or (data.case is not None and data.case.kind != "slider_crank"):
+            for sec in ("velocity_plan", "energy_mass"):
+                if sec in answers:
+                    raise InputError(f"[{sec}] is not checked for {data.id}; its plan is checked in [acceleration_plan]")
+        if "acceleration_plan" in answers:
+            ca.check_acceleration(ck, data)
         if "velocity_plan" in answers:
             if data.em_variant is not None:
                 raise InputError(f"[velocity_plan]: {data.id} gives a table of J_e and ΔT, no linkage to draw")
@@ -1144,6 +1162,8 @@ def _overlay_label(it: Item, report: CheckReport, nt) -> str:
         return _w(nt, "angle_of" if it.unit == "°" else "point_of", omega=omega)
     if name == "omega_2_sense":
         return _w(nt, "sense_of", omega="ω_{2}")
+    if section == "acceleration_plan":
+        return ca.item_label(it.key, lambda key, **kw: _w(nt, key, **kw))
     if name in ("tan_psi_max", "tan_psi_min"):
         return f"{ws.sym('tan', nt)} ψ_{{{name[-3:]}}}"
     if name in ("delta_W_max", "M_d", "omega_m", "J_F"):
@@ -1282,6 +1302,19 @@ def _overlay(report: CheckReport, notation) -> Scene:
                      if it.verdict != "ok" and it.key.startswith("velocity_plan.") and it.key.endswith("_mm")}
             els += ws.velocity_plan(o, vec, mu_v=mu_v, link_dir=u, nt=nt, wrong=wrong, name="plan")
             els.append(cross(o, "plan-pole"))
+        if "acceleration_plan" in a:
+            pr = ca.problem_of(_Checker(a), data)
+            plan = pr.plan()
+            mu_a = float(a["acceleration_plan"]["mu_a"])
+            xs = [z.real / mu_a for z in plan.images.values()]
+            ys = [-z.imag / mu_a for z in plan.images.values()]
+            o = origin_for("acceleration_plan", (max(xs) - min(xs) + 40.0, max(ys) - min(ys) + 30.0),
+                           (20.0 - min(xs), 15.0 - min(ys)))
+            mine = [it for it in report.items if it.key.startswith("acceleration_plan.") and it.key.endswith("_mm")]
+            wrong = {it.key.split(".")[1][:-3]: it.student for it in mine if it.verdict == "wrong"}
+            carried = [it.key.split(".")[1][:-3] for it in mine if it.verdict == "carried"]
+            els += ca.plan_elements(o, plan, mu_a=mu_a, wrong=wrong, carried=carried, nt=nt, name="acc")
+            els.append(cross(o, "acc-pole"))
         if "energy_mass" in a:
             from graphmethods.dynamics.wittenbauer import wittenbauer
 

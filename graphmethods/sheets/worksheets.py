@@ -1,6 +1,6 @@
 """Printable worksheets with answer keys: variants from a seed, a student page and a key page each.
 
-Four kinds of worksheet (:data:`KINDS`):
+Five kinds of worksheet (:data:`KINDS`):
 
 ``indicator``      W1 style: measured areas between M_d and M_r (mm², with μ_M, μ_φ) → excess works,
                    energy levels, the energy indicator diagram at a stated μ_E, ΔW_max, ω_m, ω_max,
@@ -13,6 +13,9 @@ Four kinds of worksheet (:data:`KINDS`):
 ``wittenbauer``    a slider-crank press given by its table of J_e and ΔT at positions 0…12 → the
                    energy–mass diagram at stated μ_J, μ_T, tan ψ_max, tan ψ_min, the rays, kl, J_F and
                    the positions of ω_max and ω_min.
+``acceleration-plan`` a slider-crank or a slotted lever in one position, its velocities given → the
+                   acceleration plan at a stated μ_a, every vector in mm, ε of each link
+                   (:mod:`graphmethods.sheets.acceleration_worksheet`).
 
 Each variant is drawn from its own numpy Generator seeded by (seed, kind, variant number), so a
 variant does not depend on how many were asked for; its numbers are "nice" (areas that close
@@ -70,8 +73,8 @@ from graphmethods.sheets import answers
 from graphmethods.titles import Title
 from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
-KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
-_KIND_CODE = {"indicator": 1, "step-moment": 2, "velocity-plan": 3, "wittenbauer": 4}
+KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer", "acceleration-plan")
+_KIND_CODE = {"indicator": 1, "step-moment": 2, "velocity-plan": 3, "wittenbauer": 4, "acceleration-plan": 5}
 PROBLEM_FORMAT = "graphmethods-worksheet-problem"
 
 # ----------------------------------------------------------------------------- words (en, ru, zh)
@@ -1971,3 +1974,7 @@ def write_worksheet(ws: Worksheet, out_dir, *, overwrite: bool = False, progress
              if re.fullmatch(rf"{ws.kind}-\d+(-student|-key)?\.(svg|json|dxf)", p.name)]
     write_set(out, blobs, overwrite=overwrite, stale=stale if overwrite else (), what="worksheet folder")
     return [out / name for name in files]
+
+
+# the acceleration-plan kind has its own module (it draws linkages of several kinds); it registers itself
+from graphmethods.sheets import acceleration_worksheet  # noqa: E402,F401
