@@ -11,4 +11,5 @@ from graphmethods.sheets.flywheel_hyperbola import flywheel_hyperbola
 def build():
     w1 = problems.w1()
     return flywheel_hyperbola(w1.excess_work.delta_W_max, omega_m=mean_speed(n_rpm=w1.n_rpm), J_e=w1.J_e,
-                              machine="ac-generator", problem=w1.title)
+                              machine="ac-generator",
+                              problem=f"{w1.id}, n = {w1.n_rpm:g} rev/min")
