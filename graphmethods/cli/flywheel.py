@@ -5,6 +5,8 @@ Examples::
     graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --delta 1/300
     graphmethods flywheel --areas 10,-110,20,-25,100,-5,10 --mu-M 100 --mu-phi-deg 1 --n 600 --delta 1/300
     graphmethods flywheel --levels 0 -50 500 400 525 25 50 0 --omega 12.566 --J 60.69 --json
+    graphmethods flywheel --delta-table --lang ru
+    graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --machine ac-generator --hyperbola j.svg
 """
 
 from __future__ import annotations
@@ -63,12 +65,20 @@ def add_parser(sub) -> None:
     p.add_argument("--mu-M", help="moment scale of the drawing, N·m per mm")
     p.add_argument("--mu-phi", help="angle scale of the drawing, rad per mm")
     p.add_argument("--mu-phi-deg", help="angle scale of the drawing, degrees per mm")
-    speed = p.add_mutually_exclusive_group(required=True)
+    speed = p.add_mutually_exclusive_group(required=False)     # required unless --delta-table
     speed.add_argument("--n", help="mean speed of the shaft, rev/min")
     speed.add_argument("--omega", help="mean angular speed of the shaft, rad/s")
-    goal = p.add_mutually_exclusive_group(required=True)
+    goal = p.add_mutually_exclusive_group(required=False)      # required unless --delta-table
     goal.add_argument("--delta", help="permissible coefficient of fluctuation [δ] (fractions like 1/300 accepted): find J_F")
     goal.add_argument("--J", help="total inertia on the shaft, kg·m²: find the δ it gives")
+    goal.add_argument("--machine", metavar="NAME", help="take [δ] from the table of recommended [δ] by machine "
+                      "(--delta-table lists the names): its strict end, the smaller δ, unless --machine-end lenient")
+    p.add_argument("--machine-end", choices=("strict", "lenient"), default="strict",
+                   help="with --machine: the table row's strict end (smaller δ, default) or its lenient end")
+    p.add_argument("--delta-table", action="store_true",
+                   help="print the table of recommended [δ] by machine (with --lang, --json) and stop")
+    p.add_argument("--hyperbola", default=None, metavar="FILE.svg|.pdf",
+                   help="draw the J_F–[δ] hyperbola over the table's range of [δ], the chosen [δ] marked")
     p.add_argument("--J-e", default="0", help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
     p.add_argument("--closure-tol", default=None, help="allowed closure residual |ΣA|/Σ|A| (default 0.05)")
     p.add_argument("--rim", nargs="?", const="", default=None, metavar="D",
@@ -104,13 +114,15 @@ def _sizing(args: argparse.Namespace, J_F: float, n_rpm: float, out: dict):
                            rho=DENSITY[m], H_over_B=parse_number(args.H_over_B, name="--H-over-B"),
                            speed_limit=RIM_SPEED_LIMIT[m])
         out["rim"] = {"material": m, "D": rim.D, "D1": rim.D1, "D2": rim.D2, "H": rim.H, "B": rim.B, "m": rim.m,
-                      "J_rim": rim.J_rim, "mD2": rim.flywheel_moment, "rim_speed": rim.rim_speed,
+                      "J_rim": rim.J_rim, "mD2": rim.flywheel_moment, "QD2_kgf_m2": rim.weight_moment_kgf,
+                      "GD2_N_m2": rim.weight_moment_N, "rim_speed": rim.rim_speed,
                       "speed_limit": rim.speed_limit, "speed_ok": rim.speed_ok}
     if args.disc is not None:
         m = mat or "steel"
         disc = disc_flywheel(J_F, D=parse_number(args.disc, name="--disc"), n_rpm=n_rpm, rho=DENSITY[m],
                              speed_limit=RIM_SPEED_LIMIT[m])
         out["disc"] = {"material": m, "D": disc.D, "B": disc.B, "m": disc.m, "mD2": disc.flywheel_moment,
+                       "QD2_kgf_m2": disc.weight_moment_kgf, "GD2_N_m2": disc.weight_moment_N,
                        "rim_speed": disc.rim_speed, "speed_limit": disc.speed_limit, "speed_ok": disc.speed_ok}
     return rim, disc
 
@@ -150,9 +162,68 @@ def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
     return path, mpl.to_png_bytes(scene)
 
 
+def _delta_table(args: argparse.Namespace) -> int:
+    """``--delta-table``: the table of recommended [δ] by machine, as text in --lang or as JSON."""
+    from graphmethods.dynamics.permissible_delta import SOURCE, TABLE, table_text
+
+    if args.json:
+        print(json_text({"source": SOURCE, "default_end": "strict", "machines": [r.to_dict() for r in TABLE]},
+                        indent=1))
+    else:
+        print(table_text(args.lang))
+    return 0
+
+
+def _hyperbola_bytes(args: argparse.Namespace, delta_W_max: float, omega_m: float, J_e: float, delta: float,
+                     machine: str | None) -> tuple:
+    """The --hyperbola figure's path and bytes (checked before any file is written), or (None, None)."""
+    import pathlib
+
+    from graphmethods.errors import OutputExistsError
+
+    if args.hyperbola is None:
+        return None, None
+    path = pathlib.Path(args.hyperbola)
+    suffix = path.suffix.lower()
+    if suffix not in (".svg", ".pdf"):
+        raise InputError(f"--hyperbola {path}: give a file name ending in .svg or .pdf")
+    if path.exists() and not args.force:
+        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
+    if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
+        raise InputError(f"--hyperbola {path}: its folder does not exist or it is a folder")
+    from graphmethods.sheets.flywheel_hyperbola import flywheel_hyperbola
+
+    scene = flywheel_hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, delta=delta, machine=machine,
+                               notation=args.lang)
+    if suffix == ".svg":
+        from graphmethods.render import svg
+
+        return path, svg.to_bytes(scene)
+    from graphmethods.render import pdf
+
+    return path, pdf.to_bytes([scene])
+
+
 def run(args: argparse.Namespace) -> int:
     from graphmethods.dynamics import excess_work as ew
     from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
+
+    if args.delta_table:
+        return _delta_table(args)
+    if args.n is None and args.omega is None:
+        raise InputError("give the mean speed: --n (rev/min) or --omega (rad/s)")
+    if args.delta is None and args.J is None and args.machine is None:
+        raise InputError("give the goal: --delta [δ], --machine NAME (its [δ] from the table) or --J (the δ it gives)")
+    machine = None
+    if args.machine is not None:
+        from graphmethods.dynamics.permissible_delta import machine_row, permissible_delta
+
+        machine = machine_row(args.machine)
+        args.delta = str(permissible_delta(machine.key, args.machine_end))
+    elif args.machine_end != "strict":
+        raise InputError("--machine-end applies to --machine only")
+    if args.hyperbola is not None and args.delta is None:
+        raise InputError("--hyperbola marks the chosen [δ] on the curve: give --delta or --machine, not --J")
 
     tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
     mc = None
@@ -195,6 +266,9 @@ def run(args: argparse.Namespace) -> int:
         fw = flywheel(cycle.delta_W_max, delta=check_delta(args.delta, "--delta"), omega_m=omega_m, J_e=J_e)
         out.update(delta=fw.delta, J_F=fw.J_F, J_total=fw.J_total, omega_max=fw.omega_max, omega_min=fw.omega_min,
                    flywheel_needed=fw.needed)
+        if machine is not None:
+            out["machine"] = {"key": machine.key, "name": machine.name(args.lang), "end": args.machine_end,
+                              "range": machine.range_text()}
     else:
         J = parse_number(args.J, name="--J")
         if J < J_e:
@@ -210,12 +284,20 @@ def run(args: argparse.Namespace) -> int:
         out.update(flywheel_moments.extras(mc, J_machine))
     rim, disc = _sizing(args, float(out["J_F"]), float(out["n_rpm"]), out)
     fig_path, fig_data = _figure_bytes(args, rim, disc)
-    if fig_path is not None:
-        from graphmethods.render.files import write_atomic
+    hyp_path, hyp_data = (_hyperbola_bytes(args, cycle.delta_W_max, omega_m, J_e, float(out["delta"]),
+                                           None if machine is None else machine.key)
+                          if args.hyperbola is not None else (None, None))
+    if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
+        raise InputError("--figure and --hyperbola name the same file; give two names")
+    check_finite(out)
+    from graphmethods.render.files import write_atomic
 
-        check_finite(out)
+    if fig_path is not None:
         write_atomic(fig_path, fig_data, overwrite=args.force)
         out["figure"] = str(fig_path)
+    if hyp_path is not None:
+        write_atomic(hyp_path, hyp_data, overwrite=args.force)
+        out["hyperbola"] = str(hyp_path)
     if args.json:
         print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
         return 0
@@ -229,6 +311,9 @@ def run(args: argparse.Namespace) -> int:
         print("ω at the boundaries, rad/s: " + ", ".join(f"{lab} {w:.6g}" for lab, w in
                                                          zip(cycle.labels, out["omega_at_boundaries"])))
     if args.delta is not None:
+        if machine is not None:
+            print(f"[δ] from the table: {machine.name(args.lang)} {machine.range_text()}, the {args.machine_end} end "
+                  f"1/{1 / out['delta']:.4g}")
         print(f"[δ] = {out['delta']:.6g}; ω_max = {out['omega_max']:.6g}, ω_min = {out['omega_min']:.6g} rad/s")
         print(f"required total inertia ΔW_max/(ω_m²[δ]) = {out['J_total']:.6g} kg·m²")
         print(f"J_F = {out['J_F']:.6g} kg·m²" + (f" (after subtracting J_e = {J_e:.6g})" if J_e else ""))
@@ -243,6 +328,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"{key} flywheel ({d['material']}): " + ", ".join(
                 f"{k} {v:.4g}" for k, v in d.items() if isinstance(v, float)) + (
                 "" if d["speed_ok"] else "  -- the rim speed is OVER the limit: a smaller D, steel, or a faster shaft"))
-    if "figure" in out:
-        print(f"wrote {out['figure']}")
+    for key in ("figure", "hyperbola"):
+        if key in out:
+            print(f"wrote {out[key]}")
     return 0

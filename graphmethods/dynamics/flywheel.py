@@ -27,6 +27,10 @@ from graphmethods.units import DELTA_MAX, finite_result, n_from_omega, omega_fro
 
 #: Rim speeds usually allowed, m/s (domain.md §6): cast iron 25–30, steel higher.
 RIM_SPEED_LIMIT = {"cast iron": 25.0, "steel": 40.0}
+#: Standard gravity, m/s²: 1 kgf = 9.80665 N (for the old-unit flywheel moment Q·D², kgf·m²).
+G_STANDARD = 9.80665
+#: One kilogram-force, N.
+KGF = 9.80665
 #: Densities, kg/m³.
 DENSITY = {"cast iron": 7200.0, "steel": 7850.0}
 
@@ -262,6 +266,16 @@ class RimFlywheel:
         """m D², kg·m² (the "flywheel moment" GD² of older texts, in mass units)."""
         return self.m * self.D**2
 
+    @property
+    def weight_moment_kgf(self) -> float:
+        """Q·D² in the old units, kgf·m² (Q the weight in kgf): numerically m·D² at standard gravity."""
+        return self.m * G_STANDARD / KGF * self.D**2
+
+    @property
+    def weight_moment_N(self) -> float:
+        """G·D² = m g D², N·m² (the weight in newtons, g = 9.80665 m/s²)."""
+        return self.m * G_STANDARD * self.D**2
+
 
 def rim_flywheel(
     J: float,
@@ -320,6 +334,16 @@ class DiscFlywheel:
     def flywheel_moment(self) -> float:
         """m D², kg·m²."""
         return self.m * self.D**2
+
+    @property
+    def weight_moment_kgf(self) -> float:
+        """Q·D² in the old units, kgf·m² (Q the weight in kgf): numerically m·D² at standard gravity."""
+        return self.m * G_STANDARD / KGF * self.D**2
+
+    @property
+    def weight_moment_N(self) -> float:
+        """G·D² = m g D², N·m² (the weight in newtons, g = 9.80665 m/s²)."""
+        return self.m * G_STANDARD * self.D**2
 
 
 def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["steel"],

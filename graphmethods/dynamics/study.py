@@ -64,6 +64,8 @@ _SUMMARY_UNITS = {
     "mu_T": "J/mm", "J_e_min": "kg·m²", "J_e_max": "kg·m²", "J_e_mean": "kg·m²", "J_F_exact": "kg·m²",
     "phi_omega_max_deg": "°", "phi_omega_min_deg": "°", "switch_angles_deg": "°",
     "wittenbauer_positions_omega_max": "position", "wittenbauer_positions_omega_min": "position",
+    "A_jk": "J", "J_e_j": "kg·m²", "J_e_k": "kg·m²", "J_F_formula_90": "kg·m²", "delta_phi_deg": "°",
+    "mu_max_deg": "°",
 }
 
 
@@ -366,6 +368,9 @@ class Study:
                 "phi_omega_min_deg": math.degrees(ex.phi_omega_min_from_0),
                 "switch_angles_deg": [math.degrees(a) for a in self.switch_angles],
             })
+            from graphmethods.dynamics.flywheel_formulas import lecture_formulas
+
+            out.update(lecture_formulas(self.model, ex))    # formula (90), χ ≈ 2δ/Δφ, χ, tan μ
         return out
 
 
