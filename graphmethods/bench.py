@@ -672,8 +672,8 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
     matplotlib.rcParams["svg.hashsalt"] = "graphmethods-bench"
     fig, ax = plt.subplots(figsize=(7.5, 5.0))
     styles = {"Wittenbauer (chords)": "o-", "ΔW_max method": "s--"}
-    cases = sorted({r.case for r in rows if r.section == "flywheel"})
-    colours = dict(zip(cases, ("C0", "C1", "C2", "C3", "C4")))
+    cases = sorted({r.case for r in rows if r.section == "flywheel" and r.method in styles})
+    colours = {case: f"C{i % 10}" for i, case in enumerate(cases)}
     for case in cases:
         for method, style in styles.items():
             pts = [(r.seconds, r.error, r.size) for r in rows

@@ -130,3 +130,10 @@ def test_startup_row_reaches_the_periodic_solution_within_its_target():
     assert ref.method.startswith("motor study") and ref.error < 1e-12
     assert start.error is not None and start.error < bench.STARTUP_TARGET["error"]
     assert "target" in start.note and isinstance(start.extra["target_met"], bool)
+
+
+def test_the_error_against_time_plot_takes_any_number_of_problems(flywheel_rows, tmp_path):
+    extra = [bench.Row("flywheel", f"linkage {i}", "exact", None, 0.01, 1e-13) for i in range(8)]
+    bench.plot_error_vs_time(flywheel_rows + extra, tmp_path / "e.svg")
+    bench.plot_error_vs_time(flywheel_rows + extra, tmp_path / "e.png")
+    assert (tmp_path / "e.svg").read_text().startswith("<?xml") and (tmp_path / "e.png").read_bytes()[:4] == b"\x89PNG"
