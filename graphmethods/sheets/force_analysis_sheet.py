@@ -24,6 +24,7 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scene, Table, Text, in_language, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
+from graphmethods.sheets import forces as SF
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.layout import TEXT_MM, Sheet
 
@@ -113,7 +114,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
             (in_language(_W["plans"], nt), n(Mb, sig=6), "—")]
     for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
         d = float(fa.difference_percent(other)[i])
-        rows.append((in_language(_W[key], nt), n(float(other[i]), sig=6), f"{d:.1e}"))
+        rows.append((in_language(_W[key], nt), n(float(other[i]), sig=6), SF.percent_text(d, nt)))
     table = Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=TEXT_MM, row_height_mm=6.5, name="result")
     tw = table.width_mm
     heading_w = text_width_mm(in_language(_W["result"], nt), TEXT_MM + 0.8) * 1.08

@@ -29,6 +29,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Line, Page, Table, Text, Vector, in_language, notation as get_notation
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import THIN
 from graphmethods.sheets.layout import TEXT_MM, Sheet, given_scale
 
@@ -49,6 +50,13 @@ _W = {
     "legend": ("known forces solid, unknown dashed", "известные силы сплошные, искомые штриховые",
                "已知力为实线, 待求力为虚线"),
 }
+
+
+def percent_text(d: float, nt: Notation) -> str:
+    """A difference of two balancing moments in per cent, as a course project prints it: three
+    decimals (round-off, some 1e-14 %, prints 0.000 on every machine), the notation's decimal mark."""
+    text = f"{abs(d):.3f}"
+    return text.replace(".", nt.decimal)
 
 
 def _w(key: str, nt, **fill) -> str:
@@ -169,7 +177,7 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
     for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
         d = float(fa.difference_percent(other)[i])
         res_lines.append(f"{_w(key, nt)} = {nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}")
-        res_lines.append(f"    {_w('diff', nt)} {d:.1e} %")
+        res_lines.append(f"    {_w('diff', nt)} {percent_text(d, nt)} %")
     if gravity:
         res_lines.append(_w("weights", nt))
     probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0)
@@ -317,7 +325,7 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
     texts = [in_language(_WL["turned"], nt), in_language(_WL["couple"], nt),
              in_language(_WL["equation"], nt, Fb=nt.number(abs(Fb), sig=5)),
              in_language(_WL["result"], nt, Mb=nt.number(Mb_l, sig=6)),
-             in_language(_WL["plans"], nt, Mb=nt.number(Mb, sig=6), d=f"{d:.1e}")]
+             in_language(_WL["plans"], nt, Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
     right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
     split = x1 - right_w - 6.0
     area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)

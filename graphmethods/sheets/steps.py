@@ -991,8 +991,8 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
         solved |= set(pl.links)
     Mb = float(fa.M_balance[i])
     rules.append((_w(nt, "f_result", Mb=f"{nt.number(Mb, sig=6)} {nt.unit('N·m')}",
-                     dl=f"{float(fa.difference_percent(fa.M_balance_lever)[i]):.1e}",
-                     dp=f"{float(fa.difference_percent(fa.M_balance_power)[i]):.1e}"),
+                     dl=SF.percent_text(float(fa.difference_percent(fa.M_balance_lever)[i]), nt),
+                     dp=SF.percent_text(float(fa.difference_percent(fa.M_balance_power)[i]), nt)),
                   lambda n: n == "table" or n.startswith("result-")))
     rules = [r for r in rules if any(r[1](n) if callable(r[1]) else n in r[1] for n in names)]
     return _build(figure, rules, box, cap_mm, rest=None)
@@ -1057,7 +1057,7 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
                   or (n == "text-1" and not couple_said)))
     rules.append((_w(nt, "z_result", Mb=Mb, Fb=Fb, x=f"{nt.number(float(lev.M_balance[i]), sig=6)} {nm_}",
                      y=f"{nt.number(float(fa.M_balance[i]), sig=6)} {nm_}",
-                     d=f"{float(fa.difference_percent(lev.M_balance)[i]):.1e}"),
+                     d=SF.percent_text(float(fa.difference_percent(lev.M_balance)[i]), nt)),
                   lambda n: n in ("text-3", "text-4")))
     return _build(figure, rules, box, cap_mm, rest=None)
 
