@@ -18,8 +18,6 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
-
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scene, Table, Text, in_language, notation as get_notation
@@ -85,22 +83,13 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     InputError
         A position outside 0…m, a page other than A1/A2, a problem that is not a linkage.
     """
-    from graphmethods.dynamics.forces import case_forces
     from graphmethods.sheets.forces import force_plans, force_scheme, zhukovsky_forces
 
     case = _case(subject)
     nt = get_notation(notation)
-    if phi_deg is None:
-        k = 2 if position is None else position
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
-            raise InputError(f"position {position!r}: give a position number 0…{m}")
-        fa = case_forces(case, m=m, gravity=gravity)
-        i = int(k)
-        head = in_language(_W["title"], nt, k=i)
-    else:
-        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
-        i = 0
-        head = in_language(_W["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    fa, i = SF.analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
+    head = in_language(_W["title"], nt, k=i) if phi_deg is None else \
+        in_language(_W["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)

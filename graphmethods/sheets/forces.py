@@ -52,6 +52,19 @@ _W = {
 }
 
 
+def analysed(case, *, position: int | None, phi_deg: float | None, m: int, gravity: bool = False):
+    """The force analysis a force figure draws and the index of its position in it: position
+    ``position`` of 0…m (default 2), or the one crank angle ``phi_deg`` (degrees) when given."""
+    from graphmethods.dynamics.forces import case_forces
+
+    if phi_deg is not None:
+        return case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity), 0
+    k = 2 if position is None else position
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
+        raise InputError(f"position {position!r}: give a position number 0…{m}")
+    return case_forces(case, m=m, gravity=gravity), int(k)
+
+
 def percent_text(d: float, nt: Notation) -> str:
     """A difference of two balancing moments in per cent, as a course project prints it: three
     decimals (round-off, some 1e-14 %, prints 0.000 on every machine), the notation's decimal mark."""
@@ -151,20 +164,10 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
     InputError
         A position outside 0…m, or a given μ_F at which a polygon does not fit.
     """
-    from graphmethods.dynamics.forces import case_forces
-
     nt = get_notation(notation)
-    if phi_deg is None:
-        k = 2 if position is None else position
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
-            raise InputError(f"position {position!r}: give a position number 0…{m}")
-        fa = case_forces(case, m=m, gravity=gravity)
-        i = int(k)
-        head = _w("title", nt, k=i)
-    else:
-        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
-        i = 0
-        head = _w("title_phi", nt, phi=nt.number(float(phi_deg), sig=5))
+    fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
+    head = _w("title", nt, k=i) if phi_deg is None else \
+        _w("title_phi", nt, phi=nt.number(float(phi_deg), sig=5))
     sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=Page("A3", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
@@ -298,22 +301,13 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
     >>> [e.name for e in s.elements if e.name == "F_b"]
     ['F_b']
     """
-    from graphmethods.dynamics.forces import case_forces
     from graphmethods.scene import Point, markup
     from graphmethods.scene.scale import pick_scale
 
     nt = get_notation(notation)
-    if phi_deg is None:
-        k = 2 if position is None else position
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
-            raise InputError(f"position {position!r}: give a position number 0…{m}")
-        fa = case_forces(case, m=m, gravity=gravity)
-        i = int(k)
-        head = in_language(_WL["title"], nt, k=i)
-    else:
-        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
-        i = 0
-        head = in_language(_WL["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
+    head = in_language(_WL["title"], nt, k=i) if phi_deg is None else \
+        in_language(_WL["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
     mo, lev = fa.motion, fa.lever
     lk = mo.linkage
     sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
@@ -406,23 +400,14 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
     >>> sorted(e.name for e in s.elements if e.name.startswith("force-"))
     ['force-0', 'force-1', 'force-2']
     """
-    from graphmethods.dynamics.forces import case_forces
     from graphmethods.scene import markup
     from graphmethods.scene.scale import pick_scale
     from graphmethods.sheets.kinematic_symbols import FixedPivot, PinJoint, RotationArrow, SliderBlock
 
     nt = get_notation(notation)
-    if phi_deg is None:
-        k = 2 if position is None else position
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
-            raise InputError(f"position {position!r}: give a position number 0…{m}")
-        fa = case_forces(case, m=m, gravity=gravity)
-        i = int(k)
-        head = in_language(_WS["title"], nt, k=i)
-    else:
-        fa = case_forces(case, phi_deg=[float(phi_deg)], gravity=gravity)
-        i = 0
-        head = in_language(_WS["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
+    head = in_language(_WS["title"], nt, k=i) if phi_deg is None else \
+        in_language(_WS["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
     mo = fa.motion
     lk = mo.linkage
     sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,

@@ -893,16 +893,6 @@ WORDS_F = {
 WORDS.update(WORDS_F)
 
 
-def _forces_at(case, position: int | None, m: int):
-    """The force analysis the force figures draw, and the position index in it."""
-    from graphmethods.dynamics.forces import case_forces
-
-    k = 2 if position is None else position
-    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) <= m:
-        raise InputError(f"position {position!r}: give a position number 0…{m}")
-    return case_forces(case, m=m), int(k)
-
-
 def _relation(nt, d: complex, group, motion, i: int) -> str:
     """How a closing side's known direction ``d`` is drawn: ∥ or ⊥ a segment between two of the
     group's points, or ⊥ the guide of one of its links."""
@@ -948,7 +938,7 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
-    fa, i = _forces_at(case, position, m)
+    fa, i = SF.analysed(case, position=position, phi_deg=None, m=m)
     figure = SF.force_plans(case, i, m=m, notation=nt, page=pg, title_block=tb)
     names = {e.name for e in figure.elements}
     groups = {g.name: g for g in fa.motion.linkage.groups}
@@ -1022,7 +1012,7 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
-    fa, i = _forces_at(case, position, m)
+    fa, i = SF.analysed(case, position=position, phi_deg=None, m=m)
     figure = SF.zhukovsky_forces(case, i, m=m, notation=nt, page=pg, title_block=tb)
     lev = fa.lever
     nm_ = nt.unit("N·m")
