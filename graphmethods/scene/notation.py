@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from graphmethods.errors import InputError
+from graphmethods.scene import vocabulary
 from graphmethods.scene.numbers import format_value
 
 _SYMBOLS = {
@@ -112,14 +113,23 @@ class Notation:
         try:
             return self.symbols[key]
         except KeyError:
-            raise InputError(f"notation {self.code}: no symbol {key!r}; known: {', '.join(sorted(self.symbols))}") from None
+            raise InputError(f"notation {self.code}: no symbol {key!r}; add it to scene/vocabulary/") from None
 
-    def word(self, key: str) -> str:
-        """The words for a concept key such as ``"energy_indicator"`` or ``"gain"``."""
+    def word(self, key: str, **fill: object) -> str:
+        """The words for a concept key such as ``"energy_indicator"`` or ``"kinematics.scheme"``.
+
+        Keys of a figure family carry its vocabulary module's name (``"kinematics.plan"``, from
+        :mod:`graphmethods.scene.vocabulary.kinematics`); ``fill`` gives the text's
+        ``{placeholders}`` (:meth:`str.format`); without any the text is returned as written.
+
+        >>> get("ru").word("kinematics.plan", k=3)
+        'План скоростей, положение 3'
+        """
         try:
-            return self.words[key]
+            text = self.words[key]
         except KeyError:
-            raise InputError(f"notation {self.code}: no word {key!r}; known: {', '.join(sorted(self.words))}") from None
+            raise InputError(f"notation {self.code}: no word {key!r}; add it to scene/vocabulary/") from None
+        return text.format(**fill) if fill else text
 
     def unit(self, unit: str) -> str:
         """A unit as this tradition writes it (``"J"`` -> ``"Дж"`` in ru); unknown units pass through."""
@@ -142,9 +152,10 @@ class Notation:
 
 def _build(code: str) -> Notation:
     i = _PROFILES.index(code)
-    symbols = MappingProxyType({k: v[i] for k, v in _SYMBOLS.items()})
-    words = MappingProxyType({k: v[i] for k, v in _WORDS.items()})
-    units = MappingProxyType(dict(_UNITS_RU) if code == "ru" else {})
+    all_symbols, all_words, units_ru = vocabulary.tables(_SYMBOLS, _WORDS, _UNITS_RU)
+    symbols = MappingProxyType({k: v[i] for k, v in all_symbols.items()})
+    words = MappingProxyType({k: v[i] for k, v in all_words.items()})
+    units = MappingProxyType(dict(units_ru) if code == "ru" else {})
     return Notation(code, symbols, words, units, decimal="," if code == "ru" else ".",
                     quantity_style="slash" if code == "zh" else "comma")
 
