@@ -6,6 +6,8 @@ import pathlib
 import subprocess
 import sys
 
+import pytest
+
 PKG = pathlib.Path(__file__).resolve().parents[1] / "graphmethods"
 
 # Layer of each top-level part of the package; a module may import only parts of
@@ -76,12 +78,24 @@ def test_import_graphmethods_is_light():
     assert out.stdout.strip() == "", f"import graphmethods loaded {out.stdout.strip()}"
 
 
-def test_top_level_help_imports_no_command_module_and_no_numpy():
+def test_top_level_help_imports_no_command_module_no_numpy_and_no_argparse():
     code = ("import sys\nfrom graphmethods.cli import main\ntry:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
-            "heavy = sorted(m for m in sys.modules if m == 'numpy' or m.startswith('graphmethods.cli.'))\n"
+            "heavy = sorted(m for m in sys.modules if m in ('numpy', 'argparse', 'shutil', 'textwrap')"
+            " or m.startswith('graphmethods.cli.'))\n"
             "print(heavy, file=sys.stderr)")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert proc.stderr.strip() == "[]" and "flywheel" in proc.stdout
+
+
+@pytest.mark.parametrize("flag", ["-h", "--help"])
+def test_top_level_help_lists_every_command_with_its_help_line(flag, capsys):
+    from graphmethods.cli import COMMANDS, main
+
+    assert main([flag]) == 0
+    out = capsys.readouterr().out
+    rows = {line.split()[0]: line.split(None, 1)[1] for line in out.splitlines() if line.startswith("  ")}
+    assert {name: rows[name] for name in COMMANDS} == {name: line for name, (_, line) in COMMANDS.items()}
+    assert out.startswith("usage: graphmethods") and "--version" in out
 
 
 def test_the_help_lines_of_the_top_level_are_those_of_the_commands():

@@ -8,11 +8,14 @@ becomes one line on stderr and exit status 2, never a traceback.
 
 from __future__ import annotations
 
-import argparse
 import importlib
 import sys
 
 from graphmethods.errors import GraphmethodsError
+
+TYPE_CHECKING = False   # typing itself (and the re it loads) costs --help a third of its time
+if TYPE_CHECKING:
+    import argparse
 
 #: command name -> (module inside graphmethods.cli that implements it, one-line help). The help
 #: lines are here so that ``graphmethods --help`` imports no command module (and so no numpy).
@@ -34,11 +37,6 @@ COMMANDS = {
 }
 
 
-class _Parser(argparse.ArgumentParser):
-    def error(self, message):  # one line, exit 2, like every other error
-        self.exit(2, f"graphmethods: error: {message} (see graphmethods --help)\n")
-
-
 def version() -> str:
     """The installed package's version (from its metadata), or "unknown" when it is run uninstalled."""
     from importlib import metadata
@@ -49,17 +47,30 @@ def version() -> str:
         return "unknown (not installed)"
 
 
-class _Version(argparse.Action):
-    """``--version``: the metadata is read only when asked (it costs start-up time otherwise)."""
+DESCRIPTION = "Exact, scale-true graphical methods of machine dynamics."
 
-    def __call__(self, parser, namespace, values, option_string=None):
-        print(f"graphmethods {version()}")
-        parser.exit(0)
+
+def top_help() -> str:
+    """``graphmethods --help``: the commands and their help lines, written without argparse.
+
+    argparse with its formatter (shutil, textwrap, gettext, locale) costs about as much as the
+    interpreter's own start-up, so the top-level help, the one a newcomer types first, is
+    written from :data:`COMMANDS` directly; a command's own ``--help`` is argparse's.
+    """
+    width = max(len(name) for name in COMMANDS) + 2
+    lines = ["usage: graphmethods [-h] [--version] COMMAND ...", "", DESCRIPTION, "", "commands:"]
+    lines += [f"  {name:<{width}}{help_line}" for name, (_, help_line) in COMMANDS.items()]
+    lines += ["", "options:", f"  {'-h, --help':<{width}}show this help message and exit",
+              f"  {'--version':<{width}}print the version and exit", "",
+              "graphmethods COMMAND --help shows a command's own options."]
+    return "\n".join(lines) + "\n"
 
 
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     """The argument parser; only ``command``'s module is imported (every one when None, for tests)."""
-    parser = _Parser(prog="graphmethods", description="Exact, scale-true graphical methods of machine dynamics.")
+    from graphmethods.cli._parser import Parser as _Parser, Version as _Version
+
+    parser = _Parser(prog="graphmethods", description=DESCRIPTION)
     parser.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
@@ -86,6 +97,9 @@ def _tolerant_streams() -> None:
 def main(argv: list[str] | None = None) -> int:
     _tolerant_streams()
     argv = list(sys.argv[1:] if argv is None else argv)
+    if argv in (["-h"], ["--help"]):
+        sys.stdout.write(top_help())
+        return 0
     command = argv[0] if argv and argv[0] in COMMANDS else ""
     if command:
         mod = importlib.import_module(f"graphmethods.cli.{COMMANDS[command][0]}")
