@@ -43,7 +43,6 @@ from graphmethods.scene import (
     Table,
     Text,
     format_value,
-    in_language,
     markup,
     nice_ticks,
     notation as get_notation,
@@ -51,6 +50,7 @@ from graphmethods.scene import (
     pick_scale,
 )
 from graphmethods.scene.elements import label_bbox
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, problem_title
 
@@ -62,74 +62,9 @@ CHORD = Style(width_mm=0.18, stroke="#000000")
 RESULT = MAIN
 TWO_PI = 2.0 * math.pi
 
-# ----------------------------------------------------------------------------- words of this module
-
-#: notation words this module needs that scene/notation.py lacks (en, ru, zh)
-WORDS = {
-    "kinematic_title": ("Kinematic diagrams of the slider", "Кинематические диаграммы ползуна", "滑块运动线图"),
-    "work_title": ("Work diagrams by graphical integration", "Диаграммы работ (графическое интегрирование)",
-                   "功线图（图解积分法）"),
-    "construction": ("Construction", "Построение", "作图"),
-    "against": ("compared with", "сравнение с", "比较对象"),
-    "largest": ("max. difference", "расхождение", "最大误差"),
-    "on_sheet": ("on the sheet", "на чертеже", "图上"),
-    "analytic": ("analytic", "аналитически", "解析解"),
-    "plans": ("velocity plans", "планы скоростей", "速度图"),
-    "acc_plans": ("acceleration plans", "планы ускорений", "加速度图"),
-    "accuracy_work": ("Accuracy against the exact integrals", "Точность относительно точных интегралов",
-                      "相对精确积分的作图误差"),
-    "at_mid": ("at mid-intervals", "в серединах", "区间中点"),
-    "at_positions": ("at the positions", "в положениях", "各位置"),
-    "at_ends": ("at interval ends", "на концах участков", "区间端点"),
-    "inside": ("inside the chords", "внутри хорд", "弦内"),
-    "picked": ("picked to fit", "выбрано по месту", "自动选取"),
-    "given": ("given", "задано", "给定"),
-    "positions": ("positions", "положения", "位置"),
-    "drawn": ("{M} drawn through the positions", "{M} построен по точкам положений", "{M}按各位置绘制"),
-    "closure": ("closure", "замыкание", "闭合"),
-    "comparison": ("Largest differences from the velocity and acceleration plans and the analytic values",
-                   "Наибольшие расхождения с планами скоростей, ускорений и аналитическим расчётом",
-                   "与速度图、加速度图及解析解的最大误差"),
-}
-
-#: symbols (markup) of this module, en / ru / zh
-SYMBOLS = {
-    "s": ("s", "S", "s"),
-    "v": ("v", "V", "v"),
-    "a": ("a", "a", "a"),
-    "mu_s": ("μ_s", "μ_S", "μ_s"),
-    "mu_v": ("μ_v", "μ_V", "μ_v"),
-    "mu_a": ("μ_a", "μ_a", "μ_a"),
-    "mu_t": ("μ_t", "μ_t", "μ_t"),
-    "A_d": ("A_d", "A_д", "W_d"),
-    "A_r": ("A_r", "A_с", "W_r"),
-    "mu_A": ("μ_A", "μ_A", "μ_W"),
-    "P": ("P", "P", "P"),
-}
-
-#: units the profiles lack (ru); the others pass through
-UNITS_RU = {"m/s": "м/с", "m/s²": "м/с²", "m/rad": "м/рад", "m/rad²": "м/рад²", "s": "с", "m": "м", "J": "Дж",
-            "N·m": "Н·м", "rad": "рад", "mm": "мм", "kG·m": "кГ·м"}
-
-
-def word(nt, key: str) -> str:
-    """A word of this module in the profile of ``nt``."""
-    return in_language(WORDS[key], nt)
-
-
-def sym(nt, key: str) -> str:
-    """A symbol of this module in the profile of ``nt``."""
-    return in_language(SYMBOLS[key], nt)
-
-
-def unit(nt, u: str) -> str:
-    """A unit as the profile writes it."""
-    return UNITS_RU.get(u, u) if nt.code == "ru" else nt.unit(u)
-
-
-def _scale_unit(nt, u: str) -> str:
+def _scale_unit(nt: Notation, u: str) -> str:
     """A unit for a scale caption: compound units in brackets, ``(m/s)/mm``."""
-    t = unit(nt, u)
+    t = nt.unit(u)
     return f"({t})" if "/" in t else t
 
 
@@ -391,14 +326,15 @@ def _fmt(nt, value: float, sig: int = 3) -> str:
 # ----------------------------------------------------------------------------- 1. kinematic diagrams
 
 def _comparison_rows(nt, sd, sym_v: str, sym_a: str):
-    rows = [(word(nt, "construction"), word(nt, "against"), word(nt, "largest"), word(nt, "on_sheet"))]
-    what = {"mid-intervals": word(nt, "at_mid"), "positions": word(nt, "at_positions")}
-    against = {"analytic": word(nt, "analytic"), "velocity plans": word(nt, "plans"),
-               "acceleration plans": word(nt, "acc_plans")}
+    rows = [(nt.word("calculus.construction"), nt.word("calculus.against"), nt.word("calculus.largest"),
+             nt.word("calculus.on_sheet"))]
+    what = {"mid-intervals": nt.word("calculus.at_mid"), "positions": nt.word("calculus.at_positions")}
+    against = {"analytic": nt.word("calculus.analytic"), "velocity plans": nt.word("calculus.plans"),
+               "acceleration plans": nt.word("calculus.acc_plans")}
     for r in sd.comparison():
         q = sym_v if r["quantity"] == "v" else sym_a
         rows.append((f"{q}, {what[r['where']]}", against[r["against"]],
-                     f"{_fmt(nt, r['error'])} {unit(nt, r['unit'])}", f"{_fmt(nt, r['error_mm'], 2)} {unit(nt, 'mm')}"))
+                     f"{_fmt(nt, r['error'])} {nt.unit(r['unit'])}", f"{_fmt(nt, r['error_mm'], 2)} {nt.unit('mm')}"))
     return rows
 
 
@@ -456,7 +392,7 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     if analogues:
         omega_1 = None
     sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
-                  title=title or word(nt, "kinematic_title"),
+                  title=title or nt.word("calculus.kinematic_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
@@ -481,9 +417,9 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
                              f"mm but the sheet leaves {gx1 - gx0:.1f} mm; give a larger μ_φ or none")
     s_span = float(motion.s.max() - min(motion.s.min(), 0.0))
     if mu_s is None:
-        s_s = pick_scale(s_span, band_h, symbol=sym(nt, "mu_s"), unit=unit(nt, "m"))
+        s_s = pick_scale(s_span, band_h, symbol=nt.sym("calculus.mu_s"), unit=nt.unit("m"))
     else:
-        s_s = mu_s if isinstance(mu_s, Scale) else Scale(sym(nt, "mu_s"), unit(nt, "m"), mu_s)
+        s_s = mu_s if isinstance(mu_s, Scale) else Scale(nt.sym("calculus.mu_s"), nt.unit("m"), mu_s)
         if s_s.to_mm(s_span) > band_h + 1e-9:
             raise InputError(f"the stroke at {markup.plain(s_s.caption())} needs {s_s.to_mm(s_span):.1f} mm but "
                              f"the strip leaves {band_h:.1f} mm; give a larger μ_s or none")
@@ -493,21 +429,21 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
                             pole_room_mm=pole_room)
     t_per_rad = sd.time_scale
     u_v, u_a = sd.units
-    s_v = Scale(sym(nt, "mu_v"), _scale_unit(nt, u_v), sd.v.mu)
-    s_a = Scale(sym(nt, "mu_a"), _scale_unit(nt, u_a), sd.a.mu)
-    s_t = Scale(sym(nt, "mu_t"), unit(nt, "s"), sd.mu_t) if sd.mu_t is not None else None
+    s_v = Scale(nt.sym("calculus.mu_v"), _scale_unit(nt, u_v), sd.v.mu)
+    s_a = Scale(nt.sym("calculus.mu_a"), _scale_unit(nt, u_a), sd.a.mu)
+    s_t = Scale(nt.sym("calculus.mu_t"), nt.unit("s"), sd.mu_t) if sd.mu_t is not None else None
     for H, key, given in ((sd.v.H_mm, "H1", H1_mm), (sd.a.H_mm, "H2", H2_mm)):
         if given is not None and H > pole_room + 1e-9:
             raise InputError(f"{key} = {H:g} mm leaves no room for the pole left of its diagram ({pole_room:g} mm); "
                              f"give a smaller {key}_mm or none")
     occ = sheet.occ
     elements: list = [sheet.header()]
-    P_name = sym(nt, "P")
+    P_name = nt.sym("calculus.P")
 
     # ---- strip 1: s(φ), exact, with the positions and the chords
-    sym_s = f"{sym(nt, 's')}_{{{point}}}"
-    sym_v = f"{sym(nt, 'v')}_{{{point}}}"
-    sym_a = f"{sym(nt, 'a')}_{{{point}}}"
+    sym_s = f"{nt.sym('calculus.s')}_{{{point}}}"
+    sym_v = f"{nt.sym('calculus.v')}_{{{point}}}"
+    sym_a = f"{nt.sym('calculus.a')}_{{{point}}}"
     b_s = _Band(x0=gx0, top=top, height=band_h, s_phi=s_phi, s_y=s_s, lo=float(motion.s.min()),
                 hi=float(motion.s.max()), period=TWO_PI)
     curve_s = Polyline(b_s.pts(motion.phi, motion.s), style=RESULT, name="curve-s")
@@ -516,7 +452,7 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
                    enumerate(zip(sd.phi, pts_s)) if abs(q[1] - b_s.origin[1]) > 0.05]
     chords_s = [Line(pts_s[k], pts_s[k + 1], style=CHORD, name=f"chord-s-{k + 1}") for k in range(m)]
     dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
-    ax_phi_s, ax_s = b_s.axes(nt=nt, y_label=nt.quantity(sym_s, unit(nt, "m")), m=m, name="s")
+    ax_phi_s, ax_s = b_s.axes(nt=nt, y_label=nt.quantity(sym_s, nt.unit("m")), m=m, name="s")
     _register(occ, curve_s, *ordinates_s, *chords_s)
     full_s = ax_phi_s
     ax_phi_s, ax_s = _clear_tick_labels(ax_phi_s, occ), _clear_tick_labels(ax_s, occ, keep_values=True)
@@ -552,14 +488,14 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
         xs_, ys_ = _clip_curve(np.array([xa, xb]), np.array([ya, yb]), max(xa, 0.0), min(xb, TWO_PI))
         chords_v.append(Line(b_v.pt(xs_[0], ys_[0]), b_v.pt(xs_[-1], ys_[-1]), style=CHORD,
                              name=f"chord-v-{k}"))
-    ax_phi_v, ax_v = b_v.axes(nt=nt, y_label=nt.quantity(sym_v, unit(nt, u_v)), m=m, name="v")
+    ax_phi_v, ax_v = b_v.axes(nt=nt, y_label=nt.quantity(sym_v, nt.unit(u_v)), m=m, name="v")
     pole_els_v = _pole(b_v, v.H_mm, f"{P_name}_1", "pole-v", occ)
     _register(occ, curve_v, *rays_v, *proj_v, *chords_v)
     full_v = ax_phi_v
     ax_phi_v, ax_v = _clear_tick_labels(ax_phi_v, occ), _clear_tick_labels(ax_v, occ, keep_values=True)
     _register(occ, ax_phi_v, ax_v)
     pos_v = _lost_positions(full_v, ax_phi_v, occ, "pos-v")
-    dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {unit(nt, 'mm')}", "H1", occ)
+    dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')}", "H1", occ)
     elements += ([ax_phi_v, ax_v] + rays_v + proj_v + chords_v + [curve_v] + dots_v + pole_els_v + dim_v + pos_v)
 
     # ---- strip 3: a by the chords of v
@@ -578,38 +514,38 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
               enumerate(zip(targets_a, points_a)) if k > 0]
     dots_a = [Point(p, radius_mm=0.55, name=f"dot-a-{k}") for k, p in enumerate(points_a)]
     curve_a = Polyline(b_a.pts(Xa, Ya), style=RESULT, name="curve-a")
-    ax_phi_a, ax_a = b_a.axes(nt=nt, y_label=nt.quantity(sym_a, unit(nt, u_a)), m=m, name="a")
+    ax_phi_a, ax_a = b_a.axes(nt=nt, y_label=nt.quantity(sym_a, nt.unit(u_a)), m=m, name="a")
     pole_els_a = _pole(b_a, a.H_mm, f"{P_name}_2", "pole-a", occ)
     _register(occ, curve_a, *rays_a, *proj_a)
     full_a = ax_phi_a
     ax_phi_a, ax_a = _clear_tick_labels(ax_phi_a, occ), _clear_tick_labels(ax_a, occ, keep_values=True)
     _register(occ, ax_phi_a, ax_a)
     pos_a = _lost_positions(full_a, ax_phi_a, occ, "pos-a")
-    dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {unit(nt, 'mm')}", "H2", occ)
+    dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')}", "H2", occ)
     elements += ([ax_phi_a, ax_a] + rays_a + proj_a + [curve_a] + dots_a + pole_els_a + dim_a + pos_a)
 
     # ---- right column: the formula of each scale beside its graph, then the comparison table
     rx = x1 - right_col
-    tname = sym(nt, "mu_t") if s_t is not None else nt.sym("mu_phi")
+    tname = nt.sym("calculus.mu_t") if s_t is not None else nt.sym("mu_phi")
     side = [
         _side_block(rx, b_s.top + 4.0, [s_s.caption(nt), s_phi.caption(nt)]
                     + ([s_t.caption(nt) + f" = {nt.sym('mu_phi')}/ω_1"] if s_t is not None else []), "formula-s", occ),
         _side_block(rx, b_v.top + 4.0, [f"{s_v.symbol} = {s_s.symbol}/({tname}·H_1) = {nt.number(sd.v.mu)} "
-                                        f"{s_v.unit}/{unit(nt, 'mm')}",
-                                        f"H_1 = {nt.number(v.H_mm)} {unit(nt, 'mm')} "
-                                        f"({word(nt, 'given') if H1_mm is not None else word(nt, 'picked')})"],
+                                        f"{s_v.unit}/{nt.unit('mm')}",
+                                        f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')} "
+                                        f"({nt.word('calculus.given') if H1_mm is not None else nt.word('calculus.picked')})"],
                     "formula-v", occ),
         _side_block(rx, b_a.top + 4.0, [f"{s_a.symbol} = {s_v.symbol}/({tname}·H_2) = {nt.number(sd.a.mu)} "
-                                        f"{s_a.unit}/{unit(nt, 'mm')}",
-                                        f"H_2 = {nt.number(a.H_mm)} {unit(nt, 'mm')} "
-                                        f"({word(nt, 'given') if H2_mm is not None else word(nt, 'picked')})"],
+                                        f"{s_a.unit}/{nt.unit('mm')}",
+                                        f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')} "
+                                        f"({nt.word('calculus.given') if H2_mm is not None else nt.word('calculus.picked')})"],
                     "formula-a", occ),
     ]
     for blk in side:
         elements += blk
     rows = _comparison_rows(nt, sd, sym_v, sym_a)
     table = _table(rows, align="llrr", name="comparison-table", right=x1, bottom=b_a.top + band_h)
-    elements += _titled_table(table, word(nt, "comparison"), "comparison-title") + [table]
+    elements += _titled_table(table, nt.word("calculus.comparison"), "comparison-title") + [table]
 
     scales = (s_phi, s_s, s_v, s_a) + ((s_t,) if s_t is not None else ())
     elements += sheet.captions(scales)
@@ -654,7 +590,7 @@ def _moment_subject(subject, m: int, nt):
 
 
 def _accuracy_rows(nt, wd, work_unit: str):
-    wu, mm = unit(nt, work_unit), unit(nt, "mm")
+    wu, mm = nt.unit(work_unit), nt.unit("mm")
     noise = 1e-9 * (float(np.abs(np.concatenate((wd.A_d.values, wd.A_r.values))).max()) or 1.0)
 
     def cells(value, value_mm):             # rounding noise of an exact construction is written 0
@@ -663,18 +599,19 @@ def _accuracy_rows(nt, wd, work_unit: str):
         exact = abs(value) <= noise
         return (f"{_fmt(nt, 0.0 if exact else value)} {wu}", f"{_fmt(nt, 0.0 if exact else value_mm, 2)} {mm}")
 
-    rows = [(word(nt, "construction"), word(nt, "at_ends"), word(nt, "on_sheet"), word(nt, "inside"),
-             word(nt, "on_sheet"))]
-    symbol = {"A_d": sym(nt, "A_d"), "A_r": sym(nt, "A_r"), "ΔE": nt.sym("dE")}
+    on_sheet = nt.word("calculus.on_sheet")
+    rows = [(nt.word("calculus.construction"), nt.word("calculus.at_ends"), on_sheet, nt.word("calculus.inside"),
+             on_sheet)]
+    symbol = {"A_d": nt.sym("calculus.A_d"), "A_r": nt.sym("calculus.A_r"), "ΔE": nt.sym("dE")}
     for r in wd.comparison():
         rows.append((symbol[r["quantity"]],) + cells(r["error"], r["error_mm"]) + cells(r["inside"], r["inside_mm"]))
     return rows
 
 
 def _accuracy_title(nt, study) -> str:
-    title = word(nt, "accuracy_work")
+    title = nt.word("calculus.accuracy_work")
     if study is not None:
-        drawn = word(nt, "drawn").format(M=nt.sym("M_r"))
+        drawn = nt.word("calculus.drawn", M=nt.sym("M_r"))
         title += f"（{drawn}）" if nt.code == "zh" else f" ({drawn})"
     return title
 
@@ -715,7 +652,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     nt = get_notation(notation)
     M_d, M_r, phi, study, prob = _moment_subject(subject, m, nt)
     sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
-                  title=title or word(nt, "work_title"),
+                  title=title or nt.word("calculus.work_title"),
                    problem=prob if problem is None else problem, title_block=title_block)
     x0, _, x1, _ = sheet.box
     period = float(phi[-1] - phi[0])
@@ -728,9 +665,9 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     M_lo, M_hi = float(M_all.min()), float(M_all.max())
     mu_M_given = mu_M is not None
     if mu_M is None:
-        s_M = pick_scale(M_hi - M_lo, band_h - dim_room, symbol=nt.sym("mu_M"), unit=unit(nt, moment_unit))
+        s_M = pick_scale(M_hi - M_lo, band_h - dim_room, symbol=nt.sym("mu_M"), unit=nt.unit(moment_unit))
     else:
-        s_M = mu_M if isinstance(mu_M, Scale) else Scale(nt.sym("mu_M"), unit(nt, moment_unit), mu_M)
+        s_M = mu_M if isinstance(mu_M, Scale) else Scale(nt.sym("mu_M"), nt.unit(moment_unit), mu_M)
         if s_M.to_mm(M_hi - M_lo) > band_h + 1e-9:
             raise InputError(f"the moment diagram at {markup.plain(s_M.caption())} needs "
                              f"{s_M.to_mm(M_hi - M_lo):.1f} mm but the strip leaves {band_h:.1f} mm; give a larger "
@@ -740,7 +677,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     else:
         probe_wd = gc.work_diagrams(M_d, M_r, phi, mu_phi=1.0, mu_M=1.0, H_mm=1.0, exact_d=M_d, exact_r=M_r)
     right_col = _column_width(_accuracy_rows(nt, probe_wd, work_unit),
-                              f"{sym(nt, 'A_d')}(φ_T) − {sym(nt, 'A_r')}(φ_T) = −1234 J ({word(nt, 'closure')})")
+                              f"{nt.sym('calculus.A_d')}(φ_T) − {nt.sym('calculus.A_r')}(φ_T) = −1234 J ({nt.word('calculus.closure')})")
 
     def pick_phi(room):
         width = x1 - right_col - 16.0 - (x0 + room + 12.0)
@@ -787,7 +724,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
         wd = gc.study_work_diagrams(study, mu_phi=s_phi.per_mm, mu_M=s_M.per_mm, H_mm=H)
     else:
         wd = gc.work_diagrams(M_d, M_r, phi, mu_phi=s_phi.per_mm, mu_M=s_M.per_mm, H_mm=H, exact_d=M_d, exact_r=M_r)
-    s_A = Scale(sym(nt, "mu_A"), unit(nt, work_unit), wd.mu_A)
+    s_A = Scale(nt.sym("calculus.mu_A"), nt.unit(work_unit), wd.mu_A)
     A_vals = np.concatenate((wd.A_d.values, wd.A_r.values, [0.0]))
     if s_A.to_mm(float(np.ptp(A_vals))) > band_h + 1e-9:
         raise InputError(f"at H = {H:g} mm the work diagrams need {s_A.to_mm(float(np.ptp(A_vals))):.1f} mm but the "
@@ -797,7 +734,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     elements: list = [sheet.header()]
     phi0 = float(phi[0])
     x = np.asarray(phi) - phi0
-    P_name = sym(nt, "P")
+    P_name = nt.sym("calculus.P")
 
     # ---- strip 1: the moment diagram with the mean ordinates, their projections, the rays
     b_M = _Band(x0=gx0, top=top, height=band_h, s_phi=s_phi, s_y=s_M, lo=M_lo, hi=M_hi, period=period,
@@ -823,7 +760,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
             if i > 0 and abs(a_[1] - target[1]) > 1e-9:
                 projections.append(Line(a_, target, style=PROJECTION, name=f"projection-{key}-{i + 1}"))
             rays.append(Line(pole, target, style=RAY if key == "r" else PROJECTION, name=f"ray-{key}-{i + 1}"))
-    ax_phi_M, ax_M = b_M.axes(nt=nt, y_label=nt.quantity(nt.sym("M"), unit(nt, moment_unit)), m=len(x) - 1,
+    ax_phi_M, ax_M = b_M.axes(nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), m=len(x) - 1,
                               name="M")
     pole_els = _pole(b_M, H, P_name, "pole", occ)
     _register(occ, curve_d, curve_r, *steps, *projections, *rays)
@@ -832,7 +769,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     _register(occ, ax_phi_M, ax_M)
     pos_M = _lost_positions(full_M, ax_phi_M, occ, "pos-M")
     ords_M = np.concatenate((np.asarray(wd.A_r.mean_ordinate), np.asarray(wd.A_d.mean_ordinate))) / s_M.per_mm
-    dim = _h_dimension(b_M, H, ords_M, f"H = {nt.number(H)} {unit(nt, 'mm')}", "H", occ)
+    dim = _h_dimension(b_M, H, ords_M, f"H = {nt.number(H)} {nt.unit('mm')}", "H", occ)
     names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
                            "M")
     elements += ([ax_phi_M, ax_M] + steps + projections + rays + [curve_d, curve_r] + pole_els + dim + names_M + pos_M)
@@ -845,13 +782,13 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     chords_r = Polyline(b_A.pts(x, wd.A_r.values), style=RESULT, name="chords-A_r")
     dots_A = [Point(p, radius_mm=0.5, name=f"dot-A_r-{k}") for k, p in enumerate(chords_r.points)]
     dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
-    ax_phi_A, ax_A = b_A.axes(nt=nt, y_label=nt.quantity(nt.sym("A"), unit(nt, work_unit)), m=len(x) - 1, name="A")
+    ax_phi_A, ax_A = b_A.axes(nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)), m=len(x) - 1, name="A")
     _register(occ, chords_d, chords_r)
     full_A = ax_phi_A
     ax_phi_A, ax_A = _clear_tick_labels(ax_phi_A, occ), _clear_tick_labels(ax_A, occ, keep_values=True)
     _register(occ, ax_phi_A, ax_A)
     pos_A = _lost_positions(full_A, ax_phi_A, occ, "pos-A")
-    names_A = _curve_names(occ, ((chords_d, sym(nt, "A_d"), b_A.origin[1]), (chords_r, sym(nt, "A_r"), b_A.origin[1])),
+    names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]), (chords_r, nt.sym("calculus.A_r"), b_A.origin[1])),
                            "A")
     elements += [ax_phi_A, ax_A, chords_d, chords_r] + dots_A + names_A + pos_A
 
@@ -863,7 +800,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     ordinates_E = [Line(b_E.pt(xk, 0.0), b_E.pt(xk, ek), style=THIN, name=f"ordinate-dE-{k}")
                    for k, (xk, ek) in enumerate(zip(x, dE)) if abs(s_A.to_mm(float(ek))) > 0.05]
     dots_E = [Point(p, radius_mm=0.5, name=f"dot-dE-{k}") for k, p in enumerate(curve_E.points)]
-    ax_phi_E, ax_E = b_E.axes(nt=nt, y_label=nt.quantity(nt.sym("dE"), unit(nt, work_unit)), m=len(x) - 1,
+    ax_phi_E, ax_E = b_E.axes(nt=nt, y_label=nt.quantity(nt.sym("dE"), nt.unit(work_unit)), m=len(x) - 1,
                               name="dE")
     _register(occ, curve_E, *ordinates_E)
     full_E = ax_phi_E
@@ -874,17 +811,17 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
 
     # ---- right column: formulas and the accuracy of each construction
     rx = x1 - right_col
-    picked = word(nt, "given") if H_mm is not None else word(nt, "picked")
+    picked = nt.word("calculus.given") if H_mm is not None else nt.word("calculus.picked")
     elements += _side_block(rx, b_M.top + 4.0, [s_M.caption(nt), s_phi.caption(nt)], "formula-M", occ)
     elements += _side_block(rx, b_A.top + 4.0, [f"{s_A.symbol} = {s_M.symbol}·{nt.sym('mu_phi')}·H = "
-                                                f"{nt.number(wd.mu_A)} {unit(nt, work_unit)}/{unit(nt, 'mm')}",
-                                                f"H = {nt.number(H)} {unit(nt, 'mm')} ({picked})"], "formula-A", occ)
-    closure = f"{sym(nt, 'A_d')}({nt.sym('phi')}_{{T}}) − {sym(nt, 'A_r')}({nt.sym('phi')}_{{T}}) = " \
-              f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {unit(nt, work_unit)} " \
-              f"({word(nt, 'closure')})"
-    elements += _side_block(rx, b_E.top + 4.0, [f"{nt.sym('dE')} = {sym(nt, 'A_d')} − {sym(nt, 'A_r')};  "
-                                                f"{s_A.symbol} = {nt.number(wd.mu_A)} {unit(nt, work_unit)}/"
-                                                f"{unit(nt, 'mm')}", closure], "formula-dE", occ)
+                                                f"{nt.number(wd.mu_A)} {nt.unit(work_unit)}/{nt.unit('mm')}",
+                                                f"H = {nt.number(H)} {nt.unit('mm')} ({picked})"], "formula-A", occ)
+    closure = f"{nt.sym('calculus.A_d')}({nt.sym('phi')}_{{T}}) − {nt.sym('calculus.A_r')}({nt.sym('phi')}_{{T}}) = " \
+              f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {nt.unit(work_unit)} " \
+              f"({nt.word('calculus.closure')})"
+    elements += _side_block(rx, b_E.top + 4.0, [f"{nt.sym('dE')} = {nt.sym('calculus.A_d')} − {nt.sym('calculus.A_r')};  "
+                                                f"{s_A.symbol} = {nt.number(wd.mu_A)} {nt.unit(work_unit)}/"
+                                                f"{nt.unit('mm')}", closure], "formula-dE", occ)
     rows = _accuracy_rows(nt, wd, work_unit)
     table = _table(rows, align="lrrrr", name="accuracy-table", right=x1, bottom=b_E.top + band_h)
     head = _titled_table(table, _accuracy_title(nt, study), "accuracy-title")

@@ -26,9 +26,6 @@ from graphmethods.sheets.layout import TEXT_MM, given_angle_scale, given_scale
 
 DASHED = Style(width_mm=0.25, dash=(3.0, 1.2))
 GUIDE = Style(width_mm=0.13, dash=(1.2, 0.8))
-_TITLE = ("Moments, energy and speed over the cycle", "Моменты, энергия и скорость за цикл",
-          "等效力矩、能量与角速度在一个周期内的变化")
-_LANG = {"en": 0, "ru": 1, "zh": 2}
 
 
 def cycle_panels(problem, *, notation="en", title: str | None = None, samples: int = 1441) -> Scene:
@@ -141,7 +138,7 @@ class PanelData:
 def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Scene:
     """Lay out and draw :class:`PanelData` on A4 portrait (the three panels, captions, legend)."""
     P, ph2, Md2, Mr2, phi, E, w = data.period, data.phi_M, data.M_d, data.M_r, data.phi, data.delta_E, data.omega
-    title = title or _TITLE[_LANG.get(nt.code, 0)]
+    title = title or nt.word("motion.cycle_panels")
     mu, wu = data.moment_unit, data.work_unit
     sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem, title_block=True,
                        default_page=Page("A4", "portrait", frame=True))

@@ -29,13 +29,9 @@ from graphmethods.sheets.layout import TEXT_MM, given_scale
 LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
 TURN = Style(width_mm=0.13, dash=(1.2, 0.8))
 
-_TITLES = {
-    ("t", "omega"): ("Speed against time ω(t)", "Скорость в функции времени ω(t)", "角速度随时间的变化 ω(t)"),
-    ("phi", "omega"): ("Speed against angle ω(φ)", "Скорость в функции угла ω(φ)", "角速度随转角的变化 ω(φ)"),
-    ("phi", "epsilon"): ("Angular acceleration ε(φ)", "Угловое ускорение ε(φ)", "角加速度 ε(φ)"),
-    ("t", "epsilon"): ("Angular acceleration ε(t)", "Угловое ускорение ε(t)", "角加速度 ε(t)"),
-}
-_LANG = {"en": 0, "ru": 1, "zh": 2}
+#: (x, y) of a motion graph -> the key of its title in scene/vocabulary/motion.py
+_TITLES = {("t", "omega"): "motion.speed_t", ("phi", "omega"): "motion.speed_phi",
+           ("phi", "epsilon"): "motion.acceleration_phi", ("t", "epsilon"): "motion.acceleration_t"}
 
 
 def _samples(res, per_step: int):
@@ -85,7 +81,7 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     if (x, y) not in _TITLES:
         raise InputError(f"motion_graph: x must be 't' or 'phi' and y 'omega' or 'epsilon', not {x!r}, {y!r}")
     nt = get_notation(notation)
-    title = title or _TITLES[(x, y)][_LANG.get(nt.code, 0)]
+    title = title or nt.word(_TITLES[(x, y)])
     t, phi, w, eps = _samples(res, per_step)
     xv = t - t[0] if x == "t" else phi - phi[0]
     yv = w if y == "omega" else eps
@@ -160,8 +156,7 @@ def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | Non
     True
     """
     nt = get_notation(notation)
-    title = title or ("Energy–mass curve of the run T(J)", "Кривая энергия–масса движения T(J)",
-                      "运动过程的能量—质量曲线 T(J)")[_LANG.get(nt.code, 0)]
+    title = title or nt.word("motion.energy_mass")
     J, T = np.asarray(res.J, dtype=float), np.asarray(res.T, dtype=float)
     sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem or "", title_block=True,
                        default_page=Page("A4", "landscape", frame=True))
