@@ -2,9 +2,17 @@
 and the three panels of moments, energy and speed over one cycle.
 
 >>> from graphmethods.scene.notation import get
->>> get("zh").word("motion.speed_t")
-'角速度随时间的变化 ω(t)'
+>>> get("zh").word("motion.speed_t"), get("ru").sym("motion.omega_m"), get("ru").unit("rad/s²")
+('角速度随时间的变化 ω(t)', 'ω_{ср}', 'рад/с²')
 """
+
+SYMBOLS = {
+    "omega":    ("ω",   "ω",      "ω"),
+    "omega_m":  ("ω_m", "ω_{ср}", "ω_m"),
+    "eps":      ("ε",   "ε",      "ε"),
+    "mu_omega": ("μ_ω", "μ_ω",    "μ_ω"),
+    "mu_eps":   ("μ_ε", "μ_ε",    "μ_ε"),
+}
 
 WORDS = {
     "speed_t":          ("Speed against time ω(t)", "Скорость в функции времени ω(t)", "角速度随时间的变化 ω(t)"),
@@ -16,3 +24,5 @@ WORDS = {
     "cycle_panels":     ("Moments, energy and speed over the cycle", "Моменты, энергия и скорость за цикл",
                          "等效力矩、能量与角速度在一个周期内的变化"),
 }
+
+UNITS_RU = {"rad/s²": "рад/с²"}
