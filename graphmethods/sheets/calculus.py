@@ -133,17 +133,29 @@ def _clip_curve(X, Y, lo: float, hi: float):
     return xs, ys
 
 
-def _register(occ: Occupancy, *elements) -> None:
+def register(occ: Occupancy, *elements: Element) -> None:
+    """Register everything some elements draw, so labels placed later keep off it.
+
+    (The cycle figures' one copy, also used by :mod:`graphmethods.sheets.energy`; its home is
+    :class:`graphmethods.sheets.layout.Occupancy`, as ``FastOccupancy.register`` has it.)
+    """
     for e in elements:
         occ.add_primitives(e.primitives())
 
 
-def _clear_tick_labels(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
+def clear_tick_labels(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
     """The axis with the tick labels that would cover something already drawn left out (marks stay).
 
     With ``keep_values`` (a value axis) an axis is never left without values: when every label
     on its side would cover something, they go on the other side; when that is full too, the
     labels that cover no text stay (a thin line may run through a number).
+
+    >>> from graphmethods.scene import Scale
+    >>> occ = Occupancy()
+    >>> occ.add_line(((5.0, 85.0), (30.0, 85.0)))                   # a line through the value 10
+    >>> ax = Axis((10.0, 95.0), Scale("μ", "J", 1.0), "y", max_value=30.0, ticks=(0.0, 10.0, 20.0))
+    >>> clear_tick_labels(ax, occ).tick_labels
+    ('0', '', '20')
     """
     from dataclasses import replace
 
@@ -192,6 +204,42 @@ def _number_labels(m: int, step_mm: float) -> tuple[str, ...]:
     return tuple(str(i) if i % k == 0 or i == m else "" for i in range(m + 1))
 
 
+@dataclass(frozen=True)
+class StripsLayout:
+    """The millimetre constants of the calculus sheets: three strips stacked on the left (each graph
+    with its pole left of it), a column of scale formulas and a table on the right.
+
+    >>> StripsLayout().strip_tops(top=20.0, strip_mm=50.0)
+    (20.0, 83.0, 146.0)
+    """
+
+    pole_room_mm: float = 44.0      # left of the graphs for the poles (the work diagrams widen it for a long H)
+    graph_gap_mm: float = 12.0      # between the pole room and the graphs
+    column_gap_mm: float = 16.0     # between the graphs and the right column
+    top_gap_mm: float = 4.0         # below the title
+    bottom_gap_mm: float = 9.0      # above the scale captions
+    strip_gap_mm: float = 13.0      # between two strips
+    dim_room_mm: float = 9.0        # the dimension of H beside the fan of rays
+    max_pole_room_mm: float = 90.0  # the work diagrams' pole room grows up to this, then μ_M grows
+    block_drop_mm: float = 4.0      # a formula block's first line below its strip's top
+    tick_gap_mm: float = 7.0        # at least between a value axis's values …
+    close_tick_gap_mm: float = 3.5  # … or this close in a strip too low for two values that far apart
+
+    def strip_mm(self, sheet: Sheet) -> tuple[float, float]:
+        """(top of the first strip, height of a strip) on the sheet, mm."""
+        top = sheet.top + self.top_gap_mm
+        bottom = sheet.caption_y - self.bottom_gap_mm
+        return top, (bottom - top - 2 * self.strip_gap_mm) / 3.0
+
+    def strip_tops(self, *, top: float, strip_mm: float) -> tuple[float, float, float]:
+        """The tops of the three strips, mm."""
+        gap = self.strip_gap_mm
+        return top, top + strip_mm + gap, top + 2 * (strip_mm + gap)
+
+
+LAYOUT = StripsLayout()
+
+
 class _Band:
     """One graph of a stacked sheet: a horizontal strip with its φ axis and value axis."""
 
@@ -223,7 +271,9 @@ class _Band:
                       tick_labels=_number_labels(m, step_mm), label=nt.sym("phi"), size_mm=SMALL_MM,
                       skip_zero_label=self.lo < 0, name=f"axis-phi-{name}")
         room = self.s_y.per_mm * 2.0
-        ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=7.0) if y_ticks else ()
+        ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.tick_gap_mm) if y_ticks else ()
+        if y_ticks and not any(ticks):      # only 0, which is not written: closer values rather than none
+            ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.close_tick_gap_mm)
         ax_y = Axis(self.origin, self.s_y, "y", min_value=self.lo if self.lo < 0 else 0.0,
                     max_value=max(self.hi, room), ticks=ticks, label=y_label, size_mm=SMALL_MM,
                     decimal=nt.decimal, skip_zero_label=True, name=f"axis-{name}")
@@ -235,7 +285,7 @@ def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy):
     at = band.mm(-H_mm, 0.0)
     line = Line(at, band.origin, style=THIN, name=f"{name}-axis-extension")
     dot = Point(at, radius_mm=0.7, name=f"{name}-point")
-    _register(occ, line, dot)
+    register(occ, line, dot)
     lab = occ.place_label(at, label, ("nw", "w", "sw", "n"), size_mm=TEXT_MM, gap_mm=1.0)
     text = Text((lab.x, lab.y), label, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-label")
     return [line, dot, text]
@@ -256,7 +306,7 @@ def _h_dimension(band: _Band, H_mm: float, ordinates_mm, text: str, name: str, o
     depth = (down if below else up) + 5.0
     # the normal of p→q (rightwards on paper) is (0, 1): a positive offset is below the axis
     dim = Dimension(p, q, "", offset_mm=depth if below else -depth, name=f"dimension-{name}")
-    _register(occ, dim)
+    register(occ, dim)
     lab = occ.place_label(dim.mid, text, ("s", "n") if below else ("n", "s"), size_mm=SMALL_MM, gap_mm=0.8)
     return [dim, Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"dimension-{name}-text")]
 
@@ -267,7 +317,7 @@ def _side_block(x: float, y: float, lines, name: str, occ: Occupancy):
     for k, t in enumerate(lines):
         els.append(Text((x, y + k * (TEXT_MM * 1.45)), t, size_mm=TEXT_MM if k == 0 else SMALL_MM + 0.2,
                         name=f"{name}-{k + 1}"))
-    _register(occ, *els)
+    register(occ, *els)
     return els
 
 
@@ -356,47 +406,13 @@ def _slider_subject(subject, nt):
                      f"linkage with a slider, got {type(subject).__name__}")
 
 
-@dataclass(frozen=True)
-class StripsLayout:
-    """The millimetre constants of the calculus sheets: three strips stacked on the left (each graph
-    with its pole left of it), a column of scale formulas and a table on the right.
-
-    >>> StripsLayout().strip_tops(top=20.0, strip_mm=50.0)
-    (20.0, 83.0, 146.0)
-    """
-
-    pole_room_mm: float = 44.0      # left of the graphs for the poles (the work diagrams widen it for a long H)
-    graph_gap_mm: float = 12.0      # between the pole room and the graphs
-    column_gap_mm: float = 16.0     # between the graphs and the right column
-    top_gap_mm: float = 4.0         # below the title
-    bottom_gap_mm: float = 9.0      # above the scale captions
-    strip_gap_mm: float = 13.0      # between two strips
-    dim_room_mm: float = 9.0        # the dimension of H beside the fan of rays
-    max_pole_room_mm: float = 90.0  # the work diagrams' pole room grows up to this, then μ_M grows
-    block_drop_mm: float = 4.0      # a formula block's first line below its strip's top
-
-    def strip_mm(self, sheet: Sheet) -> tuple[float, float]:
-        """(top of the first strip, height of a strip) on the sheet, mm."""
-        top = sheet.top + self.top_gap_mm
-        bottom = sheet.caption_y - self.bottom_gap_mm
-        return top, (bottom - top - 2 * self.strip_gap_mm) / 3.0
-
-    def strip_tops(self, *, top: float, strip_mm: float) -> tuple[float, float, float]:
-        """The tops of the three strips, mm."""
-        gap = self.strip_gap_mm
-        return top, top + strip_mm + gap, top + 2 * (strip_mm + gap)
-
-
-LAYOUT = StripsLayout()
-
-
 def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: int, name: str,
                 pos: str) -> tuple[list[Axis], list[Text]]:
     """A strip's φ and value axes, their tick labels that would cover what is drawn left out, and the
     position numbers that lost their place set beside their ticks (call after registering the strip)."""
     full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
-    ax_phi, ax_y = _clear_tick_labels(full_phi, occ), _clear_tick_labels(ax_y, occ, keep_values=True)
-    _register(occ, ax_phi, ax_y)
+    ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True)
+    register(occ, ax_phi, ax_y)
     return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
 
 
@@ -471,7 +487,7 @@ def _s_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_s: 
                    enumerate(zip(sd.phi, pts_s)) if abs(q[1] - b_s.origin[1]) > 0.05]
     chords_s = [Line(pts_s[k], pts_s[k + 1], style=CHORD, name=f"chord-s-{k + 1}") for k in range(m)]
     dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
-    _register(occ, curve_s, *ordinates_s, *chords_s)
+    register(occ, curve_s, *ordinates_s, *chords_s)
     axes, pos_s = _strip_axes(b_s, occ, nt=nt, y_label=nt.quantity(sym_s, nt.unit("m")), m=m, name="s", pos="pos-s")
     return b_s, [*axes, *ordinates_s, *chords_s, curve_s, *dots_s, *pos_s]
 
@@ -508,7 +524,7 @@ def _v_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_v: 
     curve_v = Polyline(b_v.pts(Xs, Ys), style=RESULT, name="curve-v")
     chords_v = _chords_of_points(b_v, v_pts_x, v_pts_y)
     pole_els_v = _pole(b_v, v.H_mm, f"{nt.sym('calculus.P')}_1", "pole-v", occ)
-    _register(occ, curve_v, *rays_v, *proj_v, *chords_v)
+    register(occ, curve_v, *rays_v, *proj_v, *chords_v)
     axes, pos_v = _strip_axes(b_v, occ, nt=nt, y_label=nt.quantity(sym_v, nt.unit(ks.sd.units[0])), m=m, name="v",
                               pos="pos-v")
     dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')}", "H1", occ)
@@ -533,7 +549,7 @@ def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: 
     dots_a = [Point(p, radius_mm=0.55, name=f"dot-a-{k}") for k, p in enumerate(points_a)]
     curve_a = Polyline(b_a.pts(Xa, Ya), style=RESULT, name="curve-a")
     pole_els_a = _pole(b_a, a.H_mm, f"{nt.sym('calculus.P')}_2", "pole-a", occ)
-    _register(occ, curve_a, *rays_a, *proj_a)
+    register(occ, curve_a, *rays_a, *proj_a)
     axes, pos_a = _strip_axes(b_a, occ, nt=nt, y_label=nt.quantity(sym_a, nt.unit(ks.sd.units[1])), m=m, name="a",
                               pos="pos-a")
     dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')}", "H2", occ)
@@ -830,7 +846,7 @@ def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: 
     curve_r = Polyline(b_M.pts(np.asarray(M_r.phi) - phi0, M_r.M), style=RESULT, name="curve-M_r")
     steps, projections, rays = _mean_ordinates(ws, b_M, x, M_d, M_r)
     pole_els = _pole(b_M, ws.H, nt.sym("calculus.P"), "pole", occ)
-    _register(occ, curve_d, curve_r, *steps, *projections, *rays)
+    register(occ, curve_d, curve_r, *steps, *projections, *rays)
     axes, pos_M = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), m=len(x) - 1,
                               name="M", pos="pos-M")
     ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
@@ -851,7 +867,7 @@ def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     chords_r = Polyline(b_A.pts(x, wd.A_r.values), style=RESULT, name="chords-A_r")
     dots_A = [Point(p, radius_mm=0.5, name=f"dot-A_r-{k}") for k, p in enumerate(chords_r.points)]
     dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
-    _register(occ, chords_d, chords_r)
+    register(occ, chords_d, chords_r)
     axes, pos_A = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)), m=len(x) - 1,
                               name="A", pos="pos-A")
     names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]),
@@ -869,7 +885,7 @@ def _dE_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     ordinates_E = [Line(b_E.pt(xk, 0.0), b_E.pt(xk, ek), style=THIN, name=f"ordinate-dE-{k}")
                    for k, (xk, ek) in enumerate(zip(x, dE)) if abs(s_A.to_mm(float(ek))) > 0.05]
     dots_E = [Point(p, radius_mm=0.5, name=f"dot-dE-{k}") for k, p in enumerate(curve_E.points)]
-    _register(occ, curve_E, *ordinates_E)
+    register(occ, curve_E, *ordinates_E)
     axes, pos_E = _strip_axes(b_E, occ, nt=nt, y_label=nt.quantity(nt.sym("dE"), nt.unit(work_unit)), m=len(x) - 1,
                               name="dE", pos="pos-E")
     return b_E, [*axes, *ordinates_E, curve_E, *dots_E, *pos_E]

@@ -42,9 +42,10 @@ from graphmethods.scene import (
     notation as get_notation,
     pi_ticks,
 )
-from graphmethods.scene.elements import Element, Group, label_bbox
+from graphmethods.scene.elements import Element, Group
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label, Style
+from graphmethods.sheets.calculus import clear_tick_labels, register
 from graphmethods.sheets.layout import (
     TEXT_MM,
     Box,
@@ -74,29 +75,13 @@ def _cycle(obj, nt):
                      f"got {type(obj).__name__}")
 
 
-def _clear_ticks(axis: Axis, *curves) -> Axis:
-    """The axis with the tick labels that a curve runs through left out (the tick marks stay)."""
-    from dataclasses import replace
-
-    from graphmethods.scene.primitives import Label as PLabel
-
+def _clear_ticks(axis: Axis, *curves: Polyline) -> Axis:
+    """The axis with the tick labels that a curve runs through left out (the tick marks stay); only the
+    curves count, within 0.3 mm."""
     occ = Occupancy(pad_mm=0.3)
     for c in curves:
         occ.add_line(c.points)
-    labels = list(axis.tick_labels) if axis.tick_labels is not None else None
-    texts = [p for p in axis.primitives() if isinstance(p, PLabel)][:len(axis.ticks)]
-    if labels is None:
-        labels = [t.text for t in texts]
-    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-    for i, lab in zip(shown, texts):
-        if not occ.is_free(label_bbox(lab)):
-            labels[i] = ""
-    return replace(axis, tick_labels=tuple(labels))
-
-
-def _register(occ: Occupancy, *elements) -> None:
-    for e in elements:
-        occ.add_primitives(e.primitives())
+    return clear_tick_labels(axis, occ)
 
 
 def _piece(curve, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
@@ -255,7 +240,7 @@ def _moment_axes(g: _MomentGraph, ew: Any, nt: Notation, occ: Occupancy,
     cd = Polyline(g.frame.pts(ew.M_d.phi - g.phi0, ew.M_d.M), style=MAIN, name="curve-M_d")
     cr = Polyline(g.frame.pts(ew.M_r.phi - g.phi0, ew.M_r.M), style=MAIN, name="curve-M_r")
     ax_phi, ax_M = _clear_ticks(ax_phi, cd, cr), _clear_ticks(ax_M, cd, cr)
-    _register(occ, ax_phi, ax_M, cd, cr)
+    register(occ, ax_phi, ax_M, cd, cr)
     return ax_phi, ax_M, cd, cr
 
 
@@ -466,7 +451,7 @@ def moment_diagram(cycle: Any, *, mu_M: Any = None, mu_phi: Any = None, notation
     occ = sheet.occ
     ax_phi, ax_M, cd, cr = _moment_axes(g, ew, nt, occ, moment_unit)
     ordinates = _closing_ordinates(g, ew)
-    _register(occ, *ordinates)
+    register(occ, *ordinates)
     regions, annotations = _intervals(g, ew, nt, occ, work_unit)
     points = _boundary_points(g, ew, occ)
     names = _moment_names(g, ew, nt, occ, cd, cr)
@@ -656,7 +641,7 @@ def _staircase(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy,
     dim = Dimension((x_dim, y(E[imin])), (x_dim, y(E[imax])),
                     f"{nt.sym('delta_W_max')} = {nt.number(ew.delta_W_max)} {nt.unit(work_unit)}",
                     size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
-    _register(occ, ax, start_line, *vectors, *levels, *ext, dim)
+    register(occ, ax, start_line, *vectors, *levels, *ext, dim)
     return ax, start_line, vectors, levels, ext, dim
 
 
@@ -863,7 +848,7 @@ def _energy_axes(g: _EnergyGraph, nt: Notation, occ: Occupancy, sym: str,
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     curve = Polyline(g.frame.pts(g.phi - g.phi0, g.Y), style=MAIN, name="curve-E")
     ax_phi, ax_E = _clear_ticks(ax_phi, curve), _clear_ticks(ax_E, curve)
-    _register(occ, ax_phi, ax_E, curve)
+    register(occ, ax_phi, ax_E, curve)
     return ax_phi, ax_E, curve
 
 
@@ -882,7 +867,7 @@ def _energy_extremes(g: _EnergyGraph, ew: Any, occ: Occupancy,
         guides.append(Line(at, (x_dim + 2.0, at[1]), style=DASHED, name=f"level-{key}"))
     dim = Dimension((x_dim, g.P(*ext_pts[k_min])[1]), (x_dim, g.P(*ext_pts[k_max])[1]), dim_text,
                     size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
-    _register(occ, *guides, dim)
+    register(occ, *guides, dim)
     marks: list[Element] = []
     for key, (ph, v) in ext_pts.items():
         at = g.P(ph, v)
