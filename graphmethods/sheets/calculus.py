@@ -797,7 +797,7 @@ def _work_scales(M_d: Any, M_r: Any, phi: np.ndarray, study: Any, sheet: Sheet, 
     probe_wd = _construction(M_d, M_r, phi, study, mu_phi=1.0, mu_M=1.0, H_mm=1.0)
     right_col = _column_width(_accuracy_rows(nt, probe_wd, work_unit),
                               f"{nt.sym('calculus.A_d')}(φ_T) − {nt.sym('calculus.A_r')}(φ_T) = −1234 J "
-                              f"({nt.word('calculus.closure')})")
+                              f"({nt.word('closure')})")
     A_span = max(float(np.ptp(np.concatenate((probe_wd.A_d.values, probe_wd.A_r.values, [0.0])))), 1e-300)
     s_phi, s_M, H, room = _pick_pole((x0, x1), right_col, period, band_h, s_M, nt=nt, A_span=A_span,
                                      mu_M_given=mu_M is not None, mu_phi=mu_phi, H_mm=H_mm)
@@ -906,7 +906,7 @@ def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, 
                                                       f"H = {nt.number(ws.H)} {mm} ({picked})"], "formula-A", occ)
     closure = f"{A_d}({phi}_{{T}}) − {A_r}({phi}_{{T}}) = " \
               f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {wu} " \
-              f"({nt.word('calculus.closure')})"
+              f"({nt.word('closure')})"
     elements += _side_block(rx, bands[2].top + drop, [f"{nt.sym('dE')} = {A_d} − {A_r};  {ws.s_A.symbol} = "
                                                       f"{nt.number(wd.mu_A)} {wu}/{mm}", closure], "formula-dE", occ)
     table = _table(_accuracy_rows(nt, wd, work_unit), align="lrrrr", name="accuracy-table", right=x1,
