@@ -25,10 +25,12 @@ figure says which.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
@@ -63,6 +65,7 @@ PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
 CHORD = Style(width_mm=0.18, stroke="#000000")
 RESULT = MAIN
 TWO_PI = 2.0 * math.pi
+Rows = Sequence[Sequence[str]]
 
 def _scale_unit(nt: Notation, u: str) -> str:
     """A unit for a scale caption: compound units in brackets, ``(m/s)/mm``."""
@@ -72,7 +75,8 @@ def _scale_unit(nt: Notation, u: str) -> str:
 
 # ----------------------------------------------------------------------------- drawing helpers
 
-def smooth_through(x, y, *, period: float | None = None, per_interval: int = 12) -> tuple[np.ndarray, np.ndarray]:
+def smooth_through(x: ArrayLike, y: ArrayLike, *, period: float | None = None,
+                   per_interval: int = 12) -> tuple[np.ndarray, np.ndarray]:
     """A smooth curve through the points (x_k, y_k), as drawn with a French curve.
 
     Cubic Hermite pieces with Catmull–Rom tangents (central differences), closed across the
@@ -109,7 +113,8 @@ def smooth_through(x, y, *, period: float | None = None, per_interval: int = 12)
     return np.append(X.ravel(), x[-1]), np.append(Y.ravel(), y[-1])
 
 
-def _periodic_points(x, y, period: float, lo: float, hi: float, extra: int = 0):
+def _periodic_points(x: ArrayLike, y: ArrayLike, period: float, lo: float, hi: float,
+                     extra: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """The points of a periodic sample over [lo, hi], with the neighbour just outside each end
     (and ``extra`` more), for drawing over [lo, hi]."""
     x = np.asarray(x, dtype=float)
@@ -125,7 +130,7 @@ def _periodic_points(x, y, period: float, lo: float, hi: float, extra: int = 0):
     return ext_x[keep], ext_y[keep]
 
 
-def _clip_curve(X, Y, lo: float, hi: float):
+def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.ndarray, np.ndarray]:
     """The polyline (X, Y) cut to lo ≤ X ≤ hi (ends interpolated)."""
     inside = (X > lo) & (X < hi)
     xs = np.concatenate(([lo], X[inside], [hi]))
@@ -244,7 +249,7 @@ class _Band:
     """One graph of a stacked sheet: a horizontal strip with its φ axis and value axis."""
 
     def __init__(self, *, x0: float, top: float, height: float, s_phi: Scale, s_y: Scale, lo: float, hi: float,
-                 period: float, align: str = "middle"):
+                 period: float, align: str = "middle") -> None:
         self.lo, self.hi = min(lo, 0.0), max(hi, 0.0)
         self.top, self.height = top, height
         used = s_y.to_mm(self.hi - self.lo)
@@ -254,17 +259,17 @@ class _Band:
         self.frame = Frame(self.origin, s_phi, s_y)
         self.s_phi, self.s_y, self.period = s_phi, s_y, period
 
-    def pt(self, phi, y):
+    def pt(self, phi: float, y: float) -> tuple[float, float]:
         return self.frame.pt(phi, y)
 
-    def pts(self, phi, y):
+    def pts(self, phi: ArrayLike, y: ArrayLike) -> tuple[tuple[float, float], ...]:
         return self.frame.pts(phi, y)
 
-    def mm(self, dx_mm: float, dy_mm: float):
+    def mm(self, dx_mm: float, dy_mm: float) -> tuple[float, float]:
         """A page point dx mm right of and dy mm above the origin."""
         return (self.origin[0] + dx_mm, self.origin[1] - dy_mm)
 
-    def axes(self, *, nt, y_label: str, m: int, name: str, y_ticks: bool = True):
+    def axes(self, *, nt: Notation, y_label: str, m: int, name: str, y_ticks: bool = True) -> tuple[Axis, Axis]:
         step_mm = self.s_phi.to_mm(self.period / m)
         phi_ticks = tuple(self.period * k / m for k in range(m + 1))
         ax_phi = Axis(self.origin, self.s_phi, "x", min_value=0.0, max_value=self.period, ticks=phi_ticks,
@@ -280,7 +285,7 @@ class _Band:
         return ax_phi, ax_y
 
 
-def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy):
+def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy) -> list[Element]:
     """The pole on the extension of the φ axis, H mm left of the origin, named."""
     at = band.mm(-H_mm, 0.0)
     line = Line(at, band.origin, style=THIN, name=f"{name}-axis-extension")
@@ -291,13 +296,14 @@ def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy):
     return [line, dot, text]
 
 
-def _fan_side(ordinates_mm) -> bool:
+def _fan_side(ordinates_mm: ArrayLike) -> bool:
     """True when the fan of rays is narrower below the axis (the dimension of H goes there)."""
     ords = np.asarray(ordinates_mm, dtype=float)
     return float(max(-ords.min(), 0.0)) <= float(max(ords.max(), 0.0))
 
 
-def _h_dimension(band: _Band, H_mm: float, ordinates_mm, text: str, name: str, occ: Occupancy):
+def _h_dimension(band: _Band, H_mm: float, ordinates_mm: ArrayLike, text: str, name: str,
+                 occ: Occupancy) -> list[Element]:
     """Dimension of the pole distance H, clear of the fan of rays: beyond its narrower side."""
     p, q = band.mm(-H_mm, 0.0), band.origin
     ords = np.asarray(ordinates_mm, dtype=float)
@@ -311,7 +317,7 @@ def _h_dimension(band: _Band, H_mm: float, ordinates_mm, text: str, name: str, o
     return [dim, Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"dimension-{name}-text")]
 
 
-def _side_block(x: float, y: float, lines, name: str, occ: Occupancy):
+def _side_block(x: float, y: float, lines: list[str], name: str, occ: Occupancy) -> list[Text]:
     """Lines of text in the right column (scale formulas of one graph)."""
     els = []
     for k, t in enumerate(lines):
@@ -321,14 +327,14 @@ def _side_block(x: float, y: float, lines, name: str, occ: Occupancy):
     return els
 
 
-def _table(rows, *, align: str, name: str, right: float | None = None, left: float | None = None,
+def _table(rows: Rows, *, align: str, name: str, right: float | None = None, left: float | None = None,
            top: float | None = None, bottom: float | None = None) -> Table:
     """A table whose columns fit their texts (bold headings measured wide), placed by one corner."""
-    rows = tuple(tuple(r) for r in rows)
+    cells = tuple(tuple(r) for r in rows)
     pad = 1.5
-    widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(rows))
-                   + 2 * pad + 1.0 for j in range(len(rows[0])))
-    w, h = sum(widths), 6.0 * len(rows)
+    widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(cells))
+                   + 2 * pad + 1.0 for j in range(len(cells[0])))
+    w, h = sum(widths), 6.0 * len(cells)
     if left is not None:
         x = left
     else:
@@ -339,7 +345,7 @@ def _table(rows, *, align: str, name: str, right: float | None = None, left: flo
     else:
         assert bottom is not None, "a table is placed by its top or its bottom edge"
         y = bottom - h
-    return Table((x, y), rows, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
+    return Table((x, y), cells, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
                  padding_mm=pad, name=name)
 
 
@@ -371,14 +377,15 @@ def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) ->
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
-def _fmt(nt, value: float, sig: int = 3) -> str:
+def _fmt(nt: Notation, value: float, sig: int = 3) -> str:
     return nt.number(float(value), sig=sig)
 
 
 # ----------------------------------------------------------------------------- 1. kinematic diagrams
 
-def _comparison_rows(nt, sd, sym_v: str, sym_a: str):
-    rows = [(nt.word("calculus.construction"), nt.word("calculus.against"), nt.word("calculus.largest"),
+def _comparison_rows(nt: Notation, sd: gc.SliderDiagrams, sym_v: str, sym_a: str) -> list[tuple[str, ...]]:
+    rows: list[tuple[str, ...]] = [(nt.word("calculus.construction"), nt.word("calculus.against"),
+                                    nt.word("calculus.largest"),
              nt.word("calculus.on_sheet"))]
     what = {"mid-intervals": nt.word("calculus.at_mid"), "positions": nt.word("calculus.at_positions")}
     against = {"analytic": nt.word("calculus.analytic"), "velocity plans": nt.word("calculus.plans"),
@@ -390,13 +397,13 @@ def _comparison_rows(nt, sd, sym_v: str, sym_a: str):
     return rows
 
 
-def _column_width(rows, *lines) -> float:
+def _column_width(rows: Rows, *lines: str) -> float:
     """Width of the right column: the table's, or the widest line of text beside it."""
     table = _table(rows, align="l" * len(rows[0]), name="probe", left=0.0, top=0.0)
     return max([table.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in lines]) + 2.0
 
 
-def _slider_subject(subject, nt):
+def _slider_subject(subject: Any, nt: Notation) -> tuple[Any, float | None, str]:
     """(mechanism, omega_1, problem text in the notation's language) from a Case or a mechanism."""
     if hasattr(subject, "mechanism") and hasattr(subject, "omega_m"):
         return subject.mechanism, float(subject.omega_m), problem_title(subject, nt)
@@ -640,7 +647,7 @@ def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = Non
 
 # ----------------------------------------------------------------------------- 2. work diagrams
 
-def _moment_subject(subject, m: int, nt):
+def _moment_subject(subject: Any, m: int, nt: Notation) -> tuple[Any, Any, np.ndarray, Any, str]:
     """(M_d, M_r, phi, study-or-None, problem text in the notation's language) from a Study, a Case, a
     cycle problem or a pair."""
     if hasattr(subject, "moments") and hasattr(subject, "model"):            # a Study
@@ -671,26 +678,27 @@ def _moment_subject(subject, m: int, nt):
     return M_d, M_r, phi, None, prob
 
 
-def _accuracy_rows(nt, wd, work_unit: str):
+def _accuracy_rows(nt: Notation, wd: gc.WorkDiagrams, work_unit: str) -> list[tuple[str, ...]]:
     wu, mm = nt.unit(work_unit), nt.unit("mm")
     noise = 1e-9 * (float(np.abs(np.concatenate((wd.A_d.values, wd.A_r.values))).max()) or 1.0)
 
-    def cells(value, value_mm):             # rounding noise of an exact construction is written 0
+    def cells(value: float | None, value_mm: float) -> tuple[str, str]:   # rounding noise of an exact
+        # construction is written 0
         if value is None:
             return "", ""
         exact = abs(value) <= noise
         return (f"{_fmt(nt, 0.0 if exact else value)} {wu}", f"{_fmt(nt, 0.0 if exact else value_mm, 2)} {mm}")
 
     on_sheet = nt.word("calculus.on_sheet")
-    rows = [(nt.word("calculus.construction"), nt.word("calculus.at_ends"), on_sheet, nt.word("calculus.inside"),
-             on_sheet)]
+    rows: list[tuple[str, ...]] = [(nt.word("calculus.construction"), nt.word("calculus.at_ends"), on_sheet,
+                                    nt.word("calculus.inside"), on_sheet)]
     symbol = {"A_d": nt.sym("calculus.A_d"), "A_r": nt.sym("calculus.A_r"), "ΔE": nt.sym("dE")}
     for r in wd.comparison():
         rows.append((symbol[r["quantity"]],) + cells(r["error"], r["error_mm"]) + cells(r["inside"], r["inside_mm"]))
     return rows
 
 
-def _accuracy_title(nt, study) -> str:
+def _accuracy_title(nt: Notation, study: Any) -> str:
     title = nt.word("calculus.accuracy_work")
     if study is not None:
         drawn = nt.word("calculus.drawn", M=nt.sym("M_r"))
@@ -970,7 +978,7 @@ def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M:
                  extra_scales=scales, notes=notes)
 
 
-def _curve_names(occ: Occupancy, pairs, band: str):
+def _curve_names(occ: Occupancy, pairs: Iterable[tuple[Polyline, str, float]], band: str) -> list[Text]:
     """Names of curves placed beside their right ends (or along them), where nothing is drawn."""
     out = []
     for curve, text, axis_y in pairs:

@@ -64,7 +64,7 @@ OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
 # ----------------------------------------------------------------------------- common parts
 
-def _cycle(obj, nt):
+def _cycle(obj: Any, nt: Notation) -> tuple[Any, str]:
     """(ExcessWork, problem text in the notation's language) from a cycle or a problem that has one."""
     if hasattr(obj, "E") and hasattr(obj, "work"):
         return obj, ""
@@ -84,7 +84,7 @@ def _clear_ticks(axis: Axis, *curves: Polyline) -> Axis:
     return clear_tick_labels(axis, occ)
 
 
-def _piece(curve, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
+def _piece(curve: Any, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
     """The points of a moment curve over [a, b]: right limit at a, inner knots (jumps kept), left limit at b."""
     inner = (curve.phi > a) & (curve.phi < b)
     left_b = curve.limits(np.array([b]))[0][0]
@@ -94,11 +94,11 @@ def _piece(curve, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
     return phi, M
 
 
-def _curve_points(curve) -> tuple[np.ndarray, np.ndarray]:
+def _curve_points(curve: Any) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(curve.phi, dtype=float), np.asarray(curve.M, dtype=float)
 
 
-def _point_value(M_d, M_r, phi: float) -> float:
+def _point_value(M_d: Any, M_r: Any, phi: float) -> float:
     """Where to put the dot of a boundary: on the curve that is continuous there (M_d first)."""
     ld, rd = (float(v[0]) for v in M_d.limits(np.array([phi])))
     lr, rr = (float(v[0]) for v in M_r.limits(np.array([phi])))
@@ -109,7 +109,7 @@ def _point_value(M_d, M_r, phi: float) -> float:
     return rd
 
 
-def _box_centres(inner, w: float, h: float, pole) -> list:
+def _box_centres(inner: Any, w: float, h: float, pole: tuple[float, float]) -> list[tuple[float, float]]:
     """Centres where a w × h box lies inside the polygon ``inner``: nearest the pole first.
 
     The feasible centres are the polygon eroded by the box (the intersection of the
@@ -133,7 +133,8 @@ def _box_centres(inner, w: float, h: float, pole) -> list:
     return [(p.x, p.y) for p in out]
 
 
-def _interior_candidates(poly, step: float = 1.5, limit: int = 600):
+def _interior_candidates(poly: Any, step: float = 1.5,
+                         limit: int = 600) -> tuple[list[tuple[float, float]], tuple[float, float] | None]:
     """Points inside a shapely polygon, nearest its pole of inaccessibility first."""
     import shapely
     from shapely.ops import polylabel
@@ -464,8 +465,9 @@ def moment_diagram(cycle: Any, *, mu_M: Any = None, mu_phi: Any = None, notation
 
 # ----------------------------------------------------------------------------- 2. excess-work table
 
-def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=None, work_unit: str = "J",
-                      moment_unit: str = "N·m", title_block: bool = True, name: str = "excess-work-table") -> Scene:
+def excess_work_table(cycle: Any, *, notation: Any = "en", page: Page | None = None, title: str | None = None,
+                      problem: Any = None, work_unit: str = "J", moment_unit: str = "N·m", title_block: bool = True,
+                      name: str = "excess-work-table") -> Scene:
     """The excess-work table drawn as a table: intervals, (angles), (areas), works, running energy.
 
     The rows of the highest and lowest energy are marked, and E_max, E_min and
@@ -483,8 +485,7 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
     ew, prob = _cycle(cycle, nt)
     has_scales = ew.areas_mm2 is not None and ew.mu_M is not None and ew.mu_phi is not None
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("excess_work_table"),
-                   problem=prob if problem is None else problem, title_block=title_block,
-                   has_scales=has_scales)
+                  problem=prob if problem is None else problem, title_block=title_block, has_scales=has_scales)
     x0, y0, x1, y1 = sheet.box
     unit = nt.unit(work_unit)
     A, E = nt.sym("A"), nt.sym("E")
@@ -497,7 +498,7 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
              f"{nt.word('level')} {nt.quantity(E, work_unit)}", ""]
     ncol = len(head)
 
-    def mark(k):
+    def mark(k: int) -> str:
         if k == ew.index_E_max:
             return nt.sym("E_max")
         if k == ew.index_E_min:
