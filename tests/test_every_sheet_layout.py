@@ -51,10 +51,7 @@ NOT_DRAWN = {
 }
 
 #: known failures while they are being fixed: (problem, figure, language) -> reason
-KNOWN = {
-    **{("W4-exact", "work_diagrams", lang): "the ΔE band is 12 mm tall at μ_A = 2.618 J/mm: nice_ticks gives it "
-       "no tick but 0, which is not written" for lang in LANGS},
-}
+KNOWN: dict[tuple[str, str, str], str] = {}
 
 CASES = [(p, f) for p in builtin.names() for f in (CYCLE_FIGURES if p in builtin.CYCLES else LINKAGE_FIGURES)]
 

@@ -299,3 +299,23 @@ def test_small_curve_helper_passes_through_its_points_and_closes():
     np.testing.assert_allclose(np.interp(np.linspace(0, 6, 50), X, Y), np.sin(np.linspace(0, 6, 50)), atol=5e-3)
     with pytest.raises(InputError):
         calculus.smooth_through([1.0], [2.0])
+
+
+def test_a_strip_too_low_for_values_7_mm_apart_gets_closer_values_not_none():
+    # W4-exact's ΔE swings ±5π J (ΔE = 20φ − ∫M_r, M_r a triangle 0 … 40 … 0 N·m) and μ_A = μ_M μ_φ H
+    scene = calculus.work_diagrams(problems.w4_exact())
+    mu_phi, mu_M, mu_A = (s.per_mm for s in scene.scales())
+    H = float(scene.notes[-1].split()[2])
+    assert mu_A == pytest.approx(mu_M * mu_phi * H, rel=1e-12)
+    swing_mm = 5 * math.pi / mu_A
+    assert swing_mm < 7.0                                   # no value but 0 at 7 mm apart on either side
+    ax = scene.element("axis-dE")
+    written = [(v, t) for v, t in zip(ax.ticks, ax.tick_labels) if v != 0 and t]
+    assert written, "the ΔE axis has no value written"
+    gaps = np.diff([v / mu_A for v in ax.ticks])
+    assert 3.5 <= gaps.min() and all(abs(v) / mu_A <= swing_mm + 1e-9 for v, _ in written)
+    texts = record(scene).texts()
+    assert all(t in texts for _, t in written)
+    # a strip tall enough keeps its values at least 7 mm apart
+    ax_A = scene.element("axis-A")
+    assert np.diff([v / mu_A for v in ax_A.ticks]).min() >= 7.0 - 1e-9

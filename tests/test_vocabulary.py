@@ -27,10 +27,8 @@ NOT_YET_MIGRATED = {
     "scene/steps.py",
     "sheets/acceleration.py",
     "sheets/acceleration_worksheet.py",
-    "sheets/calculus.py",
     "sheets/check.py",
     "sheets/check_acceleration.py",
-    "sheets/cycle_panels.py",
     "sheets/drive_scheme.py",
     "sheets/dynamics.py",
     "sheets/flywheel_design.py",
@@ -38,9 +36,7 @@ NOT_YET_MIGRATED = {
     "sheets/force_analysis_sheet.py",
     "sheets/forces.py",
     "sheets/kinematic_analysis_sheet.py",
-    "sheets/motion.py",
     "sheets/steps.py",
-    "sheets/translating_graph.py",
     "sheets/wittenbauer.py",
     "sheets/worksheets.py",
 }
@@ -134,7 +130,8 @@ def _literal_keys(method: str) -> set[tuple[str, str]]:
     for path in PACKAGE.rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == method
-                    and len(node.args) == 1 and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
+                    and len(node.args) == 1 and isinstance(node.args[0], ast.Constant)
+                    and isinstance(node.args[0].value, str)):
                 keys.add((path.relative_to(PACKAGE).as_posix(), node.args[0].value))
     return keys
 

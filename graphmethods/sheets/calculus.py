@@ -25,8 +25,12 @@ figure says which.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
@@ -43,14 +47,14 @@ from graphmethods.scene import (
     Table,
     Text,
     format_value,
-    in_language,
     markup,
     nice_ticks,
     notation as get_notation,
     pick_angle_scale,
     pick_scale,
 )
-from graphmethods.scene.elements import label_bbox
+from graphmethods.scene.elements import Element, label_bbox
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, problem_title
 
@@ -61,81 +65,18 @@ PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
 CHORD = Style(width_mm=0.18, stroke="#000000")
 RESULT = MAIN
 TWO_PI = 2.0 * math.pi
+Rows = Sequence[Sequence[str]]
 
-# ----------------------------------------------------------------------------- words of this module
-
-#: notation words this module needs that scene/notation.py lacks (en, ru, zh)
-WORDS = {
-    "kinematic_title": ("Kinematic diagrams of the slider", "Кинематические диаграммы ползуна", "滑块运动线图"),
-    "work_title": ("Work diagrams by graphical integration", "Диаграммы работ (графическое интегрирование)",
-                   "功线图（图解积分法）"),
-    "construction": ("Construction", "Построение", "作图"),
-    "against": ("compared with", "сравнение с", "比较对象"),
-    "largest": ("max. difference", "расхождение", "最大误差"),
-    "on_sheet": ("on the sheet", "на чертеже", "图上"),
-    "analytic": ("analytic", "аналитически", "解析解"),
-    "plans": ("velocity plans", "планы скоростей", "速度图"),
-    "acc_plans": ("acceleration plans", "планы ускорений", "加速度图"),
-    "accuracy_work": ("Accuracy against the exact integrals", "Точность относительно точных интегралов",
-                      "相对精确积分的作图误差"),
-    "at_mid": ("at mid-intervals", "в серединах", "区间中点"),
-    "at_positions": ("at the positions", "в положениях", "各位置"),
-    "at_ends": ("at interval ends", "на концах участков", "区间端点"),
-    "inside": ("inside the chords", "внутри хорд", "弦内"),
-    "picked": ("picked to fit", "выбрано по месту", "自动选取"),
-    "given": ("given", "задано", "给定"),
-    "positions": ("positions", "положения", "位置"),
-    "drawn": ("{M} drawn through the positions", "{M} построен по точкам положений", "{M}按各位置绘制"),
-    "closure": ("closure", "замыкание", "闭合"),
-    "comparison": ("Largest differences from the velocity and acceleration plans and the analytic values",
-                   "Наибольшие расхождения с планами скоростей, ускорений и аналитическим расчётом",
-                   "与速度图、加速度图及解析解的最大误差"),
-}
-
-#: symbols (markup) of this module, en / ru / zh
-SYMBOLS = {
-    "s": ("s", "S", "s"),
-    "v": ("v", "V", "v"),
-    "a": ("a", "a", "a"),
-    "mu_s": ("μ_s", "μ_S", "μ_s"),
-    "mu_v": ("μ_v", "μ_V", "μ_v"),
-    "mu_a": ("μ_a", "μ_a", "μ_a"),
-    "mu_t": ("μ_t", "μ_t", "μ_t"),
-    "A_d": ("A_d", "A_д", "W_d"),
-    "A_r": ("A_r", "A_с", "W_r"),
-    "mu_A": ("μ_A", "μ_A", "μ_W"),
-    "P": ("P", "P", "P"),
-}
-
-#: units the profiles lack (ru); the others pass through
-UNITS_RU = {"m/s": "м/с", "m/s²": "м/с²", "m/rad": "м/рад", "m/rad²": "м/рад²", "s": "с", "m": "м", "J": "Дж",
-            "N·m": "Н·м", "rad": "рад", "mm": "мм", "kG·m": "кГ·м"}
-
-
-def word(nt, key: str) -> str:
-    """A word of this module in the profile of ``nt``."""
-    return in_language(WORDS[key], nt)
-
-
-def sym(nt, key: str) -> str:
-    """A symbol of this module in the profile of ``nt``."""
-    return in_language(SYMBOLS[key], nt)
-
-
-def unit(nt, u: str) -> str:
-    """A unit as the profile writes it."""
-    return UNITS_RU.get(u, u) if nt.code == "ru" else nt.unit(u)
-
-
-def _scale_unit(nt, u: str) -> str:
+def _scale_unit(nt: Notation, u: str) -> str:
     """A unit for a scale caption: compound units in brackets, ``(m/s)/mm``."""
-    t = unit(nt, u)
+    t = nt.unit(u)
     return f"({t})" if "/" in t else t
 
 
 # ----------------------------------------------------------------------------- drawing helpers
 
-def smooth_through(x, y, *, period: float | None = None, per_interval: int = 12) -> tuple[np.ndarray, np.ndarray]:
+def smooth_through(x: ArrayLike, y: ArrayLike, *, period: float | None = None,
+                   per_interval: int = 12) -> tuple[np.ndarray, np.ndarray]:
     """A smooth curve through the points (x_k, y_k), as drawn with a French curve.
 
     Cubic Hermite pieces with Catmull–Rom tangents (central differences), closed across the
@@ -172,7 +113,8 @@ def smooth_through(x, y, *, period: float | None = None, per_interval: int = 12)
     return np.append(X.ravel(), x[-1]), np.append(Y.ravel(), y[-1])
 
 
-def _periodic_points(x, y, period: float, lo: float, hi: float, extra: int = 0):
+def _periodic_points(x: ArrayLike, y: ArrayLike, period: float, lo: float, hi: float,
+                     extra: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """The points of a periodic sample over [lo, hi], with the neighbour just outside each end
     (and ``extra`` more), for drawing over [lo, hi]."""
     x = np.asarray(x, dtype=float)
@@ -188,7 +130,7 @@ def _periodic_points(x, y, period: float, lo: float, hi: float, extra: int = 0):
     return ext_x[keep], ext_y[keep]
 
 
-def _clip_curve(X, Y, lo: float, hi: float):
+def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.ndarray, np.ndarray]:
     """The polyline (X, Y) cut to lo ≤ X ≤ hi (ends interpolated)."""
     inside = (X > lo) & (X < hi)
     xs = np.concatenate(([lo], X[inside], [hi]))
@@ -196,17 +138,29 @@ def _clip_curve(X, Y, lo: float, hi: float):
     return xs, ys
 
 
-def _register(occ: Occupancy, *elements) -> None:
+def register(occ: Occupancy, *elements: Element) -> None:
+    """Register everything some elements draw, so labels placed later keep off it.
+
+    (The cycle figures' one copy, also used by :mod:`graphmethods.sheets.energy`; its home is
+    :class:`graphmethods.sheets.layout.Occupancy`, as ``FastOccupancy.register`` has it.)
+    """
     for e in elements:
         occ.add_primitives(e.primitives())
 
 
-def _clear_tick_labels(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
+def clear_tick_labels(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
     """The axis with the tick labels that would cover something already drawn left out (marks stay).
 
     With ``keep_values`` (a value axis) an axis is never left without values: when every label
     on its side would cover something, they go on the other side; when that is full too, the
     labels that cover no text stay (a thin line may run through a number).
+
+    >>> from graphmethods.scene import Scale
+    >>> occ = Occupancy()
+    >>> occ.add_line(((5.0, 85.0), (30.0, 85.0)))                   # a line through the value 10
+    >>> ax = Axis((10.0, 95.0), Scale("μ", "J", 1.0), "y", max_value=30.0, ticks=(0.0, 10.0, 20.0))
+    >>> clear_tick_labels(ax, occ).tick_labels
+    ('0', '', '20')
     """
     from dataclasses import replace
 
@@ -255,11 +209,47 @@ def _number_labels(m: int, step_mm: float) -> tuple[str, ...]:
     return tuple(str(i) if i % k == 0 or i == m else "" for i in range(m + 1))
 
 
+@dataclass(frozen=True)
+class StripsLayout:
+    """The millimetre constants of the calculus sheets: three strips stacked on the left (each graph
+    with its pole left of it), a column of scale formulas and a table on the right.
+
+    >>> StripsLayout().strip_tops(top=20.0, strip_mm=50.0)
+    (20.0, 83.0, 146.0)
+    """
+
+    pole_room_mm: float = 44.0      # left of the graphs for the poles (the work diagrams widen it for a long H)
+    graph_gap_mm: float = 12.0      # between the pole room and the graphs
+    column_gap_mm: float = 16.0     # between the graphs and the right column
+    top_gap_mm: float = 4.0         # below the title
+    bottom_gap_mm: float = 9.0      # above the scale captions
+    strip_gap_mm: float = 13.0      # between two strips
+    dim_room_mm: float = 9.0        # the dimension of H beside the fan of rays
+    max_pole_room_mm: float = 90.0  # the work diagrams' pole room grows up to this, then μ_M grows
+    block_drop_mm: float = 4.0      # a formula block's first line below its strip's top
+    tick_gap_mm: float = 7.0        # at least between a value axis's values …
+    close_tick_gap_mm: float = 3.5  # … or this close in a strip too low for two values that far apart
+
+    def strip_mm(self, sheet: Sheet) -> tuple[float, float]:
+        """(top of the first strip, height of a strip) on the sheet, mm."""
+        top = sheet.top + self.top_gap_mm
+        bottom = sheet.caption_y - self.bottom_gap_mm
+        return top, (bottom - top - 2 * self.strip_gap_mm) / 3.0
+
+    def strip_tops(self, *, top: float, strip_mm: float) -> tuple[float, float, float]:
+        """The tops of the three strips, mm."""
+        gap = self.strip_gap_mm
+        return top, top + strip_mm + gap, top + 2 * (strip_mm + gap)
+
+
+LAYOUT = StripsLayout()
+
+
 class _Band:
     """One graph of a stacked sheet: a horizontal strip with its φ axis and value axis."""
 
     def __init__(self, *, x0: float, top: float, height: float, s_phi: Scale, s_y: Scale, lo: float, hi: float,
-                 period: float, align: str = "middle"):
+                 period: float, align: str = "middle") -> None:
         self.lo, self.hi = min(lo, 0.0), max(hi, 0.0)
         self.top, self.height = top, height
         used = s_y.to_mm(self.hi - self.lo)
@@ -269,48 +259,51 @@ class _Band:
         self.frame = Frame(self.origin, s_phi, s_y)
         self.s_phi, self.s_y, self.period = s_phi, s_y, period
 
-    def pt(self, phi, y):
+    def pt(self, phi: float, y: float) -> tuple[float, float]:
         return self.frame.pt(phi, y)
 
-    def pts(self, phi, y):
+    def pts(self, phi: ArrayLike, y: ArrayLike) -> tuple[tuple[float, float], ...]:
         return self.frame.pts(phi, y)
 
-    def mm(self, dx_mm: float, dy_mm: float):
+    def mm(self, dx_mm: float, dy_mm: float) -> tuple[float, float]:
         """A page point dx mm right of and dy mm above the origin."""
         return (self.origin[0] + dx_mm, self.origin[1] - dy_mm)
 
-    def axes(self, *, nt, y_label: str, m: int, name: str, y_ticks: bool = True):
+    def axes(self, *, nt: Notation, y_label: str, m: int, name: str, y_ticks: bool = True) -> tuple[Axis, Axis]:
         step_mm = self.s_phi.to_mm(self.period / m)
         phi_ticks = tuple(self.period * k / m for k in range(m + 1))
         ax_phi = Axis(self.origin, self.s_phi, "x", min_value=0.0, max_value=self.period, ticks=phi_ticks,
                       tick_labels=_number_labels(m, step_mm), label=nt.sym("phi"), size_mm=SMALL_MM,
                       skip_zero_label=self.lo < 0, name=f"axis-phi-{name}")
         room = self.s_y.per_mm * 2.0
-        ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=7.0) if y_ticks else ()
+        ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.tick_gap_mm) if y_ticks else ()
+        if y_ticks and not any(ticks):      # only 0, which is not written: closer values rather than none
+            ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.close_tick_gap_mm)
         ax_y = Axis(self.origin, self.s_y, "y", min_value=self.lo if self.lo < 0 else 0.0,
                     max_value=max(self.hi, room), ticks=ticks, label=y_label, size_mm=SMALL_MM,
                     decimal=nt.decimal, skip_zero_label=True, name=f"axis-{name}")
         return ax_phi, ax_y
 
 
-def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy):
+def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy) -> list[Element]:
     """The pole on the extension of the φ axis, H mm left of the origin, named."""
     at = band.mm(-H_mm, 0.0)
     line = Line(at, band.origin, style=THIN, name=f"{name}-axis-extension")
     dot = Point(at, radius_mm=0.7, name=f"{name}-point")
-    _register(occ, line, dot)
+    register(occ, line, dot)
     lab = occ.place_label(at, label, ("nw", "w", "sw", "n"), size_mm=TEXT_MM, gap_mm=1.0)
     text = Text((lab.x, lab.y), label, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-label")
     return [line, dot, text]
 
 
-def _fan_side(ordinates_mm) -> bool:
+def _fan_side(ordinates_mm: ArrayLike) -> bool:
     """True when the fan of rays is narrower below the axis (the dimension of H goes there)."""
     ords = np.asarray(ordinates_mm, dtype=float)
     return float(max(-ords.min(), 0.0)) <= float(max(ords.max(), 0.0))
 
 
-def _h_dimension(band: _Band, H_mm: float, ordinates_mm, text: str, name: str, occ: Occupancy):
+def _h_dimension(band: _Band, H_mm: float, ordinates_mm: ArrayLike, text: str, name: str,
+                 occ: Occupancy) -> list[Element]:
     """Dimension of the pole distance H, clear of the fan of rays: beyond its narrower side."""
     p, q = band.mm(-H_mm, 0.0), band.origin
     ords = np.asarray(ordinates_mm, dtype=float)
@@ -319,29 +312,29 @@ def _h_dimension(band: _Band, H_mm: float, ordinates_mm, text: str, name: str, o
     depth = (down if below else up) + 5.0
     # the normal of p→q (rightwards on paper) is (0, 1): a positive offset is below the axis
     dim = Dimension(p, q, "", offset_mm=depth if below else -depth, name=f"dimension-{name}")
-    _register(occ, dim)
+    register(occ, dim)
     lab = occ.place_label(dim.mid, text, ("s", "n") if below else ("n", "s"), size_mm=SMALL_MM, gap_mm=0.8)
     return [dim, Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"dimension-{name}-text")]
 
 
-def _side_block(x: float, y: float, lines, name: str, occ: Occupancy):
+def _side_block(x: float, y: float, lines: list[str], name: str, occ: Occupancy) -> list[Text]:
     """Lines of text in the right column (scale formulas of one graph)."""
     els = []
     for k, t in enumerate(lines):
         els.append(Text((x, y + k * (TEXT_MM * 1.45)), t, size_mm=TEXT_MM if k == 0 else SMALL_MM + 0.2,
                         name=f"{name}-{k + 1}"))
-    _register(occ, *els)
+    register(occ, *els)
     return els
 
 
-def _table(rows, *, align: str, name: str, right: float | None = None, left: float | None = None,
+def _table(rows: Rows, *, align: str, name: str, right: float | None = None, left: float | None = None,
            top: float | None = None, bottom: float | None = None) -> Table:
     """A table whose columns fit their texts (bold headings measured wide), placed by one corner."""
-    rows = tuple(tuple(r) for r in rows)
+    cells = tuple(tuple(r) for r in rows)
     pad = 1.5
-    widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(rows))
-                   + 2 * pad + 1.0 for j in range(len(rows[0])))
-    w, h = sum(widths), 6.0 * len(rows)
+    widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(cells))
+                   + 2 * pad + 1.0 for j in range(len(cells[0])))
+    w, h = sum(widths), 6.0 * len(cells)
     if left is not None:
         x = left
     else:
@@ -352,7 +345,7 @@ def _table(rows, *, align: str, name: str, right: float | None = None, left: flo
     else:
         assert bottom is not None, "a table is placed by its top or its bottom edge"
         y = bottom - h
-    return Table((x, y), rows, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
+    return Table((x, y), cells, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
                  padding_mm=pad, name=name)
 
 
@@ -384,31 +377,33 @@ def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) ->
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
-def _fmt(nt, value: float, sig: int = 3) -> str:
+def _fmt(nt: Notation, value: float, sig: int = 3) -> str:
     return nt.number(float(value), sig=sig)
 
 
 # ----------------------------------------------------------------------------- 1. kinematic diagrams
 
-def _comparison_rows(nt, sd, sym_v: str, sym_a: str):
-    rows = [(word(nt, "construction"), word(nt, "against"), word(nt, "largest"), word(nt, "on_sheet"))]
-    what = {"mid-intervals": word(nt, "at_mid"), "positions": word(nt, "at_positions")}
-    against = {"analytic": word(nt, "analytic"), "velocity plans": word(nt, "plans"),
-               "acceleration plans": word(nt, "acc_plans")}
+def _comparison_rows(nt: Notation, sd: gc.SliderDiagrams, sym_v: str, sym_a: str) -> list[tuple[str, ...]]:
+    rows: list[tuple[str, ...]] = [(nt.word("calculus.construction"), nt.word("calculus.against"),
+                                    nt.word("calculus.largest"),
+             nt.word("calculus.on_sheet"))]
+    what = {"mid-intervals": nt.word("calculus.at_mid"), "positions": nt.word("calculus.at_positions")}
+    against = {"analytic": nt.word("calculus.analytic"), "velocity plans": nt.word("calculus.plans"),
+               "acceleration plans": nt.word("calculus.acc_plans")}
     for r in sd.comparison():
         q = sym_v if r["quantity"] == "v" else sym_a
         rows.append((f"{q}, {what[r['where']]}", against[r["against"]],
-                     f"{_fmt(nt, r['error'])} {unit(nt, r['unit'])}", f"{_fmt(nt, r['error_mm'], 2)} {unit(nt, 'mm')}"))
+                     f"{_fmt(nt, r['error'])} {nt.unit(r['unit'])}", f"{_fmt(nt, r['error_mm'], 2)} {nt.unit('mm')}"))
     return rows
 
 
-def _column_width(rows, *lines) -> float:
+def _column_width(rows: Rows, *lines: str) -> float:
     """Width of the right column: the table's, or the widest line of text beside it."""
     table = _table(rows, align="l" * len(rows[0]), name="probe", left=0.0, top=0.0)
     return max([table.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in lines]) + 2.0
 
 
-def _slider_subject(subject, nt):
+def _slider_subject(subject: Any, nt: Notation) -> tuple[Any, float | None, str]:
     """(mechanism, omega_1, problem text in the notation's language) from a Case or a mechanism."""
     if hasattr(subject, "mechanism") and hasattr(subject, "omega_m"):
         return subject.mechanism, float(subject.omega_m), problem_title(subject, nt)
@@ -418,11 +413,188 @@ def _slider_subject(subject, nt):
                      f"linkage with a slider, got {type(subject).__name__}")
 
 
-def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, analogues: bool = False,
-                       mu_phi=None, mu_s=None, H1_mm: float | None = None, H2_mm: float | None = None,
-                       notation="en", page=None, title=None, problem=None, title_block: bool = True,
-                       name: str = "kinematic-diagrams") -> Scene:
+def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: int, name: str,
+                pos: str) -> tuple[list[Axis], list[Text]]:
+    """A strip's φ and value axes, their tick labels that would cover what is drawn left out, and the
+    position numbers that lost their place set beside their ticks (call after registering the strip)."""
+    full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
+    ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True)
+    register(occ, ax_phi, ax_y)
+    return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
+
+
+@dataclass(frozen=True)
+class _KinematicScales:
+    """The scales of the slider's diagrams and the construction they were picked for."""
+
+    s_phi: Scale
+    s_s: Scale
+    s_v: Scale
+    s_a: Scale
+    s_t: Scale | None
+    sd: gc.SliderDiagrams
+    motion: gc.SliderMotion
+    gx0: float
+    top: float
+    strip_mm: float
+    right_col: float
+
+    def all(self) -> tuple[Scale, ...]:
+        return (self.s_phi, self.s_s, self.s_v, self.s_a) + ((self.s_t,) if self.s_t is not None else ())
+
+
+def _kinematic_scales(mech: Any, sheet: Sheet, nt: Notation, *, m: int, omega_1: float | None, mu_phi: Any,
+                      mu_s: Any, H1_mm: float | None, H2_mm: float | None) -> _KinematicScales:
+    """μ_φ and μ_s fitted to the strips (or checked when given), then the poles H₁, H₂ and μ_v, μ_a, μ_t."""
+    L = LAYOUT
+    x0, _, x1, _ = sheet.box
+    motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
+    probe = gc.slider_diagrams(mech, m, mu_phi=1.0, mu_s=1.0, omega_1=omega_1, H1_mm=1.0, H2_mm=1.0)
+    right_col = _column_width(_comparison_rows(nt, probe, "v_B", "a_B"), "μ_a = μ_v/(μ_t·H_2) = 0.0001234 (m/s²)/mm")
+    gx0 = x0 + L.pole_room_mm + L.graph_gap_mm
+    gx1 = x1 - right_col - L.column_gap_mm
+    top, band_h = L.strip_mm(sheet)
+    if mu_phi is None:
+        s_phi = pick_angle_scale(TWO_PI, gx1 - gx0, symbol=nt.sym("mu_phi"))
+    else:
+        s_phi = mu_phi if isinstance(mu_phi, Scale) else Scale(nt.sym("mu_phi"), "rad", mu_phi)
+        if s_phi.to_mm(TWO_PI) > gx1 - gx0 + 1e-9:
+            raise InputError(f"the crank turn at {markup.plain(s_phi.caption())} needs {s_phi.to_mm(TWO_PI):.1f} "
+                             f"mm but the sheet leaves {gx1 - gx0:.1f} mm; give a larger μ_φ or none")
+    s_span = float(motion.s.max() - min(motion.s.min(), 0.0))
+    if mu_s is None:
+        s_s = pick_scale(s_span, band_h, symbol=nt.sym("calculus.mu_s"), unit=nt.unit("m"))
+    else:
+        s_s = mu_s if isinstance(mu_s, Scale) else Scale(nt.sym("calculus.mu_s"), nt.unit("m"), mu_s)
+        if s_s.to_mm(s_span) > band_h + 1e-9:
+            raise InputError(f"the stroke at {markup.plain(s_s.caption())} needs {s_s.to_mm(s_span):.1f} mm but "
+                             f"the strip leaves {band_h:.1f} mm; give a larger μ_s or none")
+    sd = gc.slider_diagrams(mech, m, mu_phi=s_phi.per_mm, mu_s=s_s.per_mm, omega_1=omega_1, H1_mm=H1_mm,
+                            H2_mm=H2_mm, band_v_mm=band_h - L.dim_room_mm, band_a_mm=band_h - L.dim_room_mm,
+                            pole_room_mm=L.pole_room_mm)
+    for H, key, given in ((sd.v.H_mm, "H1", H1_mm), (sd.a.H_mm, "H2", H2_mm)):
+        if given is not None and H > L.pole_room_mm + 1e-9:
+            raise InputError(f"{key} = {H:g} mm leaves no room for the pole left of its diagram "
+                             f"({L.pole_room_mm:g} mm); give a smaller {key}_mm or none")
+    u_v, u_a = sd.units
+    s_v = Scale(nt.sym("calculus.mu_v"), _scale_unit(nt, u_v), sd.v.mu)
+    s_a = Scale(nt.sym("calculus.mu_a"), _scale_unit(nt, u_a), sd.a.mu)
+    s_t = Scale(nt.sym("calculus.mu_t"), nt.unit("s"), sd.mu_t) if sd.mu_t is not None else None
+    return _KinematicScales(s_phi, s_s, s_v, s_a, s_t, sd, motion, gx0, top, band_h, right_col)
+
+
+def _s_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_s: str) -> tuple[_Band, list[Element]]:
+    """Strip 1: s(φ), exact, with the ordinates of the positions and the chords between them."""
+    motion, sd = ks.motion, ks.sd
+    b_s = _Band(x0=ks.gx0, top=ks.top, height=ks.strip_mm, s_phi=ks.s_phi, s_y=ks.s_s, lo=float(motion.s.min()),
+                hi=float(motion.s.max()), period=TWO_PI)
+    curve_s = Polyline(b_s.pts(motion.phi, motion.s), style=RESULT, name="curve-s")
+    pts_s = b_s.pts(sd.phi, sd.s)
+    ordinates_s = [Line(b_s.pt(p, 0.0), q, style=THIN, name=f"ordinate-s-{k}") for k, (p, q) in
+                   enumerate(zip(sd.phi, pts_s)) if abs(q[1] - b_s.origin[1]) > 0.05]
+    chords_s = [Line(pts_s[k], pts_s[k + 1], style=CHORD, name=f"chord-s-{k + 1}") for k in range(m)]
+    dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
+    register(occ, curve_s, *ordinates_s, *chords_s)
+    axes, pos_s = _strip_axes(b_s, occ, nt=nt, y_label=nt.quantity(sym_s, nt.unit("m")), m=m, name="s", pos="pos-s")
+    return b_s, [*axes, *ordinates_s, *chords_s, curve_s, *dots_s, *pos_s]
+
+
+def _chords_of_points(band: _Band, px: np.ndarray, py: np.ndarray) -> list[Line]:
+    """The chords between neighbouring points of a periodic sample, and across the period's ends."""
+    cx, cy = _periodic_points(px, py, TWO_PI, 0.0, TWO_PI)
+    chord_pts = list(zip(cx.tolist(), cy.tolist()))
+    chords = []
+    for k in range(len(chord_pts) - 1):
+        (xa, ya), (xb, yb) = chord_pts[k], chord_pts[k + 1]
+        xs_, ys_ = _clip_curve(np.array([xa, xb]), np.array([ya, yb]), max(xa, 0.0), min(xb, TWO_PI))
+        chords.append(Line(band.pt(xs_[0], ys_[0]), band.pt(xs_[-1], ys_[-1]), style=CHORD, name=f"chord-v-{k}"))
+    return chords
+
+
+def _v_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_v: str) -> tuple[_Band, list[Element]]:
+    """Strip 2: v by the chords of s (rays from the pole P₁, ordinates projected to mid-intervals)."""
+    v, L = ks.sd.v, LAYOUT
+    v_pts_x, v_pts_y = np.asarray(v.x) / ks.sd.time_scale, np.asarray(v.values)
+    vx, vy = _periodic_points(v_pts_x, v_pts_y, TWO_PI, 0.0, TWO_PI, extra=1)
+    Xs, Ys = _clip_curve(*smooth_through(vx, vy, per_interval=16), 0.0, TWO_PI)
+    ords = np.asarray(v.ordinates_mm)
+    b_v = _Band(x0=ks.gx0, top=L.strip_tops(top=ks.top, strip_mm=ks.strip_mm)[1], height=ks.strip_mm,
+                s_phi=ks.s_phi, s_y=ks.s_v, lo=float(min(Ys.min(), v_pts_y.min())),
+                hi=float(max(Ys.max(), v_pts_y.max())), period=TWO_PI, align="top" if _fan_side(ords) else "bottom")
+    targets_v = [b_v.mm(0.0, float(o)) for o in ords]
+    pole_v = b_v.mm(-v.H_mm, 0.0)
+    rays_v = [Line(pole_v, q, style=RAY, name=f"ray-v-{k + 1}") for k, q in enumerate(targets_v)]
+    points_v = b_v.pts(v_pts_x, v_pts_y)
+    proj_v = [Line(q, p, style=PROJECTION, name=f"projection-v-{k + 1}") for k, (q, p) in
+              enumerate(zip(targets_v, points_v))]
+    dots_v = [Point(p, radius_mm=0.55, name=f"dot-v-{k + 1}") for k, p in enumerate(points_v)]
+    curve_v = Polyline(b_v.pts(Xs, Ys), style=RESULT, name="curve-v")
+    chords_v = _chords_of_points(b_v, v_pts_x, v_pts_y)
+    pole_els_v = _pole(b_v, v.H_mm, f"{nt.sym('calculus.P')}_1", "pole-v", occ)
+    register(occ, curve_v, *rays_v, *proj_v, *chords_v)
+    axes, pos_v = _strip_axes(b_v, occ, nt=nt, y_label=nt.quantity(sym_v, nt.unit(ks.sd.units[0])), m=m, name="v",
+                              pos="pos-v")
+    dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')}", "H1", occ)
+    return b_v, [*axes, *rays_v, *proj_v, *chords_v, curve_v, *dots_v, *pole_els_v, *dim_v, *pos_v]
+
+
+def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: str) -> tuple[_Band, list[Element]]:
+    """Strip 3: a by the chords of v (rays from the pole P₂)."""
+    a, L = ks.sd.a, LAYOUT
+    a_x, a_y = np.asarray(a.x) / ks.sd.time_scale, np.asarray(a.values)
+    Xa, Ya = smooth_through(a_x, a_y, period=TWO_PI, per_interval=16)
+    ords_a = np.asarray(a.ordinates_mm)
+    b_a = _Band(x0=ks.gx0, top=L.strip_tops(top=ks.top, strip_mm=ks.strip_mm)[2], height=ks.strip_mm,
+                s_phi=ks.s_phi, s_y=ks.s_a, lo=float(min(Ya.min(), a_y.min())), hi=float(max(Ya.max(), a_y.max())),
+                period=TWO_PI, align="top" if _fan_side(ords_a) else "bottom")
+    targets_a = [b_a.mm(0.0, float(o)) for o in ords_a]
+    pole_a = b_a.mm(-a.H_mm, 0.0)
+    rays_a = [Line(pole_a, q, style=RAY, name=f"ray-a-{k}") for k, q in enumerate(targets_a[:-1])]
+    points_a = b_a.pts(a_x, a_y)
+    proj_a = [Line(q, p, style=PROJECTION, name=f"projection-a-{k}") for k, (q, p) in
+              enumerate(zip(targets_a, points_a)) if k > 0]
+    dots_a = [Point(p, radius_mm=0.55, name=f"dot-a-{k}") for k, p in enumerate(points_a)]
+    curve_a = Polyline(b_a.pts(Xa, Ya), style=RESULT, name="curve-a")
+    pole_els_a = _pole(b_a, a.H_mm, f"{nt.sym('calculus.P')}_2", "pole-a", occ)
+    register(occ, curve_a, *rays_a, *proj_a)
+    axes, pos_a = _strip_axes(b_a, occ, nt=nt, y_label=nt.quantity(sym_a, nt.unit(ks.sd.units[1])), m=m, name="a",
+                              pos="pos-a")
+    dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')}", "H2", occ)
+    return b_a, [*axes, *rays_a, *proj_a, curve_a, *dots_a, *pole_els_a, *dim_a, *pos_a]
+
+
+def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x1: float, occ: Occupancy,
+                      nt: Notation, *, given: tuple[bool, bool], sym_v: str, sym_a: str) -> list[Element]:
+    """The right column: the formula of each scale beside its graph, then the comparison table."""
+    rx, drop, sd, mm = x1 - ks.right_col, LAYOUT.block_drop_mm, ks.sd, nt.unit("mm")
+    s_s, s_v, s_a, s_t = ks.s_s, ks.s_v, ks.s_a, ks.s_t
+    tname = nt.sym("calculus.mu_t") if s_t is not None else nt.sym("mu_phi")
+    how = [nt.word("calculus.given") if g else nt.word("calculus.picked") for g in given]
+    first = [s_s.caption(nt), ks.s_phi.caption(nt)] + ([s_t.caption(nt) + f" = {nt.sym('mu_phi')}/ω_1"]
+                                                       if s_t is not None else [])
+    elements: list[Element] = []
+    elements += _side_block(rx, bands[0].top + drop, first, "formula-s", occ)
+    elements += _side_block(rx, bands[1].top + drop, [f"{s_v.symbol} = {s_s.symbol}/({tname}·H_1) = "
+                                                      f"{nt.number(sd.v.mu)} {s_v.unit}/{mm}",
+                                                      f"H_1 = {nt.number(sd.v.H_mm)} {mm} ({how[0]})"],
+                            "formula-v", occ)
+    elements += _side_block(rx, bands[2].top + drop, [f"{s_a.symbol} = {s_v.symbol}/({tname}·H_2) = "
+                                                      f"{nt.number(sd.a.mu)} {s_a.unit}/{mm}",
+                                                      f"H_2 = {nt.number(sd.a.H_mm)} {mm} ({how[1]})"],
+                            "formula-a", occ)
+    rows = _comparison_rows(nt, sd, sym_v, sym_a)
+    table = _table(rows, align="llrr", name="comparison-table", right=x1, bottom=bands[2].top + ks.strip_mm)
+    return elements + _titled_table(table, nt.word("calculus.comparison"), "comparison-title") + [table]
+
+
+def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = None, analogues: bool = False,
+                       mu_phi: Any = None, mu_s: Any = None, H1_mm: float | None = None, H2_mm: float | None = None,
+                       notation: Any = "en", page: Page | None = None, title: str | None = None,
+                       problem: Any = None, title_block: bool = True, name: str = "kinematic-diagrams") -> Scene:
     """The slider's s(φ), v(φ), a(φ) by graphical differentiation, with poles, rays and chords.
+
+    Three steps: the scales (:func:`_kinematic_scales`), the strips laid out by :data:`LAYOUT`,
+    the elements of each strip and of the right column.
 
     Parameters
     ----------
@@ -439,7 +611,7 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     mu_phi, mu_s : float or Scale, optional
         Scales of the s diagram (rad/mm, m/mm); picked when not given.
     H1_mm, H2_mm : float, optional
-        Pole distances of the v and a diagrams; picked when not given (the largest convenient
+        Pole distances of the v and a diagrams, mm; picked when not given (the largest convenient
         values whose diagrams fit their strips and whose poles fit left of them).
 
     Examples
@@ -451,178 +623,31 @@ def kinematic_diagrams(subject, *, m: int = 12, omega_1: float | None = None, an
     """
     nt = get_notation(notation)
     mech, omega_case, prob = _slider_subject(subject, nt)
-    if omega_1 is None:
-        omega_1 = omega_case
-    if analogues:
-        omega_1 = None
+    omega_1 = None if analogues else (omega_case if omega_1 is None else omega_1)
     sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
-                  title=title or word(nt, "kinematic_title"),
-                   problem=prob if problem is None else problem, title_block=title_block)
-    x0, _, x1, _ = sheet.box
-    motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
-    point = motion.point
-
-    # ---- layout: three strips left, the right column for the formulas and the comparison table
-    pole_room = 44.0
-    probe = gc.slider_diagrams(mech, m, mu_phi=1.0, mu_s=1.0, omega_1=omega_1, H1_mm=1.0, H2_mm=1.0)
-    right_col = _column_width(_comparison_rows(nt, probe, "v_B", "a_B"), "μ_a = μ_v/(μ_t·H_2) = 0.0001234 (m/s²)/mm")
-    gx0 = x0 + pole_room + 12.0
-    gx1 = x1 - right_col - 16.0
-    top = sheet.top + 4.0
-    bottom = sheet.caption_y - 9.0
-    gap = 13.0
-    band_h = (bottom - top - 2 * gap) / 3.0
-    if mu_phi is None:
-        s_phi = pick_angle_scale(TWO_PI, gx1 - gx0, symbol=nt.sym("mu_phi"))
-    else:
-        s_phi = mu_phi if isinstance(mu_phi, Scale) else Scale(nt.sym("mu_phi"), "rad", mu_phi)
-        if s_phi.to_mm(TWO_PI) > gx1 - gx0 + 1e-9:
-            raise InputError(f"the crank turn at {markup.plain(s_phi.caption())} needs {s_phi.to_mm(TWO_PI):.1f} "
-                             f"mm but the sheet leaves {gx1 - gx0:.1f} mm; give a larger μ_φ or none")
-    s_span = float(motion.s.max() - min(motion.s.min(), 0.0))
-    if mu_s is None:
-        s_s = pick_scale(s_span, band_h, symbol=sym(nt, "mu_s"), unit=unit(nt, "m"))
-    else:
-        s_s = mu_s if isinstance(mu_s, Scale) else Scale(sym(nt, "mu_s"), unit(nt, "m"), mu_s)
-        if s_s.to_mm(s_span) > band_h + 1e-9:
-            raise InputError(f"the stroke at {markup.plain(s_s.caption())} needs {s_s.to_mm(s_span):.1f} mm but "
-                             f"the strip leaves {band_h:.1f} mm; give a larger μ_s or none")
-    dim_room = 9.0                                  # the dimension of H beside the fan of rays
-    sd = gc.slider_diagrams(mech, m, mu_phi=s_phi.per_mm, mu_s=s_s.per_mm, omega_1=omega_1, H1_mm=H1_mm,
-                            H2_mm=H2_mm, band_v_mm=band_h - dim_room, band_a_mm=band_h - dim_room,
-                            pole_room_mm=pole_room)
-    t_per_rad = sd.time_scale
-    u_v, u_a = sd.units
-    s_v = Scale(sym(nt, "mu_v"), _scale_unit(nt, u_v), sd.v.mu)
-    s_a = Scale(sym(nt, "mu_a"), _scale_unit(nt, u_a), sd.a.mu)
-    s_t = Scale(sym(nt, "mu_t"), unit(nt, "s"), sd.mu_t) if sd.mu_t is not None else None
-    for H, key, given in ((sd.v.H_mm, "H1", H1_mm), (sd.a.H_mm, "H2", H2_mm)):
-        if given is not None and H > pole_room + 1e-9:
-            raise InputError(f"{key} = {H:g} mm leaves no room for the pole left of its diagram ({pole_room:g} mm); "
-                             f"give a smaller {key}_mm or none")
+                  title=title or nt.word("calculus.kinematic_title"),
+                  problem=prob if problem is None else problem, title_block=title_block)
+    ks = _kinematic_scales(mech, sheet, nt, m=m, omega_1=omega_1, mu_phi=mu_phi, mu_s=mu_s, H1_mm=H1_mm, H2_mm=H2_mm)
+    point = ks.motion.point
+    sym_s, sym_v, sym_a = (f"{nt.sym(key)}_{{{point}}}" for key in ("calculus.s", "calculus.v", "calculus.a"))
     occ = sheet.occ
-    elements: list = [sheet.header()]
-    P_name = sym(nt, "P")
-
-    # ---- strip 1: s(φ), exact, with the positions and the chords
-    sym_s = f"{sym(nt, 's')}_{{{point}}}"
-    sym_v = f"{sym(nt, 'v')}_{{{point}}}"
-    sym_a = f"{sym(nt, 'a')}_{{{point}}}"
-    b_s = _Band(x0=gx0, top=top, height=band_h, s_phi=s_phi, s_y=s_s, lo=float(motion.s.min()),
-                hi=float(motion.s.max()), period=TWO_PI)
-    curve_s = Polyline(b_s.pts(motion.phi, motion.s), style=RESULT, name="curve-s")
-    pts_s = b_s.pts(sd.phi, sd.s)
-    ordinates_s = [Line(b_s.pt(p, 0.0), q, style=THIN, name=f"ordinate-s-{k}") for k, (p, q) in
-                   enumerate(zip(sd.phi, pts_s)) if abs(q[1] - b_s.origin[1]) > 0.05]
-    chords_s = [Line(pts_s[k], pts_s[k + 1], style=CHORD, name=f"chord-s-{k + 1}") for k in range(m)]
-    dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
-    ax_phi_s, ax_s = b_s.axes(nt=nt, y_label=nt.quantity(sym_s, unit(nt, "m")), m=m, name="s")
-    _register(occ, curve_s, *ordinates_s, *chords_s)
-    full_s = ax_phi_s
-    ax_phi_s, ax_s = _clear_tick_labels(ax_phi_s, occ), _clear_tick_labels(ax_s, occ, keep_values=True)
-    _register(occ, ax_phi_s, ax_s)
-    pos_s = _lost_positions(full_s, ax_phi_s, occ, "pos-s")
-    elements += [ax_phi_s, ax_s] + ordinates_s + chords_s + [curve_s] + dots_s + pos_s
-
-    # ---- strip 2: v by the chords of s
-    v = sd.v
-    v_pts_x, v_pts_y = np.asarray(v.x) / t_per_rad, np.asarray(v.values)
-    vx, vy = _periodic_points(v_pts_x, v_pts_y, TWO_PI, 0.0, TWO_PI, extra=1)
-    Xs, Ys = smooth_through(vx, vy, per_interval=16)
-    Xs, Ys = _clip_curve(Xs, Ys, 0.0, TWO_PI)
-    v_lo = float(min(Ys.min(), v_pts_y.min()))
-    v_hi = float(max(Ys.max(), v_pts_y.max()))
-    ords = np.asarray(v.ordinates_mm)
-    b_v = _Band(x0=gx0, top=top + band_h + gap, height=band_h, s_phi=s_phi, s_y=s_v, lo=v_lo, hi=v_hi,
-                period=TWO_PI, align="top" if _fan_side(ords) else "bottom")
-    targets_v = [b_v.mm(0.0, float(o)) for o in ords]
-    pole_v = b_v.mm(-v.H_mm, 0.0)
-    rays_v = [Line(pole_v, q, style=RAY, name=f"ray-v-{k + 1}") for k, q in enumerate(targets_v)]
-    points_v = b_v.pts(v_pts_x, v_pts_y)
-    proj_v = [Line(q, p, style=PROJECTION, name=f"projection-v-{k + 1}") for k, (q, p) in
-              enumerate(zip(targets_v, points_v))]
-    dots_v = [Point(p, radius_mm=0.55, name=f"dot-v-{k + 1}") for k, p in enumerate(points_v)]
-    curve_v = Polyline(b_v.pts(Xs, Ys), style=RESULT, name="curve-v")
-    # the chords of the v points (they give a): between neighbours, and across the period's ends
-    cx, cy = _periodic_points(v_pts_x, v_pts_y, TWO_PI, 0.0, TWO_PI)
-    chord_pts = list(zip(cx.tolist(), cy.tolist()))
-    chords_v = []
-    for k in range(len(chord_pts) - 1):
-        (xa, ya), (xb, yb) = chord_pts[k], chord_pts[k + 1]
-        xs_, ys_ = _clip_curve(np.array([xa, xb]), np.array([ya, yb]), max(xa, 0.0), min(xb, TWO_PI))
-        chords_v.append(Line(b_v.pt(xs_[0], ys_[0]), b_v.pt(xs_[-1], ys_[-1]), style=CHORD,
-                             name=f"chord-v-{k}"))
-    ax_phi_v, ax_v = b_v.axes(nt=nt, y_label=nt.quantity(sym_v, unit(nt, u_v)), m=m, name="v")
-    pole_els_v = _pole(b_v, v.H_mm, f"{P_name}_1", "pole-v", occ)
-    _register(occ, curve_v, *rays_v, *proj_v, *chords_v)
-    full_v = ax_phi_v
-    ax_phi_v, ax_v = _clear_tick_labels(ax_phi_v, occ), _clear_tick_labels(ax_v, occ, keep_values=True)
-    _register(occ, ax_phi_v, ax_v)
-    pos_v = _lost_positions(full_v, ax_phi_v, occ, "pos-v")
-    dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {unit(nt, 'mm')}", "H1", occ)
-    elements += ([ax_phi_v, ax_v] + rays_v + proj_v + chords_v + [curve_v] + dots_v + pole_els_v + dim_v + pos_v)
-
-    # ---- strip 3: a by the chords of v
-    a = sd.a
-    a_x, a_y = np.asarray(a.x) / t_per_rad, np.asarray(a.values)
-    Xa, Ya = smooth_through(a_x, a_y, period=TWO_PI, per_interval=16)
-    a_lo, a_hi = float(min(Ya.min(), a_y.min())), float(max(Ya.max(), a_y.max()))
-    ords_a = np.asarray(a.ordinates_mm)
-    b_a = _Band(x0=gx0, top=top + 2 * (band_h + gap), height=band_h, s_phi=s_phi, s_y=s_a, lo=a_lo, hi=a_hi,
-                period=TWO_PI, align="top" if _fan_side(ords_a) else "bottom")
-    targets_a = [b_a.mm(0.0, float(o)) for o in ords_a]
-    pole_a = b_a.mm(-a.H_mm, 0.0)
-    rays_a = [Line(pole_a, q, style=RAY, name=f"ray-a-{k}") for k, q in enumerate(targets_a[:-1])]
-    points_a = b_a.pts(a_x, a_y)
-    proj_a = [Line(q, p, style=PROJECTION, name=f"projection-a-{k}") for k, (q, p) in
-              enumerate(zip(targets_a, points_a)) if k > 0]
-    dots_a = [Point(p, radius_mm=0.55, name=f"dot-a-{k}") for k, p in enumerate(points_a)]
-    curve_a = Polyline(b_a.pts(Xa, Ya), style=RESULT, name="curve-a")
-    ax_phi_a, ax_a = b_a.axes(nt=nt, y_label=nt.quantity(sym_a, unit(nt, u_a)), m=m, name="a")
-    pole_els_a = _pole(b_a, a.H_mm, f"{P_name}_2", "pole-a", occ)
-    _register(occ, curve_a, *rays_a, *proj_a)
-    full_a = ax_phi_a
-    ax_phi_a, ax_a = _clear_tick_labels(ax_phi_a, occ), _clear_tick_labels(ax_a, occ, keep_values=True)
-    _register(occ, ax_phi_a, ax_a)
-    pos_a = _lost_positions(full_a, ax_phi_a, occ, "pos-a")
-    dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {unit(nt, 'mm')}", "H2", occ)
-    elements += ([ax_phi_a, ax_a] + rays_a + proj_a + [curve_a] + dots_a + pole_els_a + dim_a + pos_a)
-
-    # ---- right column: the formula of each scale beside its graph, then the comparison table
-    rx = x1 - right_col
-    tname = sym(nt, "mu_t") if s_t is not None else nt.sym("mu_phi")
-    side = [
-        _side_block(rx, b_s.top + 4.0, [s_s.caption(nt), s_phi.caption(nt)]
-                    + ([s_t.caption(nt) + f" = {nt.sym('mu_phi')}/ω_1"] if s_t is not None else []), "formula-s", occ),
-        _side_block(rx, b_v.top + 4.0, [f"{s_v.symbol} = {s_s.symbol}/({tname}·H_1) = {nt.number(sd.v.mu)} "
-                                        f"{s_v.unit}/{unit(nt, 'mm')}",
-                                        f"H_1 = {nt.number(v.H_mm)} {unit(nt, 'mm')} "
-                                        f"({word(nt, 'given') if H1_mm is not None else word(nt, 'picked')})"],
-                    "formula-v", occ),
-        _side_block(rx, b_a.top + 4.0, [f"{s_a.symbol} = {s_v.symbol}/({tname}·H_2) = {nt.number(sd.a.mu)} "
-                                        f"{s_a.unit}/{unit(nt, 'mm')}",
-                                        f"H_2 = {nt.number(a.H_mm)} {unit(nt, 'mm')} "
-                                        f"({word(nt, 'given') if H2_mm is not None else word(nt, 'picked')})"],
-                    "formula-a", occ),
-    ]
-    for blk in side:
-        elements += blk
-    rows = _comparison_rows(nt, sd, sym_v, sym_a)
-    table = _table(rows, align="llrr", name="comparison-table", right=x1, bottom=b_a.top + band_h)
-    elements += _titled_table(table, word(nt, "comparison"), "comparison-title") + [table]
-
-    scales = (s_phi, s_s, s_v, s_a) + ((s_t,) if s_t is not None else ())
-    elements += sheet.captions(scales)
-    notes = tuple(n for n in (s_phi.note, s_s.note) if n) + (
-        f"H1 = {v.H_mm:g} mm ({'given' if H1_mm is not None else 'picked: largest convenient H that fits'})",
-        f"H2 = {a.H_mm:g} mm ({'given' if H2_mm is not None else 'picked: largest convenient H that fits'})")
+    b_s, els_s = _s_strip(ks, occ, nt, m, sym_s)
+    b_v, els_v = _v_strip(ks, occ, nt, m, sym_v)
+    b_a, els_a = _a_strip(ks, occ, nt, m, sym_a)
+    column = _kinematic_column(ks, (b_s, b_v, b_a), sheet.box[2], occ, nt, given=(H1_mm is not None,
+                               H2_mm is not None), sym_v=sym_v, sym_a=sym_a)
+    scales = ks.all()
+    elements = [sheet.header(), *els_s, *els_v, *els_a, *column, *sheet.captions(scales)]
+    notes = tuple(n for n in (ks.s_phi.note, ks.s_s.note) if n) + (
+        f"H1 = {ks.sd.v.H_mm:g} mm ({'given' if H1_mm is not None else 'picked: largest convenient H that fits'})",
+        f"H2 = {ks.sd.a.H_mm:g} mm ({'given' if H2_mm is not None else 'picked: largest convenient H that fits'})")
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
                  extra_scales=scales, notes=notes)
 
 
 # ----------------------------------------------------------------------------- 2. work diagrams
 
-def _moment_subject(subject, m: int, nt):
+def _moment_subject(subject: Any, m: int, nt: Notation) -> tuple[Any, Any, np.ndarray, Any, str]:
     """(M_d, M_r, phi, study-or-None, problem text in the notation's language) from a Study, a Case, a
     cycle problem or a pair."""
     if hasattr(subject, "moments") and hasattr(subject, "model"):            # a Study
@@ -653,42 +678,262 @@ def _moment_subject(subject, m: int, nt):
     return M_d, M_r, phi, None, prob
 
 
-def _accuracy_rows(nt, wd, work_unit: str):
-    wu, mm = unit(nt, work_unit), unit(nt, "mm")
+def _accuracy_rows(nt: Notation, wd: gc.WorkDiagrams, work_unit: str) -> list[tuple[str, ...]]:
+    wu, mm = nt.unit(work_unit), nt.unit("mm")
     noise = 1e-9 * (float(np.abs(np.concatenate((wd.A_d.values, wd.A_r.values))).max()) or 1.0)
 
-    def cells(value, value_mm):             # rounding noise of an exact construction is written 0
+    def cells(value: float | None, value_mm: float) -> tuple[str, str]:   # rounding noise of an exact
+        # construction is written 0
         if value is None:
             return "", ""
         exact = abs(value) <= noise
         return (f"{_fmt(nt, 0.0 if exact else value)} {wu}", f"{_fmt(nt, 0.0 if exact else value_mm, 2)} {mm}")
 
-    rows = [(word(nt, "construction"), word(nt, "at_ends"), word(nt, "on_sheet"), word(nt, "inside"),
-             word(nt, "on_sheet"))]
-    symbol = {"A_d": sym(nt, "A_d"), "A_r": sym(nt, "A_r"), "ΔE": nt.sym("dE")}
+    on_sheet = nt.word("calculus.on_sheet")
+    rows: list[tuple[str, ...]] = [(nt.word("calculus.construction"), nt.word("calculus.at_ends"), on_sheet,
+                                    nt.word("calculus.inside"), on_sheet)]
+    symbol = {"A_d": nt.sym("calculus.A_d"), "A_r": nt.sym("calculus.A_r"), "ΔE": nt.sym("dE")}
     for r in wd.comparison():
         rows.append((symbol[r["quantity"]],) + cells(r["error"], r["error_mm"]) + cells(r["inside"], r["inside_mm"]))
     return rows
 
 
-def _accuracy_title(nt, study) -> str:
-    title = word(nt, "accuracy_work")
+def _accuracy_title(nt: Notation, study: Any) -> str:
+    title = nt.word("calculus.accuracy_work")
     if study is not None:
-        drawn = word(nt, "drawn").format(M=nt.sym("M_r"))
+        drawn = nt.word("calculus.drawn", M=nt.sym("M_r"))
         title += f"（{drawn}）" if nt.code == "zh" else f" ({drawn})"
     return title
 
 
-def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None, mu_phi=None, notation="en",
-                  page=None, title=None, problem=None, moment_unit: str = "N·m", work_unit: str = "J",
-                  title_block: bool = True, name: str = "work-diagrams") -> Scene:
+@dataclass(frozen=True)
+class _WorkScales:
+    """The scales and pole distance of the work diagrams, the construction drawn at them, and where."""
+
+    s_phi: Scale
+    s_M: Scale
+    s_A: Scale
+    H: float
+    wd: gc.WorkDiagrams
+    gx0: float
+    top: float
+    strip_mm: float
+    right_col: float
+    M_lo: float
+    M_hi: float
+    period: float
+
+
+def _work_angle_scale(mu_phi: Any, nt: Notation, period: float, width: float) -> Scale:
+    """μ_φ given (checked to fit ``width`` mm) or picked to fill it."""
+    if mu_phi is None:
+        return pick_angle_scale(period, width, symbol=nt.sym("mu_phi"))
+    s = mu_phi if isinstance(mu_phi, Scale) else Scale(nt.sym("mu_phi"), "rad", mu_phi)
+    if s.to_mm(period) > width + 1e-9:
+        raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the "
+                         f"sheet leaves {width:.1f} mm; give a larger μ_φ or none")
+    return s
+
+
+def _pick_pole(box: tuple[float, float], right_col: float, period: float, strip_mm: float, s_M: Scale, *,
+               nt: Notation, A_span: float, mu_M_given: bool, mu_phi: Any, H_mm: float | None
+               ) -> tuple[Scale, Scale, float, float]:
+    """(μ_φ, μ_M, H, pole room): H given, or the smallest convenient H whose diagrams fit the strip; the
+    pole must fit left of the moment diagram (its room grows up to ``max_pole_room_mm``, then μ_M grows)."""
+    from graphmethods.units import CONVENIENT, convenient_at_least
+
+    L, (x0, x1) = LAYOUT, box
+
+    def width(room: float) -> float:
+        return x1 - right_col - L.column_gap_mm - (x0 + room + L.graph_gap_mm)
+
+    room = L.pole_room_mm
+    for _ in range(8):
+        s_phi = _work_angle_scale(mu_phi, nt, period, width(room))
+        if H_mm is not None:
+            H = float(H_mm)
+            if not (math.isfinite(H) and H > 0):
+                raise InputError(f"H_mm = {H_mm!r}: the pole distance must be a positive number of mm")
+            break
+        H = convenient_at_least(A_span / (s_M.per_mm * s_phi.per_mm * (strip_mm - L.dim_room_mm)), gc.POLE_SERIES)
+        if H + L.graph_gap_mm <= room:
+            break
+        if room < L.max_pole_room_mm:       # first give the pole more room (μ_φ may grow with it) …
+            room = min(H + L.graph_gap_mm, L.max_pole_room_mm)
+        elif not mu_M_given:                # … then draw the moments smaller
+            s_M = Scale(s_M.symbol, s_M.unit, convenient_at_least(s_M.per_mm * 1.01, CONVENIENT),
+                        note=s_M.note + "; enlarged so that the pole fits")
+        else:
+            break
+    if H + L.graph_gap_mm > room:
+        if mu_phi is None and _work_angle_scale(mu_phi, nt, period, width(H + L.graph_gap_mm)).per_mm != s_phi.per_mm:
+            raise InputError(f"the pole at H = {H:g} mm does not fit left of the moment diagram at "
+                             f"{markup.plain(s_phi.caption())}; give a smaller H_mm, a larger μ_M or a larger μ_φ")
+        room = H + L.graph_gap_mm
+    room = min(room, H + L.graph_gap_mm) if H + L.graph_gap_mm >= L.pole_room_mm else L.pole_room_mm
+    if s_phi.to_mm(period) > width(room) + 1e-9:
+        raise InputError(f"the pole at H = {H:g} mm and the period at {markup.plain(s_phi.caption())} do not fit "
+                         f"across the sheet; give a smaller H_mm or a larger μ_φ")
+    return s_phi, s_M, H, room
+
+
+def _construction(M_d: Any, M_r: Any, phi: np.ndarray, study: Any, *, mu_phi: float, mu_M: float,
+                  H_mm: float) -> gc.WorkDiagrams:
+    """The method of chords at these scales: over a study's positions, or over ``phi`` of exact curves."""
+    if study is not None:
+        return gc.study_work_diagrams(study, mu_phi=mu_phi, mu_M=mu_M, H_mm=H_mm)
+    return gc.work_diagrams(M_d, M_r, phi, mu_phi=mu_phi, mu_M=mu_M, H_mm=H_mm, exact_d=M_d, exact_r=M_r)
+
+
+def _work_scales(M_d: Any, M_r: Any, phi: np.ndarray, study: Any, sheet: Sheet, nt: Notation, *, mu_M: Any,
+                 mu_phi: Any, H_mm: float | None, moment_unit: str, work_unit: str) -> _WorkScales:
+    """μ_M fitted to its strip (or checked), then μ_φ and the pole distance H together, then μ_A = μ_M μ_φ H."""
+    L = LAYOUT
+    x0, _, x1, _ = sheet.box
+    period = float(phi[-1] - phi[0])
+    top, band_h = L.strip_mm(sheet)
+    M_all = np.concatenate((np.asarray(M_d.M), np.asarray(M_r.M), [0.0]))
+    M_lo, M_hi = float(M_all.min()), float(M_all.max())
+    if mu_M is None:
+        s_M = pick_scale(M_hi - M_lo, band_h - L.dim_room_mm, symbol=nt.sym("mu_M"), unit=nt.unit(moment_unit))
+    else:
+        s_M = mu_M if isinstance(mu_M, Scale) else Scale(nt.sym("mu_M"), nt.unit(moment_unit), mu_M)
+        if s_M.to_mm(M_hi - M_lo) > band_h + 1e-9:
+            raise InputError(f"the moment diagram at {markup.plain(s_M.caption())} needs "
+                             f"{s_M.to_mm(M_hi - M_lo):.1f} mm but the strip leaves {band_h:.1f} mm; give a larger "
+                             f"μ_M or none")
+    probe_wd = _construction(M_d, M_r, phi, study, mu_phi=1.0, mu_M=1.0, H_mm=1.0)
+    right_col = _column_width(_accuracy_rows(nt, probe_wd, work_unit),
+                              f"{nt.sym('calculus.A_d')}(φ_T) − {nt.sym('calculus.A_r')}(φ_T) = −1234 J "
+                              f"({nt.word('closure')})")
+    A_span = max(float(np.ptp(np.concatenate((probe_wd.A_d.values, probe_wd.A_r.values, [0.0])))), 1e-300)
+    s_phi, s_M, H, room = _pick_pole((x0, x1), right_col, period, band_h, s_M, nt=nt, A_span=A_span,
+                                     mu_M_given=mu_M is not None, mu_phi=mu_phi, H_mm=H_mm)
+    wd = _construction(M_d, M_r, phi, study, mu_phi=s_phi.per_mm, mu_M=s_M.per_mm, H_mm=H)
+    s_A = Scale(nt.sym("calculus.mu_A"), nt.unit(work_unit), wd.mu_A)
+    A_vals = np.concatenate((wd.A_d.values, wd.A_r.values, [0.0]))
+    if s_A.to_mm(float(np.ptp(A_vals))) > band_h + 1e-9:
+        raise InputError(f"at H = {H:g} mm the work diagrams need {s_A.to_mm(float(np.ptp(A_vals))):.1f} mm but the "
+                         f"strip leaves {band_h:.1f} mm; give a larger H_mm or none to have one picked")
+    return _WorkScales(s_phi, s_M, s_A, H, wd, x0 + room + L.graph_gap_mm, top, band_h, right_col, M_lo, M_hi,
+                       period)
+
+
+def _mean_ordinates(ws: _WorkScales, b_M: _Band, x: np.ndarray, M_d: Any, M_r: Any
+                    ) -> tuple[list[Polyline], list[Line], list[Line]]:
+    """Each interval's mean ordinate as a step, its projection onto the M axis and the ray to the pole
+    (one projection and ray per level)."""
+    steps, projections, rays = [], [], []
+    pole = b_M.mm(-ws.H, 0.0)
+    for key, I, curve in (("d", ws.wd.A_d, M_d), ("r", ws.wd.A_r, M_r)):
+        means = np.asarray(I.mean_ordinate)
+        flat = bool(np.ptp(np.asarray(curve.M)) <= 1e-12 * max(1.0, float(np.abs(curve.M).max())))
+        seen: set[float] = set()
+        for i, ybar in enumerate(means):
+            a_, b_ = b_M.pt(x[i], ybar), b_M.pt(x[i + 1], ybar)
+            if not flat:
+                steps.append(Polyline((b_M.pt(x[i], 0.0), a_, b_, b_M.pt(x[i + 1], 0.0)), style=THIN,
+                                      name=f"mean-{key}-{i + 1}"))
+            level = round(float(ybar / ws.s_M.per_mm), 3)
+            if level in seen:
+                continue
+            seen.add(level)
+            target = b_M.pt(0.0, ybar)
+            if i > 0 and abs(a_[1] - target[1]) > 1e-9:
+                projections.append(Line(a_, target, style=PROJECTION, name=f"projection-{key}-{i + 1}"))
+            rays.append(Line(pole, target, style=RAY if key == "r" else PROJECTION, name=f"ray-{key}-{i + 1}"))
+    return steps, projections, rays
+
+
+def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: Any, x: np.ndarray,
+                  phi0: float, moment_unit: str) -> tuple[_Band, list[Element]]:
+    """Strip 1: the moment diagram with the mean ordinates, their projections, the rays to the pole P."""
+    b_M = _Band(x0=ws.gx0, top=ws.top, height=ws.strip_mm, s_phi=ws.s_phi, s_y=ws.s_M, lo=ws.M_lo, hi=ws.M_hi,
+                period=ws.period, align="top")
+    curve_d = Polyline(b_M.pts(np.asarray(M_d.phi) - phi0, M_d.M), style=RESULT, name="curve-M_d")
+    curve_r = Polyline(b_M.pts(np.asarray(M_r.phi) - phi0, M_r.M), style=RESULT, name="curve-M_r")
+    steps, projections, rays = _mean_ordinates(ws, b_M, x, M_d, M_r)
+    pole_els = _pole(b_M, ws.H, nt.sym("calculus.P"), "pole", occ)
+    register(occ, curve_d, curve_r, *steps, *projections, *rays)
+    axes, pos_M = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), m=len(x) - 1,
+                              name="M", pos="pos-M")
+    ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
+    dim = _h_dimension(b_M, ws.H, ords_M, f"H = {nt.number(ws.H)} {nt.unit('mm')}", "H", occ)
+    names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
+                           "M")
+    return b_M, [*axes, *steps, *projections, *rays, curve_d, curve_r, *pole_els, *dim, *names_M, *pos_M]
+
+
+def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
+                work_unit: str) -> tuple[_Band, list[Element]]:
+    """Strip 2: the work diagrams A_d, A_r, chords parallel to the rays."""
+    wd = ws.wd
+    A_vals = np.concatenate((wd.A_d.values, wd.A_r.values, [0.0]))
+    b_A = _Band(x0=ws.gx0, top=LAYOUT.strip_tops(top=ws.top, strip_mm=ws.strip_mm)[1], height=ws.strip_mm,
+                s_phi=ws.s_phi, s_y=ws.s_A, lo=float(A_vals.min()), hi=float(A_vals.max()), period=ws.period)
+    chords_d = Polyline(b_A.pts(x, wd.A_d.values), style=RESULT, name="chords-A_d")
+    chords_r = Polyline(b_A.pts(x, wd.A_r.values), style=RESULT, name="chords-A_r")
+    dots_A = [Point(p, radius_mm=0.5, name=f"dot-A_r-{k}") for k, p in enumerate(chords_r.points)]
+    dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
+    register(occ, chords_d, chords_r)
+    axes, pos_A = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)), m=len(x) - 1,
+                              name="A", pos="pos-A")
+    names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]),
+                                 (chords_r, nt.sym("calculus.A_r"), b_A.origin[1])), "A")
+    return b_A, [*axes, chords_d, chords_r, *dots_A, *names_A, *pos_A]
+
+
+def _dE_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
+              work_unit: str) -> tuple[_Band, list[Element]]:
+    """Strip 3: ΔE = A_d − A_r at the same scale μ_A."""
+    dE, s_A = ws.wd.delta_E, ws.s_A
+    b_E = _Band(x0=ws.gx0, top=LAYOUT.strip_tops(top=ws.top, strip_mm=ws.strip_mm)[2], height=ws.strip_mm,
+                s_phi=ws.s_phi, s_y=s_A, lo=float(dE.min()), hi=float(dE.max()), period=ws.period)
+    curve_E = Polyline(b_E.pts(x, dE), style=RESULT, name="curve-dE")
+    ordinates_E = [Line(b_E.pt(xk, 0.0), b_E.pt(xk, ek), style=THIN, name=f"ordinate-dE-{k}")
+                   for k, (xk, ek) in enumerate(zip(x, dE)) if abs(s_A.to_mm(float(ek))) > 0.05]
+    dots_E = [Point(p, radius_mm=0.5, name=f"dot-dE-{k}") for k, p in enumerate(curve_E.points)]
+    register(occ, curve_E, *ordinates_E)
+    axes, pos_E = _strip_axes(b_E, occ, nt=nt, y_label=nt.quantity(nt.sym("dE"), nt.unit(work_unit)), m=len(x) - 1,
+                              name="dE", pos="pos-E")
+    return b_E, [*axes, *ordinates_E, curve_E, *dots_E, *pos_E]
+
+
+def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, occ: Occupancy, nt: Notation, *,
+                 given: bool, study: Any, work_unit: str) -> list[Element]:
+    """The right column: the formulas of the scales, the closure, and the accuracy of each construction."""
+    rx, drop, wd = x1 - ws.right_col, LAYOUT.block_drop_mm, ws.wd
+    wu, mm, phi = nt.unit(work_unit), nt.unit("mm"), nt.sym("phi")
+    A_d, A_r = nt.sym("calculus.A_d"), nt.sym("calculus.A_r")
+    picked = nt.word("calculus.given") if given else nt.word("calculus.picked")
+    A_hi = float(np.concatenate((wd.A_d.values, wd.A_r.values, [0.0])).max())
+    elements: list[Element] = []
+    elements += _side_block(rx, bands[0].top + drop, [ws.s_M.caption(nt), ws.s_phi.caption(nt)], "formula-M", occ)
+    elements += _side_block(rx, bands[1].top + drop, [f"{ws.s_A.symbol} = {ws.s_M.symbol}·{nt.sym('mu_phi')}·H = "
+                                                      f"{nt.number(wd.mu_A)} {wu}/{mm}",
+                                                      f"H = {nt.number(ws.H)} {mm} ({picked})"], "formula-A", occ)
+    closure = f"{A_d}({phi}_{{T}}) − {A_r}({phi}_{{T}}) = " \
+              f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {wu} " \
+              f"({nt.word('closure')})"
+    elements += _side_block(rx, bands[2].top + drop, [f"{nt.sym('dE')} = {A_d} − {A_r};  {ws.s_A.symbol} = "
+                                                      f"{nt.number(wd.mu_A)} {wu}/{mm}", closure], "formula-dE", occ)
+    table = _table(_accuracy_rows(nt, wd, work_unit), align="lrrrr", name="accuracy-table", right=x1,
+                   bottom=bands[2].top + ws.strip_mm)
+    return elements + _titled_table(table, _accuracy_title(nt, study), "accuracy-title") + [table]
+
+
+def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M: Any = None, mu_phi: Any = None,
+                  notation: Any = "en", page: Page | None = None, title: str | None = None, problem: Any = None,
+                  moment_unit: str = "N·m", work_unit: str = "J", title_block: bool = True,
+                  name: str = "work-diagrams") -> Scene:
     """The moment diagram M_d, M_r integrated by the method of chords into A_d(φ), A_r(φ), and ΔE(φ).
 
     Each interval's mean ordinate is drawn as a step, projected onto the M axis and joined to
     the pole P, H mm left of the origin; the work diagrams are the chords parallel to those
     rays (one scale μ_A = μ_M μ_φ H for both), and ΔE = A_d − A_r is drawn from their
     difference. A table gives each construction's largest difference from the exact integral,
-    at the interval ends and inside the chords, in units of work and in mm.
+    at the interval ends and inside the chords, in units of work and in mm. Three steps: the
+    scales and H (:func:`_work_scales`), the strips laid out by :data:`LAYOUT`, their elements.
 
     Parameters
     ----------
@@ -698,7 +943,7 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
         (studied at ``m`` positions); a cycle problem with moment curves, or a pair of
         MomentCurves (``m`` equal intervals; the curves are exact).
     H_mm : float, optional
-        Pole distance. When not given, the toolkit picks the smallest H of 1, 1.5, 2, 2.5, 3,
+        Pole distance, mm. When not given, the toolkit picks the smallest H of 1, 1.5, 2, 2.5, 3,
         4, 5 × 10^k mm whose work diagrams fit their strip (the largest drawing), and says so.
     mu_M, mu_phi : float or Scale, optional
         Scales of the moment diagram; picked when not given.
@@ -710,194 +955,30 @@ def work_diagrams(subject, *, m: int = 12, H_mm: float | None = None, mu_M=None,
     >>> [sc.symbol for sc in s.scales()], s.notes[-1]
     (['μ_φ', 'μ_M', 'μ_W'], 'H = 30 mm (picked: smallest convenient H whose work diagrams fit)')
     """
-    from graphmethods.units import CONVENIENT, convenient_at_least
-
     nt = get_notation(notation)
     M_d, M_r, phi, study, prob = _moment_subject(subject, m, nt)
     sheet = Sheet(nt=nt, page=page, default_page=Page("A3", "landscape", frame=True), top_gap_mm=6.0,
-                  title=title or word(nt, "work_title"),
-                   problem=prob if problem is None else problem, title_block=title_block)
-    x0, _, x1, _ = sheet.box
-    period = float(phi[-1] - phi[0])
-    top = sheet.top + 4.0
-    bottom = sheet.caption_y - 9.0
-    gap = 13.0
-    dim_room = 9.0
-    band_h = (bottom - top - 2 * gap) / 3.0
-    M_all = np.concatenate((np.asarray(M_d.M), np.asarray(M_r.M), [0.0]))
-    M_lo, M_hi = float(M_all.min()), float(M_all.max())
-    mu_M_given = mu_M is not None
-    if mu_M is None:
-        s_M = pick_scale(M_hi - M_lo, band_h - dim_room, symbol=nt.sym("mu_M"), unit=unit(nt, moment_unit))
-    else:
-        s_M = mu_M if isinstance(mu_M, Scale) else Scale(nt.sym("mu_M"), unit(nt, moment_unit), mu_M)
-        if s_M.to_mm(M_hi - M_lo) > band_h + 1e-9:
-            raise InputError(f"the moment diagram at {markup.plain(s_M.caption())} needs "
-                             f"{s_M.to_mm(M_hi - M_lo):.1f} mm but the strip leaves {band_h:.1f} mm; give a larger "
-                             f"μ_M or none")
-    if study is not None:
-        probe_wd = gc.study_work_diagrams(study, mu_phi=1.0, mu_M=1.0, H_mm=1.0)
-    else:
-        probe_wd = gc.work_diagrams(M_d, M_r, phi, mu_phi=1.0, mu_M=1.0, H_mm=1.0, exact_d=M_d, exact_r=M_r)
-    right_col = _column_width(_accuracy_rows(nt, probe_wd, work_unit),
-                              f"{sym(nt, 'A_d')}(φ_T) − {sym(nt, 'A_r')}(φ_T) = −1234 J ({word(nt, 'closure')})")
-
-    def pick_phi(room):
-        width = x1 - right_col - 16.0 - (x0 + room + 12.0)
-        if mu_phi is None:
-            return pick_angle_scale(period, width, symbol=nt.sym("mu_phi"))
-        s = mu_phi if isinstance(mu_phi, Scale) else Scale(nt.sym("mu_phi"), "rad", mu_phi)
-        if s.to_mm(period) > width + 1e-9:
-            raise InputError(f"the period at {markup.plain(s.caption())} needs {s.to_mm(period):.1f} mm but the "
-                             f"sheet leaves {width:.1f} mm; give a larger μ_φ or none")
-        return s
-
-    # the pole distance: given, or the smallest convenient H whose diagrams fit the strip; the
-    # pole must fit left of the moment diagram (room grows up to 90 mm, then μ_M grows)
-    A_span = max(float(np.ptp(np.concatenate((probe_wd.A_d.values, probe_wd.A_r.values, [0.0])))), 1e-300)
-    room = 44.0
-    for _ in range(8):
-        s_phi = pick_phi(room)
-        if H_mm is not None:
-            H = float(H_mm)
-            if not (math.isfinite(H) and H > 0):
-                raise InputError(f"H_mm = {H_mm!r}: the pole distance must be a positive number of mm")
-            break
-        H = convenient_at_least(A_span / (s_M.per_mm * s_phi.per_mm * (band_h - dim_room)), gc.POLE_SERIES)
-        if H + 12.0 <= room:
-            break
-        if room < 90.0:                     # first give the pole more room (μ_φ may grow with it) …
-            room = min(H + 12.0, 90.0)
-        elif not mu_M_given:                # … then draw the moments smaller
-            s_M = Scale(s_M.symbol, s_M.unit, convenient_at_least(s_M.per_mm * 1.01, CONVENIENT),
-                        note=s_M.note + "; enlarged so that the pole fits")
-        else:
-            break
-    if H + 12.0 > room:
-        if mu_phi is None and pick_phi(H + 12.0).per_mm != s_phi.per_mm:
-            raise InputError(f"the pole at H = {H:g} mm does not fit left of the moment diagram at "
-                             f"{markup.plain(s_phi.caption())}; give a smaller H_mm, a larger μ_M or a larger μ_φ")
-        room = H + 12.0
-    room = min(room, H + 12.0) if H + 12.0 >= 44.0 else 44.0
-    width = x1 - right_col - 16.0 - (x0 + room + 12.0)
-    if s_phi.to_mm(period) > width + 1e-9:
-        raise InputError(f"the pole at H = {H:g} mm and the period at {markup.plain(s_phi.caption())} do not fit "
-                         f"across the sheet; give a smaller H_mm or a larger μ_φ")
-    if study is not None:
-        wd = gc.study_work_diagrams(study, mu_phi=s_phi.per_mm, mu_M=s_M.per_mm, H_mm=H)
-    else:
-        wd = gc.work_diagrams(M_d, M_r, phi, mu_phi=s_phi.per_mm, mu_M=s_M.per_mm, H_mm=H, exact_d=M_d, exact_r=M_r)
-    s_A = Scale(sym(nt, "mu_A"), unit(nt, work_unit), wd.mu_A)
-    A_vals = np.concatenate((wd.A_d.values, wd.A_r.values, [0.0]))
-    if s_A.to_mm(float(np.ptp(A_vals))) > band_h + 1e-9:
-        raise InputError(f"at H = {H:g} mm the work diagrams need {s_A.to_mm(float(np.ptp(A_vals))):.1f} mm but the "
-                         f"strip leaves {band_h:.1f} mm; give a larger H_mm or none to have one picked")
-    gx0 = x0 + room + 12.0
-    occ = sheet.occ
-    elements: list = [sheet.header()]
+                  title=title or nt.word("calculus.work_title"),
+                  problem=prob if problem is None else problem, title_block=title_block)
+    ws = _work_scales(M_d, M_r, phi, study, sheet, nt, mu_M=mu_M, mu_phi=mu_phi, H_mm=H_mm, moment_unit=moment_unit,
+                      work_unit=work_unit)
     phi0 = float(phi[0])
     x = np.asarray(phi) - phi0
-    P_name = sym(nt, "P")
-
-    # ---- strip 1: the moment diagram with the mean ordinates, their projections, the rays
-    b_M = _Band(x0=gx0, top=top, height=band_h, s_phi=s_phi, s_y=s_M, lo=M_lo, hi=M_hi, period=period,
-                align="top")
-    curve_d = Polyline(b_M.pts(np.asarray(M_d.phi) - phi0, M_d.M), style=RESULT, name="curve-M_d")
-    curve_r = Polyline(b_M.pts(np.asarray(M_r.phi) - phi0, M_r.M), style=RESULT, name="curve-M_r")
-    steps, projections, rays = [], [], []
-    pole = b_M.mm(-H, 0.0)
-    for key, I, curve in (("d", wd.A_d, M_d), ("r", wd.A_r, M_r)):
-        means = np.asarray(I.mean_ordinate)
-        flat = bool(np.ptp(np.asarray(curve.M)) <= 1e-12 * max(1.0, float(np.abs(curve.M).max())))
-        seen: set = set()
-        for i, ybar in enumerate(means):
-            a_, b_ = b_M.pt(x[i], ybar), b_M.pt(x[i + 1], ybar)
-            if not flat:
-                steps.append(Polyline((b_M.pt(x[i], 0.0), a_, b_, b_M.pt(x[i + 1], 0.0)), style=THIN,
-                                      name=f"mean-{key}-{i + 1}"))
-            level = round(float(ybar / s_M.per_mm), 3)
-            if level in seen:
-                continue
-            seen.add(level)
-            target = b_M.pt(0.0, ybar)
-            if i > 0 and abs(a_[1] - target[1]) > 1e-9:
-                projections.append(Line(a_, target, style=PROJECTION, name=f"projection-{key}-{i + 1}"))
-            rays.append(Line(pole, target, style=RAY if key == "r" else PROJECTION, name=f"ray-{key}-{i + 1}"))
-    ax_phi_M, ax_M = b_M.axes(nt=nt, y_label=nt.quantity(nt.sym("M"), unit(nt, moment_unit)), m=len(x) - 1,
-                              name="M")
-    pole_els = _pole(b_M, H, P_name, "pole", occ)
-    _register(occ, curve_d, curve_r, *steps, *projections, *rays)
-    full_M = ax_phi_M
-    ax_phi_M, ax_M = _clear_tick_labels(ax_phi_M, occ), _clear_tick_labels(ax_M, occ, keep_values=True)
-    _register(occ, ax_phi_M, ax_M)
-    pos_M = _lost_positions(full_M, ax_phi_M, occ, "pos-M")
-    ords_M = np.concatenate((np.asarray(wd.A_r.mean_ordinate), np.asarray(wd.A_d.mean_ordinate))) / s_M.per_mm
-    dim = _h_dimension(b_M, H, ords_M, f"H = {nt.number(H)} {unit(nt, 'mm')}", "H", occ)
-    names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
-                           "M")
-    elements += ([ax_phi_M, ax_M] + steps + projections + rays + [curve_d, curve_r] + pole_els + dim + names_M + pos_M)
-
-    # ---- strip 2: the work diagrams, chords parallel to the rays
-    A_lo, A_hi = float(A_vals.min()), float(A_vals.max())
-    b_A = _Band(x0=gx0, top=top + band_h + gap, height=band_h, s_phi=s_phi, s_y=s_A, lo=A_lo, hi=A_hi,
-                period=period)
-    chords_d = Polyline(b_A.pts(x, wd.A_d.values), style=RESULT, name="chords-A_d")
-    chords_r = Polyline(b_A.pts(x, wd.A_r.values), style=RESULT, name="chords-A_r")
-    dots_A = [Point(p, radius_mm=0.5, name=f"dot-A_r-{k}") for k, p in enumerate(chords_r.points)]
-    dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
-    ax_phi_A, ax_A = b_A.axes(nt=nt, y_label=nt.quantity(nt.sym("A"), unit(nt, work_unit)), m=len(x) - 1, name="A")
-    _register(occ, chords_d, chords_r)
-    full_A = ax_phi_A
-    ax_phi_A, ax_A = _clear_tick_labels(ax_phi_A, occ), _clear_tick_labels(ax_A, occ, keep_values=True)
-    _register(occ, ax_phi_A, ax_A)
-    pos_A = _lost_positions(full_A, ax_phi_A, occ, "pos-A")
-    names_A = _curve_names(occ, ((chords_d, sym(nt, "A_d"), b_A.origin[1]), (chords_r, sym(nt, "A_r"), b_A.origin[1])),
-                           "A")
-    elements += [ax_phi_A, ax_A, chords_d, chords_r] + dots_A + names_A + pos_A
-
-    # ---- strip 3: ΔE = A_d − A_r
-    dE = wd.delta_E
-    b_E = _Band(x0=gx0, top=top + 2 * (band_h + gap), height=band_h, s_phi=s_phi, s_y=s_A, lo=float(dE.min()),
-                hi=float(dE.max()), period=period)
-    curve_E = Polyline(b_E.pts(x, dE), style=RESULT, name="curve-dE")
-    ordinates_E = [Line(b_E.pt(xk, 0.0), b_E.pt(xk, ek), style=THIN, name=f"ordinate-dE-{k}")
-                   for k, (xk, ek) in enumerate(zip(x, dE)) if abs(s_A.to_mm(float(ek))) > 0.05]
-    dots_E = [Point(p, radius_mm=0.5, name=f"dot-dE-{k}") for k, p in enumerate(curve_E.points)]
-    ax_phi_E, ax_E = b_E.axes(nt=nt, y_label=nt.quantity(nt.sym("dE"), unit(nt, work_unit)), m=len(x) - 1,
-                              name="dE")
-    _register(occ, curve_E, *ordinates_E)
-    full_E = ax_phi_E
-    ax_phi_E, ax_E = _clear_tick_labels(ax_phi_E, occ), _clear_tick_labels(ax_E, occ, keep_values=True)
-    _register(occ, ax_phi_E, ax_E)
-    pos_E = _lost_positions(full_E, ax_phi_E, occ, "pos-E")
-    elements += [ax_phi_E, ax_E] + ordinates_E + [curve_E] + dots_E + pos_E
-
-    # ---- right column: formulas and the accuracy of each construction
-    rx = x1 - right_col
-    picked = word(nt, "given") if H_mm is not None else word(nt, "picked")
-    elements += _side_block(rx, b_M.top + 4.0, [s_M.caption(nt), s_phi.caption(nt)], "formula-M", occ)
-    elements += _side_block(rx, b_A.top + 4.0, [f"{s_A.symbol} = {s_M.symbol}·{nt.sym('mu_phi')}·H = "
-                                                f"{nt.number(wd.mu_A)} {unit(nt, work_unit)}/{unit(nt, 'mm')}",
-                                                f"H = {nt.number(H)} {unit(nt, 'mm')} ({picked})"], "formula-A", occ)
-    closure = f"{sym(nt, 'A_d')}({nt.sym('phi')}_{{T}}) − {sym(nt, 'A_r')}({nt.sym('phi')}_{{T}}) = " \
-              f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {unit(nt, work_unit)} " \
-              f"({word(nt, 'closure')})"
-    elements += _side_block(rx, b_E.top + 4.0, [f"{nt.sym('dE')} = {sym(nt, 'A_d')} − {sym(nt, 'A_r')};  "
-                                                f"{s_A.symbol} = {nt.number(wd.mu_A)} {unit(nt, work_unit)}/"
-                                                f"{unit(nt, 'mm')}", closure], "formula-dE", occ)
-    rows = _accuracy_rows(nt, wd, work_unit)
-    table = _table(rows, align="lrrrr", name="accuracy-table", right=x1, bottom=b_E.top + band_h)
-    head = _titled_table(table, _accuracy_title(nt, study), "accuracy-title")
-    elements += head + [table]
-    scales = (s_phi, s_M, s_A)
-    elements += sheet.captions(scales)
-    notes = tuple(n for n in (s_phi.note, s_M.note) if n) + (
-        f"H = {H:g} mm ({'given' if H_mm is not None else 'picked: smallest convenient H whose work diagrams fit'})",)
+    occ = sheet.occ
+    b_M, els_M = _moment_strip(ws, occ, nt, M_d, M_r, x, phi0, moment_unit)
+    b_A, els_A = _work_strip(ws, occ, nt, x, work_unit)
+    b_E, els_E = _dE_strip(ws, occ, nt, x, work_unit)
+    column = _work_column(ws, (b_M, b_A, b_E), sheet.box[2], occ, nt, given=H_mm is not None, study=study,
+                          work_unit=work_unit)
+    scales = (ws.s_phi, ws.s_M, ws.s_A)
+    elements = [sheet.header(), *els_M, *els_A, *els_E, *column, *sheet.captions(scales)]
+    how = "given" if H_mm is not None else "picked: smallest convenient H whose work diagrams fit"
+    notes = tuple(n for n in (ws.s_phi.note, ws.s_M.note) if n) + (f"H = {ws.H:g} mm ({how})",)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
                  extra_scales=scales, notes=notes)
 
 
-def _curve_names(occ: Occupancy, pairs, band: str):
+def _curve_names(occ: Occupancy, pairs: Iterable[tuple[Polyline, str, float]], band: str) -> list[Text]:
     """Names of curves placed beside their right ends (or along them), where nothing is drawn."""
     out = []
     for curve, text, axis_y in pairs:

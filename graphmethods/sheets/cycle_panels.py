@@ -21,14 +21,11 @@ import numpy as np
 from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.elements import pi_ticks
 from graphmethods.scene.primitives import MAIN, Style
-from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, quantity, suppressed_base, sym, unit
+from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, suppressed_base
 from graphmethods.sheets.layout import TEXT_MM, given_angle_scale, given_scale
 
 DASHED = Style(width_mm=0.25, dash=(3.0, 1.2))
 GUIDE = Style(width_mm=0.13, dash=(1.2, 0.8))
-_TITLE = ("Moments, energy and speed over the cycle", "Моменты, энергия и скорость за цикл",
-          "等效力矩、能量与角速度在一个周期内的变化")
-_LANG = {"en": 0, "ru": 1, "zh": 2}
 
 
 def cycle_panels(problem, *, notation="en", title: str | None = None, samples: int = 1441) -> Scene:
@@ -61,8 +58,8 @@ def cycle_panels(problem, *, notation="en", title: str | None = None, samples: i
     wu = problem.work_unit
     n = nt.number
     w = cm.omega_at(phi)
-    legend = (f"J = {n(cm.J, sig=4)} {unit(nt, problem.inertia_unit)}; ω_{{max}} = {n(float(w.max()), sig=4)}, "
-              f"ω_{{min}} = {n(float(w.min()), sig=4)} {unit(nt, 'rad/s')}")
+    legend = (f"J = {n(cm.J, sig=4)} {nt.unit(problem.inertia_unit)}; ω_{{max}} = {n(float(w.max()), sig=4)}, "
+              f"ω_{{min}} = {n(float(w.min()), sig=4)} {nt.unit('rad/s')}")
     if cm.delta is not None:
         legend += f"; δ = {n(cm.delta, sig=3)}"
     data = PanelData(period=P, phi_M=ph2, M_d=Md2, M_r=Mr2, phi=phi, delta_E=cm.delta_E(phi), omega=w,
@@ -106,8 +103,8 @@ def linkage_panels(study, *, notation="en", title: str | None = None, samples: i
     guides = [float(ph2[k] + (ph2[k + 1] - ph2[k]) * D[k] / (D[k] - D[k + 1]))
               for k in range(D.size - 1) if D[k] * D[k + 1] < 0 or (D[k] == 0 and k > 0)]
     n = nt.number
-    legend = (f"J_F = {n(ex.J_F, sig=4)} {unit(nt, 'kg·m²')}; ω_{{max}} = {n(mo.omega_max, sig=4)}, "
-              f"ω_{{min}} = {n(mo.omega_min, sig=4)} {unit(nt, 'rad/s')}; δ = {n(mo.delta, sig=3)}")
+    legend = (f"J_F = {n(ex.J_F, sig=4)} {nt.unit('kg·m²')}; ω_{{max}} = {n(mo.omega_max, sig=4)}, "
+              f"ω_{{min}} = {n(mo.omega_min, sig=4)} {nt.unit('rad/s')}; δ = {n(mo.delta, sig=3)}")
     data = PanelData(period=P, phi_M=ph2, M_d=Md2, M_r=Mr2, phi=phi, delta_E=np.asarray(mo.delta_E, dtype=float),
                      omega=np.asarray(mo.omega, dtype=float), guides=tuple(guides), moment_unit="N·m",
                      work_unit="J", legend=legend)
@@ -141,7 +138,7 @@ class PanelData:
 def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Scene:
     """Lay out and draw :class:`PanelData` on A4 portrait (the three panels, captions, legend)."""
     P, ph2, Md2, Mr2, phi, E, w = data.period, data.phi_M, data.M_d, data.M_r, data.phi, data.delta_E, data.omega
-    title = title or _TITLE[_LANG.get(nt.code, 0)]
+    title = title or nt.word("motion.cycle_panels")
     mu, wu = data.moment_unit, data.work_unit
     sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem, title_block=True,
                        default_page=Page("A4", "portrait", frame=True))
@@ -150,22 +147,22 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
     top, bottom = sheet.top + 8.0, sheet.caption_y - 40.0
     gap = 14.0
     h = (bottom - top - 2 * gap) / 3.0
-    s_phi = given_angle_scale(None, sym(nt, "mu_phi"), P, px1 - px0)
+    s_phi = given_angle_scale(None, nt.sym("mu_phi"), P, px1 - px0)
     M_hi = float(max(Md2.max(), Mr2.max(), 0.0))
     M_lo = float(min(Md2.min(), Mr2.min(), 0.0))
-    s_M = given_scale(None, sym(nt, "mu_M"), unit(nt, mu), M_hi - M_lo, h, what="the moments")
+    s_M = given_scale(None, nt.sym("mu_M"), nt.unit(mu), M_hi - M_lo, h, what="the moments")
     E_lo, E_hi = float(min(E.min(), 0.0)), float(max(E.max(), 0.0))
-    s_E = given_scale(None, "μ_E", unit(nt, wu), max(E_hi - E_lo, 1e-12), h, what="the energy")
+    s_E = given_scale(None, "μ_E", nt.unit(wu), max(E_hi - E_lo, 1e-12), h, what="the energy")
     w_lo, w_hi = float(w.min()), float(w.max())
-    uw = f"({unit(nt, 'rad/s')})"
-    w_base = suppressed_base(w_lo, w_hi, given_scale(None, sym(nt, "mu_omega"), uw,
+    uw = f"({nt.unit('rad/s')})"
+    w_base = suppressed_base(w_lo, w_hi, given_scale(None, nt.sym("motion.mu_omega"), uw,
                                                      max(w_hi - w_lo, 1e-12) * 1.4, h, what="ω"), zero=None)
-    s_w = given_scale(None, sym(nt, "mu_omega"), uw, max(w_hi - w_base, 1e-12), h, what="ω")
+    s_w = given_scale(None, nt.sym("motion.mu_omega"), uw, max(w_hi - w_base, 1e-12), h, what="ω")
     ticks, labels = pi_ticks(P, s_phi, min_gap_mm=14.0)
     els = [sheet.header()]
-    panels = [("M", s_M, M_lo, M_hi, quantity(nt, sym(nt, "M"), mu)),
-              ("E", s_E, E_lo, E_hi, quantity(nt, "ΔE", wu)),
-              ("omega", s_w, w_base, w_hi, quantity(nt, sym(nt, "omega"), "rad/s"))]
+    panels = [("M", s_M, M_lo, M_hi, nt.quantity(nt.sym("M"), mu)),
+              ("E", s_E, E_lo, E_hi, nt.quantity("ΔE", wu)),
+              ("omega", s_w, w_base, w_hi, nt.quantity(nt.sym("motion.omega"), "rad/s"))]
     frames = {}
     y_top = top
     for key, s_y, lo, hi, label in panels:
@@ -173,7 +170,7 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
         f = Frame(origin, s_phi, s_y)
         level = lo if lo > 0 else 0.0                  # the φ axis at 0, or at the suppressed base
         ax_phi = Axis((px0, f.pt(0.0, level)[1]), s_phi, "x", min_value=0.0, max_value=P, ticks=ticks,
-                      tick_labels=labels, label=sym(nt, "phi"), size_mm=SMALL_MM, name=f"{key}-axis-phi",
+                      tick_labels=labels, label=nt.sym("phi"), size_mm=SMALL_MM, name=f"{key}-axis-phi",
                       labels_side="above" if hi <= 0 else "")
         yt = tuple(v for v in nice_ticks(lo, hi, s_y, min_gap_mm=7.0) if lo <= v <= hi)
         ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yt, label=label, size_mm=SMALL_MM,
@@ -193,7 +190,7 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
         else:
             at = fM.pt(P, float(vals[-1]))
             pos = (at[0] + 2.0, at[1] + dy)
-        els.append(Text(pos, sym(nt, key), size_mm=TEXT_MM, name=f"name-{key}"))
+        els.append(Text(pos, nt.sym(key), size_mm=TEXT_MM, name=f"name-{key}"))
     els.append(Polyline(fE.pts(phi, E), style=MAIN, name="curve-delta_E"))
     els.append(Polyline(fw.pts(phi, w), style=MAIN, name="curve-omega"))
     # verticals through the boundaries of the excess-work table (the crossings), through all panels

@@ -16,6 +16,8 @@ figure. ``notation="en" | "ru" | "zh"`` switches every symbol and word.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -25,6 +27,7 @@ from graphmethods.scene import (
     Dimension,
     Frame,
     Line,
+    Page,
     Point,
     Polyline,
     Region,
@@ -39,10 +42,13 @@ from graphmethods.scene import (
     notation as get_notation,
     pi_ticks,
 )
-from graphmethods.scene.elements import Element, Group, label_bbox
+from graphmethods.scene.elements import Element, Group
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label, Style
+from graphmethods.sheets.calculus import clear_tick_labels, register
 from graphmethods.sheets.layout import (
     TEXT_MM,
+    Box,
     Occupancy,
     Sheet,
     angle_deg_text,
@@ -58,7 +64,7 @@ OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
 # ----------------------------------------------------------------------------- common parts
 
-def _cycle(obj, nt):
+def _cycle(obj: Any, nt: Notation) -> tuple[Any, str]:
     """(ExcessWork, problem text in the notation's language) from a cycle or a problem that has one."""
     if hasattr(obj, "E") and hasattr(obj, "work"):
         return obj, ""
@@ -69,32 +75,16 @@ def _cycle(obj, nt):
                      f"got {type(obj).__name__}")
 
 
-def _clear_ticks(axis: Axis, *curves) -> Axis:
-    """The axis with the tick labels that a curve runs through left out (the tick marks stay)."""
-    from dataclasses import replace
-
-    from graphmethods.scene.primitives import Label as PLabel
-
+def _clear_ticks(axis: Axis, *curves: Polyline) -> Axis:
+    """The axis with the tick labels that a curve runs through left out (the tick marks stay); only the
+    curves count, within 0.3 mm."""
     occ = Occupancy(pad_mm=0.3)
     for c in curves:
         occ.add_line(c.points)
-    labels = list(axis.tick_labels) if axis.tick_labels is not None else None
-    texts = [p for p in axis.primitives() if isinstance(p, PLabel)][:len(axis.ticks)]
-    if labels is None:
-        labels = [t.text for t in texts]
-    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-    for i, lab in zip(shown, texts):
-        if not occ.is_free(label_bbox(lab)):
-            labels[i] = ""
-    return replace(axis, tick_labels=tuple(labels))
+    return clear_tick_labels(axis, occ)
 
 
-def _register(occ: Occupancy, *elements) -> None:
-    for e in elements:
-        occ.add_primitives(e.primitives())
-
-
-def _piece(curve, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
+def _piece(curve: Any, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
     """The points of a moment curve over [a, b]: right limit at a, inner knots (jumps kept), left limit at b."""
     inner = (curve.phi > a) & (curve.phi < b)
     left_b = curve.limits(np.array([b]))[0][0]
@@ -104,11 +94,11 @@ def _piece(curve, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
     return phi, M
 
 
-def _curve_points(curve) -> tuple[np.ndarray, np.ndarray]:
+def _curve_points(curve: Any) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(curve.phi, dtype=float), np.asarray(curve.M, dtype=float)
 
 
-def _point_value(M_d, M_r, phi: float) -> float:
+def _point_value(M_d: Any, M_r: Any, phi: float) -> float:
     """Where to put the dot of a boundary: on the curve that is continuous there (M_d first)."""
     ld, rd = (float(v[0]) for v in M_d.limits(np.array([phi])))
     lr, rr = (float(v[0]) for v in M_r.limits(np.array([phi])))
@@ -119,7 +109,7 @@ def _point_value(M_d, M_r, phi: float) -> float:
     return rd
 
 
-def _box_centres(inner, w: float, h: float, pole) -> list:
+def _box_centres(inner: Any, w: float, h: float, pole: tuple[float, float]) -> list[tuple[float, float]]:
     """Centres where a w × h box lies inside the polygon ``inner``: nearest the pole first.
 
     The feasible centres are the polygon eroded by the box (the intersection of the
@@ -143,7 +133,8 @@ def _box_centres(inner, w: float, h: float, pole) -> list:
     return [(p.x, p.y) for p in out]
 
 
-def _interior_candidates(poly, step: float = 1.5, limit: int = 600):
+def _interior_candidates(poly: Any, step: float = 1.5,
+                         limit: int = 600) -> tuple[list[tuple[float, float]], tuple[float, float] | None]:
     """Points inside a shapely polygon, nearest its pole of inaccessibility first."""
     import shapely
     from shapely.ops import polylabel
@@ -170,14 +161,257 @@ def _interior_candidates(poly, step: float = 1.5, limit: int = 600):
 
 # ----------------------------------------------------------------------------- 1. moment diagram
 
-def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, title=None, problem=None,
+@dataclass(frozen=True)
+class MomentDiagramLayout:
+    """The millimetre constants of :func:`moment_diagram` (A4 landscape: one plot with the hatched intervals)."""
+
+    left_mm: float = 16.0           # the M axis's tick labels, left of the plot
+    right_mm: float = 10.0          # right of the φ axis's name
+    top_mm: float = 9.0             # below the title
+    bottom_mm: float = 12.0         # above the scale captions
+    phi_end_mm: float = 10.0        # the φ axis beyond the period (its arrow)
+    phi_tick_gap_mm: float = 14.0   # at least between the φ values (multiples of π)
+    M_tick_gap_mm: float = 8.0      # at least between the M values
+    above_mm: float = 8.0           # labels may stand this far above the plot
+    below_mm: float = 9.0           # … and this far below it
+    text_inset_mm: float = 0.6      # an interval's text keeps this far inside its region
+    line_spacing: float = 1.35      # of the interval texts, in text heights
+    small_text_mm: float = 2.6      # the interval texts when TEXT_MM does not fit
+    leader_rings_mm: tuple[float, ...] = (12.0, 18.0, 24.0, 32.0, 42.0, 55.0, 70.0)
+    leader_angles_deg: tuple[float, ...] = (90, 60, 120, 30, 150, 0, 180, 270, 240, 300, 210, 330)
+
+
+MOMENT_LAYOUT = MomentDiagramLayout()
+
+
+@dataclass(frozen=True)
+class _MomentGraph:
+    """The scales and frame of a moment diagram and the plot's edges on the page (mm)."""
+
+    s_phi: Scale
+    s_M: Scale
+    frame: Frame
+    phi0: float
+    period: float
+    M_lo: float
+    M_hi: float
+    px0: float
+    py0: float
+    py1: float
+    x1: float
+
+    def P(self, phi: float, M: float) -> tuple[float, float]:
+        """The page point of (φ, M), φ counted from the cycle's start."""
+        return self.frame.pt(phi - self.phi0, M)
+
+    def box(self, below_mm: float) -> tuple[float, float, float, float]:
+        """The box labels stay in: the plot, with room above it and ``below_mm`` under it."""
+        return (self.px0 + 1.0, self.py0 - MOMENT_LAYOUT.above_mm, self.x1, self.py1 + below_mm)
+
+
+def _moment_graph(ew: Any, sheet: Sheet, nt: Notation, *, mu_M: Any, mu_phi: Any, moment_unit: str) -> _MomentGraph:
+    """The scales fitted to the plot (or checked when given) and its frame."""
+    L = MOMENT_LAYOUT
+    x0, _, x1, _ = sheet.box
+    M_d, M_r = ew.M_d, ew.M_r
+    phi0, period = float(M_d.start), float(ew.period)
+    M_all = np.concatenate((M_d.M, M_r.M, [0.0]))
+    M_lo, M_hi = float(M_all.min()), float(M_all.max())
+    phi_name = nt.quantity(nt.sym("phi"), "rad")
+    px0, px1 = x0 + L.left_mm, x1 - L.right_mm - markup.text_width_mm(phi_name, SMALL_MM + 0.5)
+    py0, py1 = sheet.top + L.top_mm, sheet.caption_y - L.bottom_mm
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0 - L.phi_end_mm)
+    s_M = given_scale(mu_M, nt.sym("mu_M"), moment_unit, M_hi - M_lo, py1 - py0, what="the moment diagram")
+    frame = Frame((px0, py0 + s_M.to_mm(M_hi)), s_phi, s_M)
+    return _MomentGraph(s_phi, s_M, frame, phi0, period, M_lo, M_hi, px0, py0, py1, x1)
+
+
+def _moment_axes(g: _MomentGraph, ew: Any, nt: Notation, occ: Occupancy,
+                 moment_unit: str) -> tuple[Axis, Axis, Polyline, Polyline]:
+    """The φ and M axes (values a curve runs through left out) and the curves M_d, M_r."""
+    L, origin = MOMENT_LAYOUT, g.frame.origin
+    ticks_phi, labels_phi = pi_ticks(g.period, g.s_phi, min_gap_mm=L.phi_tick_gap_mm)
+    ax_phi = Axis(origin, g.s_phi, "x", min_value=0.0, max_value=g.period, ticks=ticks_phi, tick_labels=labels_phi,
+                  label=nt.quantity(nt.sym("phi"), "rad"), size_mm=SMALL_MM, name="axis-phi",
+                  skip_zero_label=g.M_lo < 0)
+    M_ticks = nice_ticks(g.M_lo, g.M_hi, g.s_M, min_gap_mm=L.M_tick_gap_mm)
+    ax_M = Axis(origin, g.s_M, "y", min_value=min(g.M_lo, 0.0) if g.M_lo < 0 else 0.0, max_value=g.M_hi,
+                ticks=M_ticks, label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), size_mm=SMALL_MM,
+                decimal=nt.decimal, name="axis-M")
+    cd = Polyline(g.frame.pts(ew.M_d.phi - g.phi0, ew.M_d.M), style=MAIN, name="curve-M_d")
+    cr = Polyline(g.frame.pts(ew.M_r.phi - g.phi0, ew.M_r.M), style=MAIN, name="curve-M_r")
+    ax_phi, ax_M = _clear_ticks(ax_phi, cd, cr), _clear_ticks(ax_M, cd, cr)
+    register(occ, ax_phi, ax_M, cd, cr)
+    return ax_phi, ax_M, cd, cr
+
+
+def _closing_ordinates(g: _MomentGraph, ew: Any) -> list[Line]:
+    """Ordinates closing the regions where both curves are continuous but apart."""
+    ordinates = []
+    for k, ph in enumerate(ew.phi):
+        ld, rd = (float(v[0]) for v in ew.M_d.limits(np.array([ph])))
+        lr, rr = (float(v[0]) for v in ew.M_r.limits(np.array([ph])))
+        if ld == rd and lr == rr and abs(ld - lr) > 1e-9 * max(1.0, abs(g.M_hi - g.M_lo)):
+            ordinates.append(Line(g.P(ph, ld), g.P(ph, lr), style=THIN, name=f"ordinate-{ew.labels[k]}"))
+    return ordinates
+
+
+Block = tuple[list[Label], tuple[float, float, float, float]]
+
+
+def _block_inside(occ: Occupancy, poly: Any, layouts: tuple[tuple[str, ...], ...], plot_box: Box
+                  ) -> tuple[Block | None, tuple[str, ...], float, Any]:
+    """An interval's text inside its region: the first of the sizes and layouts that fits, nearest the
+    region's pole of inaccessibility. Returns (placed block or None, lines, size, pole or None)."""
+    from shapely.geometry import box as sbox
+
+    inner = poly.buffer(-MOMENT_LAYOUT.text_inset_mm)
+    cands, pole = _interior_candidates(poly)
+    placed, lines, size = None, layouts[0], TEXT_MM
+    if pole is not None and not inner.is_empty:
+        for size in (TEXT_MM, MOMENT_LAYOUT.small_text_mm):
+            for lines in layouts:
+                lmm = size * MOMENT_LAYOUT.line_spacing
+                w, h = occ.block_size(lines, size_mm=size, line_mm=lmm)
+                placed = occ.place_block(_box_centres(inner, w, h, pole) + cands, lines, size_mm=size,
+                                         line_mm=lmm, within=plot_box, check_lines=False,
+                                         inside=lambda bx, inner=inner: inner.contains(sbox(*bx)))
+                if placed is not None:
+                    return placed, lines, size, pole
+    return placed, lines, size, pole
+
+
+def _block_outside(occ: Occupancy, pole: tuple[float, float], lines: tuple[str, ...], line_mm: float,
+                   plot_box: Box, all_regions: Any, i: int) -> tuple[Block | None, Line | None]:
+    """An interval's text outside all regions on rings round its pole, with a leader to the pole."""
+    from shapely.geometry import box as sbox
+
+    L = MOMENT_LAYOUT
+    ring = [(pole[0] + r * math.cos(t), pole[1] - r * math.sin(t))
+            for r in L.leader_rings_mm for t in np.radians(L.leader_angles_deg)]
+    placed = occ.place_block(ring, lines, size_mm=TEXT_MM, line_mm=line_mm, within=plot_box,
+                             inside=lambda bx: not all_regions.intersects(sbox(*bx)))
+    if placed is None:
+        return None, None
+    bb = placed[1]
+    tx = min(max(pole[0], bb[0] + 1.0), bb[2] - 1.0)
+    if bb[3] <= pole[1]:                     # block above: from its bottom edge
+        ty = bb[3]
+    elif bb[1] >= pole[1]:                   # block below: from under the sign line
+        ty = bb[1] + line_mm
+    else:                                    # beside: from the middle of its near side
+        tx, ty = (bb[0] if bb[0] > pole[0] else bb[2]), (bb[1] + bb[3]) / 2
+    leader = Line((tx, ty), pole, style=THIN, name=f"leader-{i + 1}")
+    occ.add_line((leader.start, leader.end))
+    return placed, leader
+
+
+def _interval(i: int, A: float, poly: Any, outline: Any, g: _MomentGraph, nt: Notation, occ: Occupancy,
+              all_regions: Any, work_unit: str) -> tuple[Region, Group | None]:
+    """Interval i: its hatched region (/ gain, \\ loss) and its sign, area f_i and work A_i (inside, or
+    outside with a leader when the region has no room)."""
+    gain = A > 0
+    area_per_J = 1.0 / (g.s_M.per_mm * g.s_phi.per_mm)
+    f_val = f"{nt.number(float(A) * area_per_J, plus=True)} {nt.unit('mm²')}"
+    A_val = f"{nt.number(float(A), plus=True)} {nt.unit(work_unit)}"
+    f_sym, A_sym = f"{nt.sym('f')}_{{{i + 1}}}", f"{nt.sym('A')}_{{{i + 1}}}"
+    layouts: tuple[tuple[str, ...], ...] = (("", f"{f_sym} = {f_val}", f"{A_sym} = {A_val}"),   # sign above two lines
+                                            ("", f"{f_sym} =", f_val, f"{A_sym} =", A_val))     # narrow: five lines
+    plot_box = g.box(MOMENT_LAYOUT.below_mm)
+    placed, lines, size, pole = _block_inside(occ, poly, layouts, plot_box)
+    line_mm = size * MOMENT_LAYOUT.line_spacing
+    leader = None
+    if placed is None and pole is not None:        # no room inside: outside the regions, with a leader
+        lines, size, line_mm = layouts[0], TEXT_MM, TEXT_MM * MOMENT_LAYOUT.line_spacing
+        placed, leader = _block_outside(occ, pole, lines, line_mm, plot_box, all_regions, i)
+    keep: tuple[tuple[float, float, float, float], ...] = ()
+    annotation = None
+    if placed is not None:
+        labels, bb = placed
+        if leader is None:
+            keep = ((bb[0] - 0.6, bb[1] - 0.6, bb[2] + 0.6, bb[3] + 0.6),)
+        els: list[Element] = [SignMark(((bb[0] + bb[2]) / 2, bb[1] + line_mm / 2), "+" if gain else "−",
+                                       size_mm=size * 0.9, name=f"sign-{i + 1}")]
+        els += [Text((lab.x, lab.y), t, size_mm=size, anchor="middle", name=f"label-{i + 1}")
+                for lab, t in zip(labels[1:], lines[1:])]
+        if leader is not None:
+            els += [leader, Point(pole, radius_mm=0.5, name=f"leader-dot-{i + 1}")]
+        annotation = Group(tuple(els), name=f"annotation-{i + 1}")
+    region = Region(outline, hatch_angle_deg=45.0 if gain else 135.0, hatch_spacing_mm=2.0, keep_clear=keep,
+                    name=f"region-{i + 1}")
+    return region, annotation
+
+
+def _intervals(g: _MomentGraph, ew: Any, nt: Notation, occ: Occupancy,
+               work_unit: str) -> tuple[list[Region], list[Group]]:
+    """The hatched regions between the crossings and their annotations (sign, area, work)."""
+    from shapely import union_all
+    from shapely.geometry import Polygon as SPolygon
+
+    outlines, polys = [], []
+    for i in range(len(ew.work)):
+        a, b = float(ew.phi[i]), float(ew.phi[i + 1])
+        pd, md = _piece(ew.M_d, a, b)
+        pr, mr = _piece(ew.M_r, a, b)
+        outline = g.frame.pts(np.concatenate((pd, pr[::-1])) - g.phi0, np.concatenate((md, mr[::-1])))
+        outlines.append(outline)
+        polys.append(SPolygon(outline).buffer(0))
+    all_regions = union_all(polys)
+    regions, annotations = [], []
+    for i, A in enumerate(ew.work):
+        region, annotation = _interval(i, A, polys[i], outlines[i], g, nt, occ, all_regions, work_unit)
+        regions.append(region)
+        if annotation is not None:
+            annotations.append(annotation)
+    for region in regions:                    # labels placed from here on keep off the hatching
+        occ.add_primitives(region.primitives())
+    return regions, annotations
+
+
+def _boundary_points(g: _MomentGraph, ew: Any, occ: Occupancy) -> list[Group]:
+    """The boundary points a, b, c … on the curve that is continuous there, named."""
+    points = []
+    for k, ph in enumerate(ew.phi):
+        at = g.P(float(ph), _point_value(ew.M_d, ew.M_r, float(ph)))
+        lab = occ.place_label(at, ew.labels[k], ("nw", "ne", "n", "sw", "se", "s", "w", "e"), size_mm=TEXT_MM + 0.3,
+                              within=g.box(MOMENT_LAYOUT.below_mm + 1.0))
+        points.append(Group((Point(at, radius_mm=0.6, name=f"dot-{ew.labels[k]}"),
+                             Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
+                                  name=f"name-{ew.labels[k]}")), name=f"point-{ew.labels[k]}"))
+    return points
+
+
+def _moment_names(g: _MomentGraph, ew: Any, nt: Notation, occ: Occupancy, cd: Polyline,
+                  cr: Polyline) -> list[Text]:
+    """The names M_d, M_r at the curves' right ends (or along them, where those are taken)."""
+    names = []
+    for curve, key, el in ((ew.M_d, "M_d", cd), (ew.M_r, "M_r", cr)):
+        text, size = nt.sym(key), TEXT_MM + 0.5
+        along = [(g.P(g.phi0 + t * g.period, float(curve(g.phi0 + t * g.period))), ("n", "s", "nw", "sw"))
+                 for t in (0.93, 0.85, 0.75, 0.6)]
+        spots = [(el.end, ("e",))] + along + [(el.end, ("ne", "se", "n", "s"))]
+        nlab: Label | None = None
+        for at, dirs in spots:
+            nlab = occ.first_free(at, text, dirs, (1.5, 3.0), size, g.box(MOMENT_LAYOUT.below_mm))
+            if nlab is not None:
+                break
+        if nlab is None:
+            nlab = occ.place_label(el.end, text, ("e",), size_mm=size, gap_mm=1.5, register=False)
+        occ.add_label(nlab)
+        names.append(Text((nlab.x, nlab.y), text, size_mm=size, anchor=nlab.anchor, name=f"name-{key}"))
+    return names
+
+
+def moment_diagram(cycle: Any, *, mu_M: Any = None, mu_phi: Any = None, notation: Any = "en",
+                   page: Page | None = None, title: str | None = None, problem: Any = None,
                    moment_unit: str = "N·m", work_unit: str = "J", title_block: bool = True,
                    name: str = "moment-diagram") -> Scene:
     """M_d and M_r over the period, the intervals between their crossings hatched and annotated.
 
     Each interval is hatched (/ for a gain, \\ for a loss) with its sign and its
     area f_i (mm² on this drawing) and excess work A_i written in it; the crossing
-    points are labelled a, b, c, …
+    points are labelled a, b, c, … Steps: the scales (:func:`_moment_graph`, laid out by
+    :data:`MOMENT_LAYOUT`), the axes and curves, the intervals, the points and names.
 
     Parameters
     ----------
@@ -213,164 +447,27 @@ def moment_diagram(cycle, *, mu_M=None, mu_phi=None, notation="en", page=None, t
         raise InputError("moment_diagram needs the moment curves M_d and M_r; this cycle was given as areas, works "
                          "or levels, which fix no curves. Draw energy_indicator or excess_work_table instead")
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("moment_diagram"),
-                   problem=prob if problem is None else problem, title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
-    M_d, M_r = ew.M_d, ew.M_r
-    phi0, period = float(M_d.start), float(ew.period)
-    M_all = np.concatenate((M_d.M, M_r.M, [0.0]))
-    M_lo, M_hi = float(M_all.min()), float(M_all.max())
-
-    phi_name = nt.quantity(nt.sym("phi"), "rad")
-    px0, px1 = x0 + 16.0, x1 - 10.0 - markup.text_width_mm(phi_name, SMALL_MM + 0.5)  # tick labels, axis name
-    py0, py1 = sheet.top + 9.0, sheet.caption_y - 12.0
-    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0 - 10.0)
-    s_M = given_scale(mu_M, nt.sym("mu_M"), moment_unit, M_hi - M_lo, py1 - py0, what="the moment diagram")
-    origin = (px0, py0 + s_M.to_mm(M_hi))
-    f = Frame(origin, s_phi, s_M)
-
-    def P(phi, M):
-        return f.pt(phi - phi0, M)
-
+                  problem=prob if problem is None else problem, title_block=title_block)
+    g = _moment_graph(ew, sheet, nt, mu_M=mu_M, mu_phi=mu_phi, moment_unit=moment_unit)
     occ = sheet.occ
-    # axes
-    ticks_phi, labels_phi = pi_ticks(period, s_phi, min_gap_mm=14.0)
-    ax_phi = Axis(origin, s_phi, "x", min_value=0.0, max_value=period, ticks=ticks_phi, tick_labels=labels_phi,
-                  label=phi_name, size_mm=SMALL_MM, name="axis-phi", skip_zero_label=M_lo < 0)
-    M_ticks = nice_ticks(M_lo, M_hi, s_M, min_gap_mm=8.0)
-    ax_M = Axis(origin, s_M, "y", min_value=min(M_lo, 0.0) if M_lo < 0 else 0.0, max_value=M_hi,
-                ticks=M_ticks, label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), size_mm=SMALL_MM,
-                decimal=nt.decimal, name="axis-M")
-    # curves
-    cd = Polyline(f.pts(M_d.phi - phi0, M_d.M), style=MAIN, name="curve-M_d")
-    cr = Polyline(f.pts(M_r.phi - phi0, M_r.M), style=MAIN, name="curve-M_r")
-    ax_phi, ax_M = _clear_ticks(ax_phi, cd, cr), _clear_ticks(ax_M, cd, cr)
-    _register(occ, ax_phi, ax_M, cd, cr)
-
-    # ordinates closing the regions where both curves are continuous but apart
-    ordinates = []
-    for k, ph in enumerate(ew.phi):
-        ld, rd = (float(v[0]) for v in M_d.limits(np.array([ph])))
-        lr, rr = (float(v[0]) for v in M_r.limits(np.array([ph])))
-        if ld == rd and lr == rr and abs(ld - lr) > 1e-9 * max(1.0, abs(M_hi - M_lo)):
-            ordinates.append(Line(P(ph, ld), P(ph, lr), style=THIN, name=f"ordinate-{ew.labels[k]}"))
-    _register(occ, *ordinates)
-
-    # the intervals: hatched regions with sign, area and work
-    from shapely.geometry import Polygon as SPolygon, box as sbox
-
-    outlines, polys = [], []
-    for i in range(len(ew.work)):
-        a, b = float(ew.phi[i]), float(ew.phi[i + 1])
-        pd, md = _piece(M_d, a, b)
-        pr, mr = _piece(M_r, a, b)
-        outline = f.pts(np.concatenate((pd, pr[::-1])) - phi0, np.concatenate((md, mr[::-1])))
-        outlines.append(outline)
-        polys.append(SPolygon(outline).buffer(0))
-    from shapely import union_all
-
-    all_regions = union_all(polys)
-    plot_box = (px0 + 1.0, py0 - 8.0, x1, py1 + 9.0)
-    area_per_J = 1.0 / (s_M.per_mm * s_phi.per_mm)
-    regions, annotations = [], []
-    for i, A in enumerate(ew.work):
-        poly, outline = polys[i], outlines[i]
-        gain = A > 0
-        f_val = f"{nt.number(float(A) * area_per_J, plus=True)} {nt.unit('mm²')}"
-        A_val = f"{nt.number(float(A), plus=True)} {nt.unit(work_unit)}"
-        f_sym, A_sym = f"{nt.sym('f')}_{{{i + 1}}}", f"{nt.sym('A')}_{{{i + 1}}}"
-        layouts: tuple[tuple[str, ...], ...] = (
-                  ("", f"{f_sym} = {f_val}", f"{A_sym} = {A_val}"),            # sign above two lines
-                   ("", f"{f_sym} =", f_val, f"{A_sym} =", A_val))               # narrow: five lines
-        inner = poly.buffer(-0.6)
-        cands, pole = _interior_candidates(poly)
-        placed, lines, size = None, layouts[0], TEXT_MM
-        if pole is not None and not inner.is_empty:
-            for size in (TEXT_MM, 2.6):
-                for lines in layouts:
-                    lmm = size * 1.35
-                    w, h = occ.block_size(lines, size_mm=size, line_mm=lmm)
-                    placed = occ.place_block(_box_centres(inner, w, h, pole) + cands, lines, size_mm=size,
-                                             line_mm=lmm, within=plot_box, check_lines=False,
-                                             inside=lambda bx, inner=inner: inner.contains(sbox(*bx)))
-                    if placed is not None:
-                        break
-                if placed is not None:
-                    break
-        line_mm = size * 1.35
-        leader = None
-        if placed is None and pole is not None:        # no room inside: outside the regions, with a leader
-            lines, size, line_mm = layouts[0], TEXT_MM, TEXT_MM * 1.35
-            ring = [(pole[0] + r * math.cos(t), pole[1] - r * math.sin(t))
-                    for r in (12.0, 18.0, 24.0, 32.0, 42.0, 55.0, 70.0)
-                    for t in np.radians([90, 60, 120, 30, 150, 0, 180, 270, 240, 300, 210, 330])]
-            placed = occ.place_block(ring, lines, size_mm=size, line_mm=line_mm, within=plot_box,
-                                     inside=lambda bx: not all_regions.intersects(sbox(*bx)))
-            if placed is not None:
-                bb = placed[1]
-                tx = min(max(pole[0], bb[0] + 1.0), bb[2] - 1.0)
-                if bb[3] <= pole[1]:                     # block above: from its bottom edge
-                    ty = bb[3]
-                elif bb[1] >= pole[1]:                   # block below: from under the sign line
-                    ty = bb[1] + line_mm
-                else:                                    # beside: from the middle of its near side
-                    tx, ty = (bb[0] if bb[0] > pole[0] else bb[2]), (bb[1] + bb[3]) / 2
-                leader = Line((tx, ty), pole, style=THIN, name=f"leader-{i + 1}")
-                occ.add_line((leader.start, leader.end))
-        keep: tuple[tuple[float, float, float, float], ...] = ()
-        if placed is not None:
-            labels, bb = placed
-            if leader is None:
-                keep = ((bb[0] - 0.6, bb[1] - 0.6, bb[2] + 0.6, bb[3] + 0.6),)
-            els: list[Element] = [SignMark(((bb[0] + bb[2]) / 2, bb[1] + line_mm / 2), "+" if gain else "−", size_mm=size * 0.9,
-                            name=f"sign-{i + 1}")]
-            els += [Text((lab.x, lab.y), t, size_mm=size, anchor="middle", name=f"label-{i + 1}")
-                    for lab, t in zip(labels[1:], lines[1:])]
-            if leader is not None:
-                els += [leader, Point(pole, radius_mm=0.5, name=f"leader-dot-{i + 1}")]
-            annotations.append(Group(tuple(els), name=f"annotation-{i + 1}"))
-        region = Region(outline, hatch_angle_deg=45.0 if gain else 135.0, hatch_spacing_mm=2.0, keep_clear=keep,
-                        name=f"region-{i + 1}")
-        regions.append(region)
-    for region in regions:                    # labels placed from here on keep off the hatching
-        occ.add_primitives(region.primitives())
-
-    # boundary points a, b, c …
-    points = []
-    for k, ph in enumerate(ew.phi):
-        at = P(float(ph), _point_value(M_d, M_r, float(ph)))
-        lab = occ.place_label(at, ew.labels[k], ("nw", "ne", "n", "sw", "se", "s", "w", "e"), size_mm=TEXT_MM + 0.3,
-                              within=(px0 + 1, py0 - 8, x1, py1 + 10))
-        points.append(Group((Point(at, radius_mm=0.6, name=f"dot-{ew.labels[k]}"),
-                             Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
-                                  name=f"name-{ew.labels[k]}")), name=f"point-{ew.labels[k]}"))
-
-    # curve names at their right ends
-    names = []
-    for curve, key, el in ((M_d, "M_d", cd), (M_r, "M_r", cr)):
-        text, size = nt.sym(key), TEXT_MM + 0.5
-        spots = [(el.end, ("e",))] + [(P(phi0 + t * period, float(curve(phi0 + t * period))), ("n", "s", "nw", "sw"))
-                                      for t in (0.93, 0.85, 0.75, 0.6)] + [(el.end, ("ne", "se", "n", "s"))]
-        nlab: Label | None = None
-        for at, dirs in spots:
-            nlab = occ.first_free(at, text, dirs, (1.5, 3.0), size, (px0 + 1, py0 - 8, x1, py1 + 9))
-            if nlab is not None:
-                break
-        if nlab is None:
-            nlab = occ.place_label(el.end, text, ("e",), size_mm=size, gap_mm=1.5, register=False)
-        occ.add_label(nlab)
-        names.append(Text((nlab.x, nlab.y), text, size_mm=size, anchor=nlab.anchor, name=f"name-{key}"))
-
-    scales = (s_phi, s_M)
+    ax_phi, ax_M, cd, cr = _moment_axes(g, ew, nt, occ, moment_unit)
+    ordinates = _closing_ordinates(g, ew)
+    register(occ, *ordinates)
+    regions, annotations = _intervals(g, ew, nt, occ, work_unit)
+    points = _boundary_points(g, ew, occ)
+    names = _moment_names(g, ew, nt, occ, cd, cr)
+    scales = (g.s_phi, g.s_M)
     elements = ([sheet.header()] + regions + ordinates + [ax_phi, ax_M, cd, cr] + annotations + points + names
                 + sheet.captions(scales, legend=nt.word("gain_loss")))
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
-                 notes=(s_phi.note, s_M.note))
+                 notes=(g.s_phi.note, g.s_M.note))
 
 
 # ----------------------------------------------------------------------------- 2. excess-work table
 
-def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=None, work_unit: str = "J",
-                      moment_unit: str = "N·m", title_block: bool = True, name: str = "excess-work-table") -> Scene:
+def excess_work_table(cycle: Any, *, notation: Any = "en", page: Page | None = None, title: str | None = None,
+                      problem: Any = None, work_unit: str = "J", moment_unit: str = "N·m", title_block: bool = True,
+                      name: str = "excess-work-table") -> Scene:
     """The excess-work table drawn as a table: intervals, (angles), (areas), works, running energy.
 
     The rows of the highest and lowest energy are marked, and E_max, E_min and
@@ -388,8 +485,7 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
     ew, prob = _cycle(cycle, nt)
     has_scales = ew.areas_mm2 is not None and ew.mu_M is not None and ew.mu_phi is not None
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("excess_work_table"),
-                   problem=prob if problem is None else problem, title_block=title_block,
-                   has_scales=has_scales)
+                  problem=prob if problem is None else problem, title_block=title_block, has_scales=has_scales)
     x0, y0, x1, y1 = sheet.box
     unit = nt.unit(work_unit)
     A, E = nt.sym("A"), nt.sym("E")
@@ -402,7 +498,7 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
              f"{nt.word('level')} {nt.quantity(E, work_unit)}", ""]
     ncol = len(head)
 
-    def mark(k):
+    def mark(k: int) -> str:
         if k == ew.index_E_max:
             return nt.sym("E_max")
         if k == ew.index_E_min:
@@ -453,16 +549,163 @@ def excess_work_table(cycle, *, notation="en", page=None, title=None, problem=No
 
 # ----------------------------------------------------------------------------- 3. energy indicator
 
-def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation="en", page=None, title=None,
-                     problem=None, work_unit: str = "J", title_block: bool = True,
-                     name: str = "energy-indicator") -> Scene:
+@dataclass(frozen=True)
+class IndicatorLayout:
+    """The millimetre constants of :func:`energy_indicator` (A4 landscape: a staircase of vectors)."""
+
+    top_mm: float = 14.0            # below the title
+    bottom_mm: float = 10.0         # above the scale captions
+    axis_mm: float = 18.0           # the E axis right of the frame's left edge
+    first_mm: float = 14.0          # the first vector right of the axis
+    right_room_mm: float = 58.0     # right of the last vector: the ΔW_max dimension and its text
+    step_max_mm: float = 22.0       # between vectors, when fitted
+    step_min_mm: float = 6.0
+    fit_mm: float = 20.0            # the last vector stays this far left of the frame's right edge
+    start_beyond_mm: float = 8.0    # the start level beyond the last vector
+    dim_beyond_mm: float = 16.0     # the ΔW_max dimension right of the last vector
+    tick_gap_mm: float = 8.0        # at least between the E values
+
+
+INDICATOR_LAYOUT = IndicatorLayout()
+
+
+@dataclass(frozen=True)
+class _Indicator:
+    """The energy scale, the E axis's origin and the vectors' abscissae of an energy indicator (mm)."""
+
+    s_E: Scale
+    origin: tuple[float, float]
+    xs: tuple[float, ...]
+    first: float
+    E: np.ndarray
+    E_lo: float
+    E_hi: float
+
+    def y(self, v: float) -> float:
+        """The page ordinate of the energy level ``v``."""
+        return self.origin[1] - self.s_E.to_mm(float(v))
+
+    def at_point(self, k: int) -> tuple[float, float]:
+        """Point k of the staircase (a, b, …): the end of vector k − 1."""
+        return (self.xs[max(k - 1, 0)] if k > 0 else self.xs[0], self.y(self.E[k]))
+
+    @property
+    def x_end(self) -> float:
+        return self.xs[-1] if self.xs else self.first
+
+
+def _indicator(ew: Any, sheet: Sheet, nt: Notation, *, mu_E: Any, step_mm: float | None,
+               work_unit: str) -> _Indicator:
+    """μ_E fitted to the height (or checked when given) and the step between vectors fitted to the width."""
+    L = INDICATOR_LAYOUT
+    x0, _, x1, _ = sheet.box
+    E = np.asarray(ew.E, dtype=float)
+    E_hi, E_lo = float(max(E.max(), 0.0)), float(min(E.min(), 0.0))
+    py0, py1 = sheet.top + L.top_mm, sheet.caption_y - L.bottom_mm
+    s_E = given_scale(mu_E, nt.sym("mu_E"), work_unit, E_hi - E_lo, py1 - py0, what="the energy indicator")
+    ax_x = x0 + L.axis_mm
+    n = len(ew.work)
+    first = ax_x + L.first_mm
+    if step_mm is None:
+        step_mm = min(L.step_max_mm, max(L.step_min_mm, (x1 - L.right_room_mm - first) / max(n - 1, 1)))
+    step_mm = float(step_mm)
+    if first + step_mm * max(n - 1, 0) > x1 - L.fit_mm:
+        raise InputError(f"{n} vectors at {step_mm:g} mm apart do not fit across the sheet; give a smaller "
+                         f"step_mm or a larger page")
+    return _Indicator(s_E, (ax_x, py0 + s_E.to_mm(E_hi)), tuple(first + k * step_mm for k in range(n)), first, E,
+                      E_lo, E_hi)
+
+
+def _staircase(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy,
+               work_unit: str) -> tuple[Axis, Line, list[Vector], list[Line], list[Line], Dimension]:
+    """The E axis, the start level, the vectors with the levels carried between them, the highest and
+    lowest levels carried right to the ΔW_max dimension (all registered)."""
+    L, y, xs, E = INDICATOR_LAYOUT, ind.y, ind.xs, ind.E
+    ax = Axis(ind.origin, ind.s_E, "y", min_value=ind.E_lo if ind.E_lo < 0 else 0.0,
+              max_value=max(ind.E_hi, ind.s_E.per_mm), ticks=nice_ticks(ind.E_lo, ind.E_hi, ind.s_E,
+                                                                      min_gap_mm=L.tick_gap_mm),
+              label=nt.quantity(nt.sym("E"), work_unit), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
+    start_line = Line((ind.origin[0], y(0.0)), (ind.x_end + L.start_beyond_mm, y(0.0)), style=DASHED,
+                      name="start-level")
+    vectors, levels = [], []
+    n = len(ew.work)
+    for k, A in enumerate(ew.work):
+        vectors.append(Vector.of((xs[k], y(E[k])), value=float(A), scale=ind.s_E, angle_deg=90.0,
+                                 name=f"vector-{ew.labels[k]}{ew.labels[k + 1]}"))
+        if k + 1 < n:
+            levels.append(Line((xs[k], y(E[k + 1])), (xs[k + 1], y(E[k + 1])), style=DASHED,
+                               name=f"level-{ew.labels[k + 1]}"))
+    imax, imin = ew.index_E_max, ew.index_E_min
+    x_dim = ind.x_end + L.dim_beyond_mm
+    ext = [Line(ind.at_point(imax), (x_dim + 2.0, y(E[imax])), style=DASHED, name="level-max"),
+           Line(ind.at_point(imin), (x_dim + 2.0, y(E[imin])), style=DASHED, name="level-min")]
+    dim = Dimension((x_dim, y(E[imin])), (x_dim, y(E[imax])),
+                    f"{nt.sym('delta_W_max')} = {nt.number(ew.delta_W_max)} {nt.unit(work_unit)}",
+                    size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
+    register(occ, ax, start_line, *vectors, *levels, *ext, dim)
+    return ax, start_line, vectors, levels, ext, dim
+
+
+def _indicator_labels(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy,
+                      vectors: list[Vector]) -> tuple[list[Text], list[Element]]:
+    """The points a, b, … of the staircase and each vector's work beside it."""
+    labels = []
+    for k in range(len(ew.work) + 1):
+        at = (ind.xs[0], ind.y(ind.E[0])) if k == 0 else (ind.xs[k - 1], ind.y(ind.E[k]))
+        dirs = ("w", "nw", "sw", "n", "s") if k == 0 else ("e", "ne", "se", "w", "nw", "sw", "n", "s")
+        lab = occ.place_label(at, ew.labels[k], dirs, size_mm=TEXT_MM + 0.3, gap_mm=1.0)
+        labels.append(Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
+                           name=f"name-{ew.labels[k]}"))
+    values: list[Element] = []
+    for k, vec in enumerate(vectors):
+        text = nt.number(float(ew.work[k]), plus=True)
+        lab = occ.place_label(vec.mid, text, ("w", "e", "nw", "sw", "ne", "se"), size_mm=SMALL_MM, gap_mm=1.2)
+        values.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"value-{k + 1}"))
+    return labels, values
+
+
+def _indicator_extremes(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy, box: Box,
+                        work_unit: str) -> list[Element]:
+    """Open circles on the highest and lowest points, with their energies (a leader when far)."""
+    marks: list[Element] = []
+    for k, key in ((ew.index_E_max, "E_max"), (ew.index_E_min, "E_min")):
+        at = ind.at_point(k)
+        marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
+        occ.add_box((at[0] - 1.2, at[1] - 1.2, at[0] + 1.2, at[1] + 1.2))
+        text = f"{nt.sym(key)} = {nt.number(float(ind.E[k]))} {nt.unit(work_unit)}"
+        dirs = ("n", "nw", "ne", "w", "e") if key == "E_max" else ("s", "sw", "se", "w", "e")
+        lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0, within=box)
+        marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
+        if leader is not None:
+            marks.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{key}"))
+    return marks
+
+
+def _indicator_closure(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy, box: Box,
+                       work_unit: str) -> tuple[Text, list[Element]]:
+    """ΣA = 0 (closure) beside the last point, or the residual of measured data; and its leader, if any."""
+    res = ew.residual
+    closed = abs(res) <= 1e-9 * (float(np.abs(ew.work).sum()) or 1.0)
+    text = (f"Σ{nt.sym('A')} = {nt.number(0.0 if closed else res)} {nt.unit(work_unit)} "
+            f"({nt.word('closure') if closed else nt.word('residual')})")
+    last = (ind.xs[-1], ind.y(ind.E[-1]))
+    lab, leader = occ.place_label_with_leader(last, text, ("se", "s", "ne", "e", "sw", "n", "nw", "w"),
+                                              size_mm=SMALL_MM, gap_mm=3.0, within=box)
+    closure = Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name="closure")
+    return closure, ([Line(leader[0], leader[1], style=THIN, name="leader-closure")] if leader is not None else [])
+
+
+def energy_indicator(cycle: Any, *, mu_E: Any = None, step_mm: float | None = None, notation: Any = "en",
+                     page: Page | None = None, title: str | None = None, problem: Any = None, work_unit: str = "J",
+                     title_block: bool = True, name: str = "energy-indicator") -> Scene:
     """The energy indicator diagram (能量指示图): the excess works as a staircase of vertical vectors.
 
     From point a, each interval's work A_i is a vector A_i/μ_E mm long, up for a
     gain and down for a loss, starting where the last one ended and shifted right by
     ``step_mm``; dashed lines carry each level across. The highest and lowest points
     are marked, ΔW_max is dimensioned between their levels, and the closure on the
-    start level (or the residual of measured data) is written.
+    start level (or the residual of measured data) is written. Steps: the scale and step
+    (:func:`_indicator`, laid out by :data:`INDICATOR_LAYOUT`), the staircase, the labels.
 
     Parameters
     ----------
@@ -471,7 +714,7 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
     mu_E : float or Scale, optional
         Energy scale, ``work_unit`` per mm; picked when not given.
     step_mm : float, optional
-        Horizontal shift between vectors; fitted to the sheet when not given.
+        Horizontal shift between vectors, mm; fitted to the sheet when not given.
 
     Examples
     --------
@@ -484,110 +727,198 @@ def energy_indicator(cycle, *, mu_E=None, step_mm: float | None = None, notation
     nt = get_notation(notation)
     ew, prob = _cycle(cycle, nt)
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("energy_indicator"),
-                   problem=prob if problem is None else problem, title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
-    E = np.asarray(ew.E, dtype=float)
-    E_hi, E_lo = float(max(E.max(), 0.0)), float(min(E.min(), 0.0))
-    py0, py1 = sheet.top + 14.0, sheet.caption_y - 10.0
-    s_E = given_scale(mu_E, nt.sym("mu_E"), work_unit, E_hi - E_lo, py1 - py0, what="the energy indicator")
-    ax_x = x0 + 18.0
-    origin = (ax_x, py0 + s_E.to_mm(E_hi))
-    n = len(ew.work)
-    right_room = 58.0
-    first = ax_x + 14.0
-    if step_mm is None:
-        step_mm = min(22.0, max(6.0, (x1 - right_room - first) / max(n - 1, 1)))
-    step_mm = float(step_mm)
-    if first + step_mm * max(n - 1, 0) > x1 - 20.0:
-        raise InputError(f"{n} vectors at {step_mm:g} mm apart do not fit across the sheet; give a smaller "
-                         f"step_mm or a larger page")
-
-    def y(v):
-        return origin[1] - s_E.to_mm(float(v))
-
-    xs = [first + k * step_mm for k in range(n)]
-    x_end = xs[-1] if xs else first
+                  problem=prob if problem is None else problem, title_block=title_block)
+    ind = _indicator(ew, sheet, nt, mu_E=mu_E, step_mm=step_mm, work_unit=work_unit)
     occ = sheet.occ
-    ax = Axis(origin, s_E, "y", min_value=E_lo if E_lo < 0 else 0.0, max_value=max(E_hi, s_E.per_mm),
-              ticks=nice_ticks(E_lo, E_hi, s_E, min_gap_mm=8.0), label=nt.quantity(nt.sym("E"), work_unit),
-              size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
-    start_line = Line((ax_x, y(0.0)), (x_end + 8.0, y(0.0)), style=DASHED, name="start-level")
-    vectors, levels = [], []
-    for k, A in enumerate(ew.work):
-        vectors.append(Vector.of((xs[k], y(E[k])), value=float(A), scale=s_E, angle_deg=90.0,
-                                 name=f"vector-{ew.labels[k]}{ew.labels[k + 1]}"))
-        if k + 1 < n:
-            levels.append(Line((xs[k], y(E[k + 1])), (xs[k + 1], y(E[k + 1])), style=DASHED,
-                               name=f"level-{ew.labels[k + 1]}"))
-    # the highest and lowest points, their levels carried right to the ΔW_max dimension
-    imax, imin = ew.index_E_max, ew.index_E_min
-
-    def at_point(k):
-        return (xs[max(k - 1, 0)] if k > 0 else xs[0], y(E[k]))
-
-    x_dim = x_end + 16.0
-    ext = [Line(at_point(imax), (x_dim + 2.0, y(E[imax])), style=DASHED, name="level-max"),
-           Line(at_point(imin), (x_dim + 2.0, y(E[imin])), style=DASHED, name="level-min")]
-    dim = Dimension((x_dim, y(E[imin])), (x_dim, y(E[imax])),
-                    f"{nt.sym('delta_W_max')} = {nt.number(ew.delta_W_max)} {nt.unit(work_unit)}",
-                    size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
-    _register(occ, ax, start_line, *vectors, *levels, *ext, dim)
-    # labels: points a, b, …; values beside the vectors; max / min marks
-    labels = []
-    for k in range(n + 1):
-        at = (xs[0], y(E[0])) if k == 0 else (xs[k - 1], y(E[k]))
-        dirs = ("w", "nw", "sw", "n", "s") if k == 0 else ("e", "ne", "se", "w", "nw", "sw", "n", "s")
-        lab = occ.place_label(at, ew.labels[k], dirs, size_mm=TEXT_MM + 0.3, gap_mm=1.0)
-        labels.append(Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
-                           name=f"name-{ew.labels[k]}"))
-    values: list[Element] = []
-    for k, vec in enumerate(vectors):
-        text = nt.number(float(ew.work[k]), plus=True)
-        lab = occ.place_label(vec.mid, text, ("w", "e", "nw", "sw", "ne", "se"), size_mm=SMALL_MM, gap_mm=1.2)
-        values.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"value-{k + 1}"))
-    marks: list[Element] = []
-    for k, key in ((imax, "E_max"), (imin, "E_min")):
-        at = at_point(k)
-        marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
-        occ.add_box((at[0] - 1.2, at[1] - 1.2, at[0] + 1.2, at[1] + 1.2))
-        text = f"{nt.sym(key)} = {nt.number(float(E[k]))} {nt.unit(work_unit)}"
-        dirs = ("n", "nw", "ne", "w", "e") if key == "E_max" else ("s", "sw", "se", "w", "e")
-        lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0, within=sheet.box)
-        marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
-        if leader is not None:
-            marks.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{key}"))
-    # closure
-    res = ew.residual
-    scale_total = float(np.abs(ew.work).sum()) or 1.0
-    closed = abs(res) <= 1e-9 * scale_total
-    text = (f"Σ{nt.sym('A')} = {nt.number(0.0 if closed else res)} {nt.unit(work_unit)} "
-            f"({nt.word('closure') if closed else nt.word('residual')})")
-    last = (xs[-1], y(E[-1]))
-    lab, leader = occ.place_label_with_leader(last, text, ("se", "s", "ne", "e", "sw", "n", "nw", "w"),
-                                              size_mm=SMALL_MM, gap_mm=3.0, within=sheet.box)
-    closure = Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name="closure")
-    if leader is not None:
-        values.append(Line(leader[0], leader[1], style=THIN, name="leader-closure"))
-    scales = (s_E,)
-    elements = ([sheet.header(), ax, start_line] + levels + ext + vectors + [dim] + marks + labels + values
+    ax, start_line, vectors, levels, ext, dim = _staircase(ind, ew, nt, occ, work_unit)
+    labels, values = _indicator_labels(ind, ew, nt, occ, vectors)
+    marks = _indicator_extremes(ind, ew, nt, occ, sheet.box, work_unit)
+    closure, leader = _indicator_closure(ind, ew, nt, occ, sheet.box, work_unit)
+    scales = (ind.s_E,)
+    elements = ([sheet.header(), ax, start_line] + levels + ext + vectors + [dim] + marks + labels + values + leader
                 + [closure] + sheet.captions(scales, legend=nt.word("gain_loss")))
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
-                 notes=(s_E.note,))
+                 notes=(ind.s_E.note,))
 
 
 # ----------------------------------------------------------------------------- 4. energy graph
 
-def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e: float | None = None,
-                 omega_0: float | None = None, notation="en", page=None, title=None, problem=None,
-                 work_unit: str = "J", samples: int = 721, title_block: bool = True,
-                 name: str = "energy-graph") -> Scene:
+@dataclass(frozen=True)
+class EnergyGraphLayout:
+    """The millimetre constants of :func:`energy_graph` (A4 landscape: one curve over the period)."""
+
+    left_mm: float = 18.0           # the E axis's tick labels
+    top_mm: float = 14.0            # below the title
+    bottom_mm: float = 16.0         # above the scale captions
+    arrow_mm: float = 6.0           # the φ axis beyond the period …
+    name_gap_mm: float = 1.5        # … its name after the arrow …
+    dim_gap_mm: float = 5.0         # … then the ΔW_max dimension
+    text_gap_mm: float = 3.0        # the dimension's text right of it
+    phi_tick_gap_mm: float = 14.0   # at least between the φ values (multiples of π)
+    E_tick_gap_mm: float = 8.0      # at least between the E values
+    above_mm: float = 10.0          # labels may stand this far above the plot
+    values_above_mm: float = 9.0    # room for the φ values when they are written above the axis
+
+
+ENERGY_GRAPH_LAYOUT = EnergyGraphLayout()
+
+
+def _kinetic_base(ew: Any, T0: float | None, J_e: float | None, omega_0: float | None,
+                  work_unit: str) -> float | None:
+    """T0 (given, or ½ J_e ω₀²), checked positive; None for the ΔE graph."""
+    if ew.M_d is None or ew.phi is None:
+        raise InputError("energy_graph draws ΔE against φ and needs the moment curves; this cycle was given as "
+                         "areas, works or levels, which fix no angles. Draw energy_indicator instead")
+    if T0 is None and (J_e is not None or omega_0 is not None):
+        if J_e is None or omega_0 is None:
+            raise InputError("give T0 (J), or both J_e (kg·m²) and omega_0 (rad/s), for the kinetic-energy graph")
+        T0 = 0.5 * float(J_e) * float(omega_0) ** 2
+    if T0 is not None and not (math.isfinite(T0) and T0 > 0):
+        raise InputError(f"T0 = {T0!r} must be a positive kinetic energy in {work_unit}")
+    return T0
+
+
+@dataclass(frozen=True)
+class _EnergyGraph:
+    """The scales, frame and plot edges of an energy graph, and the curve it draws."""
+
+    s_phi: Scale
+    s_E: Scale
+    frame: Frame
+    phi0: float
+    period: float
+    base: float
+    kinetic: bool
+    lo: float
+    hi: float
+    phi: np.ndarray
+    Y: np.ndarray
+    right: float
+    px0: float
+    py0: float
+    y1: float
+    x1: float
+
+    def P(self, ph: float, v: float) -> tuple[float, float]:
+        return self.frame.pt(float(ph) - self.phi0, float(v))
+
+    @property
+    def box(self) -> Box:
+        """The box labels stay in."""
+        return (self.px0 + 1, self.py0 - ENERGY_GRAPH_LAYOUT.above_mm, self.x1, self.y1)
+
+
+def _energy_graph(ew: Any, sheet: Sheet, nt: Notation, *, T0: float | None, mu_E: Any, mu_phi: Any, samples: int,
+                  dim_text: str, work_unit: str) -> _EnergyGraph:
+    """The exact curve, then μ_φ and μ_E fitted to the plot (or checked when given) and its frame."""
+    L = ENERGY_GRAPH_LAYOUT
+    kinetic = T0 is not None
+    base = float(T0) if T0 is not None else 0.0
+    phi, dE = ew.energy_curve(samples)
+    Y = dE + base
+    if kinetic and (Y <= 0).any():
+        raise InputError(f"T0 = {T0:g} {work_unit} is too small: T = T0 + ΔE falls to {Y.min():.4g}; the machine "
+                         f"would stop. Give a larger T0 or omega_0")
+    lo = 0.0 if kinetic else float(min(Y.min(), 0.0))
+    hi = float(max(Y.max(), 0.0))
+    x0, _, x1, y1 = sheet.box
+    phi_name = nt.quantity(nt.sym("phi"), "rad")
+    right = L.arrow_mm + L.name_gap_mm + markup.text_width_mm(phi_name, SMALL_MM + 0.5) + L.dim_gap_mm
+    px0, px1 = x0 + L.left_mm, x1 - right - L.text_gap_mm - markup.text_width_mm(dim_text, TEXT_MM + 0.3)
+    py0, py1 = sheet.top + L.top_mm, sheet.caption_y - L.bottom_mm
+    period = float(ew.period)
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0)
+    s_E = given_scale(mu_E, nt.sym("mu_T") if kinetic else nt.sym("mu_E"), work_unit, hi - lo, py1 - py0,
+                      what="the energy graph")
+    frame = Frame((px0, py0 + s_E.to_mm(hi)), s_phi, s_E)
+    return _EnergyGraph(s_phi, s_E, frame, float(ew.phi[0]), period, base, kinetic, lo, hi, phi, Y, right, px0, py0,
+                        y1, x1)
+
+
+def _energy_axes(g: _EnergyGraph, nt: Notation, occ: Occupancy, sym: str,
+                 work_unit: str) -> tuple[Axis, Axis, Polyline]:
+    """The φ axis (values above it when the curve lies mostly below), the E axis and the curve."""
+    L, origin, lo, hi = ENERGY_GRAPH_LAYOUT, g.frame.origin, g.lo, g.hi
+    ticks_phi, labels_phi = pi_ticks(g.period, g.s_phi, min_gap_mm=L.phi_tick_gap_mm)
+    ax_phi = Axis(origin, g.s_phi, "x", min_value=0.0, max_value=g.period, ticks=ticks_phi, tick_labels=labels_phi,
+                  label=nt.quantity(nt.sym("phi"), "rad"), size_mm=SMALL_MM, name="axis-phi", skip_zero_label=lo < 0,
+                  labels_side="above" if -lo > hi else "below")
+    room = g.s_E.to_value(L.values_above_mm) if -lo > hi else g.s_E.per_mm   # tick labels above the φ axis
+    ax_E = Axis(origin, g.s_E, "y", min_value=lo if lo < 0 else 0.0, max_value=max(hi, room),
+                ticks=nice_ticks(lo, hi, g.s_E, min_gap_mm=L.E_tick_gap_mm), label=nt.quantity(sym, work_unit),
+                size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
+    curve = Polyline(g.frame.pts(g.phi - g.phi0, g.Y), style=MAIN, name="curve-E")
+    ax_phi, ax_E = _clear_ticks(ax_phi, curve), _clear_ticks(ax_E, curve)
+    register(occ, ax_phi, ax_E, curve)
+    return ax_phi, ax_E, curve
+
+
+def _energy_extremes(g: _EnergyGraph, ew: Any, occ: Occupancy,
+                     dim_text: str) -> tuple[dict[str, tuple[float, float]], list[Line], Dimension, list[Element]]:
+    """The extremes: their points, projections to the φ axis, levels to ΔW_max's dimension, open marks."""
+    imax, imin = ew.index_E_max, ew.index_E_min
+    k_max, k_min = ("T_max", "T_min") if g.kinetic else ("E_max", "E_min")
+    ext_pts = {k_max: (float(ew.phi[imax]), float(ew.E[imax]) + g.base),
+               k_min: (float(ew.phi[imin]), float(ew.E[imin]) + g.base)}
+    x_dim = g.frame.pt(g.period, 0.0)[0] + g.right
+    guides = []
+    for key, (ph, v) in ext_pts.items():
+        at = g.P(ph, v)
+        guides.append(Line(at, (at[0], g.frame.origin[1]), style=DASHED, name=f"projection-{key}"))
+        guides.append(Line(at, (x_dim + 2.0, at[1]), style=DASHED, name=f"level-{key}"))
+    dim = Dimension((x_dim, g.P(*ext_pts[k_min])[1]), (x_dim, g.P(*ext_pts[k_max])[1]), dim_text,
+                    size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
+    register(occ, *guides, dim)
+    marks: list[Element] = []
+    for key, (ph, v) in ext_pts.items():
+        at = g.P(ph, v)
+        marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
+        occ.add_box((at[0] - 1.3, at[1] - 1.3, at[0] + 1.3, at[1] + 1.3))
+    return ext_pts, guides, dim, marks
+
+
+def _energy_labels(g: _EnergyGraph, ew: Any, nt: Notation, occ: Occupancy, ext_pts: dict[str, tuple[float, float]],
+                   work_unit: str) -> tuple[list[Group], list[Element], list[Text]]:
+    """The points a, b, … on the curve; the extremes' values and angles (a leader when far); T_0."""
+    points = []
+    for k, ph in enumerate(ew.phi):
+        at = g.P(ph, float(ew.E[k]) + g.base)
+        lab = occ.place_label(at, ew.labels[k], ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=TEXT_MM + 0.3,
+                              gap_mm=1.0, within=g.box)
+        points.append(Group((Point(at, radius_mm=0.6, name=f"dot-{ew.labels[k]}"),
+                             Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
+                                  name=f"name-{ew.labels[k]}")), name=f"point-{ew.labels[k]}"))
+    marks: list[Element] = []
+    for key, (ph, v) in ext_pts.items():
+        at = g.P(ph, v)
+        text = (f"{nt.sym(key)} = {nt.number(v)} {nt.unit(work_unit)}, "
+                f"{nt.sym('phi')} = {angle_deg_text(ph - g.phi0, nt)}")
+        dirs = ("ne", "nw", "n", "e", "w") if key.endswith("max") else ("se", "sw", "s", "e", "w")
+        lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0, within=g.box)
+        marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
+        if leader is not None:
+            marks.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{key}"))
+    extra = []
+    if g.kinetic:
+        at = g.P(g.phi0, g.base)
+        text = f"{nt.sym('T_0')} = {nt.number(g.base)} {nt.unit(work_unit)}"
+        lab = occ.place_label(at, text, ("ne", "se", "e", "n"), size_mm=TEXT_MM, gap_mm=2.5)
+        extra.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-T0"))
+    return points, marks, extra
+
+
+def energy_graph(cycle: Any, *, mu_E: Any = None, mu_phi: Any = None, T0: float | None = None,
+                 J_e: float | None = None, omega_0: float | None = None, notation: Any = "en",
+                 page: Page | None = None, title: str | None = None, problem: Any = None, work_unit: str = "J",
+                 samples: int = 721, title_block: bool = True, name: str = "energy-graph") -> Scene:
     """The energy graph ΔE(φ) (Chinese style), or T(φ) = T0 + ΔE(φ) from a given T0 (Russian style).
 
     The curve is exact (ΔE is piecewise quadratic between the knots). The boundary
     points a, b, … are marked on it, the positions of E_max and E_min are marked and
     projected onto the φ axis, and ΔW_max is dimensioned. Give ``T0`` (J), or
     ``J_e`` (kg·m²) with ``omega_0`` (rad/s), for the kinetic-energy graph T(φ) drawn
-    from T = 0.
+    from T = 0. Steps: the scales (:func:`_energy_graph`, laid out by
+    :data:`ENERGY_GRAPH_LAYOUT`), the axes and curve, the extremes, the labels.
 
     Raises
     ------
@@ -606,101 +937,20 @@ def energy_graph(cycle, *, mu_E=None, mu_phi=None, T0: float | None = None, J_e:
     """
     nt = get_notation(notation)
     ew, prob = _cycle(cycle, nt)
-    if ew.M_d is None or ew.phi is None:
-        raise InputError("energy_graph draws ΔE against φ and needs the moment curves; this cycle was given as "
-                         "areas, works or levels, which fix no angles. Draw energy_indicator instead")
-    if T0 is None and (J_e is not None or omega_0 is not None):
-        if J_e is None or omega_0 is None:
-            raise InputError("give T0 (J), or both J_e (kg·m²) and omega_0 (rad/s), for the kinetic-energy graph")
-        T0 = 0.5 * float(J_e) * float(omega_0) ** 2
-    kinetic = T0 is not None
-    if T0 is not None and not (math.isfinite(T0) and T0 > 0):
-        raise InputError(f"T0 = {T0!r} must be a positive kinetic energy in {work_unit}")
-    base = float(T0) if T0 is not None else 0.0
-    phi, dE = ew.energy_curve(samples)
-    phi0, period = float(ew.phi[0]), float(ew.period)
-    Y = dE + base
-    if kinetic and (Y <= 0).any():
-        raise InputError(f"T0 = {T0:g} {work_unit} is too small: T = T0 + ΔE falls to {Y.min():.4g}; the machine "
-                         f"would stop. Give a larger T0 or omega_0")
-    lo = 0.0 if kinetic else float(min(Y.min(), 0.0))
-    hi = float(max(Y.max(), 0.0))
-    sym = nt.sym("T") if kinetic else nt.sym("dE")
-    ttl = title or (f"{nt.word('kinetic_energy_graph')} {sym}(φ)" if kinetic else f"{nt.word('energy_graph')} {sym}(φ)")
-    sheet = Sheet(nt=nt, page=page, title=ttl, problem=prob if problem is None else problem,
-                   title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
-    phi_name = nt.quantity(nt.sym("phi"), "rad")
+    T0 = _kinetic_base(ew, T0, J_e, omega_0, work_unit)
+    sym = nt.sym("T") if T0 is not None else nt.sym("dE")
+    word = nt.word("kinetic_energy_graph") if T0 is not None else nt.word("energy_graph")
+    sheet = Sheet(nt=nt, page=page, title=title or f"{word} {sym}(φ)", problem=prob if problem is None else problem,
+                  title_block=title_block)
     dim_text = f"{nt.sym('delta_W_max')} = {nt.number(ew.delta_W_max)} {nt.unit(work_unit)}"
-    right = 6.0 + 1.5 + markup.text_width_mm(phi_name, SMALL_MM + 0.5) + 5.0   # arrow, axis name, gap
-    px0, px1 = x0 + 18.0, x1 - right - 3.0 - markup.text_width_mm(dim_text, TEXT_MM + 0.3)
-    py0, py1 = sheet.top + 14.0, sheet.caption_y - 16.0
-    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), period, px1 - px0)
-    s_E = given_scale(mu_E, nt.sym("mu_T") if kinetic else nt.sym("mu_E"), work_unit, hi - lo, py1 - py0,
-                 what="the energy graph")
-    origin = (px0, py0 + s_E.to_mm(hi))
-    f = Frame(origin, s_phi, s_E)
-
-    def P(ph, v):
-        return f.pt(float(ph) - phi0, float(v))
-
+    g = _energy_graph(ew, sheet, nt, T0=T0, mu_E=mu_E, mu_phi=mu_phi, samples=samples, dim_text=dim_text,
+                      work_unit=work_unit)
     occ = sheet.occ
-    ticks_phi, labels_phi = pi_ticks(period, s_phi, min_gap_mm=14.0)
-    ax_phi = Axis(origin, s_phi, "x", min_value=0.0, max_value=period, ticks=ticks_phi, tick_labels=labels_phi,
-                  label=phi_name, size_mm=SMALL_MM, name="axis-phi", skip_zero_label=lo < 0,
-                  labels_side="above" if -lo > hi else "below")
-    room = s_E.to_value(9.0) if -lo > hi else s_E.per_mm   # tick labels above the φ axis need room
-    ax_E = Axis(origin, s_E, "y", min_value=lo if lo < 0 else 0.0, max_value=max(hi, room),
-                ticks=nice_ticks(lo, hi, s_E, min_gap_mm=8.0), label=nt.quantity(sym, work_unit),
-                size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
-    curve = Polyline(f.pts(phi - phi0, Y), style=MAIN, name="curve-E")
-    ax_phi, ax_E = _clear_ticks(ax_phi, curve), _clear_ticks(ax_E, curve)
-    _register(occ, ax_phi, ax_E, curve)
-    # extremes: marks, projections to the φ axis, ΔW_max between their levels
-    imax, imin = ew.index_E_max, ew.index_E_min
-    k_max, k_min = ("T_max", "T_min") if kinetic else ("E_max", "E_min")
-    ext_pts = {k_max: (float(ew.phi[imax]), float(ew.E[imax]) + base),
-               k_min: (float(ew.phi[imin]), float(ew.E[imin]) + base)}
-    x_dim = f.pt(period, 0.0)[0] + right
-    guides = []
-    for key, (ph, v) in ext_pts.items():
-        at = P(ph, v)
-        guides.append(Line(at, (at[0], origin[1]), style=DASHED, name=f"projection-{key}"))
-        guides.append(Line(at, (x_dim + 2.0, at[1]), style=DASHED, name=f"level-{key}"))
-    dim = Dimension((x_dim, P(*ext_pts[k_min])[1]), (x_dim, P(*ext_pts[k_max])[1]), dim_text,
-                    size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
-    _register(occ, *guides, dim)
-    marks: list[Element] = []
-    for key, (ph, v) in ext_pts.items():
-        at = P(ph, v)
-        marks.append(Point(at, radius_mm=1.1, filled=False, name=f"mark-{key}"))
-        occ.add_box((at[0] - 1.3, at[1] - 1.3, at[0] + 1.3, at[1] + 1.3))
-    points = []
-    for k, ph in enumerate(ew.phi):
-        at = P(ph, float(ew.E[k]) + base)
-        lab = occ.place_label(at, ew.labels[k], ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=TEXT_MM + 0.3,
-                              gap_mm=1.0, within=(px0 + 1, py0 - 10, x1, y1))
-        points.append(Group((Point(at, radius_mm=0.6, name=f"dot-{ew.labels[k]}"),
-                             Text((lab.x, lab.y), ew.labels[k], size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
-                                  name=f"name-{ew.labels[k]}")), name=f"point-{ew.labels[k]}"))
-    for key, (ph, v) in ext_pts.items():
-        at = P(ph, v)
-        text = (f"{nt.sym(key)} = {nt.number(v)} {nt.unit(work_unit)}, "
-                f"{nt.sym('phi')} = {angle_deg_text(ph - phi0, nt)}")
-        dirs = ("ne", "nw", "n", "e", "w") if key.endswith("max") else ("se", "sw", "s", "e", "w")
-        lab, leader = occ.place_label_with_leader(at, text, dirs, size_mm=TEXT_MM, gap_mm=2.0,
-                                                  within=(px0 + 1, py0 - 10, x1, y1))
-        marks.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"label-{key}"))
-        if leader is not None:
-            marks.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{key}"))
-    extra = []
-    if kinetic:
-        at = P(phi0, base)
-        text = f"{nt.sym('T_0')} = {nt.number(base)} {nt.unit(work_unit)}"
-        lab = occ.place_label(at, text, ("ne", "se", "e", "n"), size_mm=TEXT_MM, gap_mm=2.5)
-        extra.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-T0"))
-    scales = (s_phi, s_E)
-    elements = ([sheet.header(), ax_phi, ax_E] + guides + [curve, dim] + points + marks + extra
+    ax_phi, ax_E, curve = _energy_axes(g, nt, occ, sym, work_unit)
+    ext_pts, guides, dim, marks = _energy_extremes(g, ew, occ, dim_text)
+    points, labels, extra = _energy_labels(g, ew, nt, occ, ext_pts, work_unit)
+    scales = (g.s_phi, g.s_E)
+    elements = ([sheet.header(), ax_phi, ax_E] + guides + [curve, dim] + points + marks + labels + extra
                 + sheet.captions(scales))
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
-                 notes=(s_phi.note, s_E.note))
+                 notes=(g.s_phi.note, g.s_E.note))

@@ -23,19 +23,15 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, quantity, sym, unit
+from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 
 LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
 TURN = Style(width_mm=0.13, dash=(1.2, 0.8))
 
-_TITLES = {
-    ("t", "omega"): ("Speed against time ω(t)", "Скорость в функции времени ω(t)", "角速度随时间的变化 ω(t)"),
-    ("phi", "omega"): ("Speed against angle ω(φ)", "Скорость в функции угла ω(φ)", "角速度随转角的变化 ω(φ)"),
-    ("phi", "epsilon"): ("Angular acceleration ε(φ)", "Угловое ускорение ε(φ)", "角加速度 ε(φ)"),
-    ("t", "epsilon"): ("Angular acceleration ε(t)", "Угловое ускорение ε(t)", "角加速度 ε(t)"),
-}
-_LANG = {"en": 0, "ru": 1, "zh": 2}
+#: (x, y) of a motion graph -> the key of its title in scene/vocabulary/motion.py
+_TITLES = {("t", "omega"): "motion.speed_t", ("phi", "omega"): "motion.speed_phi",
+           ("phi", "epsilon"): "motion.acceleration_phi", ("t", "epsilon"): "motion.acceleration_t"}
 
 
 def _samples(res, per_step: int):
@@ -85,7 +81,7 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     if (x, y) not in _TITLES:
         raise InputError(f"motion_graph: x must be 't' or 'phi' and y 'omega' or 'epsilon', not {x!r}, {y!r}")
     nt = get_notation(notation)
-    title = title or _TITLES[(x, y)][_LANG.get(nt.code, 0)]
+    title = title or nt.word(_TITLES[(x, y)])
     t, phi, w, eps = _samples(res, per_step)
     xv = t - t[0] if x == "t" else phi - phi[0]
     yv = w if y == "omega" else eps
@@ -97,26 +93,25 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     x_span = float(xv.max())
     if not x_span > 0:
         raise InputError("the run spans no time or angle to draw")
-    x_sym, x_unit = ("t", "s") if x == "t" else (sym(nt, "phi"), "rad")
-    y_sym, y_unit = (sym(nt, "omega"), "rad/s") if y == "omega" else (sym(nt, "eps"), "rad/s²")
-    ux = unit(nt, x_unit)
-    uy = unit(nt, y_unit)
+    x_sym, x_unit = ("t", "s") if x == "t" else (nt.sym("phi"), "rad")
+    y_sym, y_unit = (nt.sym("motion.omega"), "rad/s") if y == "omega" else (nt.sym("motion.eps"), "rad/s²")
+    ux, uy = nt.unit(x_unit), nt.unit(y_unit)
     uy_cap = f"({uy})" if "/" in uy else uy
-    s_x = given_scale(mu_x, f"μ_{x_sym}" if x == "t" else sym(nt, "mu_phi"), ux, x_span, px1 - px0, what="the run")
+    s_x = given_scale(mu_x, f"μ_{x_sym}" if x == "t" else nt.sym("mu_phi"), ux, x_span, px1 - px0, what="the run")
     lo, hi = min(0.0, float(yv.min())), max(0.0, float(yv.max()))
     if hi - lo <= 0:
         hi = lo + 1.0
-    s_y = given_scale(mu_y, sym(nt, "mu_omega") if y == "omega" else sym(nt, "mu_eps"), uy_cap, hi - lo, py1 - py0,
-                      what="the graph")
+    mu_sym = nt.sym("motion.mu_omega") if y == "omega" else nt.sym("motion.mu_eps")
+    s_y = given_scale(mu_y, mu_sym, uy_cap, hi - lo, py1 - py0, what="the graph")
     origin = (px0, py0 + s_y.to_mm(hi))
     f = Frame(origin, s_x, s_y)
     xticks = tuple(v for v in nice_ticks(0.0, x_span, s_x, min_gap_mm=12.0) if 0 <= v <= x_span)
     yticks = tuple(v for v in nice_ticks(lo, hi, s_y, min_gap_mm=8.0) if lo <= v <= hi)
     dec = nt.decimal
-    ax_x = Axis(origin, s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks, label=quantity(nt, x_sym, x_unit),
+    ax_x = Axis(origin, s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks, label=nt.quantity(x_sym, x_unit),
                 size_mm=SMALL_MM, decimal=dec, name="axis-x", skip_zero_label=lo < 0,
                 labels_side="below")
-    ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yticks, label=quantity(nt, y_sym, y_unit),
+    ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yticks, label=nt.quantity(y_sym, y_unit),
                 size_mm=SMALL_MM, decimal=dec, name="axis-y", skip_zero_label=lo < 0)
     # at most ~6000 points: a polyline of a long run is thinned evenly (ends kept)
     keep = np.unique(np.linspace(0, xv.size - 1, min(xv.size, 6000)).round().astype(int))
@@ -132,14 +127,15 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     if st is not None and y == "omega":
         yy = f.pt(0.0, st.omega_m)[1]
         els.append(Polyline(((origin[0], yy), (f.pt(x_span, 0)[0] + 2.0, yy)), style=LEVEL, name="level-omega_m"))
-        els.append(Text((f.pt(x_span, 0)[0] + 3.0, yy - 1.0), f"{sym(nt, 'omega_m')} = {nt.number(st.omega_m, sig=4)}",
-                        size_mm=TEXT_MM, name="label-omega_m"))
+        els.append(Text((f.pt(x_span, 0)[0] + 3.0, yy - 1.0),
+                        f"{nt.sym('motion.omega_m')} = {nt.number(st.omega_m, sig=4)}", size_mm=TEXT_MM,
+                        name="label-omega_m"))
         x_st = st.t_steady if x == "t" else float(res.at_time([res.t[0] + st.t_steady])["phi"][0] - phi[0])
         w_st = float(res.at_time([res.t[0] + st.t_steady])["omega"][0])
         at = f.pt(x_st, w_st)
         els.append(Point(at, radius_mm=1.1, filled=False, name="mark-steady"))
         els.append(Polyline((at, (at[0], origin[1])), style=THIN, name="leader-steady"))
-        legend = (f"δ = {nt.number(st.delta, sig=3)}; t_{{steady}} = {nt.number(st.t_steady, sig=4)} {unit(nt, 's')} "
+        legend = (f"δ = {nt.number(st.delta, sig=3)}; t_{{steady}} = {nt.number(st.t_steady, sig=4)} {nt.unit('s')} "
                   f"(±{nt.number(100 * st.tol, sig=2)} %)")
     els += sheet.captions((s_x, s_y), legend=legend)
     return Scene(sheet.page((s_x, s_y)), tuple(els), title=sheet.title, notation=nt.code,
@@ -160,8 +156,7 @@ def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | Non
     True
     """
     nt = get_notation(notation)
-    title = title or ("Energy–mass curve of the run T(J)", "Кривая энергия–масса движения T(J)",
-                      "运动过程的能量—质量曲线 T(J)")[_LANG.get(nt.code, 0)]
+    title = title or nt.word("motion.energy_mass")
     J, T = np.asarray(res.J, dtype=float), np.asarray(res.T, dtype=float)
     sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem or "", title_block=True,
                        default_page=Page("A4", "landscape", frame=True))
@@ -170,18 +165,18 @@ def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | Non
     py0, py1 = sheet.top + 14.0, sheet.caption_y - 16.0
     J_lo, J_hi = float(J.min()), float(J.max())
     span = max(J_hi - J_lo, 1e-9 * max(J_hi, 1e-300))
-    s_J = given_scale(None, "μ_J", unit(nt, "kg·m²"), span * 1.25, px1 - px0, what="the inertia")
+    s_J = given_scale(None, "μ_J", nt.unit("kg·m²"), span * 1.25, px1 - px0, what="the inertia")
     ticks = nice_ticks(J_lo - 0.2 * span, J_hi, s_J, min_gap_mm=12.0)
     base = max([t for t in ticks if t <= J_lo] or [J_lo])
     T_hi = max(float(T.max()), 1e-300)
-    s_T = given_scale(None, "μ_T", unit(nt, "J"), T_hi, py1 - py0, what="the energy")
+    s_T = given_scale(None, "μ_T", nt.unit("J"), T_hi, py1 - py0, what="the energy")
     origin = (px0 - s_J.to_mm(base), py0 + s_T.to_mm(T_hi))
     f = Frame(origin, s_J, s_T)
     # the J axis from its (suppressed) base; the T axis stands at J = base (its origin: T = 0 there)
-    ax_J = Axis(origin, s_J, "x", min_value=base, max_value=J_hi, label=quantity(nt, "J", "kg·m²"),
+    ax_J = Axis(origin, s_J, "x", min_value=base, max_value=J_hi, label=nt.quantity("J", "kg·m²"),
                 ticks=tuple(t for t in ticks if base <= t <= J_hi), size_mm=SMALL_MM, decimal=nt.decimal,
                 name="axis-J")
-    ax_T = Axis((px0, origin[1]), s_T, "y", min_value=0.0, max_value=T_hi, label=quantity(nt, "T", "J"),
+    ax_T = Axis((px0, origin[1]), s_T, "y", min_value=0.0, max_value=T_hi, label=nt.quantity("T", "J"),
                 ticks=tuple(v for v in nice_ticks(0.0, T_hi, s_T, min_gap_mm=8.0) if 0 <= v <= T_hi),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T", skip_zero_label=True)
     keep = np.unique(np.linspace(0, J.size - 1, min(J.size, 6000)).round().astype(int))

@@ -755,7 +755,7 @@ def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
     figure = C.kinematic_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
-    s_, v_, a_ = C.sym(nt, "s"), C.sym(nt, "v"), C.sym(nt, "a")
+    s_, v_, a_ = nt.sym("calculus.s"), nt.sym("calculus.v"), nt.sym("calculus.a")
 
     def starts(*prefixes):
         return lambda n: n.startswith(prefixes)
@@ -802,7 +802,7 @@ def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> B
         (_w(nt, "means", Mr=nt.sym("M_r")), starts("mean-")),
         (_w(nt, "pole_i", P=P, H=_text_of(figure, "dimension-H-text")), starts("pole-", "dimension-H", "ray-",
                                                                                "projection-")),
-        (_w(nt, "chords_i", Ad=C.sym(nt, "A_d"), Ar=C.sym(nt, "A_r"), mu=_text_of(figure, "formula-A-1")),
+        (_w(nt, "chords_i", Ad=nt.sym("calculus.A_d"), Ar=nt.sym("calculus.A_r"), mu=_text_of(figure, "formula-A-1")),
          starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
         (_w(nt, "dE", eq=_text_of(figure, "formula-dE-1")), starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
                                                                     "curve-dE", "dot-dE-", "formula-dE-")),

@@ -21,13 +21,6 @@ import numpy as np
 from graphmethods.scene import notation as get_notation
 from graphmethods.sheets.dynamics import MAIN, CurveSpec, _graph_scene, as_study
 
-_TITLE = ("Equivalent mass of the translating link m_e(φ)", "Приведённая масса поступательного звена m_e(φ)",
-          "移动等效构件的等效质量 m_e(φ)")
-_LEGEND = ("m_e → ∞ at the dead centres (v = 0); drawn up to {cap}·m_{{e,min}} = {top} kg",
-           "m_e → ∞ в мёртвых положениях (v = 0); показано до {cap}·m_{{e,min}} = {top} кг",
-           "死点处 m_e → ∞ (v = 0)；画至 {cap}·m_{{e,min}} = {top} kg")
-_LANG = {"en": 0, "ru": 1, "zh": 2}
-
 
 def equivalent_mass_graph(study: Any, *, point: str | None = None, cap: float = 6.0, samples: int = 720,
                           notation: str = "en", mu_m: Any = None, mu_phi: Any = None) -> Any:
@@ -60,9 +53,9 @@ def equivalent_mass_graph(study: Any, *, point: str | None = None, cap: float = 
         if seg.size >= 2 and keep[seg].all():
             curves.append(CurveSpec(f"m_e-{len(curves) + 1}", phi[seg], m_e[seg], MAIN, "m_e" if not curves else ""))
     dk = np.asarray(dots_tr.m_e, dtype=float) <= top
-    lang = _LANG.get(nt.code, 0)
-    legend = _LEGEND[lang].format(cap=nt.number(cap, sig=3), top=nt.number(top, sig=4))
-    return _graph_scene(study, nt=nt, title=_TITLE[lang], page=None, title_block=True, name="equivalent-mass-graph",
+    legend = nt.word("translating.legend", cap=nt.number(cap, sig=3), top=nt.number(top, sig=4))
+    return _graph_scene(study, nt=nt, title=nt.word("translating.title"), page=None, title_block=True,
+                        name="equivalent-mass-graph",
                         curves=curves, y_lo=0.0, y_hi=top, y_symbol="m_e", y_unit="kg", scale_symbol="μ_m",
                         mu_Y=mu_m, mu_phi=mu_phi, what="the equivalent mass", legend=legend, zero=True,
                         dots=(np.asarray(dots_tr.phi)[dk], np.asarray(dots_tr.m_e)[dk]))
