@@ -31,17 +31,12 @@ NOT_YET_MIGRATED = {
     "sheets/check.py",
     "sheets/check_acceleration.py",
     "sheets/cycle_panels.py",
-    "sheets/drive_scheme.py",
-    "sheets/dynamics.py",
-    "sheets/flywheel_design.py",
-    "sheets/flywheel_hyperbola.py",
     "sheets/force_analysis_sheet.py",
     "sheets/forces.py",
     "sheets/kinematic_analysis_sheet.py",
     "sheets/motion.py",
     "sheets/steps.py",
     "sheets/translating_graph.py",
-    "sheets/wittenbauer.py",
     "sheets/worksheets.py",
 }
 

@@ -52,12 +52,12 @@ from graphmethods.scene import (
     Table,
     Text,
     Vector,
-    in_language,
     markup,
     nice_ticks,
     notation as get_notation,
 )
 from graphmethods.scene.elements import Element, label_bbox, make_label
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.layout import (
     TEXT_MM,
@@ -76,97 +76,33 @@ LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
 PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
 OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
-# ----------------------------------------------------------------------------- notation of these figures
-# Symbols and words the notation profiles (graphmethods.scene.notation) lack: (en, ru, zh).
-SYMBOLS = {
-    "J_e":       ("J_e",        "J_п",          "J_e"),
-    "dT":        ("ΔT",         "ΔT",           "ΔE"),
-    "T":         ("T",          "T",            "E"),
-    "omega":     ("ω",          "ω",            "ω"),
-    "omega_m":   ("ω_m",        "ω_{ср}",       "ω_m"),
-    "omega_max": ("ω_{max}",    "ω_{max}",      "ω_{max}"),
-    "omega_min": ("ω_{min}",    "ω_{min}",      "ω_{min}"),
-    "omega_1":   ("ω_1",        "ω_1",          "ω_1"),
-    "eps":       ("ε",          "ε",            "ε"),
-    "eps_max":   ("ε_{max}",    "ε_{max}",      "ε_{max}"),
-    "chi":       ("χ",          "χ",            "χ"),
-    "J_F":       ("J_F",        "J_м",          "J_F"),
-    "delta":     ("[δ]",        "[δ]",          "[δ]"),
-    "mu_J":      ("μ_J",        "μ_J",          "μ_J"),
-    "mu_T":      ("μ_T",        "μ_T",          "μ_E"),
-    "mu_omega":  ("μ_ω",        "μ_ω",          "μ_ω"),
-    "mu_eps":    ("μ_ε",        "μ_ε",          "μ_ε"),
-    "mu_v":      ("μ_v",        "μ_v",          "μ_v"),
-    "mu_F":      ("μ_F",        "μ_F",          "μ_F"),
-    "psi_max":   ("ψ_{max}",    "ψ_{max}",      "ψ_{max}"),
-    "psi_min":   ("ψ_{min}",    "ψ_{min}",      "ψ_{min}"),
-    "dT_max":    ("ΔT_{max}",   "ΔT_{max}",     "ΔE_{max}"),
-    "dT_min":    ("ΔT_{min}",   "ΔT_{min}",     "ΔE_{min}"),
-    "T_max":     ("T_{max}",    "T_{max}",      "E_{max}"),
-    "T_min":     ("T_{min}",    "T_{min}",      "E_{min}"),
-    "F":         ("F",          "F_{пс}",       "F_r"),
-    "M_F":       ("M_F",        "M_F",          "M_F"),
-    "h":         ("h",          "h",            "h"),
-}
-
-WORDS = {
-    "inertia_graph":   ("Reduced moment of inertia", "Приведённый момент инерции", "等效转动惯量"),
-    "inertia_turned":  ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции, повёрнутый на 90°",
-                        "等效转动惯量（旋转90°）"),
-    "moment_graph":    ("Reduced moments", "Приведённые моменты", "等效力矩"),
-    "delta_T_graph":   ("Increment of kinetic energy", "Приращение кинетической энергии", "动能增量"),
-    "kinetic_graph":   ("Kinetic energy (exact motion)", "Кинетическая энергия (точное решение)", "动能（精确解）"),
-    "speed_graph":     ("Angular velocity of the crank (exact motion)", "Угловая скорость кривошипа (точное решение)",
-                        "曲柄角速度（精确解）"),
-    "accel_graph":     ("Angular acceleration of the crank (exact motion)",
-                        "Угловое ускорение кривошипа (точное решение)", "曲柄角加速度（精确解）"),
-    "lever":           ("Zhukovsky lever", "Рычаг Жуковского", "茹科夫斯基杠杆"),
-    "position":        ("position", "положение", "位置"),
-    "positions":       ("positions", "положений", "个位置"),
-    "work_balance":    ("from the work balance", "из баланса работ", "由功平衡"),
-    "exact":           ("exact", "точно", "精确"),
-    "by_lever":        ("by the lever", "по рычагу", "杠杆法"),
-    "by_power":        ("by power", "по мощности", "功率法"),
-    "arm":             ("arm", "плечо", "力臂"),
-    "force":           ("force", "сила", "力"),
-    "lever_moment":    ("moment about p", "момент относительно p", "对p点之矩"),
-    "plan_turned":     ("velocity plan turned 90° against ω_1", "план скоростей, повёрнутый на 90° против ω_1",
-                        "速度图逆ω_1转90°"),
-    "parts":           ("parts", "составляющие", "分量"),
-}
-
-_UNITS_RU = {"rad/s²": "рад/с²", "(m/s)": "(м/с)", "m/s": "м/с", "rev/min": "об/мин", "kg·m²": "кг·м²"}
+# ----------------------------------------------------------------------------- words of these figures
+# Every word, symbol and unit is the notation's (scene/vocabulary/dynamics.py: nt.sym("dynamics.J_e")).
+# sym, unit and quantity below are kept only for sheets/cycle_panels.py and sheets/motion.py, which
+# import them and are not yet migrated (another owner's); these figures do not use them.
 
 
-def sym(nt, key: str) -> str:
-    """A symbol (markup) of these figures, or of the notation profile."""
-    return in_language(SYMBOLS[key], nt) if key in SYMBOLS else get_notation(nt).sym(key)
-
-
-def word(nt, key: str) -> str:
-    """Words of these figures, or of the notation profile."""
-    return in_language(WORDS[key], nt) if key in WORDS else get_notation(nt).word(key)
-
-
-def unit(nt, u: str) -> str:
-    """A unit as the profile writes it (with the units the profile lacks)."""
+def sym(nt: Notation | str, key: str) -> str:
+    """A symbol of the dynamics figures (``"dynamics.<key>"``) or of the notation (for unmigrated callers)."""
     nt = get_notation(nt)
-    if nt.code == "ru" and u in _UNITS_RU:
-        return _UNITS_RU[u]
-    return nt.unit(u)
+    return nt.sym(f"dynamics.{key}") if f"dynamics.{key}" in nt.symbols else nt.sym(key)
 
 
-def quantity(nt, symbol: str, u: str) -> str:
-    """``"ω, rad/s"`` (en, ru) or ``"ω/(rad/s)"`` (zh), with this module's units."""
-    nt = get_notation(nt)
-    return nt.quantity(symbol, unit(nt, u))
+def unit(nt: Notation | str, u: str) -> str:
+    """``get_notation(nt).unit(u)`` (for unmigrated callers)."""
+    return get_notation(nt).unit(u)
+
+
+def quantity(nt: Notation | str, symbol: str, u: str) -> str:
+    """``get_notation(nt).quantity(symbol, u)`` (for unmigrated callers)."""
+    return get_notation(nt).quantity(symbol, u)
 
 
 def value_text(nt, value: float, u: str, *, sig: int = 4) -> str:
     """``"31.42 rad/s"`` in the profile's number style and units."""
     nt = get_notation(nt)
     sep = "" if u == "°" else " "
-    return f"{nt.number(value, sig=sig)}{sep}{unit(nt, u)}" if u else nt.number(value, sig=sig)
+    return f"{nt.number(value, sig=sig)}{sep}{nt.unit(u)}" if u else nt.number(value, sig=sig)
 
 
 # ----------------------------------------------------------------------------- layout helpers
@@ -480,7 +416,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
                 float(np.mean(c.values < axis_level)) > 0.5 for c in curves[:1])
     side = labels_side if labels_side is not None else ("above" if below else "below")
     ax_phi = Axis((origin[0], x_axis_y), s_phi, "x", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
-                  tick_labels=("",) * (m + 1), label=phi_label or sym(nt, "phi"), size_mm=SMALL_MM,
+                  tick_labels=("",) * (m + 1), label=phi_label or nt.sym("phi"), size_mm=SMALL_MM,
                   name=f"{prefix}axis-phi", labels_side=side)
     ticks = tuple(t for t in nice_ticks(y_from, y_to, s_Y, min_gap_mm=8.0) if y_from <= t <= y_to)
     ax_Y = Axis(origin, s_Y, "y", min_value=y_from, max_value=y_to, ticks=ticks, label=y_label, size_mm=SMALL_MM,
@@ -570,12 +506,12 @@ def _graph_scene(study, *, nt, title, page, title_block, name, curves, y_lo, y_h
     sheet = SheetFrame(nt=nt, page=page, title=title, problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
-    y_label = quantity(nt, y_symbol, y_unit)
-    right = 8.0 + markup.text_width_mm(sym(nt, "phi"), SMALL_MM + 0.5) + 26.0
+    y_label = nt.quantity(y_symbol, y_unit)
+    right = 8.0 + markup.text_width_mm(nt.sym("phi"), SMALL_MM + 0.5) + 26.0
     px0, px1 = x0 + 20.0, x1 - right
     py0, py1 = sheet.top + 12.0, sheet.caption_y - 14.0
-    s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, px1 - px0)
-    u = unit(nt, y_unit)
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI, px1 - px0)
+    u = nt.unit(y_unit)
     u = f"({u})" if "/" in u else u
     suppressed = zero is False or (zero is None and y_lo > 0 and (y_hi - y_lo) < 0.35 * y_hi)
     if suppressed:
@@ -644,7 +580,7 @@ def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts:
     red = inertia_curve(study, phi)
     J_k = np.asarray(study.J_e, dtype=float)
     phi_k = np.asarray(study.phi, dtype=float)
-    J_sym = sym(nt, "J_e")
+    J_sym = nt.sym("dynamics.J_e")
     if turned:
         return _turned_inertia_scene(study, nt=nt, phi=phi, J=red.J_e, J_k=J_k, phi_k=phi_k, mu_J=mu_J,
                                      mu_phi=mu_phi, page=page, title=title, title_block=title_block, name=name)
@@ -655,9 +591,9 @@ def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts:
                 curves.append(CurveSpec(re.sub(r"\W+", "", key), phi, values, PART, _part_label(key)))
     y_hi = float(max(red.J_e.max(), J_k.max()))
     legend = f"{J_sym} = Σ[m_i(v_{{Si}}/ω_1)² + J_{{Si}}(ω_i/ω_1)²]"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'inertia_graph')} {J_sym}(φ)", page=page,
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.inertia_graph')} {J_sym}(φ)", page=page,
                         title_block=title_block, name=name, curves=curves, y_lo=0.0, y_hi=y_hi, y_symbol=J_sym,
-                        y_unit="kg·m²", scale_symbol=sym(nt, "mu_J"), mu_Y=mu_J, mu_phi=mu_phi,
+                        y_unit="kg·m²", scale_symbol=nt.sym("dynamics.mu_J"), mu_Y=mu_J, mu_phi=mu_phi,
                         what="the J_e graph", dots=(phi_k, J_k), legend=legend, zero=True)
 
 
@@ -672,12 +608,12 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
     ox, oy = origin
     period = float(phi_k[-1] - phi_k[0])
     ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=12.0) if 0.0 <= t <= J_to)
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J, label=quantity(nt, sym(nt, "J_e"),
+    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J, label=nt.quantity(nt.sym("dynamics.J_e"),
                 "kg·m²"), size_mm=SMALL_MM, decimal=get_notation(nt).decimal, labels_side="above",
                 skip_zero_label=True, name=f"{prefix}axis-J")
     spacing = s_phi.to_mm(period / m)
     ax_phi = DownAxis(origin, s_phi, "y", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
-                      tick_labels=position_labels(m, spacing), label=sym(nt, "phi"), size_mm=SMALL_MM,
+                      tick_labels=position_labels(m, spacing), label=nt.sym("phi"), size_mm=SMALL_MM,
                       name=f"{prefix}axis-phi")
     pts = tuple(zip((ox + s_J.to_mm(J)).tolist(), (oy + s_phi.to_mm(phi - phi_k[0])).tolist()))
     curve = Polyline(pts, style=MAIN, name=f"{prefix}curve-J_e")
@@ -691,9 +627,9 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
         p = (ox + s_J.to_mm(float(J_k[k])), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
         dots.append(Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}"))
         occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
-    name_lab = occ.place_label(pts[len(pts) // 4], sym(nt, "J_e"), ("e", "ne", "se", "w"), size_mm=TEXT_MM + 0.4,
+    name_lab = occ.place_label(pts[len(pts) // 4], nt.sym("dynamics.J_e"), ("e", "ne", "se", "w"), size_mm=TEXT_MM + 0.4,
                                gap_mm=2.0, within=within)
-    label = Text((name_lab.x, name_lab.y), sym(nt, "J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
+    label = Text((name_lab.x, name_lab.y), nt.sym("dynamics.J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
                  name=f"{prefix}name-J_e")
     return [ax_J, ax_phi, curve] + dots + [label]
 
@@ -701,16 +637,16 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
 def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, title, title_block, name):
     from graphmethods.scene import Page
 
-    J_sym = sym(nt, "J_e")
-    sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'inertia_turned')}: {J_sym}(φ)",
+    J_sym = nt.sym("dynamics.J_e")
+    sheet = SheetFrame(nt=nt, page=page, title=title or f"{nt.word('dynamics.inertia_turned')}: {J_sym}(φ)",
                        problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "portrait", frame=True))
     x0, y0, x1, y1 = sheet.box
     ox, oy = x0 + 16.0, sheet.top + 16.0
     J_to = float(max(J.max(), J_k.max()))
-    label_w = markup.text_width_mm(quantity(nt, J_sym, "kg·m²"), SMALL_MM + 0.5)
-    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, x1 - ox - 12.0 - label_w, what="the J_e axis")
-    s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, sheet.caption_y - 22.0 - oy)
+    label_w = markup.text_width_mm(nt.quantity(J_sym, "kg·m²"), SMALL_MM + 0.5)
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, x1 - ox - 12.0 - label_w, what="the J_e axis")
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI, sheet.caption_y - 22.0 - oy)
     els = turned_inertia_elements(origin=(ox, oy), s_J=s_J, s_phi=s_phi, m=study.m, phi=phi, J=J, phi_k=phi_k,
                                   J_k=J_k, nt=nt, occ=sheet.occ, J_to=J_to, prefix="", within=sheet.box)
     scales = (s_J, s_phi)
@@ -751,8 +687,8 @@ def drawn_moments(study, nt) -> DrawnMoments:
         curve, ck, cv, key = -M_r, "M_r", -M_d, "M_d"
     else:
         curve, ck, cv, key = M_r, "M_d", M_d, "M_r"
-    curves = (CurveSpec(key, phi_k, curve, MAIN, sym(nt, key)),
-              CurveSpec(ck, ends, np.array([cv, cv]), MAIN, sym(nt, ck)))
+    curves = (CurveSpec(key, phi_k, curve, MAIN, nt.sym(key)),
+              CurveSpec(ck, ends, np.array([cv, cv]), MAIN, nt.sym(ck)))
     return DrawnMoments(curves, (phi_k, curve), float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck,
                         float(cv))
 
@@ -777,11 +713,11 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     study = as_study(study)
     nt = get_notation(notation)
     dm = drawn_moments(study, nt)
-    legend = f"{sym(nt, dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({word(nt, 'work_balance')})"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'moment_graph')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}",
+    legend = f"{nt.sym(dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({nt.word('dynamics.work_balance')})"
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}",
                         page=page, title_block=title_block, name=name, curves=list(dm.curves), y_lo=dm.lo,
-                        y_hi=dm.hi, y_symbol=sym(nt, "M"), y_unit="N·m",
-                        scale_symbol=sym(nt, "mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
+                        y_hi=dm.hi, y_symbol=nt.sym("M"), y_unit="N·m",
+                        scale_symbol=nt.sym("mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
                         dots=dm.dots, legend=legend, zero=True)
 
 
@@ -824,22 +760,23 @@ def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notat
         mo = study.exact.motion
         phi, Y = np.asarray(mo.phi, dtype=float) - float(mo.phi[0]), np.asarray(mo.T, dtype=float)
         key, kmax, kmin, dots = "T", "T_max", "T_min", None
-        ttl = f"{word(nt, 'kinetic_graph')} {sym(nt, 'T')}(φ)"
-        legend = f"{sym(nt, 'J_F')} = {value_text(nt, study.exact.J_F, 'kg·m²')} ({word(nt, 'exact')})"
+        ttl = f"{nt.word('dynamics.kinetic_graph')} {nt.sym('T')}(φ)"
+        legend = f"{nt.sym('dynamics.J_F')} = {value_text(nt, study.exact.J_F, 'kg·m²')} ({nt.word('dynamics.exact')})"
     else:
         Y = delta_T_curve(study, phi)
         key, kmax, kmin = "dT", "dT_max", "dT_min"
         dots = (np.asarray(study.phi, dtype=float), np.asarray(study.delta_T, dtype=float))
-        ttl = f"{word(nt, 'delta_T_graph')} {sym(nt, 'dT')}(φ)"
+        ttl = f"{nt.word('dynamics.delta_T_graph')} {nt.sym('dynamics.dT')}(φ)"
         legend = ""
+    family = "" if kinetic else "dynamics."  # T, T_max of the notation; ΔT, ΔT_max of the dynamics figures
     (p1, v1), (p2, v2) = _extremes(phi, Y)
-    marks = [MarkSpec(kmax, p1, v1, f"{sym(nt, kmax)} = {value_text(nt, v1, 'J')}, φ = "
+    marks = [MarkSpec(kmax, p1, v1, f"{nt.sym(family + kmax)} = {value_text(nt, v1, 'J')}, φ = "
                                     f"{get_notation(nt).number(math.degrees(p1), sig=4)}°", True),
-             MarkSpec(kmin, p2, v2, f"{sym(nt, kmin)} = {value_text(nt, v2, 'J')}, φ = "
+             MarkSpec(kmin, p2, v2, f"{nt.sym(family + kmin)} = {value_text(nt, v2, 'J')}, φ = "
                                     f"{get_notation(nt).number(math.degrees(p2), sig=4)}°", False)]
     return _graph_scene(study, nt=nt, title=title or ttl, page=page, title_block=title_block, name=name,
                         curves=[CurveSpec(key, phi, Y, MAIN, "")], y_lo=float(Y.min()), y_hi=float(Y.max()),
-                        y_symbol=sym(nt, key), y_unit="J", scale_symbol=sym(nt, "mu_T"), mu_Y=mu_T, mu_phi=mu_phi,
+                        y_symbol=nt.sym(family + key), y_unit="J", scale_symbol=nt.sym("mu_T"), mu_Y=mu_T, mu_phi=mu_phi,
                         what="the energy graph", dots=dots, marks=marks, legend=legend,
                         zero=None if kinetic else True)
 
@@ -870,17 +807,17 @@ def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, 
     w = np.asarray(mo.omega, dtype=float)
     n = get_notation(nt).number
     marks = [MarkSpec("omega_max", ex.phi_omega_max_from_0, ex.omega_max,
-                      f"{sym(nt, 'omega_max')} = {value_text(nt, ex.omega_max, 'rad/s')}, φ = "
+                      f"{nt.sym('dynamics.omega_max')} = {value_text(nt, ex.omega_max, 'rad/s')}, φ = "
                       f"{n(math.degrees(ex.phi_omega_max_from_0))}°", True),
              MarkSpec("omega_min", ex.phi_omega_min_from_0, ex.omega_min,
-                      f"{sym(nt, 'omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
+                      f"{nt.sym('dynamics.omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
                       f"{n(math.degrees(ex.phi_omega_min_from_0))}°", False)]
-    levels = [(mo.omega_m, f"{sym(nt, 'omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
-    legend = f"δ = {n(mo.delta)};  {sym(nt, 'J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} ({word(nt, 'exact')})"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'speed_graph')} ω(φ)", page=page,
+    levels = [(mo.omega_m, f"{nt.sym('dynamics.omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
+    legend = f"δ = {n(mo.delta)};  {nt.sym('dynamics.J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} ({nt.word('dynamics.exact')})"
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
                         y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
-                        y_symbol=sym(nt, "omega"), y_unit="rad/s", scale_symbol=sym(nt, "mu_omega"), mu_Y=mu_omega,
+                        y_symbol=nt.sym("dynamics.omega"), y_unit="rad/s", scale_symbol=nt.sym("dynamics.mu_omega"), mu_Y=mu_omega,
                         mu_phi=mu_phi, what="the ω graph", marks=marks, levels=levels, legend=legend, zero=None)
 
 
@@ -906,13 +843,13 @@ def acceleration_graph(study, *, mu_eps=None, mu_phi=None, notation="en", page=N
     eps = np.asarray(mo.epsilon, dtype=float)
     n = get_notation(nt).number
     p = float(mo.phi_epsilon_max - mo.phi[0])
-    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{sym(nt, 'eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
+    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{nt.sym('dynamics.eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
                       f", φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
-    legend = f"{sym(nt, 'chi')} = |{sym(nt, 'eps')}|_{{max}}/{sym(nt, 'omega_m')}² = {n(mo.chi)}"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'accel_graph')} ε(φ)", page=page,
+    legend = f"{nt.sym('dynamics.chi')} = |{nt.sym('dynamics.eps')}|_{{max}}/{nt.sym('dynamics.omega_m')}² = {n(mo.chi)}"
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.accel_graph')} ε(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("eps", phi, eps, MAIN, "")],
-                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)), y_symbol=sym(nt, "eps"),
-                        y_unit="rad/s²", scale_symbol=sym(nt, "mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
+                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)), y_symbol=nt.sym("dynamics.eps"),
+                        y_unit="rad/s²", scale_symbol=nt.sym("dynamics.mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
                         what="the ε graph", marks=marks, legend=legend, zero=True)
 
 
@@ -1031,14 +968,14 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     images = {p: turned(plans.v(p)[k]) for p in names}          # m/s, turned
     F = np.asarray(ld.force, dtype=float)
     F_abs = float(np.hypot(*F))
-    sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'lever')}, {word(nt, 'position')} {k}",
+    sheet = SheetFrame(nt=nt, page=page, title=title or f"{nt.word('dynamics.lever')}, {nt.word('dynamics.position')} {k}",
                        problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
     nb = get_notation(nt).number
-    F_text = f"{sym(nt, 'F')} = {value_text(nt, F_abs, 'N')}"
-    u_v = unit(nt, "(m/s)")
-    s_F = given_scale(mu_F, sym(nt, "mu_F"), unit(nt, "N"), F_abs, 30.0 if mu_F is None else 1e9,
+    F_text = f"{nt.sym('dynamics.F')} = {value_text(nt, F_abs, 'N')}"
+    u_v = nt.unit("(m/s)")
+    s_F = given_scale(mu_F, nt.sym("dynamics.mu_F"), nt.unit("N"), F_abs, 30.0 if mu_F is None else 1e9,
                       what="the force vector")
     P = ld.point
     Fhat = np.array([F[0], -F[1]]) / F_abs                      # on paper (y down)
@@ -1053,8 +990,8 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
         cloud = np.vstack(list(img.values()) + [np.zeros(2), tip, foot])
         return img, tip, foot, cloud.min(axis=0), cloud.max(axis=0)
 
-    rows_probe = ((word(nt, "plan_turned"), f"{sym(nt, 'omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
-                  (word(nt, "by_lever"), f"= {nb(F_abs)}·00.00·{nb(1.0e-4)}/{nb(omega_1)}"))
+    rows_probe = ((nt.word("dynamics.plan_turned"), f"{nt.sym('dynamics.omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
+                  (nt.word("dynamics.by_lever"), f"= {nb(F_abs)}·00.00·{nb(1.0e-4)}/{nb(omega_1)}"))
     table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=TEXT_MM).width_mm
     box = (x0 + 12.0, sheet.top + 8.0, x1 - table_w - 14.0, sheet.caption_y - 14.0)
     bw, bh = box[2] - box[0], box[3] - box[1]
@@ -1067,16 +1004,16 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
                          for mm in (1.0, 2.0, 2.5, 4.0, 5.0)}):
             if c < span:
                 continue
-            trial = Scale(sym(nt, "mu_v"), u_v, c)
+            trial = Scale(nt.sym("dynamics.mu_v"), u_v, c)
             lo, hi = layout(trial)[3:]
             if hi[0] - lo[0] <= bw and hi[1] - lo[1] <= bh:
-                s_v = Scale(sym(nt, "mu_v"), u_v, c, note=f"picked: the lever fits {bw:.0f} × {bh:.0f} mm at "
+                s_v = Scale(nt.sym("dynamics.mu_v"), u_v, c, note=f"picked: the lever fits {bw:.0f} × {bh:.0f} mm at "
                                                            f"{nb(c)} (m/s)/mm")
                 break
         if s_v is None:  # pragma: no cover - the force alone cannot exceed its 30 mm
             raise InputError("the lever does not fit the sheet; give mu_v and mu_F")
     else:
-        s_v = mu_v if isinstance(mu_v, Scale) else Scale(sym(nt, "mu_v"), u_v, mu_v)
+        s_v = mu_v if isinstance(mu_v, Scale) else Scale(nt.sym("dynamics.mu_v"), u_v, mu_v)
     img, tip, foot, lo, hi = layout(s_v)
     if hi[0] - lo[0] > bw + 1e-9 or hi[1] - lo[1] > bh + 1e-9:
         raise InputError(f"the lever at {markup.plain(s_v.caption())} and {markup.plain(s_F.caption())} needs "
@@ -1124,7 +1061,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     side = -1.0 if float(np.dot(centre, normal)) > 0 else 1.0
     arm = Dimension(at(np.zeros(2)), at(foot), "", offset_mm=8.0 * side, size_mm=TEXT_MM, name="dimension-h")
     occ.register(arm)
-    h_text = f"{sym(nt, 'h')} = {nb(h_mm)} {unit(nt, 'mm')}"
+    h_text = f"{nt.sym('dynamics.h')} = {nb(h_mm)} {nt.unit('mm')}"
     a_, b_ = np.asarray(arm.line_start), np.asarray(arm.line_end)
     away = np.asarray(arm.line_start) - np.asarray(arm.start)          # from the arm towards its dimension line
     compass = "e" if away[0] > abs(away[1]) else "w" if -away[0] > abs(away[1]) else ("s" if away[1] > 0 else "n")
@@ -1167,13 +1104,13 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     # the result, worked out on the drawing, beside the power method's value
     M_lever = F_abs * h_mm * s_v.per_mm / omega_1
     rows = (
-        (word(nt, "plan_turned"), f"{sym(nt, 'omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
-        (word(nt, "force"), F_text),
-        (word(nt, "arm"), f"{sym(nt, 'h')} = {nb(h_mm)} {unit(nt, 'mm')}"),
-        (word(nt, "by_lever"), f"{sym(nt, 'M_r')} = {sym(nt, 'F')}·{sym(nt, 'h')}·{sym(nt, 'mu_v')}/{sym(nt, 'omega_1')}"),
+        (nt.word("dynamics.plan_turned"), f"{nt.sym('dynamics.omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
+        (nt.word("dynamics.force"), F_text),
+        (nt.word("dynamics.arm"), f"{nt.sym('dynamics.h')} = {nb(h_mm)} {nt.unit('mm')}"),
+        (nt.word("dynamics.by_lever"), f"{nt.sym('M_r')} = {nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/{nt.sym('dynamics.omega_1')}"),
         ("", f"= {nb(F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(omega_1)}"),
         ("", f"= {value_text(nt, M_lever, 'N·m')}"),
-        (word(nt, "by_power"), f"{sym(nt, 'M_r')} = {value_text(nt, ld.M_r, 'N·m')}"),
+        (nt.word("dynamics.by_power"), f"{nt.sym('M_r')} = {value_text(nt, ld.M_r, 'N·m')}"),
     )
     probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM, row_height_mm=7.0)
     table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM,
@@ -1190,5 +1127,5 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
 __all__ = [
     "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
     "phi_graph_elements", "turned_inertia_elements", "DownAxis", "FastOccupancy", "SheetFrame", "CurveSpec",
-    "MarkSpec", "LeverLoad", "lever_load", "sym", "word", "unit", "quantity", "value_text", "SYMBOLS", "WORDS",
+    "MarkSpec", "LeverLoad", "lever_load", "sym", "unit", "quantity", "value_text",
 ]

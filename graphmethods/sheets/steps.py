@@ -835,7 +835,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
          lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
         (_w(nt, "load", F=_text_of(figure, "label-F")), _leader_of(["force-F", "label-F"])),
         (_w(nt, "arm", h=_text_of(figure, "label-h")), _leader_of(["dimension-h", "label-h"])),
-        (_w(nt, "balance", Mr=D.sym(nt, "M_r")), lambda n: False),
+        (_w(nt, "balance", Mr=nt.sym("M_r")), lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 

@@ -50,7 +50,6 @@ from graphmethods.scene import (
     Scene,
     Table,
     Text,
-    in_language,
     markup,
     nice_ticks,
     notation as get_notation,
@@ -75,61 +74,17 @@ from graphmethods.sheets.dynamics import (
     inertia_curve,
     phi_graph_elements,
     problem_text,
-    quantity,
-    sym,
     turned_inertia_elements,
-    unit,
     value_text,
 )
 
 RAY = Style(width_mm=0.35)
 TABLE_MM = 3.0
 
-WORDS = {
-    "wittenbauer":      ("Energy–mass diagram (Wittenbauer)", "Диаграмма энергомасс (Виттенбауэра)",
-                         "能量–质量图（维滕鲍尔图）"),
-    "dynamic_analysis": ("Dynamic analysis: flywheel by the Wittenbauer method",
-                         "Динамический анализ: маховик по методу Виттенбауэра",
-                         "动力学分析：维滕鲍尔法求飞轮"),
-    "moments":          ("Reduced moments", "Приведённые моменты", "等效力矩"),
-    "energy":           ("Increment of kinetic energy", "Приращение кинетической энергии", "动能增量"),
-    "inertia_turned":   ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции (повёрнут на 90°)",
-                         "等效转动惯量（旋转90°）"),
-    "result":           ("Result", "Результат", "结果"),
-    "delta":            ("coefficient of fluctuation", "коэффициент неравномерности", "速度不均匀系数"),
-    "omega_m":          ("mean angular velocity", "средняя угловая скорость", "平均角速度"),
-    "M_d":              ("driving moment", "движущий момент", "等效驱动力矩"),
-    "M_r":              ("resisting moment", "момент сопротивления", "等效阻抗力矩"),
-    "scale_J":          ("scale of J_e", "масштаб J_п", "J_e比例尺"),
-    "scale_T":          ("scale of ΔT", "масштаб ΔT", "ΔE比例尺"),
-    "scale_M":          ("scale of M", "масштаб M", "M比例尺"),
-    "scale_phi":        ("scale of φ", "масштаб φ", "φ比例尺"),
-    "tan_max":          ("upper ray", "верхний луч", "上射线"),
-    "tan_min":          ("lower ray", "нижний луч", "下射线"),
-    "k":                ("intercept k", "отрезок k", "截距k"),
-    "l":                ("intercept l", "отрезок l", "截距l"),
-    "kl":               ("segment kl", "отрезок kl", "线段kl"),
-    "J_F":              ("flywheel", "маховик", "飞轮"),
-    "at_omega_max":     ("ω_{max} at position", "ω_{max} в положении", "ω_{max}位置"),
-    "at_omega_min":     ("ω_{min} at position", "ω_{min} в положении", "ω_{min}位置"),
-    "error":            ("error estimate (m = {m})", "оценка погрешности (m = {m})", "误差估计（m = {m}）"),
-    "O1":               ("O_1 (off the sheet)", "O_1 (вне листа)", "O_1（图外）"),
-    "O1_on":            ("O_1", "O_1", "O_1"),
-    "none":             ("not estimated", "не оценена", "未估计"),
-    "tangents":         ("tangents", "тангенсы", "正切"),
-    "tangents_exact":   ("(1 ± δ/2)²", "(1 ± δ/2)²", "(1 ± δ/2)²"),
-    "tangents_textbook": ("(1 ± δ)", "(1 ± δ)", "(1 ± δ)"),
-}
-
-
 def bold_bbox(lab):
     """The box a bold label covers: bold glyphs run about 10 % wider than the estimate for regular ones."""
     x0, y0, x1, y1 = label_bbox(lab)
     return (x0, y0, x1 + 0.1 * (x1 - x0), y1)
-
-
-def _w(nt, key: str, **kw) -> str:
-    return in_language(WORDS[key], nt, **kw)
 
 
 # ----------------------------------------------------------------------------- data
@@ -272,8 +227,8 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     nt = get_notation(nt)
     ox, oy = origin
     m = res.m
-    s_J = Scale(sym(nt, "mu_J"), unit(nt, "kg·m²"), res.mu_J)
-    s_T = Scale(sym(nt, "mu_T"), unit(nt, "J"), res.mu_T)
+    s_J = Scale(nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), res.mu_J)
+    s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
     X = np.asarray(res.x_mm, dtype=float)
     Y = np.asarray(res.y_mm, dtype=float)
 
@@ -283,12 +238,12 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     # axes
     ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
     ax_T = Axis(origin, s_T, "y", min_value=T_lo, max_value=max(T_hi, T_lo + s_T.per_mm), ticks=ticks_T,
-                label=quantity(nt, sym(nt, "dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True,
+                label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True,
                 name=f"{prefix}axis-T")
     below = float(np.mean(Y[:-1] < 0)) > 0.5
     ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=14.0) if 0.0 <= t <= J_to)
     ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J,
-                label=quantity(nt, sym(nt, "J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
+                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{prefix}axis-J")
     curve = Polyline(tuple(P(x, y) for x, y in zip(X[:-1], Y[:-1])), style=MAIN, closed=True,
                      name=f"{prefix}curve")
@@ -347,7 +302,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
                               size_mm=TEXT_MM + 0.5, gap_mm=1.5, within=within)
         els.append(Text((lab.x, lab.y), key, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{prefix}name-{key}"))
     for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
-        text = sym(nt, f"psi_{key}")
+        text = nt.sym(f"dynamics.psi_{key}")
         a = psi / 2 if right else math.pi + psi / 2
         mid = (pt[0] + (R + 1.5) * math.cos(a), pt[1] - (R + 1.5) * math.sin(a))
         dirs: tuple[str, ...] = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
@@ -384,7 +339,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
         i = idx[0]
         p = P(X[i], Y[i])
-        text = sym(nt, f"omega_{key}")
+        text = nt.sym(f"dynamics.omega_{key}")
         dirs = (("ne", "n", "e", "nw", "se", "w", "sw", "s") if key == "max"
                 else ("sw", "s", "se", "w", "nw", "e", "ne", "n"))
         lab, leader = occ.place_label_with_leader(p, text, dirs, size_mm=TEXT_MM, gap_mm=2.5, within=within)
@@ -414,36 +369,36 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False)
     mm = nt.unit("mm")
     pos = " ".join(str(i) for i in res.index_omega_max)
     neg = " ".join(str(i) for i in res.index_omega_min)
-    tan_form = _w(nt, "tangents_exact" if res.tangents == "exact" else "tangents_textbook")
+    tan_form = nt.word("wittenbauer.tangents_exact" if res.tangents == "exact" else "wittenbauer.tangents_textbook")
     if res.error_estimate is None:
-        err = _w(nt, "none")
+        err = nt.word("wittenbauer.none")
     else:
         err = f"+{value_text(nt, res.error_estimate, 'kg·m²', sig=3)}".replace("+−", "−")
     O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}"
-    O1_word = _w(nt, "O1_on") if on_sheet else _w(nt, "O1")
+    O1_word = nt.word("wittenbauer.O1_on") if on_sheet else nt.word("wittenbauer.O1")
     tg = "tg" if nt.code == "ru" else "tan"
-    tg_max = f"{tg} {sym(nt, 'psi_max')} = {n(res.tan_psi_max)}, {sym(nt, 'psi_max')} = {n(math.degrees(res.psi_max))}°"
-    tg_min = f"{tg} {sym(nt, 'psi_min')} = {n(res.tan_psi_min)}, {sym(nt, 'psi_min')} = {n(math.degrees(res.psi_min))}°"
-    J_F = f"{sym(nt, 'J_F')} = {sym(nt, 'mu_T')}·kl/({sym(nt, 'omega_m')}²{sym(nt, 'delta')})"
+    tg_max = f"{tg} {nt.sym('dynamics.psi_max')} = {n(res.tan_psi_max)}, {nt.sym('dynamics.psi_max')} = {n(math.degrees(res.psi_max))}°"
+    tg_min = f"{tg} {nt.sym('dynamics.psi_min')} = {n(res.tan_psi_min)}, {nt.sym('dynamics.psi_min')} = {n(math.degrees(res.psi_min))}°"
+    J_F = f"{nt.sym('dynamics.J_F')} = {nt.sym('mu_T')}·kl/({nt.sym('dynamics.omega_m')}²{nt.sym('dynamics.delta')})"
     J_F_num = (f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)}) = "
                f"{value_text(nt, res.J_F, 'kg·m²')}")
     rows = [
-        (_w(nt, "delta"), f"{sym(nt, 'delta')} = {n(res.delta)}", None),
-        (_w(nt, "omega_m"), f"{sym(nt, 'omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}", None),
+        (nt.word("wittenbauer.delta"), f"{nt.sym('dynamics.delta')} = {n(res.delta)}", None),
+        (nt.word("wittenbauer.omega_m"), f"{nt.sym('dynamics.omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}", None),
         *((a, b, None) for a, b in extra),
-        (_w(nt, "scale_J"), f"{sym(nt, 'mu_J')} = {n(res.mu_J)} {unit(nt, 'kg·m²')}/{mm}", None),
-        (_w(nt, "scale_T"), f"{sym(nt, 'mu_T')} = {n(res.mu_T)} {unit(nt, 'J')}/{mm}", None),
-        (_w(nt, "tan_max"), tg_max, None),
-        (_w(nt, "tan_min"), tg_min, None),
-        (_w(nt, "tangents"), tan_form, f"{_w(nt, 'tangents')}: {tan_form}"),
-        (_w(nt, "k"), f"k = {n(res.k_mm)} {mm}", None),
-        (_w(nt, "l"), f"l = {n(res.l_mm)} {mm}", None),
-        (_w(nt, "kl"), f"kl = {n(res.kl_mm)} {mm}", None),
-        (_w(nt, "J_F"), J_F, None),
+        (nt.word("wittenbauer.scale_J"), f"{nt.sym('dynamics.mu_J')} = {n(res.mu_J)} {nt.unit('kg·m²')}/{mm}", None),
+        (nt.word("wittenbauer.scale_T"), f"{nt.sym('mu_T')} = {n(res.mu_T)} {nt.unit('J')}/{mm}", None),
+        (nt.word("wittenbauer.tan_max"), tg_max, None),
+        (nt.word("wittenbauer.tan_min"), tg_min, None),
+        (nt.word("wittenbauer.tangents"), tan_form, f"{nt.word('wittenbauer.tangents')}: {tan_form}"),
+        (nt.word("wittenbauer.k"), f"k = {n(res.k_mm)} {mm}", None),
+        (nt.word("wittenbauer.l"), f"l = {n(res.l_mm)} {mm}", None),
+        (nt.word("wittenbauer.kl"), f"kl = {n(res.kl_mm)} {mm}", None),
+        (nt.word("wittenbauer.J_F"), J_F, None),
         ("", J_F_num, None),
-        (_w(nt, "at_omega_max"), pos, f"{_w(nt, 'at_omega_max')}: {pos}"),
-        (_w(nt, "at_omega_min"), neg, f"{_w(nt, 'at_omega_min')}: {neg}"),
-        (_w(nt, "error", m=res.m), err, f"{_w(nt, 'error', m=res.m)}: {err}"),
+        (nt.word("wittenbauer.at_omega_max"), pos, f"{nt.word('wittenbauer.at_omega_max')}: {pos}"),
+        (nt.word("wittenbauer.at_omega_min"), neg, f"{nt.word('wittenbauer.at_omega_min')}: {neg}"),
+        (nt.word("wittenbauer.error", m=res.m), err, f"{nt.word('wittenbauer.error', m=res.m)}: {err}"),
         (O1_word, O1, f"{O1_word}: {O1}"),
     ]
     return tuple((a, b, c if c is not None else b) for a, b, c in rows)
@@ -516,7 +471,7 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     """
     nt = get_notation(notation)
     data = diagram_data(source, tangents=tangents, notation=nt)
-    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "wittenbauer"),
+    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("wittenbauer.wittenbauer"),
                        problem=data.problem if problem is None else problem, title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
@@ -526,8 +481,8 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     ax_x = x0 + 22.0
     py0, py1 = sheet.top + 10.0, sheet.caption_y - 9.0
     avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
-    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, avail_X, what="the J_e axis")
-    s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, avail_X, what="the J_e axis")
+    s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
     res = data.result(s_J.per_mm, s_T.per_mm)
     origin = (ax_x, py0 + s_T.to_mm(T_hi))
     page_probe = sheet.probe
@@ -603,7 +558,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     study = as_study(study)
     nt = get_notation(notation)
     m = study.m
-    sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study, nt),
+    sheet = SheetFrame(nt=nt, page=None, title=title or nt.word("wittenbauer.dynamic_analysis"), problem=problem_text(study, nt),
                        title_block=title_block, default_page=_sheet_page(page))
     x0, y0, x1, y1 = sheet.box
     data = diagram_data(study, tangents=tangents, notation=nt)
@@ -639,26 +594,26 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
         if best is None:
             raise InputError(f"the sheet {sheet.probe.size} is too small for the dynamic-analysis layout; "
                              f"use A1 or A2")
-        s_phi = Scale(sym(nt, "mu_phi"), "rad", math.radians(best[1]), alt_per_mm=best[1], alt_unit="°",
+        s_phi = Scale(nt.sym("mu_phi"), "rad", math.radians(best[1]), alt_per_mm=best[1], alt_unit="°",
                       note=f"picked: {best[1]:g}°/mm draws the graphs and the energy–mass diagram largest together")
     else:
-        s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, min(diagram_room(0.0) - 40.0, 0.36 * W))
+        s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI, min(diagram_room(0.0) - 40.0, 0.36 * W))
     L_phi = s_phi.to_mm(TWO_PI)
     d_top = y_Jt + L_phi + 22.0                               # the diagram's top
-    s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, d_bottom - d_top, what="the ΔT axis")
+    s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), T_hi - T_lo, d_bottom - d_top, what="the ΔT axis")
     y0_T = d_top + s_T.to_mm(T_hi)                           # the level ΔT = 0
-    s_M = given_scale(mu_M, sym(nt, "mu_M"), unit(nt, "N·m"), M_hi - M_lo,
+    s_M = given_scale(mu_M, nt.sym("mu_M"), nt.unit("N·m"), M_hi - M_lo,
                       y_Jt + L_phi - 10.0 - (sheet.top + 16.0), what="the moment graph")
     y_M0 = y_Jt + L_phi - 10.0 - s_M.to_mm(-M_lo)             # the M graph's φ axis (an engine's M_d dips below)
     x_L = x0 + 22.0
     left_end = x_L + L_phi + 12.0
     probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi)))
     table_w = _table(probe_rows, (0, 0)).width_mm
-    J_label_w = markup.text_width_mm(quantity(nt, sym(nt, "J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
+    J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
     room_J = x1 - table_w - 12.0 - J_label_w - (left_end + 40.0)
     # μ_J fits the diagram's content (0…J_e max) to the width beside the graphs; the rays are clipped
     # to the diagram's own frame, so flat rays cost nothing (they no longer run across the sheet)
-    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, room_J, what="the J_e axis")
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, room_J, what="the J_e axis")
     res = data.result(s_J.per_mm, s_T.per_mm)
     # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
     x_a_min = left_end + 40.0
@@ -690,12 +645,12 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     M_els = phi_graph_elements(origin=(x_L, y_M0), s_phi=s_phi, s_Y=s_M, m=m, phi_k=phi_k,
                                curves=list(dm.curves),
                                nt=nt, occ=occ, y_from=M_lo, y_to=M_hi, axis_level=0.0,
-                               y_label=quantity(nt, sym(nt, "M"), "N·m"), dots=dm.dots, prefix="M-",
+                               y_label=nt.quantity(nt.sym("M"), "N·m"), dots=dm.dots, prefix="M-",
                                within=within_left)
     T_els = phi_graph_elements(origin=(x_L, y0_T), s_phi=s_phi, s_Y=s_T, m=m, phi_k=phi_k,
                                curves=[CurveSpec("dT", phi, dT_fine, MAIN, "")], nt=nt, occ=occ,
                                y_from=min(float(dT_fine.min()), 0.0), y_to=max(float(dT_fine.max()), 0.0),
-                               axis_level=0.0, y_label=quantity(nt, sym(nt, "dT"), "J"), dots=(phi_k, dT_k),
+                               axis_level=0.0, y_label=nt.quantity(nt.sym("dynamics.dT"), "J"), dots=(phi_k, dT_k),
                                prefix="T-", within=within_left)
     O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
     rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, dm, s_M, s_phi), on_sheet=O1_drawn))
@@ -705,12 +660,12 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
     # small headings over the parts
     heads = []
-    for key, text, at in (("M", f"{_w(nt, 'moments')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}(φ)",
+    for key, text, at in (("M", f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}(φ)",
                            (x_L + 10.0, y_M0 - s_M.to_mm(M_hi) - 8.0)),
-                          ("T", f"{_w(nt, 'energy')} {sym(nt, 'dT')}(φ)",
+                          ("T", f"{nt.word('dynamics.delta_T_graph')} {nt.sym('dynamics.dT')}(φ)",
                            (x_L + 10.0, y0_T - s_T.to_mm(max(float(dT_fine.max()), 0.0)) - 12.0)),
-                          ("J", f"{_w(nt, 'inertia_turned')} {sym(nt, 'J_e')}(φ)", (x_a + 10.0, y_Jt - 9.0)),
-                          ("D", _w(nt, "wittenbauer"), (x_a + 12.0, d_top - 6.0))):
+                          ("J", f"{nt.word('wittenbauer.inertia_turned')} {nt.sym('dynamics.J_e')}(φ)", (x_a + 10.0, y_Jt - 9.0)),
+                          ("D", nt.word("wittenbauer.wittenbauer"), (x_a + 12.0, d_top - 6.0))):
         lab = make_label(at, text, size_mm=TEXT_MM + 0.8, bold=True)
         found = False
         for lines in (True, False):    # free of everything; else of texts and boxes (thin lines may cross it)
@@ -726,7 +681,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                 break
         occ.add_box(bold_bbox(lab))
         heads.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.8, bold=True, name=f"heading-{key}"))
-    table_head = Text((table.at[0], table.at[1] - 2.0), _w(nt, "result"), size_mm=TEXT_MM + 0.8, bold=True,
+    table_head = Text((table.at[0], table.at[1] - 2.0), nt.word("wittenbauer.result"), size_mm=TEXT_MM + 0.8, bold=True,
                       name="heading-result")
     scales = (s_phi, s_M, s_T, s_J)
     elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
@@ -740,10 +695,10 @@ def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:
     n = get_notation(nt).number
     mm = get_notation(nt).unit("mm")
     k = dm.constant_key
-    return ((_w(nt, k), f"{sym(nt, k)} = {value_text(nt, dm.constant, 'N·m')}"),
-            (_w(nt, "scale_M"), f"{sym(nt, 'mu_M')} = {n(s_M.per_mm)} {unit(nt, 'N·m')}/{mm}"),
-            (_w(nt, "scale_phi"), f"{sym(nt, 'mu_phi')} = {n(s_phi.per_mm)} {unit(nt, 'rad')}/{mm}"))
+    return ((nt.word(f"wittenbauer.{k}"), f"{nt.sym(k)} = {value_text(nt, dm.constant, 'N·m')}"),
+            (nt.word("wittenbauer.scale_M"), f"{nt.sym('mu_M')} = {n(s_M.per_mm)} {nt.unit('N·m')}/{mm}"),
+            (nt.word("wittenbauer.scale_phi"), f"{nt.sym('mu_phi')} = {n(s_phi.per_mm)} {nt.unit('rad')}/{mm}"))
 
 
 __all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
-           "ray_span", "result_rows", "WORDS"]
+           "ray_span", "result_rows"]
