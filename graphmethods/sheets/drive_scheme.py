@@ -22,7 +22,7 @@ import numpy as np
 from graphmethods.scene import Line, Page, Polyline, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Table
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.dynamics import SheetFrame
+from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM
 
 THICK = Style(width_mm=0.5)

@@ -47,7 +47,6 @@ from graphmethods.scene import (
     Point,
     Polyline,
     Scale,
-    ScaleCaptions,
     Scene,
     Table,
     Text,
@@ -59,15 +58,8 @@ from graphmethods.scene import (
 from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
-from graphmethods.sheets.layout import (
-    TEXT_MM,
-    TITLE_MM,
-    Occupancy,
-    Sheet,
-    given_angle_scale,
-    given_scale,
-    problem_title,
-)
+from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, given_angle_scale, given_scale, problem_title
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
@@ -106,53 +98,6 @@ def value_text(nt, value: float, u: str, *, sig: int = 4) -> str:
 
 
 # ----------------------------------------------------------------------------- layout helpers
-
-class FastOccupancy(Occupancy):
-    """:class:`~graphmethods.sheets.layout.Occupancy` whose leaders search a finer ring (every 15°, out to 70 mm).
-
-    (The free-space test itself is :meth:`Occupancy.is_free`, vectorised over numpy arrays.)
-
-    >>> occ = FastOccupancy()
-    >>> occ.add_line(((0, 10), (100, 10)))
-    >>> occ.is_free((40, 8, 60, 12)), occ.is_free((40, 12, 60, 14))
-    (False, True)
-    """
-
-    def place_label_with_leader(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
-                                size_mm: float = 3.5, gap_mm: float = 1.2, within=None):
-        """As :meth:`Occupancy.place_label_with_leader`, searching a finer ring (every 15°, out to 70 mm),
-        first with leaders that cross no label, then with any leader, before giving up."""
-        from graphmethods.scene.elements import place_label
-
-        lab = self.first_free(at, text, directions, (gap_mm, gap_mm + 2.0), size_mm, within)
-        if lab is not None:
-            self.add_label(lab)
-            return lab, None
-        x, y = at
-        first = {"e": 0, "ne": 45, "n": 90, "nw": 135, "w": 180, "sw": 225, "s": 270, "se": 315}[directions[0]]
-        angles = sorted(range(0, 360, 15), key=lambda a: (min(abs(a - first), 360 - abs(a - first)), a))
-        for strict in (True, False):
-            for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0, 60.0, 70.0):
-                for ang in angles:
-                    a = math.radians(ang)
-                    c, s = math.cos(a), math.sin(a)
-                    end = (x + r * c, y - r * s)
-                    d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
-                    lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-                    start = (x + 1.5 * c, y - 1.5 * s)
-                    if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
-                        self.add_label(lab)
-                        self.add_line((start, end))
-                        return lab, (end, start)
-        lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
-        self.add_label(lab)
-        return lab, None
-
-    def register(self, *elements) -> None:
-        """Register everything some elements draw."""
-        for e in elements:
-            self.add_primitives(e.primitives())
-
 
 @dataclass(frozen=True)
 class DownAxis(Axis):
@@ -234,42 +179,6 @@ def position_labels(m: int, spacing_mm: float, *, min_gap_mm: float = 5.0) -> tu
     """
     step = max(1, math.ceil(min_gap_mm / max(spacing_mm, 1e-9)))
     return tuple(str(k) if k % step == 0 or k == m else "" for k in range(m + 1))
-
-
-class SheetFrame(Sheet):
-    """The shared :class:`~graphmethods.sheets.layout.Sheet`, with a faster occupancy (these sheets place many
-    labels), a title box as wide as the title, and captions moved clear of lines."""
-
-    occ: FastOccupancy
-
-    def __init__(self, *, nt, page, title: str, problem: str, title_block: bool, default_page):
-        super().__init__(nt=get_notation(nt), page=page, title=title, problem=problem, title_block=title_block,
-                         default_page=default_page)
-        x0, y0, _, _ = self.box
-        self.occ = FastOccupancy()
-        self.occ.add_box((x0, y0, x0 + markup.text_width_mm(title, TITLE_MM) * 1.08, y0 + TITLE_MM + 1.5))
-
-    def captions(self, scales, legend: str = "", *, reserve: bool = False) -> list:
-        """The scale captions on the bottom line (left), a legend at its right end; both kept off lines
-        (always registered: ``reserve`` is accepted as the base class takes it)."""
-        x0, _, x1, _ = self.box
-        y = self.caption_y
-        els: list[Element] = []
-        cap = ScaleCaptions((x0, y), tuple(scales), notation=self.nt, size_mm=TEXT_MM, name="scale-captions")
-        for at, anchor in (((x0, y), "start"), ((x1, y), "end"), (((x0 + x1) / 2, y), "middle")):
-            trial = replace(cap, at=at, anchor=anchor)
-            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives() if isinstance(p, Label)):
-                cap = trial
-                break
-        self.occ.register(cap)
-        els.append(cap)
-        if legend:
-            lab = make_label((x1, y), legend, size_mm=TEXT_MM, anchor="end")
-            if not self.occ.is_free(label_bbox(lab)):
-                lab = make_label((x1, y - TEXT_MM * 1.5), legend, size_mm=TEXT_MM, anchor="end")
-            self.occ.add_label(lab)
-            els.append(Text((lab.x, lab.y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
-        return els
 
 
 def as_study(obj, positions: int = 12):

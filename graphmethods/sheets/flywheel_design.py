@@ -19,7 +19,7 @@ from typing import Any
 from graphmethods.scene import Line, Page, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Dimension, Region, Table
 from graphmethods.scene.primitives import THIN, Style
-from graphmethods.sheets.dynamics import SheetFrame
+from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 
 AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))

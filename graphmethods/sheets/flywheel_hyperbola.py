@@ -19,7 +19,7 @@ from graphmethods.dynamics.permissible_delta import delta_range, machine_row
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Line, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.primitives import DASHED, MAIN, Style
-from graphmethods.sheets.dynamics import SheetFrame
+from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 
 BAND = Style(width_mm=1.2)

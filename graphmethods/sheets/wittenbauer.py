@@ -63,7 +63,6 @@ from graphmethods.sheets.dynamics import (
     TEXT_MM,
     TWO_PI,
     CurveSpec,
-    SheetFrame,
     as_study,
     clear_ticks,
     delta_T_curve,
@@ -77,6 +76,7 @@ from graphmethods.sheets.dynamics import (
     turned_inertia_elements,
     value_text,
 )
+from graphmethods.sheets.frame import SheetFrame
 
 RAY = Style(width_mm=0.35)
 TABLE_MM = 3.0
