@@ -506,41 +506,53 @@ def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts:
                         what="the J_e graph", dots=(phi_k, J_k), legend=legend, zero=True)
 
 
+def axis_break(at: tuple[float, float], name: str) -> Polyline:
+    """The mark of a suppressed zero on a horizontal axis: a short zigzag across it at ``at`` (mm).
+
+    >>> axis_break((10.0, 50.0), "break").points[:2]
+    ((8.5, 50.0), (9.25, 48.5))
+    """
+    x, y = at
+    return Polyline(((x - 1.5, y), (x - 0.75, y - 1.5), (x + 0.75, y + 1.5), (x + 1.5, y)), style=THIN, name=name)
+
+
 def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np.ndarray, J: np.ndarray,
                             phi_k: np.ndarray, J_k: np.ndarray, nt, occ, J_to: float, prefix: str = "J-",
-                            within=None) -> list:
+                            within=None, J_from: float = 0.0) -> list:
     """The J_e(φ) graph turned 90° clockwise: J_e axis to the right from ``origin``, φ axis down from it.
 
-    Page point of (φ, J) is ``(origin_x + J/μ_J, origin_y + φ/μ_φ)``. Returns the axes, the
+    Page point of (φ, J) is ``(origin_x + (J − J_from)/μ_J, origin_y + φ/μ_φ)``: the J_e axis starts
+    at ``J_from`` (0, or a suppressed zero marked by :func:`axis_break`). Returns the axes, the
     curve and the dots ``{prefix}dot-k`` at positions 0…m−1.
     """
     ox, oy = origin
     period = float(phi_k[-1] - phi_k[0])
-    ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=12.0) if 0.0 <= t <= J_to)
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J, label=nt.quantity(nt.sym("dynamics.J_e"),
-                "kg·m²"), size_mm=SMALL_MM, decimal=get_notation(nt).decimal, labels_side="above",
-                skip_zero_label=True, name=f"{prefix}axis-J")
+    ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=12.0) if J_from <= t <= J_to)
+    ax_J = Axis((ox - s_J.to_mm(J_from), oy), s_J, "x", min_value=J_from, max_value=J_to, ticks=ticks_J,
+                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM,
+                decimal=get_notation(nt).decimal, labels_side="above", skip_zero_label=True, name=f"{prefix}axis-J")
     spacing = s_phi.to_mm(period / m)
     ax_phi = DownAxis(origin, s_phi, "y", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
                       tick_labels=position_labels(m, spacing), label=nt.sym("phi"), size_mm=SMALL_MM,
                       name=f"{prefix}axis-phi")
-    pts = tuple(zip((ox + s_J.to_mm(J)).tolist(), (oy + s_phi.to_mm(phi - phi_k[0])).tolist()))
+    pts = tuple(zip((ox + s_J.to_mm(J - J_from)).tolist(), (oy + s_phi.to_mm(phi - phi_k[0])).tolist()))
     curve = Polyline(pts, style=MAIN, name=f"{prefix}curve-J_e")
-    occ.register(curve)
+    breaks = [axis_break((ox + 5.0, oy), f"{prefix}axis-J-break")] if J_from > 0.0 else []
+    occ.register(curve, *breaks)
     occ.add_line((ax_J.start, ax_J.tip))
     occ.add_line((ax_phi.start, ax_phi.tip))
     ax_J, ax_phi = clear_ticks(ax_J, occ), clear_ticks(ax_phi, occ)
     occ.register(ax_J, ax_phi)
     dots = []
     for k in range(m):
-        p = (ox + s_J.to_mm(float(J_k[k])), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
+        p = (ox + s_J.to_mm(float(J_k[k]) - J_from), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
         dots.append(Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}"))
         occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
     name_lab = occ.place_label(pts[len(pts) // 4], nt.sym("dynamics.J_e"), ("e", "ne", "se", "w"), size_mm=TEXT_MM + 0.4,
                                gap_mm=2.0, within=within)
     label = Text((name_lab.x, name_lab.y), nt.sym("dynamics.J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
                  name=f"{prefix}name-J_e")
-    return [ax_J, ax_phi, curve] + dots + [label]
+    return [ax_J, *breaks, ax_phi, curve] + dots + [label]
 
 
 def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, title, title_block, name):
@@ -1035,6 +1047,6 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
 
 __all__ = [
     "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
-    "phi_graph_elements", "turned_inertia_elements", "DownAxis", "FastOccupancy", "SheetFrame", "CurveSpec",
+    "phi_graph_elements", "turned_inertia_elements", "axis_break", "DownAxis", "FastOccupancy", "SheetFrame", "CurveSpec",
     "MarkSpec", "LeverLoad", "lever_load", "sym", "unit", "quantity", "value_text",
 ]

@@ -64,6 +64,7 @@ from graphmethods.sheets.dynamics import (
     TWO_PI,
     CurveSpec,
     as_study,
+    axis_break,
     clear_ticks,
     delta_T_curve,
     drawn_moments,
@@ -73,6 +74,7 @@ from graphmethods.sheets.dynamics import (
     inertia_curve,
     phi_graph_elements,
     problem_text,
+    suppressed_base,
     turned_inertia_elements,
     value_text,
 )
@@ -180,6 +182,32 @@ def ray_span(*, intercept_mm: float, tan: float, origin, clip, avoid=(), O1_x: f
     return lo, hi
 
 
+def offset_origin(res: WittenbauerResult, J_0: float) -> WittenbauerResult:
+    """The construction with its ordinate axis at J_e = J_0 (kg·m²) instead of 0: a suppressed zero.
+
+    The points move J_0/μ_J mm to the left; the rays keep their slopes (tan ψ of the true J_e);
+    k, l and kl become the intercepts on the new ordinate axis, kl growing by δ·ω_m²·J_0/μ_T (the
+    slopes on paper differ by δω_m²μ_J/μ_T for either form of the tangents), so that
+    J_F = μ_T·kl/(ω_m²[δ]) − J_0. O1 moves with the points; J_F and every angle stay.
+
+    >>> import numpy as np
+    >>> from graphmethods.dynamics.wittenbauer import wittenbauer
+    >>> phi = np.linspace(0, 2 * np.pi, 13)
+    >>> res = wittenbauer(J_e=2 + 0.4 * np.cos(phi + 0.7), delta_T=300 * np.sin(phi), omega_m=20.0, delta=0.05,
+    ...                   mu_J=0.01, mu_T=5.0)
+    >>> moved = offset_origin(res, 1.5)
+    >>> float(round(moved.x_mm.min() - res.x_mm.min(), 9)), moved.tan_psi_max == res.tan_psi_max
+    (-150.0, True)
+    >>> round(moved.mu_T * moved.kl_mm / (moved.omega_m**2 * moved.delta) - 1.5 - res.J_F, 9)
+    0.0
+    """
+    dx = J_0 / res.mu_J
+    return replace(res, x_mm=np.asarray(res.x_mm) - dx, k_mm=res.k_mm + res.tan_psi_max * dx,
+                   l_mm=res.l_mm + res.tan_psi_min * dx,
+                   kl_mm=res.kl_mm + res.omega_m**2 * res.delta * J_0 / res.mu_T,
+                   O1_mm=(res.O1_mm[0] - dx, res.O1_mm[1]))
+
+
 def _arc(centre, radius: float, a0: float, a1: float, n: int = 24) -> tuple:
     """Points of a circular arc on paper from angle a0 to a1 (rad, counterclockwise as seen)."""
     t = np.linspace(a0, a1, n)
@@ -196,8 +224,9 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
 
 def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(), J_to: float, T_hi: float,
                      T_lo: float, within=None, prefix: str = "", y_top_mm: float | None = None,
-                     label_step: int | None = None, register_only=(), own_frame: bool = False) -> list:
-    """The energy–mass diagram at ``origin`` (page point of J_e = 0, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
+                     label_step: int | None = None, register_only=(), own_frame: bool = False,
+                     J_from: float = 0.0) -> list:
+    """The energy–mass diagram at ``origin`` (page point of J_e = J_from, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
 
     Parameters
     ----------
@@ -215,6 +244,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         Clip the rays to the diagram's own frame instead of ``clip``: from the ordinate axis
         (or just as far left of it as the marks of ψ need) to just past the curve, between the
         levels T_lo and T_hi (10 mm margin). O1 is drawn only when it lies in that frame.
+    J_from : float
+        Where the abscissa starts (kg·m²): 0, or a suppressed zero near J_e,min (marked by a zigzag);
+        ``res`` is then the construction with its ordinate axis there (:func:`offset_origin`).
 
     Returns
     -------
@@ -241,8 +273,8 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
                 label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True,
                 name=f"{prefix}axis-T")
     below = float(np.mean(Y[:-1] < 0)) > 0.5
-    ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=14.0) if 0.0 <= t <= J_to)
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J,
+    ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=14.0) if J_from <= t <= J_to)
+    ax_J = Axis((ox - s_J.to_mm(J_from), oy), s_J, "x", min_value=J_from, max_value=J_to, ticks=ticks_J,
                 label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{prefix}axis-J")
     curve = Polyline(tuple(P(x, y) for x, y in zip(X[:-1], Y[:-1])), style=MAIN, closed=True,
@@ -261,7 +293,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     R = R if right else off + 10.0
     if own_frame:        # the diagram's own frame: the rays never run across the rest of the sheet
         clip = (ox if right else ox - (R + 6.0), oy - s_T.to_mm(T_hi) - 10.0,
-                ox + max(float(X.max()), s_J.to_mm(J_to)) + 10.0, oy - s_T.to_mm(T_lo) + 10.0)
+                ox + max(float(X.max()), s_J.to_mm(J_to - J_from)) + 10.0, oy - s_T.to_mm(T_lo) + 10.0)
     # the rays, from the frame (or O1) to just past the curve
     O1x = float(res.O1_mm[0])
     rays = []
@@ -276,6 +308,8 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
                             name=f"{prefix}psi-{key}-reference"))
         arc = _arc(pt, R, 0.0, psi) if right else _arc(pt, R, math.pi, math.pi + psi)
         psi_els.append(Polyline(arc, style=THIN, name=f"{prefix}psi-{key}-arc"))
+    if J_from > 0.0:
+        psi_els.append(axis_break((ox + 5.0, oy), f"{prefix}axis-J-break"))
     occ.register(curve, *rays, dim, *psi_els, *register_only)
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
@@ -359,10 +393,12 @@ def O1_on_sheet(res: WittenbauerResult, origin, clip) -> bool:
     return clip[0] <= x <= clip[2] and clip[1] <= y <= clip[3]
 
 
-def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False) -> tuple:
+def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False, J_0: float = 0.0) -> tuple:
     """The result table: (quantity, value, compact) rows in the profile's words and symbols.
 
-    ``compact`` is the row as one cell (symbol = value), for the compact A4 figure.
+    ``compact`` is the row as one cell (symbol = value), for the compact A4 figure. With the
+    ordinate axis at J_e = ``J_0`` > 0 (``res`` from :func:`offset_origin`), a row gives J_0 and
+    J_F = μ_T·kl/(ω_m²[δ]) − J_0.
     """
     nt = get_notation(nt)
     n = nt.number
@@ -380,8 +416,14 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False)
     tg_max = f"{tg} {nt.sym('dynamics.psi_max')} = {n(res.tan_psi_max)}, {nt.sym('dynamics.psi_max')} = {n(math.degrees(res.psi_max))}°"
     tg_min = f"{tg} {nt.sym('dynamics.psi_min')} = {n(res.tan_psi_min)}, {nt.sym('dynamics.psi_min')} = {n(math.degrees(res.psi_min))}°"
     J_F = f"{nt.sym('dynamics.J_F')} = {nt.sym('mu_T')}·kl/({nt.sym('dynamics.omega_m')}²{nt.sym('dynamics.delta')})"
-    J_F_num = (f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)}) = "
-               f"{value_text(nt, res.J_F, 'kg·m²')}")
+    J_F_num = f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)})"
+    origin_rows = []
+    if J_0 > 0.0:
+        J_F += f" − {nt.sym('dynamics.J_0')}"
+        J_F_num += f" − {n(J_0)}"
+        origin_rows = [(nt.word("wittenbauer.origin"), f"{nt.sym('dynamics.J_0')} = {value_text(nt, J_0, 'kg·m²')}",
+                        None)]
+    J_F_num += f" = {value_text(nt, res.J_F, 'kg·m²')}"
     rows = [
         (nt.word("wittenbauer.delta"), f"{nt.sym('dynamics.delta')} = {n(res.delta)}", None),
         (nt.word("wittenbauer.omega_m"), f"{nt.sym('dynamics.omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}", None),
@@ -391,6 +433,7 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False)
         (nt.word("wittenbauer.tan_max"), tg_max, None),
         (nt.word("wittenbauer.tan_min"), tg_min, None),
         (nt.word("wittenbauer.tangents"), tan_form, f"{nt.word('wittenbauer.tangents')}: {tan_form}"),
+        *origin_rows,
         (nt.word("wittenbauer.k"), f"k = {n(res.k_mm)} {mm}", None),
         (nt.word("wittenbauer.l"), f"l = {n(res.l_mm)} {mm}", None),
         (nt.word("wittenbauer.kl"), f"kl = {n(res.kl_mm)} {mm}", None),
@@ -607,17 +650,21 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     y_M0 = y_Jt + L_phi - 10.0 - s_M.to_mm(-M_lo)             # the M graph's φ axis (an engine's M_d dips below)
     x_L = x0 + 22.0
     left_end = x_L + L_phi + 12.0
-    probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi)))
+    J_lo = float(min(J_k.min(), J_fine.min()))
+    probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi),
+                                       J_0=1.0 if _suppressed_zero(J_lo, J_to) else 0.0))
     table_w = _table(probe_rows, (0, 0)).width_mm
     J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
     room_J = x1 - table_w - 12.0 - J_label_w - (left_end + 40.0)
-    # μ_J fits the diagram's content (0…J_e max) to the width beside the graphs; the rays are clipped
-    # to the diagram's own frame, so flat rays cost nothing (they no longer run across the sheet)
-    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, room_J, what="the J_e axis")
-    res = data.result(s_J.per_mm, s_T.per_mm)
+    # μ_J fits the diagram's content to the width beside the graphs: 0…J_e max, or, for a J_e that varies
+    # little about a large mean, J_0…J_e max from a round J_0 below J_e min (a suppressed zero); the rays
+    # keep their true slopes and are clipped to the diagram's own frame (they never run across the sheet)
+    s_J, J_0 = _inertia_scale(mu_J, nt, J_lo, J_to, room_J)
+    res = offset_origin(data.result(s_J.per_mm, s_T.per_mm), J_0) if J_0 > 0.0 else data.result(s_J.per_mm,
+                                                                                                  s_T.per_mm)
     # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
     x_a_min = left_end + 40.0
-    x_a_max = x1 - table_w - 12.0 - J_label_w - s_J.to_mm(J_to)
+    x_a_max = x1 - table_w - 12.0 - J_label_w - s_J.to_mm(J_to - J_0)
     x_a = max(x_a_min, (x_a_min + x_a_max) / 2)
     occ = sheet.occ
     page_probe = sheet.probe
@@ -630,7 +677,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     proj = []
     f_T = lambda k: (x_L + s_phi.to_mm(float(phi_k[k] - phi_k[0])), y0_T - s_T.to_mm(float(dT_k[k])))  # noqa: E731
     f_D = lambda k: (x_a + float(res.x_mm[k]), y0_T - float(res.y_mm[k]))                             # noqa: E731
-    f_J = lambda k: (x_a + s_J.to_mm(float(J_k[k])), y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))  # noqa: E731
+    f_J = lambda k: (x_a + s_J.to_mm(float(J_k[k]) - J_0), y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))  # noqa: E731
     for k in range(0, m, max(1, math.ceil(m / 36))):        # every position (every n-th when m is large)
         proj.append(Line(f_T(k), f_D(k), style=PROJECTION, name=f"projection-T-{k}"))
         proj.append(Line(f_J(k), f_D(k), style=PROJECTION, name=f"projection-J-{k}"))
@@ -638,9 +685,9 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     # the diagram first: its rays and labels take precedence
     diag = diagram_elements(res, origin=(x_a, y0_T), nt=nt, occ=occ, clip=clip, avoid=avoid, J_to=J_to, T_hi=T_hi,
                             T_lo=T_lo, within=sheet.box, prefix="D-", y_top_mm=s_T.to_mm(T_hi) + 4.0,
-                            own_frame=True)
+                            own_frame=True, J_from=J_0)
     turned = turned_inertia_elements(origin=(x_a, y_Jt), s_J=s_J, s_phi=s_phi, m=m, phi=phi, J=J_fine, phi_k=phi_k,
-                                     J_k=J_k, nt=nt, occ=occ, J_to=J_to, prefix="J-", within=sheet.box)
+                                     J_k=J_k, nt=nt, occ=occ, J_to=J_to, prefix="J-", within=sheet.box, J_from=J_0)
     within_left = (x0, sheet.top, x_a - 10.0, sheet.caption_y - 6.0)
     M_els = phi_graph_elements(origin=(x_L, y_M0), s_phi=s_phi, s_Y=s_M, m=m, phi_k=phi_k,
                                curves=list(dm.curves),
@@ -653,7 +700,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                                axis_level=0.0, y_label=nt.quantity(nt.sym("dynamics.dT"), "J"), dots=(phi_k, dT_k),
                                prefix="T-", within=within_left)
     O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
-    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, dm, s_M, s_phi), on_sheet=O1_drawn))
+    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, dm, s_M, s_phi), on_sheet=O1_drawn, J_0=J_0))
     w = _table(rows, (0, 0)).width_mm
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
     table = _place_table(occ, rows, cands)
@@ -687,8 +734,32 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
                 + sheet.captions(scales))
     notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
-        f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm",)
+        f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm" + (f" and J_0 = {J_0:g} kg·m²" if J_0 else ""),)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
+
+
+def _suppressed_zero(J_lo: float, J_hi: float) -> bool:
+    """Does the J axis start near J_e,min? When J_e varies by less than 35 % of its largest value."""
+    return J_lo > 0.0 and J_hi - J_lo < 0.35 * J_hi
+
+
+def _inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[Scale, float]:
+    """μ_J of the A1 sheet's diagram and where its J axis starts (0, or a suppressed zero J_0 > 0).
+
+    A J_e that varies by less than 35 % of its largest value (the rule of the φ graphs) gets its
+    axis from a round value below J_e,min, so the curve fills the width ``room_mm``; 20 mm and
+    2 % of it are kept for the step down to that value.
+
+    >>> from graphmethods.scene import notation
+    >>> s, J_0 = _inertia_scale(None, notation("en"), 0.0542, 0.0682, 200.0)
+    >>> s.per_mm, J_0, s.to_mm(0.0682 - J_0) <= 200.0
+    (0.0001, 0.053, True)
+    """
+    symbol, unit = nt.sym("dynamics.mu_J"), nt.unit("kg·m²")
+    if not _suppressed_zero(J_lo, J_hi):
+        return given_scale(mu_J, symbol, unit, J_hi, room_mm, what="the J_e axis"), 0.0
+    s_J = given_scale(mu_J, symbol, unit, J_hi - J_lo, 0.98 * room_mm - 20.0, what="the J_e axis")
+    return s_J, suppressed_base(J_lo, J_hi, s_J, zero=False)
 
 
 def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:

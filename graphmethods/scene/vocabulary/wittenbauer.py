@@ -27,6 +27,7 @@ WORDS = {
     "scale_phi":        ("scale of φ", "масштаб φ", "φ比例尺"),
     "tan_max":          ("upper ray", "верхний луч", "上射线"),
     "tan_min":          ("lower ray", "нижний луч", "下射线"),
+    "origin":           ("ordinate axis at", "ось ординат при", "纵轴位于"),
     "k":                ("intercept k", "отрезок k", "截距k"),
     "l":                ("intercept l", "отрезок l", "截距l"),
     "kl":               ("segment kl", "отрезок kl", "线段kl"),
