@@ -83,7 +83,7 @@ from graphmethods.sheets.dynamics import (
     value_text,
 )
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
-from graphmethods.sheets.layout import Occupancy
+from graphmethods.sheets.layout import Box, Occupancy
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -362,7 +362,7 @@ class _DiagramPlace:
                 oy - self.s_T.to_mm(self.T_lo) + lay.frame_mm)
 
 
-def _diagram_axes(d: _DiagramPlace, occ: Occupancy, nt: Notation) -> tuple[Axis, Axis]:
+def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[Axis, Axis]:
     """The ΔT and J_e axes through the origin (J_e from ``J_from``), their tick labels kept off what is drawn."""
     ox, oy = d.origin
     s_T, s_J, T_lo, T_hi = d.s_T, d.s_J, d.T_lo, d.T_hi
@@ -407,7 +407,7 @@ def _psi_marks(res: WittenbauerResult, d: _DiagramPlace) -> list[Element]:
     return els
 
 
-def _diagram_points(res: WittenbauerResult, d: _DiagramPlace, occ: Occupancy, within: object) -> list[Element]:
+def _diagram_points(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, within: Box | None) -> list[Element]:
     """The vertices, the tangencies (open circles), the points k and l and their names."""
     els: list[Element] = []
     for i in range(res.m):
@@ -438,7 +438,7 @@ def _with_leader(els: list[Element], lab: Label, leader: tuple | None, text: str
 
 
 def _psi_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, nt: Notation,
-                within: object) -> list[Element]:
+                within: Box | None) -> list[Element]:
     """ψ_max and ψ_min beside their arcs (with a leader when the arc's middle is crowded)."""
     els: list[Element] = []
     for key, pt, psi in (("max", d.k_pt, res.psi_max), ("min", d.l_pt, res.psi_min)):
@@ -452,7 +452,7 @@ def _psi_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, nt
 
 
 def _kl_label(res: WittenbauerResult, d: _DiagramPlace, dim: Dimension, occ: FastOccupancy, nt: Notation,
-              within: object) -> list[Element]:
+              within: Box | None) -> list[Element]:
     """kl written beside its dimension line, where it covers nothing."""
     els: list[Element] = []
     kl_text = f"kl = {nt.number(res.kl_mm)} {nt.unit('mm')}"
@@ -473,7 +473,7 @@ def _kl_label(res: WittenbauerResult, d: _DiagramPlace, dim: Dimension, occ: Fas
     return els
 
 
-def _position_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, nt: Notation, within: object,
+def _position_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, nt: Notation, within: Box | None,
                      label_step: int | None) -> list[Element]:
     """The position numbers, away from the curve's middle, then ω_max and ω_min at their first tangencies."""
     els: list[Element] = []
