@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import TypeVar
 
@@ -59,7 +60,7 @@ from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
-from graphmethods.sheets.layout import TEXT_MM, Occupancy, given_angle_scale, given_scale, problem_title
+from graphmethods.sheets.layout import TEXT_MM, Box, Occupancy, given_angle_scale, given_scale, problem_title
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
@@ -349,7 +350,26 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
             b = label_bbox(name[0])
             occ.add_box((b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5))
     els: list[Element] = [ax_phi, ax_Y, *lvl, *lines]
-    # position numbers under (or over) the φ axis ticks, on the other side where a curve runs through
+    els += _position_numbers(ax_phi, phi_k, m, spacing, occ, side, prefix)
+    if dots is not None:
+        pts = f.pts(*dots)
+        els += [Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}") for k, p in enumerate(pts)]
+        for p in pts:
+            occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
+    for value, text, key in levels:
+        y = f.pt(0.0, value)[1]
+        lab = occ.place_label((x_end + 2.0, y), text, ("ne", "e", "se", "n", "s"), size_mm=TEXT_MM, gap_mm=1.0,
+                              within=within)
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{key}"))
+    els += _mark_elements(marks, f, occ, prefix, within)
+    els += _curve_names(curves, lines, occ, axis_level, prefix, within)
+    return els
+
+
+def _position_numbers(ax_phi: Axis, phi_k: np.ndarray, m: int, spacing: float, occ: FastOccupancy, side: str,
+                      prefix: str) -> list[Element]:
+    """Position numbers under (or over) the φ axis ticks, on the other side where a curve runs through."""
+    els: list[Element] = []
     order = ("n", "s") if side == "above" else ("s", "n")
     for k, text in enumerate(position_labels(m, spacing)):
         if not text:
@@ -361,16 +381,13 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
         occ.add_label(lab)
         els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, valign="baseline",
                         name=f"{prefix}pos-{k}"))
-    if dots is not None:
-        pts = f.pts(*dots)
-        els += [Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}") for k, p in enumerate(pts)]
-        for p in pts:
-            occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
-    for value, text, key in levels:
-        y = f.pt(0.0, value)[1]
-        lab = occ.place_label((x_end + 2.0, y), text, ("ne", "e", "se", "n", "s"), size_mm=TEXT_MM, gap_mm=1.0,
-                              within=within)
-        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{key}"))
+    return els
+
+
+def _mark_elements(marks: Sequence[MarkSpec], f: Frame, occ: FastOccupancy, prefix: str,
+                   within: Box | None) -> list[Element]:
+    """Extremes marked with an open circle and their text (with a leader when crowded)."""
+    els: list[Element] = []
     for mk in marks:
         at = f.pt(mk.phi, mk.value)
         els.append(Point(at, radius_mm=1.1, filled=False, name=f"{prefix}mark-{mk.key}"))
@@ -381,13 +398,21 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
         els.append(Text((lab.x, lab.y), mk.text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{mk.key}"))
         if leader is not None:
             els.append(Line(leader[0], leader[1], style=THIN, name=f"{prefix}leader-{mk.key}"))
+    return els
+
+
+def _curve_names(curves: Sequence[CurveSpec], lines: Sequence[Polyline], occ: FastOccupancy, axis_level: float,
+                 prefix: str, within: Box | None) -> list[Element]:
+    """Each named curve's name at its end, else along it, else with a leader (its peak first when it ends on the axis)."""
+    els: list[Element] = []
     for c, line in zip(curves, lines):
         if not c.label:
             continue
         size = TEXT_MM + 0.4
         n = len(line.points)
         spots: list[tuple[tuple[float, float], tuple[str, ...]]] = [(line.end, ("e", "ne", "se"))] + [
-            (line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw")) for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
+            (line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw"))
+            for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
         far = int(np.argmax(np.abs(np.asarray(c.values, dtype=float) - axis_level)))
         if abs(float(c.values[-1]) - axis_level) < 0.05 * abs(float(c.values[far]) - axis_level):
             spots.insert(0, (line.points[far], ("ne", "nw", "n", "e", "w")))   # it ends on the axis: name its peak
@@ -738,7 +763,8 @@ def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, 
     return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
                         y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
-                        y_symbol=nt.sym("dynamics.omega"), y_unit="rad/s", scale_symbol=nt.sym("dynamics.mu_omega"), mu_Y=mu_omega,
+                        y_symbol=nt.sym("dynamics.omega"), y_unit="rad/s", scale_symbol=nt.sym("dynamics.mu_omega"),
+                        mu_Y=mu_omega,
                         mu_phi=mu_phi, what="the ω graph", marks=marks, levels=levels, legend=legend, zero=None)
 
 
@@ -1028,7 +1054,9 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
         (nt.word("dynamics.plan_turned"), f"{nt.sym('dynamics.omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
         (nt.word("dynamics.force"), F_text),
         (nt.word("dynamics.arm"), f"{nt.sym('dynamics.h')} = {nb(h_mm)} {nt.unit('mm')}"),
-        (nt.word("dynamics.by_lever"), f"{nt.sym('M_r')} = {nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/{nt.sym('dynamics.omega_1')}"),
+        (nt.word("dynamics.by_lever"),
+         f"{nt.sym('M_r')} = {nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/"
+         f"{nt.sym('dynamics.omega_1')}"),
         ("", f"= {nb(F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(omega_1)}"),
         ("", f"= {value_text(nt, M_lever, 'N·m')}"),
         (nt.word("dynamics.by_power"), f"{nt.sym('M_r')} = {value_text(nt, ld.M_r, 'N·m')}"),
