@@ -363,7 +363,7 @@ def test_ray_span_clips_to_the_frame_and_keeps_off_the_title_block():
     assert lo == pytest.approx(-50.0)                                           # starts at O1 on the sheet
     lo, _ = ray_span(intercept_mm=-20.0, tan=0.5, origin=origin, clip=clip, O1_x=-1e6, x_from=60.0, x_to=80.0,
                      avoid=((0.0, 100.0, 300.0, 200.0),))
-    assert lo == pytest.approx(-60.0)                                           # stops at the title block's row (y = 100)
+    assert lo == pytest.approx(-60.0)               # stops at the title block's row (y = 100)
 
 
 # ----------------------------------------------------------------------------- the command line

@@ -404,7 +404,8 @@ def _mark_elements(marks: Sequence[MarkSpec], f: Frame, occ: FastOccupancy, pref
 
 def _curve_names(curves: Sequence[CurveSpec], lines: Sequence[Polyline], occ: FastOccupancy, axis_level: float,
                  prefix: str, within: Box | None) -> list[Element]:
-    """Each named curve's name at its end, else along it, else with a leader (its peak first when it ends on the axis)."""
+    """Each named curve's name at its end, else along it, else with a leader (its peak first when it ends
+    on the axis)."""
     els: list[Element] = []
     for c, line in zip(curves, lines):
         if not c.label:
@@ -574,7 +575,8 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
         p = (ox + s_J.to_mm(float(J_k[k]) - J_from), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
         dots.append(Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}"))
         occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
-    name_lab = occ.place_label(pts[len(pts) // 4], nt.sym("dynamics.J_e"), ("e", "ne", "se", "w"), size_mm=TEXT_MM + 0.4,
+    name_lab = occ.place_label(pts[len(pts) // 4], nt.sym("dynamics.J_e"), ("e", "ne", "se", "w"),
+                               size_mm=TEXT_MM + 0.4,
                                gap_mm=2.0, within=within)
     label = Text((name_lab.x, name_lab.y), nt.sym("dynamics.J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
                  name=f"{prefix}name-J_e")
@@ -592,7 +594,8 @@ def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, 
     ox, oy = x0 + 16.0, sheet.top + 16.0
     J_to = float(max(J.max(), J_k.max()))
     label_w = markup.text_width_mm(nt.quantity(J_sym, "kg·m²"), SMALL_MM + 0.5)
-    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, x1 - ox - 12.0 - label_w, what="the J_e axis")
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, x1 - ox - 12.0 - label_w,
+                      what="the J_e axis")
     s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI, sheet.caption_y - 22.0 - oy)
     els = turned_inertia_elements(origin=(ox, oy), s_J=s_J, s_phi=s_phi, m=study.m, phi=phi, J=J, phi_k=phi_k,
                                   J_k=J_k, nt=nt, occ=sheet.occ, J_to=J_to, prefix="", within=sheet.box)
@@ -661,7 +664,8 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     nt = get_notation(notation)
     dm = drawn_moments(study, nt)
     legend = f"{nt.sym(dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({nt.word('dynamics.work_balance')})"
-    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}",
+    ttl = f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}"
+    return _graph_scene(study, nt=nt, title=title or ttl,
                         page=page, title_block=title_block, name=name, curves=list(dm.curves), y_lo=dm.lo,
                         y_hi=dm.hi, y_symbol=nt.sym("M"), y_unit="N·m",
                         scale_symbol=nt.sym("mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
@@ -723,7 +727,8 @@ def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notat
                                     f"{get_notation(nt).number(math.degrees(p2), sig=4)}°", False)]
     return _graph_scene(study, nt=nt, title=title or ttl, page=page, title_block=title_block, name=name,
                         curves=[CurveSpec(key, phi, Y, MAIN, "")], y_lo=float(Y.min()), y_hi=float(Y.max()),
-                        y_symbol=nt.sym(family + key), y_unit="J", scale_symbol=nt.sym("mu_T"), mu_Y=mu_T, mu_phi=mu_phi,
+                        y_symbol=nt.sym(family + key), y_unit="J", scale_symbol=nt.sym("mu_T"), mu_Y=mu_T,
+                        mu_phi=mu_phi,
                         what="the energy graph", dots=dots, marks=marks, legend=legend,
                         zero=None if kinetic else True)
 
@@ -760,7 +765,8 @@ def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, 
                       f"{nt.sym('dynamics.omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
                       f"{n(math.degrees(ex.phi_omega_min_from_0))}°", False)]
     levels = [(mo.omega_m, f"{nt.sym('dynamics.omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
-    legend = f"δ = {n(mo.delta)};  {nt.sym('dynamics.J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} ({nt.word('dynamics.exact')})"
+    legend = (f"δ = {n(mo.delta)};  {nt.sym('dynamics.J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} "
+              f"({nt.word('dynamics.exact')})")
     return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
                         y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
@@ -791,12 +797,14 @@ def acceleration_graph(study, *, mu_eps=None, mu_phi=None, notation="en", page=N
     eps = np.asarray(mo.epsilon, dtype=float)
     n = get_notation(nt).number
     p = float(mo.phi_epsilon_max - mo.phi[0])
-    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{nt.sym('dynamics.eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
-                      f", φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
-    legend = f"{nt.sym('dynamics.chi')} = |{nt.sym('dynamics.eps')}|_{{max}}/{nt.sym('dynamics.omega_m')}² = {n(mo.chi)}"
+    eps_text = f"{nt.sym('dynamics.eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
+    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{eps_text}, φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
+    legend = (f"{nt.sym('dynamics.chi')} = |{nt.sym('dynamics.eps')}|_{{max}}/{nt.sym('dynamics.omega_m')}² = "
+              f"{n(mo.chi)}")
     return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.accel_graph')} ε(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("eps", phi, eps, MAIN, "")],
-                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)), y_symbol=nt.sym("dynamics.eps"),
+                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)),
+                        y_symbol=nt.sym("dynamics.eps"),
                         y_unit="rad/s²", scale_symbol=nt.sym("dynamics.mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
                         what="the ε graph", marks=marks, legend=legend, zero=True)
 
@@ -915,12 +923,7 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     box = (x0 + lay.left_mm, sheet.top + lay.top_mm, x1 - table_w - lay.table_gap_mm, sheet.caption_y - lay.bottom_mm)
     s_v = _lever_scale(g, mu_v, box, f_len, nt)
     img, tip, foot, lo, hi = g.on_paper(s_v, f_len)
-    bw, bh = box[2] - box[0], box[3] - box[1]
-    if hi[0] - lo[0] > bw + 1e-9 or hi[1] - lo[1] > bh + 1e-9:
-        raise InputError(f"the lever at {markup.plain(s_v.caption())} and {markup.plain(s_F.caption())} needs "
-                         f"{(hi - lo)[0]:.0f} × {(hi - lo)[1]:.0f} mm but the sheet leaves {bw:.0f} × {bh:.0f} mm; "
-                         f"give larger scales or none")
-    p_page = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2]) - (lo + hi) / 2
+    p_page = _pole_on_page(box, lo, hi, s_v, s_F)
     occ = sheet.occ
     lever_lines, force, line_of_action, h_mm = _lever_lines(study, g, p_page, img, tip, foot, f_len)
     occ.register(*lever_lines, force, *line_of_action)
@@ -1018,6 +1021,22 @@ class LeverGeometry:
         foot = b - self.Fhat * float(np.dot(b, self.Fhat))              # foot of the perpendicular from p
         cloud = np.vstack(list(img.values()) + [np.zeros(2), tip, foot])
         return img, tip, foot, cloud.min(axis=0), cloud.max(axis=0)
+
+
+def _pole_on_page(box: Box, lo: np.ndarray, hi: np.ndarray, s_v: Scale, s_F: Scale) -> np.ndarray:
+    """Where the pole p stands so that the lever's extent ``lo``…``hi`` (mm from p) is centred in ``box``.
+
+    Raises
+    ------
+    InputError
+        When the lever at the given scales does not fit the box.
+    """
+    bw, bh = box[2] - box[0], box[3] - box[1]
+    if hi[0] - lo[0] > bw + 1e-9 or hi[1] - lo[1] > bh + 1e-9:
+        raise InputError(f"the lever at {markup.plain(s_v.caption())} and {markup.plain(s_F.caption())} needs "
+                         f"{(hi - lo)[0]:.0f} × {(hi - lo)[1]:.0f} mm but the sheet leaves {bw:.0f} × {bh:.0f} mm; "
+                         f"give larger scales or none")
+    return np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2]) - (lo + hi) / 2
 
 
 def _lever_scale(g: LeverGeometry, mu_v: object, box: Box, f_len: float, nt: Notation) -> Scale:
@@ -1145,6 +1164,7 @@ def _lever_rows(g: LeverGeometry, nt: Notation, F_text: str, h_mm: float, s_v: S
 
 __all__ = [
     "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
-    "phi_graph_elements", "turned_inertia_elements", "axis_break", "DownAxis", "FastOccupancy", "SheetFrame", "CurveSpec",
+    "phi_graph_elements", "turned_inertia_elements", "axis_break", "DownAxis", "FastOccupancy", "SheetFrame",
+    "CurveSpec",
     "MarkSpec", "LeverLoad", "lever_load", "sym", "unit", "quantity", "value_text",
 ]

@@ -719,8 +719,8 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
         idx = res.index_omega_max if key == "max" else res.index_omega_min
         psi = nt.sym(f"dynamics.psi_{key}")
         tan = res.tan_psi_max if key == "max" else res.tan_psi_min
-        ray[key] = (_w(nt, f"ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4), w=nt.sym(f"dynamics.omega_{key}"),
-                       i=", ".join(str(int(i)) for i in idx)),
+        ray[key] = (_w(nt, f"ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4),
+                       w=nt.sym(f"dynamics.omega_{key}"), i=", ".join(str(int(i)) for i in idx)),
                     starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
                            f"label-omega-{key}", f"leader-omega-{key}"))
     rules = [
@@ -732,8 +732,8 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
         ray["min"],
         (_w(nt, "kl_points"), ["point-k", "point-l", "name-k", "name-l"]),
         (_w(nt, "kl", kl=nt.number(float(res.kl_mm))), ["dimension-kl", "label-kl", "leader-kl"]),
-        (_w(nt, "J_F", JF=nt.sym("dynamics.J_F"), muT=nt.sym("mu_T"), wm=nt.sym("dynamics.omega_m"), d=nt.sym("dynamics.delta"),
-              J=f"{nt.number(float(res.J_F), sig=4)} {nt.unit('kg·m²')}"), lambda n: False),
+        (_w(nt, "J_F", JF=nt.sym("dynamics.J_F"), muT=nt.sym("mu_T"), wm=nt.sym("dynamics.omega_m"),
+              d=nt.sym("dynamics.delta"), J=f"{nt.number(float(res.J_F), sig=4)} {nt.unit('kg·m²')}"), lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
