@@ -16,7 +16,6 @@ legend moved off drawn lines.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import replace
 
@@ -55,22 +54,14 @@ class FastOccupancy(Occupancy):
         if lab is not None:
             self.add_label(lab)
             return lab, None
-        x, y = at
         first = _ANGLE[directions[0]]
         angles = sorted(range(0, 360, 15), key=lambda a: (min(abs(a - first), 360 - abs(a - first)), a))
         for strict in (True, False):
             for r in _LEADER_RADII:
                 for ang in angles:
-                    a = math.radians(ang)
-                    c, s = math.cos(a), math.sin(a)
-                    end = (x + r * c, y - r * s)
-                    d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
-                    lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-                    start = (x + 1.5 * c, y - 1.5 * s)
-                    if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
-                        self.add_label(lab)
-                        self.add_line((start, end))
-                        return lab, (end, start)
+                    found = self.try_leader(at, text, r, ang, size_mm=size_mm, within=within, strict=strict)
+                    if found is not None:
+                        return found
         lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
         self.add_label(lab)
         return lab, None
