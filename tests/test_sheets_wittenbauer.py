@@ -113,7 +113,8 @@ def test_rays_bound_the_curve_touch_it_and_kl_on_paper_gives_J_F(scenes, press):
     for fid, scene, prefix in scenes:
         kl = check_rays(scene, exact_kl.J_F, prefix)
         mu_T = next(s for s in scene.scales() if s.unit in ("J", "Дж")).per_mm
-        J_F = kl * mu_T / (press.omega_m**2 * press.delta)
+        J_0 = scene.element(f"{prefix}axis-J").min_value     # where the drawn ordinate axis stands (0 on A4)
+        J_F = kl * mu_T / (press.omega_m**2 * press.delta) - J_0
         assert J_F == pytest.approx(exact_kl.J_F, rel=1e-9), fid
         rec = record(scene)
         dim = scene.element(f"{prefix}dimension-kl")
@@ -121,6 +122,53 @@ def test_rays_bound_the_curve_touch_it_and_kl_on_paper_gives_J_F(scenes, press):
         assert f"{get_number(scene.notation, kl)}" in markup.plain(scene.element(f"{prefix}label-kl").text)
         table = " ".join(rec.texts("result"))
         assert get_number(scene.notation, exact_kl.J_F) in table, fid
+
+
+@pytest.mark.parametrize("name", ["four_bar_rocker", "slider_crank_press"])
+def test_a_J_e_varying_little_gets_a_suppressed_zero_the_curve_fills_the_diagram_and_the_rays_keep_true_slopes(name):
+    c = case(name)
+    study = Study(c, positions=12)
+    scene = dynamic_analysis_sheet(study, notation="ru")
+    rec = record(scene)
+    J = np.asarray(study.J_e, dtype=float)
+    ax = scene.element("D-axis-J")
+    J_0 = ax.min_value
+    assert 0.0 < J_0 <= J.min() and J.min() - J_0 < 0.5 * (J.max() - J.min())     # a round value just below
+    assert scene.element("J-axis-J").min_value == J_0                              # the turned graph starts there too
+    for gid in ("D-axis-J-break", "J-axis-J-break"):
+        assert gid in rec.group_ids(), gid
+    mu_J = next(s for s in scene.scales() if s.unit == "кг·м²").per_mm
+    mu_T = next(s for s in scene.scales() if s.unit == "Дж").per_mm
+    # each vertex stands at its true J_e measured from J_0
+    x_axis = ax.pos(J_0)[0]
+    for k in range(study.m):
+        assert circle_centre(rec, f"D-vertex-{k}")[0] == pytest.approx(x_axis + (J[k] - J_0) / mu_J, abs=1e-6)
+    # the curve fills the diagram (before: a strip of 20-25 % of an axis from 0)
+    pts = curve_points(rec, "D-curve")
+    assert np.ptp(pts[:, 0]) > 0.6 * (ax.pos(ax.max_value)[0] - x_axis)
+    # tan ψ of the true J values: (μ_J/μ_T)·ω_m²(1 ± δ/2)²/2 (domain.md §7), whatever the origin
+    for key, sign in (("max", 1.0), ("min", -1.0)):
+        _, d = ray_line(rec, f"D-ray-{key}")
+        tan = mu_J / mu_T * 0.5 * c.omega_m**2 * (1.0 + sign * c.delta / 2) ** 2
+        assert -d[1] / d[0] == pytest.approx(tan, rel=1e-9), key
+    # k, l on the drawn axis; J_F = μ_T·kl/(ω_m²[δ]) − J_0 is the construction's J_F
+    kl = check_rays(scene, study.wittenbauer.J_F, "D-")
+    assert kl * mu_T / (c.omega_m**2 * c.delta) - J_0 == pytest.approx(study.wittenbauer.J_F, rel=1e-9)
+    table = " ".join(rec.texts("result"))
+    assert f"Jп0 = {get_number('ru', J_0)} кг·м²" in table and get_number("ru", study.wittenbauer.J_F) in table
+    assert "O1 (вне листа) (" in table                                             # O1, far off, reported
+
+
+@pytest.mark.parametrize("name", ["four_bar_rocker", "single_cylinder_engine", "scotch_yoke_pump",
+                                  "two_slider_compressor", "shaper", "whitworth_quick_return"])
+def test_the_A1_sheet_of_every_kind_fits_and_keeps_its_labels_apart(name):
+    assert_fits_and_labels_apart(dynamic_analysis_sheet(Study(case(name), positions=12)), name)
+
+
+def test_a_J_e_varying_much_keeps_its_axis_from_zero():
+    scene = dynamic_analysis_sheet(Study(case("shaper"), positions=12))
+    assert scene.element("D-axis-J").min_value == 0.0
+    assert "D-axis-J-break" not in record(scene).group_ids()
 
 
 def get_number(nt, v):
@@ -315,7 +363,7 @@ def test_ray_span_clips_to_the_frame_and_keeps_off_the_title_block():
     assert lo == pytest.approx(-50.0)                                           # starts at O1 on the sheet
     lo, _ = ray_span(intercept_mm=-20.0, tan=0.5, origin=origin, clip=clip, O1_x=-1e6, x_from=60.0, x_to=80.0,
                      avoid=((0.0, 100.0, 300.0, 200.0),))
-    assert lo == pytest.approx(-60.0)                                           # stops at the title block's row (y = 100)
+    assert lo == pytest.approx(-60.0)               # stops at the title block's row (y = 100)
 
 
 # ----------------------------------------------------------------------------- the command line

@@ -29,15 +29,10 @@ NOT_YET_MIGRATED = {
     "sheets/acceleration_worksheet.py",
     "sheets/check.py",
     "sheets/check_acceleration.py",
-    "sheets/drive_scheme.py",
-    "sheets/dynamics.py",
-    "sheets/flywheel_design.py",
-    "sheets/flywheel_hyperbola.py",
     "sheets/force_analysis_sheet.py",
     "sheets/forces.py",
     "sheets/kinematic_analysis_sheet.py",
     "sheets/steps.py",
-    "sheets/wittenbauer.py",
     "sheets/worksheets.py",
 }
 

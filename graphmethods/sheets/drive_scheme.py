@@ -22,25 +22,11 @@ import numpy as np
 from graphmethods.scene import Line, Page, Polyline, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Table
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.dynamics import SheetFrame, unit
+from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM
 
 THICK = Style(width_mm=0.5)
-_LANG = {"en": 0, "ru": 1, "zh": 2}
-_W = {
-    "title": ("Drive of several masses and its reduced scheme", "Многомассовый привод и его приведённая схема",
-              "多质量传动系统及其等效简图"),
-    "given": ("the drive (u = ω_i/ω)", "привод (u = ω_i/ω)", "传动系统 (u = ω_i/ω)"),
-    "reduced": ("reduced to the shaft u = 1", "приведённая схема (к валу u = 1)", "等效到 u = 1 的轴"),
-    "mass": ("mass", "масса", "质量"),
-    "shaft": ("shaft", "вал", "轴"),
-    "freq": ("natural frequencies", "собственные частоты", "固有频率"),
-    "rigid": ("rigid drive", "жёсткий привод", "刚性传动"),
-}
 
-
-def _w(nt: Any, key: str) -> str:
-    return _W[key][_LANG.get(nt.code, 0)]
 
 
 def _disc(x: float, y: float, h: float, name: str, style: Style) -> Polyline:
@@ -70,7 +56,7 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     notation : {"en", "ru", "zh"}
     """
     nt = get_notation(notation)
-    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "title"), problem=problem, title_block=True,
+    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("drive.title"), problem=problem, title_block=True,
                        default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     n = len(chain.names)
@@ -85,12 +71,14 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
         reduced = key == "reduced"
         Jr = J if reduced else np.asarray(chain.J_given, dtype=float)
         hh = h if reduced else 10.0 + 22.0 * (Jr / Jr.max()) ** 0.25
-        els.append(Text((x0, y - 30.0), _w(nt, key), size_mm=TEXT_MM + 0.5, bold=True, name=f"heading-{key}"))
+        els.append(Text((x0, y - 30.0), nt.word(f"drive.{key}"), size_mm=TEXT_MM + 0.5, bold=True,
+                        name=f"heading-{key}"))
         for j in range(n - 1):
             els.append(_spring(xs[j] + 2.5, xs[j + 1] - 2.5, y, f"{key}-shaft-{j + 1}"))
             mid = (xs[j] + xs[j + 1]) / 2
-            text = (f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {unit(nt, 'N·m/rad')}" if reduced else
-                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}, u = {num(float(chain.u_shafts[j]), sig=4)}")
+            text = (f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {nt.unit('N·m/rad')}" if reduced else
+                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}, "
+                    f"u = {num(float(chain.u_shafts[j]), sig=4)}")
             els.append(Text((mid, y - 6.0), text, size_mm=TEXT_MM, anchor="middle", name=f"{key}-label-c-{j + 1}"))
         for i in range(n):
             els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
@@ -103,8 +91,8 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
                                 anchor="middle", name=f"label-name-{i + 1}"))
         els.append(Line((left - 12.0, y), (left - 2.5, y), style=THIN, name=f"{key}-axis-in"))
     # the table: per mass J', per shaft c'; the frequencies and the rigid drive under it
-    rows: list[tuple[str, ...]] = [("", "J, " + unit(nt, "kg·m²"), "u", "J', " + unit(nt, "kg·m²"),
-                                    "c, " + unit(nt, "N·m/rad"), "c'")]
+    rows: list[tuple[str, ...]] = [("", "J, " + nt.unit("kg·m²"), "u", "J', " + nt.unit("kg·m²"),
+                                    "c, " + nt.unit("N·m/rad"), "c'")]
     for i in range(n):
         c_txt = (num(float(chain.c_given[i]), sig=5), num(float(chain.c[i]), sig=5)) if i < n - 1 else ("", "")
         rows.append((f"{i + 1} {chain.names[i]}", num(float(chain.J_given[i]), sig=5), num(float(chain.u[i]), sig=4),
@@ -112,9 +100,9 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     els.append(Table((x0 + 0.6 * (x1 - x0), sheet.top + 8.0), tuple(rows), align="lrrrrr", size_mm=2.8,
                      name="table"))
     freq = ", ".join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
-    els.append(Text((x0, sheet.caption_y - 14.0), f"{_w(nt, 'freq')}: ω = {freq} {unit(nt, 'rad/s')}",
+    els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}: ω = {freq} {nt.unit('rad/s')}",
                     size_mm=TEXT_MM, name="frequencies"))
-    els.append(Text((x0, sheet.caption_y - 8.0), f"{_w(nt, 'rigid')}: J_e = ΣJ' = {num(chain.J_e, sig=5)} "
-                    f"{unit(nt, 'kg·m²')}, M_e = ΣM' = {num(chain.M_e, sig=5)} {unit(nt, 'N·m')}",
+    els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}: J_e = ΣJ' = {num(chain.J_e, sig=5)} "
+                    f"{nt.unit('kg·m²')}, M_e = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}",
                     size_mm=TEXT_MM, name="rigid"))
     return Scene(sheet.page(()), tuple(els), title=sheet.title, notation=nt.code, name="drive-scheme")

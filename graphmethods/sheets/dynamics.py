@@ -33,11 +33,13 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import TypeVar
 
 import numpy as np
 
+from graphmethods.dynamics.study import Study
 from graphmethods.errors import InputError
 from graphmethods.scene import (
     Axis,
@@ -47,27 +49,19 @@ from graphmethods.scene import (
     Point,
     Polyline,
     Scale,
-    ScaleCaptions,
     Scene,
     Table,
     Text,
     Vector,
-    in_language,
     markup,
     nice_ticks,
     notation as get_notation,
 )
 from graphmethods.scene.elements import Element, label_bbox, make_label
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
-from graphmethods.sheets.layout import (
-    TEXT_MM,
-    TITLE_MM,
-    Occupancy,
-    Sheet,
-    given_angle_scale,
-    given_scale,
-    problem_title,
-)
+from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
+from graphmethods.sheets.layout import TEXT_MM, Box, Occupancy, given_angle_scale, given_scale, problem_title
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
@@ -76,147 +70,18 @@ LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
 PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
 OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
-# ----------------------------------------------------------------------------- notation of these figures
-# Symbols and words the notation profiles (graphmethods.scene.notation) lack: (en, ru, zh).
-SYMBOLS = {
-    "J_e":       ("J_e",        "J_п",          "J_e"),
-    "dT":        ("ΔT",         "ΔT",           "ΔE"),
-    "T":         ("T",          "T",            "E"),
-    "omega":     ("ω",          "ω",            "ω"),
-    "omega_m":   ("ω_m",        "ω_{ср}",       "ω_m"),
-    "omega_max": ("ω_{max}",    "ω_{max}",      "ω_{max}"),
-    "omega_min": ("ω_{min}",    "ω_{min}",      "ω_{min}"),
-    "omega_1":   ("ω_1",        "ω_1",          "ω_1"),
-    "eps":       ("ε",          "ε",            "ε"),
-    "eps_max":   ("ε_{max}",    "ε_{max}",      "ε_{max}"),
-    "chi":       ("χ",          "χ",            "χ"),
-    "J_F":       ("J_F",        "J_м",          "J_F"),
-    "delta":     ("[δ]",        "[δ]",          "[δ]"),
-    "mu_J":      ("μ_J",        "μ_J",          "μ_J"),
-    "mu_T":      ("μ_T",        "μ_T",          "μ_E"),
-    "mu_omega":  ("μ_ω",        "μ_ω",          "μ_ω"),
-    "mu_eps":    ("μ_ε",        "μ_ε",          "μ_ε"),
-    "mu_v":      ("μ_v",        "μ_v",          "μ_v"),
-    "mu_F":      ("μ_F",        "μ_F",          "μ_F"),
-    "psi_max":   ("ψ_{max}",    "ψ_{max}",      "ψ_{max}"),
-    "psi_min":   ("ψ_{min}",    "ψ_{min}",      "ψ_{min}"),
-    "dT_max":    ("ΔT_{max}",   "ΔT_{max}",     "ΔE_{max}"),
-    "dT_min":    ("ΔT_{min}",   "ΔT_{min}",     "ΔE_{min}"),
-    "T_max":     ("T_{max}",    "T_{max}",      "E_{max}"),
-    "T_min":     ("T_{min}",    "T_{min}",      "E_{min}"),
-    "F":         ("F",          "F_{пс}",       "F_r"),
-    "M_F":       ("M_F",        "M_F",          "M_F"),
-    "h":         ("h",          "h",            "h"),
-}
-
-WORDS = {
-    "inertia_graph":   ("Reduced moment of inertia", "Приведённый момент инерции", "等效转动惯量"),
-    "inertia_turned":  ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции, повёрнутый на 90°",
-                        "等效转动惯量（旋转90°）"),
-    "moment_graph":    ("Reduced moments", "Приведённые моменты", "等效力矩"),
-    "delta_T_graph":   ("Increment of kinetic energy", "Приращение кинетической энергии", "动能增量"),
-    "kinetic_graph":   ("Kinetic energy (exact motion)", "Кинетическая энергия (точное решение)", "动能（精确解）"),
-    "speed_graph":     ("Angular velocity of the crank (exact motion)", "Угловая скорость кривошипа (точное решение)",
-                        "曲柄角速度（精确解）"),
-    "accel_graph":     ("Angular acceleration of the crank (exact motion)",
-                        "Угловое ускорение кривошипа (точное решение)", "曲柄角加速度（精确解）"),
-    "lever":           ("Zhukovsky lever", "Рычаг Жуковского", "茹科夫斯基杠杆"),
-    "position":        ("position", "положение", "位置"),
-    "positions":       ("positions", "положений", "个位置"),
-    "work_balance":    ("from the work balance", "из баланса работ", "由功平衡"),
-    "exact":           ("exact", "точно", "精确"),
-    "by_lever":        ("by the lever", "по рычагу", "杠杆法"),
-    "by_power":        ("by power", "по мощности", "功率法"),
-    "arm":             ("arm", "плечо", "力臂"),
-    "force":           ("force", "сила", "力"),
-    "lever_moment":    ("moment about p", "момент относительно p", "对p点之矩"),
-    "plan_turned":     ("velocity plan turned 90° against ω_1", "план скоростей, повёрнутый на 90° против ω_1",
-                        "速度图逆ω_1转90°"),
-    "parts":           ("parts", "составляющие", "分量"),
-}
-
-_UNITS_RU = {"rad/s²": "рад/с²", "(m/s)": "(м/с)", "m/s": "м/с", "rev/min": "об/мин", "kg·m²": "кг·м²"}
-
-
-def sym(nt, key: str) -> str:
-    """A symbol (markup) of these figures, or of the notation profile."""
-    return in_language(SYMBOLS[key], nt) if key in SYMBOLS else get_notation(nt).sym(key)
-
-
-def word(nt, key: str) -> str:
-    """Words of these figures, or of the notation profile."""
-    return in_language(WORDS[key], nt) if key in WORDS else get_notation(nt).word(key)
-
-
-def unit(nt, u: str) -> str:
-    """A unit as the profile writes it (with the units the profile lacks)."""
-    nt = get_notation(nt)
-    if nt.code == "ru" and u in _UNITS_RU:
-        return _UNITS_RU[u]
-    return nt.unit(u)
-
-
-def quantity(nt, symbol: str, u: str) -> str:
-    """``"ω, rad/s"`` (en, ru) or ``"ω/(rad/s)"`` (zh), with this module's units."""
-    nt = get_notation(nt)
-    return nt.quantity(symbol, unit(nt, u))
+# ----------------------------------------------------------------------------- words of these figures
+# Every word, symbol and unit is the notation's (scene/vocabulary/dynamics.py: nt.sym("dynamics.J_e")).
 
 
 def value_text(nt, value: float, u: str, *, sig: int = 4) -> str:
     """``"31.42 rad/s"`` in the profile's number style and units."""
     nt = get_notation(nt)
     sep = "" if u == "°" else " "
-    return f"{nt.number(value, sig=sig)}{sep}{unit(nt, u)}" if u else nt.number(value, sig=sig)
+    return f"{nt.number(value, sig=sig)}{sep}{nt.unit(u)}" if u else nt.number(value, sig=sig)
 
 
 # ----------------------------------------------------------------------------- layout helpers
-
-class FastOccupancy(Occupancy):
-    """:class:`~graphmethods.sheets.layout.Occupancy` whose leaders search a finer ring (every 15°, out to 70 mm).
-
-    (The free-space test itself is :meth:`Occupancy.is_free`, vectorised over numpy arrays.)
-
-    >>> occ = FastOccupancy()
-    >>> occ.add_line(((0, 10), (100, 10)))
-    >>> occ.is_free((40, 8, 60, 12)), occ.is_free((40, 12, 60, 14))
-    (False, True)
-    """
-
-    def place_label_with_leader(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
-                                size_mm: float = 3.5, gap_mm: float = 1.2, within=None):
-        """As :meth:`Occupancy.place_label_with_leader`, searching a finer ring (every 15°, out to 70 mm),
-        first with leaders that cross no label, then with any leader, before giving up."""
-        from graphmethods.scene.elements import place_label
-
-        lab = self.first_free(at, text, directions, (gap_mm, gap_mm + 2.0), size_mm, within)
-        if lab is not None:
-            self.add_label(lab)
-            return lab, None
-        x, y = at
-        first = {"e": 0, "ne": 45, "n": 90, "nw": 135, "w": 180, "sw": 225, "s": 270, "se": 315}[directions[0]]
-        angles = sorted(range(0, 360, 15), key=lambda a: (min(abs(a - first), 360 - abs(a - first)), a))
-        for strict in (True, False):
-            for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0, 60.0, 70.0):
-                for ang in angles:
-                    a = math.radians(ang)
-                    c, s = math.cos(a), math.sin(a)
-                    end = (x + r * c, y - r * s)
-                    d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
-                    lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-                    start = (x + 1.5 * c, y - 1.5 * s)
-                    if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
-                        self.add_label(lab)
-                        self.add_line((start, end))
-                        return lab, (end, start)
-        lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
-        self.add_label(lab)
-        return lab, None
-
-    def register(self, *elements) -> None:
-        """Register everything some elements draw."""
-        for e in elements:
-            self.add_primitives(e.primitives())
-
 
 @dataclass(frozen=True)
 class DownAxis(Axis):
@@ -298,42 +163,6 @@ def position_labels(m: int, spacing_mm: float, *, min_gap_mm: float = 5.0) -> tu
     """
     step = max(1, math.ceil(min_gap_mm / max(spacing_mm, 1e-9)))
     return tuple(str(k) if k % step == 0 or k == m else "" for k in range(m + 1))
-
-
-class SheetFrame(Sheet):
-    """The shared :class:`~graphmethods.sheets.layout.Sheet`, with a faster occupancy (these sheets place many
-    labels), a title box as wide as the title, and captions moved clear of lines."""
-
-    occ: FastOccupancy
-
-    def __init__(self, *, nt, page, title: str, problem: str, title_block: bool, default_page):
-        super().__init__(nt=get_notation(nt), page=page, title=title, problem=problem, title_block=title_block,
-                         default_page=default_page)
-        x0, y0, _, _ = self.box
-        self.occ = FastOccupancy()
-        self.occ.add_box((x0, y0, x0 + markup.text_width_mm(title, TITLE_MM) * 1.08, y0 + TITLE_MM + 1.5))
-
-    def captions(self, scales, legend: str = "", *, reserve: bool = False) -> list:
-        """The scale captions on the bottom line (left), a legend at its right end; both kept off lines
-        (always registered: ``reserve`` is accepted as the base class takes it)."""
-        x0, _, x1, _ = self.box
-        y = self.caption_y
-        els: list[Element] = []
-        cap = ScaleCaptions((x0, y), tuple(scales), notation=self.nt, size_mm=TEXT_MM, name="scale-captions")
-        for at, anchor in (((x0, y), "start"), ((x1, y), "end"), (((x0 + x1) / 2, y), "middle")):
-            trial = replace(cap, at=at, anchor=anchor)
-            if all(self.occ.is_free(label_bbox(p)) for p in trial.primitives() if isinstance(p, Label)):
-                cap = trial
-                break
-        self.occ.register(cap)
-        els.append(cap)
-        if legend:
-            lab = make_label((x1, y), legend, size_mm=TEXT_MM, anchor="end")
-            if not self.occ.is_free(label_bbox(lab)):
-                lab = make_label((x1, y - TEXT_MM * 1.5), legend, size_mm=TEXT_MM, anchor="end")
-            self.occ.add_label(lab)
-            els.append(Text((lab.x, lab.y), legend, size_mm=TEXT_MM, anchor="end", name="legend"))
-        return els
 
 
 def as_study(obj, positions: int = 12):
@@ -480,7 +309,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
                 float(np.mean(c.values < axis_level)) > 0.5 for c in curves[:1])
     side = labels_side if labels_side is not None else ("above" if below else "below")
     ax_phi = Axis((origin[0], x_axis_y), s_phi, "x", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
-                  tick_labels=("",) * (m + 1), label=phi_label or sym(nt, "phi"), size_mm=SMALL_MM,
+                  tick_labels=("",) * (m + 1), label=phi_label or nt.sym("phi"), size_mm=SMALL_MM,
                   name=f"{prefix}axis-phi", labels_side=side)
     ticks = tuple(t for t in nice_ticks(y_from, y_to, s_Y, min_gap_mm=8.0) if y_from <= t <= y_to)
     ax_Y = Axis(origin, s_Y, "y", min_value=y_from, max_value=y_to, ticks=ticks, label=y_label, size_mm=SMALL_MM,
@@ -504,7 +333,26 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
             b = label_bbox(name[0])
             occ.add_box((b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5))
     els: list[Element] = [ax_phi, ax_Y, *lvl, *lines]
-    # position numbers under (or over) the φ axis ticks, on the other side where a curve runs through
+    els += _position_numbers(ax_phi, phi_k, m, spacing, occ, side, prefix)
+    if dots is not None:
+        pts = f.pts(*dots)
+        els += [Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}") for k, p in enumerate(pts)]
+        for p in pts:
+            occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
+    for value, text, key in levels:
+        y = f.pt(0.0, value)[1]
+        lab = occ.place_label((x_end + 2.0, y), text, ("ne", "e", "se", "n", "s"), size_mm=TEXT_MM, gap_mm=1.0,
+                              within=within)
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{key}"))
+    els += _mark_elements(marks, f, occ, prefix, within)
+    els += _curve_names(curves, lines, occ, axis_level, prefix, within)
+    return els
+
+
+def _position_numbers(ax_phi: Axis, phi_k: np.ndarray, m: int, spacing: float, occ: FastOccupancy, side: str,
+                      prefix: str) -> list[Element]:
+    """Position numbers under (or over) the φ axis ticks, on the other side where a curve runs through."""
+    els: list[Element] = []
     order = ("n", "s") if side == "above" else ("s", "n")
     for k, text in enumerate(position_labels(m, spacing)):
         if not text:
@@ -516,16 +364,13 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
         occ.add_label(lab)
         els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, valign="baseline",
                         name=f"{prefix}pos-{k}"))
-    if dots is not None:
-        pts = f.pts(*dots)
-        els += [Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}") for k, p in enumerate(pts)]
-        for p in pts:
-            occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
-    for value, text, key in levels:
-        y = f.pt(0.0, value)[1]
-        lab = occ.place_label((x_end + 2.0, y), text, ("ne", "e", "se", "n", "s"), size_mm=TEXT_MM, gap_mm=1.0,
-                              within=within)
-        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{key}"))
+    return els
+
+
+def _mark_elements(marks: Sequence[MarkSpec], f: Frame, occ: FastOccupancy, prefix: str,
+                   within: Box | None) -> list[Element]:
+    """Extremes marked with an open circle and their text (with a leader when crowded)."""
+    els: list[Element] = []
     for mk in marks:
         at = f.pt(mk.phi, mk.value)
         els.append(Point(at, radius_mm=1.1, filled=False, name=f"{prefix}mark-{mk.key}"))
@@ -536,13 +381,22 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
         els.append(Text((lab.x, lab.y), mk.text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-{mk.key}"))
         if leader is not None:
             els.append(Line(leader[0], leader[1], style=THIN, name=f"{prefix}leader-{mk.key}"))
+    return els
+
+
+def _curve_names(curves: Sequence[CurveSpec], lines: Sequence[Polyline], occ: FastOccupancy, axis_level: float,
+                 prefix: str, within: Box | None) -> list[Element]:
+    """Each named curve's name at its end, else along it, else with a leader (its peak first when it ends
+    on the axis)."""
+    els: list[Element] = []
     for c, line in zip(curves, lines):
         if not c.label:
             continue
         size = TEXT_MM + 0.4
         n = len(line.points)
         spots: list[tuple[tuple[float, float], tuple[str, ...]]] = [(line.end, ("e", "ne", "se"))] + [
-            (line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw")) for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
+            (line.points[int(n * t)], ("n", "s", "ne", "se", "nw", "sw"))
+            for t in (0.93, 0.85, 0.7, 0.55, 0.4, 0.25, 0.1)]
         far = int(np.argmax(np.abs(np.asarray(c.values, dtype=float) - axis_level)))
         if abs(float(c.values[-1]) - axis_level) < 0.05 * abs(float(c.values[far]) - axis_level):
             spots.insert(0, (line.points[far], ("ne", "nw", "n", "e", "w")))   # it ends on the axis: name its peak
@@ -570,12 +424,12 @@ def _graph_scene(study, *, nt, title, page, title_block, name, curves, y_lo, y_h
     sheet = SheetFrame(nt=nt, page=page, title=title, problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
-    y_label = quantity(nt, y_symbol, y_unit)
-    right = 8.0 + markup.text_width_mm(sym(nt, "phi"), SMALL_MM + 0.5) + 26.0
+    y_label = nt.quantity(y_symbol, y_unit)
+    right = 8.0 + markup.text_width_mm(nt.sym("phi"), SMALL_MM + 0.5) + 26.0
     px0, px1 = x0 + 20.0, x1 - right
     py0, py1 = sheet.top + 12.0, sheet.caption_y - 14.0
-    s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, px1 - px0)
-    u = unit(nt, y_unit)
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI, px1 - px0)
+    u = nt.unit(y_unit)
     u = f"({u})" if "/" in u else u
     suppressed = zero is False or (zero is None and y_lo > 0 and (y_hi - y_lo) < 0.35 * y_hi)
     if suppressed:
@@ -644,7 +498,7 @@ def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts:
     red = inertia_curve(study, phi)
     J_k = np.asarray(study.J_e, dtype=float)
     phi_k = np.asarray(study.phi, dtype=float)
-    J_sym = sym(nt, "J_e")
+    J_sym = nt.sym("dynamics.J_e")
     if turned:
         return _turned_inertia_scene(study, nt=nt, phi=phi, J=red.J_e, J_k=J_k, phi_k=phi_k, mu_J=mu_J,
                                      mu_phi=mu_phi, page=page, title=title, title_block=title_block, name=name)
@@ -655,62 +509,76 @@ def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts:
                 curves.append(CurveSpec(re.sub(r"\W+", "", key), phi, values, PART, _part_label(key)))
     y_hi = float(max(red.J_e.max(), J_k.max()))
     legend = f"{J_sym} = Σ[m_i(v_{{Si}}/ω_1)² + J_{{Si}}(ω_i/ω_1)²]"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'inertia_graph')} {J_sym}(φ)", page=page,
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.inertia_graph')} {J_sym}(φ)", page=page,
                         title_block=title_block, name=name, curves=curves, y_lo=0.0, y_hi=y_hi, y_symbol=J_sym,
-                        y_unit="kg·m²", scale_symbol=sym(nt, "mu_J"), mu_Y=mu_J, mu_phi=mu_phi,
+                        y_unit="kg·m²", scale_symbol=nt.sym("dynamics.mu_J"), mu_Y=mu_J, mu_phi=mu_phi,
                         what="the J_e graph", dots=(phi_k, J_k), legend=legend, zero=True)
+
+
+def axis_break(at: tuple[float, float], name: str) -> Polyline:
+    """The mark of a suppressed zero on a horizontal axis: a short zigzag across it at ``at`` (mm).
+
+    >>> axis_break((10.0, 50.0), "break").points[:2]
+    ((8.5, 50.0), (9.25, 48.5))
+    """
+    x, y = at
+    return Polyline(((x - 1.5, y), (x - 0.75, y - 1.5), (x + 0.75, y + 1.5), (x + 1.5, y)), style=THIN, name=name)
 
 
 def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np.ndarray, J: np.ndarray,
                             phi_k: np.ndarray, J_k: np.ndarray, nt, occ, J_to: float, prefix: str = "J-",
-                            within=None) -> list:
+                            within=None, J_from: float = 0.0) -> list:
     """The J_e(φ) graph turned 90° clockwise: J_e axis to the right from ``origin``, φ axis down from it.
 
-    Page point of (φ, J) is ``(origin_x + J/μ_J, origin_y + φ/μ_φ)``. Returns the axes, the
+    Page point of (φ, J) is ``(origin_x + (J − J_from)/μ_J, origin_y + φ/μ_φ)``: the J_e axis starts
+    at ``J_from`` (0, or a suppressed zero marked by :func:`axis_break`). Returns the axes, the
     curve and the dots ``{prefix}dot-k`` at positions 0…m−1.
     """
     ox, oy = origin
     period = float(phi_k[-1] - phi_k[0])
-    ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=12.0) if 0.0 <= t <= J_to)
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J, label=quantity(nt, sym(nt, "J_e"),
-                "kg·m²"), size_mm=SMALL_MM, decimal=get_notation(nt).decimal, labels_side="above",
-                skip_zero_label=True, name=f"{prefix}axis-J")
+    ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=12.0) if J_from <= t <= J_to)
+    ax_J = Axis((ox - s_J.to_mm(J_from), oy), s_J, "x", min_value=J_from, max_value=J_to, ticks=ticks_J,
+                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM,
+                decimal=get_notation(nt).decimal, labels_side="above", skip_zero_label=True, name=f"{prefix}axis-J")
     spacing = s_phi.to_mm(period / m)
     ax_phi = DownAxis(origin, s_phi, "y", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
-                      tick_labels=position_labels(m, spacing), label=sym(nt, "phi"), size_mm=SMALL_MM,
+                      tick_labels=position_labels(m, spacing), label=nt.sym("phi"), size_mm=SMALL_MM,
                       name=f"{prefix}axis-phi")
-    pts = tuple(zip((ox + s_J.to_mm(J)).tolist(), (oy + s_phi.to_mm(phi - phi_k[0])).tolist()))
+    pts = tuple(zip((ox + s_J.to_mm(J - J_from)).tolist(), (oy + s_phi.to_mm(phi - phi_k[0])).tolist()))
     curve = Polyline(pts, style=MAIN, name=f"{prefix}curve-J_e")
-    occ.register(curve)
+    breaks = [axis_break((ox + 5.0, oy), f"{prefix}axis-J-break")] if J_from > 0.0 else []
+    occ.register(curve, *breaks)
     occ.add_line((ax_J.start, ax_J.tip))
     occ.add_line((ax_phi.start, ax_phi.tip))
     ax_J, ax_phi = clear_ticks(ax_J, occ), clear_ticks(ax_phi, occ)
     occ.register(ax_J, ax_phi)
     dots = []
     for k in range(m):
-        p = (ox + s_J.to_mm(float(J_k[k])), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
+        p = (ox + s_J.to_mm(float(J_k[k]) - J_from), oy + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
         dots.append(Point(p, radius_mm=0.6, name=f"{prefix}dot-{k}"))
         occ.add_box((p[0] - 0.7, p[1] - 0.7, p[0] + 0.7, p[1] + 0.7))
-    name_lab = occ.place_label(pts[len(pts) // 4], sym(nt, "J_e"), ("e", "ne", "se", "w"), size_mm=TEXT_MM + 0.4,
+    name_lab = occ.place_label(pts[len(pts) // 4], nt.sym("dynamics.J_e"), ("e", "ne", "se", "w"),
+                               size_mm=TEXT_MM + 0.4,
                                gap_mm=2.0, within=within)
-    label = Text((name_lab.x, name_lab.y), sym(nt, "J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
+    label = Text((name_lab.x, name_lab.y), nt.sym("dynamics.J_e"), size_mm=TEXT_MM + 0.4, anchor=name_lab.anchor,
                  name=f"{prefix}name-J_e")
-    return [ax_J, ax_phi, curve] + dots + [label]
+    return [ax_J, *breaks, ax_phi, curve] + dots + [label]
 
 
 def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, title, title_block, name):
     from graphmethods.scene import Page
 
-    J_sym = sym(nt, "J_e")
-    sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'inertia_turned')}: {J_sym}(φ)",
+    J_sym = nt.sym("dynamics.J_e")
+    sheet = SheetFrame(nt=nt, page=page, title=title or f"{nt.word('dynamics.inertia_turned')}: {J_sym}(φ)",
                        problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "portrait", frame=True))
     x0, y0, x1, y1 = sheet.box
     ox, oy = x0 + 16.0, sheet.top + 16.0
     J_to = float(max(J.max(), J_k.max()))
-    label_w = markup.text_width_mm(quantity(nt, J_sym, "kg·m²"), SMALL_MM + 0.5)
-    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, x1 - ox - 12.0 - label_w, what="the J_e axis")
-    s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, sheet.caption_y - 22.0 - oy)
+    label_w = markup.text_width_mm(nt.quantity(J_sym, "kg·m²"), SMALL_MM + 0.5)
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, x1 - ox - 12.0 - label_w,
+                      what="the J_e axis")
+    s_phi = given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI, sheet.caption_y - 22.0 - oy)
     els = turned_inertia_elements(origin=(ox, oy), s_J=s_J, s_phi=s_phi, m=study.m, phi=phi, J=J, phi_k=phi_k,
                                   J_k=J_k, nt=nt, occ=sheet.occ, J_to=J_to, prefix="", within=sheet.box)
     scales = (s_J, s_phi)
@@ -751,8 +619,8 @@ def drawn_moments(study, nt) -> DrawnMoments:
         curve, ck, cv, key = -M_r, "M_r", -M_d, "M_d"
     else:
         curve, ck, cv, key = M_r, "M_d", M_d, "M_r"
-    curves = (CurveSpec(key, phi_k, curve, MAIN, sym(nt, key)),
-              CurveSpec(ck, ends, np.array([cv, cv]), MAIN, sym(nt, ck)))
+    curves = (CurveSpec(key, phi_k, curve, MAIN, nt.sym(key)),
+              CurveSpec(ck, ends, np.array([cv, cv]), MAIN, nt.sym(ck)))
     return DrawnMoments(curves, (phi_k, curve), float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck,
                         float(cv))
 
@@ -777,11 +645,12 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     study = as_study(study)
     nt = get_notation(notation)
     dm = drawn_moments(study, nt)
-    legend = f"{sym(nt, dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({word(nt, 'work_balance')})"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'moment_graph')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}",
+    legend = f"{nt.sym(dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({nt.word('dynamics.work_balance')})"
+    ttl = f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}"
+    return _graph_scene(study, nt=nt, title=title or ttl,
                         page=page, title_block=title_block, name=name, curves=list(dm.curves), y_lo=dm.lo,
-                        y_hi=dm.hi, y_symbol=sym(nt, "M"), y_unit="N·m",
-                        scale_symbol=sym(nt, "mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
+                        y_hi=dm.hi, y_symbol=nt.sym("M"), y_unit="N·m",
+                        scale_symbol=nt.sym("mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
                         dots=dm.dots, legend=legend, zero=True)
 
 
@@ -824,22 +693,24 @@ def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notat
         mo = study.exact.motion
         phi, Y = np.asarray(mo.phi, dtype=float) - float(mo.phi[0]), np.asarray(mo.T, dtype=float)
         key, kmax, kmin, dots = "T", "T_max", "T_min", None
-        ttl = f"{word(nt, 'kinetic_graph')} {sym(nt, 'T')}(φ)"
-        legend = f"{sym(nt, 'J_F')} = {value_text(nt, study.exact.J_F, 'kg·m²')} ({word(nt, 'exact')})"
+        ttl = f"{nt.word('dynamics.kinetic_graph')} {nt.sym('T')}(φ)"
+        legend = f"{nt.sym('dynamics.J_F')} = {value_text(nt, study.exact.J_F, 'kg·m²')} ({nt.word('dynamics.exact')})"
     else:
         Y = delta_T_curve(study, phi)
         key, kmax, kmin = "dT", "dT_max", "dT_min"
         dots = (np.asarray(study.phi, dtype=float), np.asarray(study.delta_T, dtype=float))
-        ttl = f"{word(nt, 'delta_T_graph')} {sym(nt, 'dT')}(φ)"
+        ttl = f"{nt.word('dynamics.delta_T_graph')} {nt.sym('dynamics.dT')}(φ)"
         legend = ""
+    family = "" if kinetic else "dynamics."  # T, T_max of the notation; ΔT, ΔT_max of the dynamics figures
     (p1, v1), (p2, v2) = _extremes(phi, Y)
-    marks = [MarkSpec(kmax, p1, v1, f"{sym(nt, kmax)} = {value_text(nt, v1, 'J')}, φ = "
+    marks = [MarkSpec(kmax, p1, v1, f"{nt.sym(family + kmax)} = {value_text(nt, v1, 'J')}, φ = "
                                     f"{get_notation(nt).number(math.degrees(p1), sig=4)}°", True),
-             MarkSpec(kmin, p2, v2, f"{sym(nt, kmin)} = {value_text(nt, v2, 'J')}, φ = "
+             MarkSpec(kmin, p2, v2, f"{nt.sym(family + kmin)} = {value_text(nt, v2, 'J')}, φ = "
                                     f"{get_notation(nt).number(math.degrees(p2), sig=4)}°", False)]
     return _graph_scene(study, nt=nt, title=title or ttl, page=page, title_block=title_block, name=name,
                         curves=[CurveSpec(key, phi, Y, MAIN, "")], y_lo=float(Y.min()), y_hi=float(Y.max()),
-                        y_symbol=sym(nt, key), y_unit="J", scale_symbol=sym(nt, "mu_T"), mu_Y=mu_T, mu_phi=mu_phi,
+                        y_symbol=nt.sym(family + key), y_unit="J", scale_symbol=nt.sym("mu_T"), mu_Y=mu_T,
+                        mu_phi=mu_phi,
                         what="the energy graph", dots=dots, marks=marks, legend=legend,
                         zero=None if kinetic else True)
 
@@ -870,17 +741,19 @@ def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, 
     w = np.asarray(mo.omega, dtype=float)
     n = get_notation(nt).number
     marks = [MarkSpec("omega_max", ex.phi_omega_max_from_0, ex.omega_max,
-                      f"{sym(nt, 'omega_max')} = {value_text(nt, ex.omega_max, 'rad/s')}, φ = "
+                      f"{nt.sym('dynamics.omega_max')} = {value_text(nt, ex.omega_max, 'rad/s')}, φ = "
                       f"{n(math.degrees(ex.phi_omega_max_from_0))}°", True),
              MarkSpec("omega_min", ex.phi_omega_min_from_0, ex.omega_min,
-                      f"{sym(nt, 'omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
+                      f"{nt.sym('dynamics.omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
                       f"{n(math.degrees(ex.phi_omega_min_from_0))}°", False)]
-    levels = [(mo.omega_m, f"{sym(nt, 'omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
-    legend = f"δ = {n(mo.delta)};  {sym(nt, 'J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} ({word(nt, 'exact')})"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'speed_graph')} ω(φ)", page=page,
+    levels = [(mo.omega_m, f"{nt.sym('dynamics.omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
+    legend = (f"δ = {n(mo.delta)};  {nt.sym('dynamics.J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} "
+              f"({nt.word('dynamics.exact')})")
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
                         y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
-                        y_symbol=sym(nt, "omega"), y_unit="rad/s", scale_symbol=sym(nt, "mu_omega"), mu_Y=mu_omega,
+                        y_symbol=nt.sym("dynamics.omega"), y_unit="rad/s", scale_symbol=nt.sym("dynamics.mu_omega"),
+                        mu_Y=mu_omega,
                         mu_phi=mu_phi, what="the ω graph", marks=marks, levels=levels, legend=legend, zero=None)
 
 
@@ -906,13 +779,15 @@ def acceleration_graph(study, *, mu_eps=None, mu_phi=None, notation="en", page=N
     eps = np.asarray(mo.epsilon, dtype=float)
     n = get_notation(nt).number
     p = float(mo.phi_epsilon_max - mo.phi[0])
-    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{sym(nt, 'eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
-                      f", φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
-    legend = f"{sym(nt, 'chi')} = |{sym(nt, 'eps')}|_{{max}}/{sym(nt, 'omega_m')}² = {n(mo.chi)}"
-    return _graph_scene(study, nt=nt, title=title or f"{word(nt, 'accel_graph')} ε(φ)", page=page,
+    eps_text = f"{nt.sym('dynamics.eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
+    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{eps_text}, φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
+    legend = (f"{nt.sym('dynamics.chi')} = |{nt.sym('dynamics.eps')}|_{{max}}/{nt.sym('dynamics.omega_m')}² = "
+              f"{n(mo.chi)}")
+    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.accel_graph')} ε(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("eps", phi, eps, MAIN, "")],
-                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)), y_symbol=sym(nt, "eps"),
-                        y_unit="rad/s²", scale_symbol=sym(nt, "mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
+                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)),
+                        y_symbol=nt.sym("dynamics.eps"),
+                        y_unit="rad/s²", scale_symbol=nt.sym("dynamics.mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
                         what="the ε graph", marks=marks, legend=legend, zero=True)
 
 
@@ -1011,120 +886,200 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     study = as_study(study)
     require_step_load(study, "Zhukovsky lever")
     nt = get_notation(notation)
-    m = study.m
-    plans = study.plans
-    if position is None:
-        k = _default_lever_position(study)
-    else:
-        if isinstance(position, bool) or not isinstance(position, (int, np.integer)) or not 0 <= position <= m:
-            raise InputError(f"position {position!r}: give a position number 0…{m}")
-        k = int(position) % m
-    ld = lever_load(study, k)
-    omega_1 = float(plans.omega_1)
-    sense = int(plans.sense)
-
-    def turned(v):
-        v = np.asarray(v, dtype=float)
-        return np.array([v[1], -v[0]]) if sense > 0 else np.array([-v[1], v[0]])
-
-    names = list(plans.order)
-    images = {p: turned(plans.v(p)[k]) for p in names}          # m/s, turned
-    F = np.asarray(ld.force, dtype=float)
-    F_abs = float(np.hypot(*F))
-    sheet = SheetFrame(nt=nt, page=page, title=title or f"{word(nt, 'lever')}, {word(nt, 'position')} {k}",
+    k = _lever_position(study, position)
+    g = LeverGeometry.of(study, k)
+    lay = LEVER
+    sheet = SheetFrame(nt=nt, page=page,
+                       title=title or f"{nt.word('dynamics.lever')}, {nt.word('dynamics.position')} {k}",
                        problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
-    nb = get_notation(nt).number
-    F_text = f"{sym(nt, 'F')} = {value_text(nt, F_abs, 'N')}"
-    u_v = unit(nt, "(m/s)")
-    s_F = given_scale(mu_F, sym(nt, "mu_F"), unit(nt, "N"), F_abs, 30.0 if mu_F is None else 1e9,
+    nb = nt.number
+    s_F = given_scale(mu_F, nt.sym("dynamics.mu_F"), nt.unit("N"), g.F_abs, lay.force_mm if mu_F is None else 1e9,
                       what="the force vector")
-    P = ld.point
-    Fhat = np.array([F[0], -F[1]]) / F_abs                      # on paper (y down)
-    f_len = s_F.to_mm(F_abs)
+    f_len = s_F.to_mm(g.F_abs)
+    rows_probe = ((nt.word("dynamics.plan_turned"),
+                   f"{nt.sym('dynamics.omega_1')} = {value_text(nt, g.omega_1, 'rad/s')}"),
+                  (nt.word("dynamics.by_lever"), f"= {nb(g.F_abs)}·00.00·{nb(1.0e-4)}/{nb(g.omega_1)}"))
+    table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=TEXT_MM).width_mm
+    box = (x0 + lay.left_mm, sheet.top + lay.top_mm, x1 - table_w - lay.table_gap_mm, sheet.caption_y - lay.bottom_mm)
+    s_v = _lever_scale(g, mu_v, box, f_len, nt)
+    img, tip, foot, lo, hi = g.on_paper(s_v, f_len)
+    p_page = _pole_on_page(box, lo, hi, s_v, s_F)
+    occ = sheet.occ
+    lever_lines, force, line_of_action, h_mm = _lever_lines(study, g, p_page, img, tip, foot, f_len)
+    occ.register(*lever_lines, force, *line_of_action)
+    arm, h_label = _lever_arm(g, p_page, img, foot, h_mm, occ, nt, sheet.box)
+    pole = Point(_at(p_page, np.zeros(2)), radius_mm=0.9, name="pole")
+    occ.add_box((p_page[0] - 1, p_page[1] - 1, p_page[0] + 1, p_page[1] + 1))
+    F_text = f"{nt.sym('dynamics.F')} = {value_text(nt, g.F_abs, 'N')}"
+    els: list[Element] = lever_lines + line_of_action + [arm, h_label, force, pole]
+    els += _lever_names(study, g, p_page, img, force, F_text, occ, sheet.box)
+    # the result, worked out on the drawing, beside the power method's value
+    M_lever = g.F_abs * h_mm * s_v.per_mm / g.omega_1
+    rows = _lever_rows(g, nt, F_text, h_mm, s_v, M_lever)
+    probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM, row_height_mm=lay.row_mm)
+    table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM,
+                  row_height_mm=lay.row_mm, name="result")
+    occ.add_box((table.at[0], table.at[1], table.at[0] + table.width_mm, table.at[1] + table.height_mm))
+    els += [table]
+    scales = (s_v, s_F)
+    elements = [sheet.header()] + els + sheet.captions(scales)
+    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
+                 notes=(s_v.note, s_F.note, f"position {k}: M_r by the lever {M_lever:.6g} N·m, by power "
+                        f"{g.load.M_r:.6g} N·m"))
 
-    def layout(s_v):
-        """Paper offsets from p (mm) of the images, the force's tip and the arm's foot."""
-        img = {p: np.array([v[0], -v[1]]) / s_v.per_mm for p, v in images.items()}
-        b = img[P]
-        tip = b + Fhat * f_len
-        foot = b - Fhat * float(np.dot(b, Fhat))              # foot of the perpendicular from p
+
+@dataclass(frozen=True)
+class ZhukovskyLayout:
+    """The millimetre constants of the Zhukovsky lever sheet."""
+
+    left_mm: float = 12.0        # the lever's box inside the frame: left
+    top_mm: float = 8.0          # below the title
+    table_gap_mm: float = 14.0   # left of the result table
+    bottom_mm: float = 14.0      # above the captions
+    force_mm: float = 30.0       # the force vector's length when μ_F is picked
+    arm_offset_mm: float = 8.0   # the arm's dimension line from the arm
+    row_mm: float = 7.0          # the result table's rows
+
+
+LEVER = ZhukovskyLayout()
+
+
+def _lever_position(study: Study, position: int | None) -> int:
+    """The position drawn: the given one (0…m, m being 0 again), or the one with the largest M_r."""
+    m = study.m
+    if position is None:
+        return _default_lever_position(study)
+    if isinstance(position, bool) or not isinstance(position, (int, np.integer)) or not 0 <= position <= m:
+        raise InputError(f"position {position!r}: give a position number 0…{m}")
+    return int(position) % m
+
+
+def _at(p_page: np.ndarray, off: np.ndarray) -> tuple[float, float]:
+    """The page point ``off`` mm from the pole p."""
+    q = p_page + off
+    return (float(q[0]), float(q[1]))
+
+
+@dataclass(frozen=True)
+class LeverGeometry:
+    """The velocity plan at one position turned 90° against ω₁ (m/s), and the load at the image of its point."""
+
+    k: int
+    names: tuple[str, ...]
+    images: dict[str, np.ndarray]      # m/s, turned
+    load: LeverLoad
+    F_abs: float                       # N
+    Fhat: np.ndarray                   # the force's direction on paper (y down)
+    omega_1: float                     # rad/s
+
+    @classmethod
+    def of(cls, study: Study, k: int) -> LeverGeometry:
+        plans = study.plans
+        sense = int(plans.sense)
+
+        def turned(v: object) -> np.ndarray:
+            v = np.asarray(v, dtype=float)
+            return np.array([v[1], -v[0]]) if sense > 0 else np.array([-v[1], v[0]])
+
+        names = tuple(plans.order)
+        ld = lever_load(study, k)
+        F = np.asarray(ld.force, dtype=float)
+        F_abs = float(np.hypot(*F))
+        return cls(k, names, {p: turned(plans.v(p)[k]) for p in names}, ld, F_abs, np.array([F[0], -F[1]]) / F_abs,
+                   float(plans.omega_1))
+
+    def paper(self, v: np.ndarray, s_v: Scale) -> np.ndarray:
+        """A turned velocity as a paper offset from p (mm, y down)."""
+        return np.array([v[0], -v[1]]) / s_v.per_mm
+
+    def on_paper(self, s_v: Scale, f_len: float) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray,
+                                                          np.ndarray, np.ndarray]:
+        """Paper offsets from p (mm) of the images, the force's tip and the arm's foot, and their extent."""
+        img = {p: np.array([v[0], -v[1]]) / s_v.per_mm for p, v in self.images.items()}
+        b = img[self.load.point]
+        tip = b + self.Fhat * f_len
+        foot = b - self.Fhat * float(np.dot(b, self.Fhat))              # foot of the perpendicular from p
         cloud = np.vstack(list(img.values()) + [np.zeros(2), tip, foot])
         return img, tip, foot, cloud.min(axis=0), cloud.max(axis=0)
 
-    rows_probe = ((word(nt, "plan_turned"), f"{sym(nt, 'omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
-                  (word(nt, "by_lever"), f"= {nb(F_abs)}·00.00·{nb(1.0e-4)}/{nb(omega_1)}"))
-    table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=TEXT_MM).width_mm
-    box = (x0 + 12.0, sheet.top + 8.0, x1 - table_w - 14.0, sheet.caption_y - 14.0)
+
+def _pole_on_page(box: Box, lo: np.ndarray, hi: np.ndarray, s_v: Scale, s_F: Scale) -> np.ndarray:
+    """Where the pole p stands so that the lever's extent ``lo``…``hi`` (mm from p) is centred in ``box``.
+
+    Raises
+    ------
+    InputError
+        When the lever at the given scales does not fit the box.
+    """
     bw, bh = box[2] - box[0], box[3] - box[1]
-    span = max(float(np.ptp([v[0] for v in images.values()] + [0.0])) / bw,
-               float(np.ptp([v[1] for v in images.values()] + [0.0])) / bh)
-    if mu_v is None:
-        s_v = None
-        for c in sorted({float(f"{mm!r}e{e}") for e in range(math.floor(math.log10(span)) - 1,
-                                                                math.floor(math.log10(span)) + 4)
-                         for mm in (1.0, 2.0, 2.5, 4.0, 5.0)}):
-            if c < span:
-                continue
-            trial = Scale(sym(nt, "mu_v"), u_v, c)
-            lo, hi = layout(trial)[3:]
-            if hi[0] - lo[0] <= bw and hi[1] - lo[1] <= bh:
-                s_v = Scale(sym(nt, "mu_v"), u_v, c, note=f"picked: the lever fits {bw:.0f} × {bh:.0f} mm at "
-                                                           f"{nb(c)} (m/s)/mm")
-                break
-        if s_v is None:  # pragma: no cover - the force alone cannot exceed its 30 mm
-            raise InputError("the lever does not fit the sheet; give mu_v and mu_F")
-    else:
-        s_v = mu_v if isinstance(mu_v, Scale) else Scale(sym(nt, "mu_v"), u_v, mu_v)
-    img, tip, foot, lo, hi = layout(s_v)
     if hi[0] - lo[0] > bw + 1e-9 or hi[1] - lo[1] > bh + 1e-9:
         raise InputError(f"the lever at {markup.plain(s_v.caption())} and {markup.plain(s_F.caption())} needs "
                          f"{(hi - lo)[0]:.0f} × {(hi - lo)[1]:.0f} mm but the sheet leaves {bw:.0f} × {bh:.0f} mm; "
                          f"give larger scales or none")
-    p_page = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2]) - (lo + hi) / 2
-    b_img = img[P]
+    return np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2]) - (lo + hi) / 2
 
-    def at(off):
-        q = p_page + off
-        return (float(q[0]), float(q[1]))
 
-    def paper(v):
-        return np.array([v[0], -v[1]]) / s_v.per_mm
-
-    occ = sheet.occ
-    els = []
-    # the lever: lines from p to every image, and the links between images
-    lever_lines = []
-    for p in names:
-        if plans.label(p) == "p" or np.hypot(*images[p]) == 0:
+def _lever_scale(g: LeverGeometry, mu_v: object, box: Box, f_len: float, nt: Notation) -> Scale:
+    """μ_v: given, or the first round value at which the lever (images, force, arm) fits the box."""
+    u_v = nt.unit("(m/s)")
+    if mu_v is not None:
+        return mu_v if isinstance(mu_v, Scale) else Scale(nt.sym("dynamics.mu_v"), u_v, mu_v)  # type: ignore[arg-type]
+    bw, bh = box[2] - box[0], box[3] - box[1]
+    span = max(float(np.ptp([v[0] for v in g.images.values()] + [0.0])) / bw,
+               float(np.ptp([v[1] for v in g.images.values()] + [0.0])) / bh)
+    for c in sorted({float(f"{mm!r}e{e}") for e in range(math.floor(math.log10(span)) - 1,
+                                                            math.floor(math.log10(span)) + 4)
+                     for mm in (1.0, 2.0, 2.5, 4.0, 5.0)}):
+        if c < span:
             continue
-        lever_lines.append(Line(at(np.zeros(2)), at(paper(images[p])), style=MAIN,
+        lo, hi = g.on_paper(Scale(nt.sym("dynamics.mu_v"), u_v, c), f_len)[3:]
+        if hi[0] - lo[0] <= bw and hi[1] - lo[1] <= bh:
+            return Scale(nt.sym("dynamics.mu_v"), u_v, c, note=f"picked: the lever fits {bw:.0f} × {bh:.0f} mm at "
+                                                              f"{nt.number(c)} (m/s)/mm")
+    raise InputError("the lever does not fit the sheet; give mu_v and mu_F")  # pragma: no cover - F alone fits
+
+
+def _lever_lines(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[str, np.ndarray], tip: np.ndarray,
+                 foot: np.ndarray, f_len: float) -> tuple[list[Element], Vector, list[Element], float]:
+    """The lever (p to every image, the links between images), the force, its line of action to the arm's foot."""
+    plans = study.plans
+    lever_lines: list[Element] = []
+    for p in g.names:
+        if plans.label(p) == "p" or np.hypot(*g.images[p]) == 0:
+            continue
+        lever_lines.append(Line(_at(p_page, np.zeros(2)), _at(p_page, img[p]), style=MAIN,
                                 name=f"lever-p{plans.label(p)}"))
     for link in study.mechanism.omega_links:
-        ends = _link_points(link, names)
+        ends = _link_points(link, list(g.names))
         if ends is None or any(plans.label(e) == "p" for e in ends):
             continue
         a, b = ends
-        lever_lines.append(Line(at(paper(images[a])), at(paper(images[b])), style=MAIN,
+        lever_lines.append(Line(_at(p_page, img[a]), _at(p_page, img[b]), style=MAIN,
                                 name=f"lever-{plans.label(a)}{plans.label(b)}"))
-    force = Vector(at(b_img), at(tip), name="force-F")
-    line_of_action = []
-    t_foot = float(np.dot(foot - b_img, Fhat))
+    b_img = img[g.load.point]
+    force = Vector(_at(p_page, b_img), _at(p_page, tip), name="force-F")
+    line_of_action: list[Element] = []
+    t_foot = float(np.dot(foot - b_img, g.Fhat))
     if t_foot < 0.0 or t_foot > f_len:         # the foot is off the vector: carry its line of action there
         far = tip if t_foot > f_len else b_img
-        line_of_action.append(Line(at(far), at(foot), style=Style(width_mm=0.18, dash=(5.0, 1.2, 1.0, 1.2)),
-                                   name="line-of-action"))
-    h_mm = float(np.hypot(*foot))
-    occ.register(*lever_lines, force, *line_of_action)
-    # the arm's dimension line beside it, on the side away from the lever
+        line_of_action.append(Line(_at(p_page, far), _at(p_page, foot),
+                                   style=Style(width_mm=0.18, dash=(5.0, 1.2, 1.0, 1.2)), name="line-of-action"))
+    return lever_lines, force, line_of_action, float(np.hypot(*foot))
+
+
+def _lever_arm(g: LeverGeometry, p_page: np.ndarray, img: dict[str, np.ndarray], foot: np.ndarray, h_mm: float,
+               occ: FastOccupancy, nt: Notation, within: Box) -> tuple[Dimension, Text]:
+    """The arm h dimensioned beside it, on the side away from the lever, and its value written along it."""
     u = foot / max(h_mm, 1e-12)
     normal = np.array([-u[1], u[0]])
-    centre = np.mean(np.vstack([paper(v) for v in images.values()]), axis=0) - foot / 2
+    centre = np.mean(np.vstack(list(img.values())), axis=0) - foot / 2
     side = -1.0 if float(np.dot(centre, normal)) > 0 else 1.0
-    arm = Dimension(at(np.zeros(2)), at(foot), "", offset_mm=8.0 * side, size_mm=TEXT_MM, name="dimension-h")
+    arm = Dimension(_at(p_page, np.zeros(2)), _at(p_page, foot), "", offset_mm=LEVER.arm_offset_mm * side,
+                    size_mm=TEXT_MM, name="dimension-h")
     occ.register(arm)
-    h_text = f"{sym(nt, 'h')} = {nb(h_mm)} {unit(nt, 'mm')}"
+    h_text = f"{nt.sym('dynamics.h')} = {nt.number(h_mm)} {nt.unit('mm')}"
     a_, b_ = np.asarray(arm.line_start), np.asarray(arm.line_end)
     away = np.asarray(arm.line_start) - np.asarray(arm.start)          # from the arm towards its dimension line
     compass = "e" if away[0] > abs(away[1]) else "w" if -away[0] > abs(away[1]) else ("s" if away[1] > 0 else "n")
@@ -1132,63 +1087,66 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
              "s": ("s", "se", "sw", "n")}[compass]
     h_lab = None
     for t in (0.5, 0.4, 0.6, 0.3, 0.7):
-        h_lab = occ.first_free(tuple((a_ + (b_ - a_) * t).tolist()), h_text, order, (1.2, 2.5), TEXT_MM, sheet.box)
+        h_lab = occ.first_free(tuple((a_ + (b_ - a_) * t).tolist()), h_text, order, (1.2, 2.5), TEXT_MM, within)
         if h_lab is not None:
             break
     if h_lab is None:
         h_lab = occ.place_label_with_leader(tuple(((a_ + b_) / 2).tolist()), h_text, order, size_mm=TEXT_MM,
-                                            within=sheet.box)[0]
+                                            within=within)[0]
     else:
         occ.add_label(h_lab)
-    h_label = Text((h_lab.x, h_lab.y), h_text, size_mm=TEXT_MM, anchor=h_lab.anchor, name="label-h")
-    pole = Point(at(np.zeros(2)), radius_mm=0.9, name="pole")
-    occ.add_box((p_page[0] - 1, p_page[1] - 1, p_page[0] + 1, p_page[1] + 1))
-    els += lever_lines + line_of_action + [arm, h_label, force, pole]
-    for p in names:
+    return arm, Text((h_lab.x, h_lab.y), h_text, size_mm=TEXT_MM, anchor=h_lab.anchor, name="label-h")
+
+
+def _lever_names(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[str, np.ndarray], force: Vector,
+                 F_text: str, occ: FastOccupancy, within: Box) -> list[Element]:
+    """The images' dots, the names p, a, b, … beside them, and the force's value."""
+    plans = study.plans
+    dots: list[Element] = []
+    for p in g.names:
         lab_text = plans.label(p)
         if lab_text == "p":
             continue
-        q = at(paper(images[p]))
-        els.append(Point(q, radius_mm=0.6, name=f"image-{lab_text}"))
+        q = _at(p_page, img[p])
+        dots.append(Point(q, radius_mm=0.6, name=f"image-{lab_text}"))
         occ.add_box((q[0] - 0.7, q[1] - 0.7, q[0] + 0.7, q[1] + 0.7))
     labels: list[Element] = []
-    for p in [None] + names:
-        text = "p" if p is None else plans.label(p)
-        if p is not None and text == "p":
+    pole: list[str | None] = [None]
+    for point in pole + list(g.names):
+        text = "p" if point is None else plans.label(point)
+        if point is not None and text == "p":
             continue
-        q = at(np.zeros(2)) if p is None else at(paper(images[p]))
-        lab = occ.place_label(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=sheet.box)
+        q = _at(p_page, np.zeros(2)) if point is None else _at(p_page, img[point])
+        lab = occ.place_label(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=within)
         labels.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"name-{text}"))
     lab, leader = occ.place_label_with_leader(force.mid, F_text, ("n", "s", "ne", "se", "nw", "sw", "e", "w"),
-                                              size_mm=TEXT_MM, gap_mm=1.5, within=sheet.box)
+                                              size_mm=TEXT_MM, gap_mm=1.5, within=within)
     labels.append(Text((lab.x, lab.y), F_text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-F"))
     if leader is not None:
         labels.append(Line(leader[0], leader[1], style=THIN, name="leader-F"))
-    # the result, worked out on the drawing, beside the power method's value
-    M_lever = F_abs * h_mm * s_v.per_mm / omega_1
-    rows = (
-        (word(nt, "plan_turned"), f"{sym(nt, 'omega_1')} = {value_text(nt, omega_1, 'rad/s')}"),
-        (word(nt, "force"), F_text),
-        (word(nt, "arm"), f"{sym(nt, 'h')} = {nb(h_mm)} {unit(nt, 'mm')}"),
-        (word(nt, "by_lever"), f"{sym(nt, 'M_r')} = {sym(nt, 'F')}·{sym(nt, 'h')}·{sym(nt, 'mu_v')}/{sym(nt, 'omega_1')}"),
-        ("", f"= {nb(F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(omega_1)}"),
+    return dots + labels
+
+
+def _lever_rows(g: LeverGeometry, nt: Notation, F_text: str, h_mm: float, s_v: Scale,
+                M_lever: float) -> tuple[tuple[str, str], ...]:
+    """The result: M_r = F·h·μ_v/ω₁ worked out on the drawing, beside the power method's value."""
+    nb = nt.number
+    return (
+        (nt.word("dynamics.plan_turned"), f"{nt.sym('dynamics.omega_1')} = {value_text(nt, g.omega_1, 'rad/s')}"),
+        (nt.word("dynamics.force"), F_text),
+        (nt.word("dynamics.arm"), f"{nt.sym('dynamics.h')} = {nb(h_mm)} {nt.unit('mm')}"),
+        (nt.word("dynamics.by_lever"),
+         f"{nt.sym('M_r')} = {nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/"
+         f"{nt.sym('dynamics.omega_1')}"),
+        ("", f"= {nb(g.F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(g.omega_1)}"),
         ("", f"= {value_text(nt, M_lever, 'N·m')}"),
-        (word(nt, "by_power"), f"{sym(nt, 'M_r')} = {value_text(nt, ld.M_r, 'N·m')}"),
+        (nt.word("dynamics.by_power"), f"{nt.sym('M_r')} = {value_text(nt, g.load.M_r, 'N·m')}"),
     )
-    probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM, row_height_mm=7.0)
-    table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM,
-                  row_height_mm=7.0, name="result")
-    occ.add_box((table.at[0], table.at[1], table.at[0] + table.width_mm, table.at[1] + table.height_mm))
-    els += labels + [table]
-    scales = (s_v, s_F)
-    elements = [sheet.header()] + els + sheet.captions(scales)
-    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
-                 notes=(s_v.note, s_F.note, f"position {k}: M_r by the lever {M_lever:.6g} N·m, by power "
-                        f"{ld.M_r:.6g} N·m"))
 
 
 __all__ = [
     "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
-    "phi_graph_elements", "turned_inertia_elements", "DownAxis", "FastOccupancy", "SheetFrame", "CurveSpec",
-    "MarkSpec", "LeverLoad", "lever_load", "sym", "word", "unit", "quantity", "value_text", "SYMBOLS", "WORDS",
+    "phi_graph_elements", "turned_inertia_elements", "axis_break", "DownAxis", "FastOccupancy", "SheetFrame",
+    "CurveSpec",
+    "MarkSpec", "LeverLoad", "lever_load", "value_text",
 ]

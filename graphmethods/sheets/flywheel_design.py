@@ -14,35 +14,19 @@ thin). Disc: J = m D²/8, m = ρ π D² B/4.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
-from graphmethods.scene import Line, Page, Scene, Text, notation as get_notation
-from graphmethods.scene.elements import Dimension, Region, Table
+from graphmethods.scene import Line, Page, Scale, Scene, Text, notation as get_notation
+from graphmethods.scene.elements import Dimension, Element, Region, Table
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import THIN, Style
-from graphmethods.sheets.dynamics import SheetFrame, unit
+from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 
 AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 OUTLINE = Style(width_mm=0.5)
-_LANG = {"en": 0, "ru": 1, "zh": 2}
-_W = {
-    "title": ("Flywheel design: rim and disc", "Конструкция маховика: обод и диск", "飞轮结构设计: 轮缘式与盘式"),
-    "rim": ("rim (spoked) flywheel", "маховик с ободом (спицевый)", "轮缘式飞轮"),
-    "disc": ("solid disc", "сплошной диск", "盘式飞轮"),
-    "rim_short": ("rim", "обод", "轮缘式"),
-    "disc_short": ("disc", "диск", "盘式"),
-    "mass": ("mass m", "масса m", "质量 m"),
-    "moment": ("flywheel moment mD²", "маховой момент mD²", "飞轮矩 mD²"),
-    "speed": ("rim speed", "окружная скорость обода", "轮缘圆周速度"),
-    "limit": ("limit", "допускаемая", "许用"),
-    "ok": ("within the limit", "в пределах допускаемой", "在许用范围内"),
-    "over": ("OVER the limit: a larger D is not allowed; use steel or a smaller n",
-             "ПРЕВЫШЕНА: сталь или меньшая частота", "超过许用值: 改用钢或降低转速"),
-}
 
-
-def _w(nt: Any, key: str) -> str:
-    return _W[key][_LANG.get(nt.code, 0)]
 
 
 def _rect(x0: float, y0: float, x1: float, y1: float) -> tuple[tuple[float, float], ...]:
@@ -64,30 +48,63 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     notation : {"en", "ru", "zh"}
     """
     nt = get_notation(notation)
-    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "title"), problem=problem, title_block=True,
-                       default_page=Page("A4", "landscape", frame=True))
+    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.design_title"), problem=problem,
+                       title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
-    top = sheet.top + 12.0
-    room_h = 0.5 * (sheet.caption_y - 22.0 - top)          # the drawings above, the table under them
+    lay = LAYOUT
+    top = sheet.top + lay.top_mm
+    room_h = 0.5 * (sheet.caption_y - lay.bottom_mm - top)  # the drawings above, the table under them
     parts = [rim] + ([disc] if disc is not None else [])
     widest = max(rim.D + rim.H, disc.D if disc is not None else 0.0)
     span_w = rim.B + (disc.B if disc is not None else 0.0)
-    room_w = (x1 - x0) * 0.55 - 90.0
-    s_l = given_scale(mu_l, "μ_l", unit(nt, "m"), max(widest, span_w * room_h / max(room_w, 1.0)), room_h,
+    room_w = (x1 - x0) * lay.drawings_share - lay.dimensions_mm
+    s_l = given_scale(mu_l, "μ_l", nt.unit("m"), max(widest, span_w * room_h / max(room_w, 1.0)), room_h,
                       what="the flywheel")
-    num = nt.number
-    mm = unit(nt, "mm")
-
-    def L(v: float) -> str:
-        return f"{num(v * 1000.0, sig=4)} {mm}"
-
-    els: list[Any] = [sheet.header()]
     cy = top + room_h / 2                                     # the axis of rotation (horizontal on paper)
-    # --- the rim flywheel: its axial section
-    xr = x0 + 50.0
+    xr = x0 + lay.rim_left_mm
+    els: list[Any] = [sheet.header()]
+    els += _rim_section(rim, s_l, nt, xr, cy, top)
+    if disc is not None:
+        els += _disc_section(disc, s_l, nt, xr + s_l.to_mm(rim.B) + lay.disc_gap_mm, cy, top)
+    els.append(Table((x0 + 10.0, cy + room_h / 2 + 14.0), _table_rows(parts, nt), align="lrr", size_mm=2.8,
+                     name="table"))
+    verdicts = []
+    for p, key in zip(parts, ("rim", "disc")):
+        verdict = nt.word("flywheel.ok") if p.rim_speed <= p.speed_limit else nt.word("flywheel.over")
+        verdicts.append(f"{nt.word(f'flywheel.{key}')}: {verdict}")
+    els.append(Text((x0, sheet.caption_y - 7.0), ";  ".join(verdicts), size_mm=TEXT_MM, name="verdict"))
+    els += sheet.captions((s_l,))
+    return Scene(sheet.page((s_l,)), tuple(els), title=sheet.title, notation=nt.code, name="flywheel-design")
+
+
+@dataclass(frozen=True)
+class FlywheelDesignLayout:
+    """The millimetre constants of the flywheel design sheet."""
+
+    top_mm: float = 12.0             # the headings below the top of the drawing
+    bottom_mm: float = 22.0          # kept above the captions
+    drawings_share: float = 0.55     # of the width, for the sections
+    dimensions_mm: float = 90.0      # of that share, for the dimensions
+    rim_left_mm: float = 50.0        # the rim's section from the frame
+    disc_gap_mm: float = 95.0        # between the rim's section and the disc's
+
+
+LAYOUT = FlywheelDesignLayout()
+
+
+def _length(nt: Notation, v: float) -> str:
+    """A length in m written in mm, ``"750 mm"``."""
+    return f"{nt.number(v * 1000.0, sig=4)} {nt.unit('mm')}"
+
+
+def _rim_section(rim: Any, s_l: Scale, nt: Notation, xr: float, cy: float, top: float) -> list[Element]:
+    """The rim flywheel's axial section at ``xr`` about the axis ``cy``: rim, spokes, hub, dimensions."""
+    els: list[Element] = []
     b = s_l.to_mm(rim.B)
     r_out, r_in = s_l.to_mm(rim.D1) / 2, s_l.to_mm(rim.D2) / 2
-    els.append(Text((xr - 30.0, top - 4.0), _w(nt, "rim"), size_mm=TEXT_MM + 0.4, bold=True, name="heading-rim"))
+    els.append(Text((xr - 30.0, top - 4.0), nt.word("flywheel.rim"), size_mm=TEXT_MM + 0.4, bold=True,
+                    name="heading-rim"))
+    hub = max(0.12 * r_in, 3.0)
     for sgn, key in ((-1, "upper"), (1, "lower")):
         ya, yb = cy + sgn * r_in, cy + sgn * r_out
         els.append(Region(_rect(xr, min(ya, yb), xr + b, max(ya, yb)), hatch_angle_deg=45.0, hatch_spacing_mm=2.0,
@@ -97,56 +114,58 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
         els.append(Line((xr, ya), (xr + b, ya), style=OUTLINE, name=f"rim-{key}-inner"))
         els.append(Line((xr, yb), (xr + b, yb), style=OUTLINE, name=f"rim-{key}-outer"))
         # a spoke and the hub (thin: neglected in J)
-        hub = max(0.12 * r_in, 3.0)
         els.append(Line((xr + b / 2, cy + sgn * hub), (xr + b / 2, ya), style=THIN, name=f"spoke-{key}"))
-    hub = max(0.12 * r_in, 3.0)
     els.append(Line((xr + b / 2 - 0.6 * b, cy - hub), (xr + b / 2 + 0.6 * b, cy - hub), style=THIN, name="hub-top"))
     els.append(Line((xr + b / 2 - 0.6 * b, cy + hub), (xr + b / 2 + 0.6 * b, cy + hub), style=THIN, name="hub-bottom"))
     els.append(Line((xr - 10.0, cy), (xr + b + 10.0, cy), style=AXIS, name="rim-axis"))
-    els.append(Dimension((xr, cy - r_out), (xr, cy + r_out), f"D_{{1}} = {L(rim.D1)}", offset_mm=12.0,
+    els.append(Dimension((xr, cy - r_out), (xr, cy + r_out), f"D_{{1}} = {_length(nt, rim.D1)}", offset_mm=12.0,
                          size_mm=TEXT_MM, name="dim-rim-D1"))
     r_m = s_l.to_mm(rim.D) / 2
-    els.append(Dimension((xr + b, cy + r_m), (xr + b, cy - r_m), f"D = {L(rim.D)}", offset_mm=42.0,
+    els.append(Dimension((xr + b, cy + r_m), (xr + b, cy - r_m), f"D = {_length(nt, rim.D)}", offset_mm=42.0,
                          size_mm=TEXT_MM, name="dim-rim-D"))
-    els.append(Dimension((xr, cy - r_out), (xr + b, cy - r_out), f"B = {L(rim.B)}", offset_mm=-6.0,
+    els.append(Dimension((xr, cy - r_out), (xr + b, cy - r_out), f"B = {_length(nt, rim.B)}", offset_mm=-6.0,
                          size_mm=TEXT_MM, name="dim-rim-B"))
-    els.append(Dimension((xr + b, cy - r_in), (xr + b, cy - r_out), f"H = {L(rim.H)}", offset_mm=6.0,
+    els.append(Dimension((xr + b, cy - r_in), (xr + b, cy - r_out), f"H = {_length(nt, rim.H)}", offset_mm=6.0,
                          size_mm=TEXT_MM, name="dim-rim-H"))
-    # --- the disc
-    if disc is not None:
-        xd = xr + b + 95.0
-        bd = s_l.to_mm(disc.B)
-        rd = s_l.to_mm(disc.D) / 2
-        els.append(Text((xd - 10.0, top - 4.0), _w(nt, "disc"), size_mm=TEXT_MM + 0.4, bold=True,
-                        name="heading-disc"))
-        els.append(Region(_rect(xd, cy - rd, xd + bd, cy + rd), hatch_angle_deg=45.0, hatch_spacing_mm=2.0,
-                          name="disc-section"))
-        for i, (p, q) in enumerate(((( xd, cy - rd), (xd + bd, cy - rd)), ((xd + bd, cy - rd), (xd + bd, cy + rd)),
-                                    ((xd + bd, cy + rd), (xd, cy + rd)), ((xd, cy + rd), (xd, cy - rd)))):
-            els.append(Line(p, q, style=OUTLINE, name=f"disc-edge-{i}"))
-        els.append(Line((xd - 10.0, cy), (xd + bd + 10.0, cy), style=AXIS, name="disc-axis"))
-        els.append(Dimension((xd + bd, cy + rd), (xd + bd, cy - rd), f"D = {L(disc.D)}", offset_mm=10.0,
-                             size_mm=TEXT_MM, name="dim-disc-D"))
-        els.append(Dimension((xd, cy - rd), (xd + bd, cy - rd), f"B = {L(disc.B)}", offset_mm=-6.0,
-                             size_mm=TEXT_MM, name="dim-disc-B"))
-    # --- the table
-    kg, kgm2, ms = unit(nt, "kg"), unit(nt, "kg·m²"), unit(nt, "m/s")
-    head = ("", _w(nt, "rim_short")) + ((_w(nt, "disc_short"),) if disc is not None else ())
+    return els
+
+
+def _disc_section(disc: Any, s_l: Scale, nt: Notation, xd: float, cy: float, top: float) -> list[Element]:
+    """The solid disc's axial section at ``xd`` about the axis ``cy``, dimensioned."""
+    els: list[Element] = []
+    bd = s_l.to_mm(disc.B)
+    rd = s_l.to_mm(disc.D) / 2
+    els.append(Text((xd - 10.0, top - 4.0), nt.word("flywheel.disc"), size_mm=TEXT_MM + 0.4, bold=True,
+                    name="heading-disc"))
+    els.append(Region(_rect(xd, cy - rd, xd + bd, cy + rd), hatch_angle_deg=45.0, hatch_spacing_mm=2.0,
+                      name="disc-section"))
+    for i, (p, q) in enumerate((((xd, cy - rd), (xd + bd, cy - rd)), ((xd + bd, cy - rd), (xd + bd, cy + rd)),
+                                ((xd + bd, cy + rd), (xd, cy + rd)), ((xd, cy + rd), (xd, cy - rd)))):
+        els.append(Line(p, q, style=OUTLINE, name=f"disc-edge-{i}"))
+    els.append(Line((xd - 10.0, cy), (xd + bd + 10.0, cy), style=AXIS, name="disc-axis"))
+    els.append(Dimension((xd + bd, cy + rd), (xd + bd, cy - rd), f"D = {_length(nt, disc.D)}", offset_mm=10.0,
+                         size_mm=TEXT_MM, name="dim-disc-D"))
+    els.append(Dimension((xd, cy - rd), (xd + bd, cy - rd), f"B = {_length(nt, disc.B)}", offset_mm=-6.0,
+                         size_mm=TEXT_MM, name="dim-disc-B"))
+    return els
+
+
+def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
+    """The table: J, m, mD², D and B, ρ and the rim speed of each flywheel."""
+    num = nt.number
+    kg, kgm2, ms, mm = nt.unit("kg"), nt.unit("kg·m²"), nt.unit("m/s"), nt.unit("mm")
+    head = ("", nt.word("flywheel.rim_short")) + ((nt.word("flywheel.disc_short"),) if len(parts) > 1 else ())
     rows: list[tuple[str, ...]] = [head]
 
     def row(label: str, f: Any) -> None:
         rows.append((label,) + tuple(f(p) for p in parts))
 
     row(f"J, {kgm2}", lambda p: num(p.J, sig=5))
-    row(f"{_w(nt, 'mass')}, {kg}", lambda p: num(p.m, sig=4))
-    row(f"{_w(nt, 'moment')}, {kgm2}", lambda p: num(p.m * p.D**2, sig=4))
+    row(f"{nt.word('flywheel.mass')}, {kg}", lambda p: num(p.m, sig=4))
+    row(f"{nt.word('flywheel.moment')}, {kgm2}", lambda p: num(p.m * p.D**2, sig=4))
     row(f"D, B, {mm}", lambda p: f"{num(p.D * 1000, sig=4)}, {num(p.B * 1000, sig=3)}")
-    row(f"ρ, {unit(nt, 'kg/m³')}", lambda p: num(p.rho, sig=4))
-    row(f"{_w(nt, 'speed')}, {ms}", lambda p: f"{num(p.rim_speed, sig=3)} ({_w(nt, 'limit')} {num(p.speed_limit, sig=3)})")
-    els.append(Table((x0 + 10.0, cy + room_h / 2 + 14.0), tuple(rows), align="lrr", size_mm=2.8, name="table"))
-    verdicts = []
-    for p, key in zip(parts, ("rim", "disc")):
-        verdicts.append(f"{_w(nt, key)}: {_w(nt, 'ok') if p.rim_speed <= p.speed_limit else _w(nt, 'over')}")
-    els.append(Text((x0, sheet.caption_y - 7.0), ";  ".join(verdicts), size_mm=TEXT_MM, name="verdict"))
-    els += sheet.captions((s_l,))
-    return Scene(sheet.page((s_l,)), tuple(els), title=sheet.title, notation=nt.code, name="flywheel-design")
+    row(f"ρ, {nt.unit('kg/m³')}", lambda p: num(p.rho, sig=4))
+    limit = nt.word("flywheel.limit")
+    row(f"{nt.word('flywheel.speed')}, {ms}",
+        lambda p: f"{num(p.rim_speed, sig=3)} ({limit} {num(p.speed_limit, sig=3)})")
+    return tuple(rows)

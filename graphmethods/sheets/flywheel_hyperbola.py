@@ -19,27 +19,12 @@ from graphmethods.dynamics.permissible_delta import delta_range, machine_row
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Line, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.primitives import DASHED, MAIN, Style
-from graphmethods.sheets.dynamics import SheetFrame, quantity, unit
+from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 
-_LANG = {"en": 0, "ru": 1, "zh": 2}
-_W = {
-    "title": ("The J_{F}–[δ] hyperbola", "Гипербола J_{F}–[δ]", "J_{F}–[δ] 双曲线"),
-    "chosen": ("chosen", "принято", "选定"),
-    "formula": ("J_{F} = ΔW_{max}/(ω_{m}²[δ]) − J_{e}",) * 3,
-    "data": ("ΔW_{max} = {W} J, ω_{m} = {w} rad/s, J_{e} = {J} kg·m²",
-             "ΔW_{max} = {W} Дж, ω_{m} = {w} рад/с, J_{e} = {J} кг·м²",
-             "ΔW_{max} = {W} J, ω_{m} = {w} rad/s, J_{e} = {J} kg·m²"),
-    "range": ("[δ] over the table's range 1/{a} … 1/{b} (recommended [δ] by machine)",
-              "[δ] в пределах таблицы 1/{a} … 1/{b} (рекомендуемые [δ] для машин)",
-              "[δ] 取表中范围 1/{a} … 1/{b} (各类机器的许用 [δ])"),
-}
 BAND = Style(width_mm=1.2)
 SMALL_MM = 2.8          # notes under the graph
 
-
-def _w(nt: Any, key: str) -> str:
-    return _W[key][_LANG.get(nt.code, 0)]
 
 
 def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, delta: float | None = None,
@@ -78,13 +63,14 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
     if not J_hi > 0:
         raise InputError(f"J_F ≤ 0 over the whole range of [δ]: J_e = {J_e:g} kg·m² already keeps δ within "
                          f"1/{1 / lo:.4g}; no flywheel and no hyperbola to draw")
-    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "title"), problem=problem, title_block=True,
+    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.hyperbola_title"), problem=problem,
+                       title_block=True,
                        default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     px0, px1 = x0 + 30.0, x1 - 28.0
     py0, py1 = sheet.top + 14.0, sheet.caption_y - 24.0
     s_d = given_scale(mu_delta, "μ_{δ}", "", hi, px1 - px0, what="the δ axis")
-    kgm2 = unit(nt, "kg·m²")
+    kgm2 = nt.unit("kg·m²")
     s_J = given_scale(mu_J, "μ_{J}", kgm2, J_hi - J_lo, py1 - py0, what="the J_F axis")
     origin = (px0, py0 + s_J.to_mm(J_hi))
 
@@ -96,7 +82,7 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
     els.append(Axis(origin, s_d, "x", min_value=0.0, max_value=hi, ticks=nice_ticks(0.0, hi, s_d),
                     label="[δ]", skip_zero_label=True, name="axis-delta"))
     els.append(Axis(origin, s_J, "y", min_value=J_lo, max_value=J_hi, ticks=nice_ticks(J_lo, J_hi, s_J),
-                    label=quantity(nt, "J_{F}", "kg·m²"), name="axis-J"))
+                    label=nt.quantity("J_{F}", "kg·m²"), name="axis-J"))
     els.append(Polyline(tuple(at(float(d), float(j)) for d, j in zip(deltas, J)), style=MAIN, name="hyperbola"))
     if row is not None:
         els.append(Line(at(row.strict, 0.0), at(row.lenient, 0.0), style=BAND, name="machine-band"))
@@ -107,15 +93,16 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
         p = at(float(delta), J_c)
         els.append(Line(at(float(delta), 0.0), p, style=DASHED, name="chosen-delta-line"))
         els.append(Line(at(0.0, J_c), p, style=DASHED, name="chosen-J-line"))
-        els.append(Point(p, f"{_w(nt, 'chosen')}: [δ] = 1/{num(1 / float(delta), sig=4)}, J_{{F}} = "
+        els.append(Point(p, f"{nt.word('flywheel.chosen')}: [δ] = 1/{num(1 / float(delta), sig=4)}, J_{{F}} = "
                             f"{num(J_c, sig=4)} {kgm2}", label_dir="e", radius_mm=0.9, size_mm=TEXT_MM,
                          name="chosen"))
     notes_y = sheet.caption_y - 16.0
-    els.append(Text((x0 + 4.0, notes_y), _w(nt, "formula") + ";  " + _w(nt, "data").replace(
-        "{W}", num(float(delta_W_max), sig=5)).replace("{w}", num(float(omega_m), sig=5)).replace(
-        "{J}", num(float(J_e), sig=4)),
+    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula") + ";  " + nt.word(
+        "flywheel.hyperbola_data", W=num(float(delta_W_max), sig=5), w=num(float(omega_m), sig=5),
+        J=num(float(J_e), sig=4)),
         size_mm=TEXT_MM, name="formula"))
-    els.append(Text((x0 + 4.0, notes_y + 5.0), _w(nt, "range").format(a=f"{1 / hi:.4g}", b=f"{1 / lo:.4g}"),
+    rng = nt.word("flywheel.hyperbola_range", a=f"{1 / hi:.4g}", b=f"{1 / lo:.4g}")
+    els.append(Text((x0 + 4.0, notes_y + 5.0), rng,
                     size_mm=SMALL_MM, name="range-note"))
     els += sheet.captions((s_d, s_J))
     return Scene(sheet.page((s_d, s_J)), tuple(els), title=sheet.title, notation=nt.code, name="flywheel-hyperbola",

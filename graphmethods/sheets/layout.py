@@ -246,18 +246,29 @@ class Occupancy:
         for side in ((up, down) if upward else (down, up)):
             for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0):
                 for ang in side:
-                    a = math.radians(ang)
-                    end = (x + r * math.cos(a), y - r * math.sin(a))
-                    d = "e" if math.cos(a) > 0.3 else "w" if math.cos(a) < -0.3 else ("n" if math.sin(a) > 0 else "s")
-                    lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-                    start = (x + 1.5 * math.cos(a), y - 1.5 * math.sin(a))
-                    if self.is_free(label_bbox(lab), within=within) and not self._line_blocked(start, end):
-                        self.add_label(lab)
-                        self.add_line((start, end))
-                        return lab, (end, start)
+                    found = self.try_leader(at, text, r, ang, size_mm=size_mm, within=within)
+                    if found is not None:
+                        return found
         lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
         self.add_label(lab)
         return lab, None
+
+    def try_leader(self, at, text: str, r: float, ang: float, *, size_mm: float, within: Box | None = None,
+                   strict: bool = True) -> tuple[Label, tuple[tuple[float, float], tuple[float, float]]] | None:
+        """The label ``r`` mm from ``at`` at ``ang`` degrees, with its leader, registered, when it is free
+        (and, ``strict``, its leader crosses no label); else None."""
+        x, y = at
+        a = math.radians(ang)
+        c, s = math.cos(a), math.sin(a)
+        end = (x + r * c, y - r * s)
+        d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
+        lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
+        start = (x + 1.5 * c, y - 1.5 * s)
+        if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
+            self.add_label(lab)
+            self.add_line((start, end))
+            return lab, (end, start)
+        return None
 
     def _line_blocked(self, p, q) -> bool:
         """Does the segment p–q cross a registered label box? (A leader may cross lines.)"""

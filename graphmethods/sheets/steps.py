@@ -709,7 +709,7 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     data = W.diagram_data(source, tangents=tangents, notation=nt)
     s_T, s_J = _axis_scale(figure, "axis-T"), _axis_scale(figure, "axis-J")
     res = data.result(s_J.per_mm, s_T.per_mm)
-    J, T = W.sym(nt, "J_e"), W.sym(nt, "dT")
+    J, T = nt.sym("dynamics.J_e"), nt.sym("dynamics.dT")
 
     def starts(*prefixes):
         return lambda n: n.startswith(prefixes)
@@ -717,10 +717,10 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     ray = {}
     for key in ("max", "min"):
         idx = res.index_omega_max if key == "max" else res.index_omega_min
-        psi = W.sym(nt, f"psi_{key}")
+        psi = nt.sym(f"dynamics.psi_{key}")
         tan = res.tan_psi_max if key == "max" else res.tan_psi_min
-        ray[key] = (_w(nt, f"ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4), w=W.sym(nt, f"omega_{key}"),
-                       i=", ".join(str(int(i)) for i in idx)),
+        ray[key] = (_w(nt, f"ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4),
+                       w=nt.sym(f"dynamics.omega_{key}"), i=", ".join(str(int(i)) for i in idx)),
                     starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
                            f"label-omega-{key}", f"leader-omega-{key}"))
     rules = [
@@ -732,8 +732,8 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
         ray["min"],
         (_w(nt, "kl_points"), ["point-k", "point-l", "name-k", "name-l"]),
         (_w(nt, "kl", kl=nt.number(float(res.kl_mm))), ["dimension-kl", "label-kl", "leader-kl"]),
-        (_w(nt, "J_F", JF=W.sym(nt, "J_F"), muT=W.sym(nt, "mu_T"), wm=W.sym(nt, "omega_m"), d=W.sym(nt, "delta"),
-              J=f"{nt.number(float(res.J_F), sig=4)} {W.unit(nt, 'kg·m²')}"), lambda n: False),
+        (_w(nt, "J_F", JF=nt.sym("dynamics.J_F"), muT=nt.sym("mu_T"), wm=nt.sym("dynamics.omega_m"),
+              d=nt.sym("dynamics.delta"), J=f"{nt.number(float(res.J_F), sig=4)} {nt.unit('kg·m²')}"), lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
@@ -835,7 +835,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
          lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
         (_w(nt, "load", F=_text_of(figure, "label-F")), _leader_of(["force-F", "label-F"])),
         (_w(nt, "arm", h=_text_of(figure, "label-h")), _leader_of(["dimension-h", "label-h"])),
-        (_w(nt, "balance", Mr=D.sym(nt, "M_r")), lambda n: False),
+        (_w(nt, "balance", Mr=nt.sym("M_r")), lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 

@@ -33,10 +33,12 @@ The construction itself (support lines, tangencies, the error estimate) is
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
 
+from graphmethods.dynamics.study import Study
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
 from graphmethods.scene import (
@@ -50,22 +52,23 @@ from graphmethods.scene import (
     Scene,
     Table,
     Text,
-    in_language,
     markup,
     nice_ticks,
     notation as get_notation,
     pick_scale,
 )
 from graphmethods.scene.elements import Element, label_bbox, make_label
-from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.scene.notation import Notation
+from graphmethods.scene.primitives import MAIN, THIN, Label, Style
 from graphmethods.sheets.dynamics import (
     PROJECTION,
     SMALL_MM,
     TEXT_MM,
     TWO_PI,
     CurveSpec,
-    SheetFrame,
+    DrawnMoments,
     as_study,
+    axis_break,
     clear_ticks,
     delta_T_curve,
     drawn_moments,
@@ -75,61 +78,21 @@ from graphmethods.sheets.dynamics import (
     inertia_curve,
     phi_graph_elements,
     problem_text,
-    quantity,
-    sym,
+    suppressed_base,
     turned_inertia_elements,
-    unit,
     value_text,
 )
+from graphmethods.sheets.frame import FastOccupancy, SheetFrame
+from graphmethods.sheets.layout import Box, Occupancy
 
 RAY = Style(width_mm=0.35)
+LEADER = Style(width_mm=0.13)
 TABLE_MM = 3.0
-
-WORDS = {
-    "wittenbauer":      ("Energy–mass diagram (Wittenbauer)", "Диаграмма энергомасс (Виттенбауэра)",
-                         "能量–质量图（维滕鲍尔图）"),
-    "dynamic_analysis": ("Dynamic analysis: flywheel by the Wittenbauer method",
-                         "Динамический анализ: маховик по методу Виттенбауэра",
-                         "动力学分析：维滕鲍尔法求飞轮"),
-    "moments":          ("Reduced moments", "Приведённые моменты", "等效力矩"),
-    "energy":           ("Increment of kinetic energy", "Приращение кинетической энергии", "动能增量"),
-    "inertia_turned":   ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции (повёрнут на 90°)",
-                         "等效转动惯量（旋转90°）"),
-    "result":           ("Result", "Результат", "结果"),
-    "delta":            ("coefficient of fluctuation", "коэффициент неравномерности", "速度不均匀系数"),
-    "omega_m":          ("mean angular velocity", "средняя угловая скорость", "平均角速度"),
-    "M_d":              ("driving moment", "движущий момент", "等效驱动力矩"),
-    "M_r":              ("resisting moment", "момент сопротивления", "等效阻抗力矩"),
-    "scale_J":          ("scale of J_e", "масштаб J_п", "J_e比例尺"),
-    "scale_T":          ("scale of ΔT", "масштаб ΔT", "ΔE比例尺"),
-    "scale_M":          ("scale of M", "масштаб M", "M比例尺"),
-    "scale_phi":        ("scale of φ", "масштаб φ", "φ比例尺"),
-    "tan_max":          ("upper ray", "верхний луч", "上射线"),
-    "tan_min":          ("lower ray", "нижний луч", "下射线"),
-    "k":                ("intercept k", "отрезок k", "截距k"),
-    "l":                ("intercept l", "отрезок l", "截距l"),
-    "kl":               ("segment kl", "отрезок kl", "线段kl"),
-    "J_F":              ("flywheel", "маховик", "飞轮"),
-    "at_omega_max":     ("ω_{max} at position", "ω_{max} в положении", "ω_{max}位置"),
-    "at_omega_min":     ("ω_{min} at position", "ω_{min} в положении", "ω_{min}位置"),
-    "error":            ("error estimate (m = {m})", "оценка погрешности (m = {m})", "误差估计（m = {m}）"),
-    "O1":               ("O_1 (off the sheet)", "O_1 (вне листа)", "O_1（图外）"),
-    "O1_on":            ("O_1", "O_1", "O_1"),
-    "none":             ("not estimated", "не оценена", "未估计"),
-    "tangents":         ("tangents", "тангенсы", "正切"),
-    "tangents_exact":   ("(1 ± δ/2)²", "(1 ± δ/2)²", "(1 ± δ/2)²"),
-    "tangents_textbook": ("(1 ± δ)", "(1 ± δ)", "(1 ± δ)"),
-}
-
 
 def bold_bbox(lab):
     """The box a bold label covers: bold glyphs run about 10 % wider than the estimate for regular ones."""
     x0, y0, x1, y1 = label_bbox(lab)
     return (x0, y0, x1 + 0.1 * (x1 - x0), y1)
-
-
-def _w(nt, key: str, **kw) -> str:
-    return in_language(WORDS[key], nt, **kw)
 
 
 # ----------------------------------------------------------------------------- data
@@ -225,6 +188,32 @@ def ray_span(*, intercept_mm: float, tan: float, origin, clip, avoid=(), O1_x: f
     return lo, hi
 
 
+def offset_origin(res: WittenbauerResult, J_0: float) -> WittenbauerResult:
+    """The construction with its ordinate axis at J_e = J_0 (kg·m²) instead of 0: a suppressed zero.
+
+    The points move J_0/μ_J mm to the left; the rays keep their slopes (tan ψ of the true J_e);
+    k, l and kl become the intercepts on the new ordinate axis, kl growing by δ·ω_m²·J_0/μ_T (the
+    slopes on paper differ by δω_m²μ_J/μ_T for either form of the tangents), so that
+    J_F = μ_T·kl/(ω_m²[δ]) − J_0. O1 moves with the points; J_F and every angle stay.
+
+    >>> import numpy as np
+    >>> from graphmethods.dynamics.wittenbauer import wittenbauer
+    >>> phi = np.linspace(0, 2 * np.pi, 13)
+    >>> res = wittenbauer(J_e=2 + 0.4 * np.cos(phi + 0.7), delta_T=300 * np.sin(phi), omega_m=20.0, delta=0.05,
+    ...                   mu_J=0.01, mu_T=5.0)
+    >>> moved = offset_origin(res, 1.5)
+    >>> float(round(moved.x_mm.min() - res.x_mm.min(), 9)), moved.tan_psi_max == res.tan_psi_max
+    (-150.0, True)
+    >>> round(moved.mu_T * moved.kl_mm / (moved.omega_m**2 * moved.delta) - 1.5 - res.J_F, 9)
+    0.0
+    """
+    dx = J_0 / res.mu_J
+    return replace(res, x_mm=np.asarray(res.x_mm) - dx, k_mm=res.k_mm + res.tan_psi_max * dx,
+                   l_mm=res.l_mm + res.tan_psi_min * dx,
+                   kl_mm=res.kl_mm + res.omega_m**2 * res.delta * J_0 / res.mu_T,
+                   O1_mm=(res.O1_mm[0] - dx, res.O1_mm[1]))
+
+
 def _arc(centre, radius: float, a0: float, a1: float, n: int = 24) -> tuple:
     """Points of a circular arc on paper from angle a0 to a1 (rad, counterclockwise as seen)."""
     t = np.linspace(a0, a1, n)
@@ -241,8 +230,9 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
 
 def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(), J_to: float, T_hi: float,
                      T_lo: float, within=None, prefix: str = "", y_top_mm: float | None = None,
-                     label_step: int | None = None, register_only=(), own_frame: bool = False) -> list:
-    """The energy–mass diagram at ``origin`` (page point of J_e = 0, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
+                     label_step: int | None = None, register_only=(), own_frame: bool = False,
+                     J_from: float = 0.0) -> list:
+    """The energy–mass diagram at ``origin`` (page point of J_e = J_from, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
 
     Parameters
     ----------
@@ -260,6 +250,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         Clip the rays to the diagram's own frame instead of ``clip``: from the ordinate axis
         (or just as far left of it as the marks of ψ need) to just past the curve, between the
         levels T_lo and T_hi (10 mm margin). O1 is drawn only when it lies in that frame.
+    J_from : float
+        Where the abscissa starts (kg·m²): 0, or a suppressed zero near J_e,min (marked by a zigzag);
+        ``res`` is then the construction with its ordinate axis there (:func:`offset_origin`).
 
     Returns
     -------
@@ -270,96 +263,202 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         ``{prefix}pos-k`` …
     """
     nt = get_notation(nt)
-    ox, oy = origin
-    m = res.m
-    s_J = Scale(sym(nt, "mu_J"), unit(nt, "kg·m²"), res.mu_J)
-    s_T = Scale(sym(nt, "mu_T"), unit(nt, "J"), res.mu_T)
-    X = np.asarray(res.x_mm, dtype=float)
-    Y = np.asarray(res.y_mm, dtype=float)
-
-    def P(x, y):
-        return (ox + float(x), oy - float(y))
-
-    # axes
-    ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
-    ax_T = Axis(origin, s_T, "y", min_value=T_lo, max_value=max(T_hi, T_lo + s_T.per_mm), ticks=ticks_T,
-                label=quantity(nt, sym(nt, "dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True,
-                name=f"{prefix}axis-T")
-    below = float(np.mean(Y[:-1] < 0)) > 0.5
-    ticks_J = tuple(t for t in nice_ticks(0.0, J_to, s_J, min_gap_mm=14.0) if 0.0 <= t <= J_to)
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=J_to, ticks=ticks_J,
-                label=quantity(nt, sym(nt, "J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
-                labels_side="above" if below else "below", skip_zero_label=True, name=f"{prefix}axis-J")
-    curve = Polyline(tuple(P(x, y) for x, y in zip(X[:-1], Y[:-1])), style=MAIN, closed=True,
-                     name=f"{prefix}curve")
-    k_pt, l_pt = P(0.0, res.k_mm), P(0.0, res.l_mm)
-    # kl and the angles ψ go right of the ordinate axis (inside the wedge of the rays) when the curve
-    # leaves room there, else left of it (ψ then marked as the vertical angle, between the rays' lower
-    # left parts and the horizontal)
-    R = 16.0
-    right = float(X[:-1].min()) >= R + 14.0
-    side = 1.0 if right else -1.0
-    tick_w = max((markup.text_width_mm(nt.number(t), SMALL_MM) for t in ticks_T), default=0.0)
-    off = 7.0 if right else tick_w + 2.3 + 4.0              # left of the axis: beyond its tick labels
-    dim = Dimension(l_pt, k_pt, "", offset_mm=off * side * (1.0 if res.kl_mm > 0 else -1.0), size_mm=TEXT_MM,
-                    name=f"{prefix}dimension-kl")
-    R = R if right else off + 10.0
+    d = _DiagramPlace.of(res, origin, nt, J_to=J_to, T_hi=T_hi, T_lo=T_lo, J_from=J_from, prefix=prefix)
     if own_frame:        # the diagram's own frame: the rays never run across the rest of the sheet
-        clip = (ox if right else ox - (R + 6.0), oy - s_T.to_mm(T_hi) - 10.0,
-                ox + max(float(X.max()), s_J.to_mm(J_to)) + 10.0, oy - s_T.to_mm(T_lo) + 10.0)
-    # the rays, from the frame (or O1) to just past the curve
-    O1x = float(res.O1_mm[0])
-    rays = []
-    for key, b, tan, idx in (("max", res.k_mm, res.tan_psi_max, res.index_omega_max),
-                             ("min", res.l_mm, res.tan_psi_min, res.index_omega_min)):
-        lo, hi = ray_span(intercept_mm=b, tan=tan, origin=origin, clip=clip, avoid=avoid, O1_x=O1x,
-                          x_from=float(X[list(idx)].max()) + 2.0, x_to=float(X.max()) + 8.0, y_top=y_top_mm)
-        rays.append(Line(P(lo, b + tan * lo), P(hi, b + tan * hi), style=RAY, name=f"{prefix}ray-{key}"))
-    psi_els: list[Element] = []
-    for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
-        psi_els.append(Line(pt, (pt[0] + side * (R + 4.0), pt[1]), style=THIN,
-                            name=f"{prefix}psi-{key}-reference"))
-        arc = _arc(pt, R, 0.0, psi) if right else _arc(pt, R, math.pi, math.pi + psi)
-        psi_els.append(Polyline(arc, style=THIN, name=f"{prefix}psi-{key}-arc"))
+        clip = d.own_frame()
+    curve = Polyline(tuple(d.P(x, y) for x, y in zip(d.X[:-1], d.Y[:-1])), style=MAIN, closed=True,
+                     name=f"{prefix}curve")
+    rays = _rays(res, d, clip=clip, avoid=avoid, y_top_mm=y_top_mm)
+    dim = Dimension(d.l_pt, d.k_pt, "", offset_mm=d.off * d.side * (1.0 if res.kl_mm > 0 else -1.0), size_mm=TEXT_MM,
+                    name=f"{prefix}dimension-kl")
+    psi_els = _psi_marks(res, d)
+    if J_from > 0.0:
+        psi_els.append(axis_break((d.origin[0] + 5.0, d.origin[1]), f"{prefix}axis-J-break"))
     occ.register(curve, *rays, dim, *psi_els, *register_only)
+    ax_T, ax_J = _diagram_axes(d, occ, nt)
+    els: list[Element] = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
+    els += _diagram_points(res, d, occ, within)
+    els += _psi_labels(res, d, occ, nt, within)
+    els += _kl_label(res, d, dim, occ, nt, within)
+    els += _position_labels(res, d, occ, nt, within, label_step)
+    O1 = d.P(*res.O1_mm)
+    if clip[0] <= O1[0] <= clip[2] and clip[1] <= O1[1] <= clip[3]:
+        els.append(Point(O1, radius_mm=0.8, name=f"{prefix}point-O1"))
+        lab = occ.place_label(O1, "O_1", ("nw", "w", "sw", "n"), size_mm=TEXT_MM + 0.5, within=within)
+        els.append(Text((lab.x, lab.y), "O_1", size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{prefix}name-O1"))
+    return els
+
+
+@dataclass(frozen=True)
+class DiagramLayout:
+    """The millimetre constants of the energy–mass diagram (:func:`diagram_elements`)."""
+
+    psi_radius_mm: float = 16.0      # the arcs of ψ, when right of the ordinate axis
+    psi_room_mm: float = 14.0        # and the room the curve must leave there beyond them
+    kl_right_mm: float = 7.0         # the kl dimension right of the axis
+    kl_left_mm: float = 4.0          # or left of the axis's tick labels
+    frame_mm: float = 10.0           # the diagram's own frame around its content
+    ray_past_touch_mm: float = 2.0   # a ray runs at least this far past its last tangency
+    ray_past_curve_mm: float = 8.0   # and ends this far past the curve's largest J
+
+
+DIAGRAM = DiagramLayout()
+
+
+@dataclass(frozen=True)
+class _DiagramPlace:
+    """Where a diagram stands: its origin, points (mm from it), the side of k, l, kl and ψ, the axes' scales."""
+
+    origin: tuple[float, float]
+    X: np.ndarray
+    Y: np.ndarray
+    s_J: Scale
+    s_T: Scale
+    ticks_T: tuple[float, ...]
+    ticks_J: tuple[float, ...]
+    J_from: float
+    J_to: float
+    T_lo: float
+    T_hi: float
+    right: bool          # kl and ψ right of the ordinate axis (inside the wedge of the rays), else left
+    R: float             # the radius of the ψ arcs
+    off: float           # the kl dimension's distance from the axis
+    k_pt: tuple[float, float]
+    l_pt: tuple[float, float]
+    prefix: str
+
+    @property
+    def side(self) -> float:
+        return 1.0 if self.right else -1.0
+
+    def P(self, x: float, y: float) -> tuple[float, float]:
+        """The page point of (x, y) mm from the origin (y up)."""
+        return (self.origin[0] + float(x), self.origin[1] - float(y))
+
+    @classmethod
+    def of(cls, res: WittenbauerResult, origin: tuple[float, float], nt: Notation, *, J_to: float, T_hi: float,
+           T_lo: float, J_from: float, prefix: str, lay: DiagramLayout = DIAGRAM) -> _DiagramPlace:
+        """kl and the angles ψ go right of the ordinate axis when the curve leaves room there, else left
+        of it (ψ then marked as the vertical angle, between the rays' lower left parts and the horizontal)."""
+        s_J = Scale(nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), res.mu_J)
+        s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
+        X, Y = np.asarray(res.x_mm, dtype=float), np.asarray(res.y_mm, dtype=float)
+        ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
+        ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=14.0) if J_from <= t <= J_to)
+        R = lay.psi_radius_mm
+        right = float(X[:-1].min()) >= R + lay.psi_room_mm
+        tick_w = max((markup.text_width_mm(nt.number(t), SMALL_MM) for t in ticks_T), default=0.0)
+        off = lay.kl_right_mm if right else tick_w + 2.3 + lay.kl_left_mm    # left: beyond the tick labels
+        R = R if right else off + 10.0
+        ox, oy = origin
+        return cls((ox, oy), X, Y, s_J, s_T, ticks_T, ticks_J, J_from, J_to, T_lo, T_hi, right, R, off,
+                   (ox, oy - float(res.k_mm)), (ox, oy - float(res.l_mm)), prefix)
+
+    def own_frame(self, lay: DiagramLayout = DIAGRAM) -> tuple[float, float, float, float]:
+        """The diagram's own frame: from the ordinate axis (or the ψ marks left of it) to past the curve."""
+        ox, oy = self.origin
+        return (ox if self.right else ox - (self.R + 6.0), oy - self.s_T.to_mm(self.T_hi) - lay.frame_mm,
+                ox + max(float(self.X.max()), self.s_J.to_mm(self.J_to - self.J_from)) + lay.frame_mm,
+                oy - self.s_T.to_mm(self.T_lo) + lay.frame_mm)
+
+
+def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[Axis, Axis]:
+    """The ΔT and J_e axes through the origin (J_e from ``J_from``), their tick labels kept off what is drawn."""
+    ox, oy = d.origin
+    s_T, s_J, T_lo, T_hi = d.s_T, d.s_J, d.T_lo, d.T_hi
+    ax_T = Axis(d.origin, s_T, "y", min_value=T_lo, max_value=max(T_hi, T_lo + s_T.per_mm), ticks=d.ticks_T,
+                label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal,
+                skip_zero_label=True, name=f"{d.prefix}axis-T")
+    below = float(np.mean(d.Y[:-1] < 0)) > 0.5
+    ax_J = Axis((ox - s_J.to_mm(d.J_from), oy), s_J, "x", min_value=d.J_from, max_value=d.J_to, ticks=d.ticks_J,
+                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
+                labels_side="above" if below else "below", skip_zero_label=True, name=f"{d.prefix}axis-J")
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
     ax_T = clear_ticks(ax_T, occ, keep_values=True)
     occ.register(ax_T)
     ax_J = clear_ticks(ax_J, occ, keep_values=True)
     occ.register(ax_J)
-    els: list[Element] = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
-    # vertices, k, l, tangencies
-    for i in range(m):
-        p = P(X[i], Y[i])
-        els.append(Point(p, radius_mm=0.6, name=f"{prefix}vertex-{i}"))
+    return ax_T, ax_J
+
+
+def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
+          avoid: tuple[tuple[float, float, float, float], ...], y_top_mm: float | None,
+          lay: DiagramLayout = DIAGRAM) -> list[Element]:
+    """The rays at ψ_max through k and at ψ_min through l, from the frame (or O1) to just past the curve."""
+    O1x = float(res.O1_mm[0])
+    rays: list[Element] = []
+    for key, b, tan, idx in (("max", res.k_mm, res.tan_psi_max, res.index_omega_max),
+                             ("min", res.l_mm, res.tan_psi_min, res.index_omega_min)):
+        lo, hi = ray_span(intercept_mm=b, tan=tan, origin=d.origin, clip=clip, avoid=avoid, O1_x=O1x,
+                          x_from=float(d.X[list(idx)].max()) + lay.ray_past_touch_mm,
+                          x_to=float(d.X.max()) + lay.ray_past_curve_mm, y_top=y_top_mm)
+        rays.append(Line(d.P(lo, b + tan * lo), d.P(hi, b + tan * hi), style=RAY, name=f"{d.prefix}ray-{key}"))
+    return rays
+
+
+def _psi_marks(res: WittenbauerResult, d: _DiagramPlace) -> list[Element]:
+    """The horizontal reference and the arc of ψ_max at k and of ψ_min at l."""
+    els: list[Element] = []
+    for key, pt, psi in (("max", d.k_pt, res.psi_max), ("min", d.l_pt, res.psi_min)):
+        els.append(Line(pt, (pt[0] + d.side * (d.R + 4.0), pt[1]), style=THIN, name=f"{d.prefix}psi-{key}-reference"))
+        arc = _arc(pt, d.R, 0.0, psi) if d.right else _arc(pt, d.R, math.pi, math.pi + psi)
+        els.append(Polyline(arc, style=THIN, name=f"{d.prefix}psi-{key}-arc"))
+    return els
+
+
+def _diagram_points(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, within: Box | None) -> list[Element]:
+    """The vertices, the tangencies (open circles), the points k and l and their names."""
+    els: list[Element] = []
+    for i in range(res.m):
+        p = d.P(d.X[i], d.Y[i])
+        els.append(Point(p, radius_mm=0.6, name=f"{d.prefix}vertex-{i}"))
         occ.add_box((p[0] - 0.8, p[1] - 0.8, p[0] + 0.8, p[1] + 0.8))
     for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
         for i in idx:
-            p = P(X[i], Y[i])
-            els.append(Point(p, radius_mm=1.3, filled=False, name=f"{prefix}tangency-{key}-{i}"))
+            p = d.P(d.X[i], d.Y[i])
+            els.append(Point(p, radius_mm=1.3, filled=False, name=f"{d.prefix}tangency-{key}-{i}"))
             occ.add_box((p[0] - 1.5, p[1] - 1.5, p[0] + 1.5, p[1] + 1.5))
-    for key, pt in (("k", k_pt), ("l", l_pt)):
-        els.append(Point(pt, radius_mm=0.7, name=f"{prefix}point-{key}"))
+    for key, pt in (("k", d.k_pt), ("l", d.l_pt)):
+        els.append(Point(pt, radius_mm=0.7, name=f"{d.prefix}point-{key}"))
         occ.add_box((pt[0] - 0.9, pt[1] - 0.9, pt[0] + 0.9, pt[1] + 0.9))
-    for key, pt in (("k", k_pt), ("l", l_pt)):
-        lab = occ.place_label(pt, key, ("w", "nw", "sw", "ne", "se") if right else ("e", "ne", "se", "nw", "sw"),
+    for key, pt in (("k", d.k_pt), ("l", d.l_pt)):
+        lab = occ.place_label(pt, key, ("w", "nw", "sw", "ne", "se") if d.right else ("e", "ne", "se", "nw", "sw"),
                               size_mm=TEXT_MM + 0.5, gap_mm=1.5, within=within)
-        els.append(Text((lab.x, lab.y), key, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{prefix}name-{key}"))
-    for key, pt, psi in (("max", k_pt, res.psi_max), ("min", l_pt, res.psi_min)):
-        text = sym(nt, f"psi_{key}")
-        a = psi / 2 if right else math.pi + psi / 2
-        mid = (pt[0] + (R + 1.5) * math.cos(a), pt[1] - (R + 1.5) * math.sin(a))
-        dirs: tuple[str, ...] = ("e", "ne", "se", "n", "s") if right else ("w", "sw", "nw", "s", "n")
+        els.append(Text((lab.x, lab.y), key, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{d.prefix}name-{key}"))
+    return els
+
+
+def _with_leader(els: list[Element], lab: Label, leader: tuple | None, text: str, size: float, name: str,
+                 leader_name: str) -> None:
+    """Append a placed label, and its leader line when it has one."""
+    els.append(Text((lab.x, lab.y), text, size_mm=size, anchor=lab.anchor, name=name))
+    if leader is not None:
+        els.append(Line(leader[0], leader[1], style=LEADER, name=leader_name))
+
+
+def _psi_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, nt: Notation,
+                within: Box | None) -> list[Element]:
+    """ψ_max and ψ_min beside their arcs (with a leader when the arc's middle is crowded)."""
+    els: list[Element] = []
+    for key, pt, psi in (("max", d.k_pt, res.psi_max), ("min", d.l_pt, res.psi_min)):
+        text = nt.sym(f"dynamics.psi_{key}")
+        a = psi / 2 if d.right else math.pi + psi / 2
+        mid = (pt[0] + (d.R + 1.5) * math.cos(a), pt[1] - (d.R + 1.5) * math.sin(a))
+        dirs: tuple[str, ...] = ("e", "ne", "se", "n", "s") if d.right else ("w", "sw", "nw", "s", "n")
         lab, leader = occ.place_label_with_leader(mid, text, dirs, size_mm=TEXT_MM, gap_mm=0.8, within=within)
-        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-psi-{key}"))
-        if leader is not None:
-            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-psi-{key}"))
-    # kl written beside its dimension line, where it covers nothing
+        _with_leader(els, lab, leader, text, TEXT_MM, f"{d.prefix}label-psi-{key}", f"{d.prefix}leader-psi-{key}")
+    return els
+
+
+def _kl_label(res: WittenbauerResult, d: _DiagramPlace, dim: Dimension, occ: FastOccupancy, nt: Notation,
+              within: Box | None) -> list[Element]:
+    """kl written beside its dimension line, where it covers nothing."""
+    els: list[Element] = []
     kl_text = f"kl = {nt.number(res.kl_mm)} {nt.unit('mm')}"
     d0, d1 = np.asarray(dim.line_start), np.asarray(dim.line_end)
     spots = [tuple((d0 + (d1 - d0) * t).tolist()) for t in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)]
-    dirs = ("e", "w") if right else ("w", "e")
+    dirs = ("e", "w") if d.right else ("w", "e")
     lab = None
     for spot in spots:
         lab = occ.first_free(spot, kl_text, dirs, (1.2, 2.5), TEXT_MM + 0.3, within)
@@ -369,33 +468,31 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     if lab is None:
         lab, leader = occ.place_label_with_leader(spots[0], kl_text, dirs, size_mm=TEXT_MM + 0.3, within=within)
         if leader is not None:
-            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-kl"))
-    els.append(Text((lab.x, lab.y), kl_text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor, name=f"{prefix}label-kl"))
-    # position numbers, away from the curve's middle
+            els.append(Line(leader[0], leader[1], style=LEADER, name=f"{d.prefix}leader-kl"))
+    els.append(Text((lab.x, lab.y), kl_text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor, name=f"{d.prefix}label-kl"))
+    return els
+
+
+def _position_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy, nt: Notation, within: Box | None,
+                     label_step: int | None) -> list[Element]:
+    """The position numbers, away from the curve's middle, then ω_max and ω_min at their first tangencies."""
+    els: list[Element] = []
+    X, Y, m = d.X, d.Y, res.m
     cx, cy = float(X[:-1].mean()), float(Y[:-1].mean())
     step = label_step or max(1, math.ceil(m / 24))
     for i in range(0, m, step):
-        p = P(X[i], Y[i])
+        p = d.P(X[i], Y[i])
         lab, leader = occ.place_label_with_leader(p, str(i), _compass(X[i] - cx, Y[i] - cy), size_mm=TEXT_MM,
                                                   gap_mm=1.0, within=within)
-        els.append(Text((lab.x, lab.y), str(i), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}pos-{i}"))
-        if leader is not None:
-            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-pos-{i}"))
+        _with_leader(els, lab, leader, str(i), TEXT_MM, f"{d.prefix}pos-{i}", f"{d.prefix}leader-pos-{i}")
     for key, idx in (("max", res.index_omega_max), ("min", res.index_omega_min)):
         i = idx[0]
-        p = P(X[i], Y[i])
-        text = sym(nt, f"omega_{key}")
+        p = d.P(X[i], Y[i])
+        text = nt.sym(f"dynamics.omega_{key}")
         dirs = (("ne", "n", "e", "nw", "se", "w", "sw", "s") if key == "max"
                 else ("sw", "s", "se", "w", "nw", "e", "ne", "n"))
         lab, leader = occ.place_label_with_leader(p, text, dirs, size_mm=TEXT_MM, gap_mm=2.5, within=within)
-        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{prefix}label-omega-{key}"))
-        if leader is not None:
-            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.13), name=f"{prefix}leader-omega-{key}"))
-    O1 = P(*res.O1_mm)
-    if clip[0] <= O1[0] <= clip[2] and clip[1] <= O1[1] <= clip[3]:
-        els.append(Point(O1, radius_mm=0.8, name=f"{prefix}point-O1"))
-        lab = occ.place_label(O1, "O_1", ("nw", "w", "sw", "n"), size_mm=TEXT_MM + 0.5, within=within)
-        els.append(Text((lab.x, lab.y), "O_1", size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{prefix}name-O1"))
+        _with_leader(els, lab, leader, text, TEXT_MM, f"{d.prefix}label-omega-{key}", f"{d.prefix}leader-omega-{key}")
     return els
 
 
@@ -404,46 +501,57 @@ def O1_on_sheet(res: WittenbauerResult, origin, clip) -> bool:
     return clip[0] <= x <= clip[2] and clip[1] <= y <= clip[3]
 
 
-def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False) -> tuple:
+def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False, J_0: float = 0.0) -> tuple:
     """The result table: (quantity, value, compact) rows in the profile's words and symbols.
 
-    ``compact`` is the row as one cell (symbol = value), for the compact A4 figure.
+    ``compact`` is the row as one cell (symbol = value), for the compact A4 figure. With the
+    ordinate axis at J_e = ``J_0`` > 0 (``res`` from :func:`offset_origin`), a row gives J_0 and
+    J_F = μ_T·kl/(ω_m²[δ]) − J_0.
     """
     nt = get_notation(nt)
     n = nt.number
     mm = nt.unit("mm")
     pos = " ".join(str(i) for i in res.index_omega_max)
     neg = " ".join(str(i) for i in res.index_omega_min)
-    tan_form = _w(nt, "tangents_exact" if res.tangents == "exact" else "tangents_textbook")
+    tan_form = nt.word("wittenbauer.tangents_exact" if res.tangents == "exact" else "wittenbauer.tangents_textbook")
     if res.error_estimate is None:
-        err = _w(nt, "none")
+        err = nt.word("wittenbauer.none")
     else:
         err = f"+{value_text(nt, res.error_estimate, 'kg·m²', sig=3)}".replace("+−", "−")
     O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}"
-    O1_word = _w(nt, "O1_on") if on_sheet else _w(nt, "O1")
+    O1_word = nt.word("wittenbauer.O1_on") if on_sheet else nt.word("wittenbauer.O1")
     tg = "tg" if nt.code == "ru" else "tan"
-    tg_max = f"{tg} {sym(nt, 'psi_max')} = {n(res.tan_psi_max)}, {sym(nt, 'psi_max')} = {n(math.degrees(res.psi_max))}°"
-    tg_min = f"{tg} {sym(nt, 'psi_min')} = {n(res.tan_psi_min)}, {sym(nt, 'psi_min')} = {n(math.degrees(res.psi_min))}°"
-    J_F = f"{sym(nt, 'J_F')} = {sym(nt, 'mu_T')}·kl/({sym(nt, 'omega_m')}²{sym(nt, 'delta')})"
-    J_F_num = (f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)}) = "
-               f"{value_text(nt, res.J_F, 'kg·m²')}")
+    psi_max, psi_min = nt.sym("dynamics.psi_max"), nt.sym("dynamics.psi_min")
+    tg_max = f"{tg} {psi_max} = {n(res.tan_psi_max)}, {psi_max} = {n(math.degrees(res.psi_max))}°"
+    tg_min = f"{tg} {psi_min} = {n(res.tan_psi_min)}, {psi_min} = {n(math.degrees(res.psi_min))}°"
+    J_F = f"{nt.sym('dynamics.J_F')} = {nt.sym('mu_T')}·kl/({nt.sym('dynamics.omega_m')}²{nt.sym('dynamics.delta')})"
+    J_F_num = f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)})"
+    origin_rows = []
+    if J_0 > 0.0:
+        J_F += f" − {nt.sym('dynamics.J_0')}"
+        J_F_num += f" − {n(J_0)}"
+        origin_rows = [(nt.word("wittenbauer.origin"), f"{nt.sym('dynamics.J_0')} = {value_text(nt, J_0, 'kg·m²')}",
+                        None)]
+    J_F_num += f" = {value_text(nt, res.J_F, 'kg·m²')}"
     rows = [
-        (_w(nt, "delta"), f"{sym(nt, 'delta')} = {n(res.delta)}", None),
-        (_w(nt, "omega_m"), f"{sym(nt, 'omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}", None),
+        (nt.word("wittenbauer.delta"), f"{nt.sym('dynamics.delta')} = {n(res.delta)}", None),
+        (nt.word("wittenbauer.omega_m"), f"{nt.sym('dynamics.omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}",
+         None),
         *((a, b, None) for a, b in extra),
-        (_w(nt, "scale_J"), f"{sym(nt, 'mu_J')} = {n(res.mu_J)} {unit(nt, 'kg·m²')}/{mm}", None),
-        (_w(nt, "scale_T"), f"{sym(nt, 'mu_T')} = {n(res.mu_T)} {unit(nt, 'J')}/{mm}", None),
-        (_w(nt, "tan_max"), tg_max, None),
-        (_w(nt, "tan_min"), tg_min, None),
-        (_w(nt, "tangents"), tan_form, f"{_w(nt, 'tangents')}: {tan_form}"),
-        (_w(nt, "k"), f"k = {n(res.k_mm)} {mm}", None),
-        (_w(nt, "l"), f"l = {n(res.l_mm)} {mm}", None),
-        (_w(nt, "kl"), f"kl = {n(res.kl_mm)} {mm}", None),
-        (_w(nt, "J_F"), J_F, None),
+        (nt.word("wittenbauer.scale_J"), f"{nt.sym('dynamics.mu_J')} = {n(res.mu_J)} {nt.unit('kg·m²')}/{mm}", None),
+        (nt.word("wittenbauer.scale_T"), f"{nt.sym('mu_T')} = {n(res.mu_T)} {nt.unit('J')}/{mm}", None),
+        (nt.word("wittenbauer.tan_max"), tg_max, None),
+        (nt.word("wittenbauer.tan_min"), tg_min, None),
+        (nt.word("wittenbauer.tangents"), tan_form, f"{nt.word('wittenbauer.tangents')}: {tan_form}"),
+        *origin_rows,
+        (nt.word("wittenbauer.k"), f"k = {n(res.k_mm)} {mm}", None),
+        (nt.word("wittenbauer.l"), f"l = {n(res.l_mm)} {mm}", None),
+        (nt.word("wittenbauer.kl"), f"kl = {n(res.kl_mm)} {mm}", None),
+        (nt.word("wittenbauer.J_F"), J_F, None),
         ("", J_F_num, None),
-        (_w(nt, "at_omega_max"), pos, f"{_w(nt, 'at_omega_max')}: {pos}"),
-        (_w(nt, "at_omega_min"), neg, f"{_w(nt, 'at_omega_min')}: {neg}"),
-        (_w(nt, "error", m=res.m), err, f"{_w(nt, 'error', m=res.m)}: {err}"),
+        (nt.word("wittenbauer.at_omega_max"), pos, f"{nt.word('wittenbauer.at_omega_max')}: {pos}"),
+        (nt.word("wittenbauer.at_omega_min"), neg, f"{nt.word('wittenbauer.at_omega_min')}: {neg}"),
+        (nt.word("wittenbauer.error", m=res.m), err, f"{nt.word('wittenbauer.error', m=res.m)}: {err}"),
         (O1_word, O1, f"{O1_word}: {O1}"),
     ]
     return tuple((a, b, c if c is not None else b) for a, b, c in rows)
@@ -516,7 +624,7 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     """
     nt = get_notation(notation)
     data = diagram_data(source, tangents=tangents, notation=nt)
-    sheet = SheetFrame(nt=nt, page=page, title=title or _w(nt, "wittenbauer"),
+    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("wittenbauer.wittenbauer"),
                        problem=data.problem if problem is None else problem, title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
@@ -526,8 +634,8 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     ax_x = x0 + 22.0
     py0, py1 = sheet.top + 10.0, sheet.caption_y - 9.0
     avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
-    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, avail_X, what="the J_e axis")
-    s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, avail_X, what="the J_e axis")
+    s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
     res = data.result(s_J.per_mm, s_T.per_mm)
     origin = (ax_x, py0 + s_T.to_mm(T_hi))
     page_probe = sheet.probe
@@ -602,148 +710,281 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     """
     study = as_study(study)
     nt = get_notation(notation)
-    m = study.m
-    sheet = SheetFrame(nt=nt, page=None, title=title or _w(nt, "dynamic_analysis"), problem=problem_text(study, nt),
-                       title_block=title_block, default_page=_sheet_page(page))
-    x0, y0, x1, y1 = sheet.box
-    data = diagram_data(study, tangents=tangents, notation=nt)
-    J_k, dT_k, phi_k = data.J_e, data.delta_T, data.phi
-    phi = fine_angles(m)
-    J_fine = inertia_curve(study, phi).J_e
-    dT_fine = delta_T_curve(study, phi)
-    dm = drawn_moments(study, nt)
-    J_to = float(max(J_k.max(), J_fine.max()))
-    _, T_hi, T_lo = data.extent()
-    T_hi = max(T_hi, float(dT_fine.max()))
-    T_lo = min(T_lo, float(dT_fine.min()))
-    M_hi, M_lo = dm.hi, dm.lo
-    W = x1 - x0
-    # the rows: [M graph | turned J_e graph] over [ΔT graph | diagram]
-    y_Jt = sheet.top + 14.0                                  # the turned graph's J_e axis
-    d_bottom = sheet.caption_y - 10.0
-
-    def diagram_room(L_phi):                                  # under the turned graph: arrow, name, gap
-        return d_bottom - (y_Jt + L_phi + 22.0)
-
-    if mu_phi is None:   # the φ scale that leaves the diagram largest, then draws the graphs largest
-        best = None
-        for c in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 10.0):
-            L = 360.0 / c
-            room = diagram_room(L)
-            if L > 0.36 * W or room < 40.0:
-                continue
-            tall = (T_hi - T_lo) / (pick_scale(T_hi - T_lo, room).per_mm if mu_T is None else
-                                    (mu_T.per_mm if isinstance(mu_T, Scale) else float(mu_T)))
-            if best is None or tall * L > best[0] * (1 + 1e-9):     # the diagram's height × the graphs' length
-                best = (tall * L, c)
-        if best is None:
-            raise InputError(f"the sheet {sheet.probe.size} is too small for the dynamic-analysis layout; "
-                             f"use A1 or A2")
-        s_phi = Scale(sym(nt, "mu_phi"), "rad", math.radians(best[1]), alt_per_mm=best[1], alt_unit="°",
-                      note=f"picked: {best[1]:g}°/mm draws the graphs and the energy–mass diagram largest together")
-    else:
-        s_phi = given_angle_scale(mu_phi, sym(nt, "mu_phi"), TWO_PI, min(diagram_room(0.0) - 40.0, 0.36 * W))
-    L_phi = s_phi.to_mm(TWO_PI)
-    d_top = y_Jt + L_phi + 22.0                               # the diagram's top
-    s_T = given_scale(mu_T, sym(nt, "mu_T"), unit(nt, "J"), T_hi - T_lo, d_bottom - d_top, what="the ΔT axis")
-    y0_T = d_top + s_T.to_mm(T_hi)                           # the level ΔT = 0
-    s_M = given_scale(mu_M, sym(nt, "mu_M"), unit(nt, "N·m"), M_hi - M_lo,
-                      y_Jt + L_phi - 10.0 - (sheet.top + 16.0), what="the moment graph")
-    y_M0 = y_Jt + L_phi - 10.0 - s_M.to_mm(-M_lo)             # the M graph's φ axis (an engine's M_d dips below)
-    x_L = x0 + 22.0
-    left_end = x_L + L_phi + 12.0
-    probe_rows = wide_rows(result_rows(data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi)))
-    table_w = _table(probe_rows, (0, 0)).width_mm
-    J_label_w = markup.text_width_mm(quantity(nt, sym(nt, "J_e"), "kg·m²"), SMALL_MM + 0.5) + 10.0
-    room_J = x1 - table_w - 12.0 - J_label_w - (left_end + 40.0)
-    # μ_J fits the diagram's content (0…J_e max) to the width beside the graphs; the rays are clipped
-    # to the diagram's own frame, so flat rays cost nothing (they no longer run across the sheet)
-    s_J = given_scale(mu_J, sym(nt, "mu_J"), unit(nt, "kg·m²"), J_to, room_J, what="the J_e axis")
-    res = data.result(s_J.per_mm, s_T.per_mm)
-    # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
-    x_a_min = left_end + 40.0
-    x_a_max = x1 - table_w - 12.0 - J_label_w - s_J.to_mm(J_to)
-    x_a = max(x_a_min, (x_a_min + x_a_max) / 2)
+    sheet = SheetFrame(nt=nt, page=None, title=title or nt.word("wittenbauer.dynamic_analysis"),
+                       problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
+    content = _sheet_content(study, nt, tangents)
+    lay = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi)
+    res = lay.result(content)
     occ = sheet.occ
-    page_probe = sheet.probe
-    clip = page_probe.inner_box()
-    avoid: tuple[tuple[float, float, float, float], ...] = ()
-    if page_probe.title_block is not None:
-        tb = page_probe.title_block.table(clip[2], clip[3])
-        avoid = ((x0 - 20.0, tb.at[1], clip[2], clip[3]),)
-    # projection lines first (the thinnest, under everything)
-    proj = []
-    f_T = lambda k: (x_L + s_phi.to_mm(float(phi_k[k] - phi_k[0])), y0_T - s_T.to_mm(float(dT_k[k])))  # noqa: E731
-    f_D = lambda k: (x_a + float(res.x_mm[k]), y0_T - float(res.y_mm[k]))                             # noqa: E731
-    f_J = lambda k: (x_a + s_J.to_mm(float(J_k[k])), y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))  # noqa: E731
-    for k in range(0, m, max(1, math.ceil(m / 36))):        # every position (every n-th when m is large)
-        proj.append(Line(f_T(k), f_D(k), style=PROJECTION, name=f"projection-T-{k}"))
-        proj.append(Line(f_J(k), f_D(k), style=PROJECTION, name=f"projection-J-{k}"))
+    proj = _projection_lines(content, lay, res)          # the thinnest, under everything
     occ.register(*proj)
-    # the diagram first: its rays and labels take precedence
-    diag = diagram_elements(res, origin=(x_a, y0_T), nt=nt, occ=occ, clip=clip, avoid=avoid, J_to=J_to, T_hi=T_hi,
-                            T_lo=T_lo, within=sheet.box, prefix="D-", y_top_mm=s_T.to_mm(T_hi) + 4.0,
-                            own_frame=True)
-    turned = turned_inertia_elements(origin=(x_a, y_Jt), s_J=s_J, s_phi=s_phi, m=m, phi=phi, J=J_fine, phi_k=phi_k,
-                                     J_k=J_k, nt=nt, occ=occ, J_to=J_to, prefix="J-", within=sheet.box)
-    within_left = (x0, sheet.top, x_a - 10.0, sheet.caption_y - 6.0)
-    M_els = phi_graph_elements(origin=(x_L, y_M0), s_phi=s_phi, s_Y=s_M, m=m, phi_k=phi_k,
-                               curves=list(dm.curves),
-                               nt=nt, occ=occ, y_from=M_lo, y_to=M_hi, axis_level=0.0,
-                               y_label=quantity(nt, sym(nt, "M"), "N·m"), dots=dm.dots, prefix="M-",
-                               within=within_left)
-    T_els = phi_graph_elements(origin=(x_L, y0_T), s_phi=s_phi, s_Y=s_T, m=m, phi_k=phi_k,
-                               curves=[CurveSpec("dT", phi, dT_fine, MAIN, "")], nt=nt, occ=occ,
-                               y_from=min(float(dT_fine.min()), 0.0), y_to=max(float(dT_fine.max()), 0.0),
-                               axis_level=0.0, y_label=quantity(nt, sym(nt, "dT"), "J"), dots=(phi_k, dT_k),
-                               prefix="T-", within=within_left)
+    diag, turned, M_els, T_els = _sheet_graphs(sheet, content, lay, res, nt)
     O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
-    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, dm, s_M, s_phi), on_sheet=O1_drawn))
+    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, content.moments, lay.s_M, lay.s_phi),
+                                 on_sheet=O1_drawn, J_0=lay.J_0))
     w = _table(rows, (0, 0)).width_mm
+    x1 = sheet.box[2]
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
     table = _place_table(occ, rows, cands)
     occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
-    # small headings over the parts
-    heads = []
-    for key, text, at in (("M", f"{_w(nt, 'moments')} {sym(nt, 'M_d')}, {sym(nt, 'M_r')}(φ)",
-                           (x_L + 10.0, y_M0 - s_M.to_mm(M_hi) - 8.0)),
-                          ("T", f"{_w(nt, 'energy')} {sym(nt, 'dT')}(φ)",
-                           (x_L + 10.0, y0_T - s_T.to_mm(max(float(dT_fine.max()), 0.0)) - 12.0)),
-                          ("J", f"{_w(nt, 'inertia_turned')} {sym(nt, 'J_e')}(φ)", (x_a + 10.0, y_Jt - 9.0)),
-                          ("D", _w(nt, "wittenbauer"), (x_a + 12.0, d_top - 6.0))):
-        lab = make_label(at, text, size_mm=TEXT_MM + 0.8, bold=True)
-        found = False
-        for lines in (True, False):    # free of everything; else of texts and boxes (thin lines may cross it)
-            for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0, 10.0, 20.0, 40.0):
-                for dy in (0.0, -4.0, 4.0, -8.0, 8.0, -12.0, 12.0):
-                    trial = make_label((at[0] + dx, at[1] + dy), text, size_mm=TEXT_MM + 0.8, bold=True)
-                    if occ.is_free(bold_bbox(trial), within=sheet.box, lines=lines):
-                        lab, found = trial, True
-                        break
-                if found:
-                    break
-            if found:
-                break
-        occ.add_box(bold_bbox(lab))
-        heads.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.8, bold=True, name=f"heading-{key}"))
-    table_head = Text((table.at[0], table.at[1] - 2.0), _w(nt, "result"), size_mm=TEXT_MM + 0.8, bold=True,
-                      name="heading-result")
-    scales = (s_phi, s_M, s_T, s_J)
+    heads = _sheet_headings(sheet, content, lay, nt)
+    table_head = Text((table.at[0], table.at[1] - 2.0), nt.word("wittenbauer.result"), size_mm=TEXT_MM + 0.8,
+                      bold=True, name="heading-result")
+    scales = (lay.s_phi, lay.s_M, lay.s_T, lay.s_J)
     elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
                 + sheet.captions(scales))
+    J_0 = lay.J_0
     notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
-        f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm",)
+        f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm" + (f" and J_0 = {J_0:g} kg·m²" if J_0 else ""),)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
+
+
+@dataclass(frozen=True)
+class DynamicSheetLayout:
+    """The millimetre constants of the A1/A2 dynamic-analysis sheet (see :func:`dynamic_analysis_sheet`)."""
+
+    graphs_left_mm: float = 22.0          # the φ graphs' ordinate axes from the frame
+    turned_axis_mm: float = 14.0          # the turned J_e graph's J axis below the top of the drawing
+    diagram_bottom_mm: float = 10.0       # the diagram's lowest level above the captions
+    under_turned_mm: float = 22.0         # under the turned graph's φ axis: arrow, name, gap
+    min_diagram_mm: float = 40.0          # the least height of the diagram
+    graphs_share: float = 0.36            # the longest φ axis, as a share of the sheet's width
+    M_below_mm: float = 10.0              # the M graph's φ axis above the level of the turned graph's end
+    M_top_mm: float = 16.0                # the M graph's top below the top of the drawing
+    graphs_gap_mm: float = 12.0           # right of the φ graphs
+    diagram_gap_mm: float = 40.0          # between the φ graphs and the diagram's ordinate axis
+    table_gap_mm: float = 12.0            # between the J axis's name and the result table
+    J_name_extra_mm: float = 10.0         # beside the J axis's name
+    heading_mm: float = TEXT_MM + 0.8     # the size of the headings over the parts
+
+
+LAYOUT = DynamicSheetLayout()
+
+
+@dataclass(frozen=True)
+class SheetContent:
+    """What the sheet draws, in physical units: the positions, the fine curves, the drawn moments."""
+
+    data: DiagramData
+    phi: np.ndarray                       # fine angles, rad
+    J_fine: np.ndarray                    # J_e at them, kg·m²
+    dT_fine: np.ndarray                   # ΔT at them, J
+    moments: DrawnMoments
+    J_lo: float
+    J_to: float
+    T_lo: float
+    T_hi: float
+
+
+def _sheet_content(study: Study, nt: Notation, tangents: str) -> SheetContent:
+    """Positions, velocity plans, J_e, M_r and ΔT at the m positions and between them (never the exact motion)."""
+    data = diagram_data(study, tangents=tangents, notation=nt)
+    phi = fine_angles(study.m)
+    J_fine = inertia_curve(study, phi).J_e
+    dT_fine = delta_T_curve(study, phi)
+    _, T_hi, T_lo = data.extent()
+    return SheetContent(data, phi, J_fine, dT_fine, drawn_moments(study, nt),
+                        J_lo=float(min(data.J_e.min(), J_fine.min())), J_to=float(max(data.J_e.max(), J_fine.max())),
+                        T_lo=min(T_lo, float(dT_fine.min())), T_hi=max(T_hi, float(dT_fine.max())))
+
+
+@dataclass(frozen=True)
+class SheetPlacement:
+    """The scales of the sheet and where its parts stand (page mm)."""
+
+    s_phi: Scale
+    s_M: Scale
+    s_T: Scale
+    s_J: Scale
+    J_0: float          # where the J axes start, kg·m² (0, or a suppressed zero)
+    x_L: float          # the φ graphs' ordinate axes
+    x_a: float          # the diagram's ordinate axis (and the turned graph's φ axis)
+    y_Jt: float         # the turned graph's J axis
+    y_M0: float         # the M graph's φ axis
+    y0_T: float         # the level ΔT = 0 (the ΔT graph's φ axis and the diagram's J axis)
+    d_top: float        # the diagram's top
+
+    def result(self, content: SheetContent) -> WittenbauerResult:
+        """The construction at these scales, with its ordinate axis at J_0."""
+        res = content.data.result(self.s_J.per_mm, self.s_T.per_mm)
+        return offset_origin(res, self.J_0) if self.J_0 > 0.0 else res
+
+
+def _phi_scale(sheet: SheetFrame, content: SheetContent, nt: Notation, mu_phi: object, mu_T: object,
+               diagram_room: Callable[[float], float], lay: DynamicSheetLayout = LAYOUT) -> Scale:
+    """μ_φ: given, or the one that leaves the diagram largest, then draws the graphs largest."""
+    W = sheet.box[2] - sheet.box[0]
+    T_span = content.T_hi - content.T_lo
+    if mu_phi is not None:
+        return given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI,
+                                 min(diagram_room(0.0) - lay.min_diagram_mm, lay.graphs_share * W))
+    best = None
+    for c in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 10.0):
+        L = 360.0 / c
+        room = diagram_room(L)
+        if L > lay.graphs_share * W or room < lay.min_diagram_mm:
+            continue
+        tall = T_span / (pick_scale(T_span, room).per_mm if mu_T is None else
+                         (mu_T.per_mm if isinstance(mu_T, Scale) else float(mu_T)))  # type: ignore[arg-type]
+        if best is None or tall * L > best[0] * (1 + 1e-9):     # the diagram's height × the graphs' length
+            best = (tall * L, c)
+    if best is None:
+        raise InputError(f"the sheet {sheet.probe.size} is too small for the dynamic-analysis layout; "
+                         f"use A1 or A2")
+    return Scale(nt.sym("mu_phi"), "rad", math.radians(best[1]), alt_per_mm=best[1], alt_unit="°",
+                 note=f"picked: {best[1]:g}°/mm draws the graphs and the energy–mass diagram largest together")
+
+
+def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, mu_J: object, mu_T: object,
+                     mu_M: object, mu_phi: object, lay: DynamicSheetLayout = LAYOUT) -> SheetPlacement:
+    """The scales and the places of the parts: [M graph | turned J_e graph] over [ΔT graph | diagram].
+
+    μ_J fits the diagram's content to the width beside the graphs: 0…J_e max, or, for a J_e that
+    varies little about a large mean, J_0…J_e max from a round J_0 below J_e min (a suppressed
+    zero); the rays keep their true slopes and are clipped to the diagram's own frame.
+    """
+    x0, _, x1, _ = sheet.box
+    y_Jt = sheet.top + lay.turned_axis_mm
+    d_bottom = sheet.caption_y - lay.diagram_bottom_mm
+
+    def diagram_room(L_phi: float) -> float:
+        return d_bottom - (y_Jt + L_phi + lay.under_turned_mm)
+
+    s_phi = _phi_scale(sheet, content, nt, mu_phi, mu_T, diagram_room, lay)
+    L_phi = s_phi.to_mm(TWO_PI)
+    d_top = y_Jt + L_phi + lay.under_turned_mm
+    s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), content.T_hi - content.T_lo, d_bottom - d_top,
+                      what="the ΔT axis")
+    dm = content.moments
+    s_M = given_scale(mu_M, nt.sym("mu_M"), nt.unit("N·m"), dm.hi - dm.lo,
+                      y_Jt + L_phi - lay.M_below_mm - (sheet.top + lay.M_top_mm), what="the moment graph")
+    x_L = x0 + lay.graphs_left_mm
+    left_end = x_L + L_phi + lay.graphs_gap_mm
+    probe_rows = wide_rows(result_rows(content.data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi),
+                                       J_0=1.0 if _suppressed_zero(content.J_lo, content.J_to) else 0.0))
+    table_w = _table(probe_rows, (0, 0)).width_mm
+    J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), SMALL_MM + 0.5) + \
+        lay.J_name_extra_mm
+    room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
+    s_J, J_0 = _inertia_scale(mu_J, nt, content.J_lo, content.J_to, room_J)
+    # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
+    x_a_min = left_end + lay.diagram_gap_mm
+    x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
+    return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=max(x_a_min, (x_a_min + x_a_max) / 2), y_Jt=y_Jt,
+                          y_M0=y_Jt + L_phi - lay.M_below_mm - s_M.to_mm(-dm.lo), y0_T=d_top + s_T.to_mm(content.T_hi),
+                          d_top=d_top)
+
+
+def _projection_lines(content: SheetContent, lay: SheetPlacement, res: WittenbauerResult) -> list[Element]:
+    """ΔT levels projected across from the ΔT graph, J_e values down from the turned graph, to the curve."""
+    J_k, dT_k, phi_k = content.data.J_e, content.data.delta_T, content.data.phi
+    s_phi, s_T, s_J = lay.s_phi, lay.s_T, lay.s_J
+    proj: list[Element] = []
+    m = len(phi_k) - 1
+    for k in range(0, m, max(1, math.ceil(m / 36))):        # every position (every n-th when m is large)
+        at_T = (lay.x_L + s_phi.to_mm(float(phi_k[k] - phi_k[0])), lay.y0_T - s_T.to_mm(float(dT_k[k])))
+        at_D = (lay.x_a + float(res.x_mm[k]), lay.y0_T - float(res.y_mm[k]))
+        at_J = (lay.x_a + s_J.to_mm(float(J_k[k]) - lay.J_0), lay.y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
+        proj.append(Line(at_T, at_D, style=PROJECTION, name=f"projection-T-{k}"))
+        proj.append(Line(at_J, at_D, style=PROJECTION, name=f"projection-J-{k}"))
+    return proj
+
+
+def _sheet_graphs(sheet: SheetFrame, content: SheetContent, lay: SheetPlacement, res: WittenbauerResult,
+                  nt: Notation) -> tuple[list[Element], list[Element], list[Element], list[Element]]:
+    """The diagram (first: its rays and labels take precedence), the turned J_e graph, the M and ΔT graphs."""
+    occ = sheet.occ
+    x0 = sheet.box[0]
+    clip = sheet.probe.inner_box()
+    avoid: tuple[tuple[float, float, float, float], ...] = ()
+    if sheet.probe.title_block is not None:
+        tb = sheet.probe.title_block.table(clip[2], clip[3])
+        avoid = ((x0 - 20.0, tb.at[1], clip[2], clip[3]),)
+    data, dm, m = content.data, content.moments, len(content.data.phi) - 1
+    phi_k = data.phi
+    diag = diagram_elements(res, origin=(lay.x_a, lay.y0_T), nt=nt, occ=occ, clip=clip, avoid=avoid,
+                            J_to=content.J_to, T_hi=content.T_hi, T_lo=content.T_lo, within=sheet.box, prefix="D-",
+                            y_top_mm=lay.s_T.to_mm(content.T_hi) + 4.0, own_frame=True, J_from=lay.J_0)
+    turned = turned_inertia_elements(origin=(lay.x_a, lay.y_Jt), s_J=lay.s_J, s_phi=lay.s_phi, m=m, phi=content.phi,
+                                     J=content.J_fine, phi_k=phi_k, J_k=data.J_e, nt=nt, occ=occ, J_to=content.J_to,
+                                     prefix="J-", within=sheet.box, J_from=lay.J_0)
+    within_left = (x0, sheet.top, lay.x_a - 10.0, sheet.caption_y - 6.0)
+    M_els = phi_graph_elements(origin=(lay.x_L, lay.y_M0), s_phi=lay.s_phi, s_Y=lay.s_M, m=m, phi_k=phi_k,
+                               curves=list(dm.curves), nt=nt, occ=occ, y_from=dm.lo, y_to=dm.hi, axis_level=0.0,
+                               y_label=nt.quantity(nt.sym("M"), "N·m"), dots=dm.dots, prefix="M-",
+                               within=within_left)
+    dT = content.dT_fine
+    T_els = phi_graph_elements(origin=(lay.x_L, lay.y0_T), s_phi=lay.s_phi, s_Y=lay.s_T, m=m, phi_k=phi_k,
+                               curves=[CurveSpec("dT", content.phi, dT, MAIN, "")], nt=nt, occ=occ,
+                               y_from=min(float(dT.min()), 0.0), y_to=max(float(dT.max()), 0.0),
+                               axis_level=0.0, y_label=nt.quantity(nt.sym("dynamics.dT"), "J"),
+                               dots=(phi_k, data.delta_T), prefix="T-", within=within_left)
+    return diag, turned, M_els, T_els
+
+
+def _sheet_headings(sheet: SheetFrame, content: SheetContent, lay: SheetPlacement, nt: Notation,
+                    size: float = LAYOUT.heading_mm) -> list[Element]:
+    """Small bold headings over the four parts, each moved to the nearest place where it covers nothing."""
+    occ = sheet.occ
+    heads: list[Element] = []
+    M_hi, dT_hi = content.moments.hi, max(float(content.dT_fine.max()), 0.0)
+    for key, text, at in (("M", f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}(φ)",
+                           (lay.x_L + 10.0, lay.y_M0 - lay.s_M.to_mm(M_hi) - 8.0)),
+                          ("T", f"{nt.word('dynamics.delta_T_graph')} {nt.sym('dynamics.dT')}(φ)",
+                           (lay.x_L + 10.0, lay.y0_T - lay.s_T.to_mm(dT_hi) - 12.0)),
+                          ("J", f"{nt.word('wittenbauer.inertia_turned')} {nt.sym('dynamics.J_e')}(φ)",
+                           (lay.x_a + 10.0, lay.y_Jt - 9.0)),
+                          ("D", nt.word("wittenbauer.wittenbauer"), (lay.x_a + 12.0, lay.d_top - 6.0))):
+        lab = _free_heading(occ, at, text, size, sheet.box)
+        occ.add_box(bold_bbox(lab))
+        heads.append(Text((lab.x, lab.y), text, size_mm=size, bold=True, name=f"heading-{key}"))
+    return heads
+
+
+def _free_heading(occ: Occupancy, at: tuple[float, float], text: str, size: float,
+                  within: tuple[float, float, float, float]) -> Label:
+    """A bold label near ``at`` free of everything; else of texts and boxes (thin lines may cross it)."""
+    for lines in (True, False):
+        for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0, 10.0, 20.0, 40.0):
+            for dy in (0.0, -4.0, 4.0, -8.0, 8.0, -12.0, 12.0):
+                trial = make_label((at[0] + dx, at[1] + dy), text, size_mm=size, bold=True)
+                if occ.is_free(bold_bbox(trial), within=within, lines=lines):
+                    return trial
+    return make_label(at, text, size_mm=size, bold=True)
+
+
+def _suppressed_zero(J_lo: float, J_hi: float) -> bool:
+    """Does the J axis start near J_e,min? When J_e varies by less than 35 % of its largest value."""
+    return J_lo > 0.0 and J_hi - J_lo < 0.35 * J_hi
+
+
+def _inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[Scale, float]:
+    """μ_J of the A1 sheet's diagram and where its J axis starts (0, or a suppressed zero J_0 > 0).
+
+    A J_e that varies by less than 35 % of its largest value (the rule of the φ graphs) gets its
+    axis from a round value below J_e,min, so the curve fills the width ``room_mm``; 20 mm and
+    2 % of it are kept for the step down to that value.
+
+    >>> from graphmethods.scene import notation
+    >>> s, J_0 = _inertia_scale(None, notation("en"), 0.0542, 0.0682, 200.0)
+    >>> s.per_mm, J_0, s.to_mm(0.0682 - J_0) <= 200.0
+    (0.0001, 0.053, True)
+    """
+    symbol, unit = nt.sym("dynamics.mu_J"), nt.unit("kg·m²")
+    if not _suppressed_zero(J_lo, J_hi):
+        return given_scale(mu_J, symbol, unit, J_hi, room_mm, what="the J_e axis"), 0.0
+    s_J = given_scale(mu_J, symbol, unit, J_hi - J_lo, 0.98 * room_mm - 20.0, what="the J_e axis")
+    return s_J, suppressed_base(J_lo, J_hi, s_J, zero=False)
 
 
 def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:
     n = get_notation(nt).number
     mm = get_notation(nt).unit("mm")
     k = dm.constant_key
-    return ((_w(nt, k), f"{sym(nt, k)} = {value_text(nt, dm.constant, 'N·m')}"),
-            (_w(nt, "scale_M"), f"{sym(nt, 'mu_M')} = {n(s_M.per_mm)} {unit(nt, 'N·m')}/{mm}"),
-            (_w(nt, "scale_phi"), f"{sym(nt, 'mu_phi')} = {n(s_phi.per_mm)} {unit(nt, 'rad')}/{mm}"))
+    return ((nt.word(f"wittenbauer.{k}"), f"{nt.sym(k)} = {value_text(nt, dm.constant, 'N·m')}"),
+            (nt.word("wittenbauer.scale_M"), f"{nt.sym('mu_M')} = {n(s_M.per_mm)} {nt.unit('N·m')}/{mm}"),
+            (nt.word("wittenbauer.scale_phi"), f"{nt.sym('mu_phi')} = {n(s_phi.per_mm)} {nt.unit('rad')}/{mm}"))
 
 
 __all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
-           "ray_span", "result_rows", "WORDS"]
+           "ray_span", "result_rows"]
