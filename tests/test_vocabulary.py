@@ -137,3 +137,13 @@ def test_every_literal_key_exists(method: str) -> None:
     table = profile.words if method == "word" else profile.symbols
     missing = sorted((where, key) for where, key in _literal_keys(method) if key not in table)
     assert not missing, f"unknown {method} keys: {missing}"
+
+
+def test_no_text_kept_twice_under_two_keys() -> None:
+    symbols, words, _ = vocabulary.tables(notation._SYMBOLS, notation._WORDS, notation._UNITS_RU)
+    for kind, table in (("word", words), ("symbol", symbols)):
+        keys_of: dict[tuple[str, str, str], list[str]] = {}
+        for key, triple in table.items():
+            keys_of.setdefault(triple, []).append(key)
+        twice = [keys for keys in keys_of.values() if len(keys) > 1]
+        assert not twice, f"the same {kind} under several keys (keep one): {twice}"

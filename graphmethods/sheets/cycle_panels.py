@@ -155,14 +155,14 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
     s_E = given_scale(None, "μ_E", nt.unit(wu), max(E_hi - E_lo, 1e-12), h, what="the energy")
     w_lo, w_hi = float(w.min()), float(w.max())
     uw = f"({nt.unit('rad/s')})"
-    w_base = suppressed_base(w_lo, w_hi, given_scale(None, nt.sym("motion.mu_omega"), uw,
+    w_base = suppressed_base(w_lo, w_hi, given_scale(None, nt.sym("dynamics.mu_omega"), uw,
                                                      max(w_hi - w_lo, 1e-12) * 1.4, h, what="ω"), zero=None)
-    s_w = given_scale(None, nt.sym("motion.mu_omega"), uw, max(w_hi - w_base, 1e-12), h, what="ω")
+    s_w = given_scale(None, nt.sym("dynamics.mu_omega"), uw, max(w_hi - w_base, 1e-12), h, what="ω")
     ticks, labels = pi_ticks(P, s_phi, min_gap_mm=14.0)
     els = [sheet.header()]
     panels = [("M", s_M, M_lo, M_hi, nt.quantity(nt.sym("M"), mu)),
               ("E", s_E, E_lo, E_hi, nt.quantity("ΔE", wu)),
-              ("omega", s_w, w_base, w_hi, nt.quantity(nt.sym("motion.omega"), "rad/s"))]
+              ("omega", s_w, w_base, w_hi, nt.quantity(nt.sym("dynamics.omega"), "rad/s"))]
     frames = {}
     y_top = top
     for key, s_y, lo, hi, label in panels:

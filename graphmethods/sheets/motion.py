@@ -94,14 +94,14 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     if not x_span > 0:
         raise InputError("the run spans no time or angle to draw")
     x_sym, x_unit = ("t", "s") if x == "t" else (nt.sym("phi"), "rad")
-    y_sym, y_unit = (nt.sym("motion.omega"), "rad/s") if y == "omega" else (nt.sym("motion.eps"), "rad/s²")
+    y_sym, y_unit = (nt.sym("dynamics.omega"), "rad/s") if y == "omega" else (nt.sym("dynamics.eps"), "rad/s²")
     ux, uy = nt.unit(x_unit), nt.unit(y_unit)
     uy_cap = f"({uy})" if "/" in uy else uy
     s_x = given_scale(mu_x, f"μ_{x_sym}" if x == "t" else nt.sym("mu_phi"), ux, x_span, px1 - px0, what="the run")
     lo, hi = min(0.0, float(yv.min())), max(0.0, float(yv.max()))
     if hi - lo <= 0:
         hi = lo + 1.0
-    mu_sym = nt.sym("motion.mu_omega") if y == "omega" else nt.sym("motion.mu_eps")
+    mu_sym = nt.sym("dynamics.mu_omega") if y == "omega" else nt.sym("dynamics.mu_eps")
     s_y = given_scale(mu_y, mu_sym, uy_cap, hi - lo, py1 - py0, what="the graph")
     origin = (px0, py0 + s_y.to_mm(hi))
     f = Frame(origin, s_x, s_y)
@@ -128,7 +128,7 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
         yy = f.pt(0.0, st.omega_m)[1]
         els.append(Polyline(((origin[0], yy), (f.pt(x_span, 0)[0] + 2.0, yy)), style=LEVEL, name="level-omega_m"))
         els.append(Text((f.pt(x_span, 0)[0] + 3.0, yy - 1.0),
-                        f"{nt.sym('motion.omega_m')} = {nt.number(st.omega_m, sig=4)}", size_mm=TEXT_MM,
+                        f"{nt.sym('dynamics.omega_m')} = {nt.number(st.omega_m, sig=4)}", size_mm=TEXT_MM,
                         name="label-omega_m"))
         x_st = st.t_steady if x == "t" else float(res.at_time([res.t[0] + st.t_steady])["phi"][0] - phi[0])
         w_st = float(res.at_time([res.t[0] + st.t_steady])["omega"][0])

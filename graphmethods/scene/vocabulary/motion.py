@@ -2,17 +2,9 @@
 and the three panels of moments, energy and speed over one cycle.
 
 >>> from graphmethods.scene.notation import get
->>> get("zh").word("motion.speed_t"), get("ru").sym("motion.omega_m"), get("ru").unit("rad/s²")
+>>> get("zh").word("motion.speed_t"), get("ru").sym("dynamics.omega_m"), get("ru").unit("rad/s²")
 ('角速度随时间的变化 ω(t)', 'ω_{ср}', 'рад/с²')
 """
-
-SYMBOLS = {
-    "omega":    ("ω",   "ω",      "ω"),
-    "omega_m":  ("ω_m", "ω_{ср}", "ω_m"),
-    "eps":      ("ε",   "ε",      "ε"),
-    "mu_omega": ("μ_ω", "μ_ω",    "μ_ω"),
-    "mu_eps":   ("μ_ε", "μ_ε",    "μ_ε"),
-}
 
 WORDS = {
     "speed_t":          ("Speed against time ω(t)", "Скорость в функции времени ω(t)", "角速度随时间的变化 ω(t)"),
