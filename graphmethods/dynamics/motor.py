@@ -37,15 +37,46 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Protocol, TypeVar
 
 import numpy as np
 
 from graphmethods.dynamics.motion import MotionResult, ReducedModel, _check_count, _check_mean, _check_positive, _frozen
 from graphmethods.errors import InputError, MotionError
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import omega_from_n
 
-__all__ = ["DCMotor", "InductionMotor", "motor_motion"]
+__all__ = ["DCMotor", "InductionMotor", "Motor", "motor_motion"]
+
+#: a speed or speeds, rad/s: a float, or an array of them (the moment comes back the same)
+_Speed = TypeVar("_Speed", float, FloatArray)
+
+
+class Motor(Protocol):
+    """What :func:`motor_motion` asks of a motor (:class:`DCMotor`, :class:`InductionMotor` or one of
+    the user's own): its characteristic on the reduced shaft, called with ω (rad/s, a float or an
+    array) for M_d (N·m); its largest moment for ω ≥ 0; and the speed at which it gives a moment.
+
+    >>> def stall_moment(motor: Motor) -> float:
+    ...     return motor.M_max
+    >>> stall_moment(DCMotor(M_0=100.0, omega_0=50.0, ratio=2.0))       # N·m on the reduced shaft
+    200.0
+    """
+
+    def __call__(self, omega: _Speed) -> _Speed:
+        """Driving moment on the reduced shaft (N·m) at its speed ω (rad/s)."""
+        ...
+
+    @property
+    def M_max(self) -> float:
+        """Largest driving moment on the reduced shaft for ω ≥ 0, N·m."""
+        ...
+
+    def omega_at(self, M: float) -> float:
+        """Reduced-shaft speed (rad/s) at which the motor gives the moment M (N·m)."""
+        ...
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -74,14 +105,15 @@ class DCMotor:
     omega_0: float
     ratio: float = 1.0
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         for name in ("M_0", "omega_0", "ratio"):
             _check_positive(getattr(self, name), f"DCMotor.{name}")
 
-    def __call__(self, omega):
+    def __call__(self, omega: _Speed) -> _Speed:
         """Driving moment on the reduced shaft (N·m) at its speed ω (rad/s); floats or arrays."""
         u = self.ratio
-        return u * self.M_0 * (1.0 - u * omega / self.omega_0)
+        M: _Speed = u * self.M_0 * (1.0 - u * omega / self.omega_0)
+        return M
 
     @property
     def M_max(self) -> float:
@@ -140,7 +172,7 @@ class InductionMotor:
     omega_sync: float = field(init=False)
     s_nom_value: float = field(init=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         for name in ("P_nom", "n_nom", "lam", "ratio"):
             _check_positive(getattr(self, name), f"InductionMotor.{name}")
         if (self.n_sync is None) == (self.s_nom is None):
@@ -149,6 +181,7 @@ class InductionMotor:
             n_s = _check_positive(self.n_sync, "InductionMotor.n_sync")
             s = (n_s - self.n_nom) / n_s
         else:
+            assert self.s_nom is not None                # exactly one of n_sync and s_nom (checked above)
             s = float(self.s_nom)
             if not 0 < s < 1:
                 raise InputError(f"InductionMotor.s_nom = {self.s_nom!r}: the rated slip lies in (0, 1)")
@@ -165,11 +198,12 @@ class InductionMotor:
         object.__setattr__(self, "M_k", self.lam * M_nom)
         object.__setattr__(self, "s_k", s * (self.lam + math.sqrt(self.lam**2 - 1.0)))
 
-    def __call__(self, omega):
+    def __call__(self, omega: _Speed) -> _Speed:
         """Driving moment on the reduced shaft (N·m) at its speed ω (rad/s); floats or arrays."""
         u = self.ratio
         s = 1.0 - u * omega / self.omega_sync
-        return u * 2.0 * self.M_k * s * self.s_k / (s * s + self.s_k * self.s_k)
+        M: _Speed = u * 2.0 * self.M_k * s * self.s_k / (s * s + self.s_k * self.s_k)
+        return M
 
     @property
     def M_max(self) -> float:
@@ -199,7 +233,8 @@ class _Stall(Exception):
         self.T_start = math.nan                  # the starting energy, set by the caller that knows it
 
 
-def _one_period(T0, h, J0, Jm, J1, M0, Mm, M1, M_d):
+def _one_period(T0: float, h: list[float], J0: list[float], Jm: list[float], J1: list[float], M0: list[float],
+                Mm: list[float], M1: list[float], M_d: Callable[[float], float]) -> list[float]:
     """RK4 for dT/dφ = M_d(sqrt(2T/J)) + M_e over the steps; T at the nodes (list)."""
     out = [T0]
     T = T0
@@ -231,7 +266,7 @@ def _one_period(T0, h, J0, Jm, J1, M0, Mm, M1, M_d):
 class _Steps:
     """The RK4 step grid over one period and the model sampled on it (one-sided at step ends)."""
 
-    def __init__(self, model: ReducedModel, J_F: float, steps: int):
+    def __init__(self, model: ReducedModel, J_F: float, steps: int) -> None:
         a, L = model.phi_0, model.phi_T
         uniform = a + L * (np.arange(steps + 1) / steps)
         x = np.unique(np.concatenate([uniform, model.breaks]))
@@ -255,9 +290,9 @@ class _Steps:
         self.work = float(np.sum(h / 6.0 * (self.M_right + 4.0 * self.M_mid + self.M_left)))
 
 
-def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
-    """The periodic T at the nodes (T(φ_T) = T(0)) by secant iteration on T(0)."""
-    def P(T0):
+def _shoot(st: _Steps, M_d: Motor, T_guess: float, model: ReducedModel, max_iter: int) -> tuple[FloatArray, float]:
+    """The periodic T at the nodes (T(φ_T) = T(0)) by secant iteration on T(0), and the period map's multiplier."""
+    def P(T0: float) -> list[float]:
         try:
             return _one_period(T0, *st.args, M_d)
         except _Stall as s:
@@ -273,7 +308,9 @@ def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
                 f"where it would fall to {stall.T:.4g} J: the driving moment and the inertia cannot "
                 f"carry the load peak there. Increase J_F or the motor's torque, or reduce the load")
 
-    Ta, traj, stall = T_guess, None, None
+    Ta = T_guess
+    traj: list[float] | None = None
+    stall: _Stall | None = None
     for factor in (1.0, 2.0, 4.0, 8.0, 16.0):       # a little more energy may carry it past a peak
         try:
             traj = P(factor * T_guess)
@@ -324,7 +361,7 @@ def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
     return np.array(traj), mult
 
 
-def motor_motion(model: ReducedModel, motor, *, J_F: float, steps: int = 3600, positions: int = 360,
+def motor_motion(model: ReducedModel, motor: Motor, *, J_F: float, steps: int = 3600, positions: int = 360,
                  mean: str = "textbook", max_iter: int = 60) -> MotionResult:
     """The periodic steady motion under a speed-dependent driving moment M_d(ω).
 
@@ -428,7 +465,7 @@ def motor_motion(model: ReducedModel, motor, *, J_F: float, steps: int = 3600, p
     dT_right = Md[:-1] + st.M_right
     dT_left = Md[1:] + st.M_left
 
-    def local_extreme(k, sense):
+    def local_extreme(k: int, sense: int) -> tuple[float, float]:
         best = (sense * w[k], float(x[k]), float(w[k]))
         s = np.linspace(0.0, 1.0, 257)
         for j in (k - 1, k):
