@@ -333,7 +333,8 @@ class Study:
                 text = str(value)
             lines.append(f"| {key} | {text} | {_SUMMARY_UNITS.get(key, '')} |")
         title = getattr(self.case, "title", "")
-        head = f"**Dynamic study** of {title}, {self.m} positions" if str(title) else f"**Dynamic study**, {self.m} positions"
+        head = (f"**Dynamic study** of {title}, {self.m} positions" if str(title)
+                else f"**Dynamic study**, {self.m} positions")
         tail = [] if use_exact else ["", "(the exact flywheel is not computed yet: `study.to_markdown(exact=True)`)"]
         return "\n".join([head, ""] + lines + tail) + "\n"
 

@@ -251,7 +251,8 @@ def _check_arrays(J_e: ArrayLike, delta_T: ArrayLike, closure_rtol: float) -> tu
         J: FloatArray = np.asarray(J_e, dtype=float)
         dT: FloatArray = np.asarray(delta_T, dtype=float)
     except (TypeError, ValueError, OverflowError):
-        raise InputError(f"J_e and delta_T: give two columns of numbers (got {J_e!r:.60} and {delta_T!r:.60})") from None
+        raise InputError(f"J_e and delta_T: give two columns of numbers (got {J_e!r:.60} and "
+                         f"{delta_T!r:.60})") from None
     if np.abs(J).max(initial=0.0) > MAGNITUDE_MAX or np.abs(dT).max(initial=0.0) > MAGNITUDE_MAX:
         raise InputError(f"J_e and delta_T: values beyond ±{MAGNITUDE_MAX:g} are outside the range the construction "
                          f"computes with")

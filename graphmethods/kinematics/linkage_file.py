@@ -263,7 +263,8 @@ def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage
             rd.err(f"{key}.at", f"no point {at!r}; points: {', '.join(sorted(known))}")
         inertias.append(Inertia(link, at, m, J))
     if "load" not in data:
-        rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or {\"moment\": ..., \"on\": 3, ...}")
+        rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or "
+                       "{\"moment\": ..., \"on\": 3, ...}")
     ld = rd.obj("load", data["load"], ("force", "moment", "diagram", "on", "from", "to"))
     load: Load | DiagramLoad
     if "diagram" in ld:

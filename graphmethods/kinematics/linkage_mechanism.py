@@ -380,14 +380,16 @@ class LinkageMechanism(Mechanism):
                         continue
                     equation, rename = self._textbook(step, rec.equation)
                     lines = tuple(ConstructionLine(
-                        through=self._plan_label(st, pt), relation="perpendicular" if lab.startswith("⟂") else "parallel",
+                        through=self._plan_label(st, pt),
+                        relation="perpendicular" if lab.startswith("⟂") else "parallel",
                         to=rename.get(lab[2:], lab[2:]), point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
                         for lab, pt, d in rec.lines)
                     cons.append(PointConstruction(name=rec.point, method="intersection", equation=equation,
                                                   lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
                     if isinstance(step, RPP):
-                        cons.append(PointConstruction(name=step.R, method="same", on=step.coincident,
-                                                      equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
+                        cons.append(PointConstruction(
+                            name=step.R, method="same", on=step.coincident,
+                            equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
             else:
                 on = self._on(step)
                 lever = next((g for g in lk.groups if isinstance(g, RPR) and g.links[1] == step.link), None)

@@ -220,8 +220,8 @@ class Mechanism:
             raise InputError(f"{name}: angle #{int(np.argmax(bad))} is {a[bad][0]!r}; angles must be finite (rad)")
         big = np.abs(a) > MAX_ANGLE_RAD
         if big.any():
-            raise InputError(f"{name}: angle #{int(np.argmax(big))} = {a[big][0]:g} rad is beyond ±{MAX_ANGLE_RAD:g} rad; "
-                             f"reduce it modulo 2π first")
+            raise InputError(f"{name}: angle #{int(np.argmax(big))} = {a[big][0]:g} rad is beyond "
+                             f"±{MAX_ANGLE_RAD:g} rad; reduce it modulo 2π first")
         return a
 
     @staticmethod

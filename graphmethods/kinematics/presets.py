@@ -90,7 +90,8 @@ def slotted_lever(*, r: float, l_O1O3: float, l_O3B: float, theta_O3: float = -m
 
 
 def shaper(*, r: float, l_O1O3: float, l_O3B: float, l_BC: float, y_guide: float, theta_O3: float = -math.pi / 2,
-           assembly: int = 1, sense: int = 1, working_stroke: str = "slow", points: PointSpecs | None = None) -> Linkage:
+           assembly: int = 1, sense: int = 1, working_stroke: str = "slow",
+           points: PointSpecs | None = None) -> Linkage:
     """Shaper (as :class:`~graphmethods.kinematics.classic.Shaper` builds it): slotted lever, link
     4 = BC, ram 5 = C on the line y = y_guide.
 

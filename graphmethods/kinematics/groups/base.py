@@ -294,14 +294,23 @@ class Record:
     sin_between: FloatArray
 
 
+@dataclass(frozen=True)
+class Joints:
+    """How a group hangs in the linkage: the ``known`` joints it is attached at (P, Q), the points it
+    ``found`` (C; or R and the coincident point) and the ``guides`` its sliders move along."""
+
+    known: tuple[str, ...] = ()
+    found: tuple[str, ...] = ()
+    guides: tuple[Guide, ...] = ()
+
+
 class Group:
     """Base of the structural groups (class II dyads): see the subclasses.
 
     Subclasses are frozen dataclasses with a field ``links`` (the two textbook link numbers) and
-    set ``kind`` (``"RRR"``, ...), ``pairs``, ``known`` (the known joints the group is attached at),
-    ``found`` (the points it adds) and, where they slide on guides, ``guides``; and implement
-    ``positions``, ``velocities``, ``accelerations`` and ``records``. :meth:`inputs` and
-    :meth:`outputs` follow from those.
+    set ``kind`` (``"RRR"``, ...) and ``pairs``; and implement :meth:`joints` (the joints it is attached
+    at and finds, the guides it slides on), ``positions``, ``velocities``, ``accelerations`` and
+    ``records``. :meth:`inputs` and :meth:`outputs` follow from :meth:`joints`.
     """
 
     kind = "?"
@@ -313,32 +322,22 @@ class Group:
         """(pair kind, link, link, joint) for its three kinematic pairs: "R" revolute, "P" prismatic."""
         return ()
 
-    @property
-    def known(self) -> tuple[str, ...]:
-        """The known joints the group is attached at (P, Q)."""
-        return ()
-
-    @property
-    def found(self) -> tuple[str, ...]:
-        """The points the group finds (C; or R and the coincident point)."""
-        return ()
-
-    @property
-    def guides(self) -> tuple[Guide, ...]:
-        """The guides its sliders move along."""
-        return ()
+    def joints(self) -> Joints:  # pragma: no cover - interface
+        """The known joints the group is attached at, the points it finds and the guides it slides on."""
+        raise NotImplementedError
 
     def inputs(self) -> tuple[set[str], set[str]]:
         """(points, links) the group needs known: its joints, the guides' points and the links carrying them."""
-        points = set(self.known) | {g.through for g in self.guides if isinstance(g.through, str)}
-        return points, {g.link for g in self.guides} - {GROUND}
+        j = self.joints()
+        points = set(j.known) | {g.through for g in j.guides if isinstance(g.through, str)}
+        return points, {g.link for g in j.guides} - {GROUND}
 
     # The points are typed Any for now: kinematics.linkage (another branch's module) reuses one loop variable for
     # these names and then for its Point records (Linkage.__post_init__), which a str here would flag; tighten to
     # tuple[tuple[str, ...], tuple[str, str]] once that loop variable is renamed.
     def outputs(self) -> tuple[tuple[Any, ...], tuple[str, str]]:
         """(points, links) the group adds."""
-        return self.found, self.links
+        return self.joints().found, self.links
 
     def positions(self, st: State) -> None:  # pragma: no cover - interface
         """Add the group's points and link directions to ``st``."""

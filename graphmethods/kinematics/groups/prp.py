@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import Group, Guide, Pair, Record, State, broadcast, cross, solve2
+from graphmethods.kinematics.groups.base import Group, Guide, Joints, Pair, Record, State, broadcast, cross, solve2
 from graphmethods.kinematics.vectors import FloatArray
 
 
@@ -52,13 +52,8 @@ class PRP(Group):
         return (("P", self.guide_1.link, self.links[0], self.C), ("R", self.links[0], self.links[1], self.C),
                 ("P", self.guide_2.link, self.links[1], self.C))
 
-    @property
-    def found(self) -> tuple[str, ...]:
-        return (self.C,)
-
-    @property
-    def guides(self) -> tuple[Guide, ...]:
-        return self.guide_1, self.guide_2
+    def joints(self) -> Joints:
+        return Joints(found=(self.C,), guides=(self.guide_1, self.guide_2))
 
     def margin(self, st: State) -> FloatArray:
         _, u1, _, _ = self.guide_1.line(st)

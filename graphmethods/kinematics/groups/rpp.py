@@ -27,7 +27,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import Group, Guide, Pair, Real, Record, State, Vec, broadcast, cross, solve2
+from graphmethods.kinematics.groups.base import (
+    Group,
+    Guide,
+    Joints,
+    Pair,
+    Real,
+    Record,
+    State,
+    Vec,
+    broadcast,
+    cross,
+    solve2,
+)
 from graphmethods.kinematics.vectors import FloatArray
 
 
@@ -71,17 +83,8 @@ class RPP(Group):
         return (("R", "?", self.links[0], self.P), ("P", self.links[0], self.links[1], self.P),
                 ("P", self.guide.link, self.links[1], self.R))
 
-    @property
-    def known(self) -> tuple[str, ...]:
-        return (self.P,)
-
-    @property
-    def found(self) -> tuple[str, ...]:
-        return self.R, self.coincident
-
-    @property
-    def guides(self) -> tuple[Guide, ...]:
-        return (self.guide,)
+    def joints(self) -> Joints:
+        return Joints(known=(self.P,), found=(self.R, self.coincident), guides=(self.guide,))
 
     def _lines(self, st: State) -> tuple[Vec, Vec, Vec, Real, Real]:
         G, u2, w, e = self.guide.line(st)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import Group, Pair, Record, State, cross, fmt, solve2
+from graphmethods.kinematics.groups.base import Group, Joints, Pair, Record, State, cross, fmt, solve2
 from graphmethods.kinematics.vectors import FloatArray
 
 
@@ -72,13 +72,8 @@ class RPR(Group):
         return (("R", "?", self.links[0], self.P), ("P", self.links[0], self.links[1], self.P),
                 ("R", "?", self.links[1], self.Q))
 
-    @property
-    def known(self) -> tuple[str, ...]:
-        return self.P, self.Q
-
-    @property
-    def found(self) -> tuple[str, ...]:
-        return (self.coincident,)
+    def joints(self) -> Joints:
+        return Joints(known=(self.P, self.Q), found=(self.coincident,))
 
     def margin(self, st: State) -> FloatArray:
         rho = np.abs(st.z[self.P] - st.z[self.Q])

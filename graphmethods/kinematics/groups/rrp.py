@@ -29,7 +29,20 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Pair, Record, State, Vec, cross, dot, fmt, solve2
+from graphmethods.kinematics.groups.base import (
+    GROUND,
+    Group,
+    Guide,
+    Joints,
+    Pair,
+    Record,
+    State,
+    Vec,
+    cross,
+    dot,
+    fmt,
+    solve2,
+)
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 
@@ -71,17 +84,8 @@ class RRP(Group):
         return (("R", "?", self.links[0], self.P), ("R", self.links[0], self.links[1], self.C),
                 ("P", self.guide.link, self.links[1], self.C))
 
-    @property
-    def known(self) -> tuple[str, ...]:
-        return (self.P,)
-
-    @property
-    def found(self) -> tuple[str, ...]:
-        return (self.C,)
-
-    @property
-    def guides(self) -> tuple[Guide, ...]:
-        return (self.guide,)
+    def joints(self) -> Joints:
+        return Joints(known=(self.P,), found=(self.C,), guides=(self.guide,))
 
     def _geometry(self, st: State) -> tuple[Vec, Vec, ComplexArray, FloatArray]:
         G, u, _, _ = self.guide.line(st)

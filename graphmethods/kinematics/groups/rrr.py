@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import Group, Pair, Record, State, cross, fmt, solve2
+from graphmethods.kinematics.groups.base import Group, Joints, Pair, Record, State, cross, fmt, solve2
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 
@@ -67,13 +67,8 @@ class RRR(Group):
         return (("R", "?", self.links[0], self.P), ("R", self.links[0], self.links[1], self.C),
                 ("R", "?", self.links[1], self.Q))
 
-    @property
-    def known(self) -> tuple[str, ...]:
-        return self.P, self.Q
-
-    @property
-    def found(self) -> tuple[str, ...]:
-        return (self.C,)
+    def joints(self) -> Joints:
+        return Joints(known=(self.P, self.Q), found=(self.C,))
 
     def _heron(self, st: State) -> tuple[ComplexArray, ComplexArray, FloatArray, FloatArray]:
         P, Q = st.z[self.P], st.z[self.Q]
