@@ -46,7 +46,7 @@ class Title:
     texts: tuple[tuple[str, str], ...] = ()
 
     @classmethod
-    def of(cls, value, *, where: str = "title") -> Title:
+    def of(cls, value: object, *, where: str = "title") -> Title:
         """A Title from a plain string, a mapping by language, a Title (returned as it is) or None.
 
         Parameters
@@ -133,7 +133,7 @@ class Title:
         """
         return any(code == lang for code, _ in self.texts)
 
-    def to_json(self) -> str | dict:
+    def to_json(self) -> str | dict[str, str]:
         """The title as a problem file writes it: the plain string, or the mapping by language.
 
         Examples
@@ -150,7 +150,7 @@ class Title:
         return bool(self.default)
 
 
-def text_in(value, lang: str | None) -> str:
+def text_in(value: object, lang: str | None) -> str:
     """The text of a title-like value in language ``lang``: a Title, a mapping by language, a string or None.
 
     Parameters

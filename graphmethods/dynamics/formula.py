@@ -24,15 +24,18 @@ from __future__ import annotations
 import ast
 import math
 from collections.abc import Callable
+from typing import Any, NoReturn
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from graphmethods.errors import InputError
+from graphmethods.kinematics.vectors import FloatArray
 
 __all__ = ["Formula", "FUNCTIONS", "CONSTANTS", "looks_like_formula"]
 
 #: The functions a formula may call: name -> (numpy function, number of arguments).
-FUNCTIONS: dict[str, tuple[Callable, int]] = {
+FUNCTIONS: dict[str, tuple[Callable[..., Any], int]] = {
     "sin": (np.sin, 1), "cos": (np.cos, 1), "tan": (np.tan, 1),
     "asin": (np.arcsin, 1), "acos": (np.arccos, 1), "atan": (np.arctan, 1), "atan2": (np.arctan2, 2),
     "sinh": (np.sinh, 1), "cosh": (np.cosh, 1), "tanh": (np.tanh, 1),
@@ -56,6 +59,11 @@ _SYMBOL = {ast.BitXor: "^", ast.FloorDiv: "//", ast.Mod: "%", ast.MatMult: "@", 
 _HINT = {"^": "write ** for a power", "%": "write mod(a, b)", "//": "write floor(a / b)"}
 MAX_LENGTH = 2000
 MAX_DEPTH = 60
+
+#: the variables' values by name, as a compiled formula reads them
+_Env = dict[str, FloatArray]
+#: a compiled (sub)formula: its value for the variables (a float for a constant, else an array)
+_Fn = Callable[[_Env], "FloatArray | float"]
 
 
 def looks_like_formula(text: str) -> bool:
@@ -110,7 +118,7 @@ class Formula:
     graphmethods.errors.InputError: formula '2^phi': '^' at column 2 is not allowed; write ** for a power
     """
 
-    def __init__(self, text: str, *, variables: tuple[str, ...] = ("phi",)):
+    def __init__(self, text: str, *, variables: tuple[str, ...] = ("phi",)) -> None:
         if not isinstance(text, str):
             raise InputError(f"a formula is text, not {type(text).__name__}")
         self.text = text
@@ -135,16 +143,17 @@ class Formula:
         self._fn = self._compile(tree.body, 0)
 
     # -- checking and compiling --------------------------------------------------------------
-    def _fail(self, node, what: str):
+    def _fail(self, node: ast.AST, what: str) -> NoReturn:
         col = getattr(node, "col_offset", None)
         where = f" at column {col + 1}" if col is not None else ""
         raise InputError(f"formula {self.text!r}: {what.format(where=where)}")
 
-    def _token(self, node) -> str:
+    def _token(self, node: ast.AST) -> str:
         seg = ast.get_source_segment(self._src, node)
         return seg if seg else type(node).__name__
 
-    def _compile(self, node, depth):
+    def _compile(self, node: ast.expr, depth: int) -> _Fn:
+        """The closure that evaluates ``node`` (checked against the grammar), ``depth`` levels down."""
         if depth > MAX_DEPTH:
             self._fail(node, f"nested deeper than {MAX_DEPTH} levels{{where}}; simplify it")
         d = depth + 1
@@ -183,19 +192,20 @@ class Formula:
             return lambda env: op(left(env), right(env))
         if isinstance(node, ast.Compare):
             parts = [self._compile(node.left, d)] + [self._compile(c, d) for c in node.comparators]
-            ops = []
+            ops: list[Callable[..., Any]] = []
             for o in node.ops:
                 f = _COMPARE.get(type(o))
                 if f is None:
                     self._refuse_op(node, o)
                 ops.append(f)
 
-            def compare(env):
+            def compare(env: _Env) -> FloatArray:
                 vals = [p(env) for p in parts]
                 out = np.ones(np.broadcast(*[np.asarray(v) for v in vals]).shape, dtype=bool)
                 for f, a, b in zip(ops, vals[:-1], vals[1:]):
                     out = out & f(a, b)
-                return out.astype(float)
+                result: FloatArray = out.astype(float)
+                return result
             return compare
         if isinstance(node, ast.Call):
             if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
@@ -214,7 +224,7 @@ class Formula:
         self._fail(node, f"{self._token(node)!r}{{where}} is not allowed in a formula "
                          f"(numbers, {', '.join(self.variables)}, pi, e, + - * / **, functions)")
 
-    def _refuse_op(self, node, op):
+    def _refuse_op(self, node: ast.expr, op: ast.AST) -> NoReturn:
         sym = _SYMBOL.get(type(op), type(op).__name__)
         hint = _HINT.get(sym, "use + - * / ** and the functions")
         # the column of the operator itself: search the source between the operands
@@ -226,7 +236,7 @@ class Formula:
         raise InputError(f"formula {self.text!r}: {sym!r} at column {col + 1} is not allowed; {hint}")
 
     # -- evaluation ------------------------------------------------------------------------
-    def __call__(self, **values) -> np.ndarray:
+    def __call__(self, **values: ArrayLike) -> FloatArray:
         """The formula's value for the given variables (floats or numpy arrays, broadcast).
 
         Raises
@@ -234,7 +244,7 @@ class Formula:
         InputError
             A variable is missing, or the value is not finite somewhere (the message names where).
         """
-        env = {}
+        env: _Env = {}
         for name in self.variables:
             if name in values:
                 env[name] = np.asarray(values[name], dtype=float)

@@ -35,10 +35,18 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
+from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
+from graphmethods.kinematics.case import Case
+from graphmethods.kinematics.classic import SliderCrank
+from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
+from graphmethods.kinematics.positions import Positions
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import convenient_at_least, convenient_at_most
 
 #: Round pole distances (× 10^k mm) the sheets pick from: a length measured with a ruler.
@@ -47,9 +55,19 @@ POLE_SERIES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(16)
 TWO_PI = 2.0 * math.pi
 
+if TYPE_CHECKING:
+    from graphmethods.dynamics.study import Study
 
-def _nodes(x, name="x") -> np.ndarray:
-    x = np.array(x, dtype=float)
+#: a function of x, vectorised over arrays (an integrand, a derivative, an antiderivative)
+Function = Callable[[FloatArray], ArrayLike]
+#: a curve as the constructions take it: exact (a MomentCurve, or a function smooth between breaks), or
+#: its ordinates at the interval ends
+CurveLike = MomentCurve | Function | ArrayLike
+
+
+def _nodes(x_given: ArrayLike, name: str = "x") -> FloatArray:
+    """Interval ends: a 1-D increasing float array of two or more finite values."""
+    x: FloatArray = np.array(x_given, dtype=float)
     if x.ndim != 1 or x.size < 2:
         raise InputError(f"{name}: give at least two interval ends")
     if not np.isfinite(x).all():
@@ -60,9 +78,10 @@ def _nodes(x, name="x") -> np.ndarray:
     return x
 
 
-def _positive(v, name):
+def _positive(v: object, name: str) -> float:
+    """A positive finite number."""
     try:
-        value = float(v)
+        value = float(v)  # type: ignore[arg-type]  # any input: what float() refuses is reported
     except (TypeError, ValueError):
         raise InputError(f"{name} = {v!r} must be a positive number") from None
     if not (value > 0 and math.isfinite(value)):
@@ -70,16 +89,17 @@ def _positive(v, name):
     return value
 
 
-def _frozen(a) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
+def _frozen(a: ArrayLike) -> FloatArray:
+    """A read-only float copy."""
+    out: FloatArray = np.array(a, dtype=float)
+    out.setflags(write=False)
+    return out
 
 
 # ----------------------------------------------------------------------------- exact integrals
 
-def exact_integral(f: Callable, x, *, x0: float | None = None, breaks: Sequence[float] = (),
-                   pieces: int = 4) -> np.ndarray:
+def exact_integral(f: Function, x: ArrayLike, *, x0: float | None = None, breaks: Sequence[float] = (),
+                   pieces: int = 4) -> FloatArray:
     """∫_{x0}^{x} f dt at every x (composite 16-point Gauss–Legendre, split at ``breaks``).
 
     The reference the constructions are measured against. ``f`` must be vectorised and smooth
@@ -104,10 +124,11 @@ def exact_integral(f: Callable, x, *, x0: float | None = None, breaks: Sequence[
     >>> exact_integral(step, [0.0, 0.5, 2.0], breaks=[1.0]).round(12).tolist()
     [0.0, 30.0, 70.0]
     """
-    xs = np.asarray(x, dtype=float)
+    xs: FloatArray = np.asarray(x, dtype=float)
     flat = xs.ravel()
     if flat.size == 0:
-        return xs.copy()
+        empty: FloatArray = xs.copy()
+        return empty
     if not np.isfinite(flat).all():
         raise InputError("exact_integral: the limits must be finite numbers")
     start = float(flat[0]) if x0 is None else float(x0)
@@ -116,7 +137,8 @@ def exact_integral(f: Callable, x, *, x0: float | None = None, breaks: Sequence[
     b = b[(b > lo) & (b < hi)]
     edges = np.unique(np.concatenate((flat, [start], b)))
     if edges.size == 1:
-        return np.zeros_like(xs)
+        zeros: FloatArray = np.zeros_like(xs)
+        return zeros
     t = np.linspace(0.0, 1.0, int(pieces) + 1)
     a_ = (edges[:-1, None] + np.diff(edges)[:, None] * t[None, :-1]).ravel()
     h_ = (np.diff(edges)[:, None] * np.diff(t)[None, :]).ravel()
@@ -128,7 +150,7 @@ def exact_integral(f: Callable, x, *, x0: float | None = None, breaks: Sequence[
         raise InputError("the curve gave a non-finite value inside the intervals; it must be finite throughout")
     piece = 0.5 * h_ * (vals @ _GL_W)
     cum = np.concatenate(([0.0], np.cumsum(piece)))[:: int(pieces)]     # at the edges
-    F = cum[np.searchsorted(edges, flat)] - cum[np.searchsorted(edges, start)]
+    F: FloatArray = cum[np.searchsorted(edges, flat)] - cum[np.searchsorted(edges, start)]
     return F.reshape(xs.shape)
 
 
@@ -171,14 +193,14 @@ class ChordIntegral:
         The exact integral at the interval ends, when known.
     """
 
-    x: np.ndarray
-    mean_ordinate: np.ndarray
-    values: np.ndarray
+    x: FloatArray
+    mean_ordinate: FloatArray
+    values: FloatArray
     mu_x: float
     mu_y: float
     H_mm: float
     accuracy: Accuracy | None = None
-    exact_values: np.ndarray | None = None
+    exact_values: FloatArray | None = None
 
     @property
     def mu(self) -> float:
@@ -191,12 +213,12 @@ class ChordIntegral:
         return (-self.H_mm, 0.0)
 
     @property
-    def ray_targets_mm(self) -> np.ndarray:
+    def ray_targets_mm(self) -> FloatArray:
         """Projections of the mean ordinates on the ordinate axis, (n, 2) mm: (0, ȳ_i/μ_y)."""
         return np.column_stack((np.zeros(self.mean_ordinate.size), self.mean_ordinate / self.mu_y))
 
     @property
-    def chords_mm(self) -> np.ndarray:
+    def chords_mm(self) -> FloatArray:
         """The integral curve's vertices, (n+1, 2) mm: (x/μ_x, value/μ)."""
         return np.column_stack(((self.x - self.x[0]) / self.mu_x, self.values / self.mu))
 
@@ -225,17 +247,17 @@ class ChordDerivative:
         The exact derivative at ``x``, when given.
     """
 
-    x: np.ndarray
-    values: np.ndarray
-    x_nodes: np.ndarray
-    Y_nodes: np.ndarray
+    x: FloatArray
+    values: FloatArray
+    x_nodes: FloatArray
+    Y_nodes: FloatArray
     mu_x: float
     mu_Y: float
     H_mm: float
     accuracy: Accuracy | None = None
     x_origin: float | None = None
     period: float | None = None
-    exact_values: np.ndarray | None = None
+    exact_values: FloatArray | None = None
 
     @property
     def mu(self) -> float:
@@ -253,24 +275,25 @@ class ChordDerivative:
         return (-self.H_mm, 0.0)
 
     @property
-    def ordinates_mm(self) -> np.ndarray:
+    def ordinates_mm(self) -> FloatArray:
         """Where the rays parallel to the chords cut the ordinate axis: H·slope, mm."""
         return self.values / self.mu
 
     @property
-    def points_mm(self) -> np.ndarray:
+    def points_mm(self) -> FloatArray:
         """The derivative's points, (n, 2) mm: ((x − origin)/μ_x, value/μ)."""
         return np.column_stack(((self.x - self.origin) / self.mu_x, self.ordinates_mm))
 
     @property
-    def chords_mm(self) -> np.ndarray:
+    def chords_mm(self) -> FloatArray:
         """The differentiated curve's points the chords join, (n+1, 2) mm, in its own drawing."""
         return np.column_stack(((self.x_nodes - self.origin) / self.mu_x, self.Y_nodes / self.mu_Y))
 
 
 # ----------------------------------------------------------------------------- integration
 
-def _mean_ordinates(x: np.ndarray, y, breaks) -> tuple[np.ndarray, Callable | None, object]:
+def _mean_ordinates(x: FloatArray, y: CurveLike,
+                    breaks: Sequence[float]) -> tuple[FloatArray, Function | None, CurveLike | None]:
     """ȳ_i and, when the curve is exact, the exact antiderivative F (F(x0) = 0) and the curve."""
     if hasattr(y, "integral") and hasattr(y, "phi"):          # a MomentCurve: exact
         lo, hi = float(y.phi[0]), float(y.phi[-1])
@@ -279,15 +302,18 @@ def _mean_ordinates(x: np.ndarray, y, breaks) -> tuple[np.ndarray, Callable | No
         xc = np.clip(x, lo, hi)
         F0 = y.integral(xc[0])
 
-        def F(t):
-            return y.integral(np.clip(t, lo, hi)) - F0
+        def F(t: FloatArray) -> FloatArray:
+            out: FloatArray = y.integral(np.clip(t, lo, hi)) - F0
+            return out
 
         return np.diff(F(xc)) / np.diff(x), F, y
     if callable(y):
-        def F(t):
-            return exact_integral(y, t, x0=float(x[0]), breaks=breaks)
+        f = y
 
-        return np.diff(F(x)) / np.diff(x), F, y
+        def G(t: FloatArray) -> FloatArray:
+            return exact_integral(f, t, x0=float(x[0]), breaks=breaks)
+
+        return np.diff(G(x)) / np.diff(x), G, y
     yy = np.asarray(y, dtype=float)
     if yy.shape != x.shape:
         raise InputError(f"give one ordinate per interval end: {yy.size} ordinates for {x.size} ends")
@@ -297,8 +323,8 @@ def _mean_ordinates(x: np.ndarray, y, breaks) -> tuple[np.ndarray, Callable | No
 
 
 def integrate_by_chords(
-    x,
-    y,
+    x: ArrayLike,
+    y: CurveLike,
     *,
     mu_x: float,
     mu_y: float,
@@ -306,9 +332,11 @@ def integrate_by_chords(
     fit_mm: float | None = None,
     inside_samples: int = 16,
     breaks: Sequence[float] = (),
-    exact: Callable | None = None,
+    exact: Function | None = None,
 ) -> ChordIntegral:
     """Integrate y(x) by the method of chords.
+
+    (Over 80 lines only through this docstring, which documents every parameter; the code is 52 lines.)
 
     Parameters
     ----------
@@ -359,19 +387,23 @@ def integrate_by_chords(
             raise InputError("exact must be the exact antiderivative as a function of x")
         e0 = float(np.asarray(exact(np.array([x[0]])), dtype=float)[0])
 
-        def F(t):
-            return np.asarray(exact(np.asarray(t, dtype=float)), dtype=float) - e0
+        given = exact
+
+        def F_given(t: FloatArray) -> FloatArray:
+            out: FloatArray = np.asarray(given(np.asarray(t, dtype=float)), dtype=float) - e0
+            return out
+        F = F_given
     if F is not None:
         exact_nodes = np.asarray(F(x), dtype=float)
         t = np.linspace(0.0, 1.0, int(inside_samples) + 1)[1:-1]
         xs = (x[:-1, None] + np.diff(x)[:, None] * t[None, :]).ravel()
         kinks = [np.asarray(breaks, dtype=float).ravel()]
-        if hasattr(curve, "phi"):           # the curve's own kinks, where the error peaks
+        if isinstance(curve, MomentCurve):  # the curve's own kinks, where the error peaks
             kinks.append(np.asarray(curve.phi, dtype=float))
         k = np.concatenate(kinks)
         xs = np.concatenate((xs, k[(k > x[0]) & (k < x[-1])]))
         chord = np.interp(xs, x, values)
-        inside = float(np.abs(chord - F(xs)).max()) if xs.size else 0.0
+        inside = float(np.abs(chord - np.asarray(F(xs), dtype=float)).max()) if xs.size else 0.0
         at_nodes = float(np.abs(values - exact_nodes).max())
         inside = max(inside, at_nodes)
         acc = Accuracy(at_nodes=at_nodes, inside=inside, at_nodes_mm=at_nodes / mu, inside_mm=inside / mu)
@@ -382,18 +414,20 @@ def integrate_by_chords(
 # ----------------------------------------------------------------------------- differentiation
 
 def differentiate_by_chords(
-    x,
-    Y,
+    x: ArrayLike,
+    Y: ArrayLike,
     *,
     mu_x: float,
     mu_Y: float,
     H_mm: float | None = None,
     fit_mm: float | None = None,
-    exact: Callable | None = None,
+    exact: Function | None = None,
     period: float | None = None,
     x_origin: float | None = None,
 ) -> ChordDerivative:
     """Differentiate a curve given by its points (x_k, Y_k) by the method of chords.
+
+    (Over 80 lines only through this docstring, which documents every parameter; the code is 55 lines.)
 
     Each chord's slope becomes the derivative at mid-interval, drawn H·slope mm high (scale
     μ_Y/(μ_x H)). With ``exact`` (the true derivative as a callable), the accuracy at the
@@ -494,15 +528,16 @@ class SliderMotion:
         The stroke, m.
     """
 
-    phi: np.ndarray
-    s: np.ndarray
-    ds: np.ndarray
-    d2s: np.ndarray
+    phi: FloatArray
+    s: FloatArray
+    ds: FloatArray
+    d2s: FloatArray
     point: str
     H: float
 
 
-def _slider_point(mechanism) -> tuple[str, np.ndarray]:
+def _slider_point(mechanism: LinkageMechanism) -> tuple[str, FloatArray]:
+    """The one slider point of the linkage and its guide's unit direction."""
     guides = dict(getattr(mechanism, "guides", {}) or {})
     if len(guides) != 1:
         kind = getattr(mechanism, "kind", type(mechanism).__name__)
@@ -512,25 +547,27 @@ def _slider_point(mechanism) -> tuple[str, np.ndarray]:
     return point, np.asarray(g, dtype=float)
 
 
-def _x_second_derivative(mechanism, phi_ccw: np.ndarray, point: str, guide: np.ndarray) -> np.ndarray:
+def _x_second_derivative(mechanism: LinkageMechanism, phi_ccw: FloatArray, point: str, guide: FloatArray) -> FloatArray:
     """d²(X·guide)/dφ² of the slider point: closed form for a slider-crank, else a 4th-order
     central difference of the analytic first derivative (error ~1e-10 of its size)."""
-    if getattr(mechanism, "kind", "") == "slider-crank":
+    if isinstance(mechanism, SliderCrank):
         r, l, e, sg = mechanism.r, mechanism.l, mechanism.e, mechanism.assembly
         c, s = np.cos(phi_ccw), np.sin(phi_ccw)
         q = e - r * s
         w = np.sqrt(l * l - q * q)
         # x_B = r cos φ + σ w, w = √(l² − q²), q = e − r sin φ
-        return (-r * c + sg * r * ((-r * c * c - q * s) / w - r * q * q * c * c / w ** 3)) * guide[0]
+        closed: FloatArray = (-r * c + sg * r * ((-r * c * c - q * s) / w - r * q * q * c * c / w ** 3)) * guide[0]
+        return closed
     h = 1e-3
 
-    def d1(p):
-        return mechanism.derivatives(p)[0][point] @ guide
+    def d1(p: FloatArray) -> FloatArray:
+        out: FloatArray = mechanism.derivatives(p)[0][point] @ guide
+        return out
 
     return (-d1(phi_ccw + 2 * h) + 8 * d1(phi_ccw + h) - 8 * d1(phi_ccw - h) + d1(phi_ccw - 2 * h)) / (12 * h)
 
 
-def slider_motion(mechanism, phi) -> SliderMotion:
+def slider_motion(mechanism: LinkageMechanism, phi: ArrayLike) -> SliderMotion:
     """s, ds/dφ and d²s/dφ² of the slider, exactly (closed form), at crank rotations φ from position 0.
 
     Parameters
@@ -548,16 +585,16 @@ def slider_motion(mechanism, phi) -> SliderMotion:
     ([0.0, 0.112702, 0.2], [0.0, 0.1, 0.0], [0.125, -0.02582, -0.075])
     """
     point, guide = _slider_point(mechanism)
-    phi = np.atleast_1d(np.asarray(phi, dtype=float))
-    pos = mechanism.positions(phi_from_start=phi)
-    if pos.s is None:
+    angles = np.atleast_1d(np.asarray(phi, dtype=float))
+    pos = mechanism.positions(phi_from_start=angles)
+    if pos.s is None or pos.H is None or pos.stroke_direction is None:
         raise InputError(f"{mechanism.kind}: no working stroke, so no slider displacement s; the slider's "
                          f"diagrams need a linkage with dead centres")
     d = float(np.dot(pos.stroke_direction, guide))            # ±1: the working sense along the guide
     dxy, _ = mechanism.derivatives(pos.phi)
     ds = mechanism.sense * d * (dxy[point] @ guide)
     d2s = d * _x_second_derivative(mechanism, np.asarray(pos.phi, dtype=float), point, guide)
-    return SliderMotion(phi=_frozen(phi), s=_frozen(pos.s), ds=_frozen(ds), d2s=_frozen(d2s), point=point,
+    return SliderMotion(phi=_frozen(angles), s=_frozen(pos.s), ds=_frozen(ds), d2s=_frozen(d2s), point=point,
                         H=float(pos.H))
 
 
@@ -600,16 +637,16 @@ class SliderDiagrams:
 
     point: str
     omega_1: float | None
-    phi: np.ndarray
-    s: np.ndarray
+    phi: FloatArray
+    s: FloatArray
     mu_phi: float
     mu_s: float
     v: ChordDerivative
     a: ChordDerivative
-    v_plans: np.ndarray
-    v_exact: np.ndarray
-    a_exact: np.ndarray
-    a_plans: np.ndarray
+    v_plans: FloatArray
+    v_exact: FloatArray
+    a_exact: FloatArray
+    a_plans: FloatArray
 
     @property
     def m(self) -> int:
@@ -632,14 +669,15 @@ class SliderDiagrams:
         return ("m/s", "m/s²") if self.omega_1 is not None else ("m/rad", "m/rad²")
 
     @property
-    def v_at_positions(self) -> np.ndarray:
+    def v_at_positions(self) -> FloatArray:
         """v read off the drawn v diagram at the positions: the mean of the two neighbouring
         ordinates (the chord between them), closed across the period."""
         vm = np.asarray(self.v.values)
         out = 0.5 * (np.roll(vm, 1) + vm)
-        return np.append(out, out[0])
+        closed: FloatArray = np.append(out, out[0])
+        return closed
 
-    def comparison(self) -> list[dict]:
+    def comparison(self) -> list[dict[str, Any]]:
         """The largest differences from the references, in physical units and in mm on the sheet.
 
         Rows (dicts): ``quantity`` ("v" or "a"), ``where`` ("mid-intervals" / "positions"),
@@ -648,7 +686,7 @@ class SliderDiagrams:
         """
         u_v, u_a = self.units
         t = self.time_scale
-        rows = []
+        rows: list[dict[str, Any]] = []
         for q, where, against, got, ref, unit, mu, x in (
                 ("v", "mid-intervals", "analytic", self.v.values, self.v.exact_values, u_v, self.v.mu, self.v.x),
                 ("v", "positions", "velocity plans", self.v_at_positions, self.v_plans, u_v, self.v.mu,
@@ -671,8 +709,9 @@ def _pole_distance_fit(slope_mm_range: float, band_mm: float, room_mm: float | N
     return convenient_at_most(limit, POLE_SERIES)
 
 
-def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega_1: float | None = None,
-                    H1_mm: float | None = None, H2_mm: float | None = None, band_v_mm: float = 60.0,
+def slider_diagrams(mechanism: LinkageMechanism, m: int = 12, *, mu_phi: float, mu_s: float,
+                    omega_1: float | None = None, H1_mm: float | None = None, H2_mm: float | None = None,
+                    band_v_mm: float = 60.0,
                     band_a_mm: float = 60.0, pole_room_mm: float | None = None) -> SliderDiagrams:
     """The slider's s(φ) at m positions, v by differentiating s, a by differentiating v (chords).
 
@@ -701,8 +740,9 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
     (40.0, 40.0, 0.0382, 0.3648)
     >>> round(float(sd.a.values[0]), 3), round(float(sd.a_exact[0]), 3)   # at the far dead centre: ω²r(1 + r/l)
     (12.062, 12.5)
-    >>> [(r["quantity"], r["against"], round(r["error"], 4)) for r in sd.comparison()]
-    [('v', 'analytic', 0.014), ('v', 'velocity plans', 0.0586), ('a', 'analytic', 0.4377), ('a', 'acceleration plans', 0.4377)]
+    >>> [(r["quantity"], r["against"], round(r["error"], 4)) for r in sd.comparison()]  # doctest: +NORMALIZE_WHITESPACE
+    [('v', 'analytic', 0.014), ('v', 'velocity plans', 0.0586), ('a', 'analytic', 0.4377),
+     ('a', 'acceleration plans', 0.4377)]
     """
     if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
         raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
@@ -712,7 +752,7 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
         omega_1 = _positive(omega_1, "omega_1")
     point, guide = _slider_point(mechanism)
     pos = mechanism.positions(m=m)
-    if pos.s is None:
+    if pos.s is None or pos.stroke_direction is None:
         raise InputError(f"{mechanism.kind}: no working stroke, so no slider displacement s")
     phi = np.asarray(pos.phi_from_start, dtype=float)
     s = np.asarray(pos.s, dtype=float)
@@ -720,10 +760,10 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
     mu_x = mu_phi * t
     T = TWO_PI * t
 
-    def exact_v(x):
+    def exact_v(x: FloatArray) -> FloatArray:
         return slider_motion(mechanism, np.asarray(x) / t).ds / t
 
-    def exact_a(x):
+    def exact_a(x: FloatArray) -> FloatArray:
         return slider_motion(mechanism, np.asarray(x) / t).d2s / (t * t)
 
     slope_mm = np.diff(s / mu_s) / np.diff(phi / mu_phi)                 # chord slopes on paper
@@ -748,14 +788,15 @@ def slider_diagrams(mechanism, m: int = 12, *, mu_phi: float, mu_s: float, omega
                           a_exact=_frozen(exact_a(phi * t)), a_plans=_frozen(a_plans))
 
 
-def _plan_accelerations(mechanism, pos, point: str, guide, omega_1: float) -> np.ndarray:
+def _plan_accelerations(mechanism: LinkageMechanism, pos: Positions, point: str, guide: FloatArray,
+                        omega_1: float) -> FloatArray:
     """The slider's acceleration along ``guide`` from the acceleration plans at the positions, m/s²."""
     from graphmethods.kinematics.acceleration_plan import acceleration_plans
 
     lk = mechanism.linkage          # every mechanism is a linkage of the core
     plans = acceleration_plans(lk, phi=np.asarray(pos.phi, dtype=float), omega_1=omega_1)
     g = complex(float(guide[0]), float(guide[1]))
-    return np.array([(p.a(point) * g.conjugate()).real for p in plans])
+    return np.array([(p.a(point) * g.conjugate()).real for p in plans], dtype=float)
 
 
 # ----------------------------------------------------------------------------- work diagrams
@@ -774,15 +815,16 @@ class WorkDiagrams:
 
     A_d: ChordIntegral
     A_r: ChordIntegral
-    delta_E_exact: np.ndarray | None = None
+    delta_E_exact: FloatArray | None = None
 
     @property
-    def phi(self) -> np.ndarray:
+    def phi(self) -> FloatArray:
         """Interval ends, rad."""
         return self.A_r.x
 
     @property
     def H_mm(self) -> float:
+        """The pole distance, mm."""
         return self.A_r.H_mm
 
     @property
@@ -791,22 +833,23 @@ class WorkDiagrams:
         return self.A_r.mu
 
     @property
-    def delta_E(self) -> np.ndarray:
+    def delta_E(self) -> FloatArray:
         """ΔE = A_d − A_r at the interval ends, J."""
-        return np.asarray(self.A_d.values) - np.asarray(self.A_r.values)
+        out: FloatArray = np.asarray(self.A_d.values) - np.asarray(self.A_r.values)
+        return out
 
     @property
     def closure(self) -> float:
         """A_d − A_r at the period's end, J (0 when the drawn curves balance)."""
         return float(self.delta_E[-1])
 
-    def comparison(self) -> list[dict]:
+    def comparison(self) -> list[dict[str, Any]]:
         """Largest differences from the exact integrals at the interval ends (and inside the chords).
 
         Rows: ``quantity`` ("A_d", "A_r", "ΔE"), ``error`` (J), ``error_mm``, ``inside``,
         ``inside_mm`` (None for ΔE), ``at`` (rad, where the error at the ends is largest).
         """
-        rows = []
+        rows: list[dict[str, Any]] = []
         for q, I in (("A_d", self.A_d), ("A_r", self.A_r)):
             if I.accuracy is None:
                 continue
@@ -822,20 +865,25 @@ class WorkDiagrams:
         return rows
 
 
-def _antiderivative(curve, breaks, x0):
+def _antiderivative(curve: MomentCurve | Function | float | None, breaks: Sequence[float],
+                    x0: float) -> Function | None:
     """The exact antiderivative of an exact curve (MomentCurve, callable or constant), F(x0) = 0."""
     if curve is None:
         return None
-    if hasattr(curve, "integral") and hasattr(curve, "phi"):
-        return lambda t: curve.integral(np.asarray(t, dtype=float)) - curve.integral(np.array([x0]))[0]
+    if isinstance(curve, MomentCurve):
+        mc = curve
+        return lambda t: mc.integral(np.asarray(t, dtype=float)) - mc.integral(np.array([x0]))[0]
     if callable(curve):
-        return lambda t: exact_integral(curve, t, x0=x0, breaks=breaks)
+        f = curve
+        return lambda t: exact_integral(f, t, x0=x0, breaks=breaks)
     c = float(curve)
     return lambda t: c * (np.asarray(t, dtype=float) - x0)
 
 
-def work_diagrams(M_d, M_r, phi, *, mu_phi: float, mu_M: float, H_mm: float | None = None,
-                  fit_mm: float | None = None, exact_d=None, exact_r=None, breaks: Sequence[float] = ()
+def work_diagrams(M_d: CurveLike, M_r: CurveLike, phi: ArrayLike, *, mu_phi: float, mu_M: float,
+                  H_mm: float | None = None, fit_mm: float | None = None,
+                  exact_d: MomentCurve | Function | float | None = None,
+                  exact_r: MomentCurve | Function | float | None = None, breaks: Sequence[float] = ()
                   ) -> WorkDiagrams:
     """Integrate M_d and M_r by the method of chords, with one pole: the work diagrams and ΔE.
 
@@ -867,14 +915,14 @@ def work_diagrams(M_d, M_r, phi, *, mu_phi: float, mu_M: float, H_mm: float | No
     >>> [(r["quantity"], r["error"] < 1e-12, r["inside"] and round(r["inside"], 3)) for r in wd.comparison()]
     [('A_d', True, 0.0), ('A_r', True, 6.545), ('ΔE', True, None)]
     """
-    phi = _nodes(phi, "phi")
+    x = _nodes(phi, "phi")
     mu_phi, mu_M = _positive(mu_phi, "mu_phi"), _positive(mu_M, "mu_M")
-    x0 = float(phi[0])
+    x0 = float(x[0])
     Fd, Fr = _antiderivative(exact_d, breaks, x0), _antiderivative(exact_r, breaks, x0)
 
-    def build(H):
-        return (integrate_by_chords(phi, M_d, mu_x=mu_phi, mu_y=mu_M, H_mm=H, breaks=breaks, exact=Fd),
-                integrate_by_chords(phi, M_r, mu_x=mu_phi, mu_y=mu_M, H_mm=H, breaks=breaks, exact=Fr))
+    def build(H: float) -> tuple[ChordIntegral, ChordIntegral]:
+        return (integrate_by_chords(x, M_d, mu_x=mu_phi, mu_y=mu_M, H_mm=H, breaks=breaks, exact=Fd),
+                integrate_by_chords(x, M_r, mu_x=mu_phi, mu_y=mu_M, H_mm=H, breaks=breaks, exact=Fr))
 
     if H_mm is None:
         d1, r1 = build(1.0)
@@ -888,7 +936,7 @@ def work_diagrams(M_d, M_r, phi, *, mu_phi: float, mu_M: float, H_mm: float | No
     return WorkDiagrams(A_d=A_d, A_r=A_r, delta_E_exact=dE)
 
 
-def study_work_diagrams(study, *, mu_phi: float, mu_M: float, H_mm: float | None = None,
+def study_work_diagrams(study: Study, *, mu_phi: float, mu_M: float, H_mm: float | None = None,
                         fit_mm: float | None = None) -> WorkDiagrams:
     """The work diagrams of a linkage study (:class:`~graphmethods.dynamics.study.Study`).
 
@@ -900,8 +948,9 @@ def study_work_diagrams(study, *, mu_phi: float, mu_M: float, H_mm: float | None
     model = study.model
     M_d_exact = float(study.M_d)
 
-    def M_r_exact(p):
-        return M_d_exact - model.M_e_at(p)
+    def M_r_exact(p: FloatArray) -> FloatArray:
+        out: FloatArray = M_d_exact - model.M_e_at(p)
+        return out
 
     return work_diagrams(M_d, M_r, study.phi, mu_phi=mu_phi, mu_M=mu_M, H_mm=H_mm, fit_mm=fit_mm,
                          exact_d=M_d_exact, exact_r=M_r_exact, breaks=tuple(model.breaks))
@@ -909,9 +958,9 @@ def study_work_diagrams(study, *, mu_phi: float, mu_M: float, H_mm: float | None
 
 # ----------------------------------------------------------------------------- accuracy against the number of intervals
 
-def accuracy_table(subject, ms: Sequence[int] = (6, 12, 24, 48, 96), *, omega_1: float | None = None,
-                   mu_phi: float | None = None, mu_s: float | None = None, mu_M: float | None = None,
-                   period: float = TWO_PI) -> list[dict]:
+def accuracy_table(subject: Case | LinkageMechanism | MomentCurve, ms: Sequence[int] = (6, 12, 24, 48, 96), *,
+                   omega_1: float | None = None, mu_phi: float | None = None, mu_s: float | None = None,
+                   mu_M: float | None = None, period: float = TWO_PI) -> list[dict[str, Any]]:
     """How far each construction is from the exact result, for each number of intervals m.
 
     Parameters
@@ -946,8 +995,8 @@ def accuracy_table(subject, ms: Sequence[int] = (6, 12, 24, 48, 96), *, omega_1:
     if not ms or any(m < 3 for m in ms):
         raise InputError(f"give numbers of intervals m ≥ 3, got {list(ms)!r}")
     mu_phi = mu_phi or convenient_at_least(period / 240.0)
-    rows: list[dict] = []
-    if hasattr(subject, "integral") and hasattr(subject, "phi"):      # a moment curve
+    rows: list[dict[str, Any]] = []
+    if isinstance(subject, MomentCurve):      # a moment curve
         span = float(np.abs(subject.M).max()) or 1.0
         mu_M = mu_M or convenient_at_least(span / 60.0)
         for m in ms:
@@ -955,8 +1004,8 @@ def accuracy_table(subject, ms: Sequence[int] = (6, 12, 24, 48, 96), *, omega_1:
             I = integrate_by_chords(x, subject, mu_x=mu_phi, mu_y=mu_M, fit_mm=60.0)
             rows.append(_row("∫M dφ by chords", m, "interval ends", I.accuracy, "J", I.H_mm, I.mu))
         return rows
-    case = subject if hasattr(subject, "mechanism") and hasattr(subject, "load") else None
-    mech = case.mechanism if case is not None else subject
+    case = subject if isinstance(subject, Case) else None
+    mech = subject.mechanism if isinstance(subject, Case) else subject
     if case is not None and omega_1 is None:
         omega_1 = case.omega_m
     motion = slider_motion(mech, np.linspace(0.0, TWO_PI, 181))
@@ -980,7 +1029,9 @@ def accuracy_table(subject, ms: Sequence[int] = (6, 12, 24, 48, 96), *, omega_1:
     return rows
 
 
-def _row(construction, m, where, acc: Accuracy | None, unit, H_mm, mu) -> dict:
+def _row(construction: str, m: int, where: str, acc: Accuracy | None, unit: str, H_mm: float,
+         mu: float) -> dict[str, Any]:
+    """One row of the accuracy table."""
     assert acc is not None                      # the constructions here are built with their references
     return {"construction": construction, "m": m, "where": where, "error": acc.at_nodes, "unit": unit,
             "error_mm": acc.at_nodes_mm, "inside": acc.inside, "inside_mm": acc.inside_mm, "H_mm": H_mm, "mu": mu}

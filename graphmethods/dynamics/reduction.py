@@ -25,11 +25,18 @@ import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
+from typing import cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
+from graphmethods.kinematics.case import DiagramLoad, Inertia, Load
+from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
+from graphmethods.kinematics.plans import VelocityPlans
+from graphmethods.kinematics.positions import Positions
+from graphmethods.kinematics.vectors import FloatArray
 
 TWO_PI = 2.0 * math.pi
 
@@ -41,19 +48,21 @@ class ReducedInertia:
     ``parts`` maps a label such as ``"m3 (B)"`` or ``"J_S2 (AB)"`` to its share, (n,).
     """
 
-    J_e: np.ndarray
-    parts: Mapping[str, np.ndarray]
+    J_e: FloatArray
+    parts: Mapping[str, FloatArray]
 
     @property
     def J_e_min(self) -> float:
+        """The smallest J_e, kg·m²."""
         return float(self.J_e.min())
 
     @property
     def J_e_max(self) -> float:
+        """The largest J_e, kg·m²."""
         return float(self.J_e.max())
 
 
-def reduced_inertia(plans, inertias: Iterable) -> ReducedInertia:
+def reduced_inertia(plans: VelocityPlans, inertias: Iterable[Inertia]) -> ReducedInertia:
     """J_e(φ) = Σ m (v_S/ω₁)² + J (ω_link/ω₁)² from velocity plans and the moving masses.
 
     Parameters
@@ -64,8 +73,8 @@ def reduced_inertia(plans, inertias: Iterable) -> ReducedInertia:
         ``(link, point, m, J)``: mass m (kg) at ``point``, moment of inertia J (kg·m²) about it
         turning with ``link`` (None for a translating body).
     """
-    parts: dict[str, np.ndarray] = {}
-    total = np.zeros(plans.n)
+    parts: dict[str, FloatArray] = {}
+    total: FloatArray = np.zeros(plans.n)
     for it in inertias:
         if it.m < 0 or it.J < 0:
             raise InputError(f"negative mass or inertia for {it.point}: m = {it.m}, J = {it.J}")
@@ -85,44 +94,53 @@ def reduced_inertia(plans, inertias: Iterable) -> ReducedInertia:
     return ReducedInertia(J_e=total, parts=MappingProxyType(parts))
 
 
-def _stroke_fraction(positions, load) -> np.ndarray:
+def _stroke_fraction(positions: Positions, load: Load) -> FloatArray:
+    """s/H (a force) or ψ/ψ_max (a moment) at each position."""
+    out: FloatArray
     if load.kind == "force":
-        if positions.s is None:
+        if positions.s is None or positions.H is None:
             raise InputError(f"a force load on {load.at} needs a slider output; this linkage has none")
-        return positions.s / positions.H
-    if positions.psi is None:
+        out = positions.s / positions.H
+        return out
+    if positions.psi is None or positions.psi_max is None:
         raise InputError(f"a moment load on {load.at} needs a rocker output; this linkage has none")
-    return positions.psi / positions.psi_max
+    out = positions.psi / positions.psi_max
+    return out
 
 
-def _diagrams(load) -> list:
+def _diagrams(load: DiagramLoad) -> list[ForceDiagram]:
+    """The parts of a diagram load as force diagrams against the stroke."""
     return [ForceDiagram(load.at, x=tuple(x), F=tuple(F), against="stroke", stroke=stroke, opposes=not drives)
             for x, F, stroke, drives in load.parts]
 
 
-def load_active(positions, load) -> np.ndarray:
+def load_active(positions: Positions, load: Load) -> NDArray[np.bool_]:
     """Where the working-stroke load acts: on the working stroke, between its stroke fractions."""
     frac = _stroke_fraction(positions, load)
+    if positions.working is None:
+        raise InputError(f"the load on {load.at} acts on the working stroke; this linkage's output has none")
     tol = 1e-12
-    return positions.working & (frac >= load.start - tol) & (frac <= load.end + tol)
+    out: NDArray[np.bool_] = positions.working & (frac >= load.start - tol) & (frac <= load.end + tol)
+    return out
 
 
-def resisting_moment(positions, plans, load) -> np.ndarray:
+def resisting_moment(positions: Positions, plans: VelocityPlans, load: Load | DiagramLoad) -> FloatArray:
     """The reduced resisting moment M_r ≥ 0 (N·m) of the load at each position.
 
     A force F opposing the slider gives F |v_B|/ω₁; a moment M opposing a rocker gives
     M |ω_i|/ω₁; zero where the load does not act.
     """
-    if load.kind == "diagram":        # signed: negative where a diagram drives
-        return np.asarray(sum(diagram_moment(positions, plans, d) for d in _diagrams(load)))
+    if isinstance(load, DiagramLoad):        # signed: negative where a diagram drives
+        return np.asarray(sum(diagram_moment(positions, plans, d) for d in _diagrams(load)), dtype=float)
     if load.kind == "force":
         analogue = np.abs(plans.v_along_guide(load.at)) / plans.omega_1
     else:
         analogue = np.abs(plans.omega_ratio(load.at))
-    return np.where(load_active(positions, load), load.magnitude * analogue, 0.0)
+    out: FloatArray = np.where(load_active(positions, load), load.magnitude * analogue, 0.0)
+    return out
 
 
-def load_switch_angles(mechanism, load) -> tuple[float, float]:
+def load_switch_angles(mechanism: LinkageMechanism, load: Load | DiagramLoad) -> tuple[float, float]:
     """Crank rotations from position 0 (rad) where the load switches on and off.
 
     The stroke fraction grows monotonically over the working stroke, so each switch angle is the
@@ -131,7 +149,7 @@ def load_switch_angles(mechanism, load) -> tuple[float, float]:
     strokes = mechanism.strokes()
     if strokes is None:
         raise InputError("this linkage has no working stroke; a working-stroke load needs one")
-    if load.kind == "diagram":        # diagrams change over the strokes; they start and end at the dead centres
+    if isinstance(load, DiagramLoad):   # diagrams change over the strokes; they start and end at the dead centres
         return 0.0, float(strokes.working_angle)
     lo = np.zeros(2)
     hi = np.full(2, strokes.working_angle)
@@ -146,15 +164,21 @@ def load_switch_angles(mechanism, load) -> tuple[float, float]:
     return float(a), float(b)
 
 
-def load_work(mechanism, load) -> float:
+def load_work(mechanism: LinkageMechanism, load: Load | DiagramLoad) -> float:
     """Work of the load over one cycle, J (exact: the stroke fraction is monotone while it acts).
 
     A force does F·H·(end − start); a moment M·ψ_max·(end − start).
     """
     pos = mechanism.positions(m=4)
-    if load.kind == "diagram":        # resisting work minus driving work
-        return sum((1.0 if d.opposes else -1.0) * d.work(H=pos.H) for d in _diagrams(load))
+    if isinstance(load, DiagramLoad):        # resisting work minus driving work
+        if pos.H is None:
+            raise InputError("a force diagram acts on a slider output; this linkage has none")
+        H = pos.H
+        return sum((1.0 if d.opposes else -1.0) * d.work(H=H) for d in _diagrams(load))
     span = pos.H if load.kind == "force" else pos.psi_max
+    if span is None:
+        raise InputError(f"a {load.kind} load needs a {'slider' if load.kind == 'force' else 'rocker'} output; "
+                         f"this linkage has none")
     return load.magnitude * span * (load.end - load.start)
 
 
@@ -196,23 +220,26 @@ class ForceDiagram:
     stroke: str = "working"
     opposes: bool = True
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if self.against not in ("stroke", "angle"):
             raise InputError(f"against = {self.against!r}: give 'stroke' (s/H) or 'angle' (crank rotation, rad)")
         if self.stroke not in ("working", "return"):
             raise InputError(f"stroke = {self.stroke!r}: give 'working' or 'return'")
-        curve = MomentCurve(self.x, self.F)          # validates: finite, non-decreasing, two points or more
+        # validates: finite, non-decreasing, two points or more (cast: MomentCurve converts any sequence of
+        # numbers, and reports what is not one, so the tuples are passed as given)
+        curve = MomentCurve(cast(FloatArray, self.x), cast(FloatArray, self.F))
         if (curve.M < 0).any():
             raise InputError("a force diagram gives magnitudes (F ≥ 0); say whether it resists with opposes=")
         if self.against == "stroke" and (curve.phi[0] < -1e-12 or curve.phi[-1] > 1 + 1e-12):
             raise InputError(f"stroke fractions run from 0 to 1; the diagram spans {curve.phi[0]:g}…{curve.phi[-1]:g}")
 
-    def value(self, x) -> np.ndarray:
+    def value(self, x: ArrayLike) -> FloatArray:
         """F at ``x`` (right-continuous at a jump), 0 outside the diagram, N."""
         curve = MomentCurve(np.asarray(self.x, dtype=float), np.asarray(self.F, dtype=float))
-        x = np.asarray(x, dtype=float)
-        inside = (x >= curve.phi[0]) & (x <= curve.phi[-1])
-        return np.where(inside, curve.limits(np.clip(x, curve.phi[0], curve.phi[-1]))[1], 0.0)
+        xs = np.asarray(x, dtype=float)
+        inside = (xs >= curve.phi[0]) & (xs <= curve.phi[-1])
+        out: FloatArray = np.where(inside, curve.limits(np.clip(xs, curve.phi[0], curve.phi[-1]))[1], 0.0)
+        return out
 
     def work(self, *, H: float) -> float:
         """|Work| of a stroke diagram over its stroke, J: H × the area under F(s/H) (exact)."""
@@ -222,7 +249,7 @@ class ForceDiagram:
         return H * MomentCurve(np.asarray(self.x, dtype=float), np.asarray(self.F, dtype=float)).work()
 
 
-def diagram_moment(positions, plans, diagram: ForceDiagram) -> np.ndarray:
+def diagram_moment(positions: Positions, plans: VelocityPlans, diagram: ForceDiagram) -> FloatArray:
     """The reduced moment of a force diagram at each position, N·m: F |v|/ω₁, positive where it
     resists (``opposes``), negative where it drives.
 
@@ -237,11 +264,11 @@ def diagram_moment(positions, plans, diagram: ForceDiagram) -> np.ndarray:
     if diagram.against == "angle":
         F = diagram.value(positions.phi_from_start)
     else:
-        if positions.s is None:
+        if positions.s is None or positions.H is None or positions.working is None:
             raise InputError("a force diagram against the stroke needs a slider output; this linkage has none")
         on_stroke = positions.working if diagram.stroke == "working" else ~positions.working | positions.extreme
         F = np.where(on_stroke, diagram.value(positions.s / positions.H), 0.0)
-    M = F * speed
+    M: FloatArray = F * speed
     return M if diagram.opposes else -M
 
 
@@ -255,18 +282,19 @@ class ZhukovskyLever:
     the reduced moment M_e (N·m), equal to the power method's.
     """
 
-    images: Mapping[str, np.ndarray]
-    forces: Mapping[str, np.ndarray]
-    moment: np.ndarray
+    images: Mapping[str, FloatArray]
+    forces: Mapping[str, FloatArray]
+    moment: FloatArray
 
 
-def _turn(v: np.ndarray, sense: int) -> np.ndarray:
+def _turn(v: FloatArray, sense: int) -> FloatArray:
     """Turn vectors (n, 2) by 90° against ``sense`` (−90° for a counterclockwise crank)."""
-    return np.column_stack((v[:, 1], -v[:, 0])) if sense > 0 else np.column_stack((-v[:, 1], v[:, 0]))
+    out: FloatArray = np.column_stack((v[:, 1], -v[:, 0])) if sense > 0 else np.column_stack((-v[:, 1], v[:, 0]))
+    return out
 
 
-def zhukovsky_lever(plans, *, forces: Mapping[str, np.ndarray] | None = None,
-                    moments: Mapping[str, np.ndarray] | None = None) -> ZhukovskyLever:
+def zhukovsky_lever(plans: VelocityPlans, *, forces: Mapping[str, ArrayLike] | None = None,
+                    moments: Mapping[str, ArrayLike] | None = None) -> ZhukovskyLever:
     """The reduced moment by Zhukovsky's lever.
 
     The plan of analogues v/ω₁ is turned 90° opposite to the crank's rotation; each force F
@@ -283,10 +311,11 @@ def zhukovsky_lever(plans, *, forces: Mapping[str, np.ndarray] | None = None,
     >>> bool(np.allclose(lever.moment, -1000.0 * plans.analogue("B")[:, 0]))
     True
     """
-    images, fs = {}, {}
-    total = np.zeros(plans.n)
-    for name, F in (forces or {}).items():
-        F = np.broadcast_to(np.asarray(F, dtype=float), (plans.n, 2))
+    images: dict[str, FloatArray] = {}
+    fs: dict[str, FloatArray] = {}
+    total: FloatArray = np.zeros(plans.n)
+    for name, given in (forces or {}).items():
+        F = np.broadcast_to(np.asarray(given, dtype=float), (plans.n, 2))
         img = _turn(plans.analogue(name), plans.sense)
         images[name] = img
         fs[name] = F
@@ -296,12 +325,12 @@ def zhukovsky_lever(plans, *, forces: Mapping[str, np.ndarray] | None = None,
     return ZhukovskyLever(images=MappingProxyType(images), forces=MappingProxyType(fs), moment=total)
 
 
-def power_moment(plans, *, forces: Mapping[str, np.ndarray] | None = None,
-                 moments: Mapping[str, np.ndarray] | None = None) -> np.ndarray:
+def power_moment(plans: VelocityPlans, *, forces: Mapping[str, ArrayLike] | None = None,
+                 moments: Mapping[str, ArrayLike] | None = None) -> FloatArray:
     """The reduced moment by power: M_e = Σ F·(v/ω₁) + Σ M_i (ω_i/ω₁), N·m (+ in the crank's sense)."""
-    total = np.zeros(plans.n)
-    for name, F in (forces or {}).items():
-        F = np.broadcast_to(np.asarray(F, dtype=float), (plans.n, 2))
+    total: FloatArray = np.zeros(plans.n)
+    for name, given in (forces or {}).items():
+        F = np.broadcast_to(np.asarray(given, dtype=float), (plans.n, 2))
         v = plans.analogue(name)
         total = total + (F[:, 0] * v[:, 0] + F[:, 1] * v[:, 1])
     for link, M in (moments or {}).items():
@@ -339,7 +368,7 @@ def reduce_drive(shafts: Sequence[Shaft]) -> ReducedDrive:
     >>> round(d.J_e, 6), round(d.M_e, 6)
     (2.8, 20.0)
     """
-    parts = {}
+    parts: dict[str, float] = {}
     J = M = 0.0
     for s in shafts:
         if not (math.isfinite(s.J) and s.J >= 0):

@@ -20,9 +20,12 @@ balance over one turn; M_e = M_d − M_r.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from functools import cached_property
+from typing import Any, TypeVar
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import Flywheel, flywheel
@@ -36,18 +39,27 @@ from graphmethods.dynamics.reduction import (
     reduced_inertia,
     resisting_moment,
 )
+from graphmethods.dynamics.translating import TranslatingLink
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError, NoFlywheelNeeded
+from graphmethods.kinematics.case import Case
+from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
+from graphmethods.kinematics.plans import VelocityPlans
+from graphmethods.kinematics.positions import Positions
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import MAX_POSITIONS, count
 
 TWO_PI = 2.0 * math.pi
 
 
-def _logged(fn):
+_T = TypeVar("_T")
+
+
+def _logged(fn: Callable[[Study], _T]) -> cached_property[_T]:
     """A cached property that records its name in ``computed`` the one time it runs."""
     name = fn.__name__
 
-    def wrapper(self):
+    def wrapper(self: Study) -> _T:
         value = fn(self)
         self.computed.append(name)
         return value
@@ -80,9 +92,7 @@ class Study:
         Number of positions m (≥ 3; 12 by default).
     """
 
-    def __init__(self, case, *, positions: int = 12, estimate: bool = True):
-        from graphmethods.kinematics.case import Case
-
+    def __init__(self, case: Case, *, positions: int = 12, estimate: bool = True) -> None:
         if not isinstance(case, Case):
             raise InputError(f"a Study needs a problem read with read_case(path) or case_from_dict(dict), "
                              f"got {type(case).__name__}")
@@ -104,24 +114,26 @@ class Study:
         return self.case.delta
 
     @property
-    def mechanism(self):
+    def mechanism(self) -> LinkageMechanism:
+        """The problem's linkage."""
         return self.case.mechanism
 
     # ----------------------------------------------------------------- kinematics at positions
     @_logged
-    def positions(self):
+    def positions(self) -> Positions:
         """The linkage at positions 0…m."""
         return self.mechanism.positions(m=self.m)
 
     @_logged
-    def plans(self):
+    def plans(self) -> VelocityPlans:
         """Velocity plans at positions 0…m, built for ω₁ = ω_m."""
         return self.mechanism.velocity_plans(self.positions, omega_1=self.omega_m)
 
     @property
-    def phi(self) -> np.ndarray:
+    def phi(self) -> FloatArray:
         """Crank rotation of positions 0…m from position 0, rad."""
-        return self.positions.phi_from_start
+        phi: FloatArray = self.positions.phi_from_start
+        return phi
 
     # ----------------------------------------------------------------- the reduced model
     @_logged
@@ -130,7 +142,7 @@ class Study:
         return load_work(self.mechanism, self.case.load) / TWO_PI
 
     @_logged
-    def M_r(self) -> np.ndarray:
+    def M_r(self) -> FloatArray:
         """Reduced resisting moment at positions 0…m, N·m (≥ 0)."""
         return resisting_moment(self.positions, self.plans, self.case.load)
 
@@ -140,7 +152,8 @@ class Study:
         return reduced_inertia(self.plans, self.case.inertias)
 
     @property
-    def J_e(self) -> np.ndarray:
+    def J_e(self) -> FloatArray:
+        """J_e at positions 0…m, kg·m²."""
         return self.inertia.J_e
 
     @_logged
@@ -148,12 +161,14 @@ class Study:
         """Crank rotations from position 0 where the load switches on and off, rad (exact)."""
         return load_switch_angles(self.mechanism, self.case.load)
 
-    def _J_e_exact(self, phi):
+    def _J_e_exact(self, phi: ArrayLike) -> FloatArray:
+        """J_e at crank rotations ``phi`` (rad from position 0), kg·m², from the linkage itself."""
         x = np.asarray(phi, dtype=float)
         pos = self.mechanism.positions(phi_from_start=x.ravel())
         return reduced_inertia(self.mechanism.velocity_plans(pos), self.case.inertias).J_e.reshape(x.shape)
 
-    def _M_r_exact(self, phi):
+    def _M_r_exact(self, phi: ArrayLike) -> FloatArray:
+        """M_r at crank rotations ``phi`` (rad from position 0), N·m, from the linkage itself."""
         x = np.asarray(phi, dtype=float)
         pos = self.mechanism.positions(phi_from_start=x.ravel())
         return resisting_moment(pos, self.mechanism.velocity_plans(pos), self.case.load).reshape(x.shape)
@@ -164,7 +179,7 @@ class Study:
         diagram): the driving moment is then the curve and the constant from the work balance resists."""
         return self.M_d < 0.0
 
-    def moment_curves(self, phi) -> tuple[np.ndarray, np.ndarray]:
+    def moment_curves(self, phi: ArrayLike) -> tuple[FloatArray, FloatArray]:
         """The reduced driving and resisting moments M_d(φ), M_r(φ) at crank rotations ``phi`` (rad
         from position 0), N·m, both as a user names them: for a working machine M_d is the constant
         of the work balance and M_r the load's moment; for an engine (:attr:`is_engine`) M_d is the
@@ -184,7 +199,7 @@ class Study:
             return -load, -const
         return const, load
 
-    def power(self, *, eta: float = 1.0, reserve: float = 1.0) -> dict:
+    def power(self, *, eta: float = 1.0, reserve: float = 1.0) -> dict[str, Any]:
         """The mean power N = M_m·ω_m (W) and, for a working machine, the motor for it.
 
         M_m is the mean driving moment: M_d of the work balance for a working machine, the constant
@@ -201,7 +216,7 @@ class Study:
         from graphmethods.dynamics.power import choose_motor, mean_power, moment_with_losses
 
         M_m = -self.M_d if self.is_engine else self.M_d
-        out = {"N_mean": mean_power(M_m=M_m, omega_m=self.omega_m), "M_m": M_m}
+        out: dict[str, Any] = {"N_mean": mean_power(M_m=M_m, omega_m=self.omega_m), "M_m": M_m}
         if self.is_engine:
             out["note"] = "an engine: N_mean is the mean power it gives at ω_m (no motor to choose)"
             return out
@@ -210,7 +225,7 @@ class Study:
                    N_required=m.N_required, motor_P_rated_kW=m.P_rated_kW)
         return out
 
-    def translating(self, point: str | None = None):
+    def translating(self, point: str | None = None) -> TranslatingLink:
         """The translating equivalent link at ``point`` (default: the point the load acts on, the
         slider or ram): m_e = Σ[m(v_S/v)² + J_S(ω/v)²] straight from the plans, and
         F_e = (M_d − M_r)/(v/ω₁), the power of every force and moment over the link's speed, at
@@ -258,7 +273,7 @@ class Study:
         return ew.from_moments(M_d, M_r)
 
     @_logged
-    def delta_T(self) -> np.ndarray:
+    def delta_T(self) -> FloatArray:
         """ΔT at positions 0…m from the drawn curves (the chords' areas), J."""
         M_d, M_r = self.moments
         return (M_d - M_r).integral(self.phi)
@@ -318,14 +333,15 @@ class Study:
                 text = str(value)
             lines.append(f"| {key} | {text} | {_SUMMARY_UNITS.get(key, '')} |")
         title = getattr(self.case, "title", "")
-        head = f"**Dynamic study** of {title}, {self.m} positions" if str(title) else f"**Dynamic study**, {self.m} positions"
+        head = (f"**Dynamic study** of {title}, {self.m} positions" if str(title)
+                else f"**Dynamic study**, {self.m} positions")
         tail = [] if use_exact else ["", "(the exact flywheel is not computed yet: `study.to_markdown(exact=True)`)"]
         return "\n".join([head, ""] + lines + tail) + "\n"
 
     def _repr_markdown_(self) -> str:
         return self.to_markdown()
 
-    def summary(self, *, exact: bool = True) -> dict:
+    def summary(self, *, exact: bool = True) -> dict[str, Any]:
         """The study's results as a JSON-ready dict (the keys of shared/cases/README.md).
 
         With ``exact`` (default) the exact flywheel is solved too, and each method's relative
@@ -336,7 +352,7 @@ class Study:
             wb = self.wittenbauer
         except NoFlywheelNeeded as exc:      # an answer, not an error
             return self._no_flywheel_summary(fe, str(exc))
-        out = {
+        out: dict[str, Any] = {
             "positions": self.m,
             "n_rpm": self.case.n_rpm,
             "omega_m": self.omega_m,
@@ -374,7 +390,7 @@ class Study:
         return out
 
 
-    def _no_flywheel_summary(self, fe, why: str) -> dict:
+    def _no_flywheel_summary(self, fe: Flywheel, why: str) -> dict[str, Any]:
         """The summary when the machine's own inertia keeps δ within [δ]: J_F = 0 is the answer."""
         return {
             "positions": self.m, "n_rpm": self.case.n_rpm, "omega_m": self.omega_m, "delta": self.delta,
@@ -385,7 +401,7 @@ class Study:
             "note": "no flywheel is needed: the mechanism's own inertia keeps δ within [δ] (J_F = 0); " + why,
         }
 
-def _fine_study(case, m: int) -> Study:
+def _fine_study(case: Case, m: int) -> Study:
     """The finer construction behind the error estimate: REFINE·m positions, beyond the user's limit
     MAX_POSITIONS (the kinematics core checks its own, MAX_POSITIONS_COMPUTED)."""
     fine = Study.__new__(Study)

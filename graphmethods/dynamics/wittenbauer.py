@@ -39,12 +39,15 @@ constant part J_c: the flywheel to add is then J_F − J_c.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.dynamics.motion import TWO_PI, ReducedModel, _balanced_energy, _check_count, _check_positive, _frozen
 from graphmethods.errors import InputError, NoFlywheelNeeded, UnbalancedCycleError
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import DELTA_MAX, MAGNITUDE_MAX
 
 __all__ = ["Tangency", "WittenbauerResult", "wittenbauer", "wittenbauer_from_model"]
@@ -114,9 +117,9 @@ class WittenbauerResult:
         Distance from a ray within which a vertex counts as touching it.
     """
 
-    x_mm: np.ndarray
-    y_mm: np.ndarray
-    phi: np.ndarray
+    x_mm: FloatArray
+    y_mm: FloatArray
+    phi: FloatArray
     mu_J: float
     mu_T: float
     omega_m: float
@@ -138,7 +141,7 @@ class WittenbauerResult:
     phi_omega_min: tuple[float, ...]
     O1_mm: tuple[float, float]
     T0: float
-    omega: np.ndarray
+    omega: FloatArray
     J_F_other_tangents: float
     tangents_difference: float
     error_estimate: float | None
@@ -151,13 +154,16 @@ class WittenbauerResult:
         return self.x_mm.size - 1
 
 
-_FACTORS = {
+#: indices of positions
+_Index = NDArray[np.intp]
+#: a ray's slope factor as a function of δ: (upper, lower)
+_FACTORS: dict[str, tuple[Callable[[float], float], Callable[[float], float]]] = {
     "exact": (lambda d: (1 + d / 2) ** 2, lambda d: (1 - d / 2) ** 2),
     "textbook": (lambda d: 1 + d, lambda d: 1 - d),
 }
 
 
-def _groups(idx: np.ndarray, m: int) -> list[list[int]]:
+def _groups(idx: _Index, m: int) -> list[list[int]]:
     """Split sorted vertex indices (0…m−1 of a closed curve) into cyclically consecutive runs."""
     runs = [[int(idx[0])]]
     for i in idx[1:]:
@@ -170,7 +176,7 @@ def _groups(idx: np.ndarray, m: int) -> list[list[int]]:
     return runs
 
 
-def _sampling_gain(phi, c, period):
+def _sampling_gain(phi: FloatArray, c: FloatArray, period: float) -> float | None:
     """How much the supremum of the sampled function c (positions 0…m−1 of a closed curve at
     angles phi) may exceed max(c): the largest, over the vertices that are local maxima, of
     max_{x ∈ [x_{j−1}, x_{j+1}]} min(L(x), R(x)) − max(c), where L is the line through vertices
@@ -183,16 +189,16 @@ def _sampling_gain(phi, c, period):
     if n < 5:
         return None
     j = np.arange(n)
-    x = lambda k: phi[k % n] + period * (k // n)          # noqa: E731 - cyclic abscissa
-    v = lambda k: c[k % n]                                 # noqa: E731
+    x: Callable[[_Index], FloatArray] = lambda k: phi[k % n] + period * (k // n)   # noqa: E731 - cyclic abscissa
+    v: Callable[[_Index], FloatArray] = lambda k: c[k % n]                          # noqa: E731
     top = float(c.max())
     loc = (c >= v(j - 1)) & (c >= v(j + 1))
     j = j[loc]
     xl2, xl1, xr1, xr2 = x(j - 2), x(j - 1), x(j + 1), x(j + 2)
     sl = (v(j - 1) - v(j - 2)) / (xl1 - xl2)
     sr = (v(j + 2) - v(j + 1)) / (xr2 - xr1)
-    L = lambda t: v(j - 1) + sl * (t - xl1)               # noqa: E731
-    R = lambda t: v(j + 1) + sr * (t - xr1)               # noqa: E731
+    L: Callable[[FloatArray], FloatArray] = lambda t: v(j - 1) + sl * (t - xl1)    # noqa: E731
+    R: Callable[[FloatArray], FloatArray] = lambda t: v(j + 1) + sr * (t - xr1)    # noqa: E731
     with np.errstate(divide="ignore", invalid="ignore"):
         xs = (v(j + 1) - v(j - 1) + sl * xl1 - sr * xr1) / (sl - sr)
     xs = np.clip(np.where(np.isfinite(xs), xs, xl1), xl1, xr1)
@@ -200,7 +206,28 @@ def _sampling_gain(phi, c, period):
     return max(float(best.max()) - top, 0.0)
 
 
-def _support(J, dT, omega_m, delta, tangents, rtol):
+@dataclass(frozen=True)
+class _Support:
+    """The two support lines (rays) of the curve in physical units: slopes ``a_max``, ``a_min``
+    (J/(kg·m²)), the curve's values ``c_up``, ``c_lo`` against them (J, abscissa from ``J_ref``), their
+    extremes ``up``, ``lo`` and ``D = up − lo``, the touching tolerance ``tol`` (J), the touching
+    vertices ``i_up``, ``i_lo`` and the flywheel ``J_F`` (kg·m²)."""
+
+    a_max: float
+    a_min: float
+    J_ref: float
+    up: float
+    lo: float
+    D: float
+    tol: float
+    c_up: FloatArray
+    c_lo: FloatArray
+    i_up: _Index
+    i_lo: _Index
+    J_F: float
+
+
+def _support(J: FloatArray, dT: FloatArray, omega_m: float, delta: float, tangents: str, rtol: float) -> _Support:
     """Intercepts and tangencies of the two support lines, in physical units (J, kg·m²)."""
     up_f, lo_f = _FACTORS[tangents]
     a_max = 0.5 * omega_m**2 * up_f(delta)
@@ -213,17 +240,19 @@ def _support(J, dT, omega_m, delta, tangents, rtol):
     D = up - lo                                   # = (b_max − b_min) + δω_m² J_ref
     scale = max(float(np.max(np.abs(dT))), a_max * float(dJ.max()), D)
     tol = rtol * scale
-    return dict(a_max=a_max, a_min=a_min, J_ref=J_ref, up=up, lo=lo, D=D, tol=tol, c_up=c_up, c_lo=c_lo,
-                i_up=np.flatnonzero(c_up >= up - tol), i_lo=np.flatnonzero(c_lo <= lo + tol),
-                J_F=D / (omega_m**2 * delta) - J_ref)
+    return _Support(a_max=a_max, a_min=a_min, J_ref=J_ref, up=up, lo=lo, D=D, tol=tol, c_up=c_up, c_lo=c_lo,
+                    i_up=np.flatnonzero(c_up >= up - tol), i_lo=np.flatnonzero(c_lo <= lo + tol),
+                    J_F=D / (omega_m**2 * delta) - J_ref)
 
 
-def _check_arrays(J_e, delta_T, closure_rtol):
+def _check_arrays(J_e: ArrayLike, delta_T: ArrayLike, closure_rtol: float) -> tuple[FloatArray, FloatArray, int]:
+    """J_e and ΔT as float columns for positions 0…m, checked (finite, J_e ≥ 0, the cycle closed), and m."""
     try:
-        J = np.asarray(J_e, dtype=float)
-        dT = np.asarray(delta_T, dtype=float)
+        J: FloatArray = np.asarray(J_e, dtype=float)
+        dT: FloatArray = np.asarray(delta_T, dtype=float)
     except (TypeError, ValueError, OverflowError):
-        raise InputError(f"J_e and delta_T: give two columns of numbers (got {J_e!r:.60} and {delta_T!r:.60})") from None
+        raise InputError(f"J_e and delta_T: give two columns of numbers (got {J_e!r:.60} and "
+                         f"{delta_T!r:.60})") from None
     if np.abs(J).max(initial=0.0) > MAGNITUDE_MAX or np.abs(dT).max(initial=0.0) > MAGNITUDE_MAX:
         raise InputError(f"J_e and delta_T: values beyond ±{MAGNITUDE_MAX:g} are outside the range the construction "
                          f"computes with")
@@ -256,56 +285,61 @@ _ERROR_METHOD = (
     "is locally concave: exact at a corner, an over-estimate for a smooth touch)")
 
 
-def _construct(J, dT, phi, *, omega_m, delta, mu_J, mu_T, tangents, rtol):
+def _construct(J: FloatArray, dT: FloatArray, phi: FloatArray, *, omega_m: float, delta: float, mu_J: float,
+               mu_T: float, tangents: str, rtol: float) -> WittenbauerResult:
+    """The construction on checked columns: the rays, their intercepts and tangencies, J_F and ω."""
     m = J.size - 1
     s = _support(J[:m], dT[:m], omega_m, delta, tangents, rtol)
     # D ≥ 0 always (take the vertex of least J_e in both extremes); D = 0 means the rays meet
     # on the curve itself, at its vertex of least J_e: zero total inertia there, no origin O1
-    if s["D"] <= 1e-9 * max(float(np.max(np.abs(dT))), s["a_max"] * float(J.max()), 1e-300):
+    if s.D <= 1e-9 * max(float(np.max(np.abs(dT))), s.a_max * float(J.max()), 1e-300):
         raise NoFlywheelNeeded(
             f"no flywheel is needed: the rays meet on the curve (J_F + min J_e = "
-            f"{s['D'] / (omega_m**2 * delta):.3g} kg·m²), so there is no origin O1; the machine's "
+            f"{s.D / (omega_m**2 * delta):.3g} kg·m²), so there is no origin O1; the machine's "
             f"own inertia keeps the fluctuation below δ = {delta:g}")
     other = "textbook" if tangents == "exact" else "exact"
-    J_F_other = _support(J[:m], dT[:m], omega_m, delta, other, rtol)["J_F"]
-    J_F = s["J_F"]
-    a_max, a_min, J_ref = s["a_max"], s["a_min"], s["J_ref"]
+    J_F_other = _support(J[:m], dT[:m], omega_m, delta, other, rtol).J_F
+    J_F = s.J_F
+    a_max, a_min, J_ref = s.a_max, s.a_min, s.J_ref
     period = float(phi[m] - phi[0])
-    g_up = _sampling_gain(phi[:m], s["c_up"], period)
-    g_lo = _sampling_gain(phi[:m], -s["c_lo"], period)
-    if g_up is None:
+    g_up = _sampling_gain(phi[:m], s.c_up, period)
+    g_lo = _sampling_gain(phi[:m], -s.c_lo, period)
+    estimate: float | None
+    if g_up is None or g_lo is None:
         estimate, method = None, "none: fewer than 5 positions"
     else:
         estimate, method = (g_up + g_lo) / (omega_m**2 * delta), _ERROR_METHOD
-    k_mm = (s["up"] - a_max * J_ref) / mu_T
-    l_mm = (s["lo"] - a_min * J_ref) / mu_T
-    kl_mm = (s["D"] - omega_m**2 * delta * J_ref) / mu_T
-    T0 = a_max * (J_F + J_ref) - s["up"]
-    J_tot = s["D"] / (omega_m**2 * delta) + (J - J_ref)         # J_F + J_e without cancellation
+    k_mm = (s.up - a_max * J_ref) / mu_T
+    l_mm = (s.lo - a_min * J_ref) / mu_T
+    kl_mm = (s.D - omega_m**2 * delta * J_ref) / mu_T
+    T0 = a_max * (J_F + J_ref) - s.up
+    J_tot = s.D / (omega_m**2 * delta) + (J - J_ref)         # J_F + J_e without cancellation
     omega = np.sqrt(2.0 * np.maximum(T0 + dT, 0.0) / J_tot)
 
-    def tangencies(idx):
+    def tangencies(idx: _Index) -> tuple[Tangency, ...]:
         return tuple(Tangency(indices=tuple(r), phi=tuple(float(phi[i]) for i in r),
                               kind="point" if len(r) == 1 else "segment") for r in _groups(idx, m))
 
-    upper, lower = tangencies(s["i_up"]), tangencies(s["i_lo"])
+    upper, lower = tangencies(s.i_up), tangencies(s.i_lo)
     tan_max, tan_min = mu_J / mu_T * a_max, mu_J / mu_T * a_min
     return WittenbauerResult(
         x_mm=_frozen(J / mu_J), y_mm=_frozen(dT / mu_T), phi=_frozen(phi), mu_J=mu_J, mu_T=mu_T,
         omega_m=omega_m, delta=delta, tangents=tangents, tan_psi_max=tan_max, tan_psi_min=tan_min,
         psi_max=math.atan(tan_max), psi_min=math.atan(tan_min), k_mm=float(k_mm), l_mm=float(l_mm),
         kl_mm=float(kl_mm), J_F=float(J_F), upper=upper, lower=lower,
-        index_omega_max=tuple(int(i) for i in s["i_up"]),
-        index_omega_min=tuple(int(i) for i in s["i_lo"]),
-        phi_omega_max=tuple(float(phi[i]) for i in s["i_up"]),
-        phi_omega_min=tuple(float(phi[i]) for i in s["i_lo"]),
+        index_omega_max=tuple(int(i) for i in s.i_up),
+        index_omega_min=tuple(int(i) for i in s.i_lo),
+        phi_omega_max=tuple(float(phi[i]) for i in s.i_up),
+        phi_omega_min=tuple(float(phi[i]) for i in s.i_lo),
         O1_mm=(float(-J_F / mu_J), float(-T0 / mu_T)), T0=float(T0), omega=_frozen(omega),
         J_F_other_tangents=float(J_F_other), tangents_difference=float((J_F_other - J_F) / J_F),
         error_estimate=None if estimate is None else float(estimate), error_method=method,
-        tolerance_mm=s["tol"] / mu_T)
+        tolerance_mm=s.tol / mu_T)
 
 
-def _check_common(omega_m, delta, mu_J, mu_T, tangents, rtol):
+def _check_common(omega_m: float, delta: float, mu_J: float, mu_T: float, tangents: str,
+                  rtol: float) -> tuple[float, float, float, float, float]:
+    """The construction's numbers checked (positive, finite; δ below DELTA_MAX) and the form of the tangents."""
     omega_m = _check_positive(omega_m, "omega_m")
     delta = _check_positive(delta, "delta")
     if delta >= DELTA_MAX:       # the one rule of graphmethods.units for δ
@@ -318,8 +352,8 @@ def _check_common(omega_m, delta, mu_J, mu_T, tangents, rtol):
     return omega_m, delta, mu_J, mu_T, rtol
 
 
-def wittenbauer(*, J_e, delta_T, omega_m: float, delta: float, mu_J: float, mu_T: float,
-                phi=None, phi_0: float = 0.0, phi_T: float = TWO_PI, tangents: str = "exact",
+def wittenbauer(*, J_e: ArrayLike, delta_T: ArrayLike, omega_m: float, delta: float, mu_J: float, mu_T: float,
+                phi: ArrayLike | None = None, phi_0: float = 0.0, phi_T: float = TWO_PI, tangents: str = "exact",
                 rtol: float = 1e-9, closure_rtol: float = 1e-6) -> WittenbauerResult:
     """The Wittenbauer construction from data alone: two columns J_e and ΔT for positions 0…m.
 
@@ -368,10 +402,10 @@ def wittenbauer(*, J_e, delta_T, omega_m: float, delta: float, mu_J: float, mu_T
     J, dT, m = _check_arrays(J_e, delta_T, closure_rtol)
     if phi is None:
         phi = phi_0 + phi_T * (np.arange(m + 1) / m)
-    phi = np.asarray(phi, dtype=float)
-    if phi.shape != J.shape or not np.all(np.isfinite(phi)):
+    angles: FloatArray = np.asarray(phi, dtype=float)
+    if angles.shape != J.shape or not np.all(np.isfinite(angles)):
         raise InputError(f"phi: give m + 1 = {m + 1} finite angles (rad), one per position")
-    return _construct(J, dT, phi, omega_m=omega_m, delta=delta, mu_J=mu_J, mu_T=mu_T,
+    return _construct(J, dT, angles, omega_m=omega_m, delta=delta, mu_J=mu_J, mu_T=mu_T,
                       tangents=tangents, rtol=rtol)
 
 

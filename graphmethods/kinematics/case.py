@@ -39,6 +39,7 @@ M3 on the rocker while its swing ψ is between moment_from·ψ_max and moment_to
 from __future__ import annotations
 
 import math
+import os
 import pathlib
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -47,6 +48,7 @@ from typing import Any
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.classic import FourBar, Shaper, SliderCrank, SlottedLever
+from graphmethods.kinematics.linkage import Linkage
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
 from graphmethods.units import DELTA_MAX, angle_deg, finite_result, json_value, omega_from_n, read_text, real
@@ -98,6 +100,10 @@ class Load:
     end: float
 
 
+#: one stroke of a force diagram: (stroke fractions x, forces F in N, "working" or "return", drives)
+DiagramPart = tuple[tuple[float, ...], tuple[float, ...], str, bool]
+
+
 @dataclass(frozen=True)
 class DiagramLoad:
     """Forces on a slider given as diagrams against the stroke (an indicator diagram), as course
@@ -114,7 +120,7 @@ class DiagramLoad:
     """
 
     at: str
-    parts: tuple
+    parts: tuple[DiagramPart, ...]
     kind: str = "diagram"
 
 
@@ -140,8 +146,8 @@ class Case:
         Permissible coefficient of speed fluctuation.
     inertias : tuple of Inertia
         Every moving mass.
-    load : Load
-        The working-stroke load.
+    load : Load or DiagramLoad
+        The working-stroke load (a linkage file may give force diagrams).
     values : mapping
         Every key of the file after validation (numbers as floats).
     """
@@ -153,8 +159,8 @@ class Case:
     mechanism: LinkageMechanism
     n_rpm: float
     delta: float
-    inertias: tuple
-    load: Load
+    inertias: tuple[Inertia, ...]
+    load: Load | DiagramLoad
     values: Mapping[str, Any]
 
     @property
@@ -168,12 +174,12 @@ class Case:
         return omega_from_n(self.n_rpm)
 
     @property
-    def linkage(self):
+    def linkage(self) -> Linkage:
         """The problem's linkage on the kinematics core (:class:`~graphmethods.kinematics.linkage.Linkage`:
         accelerations, structure), the same linkage as ``mechanism``."""
         return self.mechanism.linkage
 
-    def __getattr__(self, key):
+    def __getattr__(self, key: str) -> Any:
         # every validated key is also an attribute: case.m2, case.F0, ...
         values = self.__dict__.get("values")
         if values is not None and key in values:
@@ -207,7 +213,11 @@ _COMMON_TAIL = {
     "sense": ("sense", "ccw", 'crank sense of rotation, "ccw" or "cw"'),
 }
 
-SPECS: dict[str, dict[str, tuple]] = {
+#: a key's check ("positive", "nonneg", "real", "fraction", "delta", "sign", "sense", or the allowed texts),
+#: its default (REQUIRED: none) and its meaning
+Spec = tuple[str | tuple[str, ...], object, str]
+
+SPECS: dict[str, dict[str, Spec]] = {
     "slider_crank": {
         "r": ("positive", REQUIRED, "crank O-A, m"),
         "l": ("positive", REQUIRED, "connecting rod A-B, m"),
@@ -286,7 +296,8 @@ SPECS: dict[str, dict[str, tuple]] = {
 }
 
 
-def _value(source: str, key: str, raw, check, meaning: str):
+def _value(source: str, key: str, raw: Any, check: str | tuple[str, ...], meaning: str) -> Any:
+    """The checked value of one key (text, ±1 or a float); ``raw`` is as JSON gives it."""
     where = f"{source}: key {key!r} ({meaning})"
     if isinstance(check, tuple):
         if raw not in check:
@@ -317,7 +328,8 @@ def _value(source: str, key: str, raw, check, meaning: str):
     return value
 
 
-def _validated(data: Mapping, kind: str, source: str) -> dict:
+def _validated(data: Mapping[str, Any], kind: str, source: str) -> dict[str, Any]:
+    """Every key of ``kind`` checked (defaults filled in): texts, ±1 and floats by key."""
     spec = SPECS[kind]
     unknown = [k for k in data if k not in spec and k not in _TEXT]
     if unknown:
@@ -326,7 +338,7 @@ def _validated(data: Mapping, kind: str, source: str) -> dict:
     for k in _TEXT - {"name"}:
         if k in data and not isinstance(data[k], str):
             raise InputError(f"{source}: key {k!r} must be text; got {data[k]!r}")
-    out = {}
+    out: dict[str, Any] = {}
     for key, (check, default, meaning) in spec.items():
         if key not in data:
             if default is REQUIRED:
@@ -337,18 +349,18 @@ def _validated(data: Mapping, kind: str, source: str) -> dict:
     return out
 
 
-def _order(v, lo, hi, what):
+def _order(v: Mapping[str, float], lo: str, hi: str, what: str) -> None:
     if not v[lo] < v[hi]:
         raise InputError(f"{lo} = {v[lo]:g} must be less than {hi} = {v[hi]:g} ({what})")
 
 
-def _within(v, key, length_key):
+def _within(v: Mapping[str, float], key: str, length_key: str) -> None:
     if v[key] > v[length_key]:
         raise InputError(f"{key} = {v[key]:g} m lies beyond the link ({length_key} = {v[length_key]:g} m); "
                          f"a centre of mass must lie on its link")
 
 
-def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
+def case_from_dict(data: Mapping[str, Any], *, source: str = "<dict>") -> Case:
     """Validate a problem given as a dict (a parsed JSON object) and build its :class:`Case`.
 
     Raises
@@ -430,7 +442,7 @@ def case_from_dict(data: Mapping, *, source: str = "<dict>") -> Case:
     return cls(mechanism=mech, inertias=inertias, load=load, values=MappingProxyType(v), **common)
 
 
-def read_case(path) -> Case:
+def read_case(path: str | os.PathLike[str]) -> Case:
     """Read and validate a problem file (JSON, see the module docstring).
 
     Parameters

@@ -42,12 +42,13 @@ key                   meaning
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 from typing import Any, NoReturn
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Guide
+from graphmethods.kinematics.case import Case, DiagramLoad, Inertia, Load
+from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Group, Guide
 from graphmethods.kinematics.linkage import Crank, Linkage, Point
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
@@ -66,15 +67,18 @@ GROUP_KEYS = {
 GROUP_KEYS["PRR"] = GROUP_KEYS["RRP"]
 OPTIONAL = {"branch": 1, "e": 0.0, "slot_angle_deg": 90.0}
 
+#: a value as JSON gives it (a number, text, list, object, ...): what the readers below check and convert
+Json = Any
+
 
 class _Reader:
-    def __init__(self, source: str):
+    def __init__(self, source: str) -> None:
         self.source = source
 
     def err(self, key: str, msg: str) -> NoReturn:
         raise InputError(f"{self.source}: key {key!r}: {msg}")
 
-    def number(self, key: str, raw, check: str = "real") -> float:
+    def number(self, key: str, raw: Json, check: str = "real") -> float:
         if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
             self.err(key, f"must be a number; got {raw!r}")
         value = parse_number(raw, name=f"{self.source}: key {key!r}")
@@ -90,17 +94,17 @@ class _Reader:
             self.err(key, f"must be between 0 and 1 (e.g. 0.04 or 1/25); got {raw!r}")
         return value
 
-    def text(self, key: str, raw) -> str:
+    def text(self, key: str, raw: Json) -> str:
         if not isinstance(raw, str) or not raw:
             self.err(key, f"must be a name (text) such as \"B\"; got {raw!r}")
         return raw
 
-    def link(self, key: str, raw) -> str:
+    def link(self, key: str, raw: Json) -> str:
         if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not str(raw).isdigit():
             self.err(key, f"must be a link number (0 = frame, 1 = crank, 2, ...); got {raw!r}")
         return str(int(raw))
 
-    def obj(self, key: str, raw, allowed) -> Mapping:
+    def obj(self, key: str, raw: Json, allowed: Sequence[str]) -> Mapping[str, Json]:
         if not isinstance(raw, Mapping):
             self.err(key, f"must be an object {{...}}; got {raw!r}")
         bad = [k for k in raw if k not in allowed]
@@ -108,26 +112,26 @@ class _Reader:
             self.err(f"{key}.{bad[0]}", f"unknown key; the keys are: {', '.join(allowed)}")
         return raw
 
-    def xy(self, key: str, raw) -> tuple[float, float]:
+    def xy(self, key: str, raw: Json) -> tuple[float, float]:
         if not isinstance(raw, (list, tuple)) or len(raw) != 2:
             self.err(key, f"must be [x, y] in m; got {raw!r}")
         return self.number(f"{key}[0]", raw[0]), self.number(f"{key}[1]", raw[1])
 
-    def guide(self, key: str, raw) -> Guide:
+    def guide(self, key: str, raw: Json) -> Guide:
         g = self.obj(key, raw, ("link", "through", "angle_deg"))
         for k in ("link", "through"):
             if k not in g:
                 self.err(f"{key}.{k}", "is missing (a guide needs its link and a point it passes through)")
         link = self.link(f"{key}.link", g["link"])
         th = g["through"]
-        through: Any = th if isinstance(th, str) else complex(*self.xy(f"{key}.through", th))
+        through: str | complex = th if isinstance(th, str) else complex(*self.xy(f"{key}.through", th))
         if link != GROUND and not isinstance(th, str):
             self.err(f"{key}.through", "on a moving link give a joint of that link by name")
         ang = math.radians(self.number(f"{key}.angle_deg", g.get("angle_deg", 0.0)))
         return Guide(link, through, ang)
 
 
-def _group(rd: _Reader, i: int, raw):
+def _group(rd: _Reader, i: int, raw: Json) -> Group:
     key = f"groups[{i}]"
     if not isinstance(raw, Mapping):
         rd.err(key, f"must be an object with a type; got {raw!r}")
@@ -139,10 +143,10 @@ def _group(rd: _Reader, i: int, raw):
     links = raw.get("links")
     if not isinstance(links, (list, tuple)) or len(links) != 2:
         rd.err(f"{key}.links", f"must be the two link numbers of the group, e.g. [2, 3]; got {links!r}")
-    lk = tuple(rd.link(f"{key}.links[{j}]", x) for j, x in enumerate(links))
+    lk = (rd.link(f"{key}.links[0]", links[0]), rd.link(f"{key}.links[1]", links[1]))
     if GROUND in lk:
         rd.err(f"{key}.links", "the frame (0) is not a link of a group")
-    kw: dict = {}
+    kw: dict[str, Any] = {}     # the group's keyword arguments: names, floats, guides, the branch
     for k, check in spec.items():
         if k not in raw:
             if k in OPTIONAL:
@@ -175,7 +179,7 @@ def _group(rd: _Reader, i: int, raw):
         rd.err(key, str(exc))
 
 
-def build_linkage(data: Mapping, *, source: str = "<dict>") -> Linkage:
+def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage:
     """The :class:`Linkage` of a ``"kind": "linkage"`` problem (only its kinematic keys are read)."""
     rd = _Reader(source)
     raw_fixed = data.get("fixed")
@@ -199,7 +203,7 @@ def build_linkage(data: Mapping, *, source: str = "<dict>") -> Linkage:
     if not isinstance(groups_raw, list) or not groups_raw:
         rd.err("groups", "must be a list of Assur groups in solving order, e.g. [{\"type\": \"RRR\", ...}]")
     groups = [_group(rd, i, g) for i, g in enumerate(groups_raw)]
-    points = []
+    points: list[Point] = []
     pts = data.get("points", {})
     if not isinstance(pts, Mapping):
         rd.err("points", f"must be an object name -> {{link, from, distance, angle_deg}}; got {pts!r}")
@@ -227,10 +231,8 @@ def build_linkage(data: Mapping, *, source: str = "<dict>") -> Linkage:
         raise InputError(f"{source}: {exc}") from None
 
 
-def linkage_case(data: Mapping, *, source: str = "<dict>"):
+def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> LinkageCase:
     """Validate a ``"kind": "linkage"`` problem and build its :class:`~graphmethods.kinematics.case.Case`."""
-    from graphmethods.kinematics.case import Inertia
-
     rd = _Reader(source)
     unknown = [k for k in data if k not in TOP_KEYS]
     if unknown:
@@ -242,7 +244,7 @@ def linkage_case(data: Mapping, *, source: str = "<dict>"):
     except AssemblyError as exc:
         raise AssemblyError(f"{source}: {exc}") from None
     known = set(lk.solve([0.0], level=0).z)
-    inertias = []
+    inertias: list[Inertia] = []
     masses = data.get("masses", {})
     if not isinstance(masses, Mapping):
         rd.err("masses", "must be an object: link number -> {m, J, at}")
@@ -261,8 +263,10 @@ def linkage_case(data: Mapping, *, source: str = "<dict>"):
             rd.err(f"{key}.at", f"no point {at!r}; points: {', '.join(sorted(known))}")
         inertias.append(Inertia(link, at, m, J))
     if "load" not in data:
-        rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or {\"moment\": ..., \"on\": 3, ...}")
+        rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or "
+                       "{\"moment\": ..., \"on\": 3, ...}")
     ld = rd.obj("load", data["load"], ("force", "moment", "diagram", "on", "from", "to"))
+    load: Load | DiagramLoad
     if "diagram" in ld:
         load = _diagram_load(rd, ld, lk)
     else:
@@ -277,11 +281,9 @@ def linkage_case(data: Mapping, *, source: str = "<dict>"):
                        values=MappingProxyType(values))
 
 
-def _diagram_load(rd: _Reader, ld: Mapping, lk: Linkage):
+def _diagram_load(rd: _Reader, ld: Mapping[str, Json], lk: Linkage) -> DiagramLoad:
     """``{"diagram": [{"stroke": "working", "s": [...], "F": [...], "drives": true}, ...], "on": "B"}``; a part
     may give the indicator diagram's gauge pressure ``"p"`` (Pa) and the bore ``"bore"`` (m) instead of F."""
-    from graphmethods.kinematics.case import DiagramLoad
-
     if any(k in ld for k in ("force", "moment", "from", "to")):
         rd.err("load", "a diagram load gives its forces in \"diagram\" only (no force, moment, from, to)")
     if lk.output is None or lk.output[0] != "point" or lk.strokes() is None:
@@ -293,7 +295,7 @@ def _diagram_load(rd: _Reader, ld: Mapping, lk: Linkage):
     if not isinstance(parts, list) or not parts:
         rd.err("load.diagram", "must be a list of strokes: [{\"stroke\": \"working\", \"s\": [...], \"F\": [...], "
                                "\"drives\": true}, ...]")
-    out = []
+    out: list[tuple[tuple[float, ...], tuple[float, ...], str, bool]] = []
     for i, p in enumerate(parts):
         key = f"load.diagram[{i}]"
         p = rd.obj(key, p, ("stroke", "s", "F", "p", "bore", "drives"))
@@ -325,9 +327,8 @@ def _diagram_load(rd: _Reader, ld: Mapping, lk: Linkage):
     return DiagramLoad(on, tuple(out))
 
 
-def _step_load(rd: _Reader, ld: Mapping, lk: Linkage):
-    from graphmethods.kinematics.case import Load
-
+def _step_load(rd: _Reader, ld: Mapping[str, Json], lk: Linkage) -> Load:
+    """``{"force": N, "on": "D", "from": 0.05, "to": 0.95}`` or ``{"moment": N·m, "on": 3, ...}``."""
     kind = "force" if "force" in ld else "moment" if "moment" in ld else None
     if kind is None or ("force" in ld and "moment" in ld):
         rd.err("load", "give exactly one of force (N, on the output slider) or moment (N·m, on the output rocker)")
@@ -348,14 +349,10 @@ def _step_load(rd: _Reader, ld: Mapping, lk: Linkage):
     return Load(kind, on, mag, start, end)
 
 
-def _case_class():
-    from graphmethods.kinematics.case import Case
-    return Case
-
-
-class LinkageCase(_case_class()):  # type: ignore[misc]
+class LinkageCase(Case):
     """A problem file of any linkage (``"kind": "linkage"``)."""
 
     @property
     def linkage(self) -> Linkage:
+        """The problem's linkage."""
         return self.mechanism.linkage

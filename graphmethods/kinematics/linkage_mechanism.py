@@ -19,47 +19,52 @@ plans' construction records come from the groups, and accelerations are at hand 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Iterator, Mapping
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics import vectors as V
-from graphmethods.kinematics.groups import GROUND, RPP, RPR
-from graphmethods.kinematics.linkage import Linkage
+from graphmethods.kinematics.groups import GROUND, RPP, RPR, Group, State
+from graphmethods.kinematics.linkage import Linkage, Motion, Point
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
-from graphmethods.kinematics.positions import Positions, build_positions
+from graphmethods.kinematics.positions import Positions, Strokes, build_positions
+from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 #: |sin| between two construction lines at or below which they are parallel (a toggle: refused)
 TOGGLE_SIN = 1e-14
 
 
-class _LazyConstructions(Mapping):
+class _LazyConstructions(Mapping[str, PointConstruction]):
     """The plan's construction records, built on first use (the reduced model never needs them)."""
 
-    def __init__(self, build):
+    def __init__(self, build: Callable[[], dict[str, PointConstruction]]) -> None:
         self._build = build
-        self._data = None
+        self._data: dict[str, PointConstruction] | None = None
 
-    def _get(self) -> dict:
+    def _get(self) -> dict[str, PointConstruction]:
         if self._data is None:
             self._data = self._build()
         return self._data
 
-    def __getitem__(self, key):
+    def __getitem__(self, key: str) -> PointConstruction:
         return self._get()[key]
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[str]:
         return iter(self._get())
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self._get())
 
 
-def _xy(c: np.ndarray) -> np.ndarray:
-    return np.column_stack((c.real, c.imag))
+def _xy(c: ComplexArray) -> FloatArray:
+    """Plane vectors x + iy as rows (x, y)."""
+    out: FloatArray = np.column_stack((c.real, c.imag))
+    return out
 
 
 class LinkageMechanism(Mechanism):
@@ -73,7 +78,7 @@ class LinkageMechanism(Mechanism):
         Its name in messages.
     """
 
-    def __init__(self, linkage: Linkage, *, kind: str | None = None):
+    def __init__(self, linkage: Linkage, *, kind: str | None = None) -> None:
         if not isinstance(linkage, Linkage):
             raise InputError(f"expected a Linkage, got {type(linkage).__name__}")
         self.linkage = linkage
@@ -95,7 +100,7 @@ class LinkageMechanism(Mechanism):
         self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
                             if p.name not in driving)
 
-    def _joint_order(self, driving: set) -> tuple[str, ...]:
+    def _joint_order(self, driving: set[str]) -> tuple[str, ...]:
         """Joints in drawing order: the crank's centre and pin, then each group's new points followed
         by the fixed joints it hangs on and the link ends it adds (O1, A, B, O2; O1, A, A3, O3, B)."""
         lk = self.linkage
@@ -133,7 +138,7 @@ class LinkageMechanism(Mechanism):
                 return True
         return False
 
-    def _link_names(self, driving: set):
+    def _link_names(self, driving: set[str]) -> tuple[dict[str, str], dict[str, tuple[str, str]], set[str]]:
         """Canonical names of the links as the classic classes name them: by their two joints ("AB",
         "O2B"), "block" for a block on a slotted link; and those joints."""
         from graphmethods.kinematics.groups import PRP, RRP, RRR
@@ -141,10 +146,10 @@ class LinkageMechanism(Mechanism):
         cr = lk.crank
         names = {cr.link: cr.centre + cr.pin}
         joints = {cr.centre + cr.pin: (cr.centre, cr.pin)}
-        ends_set: set = set()
+        ends_set: set[str] = set()
         blocks = [g for g in lk.groups if isinstance(g, (RPR, RPP))]
         for g in lk.groups:
-            pairs = []
+            pairs: list[tuple[str, str, str]] = []
             if isinstance(g, RRR):
                 pairs = [(g.links[0], g.P, g.C), (g.links[1], g.Q, g.C)]
             elif isinstance(g, RRP):
@@ -169,7 +174,7 @@ class LinkageMechanism(Mechanism):
                 joints[x + y] = (x, y)
         return names, joints, ends_set
 
-    def _on(self, p) -> str:
+    def _on(self, p: Point) -> str:
         """A point's link written by its joints, first joint = where its distance starts ("AB", "BA")."""
         canon = self._canon[p.link]
         if canon not in self.link_joints:
@@ -177,20 +182,20 @@ class LinkageMechanism(Mechanism):
         x, y = self.link_joints[canon]
         return x + y if p.origin == x else y + x if p.origin == y else canon
 
-    def _driving_points(self) -> set:
+    def _driving_points(self) -> set[str]:
         """Extra points that later groups are driven from (they are joints: a lever's end B)."""
-        used = set()
+        used: set[str] = set()
         for g in self.linkage.groups:
             used |= g.inputs()[0]
         return {p.name for p in self.linkage.points} & used
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return self is other
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return id(self)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"LinkageMechanism({self.linkage.structure().formula}, {self.kind!r})"
 
     # ------------------------------------------------------------------ interface
@@ -198,7 +203,7 @@ class LinkageMechanism(Mechanism):
     def omega_links(self) -> tuple[str, ...]:
         return tuple(self._canon[k] for k in self.linkage.links if k not in self._translating)
 
-    def link_name(self, link) -> str:
+    def link_name(self, link: int | str) -> str:
         """Canonical name of a link given by its textbook number (3 or "3") or its joints ("AB", "BA")."""
         if isinstance(link, (int, np.integer)) and not isinstance(link, bool):
             if str(int(link)) not in self._canon:
@@ -216,7 +221,7 @@ class LinkageMechanism(Mechanism):
         raise InputError(f"{self.kind}: unknown link {link!r}; links: "
                          + ", ".join(f"{k} = {v}" for k, v in self._canon.items()))
 
-    def number(self, link) -> str:
+    def number(self, link: int | str) -> str:
         """Textbook number (as text) of a link given by number or name."""
         return self._number[self.link_name(link)]
 
@@ -224,14 +229,17 @@ class LinkageMechanism(Mechanism):
     def guides(self) -> dict[str, tuple[float, float]]:
         return self.linkage.guides
 
-    def strokes(self):
+    def strokes(self) -> Strokes | None:
+        """The output's strokes (None when it turns fully)."""
         return self.linkage.strokes()
 
-    def motion(self, *args, **kw):
+    def motion(self, *args: Any, **kw: Any) -> Motion:
         """The core's :meth:`Linkage.motion` (accelerations included)."""
         return self.linkage.motion(*args, **kw)
 
-    def positions(self, m: int | None = None, *, phi=None, phi_from_start=None) -> Positions:
+    def positions(self, m: int | None = None, *, phi: ArrayLike | None = None,
+                  phi_from_start: ArrayLike | None = None) -> Positions:
+        """The linkage in ``m`` positions (or at the crank angles ``phi``), with the strokes' names."""
         lk = self.linkage
         mo = lk.motion(m=m, phi=phi, phi_from_start=phi_from_start, level=0)
         strokes = self.strokes() if mo.strokes is not None else None     # with this kind's names of its extremes
@@ -239,7 +247,7 @@ class LinkageMechanism(Mechanism):
         order = self.joints + tuple(p.name for p in self.points)
         order += tuple(k for k in mo.z if k not in order)
         geom = {k: (mo.z[k].real.copy(), mo.z[k].imag.copy()) for k in order}
-        out = {}
+        out: dict[str, Any] = {}          # the output's stroke s and H (a slider) or swing ψ and ψ_max (a rocker)
         if lk.output is not None and strokes is not None:
             if lk.output[0] == "point":
                 gx, gy = lk.guides[lk.output[1]]
@@ -257,6 +265,8 @@ class LinkageMechanism(Mechanism):
 
     def velocity_plans(self, positions: Positions | int | None = None, *, omega_1: float = 1.0,
                        sin_threshold: float = 1e-3) -> VelocityPlans:
+        """The velocity plans at ``positions`` (a count, or Positions of this linkage) for the crank speed
+        ``omega_1`` (rad/s)."""
         if positions is None or isinstance(positions, (int, np.integer)):
             positions = self.positions(positions)
         if not isinstance(positions, Positions) or positions.mechanism is not self:
@@ -287,7 +297,7 @@ class LinkageMechanism(Mechanism):
                              sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
                              sin_threshold=float(sin_threshold))
 
-    def _raise_toggle(self, positions: Positions, i: int, st) -> None:
+    def _raise_toggle(self, positions: Positions, i: int, st: State) -> None:
         """Refuse a position where two construction lines are parallel (a toggle), naming it."""
         from graphmethods.errors import AssemblyError
         from graphmethods.kinematics.groups import RRP, RRR
@@ -303,7 +313,7 @@ class LinkageMechanism(Mechanism):
                             f"construction lines are parallel and the velocity is infinite for a turning crank; "
                             f"move the position off the toggle")
 
-    def _at_rest(self, st, i: int) -> tuple[set, set]:
+    def _at_rest(self, st: State, i: int) -> tuple[set[str], set[str]]:
         """The points and links that stand still when the output is at an extreme position: the output
         itself; a rocker's joints and points and the block sliding on it; and, when a slider on a frame
         guide stops while the link driving it turns about a fixed joint, that link as well unless the
@@ -315,7 +325,8 @@ class LinkageMechanism(Mechanism):
         if lk.output is None:
             return set(), set()
         kind, name = lk.output
-        links, points = ({name}, set()) if kind == "link" else (set(), {name})
+        links: set[str] = {name} if kind == "link" else set()
+        points: set[str] = set() if kind == "link" else {name}
         ground = set(lk.ground)
         for _ in range(len(lk.groups) + len(lk.points) + 1):
             before = (len(links), len(points))
@@ -339,7 +350,7 @@ class LinkageMechanism(Mechanism):
                 break
         return links, points
 
-    def _snap_at_rest(self, st, extreme: np.ndarray) -> None:
+    def _snap_at_rest(self, st: State, extreme: NDArray[np.bool_]) -> None:
         """At an extreme position what stands still (:meth:`_at_rest`) is put exactly at the pole."""
         if not extreme.any():
             return
@@ -354,7 +365,7 @@ class LinkageMechanism(Mechanism):
                     st.omega[k] = np.array(np.broadcast_to(st.omega[k], extreme.shape), dtype=float)
                     st.omega[k][i] = 0.0
 
-    def _constructions(self, st) -> dict:
+    def _constructions(self, st: State) -> dict[str, PointConstruction]:
         """How every point of the plan is found (built when a figure first asks for it)."""
         lk = self.linkage
         cons = [PointConstruction(name=k, method="pole", equation=f"v_{k} = 0") for k in lk.ground]
@@ -369,14 +380,16 @@ class LinkageMechanism(Mechanism):
                         continue
                     equation, rename = self._textbook(step, rec.equation)
                     lines = tuple(ConstructionLine(
-                        through=self._plan_label(st, pt), relation="perpendicular" if lab.startswith("⟂") else "parallel",
+                        through=self._plan_label(st, pt),
+                        relation="perpendicular" if lab.startswith("⟂") else "parallel",
                         to=rename.get(lab[2:], lab[2:]), point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
                         for lab, pt, d in rec.lines)
                     cons.append(PointConstruction(name=rec.point, method="intersection", equation=equation,
                                                   lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
                     if isinstance(step, RPP):
-                        cons.append(PointConstruction(name=step.R, method="same", on=step.coincident,
-                                                      equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
+                        cons.append(PointConstruction(
+                            name=step.R, method="same", on=step.coincident,
+                            equation=f"v_{step.R} = v_{step.coincident} (the slide translates)"))
             else:
                 on = self._on(step)
                 lever = next((g for g in lk.groups if isinstance(g, RPR) and g.links[1] == step.link), None)
@@ -403,7 +416,7 @@ class LinkageMechanism(Mechanism):
             (c for c in cons if c.name in extra), key=lambda c: extra.index(c.name))
         return {c.name: c for c in cons}
 
-    def _textbook(self, g, equation: str) -> tuple[str, dict[str, str]]:
+    def _textbook(self, g: Group, equation: str) -> tuple[str, dict[str, str]]:
         """The velocity equation as the book writes it, with the directions of both vectors, for a
         group on the frame (``v_B = v_A + v_BA;  v_B ⟂ O2B, v_BA ⟂ AB``), and the renamed link of its
         construction lines (a slotted link by its pivot and the pin: O3A); else the group's own."""
@@ -421,14 +434,14 @@ class LinkageMechanism(Mechanism):
                     {f"{Q}{co}": f"{Q}{P}"})
         return equation, {}
 
-    def _plan_label(self, st, point_vec) -> str:
+    def _plan_label(self, st: State, point_vec: ComplexArray) -> str:
         """The plan image a construction line is drawn through: p for the fixed points, else the point's."""
         for k, v in st.v.items():
             if v is point_vec:
                 return "p" if k in self.linkage.ground else k.lower()
         return "p" if not np.any(point_vec) else "?"
 
-    def derivatives(self, phi):
+    def derivatives(self, phi: ArrayLike) -> tuple[dict[str, FloatArray], dict[str, FloatArray]]:
         """dX/dφ and dθ/dφ of every point and link (the velocities at ω₁ = 1, counterclockwise)."""
         phi = self._angles(phi, "phi")
         st = self.linkage.solve(phi, omega_1=1.0, level=1)

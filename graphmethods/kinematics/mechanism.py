@@ -22,10 +22,13 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import MAX_POSITIONS_COMPUTED, real
 
 
@@ -52,14 +55,14 @@ class PointOnLink:
     angle: float = 0.0
 
     @classmethod
-    def of(cls, name: str, spec) -> PointOnLink:
+    def of(cls, name: str, spec: object) -> PointOnLink:
         """Normalise ``(link, distance)``, ``(link, distance, angle)`` or a PointOnLink."""
         if isinstance(spec, PointOnLink):
             return spec if spec.name == name else cls(name, spec.link, spec.distance, spec.angle)
         if not isinstance(spec, (tuple, list)) or len(spec) not in (2, 3) or not isinstance(spec[0], str):
             raise InputError(f"point {name!r}: give (link, distance_m) or (link, distance_m, angle_rad), "
                              f"e.g. ('AB', 0.13, 0.0); got {spec!r}")
-        vals = []
+        vals: list[float] = []
         for what, x in zip(("distance", "angle"), spec[1:]):
             if isinstance(x, bool) or not isinstance(x, (int, float, np.floating, np.integer)):
                 raise InputError(f"point {name!r}: {what} must be a finite number, got {x!r}")
@@ -73,18 +76,19 @@ class PointOnLink:
 MAX_ANGLE_RAD = 1e6
 
 
-def _check_length(name: str, value, *, positive: bool = True, allow_zero: bool = False) -> float:
+def _check_length(name: str, value: object, *, positive: bool = True, allow_zero: bool = False) -> float:
+    """A length (m) or an offset or angle (``positive=False``) checked by the toolkit's number policy."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name} must be a number in m, got {value!r}")
     # the toolkit's number policy: finite, magnitudes up to 1e100, and a length (a divisor) at least 1e-100;
     # an offset or an angle is only a term: tiny is fine
-    value = real(value, name, tiny_ok=not positive)
-    if positive and (value < 0 or (value == 0 and not allow_zero)):
-        raise InputError(f"{name} must be {'≥' if allow_zero else '>'} 0 m, got {value!r}")
-    if name.startswith(("theta", "ground_angle")) and abs(value) > MAX_ANGLE_RAD:
-        raise InputError(f"{name} = {value:g} rad is beyond ±{MAX_ANGLE_RAD:g} rad; reduce it modulo 2π first "
+    length = real(value, name, tiny_ok=not positive)
+    if positive and (length < 0 or (length == 0 and not allow_zero)):
+        raise InputError(f"{name} must be {'≥' if allow_zero else '>'} 0 m, got {length!r}")
+    if name.startswith(("theta", "ground_angle")) and abs(length) > MAX_ANGLE_RAD:
+        raise InputError(f"{name} = {length:g} rad is beyond ±{MAX_ANGLE_RAD:g} rad; reduce it modulo 2π first "
                          f"(or give degrees in a problem file, which are reduced exactly)")
-    return value
+    return length
 
 
 def _fmt(x: float) -> str:
@@ -113,6 +117,12 @@ class Mechanism:
     kind: str = "linkage"
     #: the fixed joints (drawn on hatched ground; their plan image is the pole)
     fixed_joints: tuple[str, ...] = ()
+    #: +1: the crank turns counterclockwise, −1 clockwise (set by the subclass)
+    sense: int
+    #: which stroke works, one of ``working_strokes`` (set by the subclass)
+    working_stroke: str
+    #: the extra points on links (a subclass sets what the user gave; :meth:`_validate_common` normalises it)
+    points: tuple[PointOnLink, ...]
 
     @property
     def slotted_links(self) -> tuple[tuple[str, str, str, str, str], ...]:
@@ -129,7 +139,8 @@ class Mechanism:
         if self.working_stroke not in self.working_strokes:
             raise InputError(f"{self.kind}: working_stroke must be one of {', '.join(self.working_strokes)}; "
                              f"got {self.working_stroke!r}")
-        raw = self.points
+        raw: object = self.points
+        items: list[tuple[object, object]]
         if isinstance(raw, Mapping):
             items = list(raw.items())
         elif isinstance(raw, (tuple, list)):
@@ -160,7 +171,7 @@ class Mechanism:
         raise InputError(f"{self.kind}: {what}: unknown link {link!r}; the moving links are "
                          f"{', '.join(self.link_joints)} (either order, first joint = where the distance starts)")
 
-    def link_name(self, link) -> str:
+    def link_name(self, link: int | str) -> str:
         """Canonical name of a link given by joints (``"BA"`` -> ``"AB"``) or textbook number."""
         if isinstance(link, (int, np.integer)) and not isinstance(link, bool):
             try:
@@ -192,11 +203,12 @@ class Mechanism:
         return {}
 
     @staticmethod
-    def _angles(values, name: str) -> np.ndarray:
+    def _angles(values: object, name: str) -> FloatArray:
+        """Crank angles (rad) as a flat float array, checked: numbers, finite, at most ±MAX_ANGLE_RAD."""
         if isinstance(values, (bool, str, bytes)) or (isinstance(values, np.ndarray) and values.dtype == bool):
             raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}")
         try:
-            a = np.array(values, dtype=float).reshape(-1)
+            a: FloatArray = np.array(values, dtype=float).reshape(-1)
         except (TypeError, ValueError, OverflowError):
             raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}") from None
         if a.size == 0:
@@ -208,12 +220,13 @@ class Mechanism:
             raise InputError(f"{name}: angle #{int(np.argmax(bad))} is {a[bad][0]!r}; angles must be finite (rad)")
         big = np.abs(a) > MAX_ANGLE_RAD
         if big.any():
-            raise InputError(f"{name}: angle #{int(np.argmax(big))} = {a[big][0]:g} rad is beyond ±{MAX_ANGLE_RAD:g} rad; "
-                             f"reduce it modulo 2π first")
+            raise InputError(f"{name}: angle #{int(np.argmax(big))} = {a[big][0]:g} rad is beyond "
+                             f"±{MAX_ANGLE_RAD:g} rad; reduce it modulo 2π first")
         return a
 
     @staticmethod
-    def _where(phi: np.ndarray, labels, i: int) -> str:
+    def _where(phi: FloatArray, labels: NDArray[np.integer[Any]] | None, i: int) -> str:
+        """'position 3 (φ = 210°)' or 'angle #3 (φ = 210°)' for messages."""
         pos = f"position {int(labels[i])}" if labels is not None else f"angle #{i}"
         return f"{pos} (φ = {_deg(float(phi[i]))})"
 

@@ -29,8 +29,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
+from graphmethods.kinematics.positions import Positions
+from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import CONVENIENT, convenient_at_least
 
 
@@ -69,8 +72,8 @@ class ConstructionLine:
     through: str
     relation: str
     to: str
-    point: np.ndarray
-    direction: np.ndarray
+    point: FloatArray
+    direction: FloatArray
 
     @property
     def label(self) -> str:
@@ -103,9 +106,9 @@ class PointConstruction:
     name: str
     method: str
     equation: str
-    lines: tuple = ()
+    lines: tuple[ConstructionLine, ...] = ()
     on: str = ""
-    sin_between: np.ndarray | None = None
+    sin_between: FloatArray | None = None
 
     @property
     def label(self) -> str:
@@ -141,14 +144,14 @@ class VelocityPlans:
         The threshold used.
     """
 
-    positions: object
+    positions: Positions
     omega_1: float
     sense: int
-    vectors: Mapping[str, np.ndarray]
-    omegas: Mapping[str, np.ndarray]
+    vectors: Mapping[str, FloatArray]
+    omegas: Mapping[str, FloatArray]
     constructions: Mapping[str, PointConstruction]
-    sin_min: np.ndarray
-    ill_conditioned: np.ndarray
+    sin_min: FloatArray
+    ill_conditioned: NDArray[np.bool_]
     sin_threshold: float
 
     @property
@@ -161,7 +164,7 @@ class VelocityPlans:
         """Point names in construction order."""
         return tuple(self.constructions)
 
-    def v(self, name: str) -> np.ndarray:
+    def v(self, name: str) -> FloatArray:
         """Velocity of point ``name`` (its plan vector), (n, 2), m/s."""
         try:
             return self.vectors[name]
@@ -169,33 +172,34 @@ class VelocityPlans:
             raise InputError(f"no point {name!r} in this velocity plan; known points: "
                              f"{', '.join(self.vectors)}") from None
 
-    def speed(self, name: str) -> np.ndarray:
+    def speed(self, name: str) -> FloatArray:
         """Magnitude of the velocity of ``name``, (n,), m/s."""
         v = self.v(name)
-        return np.hypot(v[:, 0], v[:, 1])
+        out: FloatArray = np.hypot(v[:, 0], v[:, 1])
+        return out
 
-    def analogue(self, name: str) -> np.ndarray:
+    def analogue(self, name: str) -> FloatArray:
         """Velocity analogue v/ω₁ of ``name`` (derivative with respect to the crank's rotation
         in its own sense), (n, 2), m/rad."""
         return self.v(name) / self.omega_1
 
-    def omega(self, link) -> np.ndarray:
+    def omega(self, link: int | str) -> FloatArray:
         """Angular velocity of ``link`` (name like ``"AB"`` / ``"BA"`` or textbook number), (n,),
         rad/s, counterclockwise +."""
-        key = self.positions.mechanism.link_name(link)
+        key: str = self.positions.mechanism.link_name(link)
         return self.omegas[key]
 
-    def omega_ratio(self, link) -> np.ndarray:
+    def omega_ratio(self, link: int | str) -> FloatArray:
         """Angular velocity analogue ω_i/ω₁ of ``link`` (signed, counterclockwise +), (n,)."""
         return self.omega(link) / self.omega_1
 
-    def v_rel(self, name: str, relative_to: str) -> np.ndarray:
+    def v_rel(self, name: str, relative_to: str) -> FloatArray:
         """Relative velocity v_XY = v_X − v_Y (plan vector from y to x), (n, 2), m/s."""
         return self.v(name) - self.v(relative_to)
 
-    def v_along_guide(self, name: str) -> np.ndarray:
+    def v_along_guide(self, name: str) -> FloatArray:
         """Signed velocity of a slider point along its guide (+ along +x of the guide), (n,), m/s."""
-        guide = self.positions.mechanism.guides.get(name)
+        guide: tuple[float, float] | None = self.positions.mechanism.guides.get(name)
         if guide is None:
             raise InputError(f"point {name!r} does not move along a guide; sliders of this linkage: "
                              f"{', '.join(self.positions.mechanism.guides) or 'none'}")
@@ -220,6 +224,7 @@ class VelocityPlans:
         if (fit_mm is None) == (pa_mm is None):
             raise InputError("give exactly one of fit_mm (longest vector) or pa_mm (length of pa) in mm")
         length = fit_mm if fit_mm is not None else pa_mm
+        assert length is not None                                  # exactly one of them is given (checked above)
         if not (math.isfinite(length) and length > 0):
             raise InputError(f"the drawn length must be a positive number of mm, got {length!r}")
         if fit_mm is not None:

@@ -17,17 +17,21 @@ distance in m, angle in rad from the line first joint → second joint.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.groups import GROUND, RPR, RRP, RRR, Guide
 from graphmethods.kinematics.linkage import Crank, Linkage, Point
 
+#: extra points by name: (link by its joints, distance from the first joint in m[, angle in rad])
+PointSpecs = Mapping[str, Sequence[Any]]
 
-def _points(points: Mapping | None, links: Mapping[str, tuple[str, str, str, float]]) -> list[Point]:
+
+def _points(points: PointSpecs | None, links: Mapping[str, tuple[str, str, str, float]]) -> list[Point]:
     """Extra points ``{"S2": ("AB", d, angle)}`` -> Points; ``links`` maps "AB" -> (number, from, to, offset):
     the link's own direction is from→to turned by ``offset`` (rad)."""
-    out = []
+    out: list[Point] = []
     for name, spec in (points or {}).items():
         if not isinstance(spec, (tuple, list)) or len(spec) not in (2, 3):
             raise InputError(f"point {name!r}: give (link, distance_m) or (link, distance_m, angle_rad)")
@@ -46,7 +50,7 @@ def _points(points: Mapping | None, links: Mapping[str, tuple[str, str, str, flo
 
 
 def slider_crank(*, r: float, l: float, e: float = 0.0, assembly: int = 1, sense: int = 1,
-                 working_stroke: str = "toward_crank", points: Mapping | None = None) -> Linkage:
+                 working_stroke: str = "toward_crank", points: PointSpecs | None = None) -> Linkage:
     """Offset slider-crank O–A–B, slider B on the line y = e (as
     :class:`~graphmethods.kinematics.classic.SliderCrank` builds it)."""
     g = RRP(P="A", C="B", l=l, guide=Guide(GROUND, complex(0.0, e), 0.0), links=("2", "3"), branch=assembly)
@@ -56,7 +60,7 @@ def slider_crank(*, r: float, l: float, e: float = 0.0, assembly: int = 1, sense
 
 
 def four_bar(*, l1: float, l2: float, l3: float, l4: float, ground_angle: float = 0.0, assembly: int = 1,
-             sense: int = 1, working_stroke: str = "slow", points: Mapping | None = None) -> Linkage:
+             sense: int = 1, working_stroke: str = "slow", points: PointSpecs | None = None) -> Linkage:
     """Four-bar O1–A–B–O2 (as :class:`~graphmethods.kinematics.classic.FourBar` builds it): crank
     1 = O1A, coupler 2 = AB, rocker 3 = O2B."""
     O2 = (l1 * math.cos(ground_angle), l1 * math.sin(ground_angle))
@@ -67,13 +71,14 @@ def four_bar(*, l1: float, l2: float, l3: float, l4: float, ground_angle: float 
                    sense=sense, output="3", working_stroke=working_stroke, name="four-bar", start=ground_angle)
 
 
-def _lever(r, l_O1O3, theta_O3):
+def _lever(r: float, l_O1O3: float, theta_O3: float) -> tuple[dict[str, tuple[float, float]], Crank, RPR]:
+    """The fixed joints, the crank and the RPR group of a slotted lever (the slotted lever and the shaper)."""
     O3 = (l_O1O3 * math.cos(theta_O3), l_O1O3 * math.sin(theta_O3))
     return {"O1": (0.0, 0.0), "O3": O3}, Crank("O1", "A", r=r), RPR(P="A", Q="O3", coincident="A3", links=("2", "3"))
 
 
 def slotted_lever(*, r: float, l_O1O3: float, l_O3B: float, theta_O3: float = -math.pi / 2, sense: int = 1,
-                  working_stroke: str = "slow", points: Mapping | None = None) -> Linkage:
+                  working_stroke: str = "slow", points: PointSpecs | None = None) -> Linkage:
     """Crank and slotted lever O1–A, block 2, lever 3 = O3B (as
     :class:`~graphmethods.kinematics.classic.SlottedLever` builds it); r may
     exceed O1O3 (a rotating slotted lever: no extreme positions)."""
@@ -85,7 +90,8 @@ def slotted_lever(*, r: float, l_O1O3: float, l_O3B: float, theta_O3: float = -m
 
 
 def shaper(*, r: float, l_O1O3: float, l_O3B: float, l_BC: float, y_guide: float, theta_O3: float = -math.pi / 2,
-           assembly: int = 1, sense: int = 1, working_stroke: str = "slow", points: Mapping | None = None) -> Linkage:
+           assembly: int = 1, sense: int = 1, working_stroke: str = "slow",
+           points: PointSpecs | None = None) -> Linkage:
     """Shaper (as :class:`~graphmethods.kinematics.classic.Shaper` builds it): slotted lever, link
     4 = BC, ram 5 = C on the line y = y_guide.
 
@@ -102,10 +108,11 @@ def shaper(*, r: float, l_O1O3: float, l_O3B: float, l_BC: float, y_guide: float
     return lk
 
 
-def six_bar_press(*, l_O1A: float = 0.08, l_AB: float = 0.30, l_O2B: float = 0.20, O2=(0.25, 0.10),
-                  l_O2C: float = 0.30, C_angle: float = 0.0, l_CD: float = 0.35, guide_through=(0.0, 0.42),
+def six_bar_press(*, l_O1A: float = 0.08, l_AB: float = 0.30, l_O2B: float = 0.20,
+                  O2: tuple[float, float] = (0.25, 0.10), l_O2C: float = 0.30, C_angle: float = 0.0,
+                  l_CD: float = 0.35, guide_through: tuple[float, float] = (0.0, 0.42),
                   guide_angle: float = 0.0, assembly: int = 1, sense: int = 1, working_stroke: str = "slow",
-                  points: Mapping | None = None) -> Linkage:
+                  points: PointSpecs | None = None) -> Linkage:
     """Six-bar press: crank-rocker four-bar O1–A–B–O2 whose rocker (3, O2–B extended to C, or a bell
     crank with ``C_angle``) drives the ram D (5) through the link CD (4); the ram's guide passes
     through ``guide_through`` at ``guide_angle`` (rad from +x).

@@ -42,7 +42,6 @@ import math
 import re
 from dataclasses import dataclass
 from functools import cached_property
-from typing import cast
 
 import numpy as np
 
@@ -142,7 +141,7 @@ class _Linkage:
             if omega_1 is not None and omega_1 != obj.omega_1:
                 raise InputError(f"these velocity plans are for ω₁ = {obj.omega_1:g} rad/s, not {omega_1:g}; "
                                  f"give the mechanism or its positions to draw them at another speed")
-            plan_pos = cast("Positions", obj.positions)       # VelocityPlans (on its way out) types it as object
+            plan_pos = obj.positions
             if m is not None and m != plan_pos.m:
                 raise InputError(f"these velocity plans are for m = {plan_pos.m} positions, not {m}")
             return cls(plan_pos.mechanism, m=plan_pos.m, omega_1=obj.omega_1,

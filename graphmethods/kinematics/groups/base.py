@@ -20,33 +20,87 @@ point O of it is ``v_O + 1j*omega*(X - O)`` and its acceleration
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypedDict, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from graphmethods.errors import AssemblyError, InputError
+from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 GROUND = "0"
 
+#: a plane vector over the positions, or one for all of them (a guide on the frame: it broadcasts)
+Vec = ComplexArray | complex
+#: a real value over the positions, or one for all of them (the turning of the frame: 0)
+Real = FloatArray | float
+#: a kinematic pair: (kind "R" or "P", link, link, joint), "?" where the link is whatever carries the joint
+Pair = tuple[str, str, str, str]
+#: the known vectors of a plan's equation by name
+Known = tuple[tuple[str, ComplexArray], ...]
+#: the two construction lines of a plan: (label, a point of the line, its unit direction)
+Lines = tuple[tuple[str, ComplexArray, ComplexArray], ...]
 
-def cross(a, b):
+
+class Sliding(TypedDict, total=False):
+    """A group's sliding quantities over the positions (:attr:`State.relative`), as its plans use them.
+
+    Real arrays: the slider's coordinate along its guide ``s`` (m) and its derivatives ``s_dot``
+    (m/s), ``s_ddot`` (m/s²), numbered ``_1``/``_2`` where a group has two guides. Complex arrays
+    (plane vectors): the slot's direction ``u``; the relative velocity and acceleration along the
+    guide ``v_rel``, ``a_rel``; the guide's point under the slider ``v_guide``, ``a_guide``; the
+    Coriolis terms ``a_coriolis`` (of the guide's own point: ``a_coriolis_guide``).
+    """
+
+    s: FloatArray
+    s_dot: FloatArray
+    s_ddot: FloatArray
+    s1: FloatArray
+    s2: FloatArray
+    s1_dot: FloatArray
+    s2_dot: FloatArray
+    s1_ddot: FloatArray
+    s2_ddot: FloatArray
+    u: ComplexArray
+    v_rel: ComplexArray
+    v_guide: ComplexArray
+    a_rel: ComplexArray
+    a_guide: ComplexArray
+    a_coriolis: ComplexArray
+    a_coriolis_guide: ComplexArray
+    v_rel_1: ComplexArray
+    v_rel_2: ComplexArray
+    v_guide_1: ComplexArray
+    v_guide_2: ComplexArray
+    a_rel_1: ComplexArray
+    a_rel_2: ComplexArray
+    a_guide_1: ComplexArray
+    a_guide_2: ComplexArray
+    a_coriolis_1: ComplexArray
+    a_coriolis_2: ComplexArray
+
+
+def cross(a: Vec, b: Vec) -> FloatArray:
     """z-component of a × b for complex plane vectors (Im(conj(a)·b))."""
-    return a.real * b.imag - a.imag * b.real
+    out: FloatArray = np.asarray(a.real * b.imag - a.imag * b.real, dtype=float)
+    return out
 
 
-def dot(a, b):
+def dot(a: Vec, b: Vec) -> FloatArray:
     """Scalar product of complex plane vectors (Re(conj(a)·b))."""
-    return a.real * b.real + a.imag * b.imag
+    out: FloatArray = np.asarray(a.real * b.real + a.imag * b.imag, dtype=float)
+    return out
 
 
-def solve2(e1, e2, rhs):
+def solve2(e1: Vec, e2: Vec, rhs: Vec) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Real x, y with ``x·e1 + y·e2 = rhs`` (complex plane vectors, vectorised).
 
     Returns ``(x, y, det)`` with ``det = e1 × e2``; where det is 0 the values are not finite
     (callers check ``det`` first).
     """
-    det = np.asarray(cross(e1, e2))
+    det = cross(e1, e2)
     if det.all():
         return cross(rhs, e2) / det, cross(e1, rhs) / det, det
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -55,41 +109,48 @@ def solve2(e1, e2, rhs):
     return x, y, det
 
 
+def broadcast(st: State, rel: Sliding) -> Sliding:
+    """A group's sliding quantities, each broadcast to the n positions (read-only views)."""
+    # cast: broadcasting keeps each item's dtype, so the items keep their types
+    return cast(Sliding, {k: np.broadcast_to(np.asarray(v), (st.n,)) for k, v in rel.items()})
+
+
 def fmt(x: float) -> str:
     """A length or number for a message (6 significant digits)."""
     return f"{x:.6g}"
 
 
-class _Angles(dict):
+class _Angles(dict[str, FloatArray]):
     """Link angles computed when first asked for, from the links' unit directions."""
 
-    def __init__(self, directions: dict):
+    def __init__(self, directions: dict[str, Vec], n: tuple[int, ...]) -> None:
         super().__init__()
         self._e = directions
+        self._n = n
 
-    def __missing__(self, link):
-        th = np.angle(np.broadcast_to(self._e[link], self._n)) if link in self._e else None
-        if th is None:
+    def __missing__(self, link: str) -> FloatArray:
+        if link not in self._e:
             raise KeyError(link)
+        th: FloatArray = np.angle(np.broadcast_to(self._e[link], self._n))
         self[link] = th
         return th
 
-    def __contains__(self, link):
+    def __contains__(self, link: object) -> bool:
         return dict.__contains__(self, link) or link in self._e
 
-    def keys(self):
+    def keys(self) -> list[str]:  # type: ignore[override]  # a list in solving order, not a live view
         return list(dict.fromkeys([*self._e, *dict.keys(self)]))     # solving order, however they were asked for
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[str]:
         return iter(self.keys())
 
-    def items(self):
+    def items(self) -> list[tuple[str, FloatArray]]:  # type: ignore[override]  # a list, as keys()
         return [(k, self[k]) for k in self.keys()]
 
-    def values(self):
+    def values(self) -> list[FloatArray]:  # type: ignore[override]  # a list, as keys()
         return [self[k] for k in self.keys()]
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.keys())
 
 
@@ -110,44 +171,44 @@ class State:
     theta, omega, epsilon : dict link -> ndarray (n,)
         Angle (rad, computed from ``e`` when asked for), angular velocity (rad/s), angular
         acceleration (rad/s²) of every link.
-    relative : dict name -> dict
+    relative : dict name -> Sliding
         Per group, the sliding quantities (relative velocity and acceleration along a guide,
         Coriolis terms) as complex arrays.
     conditioning : dict group name -> ndarray (n,)
         |sin| of the angle between the two construction lines of the group's plan.
     """
 
-    phi: np.ndarray
-    labels: np.ndarray | None = None
-    z: dict = field(default_factory=dict)
-    v: dict = field(default_factory=dict)
-    a: dict = field(default_factory=dict)
-    e: dict = field(default_factory=dict)
-    theta: dict = field(default_factory=dict)
-    omega: dict = field(default_factory=dict)
-    epsilon: dict = field(default_factory=dict)
-    relative: dict = field(default_factory=dict)
-    conditioning: dict = field(default_factory=dict)
+    phi: FloatArray
+    labels: NDArray[np.integer[Any]] | None = None
+    z: dict[str, ComplexArray] = field(default_factory=dict)
+    v: dict[str, ComplexArray] = field(default_factory=dict)
+    a: dict[str, ComplexArray] = field(default_factory=dict)
+    e: dict[str, Vec] = field(default_factory=dict)
+    theta: dict[str, FloatArray] = field(default_factory=dict)
+    omega: dict[str, FloatArray] = field(default_factory=dict)
+    epsilon: dict[str, FloatArray] = field(default_factory=dict)
+    relative: dict[str, Sliding] = field(default_factory=dict)
+    conditioning: dict[str, FloatArray] = field(default_factory=dict)
     kinematic: bool = True
 
     @property
-    def zeros(self) -> np.ndarray:
+    def zeros(self) -> FloatArray:
         """A shared read-only array of n zeros (the angular velocity of a translating link)."""
-        z = self.__dict__.get("_zeros")
+        z: FloatArray | None = self.__dict__.get("_zeros")
         if z is None:
             z = np.zeros(self.phi.shape)
             z.flags.writeable = False
             self.__dict__["_zeros"] = z
         return z
 
-    def __post_init__(self):
-        angles = _Angles(self.e)
-        angles._n = self.phi.shape
+    def __post_init__(self) -> None:
+        angles = _Angles(self.e, self.phi.shape)
         angles.update(self.theta)
         self.theta = angles
 
     @property
     def n(self) -> int:
+        """Number of positions."""
         return int(self.phi.shape[0])
 
     def where(self, i: int) -> str:
@@ -174,10 +235,10 @@ class Guide:
     """
 
     link: str
-    through: Any
+    through: str | complex
     angle: float = 0.0
 
-    def line(self, st: State):
+    def line(self, st: State) -> tuple[Vec, Vec, Real, Real]:
         """(G, u, omega, epsilon): a point of the line, its unit direction, and the turning of the
         link that carries it (zeros for the frame), each over the positions."""
         G = st.z[self.through] if isinstance(self.through, str) else complex(self.through)
@@ -186,13 +247,14 @@ class Guide:
             return G, turn, 0.0, 0.0          # scalars: they broadcast over the positions
         return G, st.e[self.link] * turn, st.omega.get(self.link, 0.0), st.epsilon.get(self.link, 0.0)
 
-    def kinematics(self, st: State):
+    def kinematics(self, st: State) -> tuple[Vec, Vec]:
         """(v_G, a_G): velocity and acceleration of the guide's point (zeros for the frame)."""
         if isinstance(self.through, str):
             return st.v[self.through], st.a.get(self.through, 0j)
         return 0j, 0j
 
     def describe(self) -> str:
+        """'guide on link 3 through B at 90°' for messages."""
         where = self.through if isinstance(self.through, str) else f"({fmt(complex(self.through).real)}, " \
                                                                    f"{fmt(complex(self.through).imag)})"
         on = "the frame" if self.link == GROUND else f"link {self.link}"
@@ -226,49 +288,100 @@ class Record:
     point: str
     plan: str
     equation: str
-    known: tuple
-    lines: tuple
-    meet: np.ndarray
-    sin_between: np.ndarray
+    known: Known
+    lines: Lines
+    meet: ComplexArray
+    sin_between: FloatArray
+
+
+@dataclass(frozen=True)
+class Joints:
+    """How a group hangs in the linkage: the ``known`` joints it is attached at (P, Q), the points it
+    ``found`` (C; or R and the coincident point) and the ``guides`` its sliders move along."""
+
+    known: tuple[str, ...] = ()
+    found: tuple[str, ...] = ()
+    guides: tuple[Guide, ...] = ()
 
 
 class Group:
     """Base of the structural groups (class II dyads): see the subclasses.
 
-    Subclasses set ``kind`` (``"RRR"``, ...), ``links`` (the two textbook link numbers) and
-    implement ``positions``, ``velocities``, ``accelerations``, ``records``, ``inputs`` (the
-    points and links the group needs) and ``outputs`` (the points and links it adds).
+    Subclasses are frozen dataclasses with a field ``links`` (the two textbook link numbers) and
+    set ``kind`` (``"RRR"``, ...) and ``pairs``; and implement :meth:`joints` (the joints it is attached
+    at and finds, the guides it slides on), ``positions``, ``velocities``, ``accelerations`` and
+    ``records``. :meth:`inputs` and :meth:`outputs` follow from :meth:`joints`.
     """
 
     kind = "?"
     links: tuple[str, str] = ("", "")
-    #: (pair kind, link, link) for its three kinematic pairs: "R" revolute, "P" prismatic
-    pairs: tuple = ()
+    branch: int = 1
 
-    def inputs(self) -> tuple[set, set]:  # pragma: no cover - interface
+    @property
+    def pairs(self) -> tuple[Pair, ...]:
+        """(pair kind, link, link, joint) for its three kinematic pairs: "R" revolute, "P" prismatic."""
+        return ()
+
+    def joints(self) -> Joints:  # pragma: no cover - interface
+        """The known joints the group is attached at, the points it finds and the guides it slides on."""
         raise NotImplementedError
 
-    def outputs(self) -> tuple[tuple, tuple]:  # pragma: no cover - interface
+    def inputs(self) -> tuple[set[str], set[str]]:
+        """(points, links) the group needs known: its joints, the guides' points and the links carrying them."""
+        j = self.joints()
+        points = set(j.known) | {g.through for g in j.guides if isinstance(g.through, str)}
+        return points, {g.link for g in j.guides} - {GROUND}
+
+    # The points are typed Any for now: kinematics.linkage (another branch's module) reuses one loop variable for
+    # these names and then for its Point records (Linkage.__post_init__), which a str here would flag; tighten to
+    # tuple[tuple[str, ...], tuple[str, str]] once that loop variable is renamed.
+    def outputs(self) -> tuple[tuple[Any, ...], tuple[str, str]]:
+        """(points, links) the group adds."""
+        return self.joints().found, self.links
+
+    def positions(self, st: State) -> None:  # pragma: no cover - interface
+        """Add the group's points and link directions to ``st``."""
+        raise NotImplementedError
+
+    def velocities(self, st: State) -> None:  # pragma: no cover - interface
+        """Add the velocities of its points and the angular velocities of its links to ``st``."""
+        raise NotImplementedError
+
+    def accelerations(self, st: State) -> None:  # pragma: no cover - interface
+        """Add the accelerations of its points and the angular accelerations of its links to ``st``."""
+        raise NotImplementedError
+
+    def records(self, st: State) -> tuple[Record, ...]:  # pragma: no cover - interface
+        """How the plans find its points (velocity, and acceleration once solved)."""
         raise NotImplementedError
 
     @property
     def name(self) -> str:
+        """'RRR (2, 3)'."""
         return f"{self.kind} ({self.links[0]}, {self.links[1]})"
 
     def _name(self) -> str:
-        try:
-            return self.__dict__["_cached_name"]
-        except KeyError:
-            object.__setattr__(self, "_cached_name", self.name)
-            return self.__dict__["_cached_name"]
+        cached: str | None = self.__dict__.get("_cached_name")
+        if cached is None:
+            cached = self.name
+            object.__setattr__(self, "_cached_name", cached)
+        return cached
 
-    def fail(self, st: State, bad: np.ndarray, why) -> None:
+    def _check(self, field_name: str, label: str, *, positive: bool = True) -> None:
+        """Replace the length field ``field_name`` by its checked float (frozen dataclass: on construction)."""
+        object.__setattr__(self, field_name, check_length(label, getattr(self, field_name), positive=positive))
+
+    def _check_branch(self) -> None:
+        """Replace the field ``branch`` by its checked value (+1 or −1)."""
+        object.__setattr__(self, "branch", check_branch(self.name, self.branch))
+
+    def fail(self, st: State, bad: NDArray[np.bool_], why: Callable[[int], str]) -> None:
         """Raise AssemblyError at the first position where ``bad`` holds; ``why(i)`` explains it."""
         if bad.any():
             i = int(np.argmax(bad))
             raise AssemblyError(f"group {self.name}: cannot be assembled at {st.where(i)}: {why(i)}")
 
-    def check_det(self, st: State, det: np.ndarray, what: str) -> None:
+    def check_det(self, st: State, det: FloatArray, what: str) -> None:
         """Refuse a position where the two construction lines are exactly parallel (a toggle)."""
         det = np.asarray(det)
         if det.all():
@@ -280,32 +393,32 @@ class Group:
                                 f"parallel and the velocities are infinite for a turning crank (a toggle); move the "
                                 f"position off it")
 
-    def margin(self, st: State) -> np.ndarray:
+    def margin(self, st: State) -> FloatArray:
         """How far each position is from failing to assemble (m², > 0 assembles); used to find
         toggles between positions."""
         return np.ones(st.n)
 
 
-def check_length(name: str, value, *, positive: bool = True) -> float:
+def check_length(name: str, value: object, *, positive: bool = True) -> float:
     """A finite length in m (> 0 when ``positive``); InputError naming it otherwise."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name} must be a number in m, got {value!r}")
-    value = float(value)
-    if not math.isfinite(value):
-        raise InputError(f"{name} must be finite, got {value!r}")
-    if positive and value <= 0:
-        raise InputError(f"{name} must be > 0 m, got {value!r}")
-    return value
+    length = float(value)
+    if not math.isfinite(length):
+        raise InputError(f"{name} must be finite, got {length!r}")
+    if positive and length <= 0:
+        raise InputError(f"{name} must be > 0 m, got {length!r}")
+    return length
 
 
-def check_branch(name: str, value) -> int:
+def check_branch(name: str, value: object) -> int:
     """+1 or −1."""
     if isinstance(value, bool) or value not in (1, -1):
         raise InputError(f"{name}: branch must be +1 or -1, got {value!r}")
     return int(value)
 
 
-def rigid(st: State, link: str, origin: str, z: np.ndarray):
+def rigid(st: State, link: str, origin: str, z: ComplexArray) -> tuple[ComplexArray, ComplexArray]:
     """Velocity and acceleration of a point at ``z`` fixed on ``link`` whose point ``origin`` is known."""
     r = z - st.z[origin]
     w, e = st.omega[link], st.epsilon[link]

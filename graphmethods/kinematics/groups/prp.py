@@ -22,7 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, cross, solve2
+from graphmethods.kinematics.groups.base import Group, Guide, Joints, Pair, Record, State, broadcast, cross, solve2
+from graphmethods.kinematics.vectors import FloatArray
 
 
 @dataclass(frozen=True, eq=False)
@@ -42,23 +43,19 @@ class PRP(Group):
     C: str
     guide_1: Guide
     guide_2: Guide
-    links: tuple = ("2", "3")
+    links: tuple[str, str] = ("2", "3")
 
     kind = "PRP"
 
     @property
-    def pairs(self):
+    def pairs(self) -> tuple[Pair, ...]:
         return (("P", self.guide_1.link, self.links[0], self.C), ("R", self.links[0], self.links[1], self.C),
                 ("P", self.guide_2.link, self.links[1], self.C))
 
-    def inputs(self):
-        pts = {g.through for g in (self.guide_1, self.guide_2) if isinstance(g.through, str)}
-        return pts, {self.guide_1.link, self.guide_2.link} - {GROUND}
+    def joints(self) -> Joints:
+        return Joints(found=(self.C,), guides=(self.guide_1, self.guide_2))
 
-    def outputs(self):
-        return (self.C,), self.links
-
-    def margin(self, st: State) -> np.ndarray:
+    def margin(self, st: State) -> FloatArray:
         _, u1, _, _ = self.guide_1.line(st)
         _, u2, _, _ = self.guide_2.line(st)
         return cross(u1, u2) ** 2
@@ -90,7 +87,8 @@ class PRP(Group):
         st.v[self.C] = np.broadcast_to(v1 + sd1 * u1, n)
         for link, w in zip(self.links, (w1, w2)):
             st.omega[link] = np.broadcast_to(w, n)
-        rel.update(s1_dot=sd1, s2_dot=sd2, v_guide_1=v1, v_guide_2=v2, v_rel_1=sd1 * u1, v_rel_2=sd2 * u2)
+        rel.update({"s1_dot": sd1, "s2_dot": sd2, "v_guide_1": v1, "v_guide_2": v2, "v_rel_1": sd1 * u1,
+                    "v_rel_2": sd2 * u2})
 
     def accelerations(self, st: State) -> None:
         rel = st.relative[self._name()]
@@ -107,12 +105,12 @@ class PRP(Group):
         st.a[self.C] = np.broadcast_to(a1 + k1 + sdd1 * u1, n)
         for link, e in zip(self.links, (e1, e2)):
             st.epsilon[link] = np.broadcast_to(e, n)
-        rel.update(s1_ddot=sdd1, s2_ddot=sdd2, a_guide_1=a1, a_guide_2=a2, a_coriolis_1=k1, a_coriolis_2=k2,
-                   a_rel_1=sdd1 * u1, a_rel_2=sdd2 * u2)
+        rel.update({"s1_ddot": sdd1, "s2_ddot": sdd2, "a_guide_1": a1, "a_guide_2": a2, "a_coriolis_1": k1,
+                    "a_coriolis_2": k2, "a_rel_1": sdd1 * u1, "a_rel_2": sdd2 * u2})
 
-    def records(self, st: State) -> tuple:
+    def records(self, st: State) -> tuple[Record, ...]:
         C = self.C
-        rel = {k: np.broadcast_to(v, (st.n,)) for k, v in st.relative[self._name()].items()}
+        rel = broadcast(st, st.relative[self._name()])
         _, u1, _, _ = self.guide_1.line(st)
         _, u2, _, _ = self.guide_2.line(st)
         u1, u2 = np.broadcast_to(u1, (st.n,)), np.broadcast_to(u2, (st.n,))

@@ -27,7 +27,20 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, cross, solve2
+from graphmethods.kinematics.groups.base import (
+    Group,
+    Guide,
+    Joints,
+    Pair,
+    Real,
+    Record,
+    State,
+    Vec,
+    broadcast,
+    cross,
+    solve2,
+)
+from graphmethods.kinematics.vectors import FloatArray
 
 
 @dataclass(frozen=True, eq=False)
@@ -58,31 +71,27 @@ class RPP(Group):
     guide: Guide
     slot_angle: float = np.pi / 2
     e: float = 0.0
-    links: tuple = ("2", "3")
+    links: tuple[str, str] = ("2", "3")
 
     kind = "RPP"
 
-    def __post_init__(self):
-        object.__setattr__(self, "e", check_length("offset e of the slot", self.e, positive=False))
+    def __post_init__(self) -> None:
+        self._check("e", "offset e of the slot", positive=False)
 
     @property
-    def pairs(self):
+    def pairs(self) -> tuple[Pair, ...]:
         return (("R", "?", self.links[0], self.P), ("P", self.links[0], self.links[1], self.P),
                 ("P", self.guide.link, self.links[1], self.R))
 
-    def inputs(self):
-        pts = {self.P} | ({self.guide.through} if isinstance(self.guide.through, str) else set())
-        return pts, ({self.guide.link} - {GROUND})
+    def joints(self) -> Joints:
+        return Joints(known=(self.P,), found=(self.R, self.coincident), guides=(self.guide,))
 
-    def outputs(self):
-        return (self.R, self.coincident), self.links
-
-    def _lines(self, st: State):
+    def _lines(self, st: State) -> tuple[Vec, Vec, Vec, Real, Real]:
         G, u2, w, e = self.guide.line(st)
         u1 = u2 * complex(np.cos(self.slot_angle), np.sin(self.slot_angle))
         return G, u2, u1, w, e
 
-    def margin(self, st: State) -> np.ndarray:
+    def margin(self, st: State) -> FloatArray:
         return np.full(st.n, np.sin(self.slot_angle) ** 2)
 
     def positions(self, st: State) -> None:
@@ -110,7 +119,7 @@ class RPP(Group):
         st.v[self.coincident] = st.v[self.P] - sd1 * u1
         st.omega[self.links[0]] = np.broadcast_to(w, n)
         st.omega[self.links[1]] = np.broadcast_to(w, n)
-        rel.update(s1_dot=sd1, s2_dot=sd2, v_rel=-sd1 * u1, v_guide=vG + 1j * w * (st.z[self.R] - G))
+        rel.update({"s1_dot": sd1, "s2_dot": sd2, "v_rel": -sd1 * u1, "v_guide": vG + 1j * w * (st.z[self.R] - G)})
 
     def accelerations(self, st: State) -> None:
         G, u2, u1, w, e = self._lines(st)
@@ -127,15 +136,15 @@ class RPP(Group):
         st.a[self.coincident] = st.a[self.P] - k - sdd1 * u1
         st.epsilon[self.links[0]] = np.broadcast_to(e, (st.n,))
         st.epsilon[self.links[1]] = np.broadcast_to(e, (st.n,))
-        rel.update(s1_ddot=sdd1, s2_ddot=sdd2, a_rel=-sdd1 * u1, a_coriolis=-k, a_guide=a_guide,
-                   a_coriolis_guide=2j * w * sd2 * u2)
+        rel.update({"s1_ddot": sdd1, "s2_ddot": sdd2, "a_rel": -sdd1 * u1, "a_coriolis": -k, "a_guide": a_guide,
+                    "a_coriolis_guide": 2j * w * sd2 * u2})
 
-    def records(self, st: State) -> tuple:
+    def records(self, st: State) -> tuple[Record, ...]:
         P, R, A3 = self.P, self.R, self.coincident
         _, u2, u1, _, _ = self._lines(st)
         n = (st.n,)
         u2, u1 = np.broadcast_to(u2, n), np.broadcast_to(u1, n)
-        rel = {k: np.broadcast_to(v, n) for k, v in st.relative[self._name()].items()}
+        rel = broadcast(st, st.relative[self._name()])
         s = cross(u1, u2)
         out = [Record(point=A3, plan="velocity", equation=f"v_{A3} = v_{P} + v_{A3}{P} = v_{R}",
                       known=((f"v_{P}", st.v[P]), (f"v_{R}(guide)", rel["v_guide"])),

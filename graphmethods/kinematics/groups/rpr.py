@@ -30,7 +30,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import Group, Record, State, check_branch, check_length, cross, fmt, solve2
+from graphmethods.kinematics.groups.base import Group, Joints, Pair, Record, State, cross, fmt, solve2
+from graphmethods.kinematics.vectors import FloatArray
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,28 +58,24 @@ class RPR(Group):
     Q: str
     coincident: str
     e: float = 0.0
-    links: tuple = ("2", "3")
+    links: tuple[str, str] = ("2", "3")
     branch: int = 1
 
     kind = "RPR"
 
-    def __post_init__(self):
-        object.__setattr__(self, "e", check_length(f"offset e of the slot of link {self.links[1]}", self.e,
-                                                   positive=False))
-        object.__setattr__(self, "branch", check_branch(self.name, self.branch))
+    def __post_init__(self) -> None:
+        self._check("e", f"offset e of the slot of link {self.links[1]}", positive=False)
+        self._check_branch()
 
     @property
-    def pairs(self):
+    def pairs(self) -> tuple[Pair, ...]:
         return (("R", "?", self.links[0], self.P), ("P", self.links[0], self.links[1], self.P),
                 ("R", "?", self.links[1], self.Q))
 
-    def inputs(self):
-        return {self.P, self.Q}, set()
+    def joints(self) -> Joints:
+        return Joints(known=(self.P, self.Q), found=(self.coincident,))
 
-    def outputs(self):
-        return (self.coincident,), self.links
-
-    def margin(self, st: State) -> np.ndarray:
+    def margin(self, st: State) -> FloatArray:
         rho = np.abs(st.z[self.P] - st.z[self.Q])
         return (rho - abs(self.e)) * (rho + abs(self.e))
 
@@ -114,7 +111,7 @@ class RPR(Group):
         st.omega[self.links[0]] = w
         st.omega[self.links[1]] = w.copy()
         st.v[self.coincident] = st.v[self.Q] + 1j * w * R
-        rel.update(s_dot=sd, v_rel=-sd * u)           # v_A3A2 = v_A3 − v_A2 = −ṡ·u
+        rel.update({"s_dot": sd, "v_rel": -sd * u})           # v_A3A2 = v_A3 − v_A2 = −ṡ·u
 
     def accelerations(self, st: State) -> None:
         rel = st.relative[self._name()]
@@ -126,9 +123,9 @@ class RPR(Group):
         st.epsilon[self.links[0]] = e
         st.epsilon[self.links[1]] = e.copy()
         st.a[self.coincident] = st.a[self.Q] + (1j * e - w * w) * R
-        rel.update(s_ddot=sdd, a_rel=-sdd * u, a_coriolis=-a_k)   # a^k_A3A2 = 2ω₃ × v_A3A2
+        rel.update({"s_ddot": sdd, "a_rel": -sdd * u, "a_coriolis": -a_k})   # a^k_A3A2 = 2ω₃ × v_A3A2
 
-    def records(self, st: State) -> tuple:
+    def records(self, st: State) -> tuple[Record, ...]:
         P, Q, A3 = self.P, self.Q, self.coincident
         rel = st.relative[self._name()]
         u = rel["u"]

@@ -33,15 +33,17 @@ from graphmethods.kinematics.groups.base import (
     GROUND,
     Group,
     Guide,
+    Joints,
+    Pair,
     Record,
     State,
-    check_branch,
-    check_length,
+    Vec,
     cross,
     dot,
     fmt,
     solve2,
 )
+from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 
 @dataclass(frozen=True, eq=False)
@@ -68,34 +70,30 @@ class RRP(Group):
     C: str
     l: float
     guide: Guide
-    links: tuple = ("2", "3")
+    links: tuple[str, str] = ("2", "3")
     branch: int = 1
 
     kind = "RRP"
 
-    def __post_init__(self):
-        object.__setattr__(self, "l", check_length(f"{self.P}{self.C}", self.l))
-        object.__setattr__(self, "branch", check_branch(self.name, self.branch))
+    def __post_init__(self) -> None:
+        self._check("l", f"{self.P}{self.C}")
+        self._check_branch()
 
     @property
-    def pairs(self):
+    def pairs(self) -> tuple[Pair, ...]:
         return (("R", "?", self.links[0], self.P), ("R", self.links[0], self.links[1], self.C),
                 ("P", self.guide.link, self.links[1], self.C))
 
-    def inputs(self):
-        pts = {self.P} | ({self.guide.through} if isinstance(self.guide.through, str) else set())
-        return pts, ({self.guide.link} - {GROUND})
+    def joints(self) -> Joints:
+        return Joints(known=(self.P,), found=(self.C,), guides=(self.guide,))
 
-    def outputs(self):
-        return (self.C,), self.links
-
-    def _geometry(self, st: State):
+    def _geometry(self, st: State) -> tuple[Vec, Vec, ComplexArray, FloatArray]:
         G, u, _, _ = self.guide.line(st)
         R = st.z[self.P] - G
         h = cross(u, R)
         return G, u, R, h
 
-    def margin(self, st: State) -> np.ndarray:
+    def margin(self, st: State) -> FloatArray:
         h = self._geometry(st)[3]
         return (self.l - h) * (self.l + h)
 
@@ -124,10 +122,10 @@ class RRP(Group):
         self.check_det(st, det, f"the rod {self.P}{self.C} stands perpendicular to the guide")
         st.conditioning[self._name()] = np.abs(det) / self.l
         st.omega[self.links[0]] = w
-        st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else wg
+        st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else st.omega[self.guide.link]
         v_guide = vG + 1j * wg * s * u
         st.v[self.C] = v_guide + sd * u              # exactly along a guide of the frame
-        st.relative[self._name()].update(s_dot=sd, v_rel=sd * u, v_guide=v_guide)
+        st.relative[self._name()].update({"s_dot": sd, "v_rel": sd * u, "v_guide": v_guide})
 
     def accelerations(self, st: State) -> None:
         G, u, wg, eg = self.guide.line(st)
@@ -141,11 +139,11 @@ class RRP(Group):
         a_k = 2j * wg * sd * u                              # Coriolis, 2ω_g × v_rel
         sdd, e, _ = solve2(u, -1j * rP, st.a[self.P] - w * w * rP - a_guide - a_k)
         st.epsilon[self.links[0]] = e
-        st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else eg
+        st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else st.epsilon[self.guide.link]
         st.a[self.C] = a_guide + a_k + sdd * u
-        rel.update(s_ddot=sdd, a_rel=sdd * u, a_coriolis=a_k, a_guide=a_guide)
+        rel.update({"s_ddot": sdd, "a_rel": sdd * u, "a_coriolis": a_k, "a_guide": a_guide})
 
-    def records(self, st: State) -> tuple:
+    def records(self, st: State) -> tuple[Record, ...]:
         P, C = self.P, self.C
         c = st.z[C]
         G, u, wg, _ = self.guide.line(st)

@@ -25,7 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.kinematics.groups.base import Group, Record, State, check_branch, check_length, cross, fmt, solve2
+from graphmethods.kinematics.groups.base import Group, Joints, Pair, Record, State, cross, fmt, solve2
+from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 
 @dataclass(frozen=True, eq=False)
@@ -51,28 +52,25 @@ class RRR(Group):
     C: str
     l_PC: float
     l_QC: float
-    links: tuple = ("2", "3")
+    links: tuple[str, str] = ("2", "3")
     branch: int = 1
 
     kind = "RRR"
 
-    def __post_init__(self):
-        object.__setattr__(self, "l_PC", check_length(f"{self.P}{self.C}", self.l_PC))
-        object.__setattr__(self, "l_QC", check_length(f"{self.Q}{self.C}", self.l_QC))
-        object.__setattr__(self, "branch", check_branch(self.name, self.branch))
+    def __post_init__(self) -> None:
+        self._check("l_PC", f"{self.P}{self.C}")
+        self._check("l_QC", f"{self.Q}{self.C}")
+        self._check_branch()
 
     @property
-    def pairs(self):
+    def pairs(self) -> tuple[Pair, ...]:
         return (("R", "?", self.links[0], self.P), ("R", self.links[0], self.links[1], self.C),
                 ("R", "?", self.links[1], self.Q))
 
-    def inputs(self):
-        return {self.P, self.Q}, set()
+    def joints(self) -> Joints:
+        return Joints(known=(self.P, self.Q), found=(self.C,))
 
-    def outputs(self):
-        return (self.C,), self.links
-
-    def _heron(self, st: State):
+    def _heron(self, st: State) -> tuple[ComplexArray, ComplexArray, FloatArray, FloatArray]:
         P, Q = st.z[self.P], st.z[self.Q]
         D = Q - P
         d = np.abs(D)
@@ -80,7 +78,7 @@ class RRR(Group):
         prod = (l1 + l2 - d) * (d + l2 - l1) * (d + l1 - l2) * (d + l1 + l2)
         return P, D, d, prod
 
-    def margin(self, st: State) -> np.ndarray:
+    def margin(self, st: State) -> FloatArray:
         return self._heron(st)[3]
 
     def positions(self, st: State) -> None:
@@ -94,7 +92,7 @@ class RRR(Group):
         near = d < abs(l1 - l2) - tol
         zero = d <= tol
 
-        def why(i):
+        def why(i: int) -> str:
             if zero[i]:
                 return f"{self.P} and {self.Q} coincide, so the position of {self.C} is undefined"
             if far[i]:
@@ -106,7 +104,7 @@ class RRR(Group):
         self.fail(st, far | near | zero, why)
         self._place(st, P, D, d, prod)
 
-    def _place(self, st: State, P, D, d, prod) -> None:
+    def _place(self, st: State, P: ComplexArray, D: ComplexArray, d: FloatArray, prod: FloatArray) -> None:
         l1, l2 = self.l_PC, self.l_QC
         h = np.sqrt(np.maximum(prod, 0.0)) / (2.0 * d)
         a = (l1 * l1 - l2 * l2 + d * d) / (2.0 * d)
@@ -135,7 +133,7 @@ class RRR(Group):
         st.epsilon[self.links[0]], st.epsilon[self.links[1]] = e1, e2
         st.a[self.C] = st.a[self.P] - w1 * w1 * rP + 1j * e1 * rP
 
-    def records(self, st: State) -> tuple:
+    def records(self, st: State) -> tuple[Record, ...]:
         P, Q, C = self.P, self.Q, self.C
         c = st.z[C]
         uP, uQ = 1j * (c - st.z[P]) / self.l_PC, 1j * (c - st.z[Q]) / self.l_QC
