@@ -22,9 +22,6 @@ PACKAGE = Path(graphmethods.__file__).parent
 
 #: modules that still keep a table of their own (issue 16: to be emptied)
 NOT_YET_MIGRATED = {
-    "cli/forces.py",
-    "render/steps.py",
-    "scene/steps.py",
     "sheets/acceleration.py",
     "sheets/acceleration_worksheet.py",
     "sheets/calculus.py",
@@ -35,11 +32,8 @@ NOT_YET_MIGRATED = {
     "sheets/dynamics.py",
     "sheets/flywheel_design.py",
     "sheets/flywheel_hyperbola.py",
-    "sheets/force_analysis_sheet.py",
-    "sheets/forces.py",
     "sheets/kinematic_analysis_sheet.py",
     "sheets/motion.py",
-    "sheets/steps.py",
     "sheets/translating_graph.py",
     "sheets/wittenbauer.py",
     "sheets/worksheets.py",

@@ -28,29 +28,13 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Line, Page, Table, Text, Vector, in_language, notation as get_notation
+from graphmethods.scene import Line, Page, Table, Text, Vector, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import THIN
 from graphmethods.sheets.layout import TEXT_MM, Sheet, given_scale
 
 SMALL_MM = 2.8
 TABLE_MM = 3.2
-
-_W = {
-    "title": ("Force plans, position {k}", "Планы сил, положение {k}", "力多边形, 位置 {k}"),
-    "title_phi": ("Force plans, φ = {phi}°", "Планы сил, φ = {phi}°", "力多边形, φ = {phi}°"),
-    "group": ("group {g}", "группа {g}", "杆组 {g}"),
-    "crank": ("crank {g}", "кривошип {g}", "原动件 {g}"),
-    "pair": ("pair", "пара", "运动副"),
-    "plans": ("M_b from the force plans", "M_{ур} по планам сил", "M_b 力多边形法"),
-    "lever": ("M_b from Zhukovsky's lever", "M_{ур} по рычагу Жуковского", "M_b 茹可夫斯基杠杆法"),
-    "power": ("M_b from the power balance", "M_{ур} по балансу мощностей", "M_b 功率平衡法"),
-    "diff": ("difference", "расхождение", "相对误差"),
-    "weights": ("with weights (g = 9.81 m/s²)", "с учётом сил тяжести (g = 9,81 м/с²)", "计入重力 (g = 9.81 m/s²)"),
-    "legend": ("known forces solid, unknown dashed", "известные силы сплошные, искомые штриховые",
-               "已知力为实线, 待求力为虚线"),
-}
-
 
 def analysed(case, *, position: int | None, phi_deg: float | None, m: int, gravity: bool = False):
     """The force analysis a force figure draws and the index of its position in it: position
@@ -72,17 +56,9 @@ def percent_text(d: float, nt: Notation) -> str:
     return text.replace(".", nt.decimal)
 
 
-def _w(key: str, nt, **fill) -> str:
-    return in_language(_W[key], nt, **fill)
-
-
-#: the inertia and balancing subscripts as the books write them: Russian F_и, M_и, F_ур, M_ур; Chinese F_I, M_I
-_SUBSCRIPTS = {"ru": {"i": "и", "b": "ур"}, "zh": {"i": "I"}}
-
-
-def _markup(label: str, nt=None) -> str:
+def _markup(label: str, nt: Notation | str | None = None) -> str:
     """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}`` (ru ``F_{и2}``, zh ``F_{I2}``), ``F_b`` → ``F_{b}``
-    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``.
+    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``: the inertia and balancing subscripts as the books write them.
 
     >>> _markup("F_i2"), _markup("M_i3", "ru"), _markup("F_i2", "zh"), _markup("F_b", "ru")
     ('F_{i2}', 'M_{и3}', 'F_{I2}', 'F_{ур}')
@@ -93,13 +69,12 @@ def _markup(label: str, nt=None) -> str:
         return label
     sup = "^{" + m.group(2)[1:] + "}" if m.group(2) else ""
     sub = m.group(3)
-    code = None if nt is None else (nt if isinstance(nt, str) else nt.code)
-    words = _SUBSCRIPTS.get(code or "", {})
     if m.group(1) in ("F", "M") and not sup:
-        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()) and "i" in words:
-            sub = words["i"] + sub[1:]
-        elif sub == "b" and "b" in words:
-            sub = words["b"]
+        words = get_notation(nt)
+        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()):
+            sub = words.word("forces.sub_inertia") + sub[1:]
+        elif sub == "b":
+            sub = words.word("forces.sub_balance")
     return f"{m.group(1)}{sup}_{{{sub}}}"
 
 
@@ -166,23 +141,24 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
     """
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = _w("title", nt, k=i) if phi_deg is None else \
-        _w("title_phi", nt, phi=nt.number(float(phi_deg), sig=5))
+    head = nt.word("forces.plans_title", k=i) if phi_deg is None else \
+        nt.word("forces.plans_title_phi", phi=nt.number(float(phi_deg), sig=5))
     sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=Page("A3", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     # ------------------------------------------------------------------ the table beside the plans
-    rows = [(_w("pair", nt), nt.quantity("|R|", "N"))]
+    rows = [(nt.word("forces.pair"), nt.quantity("|R|", "N"))]
     for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
         rows.append((_markup(key), nt.number(float(abs(r.R[i])), sig=5)))
     Mb = float(fa.M_balance[i])
-    res_lines = [f"{_w('plans', nt)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
+    M_b = nt.sym("forces.M_b")
+    res_lines = [f"{nt.word('forces.Mb_plans', Mb=M_b)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
     for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
         d = float(fa.difference_percent(other)[i])
-        res_lines.append(f"{_w(key, nt)} = {nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}")
-        res_lines.append(f"    {_w('diff', nt)} {percent_text(d, nt)} %")
+        res_lines.append(f"{nt.word('forces.Mb_' + key, Mb=M_b)} = {nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}")
+        res_lines.append(f"    {nt.word('forces.diff')} {percent_text(d, nt)} %")
     if gravity:
-        res_lines.append(_w("weights", nt))
+        res_lines.append(nt.word("forces.weights"))
     probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0)
     from graphmethods.scene import markup
 
@@ -223,8 +199,8 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
         def at(z: complex) -> tuple[float, float]:
             return (cx + z.real / s_F.per_mm, cy - z.imag / s_F.per_mm)   # noqa: B023
 
-        cap = (_w("crank", nt, g=pl.links[0]) if pl.group.startswith("I ")
-               else _w("group", nt, g=pl.group))
+        cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
+               else nt.word("forces.group", g=pl.group))
         els.append(Text((left, area[1] - 4.0), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
         sides = [(lbl, F, True, None) for lbl, F in poly.known] + \
                 [(lbl, F, False, dirs) for lbl, dirs, F in poly.closing]
@@ -260,28 +236,8 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
     for t_i, line in enumerate(res_lines):
         els.append(Text((tx, ty + t_i * 5.6), line, size_mm=TEXT_MM, name=f"result-{t_i}"))
     scales = (s_F,)
-    els += sheet.captions(scales, legend=_w("legend", nt), reserve=True)
+    els += sheet.captions(scales, legend=nt.word("forces.plans_legend"), reserve=True)
     return sheet.scene(els, scales, name=name, notes=(s_F.note,) if s_F.note else ())
-
-
-_WL = {
-    "title": ("Zhukovsky's lever with every force, position {k}", "Рычаг Жуковского со всеми силами, положение {k}",
-              "茹可夫斯基杠杆 (全部力), 位置 {k}"),
-    "title_phi": ("Zhukovsky's lever with every force, φ = {phi}°", "Рычаг Жуковского со всеми силами, φ = {phi}°",
-                  "茹可夫斯基杠杆 (全部力), φ = {phi}°"),
-    "turned": ("velocity plan of analogues v/ω₁ turned 90° counterclockwise, pole p",
-               "план аналогов скоростей v/ω₁, повёрнутый на 90° против часовой, полюс p",
-               "速度类比图 v/ω₁ 逆时针转 90°, 极点 p"),
-    "couple": ("a moment M as two forces ±M/l at two points of its link, l apart",
-               "момент M заменён парой сил ±M/l в двух точках звена на расстоянии l",
-               "力矩 M 以其构件上相距 l 的两点的一对力 ±M/l 代替"),
-    "equation": ("Σ M_p = 0:  F_b = {Fb} N at a, ⊥ OA", "Σ M_p = 0:  F_{{ур}} = {Fb} Н в точке a, ⊥ OA",
-                 "Σ M_p = 0:  F_b = {Fb} N 作用于 a, ⊥ OA"),
-    "result": ("M_b = F_b·l_{{OA}} = {Mb} N·m", "M_{{ур}} = F_{{ур}}·l_{{OA}} = {Mb} Н·м", "M_b = F_b·l_{{OA}} = {Mb} N·m"),
-    "plans": ("from the force plans: {Mb} N·m (difference {d} %)", "по планам сил: {Mb} Н·м (расхождение {d} %)",
-              "力多边形法: {Mb} N·m (相对误差 {d} %)"),
-    "legend": ("forces at the images of their points", "силы в образах своих точек", "力作用于其点的影像"),
-}
 
 
 def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
@@ -306,8 +262,8 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
 
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = in_language(_WL["title"], nt, k=i) if phi_deg is None else \
-        in_language(_WL["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    head = nt.word("forces.lever_title", k=i) if phi_deg is None else \
+        nt.word("forces.lever_title_phi", phi=nt.number(float(phi_deg), sig=5))
     mo, lev = fa.motion, fa.lever
     lk = mo.linkage
     sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
@@ -316,10 +272,10 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
     Fb = complex(lev.F_balance[i])
     Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
     d = float(fa.difference_percent(lev.M_balance)[i])
-    texts = [in_language(_WL["turned"], nt), in_language(_WL["couple"], nt),
-             in_language(_WL["equation"], nt, Fb=nt.number(abs(Fb), sig=5)),
-             in_language(_WL["result"], nt, Mb=nt.number(Mb_l, sig=6)),
-             in_language(_WL["plans"], nt, Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
+    texts = [nt.word("forces.turned"), nt.word("forces.couple"),
+             nt.word("forces.lever_equation", Fb=nt.number(abs(Fb), sig=5)),
+             nt.word("forces.lever_result", Mb=nt.number(Mb_l, sig=6)),
+             nt.word("forces.lever_plans", Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
     right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
     split = x1 - right_w - 6.0
     area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)
@@ -367,22 +323,8 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
     for t_i, t in enumerate(texts):
         els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
     scales = (s_l, s_F)
-    els += sheet.captions(scales, legend=in_language(_WL["legend"], nt), reserve=True)
+    els += sheet.captions(scales, legend=nt.word("forces.lever_legend"), reserve=True)
     return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))
-
-
-_WS = {
-    "title": ("Forces on the linkage, position {k}", "Силы, действующие на механизм, положение {k}",
-              "机构上的作用力, 位置 {k}"),
-    "title_phi": ("Forces on the linkage, φ = {phi}°", "Силы, действующие на механизм, φ = {phi}°",
-                  "机构上的作用力, φ = {phi}°"),
-    "inertia": ("inertia forces F_i = −m·a_S at the centres of mass, moments M_i = −J_S·ε",
-                "силы инерции F_и = −m·a_S в центрах масс, моменты M_и = −J_S·ε",
-                "惯性力 F_I = −m·a_S 作用于质心, 惯性力矩 M_I = −J_S·ε"),
-    "balance": ("balancing moment M_b = {Mb} N·m", "уравновешивающий момент M_{{ур}} = {Mb} Н·м",
-                "平衡力矩 M_b = {Mb} N·m"),
-    "legend": ("moments: arcs in their sense", "моменты: дуги в их направлении", "力矩: 按其转向的圆弧"),
-}
 
 
 def force_scheme(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
@@ -406,15 +348,15 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
 
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = in_language(_WS["title"], nt, k=i) if phi_deg is None else \
-        in_language(_WS["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    head = nt.word("forces.scheme_title", k=i) if phi_deg is None else \
+        nt.word("forces.scheme_title_phi", phi=nt.number(float(phi_deg), sig=5))
     mo = fa.motion
     lk = mo.linkage
     sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=Page("A3", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
-    texts = [in_language(_WS["inertia"], nt),
-             in_language(_WS["balance"], nt, Mb=nt.number(float(fa.M_balance[i]), sig=6))]
+    texts = [nt.word("forces.inertia"),
+             nt.word("forces.scheme_balance", Mb=nt.number(float(fa.M_balance[i]), sig=6))]
     right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
     split = x1 - right_w - 6.0
     area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)
@@ -491,7 +433,7 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
     cr = lk.crank
     Mb = float(fa.M_balance[i])
     arc_b = RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
-                          label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b")
+                          label=nt.sym("forces.M_b"), size_mm=SMALL_MM, name="M_b")
     els.append(arc_b)
     occ.add_primitives(arc_b.primitives())        # the labels below keep off M_b's arc and its name
     for at_mm, text, nm in labels:
@@ -500,5 +442,5 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
     for t_i, t in enumerate(texts):
         els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
     scales = (s_l, s_F)
-    els += sheet.captions(scales, legend=in_language(_WS["legend"], nt), reserve=True)
+    els += sheet.captions(scales, legend=nt.word("forces.scheme_legend"), reserve=True)
     return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))
