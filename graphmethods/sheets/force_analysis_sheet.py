@@ -77,8 +77,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     case = _case(subject)
     nt = get_notation(notation)
     fa, i = SF.analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = nt.word("forces.sheet_title", k=i) if phi_deg is None else \
-        nt.word("forces.sheet_title_phi", phi=nt.number(float(phi_deg), sig=5))
+    head = SF.title_text(nt, "sheet", i, phi_deg)
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
