@@ -25,7 +25,7 @@ import math
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -211,7 +211,10 @@ def _fit(cloud: np.ndarray, area: Box, L: ForceFigureLayout, mu_l: Any, nt: Nota
     return s_l, at
 
 
-def _drawn(occ: Occupancy, el: Element) -> Element:
+AnElement = TypeVar("AnElement", bound=Element)
+
+
+def _drawn(occ: Occupancy, el: AnElement) -> AnElement:
     """``el``, its lines kept clear by the labels placed later."""
     occ.add_primitives(el.primitives())
     return el

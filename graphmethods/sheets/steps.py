@@ -35,13 +35,16 @@ True
 from __future__ import annotations
 
 import pathlib
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Page, Scale, Scene, markup, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.steps import LINE_PITCH, PROJECTOR_TEXT, BuildUp, DesignPage, Rule, enlarge, partition, wrap
 
 #: the caption band under the figure, mm, and the caption size, by page kind
@@ -285,8 +288,22 @@ def _leader_of(names):
 
 # ----------------------------------------------------------------------------- velocity plan
 
-def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", page="slide", m=None,
-                        omega_1=None, mu_v=None) -> BuildUp:
+def _draws(rule: Rule, names: set[str]) -> bool:
+    """Whether ``rule`` (a name, names or a predicate) takes any of ``names``."""
+    if callable(rule):
+        return any(rule(n) for n in names)
+    return bool(({rule} if isinstance(rule, str) else set(rule)) & names)
+
+
+def _kept(rules: Sequence[tuple[str, Rule]], figure: Scene) -> list[tuple[str, Rule]]:
+    """``rules`` without the steps that draw nothing of their own (an image that coincides with one drawn
+    before); the last step, which takes what no rule names, stays."""
+    drawn = {e.name for e in figure.elements}
+    return [r for r in rules[:-1] if _draws(r[1], drawn)] + [rules[-1]]
+
+
+def velocity_plan_steps(linkage: Any, position: int | None = None, *, notation: Any = "en", page: Any = "slide",
+                        m: int | None = None, omega_1: float | None = None, mu_v: Any = None) -> BuildUp:
     """The velocity plan of one position, step by step, from its construction records.
 
     Parameters
@@ -309,28 +326,33 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
-    lk = K._Linkage.of(linkage, m=m, omega_1=omega_1)
-    plans = lk.plans
+    plans = K._Linkage.of(linkage, m=m, omega_1=omega_1).plans
     k = K.fullest_position(plans) if position is None else position
     figure = K.velocity_plan(linkage, k, m=m, omega_1=omega_1, mu_v=mu_v, notation=nt, page=pg, title_block=tb)
-    k = int(k)
+    first: tuple[str, Rule] = (nt.word("steps.pole", mu=figure.scales()[0].caption(nt)),
+                               _leader_of(["title", "pole", "name-p", "scale-captions", "legend", "equation-0"]))
+    rules = _kept([first, *_velocity_rules(figure, plans, int(k), nt), (nt.word("steps.read"), lambda n: False)],
+                  figure)
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+def _velocity_rules(figure: Scene, plans: Any, k: int, nt: Notation) -> list[tuple[str, Rule]]:
+    """One step per construction record after the pole: pa ⊥ OA; for a point found by intersection its
+    two lines and their meeting point; an image by similarity or proportion; one that coincides."""
+    from graphmethods.sheets import kinematics as K
+
     mech = plans.positions.mechanism
-    s_v = figure.scales()[0]
     unit = K._unit(nt, "m/s")
-    images, vectors = K._plan_layout(plans)
+    _images, vectors = K._plan_layout(plans)
     eq_text = {e.name: _text_of(figure, e.name) for e in figure.elements if e.name.startswith("equation-")}
     label_of = {c.label: n for n, c in plans.constructions.items()}
 
-    def vec(start, end):
-        return f"vector-{start}{end}"
-
-    def value(symbol, start, end):
+    def value(symbol: str, start: str, end: str) -> str:
         v = float(np.hypot(*(np.asarray(plans.v(label_of[end])[k]) - (0 if start == "p" else
                                                                       np.asarray(plans.v(label_of[start])[k])))))
         return f"{symbol} = {nt.number(v, sig=4)} {unit}"
 
-    rules = [(nt.word("steps.pole", mu=s_v.caption(nt)), _leader_of(["title", "pole", "name-p", "scale-captions",
-                                                                  "legend", "equation-0"]))]
+    rules: list[tuple[str, Rule]] = []
     eq_i = 1
     for name, c in plans.constructions.items():
         x = c.label
@@ -339,48 +361,47 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
         eq = eq_text.get(f"equation-{eq_i}", "")
         if c.method in ("known", "intersection", "similarity", "proportion"):
             eq_i += 1
+        own = _leader_of([f"vector-p{x}", f"name-{x}", f"equation-{eq_i - 1}"])
         if c.method == "known":
             crank = next(ln for ln, (a, b) in mech.link_joints.items() if b == name)
-            rules.append((nt.word("steps.known", link=K._sub(crank), eq=eq),
-                          _leader_of([vec("p", x), f"name-{x}", f"equation-{eq_i - 1}"])))
+            rules.append((nt.word("steps.known", link=K._sub(crank), eq=eq), own))
         elif c.method == "intersection":
-            first = True
-            for ln in c.lines:
-                rel = "⊥" if ln.relation == "perpendicular" else "∥"
-                to = nt.word("steps.guide") if ln.to == "guide" else K._sub(ln.to)
-                if ln.through == "p":
-                    v = f"v_{{{name}}}"
-                else:
-                    y = label_of[ln.through]
-                    v = f"v_{{{K._rel_name(mech, name, y)}}}"
-                names = [f"line-{name}-{ln.through}", f"label-line-{name}-{ln.through}"]
-                if first:
-                    names.append(f"equation-{eq_i - 1}")
-                    first = False
-                rules.append((nt.word("steps.line", at=K._plan_markup(ln.through), v=v, rel=f"{rel} {to}"),
-                              _leader_of(names)))
+            rules += _velocity_line_rules(nt, mech, name, c.lines, label_of, f"equation-{eq_i - 1}")
             found = [pv for pv in vectors if pv.end == x]
             vals = ",  ".join(value(pv.symbol, pv.start, pv.end) for pv in found)
             rules.append((nt.word("steps.meet", x=K._plan_markup(x), values=vals),
-                          _leader_of([vec(pv.start, pv.end) for pv in found] + [f"name-{x}"])))
+                          _leader_of([f"vector-{pv.start}{pv.end}" for pv in found] + [f"name-{x}"])))
         elif c.method in ("similarity", "proportion"):
-            rules.append((nt.word(f"steps.{c.method}", x=K._plan_markup(x), eq=eq),
-                          _leader_of([vec("p", x), f"name-{x}", f"equation-{eq_i - 1}"])))
+            rules.append((nt.word(f"steps.{c.method}", x=K._plan_markup(x), eq=eq), own))
         else:  # "same": its image coincides with another one found before
             other = next((cc.label for nn, cc in plans.constructions.items() if cc.label == x and nn != name), x)
             rules.append((nt.word("steps.same", x=K._sub(name), y=K._plan_markup(other)),
-                          _leader_of([vec("p", x)])))
-    rules.append((nt.word("steps.read"), lambda n: False))
-    # drop steps with nothing of their own to draw (an image that coincides with one drawn before)
-    drawn = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in drawn)] + [rules[-1]]
-    return _build(figure, rules, box, cap_mm, rest=len(rules))
+                          _leader_of([f"vector-p{x}"])))
+    return rules
+
+
+def _velocity_line_rules(nt: Notation, mech: Any, name: str, lines: Any, label_of: dict[str, str],
+                         equation: str) -> list[tuple[str, Rule]]:
+    """The two lines whose meeting point is ``name``'s image: through a known image (relative velocity) or
+    through p, each ∥ or ⊥ a link or the guide; the vector equation goes with the first."""
+    from graphmethods.sheets import kinematics as K
+
+    rules: list[tuple[str, Rule]] = []
+    for n_ln, ln in enumerate(lines):
+        rel = "⊥" if ln.relation == "perpendicular" else "∥"
+        to = nt.word("steps.guide") if ln.to == "guide" else K._sub(ln.to)
+        v = f"v_{{{name}}}" if ln.through == "p" else f"v_{{{K._rel_name(mech, name, label_of[ln.through])}}}"
+        names = [f"line-{name}-{ln.through}", f"label-line-{name}-{ln.through}"] + ([equation] if n_ln == 0 else [])
+        rules.append((nt.word("steps.line", at=K._plan_markup(ln.through), v=v, rel=f"{rel} {to}"),
+                      _leader_of(names)))
+    return rules
 
 
 # ----------------------------------------------------------------------------- acceleration plan
 
-def acceleration_plan_steps(linkage, position: int | None = None, *, notation="en", page="slide", m=None,
-                            omega_1=None, epsilon_1: float = 0.0, mu_a=None) -> BuildUp:
+def acceleration_plan_steps(linkage: Any, position: int | None = None, *, notation: Any = "en",
+                            page: Any = "slide", m: int | None = None, omega_1: float | None = None,
+                            epsilon_1: float = 0.0, mu_a: Any = None) -> BuildUp:
     """The acceleration plan of one position, step by step, from its construction.
 
     The pole and μ_a; the crank pin's components; for every group each known component (the
@@ -407,7 +428,7 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
     Through n_{BA}, draw the direction of a^τ_{BA} ⊥ AB
     Through π, draw the direction of a_{B} ∥ the guide
     """
-    from graphmethods.sheets import acceleration as SA, kinematics as K
+    from graphmethods.sheets import acceleration as SA
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
@@ -418,89 +439,114 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
     figure = SA.acceleration_plan(linkage, k, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a, notation=nt,
                                   page=pg, title_block=tb)
     plan = plans[k]
-    s_a = figure.scales()[0]
-    unit = SA._unit(nt, "m/s²")
-    cr = pr.linkage.crank
-    eqs = SA._equations(plan, pr.linkage, nt)
+    tx = _AccelerationText(nt, SA._equations(plan, pr.linkage, nt), SA._unit(nt, "m/s²"))
+    rules: list[tuple[str, Rule]] = [(nt.word("steps.a_pole", mu=figure.scales()[0].caption(nt)), _leader_of(
+        ["title", "pole", "name-pi", "scale-captions", "legend", "equation-phi"]))]
+    for j, st_ in enumerate(plan.steps):
+        if st_.method == "crank":
+            rules += _acceleration_crank_rules(tx, j, st_, pr.linkage.crank)
+        elif st_.method != "intersection":
+            c = st_.components[0]
+            x = SA.image(st_.label)
+            cap = (nt.word("steps.similarity", x=x, eq=tx.eqs[j][0]) if st_.method == "similarity"
+                   else nt.word("steps.same", x=x, y=SA.image(plan.labels[st_.on[0]]) if st_.on else ""))
+            rules.append((cap, _leader_of([SA._elname(c), _a_name(st_.label), f"equation-{j}"])))
+        else:
+            rules += _acceleration_intersection_rules(tx, j, st_)
+    rules = _kept(rules + [(nt.word("steps.a_read"), lambda n: False)], figure)
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
 
-    def vec(c) -> str:
-        return SA._elname(c)
 
-    def name(label: str) -> str:
-        return f"name-{SA._id(label)}"
+def _a_name(label: str) -> str:
+    """The element name of an acceleration image's letter."""
+    from graphmethods.sheets import acceleration as SA
 
-    def val(c) -> str:
-        return f"{SA.symbol(c.symbol)} = {nt.number(c.magnitude, sig=4)} {unit}"
+    return f"name-{SA._id(label)}"
 
-    def first_value(j: int, c) -> str:
+
+@dataclass(frozen=True)
+class _AccelerationText:
+    """How the acceleration steps write a component: the notation, each step's (equation, values) line as
+    the figure writes them, and the unit."""
+
+    nt: Notation
+    eqs: Any
+    unit: str
+
+    def value(self, c: Any) -> str:
+        """``a^n_{BA} = 12.5 m/s²``."""
+        from graphmethods.sheets import acceleration as SA
+
+        return f"{SA.symbol(c.symbol)} = {self.nt.number(c.magnitude, sig=4)} {self.unit}"
+
+    def first_value(self, j: int, c: Any) -> str:
         """The part of the values line of step j that gives component c."""
-        for part in eqs[j][1].split(";  "):
+        from graphmethods.sheets import acceleration as SA
+
+        for part in self.eqs[j][1].split(";  "):
             if part.startswith(SA.symbol(c.symbol) + " ="):
                 return part
-        return val(c)
+        return self.value(c)
 
-    rules: list = [(nt.word("steps.a_pole", mu=s_a.caption(nt)),
-                    _leader_of(["title", "pole", "name-pi", "scale-captions", "legend", "equation-phi"]))]
-    for j, st_ in enumerate(plan.steps):
-        x = st_.label
-        eq_names = [f"equation-{j}", f"values-{j}"]
-        if st_.method == "crank":
-            link = f"{cr.pin}{cr.centre}"
-            if len(st_.components) == 1:
-                c = st_.components[0]
-                rules.append((nt.word("steps.a_crank", link=K._sub(link), O=K._sub(cr.centre), eq=first_value(j, c)),
-                              _leader_of([vec(c), name(x)] + eq_names)))
-            else:
-                cn, ct, ca = st_.components
-                rules.append((nt.word("steps.a_crank_n", a=SA.symbol(cn.symbol), link=K._sub(link), O=K._sub(cr.centre),
-                                 eq=first_value(j, cn)), _leader_of([vec(cn), name(cn.end)] + eq_names)))
-                rules.append((nt.word("steps.a_crank_t", n=SA.image(cn.end), a=SA.symbol(ct.symbol),
-                                 link=K._sub(cr.centre + cr.pin), eq=first_value(j, ct), A=cr.pin),
-                              _leader_of([vec(ct), vec(ca), name(x), f"values-{j}-1"])))
-            continue
-        if st_.method != "intersection":
-            c = st_.components[0]
-            word = "similarity" if st_.method == "similarity" else "same"
-            cap = (nt.word("steps.similarity", x=SA.image(x), eq=eqs[j][0]) if word == "similarity"
-                   else nt.word("steps.same", x=SA.image(x), y=SA.image(plan.labels[st_.on[0]]) if st_.on else ""))
-            rules.append((cap, _leader_of([vec(c), name(x), f"equation-{j}"])))
-            continue
-        first = True
-        for i, c in enumerate(c for c in st_.components if c.known):
-            names = [vec(c), name(c.end)] + (eq_names if first else [f"values-{j}-{i}"])   # its own values line
-            first = False
-            if c.kind == "normal":
-                centre = c.symbol.split("_", 1)[1][len(st_.point):]
-                rules.append((nt.word("steps.a_normal_pi" if c.start == "π" else "steps.a_normal", at=SA.image(c.start),
-                                 a=SA.symbol(c.symbol),
-                                 link=K._sub(centre + st_.point), C=K._sub(centre), eq=first_value(j, c)),
-                              _leader_of(names)))
-            elif c.kind == "coriolis":
-                rel = c.symbol.split("_", 1)[1]
-                rules.append((nt.word("steps.a_coriolis", at=SA.image(c.start), a=SA.symbol(c.symbol),
-                                 dir=nt.word("steps.a_dir", rel=rel, n=c.link), eq=first_value(j, c)), _leader_of(names)))
-            else:                                           # the guide's point under the slider
-                rules.append((nt.word("steps.a_guide", x=SA.image(c.end), g=c.link or "?", C=K._sub(st_.point)),
-                              _leader_of(names)))
-        for ln in st_.lines:
-            along = next((c for c in st_.components if not c.known and c.start == ln.through and c.kind != "absolute"),
-                         None)
-            if along is None:
-                along = next(c for c in st_.components if c.kind == "absolute")
-            relation = ln.label.replace("⟂", "⊥").split(" ", 1)
-            to = nt.word("steps.guide") if relation[1] in ("guide", "slot") else K._sub(relation[1])
-            lname = f"line-{st_.point}-{SA._id(ln.through)}"
-            names = [lname, f"label-{lname}"] + (eq_names if first else [])
-            first = False
-            rules.append((nt.word("steps.a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol), rel=f"{relation[0]} {to}"),
+
+def _acceleration_crank_rules(tx: _AccelerationText, j: int, st_: Any, cr: Any) -> list[tuple[str, Rule]]:
+    """The crank pin's acceleration: πa ∥ OA alone (ε_1 = 0), or its normal and tangential parts."""
+    from graphmethods.sheets import acceleration as SA, kinematics as K
+
+    nt = tx.nt
+    eq_names = [f"equation-{j}", f"values-{j}"]
+    link = f"{cr.pin}{cr.centre}"
+    if len(st_.components) == 1:
+        c = st_.components[0]
+        return [(nt.word("steps.a_crank", link=K._sub(link), O=K._sub(cr.centre), eq=tx.first_value(j, c)),
+                 _leader_of([SA._elname(c), _a_name(st_.label)] + eq_names))]
+    cn, ct, ca = st_.components
+    return [(nt.word("steps.a_crank_n", a=SA.symbol(cn.symbol), link=K._sub(link), O=K._sub(cr.centre),
+                     eq=tx.first_value(j, cn)), _leader_of([SA._elname(cn), _a_name(cn.end)] + eq_names)),
+            (nt.word("steps.a_crank_t", n=SA.image(cn.end), a=SA.symbol(ct.symbol), link=K._sub(cr.centre + cr.pin),
+                     eq=tx.first_value(j, ct), A=cr.pin),
+             _leader_of([SA._elname(ct), SA._elname(ca), _a_name(st_.label), f"values-{j}-1"]))]
+
+
+def _acceleration_intersection_rules(tx: _AccelerationText, j: int, st_: Any) -> list[tuple[str, Rule]]:
+    """A point found by intersection: each known component (normal, Coriolis, the guide's point), each
+    dashed direction of an unknown one, then the meeting point; the equation goes with the first."""
+    from graphmethods.sheets import acceleration as SA, kinematics as K
+
+    nt = tx.nt
+    eq_names = [f"equation-{j}", f"values-{j}"]
+    rules: list[tuple[str, Rule]] = []
+    for i, c in enumerate(c for c in st_.components if c.known):
+        names = [SA._elname(c), _a_name(c.end)] + (eq_names if not rules else [f"values-{j}-{i}"])  # its own values
+        if c.kind == "normal":
+            centre = c.symbol.split("_", 1)[1][len(st_.point):]
+            rules.append((nt.word("steps.a_normal_pi" if c.start == "π" else "steps.a_normal", at=SA.image(c.start),
+                                  a=SA.symbol(c.symbol), link=K._sub(centre + st_.point), C=K._sub(centre),
+                                  eq=tx.first_value(j, c)), _leader_of(names)))
+        elif c.kind == "coriolis":
+            rel = c.symbol.split("_", 1)[1]
+            rules.append((nt.word("steps.a_coriolis", at=SA.image(c.start), a=SA.symbol(c.symbol),
+                                  dir=nt.word("steps.a_dir", rel=rel, n=c.link), eq=tx.first_value(j, c)),
                           _leader_of(names)))
-        found = [c for c in st_.components if not c.known]
-        vals = ",  ".join(val(c) for c in found)
-        rules.append((nt.word("steps.a_meet", x=SA.image(x), values=vals), _leader_of([vec(c) for c in found] + [name(x)])))
-    rules.append((nt.word("steps.a_read"), lambda n: False))
-    names_ = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in names_)] + [rules[-1]]
-    return _build(figure, rules, box, cap_mm, rest=len(rules))
+        else:                                           # the guide's point under the slider
+            rules.append((nt.word("steps.a_guide", x=SA.image(c.end), g=c.link or "?", C=K._sub(st_.point)),
+                          _leader_of(names)))
+    for ln in st_.lines:
+        along = next((c for c in st_.components if not c.known and c.start == ln.through and c.kind != "absolute"),
+                     None)
+        if along is None:
+            along = next(c for c in st_.components if c.kind == "absolute")
+        relation = ln.label.replace("⟂", "⊥").split(" ", 1)
+        to = nt.word("steps.guide") if relation[1] in ("guide", "slot") else K._sub(relation[1])
+        lname = f"line-{st_.point}-{SA._id(ln.through)}"
+        names = [lname, f"label-{lname}"] + (eq_names if not rules else [])
+        rules.append((nt.word("steps.a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol),
+                              rel=f"{relation[0]} {to}"), _leader_of(names)))
+    found = [c for c in st_.components if not c.known]
+    vals = ",  ".join(tx.value(c) for c in found)
+    rules.append((nt.word("steps.a_meet", x=SA.image(st_.label), values=vals),
+                  _leader_of([SA._elname(c) for c in found] + [_a_name(st_.label)])))
+    return rules
 
 
 # ----------------------------------------------------------------------------- energy indicator
@@ -785,7 +831,7 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
                      dl=SF.percent_text(float(fa.difference_percent(fa.M_balance_lever)[i]), nt),
                      dp=SF.percent_text(float(fa.difference_percent(fa.M_balance_power)[i]), nt)),
                   lambda n: n == "table" or n.startswith("result-")))
-    rules = [r for r in rules if any(r[1](n) if callable(r[1]) else n in r[1] for n in names)]
+    rules = [r for r in rules if _draws(r[1], names)]
     return _build(figure, rules, box, cap_mm, rest=None)
 
 
@@ -897,9 +943,8 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
          or n in ("dimension-H", "summary")),
         (nt.word("steps.thick"), lambda n: False),
     ]
-    names = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in names)] + [rules[-1]]
-    return _build(figure, rules, box, cap_mm, rest=len(rules))
+    kept = _kept(rules, figure)
+    return _build(figure, kept, box, cap_mm, rest=len(kept))
 
 
 # ----------------------------------------------------------------------------- by name
