@@ -322,7 +322,8 @@ def html_page(bu: BuildUp) -> str:
 
 # ----------------------------------------------------------------------------- files
 
-def outputs(bu: BuildUp, fmt_: str, path: str | os.PathLike[str], *, seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
+def outputs(bu: BuildUp, fmt_: str, path: str | os.PathLike[str], *,
+            seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
     """The files a format writes, with their bytes: one file, or for ``svg`` one frame per step named
     ``STEM-01.svg``, ``STEM-02.svg``, … beside ``path``; ``seconds`` per step of an animated SVG."""
     bu = _check(bu)

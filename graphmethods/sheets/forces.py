@@ -246,7 +246,8 @@ def _plans_results(fa: Any, i: int, nt: Notation, gravity: bool) -> tuple[list[t
     res_lines = [f"{nt.word('forces.Mb_plans', Mb=M_b)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
     for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
         d = float(fa.difference_percent(other)[i])
-        res_lines.append(f"{nt.word('forces.Mb_' + key, Mb=M_b)} = {nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}")
+        value = f"{nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}"
+        res_lines.append(f"{nt.word('forces.Mb_' + key, Mb=M_b)} = {value}")
         res_lines.append(f"    {nt.word('forces.diff')} {percent_text(d, nt)} %")
     if gravity:
         res_lines.append(nt.word("forces.weights"))

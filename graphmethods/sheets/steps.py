@@ -280,6 +280,11 @@ def _text_of(figure, name: str) -> str:
     return next((str(getattr(e, "text", "")) for e in figure.elements if e.name == name), "")
 
 
+def _starts(*prefixes: str) -> Callable[[str], bool]:
+    """Rule: the elements whose names begin with one of ``prefixes``."""
+    return lambda n: n.startswith(prefixes)
+
+
 def _leader_of(names):
     """Rule: the element named one of ``names``, or a leader line drawn to it (``leader-NAME``)."""
     wanted = set(names)
@@ -574,7 +579,8 @@ def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, wor
     for i, A in enumerate(ew.work):
         a, b = lab[i], lab[i + 1]
         cap = nt.word("steps.interval", ab=f"{a}{b}", A=nt.sym("A"), val=f"{nt.number(float(A))} {u}",
-                 mm=nt.number(abs(s_E.to_mm(float(A))), sig=4), dir=nt.word("steps.up" if A > 0 else "steps.down"), a=a, b=b)
+                      mm=nt.number(abs(s_E.to_mm(float(A))), sig=4),
+                      dir=nt.word("steps.up" if A > 0 else "steps.down"), a=a, b=b)
         rules.append((cap, [f"vector-{a}{b}", f"value-{i + 1}", f"name-{b}", f"level-{b}"]))
     res = float(ew.residual)
     closed = abs(res) <= 1e-9 * (float(np.abs(ew.work).sum()) or 1.0)
@@ -609,9 +615,6 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     res = data.result(s_J.per_mm, s_T.per_mm)
     J, T = W.sym(nt, "J_e"), W.sym(nt, "dT")
 
-    def starts(*prefixes):
-        return lambda n: n.startswith(prefixes)
-
     ray = {}
     for key in ("max", "min"):
         idx = res.index_omega_max if key == "max" else res.index_omega_min
@@ -619,12 +622,12 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
         tan = res.tan_psi_max if key == "max" else res.tan_psi_min
         ray[key] = (nt.word(f"steps.ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4), w=W.sym(nt, f"omega_{key}"),
                        i=", ".join(str(int(i)) for i in idx)),
-                    starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
+                    _starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
                            f"label-omega-{key}", f"leader-omega-{key}"))
     rules = [
         (nt.word("steps.axes_JT", J=J, T=T, muJ=s_J.caption(nt), muT=s_T.caption(nt)),
          ["title", "axis-T", "axis-J", "scale-captions"]),
-        (nt.word("steps.points", m=res.m - 1, J=J, T=T), starts("vertex-", "pos-", "leader-pos-")),
+        (nt.word("steps.points", m=res.m - 1, J=J, T=T), _starts("vertex-", "pos-", "leader-pos-")),
         (nt.word("steps.curve", J=J, T=T), ["curve"]),
         ray["max"],
         ray["min"],
@@ -655,21 +658,19 @@ def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) 
     figure = C.kinematic_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     s_, v_, a_ = C.sym(nt, "s"), C.sym(nt, "v"), C.sym(nt, "a")
 
-    def starts(*prefixes):
-        return lambda n: n.startswith(prefixes)
-
     rules = [(nt.word("steps.s_curve", s=s_, m=m, mus=_text_of(figure, "formula-s-1")),
-              starts("title", "axis-phi-s", "axis-s", "ordinate-s-", "dot-s-", "curve-s", "formula-s-",
-                     "scale-captions"))]
+              _starts("title", "axis-phi-s", "axis-s", "ordinate-s-", "dot-s-", "curve-s", "formula-s-",
+                      "scale-captions"))]
     for f, g, pole, H, band in ((s_, v_, "pole-v-", "H1", "v"), (v_, a_, "pole-a-", "H2", "a")):
         rules += [
-            (nt.word("steps.chords", f=f), starts(f"chord-{'s' if band == 'v' else 'v'}-")),
-            (nt.word("steps.pole_d", g=g, P=_text_of(figure, f"{pole}label"), H=_text_of(figure, f"dimension-{H}-text")),
-             starts(f"axis-phi-{band}", f"axis-{band}", pole, f"dimension-{H}")),
-            (nt.word("steps.rays_d", P=_text_of(figure, f"{pole}label"), f=f), starts(f"ray-{band}-")),
-            (nt.word("steps.project_d"), starts(f"projection-{band}-", f"dot-{band}-")),
-            (nt.word("steps.curve_d", g=g, mu=_text_of(figure, f"formula-{band}-1")), starts(f"curve-{band}",
-                                                                                       f"formula-{band}-")),
+            (nt.word("steps.chords", f=f), _starts(f"chord-{'s' if band == 'v' else 'v'}-")),
+            (nt.word("steps.pole_d", g=g, P=_text_of(figure, f"{pole}label"),
+                     H=_text_of(figure, f"dimension-{H}-text")),
+             _starts(f"axis-phi-{band}", f"axis-{band}", pole, f"dimension-{H}")),
+            (nt.word("steps.rays_d", P=_text_of(figure, f"{pole}label"), f=f), _starts(f"ray-{band}-")),
+            (nt.word("steps.project_d"), _starts(f"projection-{band}-", f"dot-{band}-")),
+            (nt.word("steps.curve_d", g=g, mu=_text_of(figure, f"formula-{band}-1")),
+             _starts(f"curve-{band}", f"formula-{band}-")),
         ]
     rules.append((nt.word("steps.compare_d"), lambda n: False))
     return _build(figure, rules, box, cap_mm, rest=len(rules))
@@ -691,18 +692,15 @@ def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> B
     figure = C.work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     P = _text_of(figure, "pole-label")
 
-    def starts(*prefixes):
-        return lambda n: n.startswith(prefixes)
-
     rules = [
         (nt.word("steps.moments", Md=nt.sym("M_d"), Mr=nt.sym("M_r"), mu=_text_of(figure, "formula-M-1")),
-         starts("title", "axis-phi-M", "axis-M", "curve-M_", "name-M-", "formula-M-", "scale-captions")),
-        (nt.word("steps.means", Mr=nt.sym("M_r")), starts("mean-")),
-        (nt.word("steps.pole_i", P=P, H=_text_of(figure, "dimension-H-text")), starts("pole-", "dimension-H", "ray-",
+         _starts("title", "axis-phi-M", "axis-M", "curve-M_", "name-M-", "formula-M-", "scale-captions")),
+        (nt.word("steps.means", Mr=nt.sym("M_r")), _starts("mean-")),
+        (nt.word("steps.pole_i", P=P, H=_text_of(figure, "dimension-H-text")), _starts("pole-", "dimension-H", "ray-",
                                                                                "projection-")),
         (nt.word("steps.chords_i", Ad=C.sym(nt, "A_d"), Ar=C.sym(nt, "A_r"), mu=_text_of(figure, "formula-A-1")),
-         starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
-        (nt.word("steps.dE", eq=_text_of(figure, "formula-dE-1")), starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
+         _starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
+        (nt.word("steps.dE", eq=_text_of(figure, "formula-dE-1")), _starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
                                                                     "curve-dE", "dot-dE-", "formula-dE-")),
         (nt.word("steps.accuracy"), lambda n: False),
     ]
@@ -813,7 +811,8 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
                    for _, d, _ in closing]
             rules.append((nt.word("steps.f_dirs", X=labels[0], relX=rel[0], Y=labels[1], relY=rel[1]),
                           lambda n, j=j: n.startswith(f"direction-{j}-")))
-            rules.append((nt.word("steps.f_meet", X=labels[0], x=size(closing[0][2]), Y=labels[1], y=size(closing[1][2])),
+            rules.append((nt.word("steps.f_meet", X=labels[0], x=size(closing[0][2]), Y=labels[1],
+                                  y=size(closing[1][2])),
                           lambda n, j=j: n.startswith(f"closing-{j}-")))
             mine = [r for r in fa.reactions.values() if (r.by in pl.links or r.on in pl.links)
                     and not ({r.by, r.on} & solved)]
@@ -888,7 +887,8 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
                       lambda n, w=frozenset(wanted): n in w))
         j += len(idx)
     Fb, Mb = nt.sym("forces.F_b"), nt.sym("forces.M_b")
-    rules.append((nt.word("steps.z_balance", Fb=Fb, x=f"{nt.number(float(abs(lev.F_balance[i])), sig=5)} {nt.unit('N')}"),
+    F_b = f"{nt.number(float(abs(lev.F_balance[i])), sig=5)} {nt.unit('N')}"
+    rules.append((nt.word("steps.z_balance", Fb=Fb, x=F_b),
                   lambda n: n in ("F_b", f"label-force-{len(items)}", "text-2")
                   or (n == "text-1" and not couple_said)))
     rules.append((nt.word("steps.z_result", Mb=Mb, Fb=Fb, x=f"{nt.number(float(lev.M_balance[i]), sig=6)} {nm_}",
@@ -931,7 +931,8 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
 
     rules = [
         (nt.word("steps.frame", mu=mu_l.caption(nt)),
-         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-", "name-O"))),
+         lambda n: n in ("title", "crank-circle", "scale-captions", "legend")
+         or n.startswith(("pivot-", "guide-", "name-O"))),
         (nt.word("steps.crank_pos", m=m, c=K._sub(crank)),
          lambda n: pos_of([crank])(n) or mark_of([pin])(n) or (n.startswith(f"number-{pin}-")
                                                                   and not n.endswith("-extreme"))),
