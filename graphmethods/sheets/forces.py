@@ -21,6 +21,7 @@ their differences in per cent.
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
 from collections.abc import Callable, Sequence
@@ -137,7 +138,8 @@ class ForceFigureLayout:
     min_mm: float = 0.3             # a shorter vector is not drawn
     largest_force_mm: float = 30.0  # the largest force's length (lever, scheme)
     margin_mm: float = 34.0         # room kept round the linkage (the lever) for its forces
-    plan_gap_mm: float = 8.0        # between two force plans
+    plan_gap_mm: float = 8.0        # between two force plans side by side
+    row_gap_mm: float = 10.0        # between two rows of force plans (the lower row's captions)
     overhang_mm: float = 6.0        # a direction line beyond the ends of its side
     caption_rise_mm: float = 4.0    # a plan's caption above the drawing area
     row_mm: float = 6.0             # table rows
@@ -181,6 +183,38 @@ def _split(sheet: Sheet, column_mm: float, L: ForceFigureLayout) -> tuple[float,
     x0, _, x1, _ = sheet.box
     split = x1 - column_mm - L.column_gap_mm
     return split, (x0 + L.left_mm, sheet.top + L.top_mm, split - L.column_gap_mm, sheet.caption_y - L.bottom_mm)
+
+
+def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
+              fit: Callable[[Box], tuple[Scale, ToMm]]) -> tuple[Box, list[Element], Scale, ToMm]:
+    """The drawing area, the texts, the scale and the map of a figure drawn by ``fit``: the texts in a column
+    beside the drawing (right) or in lines above it, whichever draws it larger (beside it on a tie: a
+    tall region, such as the A1 sheet's left column, gets its texts above).
+
+    Raises
+    ------
+    InputError
+        When the drawing fits neither (a given scale too small): the error of the column beside it.
+    """
+    split, beside = _split(sheet, max(markup.text_width_mm(t, TEXT_MM) for t in texts), L)
+    x0, _, x1, _ = sheet.box
+    above = (x0 + L.left_mm, sheet.top + 2.0 + len(texts) * L.text_pitch_mm + L.reach_top_mm, x1 - L.left_mm,
+             sheet.caption_y - L.bottom_mm)
+    options: list[tuple[float, int, Box, tuple[float, float], Scale, ToMm]] = []
+    error: InputError | None = None
+    for n_o, (area, corner) in enumerate(((beside, (split + 2.0, sheet.top + 2.0)),
+                                          (above, (x0 + L.left_mm, sheet.top + 2.0)))):
+        try:
+            s_l, at = fit(area)
+        except InputError as e:
+            error = error or e
+            continue
+        options.append((s_l.per_mm, n_o, area, corner, s_l, at))
+    if not options:
+        assert error is not None
+        raise error
+    _, _, area, (tx, ty), s_l, at = min(options, key=lambda o: (o[0], o[1]))
+    return area, _column(texts, tx, ty, L), s_l, at
 
 
 def _column(texts: Sequence[str], x: float, y: float, L: ForceFigureLayout, prefix: str = "text") -> list[Element]:
@@ -273,6 +307,45 @@ def _plans_scale(paths: Sequence[np.ndarray], pw: float, ph: float, mu_F: Any, n
     return given_scale(mu_F, "μ_F", nt.unit("N"), biggest, pw - 2.0, what="the force plans")
 
 
+def _grid(paths: Sequence[np.ndarray], area: Box, L: ForceFigureLayout, mu_F: Any,
+          nt: Notation) -> tuple[int, float, float, Scale]:
+    """How the force plans share ``area``: the number of columns (the rows follow), each cell's width and
+    height, mm, and the one μ_F, chosen to draw them largest (one row when that is as large). Long flat
+    polygons, such as a slider-crank's, go one under the other rather than side by side.
+
+    Raises
+    ------
+    InputError
+        When no arrangement fits (every force zero, a given μ_F too small): one row's error.
+
+    Examples
+    --------
+    >>> flat = [np.array([0, 100 + 1j, 200]), np.array([0, 150 + 0.5j])]
+    >>> cols, pw, ph, s_F = _grid(flat, (0.0, 0.0, 208.0, 100.0), PLANS_LAYOUT, None, get_notation("en"))
+    >>> cols, pw, ph, s_F.per_mm
+    (1, 208.0, 45.0, 1.0)
+    """
+    n_p = len(paths)
+    best: tuple[float, int, float, float, Scale] | None = None
+    error: InputError | None = None
+    for cols in range(n_p, 0, -1):
+        rows = -(-n_p // cols)
+        pw = (area[2] - area[0] - L.plan_gap_mm * (cols - 1)) / cols
+        ph = (area[3] - area[1] - L.row_gap_mm * (rows - 1)) / rows
+        if pw <= 2.0 or ph <= 0:
+            continue
+        try:
+            s_F = _plans_scale(paths, pw, ph, mu_F, nt)
+        except InputError as e:
+            error = error or e
+            continue
+        if best is None or s_F.per_mm < best[0] * (1 - 1e-9):
+            best = (s_F.per_mm, cols, pw, ph, s_F)
+    if best is None:
+        raise error or InputError("the force plans have no room on this page; give a larger page")
+    return best[1], best[2], best[3], best[4]
+
+
 def _cell(pts: np.ndarray, cell: Box, s_F: Scale) -> ToMm:
     """The map from the polygon's plane (N) to the page (mm) centring it in ``cell`` (left, top, width, height)."""
     left, top, pw, ph = cell
@@ -351,18 +424,16 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
     probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=L.row_mm)
     split, area = _split(sheet, max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in res_lines]), L)
     paths = [_polygon(pl.polygons[0], i) for pl in fa.plans]
-    n_p = len(paths)
-    pw = (area[2] - area[0] - L.plan_gap_mm * (n_p - 1)) / n_p
-    ph = area[3] - area[1]
-    s_F = _plans_scale(paths, pw, ph, mu_F, nt)
+    cols, pw, ph, s_F = _grid(paths, area, L, mu_F, nt)
     els: list[Element] = [sheet.header()]
     labels: list[LabelSpec] = []
     for j, (pl, pts) in enumerate(zip(fa.plans, paths)):
-        left = area[0] + j * (pw + L.plan_gap_mm)
+        left = area[0] + (j % cols) * (pw + L.plan_gap_mm)
+        top = area[1] + (j // cols) * (ph + L.row_gap_mm)
         cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
                else nt.word("forces.group", g=pl.group))
-        els.append(Text((left, area[1] - L.caption_rise_mm), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
-        drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, area[1], pw, ph), s_F), nt, sheet.occ, L)
+        els.append(Text((left, top - L.caption_rise_mm), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
+        drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, top, pw, ph), s_F), nt, sheet.occ, L)
         els += drawn
         labels += wanted
     els += _labels(sheet.occ, labels, L.within(area))
@@ -413,14 +484,14 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     mo, lev = fa.motion, fa.lever
     sheet = _sheet(case, nt, "lever", i, phi_deg, page=page, title=title, title_block=title_block)
     texts = _lever_texts(fa, i, nt)
-    split, area = _split(sheet, max(markup.text_width_mm(t, TEXT_MM) for t in texts), L)
     fixed = set(mo.linkage.ground)
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
     items.append(("F_b", complex(lev.image_pin[i]), complex(lev.F_balance[i])))
     s_F = given_scale(mu_F, "μ_F", nt.unit("N"), max(abs(F) for _, _, F in items), L.largest_force_mm,
                       what="the largest force on the lever")
-    s_l, at = _fit(np.array([0j] + list(images.values()) + [z for _, z, _ in items]), area, L, mu_l, nt, "the lever")
+    cloud = np.array([0j] + list(images.values()) + [z for _, z, _ in items])
+    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the lever"))
     occ = sheet.occ
     pole = at(0j)
     els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
@@ -435,7 +506,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
     els += _labels(occ, [(pole, "p", "label-pole"), *names, *vec_labels], L.within(area))
-    els += _column(texts, split + 2.0, sheet.top + 2.0, L)
+    els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.lever_legend"), name)
 
 
@@ -487,10 +558,54 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
     return els
 
 
-def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_F: Scale, nt: Notation,
-             occ: Occupancy, L: ForceFigureLayout) -> tuple[list[Element], list[LabelSpec]]:
-    """Each applied force drawn to μ_F from its point, each moment as an arc in its sense; their labels."""
+def _directions(w: complex, z: dict[str, complex], segs: Sequence[tuple[str, str]]) -> list[float]:
+    """The directions (degrees, counterclockwise from +x) in which the links leave the point ``w`` (m): toward
+    both ends of a link through it, toward the other end of a link ending at it.
+
+    >>> _directions(0j, {"A": -1 + 0j, "B": 1 + 0j, "C": 1j}, [("A", "B"), ("C", "A")])
+    [180.0, 0.0]
+    """
+    out: list[float] = []
+    for a, b in segs:
+        za, zb = z[a], z[b]
+        d = zb - za
+        if abs(d) == 0:
+            continue
+        t = ((w - za) * d.conjugate()).real / abs(d) ** 2
+        if -1e-9 <= t <= 1 + 1e-9 and abs(w - (za + t * d)) <= 1e-9 * abs(d):     # w on the link
+            out += [math.degrees(cmath.phase(e - w)) for e in (za, zb) if abs(e - w) > 1e-9 * abs(d)]
+    return out
+
+
+def clear_direction(avoid: Sequence[float]) -> float:
+    """The direction (degrees, a multiple of 15°, straight up first) farthest from every direction of ``avoid``:
+    where an arc about a joint keeps off its links and forces.
+
+    >>> clear_direction([0.0, 180.0]), clear_direction([90.0]), clear_direction([])
+    (90.0, 270.0, 90.0)
+    """
+    best, best_gap = 90.0, -1.0
+    for mid in range(90, 450, 15):
+        gap = min((abs((mid - a + 180.0) % 360.0 - 180.0) for a in avoid), default=180.0)
+        if gap > best_gap + 1e-9:
+            best, best_gap = float(mid % 360), gap
+    return best
+
+
+def _moment_arc(centre: tuple[float, float], radius_mm: float, sweep_deg: float, avoid: Sequence[float],
+                **kw: Any) -> Element:
+    """A moment's arc of ``sweep_deg`` (signed: its sense) about ``centre``, its middle away from ``avoid``."""
     from graphmethods.sheets.kinematic_symbols import RotationArrow
+
+    return RotationArrow(centre, radius_mm=radius_mm, start_deg=clear_direction(avoid) - sweep_deg / 2,
+                         sweep_deg=sweep_deg, **kw)
+
+
+def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_F: Scale, nt: Notation,
+             occ: Occupancy, L: ForceFigureLayout,
+             around: Callable[[complex], list[float]]) -> tuple[list[Element], list[LabelSpec]]:
+    """Each applied force drawn to μ_F from its point; each moment as an arc in its sense, on the side of its
+    point away from the links there (``around``) and its force; their labels."""
 
     els: list[Element] = []
     labels: list[LabelSpec] = []
@@ -504,9 +619,12 @@ def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_
             labels.append((tip, _markup(label, nt), f"label-{label}"))
         if M != 0.0:
             mlabel = "M" + label[1:] if label.startswith("F") else label
-            els.append(_drawn(occ, RotationArrow(start, radius_mm=L.moment_mm, start_deg=200.0,
-                                                 sweep_deg=100.0 if M > 0 else -100.0, name=f"moment-{mlabel}")))
-            labels.append(((start[0] - L.moment_mm, start[1]),
+            avoid = around(where) + ([math.degrees(cmath.phase(F))] if abs(F) > 0 else [])
+            arc = _drawn(occ, _moment_arc(start, L.moment_mm, 100.0 if M > 0 else -100.0, avoid,
+                                          name=f"moment-{mlabel}"))
+            els.append(arc)
+            mid = math.radians(clear_direction(avoid))
+            labels.append(((start[0] + L.moment_mm * math.cos(mid), start[1] - L.moment_mm * math.sin(mid)),
                            f"{_markup(mlabel, nt)} = {nt.number(M, sig=4)} {nt.unit('N·m')}", f"label-{mlabel}"))
     return els, labels
 
@@ -526,7 +644,6 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     >>> sorted(e.name for e in s.elements if e.name.startswith("force-"))
     ['force-0', 'force-1', 'force-2']
     """
-    from graphmethods.sheets.kinematic_symbols import RotationArrow
 
     L = SCHEME_LAYOUT
     nt = get_notation(notation)
@@ -535,25 +652,34 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     sheet = _sheet(case, nt, "scheme", i, phi_deg, page=page, title=title, title_block=title_block)
     Mb = float(fa.M_balance[i])
     texts = [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(Mb, sig=6))]
-    split, area = _split(sheet, max(markup.text_width_mm(t, TEXT_MM) for t in texts), L)
     z = {p: complex(mo.z[p][i]) for p in mo.points}
     forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i])) for fs in fa.applied.values() for f in fs]
     F_max = max([abs(F) for _, F, _, _ in forces] + [0.0])
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
     s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, L.largest_force_mm, what="the largest force")
-    s_l, at = _fit(np.array(list(z.values())), area, L, mu_l, nt, "the scheme")
+    cloud = np.array(list(z.values()))
+    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
     occ = sheet.occ
     els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
     labels: list[LabelSpec] = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
-    drawn, wanted = _applied(forces, at, s_F, nt, occ, L)
+    segs, _blocks = _links_of(mo, i)
+
+    pivots = [z[p] for p in mo.linkage.ground]
+
+    def around(w: complex) -> list[float]:
+        """The links at ``w``, and a fixed pivot's symbol (below it)."""
+        below = [240.0, 270.0, 300.0] if any(abs(w - q) <= 1e-12 for q in pivots) else []
+        return _directions(w, z, segs) + below
+
+    drawn, wanted = _applied(forces, at, s_F, nt, occ, L, around)
     els += drawn
     labels += wanted
     cr = mo.linkage.crank
     # the labels keep off M_b's arc and its name
-    els.append(_drawn(occ, RotationArrow(at(z[cr.centre]), radius_mm=L.balance_mm, start_deg=20.0,
-                                         sweep_deg=110.0 if Mb > 0 else -110.0, label=nt.sym("forces.M_b"),
-                                         size_mm=SMALL_MM, name="M_b")))
+    els.append(_drawn(occ, _moment_arc(at(z[cr.centre]), L.balance_mm, 110.0 if Mb > 0 else -110.0,
+                                       around(z[cr.centre]),
+                                       label=nt.sym("forces.M_b"), size_mm=SMALL_MM, name="M_b")))
     els += _labels(occ, labels, L.within(area))
-    els += _column(texts, split + 2.0, sheet.top + 2.0, L)
+    els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.scheme_legend"), name)
