@@ -101,3 +101,77 @@ def test_the_scheme_draws_every_force_from_its_point_to_scale(name, k):
         assert F == pytest.approx(complex(f.F[k]), rel=1e-9, abs=1e-9 * abs(f.F[k]))
     moments = [e.name for e in scene.elements if e.name.startswith("moment-")]
     assert len(moments) == sum(1 for fs in fa.applied.values() for f in fs if f.M[k] != 0)
+
+
+# ----------------------------------------------------------------------------- layouts on every problem
+
+EVERY = list(dict.fromkeys(builtin.LINKAGES))
+
+
+def _faults(fig):
+    """Text over text, or anything out of the page's inner box (the lecture slides' check)."""
+    from graphmethods.scene.steps import BuildUp, Step
+    from graphmethods.sheets.steps import layout_faults
+
+    x0, _, x1, y1 = fig.page.inner_box()
+    return layout_faults(BuildUp(fig, (Step("", tuple(range(len(fig.elements)))),), (x0, y1, x1, y1)))
+
+
+@pytest.mark.parametrize("name", EVERY)
+def test_no_text_covers_another_and_nothing_leaves_the_frame_on_every_problem(name):
+    from graphmethods.sheets.forces import force_scheme, zhukovsky_forces
+
+    case = builtin.case(name)
+    for k in (0, 3, 7):
+        for figure in (force_plans, zhukovsky_forces, force_scheme):
+            assert _faults(figure(case, position=k)) == [], (name, k, figure.__name__)
+
+
+@pytest.mark.parametrize("name", EVERY)
+def test_moment_arcs_keep_off_the_links_through_their_centre(name):
+    """Each moment's arc (and M_b's) is drawn on the side of its point where no link passes: it crosses
+    none of the drawn links through its centre (shapely, on the drawn coordinates)."""
+    from shapely.geometry import LineString, Point
+
+    from graphmethods.sheets.forces import force_scheme
+    from graphmethods.sheets.kinematic_symbols import RotationArrow
+
+    for k in (1, 4, 9):
+        scene = force_scheme(builtin.case(name), position=k)
+        links = [LineString([e.start, e.end]) for e in scene.elements if e.name.startswith("link-")]
+        arcs = [e for e in scene.elements if isinstance(e, RotationArrow)]
+        assert any(a.name == "M_b" for a in arcs)
+        for arc in arcs:
+            centre = Point(arc.centre)
+            drawn = LineString(arc.arc_points())
+            through = [ln for ln in links if ln.distance(centre) < 1e-6]
+            assert through, (name, k, arc.name)
+            assert not any(drawn.intersects(ln) for ln in through), (name, k, arc.name)
+
+
+def test_long_flat_force_plans_go_one_under_the_other_and_are_drawn_larger():
+    """The press's polygons are long and flat: stacked one under the other, the widest drawn wider than
+    half the page's inner width, which two plans side by side could not be."""
+    case = builtin.case("press")
+    scene = force_plans(case, position=3)
+    boxes = {}
+    for e in scene.elements:
+        if isinstance(e, Vector) and e.name.split("-")[0] in ("known", "closing", "inner"):
+            j = int(e.name.split("-")[1])
+            xs, ys = (e.start[0], e.end[0]), (e.start[1], e.end[1])
+            b = boxes.get(j, (1e9, 1e9, -1e9, -1e9))
+            boxes[j] = (min(b[0], *xs), min(b[1], *ys), max(b[2], *xs), max(b[3], *ys))
+    assert sorted(boxes) == [0, 1]
+    assert boxes[0][3] < boxes[1][1]                           # group 0 above the crank's plan
+    mu = scene.scales()[0].per_mm
+    fa = case_forces(case, m=12)
+    widths = []
+    for pl in fa.plans:
+        poly = pl.polygons[0]
+        pts = np.cumsum([0j] + [complex(F[3]) for _, F in poly.known] + [complex(F[3]) for _, _, F in poly.closing])
+        widths.append(float(np.ptp(pts.real)))
+    drawn_w = max(b[2] - b[0] for b in boxes.values())
+    assert max(widths) / mu == pytest.approx(drawn_w, rel=1e-6)
+    # side by side, two cells share the page's inner width: neither could be half as wide
+    x0, _, x1, _ = scene.page.inner_box()
+    assert drawn_w > (x1 - x0) / 2

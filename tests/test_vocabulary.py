@@ -22,17 +22,11 @@ PACKAGE = Path(graphmethods.__file__).parent
 
 #: modules that still keep a table of their own (issue 16: to be emptied)
 NOT_YET_MIGRATED = {
-    "cli/forces.py",
-    "render/steps.py",
-    "scene/steps.py",
     "sheets/acceleration.py",
     "sheets/acceleration_worksheet.py",
     "sheets/check.py",
     "sheets/check_acceleration.py",
-    "sheets/force_analysis_sheet.py",
-    "sheets/forces.py",
     "sheets/kinematic_analysis_sheet.py",
-    "sheets/steps.py",
     "sheets/worksheets.py",
 }
 

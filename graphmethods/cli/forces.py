@@ -27,26 +27,6 @@ from typing import Any
 
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
-WORDS = {
-    "en": {"title": "Force analysis", "position": "position", "phi": "crank angle φ", "omega": "ω₁",
-           "eps": "ε₁", "gravity": "weights", "yes": "included (g = 9.81 m/s², −y)", "no": "left out",
-           "links": "Inertia loads", "link": "link", "pairs": "Reactions (force of link i on link j)",
-           "pair": "pair", "balance": "Balancing moment on the crank (counterclockwise +)",
-           "plans": "from the force plans", "lever": "from Zhukovsky's lever", "power": "from the power balance",
-           "diff": "difference"},
-    "ru": {"title": "Силовой расчёт", "position": "положение", "phi": "угол кривошипа φ", "omega": "ω₁",
-           "eps": "ε₁", "gravity": "силы тяжести", "yes": "учтены (g = 9,81 м/с², −y)", "no": "не учтены",
-           "links": "Силы и моменты инерции", "link": "звено", "pairs": "Реакции (сила звена i на звено j)",
-           "pair": "пара", "balance": "Уравновешивающий момент на кривошипе (против часовой +)",
-           "plans": "по планам сил", "lever": "по рычагу Жуковского", "power": "по балансу мощностей",
-           "diff": "расхождение"},
-    "zh": {"title": "动态静力分析", "position": "位置", "phi": "曲柄转角 φ", "omega": "ω₁", "eps": "ε₁",
-           "gravity": "重力", "yes": "计入 (g = 9.81 m/s², −y)", "no": "不计", "links": "惯性力与惯性力矩",
-           "link": "构件", "pairs": "运动副反力 (构件 i 对构件 j 的力)", "pair": "运动副",
-           "balance": "曲柄上的平衡力矩 (逆时针为正)", "plans": "力多边形法", "lever": "茹可夫斯基杠杆法",
-           "power": "功率平衡法", "diff": "相对误差"},
-}
-
 
 def add_parser(sub) -> None:
     p = sub.add_parser(
@@ -131,26 +111,34 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
     }
 
 
-def _text(res: dict, lang: str) -> str:
-    w = WORDS[lang]
-    where = (f"{w['position']} {res['position']} / {res['m']}, " if res["position"] is not None else "")
-    lines = [f"{w['title']}: {res['case'] or res['kind']}  ({res['source']})",
-             (f"{where}{w['phi']} = {res['phi_deg']:.4f}°, {w['omega']} = {res['omega_1']:.6g} rad/s "
-              f"({res['sense']}), {w['eps']} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
-             f"{w['gravity']}: {w['yes'] if res['gravity'] else w['no']}", "", w["links"],
-             f"{w['link']:>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  {'M_i [N·m]':>12}  {'h [m]':>10}"]
+def _text(res: dict[str, Any], lang: str) -> str:
+    """The force analysis as the table ``graphmethods forces`` prints, in the words of ``lang``."""
+    from graphmethods.scene.notation import get
+
+    nt = get(lang)
+    where = (f"{nt.word('forces.position')} {res['position']} / {res['m']}, " if res["position"] is not None else "")
+    weights = nt.word("forces.gravity_yes") if res["gravity"] else nt.word("forces.gravity_no")
+    lines = [f"{nt.word('forces.report_title')}: {res['case'] or res['kind']}  ({res['source']})",
+             (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°, "
+              f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} rad/s ({res['sense']}), "
+              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
+             f"{nt.word('forces.gravity')}: {weights}", "", nt.word("forces.inertia_loads"),
+             (f"{nt.word('forces.link'):>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  "
+              f"{'M_i [N·m]':>12}  {'h [m]':>10}")]
     for k, d in res["links"].items():
         fx, fy = d["F_i"]
         h = "-" if d["h"] is None else f"{d['h']:.5f}"
         lines.append(f"{k:>6}  {fx:12.3f}  {fy:12.3f}  {math.hypot(fx, fy):12.3f}  {d['M_i']:12.4f}  {h:>10}")
-    lines += ["", w["pairs"], f"{w['pair']:>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
+    lines += ["", nt.word("forces.reactions"),
+              f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
-    lines += ["", w["balance"],
-              f"  {w['plans']:<28} {res['M_balance']:14.6f} N·m",
-              (f"  {w['lever']:<28} {res['M_balance_lever']:14.6f} N·m   {w['diff']} "
+    diff = nt.word("forces.diff")
+    lines += ["", nt.word("forces.balancing"),
+              f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",
+              (f"  {nt.word('forces.from_lever'):<28} {res['M_balance_lever']:14.6f} N·m   {diff} "
                f"{res['difference_lever_percent']:.2e} %"),
-              (f"  {w['power']:<28} {res['M_balance_power']:14.6f} N·m   {w['diff']} "
+              (f"  {nt.word('forces.from_power'):<28} {res['M_balance_power']:14.6f} N·m   {diff} "
                f"{res['difference_power_percent']:.2e} %")]
     return "\n".join(lines)
 

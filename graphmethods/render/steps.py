@@ -38,21 +38,14 @@ from collections.abc import Iterable
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg as _svg
 from graphmethods.render.files import write_atomic
-from graphmethods.scene import in_language, markup
+from graphmethods.scene import markup
+from graphmethods.scene.notation import get as get_notation
 from graphmethods.scene.numbers import format_mm as fmt
 from graphmethods.scene.scene import Scene, make_id
 from graphmethods.scene.steps import NEW_COLOUR, OLD_COLOUR, BuildUp
 
 SVG_NS = "http://www.w3.org/2000/svg"
 FORMATS = ("pdf", "svg", "html", "animated-svg")
-
-WORDS = {
-    "back": ("◀ Back", "◀ Назад", "◀ 上一步"),
-    "next": ("Next ▶", "Далее ▶", "下一步 ▶"),
-    "counter": ("Step {k} of {n}", "Шаг {k} из {n}", "第 {k} 步，共 {n} 步"),
-    "keys": ("← → keys step back and forward", "Клавиши ← → — шаг назад и вперёд", "← → 键：后退与前进"),
-}
-
 
 def _check(bu: object) -> BuildUp:
     if not isinstance(bu, BuildUp):
@@ -272,7 +265,7 @@ def html_page(bu: BuildUp) -> str:
     """
     bu = _check(bu)
     fig = bu.figure
-    nt = fig.notation
+    nt = get_notation(fig.notation)
     n = len(bu)
     root = _root(bu, height_mm=bu.caption_box[1])
     root.set("id", "figure")
@@ -288,11 +281,11 @@ def html_page(bu: BuildUp) -> str:
     svg_text = _serialise(root)
     title = _html.escape(markup.plain(fig.title), quote=False)
     caps = "\n".join(f'<p data-step="{k}">{caption_html(c)}</p>' for k, c in enumerate(bu.captions(), start=1))
-    counter = in_language(WORDS["counter"], nt)
+    counter = nt.word("steps.counter")
     csp = "default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; img-src data:"
     first = f'<span class="n">1.</span>{caption_html(bu.captions()[0])}'
     return f"""<!DOCTYPE html>
-<html lang="{nt}">
+<html lang="{nt.code}">
 <head>
 <meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
@@ -310,10 +303,10 @@ def html_page(bu: BuildUp) -> str:
 <figcaption id="caption" aria-live="polite">{first}</figcaption>
 </figure>
 <nav>
-<button id="prev" type="button" disabled>{_html.escape(in_language(WORDS["back"], nt))}</button>
+<button id="prev" type="button" disabled>{_html.escape(nt.word("steps.back"))}</button>
 <span id="counter" data-template="{_html.escape(counter)}">{_html.escape(counter.format(k=1, n=n))}</span>
-<button id="next" type="button">{_html.escape(in_language(WORDS["next"], nt))}</button>
-<span id="keys">{_html.escape(in_language(WORDS["keys"], nt))}</span>
+<button id="next" type="button">{_html.escape(nt.word("steps.next"))}</button>
+<span id="keys">{_html.escape(nt.word("steps.keys"))}</span>
 </nav>
 <div id="captions" hidden>
 {caps}
@@ -329,7 +322,8 @@ def html_page(bu: BuildUp) -> str:
 
 # ----------------------------------------------------------------------------- files
 
-def outputs(bu: BuildUp, fmt_: str, path: str | os.PathLike[str], *, seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
+def outputs(bu: BuildUp, fmt_: str, path: str | os.PathLike[str], *,
+            seconds: float = 3.0) -> list[tuple[pathlib.Path, bytes]]:
     """The files a format writes, with their bytes: one file, or for ``svg`` one frame per step named
     ``STEM-01.svg``, ``STEM-02.svg``, … beside ``path``; ``seconds`` per step of an animated SVG."""
     bu = _check(bu)

@@ -371,12 +371,6 @@ class Enlarged(Element):
         return tuple(_enlarge_prim(p, self.factor) for p in self.element.primitives())
 
 
-#: the note on an enlarged slide, in the figure's language
-ENLARGED_NOTE = ("drawn {z} : 1 for the projector; μ and mm as at 1 : 1",
-                 "увеличено {z} : 1 для проектора; μ и мм — как при 1 : 1",
-                 "为投影放大 {z} : 1；μ 与 mm 按 1 : 1")
-
-
 def enlarge(bu: BuildUp, page: Page, *, note_mm: float) -> BuildUp:
     """``bu``, laid out on a :class:`DesignPage`, drawn on ``page`` (its full size) ``z`` : 1
     (z = the design page's ``enlarged``): every element and the caption box enlarged; the scales
@@ -392,7 +386,7 @@ def enlarge(bu: BuildUp, page: Page, *, note_mm: float) -> BuildUp:
     note_mm : float
         Size of the note at 1 : 1, mm.
     """
-    from graphmethods.scene.notation import get as get_notation, in_language
+    from graphmethods.scene.notation import get as get_notation
 
     design = bu.figure.page
     z = float(getattr(design, "enlarged", 1.0))
@@ -406,7 +400,7 @@ def enlarge(bu: BuildUp, page: Page, *, note_mm: float) -> BuildUp:
         right = title.bbox() if title is not None else None
         # the title is bold: 12 % wider than the estimate of regular text
         free = x1 - (right[0] + 1.12 * (right[2] - right[0]) if right is not None else design.inner_box()[0]) - 3.0
-        words = in_language(ENLARGED_NOTE, nt, z=nt.number(z))
+        words = nt.word("steps.enlarged", z=nt.number(z))
         if markup.text_width_mm(words, note_mm) > free:         # beside a long title: the ratio alone
             words = f"{nt.number(z)} : 1"
         els += (Enlarged(Text((x1, y0 + note_mm), words, size_mm=note_mm, anchor="end", name="enlarged"), z),)

@@ -20,22 +20,11 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scene, Table, Text, in_language, notation as get_notation
+from graphmethods.scene import Page, Scene, Table, Text, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.layout import TEXT_MM, Sheet
-
-_W = {
-    "title": ("Force analysis, position {k}", "Силовой расчёт, положение {k}", "动态静力分析, 位置 {k}"),
-    "title_phi": ("Force analysis, φ = {phi}°", "Силовой расчёт, φ = {phi}°", "动态静力分析, φ = {phi}°"),
-    "result": ("Balancing moment on the crank", "Уравновешивающий момент на кривошипе", "曲柄上的平衡力矩"),
-    "method": ("method", "способ", "方法"),
-    "diff": ("difference, %", "расхождение, %", "相对误差, %"),
-    "plans": ("force plans", "планы сил", "力多边形法"),
-    "lever": ("Zhukovsky's lever", "рычаг Жуковского", "茹可夫斯基杠杆法"),
-    "power": ("power balance", "баланс мощностей", "功率平衡法"),
-}
 
 
 def _case(subject: Any) -> Any:
@@ -88,8 +77,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     case = _case(subject)
     nt = get_notation(notation)
     fa, i = SF.analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = in_language(_W["title"], nt, k=i) if phi_deg is None else \
-        in_language(_W["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
+    head = SF.title_text(nt, "sheet", i, phi_deg)
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
@@ -98,15 +86,15 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     # the result table, top right
     Mb = float(fa.M_balance[i])
     n = nt.number
-    rows = [(in_language(_W["method"], nt), nt.quantity("M_b" if nt.code != "ru" else "M_{ур}", "N·m"),
-             in_language(_W["diff"], nt)),
-            (in_language(_W["plans"], nt), n(Mb, sig=6), "—")]
+    rows = [(nt.word("forces.method"), nt.quantity(nt.sym("forces.M_b"), "N·m"),
+             nt.word("forces.diff_percent")),
+            (nt.word("forces.by_plans"), n(Mb, sig=6), "—")]
     for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
         d = float(fa.difference_percent(other)[i])
-        rows.append((in_language(_W[key], nt), n(float(other[i]), sig=6), SF.percent_text(d, nt)))
+        rows.append((nt.word(f"forces.by_{key}"), n(float(other[i]), sig=6), SF.percent_text(d, nt)))
     table = Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=TEXT_MM, row_height_mm=6.5, name="result")
     tw = table.width_mm
-    heading_w = text_width_mm(in_language(_W["result"], nt), TEXT_MM + 0.8) * 1.08
+    heading_w = text_width_mm(nt.word("forces.sheet_result"), TEXT_MM + 0.8) * 1.08
     col_w = max(tw, heading_w) + 4.0
     H = bottom - top
     gap = 8.0
@@ -122,7 +110,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     g_lever, sc2 = inset(s_lever, "lever")
     g_plans, sc3 = inset(s_plans, "plans")
     tx = x1 - col_w + 4.0
-    heading = Text((tx, top + 4.0), in_language(_W["result"], nt), size_mm=TEXT_MM + 0.8, bold=True,
+    heading = Text((tx, top + 4.0), nt.word("forces.sheet_result"), size_mm=TEXT_MM + 0.8, bold=True,
                    name="result-heading")
     table = Table((tx, top + 8.0), tuple(rows), align="lrr", size_mm=TEXT_MM, row_height_mm=6.5, name="result")
     scales = sc1 + sc2 + sc3

@@ -21,36 +21,25 @@ their differences in per cent.
 
 from __future__ import annotations
 
+import cmath
 import math
 import re
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any, TypeVar
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Line, Page, Table, Text, Vector, in_language, notation as get_notation
+from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import THIN
-from graphmethods.sheets.layout import TEXT_MM, Sheet, given_scale
+from graphmethods.scene.scale import pick_scale
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
 TABLE_MM = 3.2
-
-_W = {
-    "title": ("Force plans, position {k}", "Планы сил, положение {k}", "力多边形, 位置 {k}"),
-    "title_phi": ("Force plans, φ = {phi}°", "Планы сил, φ = {phi}°", "力多边形, φ = {phi}°"),
-    "group": ("group {g}", "группа {g}", "杆组 {g}"),
-    "crank": ("crank {g}", "кривошип {g}", "原动件 {g}"),
-    "pair": ("pair", "пара", "运动副"),
-    "plans": ("M_b from the force plans", "M_{ур} по планам сил", "M_b 力多边形法"),
-    "lever": ("M_b from Zhukovsky's lever", "M_{ур} по рычагу Жуковского", "M_b 茹可夫斯基杠杆法"),
-    "power": ("M_b from the power balance", "M_{ур} по балансу мощностей", "M_b 功率平衡法"),
-    "diff": ("difference", "расхождение", "相对误差"),
-    "weights": ("with weights (g = 9.81 m/s²)", "с учётом сил тяжести (g = 9,81 м/с²)", "计入重力 (g = 9.81 m/s²)"),
-    "legend": ("known forces solid, unknown dashed", "известные силы сплошные, искомые штриховые",
-               "已知力为实线, 待求力为虚线"),
-}
-
 
 def analysed(case, *, position: int | None, phi_deg: float | None, m: int, gravity: bool = False):
     """The force analysis a force figure draws and the index of its position in it: position
@@ -72,17 +61,9 @@ def percent_text(d: float, nt: Notation) -> str:
     return text.replace(".", nt.decimal)
 
 
-def _w(key: str, nt, **fill) -> str:
-    return in_language(_W[key], nt, **fill)
-
-
-#: the inertia and balancing subscripts as the books write them: Russian F_и, M_и, F_ур, M_ур; Chinese F_I, M_I
-_SUBSCRIPTS = {"ru": {"i": "и", "b": "ур"}, "zh": {"i": "I"}}
-
-
-def _markup(label: str, nt=None) -> str:
+def _markup(label: str, nt: Notation | str | None = None) -> str:
     """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}`` (ru ``F_{и2}``, zh ``F_{I2}``), ``F_b`` → ``F_{b}``
-    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``.
+    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``: the inertia and balancing subscripts as the books write them.
 
     >>> _markup("F_i2"), _markup("M_i3", "ru"), _markup("F_i2", "zh"), _markup("F_b", "ru")
     ('F_{i2}', 'M_{и3}', 'F_{I2}', 'F_{ур}')
@@ -93,13 +74,12 @@ def _markup(label: str, nt=None) -> str:
         return label
     sup = "^{" + m.group(2)[1:] + "}" if m.group(2) else ""
     sub = m.group(3)
-    code = None if nt is None else (nt if isinstance(nt, str) else nt.code)
-    words = _SUBSCRIPTS.get(code or "", {})
     if m.group(1) in ("F", "M") and not sup:
-        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()) and "i" in words:
-            sub = words["i"] + sub[1:]
-        elif sub == "b" and "b" in words:
-            sub = words["b"]
+        words = get_notation(nt)
+        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()):
+            sub = words.word("forces.sub_inertia") + sub[1:]
+        elif sub == "b":
+            sub = words.word("forces.sub_balance")
     return f"{m.group(1)}{sup}_{{{sub}}}"
 
 
@@ -133,18 +113,289 @@ def _inner_sides(poly, inner, pts: np.ndarray, i: int) -> list:
     return []
 
 
-def _label(occ, where, text: str, name: str, *, within) -> list:
+Box = tuple[float, float, float, float]
+ToMm = Callable[[complex], tuple[float, float]]
+#: a label to place: the point it belongs to (mm), its text, its element name
+LabelSpec = tuple[tuple[float, float], str, str]
+
+
+@dataclass(frozen=True)
+class ForceFigureLayout:
+    """The millimetre constants of a force figure: the drawing area left of a column of texts.
+
+    >>> PLANS_LAYOUT.within((10.0, 20.0, 110.0, 90.0))
+    (6.0, 18.0, 114.0, 94.0)
+    """
+
+    left_mm: float = 4.0            # the drawing area's inset from the content box's left side
+    top_mm: float = 4.0             # ... below the sheet's top (the title's line)
+    bottom_mm: float = 8.0          # ... above the scale captions' baseline
+    column_gap_mm: float = 6.0      # the drawing area, the split, the text column: this apart
+    reach_mm: float = 4.0           # labels may leave the drawing area by this much
+    reach_top_mm: float = 4.0       # ... and upward by this much
+    text_pitch_mm: float = 6.0      # line pitch of the text column
+    head_mm: float = 2.5            # arrowheads
+    min_mm: float = 0.3             # a shorter vector is not drawn
+    largest_force_mm: float = 30.0  # the largest force's length (lever, scheme)
+    margin_mm: float = 34.0         # room kept round the linkage (the lever) for its forces
+    plan_gap_mm: float = 8.0        # between two force plans side by side
+    row_gap_mm: float = 10.0        # between two rows of force plans (the lower row's captions)
+    overhang_mm: float = 6.0        # a direction line beyond the ends of its side
+    caption_rise_mm: float = 4.0    # a plan's caption above the drawing area
+    row_mm: float = 6.0             # table rows
+    results_gap_mm: float = 7.0     # the results under the table
+    moment_mm: float = 6.0          # radius of a moment's arc
+    balance_mm: float = 9.0         # radius of M_b's arc at the crank's centre
+
+    def within(self, area: Box) -> Box:
+        """Where the labels of a drawing in ``area`` may go."""
+        return (area[0] - self.reach_mm, area[1] - self.reach_top_mm, area[2] + self.reach_mm,
+                area[3] + self.reach_mm)
+
+
+PLANS_LAYOUT = ForceFigureLayout(left_mm=2.0, top_mm=8.0, bottom_mm=10.0, reach_top_mm=2.0, text_pitch_mm=5.6)
+LEVER_LAYOUT = ForceFigureLayout(largest_force_mm=28.0, margin_mm=32.0)
+SCHEME_LAYOUT = ForceFigureLayout()
+
+
+# ----------------------------------------------------------------------------- shared steps
+
+def title_text(nt: Notation, family: str, i: int, phi_deg: float | None) -> str:
+    """A force figure's title: ``family`` (plans, lever, scheme, sheet) in position ``i`` or at ``phi_deg``.
+
+    >>> title_text(get_notation("ru"), "plans", 3, None), title_text(get_notation("en"), "lever", 0, 30.0)
+    ('Планы сил, положение 3', "Zhukovsky's lever with every force, φ = 30°")
+    """
+    if phi_deg is None:
+        return nt.word(f"forces.{family}_title", k=i)
+    return nt.word(f"forces.{family}_title_phi", phi=nt.number(float(phi_deg), sig=5))
+
+
+def _sheet(case: Any, nt: Notation, family: str, i: int, phi_deg: float | None, *, page: Any, title: str | None,
+           title_block: bool) -> Sheet:
+    """The A3 sheet a force figure is drawn on (unless ``page``), with its title."""
+    return Sheet(nt=nt, page=page, title=title or title_text(nt, family, i, phi_deg), problem=title_of(case),
+                 title_block=title_block, default_page=Page("A3", "landscape", frame=True))
+
+
+def _split(sheet: Sheet, column_mm: float, L: ForceFigureLayout) -> tuple[float, Box]:
+    """Where the text column (``column_mm`` wide) begins, and the drawing area left of it."""
+    x0, _, x1, _ = sheet.box
+    split = x1 - column_mm - L.column_gap_mm
+    return split, (x0 + L.left_mm, sheet.top + L.top_mm, split - L.column_gap_mm, sheet.caption_y - L.bottom_mm)
+
+
+def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
+              fit: Callable[[Box], tuple[Scale, ToMm]]) -> tuple[Box, list[Element], Scale, ToMm]:
+    """The drawing area, the texts, the scale and the map of a figure drawn by ``fit``: the texts in a column
+    beside the drawing (right) or in lines above it, whichever draws it larger (beside it on a tie: a
+    tall region, such as the A1 sheet's left column, gets its texts above).
+
+    Raises
+    ------
+    InputError
+        When the drawing fits neither (a given scale too small): the error of the column beside it.
+    """
+    split, beside = _split(sheet, max(markup.text_width_mm(t, TEXT_MM) for t in texts), L)
+    x0, _, x1, _ = sheet.box
+    above = (x0 + L.left_mm, sheet.top + 2.0 + len(texts) * L.text_pitch_mm + L.reach_top_mm, x1 - L.left_mm,
+             sheet.caption_y - L.bottom_mm)
+    options: list[tuple[float, int, Box, tuple[float, float], Scale, ToMm]] = []
+    error: InputError | None = None
+    for n_o, (area, corner) in enumerate(((beside, (split + 2.0, sheet.top + 2.0)),
+                                          (above, (x0 + L.left_mm, sheet.top + 2.0)))):
+        try:
+            s_l, at = fit(area)
+        except InputError as e:
+            error = error or e
+            continue
+        options.append((s_l.per_mm, n_o, area, corner, s_l, at))
+    if not options:
+        assert error is not None
+        raise error
+    _, _, area, (tx, ty), s_l, at = min(options, key=lambda o: (o[0], o[1]))
+    return area, _column(texts, tx, ty, L), s_l, at
+
+
+def _column(texts: Sequence[str], x: float, y: float, L: ForceFigureLayout, prefix: str = "text") -> list[Element]:
+    """Lines of text one under the other from (x, y), named ``prefix-0``, ``prefix-1``, …"""
+    return [Text((x, y + t_i * L.text_pitch_mm), t, size_mm=TEXT_MM, name=f"{prefix}-{t_i}")
+            for t_i, t in enumerate(texts)]
+
+
+def _finish(sheet: Sheet, els: list[Element], scales: tuple[Scale, ...], legend: str, name: str) -> Scene:
+    """The scale captions and the legend under the drawing, and the finished scene."""
+    els += sheet.captions(scales, legend=legend, reserve=True)
+    return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))
+
+
+def _fit(cloud: np.ndarray, area: Box, L: ForceFigureLayout, mu_l: Any, nt: Notation, what: str) -> tuple[Scale, ToMm]:
+    """μ_l for the points ``cloud`` (m, complex) to fit ``area`` with ``L.margin_mm`` round them for the
+    forces, and the map from a point (m) to the page (mm) centring them."""
+    room_x, room_y = area[2] - area[0] - 2 * L.margin_mm, area[3] - area[1] - 2 * L.margin_mm
+    span = max(float(np.ptp(cloud.real)) * room_y / room_x, float(np.ptp(cloud.imag)), 1e-12)
+    s_l = (pick_scale(span, room_y, symbol="μ_l", unit=nt.unit("m")) if mu_l is None
+           else given_scale(mu_l, "μ_l", nt.unit("m"), span, room_y, what=what))
+    cx = (area[0] + area[2]) / 2 - (float(cloud.real.min()) + float(cloud.real.max())) / 2 / s_l.per_mm
+    cy = (area[1] + area[3]) / 2 + (float(cloud.imag.min()) + float(cloud.imag.max())) / 2 / s_l.per_mm
+
+    def at(z: complex) -> tuple[float, float]:
+        return (cx + z.real / s_l.per_mm, cy - z.imag / s_l.per_mm)
+
+    return s_l, at
+
+
+AnElement = TypeVar("AnElement", bound=Element)
+
+
+def _drawn(occ: Occupancy, el: AnElement) -> AnElement:
+    """``el``, its lines kept clear by the labels placed later."""
+    occ.add_primitives(el.primitives())
+    return el
+
+
+def _label(occ: Occupancy, where: tuple[float, float], text: str, name: str, *, within: Box) -> list[Element]:
     """A label beside its point, or further off with a leader line when nothing beside it is free."""
     lab, leader = occ.place_label_with_leader(where, text, size_mm=SMALL_MM, within=within)
-    out: list = [Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=name)]
+    out: list[Element] = [Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=name)]
     if leader is not None:
         out.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{name}"))
     return out
 
 
-def force_plans(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
-                gravity: bool = False, mu_F=None, notation="en", page=None, title=None,
-                title_block: bool = True, name: str = "force-plans"):
+def _labels(occ: Occupancy, specs: Sequence[LabelSpec], within: Box) -> list[Element]:
+    """Every label of ``specs`` placed in turn (each keeps off the ones before)."""
+    return [el for where, text, nm in specs for el in _label(occ, where, text, nm, within=within)]
+
+
+# ----------------------------------------------------------------------------- the force plans
+
+def _plans_results(fa: Any, i: int, nt: Notation, gravity: bool) -> tuple[list[tuple[str, str]], list[str]]:
+    """The table of reactions (rows) and the lines of M_b by the three methods beside the force plans."""
+    rows = [(nt.word("forces.pair"), nt.quantity("|R|", "N"))]
+    for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
+        rows.append((_markup(key), nt.number(float(abs(r.R[i])), sig=5)))
+    Mb = float(fa.M_balance[i])
+    M_b = nt.sym("forces.M_b")
+    res_lines = [f"{nt.word('forces.Mb_plans', Mb=M_b)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
+    for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
+        d = float(fa.difference_percent(other)[i])
+        value = f"{nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}"
+        res_lines.append(f"{nt.word('forces.Mb_' + key, Mb=M_b)} = {value}")
+        res_lines.append(f"    {nt.word('forces.diff')} {percent_text(d, nt)} %")
+    if gravity:
+        res_lines.append(nt.word("forces.weights"))
+    return rows, res_lines
+
+
+def _polygon(poly: Any, i: int) -> np.ndarray:
+    """The vertices of a group's force polygon (N, complex): the known forces end to end, then the unknowns."""
+    pts = [0j]
+    for _, F in poly.known:
+        pts.append(pts[-1] + complex(F[i]))
+    for _, _, F in poly.closing:
+        pts.append(pts[-1] + complex(F[i]))
+    return np.array(pts)
+
+
+def _plans_scale(paths: Sequence[np.ndarray], pw: float, ph: float, mu_F: Any, nt: Notation) -> Scale:
+    """One μ_F for every polygon, each in its ``pw`` × ``ph`` mm cell."""
+    need = max(max(float(np.ptp(p.real)) / pw, float(np.ptp(p.imag)) / ph) for p in paths)
+    if need <= 0:
+        raise InputError("every force is zero in this position; there is no force plan to draw")
+    biggest = max(max(float(np.ptp(p.real)), float(np.ptp(p.imag) * pw / ph)) for p in paths)
+    return given_scale(mu_F, "μ_F", nt.unit("N"), biggest, pw - 2.0, what="the force plans")
+
+
+def _grid(paths: Sequence[np.ndarray], area: Box, L: ForceFigureLayout, mu_F: Any,
+          nt: Notation) -> tuple[int, float, float, Scale]:
+    """How the force plans share ``area``: the number of columns (the rows follow), each cell's width and
+    height, mm, and the one μ_F, chosen to draw them largest (one row when that is as large). Long flat
+    polygons, such as a slider-crank's, go one under the other rather than side by side.
+
+    Raises
+    ------
+    InputError
+        When no arrangement fits (every force zero, a given μ_F too small): one row's error.
+
+    Examples
+    --------
+    >>> flat = [np.array([0, 100 + 1j, 200]), np.array([0, 150 + 0.5j])]
+    >>> cols, pw, ph, s_F = _grid(flat, (0.0, 0.0, 208.0, 100.0), PLANS_LAYOUT, None, get_notation("en"))
+    >>> cols, pw, ph, s_F.per_mm
+    (1, 208.0, 45.0, 1.0)
+    """
+    n_p = len(paths)
+    best: tuple[float, int, float, float, Scale] | None = None
+    error: InputError | None = None
+    for cols in range(n_p, 0, -1):
+        rows = -(-n_p // cols)
+        pw = (area[2] - area[0] - L.plan_gap_mm * (cols - 1)) / cols
+        ph = (area[3] - area[1] - L.row_gap_mm * (rows - 1)) / rows
+        if pw <= 2.0 or ph <= 0:
+            continue
+        try:
+            s_F = _plans_scale(paths, pw, ph, mu_F, nt)
+        except InputError as e:
+            error = error or e
+            continue
+        if best is None or s_F.per_mm < best[0] * (1 - 1e-9):
+            best = (s_F.per_mm, cols, pw, ph, s_F)
+    if best is None:
+        raise error or InputError("the force plans have no room on this page; give a larger page")
+    return best[1], best[2], best[3], best[4]
+
+
+def _cell(pts: np.ndarray, cell: Box, s_F: Scale) -> ToMm:
+    """The map from the polygon's plane (N) to the page (mm) centring it in ``cell`` (left, top, width, height)."""
+    left, top, pw, ph = cell
+    lo = np.array([pts.real.min(), pts.imag.min()]) / s_F.per_mm
+    hi = np.array([pts.real.max(), pts.imag.max()]) / s_F.per_mm
+    cx = left + pw / 2 - (lo[0] + hi[0]) / 2
+    cy = top + ph / 2 + (lo[1] + hi[1]) / 2
+
+    def at(z: complex) -> tuple[float, float]:
+        return (cx + z.real / s_F.per_mm, cy - z.imag / s_F.per_mm)
+
+    return at
+
+
+def _group_plan(j: int, pl: Any, pts: np.ndarray, i: int, at: ToMm, nt: Notation, occ: Occupancy,
+                L: ForceFigureLayout) -> tuple[list[Element], list[LabelSpec]]:
+    """Group ``j``'s force polygon: the known sides (solid), the unknown ones (dashed) with their lines of
+    action, each link's own polygon closed by the inner reaction; and the labels its sides want."""
+    poly = pl.polygons[0]
+    els: list[Element] = []
+    labels: list[LabelSpec] = []
+    sides = [(lbl, True, None) for lbl, _F in poly.known] + [(lbl, False, dirs) for lbl, dirs, _F in poly.closing]
+    for s, (lbl, known, direction) in enumerate(sides):
+        a, b = at(complex(pts[s])), at(complex(pts[s + 1]))
+        kind = "known" if known else "closing"
+        if math.dist(a, b) >= L.min_mm:
+            v = _drawn(occ, Vector(a, b, known=known, head_length_mm=L.head_mm,
+                                   name=f"{kind}-{j}-{s - (0 if known else len(poly.known))}"))
+            els.append(v)
+            labels.append((v.mid, _markup(lbl, nt), f"label-{j}-{s}"))
+        if direction is not None:
+            u = complex(direction[i])
+            e = np.array([u.real, -u.imag])
+            A, B = np.array(a), np.array(b)
+            far = tuple((B + L.overhang_mm * e).tolist()) if math.dist(a, b) >= L.min_mm else \
+                tuple((A + L.overhang_mm * e).tolist())
+            els.append(Line(tuple((A - L.overhang_mm * e).tolist()), far, style=THIN, name=f"direction-{j}-{s}"))
+    for t, inner in enumerate(pl.polygons[1:]):
+        for (lbl, _F), z0, z1 in _inner_sides(poly, inner, pts, i):
+            a, b = at(z0), at(z1)
+            if math.dist(a, b) >= L.min_mm:
+                v = _drawn(occ, Vector(a, b, known=False, head_length_mm=L.head_mm, name=f"inner-{j}-{t}-{lbl}"))
+                els.append(v)
+                labels.append((v.mid, _markup(lbl, nt), f"label-inner-{j}-{t}-{lbl}"))
+    return els, labels
+
+
+def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                gravity: bool = False, mu_F: Any = None, notation: Any = "en", page: Any = None,
+                title: str | None = None, title_block: bool = True, name: str = "force-plans") -> Scene:
     """The force plans of every group and of the crank in one position (see the module docstring).
 
     Parameters
@@ -164,129 +415,53 @@ def force_plans(case, position: int | None = None, *, phi_deg: float | None = No
     InputError
         A position outside 0…m, or a given μ_F at which a polygon does not fit.
     """
+    L = PLANS_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = _w("title", nt, k=i) if phi_deg is None else \
-        _w("title_phi", nt, phi=nt.number(float(phi_deg), sig=5))
-    sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
-                  default_page=Page("A3", "landscape", frame=True))
-    x0, _, x1, _ = sheet.box
-    # ------------------------------------------------------------------ the table beside the plans
-    rows = [(_w("pair", nt), nt.quantity("|R|", "N"))]
-    for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
-        rows.append((_markup(key), nt.number(float(abs(r.R[i])), sig=5)))
-    Mb = float(fa.M_balance[i])
-    res_lines = [f"{_w('plans', nt)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
-    for key, other in (("lever", fa.M_balance_lever), ("power", fa.M_balance_power)):
-        d = float(fa.difference_percent(other)[i])
-        res_lines.append(f"{_w(key, nt)} = {nt.number(float(other[i]), sig=6)} {nt.unit('N·m')}")
-        res_lines.append(f"    {_w('diff', nt)} {percent_text(d, nt)} %")
-    if gravity:
-        res_lines.append(_w("weights", nt))
-    probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0)
-    from graphmethods.scene import markup
-
-    right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in res_lines])
-    split = x1 - right_w - 6.0
-    area = (x0 + 2.0, sheet.top + 8.0, split - 6.0, sheet.caption_y - 10.0)
-    # ------------------------------------------------------------------ the polygons and μ_F
-    polys = [pl.polygons[0] for pl in fa.plans]
-    n_p = len(polys)
-    gap = 8.0
-    pw = (area[2] - area[0] - gap * (n_p - 1)) / n_p
-    ph = area[3] - area[1]
-
-    def path(poly):
-        pts = [0j]
-        for _, F in poly.known:
-            pts.append(pts[-1] + complex(F[i]))
-        for _, _, F in poly.closing:
-            pts.append(pts[-1] + complex(F[i]))
-        return np.array(pts)
-
-    paths = [path(p) for p in polys]
-    need = max(max(float(np.ptp(p.real)) / pw, float(np.ptp(p.imag)) / ph) for p in paths)
-    if need <= 0:
-        raise InputError("every force is zero in this position; there is no force plan to draw")
-    biggest = max(max(float(np.ptp(p.real)), float(np.ptp(p.imag) * pw / ph)) for p in paths)
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), biggest, pw - 2.0, what="the force plans")
-    els: list = [sheet.header()]
-    occ = sheet.occ
-    labels = []
-    for j, (pl, poly, pts) in enumerate(zip(fa.plans, polys, paths)):
-        left = area[0] + j * (pw + gap)
-        lo = np.array([pts.real.min(), pts.imag.min()]) / s_F.per_mm
-        hi = np.array([pts.real.max(), pts.imag.max()]) / s_F.per_mm
-        cx = left + pw / 2 - (lo[0] + hi[0]) / 2
-        cy = area[1] + ph / 2 + (lo[1] + hi[1]) / 2
-
-        def at(z: complex) -> tuple[float, float]:
-            return (cx + z.real / s_F.per_mm, cy - z.imag / s_F.per_mm)   # noqa: B023
-
-        cap = (_w("crank", nt, g=pl.links[0]) if pl.group.startswith("I ")
-               else _w("group", nt, g=pl.group))
-        els.append(Text((left, area[1] - 4.0), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
-        sides = [(lbl, F, True, None) for lbl, F in poly.known] + \
-                [(lbl, F, False, dirs) for lbl, dirs, F in poly.closing]
-        for s, (lbl, _F, known, direction) in enumerate(sides):
-            a, b = at(complex(pts[s])), at(complex(pts[s + 1]))
-            kind = "known" if known else "closing"
-            if math.dist(a, b) >= 0.3:
-                v = Vector(a, b, known=known, head_length_mm=2.5, name=f"{kind}-{j}-{s - (0 if known else len(poly.known))}")
-                els.append(v)
-                occ.add_primitives(v.primitives())
-                labels.append((v.mid, _markup(lbl, nt), f"label-{j}-{s}"))
-            if direction is not None:
-                u = complex(direction[i])
-                e = np.array([u.real, -u.imag])
-                A, B = np.array(a), np.array(b)
-                ln = Line(tuple((A - 6.0 * e).tolist()), tuple((B + 6.0 * e).tolist()) if math.dist(a, b) >= 0.3
-                          else tuple((A + 6.0 * e).tolist()), style=THIN, name=f"direction-{j}-{s}")
-                els.append(ln)
-        for t, inner in enumerate(pl.polygons[1:]):
-            for (lbl, _F), z0, z1 in _inner_sides(poly, inner, pts, i):
-                a, b = at(z0), at(z1)
-                if math.dist(a, b) >= 0.3:
-                    v = Vector(a, b, known=False, head_length_mm=2.5, name=f"inner-{j}-{t}-{lbl}")
-                    els.append(v)
-                    occ.add_primitives(v.primitives())
-                    labels.append((v.mid, _markup(lbl, nt), f"label-inner-{j}-{t}-{lbl}"))
-    for mid, text, nm in labels:
-        els += _label(occ, mid, text, nm, within=(area[0] - 4, area[1] - 2, area[2] + 4, area[3] + 4))
+    sheet = _sheet(case, nt, "plans", i, phi_deg, page=page, title=title, title_block=title_block)
+    # the table beside the plans sets the column, the polygons share what is left
+    rows, res_lines = _plans_results(fa, i, nt, gravity)
+    probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=L.row_mm)
+    split, area = _split(sheet, max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in res_lines]), L)
+    paths = [_polygon(pl.polygons[0], i) for pl in fa.plans]
+    cols, pw, ph, s_F = _grid(paths, area, L, mu_F, nt)
+    els: list[Element] = [sheet.header()]
+    labels: list[LabelSpec] = []
+    for j, (pl, pts) in enumerate(zip(fa.plans, paths)):
+        left = area[0] + (j % cols) * (pw + L.plan_gap_mm)
+        top = area[1] + (j // cols) * (ph + L.row_gap_mm)
+        cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
+               else nt.word("forces.group", g=pl.group))
+        els.append(Text((left, top - L.caption_rise_mm), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
+        drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, top, pw, ph), s_F), nt, sheet.occ, L)
+        els += drawn
+        labels += wanted
+    els += _labels(sheet.occ, labels, L.within(area))
     tx = split + 2.0
-    table = Table((tx, sheet.top + 2.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=6.0, name="table")
+    table = Table((tx, sheet.top + 2.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=L.row_mm,
+                  name="table")
     els.append(table)
-    ty = table.bottom_left[1] + 7.0
-    for t_i, line in enumerate(res_lines):
-        els.append(Text((tx, ty + t_i * 5.6), line, size_mm=TEXT_MM, name=f"result-{t_i}"))
-    scales = (s_F,)
-    els += sheet.captions(scales, legend=_w("legend", nt), reserve=True)
-    return sheet.scene(els, scales, name=name, notes=(s_F.note,) if s_F.note else ())
+    els += _column(res_lines, tx, table.bottom_left[1] + L.results_gap_mm, L, prefix="result")
+    return _finish(sheet, els, (s_F,), nt.word("forces.plans_legend"), name)
 
 
-_WL = {
-    "title": ("Zhukovsky's lever with every force, position {k}", "Рычаг Жуковского со всеми силами, положение {k}",
-              "茹可夫斯基杠杆 (全部力), 位置 {k}"),
-    "title_phi": ("Zhukovsky's lever with every force, φ = {phi}°", "Рычаг Жуковского со всеми силами, φ = {phi}°",
-                  "茹可夫斯基杠杆 (全部力), φ = {phi}°"),
-    "turned": ("velocity plan of analogues v/ω₁ turned 90° counterclockwise, pole p",
-               "план аналогов скоростей v/ω₁, повёрнутый на 90° против часовой, полюс p",
-               "速度类比图 v/ω₁ 逆时针转 90°, 极点 p"),
-    "couple": ("a moment M as two forces ±M/l at two points of its link, l apart",
-               "момент M заменён парой сил ±M/l в двух точках звена на расстоянии l",
-               "力矩 M 以其构件上相距 l 的两点的一对力 ±M/l 代替"),
-    "equation": ("Σ M_p = 0:  F_b = {Fb} N at a, ⊥ OA", "Σ M_p = 0:  F_{{ур}} = {Fb} Н в точке a, ⊥ OA",
-                 "Σ M_p = 0:  F_b = {Fb} N 作用于 a, ⊥ OA"),
-    "result": ("M_b = F_b·l_{{OA}} = {Mb} N·m", "M_{{ур}} = F_{{ур}}·l_{{OA}} = {Mb} Н·м", "M_b = F_b·l_{{OA}} = {Mb} N·m"),
-    "plans": ("from the force plans: {Mb} N·m (difference {d} %)", "по планам сил: {Mb} Н·м (расхождение {d} %)",
-              "力多边形法: {Mb} N·m (相对误差 {d} %)"),
-    "legend": ("forces at the images of their points", "силы в образах своих точек", "力作用于其点的影像"),
-}
+# ----------------------------------------------------------------------------- Zhukovsky's lever
+
+def _lever_texts(fa: Any, i: int, nt: Notation) -> list[str]:
+    """The lever's column: the plan turned, the couples, Σ M_p = 0 and F_b, M_b, the force plans' M_b."""
+    lev = fa.lever
+    Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
+    d = float(fa.difference_percent(lev.M_balance)[i])
+    return [nt.word("forces.turned"), nt.word("forces.couple"),
+            nt.word("forces.lever_equation", Fb=nt.number(abs(complex(lev.F_balance[i])), sig=5)),
+            nt.word("forces.lever_result", Mb=nt.number(Mb_l, sig=6)),
+            nt.word("forces.lever_plans", Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
 
 
-def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
-                     gravity: bool = False, mu_l=None, mu_F=None, notation="en", page=None, title=None,
-                     title_block: bool = True, name: str = "zhukovsky-forces"):
+def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                     gravity: bool = False, mu_l: Any = None, mu_F: Any = None, notation: Any = "en",
+                     page: Any = None, title: str | None = None, title_block: bool = True,
+                     name: str = "zhukovsky-forces") -> Scene:
     """Zhukovsky's lever with every force of the force analysis (inertia forces, couples as pairs of
     forces, weights, the load) at the images of their points, and the balancing force F_b at the
     image of the crank pin; M_b = F_b·l_{{OA}} beside the force plans' value.
@@ -301,93 +476,162 @@ def zhukovsky_forces(case, position: int | None = None, *, phi_deg: float | None
     >>> [e.name for e in s.elements if e.name == "F_b"]
     ['F_b']
     """
-    from graphmethods.scene import Point, markup
-    from graphmethods.scene.scale import pick_scale
+    from graphmethods.scene import Point
 
+    L = LEVER_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = in_language(_WL["title"], nt, k=i) if phi_deg is None else \
-        in_language(_WL["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
     mo, lev = fa.motion, fa.lever
-    lk = mo.linkage
-    sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
-                  default_page=Page("A3", "landscape", frame=True))
-    x0, _, x1, _ = sheet.box
-    Fb = complex(lev.F_balance[i])
-    Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
-    d = float(fa.difference_percent(lev.M_balance)[i])
-    texts = [in_language(_WL["turned"], nt), in_language(_WL["couple"], nt),
-             in_language(_WL["equation"], nt, Fb=nt.number(abs(Fb), sig=5)),
-             in_language(_WL["result"], nt, Mb=nt.number(Mb_l, sig=6)),
-             in_language(_WL["plans"], nt, Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
-    right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
-    split = x1 - right_w - 6.0
-    area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)
-    fixed = set(lk.ground)
+    sheet = _sheet(case, nt, "lever", i, phi_deg, page=page, title=title, title_block=title_block)
+    texts = _lever_texts(fa, i, nt)
+    fixed = set(mo.linkage.ground)
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
-    items.append(("F_b", complex(lev.image_pin[i]), Fb))
-    F_max = max(abs(F) for _, _, F in items)
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, 28.0, what="the largest force on the lever")
+    items.append(("F_b", complex(lev.image_pin[i]), complex(lev.F_balance[i])))
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), max(abs(F) for _, _, F in items), L.largest_force_mm,
+                      what="the largest force on the lever")
     cloud = np.array([0j] + list(images.values()) + [z for _, z, _ in items])
-    span_x, span_y = float(np.ptp(cloud.real)), float(np.ptp(cloud.imag))
-    room_x, room_y = area[2] - area[0] - 2 * 32.0, area[3] - area[1] - 2 * 32.0
-    if mu_l is None:
-        s_l = pick_scale(max(span_x * room_y / room_x, span_y, 1e-12), room_y, symbol="μ_l", unit=nt.unit("m"))
-    else:
-        s_l = given_scale(mu_l, "μ_l", nt.unit("m"), max(span_x * room_y / room_x, span_y), room_y,
-                          what="the lever")
-    cx = (area[0] + area[2]) / 2 - (float(cloud.real.min()) + float(cloud.real.max())) / 2 / s_l.per_mm
-    cy = (area[1] + area[3]) / 2 + (float(cloud.imag.min()) + float(cloud.imag.max())) / 2 / s_l.per_mm
-
-    def at(z: complex) -> tuple[float, float]:
-        return (cx + z.real / s_l.per_mm, cy - z.imag / s_l.per_mm)
-
-    els: list = [sheet.header()]
+    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the lever"))
     occ = sheet.occ
     pole = at(0j)
-    els.append(Point(pole, radius_mm=0.7, name="pole"))
-    for p, z in images.items():
-        if abs(z) / s_l.per_mm >= 0.3:
-            ln = Line(pole, at(z), style=THIN, name=f"ray-{p}")
-            els.append(ln)
-            occ.add_primitives(ln.primitives())
-    vec_labels = []
+    els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
+    els += [_drawn(occ, Line(pole, at(z), style=THIN, name=f"ray-{p}")) for p, z in images.items()
+            if abs(z) / s_l.per_mm >= L.min_mm]
+    vec_labels: list[LabelSpec] = []
     for j, (label, z, F) in enumerate(items):
         a = at(z)
         b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
-        v = Vector(a, b, known=True, head_length_mm=2.5, name="F_b" if label == "F_b" else f"force-{j}")
-        els.append(v)
-        occ.add_primitives(v.primitives())
+        els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
+                                      name="F_b" if label == "F_b" else f"force-{j}")))
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
-    for where, text, nm in [(pole, "p", "label-pole")] + names + vec_labels:
-        els += _label(occ, where, text, nm, within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
-    tx = split + 2.0
-    for t_i, t in enumerate(texts):
-        els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
-    scales = (s_l, s_F)
-    els += sheet.captions(scales, legend=in_language(_WL["legend"], nt), reserve=True)
-    return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))
+    els += _labels(occ, [(pole, "p", "label-pole"), *names, *vec_labels], L.within(area))
+    els += column
+    return _finish(sheet, els, (s_l, s_F), nt.word("forces.lever_legend"), name)
 
 
-_WS = {
-    "title": ("Forces on the linkage, position {k}", "Силы, действующие на механизм, положение {k}",
-              "机构上的作用力, 位置 {k}"),
-    "title_phi": ("Forces on the linkage, φ = {phi}°", "Силы, действующие на механизм, φ = {phi}°",
-                  "机构上的作用力, φ = {phi}°"),
-    "inertia": ("inertia forces F_i = −m·a_S at the centres of mass, moments M_i = −J_S·ε",
-                "силы инерции F_и = −m·a_S в центрах масс, моменты M_и = −J_S·ε",
-                "惯性力 F_I = −m·a_S 作用于质心, 惯性力矩 M_I = −J_S·ε"),
-    "balance": ("balancing moment M_b = {Mb} N·m", "уравновешивающий момент M_{{ур}} = {Mb} Н·м",
-                "平衡力矩 M_b = {Mb} N·m"),
-    "legend": ("moments: arcs in their sense", "моменты: дуги в их направлении", "力矩: 按其转向的圆弧"),
-}
+# ----------------------------------------------------------------------------- the forces on the linkage
+
+def _links_of(mo: Any, i: int) -> tuple[list[tuple[str, str]], list[tuple[str, complex]]]:
+    """The linkage drawn in position ``i``: its links as segments between two points, and its sliders'
+    blocks (the point, the guide's direction)."""
+    lk = mo.linkage
+
+    def guide(link: str) -> complex:
+        return complex(np.broadcast_to(mo._state.e[link], (mo.n,))[i])
+
+    segs: list[tuple[str, str]] = [(lk.crank.centre, lk.crank.pin)]
+    blocks: list[tuple[str, complex]] = []
+    for g in lk.groups:
+        if g.kind == "RRR":
+            segs += [(g.P, g.C), (g.Q, g.C)]
+        elif g.kind == "RRP":
+            segs.append((g.P, g.C))
+            blocks.append((g.C, guide(g.links[1])))
+        elif g.kind == "RPR":
+            segs.append((g.Q, g.P))
+            blocks.append((g.P, guide(g.links[1])))
+        elif g.kind == "PRP":
+            blocks += [(g.C, guide(ln)) for ln in g.links]
+        else:
+            segs.append((g.P, g.R))
+            blocks.append((g.P, guide(g.links[0])))
+    segs += [(p.origin, p.name) for p in lk.points]
+    return segs, blocks
 
 
-def force_scheme(case, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
-                 gravity: bool = False, mu_l=None, mu_F=None, notation="en", page=None, title=None,
-                 title_block: bool = True, name: str = "force-scheme"):
+def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -> list[Element]:
+    """The links, the fixed pivots, the sliders' blocks and the joints, kept clear by the labels."""
+    from graphmethods.sheets.kinematic_symbols import FixedPivot, PinJoint, SliderBlock
+
+    lk = mo.linkage
+    segs, blocks = _links_of(mo, i)
+    els: list[Element] = [_drawn(occ, Line(at(z[a]), at(z[b]), name=f"link-{a}-{b}")) for a, b in segs
+                          if abs(z[a] - z[b]) > 0]
+    els += [FixedPivot(at(z[p]), name=f"pivot-{p}") for p in lk.ground]
+    els += [SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}")
+            for j, (p, u) in enumerate(blocks)]
+    joints = {q for s in segs for q in s} - set(lk.ground)
+    els += [PinJoint(at(z[p]), name=f"joint-{p}") for p in sorted(joints)]
+    for el in els:
+        occ.add_primitives(el.primitives())
+    return els
+
+
+def _directions(w: complex, z: dict[str, complex], segs: Sequence[tuple[str, str]]) -> list[float]:
+    """The directions (degrees, counterclockwise from +x) in which the links leave the point ``w`` (m): toward
+    both ends of a link through it, toward the other end of a link ending at it.
+
+    >>> _directions(0j, {"A": -1 + 0j, "B": 1 + 0j, "C": 1j}, [("A", "B"), ("C", "A")])
+    [180.0, 0.0]
+    """
+    out: list[float] = []
+    for a, b in segs:
+        za, zb = z[a], z[b]
+        d = zb - za
+        if abs(d) == 0:
+            continue
+        t = ((w - za) * d.conjugate()).real / abs(d) ** 2
+        if -1e-9 <= t <= 1 + 1e-9 and abs(w - (za + t * d)) <= 1e-9 * abs(d):     # w on the link
+            out += [math.degrees(cmath.phase(e - w)) for e in (za, zb) if abs(e - w) > 1e-9 * abs(d)]
+    return out
+
+
+def clear_direction(avoid: Sequence[float]) -> float:
+    """The direction (degrees, a multiple of 15°, straight up first) farthest from every direction of ``avoid``:
+    where an arc about a joint keeps off its links and forces.
+
+    >>> clear_direction([0.0, 180.0]), clear_direction([90.0]), clear_direction([])
+    (90.0, 270.0, 90.0)
+    """
+    best, best_gap = 90.0, -1.0
+    for mid in range(90, 450, 15):
+        gap = min((abs((mid - a + 180.0) % 360.0 - 180.0) for a in avoid), default=180.0)
+        if gap > best_gap + 1e-9:
+            best, best_gap = float(mid % 360), gap
+    return best
+
+
+def _moment_arc(centre: tuple[float, float], radius_mm: float, sweep_deg: float, avoid: Sequence[float],
+                **kw: Any) -> Element:
+    """A moment's arc of ``sweep_deg`` (signed: its sense) about ``centre``, its middle away from ``avoid``."""
+    from graphmethods.sheets.kinematic_symbols import RotationArrow
+
+    return RotationArrow(centre, radius_mm=radius_mm, start_deg=clear_direction(avoid) - sweep_deg / 2,
+                         sweep_deg=sweep_deg, **kw)
+
+
+def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_F: Scale, nt: Notation,
+             occ: Occupancy, L: ForceFigureLayout,
+             around: Callable[[complex], list[float]]) -> tuple[list[Element], list[LabelSpec]]:
+    """Each applied force drawn to μ_F from its point; each moment as an arc in its sense, on the side of its
+    point away from the links there (``around``) and its force; their labels."""
+
+    els: list[Element] = []
+    labels: list[LabelSpec] = []
+    n_f = 0                                    # the forces drawn (one too short to draw is left out)
+    for label, F, where, M in forces:
+        start = at(where)
+        if abs(F) / s_F.per_mm >= L.min_mm:
+            tip = (start[0] + F.real / s_F.per_mm, start[1] - F.imag / s_F.per_mm)
+            els.append(_drawn(occ, Vector(start, tip, head_length_mm=L.head_mm, name=f"force-{n_f}")))
+            n_f += 1
+            labels.append((tip, _markup(label, nt), f"label-{label}"))
+        if M != 0.0:
+            mlabel = "M" + label[1:] if label.startswith("F") else label
+            avoid = around(where) + ([math.degrees(cmath.phase(F))] if abs(F) > 0 else [])
+            arc = _drawn(occ, _moment_arc(start, L.moment_mm, 100.0 if M > 0 else -100.0, avoid,
+                                          name=f"moment-{mlabel}"))
+            els.append(arc)
+            mid = math.radians(clear_direction(avoid))
+            labels.append(((start[0] + L.moment_mm * math.cos(mid), start[1] - L.moment_mm * math.sin(mid)),
+                           f"{_markup(mlabel, nt)} = {nt.number(M, sig=4)} {nt.unit('N·m')}", f"label-{mlabel}"))
+    return els, labels
+
+
+def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
+                 gravity: bool = False, mu_l: Any = None, mu_F: Any = None, notation: Any = "en", page: Any = None,
+                 title: str | None = None, title_block: bool = True, name: str = "force-scheme") -> Scene:
     """The linkage in one position with every applied force: the inertia forces at the centres of
     mass, the weights (``gravity``), the working load, each drawn to μ_F from its point; the
     inertia and load moments as arcs in their sense; the balancing moment on the crank. The
@@ -400,105 +644,42 @@ def force_scheme(case, position: int | None = None, *, phi_deg: float | None = N
     >>> sorted(e.name for e in s.elements if e.name.startswith("force-"))
     ['force-0', 'force-1', 'force-2']
     """
-    from graphmethods.scene import markup
-    from graphmethods.scene.scale import pick_scale
-    from graphmethods.sheets.kinematic_symbols import FixedPivot, PinJoint, RotationArrow, SliderBlock
 
+    L = SCHEME_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
-    head = in_language(_WS["title"], nt, k=i) if phi_deg is None else \
-        in_language(_WS["title_phi"], nt, phi=nt.number(float(phi_deg), sig=5))
     mo = fa.motion
-    lk = mo.linkage
-    sheet = Sheet(nt=nt, page=page, title=title or head, problem=title_of(case), title_block=title_block,
-                  default_page=Page("A3", "landscape", frame=True))
-    x0, _, x1, _ = sheet.box
-    texts = [in_language(_WS["inertia"], nt),
-             in_language(_WS["balance"], nt, Mb=nt.number(float(fa.M_balance[i]), sig=6))]
-    right_w = max(markup.text_width_mm(t, TEXT_MM) for t in texts)
-    split = x1 - right_w - 6.0
-    area = (x0 + 4.0, sheet.top + 4.0, split - 6.0, sheet.caption_y - 8.0)
+    sheet = _sheet(case, nt, "scheme", i, phi_deg, page=page, title=title, title_block=title_block)
+    Mb = float(fa.M_balance[i])
+    texts = [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(Mb, sig=6))]
     z = {p: complex(mo.z[p][i]) for p in mo.points}
-    # the links as segments between their points
-    segs: list[tuple[str, str]] = [(lk.crank.centre, lk.crank.pin)]
-    blocks: list[tuple[str, complex]] = []
-    for g in lk.groups:
-        if g.kind == "RRR":
-            segs += [(g.P, g.C), (g.Q, g.C)]
-        elif g.kind == "RRP":
-            segs.append((g.P, g.C))
-            blocks.append((g.C, complex(np.broadcast_to(mo._state.e[g.links[1]], (mo.n,))[i])))
-        elif g.kind == "RPR":
-            segs.append((g.Q, g.P))
-            blocks.append((g.P, complex(np.broadcast_to(mo._state.e[g.links[1]], (mo.n,))[i])))
-        elif g.kind == "PRP":
-            blocks += [(g.C, complex(np.broadcast_to(mo._state.e[ln], (mo.n,))[i])) for ln in g.links]
-        else:
-            segs.append((g.P, g.R))
-            blocks.append((g.P, complex(np.broadcast_to(mo._state.e[g.links[0]], (mo.n,))[i])))
-    segs += [(p.origin, p.name) for p in lk.points]
-    forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i]))
-              for fs in fa.applied.values() for f in fs]
+    forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i])) for fs in fa.applied.values() for f in fs]
     F_max = max([abs(F) for _, F, _, _ in forces] + [0.0])
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, 30.0, what="the largest force")
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, L.largest_force_mm, what="the largest force")
     cloud = np.array(list(z.values()))
-    room_x, room_y = area[2] - area[0] - 2 * 34.0, area[3] - area[1] - 2 * 34.0
-    span = max(float(np.ptp(cloud.real)) * room_y / room_x, float(np.ptp(cloud.imag)), 1e-12)
-    s_l = (pick_scale(span, room_y, symbol="μ_l", unit=nt.unit("m")) if mu_l is None
-           else given_scale(mu_l, "μ_l", nt.unit("m"), span, room_y, what="the scheme"))
-    cx = (area[0] + area[2]) / 2 - (float(cloud.real.min()) + float(cloud.real.max())) / 2 / s_l.per_mm
-    cy = (area[1] + area[3]) / 2 + (float(cloud.imag.min()) + float(cloud.imag.max())) / 2 / s_l.per_mm
-
-    def at(w: complex) -> tuple[float, float]:
-        return (cx + w.real / s_l.per_mm, cy - w.imag / s_l.per_mm)
-
-    els: list = [sheet.header()]
+    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
     occ = sheet.occ
-    for a, b in segs:
-        if abs(z[a] - z[b]) > 0:
-            ln = Line(at(z[a]), at(z[b]), name=f"link-{a}-{b}")
-            els.append(ln)
-            occ.add_primitives(ln.primitives())
-    for p in lk.ground:
-        els.append(FixedPivot(at(z[p]), name=f"pivot-{p}"))
-    for j, (p, u) in enumerate(blocks):
-        els.append(SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}"))
-    joints = {q for s in segs for q in s} - set(lk.ground)
-    els += [PinJoint(at(z[p]), name=f"joint-{p}") for p in sorted(joints)]
-    for el in els[1:]:
-        occ.add_primitives(el.primitives())
-    labels = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
-    n_f = 0
-    for label, F, where, M in forces:
-        start = at(where)
-        if abs(F) / s_F.per_mm >= 0.3:
-            tip = (start[0] + F.real / s_F.per_mm, start[1] - F.imag / s_F.per_mm)
-            v = Vector(start, tip, head_length_mm=2.5, name=f"force-{n_f}")
-            n_f += 1
-            els.append(v)
-            occ.add_primitives(v.primitives())
-            labels.append((tip, _markup(label, nt), f"label-{label}"))
-        if M != 0.0:
-            mlabel = "M" + label[1:] if label.startswith("F") else label
-            arc = RotationArrow(start, radius_mm=6.0, start_deg=200.0, sweep_deg=100.0 if M > 0 else -100.0,
-                                name=f"moment-{mlabel}")
-            els.append(arc)
-            occ.add_primitives(arc.primitives())
-            labels.append(((start[0] - 6.0, start[1]), f"{_markup(mlabel, nt)} = {nt.number(M, sig=4)} {nt.unit('N·m')}",
-                           f"label-{mlabel}"))
-    cr = lk.crank
-    Mb = float(fa.M_balance[i])
-    arc_b = RotationArrow(at(z[cr.centre]), radius_mm=9.0, start_deg=20.0, sweep_deg=110.0 if Mb > 0 else -110.0,
-                          label="M_b" if nt.code != "ru" else "M_{ур}", size_mm=SMALL_MM, name="M_b")
-    els.append(arc_b)
-    occ.add_primitives(arc_b.primitives())        # the labels below keep off M_b's arc and its name
-    for at_mm, text, nm in labels:
-        els += _label(occ, at_mm, text, nm, within=(area[0] - 4, area[1] - 4, area[2] + 4, area[3] + 4))
-    tx = split + 2.0
-    for t_i, t in enumerate(texts):
-        els.append(Text((tx, sheet.top + 2.0 + t_i * 6.0), t, size_mm=TEXT_MM, name=f"text-{t_i}"))
-    scales = (s_l, s_F)
-    els += sheet.captions(scales, legend=in_language(_WS["legend"], nt), reserve=True)
-    return sheet.scene(els, scales, name=name, notes=tuple(s.note for s in scales if s.note))
+    els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
+    labels: list[LabelSpec] = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
+    segs, _blocks = _links_of(mo, i)
+
+    pivots = [z[p] for p in mo.linkage.ground]
+
+    def around(w: complex) -> list[float]:
+        """The links at ``w``, and a fixed pivot's symbol (below it)."""
+        below = [240.0, 270.0, 300.0] if any(abs(w - q) <= 1e-12 for q in pivots) else []
+        return _directions(w, z, segs) + below
+
+    drawn, wanted = _applied(forces, at, s_F, nt, occ, L, around)
+    els += drawn
+    labels += wanted
+    cr = mo.linkage.crank
+    # the labels keep off M_b's arc and its name
+    els.append(_drawn(occ, _moment_arc(at(z[cr.centre]), L.balance_mm, 110.0 if Mb > 0 else -110.0,
+                                       around(z[cr.centre]),
+                                       label=nt.sym("forces.M_b"), size_mm=SMALL_MM, name="M_b")))
+    els += _labels(occ, labels, L.within(area))
+    els += column
+    return _finish(sheet, els, (s_l, s_F), nt.word("forces.scheme_legend"), name)

@@ -35,166 +35,21 @@ True
 from __future__ import annotations
 
 import pathlib
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, Scene, in_language, markup, notation as get_notation
+from graphmethods.scene import Axis, Page, Scale, Scene, markup, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.steps import LINE_PITCH, PROJECTOR_TEXT, BuildUp, DesignPage, Rule, enlarge, partition, wrap
 
 #: the caption band under the figure, mm, and the caption size, by page kind
 SLIDE_BAND_MM, SLIDE_CAPTION_MM = 20.0, 6.5
 SHEET_BAND_MM, SHEET_CAPTION_MM = 14.0, 5.0
-
-WORDS = {
-    # velocity plan
-    "pole":       ("Choose the pole p and the velocity scale {mu}", "Выбираем полюс p и масштаб скоростей {mu}",
-                   "选取极点 p 和速度比例尺 {mu}"),
-    "known":      ("From p draw pa ⊥ {link} in the sense of ω_1: {eq}",
-                   "Из полюса p проводим pa ⊥ {link} в сторону ω_1: {eq}",
-                   "自 p 沿 ω_1 方向作 pa ⊥ {link}：{eq}"),
-    "equation":   ("Write the vector equation {eq}", "Записываем векторное уравнение {eq}", "列出矢量方程 {eq}"),
-    "line":       ("Through {at}, draw the direction of {v} {rel}", "Через {at} проводим направление {v} {rel}",
-                   "过 {at} 作 {v} 的方向线 {rel}"),
-    "meet":       ("{x} is where the two lines meet: {values}", "Точка {x} — пересечение двух линий: {values}",
-                   "两线交点即 {x}：{values}"),
-    "similarity": ("{x} by similarity: {eq}", "Точку {x} находим по подобию: {eq}", "按影像原理求 {x}：{eq}"),
-    "proportion": ("{x} by proportion: {eq}", "Точку {x} находим пропорционально: {eq}", "按比例求 {x}：{eq}"),
-    "same":       ("{x} coincides with {y}", "Точка {x} совпадает с {y}", "{x} 与 {y} 重合"),
-    "read":       ("Read off each velocity as length × μ_v, and ω of every link",
-                   "Снимаем скорости: длина × μ_v; угловые скорости звеньев",
-                   "量取各速度（长度 × μ_v），求各构件角速度"),
-    "guide":      ("the guide", "направляющей", "导路"),
-    # acceleration plan
-    "a_pole":     ("Choose the pole π and the acceleration scale {mu}", "Выбираем полюс π и масштаб ускорений {mu}",
-                   "选取极点 π 和加速度比例尺 {mu}"),
-    "a_crank":    ("From π draw πa ∥ {link} toward {O}: {eq}", "Из полюса π проводим πa ∥ {link} к точке {O}: {eq}",
-                   "自 π 作 πa ∥ {link}，指向 {O}：{eq}"),
-    "a_crank_n":  ("From π draw {a} ∥ {link} toward {O}: {eq}", "Из полюса π проводим {a} ∥ {link} к точке {O}: {eq}",
-                   "自 π 作 {a} ∥ {link}，指向 {O}：{eq}"),
-    "a_crank_t":  ("From {n} draw {a} ⊥ {link} in the sense of ε_1: {eq}; πa is a_{{{A}}}",
-                   "Из точки {n} проводим {a} ⊥ {link} в сторону ε_1: {eq}; πa — это a_{{{A}}}",
-                   "自 {n} 沿 ε_1 方向作 {a} ⊥ {link}：{eq}；πa 即 a_{{{A}}}"),
-    "a_normal":   ("From {at} draw {a} ∥ {link} toward {C}: {eq}", "Из точки {at} проводим {a} ∥ {link} к точке {C}: {eq}",
-                   "自 {at} 作 {a} ∥ {link}，指向 {C}：{eq}"),
-    "a_normal_pi": ("From π draw {a} ∥ {link} toward {C}: {eq}", "Из полюса π проводим {a} ∥ {link} к точке {C}: {eq}",
-                    "自 π 作 {a} ∥ {link}，指向 {C}：{eq}"),
-    "a_coriolis": ("From {at} draw the Coriolis component {a}, {dir}: {eq}",
-                   "Из точки {at} проводим кориолисово ускорение {a}, {dir}: {eq}",
-                   "自 {at} 作哥氏加速度 {a}，{dir}：{eq}"),
-    "a_guide":    ("{x}: the point of link {g} under {C}, by similarity", "{x} — точка звена {g} под {C}, по подобию",
-                   "{x}：构件 {g} 上与 {C} 重合之点，按影像原理"),
-    "a_line":     ("Through {at}, draw the direction of {a} {rel}", "Через {at} проводим направление {a} {rel}",
-                   "过 {at} 作 {a} 的方向线 {rel}"),
-    "a_meet":     ("{x} is where the two lines meet: {values}", "Точка {x} — пересечение двух линий: {values}",
-                   "两线交点即 {x}：{values}"),
-    "a_read":     ("Read off each acceleration as length × μ_a, and ε = a^τ/l of every link with its sense",
-                   "Снимаем ускорения: длина × μ_a; угловые ускорения ε = a^τ/l и их направления",
-                   "量取各加速度（长度 × μ_a），由 ε = a^τ/l 求各构件角加速度及其转向"),
-    "a_dir":      ("v_{{{rel}}} turned 90° in the sense of ω_{{{n}}}", "v_{{{rel}}}, повёрнутая на 90° в сторону ω_{{{n}}}",
-                   "v_{{{rel}}} 沿 ω_{{{n}}} 转 90°"),
-    # energy indicator
-    "axis_E":     ("Draw the axis of {E} to {mu} and the start level through a",
-                   "Строим ось {E} в масштабе {mu} и начальный уровень через точку a",
-                   "按比例尺 {mu} 作 {E} 轴，并过 a 作起始水平线"),
-    "interval":   ("Interval {ab}: {A} = {val}, a vector {mm} mm {dir} from {a} to {b}",
-                   "Участок {ab}: {A} = {val}, вектор {mm} мм {dir} от {a} до {b}",
-                   "区间 {ab}：{A} = {val}，自 {a} 向{dir}作 {mm} mm 矢量至 {b}"),
-    "up":         ("up", "вверх", "上"),
-    "down":       ("down", "вниз", "下"),
-    "closure":    ("The staircase closes on the start level: {sum}", "Ломаная замыкается на начальном уровне: {sum}",
-                   "矢量图回到起始水平线：{sum}"),
-    "residual":   ("The staircase misses the start level by {sum} (closure residual)",
-                   "Ломаная не доходит до начального уровня на {sum} (невязка)",
-                   "矢量图与起始水平线相差 {sum}（闭合误差）"),
-    "extremes":   ("Highest point {hi}, lowest point {lo}: {dW} = {val}",
-                   "Наивысшая точка {hi}, наинизшая {lo}: {dW} = {val}",
-                   "最高点 {hi}，最低点 {lo}：{dW} = {val}"),
-    # Wittenbauer diagram
-    "axes_JT":    ("Axes: {J} to {muJ}, {T} to {muT}", "Оси: {J} в масштабе {muJ}, {T} в масштабе {muT}",
-                   "坐标轴：{J} 比例尺 {muJ}，{T} 比例尺 {muT}"),
-    "points":     ("Plot the positions 0…{m}: ({J}/μ_J, {T}/μ_T)", "Наносим точки положений 0…{m}: ({J}/μ_J, {T}/μ_T)",
-                   "描出位置 0…{m} 的点 ({J}/μ_J, {T}/μ_T)"),
-    "curve":      ("Join them in order: the closed curve {T}({J})", "Соединяем их по порядку: замкнутая кривая {T}({J})",
-                   "依次连接：封闭曲线 {T}({J})"),
-    "ray_max":    ("The line at {psi}, tan {psi} = {tan}, touches the curve from above ({w} at {i})",
-                   "Прямая под углом {psi}, tg {psi} = {tan}, касается кривой сверху ({w} в положении {i})",
-                   "作倾角 {psi} 的直线（tan {psi} = {tan}），从上方切于曲线（{w} 在位置 {i}）"),
-    "ray_min":    ("The line at {psi}, tan {psi} = {tan}, touches the curve from below ({w} at {i})",
-                   "Прямая под углом {psi}, tg {psi} = {tan}, касается кривой снизу ({w} в положении {i})",
-                   "作倾角 {psi} 的直线（tan {psi} = {tan}），从下方切于曲线（{w} 在位置 {i}）"),
-    "kl_points":  ("The two lines cut k and l on the ordinate axis", "Прямые отсекают на оси ординат точки k и l",
-                   "两直线在纵轴上截得 k、l 两点"),
-    "kl":         ("Measure kl = {kl} mm", "Измеряем отрезок kl = {kl} мм", "量得 kl = {kl} mm"),
-    "J_F":        ("The flywheel: {JF} = {muT}·kl/({wm}²·{d}) = {J}", "Маховик: {JF} = {muT}·kl/({wm}²·{d}) = {J}",
-                   "飞轮：{JF} = {muT}·kl/({wm}²·{d}) = {J}"),
-    # graphical differentiation (kinematic diagrams)
-    "s_curve":    ("Plot the slider's displacement {s}(φ) at positions 0…{m} from the scheme; {mus}",
-                   "Строим перемещение ползуна {s}(φ) по положениям 0…{m} с плана механизма; {mus}",
-                   "按机构位置图作滑块位移曲线 {s}(φ)，位置 0…{m}；{mus}"),
-    "chords":     ("Join neighbouring points of {f}(φ) by chords", "Соединяем соседние точки {f}(φ) хордами",
-                   "以弦连接 {f}(φ) 的相邻点"),
-    "pole_d":     ("Axes of {g}(φ); the pole {P} at {H} to the left of the origin",
-                   "Оси {g}(φ); полюс {P} на расстоянии {H} левее начала координат",
-                   "作 {g}(φ) 坐标轴；极点 {P} 位于原点左方 {H}"),
-    "rays_d":     ("From {P}, rays parallel to the chords of {f}(φ)", "Из полюса {P} — лучи, параллельные хордам {f}(φ)",
-                   "自 {P} 作平行于 {f}(φ) 各弦的射线"),
-    "project_d":  ("Carry each ray's cut on the ordinate axis to the middle of its interval",
-                   "Переносим отрезки, отсечённые лучами на оси ординат, на середины интервалов",
-                   "将各射线在纵轴上的截点移到对应区间中点"),
-    "curve_d":    ("Join the points by a smooth curve: {g}(φ); {mu}", "Соединяем точки плавной кривой: {g}(φ); {mu}",
-                   "连成光滑曲线 {g}(φ)；{mu}"),
-    "compare_d":  ("Compare with the velocity and acceleration plans and the analytic values",
-                   "Сравниваем с планами скоростей, ускорений и аналитическим расчётом",
-                   "与速度多边形、加速度多边形及解析值比较"),
-    # graphical integration (work diagrams)
-    "moments":    ("Draw the moments {Md} and {Mr} over the cycle; {mu}", "Строим моменты {Md} и {Mr} за цикл; {mu}",
-                   "作一个周期内的力矩 {Md} 与 {Mr}；{mu}"),
-    "means":      ("Replace each strip of {Mr} by its mean ordinate", "Заменяем каждую полоску {Mr} её средней ординатой",
-                   "以平均纵坐标代替 {Mr} 的每一窄条"),
-    "pole_i":     ("The pole {P} at {H} left of the origin; rays from {P} to the mean ordinates carried onto the axis",
-                   "Полюс {P} на {H} левее начала; лучи из {P} к средним ординатам, перенесённым на ось",
-                   "极点 {P} 位于原点左方 {H}；自 {P} 向移到纵轴上的平均纵坐标作射线"),
-    "chords_i":   ("Chords parallel to the rays, interval after interval: {Ad}(φ) and {Ar}(φ); {mu}",
-                   "Хорды, параллельные лучам, участок за участком: {Ad}(φ) и {Ar}(φ); {mu}",
-                   "逐区间作平行于射线的弦：{Ad}(φ) 与 {Ar}(φ)；{mu}"),
-    "dE":         ("Their difference, the excess work: {eq}", "Их разность — избыточная работа: {eq}",
-                   "两者之差即盈亏功：{eq}"),
-    "accuracy":   ("Compare with the exact integrals", "Сравниваем с точными интегралами", "与精确积分比较"),
-    # Zhukovsky's lever
-    "lever":      ("The velocity plan turned 90° against ω_1: a rigid lever pivoted at p; {mu}",
-                   "План скоростей, повёрнутый на 90° против ω_1, — жёсткий рычаг с опорой в полюсе p; {mu}",
-                   "将速度多边形逆 ω_1 转 90°，视为绕极点 p 转动的刚性杠杆；{mu}"),
-    "load":       ("Apply the load at the image of its point: {F}", "Прикладываем нагрузку в образе её точки: {F}",
-                   "将载荷加在其作用点的影像上：{F}"),
-    "arm":        ("Its arm about p: {h}", "Её плечо относительно p: {h}", "其对 p 的力臂：{h}"),
-    "balance":    ("Moments about p: {Mr} = F·h·μ_v/ω_1, as by the power method",
-                   "Моменты относительно p: {Mr} = F·h·μ_v/ω_1 — как и по методу мощностей",
-                   "对 p 取矩：{Mr} = F·h·μ_v/ω_1，与功率法相同"),
-    # kinematic scheme in m positions
-    "frame":      ("The fixed pivots and guides to {mu}; the circle of the crank pin",
-                   "Неподвижные опоры и направляющие в масштабе {mu}; окружность кривошипа",
-                   "按 {mu} 作固定铰链与导路；曲柄销轨迹圆"),
-    "crank_pos":  ("Divide the crank circle into {m} equal parts from position 0: the crank {c} in each",
-                   "Делим окружность кривошипа на {m} равных частей от положения 0: кривошип {c} в каждом",
-                   "自位置 0 将曲柄圆 {m} 等分：各位置的曲柄 {c}"),
-    "output_pos": ("In each position find {pts} by the link lengths (the compass): the links {links}",
-                   "В каждом положении находим {pts} по длинам звеньев (засечками): звенья {links}",
-                   "在各位置按杆长（圆规截取）求 {pts}：构件 {links}"),
-    "paths":      ("Join each point's positions: its path", "Соединяем положения каждой точки: её траектория",
-                   "连接各点的各个位置：其轨迹"),
-    "extremes_s": ("The extreme positions of the output and its stroke", "Крайние положения выходного звена и его ход",
-                   "输出构件的极限位置及行程"),
-    "thick":      ("One position drawn thick, with its joints, blocks, centres of mass and ω_1",
-                   "Одно положение — толстыми линиями: шарниры, ползуны, центры масс и ω_1",
-                   "以粗线画出一个位置：铰链、滑块、质心与 ω_1"),
-}
-
-
-def _w(nt, key: str, **kw) -> str:
-    return in_language(WORDS[key], nt, **kw)
 
 
 # ----------------------------------------------------------------------------- pages
@@ -360,7 +215,7 @@ def projector_figure(make: Callable[[Page], Scene]) -> Scene:
     >>> from graphmethods.problems import builtin
     >>> from graphmethods.sheets.forces import force_scheme
     >>> s = projector_figure(lambda pg: force_scheme(builtin.case("press"), 3, page=pg, title_block=False))
-    >>> s.page.size, any(n.startswith("drawn 1.1 : 1") for n in s.notes)
+    >>> s.page.size, any(n.startswith("drawn 1.2 : 1") for n in s.notes)
     ('SLIDE', True)
     """
     from graphmethods.scene.steps import Step
@@ -425,6 +280,11 @@ def _text_of(figure, name: str) -> str:
     return next((str(getattr(e, "text", "")) for e in figure.elements if e.name == name), "")
 
 
+def _starts(*prefixes: str) -> Callable[[str], bool]:
+    """Rule: the elements whose names begin with one of ``prefixes``."""
+    return lambda n: n.startswith(prefixes)
+
+
 def _leader_of(names):
     """Rule: the element named one of ``names``, or a leader line drawn to it (``leader-NAME``)."""
     wanted = set(names)
@@ -433,8 +293,22 @@ def _leader_of(names):
 
 # ----------------------------------------------------------------------------- velocity plan
 
-def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", page="slide", m=None,
-                        omega_1=None, mu_v=None) -> BuildUp:
+def _draws(rule: Rule, names: set[str]) -> bool:
+    """Whether ``rule`` (a name, names or a predicate) takes any of ``names``."""
+    if callable(rule):
+        return any(rule(n) for n in names)
+    return bool(({rule} if isinstance(rule, str) else set(rule)) & names)
+
+
+def _kept(rules: Sequence[tuple[str, Rule]], figure: Scene) -> list[tuple[str, Rule]]:
+    """``rules`` without the steps that draw nothing of their own (an image that coincides with one drawn
+    before); the last step, which takes what no rule names, stays."""
+    drawn = {e.name for e in figure.elements}
+    return [r for r in rules[:-1] if _draws(r[1], drawn)] + [rules[-1]]
+
+
+def velocity_plan_steps(linkage: Any, position: int | None = None, *, notation: Any = "en", page: Any = "slide",
+                        m: int | None = None, omega_1: float | None = None, mu_v: Any = None) -> BuildUp:
     """The velocity plan of one position, step by step, from its construction records.
 
     Parameters
@@ -457,28 +331,33 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
-    lk = K._Linkage.of(linkage, m=m, omega_1=omega_1)
-    plans = lk.plans
+    plans = K._Linkage.of(linkage, m=m, omega_1=omega_1).plans
     k = K.fullest_position(plans) if position is None else position
     figure = K.velocity_plan(linkage, k, m=m, omega_1=omega_1, mu_v=mu_v, notation=nt, page=pg, title_block=tb)
-    k = int(k)
+    first: tuple[str, Rule] = (nt.word("steps.pole", mu=figure.scales()[0].caption(nt)),
+                               _leader_of(["title", "pole", "name-p", "scale-captions", "legend", "equation-0"]))
+    rules = _kept([first, *_velocity_rules(figure, plans, int(k), nt), (nt.word("steps.read"), lambda n: False)],
+                  figure)
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+def _velocity_rules(figure: Scene, plans: Any, k: int, nt: Notation) -> list[tuple[str, Rule]]:
+    """One step per construction record after the pole: pa ⊥ OA; for a point found by intersection its
+    two lines and their meeting point; an image by similarity or proportion; one that coincides."""
+    from graphmethods.sheets import kinematics as K
+
     mech = plans.positions.mechanism
-    s_v = figure.scales()[0]
     unit = K._unit(nt, "m/s")
-    images, vectors = K._plan_layout(plans)
+    _images, vectors = K._plan_layout(plans)
     eq_text = {e.name: _text_of(figure, e.name) for e in figure.elements if e.name.startswith("equation-")}
     label_of = {c.label: n for n, c in plans.constructions.items()}
 
-    def vec(start, end):
-        return f"vector-{start}{end}"
-
-    def value(symbol, start, end):
+    def value(symbol: str, start: str, end: str) -> str:
         v = float(np.hypot(*(np.asarray(plans.v(label_of[end])[k]) - (0 if start == "p" else
                                                                       np.asarray(plans.v(label_of[start])[k])))))
         return f"{symbol} = {nt.number(v, sig=4)} {unit}"
 
-    rules = [(_w(nt, "pole", mu=s_v.caption(nt)), _leader_of(["title", "pole", "name-p", "scale-captions",
-                                                                  "legend", "equation-0"]))]
+    rules: list[tuple[str, Rule]] = []
     eq_i = 1
     for name, c in plans.constructions.items():
         x = c.label
@@ -487,48 +366,47 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
         eq = eq_text.get(f"equation-{eq_i}", "")
         if c.method in ("known", "intersection", "similarity", "proportion"):
             eq_i += 1
+        own = _leader_of([f"vector-p{x}", f"name-{x}", f"equation-{eq_i - 1}"])
         if c.method == "known":
             crank = next(ln for ln, (a, b) in mech.link_joints.items() if b == name)
-            rules.append((_w(nt, "known", link=K._sub(crank), eq=eq),
-                          _leader_of([vec("p", x), f"name-{x}", f"equation-{eq_i - 1}"])))
+            rules.append((nt.word("steps.known", link=K._sub(crank), eq=eq), own))
         elif c.method == "intersection":
-            first = True
-            for ln in c.lines:
-                rel = "⊥" if ln.relation == "perpendicular" else "∥"
-                to = _w(nt, "guide") if ln.to == "guide" else K._sub(ln.to)
-                if ln.through == "p":
-                    v = f"v_{{{name}}}"
-                else:
-                    y = label_of[ln.through]
-                    v = f"v_{{{K._rel_name(mech, name, y)}}}"
-                names = [f"line-{name}-{ln.through}", f"label-line-{name}-{ln.through}"]
-                if first:
-                    names.append(f"equation-{eq_i - 1}")
-                    first = False
-                rules.append((_w(nt, "line", at=K._plan_markup(ln.through), v=v, rel=f"{rel} {to}"),
-                              _leader_of(names)))
+            rules += _velocity_line_rules(nt, mech, name, c.lines, label_of, f"equation-{eq_i - 1}")
             found = [pv for pv in vectors if pv.end == x]
             vals = ",  ".join(value(pv.symbol, pv.start, pv.end) for pv in found)
-            rules.append((_w(nt, "meet", x=K._plan_markup(x), values=vals),
-                          _leader_of([vec(pv.start, pv.end) for pv in found] + [f"name-{x}"])))
+            rules.append((nt.word("steps.meet", x=K._plan_markup(x), values=vals),
+                          _leader_of([f"vector-{pv.start}{pv.end}" for pv in found] + [f"name-{x}"])))
         elif c.method in ("similarity", "proportion"):
-            rules.append((_w(nt, c.method, x=K._plan_markup(x), eq=eq),
-                          _leader_of([vec("p", x), f"name-{x}", f"equation-{eq_i - 1}"])))
+            rules.append((nt.word(f"steps.{c.method}", x=K._plan_markup(x), eq=eq), own))
         else:  # "same": its image coincides with another one found before
             other = next((cc.label for nn, cc in plans.constructions.items() if cc.label == x and nn != name), x)
-            rules.append((_w(nt, "same", x=K._sub(name), y=K._plan_markup(other)),
-                          _leader_of([vec("p", x)])))
-    rules.append((_w(nt, "read"), lambda n: False))
-    # drop steps with nothing of their own to draw (an image that coincides with one drawn before)
-    drawn = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in drawn)] + [rules[-1]]
-    return _build(figure, rules, box, cap_mm, rest=len(rules))
+            rules.append((nt.word("steps.same", x=K._sub(name), y=K._plan_markup(other)),
+                          _leader_of([f"vector-p{x}"])))
+    return rules
+
+
+def _velocity_line_rules(nt: Notation, mech: Any, name: str, lines: Any, label_of: dict[str, str],
+                         equation: str) -> list[tuple[str, Rule]]:
+    """The two lines whose meeting point is ``name``'s image: through a known image (relative velocity) or
+    through p, each ∥ or ⊥ a link or the guide; the vector equation goes with the first."""
+    from graphmethods.sheets import kinematics as K
+
+    rules: list[tuple[str, Rule]] = []
+    for n_ln, ln in enumerate(lines):
+        rel = "⊥" if ln.relation == "perpendicular" else "∥"
+        to = nt.word("steps.guide") if ln.to == "guide" else K._sub(ln.to)
+        v = f"v_{{{name}}}" if ln.through == "p" else f"v_{{{K._rel_name(mech, name, label_of[ln.through])}}}"
+        names = [f"line-{name}-{ln.through}", f"label-line-{name}-{ln.through}"] + ([equation] if n_ln == 0 else [])
+        rules.append((nt.word("steps.line", at=K._plan_markup(ln.through), v=v, rel=f"{rel} {to}"),
+                      _leader_of(names)))
+    return rules
 
 
 # ----------------------------------------------------------------------------- acceleration plan
 
-def acceleration_plan_steps(linkage, position: int | None = None, *, notation="en", page="slide", m=None,
-                            omega_1=None, epsilon_1: float = 0.0, mu_a=None) -> BuildUp:
+def acceleration_plan_steps(linkage: Any, position: int | None = None, *, notation: Any = "en",
+                            page: Any = "slide", m: int | None = None, omega_1: float | None = None,
+                            epsilon_1: float = 0.0, mu_a: Any = None) -> BuildUp:
     """The acceleration plan of one position, step by step, from its construction.
 
     The pole and μ_a; the crank pin's components; for every group each known component (the
@@ -555,7 +433,7 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
     Through n_{BA}, draw the direction of a^τ_{BA} ⊥ AB
     Through π, draw the direction of a_{B} ∥ the guide
     """
-    from graphmethods.sheets import acceleration as SA, kinematics as K
+    from graphmethods.sheets import acceleration as SA
 
     nt = get_notation(notation)
     pg, box, cap_mm, tb = step_page(page)
@@ -566,89 +444,114 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
     figure = SA.acceleration_plan(linkage, k, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a, notation=nt,
                                   page=pg, title_block=tb)
     plan = plans[k]
-    s_a = figure.scales()[0]
-    unit = SA._unit(nt, "m/s²")
-    cr = pr.linkage.crank
-    eqs = SA._equations(plan, pr.linkage, nt)
+    tx = _AccelerationText(nt, SA._equations(plan, pr.linkage, nt), SA._unit(nt, "m/s²"))
+    rules: list[tuple[str, Rule]] = [(nt.word("steps.a_pole", mu=figure.scales()[0].caption(nt)), _leader_of(
+        ["title", "pole", "name-pi", "scale-captions", "legend", "equation-phi"]))]
+    for j, st_ in enumerate(plan.steps):
+        if st_.method == "crank":
+            rules += _acceleration_crank_rules(tx, j, st_, pr.linkage.crank)
+        elif st_.method != "intersection":
+            c = st_.components[0]
+            x = SA.image(st_.label)
+            cap = (nt.word("steps.similarity", x=x, eq=tx.eqs[j][0]) if st_.method == "similarity"
+                   else nt.word("steps.same", x=x, y=SA.image(plan.labels[st_.on[0]]) if st_.on else ""))
+            rules.append((cap, _leader_of([SA._elname(c), _a_name(st_.label), f"equation-{j}"])))
+        else:
+            rules += _acceleration_intersection_rules(tx, j, st_)
+    rules = _kept(rules + [(nt.word("steps.a_read"), lambda n: False)], figure)
+    return _build(figure, rules, box, cap_mm, rest=len(rules))
 
-    def vec(c) -> str:
-        return SA._elname(c)
 
-    def name(label: str) -> str:
-        return f"name-{SA._id(label)}"
+def _a_name(label: str) -> str:
+    """The element name of an acceleration image's letter."""
+    from graphmethods.sheets import acceleration as SA
 
-    def val(c) -> str:
-        return f"{SA.symbol(c.symbol)} = {nt.number(c.magnitude, sig=4)} {unit}"
+    return f"name-{SA._id(label)}"
 
-    def first_value(j: int, c) -> str:
+
+@dataclass(frozen=True)
+class _AccelerationText:
+    """How the acceleration steps write a component: the notation, each step's (equation, values) line as
+    the figure writes them, and the unit."""
+
+    nt: Notation
+    eqs: Any
+    unit: str
+
+    def value(self, c: Any) -> str:
+        """``a^n_{BA} = 12.5 m/s²``."""
+        from graphmethods.sheets import acceleration as SA
+
+        return f"{SA.symbol(c.symbol)} = {self.nt.number(c.magnitude, sig=4)} {self.unit}"
+
+    def first_value(self, j: int, c: Any) -> str:
         """The part of the values line of step j that gives component c."""
-        for part in eqs[j][1].split(";  "):
+        from graphmethods.sheets import acceleration as SA
+
+        for part in self.eqs[j][1].split(";  "):
             if part.startswith(SA.symbol(c.symbol) + " ="):
                 return part
-        return val(c)
+        return self.value(c)
 
-    rules: list = [(_w(nt, "a_pole", mu=s_a.caption(nt)),
-                    _leader_of(["title", "pole", "name-pi", "scale-captions", "legend", "equation-phi"]))]
-    for j, st_ in enumerate(plan.steps):
-        x = st_.label
-        eq_names = [f"equation-{j}", f"values-{j}"]
-        if st_.method == "crank":
-            link = f"{cr.pin}{cr.centre}"
-            if len(st_.components) == 1:
-                c = st_.components[0]
-                rules.append((_w(nt, "a_crank", link=K._sub(link), O=K._sub(cr.centre), eq=first_value(j, c)),
-                              _leader_of([vec(c), name(x)] + eq_names)))
-            else:
-                cn, ct, ca = st_.components
-                rules.append((_w(nt, "a_crank_n", a=SA.symbol(cn.symbol), link=K._sub(link), O=K._sub(cr.centre),
-                                 eq=first_value(j, cn)), _leader_of([vec(cn), name(cn.end)] + eq_names)))
-                rules.append((_w(nt, "a_crank_t", n=SA.image(cn.end), a=SA.symbol(ct.symbol),
-                                 link=K._sub(cr.centre + cr.pin), eq=first_value(j, ct), A=cr.pin),
-                              _leader_of([vec(ct), vec(ca), name(x), f"values-{j}-1"])))
-            continue
-        if st_.method != "intersection":
-            c = st_.components[0]
-            word = "similarity" if st_.method == "similarity" else "same"
-            cap = (_w(nt, "similarity", x=SA.image(x), eq=eqs[j][0]) if word == "similarity"
-                   else _w(nt, "same", x=SA.image(x), y=SA.image(plan.labels[st_.on[0]]) if st_.on else ""))
-            rules.append((cap, _leader_of([vec(c), name(x), f"equation-{j}"])))
-            continue
-        first = True
-        for i, c in enumerate(c for c in st_.components if c.known):
-            names = [vec(c), name(c.end)] + (eq_names if first else [f"values-{j}-{i}"])   # its own values line
-            first = False
-            if c.kind == "normal":
-                centre = c.symbol.split("_", 1)[1][len(st_.point):]
-                rules.append((_w(nt, "a_normal_pi" if c.start == "π" else "a_normal", at=SA.image(c.start),
-                                 a=SA.symbol(c.symbol),
-                                 link=K._sub(centre + st_.point), C=K._sub(centre), eq=first_value(j, c)),
-                              _leader_of(names)))
-            elif c.kind == "coriolis":
-                rel = c.symbol.split("_", 1)[1]
-                rules.append((_w(nt, "a_coriolis", at=SA.image(c.start), a=SA.symbol(c.symbol),
-                                 dir=_w(nt, "a_dir", rel=rel, n=c.link), eq=first_value(j, c)), _leader_of(names)))
-            else:                                           # the guide's point under the slider
-                rules.append((_w(nt, "a_guide", x=SA.image(c.end), g=c.link or "?", C=K._sub(st_.point)),
-                              _leader_of(names)))
-        for ln in st_.lines:
-            along = next((c for c in st_.components if not c.known and c.start == ln.through and c.kind != "absolute"),
-                         None)
-            if along is None:
-                along = next(c for c in st_.components if c.kind == "absolute")
-            relation = ln.label.replace("⟂", "⊥").split(" ", 1)
-            to = _w(nt, "guide") if relation[1] in ("guide", "slot") else K._sub(relation[1])
-            lname = f"line-{st_.point}-{SA._id(ln.through)}"
-            names = [lname, f"label-{lname}"] + (eq_names if first else [])
-            first = False
-            rules.append((_w(nt, "a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol), rel=f"{relation[0]} {to}"),
+
+def _acceleration_crank_rules(tx: _AccelerationText, j: int, st_: Any, cr: Any) -> list[tuple[str, Rule]]:
+    """The crank pin's acceleration: πa ∥ OA alone (ε_1 = 0), or its normal and tangential parts."""
+    from graphmethods.sheets import acceleration as SA, kinematics as K
+
+    nt = tx.nt
+    eq_names = [f"equation-{j}", f"values-{j}"]
+    link = f"{cr.pin}{cr.centre}"
+    if len(st_.components) == 1:
+        c = st_.components[0]
+        return [(nt.word("steps.a_crank", link=K._sub(link), O=K._sub(cr.centre), eq=tx.first_value(j, c)),
+                 _leader_of([SA._elname(c), _a_name(st_.label)] + eq_names))]
+    cn, ct, ca = st_.components
+    return [(nt.word("steps.a_crank_n", a=SA.symbol(cn.symbol), link=K._sub(link), O=K._sub(cr.centre),
+                     eq=tx.first_value(j, cn)), _leader_of([SA._elname(cn), _a_name(cn.end)] + eq_names)),
+            (nt.word("steps.a_crank_t", n=SA.image(cn.end), a=SA.symbol(ct.symbol), link=K._sub(cr.centre + cr.pin),
+                     eq=tx.first_value(j, ct), A=cr.pin),
+             _leader_of([SA._elname(ct), SA._elname(ca), _a_name(st_.label), f"values-{j}-1"]))]
+
+
+def _acceleration_intersection_rules(tx: _AccelerationText, j: int, st_: Any) -> list[tuple[str, Rule]]:
+    """A point found by intersection: each known component (normal, Coriolis, the guide's point), each
+    dashed direction of an unknown one, then the meeting point; the equation goes with the first."""
+    from graphmethods.sheets import acceleration as SA, kinematics as K
+
+    nt = tx.nt
+    eq_names = [f"equation-{j}", f"values-{j}"]
+    rules: list[tuple[str, Rule]] = []
+    for i, c in enumerate(c for c in st_.components if c.known):
+        names = [SA._elname(c), _a_name(c.end)] + (eq_names if not rules else [f"values-{j}-{i}"])  # its own values
+        if c.kind == "normal":
+            centre = c.symbol.split("_", 1)[1][len(st_.point):]
+            rules.append((nt.word("steps.a_normal_pi" if c.start == "π" else "steps.a_normal", at=SA.image(c.start),
+                                  a=SA.symbol(c.symbol), link=K._sub(centre + st_.point), C=K._sub(centre),
+                                  eq=tx.first_value(j, c)), _leader_of(names)))
+        elif c.kind == "coriolis":
+            rel = c.symbol.split("_", 1)[1]
+            rules.append((nt.word("steps.a_coriolis", at=SA.image(c.start), a=SA.symbol(c.symbol),
+                                  dir=nt.word("steps.a_dir", rel=rel, n=c.link), eq=tx.first_value(j, c)),
                           _leader_of(names)))
-        found = [c for c in st_.components if not c.known]
-        vals = ",  ".join(val(c) for c in found)
-        rules.append((_w(nt, "a_meet", x=SA.image(x), values=vals), _leader_of([vec(c) for c in found] + [name(x)])))
-    rules.append((_w(nt, "a_read"), lambda n: False))
-    names_ = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in names_)] + [rules[-1]]
-    return _build(figure, rules, box, cap_mm, rest=len(rules))
+        else:                                           # the guide's point under the slider
+            rules.append((nt.word("steps.a_guide", x=SA.image(c.end), g=c.link or "?", C=K._sub(st_.point)),
+                          _leader_of(names)))
+    for ln in st_.lines:
+        along = next((c for c in st_.components if not c.known and c.start == ln.through and c.kind != "absolute"),
+                     None)
+        if along is None:
+            along = next(c for c in st_.components if c.kind == "absolute")
+        relation = ln.label.replace("⟂", "⊥").split(" ", 1)
+        to = nt.word("steps.guide") if relation[1] in ("guide", "slot") else K._sub(relation[1])
+        lname = f"line-{st_.point}-{SA._id(ln.through)}"
+        names = [lname, f"label-{lname}"] + (eq_names if not rules else [])
+        rules.append((nt.word("steps.a_line", at=SA.image(ln.through), a=SA.symbol(along.symbol),
+                              rel=f"{relation[0]} {to}"), _leader_of(names)))
+    found = [c for c in st_.components if not c.known]
+    vals = ",  ".join(tx.value(c) for c in found)
+    rules.append((nt.word("steps.a_meet", x=SA.image(st_.label), values=vals),
+                  _leader_of([SA._elname(c) for c in found] + [_a_name(st_.label)])))
+    return rules
 
 
 # ----------------------------------------------------------------------------- energy indicator
@@ -671,18 +574,19 @@ def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, wor
     s_E = _axis_scale(figure, "axis-E")
     u = nt.unit(work_unit)
     lab = ew.labels
-    rules: list[tuple[str, Rule]] = [(_w(nt, "axis_E", E=nt.sym("E"), mu=s_E.caption(nt)),
+    rules: list[tuple[str, Rule]] = [(nt.word("steps.axis_E", E=nt.sym("E"), mu=s_E.caption(nt)),
               ["title", "axis-E", "start-level", f"name-{lab[0]}", "scale-captions", "legend"])]
     for i, A in enumerate(ew.work):
         a, b = lab[i], lab[i + 1]
-        cap = _w(nt, "interval", ab=f"{a}{b}", A=nt.sym("A"), val=f"{nt.number(float(A))} {u}",
-                 mm=nt.number(abs(s_E.to_mm(float(A))), sig=4), dir=_w(nt, "up" if A > 0 else "down"), a=a, b=b)
+        cap = nt.word("steps.interval", ab=f"{a}{b}", A=nt.sym("A"), val=f"{nt.number(float(A))} {u}",
+                      mm=nt.number(abs(s_E.to_mm(float(A))), sig=4),
+                      dir=nt.word("steps.up" if A > 0 else "steps.down"), a=a, b=b)
         rules.append((cap, [f"vector-{a}{b}", f"value-{i + 1}", f"name-{b}", f"level-{b}"]))
     res = float(ew.residual)
     closed = abs(res) <= 1e-9 * (float(np.abs(ew.work).sum()) or 1.0)
     total = f"Σ{nt.sym('A')} = {nt.number(0.0 if closed else res)} {u}"
-    rules.append((_w(nt, "closure" if closed else "residual", sum=total), ["closure", "leader-closure"]))
-    rules.append((_w(nt, "extremes", hi=lab[ew.index_E_max], lo=lab[ew.index_E_min], dW=nt.sym("delta_W_max"),
+    rules.append((nt.word("steps.closure" if closed else "steps.residual", sum=total), ["closure", "leader-closure"]))
+    rules.append((nt.word("steps.extremes", hi=lab[ew.index_E_max], lo=lab[ew.index_E_min], dW=nt.sym("delta_W_max"),
                      val=f"{nt.number(float(ew.delta_W_max))} {u}"),
                   lambda n: n in ("level-max", "level-min", "dimension-delta-W-max") or n.endswith(("E_max", "E_min"))))
     return _build(figure, rules, box, cap_mm, rest=None)
@@ -711,29 +615,27 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     res = data.result(s_J.per_mm, s_T.per_mm)
     J, T = nt.sym("dynamics.J_e"), nt.sym("dynamics.dT")
 
-    def starts(*prefixes):
-        return lambda n: n.startswith(prefixes)
-
     ray = {}
     for key in ("max", "min"):
         idx = res.index_omega_max if key == "max" else res.index_omega_min
         psi = nt.sym(f"dynamics.psi_{key}")
         tan = res.tan_psi_max if key == "max" else res.tan_psi_min
-        ray[key] = (_w(nt, f"ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4),
-                       w=nt.sym(f"dynamics.omega_{key}"), i=", ".join(str(int(i)) for i in idx)),
-                    starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
+        ray[key] = (nt.word(f"steps.ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4),
+                            w=nt.sym(f"dynamics.omega_{key}"), i=", ".join(str(int(i)) for i in idx)),
+                    _starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
                            f"label-omega-{key}", f"leader-omega-{key}"))
     rules = [
-        (_w(nt, "axes_JT", J=J, T=T, muJ=s_J.caption(nt), muT=s_T.caption(nt)),
+        (nt.word("steps.axes_JT", J=J, T=T, muJ=s_J.caption(nt), muT=s_T.caption(nt)),
          ["title", "axis-T", "axis-J", "scale-captions"]),
-        (_w(nt, "points", m=res.m - 1, J=J, T=T), starts("vertex-", "pos-", "leader-pos-")),
-        (_w(nt, "curve", J=J, T=T), ["curve"]),
+        (nt.word("steps.points", m=res.m - 1, J=J, T=T), _starts("vertex-", "pos-", "leader-pos-")),
+        (nt.word("steps.curve", J=J, T=T), ["curve"]),
         ray["max"],
         ray["min"],
-        (_w(nt, "kl_points"), ["point-k", "point-l", "name-k", "name-l"]),
-        (_w(nt, "kl", kl=nt.number(float(res.kl_mm))), ["dimension-kl", "label-kl", "leader-kl"]),
-        (_w(nt, "J_F", JF=nt.sym("dynamics.J_F"), muT=nt.sym("mu_T"), wm=nt.sym("dynamics.omega_m"),
-              d=nt.sym("dynamics.delta"), J=f"{nt.number(float(res.J_F), sig=4)} {nt.unit('kg·m²')}"), lambda n: False),
+        (nt.word("steps.kl_points"), ["point-k", "point-l", "name-k", "name-l"]),
+        (nt.word("steps.kl", kl=nt.number(float(res.kl_mm))), ["dimension-kl", "label-kl", "leader-kl"]),
+        (nt.word("steps.J_F", JF=nt.sym("dynamics.J_F"), muT=nt.sym("mu_T"), wm=nt.sym("dynamics.omega_m"),
+                 d=nt.sym("dynamics.delta"), J=f"{nt.number(float(res.J_F), sig=4)} {nt.unit('kg·m²')}"),
+         lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
@@ -757,23 +659,21 @@ def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) 
     figure = C.kinematic_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     s_, v_, a_ = nt.sym("calculus.s"), nt.sym("calculus.v"), nt.sym("calculus.a")
 
-    def starts(*prefixes):
-        return lambda n: n.startswith(prefixes)
-
-    rules = [(_w(nt, "s_curve", s=s_, m=m, mus=_text_of(figure, "formula-s-1")),
-              starts("title", "axis-phi-s", "axis-s", "ordinate-s-", "dot-s-", "curve-s", "formula-s-",
-                     "scale-captions"))]
+    rules = [(nt.word("steps.s_curve", s=s_, m=m, mus=_text_of(figure, "formula-s-1")),
+              _starts("title", "axis-phi-s", "axis-s", "ordinate-s-", "dot-s-", "curve-s", "formula-s-",
+                      "scale-captions"))]
     for f, g, pole, H, band in ((s_, v_, "pole-v-", "H1", "v"), (v_, a_, "pole-a-", "H2", "a")):
         rules += [
-            (_w(nt, "chords", f=f), starts(f"chord-{'s' if band == 'v' else 'v'}-")),
-            (_w(nt, "pole_d", g=g, P=_text_of(figure, f"{pole}label"), H=_text_of(figure, f"dimension-{H}-text")),
-             starts(f"axis-phi-{band}", f"axis-{band}", pole, f"dimension-{H}")),
-            (_w(nt, "rays_d", P=_text_of(figure, f"{pole}label"), f=f), starts(f"ray-{band}-")),
-            (_w(nt, "project_d"), starts(f"projection-{band}-", f"dot-{band}-")),
-            (_w(nt, "curve_d", g=g, mu=_text_of(figure, f"formula-{band}-1")), starts(f"curve-{band}",
-                                                                                       f"formula-{band}-")),
+            (nt.word("steps.chords", f=f), _starts(f"chord-{'s' if band == 'v' else 'v'}-")),
+            (nt.word("steps.pole_d", g=g, P=_text_of(figure, f"{pole}label"),
+                     H=_text_of(figure, f"dimension-{H}-text")),
+             _starts(f"axis-phi-{band}", f"axis-{band}", pole, f"dimension-{H}")),
+            (nt.word("steps.rays_d", P=_text_of(figure, f"{pole}label"), f=f), _starts(f"ray-{band}-")),
+            (nt.word("steps.project_d"), _starts(f"projection-{band}-", f"dot-{band}-")),
+            (nt.word("steps.curve_d", g=g, mu=_text_of(figure, f"formula-{band}-1")),
+             _starts(f"curve-{band}", f"formula-{band}-")),
         ]
-    rules.append((_w(nt, "compare_d"), lambda n: False))
+    rules.append((nt.word("steps.compare_d"), lambda n: False))
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
@@ -793,20 +693,18 @@ def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> B
     figure = C.work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     P = _text_of(figure, "pole-label")
 
-    def starts(*prefixes):
-        return lambda n: n.startswith(prefixes)
-
     rules = [
-        (_w(nt, "moments", Md=nt.sym("M_d"), Mr=nt.sym("M_r"), mu=_text_of(figure, "formula-M-1")),
-         starts("title", "axis-phi-M", "axis-M", "curve-M_", "name-M-", "formula-M-", "scale-captions")),
-        (_w(nt, "means", Mr=nt.sym("M_r")), starts("mean-")),
-        (_w(nt, "pole_i", P=P, H=_text_of(figure, "dimension-H-text")), starts("pole-", "dimension-H", "ray-",
+        (nt.word("steps.moments", Md=nt.sym("M_d"), Mr=nt.sym("M_r"), mu=_text_of(figure, "formula-M-1")),
+         _starts("title", "axis-phi-M", "axis-M", "curve-M_", "name-M-", "formula-M-", "scale-captions")),
+        (nt.word("steps.means", Mr=nt.sym("M_r")), _starts("mean-")),
+        (nt.word("steps.pole_i", P=P, H=_text_of(figure, "dimension-H-text")), _starts("pole-", "dimension-H", "ray-",
                                                                                "projection-")),
-        (_w(nt, "chords_i", Ad=nt.sym("calculus.A_d"), Ar=nt.sym("calculus.A_r"), mu=_text_of(figure, "formula-A-1")),
-         starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
-        (_w(nt, "dE", eq=_text_of(figure, "formula-dE-1")), starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
+        (nt.word("steps.chords_i", Ad=nt.sym("calculus.A_d"), Ar=nt.sym("calculus.A_r"),
+                 mu=_text_of(figure, "formula-A-1")),
+         _starts("axis-phi-A", "axis-A", "chords-A_", "dot-A_", "name-A-", "formula-A-")),
+        (nt.word("steps.dE", eq=_text_of(figure, "formula-dE-1")), _starts("axis-phi-dE", "axis-dE", "ordinate-dE-",
                                                                     "curve-dE", "dot-dE-", "formula-dE-")),
-        (_w(nt, "accuracy"), lambda n: False),
+        (nt.word("steps.accuracy"), lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
@@ -831,67 +729,16 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
     figure = D.zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
     mu_v = next((sc for sc in figure.scales() if "v" in sc.symbol), figure.scales()[0])
     rules = [
-        (_w(nt, "lever", mu=mu_v.caption(nt)),
+        (nt.word("steps.lever", mu=mu_v.caption(nt)),
          lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
-        (_w(nt, "load", F=_text_of(figure, "label-F")), _leader_of(["force-F", "label-F"])),
-        (_w(nt, "arm", h=_text_of(figure, "label-h")), _leader_of(["dimension-h", "label-h"])),
-        (_w(nt, "balance", Mr=nt.sym("M_r")), lambda n: False),
+        (nt.word("steps.load", F=_text_of(figure, "label-F")), _leader_of(["force-F", "label-F"])),
+        (nt.word("steps.arm", h=_text_of(figure, "label-h")), _leader_of(["dimension-h", "label-h"])),
+        (nt.word("steps.balance", Mr=nt.sym("M_r")), lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
 
 
 # ----------------------------------------------------------------------------- the force plans
-
-WORDS_F = {
-    "f_scale":   ("One force scale for every plan, so the largest polygon fits: {mu}",
-                  "Один масштаб сил для всех планов, чтобы поместился наибольший: {mu}",
-                  "所有力多边形取同一比例尺，使最大者能画下：{mu}"),
-    "f_known":   ("{g}: lay the known forces end to end at μ_F: {forces}",
-                  "{g}: откладываем известные силы одну за другой в масштабе μ_F: {forces}",
-                  "{g}：按 μ_F 将已知力首尾相接：{forces}"),
-    "f_first":   ("; {parts} found first, from the links' moment equations (ΣM = 0)",
-                  "; {parts} — заранее, из уравнений моментов звеньев (ΣM = 0)",
-                  "；{parts} 先由各构件的力矩方程 (ΣM = 0) 求得"),
-    "f_dirs":    (("Through the end of the chain, the line of {X} {relX}; through its start, the line of {Y} {relY}: "
-                   "their directions are known, not their sizes"),
-                  ("Через конец цепочки — линию {X} {relX}; через её начало — линию {Y} {relY}: направления "
-                   "известны, величины нет"),
-                  "过力链终点作 {X} 的作用线 {relX}；过起点作 {Y} 的作用线 {relY}：方向已知，大小未知"),
-    "f_meet":    ("The two lines meet: the polygon closes, {X} = {x} and {Y} = {y}",
-                  "Линии пересекаются — многоугольник замкнут: {X} = {x}, {Y} = {y}",
-                  "两线相交，力多边形封闭：{X} = {x}，{Y} = {y}"),
-    "f_close":   ("{X} closes the polygon (the frame takes what is left): {X} = {x}",
-                  "{X} замыкает многоугольник (остальное воспринимает стойка): {X} = {x}",
-                  "{X} 使力多边形封闭（其余由机架承受）：{X} = {x}"),
-    "f_react":   ("The reactions of the group: {list}", "Реакции в парах группы: {list}", "该杆组各运动副反力：{list}"),
-    "f_result":  (("Every reaction's size; M_b from the plans = {Mb}, checked by Zhukovsky's lever ({dl} %) "
-                   "and the power balance ({dp} %)"),
-                  ("Величины всех реакций; M_{{ур}} по планам сил = {Mb}, проверка рычагом Жуковского ({dl} %) "
-                   "и балансом мощностей ({dp} %)"),
-                  "各反力大小；力多边形法 M_b = {Mb}，以茹可夫斯基杠杆（{dl} %）和功率平衡（{dp} %）校核"),
-    "par":       ("∥ {x}", "∥ {x}", "∥ {x}"),
-    "perp":      ("⊥ {x}", "⊥ {x}", "⊥ {x}"),
-    "perp_g":    ("⊥ the guide", "⊥ направляющей", "⊥ 导路"),
-    "known_dir": ("along its known line", "по известной линии", "沿已知作用线"),
-    # Zhukovsky's lever with every force
-    "z_lever":   ("The velocity plan of analogues v/ω_1 turned 90°: a rigid lever pivoted at p; {mu}",
-                  "План аналогов скоростей v/ω_1, повёрнутый на 90°, — жёсткий рычаг с опорой в p; {mu}",
-                  "将速度类比图 v/ω_1 转 90°，视为绕 p 转动的刚性杠杆；{mu}"),
-    "z_force":   ("{F} at the image of its point: its moment about p is {M}",
-                  "{F} — в образе своей точки: её момент относительно p равен {M}",
-                  "{F} 加在其作用点的影像上：对 p 之矩为 {M}"),
-    "z_couple":  ("{F} as two forces ±M/l at two points of its link: their moment about p is {M}",
-                  "{F} — пара сил ±M/l в двух точках звена: их момент относительно p равен {M}",
-                  "{F} 化为其构件上两点的一对力 ±M/l：对 p 之矩为 {M}"),
-    "z_balance": ("Σ M_p = 0 gives the balancing force at a, ⊥ OA: {Fb} = {x}",
-                  "Из Σ M_p = 0 — уравновешивающая сила в точке a, ⊥ OA: {Fb} = {x}",
-                  "由 Σ M_p = 0 得作用于 a 且 ⊥ OA 的平衡力：{Fb} = {x}"),
-    "z_result":  ("{Mb} = {Fb}·l_{{OA}} = {x}; the force plans give {y} (difference {d} %)",
-                  "{Mb} = {Fb}·l_{{OA}} = {x}; по планам сил {y} (расхождение {d} %)",
-                  "{Mb} = {Fb}·l_{{OA}} = {x}；力多边形法 {y}（相对误差 {d} %）"),
-}
-WORDS.update(WORDS_F)
-
 
 def _relation(nt, d: complex, group, motion, i: int) -> str:
     """How a closing side's known direction ``d`` is drawn: ∥ or ⊥ a segment between two of the
@@ -903,12 +750,12 @@ def _relation(nt, d: complex, group, motion, i: int) -> str:
         for a, b in pairs:
             seg = complex(motion.z[b][i] - motion.z[a][i])
             if abs(seg) > 0 and test(seg / abs(seg)) < 1e-9:
-                return _w(nt, key, x=f"{a}{b}")
+                return nt.word(f"steps.{key}", x=f"{a}{b}")
     for ln in group.links:
         e = complex(np.broadcast_to(motion._state.e[ln], (motion.n,))[i])
         if abs(e) > 0 and abs((np.conj(e / abs(e)) * d).real) < 1e-9:
-            return _w(nt, "perp_g")
-    return _w(nt, "known_dir")
+            return nt.word("steps.perp_g")
+    return nt.word("steps.known_dir")
 
 
 def force_plans_steps(case, position: int | None = None, *, notation="en", page="slide", m: int = 12) -> BuildUp:
@@ -947,44 +794,45 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
     def size(F) -> str:
         return f"{nt.number(float(abs(F[i])), sig=5)} {newton}"
 
-    rules: list = [(_w(nt, "f_scale", mu=figure.scales()[0].caption(nt)), ["title", "scale-captions", "legend"])]
+    rules: list = [(nt.word("steps.f_scale", mu=figure.scales()[0].caption(nt)), ["title", "scale-captions", "legend"])]
     solved: set[str] = set()
     for j, pl in enumerate(fa.plans):
         poly = pl.polygons[0]
         nk = len(poly.known)
         head = _text_of(figure, f"caption-{j}")
-        known = _w(nt, "f_known", g=head, forces=", ".join(SF._markup(lbl) for lbl, _ in poly.known))
+        known = nt.word("steps.f_known", g=head, forces=", ".join(SF._markup(lbl) for lbl, _ in poly.known))
         if pl.first:
-            known += _w(nt, "f_first", parts=", ".join(SF._markup(lbl) for lbl, _ in pl.first))
+            known += nt.word("steps.f_first", parts=", ".join(SF._markup(lbl) for lbl, _ in pl.first))
         rules.append((known, lambda n, j=j, nk=nk: n == f"caption-{j}" or n.startswith(f"known-{j}-") or any(
             n == f"label-{j}-{s}" for s in range(nk))))
         closing = poly.closing
         labels = [SF._markup(lbl) for lbl, _, _ in closing]
         if len(closing) == 2 and all(d is not None for _, d, _ in closing):
             g = groups.get(pl.group)
-            rel = [_relation(nt, complex(d[i]), g, fa.motion, i) if g is not None else _w(nt, "known_dir")
+            rel = [_relation(nt, complex(d[i]), g, fa.motion, i) if g is not None else nt.word("steps.known_dir")
                    for _, d, _ in closing]
-            rules.append((_w(nt, "f_dirs", X=labels[0], relX=rel[0], Y=labels[1], relY=rel[1]),
+            rules.append((nt.word("steps.f_dirs", X=labels[0], relX=rel[0], Y=labels[1], relY=rel[1]),
                           lambda n, j=j: n.startswith(f"direction-{j}-")))
-            rules.append((_w(nt, "f_meet", X=labels[0], x=size(closing[0][2]), Y=labels[1], y=size(closing[1][2])),
+            rules.append((nt.word("steps.f_meet", X=labels[0], x=size(closing[0][2]), Y=labels[1],
+                                  y=size(closing[1][2])),
                           lambda n, j=j: n.startswith(f"closing-{j}-")))
             mine = [r for r in fa.reactions.values() if (r.by in pl.links or r.on in pl.links)
                     and not ({r.by, r.on} & solved)]
             listed = "; ".join(f"{SF._markup(r.key)} = {size(r.R)}" for r in sorted(mine, key=lambda r: r.key))
-            rules.append((_w(nt, "f_react", list=listed), lambda n, j=j, nk=nk: (
+            rules.append((nt.word("steps.f_react", list=listed), lambda n, j=j, nk=nk: (
                 n.startswith(f"label-{j}-") and int(n.rsplit("-", 1)[1]) >= nk)
                 or n.startswith((f"inner-{j}-", f"label-inner-{j}-"))))      # each link's own polygon
         else:
-            rules.append((_w(nt, "f_close", X=labels[-1], x=size(closing[-1][2])),
+            rules.append((nt.word("steps.f_close", X=labels[-1], x=size(closing[-1][2])),
                           lambda n, j=j: n.startswith((f"closing-{j}-", f"direction-{j}-", f"label-{j}-",
                                                        f"inner-{j}-", f"label-inner-{j}-"))))
         solved |= set(pl.links)
     Mb = float(fa.M_balance[i])
-    rules.append((_w(nt, "f_result", Mb=f"{nt.number(Mb, sig=6)} {nt.unit('N·m')}",
+    rules.append((nt.word("steps.f_result", Mb=f"{nt.number(Mb, sig=6)} {nt.unit('N·m')}",
                      dl=SF.percent_text(float(fa.difference_percent(fa.M_balance_lever)[i]), nt),
                      dp=SF.percent_text(float(fa.difference_percent(fa.M_balance_power)[i]), nt)),
                   lambda n: n == "table" or n.startswith("result-")))
-    rules = [r for r in rules if any(r[1](n) if callable(r[1]) else n in r[1] for n in names)]
+    rules = [r for r in rules if _draws(r[1], names)]
     return _build(figure, rules, box, cap_mm, rest=None)
 
 
@@ -1018,7 +866,7 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
     nm_ = nt.unit("N·m")
     items = [f for f in lev.forces if abs(f.F[i]) > 0]
     mu = "; ".join(s.caption(nt) for s in figure.scales())
-    rules: list = [(_w(nt, "z_lever", mu=mu),
+    rules: list = [(nt.word("steps.z_lever", mu=mu),
                     lambda n: n in ("title", "pole", "label-pole", "text-0", "scale-captions", "legend")
                     or n.startswith(("ray-", "image-")))]
     couple_said = False
@@ -1032,20 +880,20 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
         if abs(moment) < 1e-9 * max(abs(float(lev.M_balance[i])), 1e-300):
             moment = 0.0                  # a force through p (or along its own image's ray): rounding only
         couple = len(idx) > 1
-        text = "z_couple" if couple else "z_force"
+        text = "steps.z_couple" if couple else "steps.z_force"
         wanted = {f"force-{t}" for t in idx} | {f"label-force-{t}" for t in idx}
         if couple and not couple_said:
             wanted.add("text-1")
             couple_said = True
-        rules.append((_w(nt, text, F=SF._markup(lbl), M=f"{nt.number(moment, sig=4)} {nm_}"),
+        rules.append((nt.word(text, F=SF._markup(lbl), M=f"{nt.number(moment, sig=4)} {nm_}"),
                       lambda n, w=frozenset(wanted): n in w))
         j += len(idx)
-    Fb = "F_{ур}" if nt.code == "ru" else "F_b"
-    Mb = "M_{ур}" if nt.code == "ru" else "M_b"
-    rules.append((_w(nt, "z_balance", Fb=Fb, x=f"{nt.number(float(abs(lev.F_balance[i])), sig=5)} {nt.unit('N')}"),
+    Fb, Mb = nt.sym("forces.F_b"), nt.sym("forces.M_b")
+    F_b = f"{nt.number(float(abs(lev.F_balance[i])), sig=5)} {nt.unit('N')}"
+    rules.append((nt.word("steps.z_balance", Fb=Fb, x=F_b),
                   lambda n: n in ("F_b", f"label-force-{len(items)}", "text-2")
                   or (n == "text-1" and not couple_said)))
-    rules.append((_w(nt, "z_result", Mb=Mb, Fb=Fb, x=f"{nt.number(float(lev.M_balance[i]), sig=6)} {nm_}",
+    rules.append((nt.word("steps.z_result", Mb=Mb, Fb=Fb, x=f"{nt.number(float(lev.M_balance[i]), sig=6)} {nm_}",
                      y=f"{nt.number(float(fa.M_balance[i]), sig=6)} {nm_}",
                      d=SF.percent_text(float(fa.difference_percent(lev.M_balance)[i]), nt)),
                   lambda n: n in ("text-3", "text-4")))
@@ -1084,22 +932,22 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
         return lambda n: any(n.startswith(f"mark-{p}-") for p in points) and not n.endswith("-extreme")
 
     rules = [
-        (_w(nt, "frame", mu=mu_l.caption(nt)),
-         lambda n: n in ("title", "crank-circle", "scale-captions", "legend") or n.startswith(("pivot-", "guide-", "name-O"))),
-        (_w(nt, "crank_pos", m=m, c=K._sub(crank)),
+        (nt.word("steps.frame", mu=mu_l.caption(nt)),
+         lambda n: n in ("title", "crank-circle", "scale-captions", "legend")
+         or n.startswith(("pivot-", "guide-", "name-O"))),
+        (nt.word("steps.crank_pos", m=m, c=K._sub(crank)),
          lambda n: pos_of([crank])(n) or mark_of([pin])(n) or (n.startswith(f"number-{pin}-")
                                                                   and not n.endswith("-extreme"))),
-        (_w(nt, "output_pos", pts=", ".join(moving) or pin, links=", ".join(K._sub(x) for x in others)),
+        (nt.word("steps.output_pos", pts=", ".join(moving) or pin, links=", ".join(K._sub(x) for x in others)),
          lambda n: pos_of(others)(n) or mark_of(moving)(n) or (n.startswith("number-out-")
                                                                 and not n.endswith("-extreme"))),
-        (_w(nt, "paths"), lambda n: n.startswith("path-")),
-        (_w(nt, "extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
+        (nt.word("steps.paths"), lambda n: n.startswith("path-")),
+        (nt.word("steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
          or n in ("dimension-H", "summary")),
-        (_w(nt, "thick"), lambda n: False),
+        (nt.word("steps.thick"), lambda n: False),
     ]
-    names = {e.name for e in figure.elements}
-    rules = [r for r in rules[:-1] if any(r[1](n) for n in names)] + [rules[-1]]
-    return _build(figure, rules, box, cap_mm, rest=len(rules))
+    kept = _kept(rules, figure)
+    return _build(figure, kept, box, cap_mm, rest=len(kept))
 
 
 # ----------------------------------------------------------------------------- by name
