@@ -116,7 +116,7 @@ def _text(res: dict[str, Any], lang: str) -> str:
     from graphmethods.scene.notation import get
 
     nt = get(lang)
-    where = (f"{nt.word('forces.position')} {res['position']} / {res['m']}, " if res["position"] is not None else "")
+    where = (f"{nt.word('dynamics.position')} {res['position']} / {res['m']}, " if res["position"] is not None else "")
     weights = nt.word("forces.gravity_yes") if res["gravity"] else nt.word("forces.gravity_no")
     lines = [f"{nt.word('forces.report_title')}: {res['case'] or res['kind']}  ({res['source']})",
              (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°, "

@@ -549,7 +549,7 @@ def _acceleration_intersection_rules(tx: _AccelerationText, j: int, st_: Any) ->
                               rel=f"{relation[0]} {to}"), _leader_of(names)))
     found = [c for c in st_.components if not c.known]
     vals = ",  ".join(tx.value(c) for c in found)
-    rules.append((nt.word("steps.a_meet", x=SA.image(st_.label), values=vals),
+    rules.append((nt.word("steps.meet", x=SA.image(st_.label), values=vals),
                   _leader_of([SA._elname(c) for c in found] + [_a_name(st_.label)])))
     return rules
 

@@ -69,7 +69,6 @@ WORDS = {
     "by_power": ("power balance", "баланс мощностей", "功率平衡法"),
     # the text report of `graphmethods forces` (cli.forces)
     "report_title": ("Force analysis", "Силовой расчёт", "动态静力分析"),
-    "position": ("position", "положение", "位置"),
     "crank_angle": ("crank angle φ", "угол кривошипа φ", "曲柄转角 φ"),
     "omega_1": ("ω₁", "ω₁", "ω₁"),
     "epsilon_1": ("ε₁", "ε₁", "ε₁"),
