@@ -15,8 +15,9 @@ from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.sheets import check as ck, worksheets as ws
+from graphmethods.sheets.check.overlay import overlay_label, overlay_value
 
-ANSWERS = pathlib.Path(ck.__file__).parents[1] / "problems" / "data" / "answers"
+ANSWERS = pathlib.Path(ck.__file__).parents[2] / "problems" / "data" / "answers"
 FILES = sorted(ANSWERS.glob("*.toml"))
 
 #: what each shipped mistakes file plants: (mistake code or None for "no usual mistake fits", item key),
@@ -187,7 +188,7 @@ def test_problems_by_id_and_by_file(tmp_path):
     f.write_text(v.to_json(), encoding="utf-8")
     assert ck.load_problem(str(f)).em_variant.data() == v.data()
     case = tmp_path / "press.json"
-    case.write_text((pathlib.Path(ck.__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    case.write_text((pathlib.Path(ck.__file__).parents[2] / "problems" / "data" / "slider_crank_press.json")
                     .read_text(encoding="utf-8"), encoding="utf-8")
     r = ck.check(str(case), ANSWERS / "press_plan_correct.toml")
     assert r.ok
@@ -421,18 +422,18 @@ def test_every_item_label_is_in_the_overlays_notation():
     for r in _every_kind_of_item():
         for it in r.items:
             keys.add(re.sub(r"\[\d+\]", "[]", it.key))
-            en = markup.plain(ck._overlay_label(it, r, "en"))
+            en = markup.plain(overlay_label(it, r, "en"))
             assert en == it.label.replace("_", ""), it.key               # the report's label, subscripts drawn
             for nt in ("ru", "zh"):
-                label = ck._overlay_label(it, r, nt)
+                label = overlay_label(it, r, nt)
                 base = "".join(t for t, shift in markup.parse(label) if shift == 0)     # subscripts aside
                 assert not any(w.strip() in label for w in ENGLISH), (it.key, label)
                 assert not re.search(r"[A-Za-z]{4,}", base), (it.key, label)
     assert {"moment_diagram.areas_mm2", "results.works_J", "energy_indicator.arrows_mm", "results.omega_2_sense",
             "energy_mass.omega_min_at", "results.omega_max_at", "energy_mass.tan_psi_min"} <= keys
     sense = next(it for r in _every_kind_of_item() for it in r.items if it.key == "results.omega_2_sense")
-    assert ck._overlay_value(sense.student, "ru") == "по часовой стрелке"
-    assert ck._overlay_value("b or c", "zh") == "b 或 c" and ck._overlay_value(-34.36, "ru") == "−34,36"
+    assert overlay_value(sense.student, "ru") == "по часовой стрелке"
+    assert overlay_value("b or c", "zh") == "b 或 c" and overlay_value(-34.36, "ru") == "−34,36"
 
 
 def test_a_long_heading_or_line_is_broken_to_stay_on_the_page():

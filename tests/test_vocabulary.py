@@ -26,10 +26,9 @@ NOT_YET_MIGRATED = {
     "render/steps.py",
     "scene/steps.py",
     "sheets/acceleration.py",
-    "sheets/acceleration_worksheet.py",
     "sheets/calculus.py",
-    "sheets/check.py",
-    "sheets/check_acceleration.py",
+    "sheets/check/acceleration.py",
+    "sheets/check/overlay.py",
     "sheets/cycle_panels.py",
     "sheets/drive_scheme.py",
     "sheets/dynamics.py",
@@ -42,7 +41,8 @@ NOT_YET_MIGRATED = {
     "sheets/steps.py",
     "sheets/translating_graph.py",
     "sheets/wittenbauer.py",
-    "sheets/worksheets.py",
+    "sheets/worksheets/acceleration_plan.py",
+    "sheets/worksheets/words.py",
 }
 
 

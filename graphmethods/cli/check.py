@@ -45,9 +45,9 @@ def add_parser(sub) -> None:
 
 
 def _drawing_report(args):
-    """The check of a drawing made in CAD (graphmethods.sheets.cad), with the options not written on it."""
+    """The check of a drawing made in CAD (graphmethods.sheets.check.cad), with the options not written on it."""
     from graphmethods.errors import InputError
-    from graphmethods.sheets import cad
+    from graphmethods.sheets.check import cad
 
     points = {}
     for spec in args.point:
@@ -71,7 +71,7 @@ def run(args) -> int:
         path = pathlib.Path(args.overlay)
         suffix = path.suffix.lower()
         if is_drawing:                  # the check in red over the student's own drawing
-            from graphmethods.sheets import cad
+            from graphmethods.sheets.check import cad
 
             scene = cad.overlay_on_drawing(report, notation=args.lang)
         else:

@@ -46,7 +46,7 @@ def _overlays(sub, lang: str) -> dict:
     out = {}
     try:
         if sub.path.suffix.lower() in (".dxf", ".svg"):
-            from graphmethods.sheets import cad
+            from graphmethods.sheets.check import cad
 
             scene = cad.overlay_on_drawing(sub.report, notation=lang)
             out[f"{stem}-overlay.svg"] = svg.to_bytes(scene)
@@ -62,7 +62,7 @@ def _overlays(sub, lang: str) -> dict:
 def run(args) -> int:
     from graphmethods.errors import OutputExistsError
     from graphmethods.render.files import write_atomic
-    from graphmethods.sheets.classcheck import check_class, class_files
+    from graphmethods.sheets.check.classcheck import check_class, class_files
 
     files = class_files(args.directory)
     out = pathlib.Path(args.out)

@@ -15,7 +15,7 @@ The answers file's section ``[acceleration_plan]`` names each vector by its symb
     epsilon_2_sense = "ccw"
 
 (``ak_A3A2_mm`` is the Coriolis component, ``ar_A3A2_mm`` the relative one; ``…_deg`` a direction
-measured from +x counterclockwise, as :mod:`graphmethods.sheets.cad` reads it off a drawing.)
+measured from +x counterclockwise, as :mod:`graphmethods.sheets.check.cad` reads it off a drawing.)
 
 Each usual mistake is a hypothesis: the plan is built again with that mistake made (the normal
 component of a link drawn away from its centre; the Coriolis term reversed, forgotten or without its
@@ -25,6 +25,7 @@ the mistake shows, and ``carried`` after that (the rest of the construction buil
 ±0.5 mm a length, ±0.5° + atan(0.5 mm / length) a direction, ε: 0.5 mm·μ_a/l + 0.1 %.
 
 >>> from graphmethods.sheets.check import check
+>>> from graphmethods.sheets import worksheets as ws
 >>> v = ws.variant("acceleration-plan", seed=1, number=2)
 >>> good = {k: round(x, 2) for k, x in v.answers().items() if k.endswith("_mm")}
 >>> rep = check(v.id, {"acceleration_plan": {"mu_a": v.mu_a, **good}})
@@ -45,9 +46,11 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, _Builder
 from graphmethods.kinematics.linkage import Linkage
+from graphmethods.scene import markup
 from graphmethods.scene.elements import Element, Line, Text, Vector
 from graphmethods.scene.primitives import Style
-from graphmethods.sheets import worksheets as ws
+from graphmethods.sheets.worksheets.elements import RED, SMALL_MM, ColorText
+from graphmethods.sheets.worksheets.words import num, unit
 
 TOL_MM = 0.5
 TOL_DEG = 0.5
@@ -240,7 +243,7 @@ def _dev_deg(a: float, b: float) -> float:
 
 def check_acceleration(ck: Any, data: Any) -> None:
     """Judge every answered item of ``[acceleration_plan]`` (see the module docstring); items go to ``ck``."""
-    from graphmethods.sheets.check import Item
+    from graphmethods.sheets.check.report import Item
 
     pr = problem_of(ck, data)
     sec = ck.a.get("acceleration_plan", {})
@@ -337,7 +340,7 @@ def _find(plan: AccelerationPlan, c: Component) -> complex | None:
 def _symbol_markup(symbol: str) -> str:
     """A vector's symbol as overlay markup whose plain text is the symbol without ``_`` (``a^τ_BA`` → a^τBA)."""
     head, _, sub = symbol.partition("_")
-    return f"{ws.markup.literal(head)}_{{{sub}}}" if sub else ws.markup.literal(head)
+    return f"{markup.literal(head)}_{{{sub}}}" if sub else markup.literal(head)
 
 
 def item_label(key: str, words: Any) -> str:
@@ -352,7 +355,7 @@ def item_label(key: str, words: Any) -> str:
         return words("sense_of", omega=eps) if e.group(2) else eps
     m = _KEY.match(name)
     if m is None:                                   # pragma: no cover - every key of the section is above
-        return ws.markup.literal(name)
+        return markup.literal(name)
     marks = {v: k for k, v in _MARKS.items()}
     sym = _symbol_markup(f"a{marks.get(m.group(1)[1:], '')}_{m.group(2)}")
     return words("direction_of", v=sym) if m.group(3) == "deg" else sym
@@ -397,7 +400,7 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
         if k in seen:
             continue
         seen.add(k)
-        style = Style(stroke=ws.RED, width_mm=0.45) if k in red else Style(width_mm=0.35)
+        style = Style(stroke=RED, width_mm=0.45) if k in red else Style(width_mm=0.35)
         els.append(Vector(pts[c.start], pts[c.end], known=c.known, style=style, head_length_mm=2.6,
                           head_width_mm=1.0, name=f"{name}-{k}"))
     occ = Occupancy()
@@ -411,17 +414,17 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             continue
         done.add(key)
         text = _image_markup(lb)
-        lab = occ.place_label(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=ws.SMALL_MM + 0.3,
+        lab = occ.place_label(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=SMALL_MM + 0.3,
                               gap_mm=0.8)
-        els.append(Text((lab.x, lab.y), text, size_mm=ws.SMALL_MM + 0.3, anchor=lab.anchor, name=f"{name}-name-{lb}"))
+        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM + 0.3, anchor=lab.anchor, name=f"{name}-name-{lb}"))
     for c in vectors(plan):
         k = key_of(c.symbol)
         if k in wrong:
             mid = ((pts[c.start][0] + pts[c.end][0]) / 2, (pts[c.start][1] + pts[c.end][1]) / 2)
-            txt = f"{_symbol_markup(c.symbol)} = {ws.num(wrong[k], nt)} {ws.unit('mm', nt)}?"
-            lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=ws.SMALL_MM, gap_mm=2.0)
-            els.append(ws.ColorText((lab.x, lab.y), txt, size_mm=ws.SMALL_MM, anchor=lab.anchor,
-                                    color=ws.RED, name=f"{name}-student-{k}"))
+            txt = f"{_symbol_markup(c.symbol)} = {num(wrong[k], nt)} {unit('mm', nt)}?"
+            lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM, gap_mm=2.0)
+            els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor,
+                                    color=RED, name=f"{name}-student-{k}"))
     return els
 
 

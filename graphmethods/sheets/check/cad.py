@@ -30,14 +30,14 @@ An **acceleration plan** (an acceleration-plan worksheet, the slotted lever, or 
 lettered ``π``): the pole π and the lettered images (``a``, ``b``, ``s2``, ``a3`` …, the ends of the normal
 components ``n2``/``n3`` or ``nBA``, of the Coriolis one ``k``), each vector of the plan measured (length and
 direction) between its two letters, μ_a (``μa = 0,04 (m/s²)/mm``) and ε (``ε3 = 3.73 rad/s²``) from the
-texts; checked by :mod:`graphmethods.sheets.check_acceleration` (a Coriolis component drawn the wrong way
+texts; checked by :mod:`graphmethods.sheets.check.acceleration` (a Coriolis component drawn the wrong way
 or a normal one away from its centre shows in the direction of that vector).
 
 When the labels are missing, :func:`check_drawing` says which points it found and asks for a mapping
 (``points={"a": (x, y), ...}``, drawing mm).
 
 >>> import pathlib
->>> d = pathlib.Path(__file__).parents[1] / "problems" / "data" / "drawings"
+>>> d = pathlib.Path(__file__).parents[2] / "problems" / "data" / "drawings"
 >>> rep = check_drawing("W1", d / "w1_mistakes.dxf")
 >>> [i.key for i in rep.wrong if not i.mistakes], [m.code for m in rep.mistakes]
 ([], ['sign_flipped', 'delta_not_halved', 'n_as_omega'])
@@ -59,9 +59,13 @@ from graphmethods.render.dxf import CadDrawing, CadText
 from graphmethods.scene import Page, Scene
 from graphmethods.scene.elements import CAP, Element
 from graphmethods.scene.primitives import Group, Label, Path, Polygon, Style
-from graphmethods.sheets import check as checking
-from graphmethods.sheets.check import CheckReport, CycleData, Item, LinkageData, load_problem
-from graphmethods.sheets.worksheets import RED, SEGMENTS
+from graphmethods.sheets.check.checking import check
+from graphmethods.sheets.check.hypotheses import em_data, plan_data
+from graphmethods.sheets.check.problems import CycleData, LinkageData, load_problem
+from graphmethods.sheets.check.report import TOL_MM, Checker, CheckReport, Item
+from graphmethods.sheets.check.typed_answers import validate_answers
+from graphmethods.sheets.worksheets.elements import RED
+from graphmethods.sheets.worksheets.variants import SEGMENTS
 
 #: how far a label may be from the point it names, mm
 LABEL_REACH_MM = 10.0
@@ -644,7 +648,7 @@ def _crossings_near(d: CadDrawing, x: float, y: float, reach: float) -> list[np.
 def _ray_items(d: CadDrawing, named: dict, answers: dict, data: LinkageData) -> list[Item]:
     """The direction of the ray drawn through k (ψ_max) and through l (ψ_min) against the exact tangent
     (±0.5° + atan(0.5 mm / the ray's length)); the ray is the longest sloping segment through the point."""
-    J, T, n_rpm, delta = checking._em_data(checking._Checker(checking.validate_answers(answers)), data)
+    J, T, n_rpm, delta = em_data(Checker(validate_answers(answers)), data)
     sec = answers["energy_mass"]
     w = 2.0 * math.pi * n_rpm / 60.0
     c = sec["mu_J"] / (2.0 * sec["mu_T"]) * w * w
@@ -659,13 +663,13 @@ def _ray_items(d: CadDrawing, named: dict, answers: dict, data: LinkageData) -> 
             if L < 5.0 or abs(u[0]) < 1e-6 * L:
                 continue
             dist = abs(float(u[0] * (P[1] - A[1]) - u[1] * (P[0] - A[0]))) / L
-            if dist <= checking.TOL_MM and (best is None or L > best[0]):
+            if dist <= TOL_MM and (best is None or L > best[0]):
                 best = (L, math.degrees(math.atan(u[1] / u[0])))
         if best is None:
             continue
         exp = math.degrees(math.atan(tan))
         dev = best[1] - exp
-        tol = TOL_DEG + math.degrees(math.atan2(checking.TOL_MM, best[0]))
+        tol = TOL_DEG + math.degrees(math.atan2(TOL_MM, best[0]))
         items.append(Item(f"drawing.ray_{which}_deg", f"ray ψ_{which}", "°", round(exp, 3), round(best[1], 3),
                           round(dev, 3), round(tol, 3), "ok" if abs(dev) <= tol else "wrong",
                           note="±0.5° + atan(0.5 mm / length)"))
@@ -718,7 +722,7 @@ _PI = ("π", "pi", "Π")
 def _aliases(plan) -> dict[str, str]:
     """How a student may letter each image of the plan -> the image's label: ``a3``, ``s3``; an end of a
     normal component ``n_BA`` as ``nBA`` or ``n`` + its link (``n2``); of a Coriolis one as ``k`` too."""
-    from graphmethods.sheets import check_acceleration as ca
+    from graphmethods.sheets.check import acceleration as ca
 
     out: dict[str, str] = dict.fromkeys(_PI, "π")
     comps = ca.vectors(plan)
@@ -740,8 +744,7 @@ def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None
                 points: dict | None = None) -> tuple[dict, dict]:
     """(answers, measured points) of an acceleration plan drawing: the ``[acceleration_plan]`` section with
     every vector's length (mm) and direction (degrees from +x, counterclockwise) between its letters."""
-    from graphmethods.sheets import check_acceleration as ca
-    from graphmethods.sheets.check import _Checker
+    from graphmethods.sheets.check import acceleration as ca
 
     nts = notes(d)
     arrs = arrows(d)
@@ -758,7 +761,7 @@ def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None
             raise InputError(f"{d.source}: which position is drawn? write 'position K' on the drawing, or give "
                              f"--position")
         sec["position"], sec["positions"] = int(k), 12
-    plan = ca.problem_of(_Checker({"acceleration_plan": sec}), data).plan()
+    plan = ca.problem_of(Checker({"acceleration_plan": sec}), data).plan()
     alias = _aliases(plan)
     labels = [replace(t, text=alias[t.text]) for t in nts.labels if t.text in alias]
     given = {alias.get(_label_text(k), k): v for k, v in (points or {}).items()}
@@ -785,8 +788,8 @@ def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None
 
 def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item]:
     """The direction of each vector of the plan against the expected one (±0.5° + atan(0.5 mm / length))."""
-    ck = checking._Checker(checking.validate_answers(answers))
-    vec, *_ = checking._plan_data(ck, data)
+    ck = Checker(validate_answers(answers))
+    vec, *_ = plan_data(ck, data)
     items = []
     for seg, (f, t) in SEGMENTS.items():
         if f not in named or t not in named:
@@ -799,7 +802,7 @@ def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item
         exp = math.degrees(math.atan2(exp_v[1], exp_v[0]))
         stu = math.degrees(math.atan2(got[1], got[0]))
         dev = (stu - exp + 180.0) % 360.0 - 180.0
-        tol = TOL_DEG + math.degrees(math.atan2(checking.TOL_MM, L))
+        tol = TOL_DEG + math.degrees(math.atan2(TOL_MM, L))
         items.append(Item(f"drawing.{seg}_deg", f"direction of {seg}", "°", round(exp, 3), round(exp + dev, 3),
                           round(dev, 3), round(tol, 3), "ok" if abs(dev) <= tol else "wrong",
                           note="±0.5° + atan(0.5 mm / length)"))
@@ -854,7 +857,7 @@ def check_drawing(problem, source, *, student: str | None = None, position: int 
             extra = _direction_items(named, answers, data)
     answers["student"] = student or pathlib.Path(source).stem.split("__")[0]
     answers["problem"] = str(data.id)
-    rep = checking.check(data, answers)
+    rep = check(data, answers)
     page, shift = _page_for(d)
     note = f"read from {pathlib.Path(source).name}: " + ", ".join(
         f"{k} = {v}" for sec in ("velocity_plan", "energy_indicator", "energy_mass", "acceleration_plan")

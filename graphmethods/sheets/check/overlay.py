@@ -1,0 +1,319 @@
+"""The overlay of a check: the correct construction at the student's scales on a page the size of
+theirs, the wrong items in red with the mistakes named, in en / ru / zh.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.scene import Scale, Scene, Text, in_language, markup, notation as get_notation
+from graphmethods.scene.elements import Element, Line
+from graphmethods.scene.primitives import Circle, Path, Style
+from graphmethods.sheets.check import acceleration as ca
+from graphmethods.sheets.check.hypotheses import em_data, plan_data
+from graphmethods.sheets.check.problems import CycleData, LinkageData
+from graphmethods.sheets.check.report import Checker, CheckReport, Item
+from graphmethods.sheets.worksheets.constructions import (
+    energy_mass_construction,
+    extremes,
+    moment_regions,
+    staircase,
+    velocity_plan,
+)
+from graphmethods.sheets.worksheets.elements import RED, ColorText, Shapes, wrap
+from graphmethods.sheets.worksheets.words import num, sym, unit, value_unit, word
+from graphmethods.titles import Title
+from graphmethods.units import omega_from_n
+
+if TYPE_CHECKING:
+    pass
+
+# ----------------------------------------------------------------------------- words (en, ru, zh)
+#: what the overlay writes, (en, ru, zh), as markup; ``{placeholders}`` are filled by :func:`_w`. The
+#: keys of :data:`MISTAKES` name the mistakes (short, for the list of wrong items); the text, Markdown
+#: and JSON reports stay English.
+WORDS = {
+    "overlay":        ("Overlay", "Накладка для проверки", "叠加校核图"),
+    "heading":        ("{overlay}: {rest}", "{overlay}: {rest}", "{overlay}：{rest}"),
+    "howto":          ("print at 100 % (no scaling) on transparent film; check: the bar below is {bar}",
+                       "печатать на прозрачной плёнке в масштабе 100 % (без подгонки по размеру); "
+                       "проверка: отрезок внизу равен {bar}",
+                       "按 100 % 比例（不缩放）打印在透明胶片上；检查：下方线段长 {bar}"),
+    # one wrong item; {unit} is empty for a position (the double space it leaves is closed up)
+    "item":           ("{label}: {student} (expected {expected}) {unit} — {why}",
+                       "{label}: {student} (должно быть {expected}) {unit} — {why}",
+                       "{label}：{student}（应为 {expected}）{unit}——{why}"),
+    "or":             ("{a} or {b}", "{a} или {b}", "{a} 或 {b}"),
+    "carried":        ("carried over", "следствие предыдущей ошибки", "由前面的错误导致"),
+    "wrong":          ("wrong", "неверно", "错误"),
+    # the items (from Item.key): {i} an interval such as c–d, {omega} a speed such as ω_{max}
+    "area":           ("area {i}", "площадь {i}", "面积 {i}"),
+    "work":           ("work {i}", "избыточная работа {i}", "盈亏功 {i}"),
+    "arrow":          ("arrow {i}", "вектор {i}", "矢量 {i}"),
+    "n_areas":        ("number of intervals", "число участков", "区间数"),
+    "n_works":        ("number of intervals (works)", "число участков (работы)", "区间数（盈亏功）"),
+    "n_arrows":       ("number of arrows", "число векторов", "矢量数"),
+    "point_of":       ("point of {omega}", "точка {omega}", "{omega} 所在点"),
+    "angle_of":       ("angle of {omega}", "угол φ при {omega}", "{omega} 所在转角 φ"),
+    "position_of":    ("position of {omega}", "положение {omega}", "{omega} 所在位置"),
+    "sense_of":       ("sense of {omega}", "направление {omega}", "{omega} 的转向"),
+    "direction_of":   ("direction of {v}", "направление вектора {v}", "{v} 的方向"),
+    # the usual mistakes (the keys of MISTAKES), short
+    "sign_flipped":   ("sign flipped in the staircase", "перепутан знак избыточной работы",
+                       "盈亏功正负号颠倒"),
+    "degrees_as_radians": ("degrees used as radians", "градусы приняты за радианы", "把度当作弧度"),
+    "n_as_omega":     ("n (rev/min) used as ω (rad/s)", "n (об/мин) принято за ω (рад/с)",
+                       "把 n (r/min) 当作 ω (rad/s)"),
+    "scale_forgotten": ("scale factor forgotten", "не учтён масштабный коэффициент", "漏乘比例尺"),
+    "scale_twice":    ("scale factor applied twice", "масштабный коэффициент учтён дважды", "比例尺乘了两次"),
+    "J_e_not_subtracted": ("{J_e} not subtracted", "не вычтен {J_e}", "未减去 {J_e}"),
+    # ω_max = ω_m(1 + δ) for ω_m(1 + δ/2), and squared in tan ψ (and in J_F through ω_max² − ω_min²)
+    "delta_not_halved": ("(1 ± δ) instead of (1 ± δ/2)", "(1 ± δ) вместо (1 ± δ/2)", "用 (1 ± δ) 代替了 (1 ± δ/2)"),
+    **ca.WORDS,
+}
+
+
+def _w(nt, key: str, **kw) -> str:
+    """A text of :data:`WORDS` in the notation's language, ``{placeholders}`` filled from ``kw``."""
+    return in_language(WORDS[key], nt, **kw)
+
+
+# ----------------------------------------------------------------------------- overlay
+
+def _wrong_index(report: CheckReport, prefix: str) -> dict:
+    out = {}
+    for it in report.items:
+        if it.verdict != "ok" and it.key.startswith(prefix) and it.key.endswith("]"):
+            out[int(it.key[len(prefix) + 1:-1])] = it.student
+    return out
+
+
+_KEY = re.compile(r"(\w+)\.(\w+?)(?:\[(\d+)\])?")
+_SYMBOL_LABELS = {"omega_max": "ω_{max}", "omega_min": "ω_{min}", "omega_2": "ω_{2}", "v_A": "v_{A}", "v_B": "v_{B}",
+                  "v_BA": "v_{BA}", "v_S2": "v_{S2}", "pa_mm": "pa", "pb_mm": "pb", "ab_mm": "ab", "ps2_mm": "ps_{2}",
+                  "kl_mm": "kl"}
+
+
+def overlay_label(it: Item, report: CheckReport, nt) -> str:
+    """An item's label in the overlay's notation (markup), made from its key (``Item.label`` is English)."""
+    m = _KEY.fullmatch(it.key)
+    section, name, idx = (m.group(1), m.group(2), m.group(3)) if m else ("", "", None)
+    per_interval = {"areas_mm2": ("area", "n_areas"), "works_J": ("work", "n_works"),
+                    "arrows_mm": ("arrow", "n_arrows")}
+    if name in per_interval:
+        if idx is None:
+            return _w(nt, per_interval[name][1])
+        assert isinstance(report.data, CycleData)       # per-interval keys belong to cycle problems
+        L = report.data.cycle.labels
+        i = int(idx)
+        return _w(nt, per_interval[name][0], i=markup.literal(f"{L[i]}–{L[i + 1]}"))
+    if name in ("omega_max_at", "omega_min_at"):
+        omega = f"ω_{{{name[6:9]}}}"
+        if section == "energy_mass":
+            return _w(nt, "position_of", omega=omega)
+        return _w(nt, "angle_of" if it.unit == "°" else "point_of", omega=omega)
+    if name == "omega_2_sense":
+        return _w(nt, "sense_of", omega="ω_{2}")
+    if section == "acceleration_plan":
+        return ca.item_label(it.key, lambda key, **kw: _w(nt, key, **kw))
+    if name in ("tan_psi_max", "tan_psi_min"):
+        return f"{sym('tan', nt)} ψ_{{{name[-3:]}}}"
+    if name in ("delta_W_max", "M_d", "omega_m", "J_F"):
+        return sym(name, nt)
+    if name in _SYMBOL_LABELS:
+        return _SYMBOL_LABELS[name]
+    return markup.literal(it.label)
+
+
+def overlay_value(v, nt) -> str:
+    """A value of the list of wrong items: a number in the notation's style, or a position (``"b or c"``,
+    a sense ``"cw"``) in its words."""
+    if not isinstance(v, str):
+        return num(v, nt)
+    parts = [word(p, nt) if p in ("cw", "ccw") else markup.literal(p) for p in v.split(" or ")]
+    text = parts[0]
+    for p in parts[1:]:
+        text = _w(nt, "or", a=text, b=p)
+    return text
+
+
+def _wrong_line(it: Item, report: CheckReport, nt) -> str:
+    """One line of the overlay's red list: label, the student's value, the expected one, the unit, and why."""
+    if it.mistakes:
+        sep = "、" if get_notation(nt).code == "zh" else ", "
+        why = sep.join(_w(nt, code, J_e=sym("J_e", nt)) for code in it.mistakes)
+    else:
+        why = _w(nt, "carried" if it.verdict == "carried" else "wrong")
+    text = _w(nt, "item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
+              expected=overlay_value(it.expected, nt), unit=unit(it.unit, nt), why=why)
+    return re.sub(" {2,}", " ", text)
+
+
+def overlay(report: CheckReport, notation) -> Scene:
+    from graphmethods.scene.elements import Frame
+    from graphmethods.sheets.layout import Occupancy
+
+    nt = get_notation(notation)
+    page = report.page
+    W, H = page.width_mm, page.height_mm
+    a = report.answers
+    data = report.data
+    els: list[Element] = []
+    red = RED
+    rest = f"{report.problem} — {Title.of(report.title).title_in(nt.code)}" + (
+        f" — {report.student}" if report.student else "")
+    title = _w(nt, "heading", overlay=_w(nt, "overlay"), rest=markup.literal(rest))
+    y = 12.0
+    for line in wrap(title, (W - 24.0) / 1.15, 3.2):          # bold runs wider than the estimate
+        els.append(Text((12.0, y), line, size_mm=3.2, bold=True, name="overlay-title"))
+        y += 4.5
+    y += 0.5
+    for line in wrap(_w(nt, "howto", bar=f"100 {unit('mm', nt)}"), W - 24.0, 2.6):
+        els.append(Text((12.0, y), line, size_mm=2.6, name="overlay-howto"))
+        y += 3.6
+    els.append(Line((12.0, H - 8.0), (112.0, H - 8.0), style=Style(width_mm=0.35), name="ruler"))
+    for x in (12.0, 62.0, 112.0):
+        els.append(Line((x, H - 10.0), (x, H - 6.0), style=Style(width_mm=0.35), name="ruler-tick"))
+    els.append(Text((114.0, H - 7.0), f"100 {unit('mm', nt)}", size_mm=2.6, name="ruler-text"))
+    # wrong items listed, right-aligned at the right margin (a line too long for the page is broken)
+    y += 3.4
+    for it in report.items:
+        if it.verdict == "ok":
+            continue
+        for line in wrap(_wrong_line(it, report, nt), W - 24.0, 2.6):
+            els.append(ColorText((W - 12.0, y), line, size_mm=2.6, anchor="end", color=red, name="wrong-list"))
+            y += 3.8
+    slots = _Slots(W, H, top=max(y, 24.0) + 4.0)
+
+    def origin_for(section: str, size: tuple, offset: tuple) -> tuple:
+        given = a.get(section, {}).get("origin_mm")
+        if given is not None:
+            if not (isinstance(given, tuple) and len(given) == 2 and all(not isinstance(v, str) for v in given)):
+                raise InputError(f"[{section}] origin_mm must be [x, y] in mm from the page's top-left corner")
+            return (float(given[0]), float(given[1]))
+        x, y0 = slots.take(*size)
+        return (x + offset[0], y0 + offset[1])
+
+    def cross(at, name):
+        x, y0 = at
+        return Shapes((Path(((x - 4, y0), (x + 4, y0)), Style(width_mm=0.25)),
+                          Path(((x, y0 - 4), (x, y0 + 4)), Style(width_mm=0.25)),
+                          Circle(x, y0, 2.0, Style(width_mm=0.25))), name=name)
+
+    if isinstance(data, CycleData):
+        c = data.cycle
+        if "moment_diagram" in a and c.M_d is not None and c.M_r is not None and c.period is not None:
+            md = a["moment_diagram"]
+            mu_M = float(md["mu_M"])
+            mu_phi = float(md["mu_phi"]) if "mu_phi" in md else math.radians(float(md["mu_phi_deg"]))
+            M_all = np.concatenate((c.M_d.M, c.M_r.M, [0.0]))
+            w_mm = c.period / mu_phi
+            hi, lo = float(M_all.max()) / mu_M, float(M_all.min()) / mu_M
+            o = origin_for("moment_diagram", (w_mm + 20.0, hi - lo + 16.0), (8.0, hi + 8.0))
+            frame = Frame(o, Scale("μ_φ", "rad", mu_phi), Scale("μ_M", "N·m", mu_M))
+            occ = Occupancy()
+            els.append(Line((o[0], o[1]), (o[0] + w_mm, o[1]), style=Style(width_mm=0.25), name="md-axis-phi"))
+            els.append(Line((o[0], o[1] - hi), (o[0], o[1] - lo), style=Style(width_mm=0.25), name="md-axis-M"))
+            els += moment_regions(frame, c, wrong=_wrong_index(report, "moment_diagram.areas_mm2"), nt=nt, occ=occ,
+                                     name="md")
+            els.append(cross(o, "md-origin"))
+        if "energy_indicator" in a:
+            ei = a["energy_indicator"]
+            mu_E = float(ei["mu_E"])
+            step = float(ei.get("step_mm", 16.0))
+            E = np.asarray(c.E, dtype=float)
+            hi, lo = max(E.max(), 0.0) / mu_E, min(E.min(), 0.0) / mu_E
+            n = c.work.size
+            o = origin_for("energy_indicator", (step * n + 40.0, hi - lo + 16.0), (6.0, hi + 8.0))
+            occ = Occupancy()
+            first = o[0]
+            wrong = _wrong_index(report, "energy_indicator.arrows_mm")
+            els += staircase(first, o[1], c.work, mu_E=mu_E, step_mm=step, labels=c.labels, nt=nt, occ=occ,
+                                wrong=wrong, name="ei")
+            els += extremes(first, o[1], c.work, mu_E=mu_E, step_mm=step, nt=nt, occ=occ, name="ei-ext")
+            els.append(cross((first, o[1]), "ei-origin"))
+    elif isinstance(data, LinkageData):
+        if "velocity_plan" in a:
+            vec, l_AB, _, _ = plan_data(Checker(a), data)
+            mu_v = float(a["velocity_plan"]["mu_v"])
+            xs = [float(v[0]) / mu_v for v in vec.values()]
+            ys = [-float(v[1]) / mu_v for v in vec.values()]
+            size = (max(xs) - min(xs) + 40.0, max(ys) - min(ys) + 30.0)
+            o = origin_for("velocity_plan", size, (20.0 - min(xs), 15.0 - min(ys)))
+            if data.plan_variant is not None:
+                pv = data.plan_variant
+                A, B = pv.positions.xy("A")[0], pv.positions.xy("B")[0]
+            else:
+                k = int(a["velocity_plan"]["position"])
+                m = int(a["velocity_plan"].get("positions", 12))
+                assert data.case is not None
+                pos = data.case.mechanism.positions(m=m)
+                A, B = pos.xy("A")[k], pos.xy("B")[k]
+            u = (B - A) / np.hypot(*(B - A))
+            wrong = {it.key.split(".")[1][:-3]: it.student for it in report.items
+                     if it.verdict != "ok" and it.key.startswith("velocity_plan.") and it.key.endswith("_mm")}
+            els += velocity_plan(o, vec, mu_v=mu_v, link_dir=u, nt=nt, wrong=wrong, name="plan")
+            els.append(cross(o, "plan-pole"))
+        if "acceleration_plan" in a:
+            pr = ca.problem_of(Checker(a), data)
+            plan = pr.plan()
+            mu_a = float(a["acceleration_plan"]["mu_a"])
+            xs = [z.real / mu_a for z in plan.images.values()]
+            ys = [-z.imag / mu_a for z in plan.images.values()]
+            o = origin_for("acceleration_plan", (max(xs) - min(xs) + 40.0, max(ys) - min(ys) + 30.0),
+                           (20.0 - min(xs), 15.0 - min(ys)))
+            mine = [it for it in report.items if it.key.startswith("acceleration_plan.") and it.key.endswith("_mm")]
+            wrong = {it.key.split(".")[1][:-3]: it.student for it in mine if it.verdict == "wrong"}
+            carried = [it.key.split(".")[1][:-3] for it in mine if it.verdict == "carried"]
+            els += ca.plan_elements(o, plan, mu_a=mu_a, wrong=wrong, carried=carried, nt=nt, name="acc")
+            els.append(cross(o, "acc-pole"))
+        if "energy_mass" in a:
+            from graphmethods.dynamics.wittenbauer import wittenbauer
+
+            J, T, n_rpm, d = em_data(Checker(a), data)
+            mu_J, mu_T = float(a["energy_mass"]["mu_J"]), float(a["energy_mass"]["mu_T"])
+            res = wittenbauer(J_e=J, delta_T=T, omega_m=omega_from_n(n_rpm), delta=d, mu_J=mu_J, mu_T=mu_T)
+            hi = max(float(T.max()) / mu_T, res.k_mm, 0.0)
+            lo = min(float(T.min()) / mu_T, res.l_mm, 0.0)
+            width = float(J.max()) / mu_J + 40.0
+            o = origin_for("energy_mass", (width + 30.0, hi - lo + 24.0), (30.0, hi + 12.0))
+            box = (max(o[0] - 30.0, 2.0), max(o[1] - hi - 12.0, 2.0), min(W - 2.0, o[0] + width),
+                   min(H - 12.0, o[1] - lo + 12.0))
+            axes = (Line((o[0], box[1] + 2.0), (o[0], box[3] - 2.0), style=Style(width_mm=0.25), name="em-axis-T"),
+                    Line((o[0], o[1]), (o[0] + float(J.max()) / mu_J + 10.0, o[1]), style=Style(width_mm=0.25),
+                         name="em-axis-J"))
+            els += list(axes) + energy_mass_construction(res, origin=o, box=box, axes=axes, nt=nt, prefix="em-")
+            wrong_kl = next((it for it in report.items if it.key == "energy_mass.kl_mm" and it.verdict != "ok"), None)
+            if wrong_kl is not None:
+                y_student = o[1] - res.k_mm + float(wrong_kl.student)         # where the student's l would be
+                els.append(Line((o[0] - 6.0, y_student), (o[0] + 6.0, y_student), style=Style(stroke=red, width_mm=0.45),
+                                name="em-kl-student-mark"))
+                kl = value_unit(float(wrong_kl.student), "mm", nt)
+                els.append(ColorText((o[0] + 8.0, y_student + 1.0), f"kl = {kl}?",
+                                        size_mm=2.8, color=red, name="em-kl-student"))
+            els.append(cross(o, "em-origin"))
+    return Scene(page, tuple(els), title=title, notation=nt.code, name="overlay")
+
+
+class _Slots:
+    """Places constructions on the page left to right, then in the next row (a shelf packer)."""
+
+    def __init__(self, W: float, H: float, *, top: float):
+        self.W, self.H = W, H
+        self.x, self.y, self.row = 12.0, top, 0.0
+
+    def take(self, w: float, h: float) -> tuple[float, float]:
+        if self.x + w > self.W - 8.0 and self.x > 12.0:
+            self.x, self.y, self.row = 12.0, self.y + self.row + 6.0, 0.0
+        if self.x + w > self.W - 8.0 or self.y + h > self.H - 14.0:
+            raise InputError(f"the construction ({w:.0f} × {h:.0f} mm at the student's scales) does not fit the "
+                             f"{self.W:.0f} × {self.H:.0f} mm page; give its origin_mm, or a larger [page]")
+        at = (self.x, self.y)
+        self.x += w + 6.0
+        self.row = max(self.row, h)
+        return at
