@@ -14,6 +14,7 @@ from graphmethods.cli import check as cli_check
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
+from graphmethods.scene.vocabulary import check as vocabulary_check
 from graphmethods.sheets import check as ck, worksheets as ws
 from graphmethods.sheets.check.overlay import overlay_label, overlay_value
 
@@ -37,7 +38,8 @@ PLANTED = {
     # acceleration plans (made by tests/drawings/make_acceleration_examples.py): one usual mistake each, the
     # rest of the plan carried over from it
     "press_acc_mistakes.toml": ({("normal_reversed", "acceleration_plan.at_BA_mm")},
-                                {"acceleration_plan.a_B_mm", "acceleration_plan.a_S2_mm", "acceleration_plan.epsilon_2"}),
+                                {"acceleration_plan.a_B_mm", "acceleration_plan.a_S2_mm",
+                                 "acceleration_plan.epsilon_2"}),
     "slotted_lever_acc_mistakes.toml": ({("coriolis_reversed", "acceleration_plan.at_A3O3_mm")},
                                         {"acceleration_plan.a_A3_mm", "acceleration_plan.a_B_mm",
                                          "acceleration_plan.a_S3_mm", "acceleration_plan.epsilon_3"}),
@@ -319,13 +321,15 @@ NAMES = {
     "ru": {"sign_flipped": "перепутан знак избыточной работы", "degrees_as_radians": "градусы приняты за радианы",
            "n_as_omega": "n (об/мин) принято за ω (рад/с)", "scale_forgotten": "не учтён масштабный коэффициент",
            "scale_twice": "масштабный коэффициент учтён дважды", "J_e_not_subtracted": "не вычтен Jп",
-           "delta_not_halved": "(1 ± δ) вместо (1 ± δ/2)", "normal_reversed": "нормальное ускорение направлено от центра",
+           "delta_not_halved": "(1 ± δ) вместо (1 ± δ/2)",
+           "normal_reversed": "нормальное ускорение направлено от центра",
            "coriolis_reversed": "кориолисово ускорение в обратную сторону",
            "coriolis_forgotten": "забыто кориолисово ускорение", "coriolis_factor_2": "пропущен множитель 2 в 2ω·v",
            "normal_wrong_length": "ω²·l с неверной длиной",
            "crank_tangential_forgotten": "забыто касательное ускорение кривошипа"},
     "zh": {"sign_flipped": "盈亏功正负号颠倒", "degrees_as_radians": "把度当作弧度",
-           "n_as_omega": "把 n (r/min) 当作 ω (rad/s)", "scale_forgotten": "漏乘比例尺", "scale_twice": "比例尺乘了两次",
+           "n_as_omega": "把 n (r/min) 当作 ω (rad/s)", "scale_forgotten": "漏乘比例尺",
+           "scale_twice": "比例尺乘了两次",
            "J_e_not_subtracted": "未减去 Je", "delta_not_halved": "用 (1 ± δ) 代替了 (1 ± δ/2)",
            "normal_reversed": "法向分量方向画反", "coriolis_reversed": "哥氏加速度方向画反",
            "coriolis_forgotten": "漏了哥氏加速度", "coriolis_factor_2": "2ω·v 中漏了系数 2",
@@ -343,7 +347,7 @@ def red_list(scene):
 
 def test_every_usual_mistake_has_a_name_in_every_notation():
     for code in ck.MISTAKES:
-        names = ck.WORDS[code]
+        names = vocabulary_check.WORDS[code]
         assert len(names) == 3 and all(names) and len(set(names)) == 3, code
     assert set(NAMES["ru"]) == set(NAMES["zh"]) == set(ck.MISTAKES)
 

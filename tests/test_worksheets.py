@@ -15,7 +15,7 @@ from graphmethods.cli import worksheet as cli_worksheet
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
-from graphmethods.scene import markup
+from graphmethods.scene import markup, notation as get_notation
 from graphmethods.scene.primitives import Label
 from graphmethods.sheets import worksheets as ws
 
@@ -157,7 +157,8 @@ def test_the_key_is_the_student_page_filled_in(kind):
                 assert s_els[name] == k_els[name], (v.id, nt, name)
         assert len(key.elements) > len(student.elements)
         student_text = " ".join(p.text for p in student.primitives() if isinstance(p, Label))
-        assert ws.word("key", nt) not in student_text and ws.word("name", nt) in student_text
+        words = get_notation(nt)
+        assert words.word("worksheets.key") not in student_text and words.word("worksheets.name") in student_text
 
 
 def test_indicator_key_draws_each_work_to_mu_E():

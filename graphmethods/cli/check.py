@@ -30,7 +30,8 @@ def add_parser(sub) -> None:
                    "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, read and "
                    "measured)")
     p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
-    p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
+    p.add_argument("--overlay", metavar="FILE",
+                   help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="notation and language of the overlay (the report stays English)")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")

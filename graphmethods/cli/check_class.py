@@ -90,7 +90,8 @@ def run(args) -> int:
         existing = [str(p) for p in blobs if p.exists()]
         if existing:
             more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
-            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, or another --out")
+            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, "
+                                    f"or another --out")
     (out / "students").mkdir(parents=True, exist_ok=True)
     for path, data in blobs.items():
         write_atomic(path, data, overwrite=args.force)

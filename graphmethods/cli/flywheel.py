@@ -58,9 +58,11 @@ def add_parser(sub) -> None:
         epilog="Example: graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --delta 1/300",
     )
     cyc = p.add_mutually_exclusive_group(required=False)      # or --M-d/--M-r (flywheel_moments)
-    cyc.add_argument("--areas", metavar="A1,A2,...", help="signed areas between M_d and M_r in order: mm² with --mu-M and "
+    cyc.add_argument("--areas", metavar="A1,A2,...",
+                     help="signed areas between M_d and M_r in order: mm² with --mu-M and "
                      "--mu-phi/--mu-phi-deg, otherwise work in J")
-    cyc.add_argument("--levels", metavar="E0,E1,...", help="running energy levels in J, the last returning to the first")
+    cyc.add_argument("--levels", metavar="E0,E1,...",
+                     help="running energy levels in J, the last returning to the first")
     flywheel_moments.add_arguments(p)
     p.add_argument("--mu-M", help="moment scale of the drawing, N·m per mm")
     p.add_argument("--mu-phi", help="angle scale of the drawing, rad per mm")
@@ -69,7 +71,8 @@ def add_parser(sub) -> None:
     speed.add_argument("--n", help="mean speed of the shaft, rev/min")
     speed.add_argument("--omega", help="mean angular speed of the shaft, rad/s")
     goal = p.add_mutually_exclusive_group(required=False)      # required unless --delta-table
-    goal.add_argument("--delta", help="permissible coefficient of fluctuation [δ] (fractions like 1/300 accepted): find J_F")
+    goal.add_argument("--delta",
+                      help="permissible coefficient of fluctuation [δ] (fractions like 1/300 accepted): find J_F")
     goal.add_argument("--J", help="total inertia on the shaft, kg·m²: find the δ it gives")
     goal.add_argument("--machine", metavar="NAME", help="take [δ] from the table of recommended [δ] by machine "
                       "(--delta-table lists the names): its strict end, the smaller δ, unless --machine-end lenient")
@@ -79,7 +82,8 @@ def add_parser(sub) -> None:
                    help="print the table of recommended [δ] by machine (with --lang, --json) and stop")
     p.add_argument("--hyperbola", default=None, metavar="FILE.svg|.pdf",
                    help="draw the J_F–[δ] hyperbola over the table's range of [δ], the chosen [δ] marked")
-    p.add_argument("--J-e", default="0", help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
+    p.add_argument("--J-e", default="0",
+                   help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
     p.add_argument("--closure-tol", default=None, help="allowed closure residual |ΣA|/Σ|A| (default 0.05)")
     p.add_argument("--rim", nargs="?", const="", default=None, metavar="D",
                    help="size a rim (spoked) flywheel for J_F: mean rim diameter D in m (default: the largest the "

@@ -51,7 +51,8 @@ def load(path) -> ModuleType:
     try:
         spec.loader.exec_module(module)
     except Exception as exc:                # a script is code: its failure is named, not a traceback
-        raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); nothing was written") from None
+        raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); "
+                         f"nothing was written") from None
     _check_module(module, str(path))
     return module
 
@@ -122,7 +123,8 @@ def add_parser(sub) -> None:
     p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
-    p.add_argument("--dxf", action="store_true", help="also write a DXF of every figure (1 unit = 1 mm, layers by role)")
+    p.add_argument("--dxf", action="store_true",
+                   help="also write a DXF of every figure (1 unit = 1 mm, layers by role)")
     p.add_argument("--regenerate", action="store_true",
                    help="in a source checkout: rewrite the committed golden SVGs in gallery/ (or in --dir), "
                         "and the PNGs of figures with PNG = True")

@@ -195,7 +195,8 @@ def run(args: argparse.Namespace) -> int:
     if steady is not None:
         print("steady state:")
         for key, value in steady.items():
-            print(f"  {key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"  {key.ljust(width)}  {value}")
+            shown = f"{value:.6g}" if isinstance(value, float) else f"{value}"
+            print(f"  {key.ljust(width)}  {shown}")
     return 0
 
 

@@ -96,10 +96,11 @@ def add_parser(sub) -> None:
                        description="Variants of a worksheet for a class, reproducible from a seed: a student page "
                        "and an answer-key page each, in one PDF (students, then keys), an SVG per page, and a "
                        "problem file per variant for `graphmethods check`.",
-                       epilog="Example: graphmethods worksheet indicator --variants 30 --seed 7 --lang ru --out class-7")
+                       epilog="Example: graphmethods worksheet indicator --variants 30 --seed 7 --lang ru "
+                       "--out class-7")
     p.add_argument("kind", choices=KINDS, help="indicator (W1 style), step-moment (W3 style), velocity-plan "
-                   "(slider-crank in one position), wittenbauer (slider-crank press), acceleration-plan (slider-crank or "
-                   "slotted lever in one position)")
+                   "(slider-crank in one position), wittenbauer (slider-crank press), acceleration-plan "
+                   "(slider-crank or slotted lever in one position)")
     p.add_argument("--variants", type=int, default=1, metavar="N", help="number of variants (default 1)")
     p.add_argument("--seed", type=int, default=0, metavar="S", help="seed; the same seed gives the same variants")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")

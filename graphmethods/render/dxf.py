@@ -565,7 +565,8 @@ def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawi
             h = float(entity.dxf.height)
             text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
             halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
-            at = entity.dxf.align_point if (halign or valign) and entity.dxf.hasattr("align_point") else entity.dxf.insert
+            aligned = (halign or valign) and entity.dxf.hasattr("align_point")
+            at = entity.dxf.align_point if aligned else entity.dxf.insert
             x, y = float(at[0]), float(at[1])
             last = runs[-1] if runs else None
             if (last is not None and text and halign == valign == 0 and last[4]

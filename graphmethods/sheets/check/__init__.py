@@ -51,7 +51,6 @@ and the usual mistakes), :mod:`.acceleration` (an acceleration plan), :mod:`.che
 """
 
 from graphmethods.sheets.check.checking import check
-from graphmethods.sheets.check.overlay import WORDS
 from graphmethods.sheets.check.problems import PROBLEM_IDS, CycleData, LinkageData, load_problem
 from graphmethods.sheets.check.report import MISTAKES, TOL_MM, TOL_REL, CheckReport, Item, Mistake
 from graphmethods.sheets.check.typed_answers import (
@@ -64,7 +63,7 @@ from graphmethods.sheets.check.typed_answers import (
 )
 
 __all__ = [
-    "KEY_KINDS", "MISTAKES", "PROBLEM_IDS", "SCHEMA", "TOL_MM", "TOL_REL", "TOP_LEVEL", "WORDS", "CheckReport",
+    "KEY_KINDS", "MISTAKES", "PROBLEM_IDS", "SCHEMA", "TOL_MM", "TOL_REL", "TOP_LEVEL", "CheckReport",
     "CycleData", "Item", "LinkageData", "Mistake", "check", "load_problem", "load_toml", "read_answers",
     "validate_answers",
 ]

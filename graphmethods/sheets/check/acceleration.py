@@ -46,11 +46,10 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, _Builder
 from graphmethods.kinematics.linkage import Linkage
-from graphmethods.scene import markup
+from graphmethods.scene import markup, notation as get_notation
 from graphmethods.scene.elements import Element, Line, Text, Vector
 from graphmethods.scene.primitives import Style
 from graphmethods.sheets.worksheets.elements import RED, SMALL_MM, ColorText
-from graphmethods.sheets.worksheets.words import num, unit
 
 TOL_MM = 0.5
 TOL_DEG = 0.5
@@ -71,16 +70,6 @@ MISTAKES = {
     "crank_tangential_forgotten": "the crank's a^τ = ε₁·l_OA forgotten (ε₁ ≠ 0)",
 }
 #: the same, short, for the overlay (en, ru, zh)
-WORDS = {
-    "normal_reversed": ("normal component drawn away from the centre", "нормальное ускорение направлено от центра",
-                        "法向分量方向画反"),
-    "coriolis_reversed": ("Coriolis sense reversed", "кориолисово ускорение в обратную сторону", "哥氏加速度方向画反"),
-    "coriolis_forgotten": ("Coriolis term forgotten", "забыто кориолисово ускорение", "漏了哥氏加速度"),
-    "coriolis_factor_2": ("factor 2 missing in 2ω·v", "пропущен множитель 2 в 2ω·v", "2ω·v 中漏了系数 2"),
-    "normal_wrong_length": ("ω²·l with the wrong length", "ω²·l с неверной длиной", "ω²·l 用错了杆长"),
-    "crank_tangential_forgotten": ("crank's tangential component forgotten", "забыто касательное ускорение кривошипа",
-                                   "漏了曲柄的切向加速度"),
-}
 
 
 class SectionKeys(tuple):
@@ -377,6 +366,7 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
     >>> round(math.dist(v.start, v.end) * 0.5, 9)
     10.0
     """
+    nt = get_notation(nt)
     from graphmethods.sheets.layout import Occupancy
 
     wrong = dict(wrong or {})
@@ -393,7 +383,8 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             d /= float(np.hypot(*d))
             t = float((X - P0) @ d)
             a, b = P0 + d * (min(0.0, t) - 10.0), P0 + d * (max(0.0, t) + 10.0)
-            els.append(Line(tuple(a.tolist()), tuple(b.tolist()), style=thin, name=f"{name}-line-{s.point}-{ln.through}"))
+            els.append(Line(tuple(a.tolist()), tuple(b.tolist()), style=thin,
+                            name=f"{name}-line-{s.point}-{ln.through}"))
     seen: set[str] = set()
     for c in vectors(plan):
         k = key_of(c.symbol)
@@ -421,7 +412,7 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
         k = key_of(c.symbol)
         if k in wrong:
             mid = ((pts[c.start][0] + pts[c.end][0]) / 2, (pts[c.start][1] + pts[c.end][1]) / 2)
-            txt = f"{_symbol_markup(c.symbol)} = {num(wrong[k], nt)} {unit('mm', nt)}?"
+            txt = f"{_symbol_markup(c.symbol)} = {nt.number(wrong[k])} {nt.unit('mm')}?"
             lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM, gap_mm=2.0)
             els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor,
                                     color=RED, name=f"{name}-student-{k}"))

@@ -65,7 +65,8 @@ def check(problem, answers) -> CheckReport:
         if data.accel_variant is not None or (data.case is not None and data.case.kind != "slider_crank"):
             for sec in ("velocity_plan", "energy_mass"):
                 if sec in answers:
-                    raise InputError(f"[{sec}] is not checked for {data.id}; its plan is checked in [acceleration_plan]")
+                    raise InputError(f"[{sec}] is not checked for {data.id}; its plan is checked in "
+                                     f"[acceleration_plan]")
         if "acceleration_plan" in answers:
             ca.check_acceleration(ck, data)
         if "velocity_plan" in answers:

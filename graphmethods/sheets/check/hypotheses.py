@@ -180,7 +180,8 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
     n_rpm, d = float(p.n_rpm), float(p.delta)
     w = omega_from_n(n_rpm)
     om_s = ck.number("results", "omega_m")
-    for key, f_exact, f_wrong in (("omega_m", 1.0, 1.0), ("omega_max", 1 + d / 2, 1 + d), ("omega_min", 1 - d / 2, 1 - d)):
+    factors = (("omega_m", 1.0, 1.0), ("omega_max", 1 + d / 2, 1 + d), ("omega_min", 1 - d / 2, 1 - d))
+    for key, f_exact, f_wrong in factors:
         s = ck.number("results", key)
         if s is None:
             continue
@@ -209,7 +210,8 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
             hyps.append((code, h, t_dW / (X2 * d) + TOL_REL * abs(h)))
         ck.value("results.J_F", "J_F", "kg·m²", J_exp, J_s, tol, own=own,
                  own_tol=rel(t_dW / (w_own * w_own * d), own or 0.0),
-                 own_from="the student's own ΔW_max and ω_m", hypotheses=hyps, note="from the ΔW_max tolerance, + 0.1 %")
+                 own_from="the student's own ΔW_max and ω_m", hypotheses=hyps,
+                 note="from the ΔW_max tolerance, + 0.1 %")
 
 
 def plan_data(ck: Checker, p: LinkageData) -> tuple[dict[str, np.ndarray], float, float | None, float]:

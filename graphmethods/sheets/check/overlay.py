@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Scale, Scene, Text, in_language, markup, notation as get_notation
+from graphmethods.scene import Scale, Scene, Text, markup, notation as get_notation
 from graphmethods.scene.elements import Element, Line
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets.check import acceleration as ca
@@ -26,7 +26,7 @@ from graphmethods.sheets.worksheets.constructions import (
     velocity_plan,
 )
 from graphmethods.sheets.worksheets.elements import RED, ColorText, Shapes, wrap
-from graphmethods.sheets.worksheets.words import num, sym, unit, value_unit, word
+from graphmethods.sheets.worksheets.texts import value_unit
 from graphmethods.titles import Title
 from graphmethods.units import omega_from_n
 
@@ -37,50 +37,6 @@ if TYPE_CHECKING:
 #: what the overlay writes, (en, ru, zh), as markup; ``{placeholders}`` are filled by :func:`_w`. The
 #: keys of :data:`MISTAKES` name the mistakes (short, for the list of wrong items); the text, Markdown
 #: and JSON reports stay English.
-WORDS = {
-    "overlay":        ("Overlay", "Накладка для проверки", "叠加校核图"),
-    "heading":        ("{overlay}: {rest}", "{overlay}: {rest}", "{overlay}：{rest}"),
-    "howto":          ("print at 100 % (no scaling) on transparent film; check: the bar below is {bar}",
-                       "печатать на прозрачной плёнке в масштабе 100 % (без подгонки по размеру); "
-                       "проверка: отрезок внизу равен {bar}",
-                       "按 100 % 比例（不缩放）打印在透明胶片上；检查：下方线段长 {bar}"),
-    # one wrong item; {unit} is empty for a position (the double space it leaves is closed up)
-    "item":           ("{label}: {student} (expected {expected}) {unit} — {why}",
-                       "{label}: {student} (должно быть {expected}) {unit} — {why}",
-                       "{label}：{student}（应为 {expected}）{unit}——{why}"),
-    "or":             ("{a} or {b}", "{a} или {b}", "{a} 或 {b}"),
-    "carried":        ("carried over", "следствие предыдущей ошибки", "由前面的错误导致"),
-    "wrong":          ("wrong", "неверно", "错误"),
-    # the items (from Item.key): {i} an interval such as c–d, {omega} a speed such as ω_{max}
-    "area":           ("area {i}", "площадь {i}", "面积 {i}"),
-    "work":           ("work {i}", "избыточная работа {i}", "盈亏功 {i}"),
-    "arrow":          ("arrow {i}", "вектор {i}", "矢量 {i}"),
-    "n_areas":        ("number of intervals", "число участков", "区间数"),
-    "n_works":        ("number of intervals (works)", "число участков (работы)", "区间数（盈亏功）"),
-    "n_arrows":       ("number of arrows", "число векторов", "矢量数"),
-    "point_of":       ("point of {omega}", "точка {omega}", "{omega} 所在点"),
-    "angle_of":       ("angle of {omega}", "угол φ при {omega}", "{omega} 所在转角 φ"),
-    "position_of":    ("position of {omega}", "положение {omega}", "{omega} 所在位置"),
-    "sense_of":       ("sense of {omega}", "направление {omega}", "{omega} 的转向"),
-    "direction_of":   ("direction of {v}", "направление вектора {v}", "{v} 的方向"),
-    # the usual mistakes (the keys of MISTAKES), short
-    "sign_flipped":   ("sign flipped in the staircase", "перепутан знак избыточной работы",
-                       "盈亏功正负号颠倒"),
-    "degrees_as_radians": ("degrees used as radians", "градусы приняты за радианы", "把度当作弧度"),
-    "n_as_omega":     ("n (rev/min) used as ω (rad/s)", "n (об/мин) принято за ω (рад/с)",
-                       "把 n (r/min) 当作 ω (rad/s)"),
-    "scale_forgotten": ("scale factor forgotten", "не учтён масштабный коэффициент", "漏乘比例尺"),
-    "scale_twice":    ("scale factor applied twice", "масштабный коэффициент учтён дважды", "比例尺乘了两次"),
-    "J_e_not_subtracted": ("{J_e} not subtracted", "не вычтен {J_e}", "未减去 {J_e}"),
-    # ω_max = ω_m(1 + δ) for ω_m(1 + δ/2), and squared in tan ψ (and in J_F through ω_max² − ω_min²)
-    "delta_not_halved": ("(1 ± δ) instead of (1 ± δ/2)", "(1 ± δ) вместо (1 ± δ/2)", "用 (1 ± δ) 代替了 (1 ± δ/2)"),
-    **ca.WORDS,
-}
-
-
-def _w(nt, key: str, **kw) -> str:
-    """A text of :data:`WORDS` in the notation's language, ``{placeholders}`` filled from ``kw``."""
-    return in_language(WORDS[key], nt, **kw)
 
 
 # ----------------------------------------------------------------------------- overlay
@@ -101,30 +57,33 @@ _SYMBOL_LABELS = {"omega_max": "ω_{max}", "omega_min": "ω_{min}", "omega_2": "
 
 def overlay_label(it: Item, report: CheckReport, nt) -> str:
     """An item's label in the overlay's notation (markup), made from its key (``Item.label`` is English)."""
+    nt = get_notation(nt)
     m = _KEY.fullmatch(it.key)
     section, name, idx = (m.group(1), m.group(2), m.group(3)) if m else ("", "", None)
     per_interval = {"areas_mm2": ("area", "n_areas"), "works_J": ("work", "n_works"),
                     "arrows_mm": ("arrow", "n_arrows")}
     if name in per_interval:
         if idx is None:
-            return _w(nt, per_interval[name][1])
+            return nt.word("check." + per_interval[name][1])
         assert isinstance(report.data, CycleData)       # per-interval keys belong to cycle problems
         L = report.data.cycle.labels
         i = int(idx)
-        return _w(nt, per_interval[name][0], i=markup.literal(f"{L[i]}–{L[i + 1]}"))
+        return nt.word("check." + per_interval[name][0], i=markup.literal(f"{L[i]}–{L[i + 1]}"))
     if name in ("omega_max_at", "omega_min_at"):
         omega = f"ω_{{{name[6:9]}}}"
         if section == "energy_mass":
-            return _w(nt, "position_of", omega=omega)
-        return _w(nt, "angle_of" if it.unit == "°" else "point_of", omega=omega)
+            return nt.word("check.position_of", omega=omega)
+        return nt.word("check.angle_of" if it.unit == "°" else "check.point_of", omega=omega)
     if name == "omega_2_sense":
-        return _w(nt, "sense_of", omega="ω_{2}")
+        return nt.word("check.sense_of", omega="ω_{2}")
     if section == "acceleration_plan":
-        return ca.item_label(it.key, lambda key, **kw: _w(nt, key, **kw))
+        return ca.item_label(it.key, lambda key, **kw: nt.word("check." + key, **kw))
     if name in ("tan_psi_max", "tan_psi_min"):
-        return f"{sym('tan', nt)} ψ_{{{name[-3:]}}}"
-    if name in ("delta_W_max", "M_d", "omega_m", "J_F"):
-        return sym(name, nt)
+        return f"{nt.sym('worksheets.tan')} ψ_{{{name[-3:]}}}"
+    if name in ("delta_W_max", "M_d"):
+        return nt.sym(name)
+    if name in ("omega_m", "J_F"):
+        return nt.sym("worksheets." + name)
     if name in _SYMBOL_LABELS:
         return _SYMBOL_LABELS[name]
     return markup.literal(it.label)
@@ -133,12 +92,13 @@ def overlay_label(it: Item, report: CheckReport, nt) -> str:
 def overlay_value(v, nt) -> str:
     """A value of the list of wrong items: a number in the notation's style, or a position (``"b or c"``,
     a sense ``"cw"``) in its words."""
+    nt = get_notation(nt)
     if not isinstance(v, str):
-        return num(v, nt)
-    parts = [word(p, nt) if p in ("cw", "ccw") else markup.literal(p) for p in v.split(" or ")]
+        return nt.number(v)
+    parts = [nt.word("worksheets." + p) if p in ("cw", "ccw") else markup.literal(p) for p in v.split(" or ")]
     text = parts[0]
     for p in parts[1:]:
-        text = _w(nt, "or", a=text, b=p)
+        text = nt.word("check.or", a=text, b=p)
     return text
 
 
@@ -146,11 +106,11 @@ def _wrong_line(it: Item, report: CheckReport, nt) -> str:
     """One line of the overlay's red list: label, the student's value, the expected one, the unit, and why."""
     if it.mistakes:
         sep = "、" if get_notation(nt).code == "zh" else ", "
-        why = sep.join(_w(nt, code, J_e=sym("J_e", nt)) for code in it.mistakes)
+        why = sep.join(nt.word("check." + code, J_e=nt.sym("worksheets.J_e")) for code in it.mistakes)
     else:
-        why = _w(nt, "carried" if it.verdict == "carried" else "wrong")
-    text = _w(nt, "item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
-              expected=overlay_value(it.expected, nt), unit=unit(it.unit, nt), why=why)
+        why = nt.word("check.carried" if it.verdict == "carried" else "check.wrong")
+    text = nt.word("check.item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
+                   expected=overlay_value(it.expected, nt), unit=nt.unit(it.unit), why=why)
     return re.sub(" {2,}", " ", text)
 
 
@@ -167,19 +127,19 @@ def overlay(report: CheckReport, notation) -> Scene:
     red = RED
     rest = f"{report.problem} — {Title.of(report.title).title_in(nt.code)}" + (
         f" — {report.student}" if report.student else "")
-    title = _w(nt, "heading", overlay=_w(nt, "overlay"), rest=markup.literal(rest))
+    title = nt.word("check.heading", overlay=nt.word("check.overlay"), rest=markup.literal(rest))
     y = 12.0
     for line in wrap(title, (W - 24.0) / 1.15, 3.2):          # bold runs wider than the estimate
         els.append(Text((12.0, y), line, size_mm=3.2, bold=True, name="overlay-title"))
         y += 4.5
     y += 0.5
-    for line in wrap(_w(nt, "howto", bar=f"100 {unit('mm', nt)}"), W - 24.0, 2.6):
+    for line in wrap(nt.word("check.howto", bar=f"100 {nt.unit('mm')}"), W - 24.0, 2.6):
         els.append(Text((12.0, y), line, size_mm=2.6, name="overlay-howto"))
         y += 3.6
     els.append(Line((12.0, H - 8.0), (112.0, H - 8.0), style=Style(width_mm=0.35), name="ruler"))
     for x in (12.0, 62.0, 112.0):
         els.append(Line((x, H - 10.0), (x, H - 6.0), style=Style(width_mm=0.35), name="ruler-tick"))
-    els.append(Text((114.0, H - 7.0), f"100 {unit('mm', nt)}", size_mm=2.6, name="ruler-text"))
+    els.append(Text((114.0, H - 7.0), f"100 {nt.unit('mm')}", size_mm=2.6, name="ruler-text"))
     # wrong items listed, right-aligned at the right margin (a line too long for the page is broken)
     y += 3.4
     for it in report.items:
@@ -291,8 +251,8 @@ def overlay(report: CheckReport, notation) -> Scene:
             wrong_kl = next((it for it in report.items if it.key == "energy_mass.kl_mm" and it.verdict != "ok"), None)
             if wrong_kl is not None:
                 y_student = o[1] - res.k_mm + float(wrong_kl.student)         # where the student's l would be
-                els.append(Line((o[0] - 6.0, y_student), (o[0] + 6.0, y_student), style=Style(stroke=red, width_mm=0.45),
-                                name="em-kl-student-mark"))
+                els.append(Line((o[0] - 6.0, y_student), (o[0] + 6.0, y_student),
+                                style=Style(stroke=red, width_mm=0.45), name="em-kl-student-mark"))
                 kl = value_unit(float(wrong_kl.student), "mm", nt)
                 els.append(ColorText((o[0] + 8.0, y_student + 1.0), f"kl = {kl}?",
                                         size_mm=2.8, color=red, name="em-kl-student"))

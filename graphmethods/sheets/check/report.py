@@ -177,7 +177,8 @@ class CheckReport:
         """A Markdown table of the items, then the mistakes and the summary."""
         head = ("item", "expected", "student", "deviation", "tolerance", "unit", "verdict")
         lines = [f"### Check of {self.problem} ({self.title})" + (f" — {self.student}" if self.student else ""), "",
-                 "| " + " | ".join(head) + " |", "|" + "|".join(("---", "--:", "--:", "--:", "--:", "---", "---")) + "|"]
+                 "| " + " | ".join(head) + " |",
+                 "|" + "|".join(("---", "--:", "--:", "--:", "--:", "---", "---")) + "|"]
         for r in self._rows():
             cells = list(r)
             if not cells[6].startswith("ok"):

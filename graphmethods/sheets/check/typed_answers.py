@@ -95,7 +95,7 @@ def validate_answers(data: dict, *, source: str = "<answers>") -> dict:
         for k, v in value.items():
             if k not in SCHEMA[key]:
                 raise InputError(f"{source}: [{key}] has no key {k!r}; its keys are {', '.join(SCHEMA[key])}")
-            if v == "" or v == []:      # left blank in a template (graphmethods.sheets.worksheets.answers): not answered
+            if v == "" or v == []:      # left blank in a template (sheets.worksheets.answers): not answered
                 continue
             kind = KEY_KINDS.get(k, "text" if k.endswith("_sense") else "number")
             sec[k] = _typed_answer(kind, _answer_value(v, f"{source}: [{key}] {k}"), f"{source}: [{key}] {k}")

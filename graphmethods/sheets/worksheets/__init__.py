@@ -31,9 +31,9 @@ every answer filled in, so the key laid over a student's sheet shows the differe
 >>> sum(v.areas_mm2) == 0 and v.answers()["J_F"] > 0
 True
 
-The package, by concern: :mod:`.variants` (the variants and their random generators), :mod:`.words`,
-:mod:`.elements` (graph paper and the kinematic symbols), :mod:`.constructions` (what a key draws,
-which the checker's overlay draws again), :mod:`.pages` (student and key pages), :mod:`.answers` (the
+The package, by concern: :mod:`.variants` (the variants and their random generators), :mod:`.texts`
+(titles and statements), :mod:`.elements` (graph paper and the kinematic symbols), :mod:`.constructions`
+(what a key draws, which the checker's overlay draws again), :mod:`.pages` (student and key pages), :mod:`.answers` (the
 blank answers file), :mod:`.classset` (a class set and its files' contents) and
 :mod:`.acceleration_plan` (the ``acceleration-plan`` kind). :func:`contents` gives a class set's files
 (one PDF of the students' pages then the keys, an SVG per page, a problem file per variant, which
@@ -75,6 +75,7 @@ from graphmethods.sheets.worksheets.elements import (
     wrap,
 )
 from graphmethods.sheets.worksheets.pages import format_tick, key_page, student_page
+from graphmethods.sheets.worksheets.texts import STATEMENTS, TITLES, value_unit
 from graphmethods.sheets.worksheets.variants import (
     KINDS,
     PROBLEM_FORMAT,
@@ -90,29 +91,17 @@ from graphmethods.sheets.worksheets.variants import (
     variant_from_dict,
     variants,
 )
-from graphmethods.sheets.worksheets.words import (
-    STATEMENTS,
-    TITLES,
-    WORDS,
-    num,
-    quantity,
-    scale_text,
-    sym,
-    unit,
-    value_unit,
-    word,
-)
 
 # isort: split
 # the acceleration-plan kind has its own module (it draws linkages of several kinds); it registers itself
 from graphmethods.sheets.worksheets import acceleration_plan
 
 __all__ = [
-    "KINDS", "PROBLEM_FORMAT", "RED", "SEGMENTS", "STATEMENTS", "TITLES", "WORDS", "ColorText", "EnergyMassVariant",
+    "KINDS", "PROBLEM_FORMAT", "RED", "SEGMENTS", "STATEMENTS", "TITLES", "ColorText", "EnergyMassVariant",
     "Grid", "IndicatorVariant", "PlanVariant", "Shapes", "StepMomentVariant", "Variant", "Worksheet",
     "acceleration_plan", "answers", "arc", "clip_ray", "contents", "dxf_names", "energy_mass_construction",
     "energy_mass_from_press", "existing_outputs", "extremes", "file_names", "format_tick", "ground", "key_page",
-    "markup", "moment_regions", "num", "output_names", "parse_id", "pin", "quantity", "region_perimeters_mm",
-    "register", "scale_text", "slider", "slider_crank_scheme", "staircase", "student_page", "sym", "unit",
-    "value_unit", "variant", "variant_from_dict", "variants", "velocity_plan", "word", "worksheet", "wrap",
+    "markup", "moment_regions", "output_names", "parse_id", "pin", "region_perimeters_mm",
+    "register", "slider", "slider_crank_scheme", "staircase", "student_page",
+    "value_unit", "variant", "variant_from_dict", "variants", "velocity_plan", "worksheet", "wrap",
 ]

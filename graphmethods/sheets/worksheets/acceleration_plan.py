@@ -34,8 +34,8 @@ from graphmethods.sheets.check import acceleration as ca
 from graphmethods.sheets.worksheets.classset import register
 from graphmethods.sheets.worksheets.elements import TEXT_MM, THICK, X0, X1, Grid, Shapes, arc, ground, pin, slider
 from graphmethods.sheets.worksheets.pages import CAPTION_ROOM, Sheet, answers_and_solution
+from graphmethods.sheets.worksheets.texts import value_unit
 from graphmethods.sheets.worksheets.variants import Variant, pick, pick_scale
-from graphmethods.sheets.worksheets.words import num, quantity, sym, unit, value_unit, word
 from graphmethods.titles import Title
 
 MECHANISMS = ("slider-crank", "slotted-lever")
@@ -60,11 +60,6 @@ STATEMENT = (
      "1) 以 {mu_a} 从极点 π 按杆组作加速度多边形：法向分量 ω²l 指向中心，切向分量 ⊥ 杆{coriolis}；质心按相似原理。",
      "2) 量出各矢量的长度（mm），求各杆的 ε 及其转向。"),
 )
-_MECH = {"slider-crank": ("slider-crank mechanism", "Кривошипно-ползунный механизм", "曲柄滑块机构"),
-         "slotted-lever": ("crank and slotted lever mechanism", "Кулисный механизм", "摆动导杆机构")}
-_CORIOLIS = (", the Coriolis component 2ω_{3}v_{A3A2} (v_{A3A2} turned 90° in the sense of ω_{3})",
-             ", кориолисово ускорение 2ω_{3}v_{A3A2} (v_{A3A2}, повёрнутое на 90° по ω_{3})",
-             "，哥氏加速度 2ω_{3}v_{A3A2}（v_{A3A2} 沿 ω_{3} 转向转 90°）")
 
 
 @dataclass(frozen=True)
@@ -162,7 +157,8 @@ def generate(rng: np.random.Generator) -> dict[str, Any]:
         if min(c.magnitude for c in plan.components) / mu_a < 4.0:     # every component drawn, none vanishing
             continue
         z = [complex(p) for p in _scheme_xy(v).values()]
-        span = max(max(p.real for p in z) - min(p.real for p in z), 2.7 * (max(p.imag for p in z) - min(p.imag for p in z)))
+        span = max(max(p.real for p in z) - min(p.real for p in z),
+                   2.7 * (max(p.imag for p in z) - min(p.imag for p in z)))
         data.update(mu_l=pick_scale(span, 150.0), mu_a=mu_a)
         try:                                   # the page must hold the scheme and the plan
             page(AccelerationPlanVariant(seed=0, number=0, **data), "en", False)
@@ -236,11 +232,11 @@ def _answer_heads(v: AccelerationPlanVariant, nt: Any) -> tuple[list[str], list[
     a = v.answers()
     heads, vals = [], []
     for c in ca.vectors(v.plan):
-        heads.append(quantity(_symbol_markup(c.symbol), "mm", nt))
-        vals.append(num(a[f"{ca.key_of(c.symbol)}_mm"], nt))
+        heads.append(nt.quantity(_symbol_markup(c.symbol), "mm"))
+        vals.append(nt.number(a[f"{ca.key_of(c.symbol)}_mm"]))
     for link in ca.turning_links(v.plan, v.linkage.crank.link):
-        heads.append(quantity(f"ε_{{{link}}}", "rad/s²", nt))
-        vals.append(f"{num(a[f'epsilon_{link}'], nt)} {word(a[f'epsilon_{link}_sense'], nt)}")
+        heads.append(nt.quantity(f"ε_{{{link}}}", "rad/s²"))
+        vals.append(f"{nt.number(a[f'epsilon_{link}'])} {nt.word('worksheets.' + a[f'epsilon_{link}_sense'])}")
     return heads, vals
 
 
@@ -260,7 +256,7 @@ def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     sh = Sheet(v, nt, key)
     nt = sh.nt
     sh.header()
-    s_l = Scale(sym("mu_l", nt), unit("m", nt), v.mu_l)
+    s_l = Scale(nt.sym("worksheets.mu_l"), nt.unit("m"), v.mu_l)
     s_a = Scale("μ_a", _acc_unit(nt, "(m/s²)"), v.mu_a)
     m = value_unit
     if v.mechanism == "slider-crank":
@@ -269,17 +265,19 @@ def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     else:
         sizes = (f"O_{{1}}A = {m(v.r, 'm', nt)}, O_{{1}}O_{{3}} = {m(v.d, 'm', nt)}, O_{{3}}B = {m(v.l, 'm', nt)}, "
                  f"O_{{3}}S_{{3}} = {m(v.l_S, 'm', nt)}")
-    lang = {"en": 0, "ru": 1, "zh": 2}.get(nt.code, 0)
-    sh.statement({"mech": _MECH[v.mechanism][lang], "mu_l": s_l.caption(nt), "k": str(v.position),
-                  "phi": f"{num(round(math.degrees(v.plan.phi) % 360.0, 2), nt)}°", "sizes": sizes,
-                  "omega_1": m(v.omega_1, "rad/s", nt), "epsilon_1": f"{num(v.epsilon_1, nt)} {unit('rad/s²', nt)}",
-                  "mu_a": s_a.caption(nt), "coriolis": _CORIOLIS[lang] if v.mechanism == "slotted-lever" else ""})
+    sh.statement({"mech": nt.word("worksheets.mech_" + v.mechanism.replace("-", "_")), "mu_l": s_l.caption(nt),
+                  "k": str(v.position),
+                  "phi": f"{nt.number(round(math.degrees(v.plan.phi) % 360.0, 2))}°", "sizes": sizes,
+                  "omega_1": m(v.omega_1, "rad/s", nt), "epsilon_1": f"{nt.number(v.epsilon_1)} {nt.unit('rad/s²')}",
+                  "mu_a": s_a.caption(nt),
+                  "coriolis": nt.word("worksheets.coriolis") if v.mechanism == "slotted-lever" else ""})
     g = v.given()
-    heads = [quantity(f"ω_{{{k[6:]}}}", "rad/s", nt) for k in g if k.startswith("omega_")]
-    vals = [f"{num(abs(w), nt)} {word('ccw' if w > 0 else 'cw', nt)}" for k, w in g.items() if k.startswith("omega_")]
+    heads = [nt.quantity(f"ω_{{{k[6:]}}}", "rad/s") for k in g if k.startswith("omega_")]
+    vals = [f"{nt.number(abs(w))} {nt.word('worksheets.ccw' if w > 0 else 'worksheets.cw')}"
+            for k, w in g.items() if k.startswith("omega_")]
     if "v_rel" in g:
-        heads.append(quantity("v_{A3A2}", "m/s", nt))
-        vals.append(num(g["v_rel"], nt))
+        heads.append(nt.quantity("v_{A3A2}", "m/s"))
+        vals.append(nt.number(g["v_rel"]))
     sh.table((heads, vals), name="given", full=False)
     # the scheme
     z = _scheme_xy(v)

@@ -13,8 +13,8 @@ from graphmethods.render import formats
 from graphmethods.scene import Scene, notation as get_notation
 from graphmethods.sheets.worksheets import answers
 from graphmethods.sheets.worksheets.pages import PAGES, key_page, student_page
+from graphmethods.sheets.worksheets.texts import STATEMENTS, TITLES
 from graphmethods.sheets.worksheets.variants import CLASSES, GENERATORS, Variant, check_kind, variants as make_variants
-from graphmethods.sheets.worksheets.words import STATEMENTS, TITLES
 from graphmethods.titles import Title
 
 # ----------------------------------------------------------------------------- a class set and its files
@@ -103,7 +103,8 @@ def contents(ws: Worksheet, *, progress: Callable[[int, int, str], None] | None 
 
     >>> from graphmethods.sheets.worksheets import variant
     >>> files = contents(worksheet("wittenbauer", variants=1, seed=3))
-    >>> list(files)[:2], files["problems/wittenbauer-01.json"] == variant("wittenbauer", seed=3, number=1).to_json().encode()
+    >>> problem = variant("wittenbauer", seed=3, number=1).to_json().encode()
+    >>> list(files)[:2], files["problems/wittenbauer-01.json"] == problem
     (['wittenbauer-en.pdf', 'svg/wittenbauer-01-student.svg'], True)
     """
     blobs: dict[str, bytes] = {}
@@ -119,7 +120,8 @@ def contents(ws: Worksheet, *, progress: Callable[[int, int, str], None] | None 
             blobs[name] = obj.to_json().encode("utf-8")
     if dxf:
         pages = [s for pair in zip(ws.students, ws.keys) for s in pair]
-        blobs.update((name, formats.to_bytes(s, ".dxf")) for name, s in zip(dxf_names(ws.kind, len(ws.variants)), pages))
+        names = dxf_names(ws.kind, len(ws.variants))
+        blobs.update((name, formats.to_bytes(s, ".dxf")) for name, s in zip(names, pages))
     return blobs
 
 

@@ -14,7 +14,6 @@ from graphmethods.scene.elements import Element, Line, Point, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.sheets.worksheets.elements import RED, SMALL_MM, TEXT_MM, THICK, ColorText, arc, ground, pin, slider
 from graphmethods.sheets.worksheets.variants import SEGMENTS
-from graphmethods.sheets.worksheets.words import num, sym, unit
 
 # ----------------------------------------------------------------------------- constructions
 # (drawn on the key pages, and by graphmethods.sheets.check on an overlay at a student's scales)
@@ -33,7 +32,7 @@ def staircase(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, 
     wrong = wrong or {}
     work = np.asarray(works, dtype=float)
     E = np.concatenate(([0.0], np.cumsum(work)))
-    s_E = Scale(sym("mu_E", nt), unit("J", nt), mu_E)
+    s_E = Scale(nt.sym("mu_E"), nt.unit("J"), mu_E)
     n = work.size
     xs = [first_x + k * step_mm for k in range(n)]
 
@@ -60,11 +59,11 @@ def staircase(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, 
         lab = occ.place_label(at, labels[k], dirs, size_mm=TEXT_MM, gap_mm=1.0)
         texts.append(Text((lab.x, lab.y), labels[k], size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-name-{k}"))
     for k, vec in enumerate(vecs):
-        text = num(work[k], nt, plus=True)
+        text = nt.number(work[k], plus=True)
         lab = occ.place_label(vec.mid, text, ("w", "e", "nw", "sw", "ne", "se"), size_mm=SMALL_MM, gap_mm=1.2)
         texts.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"{name}-value-{k + 1}"))
         if k in wrong:
-            t = f"{num(wrong[k], nt)} {unit('mm', nt)}?"
+            t = f"{nt.number(wrong[k])} {nt.unit('mm')}?"
             lab = occ.place_label(vec.mid, t, ("e", "w", "ne", "se", "nw", "sw"), size_mm=SMALL_MM, gap_mm=3.0)
             texts.append(ColorText((lab.x, lab.y), t, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                                    name=f"{name}-student-{k + 1}"))
@@ -95,7 +94,7 @@ def extremes(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, n
         els.append(Point(p, radius_mm=1.1, filled=False, name=f"{name}-mark-{key}"))
     dW = float(E[i_max] - E[i_min])
     els.append(Dimension((x_dim, at(i_min)[1]), (x_dim, at(i_max)[1]),
-                         f"{sym('delta_W_max', nt)} = {num(dW, nt)} {unit(unit_J, nt)}", size_mm=TEXT_MM,
+                         f"{nt.sym('delta_W_max')} = {nt.number(dW)} {nt.unit(unit_J)}", size_mm=TEXT_MM,
                          name=f"{name}-dimension"))
     if occ is not None:
         for e in els:
@@ -132,6 +131,7 @@ def velocity_plan(pole, vectors: dict, *, mu_v: float, link_dir, nt="en", wrong:
     (the line through a is ⊥ AB, the one through p ∥ the guide). ``wrong`` maps a segment (``"pb"``) to
     a student's length in mm: drawn red with the value beside it.
     """
+    nt = get_notation(nt)
     from graphmethods.sheets.layout import Occupancy
 
     occ = occ or Occupancy()
@@ -165,7 +165,7 @@ def velocity_plan(pole, vectors: dict, *, mu_v: float, link_dir, nt="en", wrong:
         if seg in wrong:
             f, to = SEGMENTS[seg]
             mid = ((pts[f][0] + pts[to][0]) / 2, (pts[f][1] + pts[to][1]) / 2)
-            txt = f"{seg} = {num(wrong[seg], nt)} {unit('mm', nt)}?"
+            txt = f"{seg} = {nt.number(wrong[seg])} {nt.unit('mm')}?"
             lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM, gap_mm=2.0)
             els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                                  name=f"{name}-student-{seg}"))
@@ -177,6 +177,7 @@ def moment_regions(frame, cycle, *, wrong: dict | None = None, nt="en", occ=None
     """M_d and M_r drawn through ``frame`` (φ from the period start, rad → mm), the intervals hatched,
     the boundary points a, b, … labelled. ``wrong`` maps an interval index to a student's area (mm²):
     that region is outlined red with the value written in it."""
+    nt = get_notation(nt)
     from graphmethods.sheets.layout import Occupancy
 
     occ = occ or Occupancy()
@@ -212,13 +213,13 @@ def moment_regions(frame, cycle, *, wrong: dict | None = None, nt="en", occ=None
     for i, val in sorted(wrong.items()):
         shape = regions[i].shape()
         c = shape.representative_point()
-        txt = f"{num(val, nt)} {unit('mm²', nt)}?"
+        txt = f"{nt.number(val)} {nt.unit('mm²')}?"
         lab = occ.place_label((c.x, c.y), txt, ("n", "s", "e", "w", "ne", "se"), size_mm=SMALL_MM, gap_mm=0.5)
         els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                              name=f"{name}-student-{i + 1}"))
     for key, _curve, el in (("M_d", M_d, cd), ("M_r", M_r, cr)):
-        lab = occ.place_label(el.end, sym(key, nt), ("e", "ne", "se"), size_mm=TEXT_MM, gap_mm=1.5)
-        els.append(Text((lab.x, lab.y), sym(key, nt), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-{key}-name"))
+        lab = occ.place_label(el.end, nt.sym(key), ("e", "ne", "se"), size_mm=TEXT_MM, gap_mm=1.5)
+        els.append(Text((lab.x, lab.y), nt.sym(key), size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-{key}-name"))
     return els
 
 

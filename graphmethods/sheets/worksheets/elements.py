@@ -104,7 +104,8 @@ class Shapes(Element):
         return tuple(self.prims)
 
 
-_TOKEN = re.compile(r"[ \t\n]+|[\u2e80-\u9fff\u3000-\u303f\uff00-\uffef]|[^ \t\n\u2e80-\u9fff\u3000-\u303f\uff00-\uffef]+")
+_CJK = "\u2e80-\u9fff\u3000-\u303f\uff00-\uffef"
+_TOKEN = re.compile(rf"[ \t\n]+|[{_CJK}]|[^ \t\n{_CJK}]+")
 NBSP = "\u00a0"
 _NO_LINE_START = set("，。；：、）」』》！？,.;:)")
 

@@ -23,6 +23,7 @@ from graphmethods.scene import (
     notation as get_notation,
 )
 from graphmethods.scene.elements import Element, Line, Point
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import THIN
 from graphmethods.sheets.worksheets.constructions import (
     energy_mass_construction,
@@ -45,6 +46,7 @@ from graphmethods.sheets.worksheets.elements import (
     Grid,
     wrap,
 )
+from graphmethods.sheets.worksheets.texts import STATEMENTS, value_unit
 from graphmethods.sheets.worksheets.variants import (
     EnergyMassVariant,
     IndicatorVariant,
@@ -52,7 +54,6 @@ from graphmethods.sheets.worksheets.variants import (
     StepMomentVariant,
     Variant,
 )
-from graphmethods.sheets.worksheets.words import SHAPES, STATEMENTS, num, quantity, sym, unit, value_unit, word
 
 # ----------------------------------------------------------------------------- pages
 
@@ -85,15 +86,16 @@ class Sheet:
     def header(self) -> None:
         nt = self.nt
         self.add(Text((X0, 19.0), self.v.title.title_in(nt.code), size_mm=4.6, bold=True, name="title"),
-                 Text((X1, 19.0), f"{word('variant', nt)} {self.v.number}", size_mm=4.6, bold=True, anchor="end",
-                      name="variant"))
+                 Text((X1, 19.0), f"{nt.word('worksheets.variant')} {self.v.number}", size_mm=4.6, bold=True,
+                      anchor="end", name="variant"))
         if self.key:
-            self.add(ColorText((X0, 26.0), word("key", nt), size_mm=4.0, bold=True, color=RED, name="key-mark"),
+            self.add(ColorText((X0, 26.0), nt.word("worksheets.key"), size_mm=4.0, bold=True, color=RED,
+                               name="key-mark"),
                      Text((X1, 26.0), markup.literal(self.v.id), size_mm=SMALL_MM, anchor="end", name="id"))
         else:
             x = X0
             for key, length in (("name", 62.0), ("group", 30.0), ("date", 28.0)):
-                text = word(key, nt) + ":"
+                text = nt.word("worksheets." + key) + ":"
                 self.add(Text((x, 26.0), text, size_mm=TEXT_MM, name=f"field-{key}"))
                 x += markup.text_width_mm(text, TEXT_MM) + 1.5
                 self.add(Line((x, 26.8), (x + length, 26.8), style=THIN, name=f"blank-{key}"))
@@ -164,11 +166,12 @@ class Sheet:
 
     def footer(self) -> None:
         nt = self.nt
-        text = f"graphmethods worksheet {self.v.kind} --seed {self.v.seed} · {word('variant', nt)} {self.v.number}"
+        text = (f"graphmethods worksheet {self.v.kind} --seed {self.v.seed} · {nt.word('worksheets.variant')} "
+                f"{self.v.number}")
         self.add(Text((X0, 284.0), markup.literal(text), size_mm=2.3, name="footer"))
         if self.key:
-            self.add(Text((X1, 284.0), markup.literal(word("check", nt, id=self.v.id)), size_mm=2.3, anchor="end",
-                          name="footer-check"))
+            self.add(Text((X1, 284.0), markup.literal(nt.word("worksheets.check", id=self.v.id)), size_mm=2.3,
+                          anchor="end", name="footer-check"))
 
     def scene(self, scales=()) -> Scene:
         self.footer()
@@ -176,7 +179,8 @@ class Sheet:
         if self.y > 281.0:
             raise InputError(f"{self.v.id}: the {kind} page runs {self.y - 281.0:.0f} mm past its frame")
         return Scene(PAGE, tuple(self.els), title=f"{self.v.title.title_in(self.nt.code)} — "
-                     f"{word('variant', self.nt)} {self.v.number}" + (f" ({word('key', self.nt)})" if self.key else ""),
+                     f"{self.nt.word('worksheets.variant')} {self.v.number}"
+                     + (f" ({self.nt.word('worksheets.key')})" if self.key else ""),
                      notation=self.nt.code, name=f"{self.v.kind}-{kind}-{self.v.number:02d}",
                      extra_scales=tuple(scales))
 
@@ -185,12 +189,13 @@ def answers_and_solution(sh: Sheet, heads, values, lines) -> None:
     """The answer boxes (blank on the student's page) and the worked solution (key) or room to work."""
     nt = sh.nt
     sh.y = max(sh.y, BOTTOM)
-    sh.add(Text((X0, sh.y + 3.0), word("answers", nt), size_mm=TEXT_MM + 0.3, bold=True, name="answers-title"))
+    sh.add(Text((X0, sh.y + 3.0), nt.word("worksheets.answers"), size_mm=TEXT_MM + 0.3, bold=True,
+                name="answers-title"))
     sh.y += 5.5
     vals = list(values) if sh.key else [""] * len(heads)
     sh.table((heads, vals), value_rows=(1,), name="answers", value_row_mm=9.0, width_rows=(heads, values))
-    sh.add(Text((X0, sh.y + 0.5), word("solution" if sh.key else "work", nt), size_mm=TEXT_MM + 0.3, bold=True,
-                name="solution-title"))
+    sh.add(Text((X0, sh.y + 0.5), nt.word("worksheets.solution" if sh.key else "worksheets.work"),
+                size_mm=TEXT_MM + 0.3, bold=True, name="solution-title"))
     sh.y += 5.0
     if not sh.key:
         return
@@ -200,19 +205,24 @@ def answers_and_solution(sh: Sheet, heads, values, lines) -> None:
             sh.y += LINE_MM
 
 
+def _speed(v: IndicatorVariant | StepMomentVariant | EnergyMassVariant, nt: Notation) -> str:
+    """The machine's speed as the statements give it: ``"300 rev/min"`` (``"300 r/min"`` in zh)."""
+    return f"{nt.number(v.n_rpm)} {nt.word('worksheets.unit_rev_min')}"
+
+
 def _omega_lines(v, nt) -> list[str]:
-    f, om = v.flywheel, sym("omega_m", nt)
-    rs = unit("rad/s", nt)
-    return [f"{om} = πn/30 = π·{num(v.n_rpm, nt)}/30 = {num(f.omega_m, nt)} {rs};  ω_{{max}} = {om}(1 + δ/2) = "
-            f"{num(f.omega_max, nt)} {rs};  ω_{{min}} = {om}(1 − δ/2) = {num(f.omega_min, nt)} {rs}",
-            f"{sym('J_F', nt)} = {sym('delta_W_max', nt)}/({om}²[δ]) − {sym('J_e', nt)} = "
-            f"{num(f.delta_W_max, nt)}/({num(f.omega_m, nt)}²·{v.delta}) − {num(v.J_e, nt)} = "
-            f"{num(f.J_F, nt)} {unit('kg·m²', nt)}"]
+    f, om = v.flywheel, nt.sym("worksheets.omega_m")
+    rs = nt.unit("rad/s")
+    return [f"{om} = πn/30 = π·{nt.number(v.n_rpm)}/30 = {nt.number(f.omega_m)} {rs};  ω_{{max}} = {om}(1 + δ/2) = "
+            f"{nt.number(f.omega_max)} {rs};  ω_{{min}} = {om}(1 − δ/2) = {nt.number(f.omega_min)} {rs}",
+            f"{nt.sym('worksheets.J_F')} = {nt.sym('delta_W_max')}/({om}²[δ]) − {nt.sym('worksheets.J_e')} = "
+            f"{nt.number(f.delta_W_max)}/({nt.number(f.omega_m)}²·{v.delta}) − {nt.number(v.J_e)} = "
+            f"{nt.number(f.J_F)} {nt.unit('kg·m²')}"]
 
 
 def _flywheel_heads(nt) -> list[str]:
     rs = "rad/s"
-    return [quantity(sym("omega_m", nt), rs, nt), quantity("ω_{max}", rs, nt), quantity("ω_{min}", rs, nt)]
+    return [nt.quantity(nt.sym("worksheets.omega_m"), rs), nt.quantity("ω_{max}", rs), nt.quantity("ω_{min}", rs)]
 
 
 def _clear_tick_labels(axis: Axis, points) -> Axis:
@@ -246,21 +256,22 @@ def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     nt = sh.nt
     sh.header()
     c, f = v.excess_work, v.flywheel
-    s_M = Scale(sym("mu_M", nt), unit("N·m", nt), v.mu_M)
-    s_phi = Scale(sym("mu_phi", nt), unit("rad", nt), v.mu_phi)
-    s_E = Scale(sym("mu_E", nt), unit("J", nt), v.mu_E)
-    sh.statement(dict(mu_M=s_M.caption(nt), mu_phi=s_phi.caption(nt), M_d=sym("M_d", nt), M_r=sym("M_r", nt),
-                      n=value_unit(v.n_rpm, "rev/min", nt), delta=v.delta,
-                      J_e=f"{sym('J_e', nt)} = {value_unit(v.J_e, 'kg·m²', nt)}", A=sym("A", nt), E=sym("E", nt),
-                      mu_E=s_E.caption(nt), step=word("step", nt, step=num(v.step_mm, nt)),
-                      dW=sym("delta_W_max", nt), J_F_sym=sym("J_F", nt)))
+    s_M = Scale(nt.sym("mu_M"), nt.unit("N·m"), v.mu_M)
+    s_phi = Scale(nt.sym("mu_phi"), nt.unit("rad"), v.mu_phi)
+    s_E = Scale(nt.sym("mu_E"), nt.unit("J"), v.mu_E)
+    sh.statement(dict(mu_M=s_M.caption(nt), mu_phi=s_phi.caption(nt), M_d=nt.sym("M_d"), M_r=nt.sym("M_r"),
+                      n=_speed(v, nt), delta=v.delta,
+                      J_e=f"{nt.sym('worksheets.J_e')} = {value_unit(v.J_e, 'kg·m²', nt)}", A=nt.sym("A"),
+                      E=nt.sym("E"),
+                      mu_E=s_E.caption(nt), step=nt.word("worksheets.step", step=nt.number(v.step_mm)),
+                      dW=nt.sym("delta_W_max"), J_F_sym=nt.sym("worksheets.J_F")))
     L, n = c.labels, c.work.size
     E = _clean(c.E)
-    full = [[word("interval", nt), ""] + [f"{L[i]}–{L[i + 1]}" for i in range(n)],
-            [quantity("f", "mm²", nt), ""] + [num(a, nt, plus=True) for a in c.areas_mm2],
-            [quantity(sym("A", nt), "J", nt), ""] + [num(a, nt, plus=True, sig=6) for a in c.work],
-            [word("point_end", nt), L[0]] + list(L[1:]),
-            [quantity(sym("E", nt), "J", nt), num(0, nt)] + [num(e, nt, sig=6) for e in E[1:]]]
+    full = [[nt.word("worksheets.interval"), ""] + [f"{L[i]}–{L[i + 1]}" for i in range(n)],
+            [nt.quantity("f", "mm²"), ""] + [nt.number(a, plus=True) for a in c.areas_mm2],
+            [nt.quantity(nt.sym("A"), "J"), ""] + [nt.number(a, plus=True, sig=6) for a in c.work],
+            [nt.word("worksheets.point_end"), L[0]] + list(L[1:]),
+            [nt.quantity(nt.sym("E"), "J"), nt.number(0)] + [nt.number(e, sig=6) for e in E[1:]]]
     shown = full if key else [r if i not in (2, 4) else r[:2] + [""] * n for i, r in enumerate(full)]
     sh.table(shown, align="l" + "c" * (n + 1), value_rows=(2, 4), name="data", width_rows=full)
     # the drawing area: E axis and graph paper
@@ -273,7 +284,7 @@ def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     sh.add(Grid((X0, top, X1, top + H), anchor=(ax_x, y0), name="grid"))
     v_top, v_bot = s_E.to_value(y0 - top - 6.0), -s_E.to_value(top + H - y0 - 2.0)
     axis = Axis((ax_x, y0), s_E, "y", min_value=v_bot, max_value=v_top,
-                ticks=nice_ticks(v_bot, v_top, s_E, min_gap_mm=10.0), label=quantity(sym("E", nt), "J", nt),
+                ticks=nice_ticks(v_bot, v_top, s_E, min_gap_mm=10.0), label=nt.quantity(nt.sym("E"), "J"),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     sh.add(axis)
     occ = Occupancy()
@@ -283,18 +294,20 @@ def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
         sh.add(*extremes(first, y0, c.work, mu_E=v.mu_E, step_mm=v.step_mm, nt=nt, occ=occ))
     else:
         sh.add(Point((first, y0), label="a", label_dir="w", size_mm=TEXT_MM, gap_mm=1.5, name="start-a"))
-    sh.caption([s_E.caption(nt), word("step", nt, step=num(v.step_mm, nt))], y=top + H + 5.0)
+    sh.caption([s_E.caption(nt), nt.word("worksheets.step", step=nt.number(v.step_mm))], y=top + H + 5.0)
     sh.y = top + H + CAPTION_ROOM
     i, j = c.index_E_max, c.index_E_min
     answers_and_solution(
-        sh, _flywheel_heads(nt) + [quantity(sym("delta_W_max", nt), "J", nt), f"ω_{{max}}: {word('at_point', nt)}",
-                                   f"ω_{{min}}: {word('at_point', nt)}", quantity(sym("J_F", nt), "kg·m²", nt)],
-        [num(f.omega_m, nt), num(f.omega_max, nt), num(f.omega_min, nt), num(c.delta_W_max, nt),
-         L[c.index_E_max], L[c.index_E_min], num(f.J_F, nt)],
-        [f"{sym('A', nt)}_{{i}} = f_{{i}}·{sym('mu_M', nt)}·{sym('mu_phi', nt)} = f_{{i}}·"
-         f"{num(v.mu_M * v.mu_phi, nt, sig=6)} {unit('J', nt)}/{unit('mm²', nt)};  "
-         f"{sym('delta_W_max', nt)} = {sym('E_max', nt)} − {sym('E_min', nt)} = {num(E[i], nt)} − "
-         f"({num(E[j], nt)}) = {num(c.delta_W_max, nt)} {unit('J', nt)}"] + _omega_lines(v, nt))
+        sh, _flywheel_heads(nt) + [nt.quantity(nt.sym("delta_W_max"), "J"),
+                                   f"ω_{{max}}: {nt.word('worksheets.at_point')}",
+                                   f"ω_{{min}}: {nt.word('worksheets.at_point')}",
+                                   nt.quantity(nt.sym("worksheets.J_F"), "kg·m²")],
+        [nt.number(f.omega_m), nt.number(f.omega_max), nt.number(f.omega_min), nt.number(c.delta_W_max),
+         L[c.index_E_max], L[c.index_E_min], nt.number(f.J_F)],
+        [f"{nt.sym('A')}_{{i}} = f_{{i}}·{nt.sym('mu_M')}·{nt.sym('mu_phi')} = f_{{i}}·"
+         f"{nt.number(v.mu_M * v.mu_phi, sig=6)} {nt.unit('J')}/{nt.unit('mm²')};  "
+         f"{nt.sym('delta_W_max')} = {nt.sym('E_max')} − {nt.sym('E_min')} = {nt.number(E[i])} − "
+         f"({nt.number(E[j])}) = {nt.number(c.delta_W_max)} {nt.unit('J')}"] + _omega_lines(v, nt))
     return sh.scene((s_E,))
 
 
@@ -306,22 +319,22 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     nt = sh.nt
     sh.header()
     c, f = v.excess_work, v.flywheel
-    s_M = Scale(sym("mu_M", nt), unit("N·m", nt), v.mu_M)
-    s_phi = Scale(sym("mu_phi", nt), unit("rad", nt), v.mu_phi, alt_per_mm=v.mu_phi_deg, alt_unit="°")
-    sh.statement(dict(M_r=sym("M_r", nt), M_d=sym("M_d", nt), shape=in_language(SHAPES[v.shape], nt),
-                      n=value_unit(v.n_rpm, "rev/min", nt), delta=v.delta,
-                      J_e=f"{sym('J_e', nt)} = {value_unit(v.J_e, 'kg·m²', nt)}", mu_M=s_M.caption(nt),
-                      mu_phi=s_phi.caption(nt), A=sym("A", nt), E=sym("E", nt), dW=sym("delta_W_max", nt),
-                      J_F_sym=sym("J_F", nt)))
-    deg = unit("°", nt)
+    s_M = Scale(nt.sym("mu_M"), nt.unit("N·m"), v.mu_M)
+    s_phi = Scale(nt.sym("mu_phi"), nt.unit("rad"), v.mu_phi, alt_per_mm=v.mu_phi_deg, alt_unit="°")
+    sh.statement(dict(M_r=nt.sym("M_r"), M_d=nt.sym("M_d"), shape=nt.word("worksheets.shape_" + v.shape),
+                      n=_speed(v, nt), delta=v.delta,
+                      J_e=f"{nt.sym('worksheets.J_e')} = {value_unit(v.J_e, 'kg·m²', nt)}", mu_M=s_M.caption(nt),
+                      mu_phi=s_phi.caption(nt), A=nt.sym("A"), E=nt.sym("E"), dW=nt.sym("delta_W_max"),
+                      J_F_sym=nt.sym("worksheets.J_F")))
+    deg = nt.unit("°")
     if v.shape == "steps":
         st = v.steps()
-        sh.table([[quantity("φ", "°", nt)] + [f"{num(a, nt)}…{num(b, nt)}" for a, b, _ in st],
-                  [quantity(sym("M_r", nt), "N·m", nt)] + [num(m, nt) for _, _, m in st]],
+        sh.table([[nt.quantity("φ", "°")] + [f"{nt.number(a)}…{nt.number(b)}" for a, b, _ in st],
+                  [nt.quantity(nt.sym("M_r"), "N·m")] + [nt.number(m) for _, _, m in st]],
                  align="l" + "c" * len(st), name="data")
     else:
-        sh.table([[quantity("φ", "°", nt)] + [num(p, nt) for p in v.phi_deg],
-                  [quantity(sym("M_r", nt), "N·m", nt)] + [num(m, nt) for m in v.M_r]],
+        sh.table([[nt.quantity("φ", "°")] + [nt.number(p) for p in v.phi_deg],
+                  [nt.quantity(nt.sym("M_r"), "N·m")] + [nt.number(m) for m in v.M_r]],
                  align="l" + "c" * len(v.phi_deg), name="data")
     # the moment diagram: axes at the stated scales on graph paper
     n = c.work.size
@@ -343,7 +356,7 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
                   skip_zero_label=True, name="axis-phi")
     m_top = s_M.to_value(y0 - top - 7.0)
     ax_M = Axis((ax_x, y0), s_M, "y", min_value=0.0, max_value=m_top, ticks=nice_ticks(0.0, m_top, s_M, min_gap_mm=8.0),
-                label=quantity("M", "N·m", nt), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-M")
+                label=nt.quantity("M", "N·m"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-M")
     sh.add(ax_phi, ax_M)
     if key:
         occ = Occupancy()
@@ -360,27 +373,29 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     def row(values):
         return list(values) + pad
 
-    full = [[word("interval", nt)] + row(f"{L[i]}–{L[i + 1]}" for i in range(n)),
-            [quantity("φ", "°", nt)] + row(f"{num(math.degrees(c.phi[i]), nt)}…{num(math.degrees(c.phi[i + 1]), nt)}"
+    full = [[nt.word("worksheets.interval")] + row(f"{L[i]}–{L[i + 1]}" for i in range(n)),
+            [nt.quantity("φ", "°")] + row(f"{nt.number(math.degrees(c.phi[i]))}…{nt.number(math.degrees(c.phi[i + 1]))}"
                                            for i in range(n)),
-            [quantity("f", "mm²", nt)] + row(num(a / (v.mu_M * v.mu_phi), nt, plus=True) for a in c.work),
-            [quantity(sym("A", nt), "J", nt)] + row(num(a, nt, plus=True) for a in c.work),
-            [f"{quantity(sym('E', nt), 'J', nt)} ({word('point_end', nt).lower()})"]
-            + row(f"{num(E[i + 1], nt)} ({L[i + 1]})" for i in range(n))]
+            [nt.quantity("f", "mm²")] + row(nt.number(a / (v.mu_M * v.mu_phi), plus=True) for a in c.work),
+            [nt.quantity(nt.sym("A"), "J")] + row(nt.number(a, plus=True) for a in c.work),
+            [f"{nt.quantity(nt.sym('E'), 'J')} ({nt.word('worksheets.point_end').lower()})"]
+            + row(f"{nt.number(E[i + 1])} ({L[i + 1]})" for i in range(n))]
     shown = full if key else [r[:1] + [""] * cols for r in full]
     sh.table(shown, align="l" + "c" * cols, name="excess-work", row_mm=row_mm, width_rows=full)
     if v.shape == "steps":
-        md = "(" + " + ".join(f"{num(m, nt)}·{num(b - a, nt)}" for a, b, m in v.steps()) + f")/360 = {num(v.M_d, nt)}"
+        md = ("(" + " + ".join(f"{nt.number(m)}·{nt.number(b - a)}" for a, b, m in v.steps())
+              + f")/360 = {nt.number(v.M_d)}")
     else:
-        md = f"∫{sym('M_r', nt)}dφ/2π = {num(v.M_d, nt)}"
+        md = f"∫{nt.sym('M_r')}dφ/2π = {nt.number(v.M_d)}"
     answers_and_solution(
-        sh, [quantity(sym("M_d", nt), "N·m", nt), quantity(sym("delta_W_max", nt), "J", nt),
-             quantity("φ(ω_{max})", "°", nt), quantity("φ(ω_{min})", "°", nt), quantity(sym("J_F", nt), "kg·m²", nt)],
-        [num(v.M_d, nt), num(c.delta_W_max, nt), num(math.degrees(c.phi_E_max), nt), num(math.degrees(c.phi_E_min), nt),
-         num(f.J_F, nt)],
-        [f"{sym('M_d', nt)} = {md} {unit('N·m', nt)};  {sym('A', nt)}_{{i}} = ∫({sym('M_d', nt)} − "
-         f"{sym('M_r', nt)})dφ;  {sym('delta_W_max', nt)} = {num(E.max(), nt)} − ({num(E.min(), nt)}) = "
-         f"{num(c.delta_W_max, nt)} {unit('J', nt)}"] + _omega_lines(v, nt)[1:])
+        sh, [nt.quantity(nt.sym("M_d"), "N·m"), nt.quantity(nt.sym("delta_W_max"), "J"),
+             nt.quantity("φ(ω_{max})", "°"), nt.quantity("φ(ω_{min})", "°"),
+             nt.quantity(nt.sym("worksheets.J_F"), "kg·m²")],
+        [nt.number(v.M_d), nt.number(c.delta_W_max), nt.number(math.degrees(c.phi_E_max)),
+         nt.number(math.degrees(c.phi_E_min)), nt.number(f.J_F)],
+        [f"{nt.sym('M_d')} = {md} {nt.unit('N·m')};  {nt.sym('A')}_{{i}} = ∫({nt.sym('M_d')} − "
+         f"{nt.sym('M_r')})dφ;  {nt.sym('delta_W_max')} = {nt.number(E.max())} − ({nt.number(E.min())}) = "
+         f"{nt.number(c.delta_W_max)} {nt.unit('J')}"] + _omega_lines(v, nt)[1:])
     return sh.scene((s_phi, s_M))
 
 
@@ -407,11 +422,11 @@ def _plan_page(v: PlanVariant, nt, key: bool) -> Scene:
     sh = Sheet(v, nt, key)
     nt = sh.nt
     sh.header()
-    s_l = Scale(sym("mu_l", nt), unit("m", nt), v.mu_l)
-    s_v = Scale(sym("mu_v", nt), unit("(m/s)", nt), v.mu_v)
-    sh.statement(dict(mu_l=s_l.caption(nt), mu_v=s_v.caption(nt), phi=f"{num(v.phi_deg, nt)}°",
+    s_l = Scale(nt.sym("worksheets.mu_l"), nt.unit("m"), v.mu_l)
+    s_v = Scale(nt.sym("worksheets.mu_v"), nt.unit("(m/s)"), v.mu_v)
+    sh.statement(dict(mu_l=s_l.caption(nt), mu_v=s_v.caption(nt), phi=f"{nt.number(v.phi_deg)}°",
                       r=value_unit(v.r, "m", nt), l=value_unit(v.l, "m", nt), e=value_unit(v.e, "m", nt),
-                      AS2=value_unit(v.l_AS2, "m", nt), sense=word("ccw", nt),
+                      AS2=value_unit(v.l_AS2, "m", nt), sense=nt.word("worksheets.ccw"),
                       omega_1=value_unit(v.omega_1, "rad/s", nt)))
     # the scheme at μ_l, as tall as this position needs
     pts = _scheme_points(v)
@@ -444,20 +459,19 @@ def _plan_page(v: PlanVariant, nt, key: bool) -> Scene:
     sh.y = top + H + CAPTION_ROOM
     a = v.answers()
     mm, ms = "mm", "m/s"
-    sense = word(a["omega_2_sense"], nt)
+    sense = nt.word("worksheets." + a["omega_2_sense"])
     answers_and_solution(
-        sh, [quantity("pa", mm, nt), quantity("pb", mm, nt), quantity("ab", mm, nt), quantity("ps_{2}", mm, nt),
-             quantity("v_{A}", ms, nt), quantity("v_{B}", ms, nt), quantity("v_{BA}", ms, nt),
-             quantity("v_{S2}", ms, nt), quantity("ω_{2}", "rad/s", nt)],
-        [num(a["pa_mm"], nt), num(a["pb_mm"], nt), num(a["ab_mm"], nt), num(a["ps2_mm"], nt), num(a["v_A"], nt),
-         num(a["v_B"], nt), num(a["v_BA"], nt), num(a["v_S2"], nt), num(a["omega_2"], nt)],
-        [f"v_{{A}} = ω_{{1}}·OA = {num(v.omega_1, nt)}·{num(v.r, nt)} = {num(a['v_A'], nt)} "
-         f"{unit('m/s', nt)};  pa = v_{{A}}/{sym('mu_v', nt)} = {num(a['pa_mm'], nt)} {unit('mm', nt)}",
-         f"v_{{B}} = pb·{sym('mu_v', nt)} = {num(a['v_B'], nt)} {unit('m/s', nt)};  v_{{BA}} = ab·"
-         f"{sym('mu_v', nt)} = {num(a['v_BA'], nt)} {unit('m/s', nt)};  v_{{S2}} = ps_{{2}}·"
-         f"{sym('mu_v', nt)} = {num(a['v_S2'], nt)} {unit('m/s', nt)}",
-         f"ω_{{2}} = v_{{BA}}/AB = {num(a['v_BA'], nt)}/{num(v.l, nt)} = {num(a['omega_2'], nt)} "
-         f"{unit('rad/s', nt)}, {sense}"])
+        sh, [nt.quantity("pa", mm), nt.quantity("pb", mm), nt.quantity("ab", mm), nt.quantity("ps_{2}", mm),
+             nt.quantity("v_{A}", ms), nt.quantity("v_{B}", ms), nt.quantity("v_{BA}", ms),
+             nt.quantity("v_{S2}", ms), nt.quantity("ω_{2}", "rad/s")],
+        [nt.number(a[k]) for k in ("pa_mm", "pb_mm", "ab_mm", "ps2_mm", "v_A", "v_B", "v_BA", "v_S2", "omega_2")],
+        [f"v_{{A}} = ω_{{1}}·OA = {nt.number(v.omega_1)}·{nt.number(v.r)} = {nt.number(a['v_A'])} "
+         f"{nt.unit('m/s')};  pa = v_{{A}}/{nt.sym('worksheets.mu_v')} = {nt.number(a['pa_mm'])} {nt.unit('mm')}",
+         f"v_{{B}} = pb·{nt.sym('worksheets.mu_v')} = {nt.number(a['v_B'])} {nt.unit('m/s')};  v_{{BA}} = ab·"
+         f"{nt.sym('worksheets.mu_v')} = {nt.number(a['v_BA'])} {nt.unit('m/s')};  v_{{S2}} = ps_{{2}}·"
+         f"{nt.sym('worksheets.mu_v')} = {nt.number(a['v_S2'])} {nt.unit('m/s')}",
+         f"ω_{{2}} = v_{{BA}}/AB = {nt.number(a['v_BA'])}/{nt.number(v.l)} = {nt.number(a['omega_2'])} "
+         f"{nt.unit('rad/s')}, {sense}"])
     return sh.scene((s_l, s_v))
 
 
@@ -477,17 +491,17 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     nt = sh.nt
     sh.header()
     p = v.press
-    J_e_sym, dT = sym("J_e", nt), sym("E", nt) if nt.code == "ru" else "ΔT"
-    s_J = Scale(sym("mu_J", nt), unit("kg·m²", nt), v.mu_J)
-    s_T = Scale(sym("mu_T", nt), unit("J", nt), v.mu_T)
+    J_e_sym, dT = nt.sym("worksheets.J_e"), nt.sym("E") if nt.code == "ru" else "ΔT"
+    s_J = Scale(nt.sym("worksheets.mu_J"), nt.unit("kg·m²"), v.mu_J)
+    s_T = Scale(nt.sym("mu_T"), nt.unit("J"), v.mu_T)
     sh.statement(dict(r=value_unit(p.get("r", 0), "m", nt), l=value_unit(p.get("l", 0), "m", nt),
                       e=value_unit(p.get("e", 0), "m", nt), F0=value_unit(p.get("F0", 0), "N", nt),
-                      force_from=num(p.get("force_from", 0), nt), force_to=num(p.get("force_to", 1), nt),
-                      n=value_unit(v.n_rpm, "rev/min", nt), delta=v.delta, J_e_sym=J_e_sym, dT=dT,
-                      mu_J=s_J.caption(nt), mu_T=s_T.caption(nt), J_F_sym=sym("J_F", nt)))
-    sh.table([[word("position", nt)] + [str(k) for k in range(v.m + 1)],
-              [quantity(J_e_sym, "kg·m²", nt)] + [num(x, nt) for x in v.J_e],
-              [quantity(dT, "J", nt)] + [num(x, nt) for x in v.delta_T]],
+                      force_from=nt.number(p.get("force_from", 0)), force_to=nt.number(p.get("force_to", 1)),
+                      n=_speed(v, nt), delta=v.delta, J_e_sym=J_e_sym, dT=dT,
+                      mu_J=s_J.caption(nt), mu_T=s_T.caption(nt), J_F_sym=nt.sym("worksheets.J_F")))
+    sh.table([[nt.word("worksheets.position")] + [str(k) for k in range(v.m + 1)],
+              [nt.quantity(J_e_sym, "kg·m²")] + [nt.number(x) for x in v.J_e],
+              [nt.quantity(dT, "J")] + [nt.number(x) for x in v.delta_T]],
              align="l" + "c" * (v.m + 1), name="data", size=2.8)
     r = v.result
     top, H = sh.drawing_box()
@@ -503,31 +517,33 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     curve_pts = list(zip(X.tolist(), Y.tolist()))
     ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=x_max, ticks=nice_ticks(0.0, x_max, s_J, min_gap_mm=12.0),
                 label=J_e_sym, size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True, name="axis-J")
-    ax_T = Axis(origin, s_T, "y", min_value=y_bot, max_value=y_top, ticks=nice_ticks(y_bot, y_top, s_T, min_gap_mm=10.0),
-                label=quantity(dT, "J", nt), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
+    ax_T = Axis(origin, s_T, "y", min_value=y_bot, max_value=y_top,
+                ticks=nice_ticks(y_bot, y_top, s_T, min_gap_mm=10.0),
+                label=nt.quantity(dT, "J"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
     ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts), _clear_tick_labels(ax_T, curve_pts)
     sh.add(ax_J, ax_T)
     if key:
         sh.add(*energy_mass_construction(r, origin=origin, box=box, axes=(ax_J, ax_T), nt=nt))
     sh.caption([s_J.caption(nt), s_T.caption(nt)], y=top + H + 5.0)
     sh.y = top + H + CAPTION_ROOM
-    tg, om = sym("tan", nt), sym("omega_m", nt)
+    tg, om = nt.sym("worksheets.tan"), nt.sym("worksheets.omega_m")
     answers_and_solution(
-        sh, [f"{tg} ψ_{{max}}", f"{tg} ψ_{{min}}", quantity("kl", "mm", nt),
-             f"ω_{{max}}: {word('position', nt).lower()}", f"ω_{{min}}: {word('position', nt).lower()}",
-             quantity(sym("J_F", nt), "kg·m²", nt)],
-        [num(r.tan_psi_max, nt), num(r.tan_psi_min, nt), num(r.kl_mm, nt),
-         ", ".join(str(i) for i in r.index_omega_max), ", ".join(str(i) for i in r.index_omega_min), num(r.J_F, nt)],
-        [f"{om} = πn/30 = {num(v.omega_m, nt)} {unit('rad/s', nt)};  {tg} ψ_{{max}} = "
-         f"{num(v.mu_J, nt)}·{num(v.omega_m, nt)}²·(1 + {v.delta}/2)²/(2·{num(v.mu_T, nt)}) = "
-         f"{num(r.tan_psi_max, nt)};  {tg} ψ_{{min}} = {num(r.tan_psi_min, nt)}",
-         f"{sym('J_F', nt)} = {sym('mu_T', nt)}·kl/({om}²[δ]) = {num(v.mu_T, nt)}·{num(r.kl_mm, nt)}/"
-         f"({num(v.omega_m, nt)}²·{v.delta}) = {num(r.J_F, nt)} {unit('kg·m²', nt)}"])
+        sh, [f"{tg} ψ_{{max}}", f"{tg} ψ_{{min}}", nt.quantity("kl", "mm"),
+             f"ω_{{max}}: {nt.word('worksheets.position').lower()}",
+             f"ω_{{min}}: {nt.word('worksheets.position').lower()}",
+             nt.quantity(nt.sym("worksheets.J_F"), "kg·m²")],
+        [nt.number(r.tan_psi_max), nt.number(r.tan_psi_min), nt.number(r.kl_mm),
+         ", ".join(str(i) for i in r.index_omega_max), ", ".join(str(i) for i in r.index_omega_min), nt.number(r.J_F)],
+        [f"{om} = πn/30 = {nt.number(v.omega_m)} {nt.unit('rad/s')};  {tg} ψ_{{max}} = "
+         f"{nt.number(v.mu_J)}·{nt.number(v.omega_m)}²·(1 + {v.delta}/2)²/(2·{nt.number(v.mu_T)}) = "
+         f"{nt.number(r.tan_psi_max)};  {tg} ψ_{{min}} = {nt.number(r.tan_psi_min)}",
+         f"{nt.sym('worksheets.J_F')} = {nt.sym('mu_T')}·kl/({om}²[δ]) = {nt.number(v.mu_T)}·{nt.number(r.kl_mm)}/"
+         f"({nt.number(v.omega_m)}²·{v.delta}) = {nt.number(r.J_F)} {nt.unit('kg·m²')}"])
     return sh.scene((s_J, s_T))
 
 
-PAGES: dict[str, Callable[..., Scene]] = {"indicator": _indicator_page, "step-moment": _step_page, "velocity-plan": _plan_page,
-          "wittenbauer": _em_page}
+PAGES: dict[str, Callable[..., Scene]] = {"indicator": _indicator_page, "step-moment": _step_page,
+                                          "velocity-plan": _plan_page, "wittenbauer": _em_page}
 
 
 def student_page(v: Variant, *, notation="en") -> Scene:

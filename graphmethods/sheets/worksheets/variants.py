@@ -19,7 +19,7 @@ from graphmethods.dynamics import excess_work as ew
 from graphmethods.dynamics.flywheel import flywheel
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.errors import InputError
-from graphmethods.sheets.worksheets.words import TITLES
+from graphmethods.sheets.worksheets.texts import TITLES
 from graphmethods.titles import Title
 from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
@@ -585,7 +585,8 @@ def parse_id(text: str) -> Variant | None:
     if not m or m.group(1) not in KINDS:
         return None
     if len(m.group(3)) > 6 or int(m.group(3)) > MAX_VARIANTS:
-        raise InputError(f"{text}: variant number {m.group(3)[:20]} is above the limit {MAX_VARIANTS} of a worksheet set")
+        raise InputError(f"{text}: variant number {m.group(3)[:20]} is above the limit {MAX_VARIANTS} "
+                         f"of a worksheet set")
     if len(m.group(2)) > 19 or int(m.group(2)) > 2**63 - 1:
         raise InputError(f"{text}: seed {m.group(2)[:20]}… is above the limit 2**63 − 1")
     return variant(m.group(1), seed=int(m.group(2)), number=int(m.group(3)))

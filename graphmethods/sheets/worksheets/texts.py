@@ -1,39 +1,16 @@
-"""The worksheets' words: titles, statements, shapes and symbols in en / ru / zh, and the helpers that
-write numbers, units and scales in a notation's style.
+"""The worksheets' titles and statements (the given data, then the tasks, per kind, in en / ru / zh), and
+a value with its unit as a notation writes it. The words, symbols and units themselves are in
+:mod:`graphmethods.scene.vocabulary.worksheets` (``nt.word("worksheets.key")``).
+
+>>> from graphmethods.scene.notation import get
+>>> value_unit(43.69, "kg·m²", get("ru"))
+'43,69 кг·м²'
 """
 
 from __future__ import annotations
 
-from graphmethods.scene import in_language, notation as get_notation
+from graphmethods.scene.notation import Notation
 from graphmethods.titles import Title
-
-# ----------------------------------------------------------------------------- words (en, ru, zh)
-# Words and symbols the notation profiles lack (worth merging into scene/notation.py).
-WORDS = {
-    "variant": ("Variant", "Вариант", "方案"),
-    "name": ("Name", "Ф. И. О.", "姓名"),
-    "group": ("Group", "Группа", "班级"),
-    "date": ("Date", "Дата", "日期"),
-    "key": ("ANSWER KEY", "ОТВЕТЫ", "参考答案"),
-    "answers": ("Answers", "Ответы", "答案"),
-    "data": ("Data", "Исходные данные", "已知数据"),
-    "solution": ("Solution", "Решение", "解"),
-    "work": ("Calculations", "Вычисления", "计算"),
-    "check": ("check a student's answers: graphmethods check {id} ANSWERS.toml",
-              "проверка ответов студента: graphmethods check {id} ANSWERS.toml",
-              "检查学生答案：graphmethods check {id} ANSWERS.toml"),
-    "draw_here": ("Draw here", "Постройте здесь", "在此作图"),
-    "interval": ("Interval", "Участок", "区间"),
-    "point_end": ("End point", "Точка", "终点"),
-    "position": ("Position", "Положение", "位置"),
-    "at_point": ("point", "точка", "点"),
-    "step": ("arrows {step} mm apart", "шаг {step} мм", "箭头间距 {step} mm"),
-    "cw": ("clockwise", "по часовой стрелке", "顺时针"),
-    "ccw": ("counterclockwise", "против часовой стрелки", "逆时针"),
-    "sense": ("sense", "направление", "转向"),
-    "ray_upper": ("ψ_{max} ray", "луч ψ_{max}", "ψ_{max} 射线"),
-    "ray_lower": ("ψ_{min} ray", "луч ψ_{min}", "ψ_{min} 射线"),
-}
 
 # the title of each kind of worksheet problem (Variant.title)
 TITLES = {
@@ -159,67 +136,7 @@ STATEMENTS = {
     ),
 }
 
-SHAPES = {"steps": ("steps", "ступенчатый", "阶梯形"), "linear": ("piecewise linear", "кусочно-линейный",
-                                                                "折线形")}
 
-#: symbols the notation profiles lack: (en, ru, zh)
-SYMBOLS = {
-    "J_e": ("J_e", "J_п", "J_e"),
-    "J_F": ("J_F", "J_м", "J_F"),
-    "omega_m": ("ω_m", "ω_{ср}", "ω_m"),
-    "mu_v": ("μ_v", "μ_v", "μ_v"),
-    "mu_l": ("μ_l", "μ_l", "μ_l"),
-    "mu_J": ("μ_J", "μ_J", "μ_J"),
-    "tan": ("tan", "tg", "tan"),
-}
-
-#: units the notation profiles lack, ru and zh forms
-EXTRA_UNITS = {"rev/min": ("об/мин", "r/min"), "m/s": ("м/с", "m/s"), "(m/s)": ("(м/с)", "(m/s)"),
-               "rad/s": ("рад/с", "rad/s"), "kg·m²": ("кг·м²", "kg·m²")}
-
-
-def word(key: str, nt, **fmt) -> str:
-    """A word of the worksheets in the profile's language (``{placeholders}`` filled from ``fmt``)."""
-    return in_language(WORDS[key], nt, **fmt)
-
-
-def sym(key: str, nt) -> str:
-    """A symbol of the worksheets: the profile's own (``M_d``, ``delta_W_max`` …) or one of :data:`SYMBOLS`."""
-    return in_language(SYMBOLS[key], nt) if key in SYMBOLS else get_notation(nt).sym(key)
-
-
-def unit(u: str, nt) -> str:
-    """A unit as the profile writes it, including the few units the profiles lack."""
-    nt = get_notation(nt)
-    if u in EXTRA_UNITS and nt.code != "en":
-        return EXTRA_UNITS[u][0 if nt.code == "ru" else 1]
-    return nt.unit(u)
-
-
-def quantity(symbol: str, u: str, nt) -> str:
-    """``"A, J"`` (en, ru) or ``"A/J"`` (zh), with the units of :func:`unit`."""
-    nt = get_notation(nt)
-    uu = unit(u, nt)
-    if not uu:
-        return symbol
-    if nt.quantity_style == "slash":
-        return f"{symbol}/{uu}" if all(c not in uu for c in "·/ °") else f"{symbol}/({uu})"
-    return f"{symbol}, {uu}"
-
-
-def num(value: float, nt, *, sig: int = 4, plus: bool = False) -> str:
-    """A number as the profile writes it (decimal comma in ru, typographic minus)."""
-    return get_notation(nt).number(float(value), sig=sig, plus=plus)
-
-
-def value_unit(value: float, u: str, nt, *, sig: int = 4) -> str:
-    """``"43.69 kg·m²"`` in the profile's style."""
-    return f"{num(value, nt, sig=sig)} {unit(u, nt)}"
-
-
-def scale_text(symbol: str, per_mm: float, u: str, nt, *, alt: str = "") -> str:
-    """``"μ_M = 10 N·m/mm"`` in the profile's style (``alt``: an equivalent form in brackets)."""
-    text = f"{symbol} = {num(per_mm, nt, sig=6)} {unit(u, nt)}/{unit('mm', nt)}"
-    return text + (f" ({alt})" if alt else "")
-
-
+def value_unit(value: float, u: str, nt: Notation, *, sig: int = 4) -> str:
+    """``"43.69 kg·m²"`` in the notation's style (decimal mark, units)."""
+    return f"{nt.number(value, sig=sig)} {nt.unit(u)}"
