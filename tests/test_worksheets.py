@@ -280,6 +280,17 @@ def test_two_runs_give_identical_bytes_of_the_pdf_and_every_svg(tmp_path):
     assert problem["id"] == "velocity-plan:9:2" and problem["format"] == ws.PROBLEM_FORMAT
 
 
+def test_the_cli_writes_exactly_the_contents_the_figure_layer_gives(tmp_path):
+    sheet = ws.worksheet("wittenbauer", variants=1, seed=4, notation="ru")
+    files = ws.contents(sheet, dxf=True)
+    paths = cli_worksheet.write_worksheet(sheet, tmp_path / "set", dxf=True)
+    written = {p.relative_to(tmp_path / "set").as_posix(): p.read_bytes()
+               for p in (tmp_path / "set").rglob("*") if p.is_file()}
+    assert written == files
+    assert [p.relative_to(tmp_path / "set").as_posix() for p in paths] == ws.output_names("wittenbauer", "ru", 1)
+    assert sorted(n for n in files if n.startswith("dxf/")) == sorted(ws.dxf_names("wittenbauer", 1))
+
+
 def test_order_in_the_pdf_is_students_then_keys():
     sheet = ws.worksheet("indicator", variants=3, seed=1)
     assert [s.name for s in sheet.scenes] == ["indicator-student-01", "indicator-student-02", "indicator-student-03",

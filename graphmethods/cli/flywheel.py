@@ -153,17 +153,9 @@ def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
         scene = flywheel_design(disc, None, notation=args.lang)
     else:
         scene = flywheel_design(rim, disc, notation=args.lang)
-    if suffix == ".svg":
-        from graphmethods.render import svg
+    from graphmethods.render import formats
 
-        return path, svg.to_bytes(scene)
-    if suffix == ".pdf":
-        from graphmethods.render import pdf
-
-        return path, pdf.to_bytes([scene])
-    from graphmethods.render import mpl
-
-    return path, mpl.to_png_bytes(scene)
+    return path, formats.to_bytes(scene, suffix)
 
 
 def _delta_table(args: argparse.Namespace) -> int:
@@ -199,13 +191,9 @@ def _hyperbola_bytes(args: argparse.Namespace, delta_W_max: float, omega_m: floa
 
     scene = flywheel_hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, delta=delta, machine=machine,
                                notation=args.lang)
-    if suffix == ".svg":
-        from graphmethods.render import svg
+    from graphmethods.render import formats
 
-        return path, svg.to_bytes(scene)
-    from graphmethods.render import pdf
-
-    return path, pdf.to_bytes([scene])
+    return path, formats.to_bytes(scene, suffix)
 
 
 def run(args: argparse.Namespace) -> int:
