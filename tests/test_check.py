@@ -124,6 +124,18 @@ def test_tolerances_propagate_to_J_F():
                                                                          ("results.J_F", "carried")]
 
 
+def test_measured_areas_set_the_tolerance_of_the_works_and_of_delta_W_max():
+    r = ck.check("W3", ANSWERS / "w3_mistakes.toml")          # mu_M = 0.5 N·m/mm, mu_phi = 2.5 °/mm
+    by = {i.key: i for i in r.items}
+    k = 0.5 * math.radians(2.5)                                 # J per mm² of the student's diagram
+    for i in range(2):
+        area, work = by[f"moment_diagram.areas_mm2[{i}]"], by[f"results.works_J[{i}]"]
+        assert work.tolerance == pytest.approx(area.tolerance * k + 1e-3 * abs(work.expected))
+    band = sum(by[f"moment_diagram.areas_mm2[{i}]"].tolerance * k for i in range(1))    # E_max to E_min: a–b
+    dW = by["results.delta_W_max"]
+    assert dW.tolerance == pytest.approx(band + 1e-3 * dW.expected)
+
+
 def test_a_position_within_drafting_precision_of_the_extreme_is_accepted():
     r = ck.check("W1", {"results": {"omega_max_at": "e", "omega_min_at": "b"}})
     assert r.ok

@@ -5,7 +5,8 @@ hypotheses: the value recomputed with the mistake made, named when the student's
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -16,19 +17,48 @@ from graphmethods.sheets.worksheets.constructions import region_perimeters_mm
 from graphmethods.sheets.worksheets.variants import SEGMENTS
 from graphmethods.units import omega_from_n
 
-if TYPE_CHECKING:
-    pass
+
+@dataclass
+class _Cycle:
+    """What the steps of :func:`check_cycle` hand on: the exact works and their tolerances, and what the
+    student's own earlier values imply (their works, levels and tolerances), for the carried verdicts."""
+
+    A: np.ndarray                          # the exact works, J
+    names: list[str]                       # the intervals' names ("a–b")
+    tol_A: list[float]                     # the work tolerances, J (computed, not drawn; the areas' if measured)
+    tol_f: list[float] = field(default_factory=list)     # the student's area tolerances, mm²
+    f_student: list[float] | None = None   # the student's areas, mm²
+    k_student: float | None = None         # the student's μ_M·μ_φ, J/mm²
+    k_base: float | None = None            # the scale the work hypotheses start from
+    f_base: np.ndarray | None = None       # the areas they start from, mm²
+    own_A: np.ndarray | None = None        # the student's own works, J
+    own_tol_A: list[float] = field(default_factory=list)
+    tol_dW: float = 0.0                    # the tolerance of ΔW_max, J
+    own_E: np.ndarray | None = None        # the student's own energy levels, J
+    own_tol_dW: float | None = None
+    dW_student: float | None = None        # the ΔW_max the student wrote, J
+
 
 def check_cycle(ck: Checker, p: CycleData) -> None:
+    """Judge a cycle problem's answers in the order a student works: the areas of the moment diagram,
+    the works, the arrows of the energy indicator, ΔW_max, where ω_max and ω_min occur, then M_d, the
+    ω's and J_F; each step hands on what the student's own values imply (:class:`_Cycle`)."""
     c = p.cycle
     A = np.asarray(c.work, dtype=float)
-    n = A.size
-    L = c.labels
-    names = [f"{L[i]}–{L[i + 1]}" for i in range(n)]
+    st = _Cycle(A, [f"{c.labels[i]}–{c.labels[i + 1]}" for i in range(A.size)], [TOL_REL * abs(a) for a in A])
+    _cycle_areas(ck, p, st)
+    _cycle_works(ck, p, st)
+    _cycle_arrows(ck, st)
+    _cycle_delta_W(ck, p, st)
+    _cycle_positions(ck, p, st)
+    _cycle_flywheel(ck, p, st)
+
+
+def _cycle_areas(ck: Checker, p: CycleData, st: _Cycle) -> None:
+    """The areas of the moment diagram, each within 0.5 mm × its perimeter at the student's scales."""
+    c, A, n, names, tol_A = p.cycle, st.A, st.A.size, st.names, st.tol_A
     has_curves = c.M_d is not None
-    # ---- moment diagram: areas
     f_student = ck.numbers("moment_diagram", "areas_mm2")
-    tol_A = [TOL_REL * abs(a) for a in A]                # work tolerances (computed, not drawn)
     tol_f: list[float] = []                              # the student's area tolerances, mm²
     k_student: float | None = None
     if "moment_diagram" in ck.a:
@@ -57,6 +87,13 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
                     ck.value(f"moment_diagram.areas_mm2[{i}]", f"area {names[i]}", "mm²", exp, f_student[i], tol_f[i],
                              hypotheses=[("sign_flipped", -exp)], note=basis)
                     tol_A[i] = tol_f[i] * k_student
+    st.f_student, st.k_student, st.tol_f = f_student, k_student, tol_f
+
+
+def _cycle_works(ck: Checker, p: CycleData, st: _Cycle) -> None:
+    """The works from the areas (or computed), with the scale and unit mistakes as hypotheses."""
+    c, A, n, names, tol_A, tol_f = p.cycle, st.A, st.A.size, st.names, st.tol_A, st.tol_f
+    f_student, k_student = st.f_student, st.k_student
     # the base the work hypotheses start from: the student's areas, or the data's
     if f_student is not None:
         f_base, k_base = np.asarray(f_student), k_student
@@ -90,7 +127,12 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
         own_tol_A = [t * k_student for t in tol_f]
     else:
         own_A, own_tol_A = None, []
-    # ---- energy indicator: arrows
+    st.f_base, st.k_base, st.own_A, st.own_tol_A = f_base, k_base, own_A, own_tol_A
+
+
+def _cycle_arrows(ck: Checker, st: _Cycle) -> None:
+    """The arrows of the energy indicator, ±0.5 mm each; with no works written, ΔW_max is read off them."""
+    A, n, names, own_A, own_tol_A = st.A, st.A.size, st.names, st.own_A, st.own_tol_A
     arrows = ck.numbers("energy_indicator", "arrows_mm")
     if "energy_indicator" in ck.a:
         mu_E = ck.need("energy_indicator", "mu_E", "J per mm of the energy indicator")
@@ -108,7 +150,13 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
                 if own_A is None:                         # ΔW_max read off the student's staircase
                     own_A = np.asarray(arrows) * mu_E
                     own_tol_A = [TOL_MM * mu_E] * n
-    # ---- ΔW_max
+    st.own_A, st.own_tol_A = own_A, own_tol_A
+
+
+def _cycle_delta_W(ck: Checker, p: CycleData, st: _Cycle) -> None:
+    """ΔW_max within the sum of the work tolerances between E_max and E_min; a sign flipped in any one
+    interval, degrees for radians, the scale forgotten or applied twice as hypotheses."""
+    c, A, n, tol_A, own_A, own_tol_A, k_base = p.cycle, st.A, st.A.size, st.tol_A, st.own_A, st.own_tol_A, st.k_base
     E = np.asarray(c.E, dtype=float)
     i_hi, i_lo = int(np.argmax(E)), int(np.argmin(E))
     span = range(min(i_hi, i_lo), max(i_hi, i_lo))
@@ -137,7 +185,14 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
                  own=own, own_tol=rel(base_tol, own or 0.0), own_from="the student's own works",
                  hypotheses=hyps, hyp_tol=lambda h: rel(base_tol, h),
                  note="sum of the work tolerances between E_max and E_min")
-    # ---- where ω_max and ω_min occur
+    st.tol_dW, st.own_E, st.own_tol_dW, st.dW_student = tol_dW, own_E, own_tol_dW, dW_student
+
+
+def _cycle_positions(ck: Checker, p: CycleData, st: _Cycle) -> None:
+    """Where ω_max and ω_min occur: a point label (every level within the ΔW_max tolerance accepted) or an
+    angle (±0.5 mm on the φ axis)."""
+    c, L, E = p.cycle, p.cycle.labels, np.asarray(p.cycle.E, dtype=float)
+    tol_dW, own_E, own_tol_dW, k_student = st.tol_dW, st.own_E, st.own_tol_dW, st.k_student
     for which, key in (("max", "omega_max_at"), ("min", "omega_min_at")):
         s = ck.get("results", key)
         if s is None:
@@ -161,7 +216,12 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
             best = min(phis, key=lambda x: abs(x - float(s)))
             ck.value(f"results.{key}", f"angle of ω_{which}", "°", best, float(s), tol_deg,
                      note="±0.5 mm on the φ axis" if k_student is not None else "±1°")
-    # ---- M_d, ω's and J_F
+
+
+def _cycle_flywheel(ck: Checker, p: CycleData, st: _Cycle) -> None:
+    """M_d (0.1 %), ω_m, ω_max, ω_min (n used as ω, (1 ± δ) for (1 ± δ/2)) and J_F (the ΔW_max tolerance
+    carried through, J_e forgotten), when the problem gives n and [δ]."""
+    c, tol_dW, own_tol_dW, dW_student = p.cycle, st.tol_dW, st.own_tol_dW, st.dW_student
     M_d_student = ck.number("results", "M_d")
     if M_d_student is not None:
         if p.M_d is None:
@@ -201,16 +261,16 @@ def check_cycle(ck: Checker, p: CycleData) -> None:
         if dW_student is not None or om_s is not None:
             own = dW_base / (w_own * w_own * d) - p.J_e
         t_dW = tol_dW if dW_student is None or own_tol_dW is None else max(tol_dW, own_tol_dW)
-        hyps = []
+        hyps_J: list[tuple[str, float, float]] = []
         for code, X2, sub in (("n_as_omega", n_rpm ** 2, p.J_e), ("degrees_as_radians", (6 * n_rpm) ** 2, p.J_e),
                               ("delta_not_halved", 2 * w * w, p.J_e), ("J_e_not_subtracted", w * w, 0.0)):
             if code == "J_e_not_subtracted" and p.J_e <= 0:
                 continue
             h = dW_base / (X2 * d) - sub
-            hyps.append((code, h, t_dW / (X2 * d) + TOL_REL * abs(h)))
+            hyps_J.append((code, h, t_dW / (X2 * d) + TOL_REL * abs(h)))
         ck.value("results.J_F", "J_F", "kg·m²", J_exp, J_s, tol, own=own,
                  own_tol=rel(t_dW / (w_own * w_own * d), own or 0.0),
-                 own_from="the student's own ΔW_max and ω_m", hypotheses=hyps,
+                 own_from="the student's own ΔW_max and ω_m", hypotheses=hyps_J,
                  note="from the ΔW_max tolerance, + 0.1 %")
 
 
