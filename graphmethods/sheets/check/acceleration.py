@@ -232,17 +232,23 @@ def _dev_deg(a: float, b: float) -> float:
 
 def check_acceleration(ck: Any, data: Any) -> None:
     """Judge every answered item of ``[acceleration_plan]`` (see the module docstring); items go to ``ck``."""
-    from graphmethods.sheets.check.report import Item
-
     pr = problem_of(ck, data)
     sec = ck.a.get("acceleration_plan", {})
     mu_a = ck.need("acceleration_plan", "mu_a", "(m/s²) per mm of the acceleration plan")
     plan = pr.plan()
     hyps = pr.hypotheses()
     comps = vectors(plan)
-    keys = {key_of(c.symbol) for c in comps}
-    crank_link = pr.linkage.crank.link
-    eps_links = turning_links(plan, crank_link)
+    eps_links = turning_links(plan, pr.linkage.crank.link)
+    _refuse_unknown_keys(sec, {key_of(c.symbol) for c in comps}, eps_links)
+    judge = _Judge(ck)
+    if pr.mu_a is not None:
+        judge("mu_a", "μ_a", "(m/s²)/mm", pr.mu_a, mu_a, TOL_REL * pr.mu_a, (), note="the scale stated, 0.1 %")
+    student_mm = _judge_vectors(judge, sec, comps, hyps, mu_a)
+    _judge_epsilon(ck, judge, sec, plan, comps, hyps, eps_links, mu_a=mu_a, student_mm=student_mm)
+
+
+def _refuse_unknown_keys(sec: Mapping[str, Any], keys: set[str], eps_links: list[str]) -> None:
+    """An answered vector the plan does not have, or an ε of a link that does not turn, is refused."""
     for k in sec:
         m = _KEY.match(k)
         if m and f"{m.group(1)}_{m.group(2)}" not in keys:
@@ -252,10 +258,21 @@ def check_acceleration(ck: Any, data: Any) -> None:
         if e and e.group(1) not in eps_links:
             raise InputError(f"[acceleration_plan] {k}: ε is found for link{'s' if len(eps_links) > 1 else ''} "
                              f"{', '.join(eps_links)} (epsilon_{eps_links[0] if eps_links else 'L'})")
-    charged: dict[str, str] = {}          # mistake code -> the item where it was named
 
-    def judge(key: str, label: str, unit: str, expected: float, student: float, tol: float, hyp_values: Iterable,
-              *, own: float | None = None, own_from: str = "", note: str = "", angle: bool = False) -> None:
+
+class _Judge:
+    """Judges one item against the exact plan and the mistaken ones: a mistake is named the first time it
+    shows (``wrong``), and the items after it that follow from it are ``carried``."""
+
+    def __init__(self, ck: Any) -> None:
+        self.ck = ck
+        self.charged: dict[str, str] = {}          # mistake code -> the item where it was named
+
+    def __call__(self, key: str, label: str, unit: str, expected: float, student: float, tol: float,
+                 hyp_values: Iterable[tuple[str, float | None]], *, own: float | None = None, own_from: str = "",
+                 note: str = "", angle: bool = False) -> None:
+        from graphmethods.sheets.check.report import Item
+
         dev = _dev_deg(student, expected) if angle else student - expected
         codes: list[str] = []
         verdict, why = "ok", note
@@ -266,22 +283,25 @@ def check_acceleration(ck: Any, data: Any) -> None:
                 d = _dev_deg(student, h) if angle else student - h
                 if abs(d) <= tol and code not in codes:
                     codes.append(code)
-            before = [c for c in codes if c in charged]
+            before = [c for c in codes if c in self.charged]
             if before:
                 verdict, codes = "carried", []
-                why = f"follows from the earlier mistake at {charged[before[0]]} ({before[0]})"
+                why = f"follows from the earlier mistake at {self.charged[before[0]]} ({before[0]})"
             elif own is not None and abs(student - own) <= tol and abs(own - expected) > tol:
                 verdict, codes = "carried", []
                 why = f"follows from {own_from}: expected {own:.4g} from those"
             else:
                 verdict = "wrong"
                 for c in codes:
-                    charged.setdefault(c, label)
-        ck.items.append(Item(f"acceleration_plan.{key}", label, unit, float(expected), float(student), float(dev),
-                             float(tol), verdict, tuple(codes), why))
+                    self.charged.setdefault(c, label)
+        self.ck.items.append(Item(f"acceleration_plan.{key}", label, unit, float(expected), float(student),
+                                  float(dev), float(tol), verdict, tuple(codes), why))
 
-    if pr.mu_a is not None:
-        judge("mu_a", "μ_a", "(m/s²)/mm", pr.mu_a, mu_a, TOL_REL * pr.mu_a, (), note="the scale stated, 0.1 %")
+
+def _judge_vectors(judge: _Judge, sec: Mapping[str, Any], comps: list[Component],
+                   hyps: list[tuple[str, AccelerationPlan]], mu_a: float) -> dict[str, float]:
+    """Each vector's length (±0.5 mm) and direction (±0.5° + the angle 0.5 mm subtends); the student's
+    lengths in mm by key."""
     student_mm: dict[str, float] = {}
     for c in comps:
         k = key_of(c.symbol)
@@ -299,6 +319,13 @@ def check_acceleration(ck: Any, data: Any) -> None:
             judge(f"{k}_deg", f"direction of {c.symbol}", "°", round(_angle(c.vector), 3), float(A), tol,
                   [(code, None if z is None or abs(z) < 1e-12 else _angle(z)) for code, z in hv], angle=True,
                   note="±0.5° + atan(0.5 mm / length)")
+    return student_mm
+
+
+def _judge_epsilon(ck: Any, judge: _Judge, sec: Mapping[str, Any], plan: AccelerationPlan, comps: list[Component],
+                   hyps: list[tuple[str, AccelerationPlan]], eps_links: list[str], *, mu_a: float,
+                   student_mm: dict[str, float]) -> None:
+    """ε of each turning link (0.5 mm × μ_a / l, + 0.1 %; carried from the student's own a^τ) and its sense."""
     for link in eps_links:
         val = sec.get(f"epsilon_{link}")
         l = plan.lengths[link]

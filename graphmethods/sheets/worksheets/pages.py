@@ -311,6 +311,30 @@ def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     return sh.scene((s_E,))
 
 
+def _excess_work_table(sh: Sheet, v: StepMomentVariant, *, cols: int, row_mm: float) -> np.ndarray:
+    """The excess-work table of a step-moment page: blank columns on the student's page, the intervals,
+    angles, areas, works and levels in the key. Returns the levels E (J, round-off written 0)."""
+    nt, key, c = sh.nt, sh.key, v.excess_work
+    n = c.work.size
+    L = c.labels
+    E = _clean(c.E)
+    pad = [""] * (cols - n)
+
+    def row(values):
+        return list(values) + pad
+
+    full = [[nt.word("worksheets.interval")] + row(f"{L[i]}–{L[i + 1]}" for i in range(n)),
+            [nt.quantity("φ", "°")] + row(f"{nt.number(math.degrees(c.phi[i]))}…{nt.number(math.degrees(c.phi[i + 1]))}"
+                                           for i in range(n)),
+            [nt.quantity("f", "mm²")] + row(nt.number(a / (v.mu_M * v.mu_phi), plus=True) for a in c.work),
+            [nt.quantity(nt.sym("A"), "J")] + row(nt.number(a, plus=True) for a in c.work),
+            [f"{nt.quantity(nt.sym('E'), 'J')} ({nt.word('worksheets.point_end').lower()})"]
+            + row(f"{nt.number(E[i + 1])} ({L[i + 1]})" for i in range(n))]
+    shown = full if key else [r[:1] + [""] * cols for r in full]
+    sh.table(shown, align="l" + "c" * cols, name="excess-work", row_mm=row_mm, width_rows=full)
+    return E
+
+
 def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     from graphmethods.scene.elements import Frame
     from graphmethods.sheets.layout import Occupancy
@@ -365,23 +389,7 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
         sh.add(*moment_regions(frame, c, nt=nt, occ=occ))
     sh.caption([s_phi.caption(nt), s_M.caption(nt)], y=top + H + 5.0)
     sh.y = top + H + CAPTION_ROOM
-    # the excess-work table: blank columns for the student, the intervals in the key
-    L = c.labels
-    E = _clean(c.E)
-    pad = [""] * (cols - n)
-
-    def row(values):
-        return list(values) + pad
-
-    full = [[nt.word("worksheets.interval")] + row(f"{L[i]}–{L[i + 1]}" for i in range(n)),
-            [nt.quantity("φ", "°")] + row(f"{nt.number(math.degrees(c.phi[i]))}…{nt.number(math.degrees(c.phi[i + 1]))}"
-                                           for i in range(n)),
-            [nt.quantity("f", "mm²")] + row(nt.number(a / (v.mu_M * v.mu_phi), plus=True) for a in c.work),
-            [nt.quantity(nt.sym("A"), "J")] + row(nt.number(a, plus=True) for a in c.work),
-            [f"{nt.quantity(nt.sym('E'), 'J')} ({nt.word('worksheets.point_end').lower()})"]
-            + row(f"{nt.number(E[i + 1])} ({L[i + 1]})" for i in range(n))]
-    shown = full if key else [r[:1] + [""] * cols for r in full]
-    sh.table(shown, align="l" + "c" * cols, name="excess-work", row_mm=row_mm, width_rows=full)
+    E = _excess_work_table(sh, v, cols=cols, row_mm=row_mm)
     if v.shape == "steps":
         md = ("(" + " + ".join(f"{nt.number(m)}·{nt.number(b - a)}" for a, b, m in v.steps())
               + f")/360 = {nt.number(v.M_d)}")
