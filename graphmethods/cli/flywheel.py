@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import math
 import re
+from typing import Any
 
 from graphmethods.cli import flywheel_moments
 from graphmethods.errors import InputError
@@ -197,15 +198,40 @@ def _hyperbola_bytes(args: argparse.Namespace, delta_W_max: float, omega_m: floa
 
 
 def run(args: argparse.Namespace) -> int:
-    from graphmethods.dynamics import excess_work as ew
-    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
-
     if args.delta_table:
         return _delta_table(args)
     if args.n is None and args.omega is None:
         raise InputError("give the mean speed: --n (rev/min) or --omega (rad/s)")
     if args.delta is None and args.J is None and args.machine is None:
         raise InputError("give the goal: --delta [δ], --machine NAME (its [δ] from the table) or --J (the δ it gives)")
+    machine = _machine(args)
+    cycle, mc = _read_cycle(args)
+    out, omega_m, J_e = _solve(args, cycle, mc, machine)
+    rim, disc = _sizing(args, float(out["J_F"]), float(out["n_rpm"]), out)
+    fig_path, fig_data = _figure_bytes(args, rim, disc)
+    hyp_path, hyp_data = (_hyperbola_bytes(args, cycle.delta_W_max, omega_m, J_e, float(out["delta"]),
+                                           None if machine is None else machine.key)
+                          if args.hyperbola is not None else (None, None))
+    if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
+        raise InputError("--figure and --hyperbola name the same file; give two names")
+    check_finite(out)
+    from graphmethods.render.files import write_atomic
+
+    if fig_path is not None:
+        write_atomic(fig_path, fig_data, overwrite=args.force)
+        out["figure"] = str(fig_path)
+    if hyp_path is not None:
+        write_atomic(hyp_path, hyp_data, overwrite=args.force)
+        out["hyperbola"] = str(hyp_path)
+    if args.json:
+        print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
+        return 0
+    _print_report(args, out, cycle, mc, machine, omega_m=omega_m, J_e=J_e)
+    return 0
+
+
+def _machine(args: argparse.Namespace) -> Any:
+    """The machine of ``--machine`` (its [δ] put into ``args.delta``), or None; the goal's options checked."""
     machine = None
     if args.machine is not None:
         from graphmethods.dynamics.permissible_delta import machine_row, permissible_delta
@@ -216,6 +242,13 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("--machine-end applies to --machine only")
     if args.hyperbola is not None and args.delta is None:
         raise InputError("--hyperbola marks the chosen [δ] on the curve: give --delta or --machine, not --J")
+
+    return machine
+
+
+def _read_cycle(args: argparse.Namespace) -> tuple[Any, Any]:
+    """The excess-work cycle from --areas, --levels or the moments --M-d/--M-r, and the moment cycle (or None)."""
+    from graphmethods.dynamics import excess_work as ew
 
     tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
     mc = None
@@ -244,6 +277,13 @@ def run(args: argparse.Namespace) -> int:
         if args.mu_M or args.mu_phi or args.mu_phi_deg:
             raise InputError("energy levels are in J; scales --mu-M/--mu-phi apply to areas only")
         cycle = ew.from_levels(parse_list(args.levels, "--levels"), closure_tol=tol)
+    return cycle, mc
+
+
+def _solve(args: argparse.Namespace, cycle: Any, mc: Any, machine: Any) -> tuple[dict[str, Any], float, float]:
+    """The results as a dict (the cycle's table, ω_m, J_F for [δ] or δ for J, ω at the boundaries, the moment
+    cycle's extras), with ω_m (rad/s) and J_e (kg·m²)."""
+    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
 
     omega_m = mean_speed(
         n_rpm=None if args.n is None else parse_number(args.n, name="--n"),
@@ -274,25 +314,12 @@ def run(args: argparse.Namespace) -> int:
     if mc is not None:
         J_machine = J if args.delta is None else (fw.J_total if fw.needed else J_e)
         out.update(flywheel_moments.extras(mc, J_machine))
-    rim, disc = _sizing(args, float(out["J_F"]), float(out["n_rpm"]), out)
-    fig_path, fig_data = _figure_bytes(args, rim, disc)
-    hyp_path, hyp_data = (_hyperbola_bytes(args, cycle.delta_W_max, omega_m, J_e, float(out["delta"]),
-                                           None if machine is None else machine.key)
-                          if args.hyperbola is not None else (None, None))
-    if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
-        raise InputError("--figure and --hyperbola name the same file; give two names")
-    check_finite(out)
-    from graphmethods.render.files import write_atomic
+    return out, omega_m, J_e
 
-    if fig_path is not None:
-        write_atomic(fig_path, fig_data, overwrite=args.force)
-        out["figure"] = str(fig_path)
-    if hyp_path is not None:
-        write_atomic(hyp_path, hyp_data, overwrite=args.force)
-        out["hyperbola"] = str(hyp_path)
-    if args.json:
-        print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
-        return 0
+
+def _print_report(args: argparse.Namespace, out: dict[str, Any], cycle: Any, mc: Any, machine: Any, *,
+                  omega_m: float, J_e: float) -> None:
+    """The results as text: the excess-work table, ω_m, [δ] and J_F (or δ), the flywheel's sizes, files written."""
     check_finite(out)
     print("Excess-work table")
     print(cycle.to_text())
@@ -323,4 +350,3 @@ def run(args: argparse.Namespace) -> int:
     for key in ("figure", "hyperbola"):
         if key in out:
             print(f"wrote {out[key]}")
-    return 0
