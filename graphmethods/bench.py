@@ -624,7 +624,8 @@ def bench_worksheet(*, variants=30, kinds=("indicator", "step-moment", "velocity
     import tempfile
 
     from graphmethods.render import mpl, pdf
-    from graphmethods.sheets.worksheets import worksheet, write_worksheet
+    from graphmethods.render.files import write_set
+    from graphmethods.sheets.worksheets import contents, worksheet
 
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -632,7 +633,7 @@ def bench_worksheet(*, variants=30, kinds=("indicator", "step-moment", "velocity
             out = pathlib.Path(tmp) / kind
 
             def build():
-                return write_worksheet(worksheet(kind, variants=variants, seed=7), out, overwrite=True)
+                return write_set(out, contents(worksheet(kind, variants=variants, seed=7)), overwrite=True)
 
             t = median_time(build, repeat=repeat)
             pages = 2 * variants

@@ -9,7 +9,9 @@ import pytest
 
 from graphmethods.errors import InputError
 from graphmethods.render.recording import record
-from graphmethods.sheets import check as ck, check_acceleration as ca, worksheets as ws
+from graphmethods.sheets import check as ck, worksheets as ws
+from graphmethods.sheets.check import acceleration as ca
+from graphmethods.sheets.check.report import Checker
 
 
 def joints(v, phi: float) -> dict:
@@ -201,7 +203,7 @@ def test_the_command_line_worksheet_and_check(tmp_path, capsys):
 # ----------------------------------------------------------------------------- acceleration plans drawn in CAD
 
 ezdxf = pytest.importorskip("ezdxf")
-DRAWINGS = __import__("pathlib").Path(ck.__file__).parents[1] / "problems" / "data" / "drawings"
+DRAWINGS = __import__("pathlib").Path(ck.__file__).parents[2] / "problems" / "data" / "drawings"
 
 
 class _SlottedLever:
@@ -215,12 +217,12 @@ class _SlottedLever:
 
 
 def test_a_drawing_is_measured_where_the_student_drew_it():
-    from graphmethods.sheets import cad
+    from graphmethods.sheets.check import cad
 
     rep = cad.check_drawing("slotted-lever", DRAWINGS / "slotted_lever_acc_correct.dxf")
     sec = rep.answers["acceleration_plan"]
     assert rep.ok and sec["mu_a"] == 0.04 and sec["position"] == 2
-    plan = ca.problem_of(ck._Checker(rep.answers), rep.data).plan()
+    plan = ca.problem_of(Checker(rep.answers), rep.data).plan()
     hand = by_hand(_SlottedLever(plan.phi))
     for key, point in (("a_B", "B"), ("a_S3", "S3")):
         assert sec[f"{key}_mm"] * 0.04 == pytest.approx(abs(hand["a"][point]), abs=0.3 * 0.04)  # hand error ≤ 0.3 mm
@@ -229,12 +231,12 @@ def test_a_drawing_is_measured_where_the_student_drew_it():
 
 
 def test_the_overlay_over_a_drawing_puts_the_correct_plan_at_the_students_pole_in_red(tmp_path):
-    from graphmethods.sheets import cad
+    from graphmethods.sheets.check import cad
 
     rep = cad.check_drawing("slotted-lever", DRAWINGS / "slotted_lever_acc_mistakes.dxf")
     scene = cad.overlay_on_drawing(rep, notation="en")
     rec = record(scene)
-    plan = ca.problem_of(ck._Checker(rep.answers), rep.data).plan()
+    plan = ca.problem_of(Checker(rep.answers), rep.data).plan()
     hand = by_hand(_SlottedLever(plan.phi))
     assert rec.vector_length_mm("check-acc-a_B") * 0.04 == pytest.approx(abs(hand["a"]["B"]), rel=1e-4)
     start = rec.in_group("check-acc-a_B", "path")[0].data[0][0]
@@ -250,7 +252,7 @@ def test_the_overlay_over_a_drawing_puts_the_correct_plan_at_the_students_pole_i
 
 def test_a_worksheets_key_page_in_dxf_reads_back_correct(tmp_path, capsys):
     from graphmethods.cli import main
-    from graphmethods.sheets import cad
+    from graphmethods.sheets.check import cad
 
     assert main(["worksheet", "acceleration-plan", "--variants", "2", "--seed", "5", "--out", str(tmp_path / "c"),
                  "--dxf", "--quiet"]) == 0
@@ -261,7 +263,7 @@ def test_a_worksheets_key_page_in_dxf_reads_back_correct(tmp_path, capsys):
 
 
 def test_a_drawing_without_a_pole_or_a_scale_says_what_to_write(tmp_path):
-    from graphmethods.sheets import cad
+    from graphmethods.sheets.check import cad
 
     doc = ezdxf.readfile(DRAWINGS / "press_acc_correct.dxf")
     for t in doc.modelspace().query("TEXT"):

@@ -7,7 +7,8 @@ import re
 import pytest
 
 from graphmethods.errors import InputError
-from graphmethods.sheets import answers, check, worksheets
+from graphmethods.sheets import check, worksheets
+from graphmethods.sheets.worksheets import answers
 
 KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer")
 

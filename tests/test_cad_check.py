@@ -1,4 +1,4 @@
-"""Checking a drawing made in CAD (graphmethods.sheets.cad): the example drawings of
+"""Checking a drawing made in CAD (graphmethods.sheets.check.cad): the example drawings of
 graphmethods/problems/data/drawings (made by tests/drawings/make_student_drawings.py as a student draws,
 with planted mistakes) are read, measured and checked; exactly the planted mistakes are found."""
 
@@ -15,8 +15,8 @@ from graphmethods import cli  # noqa: E402
 from graphmethods.errors import InputError  # noqa: E402
 from graphmethods.render import svg  # noqa: E402
 from graphmethods.render.recording import record  # noqa: E402
-from graphmethods.sheets import cad  # noqa: E402
-from graphmethods.sheets.classcheck import check_class, class_files  # noqa: E402
+from graphmethods.sheets.check import cad  # noqa: E402
+from graphmethods.sheets.check.classcheck import check_class, class_files  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 DRAWINGS = ROOT / "graphmethods" / "problems" / "data" / "drawings"

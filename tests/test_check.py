@@ -14,9 +14,11 @@ from graphmethods.cli import check as cli_check
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
+from graphmethods.scene.vocabulary import check as vocabulary_check
 from graphmethods.sheets import check as ck, worksheets as ws
+from graphmethods.sheets.check.overlay import overlay_label, overlay_value
 
-ANSWERS = pathlib.Path(ck.__file__).parents[1] / "problems" / "data" / "answers"
+ANSWERS = pathlib.Path(ck.__file__).parents[2] / "problems" / "data" / "answers"
 FILES = sorted(ANSWERS.glob("*.toml"))
 
 #: what each shipped mistakes file plants: (mistake code or None for "no usual mistake fits", item key),
@@ -36,7 +38,8 @@ PLANTED = {
     # acceleration plans (made by tests/drawings/make_acceleration_examples.py): one usual mistake each, the
     # rest of the plan carried over from it
     "press_acc_mistakes.toml": ({("normal_reversed", "acceleration_plan.at_BA_mm")},
-                                {"acceleration_plan.a_B_mm", "acceleration_plan.a_S2_mm", "acceleration_plan.epsilon_2"}),
+                                {"acceleration_plan.a_B_mm", "acceleration_plan.a_S2_mm",
+                                 "acceleration_plan.epsilon_2"}),
     "slotted_lever_acc_mistakes.toml": ({("coriolis_reversed", "acceleration_plan.at_A3O3_mm")},
                                         {"acceleration_plan.a_A3_mm", "acceleration_plan.a_B_mm",
                                          "acceleration_plan.a_S3_mm", "acceleration_plan.epsilon_3"}),
@@ -121,6 +124,18 @@ def test_tolerances_propagate_to_J_F():
                                                                          ("results.J_F", "carried")]
 
 
+def test_measured_areas_set_the_tolerance_of_the_works_and_of_delta_W_max():
+    r = ck.check("W3", ANSWERS / "w3_mistakes.toml")          # mu_M = 0.5 N·m/mm, mu_phi = 2.5 °/mm
+    by = {i.key: i for i in r.items}
+    k = 0.5 * math.radians(2.5)                                 # J per mm² of the student's diagram
+    for i in range(2):
+        area, work = by[f"moment_diagram.areas_mm2[{i}]"], by[f"results.works_J[{i}]"]
+        assert work.tolerance == pytest.approx(area.tolerance * k + 1e-3 * abs(work.expected))
+    band = sum(by[f"moment_diagram.areas_mm2[{i}]"].tolerance * k for i in range(1))    # E_max to E_min: a–b
+    dW = by["results.delta_W_max"]
+    assert dW.tolerance == pytest.approx(band + 1e-3 * dW.expected)
+
+
 def test_a_position_within_drafting_precision_of_the_extreme_is_accepted():
     r = ck.check("W1", {"results": {"omega_max_at": "e", "omega_min_at": "b"}})
     assert r.ok
@@ -187,7 +202,7 @@ def test_problems_by_id_and_by_file(tmp_path):
     f.write_text(v.to_json(), encoding="utf-8")
     assert ck.load_problem(str(f)).em_variant.data() == v.data()
     case = tmp_path / "press.json"
-    case.write_text((pathlib.Path(ck.__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
+    case.write_text((pathlib.Path(ck.__file__).parents[2] / "problems" / "data" / "slider_crank_press.json")
                     .read_text(encoding="utf-8"), encoding="utf-8")
     r = ck.check(str(case), ANSWERS / "press_plan_correct.toml")
     assert r.ok
@@ -318,13 +333,15 @@ NAMES = {
     "ru": {"sign_flipped": "перепутан знак избыточной работы", "degrees_as_radians": "градусы приняты за радианы",
            "n_as_omega": "n (об/мин) принято за ω (рад/с)", "scale_forgotten": "не учтён масштабный коэффициент",
            "scale_twice": "масштабный коэффициент учтён дважды", "J_e_not_subtracted": "не вычтен Jп",
-           "delta_not_halved": "(1 ± δ) вместо (1 ± δ/2)", "normal_reversed": "нормальное ускорение направлено от центра",
+           "delta_not_halved": "(1 ± δ) вместо (1 ± δ/2)",
+           "normal_reversed": "нормальное ускорение направлено от центра",
            "coriolis_reversed": "кориолисово ускорение в обратную сторону",
            "coriolis_forgotten": "забыто кориолисово ускорение", "coriolis_factor_2": "пропущен множитель 2 в 2ω·v",
            "normal_wrong_length": "ω²·l с неверной длиной",
            "crank_tangential_forgotten": "забыто касательное ускорение кривошипа"},
     "zh": {"sign_flipped": "盈亏功正负号颠倒", "degrees_as_radians": "把度当作弧度",
-           "n_as_omega": "把 n (r/min) 当作 ω (rad/s)", "scale_forgotten": "漏乘比例尺", "scale_twice": "比例尺乘了两次",
+           "n_as_omega": "把 n (r/min) 当作 ω (rad/s)", "scale_forgotten": "漏乘比例尺",
+           "scale_twice": "比例尺乘了两次",
            "J_e_not_subtracted": "未减去 Je", "delta_not_halved": "用 (1 ± δ) 代替了 (1 ± δ/2)",
            "normal_reversed": "法向分量方向画反", "coriolis_reversed": "哥氏加速度方向画反",
            "coriolis_forgotten": "漏了哥氏加速度", "coriolis_factor_2": "2ω·v 中漏了系数 2",
@@ -342,7 +359,7 @@ def red_list(scene):
 
 def test_every_usual_mistake_has_a_name_in_every_notation():
     for code in ck.MISTAKES:
-        names = ck.WORDS[code]
+        names = vocabulary_check.WORDS[code]
         assert len(names) == 3 and all(names) and len(set(names)) == 3, code
     assert set(NAMES["ru"]) == set(NAMES["zh"]) == set(ck.MISTAKES)
 
@@ -421,18 +438,18 @@ def test_every_item_label_is_in_the_overlays_notation():
     for r in _every_kind_of_item():
         for it in r.items:
             keys.add(re.sub(r"\[\d+\]", "[]", it.key))
-            en = markup.plain(ck._overlay_label(it, r, "en"))
+            en = markup.plain(overlay_label(it, r, "en"))
             assert en == it.label.replace("_", ""), it.key               # the report's label, subscripts drawn
             for nt in ("ru", "zh"):
-                label = ck._overlay_label(it, r, nt)
+                label = overlay_label(it, r, nt)
                 base = "".join(t for t, shift in markup.parse(label) if shift == 0)     # subscripts aside
                 assert not any(w.strip() in label for w in ENGLISH), (it.key, label)
                 assert not re.search(r"[A-Za-z]{4,}", base), (it.key, label)
     assert {"moment_diagram.areas_mm2", "results.works_J", "energy_indicator.arrows_mm", "results.omega_2_sense",
             "energy_mass.omega_min_at", "results.omega_max_at", "energy_mass.tan_psi_min"} <= keys
     sense = next(it for r in _every_kind_of_item() for it in r.items if it.key == "results.omega_2_sense")
-    assert ck._overlay_value(sense.student, "ru") == "по часовой стрелке"
-    assert ck._overlay_value("b or c", "zh") == "b 或 c" and ck._overlay_value(-34.36, "ru") == "−34,36"
+    assert overlay_value(sense.student, "ru") == "по часовой стрелке"
+    assert overlay_value("b or c", "zh") == "b 或 c" and overlay_value(-34.36, "ru") == "−34,36"
 
 
 def test_a_long_heading_or_line_is_broken_to_stay_on_the_page():

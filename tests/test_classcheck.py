@@ -10,7 +10,7 @@ import pytest
 
 from graphmethods import cli
 from graphmethods.sheets.check import check
-from graphmethods.sheets.classcheck import ClassReport, check_class, class_files, names_from_file_name
+from graphmethods.sheets.check.classcheck import ClassReport, check_class, class_files, names_from_file_name
 
 ANSWERS = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data" / "answers"
 BROKEN = 'problem = "W1"\nstudent = "Broken file"\n[energy_indicator\nmu_E = 5\n'

@@ -24,6 +24,21 @@ def test_each_suffix_gives_exactly_what_its_backend_writes():
     assert formats.to_bytes(a, ".png") == mpl.to_png_bytes(a)
 
 
+def test_a_png_resolution_is_an_option_of_the_png_format_only():
+    a = scene("a")
+    small = formats.to_bytes(a, ".png", dpi=50)
+    assert small == mpl.to_png_bytes(a, dpi=50) and small != formats.to_bytes(a, ".png")
+    assert formats.to_bytes(a, ".svg", dpi=50) == svg.to_bytes(a)       # the other formats have no pixels
+
+
+def test_progress_hears_of_every_pdf_page_as_it_is_written_and_the_bytes_do_not_change():
+    pages = [scene("a"), scene("b"), scene("c")]
+    heard: list[tuple[int, int, str]] = []
+    data = formats.to_bytes(pages, ".pdf", progress=lambda done, total, what: heard.append((done, total, what)))
+    assert data == pdf.to_bytes(pages)
+    assert heard == [(1, 3, "PDF pages"), (2, 3, "PDF pages"), (3, 3, "PDF pages")]
+
+
 def test_the_suffix_is_read_from_a_file_name_in_any_case():
     assert formats.format_for("out/sheet.PDF") is formats.FORMATS[".pdf"]
     assert formats.format_for(".Svg") is formats.FORMATS[".svg"]

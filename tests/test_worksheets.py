@@ -15,7 +15,7 @@ from graphmethods.cli import worksheet as cli_worksheet
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
-from graphmethods.scene import markup
+from graphmethods.scene import markup, notation as get_notation
 from graphmethods.scene.primitives import Label
 from graphmethods.sheets import worksheets as ws
 
@@ -157,7 +157,8 @@ def test_the_key_is_the_student_page_filled_in(kind):
                 assert s_els[name] == k_els[name], (v.id, nt, name)
         assert len(key.elements) > len(student.elements)
         student_text = " ".join(p.text for p in student.primitives() if isinstance(p, Label))
-        assert ws.word("key", nt) not in student_text and ws.word("name", nt) in student_text
+        words = get_notation(nt)
+        assert words.word("worksheets.key") not in student_text and words.word("worksheets.name") in student_text
 
 
 def test_indicator_key_draws_each_work_to_mu_E():
@@ -277,6 +278,17 @@ def test_two_runs_give_identical_bytes_of_the_pdf_and_every_svg(tmp_path):
     assert root.get("width") == "210mm" and root.get("viewBox") == "0 0 210 297"
     problem = json.loads((tmp_path / "a" / "problems" / "velocity-plan-02.json").read_text(encoding="utf-8"))
     assert problem["id"] == "velocity-plan:9:2" and problem["format"] == ws.PROBLEM_FORMAT
+
+
+def test_the_cli_writes_exactly_the_contents_the_figure_layer_gives(tmp_path):
+    sheet = ws.worksheet("wittenbauer", variants=1, seed=4, notation="ru")
+    files = ws.contents(sheet, dxf=True)
+    paths = cli_worksheet.write_worksheet(sheet, tmp_path / "set", dxf=True)
+    written = {p.relative_to(tmp_path / "set").as_posix(): p.read_bytes()
+               for p in (tmp_path / "set").rglob("*") if p.is_file()}
+    assert written == files
+    assert [p.relative_to(tmp_path / "set").as_posix() for p in paths] == ws.output_names("wittenbauer", "ru", 1)
+    assert sorted(n for n in files if n.startswith("dxf/")) == sorted(ws.dxf_names("wittenbauer", 1))
 
 
 def test_order_in_the_pdf_is_students_then_keys():

@@ -28,16 +28,7 @@ def check_sheet_target(text: str, force: bool) -> pathlib.Path:
 
 
 def scene_bytes(scene: Scene, path: pathlib.Path) -> bytes:
-    """The scene as the file ``path`` names it: SVG, PDF or DXF."""
-    suffix = path.suffix.lower()
-    if suffix == ".pdf":
-        from graphmethods.render import pdf
+    """The scene as the file ``path`` names it: SVG, PDF or DXF (:func:`graphmethods.render.formats.to_bytes`)."""
+    from graphmethods.render import formats
 
-        return bytes(pdf.to_bytes([scene]))
-    if suffix == ".dxf":
-        from graphmethods.render import dxf
-
-        return bytes(dxf.to_bytes([scene]))
-    from graphmethods.render import svg
-
-    return bytes(svg.to_bytes(scene))
+    return formats.to_bytes(scene, path.suffix)

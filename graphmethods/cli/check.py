@@ -30,7 +30,8 @@ def add_parser(sub) -> None:
                    "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, read and "
                    "measured)")
     p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
-    p.add_argument("--overlay", metavar="FILE", help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
+    p.add_argument("--overlay", metavar="FILE",
+                   help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="notation and language of the overlay (the report stays English)")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
@@ -45,9 +46,9 @@ def add_parser(sub) -> None:
 
 
 def _drawing_report(args):
-    """The check of a drawing made in CAD (graphmethods.sheets.cad), with the options not written on it."""
+    """The check of a drawing made in CAD (graphmethods.sheets.check.cad), with the options not written on it."""
     from graphmethods.errors import InputError
-    from graphmethods.sheets import cad
+    from graphmethods.sheets.check import cad
 
     points = {}
     for spec in args.point:
@@ -71,7 +72,7 @@ def run(args) -> int:
         path = pathlib.Path(args.overlay)
         suffix = path.suffix.lower()
         if is_drawing:                  # the check in red over the student's own drawing
-            from graphmethods.sheets import cad
+            from graphmethods.sheets.check import cad
 
             scene = cad.overlay_on_drawing(report, notation=args.lang)
         else:

@@ -40,20 +40,20 @@ def add_parser(sub) -> None:
 def _overlays(sub, lang: str) -> dict:
     """file name -> bytes of the student's overlays (empty when it cannot be drawn)."""
     from graphmethods.errors import GraphmethodsError
-    from graphmethods.render import svg
+    from graphmethods.render import formats
 
     stem = sub.path.name
     out = {}
     try:
         if sub.path.suffix.lower() in (".dxf", ".svg"):
-            from graphmethods.sheets import cad
+            from graphmethods.sheets.check import cad
 
             scene = cad.overlay_on_drawing(sub.report, notation=lang)
-            out[f"{stem}-overlay.svg"] = svg.to_bytes(scene)
+            out[f"{stem}-overlay.svg"] = formats.to_bytes(scene, ".svg")
             if sub.path.suffix.lower() == ".dxf":
                 out[f"{stem}-overlay.dxf"] = cad.overlay_dxf(sub.report, notation=lang)
         else:
-            out[f"{stem}-overlay.svg"] = svg.to_bytes(sub.report.overlay(notation=lang))
+            out[f"{stem}-overlay.svg"] = formats.to_bytes(sub.report.overlay(notation=lang), ".svg")
     except GraphmethodsError as exc:
         print(f"  {sub.path.name}: no overlay ({exc})", file=sys.stderr)
     return out
@@ -61,8 +61,8 @@ def _overlays(sub, lang: str) -> dict:
 
 def run(args) -> int:
     from graphmethods.errors import OutputExistsError
-    from graphmethods.render.files import write_atomic
-    from graphmethods.sheets.classcheck import check_class, class_files
+    from graphmethods.render.files import write_set
+    from graphmethods.sheets.check.classcheck import check_class, class_files
 
     files = class_files(args.directory)
     out = pathlib.Path(args.out)
@@ -90,10 +90,10 @@ def run(args) -> int:
         existing = [str(p) for p in blobs if p.exists()]
         if existing:
             more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
-            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, or another --out")
-    (out / "students").mkdir(parents=True, exist_ok=True)
-    for path, data in blobs.items():
-        write_atomic(path, data, overwrite=args.force)
+            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, "
+                                    f"or another --out")
+    write_set(out, {str(path.relative_to(out)): data for path, data in blobs.items()}, overwrite=args.force,
+              what="class report folder")
     print(f"{report.summary()}; wrote {fixed[0]}, {fixed[1].name}, {fixed[2].name} and {len(blobs) - 3} files in "
           f"{out / 'students'}")
     return report.exit_status()

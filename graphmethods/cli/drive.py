@@ -72,21 +72,10 @@ def run(args: argparse.Namespace) -> int:
         if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
             raise InputError(f"--figure {path}: its folder does not exist or it is a folder; give a file in a folder "
                              f"that exists")
+        from graphmethods.render import formats
         from graphmethods.sheets.drive_scheme import drive_scheme
 
-        scene = drive_scheme(chain, notation=args.lang)
-        if suffix == ".svg":
-            from graphmethods.render import svg
-
-            blob = svg.to_bytes(scene)
-        elif suffix == ".pdf":
-            from graphmethods.render import pdf
-
-            blob = pdf.to_bytes([scene])
-        else:
-            from graphmethods.render import mpl
-
-            blob = mpl.to_png_bytes(scene)
+        blob = formats.to_bytes(drive_scheme(chain, notation=args.lang), suffix)
     out = chain.to_dict()
     if path is not None and blob is not None:
         from graphmethods.render.files import write_atomic

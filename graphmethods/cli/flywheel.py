@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import math
 import re
+from typing import Any
 
 from graphmethods.cli import flywheel_moments
 from graphmethods.errors import InputError
@@ -58,9 +59,11 @@ def add_parser(sub) -> None:
         epilog="Example: graphmethods flywheel --areas -50 550 -100 125 -500 25 -50 --n 600 --delta 1/300",
     )
     cyc = p.add_mutually_exclusive_group(required=False)      # or --M-d/--M-r (flywheel_moments)
-    cyc.add_argument("--areas", metavar="A1,A2,...", help="signed areas between M_d and M_r in order: mm² with --mu-M and "
+    cyc.add_argument("--areas", metavar="A1,A2,...",
+                     help="signed areas between M_d and M_r in order: mm² with --mu-M and "
                      "--mu-phi/--mu-phi-deg, otherwise work in J")
-    cyc.add_argument("--levels", metavar="E0,E1,...", help="running energy levels in J, the last returning to the first")
+    cyc.add_argument("--levels", metavar="E0,E1,...",
+                     help="running energy levels in J, the last returning to the first")
     flywheel_moments.add_arguments(p)
     p.add_argument("--mu-M", help="moment scale of the drawing, N·m per mm")
     p.add_argument("--mu-phi", help="angle scale of the drawing, rad per mm")
@@ -69,7 +72,8 @@ def add_parser(sub) -> None:
     speed.add_argument("--n", help="mean speed of the shaft, rev/min")
     speed.add_argument("--omega", help="mean angular speed of the shaft, rad/s")
     goal = p.add_mutually_exclusive_group(required=False)      # required unless --delta-table
-    goal.add_argument("--delta", help="permissible coefficient of fluctuation [δ] (fractions like 1/300 accepted): find J_F")
+    goal.add_argument("--delta",
+                      help="permissible coefficient of fluctuation [δ] (fractions like 1/300 accepted): find J_F")
     goal.add_argument("--J", help="total inertia on the shaft, kg·m²: find the δ it gives")
     goal.add_argument("--machine", metavar="NAME", help="take [δ] from the table of recommended [δ] by machine "
                       "(--delta-table lists the names): its strict end, the smaller δ, unless --machine-end lenient")
@@ -79,7 +83,8 @@ def add_parser(sub) -> None:
                    help="print the table of recommended [δ] by machine (with --lang, --json) and stop")
     p.add_argument("--hyperbola", default=None, metavar="FILE.svg|.pdf",
                    help="draw the J_F–[δ] hyperbola over the table's range of [δ], the chosen [δ] marked")
-    p.add_argument("--J-e", default="0", help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
+    p.add_argument("--J-e", default="0",
+                   help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
     p.add_argument("--closure-tol", default=None, help="allowed closure residual |ΣA|/Σ|A| (default 0.05)")
     p.add_argument("--rim", nargs="?", const="", default=None, metavar="D",
                    help="size a rim (spoked) flywheel for J_F: mean rim diameter D in m (default: the largest the "
@@ -149,17 +154,9 @@ def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
         scene = flywheel_design(disc, None, notation=args.lang)
     else:
         scene = flywheel_design(rim, disc, notation=args.lang)
-    if suffix == ".svg":
-        from graphmethods.render import svg
+    from graphmethods.render import formats
 
-        return path, svg.to_bytes(scene)
-    if suffix == ".pdf":
-        from graphmethods.render import pdf
-
-        return path, pdf.to_bytes([scene])
-    from graphmethods.render import mpl
-
-    return path, mpl.to_png_bytes(scene)
+    return path, formats.to_bytes(scene, suffix)
 
 
 def _delta_table(args: argparse.Namespace) -> int:
@@ -195,25 +192,46 @@ def _hyperbola_bytes(args: argparse.Namespace, delta_W_max: float, omega_m: floa
 
     scene = flywheel_hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, delta=delta, machine=machine,
                                notation=args.lang)
-    if suffix == ".svg":
-        from graphmethods.render import svg
+    from graphmethods.render import formats
 
-        return path, svg.to_bytes(scene)
-    from graphmethods.render import pdf
-
-    return path, pdf.to_bytes([scene])
+    return path, formats.to_bytes(scene, suffix)
 
 
 def run(args: argparse.Namespace) -> int:
-    from graphmethods.dynamics import excess_work as ew
-    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
-
     if args.delta_table:
         return _delta_table(args)
     if args.n is None and args.omega is None:
         raise InputError("give the mean speed: --n (rev/min) or --omega (rad/s)")
     if args.delta is None and args.J is None and args.machine is None:
         raise InputError("give the goal: --delta [δ], --machine NAME (its [δ] from the table) or --J (the δ it gives)")
+    machine = _machine(args)
+    cycle, mc = _read_cycle(args)
+    out, omega_m, J_e = _solve(args, cycle, mc, machine)
+    rim, disc = _sizing(args, float(out["J_F"]), float(out["n_rpm"]), out)
+    fig_path, fig_data = _figure_bytes(args, rim, disc)
+    hyp_path, hyp_data = (_hyperbola_bytes(args, cycle.delta_W_max, omega_m, J_e, float(out["delta"]),
+                                           None if machine is None else machine.key)
+                          if args.hyperbola is not None else (None, None))
+    if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
+        raise InputError("--figure and --hyperbola name the same file; give two names")
+    check_finite(out)
+    from graphmethods.render.files import write_atomic
+
+    if fig_path is not None:
+        write_atomic(fig_path, fig_data, overwrite=args.force)
+        out["figure"] = str(fig_path)
+    if hyp_path is not None:
+        write_atomic(hyp_path, hyp_data, overwrite=args.force)
+        out["hyperbola"] = str(hyp_path)
+    if args.json:
+        print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
+        return 0
+    _print_report(args, out, cycle, mc, machine, omega_m=omega_m, J_e=J_e)
+    return 0
+
+
+def _machine(args: argparse.Namespace) -> Any:
+    """The machine of ``--machine`` (its [δ] put into ``args.delta``), or None; the goal's options checked."""
     machine = None
     if args.machine is not None:
         from graphmethods.dynamics.permissible_delta import machine_row, permissible_delta
@@ -224,6 +242,13 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("--machine-end applies to --machine only")
     if args.hyperbola is not None and args.delta is None:
         raise InputError("--hyperbola marks the chosen [δ] on the curve: give --delta or --machine, not --J")
+
+    return machine
+
+
+def _read_cycle(args: argparse.Namespace) -> tuple[Any, Any]:
+    """The excess-work cycle from --areas, --levels or the moments --M-d/--M-r, and the moment cycle (or None)."""
+    from graphmethods.dynamics import excess_work as ew
 
     tol = ew.CLOSURE_TOL_MEASURED if args.closure_tol is None else parse_number(args.closure_tol, name="--closure-tol")
     mc = None
@@ -252,6 +277,13 @@ def run(args: argparse.Namespace) -> int:
         if args.mu_M or args.mu_phi or args.mu_phi_deg:
             raise InputError("energy levels are in J; scales --mu-M/--mu-phi apply to areas only")
         cycle = ew.from_levels(parse_list(args.levels, "--levels"), closure_tol=tol)
+    return cycle, mc
+
+
+def _solve(args: argparse.Namespace, cycle: Any, mc: Any, machine: Any) -> tuple[dict[str, Any], float, float]:
+    """The results as a dict (the cycle's table, ω_m, J_F for [δ] or δ for J, ω at the boundaries, the moment
+    cycle's extras), with ω_m (rad/s) and J_e (kg·m²)."""
+    from graphmethods.dynamics.flywheel import check_delta, fluctuation, flywheel, level_speeds, mean_speed
 
     omega_m = mean_speed(
         n_rpm=None if args.n is None else parse_number(args.n, name="--n"),
@@ -282,25 +314,12 @@ def run(args: argparse.Namespace) -> int:
     if mc is not None:
         J_machine = J if args.delta is None else (fw.J_total if fw.needed else J_e)
         out.update(flywheel_moments.extras(mc, J_machine))
-    rim, disc = _sizing(args, float(out["J_F"]), float(out["n_rpm"]), out)
-    fig_path, fig_data = _figure_bytes(args, rim, disc)
-    hyp_path, hyp_data = (_hyperbola_bytes(args, cycle.delta_W_max, omega_m, J_e, float(out["delta"]),
-                                           None if machine is None else machine.key)
-                          if args.hyperbola is not None else (None, None))
-    if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
-        raise InputError("--figure and --hyperbola name the same file; give two names")
-    check_finite(out)
-    from graphmethods.render.files import write_atomic
+    return out, omega_m, J_e
 
-    if fig_path is not None:
-        write_atomic(fig_path, fig_data, overwrite=args.force)
-        out["figure"] = str(fig_path)
-    if hyp_path is not None:
-        write_atomic(hyp_path, hyp_data, overwrite=args.force)
-        out["hyperbola"] = str(hyp_path)
-    if args.json:
-        print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
-        return 0
+
+def _print_report(args: argparse.Namespace, out: dict[str, Any], cycle: Any, mc: Any, machine: Any, *,
+                  omega_m: float, J_e: float) -> None:
+    """The results as text: the excess-work table, ω_m, [δ] and J_F (or δ), the flywheel's sizes, files written."""
     check_finite(out)
     print("Excess-work table")
     print(cycle.to_text())
@@ -331,4 +350,3 @@ def run(args: argparse.Namespace) -> int:
     for key in ("figure", "hyperbola"):
         if key in out:
             print(f"wrote {out[key]}")
-    return 0

@@ -51,7 +51,8 @@ def load(path) -> ModuleType:
     try:
         spec.loader.exec_module(module)
     except Exception as exc:                # a script is code: its failure is named, not a traceback
-        raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); nothing was written") from None
+        raise InputError(f"{path}: the script does not load ({type(exc).__name__}: {exc}); "
+                         f"nothing was written") from None
     _check_module(module, str(path))
     return module
 
@@ -122,7 +123,8 @@ def add_parser(sub) -> None:
     p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
-    p.add_argument("--dxf", action="store_true", help="also write a DXF of every figure (1 unit = 1 mm, layers by role)")
+    p.add_argument("--dxf", action="store_true",
+                   help="also write a DXF of every figure (1 unit = 1 mm, layers by role)")
     p.add_argument("--regenerate", action="store_true",
                    help="in a source checkout: rewrite the committed golden SVGs in gallery/ (or in --dir), "
                         "and the PNGs of figures with PNG = True")
@@ -130,7 +132,6 @@ def add_parser(sub) -> None:
 
 
 def run(args) -> int:
-    from graphmethods.render import svg
 
     found = figures(args.dir)
     if args.regenerate:
@@ -159,6 +160,7 @@ def run(args) -> int:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(existing[:3])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
+    from graphmethods.render import formats
     from graphmethods.render.files import write_set
 
     blobs, lines = {}, []
@@ -169,18 +171,9 @@ def run(args) -> int:
             raise InputError(f"{name}: {exc}; nothing was written") from None
         except Exception as exc:            # a gallery script is code: its failure is named, not a traceback
             raise InputError(f"{name}: build() failed ({type(exc).__name__}: {exc}); nothing was written") from None
-        blobs[targets[0].name] = svg.to_bytes(scene)
-        line = f"wrote {targets[0]}"
-        for target in targets[1:]:
-            if target.suffix == ".png":
-                from graphmethods.render import mpl
-
-                blobs[target.name] = mpl.to_png_bytes(scene, dpi=PNG_DPI)
-            else:
-                from graphmethods.render import dxf
-
-                blobs[target.name] = dxf.to_bytes(scene)
-            line += f" and {target.name}"
+        for target in targets:
+            blobs[target.name] = formats.to_bytes(scene, target.suffix, dpi=PNG_DPI)
+        line = " and ".join([f"wrote {targets[0]}"] + [t.name for t in targets[1:]])
         scales = "; ".join(s.caption() for s in scene.scales())
         lines.append(line + (f"  ({scales})" if scales else ""))
     write_set(out, blobs, overwrite=overwrite, what="gallery folder")

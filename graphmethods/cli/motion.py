@@ -195,7 +195,8 @@ def run(args: argparse.Namespace) -> int:
     if steady is not None:
         print("steady state:")
         for key, value in steady.items():
-            print(f"  {key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"  {key.ljust(width)}  {value}")
+            shown = f"{value:.6g}" if isinstance(value, float) else f"{value}"
+            print(f"  {key.ljust(width)}  {shown}")
     return 0
 
 
@@ -205,7 +206,8 @@ def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
     import pathlib
 
     from graphmethods.errors import OutputExistsError
-    from graphmethods.render.files import write_atomic
+    from graphmethods.render import formats
+    from graphmethods.render.files import write_set
     from graphmethods.sheets.motion import motion_figures
 
     out = pathlib.Path(args.figures)
@@ -231,21 +233,5 @@ def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
         for path in paths:
             if path.exists():
                 raise OutputExistsError(f"{path} exists; use --force to overwrite it")
-    blobs = {}
-    for path, scene in paths.items():
-        if args.fig_format == "svg":
-            from graphmethods.render import svg
-
-            blobs[path] = svg.to_bytes(scene)
-        elif args.fig_format == "pdf":
-            from graphmethods.render import pdf
-
-            blobs[path] = pdf.to_bytes([scene])
-        else:
-            from graphmethods.render import mpl
-
-            blobs[path] = mpl.to_png_bytes(scene)
-    out.mkdir(parents=True, exist_ok=True)
-    for path, data in blobs.items():
-        write_atomic(path, data, overwrite=args.force)
-    return list(blobs)
+    blobs = {path.name: formats.to_bytes(scene, path.suffix) for path, scene in paths.items()}
+    return write_set(out, blobs, overwrite=args.force, what="figures folder")

@@ -484,6 +484,15 @@ def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawi
     >>> len(d.segments), len(d.fills), [t.text for t in d.texts]
     (1, 1, ['p'])
     """
+    doc, name = _read_document(source)
+    reader = _DxfReader()
+    for entity in doc.modelspace():
+        reader.visit(entity)
+    return reader.drawing(name, _to_mm(doc))
+
+
+def _read_document(source: str | os.PathLike[str] | bytes | bytearray) -> tuple[Drawing, str]:
+    """The DXF document and the name to give it in messages; an InputError saying why it cannot be read."""
     import ezdxf
     from ezdxf.lldxf.const import DXFError
 
@@ -499,86 +508,46 @@ def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawi
         raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {exc})") from None
     except (DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:   # ezdxf on a cut file
         raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
-    segs: list[tuple[XY, XY]] = []
-    fills: list[tuple[XY, ...]] = []
-    circles: list[tuple[float, float, float]] = []
-    texts: list[CadText] = []
+    return doc, name
 
-    def xy(v: Any) -> tuple[float, float]:           # an ezdxf Vec2/Vec3 or a point tuple
-        return (float(v[0]), float(v[1]))
 
-    def visit(entity: Any, depth: int = 0) -> None:    # any DXF entity (its attributes differ by type)
+def _xy(v: Any) -> tuple[float, float]:           # an ezdxf Vec2/Vec3 or a point tuple
+    return (float(v[0]), float(v[1]))
+
+
+class _DxfReader:
+    """Collects a DXF's model space as segments, filled polygons, circles and texts (drawing units).
+
+    TEXT entities are gathered as runs first: a run written just after another, of another size, is the
+    sub- or superscript of the same label (as :func:`to_bytes` writes them) and joins it.
+    """
+
+    def __init__(self) -> None:
+        self.segs: list[tuple[XY, XY]] = []
+        self.fills: list[tuple[XY, ...]] = []
+        self.circles: list[tuple[float, float, float]] = []
+        self.texts: list[CadText] = []
+        # TEXT entities: (text, x, y, height, left-aligned, last run's height, its x, its text, halign, valign)
+        self.runs: list[tuple[Any, ...]] = []
+
+    def visit(self, entity: Any, depth: int = 0) -> None:    # any DXF entity (its attributes differ by type)
         t = entity.dxftype()
         if t == "INSERT" and depth < 8:
             for e in entity.virtual_entities():
-                visit(e, depth + 1)
+                self.visit(e, depth + 1)
         elif t == "LINE":
-            segs.append((xy(entity.dxf.start), xy(entity.dxf.end)))
+            self.segs.append((_xy(entity.dxf.start), _xy(entity.dxf.end)))
         elif t in ("LWPOLYLINE", "POLYLINE"):
-            if t == "LWPOLYLINE":
-                pts = [(float(x), float(y), float(s), float(e)) for x, y, s, e in entity.get_points("xyse")]
-                closed = bool(entity.closed)
-            else:
-                if entity.is_3d_polyline or entity.is_poly_face_mesh or entity.is_polygon_mesh:
-                    return
-                pts = [(float(v.dxf.location[0]), float(v.dxf.location[1]), float(v.dxf.get("start_width", 0.0)),
-                        float(v.dxf.get("end_width", 0.0))) for v in entity.vertices]
-                closed = bool(entity.is_closed)
-            n = len(pts)
-            for i in range(n if closed else n - 1):
-                (x0, y0, s0, e0), (x1, y1, _, _) = pts[i], pts[(i + 1) % n]
-                if abs(s0 - e0) > 1e-9 and math.hypot(x1 - x0, y1 - y0) > 1e-9:
-                    ux, uy = (x1 - x0) / math.hypot(x1 - x0, y1 - y0), (y1 - y0) / math.hypot(x1 - x0, y1 - y0)
-                    tip, base, w = ((x1, y1), (x0, y0), s0) if e0 < s0 else ((x0, y0), (x1, y1), e0)
-                    fills.append((tip, (base[0] - uy * w / 2, base[1] + ux * w / 2),
-                                  (base[0] + uy * w / 2, base[1] - ux * w / 2)))
-                else:
-                    segs.append(((x0, y0), (x1, y1)))
+            self.polyline(entity, t)
         elif t in ("SOLID", "TRACE", "3DFACE"):
-            vs = [xy(entity.dxf.get(f"vtx{i}")) for i in range(4) if entity.dxf.hasattr(f"vtx{i}")]
-            if t != "3DFACE" and len(vs) == 4:
-                vs = [vs[0], vs[1], vs[3], vs[2]]          # SOLID's corner order
-            out: list[tuple[float, float]] = []
-            for v in vs:
-                if not out or math.dist(v, out[-1]) > 1e-9:
-                    out.append(v)
-            if len(out) > 1 and math.dist(out[0], out[-1]) <= 1e-9:
-                out.pop()
-            if len(out) >= 3:
-                fills.append(tuple(out))
+            self.solid(entity, t)
         elif t == "HATCH":
-            for path in entity.paths:
-                corners: list[tuple[float, float]] = []
-                if hasattr(path, "vertices"):
-                    corners = [xy(v) for v in path.vertices]
-                else:
-                    for edge in path.edges:
-                        if hasattr(edge, "start") and hasattr(edge, "end") and not hasattr(edge, "radius"):
-                            corners.append(xy(edge.start))   # a line edge
-                        elif hasattr(edge, "center") and hasattr(edge, "radius"):
-                            circles.append((float(edge.center[0]), float(edge.center[1]), float(edge.radius)))
-                if len(corners) >= 3:
-                    fills.append(tuple(corners))
+            self.hatch(entity)
         elif t == "CIRCLE":
-            circles.append((float(entity.dxf.center[0]), float(entity.dxf.center[1]), float(entity.dxf.radius)))
+            self.circles.append((float(entity.dxf.center[0]), float(entity.dxf.center[1]),
+                                 float(entity.dxf.radius)))
         elif t == "TEXT":
-            h = float(entity.dxf.height)
-            text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
-            halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
-            at = entity.dxf.align_point if (halign or valign) and entity.dxf.hasattr("align_point") else entity.dxf.insert
-            x, y = float(at[0]), float(at[1])
-            last = runs[-1] if runs else None
-            if (last is not None and text and halign == valign == 0 and last[4]
-                    and abs(h - last[5]) > 0.2 * max(h, last[5])          # a change of size: a sub/superscript
-                    and last[6] + 0.2 * last[5] * len(last[7]) - 0.1 <= x
-                    <= last[6] + 1.3 * last[5] * len(last[7]) + 0.6 * last[5]
-                    and abs(y - last[2]) <= 0.7 * max(h, last[3])):
-                # the next run of one label, written as its own TEXT (as render.dxf writes sub/superscripts)
-                y0, h0 = (y, h) if h > last[3] else (last[2], last[3])
-                runs[-1] = (last[0] + text, last[1], y0, h0, True, h, x, text, 0, 0)
-            else:
-                runs.append((text, x, y, h, halign == valign == 0, h, x, text, halign, valign))
-            return
+            self.text(entity)
         elif t == "MTEXT":
             h = float(entity.dxf.get("char_height", 2.5))
             text = entity.plain_text(split=False).strip()
@@ -587,24 +556,95 @@ def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawi
             at = entity.dxf.insert
             cx = float(at[0]) + {0: 0.65 * h * len(text) / 2, 1: 0.0, 2: -0.65 * h * len(text) / 2}[col]
             cy = float(at[1]) + {0: -h / 2, 1: 0.0, 2: h / 2}[row]
-            texts.append(CadText(text, cx, cy, h))
+            self.texts.append(CadText(text, cx, cy, h))
 
-    # TEXT entities: (text, x, y, height, left-aligned, last run's height, its x, its text, halign, valign)
-    runs: list[tuple[Any, ...]] = []
-    for entity in doc.modelspace():
-        visit(entity)
-    for text, x, y, h, *_, halign, valign in runs:
-        cx, cy = _text_centre(x, y, h, text, halign, valign)
-        texts.append(CadText(text, cx, cy, h))
-    f = _to_mm(doc)
-    if f != 1.0:                          # a drawing in cm, m or inches: everything in mm
-        def s(p: XY) -> XY:
-            return (p[0] * f, p[1] * f)
-        segs = [(s(a), s(b)) for a, b in segs]
-        fills = [tuple(s(p) for p in poly) for poly in fills]
-        circles = [(x * f, y * f, r * f) for x, y, r in circles]
-        texts = [CadText(t.text, t.x * f, t.y * f, t.height * f) for t in texts]
-    return CadDrawing(tuple(segs), tuple(fills), tuple(circles), tuple(texts), source=name)
+    def polyline(self, entity: Any, t: str) -> None:
+        """Its segments; a segment of changing width (an arrowhead) as a filled triangle."""
+        if t == "LWPOLYLINE":
+            pts = [(float(x), float(y), float(s), float(e)) for x, y, s, e in entity.get_points("xyse")]
+            closed = bool(entity.closed)
+        else:
+            if entity.is_3d_polyline or entity.is_poly_face_mesh or entity.is_polygon_mesh:
+                return
+            pts = [(float(v.dxf.location[0]), float(v.dxf.location[1]), float(v.dxf.get("start_width", 0.0)),
+                    float(v.dxf.get("end_width", 0.0))) for v in entity.vertices]
+            closed = bool(entity.is_closed)
+        n = len(pts)
+        for i in range(n if closed else n - 1):
+            (x0, y0, s0, e0), (x1, y1, _, _) = pts[i], pts[(i + 1) % n]
+            if abs(s0 - e0) > 1e-9 and math.hypot(x1 - x0, y1 - y0) > 1e-9:
+                ux, uy = (x1 - x0) / math.hypot(x1 - x0, y1 - y0), (y1 - y0) / math.hypot(x1 - x0, y1 - y0)
+                tip, base, w = ((x1, y1), (x0, y0), s0) if e0 < s0 else ((x0, y0), (x1, y1), e0)
+                self.fills.append((tip, (base[0] - uy * w / 2, base[1] + ux * w / 2),
+                                   (base[0] + uy * w / 2, base[1] - ux * w / 2)))
+            else:
+                self.segs.append(((x0, y0), (x1, y1)))
+
+    def solid(self, entity: Any, t: str) -> None:
+        """A SOLID, TRACE or 3DFACE as a filled polygon (repeated corners dropped)."""
+        vs = [_xy(entity.dxf.get(f"vtx{i}")) for i in range(4) if entity.dxf.hasattr(f"vtx{i}")]
+        if t != "3DFACE" and len(vs) == 4:
+            vs = [vs[0], vs[1], vs[3], vs[2]]          # SOLID's corner order
+        out: list[tuple[float, float]] = []
+        for v in vs:
+            if not out or math.dist(v, out[-1]) > 1e-9:
+                out.append(v)
+        if len(out) > 1 and math.dist(out[0], out[-1]) <= 1e-9:
+            out.pop()
+        if len(out) >= 3:
+            self.fills.append(tuple(out))
+
+    def hatch(self, entity: Any) -> None:
+        """A HATCH's boundaries as filled polygons (its arc edges as circles)."""
+        for path in entity.paths:
+            corners: list[tuple[float, float]] = []
+            if hasattr(path, "vertices"):
+                corners = [_xy(v) for v in path.vertices]
+            else:
+                for edge in path.edges:
+                    if hasattr(edge, "start") and hasattr(edge, "end") and not hasattr(edge, "radius"):
+                        corners.append(_xy(edge.start))   # a line edge
+                    elif hasattr(edge, "center") and hasattr(edge, "radius"):
+                        self.circles.append((float(edge.center[0]), float(edge.center[1]), float(edge.radius)))
+            if len(corners) >= 3:
+                self.fills.append(tuple(corners))
+
+    def text(self, entity: Any) -> None:
+        """A TEXT as a run of its label (joined to the previous run when it is that label's sub/superscript)."""
+        h = float(entity.dxf.height)
+        text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
+        halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
+        aligned = (halign or valign) and entity.dxf.hasattr("align_point")
+        at = entity.dxf.align_point if aligned else entity.dxf.insert
+        x, y = float(at[0]), float(at[1])
+        runs = self.runs
+        last = runs[-1] if runs else None
+        if (last is not None and text and halign == valign == 0 and last[4]
+                and abs(h - last[5]) > 0.2 * max(h, last[5])          # a change of size: a sub/superscript
+                and last[6] + 0.2 * last[5] * len(last[7]) - 0.1 <= x
+                <= last[6] + 1.3 * last[5] * len(last[7]) + 0.6 * last[5]
+                and abs(y - last[2]) <= 0.7 * max(h, last[3])):
+            # the next run of one label, written as its own TEXT (as render.dxf writes sub/superscripts)
+            y0, h0 = (y, h) if h > last[3] else (last[2], last[3])
+            runs[-1] = (last[0] + text, last[1], y0, h0, True, h, x, text, 0, 0)
+        else:
+            runs.append((text, x, y, h, halign == valign == 0, h, x, text, halign, valign))
+
+    def drawing(self, name: str, f: float) -> CadDrawing:
+        """What was read, in mm (``f``: mm per drawing unit), the TEXT runs as texts after the MTEXTs."""
+        texts = list(self.texts)
+        for text, x, y, h, *_, halign, valign in self.runs:
+            cx, cy = _text_centre(x, y, h, text, halign, valign)
+            texts.append(CadText(text, cx, cy, h))
+        segs, fills, circles = self.segs, self.fills, self.circles
+        if f != 1.0:                          # a drawing in cm, m or inches: everything in mm
+            def s(p: XY) -> XY:
+                return (p[0] * f, p[1] * f)
+            segs = [(s(a), s(b)) for a, b in segs]
+            fills = [tuple(s(p) for p in poly) for poly in fills]
+            circles = [(x * f, y * f, r * f) for x, y, r in circles]
+            texts = [CadText(t.text, t.x * f, t.y * f, t.height * f) for t in texts]
+        return CadDrawing(tuple(segs), tuple(fills), tuple(circles), tuple(texts), source=name)
 
 
 def _to_mm(doc: Drawing) -> float:

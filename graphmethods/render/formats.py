@@ -24,33 +24,64 @@ from __future__ import annotations
 
 import os
 import pathlib
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from graphmethods.errors import InputError
 from graphmethods.render.files import write_atomic
 from graphmethods.scene.scene import Scene
 
+Progress = Callable[[int, int, str], None]
 
-def _svg(scenes: Sequence[Scene]) -> bytes:
+
+@dataclass(frozen=True)
+class Options:
+    """What a format may be asked besides the scenes.
+
+    Parameters
+    ----------
+    dpi : float or None
+        PNG only: pixels per inch (``None``: the PNG backend's default, 200).
+    progress : callable or None
+        ``progress(done, total, "PDF pages")``, called as each page of a several-figure file is written.
+    """
+
+    dpi: float | None = None
+    progress: Progress | None = None
+
+
+class _Reporting(list[Scene]):
+    """The scenes, reporting each one as the writer walks them (the writers walk their pages once)."""
+
+    def __init__(self, items: Sequence[Scene], progress: Progress, what: str) -> None:
+        super().__init__(items)
+        self._progress, self._what = progress, what
+
+    def __iter__(self) -> Iterator[Scene]:
+        for k, item in enumerate(super().__iter__(), 1):
+            yield item
+            self._progress(k, len(self), self._what)
+
+
+def _svg(scenes: Sequence[Scene], options: Options) -> bytes:
     from graphmethods.render import svg
 
     return svg.to_bytes(scenes[0])
 
 
-def _pdf(scenes: Sequence[Scene]) -> bytes:
+def _pdf(scenes: Sequence[Scene], options: Options) -> bytes:
     from graphmethods.render import pdf
 
-    return pdf.to_bytes(scenes)
+    return pdf.to_bytes(scenes if options.progress is None else _Reporting(scenes, options.progress, "PDF pages"))
 
 
-def _png(scenes: Sequence[Scene]) -> bytes:
+def _png(scenes: Sequence[Scene], options: Options) -> bytes:
     from graphmethods.render import mpl
 
-    return mpl.to_png_bytes(scenes[0])
+    return mpl.to_png_bytes(scenes[0]) if options.dpi is None else mpl.to_png_bytes(scenes[0], dpi=options.dpi)
 
 
-def _dxf(scenes: Sequence[Scene]) -> bytes:
+def _dxf(scenes: Sequence[Scene], options: Options) -> bytes:
     from graphmethods.render import dxf
 
     return dxf.to_bytes(scenes)
@@ -69,15 +100,15 @@ class Format:
     several : bool
         Whether one file holds several scenes (PDF pages, DXF figures side by side).
     write : callable
-        The scenes (one or more, in order) -> the file's bytes.
+        The scenes (one or more, in order) and the :class:`Options` -> the file's bytes.
     """
 
     suffix: str
     name: str
     several: bool
-    write: Callable[[Sequence[Scene]], bytes]
+    write: Callable[[Sequence[Scene], Options], bytes]
 
-    def to_bytes(self, scenes: Scene | Iterable[Scene]) -> bytes:
+    def to_bytes(self, scenes: Scene | Iterable[Scene], options: Options = Options()) -> bytes:
         """The file's bytes for one scene or several; the same scenes give the same bytes (PNG: the same
         pixels with one matplotlib).
 
@@ -95,7 +126,7 @@ class Format:
         if len(many) > 1 and not self.several:
             raise InputError(f"{self.name} holds one figure, got {len(many)}: write them to PDF or DXF, "
                              f"or one {self.suffix} file each")
-        return self.write(many)
+        return self.write(many, options)
 
 
 #: The formats by suffix.
@@ -131,9 +162,14 @@ def format_for(path: str | os.PathLike[str], *, among: Iterable[str] = tuple(FOR
     return FORMATS[suffix]
 
 
-def to_bytes(scenes: Scene | Iterable[Scene], suffix: str) -> bytes:
-    """The bytes of a ``suffix`` file (``".svg"``, ``".pdf"``, ``".png"``, ``".dxf"``) of one scene or several."""
-    return format_for(suffix).to_bytes(scenes)
+def to_bytes(scenes: Scene | Iterable[Scene], suffix: str, *, dpi: float | None = None,
+             progress: Progress | None = None) -> bytes:
+    """The bytes of a ``suffix`` file (``".svg"``, ``".pdf"``, ``".png"``, ``".dxf"``) of one scene or several.
+
+    ``dpi`` sets a PNG's resolution (``None``: 200 dpi); ``progress(done, total, what)`` hears of each
+    page of a PDF as it is written (see :class:`Options`).
+    """
+    return format_for(suffix).to_bytes(scenes, Options(dpi=dpi, progress=progress))
 
 
 def save(scenes: Scene | Iterable[Scene], path: str | os.PathLike[str], *, overwrite: bool = False) -> pathlib.Path:

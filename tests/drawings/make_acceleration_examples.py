@@ -11,7 +11,7 @@ planted mistakes are found):
   up to 0.2 mm), correct and with the Coriolis sense reversed (slotted lever) and a normal component drawn
   away from its centre (press).
 
-A mistaken plan is the construction with that mistake made (graphmethods.sheets.check_acceleration.Problem):
+A mistaken plan is the construction with that mistake made (graphmethods.sheets.check.acceleration.Problem):
 the student draws it through to the end, so every later vector follows from the mistake.
 """
 
@@ -22,8 +22,8 @@ import pathlib
 import numpy as np
 
 from graphmethods.kinematics import read_case
-from graphmethods.sheets import check_acceleration as ca
 from graphmethods.sheets.acceleration import _Problem
+from graphmethods.sheets.check import acceleration as ca
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 DATA = ROOT / "graphmethods" / "problems" / "data"

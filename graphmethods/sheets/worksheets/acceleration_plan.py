@@ -5,10 +5,11 @@ vector in mm and the ε of each link.
 A variant's student page has the statement, the data and the given velocities (ω of each link, and the
 sliding speed v_rel where a block slides on a turning lever), the scheme drawn at μ_l in that position,
 graph paper with the pole π, and answer boxes; its key has the exact plan drawn at μ_a
-(:func:`graphmethods.sheets.check_acceleration.plan_elements`) and every answer filled in.
+(:func:`graphmethods.sheets.check.acceleration.plan_elements`) and every answer filled in.
 ``graphmethods check`` reads the answers (the keys of :func:`answer_keys`, see
-:mod:`graphmethods.sheets.check_acceleration`).
+:mod:`graphmethods.sheets.check.acceleration`).
 
+>>> from graphmethods.sheets import worksheets as ws
 >>> v = ws.variant("acceleration-plan", seed=3, number=1)
 >>> v.id, v.mechanism, sorted(k for k in v.answers() if k.startswith("epsilon"))[:1]
 ('acceleration-plan:3:1', 'slotted-lever', ['epsilon_3'])
@@ -28,8 +29,13 @@ from graphmethods.kinematics.acceleration_plan import AccelerationPlan
 from graphmethods.kinematics.linkage import Linkage
 from graphmethods.scene import Scale, Scene, Text
 from graphmethods.scene.elements import Element, Line, Point
-from graphmethods.scene.primitives import Polygon
-from graphmethods.sheets import check_acceleration as ca, worksheets as ws
+from graphmethods.scene.primitives import THIN, Polygon
+from graphmethods.sheets.check import acceleration as ca
+from graphmethods.sheets.worksheets.classset import register
+from graphmethods.sheets.worksheets.elements import TEXT_MM, THICK, X0, X1, Grid, Shapes, arc, ground, pin, slider
+from graphmethods.sheets.worksheets.pages import CAPTION_ROOM, Sheet, answers_and_solution
+from graphmethods.sheets.worksheets.texts import value_unit
+from graphmethods.sheets.worksheets.variants import Variant, pick, pick_scale
 from graphmethods.titles import Title
 
 MECHANISMS = ("slider-crank", "slotted-lever")
@@ -54,15 +60,10 @@ STATEMENT = (
      "1) 以 {mu_a} 从极点 π 按杆组作加速度多边形：法向分量 ω²l 指向中心，切向分量 ⊥ 杆{coriolis}；质心按相似原理。",
      "2) 量出各矢量的长度（mm），求各杆的 ε 及其转向。"),
 )
-_MECH = {"slider-crank": ("slider-crank mechanism", "Кривошипно-ползунный механизм", "曲柄滑块机构"),
-         "slotted-lever": ("crank and slotted lever mechanism", "Кулисный механизм", "摆动导杆机构")}
-_CORIOLIS = (", the Coriolis component 2ω_{3}v_{A3A2} (v_{A3A2} turned 90° in the sense of ω_{3})",
-             ", кориолисово ускорение 2ω_{3}v_{A3A2} (v_{A3A2}, повёрнутое на 90° по ω_{3})",
-             "，哥氏加速度 2ω_{3}v_{A3A2}（v_{A3A2} 沿 ω_{3} 转向转 90°）")
 
 
 @dataclass(frozen=True)
-class AccelerationPlanVariant(ws.Variant):
+class AccelerationPlanVariant(Variant):
     """A linkage in position ``position`` of 12 (numbered from the extreme position of the working stroke).
 
     ``mechanism`` ``"slider-crank"``: crank ``r``, rod ``l``, offset ``d``, S2 at ``l_S`` from A;
@@ -131,7 +132,6 @@ def generate(rng: np.random.Generator) -> dict[str, Any]:
     lines cross at more than 20°."""
     for _ in range(200):
         mech = MECHANISMS[int(rng.integers(2))]
-        pick: Any = ws._pick
         r = pick(rng, (0.05, 0.06, 0.08, 0.1, 0.12))
         if mech == "slider-crank":
             l = round(r * pick(rng, (3, 3.5, 4, 5)), 3)
@@ -157,8 +157,9 @@ def generate(rng: np.random.Generator) -> dict[str, Any]:
         if min(c.magnitude for c in plan.components) / mu_a < 4.0:     # every component drawn, none vanishing
             continue
         z = [complex(p) for p in _scheme_xy(v).values()]
-        span = max(max(p.real for p in z) - min(p.real for p in z), 2.7 * (max(p.imag for p in z) - min(p.imag for p in z)))
-        data.update(mu_l=ws._pick_scale(span, 150.0), mu_a=mu_a)
+        span = max(max(p.real for p in z) - min(p.real for p in z),
+                   2.7 * (max(p.imag for p in z) - min(p.imag for p in z)))
+        data.update(mu_l=pick_scale(span, 150.0), mu_a=mu_a)
         try:                                   # the page must hold the scheme and the plan
             page(AccelerationPlanVariant(seed=0, number=0, **data), "en", False)
         except InputError:
@@ -190,35 +191,35 @@ def _scheme(v: AccelerationPlanVariant, origin: tuple[float, float], nt: Any) ->
     if v.mechanism == "slider-crank":
         O, A, B, S = "O", "A", "B", "S2"
         links = [(O, A), (A, B)]
-        els += [ws.slider(P(z[B]), guide_mm=34.0, name="scheme-slider")]
+        els += [slider(P(z[B]), guide_mm=34.0, name="scheme-slider")]
         fixed = [O]
     else:
         O, A, B, S = "O1", "A", "B", "S3"
         links = [(O, A), ("O3", B)]
         fixed = [O, "O3"]
     for a, b in links:
-        els.append(Line(P(z[a]), P(z[b]), style=ws.THICK, name=f"scheme-{a}{b}"))
+        els.append(Line(P(z[a]), P(z[b]), style=THICK, name=f"scheme-{a}{b}"))
     if v.mechanism == "slotted-lever":           # the block on the crank pin, along the lever
         u = (z["B"] - z["O3"]) / abs(z["B"] - z["O3"])
         n = 1j * u
         pa = z["A"]
         corners = [pa + (su * 5.0 * u + sn * 2.8 * n) * v.mu_l for su, sn in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-        els.append(ws.Shapes((Polygon(tuple(P(q) for q in corners), ws.THIN.with_(width_mm=0.5, fill="#ffffff")),),
+        els.append(Shapes((Polygon(tuple(P(q) for q in corners), THIN.with_(width_mm=0.5, fill="#ffffff")),),
                              name="scheme-block"))
     for f in fixed:
-        els.append(ws.ground(P(z[f]), name=f"scheme-ground-{f}"))
-    els.append(ws.pin(P(z[A]), name="scheme-pin-A"))
+        els.append(ground(P(z[f]), name=f"scheme-ground-{f}"))
+    els.append(pin(P(z[A]), name="scheme-pin-A"))
     els.append(Point(P(z[S]), radius_mm=0.9, name=f"scheme-{S}"))
-    els.append(ws.arc(P(z[O]), 8.0, math.degrees(v.plan.phi) + 20.0, math.degrees(v.plan.phi) + 70.0, arrow=True,
+    els.append(arc(P(z[O]), 8.0, math.degrees(v.plan.phi) + 20.0, math.degrees(v.plan.phi) + 70.0, arrow=True,
                       name="scheme-omega"))
     occ = Occupancy()
     for e in els:
         occ.add_primitives(e.primitives())
     for name in [*fixed, A, B, S]:
         text = name[0] + (f"_{{{name[1:]}}}" if len(name) > 1 else "")
-        lab = occ.place_label(P(z[name]), text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), size_mm=ws.TEXT_MM,
+        lab = occ.place_label(P(z[name]), text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), size_mm=TEXT_MM,
                               gap_mm=2.2)
-        els.append(Text((lab.x, lab.y), text, size_mm=ws.TEXT_MM, anchor=lab.anchor, name=f"scheme-name-{name}"))
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"scheme-name-{name}"))
     return els
 
 
@@ -231,11 +232,11 @@ def _answer_heads(v: AccelerationPlanVariant, nt: Any) -> tuple[list[str], list[
     a = v.answers()
     heads, vals = [], []
     for c in ca.vectors(v.plan):
-        heads.append(ws.quantity(_symbol_markup(c.symbol), "mm", nt))
-        vals.append(ws.num(a[f"{ca.key_of(c.symbol)}_mm"], nt))
+        heads.append(nt.quantity(_symbol_markup(c.symbol), "mm"))
+        vals.append(nt.number(a[f"{ca.key_of(c.symbol)}_mm"]))
     for link in ca.turning_links(v.plan, v.linkage.crank.link):
-        heads.append(ws.quantity(f"ε_{{{link}}}", "rad/s²", nt))
-        vals.append(f"{ws.num(a[f'epsilon_{link}'], nt)} {ws.word(a[f'epsilon_{link}_sense'], nt)}")
+        heads.append(nt.quantity(f"ε_{{{link}}}", "rad/s²"))
+        vals.append(f"{nt.number(a[f'epsilon_{link}'])} {nt.word('worksheets.' + a[f'epsilon_{link}_sense'])}")
     return heads, vals
 
 
@@ -252,29 +253,31 @@ def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     """The student's page (``key`` false) or the answer key of a variant."""
     from graphmethods.sheets.acceleration import _unit as _acc_unit
 
-    sh = ws._Sheet(v, nt, key)
+    sh = Sheet(v, nt, key)
     nt = sh.nt
     sh.header()
-    s_l = Scale(ws.sym("mu_l", nt), ws.unit("m", nt), v.mu_l)
+    s_l = Scale(nt.sym("worksheets.mu_l"), nt.unit("m"), v.mu_l)
     s_a = Scale("μ_a", _acc_unit(nt, "(m/s²)"), v.mu_a)
-    m = ws.value_unit
+    m = value_unit
     if v.mechanism == "slider-crank":
         sizes = (f"OA = {m(v.r, 'm', nt)}, AB = {m(v.l, 'm', nt)}, e = {m(v.d, 'm', nt)}, "
                  f"AS_{{2}} = {m(v.l_S, 'm', nt)}")
     else:
         sizes = (f"O_{{1}}A = {m(v.r, 'm', nt)}, O_{{1}}O_{{3}} = {m(v.d, 'm', nt)}, O_{{3}}B = {m(v.l, 'm', nt)}, "
                  f"O_{{3}}S_{{3}} = {m(v.l_S, 'm', nt)}")
-    lang = {"en": 0, "ru": 1, "zh": 2}.get(nt.code, 0)
-    sh.statement({"mech": _MECH[v.mechanism][lang], "mu_l": s_l.caption(nt), "k": str(v.position),
-                  "phi": f"{ws.num(round(math.degrees(v.plan.phi) % 360.0, 2), nt)}°", "sizes": sizes,
-                  "omega_1": m(v.omega_1, "rad/s", nt), "epsilon_1": f"{ws.num(v.epsilon_1, nt)} {ws.unit('rad/s²', nt)}",
-                  "mu_a": s_a.caption(nt), "coriolis": _CORIOLIS[lang] if v.mechanism == "slotted-lever" else ""})
+    sh.statement({"mech": nt.word("worksheets.mech_" + v.mechanism.replace("-", "_")), "mu_l": s_l.caption(nt),
+                  "k": str(v.position),
+                  "phi": f"{nt.number(round(math.degrees(v.plan.phi) % 360.0, 2))}°", "sizes": sizes,
+                  "omega_1": m(v.omega_1, "rad/s", nt), "epsilon_1": f"{nt.number(v.epsilon_1)} {nt.unit('rad/s²')}",
+                  "mu_a": s_a.caption(nt),
+                  "coriolis": nt.word("worksheets.coriolis") if v.mechanism == "slotted-lever" else ""})
     g = v.given()
-    heads = [ws.quantity(f"ω_{{{k[6:]}}}", "rad/s", nt) for k in g if k.startswith("omega_")]
-    vals = [f"{ws.num(abs(w), nt)} {ws.word('ccw' if w > 0 else 'cw', nt)}" for k, w in g.items() if k.startswith("omega_")]
+    heads = [nt.quantity(f"ω_{{{k[6:]}}}", "rad/s") for k in g if k.startswith("omega_")]
+    vals = [f"{nt.number(abs(w))} {nt.word('kinematics.ccw' if w > 0 else 'kinematics.cw')}"
+            for k, w in g.items() if k.startswith("omega_")]
     if "v_rel" in g:
-        heads.append(ws.quantity("v_{A3A2}", "m/s", nt))
-        vals.append(ws.num(g["v_rel"], nt))
+        heads.append(nt.quantity("v_{A3A2}", "m/s"))
+        vals.append(nt.number(g["v_rel"]))
     sh.table((heads, vals), name="given", full=False)
     # the scheme
     z = _scheme_xy(v)
@@ -282,38 +285,34 @@ def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     pts = [((p - c).real / v.mu_l, -(p - c).imag / v.mu_l) for p in z.values()]
     x0, y0, _, y1 = _box(pts)
     top = sh.y + 4.0
-    origin = (ws.X0 + 12.0 - x0, top + 6.0 - y0)
+    origin = (X0 + 12.0 - x0, top + 6.0 - y0)
     sh.add(*_scheme(v, origin, nt))
-    sh.add(Text((ws.X1, top + 2.0), s_l.caption(nt), size_mm=ws.TEXT_MM, anchor="end", name="caption-mu-l"))
+    sh.add(Text((X1, top + 2.0), s_l.caption(nt), size_mm=TEXT_MM, anchor="end", name="caption-mu-l"))
     sh.y = origin[1] + y1 + 10.0
     # the plan's box
     top, H = sh.drawing_box()
     imgs = [(z_.real / v.mu_a, -z_.imag / v.mu_a) for z_ in v.plan.images.values()]
     bx0, by0, bx1, by1 = _box(imgs)
-    if bx1 - bx0 > ws.X1 - ws.X0 - 10.0 or by1 - by0 > H - 8.0:
+    if bx1 - bx0 > X1 - X0 - 10.0 or by1 - by0 > H - 8.0:
         raise InputError(f"{v.id}: the acceleration plan at {v.mu_a} (m/s²)/mm does not fit its box "
-                         f"({bx1 - bx0:.0f} × {by1 - by0:.0f} mm in {ws.X1 - ws.X0:.0f} × {H:.0f} mm)")
-    pole = ((ws.X0 + ws.X1) / 2 - (bx0 + bx1) / 2, top + H / 2 - (by0 + by1) / 2)
+                         f"({bx1 - bx0:.0f} × {by1 - by0:.0f} mm in {X1 - X0:.0f} × {H:.0f} mm)")
+    pole = ((X0 + X1) / 2 - (bx0 + bx1) / 2, top + H / 2 - (by0 + by1) / 2)
     pole = (5.0 * round(pole[0] / 5.0), 5.0 * round(pole[1] / 5.0))
-    sh.add(ws.Grid((ws.X0, top, ws.X1, top + H), anchor=pole, name="grid"))
+    sh.add(Grid((X0, top, X1, top + H), anchor=pole, name="grid"))
     if key:
         sh.add(*ca.plan_elements(pole, v.plan, mu_a=v.mu_a, nt=nt, name="key"))
     else:
-        sh.add(Point(pole, label="π", label_dir="nw", size_mm=ws.TEXT_MM, name="pole"))
+        sh.add(Point(pole, label="π", label_dir="nw", size_mm=TEXT_MM, name="pole"))
     sh.caption([s_a.caption(nt)], y=top + H + 5.0)
-    sh.y = top + H + ws.CAPTION_ROOM
+    sh.y = top + H + CAPTION_ROOM
     heads, vals = _answer_heads(v, nt)
     eqs = [s.equation for s in v.plan.steps if s.method != "similarity"]
     from graphmethods.sheets.acceleration import symbol
 
     lines = [" ".join(symbol(t) if t.startswith(("a_", "a^")) else t for t in e.split()) for e in eqs]
-    ws._answers_and_solution(sh, heads, vals, lines)
+    answers_and_solution(sh, heads, vals, lines)
     return sh.scene((s_l, s_a))
 
 
 # registered with the other kinds (graphmethods.sheets.worksheets imports this module at its end)
-ws._CLASSES["acceleration-plan"] = AccelerationPlanVariant
-ws._GENERATORS["acceleration-plan"] = generate
-ws._PAGES["acceleration-plan"] = page
-ws.TITLES["acceleration-plan"] = TITLE
-ws.STATEMENTS["acceleration-plan"] = STATEMENT
+register("acceleration-plan", AccelerationPlanVariant, generate, page, TITLE, STATEMENT)

@@ -4,7 +4,7 @@ as ``graphmethods check`` does, gathered in one table of students × items.
 Each file names its student and problem inside (``student = …``, ``problem = …`` in an answers file), or
 in its name ``STUDENT__PROBLEM.toml`` (a worksheet id's colons written as underscores:
 ``ivanov__indicator_7_3.toml`` is problem ``indicator:7:3``), or the problem is given for the whole
-class. Drawings (``.dxf``, ``.svg``) are read by :mod:`graphmethods.sheets.cad`.
+class. Drawings (``.dxf``, ``.svg``) are read by :mod:`graphmethods.sheets.check.cad`.
 
 A file that cannot be read or checked is reported (its row says why) and the others are still checked.
 
@@ -12,7 +12,7 @@ Scores: an item ``ok`` counts 1, ``carried`` (follows from the student's own ear
 0; the score is their sum over the items the student answered.
 
 >>> import pathlib
->>> answers = pathlib.Path(__file__).parents[1] / "problems" / "data" / "answers"
+>>> answers = pathlib.Path(__file__).parents[2] / "problems" / "data" / "answers"
 >>> cls = check_class([answers / "w1_correct.toml", answers / "w1_mistakes.toml"])
 >>> [(s.student, s.score_text) for s in cls.submissions]
 [('Example student (correct)', '21/21'), ('Example student (mistakes)', '9.5/14')]
@@ -29,7 +29,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from graphmethods.errors import GraphmethodsError, InputError
-from graphmethods.sheets.check import CheckReport, check, read_answers
+from graphmethods.sheets.check.checking import check
+from graphmethods.sheets.check.report import CheckReport
+from graphmethods.sheets.check.typed_answers import read_answers
 
 #: file kinds checked: answers files, and drawings made in CAD
 ANSWER_SUFFIXES = (".toml",)
@@ -232,7 +234,7 @@ def check_file(path, *, problem: str | None = None) -> Submission:
     report: CheckReport
     try:
         if path.suffix.lower() in DRAWING_SUFFIXES:
-            from graphmethods.sheets import cad
+            from graphmethods.sheets.check import cad
 
             if named is None:
                 raise InputError("no problem: name the file STUDENT__PROBLEM" + path.suffix + " or give --problem")

@@ -30,14 +30,14 @@ An **acceleration plan** (an acceleration-plan worksheet, the slotted lever, or 
 lettered ``π``): the pole π and the lettered images (``a``, ``b``, ``s2``, ``a3`` …, the ends of the normal
 components ``n2``/``n3`` or ``nBA``, of the Coriolis one ``k``), each vector of the plan measured (length and
 direction) between its two letters, μ_a (``μa = 0,04 (m/s²)/mm``) and ε (``ε3 = 3.73 rad/s²``) from the
-texts; checked by :mod:`graphmethods.sheets.check_acceleration` (a Coriolis component drawn the wrong way
+texts; checked by :mod:`graphmethods.sheets.check.acceleration` (a Coriolis component drawn the wrong way
 or a normal one away from its centre shows in the direction of that vector).
 
 When the labels are missing, :func:`check_drawing` says which points it found and asks for a mapping
 (``points={"a": (x, y), ...}``, drawing mm).
 
 >>> import pathlib
->>> d = pathlib.Path(__file__).parents[1] / "problems" / "data" / "drawings"
+>>> d = pathlib.Path(__file__).parents[2] / "problems" / "data" / "drawings"
 >>> rep = check_drawing("W1", d / "w1_mistakes.dxf")
 >>> [i.key for i in rep.wrong if not i.mistakes], [m.code for m in rep.mistakes]
 ([], ['sign_flipped', 'delta_not_halved', 'n_as_omega'])
@@ -59,9 +59,13 @@ from graphmethods.render.dxf import CadDrawing, CadText
 from graphmethods.scene import Page, Scene
 from graphmethods.scene.elements import CAP, Element
 from graphmethods.scene.primitives import Group, Label, Path, Polygon, Style
-from graphmethods.sheets import check as checking
-from graphmethods.sheets.check import CheckReport, CycleData, Item, LinkageData, load_problem
-from graphmethods.sheets.worksheets import RED, SEGMENTS
+from graphmethods.sheets.check.checking import check
+from graphmethods.sheets.check.hypotheses import em_data, plan_data
+from graphmethods.sheets.check.problems import CycleData, LinkageData, load_problem
+from graphmethods.sheets.check.report import TOL_MM, Checker, CheckReport, Item
+from graphmethods.sheets.check.typed_answers import validate_answers
+from graphmethods.sheets.worksheets.elements import RED
+from graphmethods.sheets.worksheets.variants import SEGMENTS
 
 #: how far a label may be from the point it names, mm
 LABEL_REACH_MM = 10.0
@@ -188,6 +192,16 @@ def read_svg(source) -> CadDrawing:
     ``marker-end``/``marker-start`` give an arrowhead at that end; texts give texts.
     """
     name = str(source)
+    root = _svg_root(source)
+    base, H = _svg_page(root)
+    reader = _SvgReader(H)
+    reader.visit(root, base, {})
+    return CadDrawing(tuple(reader.segs), tuple(reader.fills), (), tuple(reader.texts), source=name)
+
+
+def _svg_root(source) -> ET.Element:
+    """The SVG's root element, or an InputError saying why the file cannot be read as one."""
+    name = str(source)
     try:
         root = ET.fromstring(pathlib.Path(source).read_bytes())
     except OSError as exc:
@@ -196,30 +210,44 @@ def read_svg(source) -> CadDrawing:
         raise InputError(f"{name}: not a readable SVG drawing ({exc})") from None
     if root.tag not in (_SVG + "svg", "svg"):
         raise InputError(f"{name}: not an SVG drawing (its root is {root.tag})")
+    return root
 
-    def length_mm(v: str | None) -> float | None:
-        if not v:
-            return None
-        m = re.match(r"^\s*([-+]?[\d.]+)\s*(mm|cm|in|px|pt)?\s*$", v)
-        if not m:
-            return None
-        return float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "px": 25.4 / 96,
-                                    None: 25.4 / 96}[m.group(2)]
 
+def _length_mm(v: str | None) -> float | None:
+    """An SVG length (``"210mm"``, ``"8.5in"``, ``"96px"``, a bare number in px) in mm, or None."""
+    if not v:
+        return None
+    m = re.match(r"^\s*([-+]?[\d.]+)\s*(mm|cm|in|px|pt)?\s*$", v)
+    if not m:
+        return None
+    return float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "px": 25.4 / 96,
+                                None: 25.4 / 96}[m.group(2)]
+
+
+def _svg_page(root: ET.Element) -> tuple[np.ndarray, float]:
+    """(the matrix from user units to mm, the page height in mm) from the viewBox, width and height."""
     vb = [float(x) for x in re.split(r"[\s,]+", root.get("viewBox", "").strip()) if x]
-    W, H = length_mm(root.get("width")), length_mm(root.get("height"))
+    W, H = _length_mm(root.get("width")), _length_mm(root.get("height"))
     if len(vb) == 4:
         sx = (W / vb[2]) if W else 1.0
         sy = (H / vb[3]) if H else sx
-        base = np.array([[sx, 0, -vb[0] * sx], [0, sy, -vb[1] * sy], [0, 0, 1]])
-        H = H or vb[3] * sy
-    else:
-        base = np.diag([25.4 / 96, 25.4 / 96, 1.0])
-        H = H or 0.0
-    segs: list = []
-    fills: list = []
-    texts: list = []
+        return np.array([[sx, 0, -vb[0] * sx], [0, sy, -vb[1] * sy], [0, 0, 1]]), H or vb[3] * sy
+    return np.diag([25.4 / 96, 25.4 / 96, 1.0]), H or 0.0
 
+
+class _SvgReader:
+    """Walks an SVG's elements with their transforms and styles, collecting segments, filled polygons
+    (arrowheads) and texts in mm, y up."""
+
+    _SKIPPED = ("defs", "marker", "metadata", "title", "desc", "style", "clipPath", "mask", "symbol")
+
+    def __init__(self, H: float) -> None:
+        self.H = H
+        self.segs: list = []
+        self.fills: list = []
+        self.texts: list = []
+
+    @staticmethod
     def style_of(el, inherited: dict) -> dict:
         st = dict(inherited)
         for k in ("fill", "stroke", "marker-end", "marker-start", "font-size"):
@@ -231,72 +259,73 @@ def read_svg(source) -> CadDrawing:
                 st[k.strip()] = v.strip()
         return st
 
-    def to_mm(m, pts):
+    def to_mm(self, m, pts):
         out = []
         for px, py in pts:
             X, Y, _ = m @ np.array([px, py, 1.0])
-            out.append((float(X), float(H - Y)))           # y up, as in a DXF
+            out.append((float(X), float(self.H - Y)))           # y up, as in a DXF
         return out
 
-    def shape(el, m, st, subs, closed_shape=False):
+    def shape(self, m, st, subs, closed_shape=False):
         filled = st.get("fill", "#000000") not in ("none", "transparent") and st.get("fill") is not None
         for sub in subs:
-            pts = to_mm(m, sub)
+            pts = self.to_mm(m, sub)
             closed = closed_shape or (len(pts) > 2 and math.dist(pts[0], pts[-1]) < 1e-6)
             if filled and closed and len(pts) >= 3:
-                fills.append(tuple(pts[:-1] if math.dist(pts[0], pts[-1]) < 1e-6 else pts))
+                self.fills.append(tuple(pts[:-1] if math.dist(pts[0], pts[-1]) < 1e-6 else pts))
                 continue
             for a, b in zip(pts, pts[1:] + ([pts[0]] if closed_shape else [])):
                 if math.dist(a, b) > 1e-9:
-                    segs.append((a, b))
+                    self.segs.append((a, b))
             for key, end, prev in (("marker-end", -1, -2), ("marker-start", 0, 1)):
                 if st.get(key, "none") != "none" and len(pts) >= 2:
                     tip, back = np.array(pts[end]), np.array(pts[prev])
                     u = (tip - back) / max(float(np.hypot(*(tip - back))), 1e-9)
                     base_pt = tip - 2.5 * u
                     n = np.array([-u[1], u[0]]) * 0.5
-                    fills.append((tuple(tip), tuple(base_pt + n), tuple(base_pt - n)))
+                    self.fills.append((tuple(tip), tuple(base_pt + n), tuple(base_pt - n)))
 
-    def visit(el, m, st):
+    def text(self, el, m, st) -> None:
+        chars = "".join(el.itertext()).strip()
+        if not chars:
+            return
+        fs = re.match(r"\s*([\d.]+)", str(st.get("font-size", "3.5")))
+        size = float(fs.group(1)) if fs else 3.5          # in user units (px in a viewBox are user units)
+        x = float((el.get("x") or "0").split()[0])
+        y = float((el.get("y") or "0").split()[0])
+        tspan = el.find(_SVG + "tspan")
+        if tspan is not None and tspan.get("x") is not None:
+            x, y = float(tspan.get("x").split()[0]), float(tspan.get("y", y).split()[0])
+        anchor = st.get("text-anchor", el.get("text-anchor", "start"))
+        w = 0.6 * size * len(chars)
+        cx = x + {"start": w / 2, "middle": 0.0, "end": -w / 2}.get(anchor, w / 2)
+        (X, Y), = self.to_mm(m, [(cx, y - 0.36 * size)])
+        scale = math.sqrt(abs(np.linalg.det(m[:2, :2])))
+        self.texts.append(CadText(chars, X, Y, size * CAP * scale))
+
+    def visit(self, el, m, st) -> None:
         tag = el.tag.replace(_SVG, "")
-        if tag in ("defs", "marker", "metadata", "title", "desc", "style", "clipPath", "mask", "symbol"):
+        if tag in self._SKIPPED:
             return
         m = m @ _transform(el.get("transform"))
-        st = style_of(el, st)
+        st = self.style_of(el, st)
         f = lambda k: float(el.get(k, 0) or 0)      # noqa: E731
         if tag == "line":
-            shape(el, m, dict(st, fill="none"), [[(f("x1"), f("y1")), (f("x2"), f("y2"))]])
+            self.shape(m, dict(st, fill="none"), [[(f("x1"), f("y1")), (f("x2"), f("y2"))]])
         elif tag in ("polyline", "polygon"):
             v = [float(x) for x in re.split(r"[\s,]+", (el.get("points") or "").strip()) if x]
-            shape(el, m, st if tag == "polygon" else dict(st, fill="none"), [list(zip(v[0::2], v[1::2]))],
-                  closed_shape=tag == "polygon")
+            self.shape(m, st if tag == "polygon" else dict(st, fill="none"), [list(zip(v[0::2], v[1::2]))],
+                       closed_shape=tag == "polygon")
         elif tag == "rect":
             x, y, w, h = f("x"), f("y"), f("width"), f("height")
-            shape(el, m, st, [[(x, y), (x + w, y), (x + w, y + h), (x, y + h)]], closed_shape=True)
+            self.shape(m, st, [[(x, y), (x + w, y), (x + w, y + h), (x, y + h)]], closed_shape=True)
         elif tag == "path":
-            shape(el, m, st, _path_points(el.get("d", "")))
+            self.shape(m, st, _path_points(el.get("d", "")))
         elif tag == "text":
-            chars = "".join(el.itertext()).strip()
-            if chars:
-                fs = re.match(r"\s*([\d.]+)", str(st.get("font-size", "3.5")))
-                size = float(fs.group(1)) if fs else 3.5          # in user units (px in a viewBox are user units)
-                x = float((el.get("x") or "0").split()[0])
-                y = float((el.get("y") or "0").split()[0])
-                tspan = el.find(_SVG + "tspan")
-                if tspan is not None and tspan.get("x") is not None:
-                    x, y = float(tspan.get("x").split()[0]), float(tspan.get("y", y).split()[0])
-                anchor = st.get("text-anchor", el.get("text-anchor", "start"))
-                w = 0.6 * size * len(chars)
-                cx = x + {"start": w / 2, "middle": 0.0, "end": -w / 2}.get(anchor, w / 2)
-                (X, Y), = to_mm(m, [(cx, y - 0.36 * size)])
-                scale = math.sqrt(abs(np.linalg.det(m[:2, :2])))
-                texts.append(CadText(chars, X, Y, size * CAP * scale))
+            self.text(el, m, st)
             return
         for child in el:
-            visit(child, m, st)
-
-    visit(root, base, {})
-    return CadDrawing(tuple(segs), tuple(fills), (), tuple(texts), source=name)
+            self.visit(child, m, st)
 
 
 def read(source) -> CadDrawing:
@@ -644,7 +673,7 @@ def _crossings_near(d: CadDrawing, x: float, y: float, reach: float) -> list[np.
 def _ray_items(d: CadDrawing, named: dict, answers: dict, data: LinkageData) -> list[Item]:
     """The direction of the ray drawn through k (ψ_max) and through l (ψ_min) against the exact tangent
     (±0.5° + atan(0.5 mm / the ray's length)); the ray is the longest sloping segment through the point."""
-    J, T, n_rpm, delta = checking._em_data(checking._Checker(checking.validate_answers(answers)), data)
+    J, T, n_rpm, delta = em_data(Checker(validate_answers(answers)), data)
     sec = answers["energy_mass"]
     w = 2.0 * math.pi * n_rpm / 60.0
     c = sec["mu_J"] / (2.0 * sec["mu_T"]) * w * w
@@ -659,13 +688,13 @@ def _ray_items(d: CadDrawing, named: dict, answers: dict, data: LinkageData) -> 
             if L < 5.0 or abs(u[0]) < 1e-6 * L:
                 continue
             dist = abs(float(u[0] * (P[1] - A[1]) - u[1] * (P[0] - A[0]))) / L
-            if dist <= checking.TOL_MM and (best is None or L > best[0]):
+            if dist <= TOL_MM and (best is None or L > best[0]):
                 best = (L, math.degrees(math.atan(u[1] / u[0])))
         if best is None:
             continue
         exp = math.degrees(math.atan(tan))
         dev = best[1] - exp
-        tol = TOL_DEG + math.degrees(math.atan2(checking.TOL_MM, best[0]))
+        tol = TOL_DEG + math.degrees(math.atan2(TOL_MM, best[0]))
         items.append(Item(f"drawing.ray_{which}_deg", f"ray ψ_{which}", "°", round(exp, 3), round(best[1], 3),
                           round(dev, 3), round(tol, 3), "ok" if abs(dev) <= tol else "wrong",
                           note="±0.5° + atan(0.5 mm / length)"))
@@ -718,7 +747,7 @@ _PI = ("π", "pi", "Π")
 def _aliases(plan) -> dict[str, str]:
     """How a student may letter each image of the plan -> the image's label: ``a3``, ``s3``; an end of a
     normal component ``n_BA`` as ``nBA`` or ``n`` + its link (``n2``); of a Coriolis one as ``k`` too."""
-    from graphmethods.sheets import check_acceleration as ca
+    from graphmethods.sheets.check import acceleration as ca
 
     out: dict[str, str] = dict.fromkeys(_PI, "π")
     comps = ca.vectors(plan)
@@ -740,8 +769,7 @@ def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None
                 points: dict | None = None) -> tuple[dict, dict]:
     """(answers, measured points) of an acceleration plan drawing: the ``[acceleration_plan]`` section with
     every vector's length (mm) and direction (degrees from +x, counterclockwise) between its letters."""
-    from graphmethods.sheets import check_acceleration as ca
-    from graphmethods.sheets.check import _Checker
+    from graphmethods.sheets.check import acceleration as ca
 
     nts = notes(d)
     arrs = arrows(d)
@@ -758,7 +786,7 @@ def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None
             raise InputError(f"{d.source}: which position is drawn? write 'position K' on the drawing, or give "
                              f"--position")
         sec["position"], sec["positions"] = int(k), 12
-    plan = ca.problem_of(_Checker({"acceleration_plan": sec}), data).plan()
+    plan = ca.problem_of(Checker({"acceleration_plan": sec}), data).plan()
     alias = _aliases(plan)
     labels = [replace(t, text=alias[t.text]) for t in nts.labels if t.text in alias]
     given = {alias.get(_label_text(k), k): v for k, v in (points or {}).items()}
@@ -785,8 +813,8 @@ def acc_answers(d: CadDrawing, data: LinkageData, *, position: int | None = None
 
 def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item]:
     """The direction of each vector of the plan against the expected one (±0.5° + atan(0.5 mm / length))."""
-    ck = checking._Checker(checking.validate_answers(answers))
-    vec, *_ = checking._plan_data(ck, data)
+    ck = Checker(validate_answers(answers))
+    vec, *_ = plan_data(ck, data)
     items = []
     for seg, (f, t) in SEGMENTS.items():
         if f not in named or t not in named:
@@ -799,7 +827,7 @@ def _direction_items(named: dict, answers: dict, data: LinkageData) -> list[Item
         exp = math.degrees(math.atan2(exp_v[1], exp_v[0]))
         stu = math.degrees(math.atan2(got[1], got[0]))
         dev = (stu - exp + 180.0) % 360.0 - 180.0
-        tol = TOL_DEG + math.degrees(math.atan2(checking.TOL_MM, L))
+        tol = TOL_DEG + math.degrees(math.atan2(TOL_MM, L))
         items.append(Item(f"drawing.{seg}_deg", f"direction of {seg}", "°", round(exp, 3), round(exp + dev, 3),
                           round(dev, 3), round(tol, 3), "ok" if abs(dev) <= tol else "wrong",
                           note="±0.5° + atan(0.5 mm / length)"))
@@ -854,7 +882,7 @@ def check_drawing(problem, source, *, student: str | None = None, position: int 
             extra = _direction_items(named, answers, data)
     answers["student"] = student or pathlib.Path(source).stem.split("__")[0]
     answers["problem"] = str(data.id)
-    rep = checking.check(data, answers)
+    rep = check(data, answers)
     page, shift = _page_for(d)
     note = f"read from {pathlib.Path(source).name}: " + ", ".join(
         f"{k} = {v}" for sec in ("velocity_plan", "energy_indicator", "energy_mass", "acceleration_plan")

@@ -15,7 +15,7 @@ The answers file's section ``[acceleration_plan]`` names each vector by its symb
     epsilon_2_sense = "ccw"
 
 (``ak_A3A2_mm`` is the Coriolis component, ``ar_A3A2_mm`` the relative one; ``…_deg`` a direction
-measured from +x counterclockwise, as :mod:`graphmethods.sheets.cad` reads it off a drawing.)
+measured from +x counterclockwise, as :mod:`graphmethods.sheets.check.cad` reads it off a drawing.)
 
 Each usual mistake is a hypothesis: the plan is built again with that mistake made (the normal
 component of a link drawn away from its centre; the Coriolis term reversed, forgotten or without its
@@ -25,6 +25,7 @@ the mistake shows, and ``carried`` after that (the rest of the construction buil
 ±0.5 mm a length, ±0.5° + atan(0.5 mm / length) a direction, ε: 0.5 mm·μ_a/l + 0.1 %.
 
 >>> from graphmethods.sheets.check import check
+>>> from graphmethods.sheets import worksheets as ws
 >>> v = ws.variant("acceleration-plan", seed=1, number=2)
 >>> good = {k: round(x, 2) for k, x in v.answers().items() if k.endswith("_mm")}
 >>> rep = check(v.id, {"acceleration_plan": {"mu_a": v.mu_a, **good}})
@@ -45,9 +46,10 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, _Builder
 from graphmethods.kinematics.linkage import Linkage
+from graphmethods.scene import markup, notation as get_notation
 from graphmethods.scene.elements import Element, Line, Text, Vector
 from graphmethods.scene.primitives import Style
-from graphmethods.sheets import worksheets as ws
+from graphmethods.sheets.worksheets.elements import RED, SMALL_MM, ColorText
 
 TOL_MM = 0.5
 TOL_DEG = 0.5
@@ -68,16 +70,6 @@ MISTAKES = {
     "crank_tangential_forgotten": "the crank's a^τ = ε₁·l_OA forgotten (ε₁ ≠ 0)",
 }
 #: the same, short, for the overlay (en, ru, zh)
-WORDS = {
-    "normal_reversed": ("normal component drawn away from the centre", "нормальное ускорение направлено от центра",
-                        "法向分量方向画反"),
-    "coriolis_reversed": ("Coriolis sense reversed", "кориолисово ускорение в обратную сторону", "哥氏加速度方向画反"),
-    "coriolis_forgotten": ("Coriolis term forgotten", "забыто кориолисово ускорение", "漏了哥氏加速度"),
-    "coriolis_factor_2": ("factor 2 missing in 2ω·v", "пропущен множитель 2 в 2ω·v", "2ω·v 中漏了系数 2"),
-    "normal_wrong_length": ("ω²·l with the wrong length", "ω²·l с неверной длиной", "ω²·l 用错了杆长"),
-    "crank_tangential_forgotten": ("crank's tangential component forgotten", "забыто касательное ускорение кривошипа",
-                                   "漏了曲柄的切向加速度"),
-}
 
 
 class SectionKeys(tuple):
@@ -240,17 +232,23 @@ def _dev_deg(a: float, b: float) -> float:
 
 def check_acceleration(ck: Any, data: Any) -> None:
     """Judge every answered item of ``[acceleration_plan]`` (see the module docstring); items go to ``ck``."""
-    from graphmethods.sheets.check import Item
-
     pr = problem_of(ck, data)
     sec = ck.a.get("acceleration_plan", {})
     mu_a = ck.need("acceleration_plan", "mu_a", "(m/s²) per mm of the acceleration plan")
     plan = pr.plan()
     hyps = pr.hypotheses()
     comps = vectors(plan)
-    keys = {key_of(c.symbol) for c in comps}
-    crank_link = pr.linkage.crank.link
-    eps_links = turning_links(plan, crank_link)
+    eps_links = turning_links(plan, pr.linkage.crank.link)
+    _refuse_unknown_keys(sec, {key_of(c.symbol) for c in comps}, eps_links)
+    judge = _Judge(ck)
+    if pr.mu_a is not None:
+        judge("mu_a", "μ_a", "(m/s²)/mm", pr.mu_a, mu_a, TOL_REL * pr.mu_a, (), note="the scale stated, 0.1 %")
+    student_mm = _judge_vectors(judge, sec, comps, hyps, mu_a)
+    _judge_epsilon(ck, judge, sec, plan, comps, hyps, eps_links, mu_a=mu_a, student_mm=student_mm)
+
+
+def _refuse_unknown_keys(sec: Mapping[str, Any], keys: set[str], eps_links: list[str]) -> None:
+    """An answered vector the plan does not have, or an ε of a link that does not turn, is refused."""
     for k in sec:
         m = _KEY.match(k)
         if m and f"{m.group(1)}_{m.group(2)}" not in keys:
@@ -260,10 +258,21 @@ def check_acceleration(ck: Any, data: Any) -> None:
         if e and e.group(1) not in eps_links:
             raise InputError(f"[acceleration_plan] {k}: ε is found for link{'s' if len(eps_links) > 1 else ''} "
                              f"{', '.join(eps_links)} (epsilon_{eps_links[0] if eps_links else 'L'})")
-    charged: dict[str, str] = {}          # mistake code -> the item where it was named
 
-    def judge(key: str, label: str, unit: str, expected: float, student: float, tol: float, hyp_values: Iterable,
-              *, own: float | None = None, own_from: str = "", note: str = "", angle: bool = False) -> None:
+
+class _Judge:
+    """Judges one item against the exact plan and the mistaken ones: a mistake is named the first time it
+    shows (``wrong``), and the items after it that follow from it are ``carried``."""
+
+    def __init__(self, ck: Any) -> None:
+        self.ck = ck
+        self.charged: dict[str, str] = {}          # mistake code -> the item where it was named
+
+    def __call__(self, key: str, label: str, unit: str, expected: float, student: float, tol: float,
+                 hyp_values: Iterable[tuple[str, float | None]], *, own: float | None = None, own_from: str = "",
+                 note: str = "", angle: bool = False) -> None:
+        from graphmethods.sheets.check.report import Item
+
         dev = _dev_deg(student, expected) if angle else student - expected
         codes: list[str] = []
         verdict, why = "ok", note
@@ -274,22 +283,25 @@ def check_acceleration(ck: Any, data: Any) -> None:
                 d = _dev_deg(student, h) if angle else student - h
                 if abs(d) <= tol and code not in codes:
                     codes.append(code)
-            before = [c for c in codes if c in charged]
+            before = [c for c in codes if c in self.charged]
             if before:
                 verdict, codes = "carried", []
-                why = f"follows from the earlier mistake at {charged[before[0]]} ({before[0]})"
+                why = f"follows from the earlier mistake at {self.charged[before[0]]} ({before[0]})"
             elif own is not None and abs(student - own) <= tol and abs(own - expected) > tol:
                 verdict, codes = "carried", []
                 why = f"follows from {own_from}: expected {own:.4g} from those"
             else:
                 verdict = "wrong"
                 for c in codes:
-                    charged.setdefault(c, label)
-        ck.items.append(Item(f"acceleration_plan.{key}", label, unit, float(expected), float(student), float(dev),
-                             float(tol), verdict, tuple(codes), why))
+                    self.charged.setdefault(c, label)
+        self.ck.items.append(Item(f"acceleration_plan.{key}", label, unit, float(expected), float(student),
+                                  float(dev), float(tol), verdict, tuple(codes), why))
 
-    if pr.mu_a is not None:
-        judge("mu_a", "μ_a", "(m/s²)/mm", pr.mu_a, mu_a, TOL_REL * pr.mu_a, (), note="the scale stated, 0.1 %")
+
+def _judge_vectors(judge: _Judge, sec: Mapping[str, Any], comps: list[Component],
+                   hyps: list[tuple[str, AccelerationPlan]], mu_a: float) -> dict[str, float]:
+    """Each vector's length (±0.5 mm) and direction (±0.5° + the angle 0.5 mm subtends); the student's
+    lengths in mm by key."""
     student_mm: dict[str, float] = {}
     for c in comps:
         k = key_of(c.symbol)
@@ -307,6 +319,13 @@ def check_acceleration(ck: Any, data: Any) -> None:
             judge(f"{k}_deg", f"direction of {c.symbol}", "°", round(_angle(c.vector), 3), float(A), tol,
                   [(code, None if z is None or abs(z) < 1e-12 else _angle(z)) for code, z in hv], angle=True,
                   note="±0.5° + atan(0.5 mm / length)")
+    return student_mm
+
+
+def _judge_epsilon(ck: Any, judge: _Judge, sec: Mapping[str, Any], plan: AccelerationPlan, comps: list[Component],
+                   hyps: list[tuple[str, AccelerationPlan]], eps_links: list[str], *, mu_a: float,
+                   student_mm: dict[str, float]) -> None:
+    """ε of each turning link (0.5 mm × μ_a / l, + 0.1 %; carried from the student's own a^τ) and its sense."""
     for link in eps_links:
         val = sec.get(f"epsilon_{link}")
         l = plan.lengths[link]
@@ -337,7 +356,7 @@ def _find(plan: AccelerationPlan, c: Component) -> complex | None:
 def _symbol_markup(symbol: str) -> str:
     """A vector's symbol as overlay markup whose plain text is the symbol without ``_`` (``a^τ_BA`` → a^τBA)."""
     head, _, sub = symbol.partition("_")
-    return f"{ws.markup.literal(head)}_{{{sub}}}" if sub else ws.markup.literal(head)
+    return f"{markup.literal(head)}_{{{sub}}}" if sub else markup.literal(head)
 
 
 def item_label(key: str, words: Any) -> str:
@@ -352,7 +371,7 @@ def item_label(key: str, words: Any) -> str:
         return words("sense_of", omega=eps) if e.group(2) else eps
     m = _KEY.match(name)
     if m is None:                                   # pragma: no cover - every key of the section is above
-        return ws.markup.literal(name)
+        return markup.literal(name)
     marks = {v: k for k, v in _MARKS.items()}
     sym = _symbol_markup(f"a{marks.get(m.group(1)[1:], '')}_{m.group(2)}")
     return words("direction_of", v=sym) if m.group(3) == "deg" else sym
@@ -374,6 +393,7 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
     >>> round(math.dist(v.start, v.end) * 0.5, 9)
     10.0
     """
+    nt = get_notation(nt)
     from graphmethods.sheets.layout import Occupancy
 
     wrong = dict(wrong or {})
@@ -390,14 +410,15 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             d /= float(np.hypot(*d))
             t = float((X - P0) @ d)
             a, b = P0 + d * (min(0.0, t) - 10.0), P0 + d * (max(0.0, t) + 10.0)
-            els.append(Line(tuple(a.tolist()), tuple(b.tolist()), style=thin, name=f"{name}-line-{s.point}-{ln.through}"))
+            els.append(Line(tuple(a.tolist()), tuple(b.tolist()), style=thin,
+                            name=f"{name}-line-{s.point}-{ln.through}"))
     seen: set[str] = set()
     for c in vectors(plan):
         k = key_of(c.symbol)
         if k in seen:
             continue
         seen.add(k)
-        style = Style(stroke=ws.RED, width_mm=0.45) if k in red else Style(width_mm=0.35)
+        style = Style(stroke=RED, width_mm=0.45) if k in red else Style(width_mm=0.35)
         els.append(Vector(pts[c.start], pts[c.end], known=c.known, style=style, head_length_mm=2.6,
                           head_width_mm=1.0, name=f"{name}-{k}"))
     occ = Occupancy()
@@ -411,17 +432,17 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             continue
         done.add(key)
         text = _image_markup(lb)
-        lab = occ.place_label(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=ws.SMALL_MM + 0.3,
+        lab = occ.place_label(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=SMALL_MM + 0.3,
                               gap_mm=0.8)
-        els.append(Text((lab.x, lab.y), text, size_mm=ws.SMALL_MM + 0.3, anchor=lab.anchor, name=f"{name}-name-{lb}"))
+        els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM + 0.3, anchor=lab.anchor, name=f"{name}-name-{lb}"))
     for c in vectors(plan):
         k = key_of(c.symbol)
         if k in wrong:
             mid = ((pts[c.start][0] + pts[c.end][0]) / 2, (pts[c.start][1] + pts[c.end][1]) / 2)
-            txt = f"{_symbol_markup(c.symbol)} = {ws.num(wrong[k], nt)} {ws.unit('mm', nt)}?"
-            lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=ws.SMALL_MM, gap_mm=2.0)
-            els.append(ws.ColorText((lab.x, lab.y), txt, size_mm=ws.SMALL_MM, anchor=lab.anchor,
-                                    color=ws.RED, name=f"{name}-student-{k}"))
+            txt = f"{_symbol_markup(c.symbol)} = {nt.number(wrong[k])} {nt.unit('mm')}?"
+            lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM, gap_mm=2.0)
+            els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor,
+                                    color=RED, name=f"{name}-student-{k}"))
     return els
 
 
