@@ -3,7 +3,7 @@ the mechanisms of the acceleration-plan kind; the symbols the profiles lack; Rus
 
 >>> from graphmethods.scene.notation import get
 >>> get("ru").sym("worksheets.tan"), get("zh").word("worksheets.unit_rev_min")
-XX
+('tg', 'r/min')
 """
 
 WORDS = {
