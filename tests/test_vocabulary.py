@@ -137,3 +137,13 @@ def test_no_text_kept_twice_under_two_keys() -> None:
             keys_of.setdefault(triple, []).append(key)
         twice = [keys for keys in keys_of.values() if len(keys) > 1]
         assert not twice, f"the same {kind} under several keys (keep one): {twice}"
+
+
+def test_a_missing_key_is_a_programming_error_not_bad_input() -> None:
+    from graphmethods.errors import InputError
+
+    with pytest.raises(notation.VocabularyError, match="no word 'worksheets.nope'") as caught:
+        notation.get("ru").word("worksheets.nope")
+    assert not isinstance(caught.value, InputError)
+    with pytest.raises(notation.VocabularyError, match="no symbol"):
+        notation.get("zh").sym("nope")

@@ -94,6 +94,11 @@ _UNITS_RU = {
 _PROFILES = ("en", "ru", "zh")
 
 
+class VocabularyError(LookupError):
+    """A figure asked for a word or symbol the vocabulary lacks: a programming error, never bad input
+    (so no ``except InputError`` that retries another variant or layout can swallow it)."""
+
+
 @dataclass(frozen=True)
 class Notation:
     """One textbook tradition's symbols (markup), words, units and number style.
@@ -113,7 +118,7 @@ class Notation:
         try:
             return self.symbols[key]
         except KeyError:
-            raise InputError(f"notation {self.code}: no symbol {key!r}; add it to scene/vocabulary/") from None
+            raise VocabularyError(f"notation {self.code}: no symbol {key!r}; add it to scene/vocabulary/") from None
 
     def word(self, key: str, **fill: object) -> str:
         """The words for a concept key such as ``"energy_indicator"`` or ``"kinematics.scheme"``.
@@ -128,7 +133,7 @@ class Notation:
         try:
             text = self.words[key]
         except KeyError:
-            raise InputError(f"notation {self.code}: no word {key!r}; add it to scene/vocabulary/") from None
+            raise VocabularyError(f"notation {self.code}: no word {key!r}; add it to scene/vocabulary/") from None
         return text.format(**fill) if fill else text
 
     def unit(self, unit: str) -> str:

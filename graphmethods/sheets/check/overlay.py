@@ -85,7 +85,7 @@ def overlay_label(it: Item, report: CheckReport, nt) -> str:
     if name in ("delta_W_max", "M_d"):
         return nt.sym(name)
     if name in ("omega_m", "J_F"):
-        return nt.sym("worksheets." + name)
+        return nt.sym("dynamics." + name)
     if name in _SYMBOL_LABELS:
         return _SYMBOL_LABELS[name]
     return markup.literal(it.label)
@@ -97,7 +97,7 @@ def overlay_value(v, nt) -> str:
     nt = get_notation(nt)
     if not isinstance(v, str):
         return nt.number(v)
-    parts = [nt.word("worksheets." + p) if p in ("cw", "ccw") else markup.literal(p) for p in v.split(" or ")]
+    parts = [nt.word("kinematics." + p) if p in ("cw", "ccw") else markup.literal(p) for p in v.split(" or ")]
     text = parts[0]
     for p in parts[1:]:
         text = nt.word("check.or", a=text, b=p)

@@ -236,7 +236,7 @@ def _answer_heads(v: AccelerationPlanVariant, nt: Any) -> tuple[list[str], list[
         vals.append(nt.number(a[f"{ca.key_of(c.symbol)}_mm"]))
     for link in ca.turning_links(v.plan, v.linkage.crank.link):
         heads.append(nt.quantity(f"ε_{{{link}}}", "rad/s²"))
-        vals.append(f"{nt.number(a[f'epsilon_{link}'])} {nt.word('worksheets.' + a[f'epsilon_{link}_sense'])}")
+        vals.append(f"{nt.number(a[f'epsilon_{link}'])} {nt.word('kinematics.' + a[f'epsilon_{link}_sense'])}")
     return heads, vals
 
 

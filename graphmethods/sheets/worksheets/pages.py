@@ -467,7 +467,7 @@ def _plan_page(v: PlanVariant, nt, key: bool) -> Scene:
     sh.y = top + H + CAPTION_ROOM
     a = v.answers()
     mm, ms = "mm", "m/s"
-    sense = nt.word("worksheets." + a["omega_2_sense"])
+    sense = nt.word("kinematics." + a["omega_2_sense"])
     answers_and_solution(
         sh, [nt.quantity("pa", mm), nt.quantity("pb", mm), nt.quantity("ab", mm), nt.quantity("ps_{2}", mm),
              nt.quantity("v_{A}", ms), nt.quantity("v_{B}", ms), nt.quantity("v_{BA}", ms),
