@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded
 from graphmethods.units import real
@@ -59,6 +60,13 @@ __all__ = [
 ]
 
 TWO_PI = 2.0 * math.pi
+
+FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.intp]
+#: a vectorised function of the angle φ (rad)
+PhiFunction = Callable[[FloatArray], FloatArray]
+#: a piecewise-polynomial model of a function for the extremum search: (ready the grid steps given, evaluate)
+StepModel = tuple[Callable[[IntArray], None], PhiFunction]
 _ZOOM = 32                            # sub-steps per bracket and round of the extremum search
 
 # Gauss–Kronrod 7/15 (QUADPACK qk15): Kronrod abscissae (positive half, 0 last) and weights,
@@ -98,6 +106,12 @@ def _integration_matrix(nodes: np.ndarray) -> np.ndarray:
 
 #: running integrals from the start of an interval to its 6 Gauss nodes, from f at those nodes
 _GL6_S = _integration_matrix(_GL6_X)
+#: f at the 6 Gauss nodes -> its interpolant's Legendre coefficients (degree 5)
+_GL6_TO_LEG = np.linalg.inv(np.polynomial.legendre.legvander(_GL6_X, 5))
+#: Legendre coefficients of a degree-5 polynomial -> those of its running integral from −1 (degree 6)
+_LEG_INT = np.column_stack([np.polynomial.legendre.legint(np.eye(6)[j], lbnd=-1) for j in range(6)])
+#: f at −1, the 6 Gauss nodes and +1 -> its interpolant's Legendre coefficients (degree 7)
+_ENDS8_TO_LEG = np.linalg.inv(np.polynomial.legendre.legvander(np.concatenate([[-1.0], _GL6_X, [1.0]]), 7))
 
 
 # --------------------------------------------------------------------------------------------
@@ -444,17 +458,10 @@ def _wrap(phi, a, L):
     return a + np.mod(np.asarray(phi, dtype=float) - a, L)
 
 
-def _refine_max(fun, x, fx, *, a, L):
-    """The global maximum of a periodic function sampled at grid x (x[0] = a, x[-1] = a + L).
-
-    Every grid local maximum within one largest grid step of the best sample is refined by a
-    batched zoom: each round samples every candidate's bracket at ``_ZOOM`` + 1 points in one call
-    of ``fun`` (so a linkage's kinematics runs once per round, vectorised, never angle by angle),
-    and narrows the bracket to the two sub-steps around its best sample, a factor ``_ZOOM``/2 per
-    round: about ten rounds reach the resolution of the angle. Returns (x*, f*, spread): spread is
-    the largest difference between f* and f at the ends of the final bracket, a bound on how far
-    f* may still be from the maximum of the bracket.
-    """
+def _candidates(x: FloatArray, fx: FloatArray, a: float, L: float) -> tuple[IntArray, FloatArray, FloatArray]:
+    """The grid points that could hold the global maximum of a periodic function sampled at x (x[0] = a,
+    x[-1] = a + L): every grid local maximum within one largest grid step of the best sample, at most 64,
+    with its bracket [x[c − 1], x[c + 1]] (the step before position 0 taken from the end of the period)."""
     n = x.size - 1                       # x[n] is x[0] + L
     v = fx[:n]
     left = np.concatenate([[fx[n - 1]], v[:-1]])
@@ -467,12 +474,16 @@ def _refine_max(fun, x, fx, *, a, L):
     if cand.size > 64:
         cand = cand[np.argsort(v[cand])[-64:]]
     lo = np.where(cand > 0, x[np.maximum(cand - 1, 0)], x[n - 1] - L)
-    hi = x[cand + 1]
-    xs, fs = x[cand], v[cand]
-    resolution = 4 * np.finfo(float).eps * (abs(a) + L)
-    rounding = 4 * np.finfo(float).eps * float(np.max(np.abs(fx)))
+    return cand, lo, x[cand + 1]
+
+
+def _zoom(fun: PhiFunction, lo: FloatArray, hi: FloatArray, xs: FloatArray, fs: FloatArray, *, a: float, L: float,
+          resolution: float, rounding: float) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """The batched zoom search for the maxima of ``fun`` in the brackets [lo, hi] (best samples so far xs, fs):
+    each round samples every bracket at ``_ZOOM`` + 1 points in one call of ``fun`` and narrows it to the two
+    sub-steps around its best sample, a factor ``_ZOOM``/2 per round. Returns (xs, fs, lo, hi)."""
     s = np.linspace(0.0, 1.0, _ZOOM + 1)
-    rows = np.arange(cand.size)
+    rows = np.arange(lo.size)
     for _ in range(60):
         pts = lo[:, None] + (hi - lo)[:, None] * s
         fp = fun(_wrap(pts, a, L))
@@ -487,18 +498,75 @@ def _refine_max(fun, x, fx, *, a, L):
         open_ = (change > rounding) & (fs + change >= fs.max()) & (hi - lo > resolution)
         if not open_.any():
             break
+    return xs, fs, lo, hi
+
+
+#: largest difference, relative to max |f| on the grid, between the piecewise-polynomial model of a
+#: function and the function itself at the model's maxima before the search falls back to the function
+_MODEL_RTOL = 1e-9
+
+
+def _refine_max(fun: PhiFunction, x: FloatArray, fx: FloatArray, *, a: float, L: float,
+                model: StepModel | None = None) -> tuple[float, float, float]:
+    """The global maximum of a periodic function sampled at grid x (x[0] = a, x[-1] = a + L).
+
+    Every grid local maximum within one largest grid step of the best sample is refined by a batched
+    zoom (:func:`_zoom`). With a ``model`` (``(prepare, f_model)``: ``prepare(steps)`` readies the
+    polynomial pieces of the grid steps given, ``f_model`` evaluates the piecewise-polynomial model of
+    ``fun`` on those steps) the zoom runs on the model, at no cost in calls of ``fun``, and ``fun`` is
+    then called once, on every candidate's maximiser together: the best of those exact values is the
+    answer (the model only places the angle; at a smooth maximum an error dφ in it changes f by
+    O(dφ²)). Where the model and ``fun`` differ by more than ``_MODEL_RTOL`` the zoom runs on ``fun``
+    itself, a few calls of ``fun`` per round, each vectorised over every candidate.
+
+    Returns (x*, f*, spread): spread bounds how far f* may still be from the maximum: the largest
+    difference between f* and f at the ends of the final bracket, plus twice the model's error at x*
+    (max f − f(x*) ≤ 2 sup |f − model| near the maximum).
+    """
+    n = x.size - 1
+    cand, lo, hi = _candidates(x, fx, a, L)
+    xs, fs = x[cand], fx[cand]
+    resolution = 4 * np.finfo(float).eps * (abs(a) + L)
+    scale = float(np.max(np.abs(fx)))
+    rounding = 4 * np.finfo(float).eps * scale
+    model_error = 0.0
+    if model is not None:
+        prepare, f_model = model
+        prepare(np.unique(np.mod(cand[:, None] + np.arange(-1, 2), n)))   # a bracket's end may fall on the next step
+        xm, fm, lo_m, hi_m = _zoom(f_model, lo, hi, xs, fs, a=a, L=L, resolution=resolution, rounding=rounding)
+        fe = fun(_wrap(np.concatenate([xm, lo_m, hi_m]), a, L))
+        k = int(np.argmax(fe[:xm.size]))
+        model_error = float(np.max(np.abs(fe[:xm.size] - fm)))
+        if model_error <= _MODEL_RTOL * scale:
+            x_star, f_star = float(xm[k]), float(fe[k])
+            ends = fe[[xm.size + k, 2 * xm.size + k]]
+            return _never_worse(x, fx, x_star, f_star, ends, 2 * model_error, a, L)
+    xs, fs, lo, hi = _zoom(fun, lo, hi, xs, fs, a=a, L=L, resolution=resolution, rounding=rounding)
     k = int(np.argmax(fs))
     ends = fun(_wrap(np.array([lo[k], hi[k]]), a, L))
-    x_star, f_star = float(xs[k]), float(fs[k])
-    if best > f_star:                    # never worse than the grid
+    return _never_worse(x, fx, float(xs[k]), float(fs[k]), ends, 0.0, a, L)
+
+
+def _never_worse(x: FloatArray, fx: FloatArray, x_star: float, f_star: float, ends: FloatArray, extra: float,
+                 a: float, L: float) -> tuple[float, float, float]:
+    """(x*, f*, spread) from a refined maximum, the best grid sample taking its place if it is higher."""
+    v = fx[:-1]
+    best = float(v.max())
+    if best > f_star:
         i = int(np.argmax(v))
         x_star, f_star = float(x[i]), best
-    spread = float(np.max(np.abs(ends - f_star)))
+    spread = float(np.max(np.abs(ends - f_star))) + extra
     return float(_wrap(x_star, a, L)), f_star, spread
 
 
-def _refine_min(fun, x, fx, *, a, L):
-    xs, fs, spread = _refine_max(lambda p: -fun(p), x, -fx, a=a, L=L)
+def _refine_min(fun: PhiFunction, x: FloatArray, fx: FloatArray, *, a: float, L: float,
+                model: StepModel | None = None) -> tuple[float, float, float]:
+    """The global minimum, as :func:`_refine_max` finds the maximum of −f."""
+    neg_model: StepModel | None = None
+    if model is not None:
+        prepare, f_model = model
+        neg_model = (prepare, lambda p: -f_model(p))
+    xs, fs, spread = _refine_max(lambda p: -fun(p), x, -fx, a=a, L=L, model=neg_model)
     return xs, -fs, spread
 
 
@@ -598,6 +666,7 @@ class _Cycle:
         # smooth: jumps are at grid points) gives ΔE on the grid and at the Gauss points (a
         # degree-5 running integral on each step), anchored at the quadrature's panel edges
         Mq = model.M_e_at(self._nodes.ravel()).reshape(self._nodes.shape) - self.E.slope
+        self.Mq = Mq
         steps = np.concatenate([[0.0], np.cumsum(np.sum(Mq * self.wq, axis=1))])
         E = self.E
         panel = np.clip(np.searchsorted(E.x, x, side="right") - 1, 0, E.x.size - 2)
@@ -611,32 +680,85 @@ class _Cycle:
         self.Eq = self.Ex[:-1, None] + (0.5 * h)[:, None] * (Mq @ _GL6_S.T)
         self.Jx = model.J_e_at(x)
         self.E_min = min(float(self.Ex.min()), float(self.Eq.min()))
+        self.h = h
+        # the step model: on each grid step M_e is its degree-5 interpolant at the Gauss points
+        # (Legendre coefficients), ΔE that interpolant's running integral from the step's start
+        self._M_leg = Mq @ _GL6_TO_LEG.T
+        self._E_leg = (0.5 * h)[:, None] * (self._M_leg @ _LEG_INT.T)
+        self._E_leg[:, 0] += self.Ex[:-1]
+        # J_e's degree-7 interpolant through the step's ends and Gauss points, for the steps readied
+        self._J_leg = np.full((h.size, 8), np.nan)
 
     @functools.cached_property
-    def Jq(self) -> np.ndarray:
+    def Jq(self) -> FloatArray:
         """J_e at the Gauss points of every grid step (for time integrals), kg·m²."""
-        return self.model.J_e_at(self._nodes.ravel()).reshape(self._nodes.shape)
+        Jq: FloatArray = self.model.J_e_at(self._nodes.ravel()).reshape(self._nodes.shape)
+        self._set_J_leg(np.arange(self.h.size), Jq)
+        return Jq
+
+    def _set_J_leg(self, steps: IntArray, J_nodes: FloatArray) -> None:
+        values = np.column_stack([self.Jx[steps], J_nodes, self.Jx[steps + 1]])
+        self._J_leg[steps] = values @ _ENDS8_TO_LEG.T
+
+    def ready_steps(self, steps: IntArray) -> None:
+        """Ready the step model of J_e on the grid steps given: J_e at their Gauss points, in one call."""
+        todo = steps[np.isnan(self._J_leg[steps, 0])]
+        if todo.size:
+            J_nodes = self.model.J_e_at(self._nodes[todo].ravel()).reshape(todo.size, _GL6_X.size)
+            self._set_J_leg(todo, J_nodes)
+
+    def step_model(self, p: FloatArray, *, slope: bool = False) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+        """ΔE, M_e (balanced), J_e and (with ``slope``, else zeros) dJ_e/dφ at angles p in [a, a + L] from the
+        step model, without calling the model's functions: the polynomial pieces of the steps p falls in,
+        which must have been readied (:meth:`ready_steps`).
+
+        Inside a step of h ≈ φ_T/n_search the pieces differ from the functions by O(h⁶) (ΔE, M_e) and
+        O(h⁸) (J_e) relative: enough to place an extremum, whose value is then taken from the functions.
+        """
+        leg = np.polynomial.legendre
+        flat = np.asarray(p, dtype=float).ravel()
+        k = np.clip(np.searchsorted(self.x, flat, side="right") - 1, 0, self.h.size - 1)
+        t = 2.0 * (flat - self.x[k]) / self.h[k] - 1.0
+        V = leg.legvander(t, 7)
+        cJ = self._J_leg[k]
+        E = np.einsum("ij,ij->i", self._E_leg[k], V[:, :7])
+        M = np.einsum("ij,ij->i", self._M_leg[k], V[:, :6])
+        J = np.einsum("ij,ij->i", cJ, V)
+        if slope:
+            dJ = np.einsum("ij,ij->i", leg.legder(cJ, axis=1), V[:, :7]) * (2.0 / self.h[k])
+        else:
+            dJ = np.zeros_like(J)
+        shape = np.shape(p)
+        return E.reshape(shape), M.reshape(shape), J.reshape(shape), dJ.reshape(shape)
 
     # exact functions of φ
-    def g(self, alpha):
+    def g(self, alpha: float) -> PhiFunction:
         """φ ↦ ΔE(φ) − α J_e(φ)."""
         return lambda p: self.E(p) - alpha * self.model.J_e_at(p)
 
-    def ratio(self, T0, J_F):
+    def ratio(self, T0: float, J_F: float) -> PhiFunction:
         """φ ↦ (T0 + ΔE(φ)) / (J_F + J_e(φ)) = ω²/2."""
         return lambda p: (T0 + self.E(p)) / (J_F + self.model.J_e_at(p))
 
-    def support(self, alpha, sense):
+    def _model(self, f: Callable[[FloatArray, FloatArray], FloatArray]) -> StepModel:
+        """The step model of φ ↦ f(ΔE(φ), J_e(φ)) for :func:`_refine_max`."""
+        def evaluate(p: FloatArray) -> FloatArray:
+            E, _, J, _ = self.step_model(p)
+            return f(E, J)
+        return self.ready_steps, evaluate
+
+    def support(self, alpha: float, sense: int) -> tuple[float, float, float]:
         """max (sense=+1) or min (sense=−1) of ΔE − α J_e: (φ*, value, spread)."""
         fx = self.Ex - alpha * self.Jx
         refine = _refine_max if sense > 0 else _refine_min
-        return refine(self.g(alpha), self.x, fx, a=self.a, L=self.L)
+        return refine(self.g(alpha), self.x, fx, a=self.a, L=self.L, model=self._model(lambda E, J: E - alpha * J))
 
-    def omega_extreme(self, T0, J_F, sense):
+    def omega_extreme(self, T0: float, J_F: float, sense: int) -> tuple[float, float, float]:
         """(φ*, ω*, spread in ω²/2) of the max (sense=+1) or min (−1) of ω."""
         fx = (T0 + self.Ex) / (J_F + self.Jx)
         refine = _refine_max if sense > 0 else _refine_min
-        p, r, spread = refine(self.ratio(T0, J_F), self.x, fx, a=self.a, L=self.L)
+        p, r, spread = refine(self.ratio(T0, J_F), self.x, fx, a=self.a, L=self.L,
+                              model=self._model(lambda E, J: (T0 + E) / (J_F + J)))
         return p, math.sqrt(2.0 * max(r, 0.0)), spread
 
     def period_time(self, T0, J_F):
@@ -876,8 +998,7 @@ def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str, *, guess: floa
         hi = cyc.omega_extreme(T0, J_F, +1)
         lo = cyc.omega_extreme(T0, J_F, -1)
         (p_max, w_max, _), (p_min, w_min, _) = hi, lo
-        Jmax = J_F + float(cyc.model.J_e_at(p_max))
-        Jmin = J_F + float(cyc.model.J_e_at(p_min))
+        Jmax, Jmin = J_F + cyc.model.J_e_at(np.array([p_max, p_min]))
         resid = 0.5 * (w_max + w_min) - omega_m
         slope = 0.5 * (1.0 / (w_max * Jmax) + (1.0 / (w_min * Jmin) if w_min > 0 else math.inf))
         step = resid / slope
@@ -912,10 +1033,14 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, extremes=None, *, mean: 
         J_e, dJ_e = model.J_e_and_slope_at(p)
         return eps_from(*cyc.E.with_integrand(p), J_e, dJ_e)
 
+    def eps_model(p):
+        E, M, J_e, dJ_e = cyc.step_model(p, slope=True)
+        return eps_from(E, M, J_e, dJ_e)
+
     # on the grid ΔE and J_e are known already
     ex = eps_from(cyc.Ex, model.M_e_at(cyc.x) - cyc.E.slope, cyc.Jx, model.dJ_e_at(cyc.x))
-    p_e1, e1, _ = _refine_max(eps, cyc.x, ex, a=a, L=L)
-    p_e2, e2, _ = _refine_min(eps, cyc.x, ex, a=a, L=L)
+    p_e1, e1, _ = _refine_max(eps, cyc.x, ex, a=a, L=L, model=(cyc.ready_steps, eps_model))
+    p_e2, e2, _ = _refine_min(eps, cyc.x, ex, a=a, L=L, model=(cyc.ready_steps, eps_model))
     eps_max, p_eps = (e1, p_e1) if abs(e1) >= abs(e2) else (e2, p_e2)
 
     idx = cyc.out_index
@@ -1005,7 +1130,7 @@ def _flywheel_for_limits(cyc: _Cycle, w_hi: float, w_lo: float):
 
 
 def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: str = "textbook",
-                   positions: int = 360, n_search: int = 4096, closure_rtol: float = 1e-6) -> FlywheelResult:
+                   positions: int = 360, n_search: int = 1024, closure_rtol: float = 1e-6) -> FlywheelResult:
     r"""The flywheel inertia that keeps the coefficient of fluctuation at exactly [δ].
 
     Derivation (the support-line identity, domain.md §7). With J(φ) = J_F + J_e(φ) > 0 and
@@ -1038,7 +1163,10 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
         Permissible coefficient of fluctuation [δ] (0 < δ < 2).
     mean : {"textbook", "time"}
     positions, n_search, closure_rtol
-        As in :func:`periodic_motion` (``positions``: output of the motion with this flywheel).
+        As in :func:`periodic_motion` (``positions``: output of the motion with this flywheel). The grid
+        is coarser by default than :func:`periodic_motion`'s: it only brackets the extrema, which are
+        placed on the step model (degree-5 and degree-7 pieces per grid step) and valued by the model's
+        own functions, so J_F agrees with a 4096-step grid's to about 1e-15.
 
     Returns
     -------
