@@ -43,7 +43,7 @@ import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -67,6 +67,10 @@ IntArray = npt.NDArray[np.intp]
 PhiFunction = Callable[[FloatArray], FloatArray]
 #: a piecewise-polynomial model of a function for the extremum search: (ready the grid steps given, evaluate)
 StepModel = tuple[Callable[[IntArray], None], PhiFunction]
+#: (φ*, ω*, spread) of ω_max and of ω_min
+Extremes = tuple[tuple[float, float, float], tuple[float, float, float]]
+#: J_F, T0, φ(ω_max), φ(ω_min), b_max, b_min, spread
+Limits = tuple[float, float, float, float, float, float, float]
 _ZOOM = 32                            # sub-steps per bracket and round of the extremum search
 
 # Gauss–Kronrod 7/15 (QUADPACK qk15): Kronrod abscissae (positive half, 0 last) and weights,
@@ -118,7 +122,7 @@ _ENDS8_TO_LEG = np.linalg.inv(np.polynomial.legendre.legvander(np.concatenate([[
 # The input: a periodic reduced model
 # --------------------------------------------------------------------------------------------
 
-def _as_function(value, name: str):
+def _as_function(value: PhiFunction | float, name: str) -> PhiFunction:
     """A vectorised function of φ from a callable or a constant."""
     if callable(value):
         return value
@@ -139,7 +143,7 @@ class _PeriodicSamples:
     [φ_k, φ_{k+1}); the value at position m is not used) or ``"cubic"`` (periodic cubic spline).
     """
 
-    def __init__(self, values, *, phi_0: float, phi_T: float, kind: str, name: str):
+    def __init__(self, values: npt.ArrayLike, *, phi_0: float, phi_T: float, kind: str, name: str):
         v = np.asarray(values, dtype=float)
         if v.ndim != 1 or v.size < 3:
             raise InputError(f"{name}: give the values at positions 0…m as a 1-D sequence "
@@ -151,6 +155,8 @@ class _PeriodicSamples:
             raise InputError(f"{name}: interpolation {kind!r} is not one of 'linear', 'step', 'cubic'")
         self.m = v.size - 1
         self.h = phi_T / self.m
+        self.y: FloatArray
+        self.M2: FloatArray
         self.phi_0, self.phi_T, self.kind = phi_0, phi_T, kind
         if kind == "cubic":
             scale = max(float(np.max(np.abs(v))), 1e-300)
@@ -168,12 +174,12 @@ class _PeriodicSamples:
         else:
             self.y = v
 
-    def _locate(self, phi):
+    def _locate(self, phi: npt.ArrayLike) -> tuple[IntArray, FloatArray]:
         u = np.mod(np.asarray(phi, dtype=float) - self.phi_0, self.phi_T) / self.h
         k = np.minimum(np.floor(u).astype(np.intp), self.m - 1)
         return k, (u - k) * self.h
 
-    def __call__(self, phi):
+    def __call__(self, phi: npt.ArrayLike) -> FloatArray:
         k, s = self._locate(phi)
         y0, y1, h = self.y[k], self.y[k + 1], self.h
         if self.kind == "step":
@@ -184,7 +190,7 @@ class _PeriodicSamples:
         r = h - s
         return (M0 * r**3 + M1 * s**3) / (6 * h) + (y0 / h - M0 * h / 6) * r + (y1 / h - M1 * h / 6) * s
 
-    def derivative(self, phi):
+    def derivative(self, phi: npt.ArrayLike) -> FloatArray:
         k, s = self._locate(phi)
         y0, y1, h = self.y[k], self.y[k + 1], self.h
         if self.kind == "step":
@@ -195,8 +201,8 @@ class _PeriodicSamples:
         r = h - s
         return (-M0 * r**2 + M1 * s**2) / (2 * h) - (y0 / h - M0 * h / 6) + (y1 / h - M1 * h / 6)
 
-    def nodes(self):
-        return self.phi_0 + self.h * np.arange(self.m + 1)
+    def nodes(self) -> FloatArray:
+        return self.phi_0 + self.h * np.arange(self.m + 1, dtype=float)
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
@@ -240,7 +246,7 @@ class ReducedModel:
     dJ_e: Callable[[np.ndarray], np.ndarray] | None = None
     breaks: tuple[float, ...] = ()
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         for name in ("phi_T", "phi_0"):
             value = getattr(self, name)
             if not isinstance(value, (int, float)) or not math.isfinite(value):
@@ -270,7 +276,7 @@ class ReducedModel:
             self._call(self.dJ_e, "dJ_e", probe)
 
     @classmethod
-    def from_samples(cls, *, J_e, M_e, phi_T: float = TWO_PI, phi_0: float = 0.0,
+    def from_samples(cls, *, J_e: npt.ArrayLike, M_e: npt.ArrayLike, phi_T: float = TWO_PI, phi_0: float = 0.0,
                      interpolation: str = "linear", M_e_interpolation: str | None = None) -> ReducedModel:
         """A model from values at uniformly spaced positions 0…m (position m = position 0 + φ_T).
 
@@ -297,10 +303,12 @@ class ReducedModel:
         if interpolation not in ("linear", "cubic"):
             raise InputError(f"interpolation {interpolation!r}: give 'linear' or 'cubic'")
         kinds = {"J_e": interpolation, "M_e": M_e_interpolation or interpolation}
-        funcs, dJ, breaks = {}, None, []
+        funcs: dict[str, PhiFunction | float] = {}
+        dJ: PhiFunction | None = None
+        breaks: list[float] = []
         for name, data in (("J_e", J_e), ("M_e", M_e)):
             if np.ndim(data) == 0:
-                funcs[name] = data
+                funcs[name] = cast(float, data)      # checked by _as_function
                 continue
             s = _PeriodicSamples(data, phi_0=phi_0, phi_T=phi_T, kind=kinds[name], name=name)
             funcs[name] = s
@@ -315,7 +323,7 @@ class ReducedModel:
                    breaks=tuple(breaks))
 
     # -- evaluation, with checks -------------------------------------------------------------
-    def _call(self, f, name, phi):
+    def _call(self, f: PhiFunction, name: str, phi: npt.ArrayLike) -> FloatArray:
         phi = np.asarray(phi, dtype=float)
         try:
             out = np.asarray(f(phi), dtype=float)
@@ -334,19 +342,19 @@ class ReducedModel:
                              f"({math.degrees(bad):.6g}°); fix the function there")
         return out
 
-    def J_e_at(self, phi) -> np.ndarray:
+    def J_e_at(self, phi: npt.ArrayLike) -> FloatArray:
         """J_e(φ), kg·m²."""
-        return self._call(self.J_e, "J_e", phi)
+        return self._call(cast(PhiFunction, self.J_e), "J_e", phi)     # a function since __post_init__
 
-    def M_e_at(self, phi) -> np.ndarray:
+    def M_e_at(self, phi: npt.ArrayLike) -> FloatArray:
         """M_e(φ), N·m."""
-        return self._call(self.M_e, "M_e", phi)
+        return self._call(cast(PhiFunction, self.M_e), "M_e", phi)
 
-    def dJ_e_at(self, phi) -> np.ndarray:
+    def dJ_e_at(self, phi: npt.ArrayLike) -> FloatArray:
         """dJ_e/dφ, kg·m²/rad (given, or a central difference of J_e with step 1e-6·φ_T)."""
         return self.J_e_and_slope_at(phi)[1]
 
-    def J_e_and_slope_at(self, phi) -> tuple[np.ndarray, np.ndarray]:
+    def J_e_and_slope_at(self, phi: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
         """J_e and dJ_e/dφ together: without a given dJ_e, J_e at φ − h, φ, φ + h in one call."""
         phi = np.asarray(phi, dtype=float)
         if self.dJ_e is not None:
@@ -355,19 +363,19 @@ class ReducedModel:
         lo, mid, hi = self.J_e_at(np.stack([phi - h, phi, phi + h]))
         return mid, (hi - lo) / (2 * h)
 
-    def positions(self, m: int) -> np.ndarray:
+    def positions(self, m: int) -> FloatArray:
         """The angles of positions 0…m (m + 1 values, rad), uniformly spaced over the period."""
         m = _check_count(m, "positions", minimum=1)
         return self.phi_0 + self.phi_T * (np.arange(m + 1) / m)
 
 
-def _check_count(m, name, minimum):
+def _check_count(m: object, name: str, minimum: int) -> int:
     if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < minimum:
         raise InputError(f"{name}: give a whole number ≥ {minimum}, got {m!r}")
     return int(m)
 
 
-def _check_positive(value, name):
+def _check_positive(value: object, name: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name}: give a positive finite number, got {value!r}")
     # the toolkit's number policy (graphmethods.units.real): finite, magnitudes 1e-100 … 1e100
@@ -386,7 +394,8 @@ class _Primitive:
     ∫|f| (from the first, coarse pass).
     """
 
-    def __init__(self, f, a, b, breaks=(), *, n0=256, rtol=1e-12):
+    def __init__(self, f: PhiFunction, a: float, b: float, breaks: tuple[float, ...] = (), *, n0: int = 256,
+                 rtol: float = 1e-12):
         self.f, self.a, self.b = f, a, b
         L = b - a
         inner = [x for x in breaks if a < x < b]
@@ -429,14 +438,14 @@ class _Primitive:
         self.residual = float(self.cum[-1])
         self.slope = 0.0
 
-    def balance(self):
+    def balance(self) -> None:
         """Remove the mean of f: F(x) − residual·(x − a)/(b − a)."""
         self.slope = self.residual / (self.b - self.a)
 
-    def __call__(self, x):
+    def __call__(self, x: npt.ArrayLike) -> FloatArray:
         return self.with_integrand(x)[0]
 
-    def with_integrand(self, x):
+    def with_integrand(self, x: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
         """F(x) and f(x) (balanced) from one call of f: the 15 Gauss points of each x and x itself."""
         x = np.asarray(x, dtype=float)
         flat = x.ravel()
@@ -454,7 +463,7 @@ class _Primitive:
 # Extrema: fine grid, then a batched zoom search on the exact function
 # --------------------------------------------------------------------------------------------
 
-def _wrap(phi, a, L):
+def _wrap(phi: npt.ArrayLike, a: float, L: float) -> FloatArray:
     return a + np.mod(np.asarray(phi, dtype=float) - a, L)
 
 
@@ -570,7 +579,8 @@ def _refine_min(fun: PhiFunction, x: FloatArray, fx: FloatArray, *, a: float, L:
     return xs, -fs, spread
 
 
-def _brent_root(f, a, b, fa, fb, *, xtol=0.0, rtol=4e-16, maxiter=200):
+def _brent_root(f: Callable[[float], float], a: float, b: float, fa: float, fb: float, *, xtol: float = 0.0,
+                rtol: float = 4e-16, maxiter: int = 200) -> float:
     """Brent's root finder on a bracket [a, b] with f(a)·f(b) ≤ 0."""
     if fa == 0:
         return a
@@ -761,12 +771,12 @@ class _Cycle:
                               model=self._model(lambda E, J: (T0 + E) / (J_F + J)))
         return p, math.sqrt(2.0 * max(r, 0.0)), spread
 
-    def period_time(self, T0, J_F):
+    def period_time(self, T0: float, J_F: float) -> float:
         u = 2.0 * np.maximum(T0 + self.Eq, 0.0) / (J_F + self.Jq)
         with np.errstate(divide="ignore"):
             return float(np.sum(self.wq / np.sqrt(u)))
 
-    def check_inertia(self, J_F, *, delta=None):
+    def check_inertia(self, J_F: float, *, delta: float | None = None) -> None:
         J_min = float(self.Jx.min())
         if J_F + J_min > 1e-3 * (abs(J_F) + float(self.Jx.max())):
             return       # clear on the grid: between grid points J_e dips by O(step²) at most
@@ -789,7 +799,7 @@ class _Cycle:
 # Results
 # --------------------------------------------------------------------------------------------
 
-def _frozen(a):
+def _frozen(a: npt.ArrayLike) -> FloatArray:
     a = np.array(a, dtype=float)
     a.setflags(write=False)
     return a
@@ -948,13 +958,14 @@ class FlywheelResult(_FromPosition0):
 # Steady motion for a given flywheel
 # --------------------------------------------------------------------------------------------
 
-def _check_mean(mean):
+def _check_mean(mean: object) -> str:
     if mean not in ("textbook", "time"):
         raise InputError(f"mean {mean!r}: give 'textbook' ((ω_max + ω_min)/2) or 'time' (φ_T/t_T)")
     return mean
 
 
-def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str, *, guess: float | None = None):
+def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str, *,
+              guess: float | None = None) -> tuple[float, Extremes | None]:
     """Kinetic energy at position 0 that gives the prescribed mean speed, and (textbook mean) the
     exact extremes of ω found on the way, ``((φ_max, ω_max, spread), (φ_min, ω_min, spread))``.
 
@@ -965,12 +976,12 @@ def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str, *, guess: floa
     scale = 0.5 * (J_F + float(cyc.Jx.mean())) * omega_m**2
 
     if mean == "time":
-        def G(T0):
+        def G(T0: float) -> float:
             if T0 <= T_lo:
                 return -omega_m
             return cyc.L / cyc.period_time(T0, J_F) - omega_m
     else:
-        def G(T0):
+        def G(T0: float) -> float:
             u = np.maximum(T0 + cyc.Ex, 0.0) / (J_F + cyc.Jx)
             return 0.5 * (math.sqrt(2 * u.max()) + math.sqrt(2 * u.min())) - omega_m
 
@@ -1009,7 +1020,8 @@ def _solve_T0(cyc: _Cycle, J_F: float, omega_m: float, mean: str, *, guess: floa
     return T0, (hi, lo)
 
 
-def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, extremes=None, *, mean: str) -> MotionResult:
+def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, extremes: Extremes | None = None, *,
+                    mean: str) -> MotionResult:
     model, a, L = cyc.model, cyc.a, cyc.L
     hi, lo = extremes or (cyc.omega_extreme(T0, J_F, +1), cyc.omega_extreme(T0, J_F, -1))
     (p_max, w_max, s_max), (p_min, w_min, s_min) = hi, lo
@@ -1024,16 +1036,16 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, extremes=None, *, mean: 
     omega_m_time = L / t_T
     omega_m = omega_m_tb if mean == "textbook" else omega_m_time
 
-    def eps_from(E, M, J_e, dJ_e):
+    def eps_from(E: FloatArray, M: FloatArray, J_e: FloatArray, dJ_e: FloatArray) -> FloatArray:
         J = J_F + J_e
         w2 = 2.0 * np.maximum(T0 + E, 0.0) / J
         return (M - 0.5 * w2 * dJ_e) / J
 
-    def eps(p):
+    def eps(p: FloatArray) -> FloatArray:
         J_e, dJ_e = model.J_e_and_slope_at(p)
         return eps_from(*cyc.E.with_integrand(p), J_e, dJ_e)
 
-    def eps_model(p):
+    def eps_model(p: FloatArray) -> FloatArray:
         E, M, J_e, dJ_e = cyc.step_model(p, slope=True)
         return eps_from(E, M, J_e, dJ_e)
 
@@ -1119,7 +1131,7 @@ def periodic_motion(model: ReducedModel, *, J_F: float, omega_m: float, mean: st
 # The exact flywheel
 # --------------------------------------------------------------------------------------------
 
-def _flywheel_for_limits(cyc: _Cycle, w_hi: float, w_lo: float):
+def _flywheel_for_limits(cyc: _Cycle, w_hi: float, w_lo: float) -> Limits:
     """J_F and T0 for prescribed ω_max = w_hi and ω_min = w_lo (the support-line identity)."""
     a_max, a_min = 0.5 * w_hi**2, 0.5 * w_lo**2
     p_max, b_max, s1 = cyc.support(a_max, +1)
@@ -1192,7 +1204,7 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
     cyc = _Cycle(model, positions=positions, n_search=n_search, closure_rtol=closure_rtol)
     half = 0.5 * delta * omega_m
 
-    def solve(c):
+    def solve(c: float) -> Limits:
         out = _flywheel_for_limits(cyc, c + half, c - half)
         cyc.check_inertia(out[0], delta=delta)
         return out
@@ -1200,7 +1212,7 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
     c = omega_m
     sol = solve(c)
     if mean == "time":
-        def G(c):
+        def G(c: float) -> float:
             J_F, T0 = solve(c)[:2]
             return cyc.L / cyc.period_time(T0, J_F) - omega_m
         c0, g0 = omega_m, G(omega_m)
