@@ -717,7 +717,8 @@ class _Cycle:
             J_nodes = self.model.J_e_at(self._nodes[todo].ravel()).reshape(todo.size, _GL6_X.size)
             self._set_J_leg(todo, J_nodes)
 
-    def step_model(self, p: FloatArray, *, slope: bool = False) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    def step_model(self, p: FloatArray, *,
+                   slope: bool = False) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
         """ΔE, M_e (balanced), J_e and (with ``slope``, else zeros) dJ_e/dφ at angles p in [a, a + L] from the
         step model, without calling the model's functions: the polynomial pieces of the steps p falls in,
         which must have been readied (:meth:`ready_steps`).
@@ -1141,6 +1142,23 @@ def _flywheel_for_limits(cyc: _Cycle, w_hi: float, w_lo: float) -> Limits:
     return J_F, T0, p_max, p_min, b_max, b_min, s1 + s2
 
 
+def _time_mean_centre(cyc: _Cycle, solve: Callable[[float], Limits], omega_m: float) -> float:
+    """The centre c = (ω_max + ω_min)/2 of the speed limits c ± δω_m/2 whose flywheel gives the time-average
+    mean φ_T/t_T = ω_m (secant iteration: the map c ↦ φ_T/t_T is nearly the identity)."""
+    def G(c: float) -> float:
+        J_F, T0 = solve(c)[:2]
+        return cyc.L / cyc.period_time(T0, J_F) - omega_m
+    c0, g0 = omega_m, G(omega_m)
+    c1 = omega_m - g0
+    g1 = G(c1)
+    for _ in range(50):
+        if g1 == g0 or abs(g1) <= 1e-15 * omega_m:
+            return c1
+        c0, c1, g0 = c1, c1 - g1 * (c1 - c0) / (g1 - g0), g1
+        g1 = G(c1)
+    raise MotionError("the time-average mean speed could not be matched")  # pragma: no cover - see above
+
+
 def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: str = "textbook",
                    positions: int = 360, n_search: int = 1024, closure_rtol: float = 1e-6) -> FlywheelResult:
     r"""The flywheel inertia that keeps the coefficient of fluctuation at exactly [δ].
@@ -1175,10 +1193,9 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
         Permissible coefficient of fluctuation [δ] (0 < δ < 2).
     mean : {"textbook", "time"}
     positions, n_search, closure_rtol
-        As in :func:`periodic_motion` (``positions``: output of the motion with this flywheel). The grid
-        is coarser by default than :func:`periodic_motion`'s: it only brackets the extrema, which are
-        placed on the step model (degree-5 and degree-7 pieces per grid step) and valued by the model's
-        own functions, so J_F agrees with a 4096-step grid's to about 1e-15.
+        As in :func:`periodic_motion` (``positions``: output of the motion with this flywheel). The grid is
+        coarser by default: it only brackets the extrema (placed on the step model, valued by the model's
+        functions), so J_F agrees with a 4096-step grid's to about 1e-15.
 
     Returns
     -------
@@ -1209,29 +1226,12 @@ def exact_flywheel(model: ReducedModel, *, omega_m: float, delta: float, mean: s
         cyc.check_inertia(out[0], delta=delta)
         return out
 
-    c = omega_m
+    c = _time_mean_centre(cyc, solve, omega_m) if mean == "time" else omega_m
     sol = solve(c)
-    if mean == "time":
-        def G(c: float) -> float:
-            J_F, T0 = solve(c)[:2]
-            return cyc.L / cyc.period_time(T0, J_F) - omega_m
-        c0, g0 = omega_m, G(omega_m)
-        c1 = omega_m - g0
-        g1 = G(c1)
-        for _ in range(50):
-            if g1 == g0 or abs(g1) <= 1e-15 * omega_m:
-                break
-            c0, c1, g0 = c1, c1 - g1 * (c1 - c0) / (g1 - g0), g1
-            g1 = G(c1)
-        else:  # pragma: no cover - the map is nearly the identity
-            raise MotionError("the time-average mean speed could not be matched")
-        c = c1
-        sol = solve(c)
     J_F, T0, p_max, p_min, b_max, b_min, spread = sol
     rel = (2 * (cyc.E.error + cyc.step_error) + spread) / abs(b_max - b_min) if b_max != b_min else math.inf
-    # the motion with this J_F, solved from J_F alone (T0 from the mean speed, then the extremes of
-    # ω) on the same ΔE quadrature: its δ is an independent check of the support-line construction
-    cyc.check_inertia(J_F)
+    # the motion with this J_F, solved from J_F alone on the same ΔE quadrature (T0 from the mean speed,
+    cyc.check_inertia(J_F)    # then the extremes of ω): its δ is an independent check of the support lines
     return FlywheelResult(
         J_F=float(J_F), delta=delta, omega_m=omega_m, mean=mean, omega_max=c + half,
         omega_min=c - half, phi_omega_max=p_max, phi_omega_min=p_min, b_max=float(b_max),

@@ -319,6 +319,36 @@ def _moment_function(model: ReducedModel, drive: Drive | None, drive_off_at: flo
     return M
 
 
+def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: Brake | None, phi_0: float | None,
+               omega_0: float, t_0: float, t_end: float | None, turns: float | None, until_steady: bool, tol: float,
+               rtol: float) -> float:
+    """The arguments of :func:`run` checked (InputError naming the bad one); returns the starting angle φ0."""
+    if not isinstance(model, ReducedModel):
+        raise InputError("model: give a ReducedModel (J_e(φ) and M_e(φ))")
+    if not math.isfinite(float(J_F)):
+        raise InputError(f"J_F = {J_F!r} kg·m² is not finite")
+    phi_0 = model.phi_0 if phi_0 is None else float(phi_0)
+    for name, v in (("phi_0", phi_0), ("omega_0", omega_0), ("t_0", t_0)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v)):
+            raise InputError(f"{name} = {v!r} is not a finite number")
+    if omega_0 < 0:
+        raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
+    if t_end is None and turns is None and not until_steady:
+        raise InputError("say when to stop: t_end (s), turns, or until_steady")
+    if t_end is not None and not (math.isfinite(t_end) and t_end > t_0):
+        raise InputError(f"t_end = {t_end!r} s must come after t_0 = {t_0!r} s")
+    if turns is not None:
+        _check_positive(turns, "turns")
+    _check_positive(tol, "tol")
+    _check_positive(rtol, "rtol")
+    if drive is not None and not callable(drive):
+        raise InputError("drive: give a callable ω ↦ M (a motor, or ConstantDrive(M_d))")
+    if brake is not None and not isinstance(brake, Brake):
+        raise InputError("brake: give a Brake(M_b=..., c=..., t_on=...)")
+
+    return phi_0
+
+
 def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, drive_off_at: float | None = None,
         brake: Brake | None = None, extra: Extra | None = None, phi_0: float | None = None, omega_0: float = 0.0,
         t_0: float = 0.0, t_end: float | None = None, turns: float | None = None, until_steady: bool = False,
@@ -365,6 +395,13 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
         The machine cannot start (no positive moment at rest), or no steady state within
         ``max_periods`` periods, or the step count runs out.
 
+    Notes
+    -----
+    One function of more than 80 lines, on purpose: the Dormand–Prince loop's step, its landing on the
+    declared breaks and on switch times, the period boundaries and the steady-state test share their state
+    (step size, the clamp of φ at a break, the next break and boundary, the accepted steps) at every step;
+    split, each part would pass most of it both ways. The argument checks are :func:`_check_run`.
+
     Examples
     --------
     A DC motor M = M_0(1 − ω/ω_0) on a constant inertia from rest: ω → ω_0 with τ = J ω_0/M_0.
@@ -374,30 +411,9 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
     >>> bool(abs(r.omega[-1] - 50 * (1 - math.exp(-1.0))) < 1e-8)
     True
     """
-    if not isinstance(model, ReducedModel):
-        raise InputError("model: give a ReducedModel (J_e(φ) and M_e(φ))")
+    phi_0 = _check_run(model, J_F=J_F, drive=drive, brake=brake, phi_0=phi_0, omega_0=omega_0, t_0=t_0,
+                       t_end=t_end, turns=turns, until_steady=until_steady, tol=tol, rtol=rtol)
     J_F = float(J_F)
-    if not math.isfinite(J_F):
-        raise InputError(f"J_F = {J_F!r} kg·m² is not finite")
-    phi_0 = model.phi_0 if phi_0 is None else float(phi_0)
-    for name, v in (("phi_0", phi_0), ("omega_0", omega_0), ("t_0", t_0)):
-        if not (isinstance(v, (int, float)) and math.isfinite(v)):
-            raise InputError(f"{name} = {v!r} is not a finite number")
-    if omega_0 < 0:
-        raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
-    if t_end is None and turns is None and not until_steady:
-        raise InputError("say when to stop: t_end (s), turns, or until_steady")
-    if t_end is not None and not (math.isfinite(t_end) and t_end > t_0):
-        raise InputError(f"t_end = {t_end!r} s must come after t_0 = {t_0!r} s")
-    if turns is not None:
-        _check_positive(turns, "turns")
-    _check_positive(tol, "tol")
-    _check_positive(rtol, "rtol")
-    if drive is not None and not callable(drive):
-        raise InputError("drive: give a callable ω ↦ M (a motor, or ConstantDrive(M_d))")
-    if brake is not None and not isinstance(brake, Brake):
-        raise InputError("brake: give a Brake(M_b=..., c=..., t_on=...)")
-
     M = _moment_function(model, drive, drive_off_at, brake, extra)
     J_e = cast(PhiFunction, model.J_e)       # the raw functions (checked once by ReducedModel); each step's
     if model.dJ_e is not None:       # result is checked for finiteness instead
@@ -583,7 +599,8 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
     scale = max(float(np.max(T)), float(np.max(np.abs(W))), 1e-300)
     residual = float(np.max(np.abs(T - T[0] - W)) / scale)
     res = Run(t=_frozen(t_arr), phi=_frozen(phi), omega=_frozen(omega), epsilon=_frozen(np.array(eps_list)),
-              work=_frozen(W), T=_frozen(T), J=_frozen(J), energy_residual=residual, error_estimate=float(err_sum), rtol=rtol,
+              work=_frozen(W), T=_frozen(T), J=_frozen(J), energy_residual=residual, error_estimate=float(err_sum),
+              rtol=rtol,
               ended_by=ended_by, steady=None, phi_T=L, _K=Kall, _Y=Y, _rhs=rhs)
     if ended_by == "steady" and steady_k is not None:
         st = _steady_state(res, boundary, steady_k, tol, remaining)
@@ -658,6 +675,38 @@ def _steady_check(boundary: Sequence[tuple[float, float, float]], tol: float) ->
     return None, remaining
 
 
+def _golden_extreme(res: Run, ts: FloatArray, ws: FloatArray, phis: FloatArray, j: int,
+                    sense: int) -> tuple[float, float]:
+    """(ω, φ) of the maximum (sense +1) or minimum (−1) of ω(t) near the sample j of the last period (times ts,
+    speeds ws, angles phis): a golden-section search on the fifth-order partial steps, never worse than the
+    sample."""
+    # golden section on ω(t) (fifth-order partial steps) around the best sample
+    step = float(ts[1] - ts[0])             # at the ends the bracket reaches into the neighbour periods
+    lo = float(ts[j - 1]) if j > 0 else max(float(ts[0]) - step, float(res.t[0]))
+    hi = float(ts[j + 1]) if j < ts.size - 1 else min(float(ts[-1]) + step, float(res.t[-1]))
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+
+    def f(tt: float) -> float:
+        return sense * float(res.at_time([tt])["omega"][0])
+
+    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
+    fc, fd = f(c), f(d)
+    for _ in range(40):
+        if fc >= fd:
+            hi, d, fd = d, c, fc
+            c = hi - g * (hi - lo)
+            fc = f(c)
+        else:
+            lo, c, fc = c, d, fd
+            d = lo + g * (hi - lo)
+            fd = f(d)
+    tt = c if fc >= fd else d
+    at = res.at_time([tt])
+    if sense * (at["omega"][0] - ws[j]) >= 0:
+        return float(at["omega"][0]), float(at["phi"][0])
+    return float(ws[j]), float(phis[j])
+
+
 def _steady_state(res: Run, boundary: Sequence[tuple[float, float, float]], k: int, tol: float,
                   remaining: float) -> SteadyState:
     tA, wA, QA = boundary[k - 1]
@@ -677,35 +726,8 @@ def _steady_state(res: Run, boundary: Sequence[tuple[float, float, float]], k: i
     phis, ws = ys[:, 0], ys[:, 1]
     j_max, j_min = int(np.argmax(ws)), int(np.argmin(ws))
 
-    def refine(j: int, sense: int) -> tuple[float, float]:
-        # golden section on ω(t) (fifth-order partial steps) around the best sample
-        step = float(ts[1] - ts[0])             # at the ends the bracket reaches into the neighbour periods
-        lo = float(ts[j - 1]) if j > 0 else max(float(ts[0]) - step, float(res.t[0]))
-        hi = float(ts[j + 1]) if j < ts.size - 1 else min(float(ts[-1]) + step, float(res.t[-1]))
-        g = (math.sqrt(5.0) - 1.0) / 2.0
-
-        def f(tt: float) -> float:
-            return sense * float(res.at_time([tt])["omega"][0])
-
-        c, d = hi - g * (hi - lo), lo + g * (hi - lo)
-        fc, fd = f(c), f(d)
-        for _ in range(40):
-            if fc >= fd:
-                hi, d, fd = d, c, fc
-                c = hi - g * (hi - lo)
-                fc = f(c)
-            else:
-                lo, c, fc = c, d, fd
-                d = lo + g * (hi - lo)
-                fd = f(d)
-        tt = c if fc >= fd else d
-        at = res.at_time([tt])
-        if sense * (at["omega"][0] - ws[j]) >= 0:
-            return float(at["omega"][0]), float(at["phi"][0])
-        return float(ws[j]), float(phis[j])
-
-    w_max, p_max = refine(j_max, +1)
-    w_min, p_min = refine(j_min, -1)
+    w_max, p_max = _golden_extreme(res, ts, ws, phis, j_max, +1)
+    w_min, p_min = _golden_extreme(res, ts, ws, phis, j_min, -1)
     t_T = tB - tA
     om_tb = 0.5 * (w_max + w_min)
     eps = res.at_time(ts[::4])["epsilon"]
