@@ -34,6 +34,7 @@ from graphmethods.dynamics.reduction import (
     load_switch_angles,
     load_work,
     reduced_inertia,
+    reduced_inertia_slope,
     resisting_moment,
 )
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
@@ -153,6 +154,10 @@ class Study:
         pos = self.mechanism.positions(phi_from_start=x.ravel())
         return reduced_inertia(self.mechanism.velocity_plans(pos), self.case.inertias).J_e.reshape(x.shape)
 
+    def _dJ_e_exact(self, phi):
+        x = np.asarray(phi, dtype=float)
+        return reduced_inertia_slope(self.mechanism, x, self.case.inertias).reshape(x.shape)
+
     def _M_r_exact(self, phi):
         x = np.asarray(phi, dtype=float)
         pos = self.mechanism.positions(phi_from_start=x.ravel())
@@ -242,7 +247,8 @@ class Study:
     def model(self) -> ReducedModel:
         """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""
         M_d = self.M_d
-        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), breaks=self.switch_angles)
+        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), dJ_e=self._dJ_e_exact,
+                            breaks=self.switch_angles)
 
     # ----------------------------------------------------------------- the graphical methods at m positions
     @_logged
