@@ -247,7 +247,9 @@ class Study:
     def model(self) -> ReducedModel:
         """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""
         M_d = self.M_d
-        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), dJ_e=self._dJ_e_exact,
+        # dJ_e/dφ from the core's accelerations (a mechanism without the core: a difference of J_e)
+        dJ_e = self._dJ_e_exact if hasattr(self.mechanism, "motion") else None
+        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), dJ_e=dJ_e,
                             breaks=self.switch_angles)
 
     # ----------------------------------------------------------------- the graphical methods at m positions
