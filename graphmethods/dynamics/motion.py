@@ -1054,7 +1054,13 @@ def _motion_from_T0(cyc: _Cycle, J_F: float, T0: float, extremes: Extremes | Non
     ex = eps_from(cyc.Ex, model.M_e_at(cyc.x) - cyc.E.slope, cyc.Jx, model.dJ_e_at(cyc.x))
     p_e1, e1, _ = _refine_max(eps, cyc.x, ex, a=a, L=L, model=(cyc.ready_steps, eps_model))
     p_e2, e2, _ = _refine_min(eps, cyc.x, ex, a=a, L=L, model=(cyc.ready_steps, eps_model))
-    eps_max, p_eps = (e1, p_e1) if abs(e1) >= abs(e2) else (e2, p_e2)
+    # the larger magnitude; a tie (a symmetric machine: |ε_max| = |ε_min| within rounding) goes to the one
+    # met first after position 0, not to the last bit of either
+    if abs(abs(e1) - abs(e2)) <= 1e-9 * max(abs(e1), abs(e2)):
+        first_max = np.mod(p_e1 - a, L) <= np.mod(p_e2 - a, L)
+        eps_max, p_eps = (e1, p_e1) if first_max else (e2, p_e2)
+    else:
+        eps_max, p_eps = (e1, p_e1) if abs(e1) > abs(e2) else (e2, p_e2)
 
     idx = cyc.out_index
     phi = cyc.out
