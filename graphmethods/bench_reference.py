@@ -16,7 +16,7 @@ It needs scipy, which the toolkit itself does not: ``pip install 'graphmethods[b
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -48,39 +48,24 @@ def _slider_crank(case: Mapping[str, Any]):
     return x_B, analogues, J_e
 
 
-def press_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
-    """J_F (kg·m²) of a slider-crank press file (the format of shared/cases/slider_crank_press.json).
-
-    Position 0 is the far dead centre; the force F0 opposes the slider on the working stroke
-    (toward O) between ``force_from`` and ``force_to`` of the stroke; M_d balances it over a turn.
-    """
+def _support_line_flywheel(J_e: Callable[[np.ndarray], np.ndarray],
+                           pieces: Sequence[tuple[float, float, Callable[[float], float]]], *, omega_m: float,
+                           delta: float, atol: float, rtol: float, grid: int) -> float:
+    """J_F = (b_max − b_min)/(δ ω_m²) from J_e(φ) and M_e given on the pieces (a, b, M_e) of one period, in
+    order from position 0: ΔE by DOP853 on each piece (its dense output), the intercepts b = max/min of
+    ΔE − a·J_e on a grid of each piece polished by ``minimize_scalar`` (domain.md §7)."""
     from scipy.integrate import solve_ivp
-    from scipy.optimize import brentq, minimize_scalar
+    from scipy.optimize import minimize_scalar
 
-    r, l, e = case["r"], case["l"], case["e"]
-    F0, f_from, f_to = case["F0"], case["force_from"], case["force_to"]
-    omega_m = math.pi * case["n_rpm"] / 30.0
-    delta = case["delta"]
-    x_B, analogues, J_e = _slider_crank(case)
-    phi0 = math.asin(e / (l + r))                    # far dead centre
-    phi1 = math.pi + math.asin(e / (l - r))          # near dead centre
-    x0 = float(x_B(phi0))
-    H = x0 - float(x_B(phi1))
-    on = brentq(lambda p: x_B(p) - (x0 - f_from * H), phi0, phi1, xtol=1e-15, rtol=1e-15)
-    off = brentq(lambda p: x_B(p) - (x0 - f_to * H), phi0, phi1, xtol=1e-15, rtol=1e-15)
-    M_d = F0 * H * (f_to - f_from) / (2 * math.pi)
-
-    pieces = [(phi0, on, False), (on, off, True), (off, phi0 + 2 * math.pi, False)]
     solutions, E_start = [], 0.0
-    for a, b, loaded in pieces:
-        def rhs(p, y, loaded=loaded):
-            return [M_d + (F0 * analogues(p)[0] if loaded else 0.0)]
-        sol = solve_ivp(rhs, (a, b), [E_start], method="DOP853", rtol=rtol, atol=1e-12 * F0 * H,
-                        dense_output=True)
+    for a, b, M_e in pieces:
+        def rhs(p: float, y: np.ndarray, M_e: Callable[[float], float] = M_e) -> list[float]:
+            return [M_e(p)]
+        sol = solve_ivp(rhs, (a, b), [E_start], method="DOP853", rtol=rtol, atol=atol, dense_output=True)
         solutions.append((a, b, sol.sol))
         E_start = float(sol.y[0, -1])
 
-    def E(p):
+    def E(p: np.ndarray) -> np.ndarray:
         p = np.atleast_1d(p)
         out = np.empty_like(p)
         for a, b, f in solutions:
@@ -89,8 +74,9 @@ def press_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 
                 out[inside] = f(p[inside])[0]
         return out
 
-    def support(alpha, sense):
-        g = lambda p: sense * (E(p) - alpha * J_e(p))          # noqa: E731
+    def support(alpha: float, sense: int) -> float:
+        def g(p: np.ndarray) -> np.ndarray:
+            return sense * (E(p) - alpha * J_e(p))
         best = -math.inf
         for a, b, _ in solutions:                             # the switch angles are candidates too
             x = np.linspace(a, b, max(8, int(grid * (b - a) / (2 * math.pi))))
@@ -107,3 +93,212 @@ def press_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 
     a_max = 0.5 * (omega_m * (1 + delta / 2)) ** 2
     a_min = 0.5 * (omega_m * (1 - delta / 2)) ** 2
     return (support(a_max, +1) - support(a_min, -1)) / (delta * omega_m**2)
+
+
+def press_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of a slider-crank press file (the format of shared/cases/slider_crank_press.json).
+
+    Position 0 is the far dead centre; the force F0 opposes the slider on the working stroke
+    (toward O) between ``force_from`` and ``force_to`` of the stroke; M_d balances it over a turn.
+    """
+    from scipy.optimize import brentq
+
+    r, l, e = case["r"], case["l"], case["e"]
+    F0, f_from, f_to = case["F0"], case["force_from"], case["force_to"]
+    x_B, analogues, J_e = _slider_crank(case)
+    phi0 = math.asin(e / (l + r))                    # far dead centre
+    phi1 = math.pi + math.asin(e / (l - r))          # near dead centre
+    x0 = float(x_B(phi0))
+    H = x0 - float(x_B(phi1))
+    on = brentq(lambda p: x_B(p) - (x0 - f_from * H), phi0, phi1, xtol=1e-15, rtol=1e-15)
+    off = brentq(lambda p: x_B(p) - (x0 - f_to * H), phi0, phi1, xtol=1e-15, rtol=1e-15)
+    M_d = F0 * H * (f_to - f_from) / (2 * math.pi)
+
+    def free(p: float) -> float:
+        return M_d
+
+    def loaded(p: float) -> float:
+        return M_d + F0 * float(analogues(p)[0])
+
+    pieces = [(phi0, on, free), (on, off, loaded), (off, phi0 + 2 * math.pi, free)]
+    return _support_line_flywheel(J_e, pieces, omega_m=math.pi * case["n_rpm"] / 30.0, delta=case["delta"],
+                                  atol=1e-12 * F0 * H, rtol=rtol, grid=grid)
+
+
+def _four_bar(case: Mapping[str, Any]) -> tuple[Callable[[Any], tuple[Any, ...]], float]:
+    """The crank-rocker four-bar in closed form (real arithmetic on x, y, so that a complex step gives its
+    derivatives exactly): φ ↦ (A, B, S2, S3) as (x, y) pairs, and the branch sign that puts B above O1O2."""
+    l1, l2, l3, l4 = case["l1"], case["l2"], case["l3"], case["l4"]
+    g = math.radians(case.get("ground_angle_deg", 0.0))
+    O2x, O2y = l1 * math.cos(g), l1 * math.sin(g)
+    k2, k3 = case["l_AS2"] / l3, case["l_O2S3"] / l4
+
+    def points(phi: Any, branch: float) -> tuple[Any, ...]:
+        Ax, Ay = l2 * np.cos(phi), l2 * np.sin(phi)
+        dx, dy = O2x - Ax, O2y - Ay
+        D2 = dx * dx + dy * dy
+        D = np.sqrt(D2)
+        ca = (l3 * l3 + D2 - l4 * l4) / (2 * l3 * D)
+        sa = branch * np.sqrt(1 - ca * ca)
+        ux, uy = dx / D, dy / D
+        Bx, By = Ax + l3 * (ux * ca - uy * sa), Ay + l3 * (uy * ca + ux * sa)
+        return (Ax, Ay), (Bx, By), (Ax + k2 * (Bx - Ax), Ay + k2 * (By - Ay)), \
+            (O2x + k3 * (Bx - O2x), O2y + k3 * (By - O2y))
+
+    # B above the ground line where the crank is along it, past O2's side
+    (_, (Bx, By), _, _) = points(g, 1.0)
+    branch = 1.0 if (-math.sin(g) * Bx + math.cos(g) * By) > 0 else -1.0
+    return (lambda phi: points(phi, branch)), branch
+
+
+def _roots(f: Callable[[float], float]) -> list[float]:
+    """The roots of f over one turn [0, 2π): sign changes on a 1/2° grid, polished by brentq."""
+    from scipy.optimize import brentq
+
+    xs = np.linspace(0.0, 2 * math.pi, 721)
+    fs = np.array([f(x) for x in xs])
+    return [float(brentq(f, xs[i], xs[i + 1], xtol=1e-15, rtol=1e-15))
+            for i in np.flatnonzero(np.sign(fs[:-1]) != np.sign(fs[1:]))]
+
+
+def _moment_on_rocker(case: Mapping[str, Any], *, extremes: tuple[float, float], rocker_angle: Callable[[float], float],
+                      omega_rocker: Callable[[float], float], J_e: Callable[[np.ndarray], np.ndarray], rtol: float,
+                      grid: int) -> float:
+    """J_F of a crank turning counterclockwise and a rocker that swings between the crank angles ``extremes``:
+    position 0 starts the slow (working) swing, the larger crank angle; M3 resists the rocker's rotation on
+    it between ``moment_from`` and ``moment_to`` of the swing; M_d balances it over a turn."""
+    from scipy.optimize import brentq
+
+    p1, p2 = extremes
+    swing = (p2 - p1) % (2 * math.pi)
+    phi0, work = (p1, swing) if swing > math.pi else (p2, 2 * math.pi - swing)
+    psi0 = rocker_angle(phi0)
+    psi_max = abs(rocker_angle(phi0 + work) - psi0)
+
+    def psi(p: float) -> float:
+        return abs(rocker_angle(p) - psi0)
+
+    M3, f_from, f_to = case["M3"], case["moment_from"], case["moment_to"]
+    on = phi0 if f_from == 0 else brentq(lambda p: psi(p) - f_from * psi_max, phi0, phi0 + work, xtol=1e-15)
+    off = phi0 + work if f_to == 1 else brentq(lambda p: psi(p) - f_to * psi_max, phi0, phi0 + work, xtol=1e-15)
+    M_d = M3 * psi_max * (f_to - f_from) / (2 * math.pi)
+
+    def free(p: float) -> float:
+        return M_d
+
+    def loaded(p: float) -> float:
+        return M_d - M3 * abs(omega_rocker(p))
+
+    pieces = [(a, b, f) for a, b, f in ((phi0, on, free), (on, off, loaded), (off, phi0 + 2 * math.pi, free))
+              if b > a]
+    return _support_line_flywheel(J_e, pieces, omega_m=math.pi * case["n_rpm"] / 30.0, delta=case["delta"],
+                                  atol=1e-3 * rtol * M3 * psi_max, rtol=rtol, grid=grid)
+
+
+#: the complex step of the velocity analogues (exact derivatives of a closed form written in real arithmetic)
+_H = 1e-30
+
+
+def four_bar_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of a crank-rocker four-bar file (``four_bar_rocker.json``), the load on the rocker's slow
+    swing (:func:`_moment_on_rocker`); velocity analogues by complex steps of the closed form."""
+    l1, l3, l4 = case["l1"], case["l3"], case["l4"]
+    g = math.radians(case.get("ground_angle_deg", 0.0))
+    points, _ = _four_bar(case)
+    O2 = (l1 * math.cos(g), l1 * math.sin(g))
+
+    def rocker_angle(phi: float) -> float:
+        (_, (Bx, By), _, _) = points(phi)
+        return math.atan2(By - O2[1], Bx - O2[0])
+
+    def analogues(phi: Any) -> tuple[Any, ...]:
+        (Ax, Ay), (Bx, By), (S2x, S2y), (S3x, S3y) = points(np.asarray(phi) + 1j * _H)
+        vS2x, vS2y, vS3x, vS3y = (c.imag / _H for c in (S2x, S2y, S3x, S3y))
+        ex, ey = (Bx - Ax).real, (By - Ay).real
+        w3 = (ex * (By - Ay).imag - ey * (Bx - Ax).imag) / _H / (l3 * l3)
+        fx, fy = Bx.real - O2[0], By.real - O2[1]
+        w4 = (fx * By.imag - fy * Bx.imag) / _H / (l4 * l4)
+        return vS2x, vS2y, vS3x, vS3y, w3, w4
+
+    def J_e(phi: np.ndarray) -> np.ndarray:
+        vS2x, vS2y, vS3x, vS3y, w3, w4 = analogues(np.atleast_1d(phi))
+        J: np.ndarray = (case["J1"] + case["m2"] * (vS2x**2 + vS2y**2) + case["J_S2"] * w3**2
+                         + case["m3"] * (vS3x**2 + vS3y**2) + case["J_S3"] * w4**2)
+        return J
+
+    def in_line(p: float) -> float:                          # crank and coupler in line: A, B on a ray from O1
+        (Ax, Ay), (Bx, By), _, _ = points(p)
+        return float(Ax * By - Ay * Bx)
+
+    def stretched(p: float) -> bool:
+        (Ax, Ay), (Bx, By), _, _ = points(p)
+        return bool(Ax * Bx + Ay * By > 0)
+
+    roots = _roots(in_line)
+    extremes = (next(p for p in roots if stretched(p)), next(p for p in roots if not stretched(p)))
+    return _moment_on_rocker(case, extremes=extremes, rocker_angle=rocker_angle,
+                             omega_rocker=lambda p: float(analogues(p)[5]), J_e=J_e, rtol=rtol, grid=grid)
+
+
+def slotted_lever_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of a crank and oscillating slotted lever file (``slotted_lever.json``): the block at the
+    crank pin A slides along the lever O3B; the load M3 on the lever's slow swing (:func:`_moment_on_rocker`).
+    The lever's angle is that of O3A; its rate in closed form, ω3/ω1 = r (r − d·cos(φ − θ_O3)) / |O3A|²
+    (d = O1O3), derived apart from the toolkit's vector loop."""
+    r, d = case["r"], case["l_O1O3"]
+    t3 = math.radians(case["theta_O3_deg"])
+    O3 = (d * math.cos(t3), d * math.sin(t3))
+
+    def rocker_angle(phi: float) -> float:
+        return math.atan2(r * math.sin(phi) - O3[1], r * math.cos(phi) - O3[0])
+
+    def w3(phi: Any) -> Any:
+        q2 = r * r + d * d - 2 * r * d * np.cos(phi - t3)    # |O3A|²
+        return r * (r - d * np.cos(phi - t3)) / q2
+
+    def J_e(phi: np.ndarray) -> np.ndarray:
+        w = w3(np.atleast_1d(phi))
+        J: np.ndarray = (case["J1"] + case["m2"] * r * r
+                         + (case["J_S3"] + case["m3"] * case["l_O3S3"] ** 2) * w * w)
+        return J
+
+    def tangent(p: float) -> float:                           # the lever touches the crank circle: O1A ⟂ O3A
+        return float(r * r - r * (O3[0] * math.cos(p) + O3[1] * math.sin(p)))
+
+    p1, p2 = _roots(tangent)
+    return _moment_on_rocker(case, extremes=(p1, p2), rocker_angle=rocker_angle, omega_rocker=lambda p: float(w3(p)),
+                             J_e=J_e, rtol=rtol, grid=grid)
+
+
+def scotch_yoke_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the sine mechanism file (``scotch_yoke_pump.json``): the yoke at x_C = r cos φ carries
+    the force F against it on one stroke (``from``…``to`` of it), the block at A turns with the crank pin:
+    J_e = J1 + m2 r² + m3 r² sin²φ. J_e repeats every half turn, so which stroke is loaded does not change J_F.
+    """
+    from scipy.optimize import brentq
+
+    r = case["crank"]["r"]
+    masses, load = case["masses"], case["load"]
+    J1, m2, m3 = masses["1"]["J"], masses["2"]["m"], masses["3"]["m"]
+    F, f_from, f_to = load["force"], load["from"], load["to"]
+
+    def J_e(phi: np.ndarray) -> np.ndarray:
+        s = np.sin(np.atleast_1d(phi))
+        J: np.ndarray = J1 + m2 * r * r + m3 * r * r * s * s
+        return J
+
+    def stroke(p: float) -> float:                            # the fraction of the stroke from x = r
+        return (1 - math.cos(p)) / 2
+    on = 0.0 if f_from == 0 else brentq(lambda p: stroke(p) - f_from, 0.0, math.pi, xtol=1e-15)
+    off = math.pi if f_to == 1 else brentq(lambda p: stroke(p) - f_to, 0.0, math.pi, xtol=1e-15)
+    M_d = F * 2 * r * (f_to - f_from) / (2 * math.pi)
+
+    def free(p: float) -> float:
+        return M_d
+
+    def loaded(p: float) -> float:
+        return M_d - F * r * abs(math.sin(p))
+
+    pieces = [(a, b, f) for a, b, f in ((0.0, on, free), (on, off, loaded), (off, 2 * math.pi, free)) if b > a]
+    return _support_line_flywheel(J_e, pieces, omega_m=math.pi * case["n_rpm"] / 30.0, delta=case["delta"],
+                                  atol=1e-3 * rtol * F * r, rtol=rtol, grid=grid)

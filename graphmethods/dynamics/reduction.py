@@ -94,6 +94,36 @@ def reduced_inertia(plans: VelocityPlans, inertias: Iterable[Inertia]) -> Reduce
     return ReducedInertia(J_e=total, parts=MappingProxyType(parts))
 
 
+def reduced_inertia_slope(mechanism: LinkageMechanism, phi_from_start: ArrayLike,
+                          inertias: Iterable[Inertia]) -> FloatArray:
+    """dJ_e/dφ = Σ 2 [ m v_S·a_S + J ω ε ] (kg·m²/rad) at crank rotations ``phi_from_start`` (rad), exactly,
+    from the core's accelerations rather than a difference of J_e.
+
+    The core is solved at unit crank speed and no crank acceleration, so that v_S and ω are the velocity
+    analogues dX/dφ, dθ/dφ and a_S, ε their derivatives d²X/dφ², d²θ/dφ² with respect to the crank's
+    rotation; J_e = Σ m |v_S|² + J ω² (:func:`reduced_inertia`) has the derivative above.
+
+    >>> from graphmethods.kinematics import SliderCrank, Inertia
+    >>> mech = SliderCrank(r=0.1, l=0.4)
+    >>> slope = reduced_inertia_slope(mech, np.array([0.0, 1.0]), [Inertia(None, "B", 12.0, 0.0)])
+    >>> bool(abs(slope[0]) < 1e-15), bool(slope[1] != 0)           # none at the dead centre
+    (True, True)
+    """
+    motion = mechanism.motion(phi_from_start=np.asarray(phi_from_start, dtype=float).ravel(), omega_1=1.0,
+                              epsilon_1=0.0, level=2)
+    total: FloatArray = np.zeros(len(motion.phi))
+    for it in inertias:
+        if it.m:
+            v, a = motion.v(it.point), motion.a(it.point)
+            total = total + 2.0 * it.m * (v[:, 0] * a[:, 0] + v[:, 1] * a[:, 1])
+        if it.J:
+            if it.link is None:
+                raise InputError(f"an inertia J = {it.J} at {it.point} needs the link it turns with")
+            _, omega, epsilon = motion.link(mechanism.number(it.link))
+            total = total + 2.0 * it.J * omega * epsilon
+    return total
+
+
 def _stroke_fraction(positions: Positions, load: Load) -> FloatArray:
     """s/H (a force) or ψ/ψ_max (a moment) at each position."""
     out: FloatArray

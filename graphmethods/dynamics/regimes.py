@@ -35,12 +35,14 @@ M_0/k as an exponential with the time constant J/k.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
+from typing import Any, cast
 
 import numpy as np
+import numpy.typing as npt
 
-from graphmethods.dynamics.motion import ReducedModel, _check_positive
+from graphmethods.dynamics.motion import FloatArray, PhiFunction, ReducedModel, _check_positive
 from graphmethods.errors import InputError, MotionError
 
 __all__ = ["Brake", "ConstantDrive", "Run", "SteadyState", "run"]
@@ -71,6 +73,13 @@ _P = np.array([
 ])
 
 
+#: a driving moment of the speed, ω (rad/s) ↦ M (N·m): a motor characteristic or :class:`ConstantDrive`
+Drive = Callable[[float], float]
+#: any further moment (φ, ω, t) ↦ M (N·m)
+Extra = Callable[[float, float, float], float]
+#: the right-hand side of the integrated system, (t, (φ, ω, W, Q)) ↦ its derivative
+Rhs = Callable[[float, FloatArray], FloatArray]
+
 @dataclass(frozen=True, kw_only=True)
 class Brake:
     """A brake: a moment M_b + c·|ω| (N·m) against the motion, applied from time ``t_on`` (s).
@@ -84,7 +93,7 @@ class Brake:
     c: float = 0.0
     t_on: float = -math.inf
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         for name in ("M_b", "c"):
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
@@ -107,7 +116,7 @@ class ConstantDrive:
 
     M_d: float
 
-    def __call__(self, omega):
+    def __call__(self, omega: float) -> float:
         return self.M_d
 
 
@@ -166,7 +175,7 @@ class SteadyState:
         a = float(np.mod(phi - self.phi_0, self.phi_T))
         return 0.0 if min(a, self.phi_T - a) <= 1e-9 * self.phi_T else math.degrees(a)
 
-    def to_dict(self) -> dict:
+    def to_dict(self) -> dict[str, float | int]:
         return {"t_steady": self.t_steady, "tol": self.tol, "periods": self.periods,
                 "omega_m": self.omega_m, "delta": self.delta, "omega_max": self.omega_max,
                 "omega_min": self.omega_min,
@@ -220,13 +229,13 @@ class Run:
     phi_T: float
     _K: np.ndarray
     _Y: np.ndarray
-    _rhs: Callable
+    _rhs: Rhs
 
     @property
     def steps(self) -> int:
         return int(self.t.size - 1)
 
-    def _dense(self, i, theta):
+    def _dense(self, i: npt.ArrayLike, theta: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
         """State at θ ∈ [0, 1] of step i (arrays of equal shape): (t, y)."""
         i = np.asarray(i)
         theta = np.asarray(theta, dtype=float)
@@ -236,7 +245,7 @@ class Run:
         y = self._Y[i] + h[..., None] * np.einsum("...kp,...p->...k", Q, powers)
         return self.t[i] + theta * h, y
 
-    def at_time(self, times) -> dict:
+    def at_time(self, times: npt.ArrayLike) -> dict[str, FloatArray]:
         """φ, ω, ε at given times (s), from the dense output."""
         x = np.atleast_1d(np.asarray(times, dtype=float))
         if (x < self.t[0] - 1e-12).any() or (x > self.t[-1] + 1e-12).any():
@@ -246,7 +255,7 @@ class Run:
         y, eps = self._partial_steps(i, theta)
         return {"t": x, "phi": y[:, 0], "omega": y[:, 1], "epsilon": eps}
 
-    def _partial_steps(self, i, theta):
+    def _partial_steps(self, i: npt.ArrayLike, theta: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
         """The state after θ of step i, by a fresh Dormand–Prince step of θh (fifth order, not the
         fourth-order dense output), and ε there."""
         ys, eps = [], []
@@ -257,7 +266,7 @@ class Run:
             eps.append(K[6][1])
         return np.array(ys), np.array(eps)
 
-    def at_phi(self, phi) -> dict:
+    def at_phi(self, phi: npt.ArrayLike) -> dict[str, FloatArray]:
         """t, ω, ε where the link reaches the given angles (rad; the first time, while ω > 0)."""
         x = np.atleast_1d(np.asarray(phi, dtype=float))
         if (x < self.phi[0] - 1e-12).any() or (x > self.phi.max() + 1e-12).any():
@@ -278,7 +287,7 @@ class Run:
         t = self.t[i] + theta * (self.t[i + 1] - self.t[i])
         return {"phi": x, "t": t, "omega": y[:, 1], "epsilon": eps}
 
-    def summary(self) -> dict:
+    def summary(self) -> dict[str, Any]:
         """A JSON-ready summary (no arrays)."""
         out = {"ended_by": self.ended_by, "t_end": float(self.t[-1]), "phi_end_deg": math.degrees(self.phi[-1]),
                "omega_end": float(self.omega[-1]), "turns": float((self.phi[-1] - self.phi[0]) / TWO_PI),
@@ -290,14 +299,15 @@ class Run:
         return out
 
 
-def _moment_function(model, drive, drive_off_at, brake, extra):
-    M_e = model.M_e
+def _moment_function(model: ReducedModel, drive: Drive | None, drive_off_at: float | None, brake: Brake | None,
+                     extra: Extra | None) -> Callable[[float, float, float], float]:
+    M_e = cast(PhiFunction, model.M_e)       # a function since ReducedModel's construction
     if drive is None and extra is None and brake is None:
-        def M_pos(phi, omega, t):
+        def M_pos(phi: float, omega: float, t: float) -> float:
             return float(M_e(np.array([phi]))[0])
         return M_pos
 
-    def M(phi, omega, t):
+    def M(phi: float, omega: float, t: float) -> float:
         m = float(M_e(np.array([phi]))[0])
         if drive is not None and (drive_off_at is None or t < drive_off_at):
             m += float(drive(omega))
@@ -309,8 +319,38 @@ def _moment_function(model, drive, drive_off_at, brake, extra):
     return M
 
 
-def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: float | None = None,
-        brake: Brake | None = None, extra=None, phi_0: float | None = None, omega_0: float = 0.0,
+def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: Brake | None, phi_0: float | None,
+               omega_0: float, t_0: float, t_end: float | None, turns: float | None, until_steady: bool, tol: float,
+               rtol: float) -> float:
+    """The arguments of :func:`run` checked (InputError naming the bad one); returns the starting angle φ0."""
+    if not isinstance(model, ReducedModel):
+        raise InputError("model: give a ReducedModel (J_e(φ) and M_e(φ))")
+    if not math.isfinite(float(J_F)):
+        raise InputError(f"J_F = {J_F!r} kg·m² is not finite")
+    phi_0 = model.phi_0 if phi_0 is None else float(phi_0)
+    for name, v in (("phi_0", phi_0), ("omega_0", omega_0), ("t_0", t_0)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v)):
+            raise InputError(f"{name} = {v!r} is not a finite number")
+    if omega_0 < 0:
+        raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
+    if t_end is None and turns is None and not until_steady:
+        raise InputError("say when to stop: t_end (s), turns, or until_steady")
+    if t_end is not None and not (math.isfinite(t_end) and t_end > t_0):
+        raise InputError(f"t_end = {t_end!r} s must come after t_0 = {t_0!r} s")
+    if turns is not None:
+        _check_positive(turns, "turns")
+    _check_positive(tol, "tol")
+    _check_positive(rtol, "rtol")
+    if drive is not None and not callable(drive):
+        raise InputError("drive: give a callable ω ↦ M (a motor, or ConstantDrive(M_d))")
+    if brake is not None and not isinstance(brake, Brake):
+        raise InputError("brake: give a Brake(M_b=..., c=..., t_on=...)")
+
+    return phi_0
+
+
+def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, drive_off_at: float | None = None,
+        brake: Brake | None = None, extra: Extra | None = None, phi_0: float | None = None, omega_0: float = 0.0,
         t_0: float = 0.0, t_end: float | None = None, turns: float | None = None, until_steady: bool = False,
         tol: float = 1e-3, rtol: float = 1e-10, omega_ref: float | None = None, max_periods: int = 20000,
         max_steps: int = 2_000_000) -> Run:
@@ -355,6 +395,13 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
         The machine cannot start (no positive moment at rest), or no steady state within
         ``max_periods`` periods, or the step count runs out.
 
+    Notes
+    -----
+    One function of more than 80 lines, on purpose: the Dormand–Prince loop's step, its landing on the
+    declared breaks and on switch times, the period boundaries and the steady-state test share their state
+    (step size, the clamp of φ at a break, the next break and boundary, the accepted steps) at every step;
+    split, each part would pass most of it both ways. The argument checks are :func:`_check_run`.
+
     Examples
     --------
     A DC motor M = M_0(1 − ω/ω_0) on a constant inertia from rest: ω → ω_0 with τ = J ω_0/M_0.
@@ -364,43 +411,22 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
     >>> bool(abs(r.omega[-1] - 50 * (1 - math.exp(-1.0))) < 1e-8)
     True
     """
-    if not isinstance(model, ReducedModel):
-        raise InputError("model: give a ReducedModel (J_e(φ) and M_e(φ))")
+    phi_0 = _check_run(model, J_F=J_F, drive=drive, brake=brake, phi_0=phi_0, omega_0=omega_0, t_0=t_0,
+                       t_end=t_end, turns=turns, until_steady=until_steady, tol=tol, rtol=rtol)
     J_F = float(J_F)
-    if not math.isfinite(J_F):
-        raise InputError(f"J_F = {J_F!r} kg·m² is not finite")
-    phi_0 = model.phi_0 if phi_0 is None else float(phi_0)
-    for name, v in (("phi_0", phi_0), ("omega_0", omega_0), ("t_0", t_0)):
-        if not (isinstance(v, (int, float)) and math.isfinite(v)):
-            raise InputError(f"{name} = {v!r} is not a finite number")
-    if omega_0 < 0:
-        raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
-    if t_end is None and turns is None and not until_steady:
-        raise InputError("say when to stop: t_end (s), turns, or until_steady")
-    if t_end is not None and not (math.isfinite(t_end) and t_end > t_0):
-        raise InputError(f"t_end = {t_end!r} s must come after t_0 = {t_0!r} s")
-    if turns is not None:
-        _check_positive(turns, "turns")
-    _check_positive(tol, "tol")
-    _check_positive(rtol, "rtol")
-    if drive is not None and not callable(drive):
-        raise InputError("drive: give a callable ω ↦ M (a motor, or ConstantDrive(M_d))")
-    if brake is not None and not isinstance(brake, Brake):
-        raise InputError("brake: give a Brake(M_b=..., c=..., t_on=...)")
-
     M = _moment_function(model, drive, drive_off_at, brake, extra)
-    J_e = model.J_e                  # the raw functions (checked once by ReducedModel); each step's
+    J_e = cast(PhiFunction, model.J_e)       # the raw functions (checked once by ReducedModel); each step's
     if model.dJ_e is not None:       # result is checked for finiteness instead
-        dJ_e = model.dJ_e
+        dJ_e: PhiFunction = model.dJ_e
     else:
         hJ = 1e-6 * model.phi_T
 
-        def dJ_e(p):
+        def dJ_e(p: FloatArray) -> FloatArray:
             return (J_e(p + hJ) - J_e(p - hJ)) / (2 * hJ)
 
     clamp = [-math.inf, math.inf]        # φ for the moment, kept on one side of a break while landing on it
 
-    def rhs(t, y):
+    def rhs(t: float, y: FloatArray) -> FloatArray:
         phi, omega = y[0], y[1]
         p = np.array([phi])
         J = J_F + float(J_e(p)[0])
@@ -437,7 +463,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
     remaining = math.nan
     breaks = np.array(model.breaks, dtype=float)
 
-    def break_after(phi):
+    def break_after(phi: float) -> float:
         """The first declared break (a jump or kink of M_e, repeated every period) beyond φ."""
         if breaks.size == 0:
             return math.inf
@@ -573,7 +599,8 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
     scale = max(float(np.max(T)), float(np.max(np.abs(W))), 1e-300)
     residual = float(np.max(np.abs(T - T[0] - W)) / scale)
     res = Run(t=_frozen(t_arr), phi=_frozen(phi), omega=_frozen(omega), epsilon=_frozen(np.array(eps_list)),
-              work=_frozen(W), T=_frozen(T), J=_frozen(J), energy_residual=residual, error_estimate=float(err_sum), rtol=rtol,
+              work=_frozen(W), T=_frozen(T), J=_frozen(J), energy_residual=residual, error_estimate=float(err_sum),
+              rtol=rtol,
               ended_by=ended_by, steady=None, phi_T=L, _K=Kall, _Y=Y, _rhs=rhs)
     if ended_by == "steady" and steady_k is not None:
         st = _steady_state(res, boundary, steady_k, tol, remaining)
@@ -581,13 +608,13 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive=None, drive_off_at: floa
     return res
 
 
-def _frozen(a):
+def _frozen(a: npt.ArrayLike) -> FloatArray:
     a = np.array(a, dtype=float)
     a.setflags(write=False)
     return a
 
 
-def _crossing(t, h, y, K, level):
+def _crossing(t: float, h: float, y: FloatArray, K: FloatArray, level: float) -> tuple[float, float]:
     """The fractions (lo, hi) of the step [t, t + h] between which φ of its dense output reaches
     ``level`` (bisection to the resolution of a float)."""
     lo, hi = 0.0, 1.0
@@ -600,13 +627,13 @@ def _crossing(t, h, y, K, level):
     return lo, hi
 
 
-def _dense_one(t0, t1, y0, K, theta):
+def _dense_one(t0: float, t1: float, y0: FloatArray, K: FloatArray, theta: float) -> tuple[float, FloatArray]:
     h = t1 - t0
     p = np.array([theta, theta**2, theta**3, theta**4])
     return t0 + theta * h, y0 + h * (K.T @ (_P @ p))
 
 
-def _refit(rhs, t0, y0, h):
+def _refit(rhs: Rhs, t0: float, y0: FloatArray, h: float) -> FloatArray:
     K = np.empty((7, 4))
     K[0] = rhs(t0, y0)
     for s in range(1, 7):
@@ -614,7 +641,8 @@ def _refit(rhs, t0, y0, h):
     return K
 
 
-def _cross(ts, Ys, Ks, phi_b):
+def _cross(ts: Sequence[float], Ys: Sequence[FloatArray], Ks: Sequence[FloatArray],
+           phi_b: float) -> tuple[float, FloatArray]:
     """(t, y) where φ = phi_b in the last step (bisection on the dense output)."""
     t0, t1, y0, K = ts[-2], ts[-1], Ys[-2], Ks[-1]
     lo, hi = 0.0, 1.0
@@ -628,7 +656,7 @@ def _cross(ts, Ys, Ks, phi_b):
     return _dense_one(t0, t1, y0, K, 0.5 * (lo + hi))
 
 
-def _steady_check(boundary, tol):
+def _steady_check(boundary: Sequence[tuple[float, float, float]], tol: float) -> tuple[int | None, float]:
     """(k, remaining) once the Poincaré sequence ω_k has converged to min(1e-3·tol, 1e-9) (else (None, …))."""
     if len(boundary) < 3:
         return None, math.nan
@@ -647,7 +675,40 @@ def _steady_check(boundary, tol):
     return None, remaining
 
 
-def _steady_state(res: Run, boundary, k: int, tol: float, remaining: float) -> SteadyState:
+def _golden_extreme(res: Run, ts: FloatArray, ws: FloatArray, phis: FloatArray, j: int,
+                    sense: int) -> tuple[float, float]:
+    """(ω, φ) of the maximum (sense +1) or minimum (−1) of ω(t) near the sample j of the last period (times ts,
+    speeds ws, angles phis): a golden-section search on the fifth-order partial steps, never worse than the
+    sample."""
+    # golden section on ω(t) (fifth-order partial steps) around the best sample
+    step = float(ts[1] - ts[0])             # at the ends the bracket reaches into the neighbour periods
+    lo = float(ts[j - 1]) if j > 0 else max(float(ts[0]) - step, float(res.t[0]))
+    hi = float(ts[j + 1]) if j < ts.size - 1 else min(float(ts[-1]) + step, float(res.t[-1]))
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+
+    def f(tt: float) -> float:
+        return sense * float(res.at_time([tt])["omega"][0])
+
+    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
+    fc, fd = f(c), f(d)
+    for _ in range(40):
+        if fc >= fd:
+            hi, d, fd = d, c, fc
+            c = hi - g * (hi - lo)
+            fc = f(c)
+        else:
+            lo, c, fc = c, d, fd
+            d = lo + g * (hi - lo)
+            fd = f(d)
+    tt = c if fc >= fd else d
+    at = res.at_time([tt])
+    if sense * (at["omega"][0] - ws[j]) >= 0:
+        return float(at["omega"][0]), float(at["phi"][0])
+    return float(ws[j]), float(phis[j])
+
+
+def _steady_state(res: Run, boundary: Sequence[tuple[float, float, float]], k: int, tol: float,
+                  remaining: float) -> SteadyState:
     tA, wA, QA = boundary[k - 1]
     tB, wB, QB = boundary[k]
     L = res.phi_T
@@ -665,35 +726,8 @@ def _steady_state(res: Run, boundary, k: int, tol: float, remaining: float) -> S
     phis, ws = ys[:, 0], ys[:, 1]
     j_max, j_min = int(np.argmax(ws)), int(np.argmin(ws))
 
-    def refine(j, sense):
-        # golden section on ω(t) (fifth-order partial steps) around the best sample
-        step = float(ts[1] - ts[0])             # at the ends the bracket reaches into the neighbour periods
-        lo = float(ts[j - 1]) if j > 0 else max(float(ts[0]) - step, float(res.t[0]))
-        hi = float(ts[j + 1]) if j < ts.size - 1 else min(float(ts[-1]) + step, float(res.t[-1]))
-        g = (math.sqrt(5.0) - 1.0) / 2.0
-
-        def f(tt):
-            return sense * float(res.at_time([tt])["omega"][0])
-
-        c, d = hi - g * (hi - lo), lo + g * (hi - lo)
-        fc, fd = f(c), f(d)
-        for _ in range(40):
-            if fc >= fd:
-                hi, d, fd = d, c, fc
-                c = hi - g * (hi - lo)
-                fc = f(c)
-            else:
-                lo, c, fc = c, d, fd
-                d = lo + g * (hi - lo)
-                fd = f(d)
-        tt = c if fc >= fd else d
-        at = res.at_time([tt])
-        if sense * (at["omega"][0] - ws[j]) >= 0:
-            return float(at["omega"][0]), float(at["phi"][0])
-        return float(ws[j]), float(phis[j])
-
-    w_max, p_max = refine(j_max, +1)
-    w_min, p_min = refine(j_min, -1)
+    w_max, p_max = _golden_extreme(res, ts, ws, phis, j_max, +1)
+    w_min, p_min = _golden_extreme(res, ts, ws, phis, j_min, -1)
     t_T = tB - tA
     om_tb = 0.5 * (w_max + w_min)
     eps = res.at_time(ts[::4])["epsilon"]
@@ -704,9 +738,10 @@ def _steady_state(res: Run, boundary, k: int, tol: float, remaining: float) -> S
 
     shift = 0.0 if not math.isfinite(remaining) else remaining     # Aitken's estimate of what is left
 
-    def steady_omega(phi):
+    def steady_omega(phi: npt.ArrayLike) -> FloatArray:
         s = np.mod(np.asarray(phi) - phis[order][0], L)
-        return np.interp(s, np.append(phase_p, L), np.append(w_p, w_p[0])) + shift
+        w: FloatArray = np.interp(s, np.append(phase_p, L), np.append(w_p, w_p[0])) + shift
+        return w
 
     n_all = res.steps
     idx = np.repeat(np.arange(n_all), 8)

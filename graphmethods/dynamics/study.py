@@ -37,6 +37,7 @@ from graphmethods.dynamics.reduction import (
     load_switch_angles,
     load_work,
     reduced_inertia,
+    reduced_inertia_slope,
     resisting_moment,
 )
 from graphmethods.dynamics.translating import TranslatingLink
@@ -167,6 +168,11 @@ class Study:
         pos = self.mechanism.positions(phi_from_start=x.ravel())
         return reduced_inertia(self.mechanism.velocity_plans(pos), self.case.inertias).J_e.reshape(x.shape)
 
+    def _dJ_e_exact(self, phi: ArrayLike) -> FloatArray:
+        """dJ_e/dφ at crank rotations ``phi`` (rad from position 0), kg·m²/rad, from the core's accelerations."""
+        x = np.asarray(phi, dtype=float)
+        return reduced_inertia_slope(self.mechanism, x, self.case.inertias).reshape(x.shape)
+
     def _M_r_exact(self, phi: ArrayLike) -> FloatArray:
         """M_r at crank rotations ``phi`` (rad from position 0), N·m, from the linkage itself."""
         x = np.asarray(phi, dtype=float)
@@ -257,7 +263,10 @@ class Study:
     def model(self) -> ReducedModel:
         """The exact reduced model: J_e(φ), M_e(φ) as functions, the load's jumps declared."""
         M_d = self.M_d
-        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), breaks=self.switch_angles)
+        # dJ_e/dφ from the core's accelerations (a mechanism without the core: a difference of J_e)
+        dJ_e = self._dJ_e_exact if hasattr(self.mechanism, "motion") else None
+        return ReducedModel(J_e=self._J_e_exact, M_e=lambda p: M_d - self._M_r_exact(p), dJ_e=dJ_e,
+                            breaks=self.switch_angles)
 
     # ----------------------------------------------------------------- the graphical methods at m positions
     @_logged
