@@ -29,6 +29,7 @@ extreme positions found numerically to machine precision (:meth:`Linkage.strokes
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
@@ -36,10 +37,11 @@ from types import MappingProxyType
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups.base import GROUND, Group, State, check_length, fmt
-from graphmethods.kinematics.positions import Strokes
+from graphmethods.kinematics.positions import Strokes, at_extremes
 
 TWO_PI = 2.0 * math.pi
 
@@ -85,7 +87,7 @@ class Point:
     distance: float
     angle: float = 0.0
 
-    @property
+    @functools.cached_property
     def offset(self) -> complex:
         """distance·e^(i·angle): the point from its origin in the link's own frame (x along the link)."""
         return self.distance * complex(math.cos(self.angle), math.sin(self.angle))
@@ -439,16 +441,29 @@ class Linkage:
         return out
 
     # ------------------------------------------------------------------ solving
-    def solve(self, phi, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
-              labels=None) -> State:
+    def solve(self, phi: npt.ArrayLike, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
+              labels: np.ndarray | None = None) -> State:
         """Solve the linkage at crank angles ``phi`` (rad); level 0 positions, 1 + velocities,
-        2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`."""
-        phi = np.asarray(phi, dtype=float).reshape(-1)
+        2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`.
+
+        What is the same at every position is a read-only array (n,) that from
+        :data:`SHARED_FROM` positions up takes no memory per position (stride 0): the fixed joints'
+        positions, their zero velocities and accelerations, the crank's ω and ε. A read-only
+        ``phi`` is the crank's angle as it is (else a copy).
+
+        >>> from graphmethods.kinematics.presets import six_bar_press
+        >>> st = six_bar_press().solve([0.0, 1.0], omega_1=10.0)
+        >>> st.z["O2"].tolist(), st.omega["1"].tolist(), st.omega["1"].flags.writeable
+        ([(0.25+0.1j), (0.25+0.1j)], [10.0, 10.0], False)
+        """
+        phi = np.asarray(phi, dtype=float)
+        if phi.ndim != 1:
+            phi = phi.reshape(-1)
         n = phi.shape[0]
         st = State(phi=phi, labels=labels)
-        zero_c = np.zeros(n, dtype=complex)
+        zero_c = _constant(0j, n)
         for k, c in self.ground.items():
-            st.z[k] = np.full(n, c)          # one array per fixed joint (it is a point of the result)
+            st.z[k] = _constant(c, n)                # a point of the result, the same at every position
             st.v[k] = zero_c
             st.a[k] = zero_c
         cr = self.crank
@@ -456,7 +471,7 @@ class Linkage:
         Ep = self.sense * float(epsilon_1)
         e = np.exp(1j * phi)
         st.z[cr.pin] = st.z[cr.centre] + cr.r * e
-        st.theta[cr.link] = phi.copy()
+        st.theta[cr.link] = phi if not phi.flags.writeable else phi.copy()
         st.e[cr.link] = e
         for step in self._steps:
             if isinstance(step, Point):
@@ -464,40 +479,95 @@ class Linkage:
             else:
                 step.positions(st)
         if level >= 1:
-            st.omega[cr.link] = np.full(n, Om)
+            st.omega[cr.link] = _constant(Om, n)
             st.v[cr.pin] = 1j * Om * cr.r * e
-            for step in self._steps:
-                if isinstance(step, Point):
-                    r = st.z[step.name] - st.z[step.origin]
-                    st.v[step.name] = st.v[step.origin] + 1j * st.omega[step.link] * r
-                else:
-                    step.velocities(st)
+            self._velocities(st)
         if level >= 2:
-            st.epsilon[cr.link] = np.full(n, Ep)
+            st.epsilon[cr.link] = _constant(Ep, n)
             st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
-            for step in self._steps:
-                if isinstance(step, Point):
-                    r = st.z[step.name] - st.z[step.origin]
-                    w = st.omega[step.link]
-                    st.a[step.name] = st.a[step.origin] + (1j * st.epsilon[step.link] - w * w) * r
-                else:
-                    step.accelerations(st)
+            self._accelerations(st)
         return st
 
-    def _check_phi(self, values, name):
+    def _velocities(self, st: State) -> None:
+        """The velocities of every point and link after the crank's (v = v_O + ω × r on a link)."""
+        for step in self._steps:
+            if isinstance(step, Point):
+                r = st.z[step.name] - st.z[step.origin]
+                st.v[step.name] = st.v[step.origin] + 1j * st.omega[step.link] * r
+            else:
+                step.velocities(st)
+
+    def _accelerations(self, st: State) -> None:
+        """The accelerations of every point and link after the crank's (a = a_O + ε × r − ω²·r)."""
+        for step in self._steps:
+            if isinstance(step, Point):
+                r = st.z[step.name] - st.z[step.origin]
+                w = st.omega[step.link]
+                st.a[step.name] = st.a[step.origin] + (1j * st.epsilon[step.link] - w * w) * r
+            else:
+                step.accelerations(st)
+
+    def _check_phi(self, values: npt.ArrayLike, name: str) -> np.ndarray:
+        """Crank angles (rad) as a new 1-D float array; InputError if empty or not finite."""
         try:
-            a = np.array(values, dtype=float).reshape(-1)
+            a = np.array(values, dtype=float)
         except (TypeError, ValueError):
             raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}") from None
+        if a.ndim != 1:
+            a = a.reshape(-1)
         if a.size == 0:
             raise InputError(f"{name}: give at least one crank angle")
-        bad = ~np.isfinite(a)
-        if bad.any():
+        if np.count_nonzero(np.isfinite(a)) != a.size:
+            bad = ~np.isfinite(a)
             raise InputError(f"{name}: angle #{int(np.argmax(bad))} is {a[bad][0]!r}; angles must be finite (rad)")
         return a
 
-    def motion(self, m: int | None = None, *, phi=None, phi_from_start=None, omega_1: float = 1.0,
-               epsilon_1: float = 0.0, level: int = 2) -> Motion:
+    def _crank_angles(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
+                      start: float) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        """(φ from +x, rotation from position 0, position numbers or None) for :meth:`motion`: new
+        arrays, read-only."""
+        labels = None
+        if phi is None and phi_from_start is None:
+            m = 12 if m is None else m
+            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
+                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
+            m = int(m)
+            self.check_full_turn()
+            labels = np.arange(m + 1)
+            tr = (TWO_PI / m) * labels
+            tr[m] = TWO_PI
+            ang = _norm_in_place(np.multiply(tr, self.sense) + start)
+            ang[m] = ang[0]
+        elif phi_from_start is not None:
+            tr = self._check_phi(phi_from_start, "phi_from_start")
+            ang = _norm_in_place(np.multiply(tr, self.sense) + start)
+        else:
+            ang = self._check_phi(phi, "phi")
+            tr = ang - start
+            if self.sense < 0:
+                np.negative(tr, out=tr)
+            np.mod(tr, TWO_PI, out=tr)
+            np.putmask(tr, tr > TWO_PI - 1e-13, 0.0)
+        return _freeze(ang), _freeze(tr), None if labels is None else _freeze(labels)
+
+    def _grid(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
+              strokes: Strokes | None) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]:
+        """(φ, rotation from position 0, position numbers or None, at an extreme) for :meth:`motion`,
+        read-only; the grid of m equal steps is kept per m (up to :data:`SHARED_FROM` positions), as
+        a course asks for the same 12 positions again and again."""
+        key = ("grid", m) if phi is None and phi_from_start is None else None
+        if key in self._cache:
+            return self._cache[key]                 # type: ignore[no-any-return]
+        start = strokes.phi_start if strokes is not None else self._default_start()
+        ang, tr, labels = self._crank_angles(m, phi, phi_from_start, start)
+        grid = ang, tr, labels, _freeze(at_extremes(ang, strokes))   # before solving: adds to no peak
+        if key is not None and ang.shape[0] < SHARED_FROM:
+            self._cache[key] = grid
+        return grid
+
+    def motion(self, m: int | None = None, *, phi: npt.ArrayLike | None = None,
+               phi_from_start: npt.ArrayLike | None = None, omega_1: float = 1.0, epsilon_1: float = 0.0,
+               level: int = 2) -> Motion:
         """The linkage at m + 1 positions 0…m (or at given crank angles), with velocities and
         accelerations.
 
@@ -520,52 +590,35 @@ class Linkage:
         ------
         AssemblyError
             A position where a group cannot be assembled or is at a toggle (named).
+
+        Examples
+        --------
+        >>> from graphmethods.kinematics.presets import six_bar_press
+        >>> mo = six_bar_press().motion(m=12, omega_1=10.0)
+        >>> mo.n, int(mo.index[-1]), bool(mo.extreme[0]), float(mo.v("D")[0, 0])
+        (13, 12, True, 0.0)
         """
         for nm, val, pos in (("omega_1", omega_1, True), ("epsilon_1", epsilon_1, False)):
             if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)) \
                     or not math.isfinite(val) or (pos and val <= 0):
                 raise InputError(f"{nm} must be a finite number{' > 0 (rad/s)' if pos else ' (rad/s²)'}, got {val!r}")
-        if sum(x is not None for x in (m, phi, phi_from_start)) > 1:
+        if (m is not None) + (phi is not None) + (phi_from_start is not None) > 1:
             raise InputError("give only one of m, phi or phi_from_start")
         strokes = self.strokes()
-        start = strokes.phi_start if strokes is not None else self._default_start()
-        labels = None
-        if phi is None and phi_from_start is None:
-            m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
-            self.check_full_turn()
-            k = np.arange(m + 1)
-            tr = (TWO_PI / m) * k
-            tr[m] = TWO_PI
-            ang = _norm(start + self.sense * tr)
-            ang[m] = ang[0]
-            labels = k
-        elif phi_from_start is not None:
-            tr = self._check_phi(phi_from_start, "phi_from_start")
-            ang = _norm(start + self.sense * tr)
-        else:
-            ang = self._check_phi(phi, "phi")
-            tr = np.mod(self.sense * (ang - start), TWO_PI)
-            tr = np.where(tr > TWO_PI - 1e-13, 0.0, tr)
+        ang, tr, labels, extreme = self._grid(m, phi, phi_from_start, strokes)
         st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)
-        extreme = np.zeros(ang.shape[0], dtype=bool)
         if strokes is not None:
-            for ph in (strokes.phi_start, strokes.phi_end):
-                extreme |= np.abs(np.mod(ang - ph + math.pi, TWO_PI) - math.pi) <= 1e-13
             self._snap(st, extreme)
-        cond = np.minimum.reduce(list(st.conditioning.values())) if st.conditioning else np.ones(ang.shape[0])
         ro = MappingProxyType
-        return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
-                      index=None if labels is None else _ro(labels), omega_1=float(omega_1),
+        return Motion(linkage=self, phi=ang, phi_from_start=tr, index=labels, omega_1=float(omega_1),
                       epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
                       theta=ro(st.theta), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
-                      conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
+                      conditioning=_freeze(_smallest(st.conditioning, ang.shape[0])), extreme=extreme,
+                      strokes=strokes, _state=st)
 
     def _snap(self, st: State, mask: np.ndarray) -> None:
         """At the extreme positions the output stands still exactly (as the plan draws it)."""
-        if not mask.any() or self.output is None:
+        if not np.count_nonzero(mask) or self.output is None:
             return
         kind, name = self.output
         if kind == "point":
@@ -767,19 +820,57 @@ class Linkage:
         return float(abs(_wrap(th_e - th_s)))
 
 
-def _norm(a):
+def _norm(a: npt.ArrayLike) -> Any:
+    """Angle(s) in [0, 2π) (rad), −0 written 0: a float for a scalar, else a new array."""
     a = np.mod(np.asarray(a, dtype=float), TWO_PI)
     return np.where(a >= TWO_PI, 0.0, a) + 0.0
 
 
-def _wrap(a):
+def _norm_in_place(a: np.ndarray) -> np.ndarray:
+    """:func:`_norm` of a new float array, in place (no temporaries)."""
+    np.mod(a, TWO_PI, out=a)
+    np.putmask(a, a >= TWO_PI, 0.0)
+    a += 0.0
+    return a
+
+
+def _wrap(a: npt.ArrayLike) -> Any:
+    """Angle(s) in [−π, π) (rad)."""
     return np.mod(np.asarray(a, dtype=float) + np.pi, TWO_PI) - np.pi
 
 
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a)
+#: From this many positions up, a value the same at every position is one number seen n times
+#: (stride 0); below, a filled array is quicker to make.
+SHARED_FROM = 4096
+
+
+def _constant(value: complex | float, n: int) -> np.ndarray:
+    """A read-only array (n,) of ``value`` (complex or float): see :data:`SHARED_FROM`."""
+    if n >= SHARED_FROM:
+        return np.broadcast_to(value, (n,))
+    a = np.empty(n, dtype=complex if isinstance(value, complex) else float)
+    a.fill(value)
     a.flags.writeable = False
     return a
+
+
+def _freeze(a: np.ndarray) -> np.ndarray:
+    """Make a new array of ours read-only in place (no copy) and return it."""
+    a.flags.writeable = False
+    return a
+
+
+def _smallest(values: Mapping[str, np.ndarray], n: int) -> np.ndarray:
+    """The groups' conditioning, position by position the smallest (a new array; ones with no group)."""
+    arrays = list(values.values())
+    if not arrays:
+        return np.ones(n)
+    if len(arrays) == 1:
+        return np.array(arrays[0])
+    out: np.ndarray = np.minimum(arrays[0], arrays[1])
+    for a in arrays[2:]:
+        np.minimum(out, a, out=out)
+    return out
 
 
 __all__ = ["Crank", "GroupInfo", "Linkage", "Motion", "Point", "Structure", "fmt"]
