@@ -31,16 +31,16 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import numpy.typing as npt
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics.groups.base import GROUND, Group, State, check_length, fmt
+from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, fmt
 from graphmethods.kinematics.positions import Strokes, at_extremes
 
 TWO_PI = 2.0 * math.pi
@@ -67,7 +67,7 @@ class Crank:
     r: float
     link: str = "1"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "r", check_length(f"crank {self.centre}{self.pin}", self.r))
 
 
@@ -92,7 +92,7 @@ class Point:
         """distance·e^(i·angle): the point from its origin in the link's own frame (x along the link)."""
         return self.distance * complex(math.cos(self.angle), math.sin(self.angle))
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "distance", check_length(f"point {self.name}: distance", self.distance,
                                                           positive=False))
         object.__setattr__(self, "angle", check_length(f"point {self.name}: angle", self.angle, positive=False))
@@ -108,7 +108,7 @@ class GroupInfo:
     kind: str
     cls: int
     order: int
-    links: tuple
+    links: tuple[str, ...]
 
 
 @dataclass(frozen=True)
@@ -131,7 +131,7 @@ class Structure:
         The highest class of its groups.
     """
 
-    groups: tuple
+    groups: tuple[GroupInfo, ...]
     formula: str
     n_moving: int
     p_lower: int
@@ -171,20 +171,20 @@ class Motion:
     strokes : Strokes or None
     """
 
-    linkage: Any
+    linkage: Linkage
     phi: np.ndarray
     phi_from_start: np.ndarray
     index: np.ndarray | None
     omega_1: float
     epsilon_1: float
-    points: tuple
+    points: tuple[str, ...]
     z: Mapping[str, np.ndarray]
     v_: Mapping[str, np.ndarray]
     a_: Mapping[str, np.ndarray]
     theta: Mapping[str, np.ndarray]
     omega: Mapping[str, np.ndarray]
     epsilon: Mapping[str, np.ndarray]
-    relative: Mapping[str, Mapping]
+    relative: Mapping[str, Mapping[str, Any]]
     conditioning: np.ndarray
     extreme: np.ndarray
     strokes: Strokes | None
@@ -194,7 +194,7 @@ class Motion:
     def n(self) -> int:
         return int(self.phi.shape[0])
 
-    def _get(self, table, name: str, what: str) -> np.ndarray:
+    def _get(self, table: Mapping[str, np.ndarray], name: str, what: str) -> np.ndarray:
         try:
             c = table[name]
         except KeyError:
@@ -213,18 +213,18 @@ class Motion:
         """Acceleration of ``name``, (n, 2), m/s²."""
         return self._get(self.a_, name, "acceleration")
 
-    def link(self, number) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def link(self, number: int | str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(θ, ω, ε) of link ``number`` (textbook number, ``"2"`` or 2)."""
         key = str(number)
         if key not in self.omega:
             raise InputError(f"no link {number!r}; links: {', '.join(self.omega)}")
         return self.theta[key], self.omega[key], self.epsilon[key]
 
-    def records(self) -> tuple:
+    def records(self) -> tuple[Record, ...]:
         """The construction records of every group's velocity and acceleration plans, in order."""
         out = []
         for g in self.linkage.groups:
-            out.extend(g.records(self._state))
+            out.extend(cast(Any, g).records(self._state))    # every dyad has records()
         return tuple(out)
 
     @property
@@ -266,9 +266,9 @@ class Linkage:
         Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
     """
 
-    def __init__(self, *, ground: Mapping, crank: Crank, groups: Sequence[Group] = (),
+    def __init__(self, *, ground: Mapping[str, tuple[float, float]], crank: Crank, groups: Sequence[Group] = (),
                  points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
-                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0):
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0) -> None:
         if isinstance(sense, bool) or sense not in (1, -1):
             raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
@@ -278,7 +278,7 @@ class Linkage:
         self._start = float(_norm(start))
         self.sense = int(sense)
         self.working_stroke = working_stroke
-        self.ground = {}
+        self.ground: dict[str, complex] = {}
         for k, xy in ground.items():
             try:
                 x, y = (float(c) for c in xy)
@@ -292,7 +292,7 @@ class Linkage:
         self.points = tuple(points)
         self._check_order()
         self.output = self._choose_output(output)
-        self._cache: dict = {}
+        self._cache: dict[Any, Any] = {}
 
     # ------------------------------------------------------------------ structure
     def _check_order(self) -> None:
@@ -311,9 +311,9 @@ class Linkage:
         dup = sorted({x for x in names if names.count(x) > 1})
         if dup:
             raise InputError(f"{self.name}: extra point {dup[0]!r} is given twice")
-        steps: list = []
+        steps: list[Any] = []                       # the dyads (their solving methods) and the points
 
-        def place():
+        def place() -> None:
             moved = True
             while moved:
                 moved = False
@@ -382,7 +382,7 @@ class Linkage:
         return Structure(groups=tuple(infos), formula=" → ".join(parts), n_moving=n, p_lower=p5, p_higher=0,
                          dof=3 * n - 2 * p5, mechanism_class=2 if self.groups else 1)
 
-    def _choose_output(self, output):
+    def _choose_output(self, output: str | None) -> tuple[str, str] | None:
         guides = self.guides
         if output is not None:
             output = str(output)
@@ -400,7 +400,7 @@ class Linkage:
         return None
 
     @staticmethod
-    def _group_sliders(g):
+    def _group_sliders(g: Group) -> Iterator[tuple[str, Guide]]:
         from graphmethods.kinematics.groups import PRP, RPP, RRP
         if isinstance(g, RRP) and g.guide.link == GROUND:
             yield g.C, g.guide
@@ -412,7 +412,7 @@ class Linkage:
                     yield g.C, gd
                     break
 
-    def _group_rockers(self, g):
+    def _group_rockers(self, g: Group) -> Iterator[tuple[str, str]]:
         from graphmethods.kinematics.groups import RPR, RRR
         if isinstance(g, RRR):
             if g.Q in self.ground:
@@ -461,9 +461,9 @@ class Linkage:
             phi = phi.reshape(-1)
         n = phi.shape[0]
         st = State(phi=phi, labels=labels)
-        zero_c = _constant(0j, n)
-        for k, c in self.ground.items():
-            st.z[k] = _constant(c, n)                # a point of the result, the same at every position
+        fixed, zero_c = self._fixed(n)
+        for k, z in fixed.items():
+            st.z[k] = z                              # a point of the result, the same at every position
             st.v[k] = zero_c
             st.a[k] = zero_c
         cr = self.crank
@@ -487,6 +487,16 @@ class Linkage:
             st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
             self._accelerations(st)
         return st
+
+    def _fixed(self, n: int) -> tuple[dict[str, np.ndarray], np.ndarray]:
+        """The fixed joints' positions and their zero velocity as read-only arrays (n,) (see
+        :func:`_constant`), kept for the last n below :data:`SHARED_FROM`."""
+        kept = self._cache.get("fixed")
+        if kept is None or kept[0] != n:
+            kept = n, {k: _constant(c, n) for k, c in self.ground.items()}, _constant(0j, n)
+            if n < SHARED_FROM:
+                self._cache["fixed"] = kept
+        return kept[1], kept[2]
 
     def _velocities(self, st: State) -> None:
         """The velocities of every point and link after the crank's (v = v_O + ω × r on a link)."""
@@ -542,6 +552,7 @@ class Linkage:
             tr = self._check_phi(phi_from_start, "phi_from_start")
             ang = _norm_in_place(np.multiply(tr, self.sense) + start)
         else:
+            assert phi is not None
             ang = self._check_phi(phi, "phi")
             tr = ang - start
             if self.sense < 0:
@@ -628,6 +639,11 @@ class Linkage:
             st.omega[name] = np.where(mask, 0.0, st.omega[name])
 
     # ------------------------------------------------------------------ full turn, extremes
+    def _output(self) -> tuple[str, str]:
+        """The output, (``"point"``, name) or (``"link"``, number), where one is known to exist."""
+        assert self.output is not None, f"{self.name}: no output (neither a slider on the frame nor a rocker)"
+        return self.output
+
     def _default_start(self) -> float:
         return self._start
 
@@ -644,7 +660,9 @@ class Linkage:
             i = int(np.argmin(mg))
             # refine the smallest margin between its neighbours (golden section)
             lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
-            f = lambda x, g=g: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
+            def f(x: float, g: Group = g) -> float:
+                return float(g.margin(self.solve(np.array([x]), level=0))[0])
+
             gr = (math.sqrt(5) - 1) / 2
             for _ in range(80):
                 a = hi - gr * (hi - lo)
@@ -660,29 +678,32 @@ class Linkage:
                                     f"the assembly would jump; change the lengths or study the range with phi=")
         self._cache["full_turn"] = True
 
-    def _out_value(self, st: State):
+    def _out_value(self, st: State) -> tuple[Any, Any, Any]:
         """(coordinate, its derivative, its second derivative) of the output over the positions."""
-        kind, name = self.output
+        kind, name = self._output()
         if kind == "point":
             gx, gy = self.guides[name]
             u = complex(gx, gy)
-            c = lambda z: z.real * u.real + z.imag * u.imag  # noqa: E731
+
+            def c(z: Any) -> Any:
+                return z.real * u.real + z.imag * u.imag
+
             return c(st.z[name]), c(st.v.get(name, st.z[name])), c(st.a.get(name, st.z[name]))
         return st.theta[name], st.omega.get(name), st.epsilon.get(name)
 
-    def extremes(self) -> tuple | None:
+    def extremes(self) -> tuple[float, float] | None:
         """Crank angles (rad) where the output is at its largest and smallest coordinate (its
         dead centres), found to machine precision; None if the output turns fully or there is no
         output."""
         if "extremes" in self._cache:
-            return self._cache["extremes"]
+            return self._cache["extremes"]            # type: ignore[no-any-return]
         res = None
         if self.output is not None:
             res = self._find_extremes()
         self._cache["extremes"] = res
         return res
 
-    def _find_extremes(self):
+    def _find_extremes(self) -> tuple[float, float] | None:
         N = 720
         phi = np.linspace(0.0, TWO_PI, N, endpoint=False)
         try:
@@ -717,7 +738,7 @@ class Linkage:
             x = xn
         s3 = self.solve(x, level=0)
         c, _, _ = self._out_value(s3)
-        if self.output[0] == "link":
+        if self._output()[0] == "link":
             c = np.unwrap(c) if c.size > 1 else c
         i_max, i_min = int(np.argmax(c)), int(np.argmin(c))
         if i_max == i_min:
@@ -727,18 +748,18 @@ class Linkage:
     def strokes(self) -> Strokes | None:
         """The extreme positions of the output, the working and return crank angles and K."""
         if "strokes" in self._cache:
-            return self._cache["strokes"]
+            return self._cache["strokes"]             # type: ignore[no-any-return]
         ext = self.extremes()
         res = None
         if ext is not None:
             pa, pb = ext                           # coordinate max, min
             na, nb = "output at its largest coordinate", "output at its smallest coordinate"
-            if self.output[0] == "point":
+            if self._output()[0] == "point":
                 na, nb = "dead centre (slider at +guide end)", "dead centre (slider at −guide end)"
             t_ab = float(np.mod(self.sense * (pb - pa), TWO_PI))
             ws = self.working_stroke
             far_a = self._farther_at(pa, pb)
-            if ws in ("toward_crank", "away_from_crank") and self.output[0] == "point":
+            if ws in ("toward_crank", "away_from_crank") and self._output()[0] == "point":
                 start_a = far_a if ws == "toward_crank" else not far_a
             elif abs(t_ab - math.pi) < 1e-12:
                 start_a = far_a                    # equal strokes: start where the output is farther out
@@ -760,8 +781,8 @@ class Linkage:
     def _farther_at(self, pa: float, pb: float) -> bool:
         """Is the output's joint (the slider, or the rocker's moving joint) farther from the crank's
         centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)"""
-        kind, name = self.output
-        joint = name
+        kind, name = self._output()
+        joint: str | None = name
         if kind == "link":
             joint = next((g.outputs()[0][0] for g in self.groups if name in g.links), None)
         if joint is None:
@@ -777,9 +798,9 @@ class Linkage:
             st_ = self.strokes()
             assert st_ is not None, "only an output with a working stroke has ends"
             self._cache["ends"] = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
-        return self._cache["ends"]
+        return self._cache["ends"]                    # type: ignore[no-any-return]
 
-    def _output_s(self, mo: Motion):
+    def _output_s(self, mo: Motion) -> np.ndarray | None:
         if self.output is None or self.output[0] != "point" or mo.strokes is None:
             return None
         name = self.output[1]
@@ -788,18 +809,19 @@ class Linkage:
         u = complex(gx, gy)
         zs, ze = st.z[name]
         d = 1.0 if ((ze - zs) * u.conjugate()).real >= 0 else -1.0
-        return d * (((mo.z[name] - zs) * u.conjugate()).real)
+        s: np.ndarray = d * (((mo.z[name] - zs) * u.conjugate()).real)
+        return s
 
     def stroke_H(self) -> float | None:
         """The output slider's stroke H, m (None for a rocker output)."""
         st_ = self.strokes()
-        if st_ is None or self.output[0] != "point":
+        if st_ is None or self._output()[0] != "point":
             return None
         st = self._ends()
-        zs, ze = st.z[self.output[1]]
+        zs, ze = st.z[self._output()[1]]
         return float(abs(ze - zs))
 
-    def _output_psi(self, mo: Motion):
+    def _output_psi(self, mo: Motion) -> np.ndarray | None:
         if self.output is None or self.output[0] != "link" or mo.strokes is None:
             return None
         link = self.output[1]
@@ -813,17 +835,17 @@ class Linkage:
     def psi_max(self) -> float | None:
         """The output rocker's swing, rad (None for a slider output)."""
         st_ = self.strokes()
-        if st_ is None or self.output[0] != "link":
+        if st_ is None or self._output()[0] != "link":
             return None
         st = self._ends()
-        th_s, th_e = st.theta[self.output[1]]
+        th_s, th_e = st.theta[self._output()[1]]
         return float(abs(_wrap(th_e - th_s)))
 
 
 def _norm(a: npt.ArrayLike) -> Any:
     """Angle(s) in [0, 2π) (rad), −0 written 0: a float for a scalar, else a new array."""
-    a = np.mod(np.asarray(a, dtype=float), TWO_PI)
-    return np.where(a >= TWO_PI, 0.0, a) + 0.0
+    b = np.mod(np.asarray(a, dtype=float), TWO_PI)
+    return np.where(b >= TWO_PI, 0.0, b) + 0.0
 
 
 def _norm_in_place(a: np.ndarray) -> np.ndarray:

@@ -121,7 +121,8 @@ class Positions:
     stroke_direction: np.ndarray | None = None
     psi: np.ndarray | None = None
     psi_max: float | None = None
-    _geom: Mapping[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=lambda: MappingProxyType({}), repr=False, compare=False)
+    _geom: Mapping[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=lambda: MappingProxyType({}),
+                                                                repr=False, compare=False)
 
     # -- convenience ------------------------------------------------------------------
     @property
