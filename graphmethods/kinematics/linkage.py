@@ -490,13 +490,16 @@ class Linkage:
 
     def _fixed(self, n: int) -> tuple[dict[str, np.ndarray], np.ndarray]:
         """The fixed joints' positions and their zero velocity as read-only arrays (n,) (see
-        :func:`_constant`), kept for the last n below :data:`SHARED_FROM`."""
-        kept = self._cache.get("fixed")
-        if kept is None or kept[0] != n:
-            kept = n, {k: _constant(c, n) for k, c in self.ground.items()}, _constant(0j, n)
-            if n < SHARED_FROM:
-                self._cache["fixed"] = kept
-        return kept[1], kept[2]
+        :func:`_constant`), kept for up to 8 sizes below :data:`SHARED_FROM`."""
+        kept: dict[int, tuple[dict[str, np.ndarray], np.ndarray]] = self._cache.setdefault("fixed", {})
+        if n in kept:
+            return kept[n]
+        made = {k: _constant(c, n) for k, c in self.ground.items()}, _constant(0j, n)
+        if n < SHARED_FROM:
+            if len(kept) >= 8:
+                kept.clear()
+            kept[n] = made
+        return made
 
     def _velocities(self, st: State) -> None:
         """The velocities of every point and link after the crank's (v = v_O + ω × r on a link)."""
@@ -780,7 +783,14 @@ class Linkage:
 
     def _farther_at(self, pa: float, pb: float) -> bool:
         """Is the output's joint (the slider, or the rocker's moving joint) farther from the crank's
-        centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)"""
+        centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)
+        Kept per (pa, pb): the classic kinds ask it for the names of their extremes at every call."""
+        key = ("farther", pa, pb)
+        if key not in self._cache:
+            self._cache[key] = self._find_farther(pa, pb)
+        return bool(self._cache[key])
+
+    def _find_farther(self, pa: float, pb: float) -> bool:
         kind, name = self._output()
         joint: str | None = name
         if kind == "link":
