@@ -19,7 +19,7 @@ import statistics
 import subprocess
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
@@ -391,50 +391,102 @@ def bench_flywheel(m_values=M_VALUES, *, repeat=3, linkages=EXACT_LINKAGES) -> l
 
 
 # --------------------------------------------------------------------- kinematics
-def bench_kinematics(n=100_000, *, repeat=5) -> list[Row]:
-    """Velocity analogues from the constructed plans against the analytic derivative and against
-    central finite differences; and plans + reduction for n positions."""
-    import pathlib
+def classic_closed_form(kind: str, dims: Mapping[str, float], phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The output point of a classic kind written out by hand in real numpy arithmetic (no groups, no
+    complex numbers): its coordinates (n, 2), m, and its velocity analogue dX/dφ (n, 2), m/rad, for a
+    counterclockwise crank at angles ``phi`` (rad). Slider-crank B (O at the origin, guide y = e, B
+    ahead of A), four-bar B (O1 at the origin, O2 on +x, B left of A→O2), slotted lever B and shaper
+    C (O3 l_O1O3 below O1, ram C on y = y_guide ahead of B). ``dims`` are the problem file's.
 
+    >>> xy, d = classic_closed_form("slider_crank", {"r": 0.1, "l": 0.4, "e": 0.0}, np.array([0.0, np.pi / 2]))
+    >>> xy[0].tolist(), [round(float(x), 12) for x in d[1]]
+    ([0.5, 0.0], [-0.1, 0.0])
+    """
+    c, s = np.cos(phi), np.sin(phi)
+    if kind == "slider_crank":
+        r, l, e = dims["r"], dims["l"], dims.get("e", 0.0)
+        q = e - r * s                                   # height of the guide above A
+        w = np.sqrt(l * l - q * q)
+        return np.column_stack((r * c + w, np.full_like(phi, e))), np.column_stack((-r * s + q * r * c / w,
+                                                                                    np.zeros_like(phi)))
+    if kind == "four_bar":
+        l1, r, l3, l4 = dims["l1"], dims["l2"], dims["l3"], dims["l4"]
+        Ax, Ay = r * c, r * s
+        Dx, Dy = l1 - Ax, -Ay                           # A→O2
+        d2 = Dx * Dx + Dy * Dy
+        d = np.sqrt(d2)
+        a = (l3 * l3 - l4 * l4 + d2) / (2.0 * d)
+        h = np.sqrt(l3 * l3 - a * a)
+        Bx, By = Ax + (a * Dx - h * Dy) / d, Ay + (a * Dy + h * Dx) / d
+        px, py, qx, qy = Bx - Ax, By - Ay, Bx - l1, By
+        w3 = -(-Ay * px + Ax * py) / (px * qy - py * qx)    # v_A + ω2 × AB = ω3 × O2B, v_A = (−A_y, A_x)
+        return np.column_stack((Bx, By)), np.column_stack((-w3 * qy, w3 * qx))
+    if kind in ("slotted_lever", "shaper"):
+        r, h3, l3 = dims["r"], dims["l_O1O3"], dims["l_O3B"]
+        rx, ry = r * c, r * s + h3                      # O3→A
+        w3 = (rx * r * c + ry * r * s) / (rx * rx + ry * ry)   # ρ × v_A / ρ²
+        k = l3 / np.sqrt(rx * rx + ry * ry)
+        Bx, By = k * rx, k * ry - h3
+        vBx, vBy = -w3 * k * ry, w3 * k * rx
+        if kind == "slotted_lever":
+            return np.column_stack((Bx, By)), np.column_stack((vBx, vBy))
+        q = dims["y_guide"] - By
+        w = np.sqrt(dims["l_BC"] ** 2 - q * q)
+        return (np.column_stack((Bx + w, np.full_like(phi, dims["y_guide"]))),
+                np.column_stack((vBx + q * vBy / w, np.zeros_like(phi))))
+    raise ValueError(f"no closed form for {kind!r}")
+
+
+#: The output point of each classic kind that the kinematics rows compare.
+CLASSIC_POINT = {"slider_crank": "B", "four_bar": "B", "slotted_lever": "B", "shaper": "C"}
+
+
+def _classic_rows(case: Any, dims: Mapping[str, float], n: int, repeat: int) -> list[Row]:
+    """One classic problem's rows of :func:`bench_kinematics` (see there)."""
     from graphmethods.dynamics.reduction import reduced_inertia
+
+    mech, kind = case.mechanism, case.kind
+    point = CLASSIC_POINT[kind]
+    phi = mech.positions(m=n).phi[:-1]
+    xy_cf, d_cf = classic_closed_form(kind, dims, phi)
+    scale = float(np.abs(d_cf).max())
+    pos = mech.positions(phi=phi)
+    plans = mech.velocity_plans(pos)
+    err_pos = float(np.abs(pos.xy(point) - xy_cf).max()) / float(np.abs(xy_cf).max())
+    err_v = float(np.abs(plans.analogue(point) * mech.sense - d_cf).max()) / scale
+    pair = paired(lambda: mech.velocity_plans(mech.positions(phi=phi)), lambda: classic_closed_form(kind, dims, phi),
+                  repeat=repeat)
+    rows = [Row("kinematics", kind, "positions + velocity plans (core)", n, pair.a, max(err_pos, err_v),
+                note=f"point {point} against the hand-written closed form, max rel.", extra={"ratio": pair.ratio}),
+            Row("kinematics", kind, f"hand-written numpy closed form (point {point} only)", n, pair.b, None),
+            Row("kinematics", kind, "positions", n, median_time(lambda: mech.positions(phi=phi), repeat=repeat),
+                err_pos, note=f"point {point} against the closed form, max rel."),
+            Row("kinematics", kind, "velocity plans (construction), positions given", n,
+                median_time(lambda: mech.velocity_plans(pos), repeat=repeat), err_v,
+                note=f"v_{point} analogue against the closed form, max rel."),
+            Row("kinematics", kind, "positions + plans + J_e", n,
+                median_time(lambda: reduced_inertia(mech.velocity_plans(mech.positions(phi=phi)), case.inertias),
+                            repeat=repeat), None)]
+    for h in (1e-2, 1e-4, 1e-6, 1e-8):
+        def fd(h: float = h) -> np.ndarray:
+            return (mech.positions(phi=phi + h).xy(point) - mech.positions(phi=phi - h).xy(point)) / (2 * h)
+        rows.append(Row("kinematics", kind, f"central differences h = {h:g}", n, median_time(fd, repeat=repeat),
+                        float(np.abs(fd() - d_cf).max()) / scale, note=f"point {point} against the closed form"))
+    return rows
+
+
+def bench_kinematics(n: int = 100_000, *, repeat: int = 5) -> list[Row]:
+    """The four classic problems at n positions: positions and velocity plans by the core against the
+    output point written out by hand (:func:`classic_closed_form`), in interleaved pairs; the error of
+    positions, of the constructed plans and of central differences against that closed form; plans +
+    reduction (J_e)."""
     from graphmethods.kinematics import read_case
 
     data = pathlib.Path(__file__).parent / "problems" / "data"
     rows = []
     for fname in ("slider_crank_press.json", "four_bar_rocker.json", "slotted_lever.json", "shaper.json"):
-        case = read_case(data / fname)
-        mech = case.mechanism
-        phi = mech.positions(m=n).phi[:-1]
-        pos = mech.positions(phi=phi)
-        t_pos = median_time(lambda: mech.positions(phi=phi), repeat=repeat)
-        t_plan = median_time(lambda: mech.velocity_plans(pos), repeat=repeat)
-        plans = mech.velocity_plans(pos)
-        dxy, _ = mech.derivatives(phi)
-        worst = 0.0
-        for name, d in dxy.items():
-            if name not in plans.vectors:
-                continue
-            v = plans.analogue(name) * mech.sense
-            scale = float(np.abs(d).max()) or 1.0
-            worst = max(worst, float(np.abs(v - d).max()) / scale)
-        rows.append(Row("kinematics", case.kind, "positions", n, t_pos, None))
-        rows.append(Row("kinematics", case.kind, "velocity plans (construction), positions given", n, t_plan, worst,
-                        note="vs analytic derivative, max rel."))
-        t_red = median_time(lambda: reduced_inertia(mech.velocity_plans(mech.positions(phi=phi)), case.inertias),
-                            repeat=repeat)
-        rows.append(Row("kinematics", case.kind, "positions + plans + J_e", n, t_red, None))
-        point = {"slider_crank": "B", "four_bar": "B", "slotted_lever": "B", "shaper": "C"}[case.kind]
-        exact = dxy[point]
-        scale = float(np.abs(exact).max())
-        for h in (1e-2, 1e-4, 1e-6, 1e-8):
-            def fd(h=h):
-                up = mech.positions(phi=phi + h).xy(point)
-                dn = mech.positions(phi=phi - h).xy(point)
-                return (up - dn) / (2 * h)
-            t_fd = median_time(fd, repeat=repeat)
-            err = float(np.abs(fd() - exact).max()) / scale
-            rows.append(Row("kinematics", case.kind, f"central differences h = {h:g}", n, t_fd, err,
-                            note=f"point {point}"))
+        dims = json.loads((data / fname).read_text(encoding="utf-8"))
+        rows += _classic_rows(read_case(data / fname), dims, n, repeat)
     return rows
 
 
@@ -485,6 +537,31 @@ def six_bar_closed_form(phi, omega_1: float, epsilon_1: float, *, r=0.08, l_AB=0
             "omega_4": w4, "eps_4": e4}
 
 
+def slider_crank_closed_form(phi: np.ndarray, omega_1: float, epsilon_1: float, *, r: float = 0.1, l: float = 0.4,
+                             e: float = 0.02, l_AS2: float = 0.13) -> dict[str, Any]:
+    """The offset slider-crank press (the press problem file: crank O–A, rod A–B, slider B on y = e
+    ahead of A, S2 on AB) written out by hand in real numpy arithmetic: A, B, S2 with their velocities
+    and accelerations, ω and ε of the rod (2). Counterclockwise crank.
+
+    >>> out = slider_crank_closed_form(np.array([0.0]), 10.0, 0.0, e=0.0)
+    >>> float(out["B"][0][0]), float(out["a_B"][0])      # −ω²r(1 + r/l) at the far dead centre
+    (0.5, -12.5)
+    """
+    c, s = np.cos(phi), np.sin(phi)
+    Ax, Ay = r * c, r * s
+    vAx, vAy = -omega_1 * Ay, omega_1 * Ax
+    aAx, aAy = -epsilon_1 * Ay - omega_1**2 * Ax, epsilon_1 * Ax - omega_1**2 * Ay
+    q, qd, qdd = e - Ay, -vAy, -aAy                     # the guide's height above A and its derivatives
+    w = np.sqrt(l * l - q * q)
+    wd = -q * qd / w
+    wdd = -(qd * qd + q * qdd) / w - q * q * qd * qd / w**3
+    Bx, vB, aB = Ax + w, vAx + wd, aAx + wdd
+    k = l_AS2 / l
+    return {"A": (Ax, Ay), "B": (Bx, np.full_like(phi, e)), "v_B": vB, "a_B": aB,
+            "S2": (Ax + k * (Bx - Ax), Ay + k * q), "v_S2": (vAx + k * (vB - vAx), vAy - k * vAy),
+            "a_S2": (aAx + k * (aB - aAx), aAy - k * aAy), "omega_2": qd / w, "eps_2": (qdd * w - qd * wd) / (w * w)}
+
+
 def _peak_bytes(fn: Callable[[], object]) -> int:
     """Peak memory allocated while ``fn()`` runs (numpy reports its arrays to tracemalloc)."""
     import tracemalloc
@@ -500,45 +577,77 @@ def _peak_bytes(fn: Callable[[], object]) -> int:
 def _linkage_target(n: int, pair: Pair) -> tuple[str, bool | None]:
     """The core's targets against the closed form: a 12-position call's fixed cost (≤ 0.5 ms and
     ≤ 3× the closed form), and within 4× from 10⁴ positions up."""
-    if n <= 12:
+    if n <= 13:
         return "≤ 0.5 ms and ≤ 3× closed form", pair.a <= 5e-4 and pair.ratio <= 3.0
     if n >= 10**4:
         return "≤ 4× closed form", pair.ratio <= 4.0
     return "", None
 
 
-def bench_linkage(sizes=(12, 10**2, 10**4, 10**6), *, repeat=5) -> list[Row]:
-    """Positions, velocities and accelerations of the six-bar press by the core (the public
-    ``Linkage.motion``: Assur groups, frozen results) against the same linkage written out by hand in
-    numpy, in interleaved pairs; the error is the largest difference of D's position, velocity,
-    acceleration and the rocker's ω, ε, each relative to its maximum. At 10⁶ positions the peak
-    memory of both is compared too."""
-    from graphmethods.kinematics.presets import six_bar_press
+def _relative_error(pairs: Sequence[tuple[np.ndarray, np.ndarray]]) -> float:
+    """The largest difference of each (got, reference) pair relative to the reference's largest value."""
+    return max(float(np.abs(got - ref).max() / np.abs(ref).max()) for got, ref in pairs)
 
-    lk = six_bar_press()
-    rows = []
+
+def _six_bar_error(mo: Any, cf: Mapping[str, Any]) -> float:
+    return _relative_error([(mo.xy("D")[:, 0], cf["D"]), (mo.v("D")[:, 0], cf["v_D"]), (mo.a("D")[:, 0], cf["a_D"]),
+                            (mo.omega["3"], cf["omega_3"]), (mo.epsilon["3"], cf["eps_3"]),
+                            (mo.omega["4"], cf["omega_4"]), (mo.epsilon["4"], cf["eps_4"])])
+
+
+def _press_error(mo: Any, cf: Mapping[str, Any]) -> float:
+    return _relative_error([(mo.xy("B")[:, 0], cf["B"][0]), (mo.v("B")[:, 0], cf["v_B"]), (mo.a("B")[:, 0], cf["a_B"]),
+                            (mo.xy("S2")[:, 1], cf["S2"][1]), (mo.v("S2")[:, 0], cf["v_S2"][0]),
+                            (mo.a("S2")[:, 1], cf["a_S2"][1]), (mo.omega["2"], cf["omega_2"]),
+                            (mo.epsilon["2"], cf["eps_2"])])
+
+
+def _linkage_pair(case: str, call: str, lk: Any, kw: Mapping[str, Any], closed: Callable[[np.ndarray], Any],
+                  error: Callable[[Any, Any], float], repeat: int) -> list[Row]:
+    """The core's ``lk.motion(**kw)`` against ``closed`` at the same crank angles, in interleaved pairs."""
+    mo = lk.motion(**kw)                                # warm: strokes and caches are per linkage
+    phi = np.array(mo.phi)
+    n = phi.shape[0]
+    pair = paired(lambda: lk.motion(**kw), lambda: closed(phi), repeat=max(repeat, min(300, int(2e5 // n))))
+    target, holds = _linkage_target(n, pair)
+    return [Row("linkage", case, f"core: Linkage.motion({call}) (p + v + a)", n, pair.a, error(mo, closed(phi)),
+                note="vs hand-written closed form, max rel.", extra={"ratio": pair.ratio}, target=target, holds=holds),
+            Row("linkage", case, "hand-written numpy closed form", n, pair.b, None)]
+
+
+def bench_linkage(sizes: Sequence[int] = (12, 10**2, 10**4, 10**6), *, repeat: int = 5) -> list[Row]:
+    """Positions, velocities and accelerations by the core (the public ``Linkage.motion``: Assur groups,
+    frozen results) against the same linkage written out by hand in numpy, in interleaved pairs: the
+    six-bar press at n crank angles, and at 12 positions also the textbook call ``motion(m=12)`` (13
+    angles) of the six-bar and of the slider-crank press. The error is the largest difference of the
+    output's position, velocity and acceleration and of ω, ε, each relative to its maximum. At 10⁶
+    positions the peak memory of both is compared too."""
+    from graphmethods.kinematics.presets import six_bar_press
+    from graphmethods.problems import builtin
+
+    six = six_bar_press()
+    press = builtin.case("press").linkage
+    d = _press_data()
     w, e = 10.0, 3.0
+
+    def six_cf(phi: np.ndarray) -> Any:
+        return six_bar_closed_form(phi, w, e)
+
+    def press_cf(phi: np.ndarray) -> Any:
+        return slider_crank_closed_form(phi, w, e, r=d["r"], l=d["l"], e=d["e"], l_AS2=d["l_AS2"])
+
+    rows = []
     for n in sizes:
         phi = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-        rep = max(repeat, min(300, int(2e5 // n)))
-        lk.motion(phi=phi, omega_1=w, epsilon_1=e)           # warm: strokes and caches are per linkage
-        pair = paired(lambda: lk.motion(phi=phi, omega_1=w, epsilon_1=e), lambda: six_bar_closed_form(phi, w, e),
-                      repeat=rep)
-        mo = lk.motion(phi=phi, omega_1=w, epsilon_1=e)
-        cf = six_bar_closed_form(phi, w, e)
-        err = 0.0
-        for got, ref in ((mo.xy("D")[:, 0], cf["D"]), (mo.v("D")[:, 0], cf["v_D"]), (mo.a("D")[:, 0], cf["a_D"]),
-                         (mo.omega["3"], cf["omega_3"]), (mo.epsilon["3"], cf["eps_3"]),
-                         (mo.omega["4"], cf["omega_4"]), (mo.epsilon["4"], cf["eps_4"])):
-            err = max(err, float(np.abs(got - ref).max() / np.abs(ref).max()))
-        target, holds = _linkage_target(n, pair)
-        rows.append(Row("linkage", "six-bar press", "core: Linkage.motion (p + v + a)", n, pair.a, err,
-                        note="vs hand-written closed form, max rel.", extra={"ratio": pair.ratio},
-                        target=target, holds=holds))
-        rows.append(Row("linkage", "six-bar press", "hand-written numpy closed form", n, pair.b, None))
+        rows += _linkage_pair("six-bar press", "phi=", six, dict(phi=phi, omega_1=w, epsilon_1=e), six_cf,
+                              _six_bar_error, repeat)
+        if n == 12:
+            for case, lk, cf, err in (("six-bar press", six, six_cf, _six_bar_error),
+                                      ("slider-crank press", press, press_cf, _press_error)):
+                rows += _linkage_pair(case, "m=12", lk, dict(m=12, omega_1=w, epsilon_1=e), cf, err, repeat)
         if n >= 10**6:
-            core = _peak_bytes(lambda: lk.motion(phi=phi, omega_1=w, epsilon_1=e))
-            hand = _peak_bytes(lambda: six_bar_closed_form(phi, w, e))
+            core = _peak_bytes(lambda: six.motion(phi=phi, omega_1=w, epsilon_1=e))
+            hand = _peak_bytes(lambda: six_cf(phi))
             rows.append(Row("linkage", "six-bar press", "core: peak memory", n, None, None,
                             note=f"{core / 2**20:.0f} MiB against {hand / 2**20:.0f} MiB",
                             extra={"ratio": core / hand}, target="≤ 1.5× closed form", holds=core <= 1.5 * hand))

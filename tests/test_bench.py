@@ -3,6 +3,7 @@
 import importlib.util
 import json
 
+import numpy as np
 import pytest
 
 from graphmethods import bench
@@ -103,13 +104,35 @@ def test_markdown_shows_targets_and_whether_they_hold():
     assert "| target | holds |" in md and "| ≤ 2× | **no** |" in md and "| ≤ 3× | yes |" in md
 
 
-def test_kinematics_rows_agree_with_the_analytic_derivative():
-    rows = bench.bench_kinematics(n=2000, repeat=1)
+def test_kinematics_rows_agree_with_the_hand_written_closed_forms_and_pair_with_them():
+    rows = bench.bench_kinematics(n=2000, repeat=3)
     plans = [r for r in rows if r.method.startswith("velocity plans")]
     assert len(plans) == 4 and all(r.error < 1e-12 for r in plans)
-    assert len([r for r in rows if r.method == "positions"]) == 4
+    positions = [r for r in rows if r.method == "positions"]
+    assert len(positions) == 4 and all(r.error < 1e-12 for r in positions)
+    paired = [r for r in rows if r.method == "positions + velocity plans (core)"]
+    assert len(paired) == 4 and all(r.extra["ratio"] > 0 and r.error < 1e-12 for r in paired)
+    assert [r.method for r in rows].count("hand-written numpy closed form (point B only)") == 3
     fd = {r.method: r.error for r in rows if r.case == "slider_crank" and r.method.startswith("central")}
     assert fd["central differences h = 0.0001"] < fd["central differences h = 0.01"]
+
+
+def test_closed_forms_of_the_classic_kinds_are_not_the_core():
+    """A wrong closed form would show as a large error: the slider-crank's at another offset differs."""
+    phi = np.linspace(0.0, 6.0, 50)
+    xy, d = bench.classic_closed_form("slider_crank", {"r": 0.1, "l": 0.4, "e": 0.02}, phi)
+    xy0, d0 = bench.classic_closed_form("slider_crank", {"r": 0.1, "l": 0.4, "e": 0.0}, phi)
+    assert np.abs(d - d0).max() > 1e-3
+    h = 1e-6                                              # its velocity analogue is the derivative of its positions
+    up, _ = bench.classic_closed_form("shaper", SHAPER, phi + h)
+    dn, _ = bench.classic_closed_form("shaper", SHAPER, phi - h)
+    _, ds = bench.classic_closed_form("shaper", SHAPER, phi)
+    assert np.abs((up - dn) / (2 * h) - ds).max() < 1e-7
+    with pytest.raises(ValueError):
+        bench.classic_closed_form("cam", {}, phi)
+
+
+SHAPER = {"r": 0.11, "l_O1O3": 0.38, "l_O3B": 0.54, "l_BC": 0.135, "y_guide": 0.1484}
 
 
 def test_areas_numpy_and_shapely_agree():
@@ -147,12 +170,27 @@ def test_worksheet_rows_count_the_pages_and_compare_the_pdf_writers():
     assert rows[1].extra["speedup_vs_matplotlib"] == pytest.approx(rows[2].extra["ratio_to_ours"])
 
 
-def test_linkage_rows_core_equals_the_hand_written_six_bar_and_carry_their_targets():
+def test_linkage_rows_core_equals_the_hand_written_linkages_and_carry_their_targets():
     rows = bench.bench_linkage(sizes=(12, 10**4), repeat=3)
-    core = {r.size: r for r in rows if r.method.startswith("core")}
-    assert set(core) == {12, 10**4} and all(r.error < 1e-12 for r in core.values())
-    assert core[12].target.startswith("≤ 0.5 ms") and core[10**4].target == "≤ 4× closed form"
+    core = {(r.case, r.method, r.size): r for r in rows if r.method.startswith("core")}
+    assert set(core) == {("six-bar press", "core: Linkage.motion(phi=) (p + v + a)", 12),
+                         ("six-bar press", "core: Linkage.motion(m=12) (p + v + a)", 13),
+                         ("slider-crank press", "core: Linkage.motion(m=12) (p + v + a)", 13),
+                         ("six-bar press", "core: Linkage.motion(phi=) (p + v + a)", 10**4)}
+    assert all(r.error < 1e-12 and r.extra["ratio"] > 0 for r in core.values())
+    assert [r.target for r in core.values()].count("≤ 0.5 ms and ≤ 3× closed form") == 3
     assert all(isinstance(r.holds, bool) for r in core.values())
+    assert len([r for r in rows if r.method == "hand-written numpy closed form"]) == 4
+
+
+def test_the_press_closed_form_is_its_own_derivative():
+    phi = np.linspace(0.0, 6.0, 40)
+    h = 1e-5
+    up, dn = (bench.slider_crank_closed_form(phi + s, 1.0, 0.0) for s in (h, -h))
+    out = bench.slider_crank_closed_form(phi, 1.0, 0.0)
+    assert np.abs((up["B"][0] - dn["B"][0]) / (2 * h) - out["v_B"]).max() < 1e-8
+    assert np.abs((up["v_B"] - dn["v_B"]) / (2 * h) - out["a_B"]).max() < 1e-7
+    assert np.abs((up["omega_2"] - dn["omega_2"]) / (2 * h) - out["eps_2"]).max() < 1e-7
 
 
 def test_gallery_rows_name_the_slowest_and_the_label_share():

@@ -29,17 +29,19 @@ extreme positions found numerically to machine precision (:meth:`Linkage.strokes
 
 from __future__ import annotations
 
+import functools
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from graphmethods.errors import AssemblyError, InputError
-from graphmethods.kinematics.groups.base import GROUND, Group, State, check_length, fmt
-from graphmethods.kinematics.positions import Strokes
+from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, fmt
+from graphmethods.kinematics.positions import Strokes, at_extremes
 
 TWO_PI = 2.0 * math.pi
 
@@ -65,7 +67,7 @@ class Crank:
     r: float
     link: str = "1"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "r", check_length(f"crank {self.centre}{self.pin}", self.r))
 
 
@@ -85,12 +87,12 @@ class Point:
     distance: float
     angle: float = 0.0
 
-    @property
+    @functools.cached_property
     def offset(self) -> complex:
         """distance·e^(i·angle): the point from its origin in the link's own frame (x along the link)."""
         return self.distance * complex(math.cos(self.angle), math.sin(self.angle))
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "distance", check_length(f"point {self.name}: distance", self.distance,
                                                           positive=False))
         object.__setattr__(self, "angle", check_length(f"point {self.name}: angle", self.angle, positive=False))
@@ -106,7 +108,7 @@ class GroupInfo:
     kind: str
     cls: int
     order: int
-    links: tuple
+    links: tuple[str, ...]
 
 
 @dataclass(frozen=True)
@@ -129,7 +131,7 @@ class Structure:
         The highest class of its groups.
     """
 
-    groups: tuple
+    groups: tuple[GroupInfo, ...]
     formula: str
     n_moving: int
     p_lower: int
@@ -169,20 +171,20 @@ class Motion:
     strokes : Strokes or None
     """
 
-    linkage: Any
+    linkage: Linkage
     phi: np.ndarray
     phi_from_start: np.ndarray
     index: np.ndarray | None
     omega_1: float
     epsilon_1: float
-    points: tuple
+    points: tuple[str, ...]
     z: Mapping[str, np.ndarray]
     v_: Mapping[str, np.ndarray]
     a_: Mapping[str, np.ndarray]
     theta: Mapping[str, np.ndarray]
     omega: Mapping[str, np.ndarray]
     epsilon: Mapping[str, np.ndarray]
-    relative: Mapping[str, Mapping]
+    relative: Mapping[str, Mapping[str, Any]]
     conditioning: np.ndarray
     extreme: np.ndarray
     strokes: Strokes | None
@@ -192,7 +194,7 @@ class Motion:
     def n(self) -> int:
         return int(self.phi.shape[0])
 
-    def _get(self, table, name: str, what: str) -> np.ndarray:
+    def _get(self, table: Mapping[str, np.ndarray], name: str, what: str) -> np.ndarray:
         try:
             c = table[name]
         except KeyError:
@@ -211,18 +213,18 @@ class Motion:
         """Acceleration of ``name``, (n, 2), m/s²."""
         return self._get(self.a_, name, "acceleration")
 
-    def link(self, number) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def link(self, number: int | str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(θ, ω, ε) of link ``number`` (textbook number, ``"2"`` or 2)."""
         key = str(number)
         if key not in self.omega:
             raise InputError(f"no link {number!r}; links: {', '.join(self.omega)}")
         return self.theta[key], self.omega[key], self.epsilon[key]
 
-    def records(self) -> tuple:
+    def records(self) -> tuple[Record, ...]:
         """The construction records of every group's velocity and acceleration plans, in order."""
         out = []
         for g in self.linkage.groups:
-            out.extend(g.records(self._state))
+            out.extend(cast(Any, g).records(self._state))    # every dyad has records()
         return tuple(out)
 
     @property
@@ -264,9 +266,9 @@ class Linkage:
         Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
     """
 
-    def __init__(self, *, ground: Mapping, crank: Crank, groups: Sequence[Group] = (),
+    def __init__(self, *, ground: Mapping[str, tuple[float, float]], crank: Crank, groups: Sequence[Group] = (),
                  points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
-                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0):
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0) -> None:
         if isinstance(sense, bool) or sense not in (1, -1):
             raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
@@ -276,7 +278,7 @@ class Linkage:
         self._start = float(_norm(start))
         self.sense = int(sense)
         self.working_stroke = working_stroke
-        self.ground = {}
+        self.ground: dict[str, complex] = {}
         for k, xy in ground.items():
             try:
                 x, y = (float(c) for c in xy)
@@ -290,7 +292,7 @@ class Linkage:
         self.points = tuple(points)
         self._check_order()
         self.output = self._choose_output(output)
-        self._cache: dict = {}
+        self._cache: dict[Any, Any] = {}
 
     # ------------------------------------------------------------------ structure
     def _check_order(self) -> None:
@@ -309,9 +311,9 @@ class Linkage:
         dup = sorted({x for x in names if names.count(x) > 1})
         if dup:
             raise InputError(f"{self.name}: extra point {dup[0]!r} is given twice")
-        steps: list = []
+        steps: list[Any] = []                       # the dyads (their solving methods) and the points
 
-        def place():
+        def place() -> None:
             moved = True
             while moved:
                 moved = False
@@ -380,7 +382,7 @@ class Linkage:
         return Structure(groups=tuple(infos), formula=" → ".join(parts), n_moving=n, p_lower=p5, p_higher=0,
                          dof=3 * n - 2 * p5, mechanism_class=2 if self.groups else 1)
 
-    def _choose_output(self, output):
+    def _choose_output(self, output: str | None) -> tuple[str, str] | None:
         guides = self.guides
         if output is not None:
             output = str(output)
@@ -398,7 +400,7 @@ class Linkage:
         return None
 
     @staticmethod
-    def _group_sliders(g):
+    def _group_sliders(g: Group) -> Iterator[tuple[str, Guide]]:
         from graphmethods.kinematics.groups import PRP, RPP, RRP
         if isinstance(g, RRP) and g.guide.link == GROUND:
             yield g.C, g.guide
@@ -410,7 +412,7 @@ class Linkage:
                     yield g.C, gd
                     break
 
-    def _group_rockers(self, g):
+    def _group_rockers(self, g: Group) -> Iterator[tuple[str, str]]:
         from graphmethods.kinematics.groups import RPR, RRR
         if isinstance(g, RRR):
             if g.Q in self.ground:
@@ -439,16 +441,29 @@ class Linkage:
         return out
 
     # ------------------------------------------------------------------ solving
-    def solve(self, phi, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
-              labels=None) -> State:
+    def solve(self, phi: npt.ArrayLike, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
+              labels: np.ndarray | None = None) -> State:
         """Solve the linkage at crank angles ``phi`` (rad); level 0 positions, 1 + velocities,
-        2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`."""
-        phi = np.asarray(phi, dtype=float).reshape(-1)
+        2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`.
+
+        What is the same at every position is a read-only array (n,) that from
+        :data:`SHARED_FROM` positions up takes no memory per position (stride 0): the fixed joints'
+        positions, their zero velocities and accelerations, the crank's ω and ε. A read-only
+        ``phi`` is the crank's angle as it is (else a copy).
+
+        >>> from graphmethods.kinematics.presets import six_bar_press
+        >>> st = six_bar_press().solve([0.0, 1.0], omega_1=10.0)
+        >>> st.z["O2"].tolist(), st.omega["1"].tolist(), st.omega["1"].flags.writeable
+        ([(0.25+0.1j), (0.25+0.1j)], [10.0, 10.0], False)
+        """
+        phi = np.asarray(phi, dtype=float)
+        if phi.ndim != 1:
+            phi = phi.reshape(-1)
         n = phi.shape[0]
         st = State(phi=phi, labels=labels)
-        zero_c = np.zeros(n, dtype=complex)
-        for k, c in self.ground.items():
-            st.z[k] = np.full(n, c)          # one array per fixed joint (it is a point of the result)
+        fixed, zero_c = self._fixed(n)
+        for k, z in fixed.items():
+            st.z[k] = z                              # a point of the result, the same at every position
             st.v[k] = zero_c
             st.a[k] = zero_c
         cr = self.crank
@@ -456,7 +471,7 @@ class Linkage:
         Ep = self.sense * float(epsilon_1)
         e = np.exp(1j * phi)
         st.z[cr.pin] = st.z[cr.centre] + cr.r * e
-        st.theta[cr.link] = phi.copy()
+        st.theta[cr.link] = phi if not phi.flags.writeable else phi.copy()
         st.e[cr.link] = e
         for step in self._steps:
             if isinstance(step, Point):
@@ -464,40 +479,109 @@ class Linkage:
             else:
                 step.positions(st)
         if level >= 1:
-            st.omega[cr.link] = np.full(n, Om)
+            st.omega[cr.link] = _constant(Om, n)
             st.v[cr.pin] = 1j * Om * cr.r * e
-            for step in self._steps:
-                if isinstance(step, Point):
-                    r = st.z[step.name] - st.z[step.origin]
-                    st.v[step.name] = st.v[step.origin] + 1j * st.omega[step.link] * r
-                else:
-                    step.velocities(st)
+            self._velocities(st)
         if level >= 2:
-            st.epsilon[cr.link] = np.full(n, Ep)
+            st.epsilon[cr.link] = _constant(Ep, n)
             st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
-            for step in self._steps:
-                if isinstance(step, Point):
-                    r = st.z[step.name] - st.z[step.origin]
-                    w = st.omega[step.link]
-                    st.a[step.name] = st.a[step.origin] + (1j * st.epsilon[step.link] - w * w) * r
-                else:
-                    step.accelerations(st)
+            self._accelerations(st)
         return st
 
-    def _check_phi(self, values, name):
+    def _fixed(self, n: int) -> tuple[dict[str, np.ndarray], np.ndarray]:
+        """The fixed joints' positions and their zero velocity as read-only arrays (n,) (see
+        :func:`_constant`), kept for up to 8 sizes below :data:`SHARED_FROM`."""
+        kept: dict[int, tuple[dict[str, np.ndarray], np.ndarray]] = self._cache.setdefault("fixed", {})
+        if n in kept:
+            return kept[n]
+        made = {k: _constant(c, n) for k, c in self.ground.items()}, _constant(0j, n)
+        if n < SHARED_FROM:
+            if len(kept) >= 8:
+                kept.clear()
+            kept[n] = made
+        return made
+
+    def _velocities(self, st: State) -> None:
+        """The velocities of every point and link after the crank's (v = v_O + ω × r on a link)."""
+        for step in self._steps:
+            if isinstance(step, Point):
+                r = st.z[step.name] - st.z[step.origin]
+                st.v[step.name] = st.v[step.origin] + 1j * st.omega[step.link] * r
+            else:
+                step.velocities(st)
+
+    def _accelerations(self, st: State) -> None:
+        """The accelerations of every point and link after the crank's (a = a_O + ε × r − ω²·r)."""
+        for step in self._steps:
+            if isinstance(step, Point):
+                r = st.z[step.name] - st.z[step.origin]
+                w = st.omega[step.link]
+                st.a[step.name] = st.a[step.origin] + (1j * st.epsilon[step.link] - w * w) * r
+            else:
+                step.accelerations(st)
+
+    def _check_phi(self, values: npt.ArrayLike, name: str) -> np.ndarray:
+        """Crank angles (rad) as a new 1-D float array; InputError if empty or not finite."""
         try:
-            a = np.array(values, dtype=float).reshape(-1)
+            a = np.array(values, dtype=float)
         except (TypeError, ValueError):
             raise InputError(f"{name}: crank angles must be numbers in rad, got {values!r}") from None
+        if a.ndim != 1:
+            a = a.reshape(-1)
         if a.size == 0:
             raise InputError(f"{name}: give at least one crank angle")
-        bad = ~np.isfinite(a)
-        if bad.any():
+        if np.count_nonzero(np.isfinite(a)) != a.size:
+            bad = ~np.isfinite(a)
             raise InputError(f"{name}: angle #{int(np.argmax(bad))} is {a[bad][0]!r}; angles must be finite (rad)")
         return a
 
-    def motion(self, m: int | None = None, *, phi=None, phi_from_start=None, omega_1: float = 1.0,
-               epsilon_1: float = 0.0, level: int = 2) -> Motion:
+    def _crank_angles(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
+                      start: float) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        """(φ from +x, rotation from position 0, position numbers or None) for :meth:`motion`: new
+        arrays, read-only."""
+        labels = None
+        if phi is None and phi_from_start is None:
+            m = 12 if m is None else m
+            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
+                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
+            m = int(m)
+            self.check_full_turn()
+            labels = np.arange(m + 1)
+            tr = (TWO_PI / m) * labels
+            tr[m] = TWO_PI
+            ang = _norm_in_place(np.multiply(tr, self.sense) + start)
+            ang[m] = ang[0]
+        elif phi_from_start is not None:
+            tr = self._check_phi(phi_from_start, "phi_from_start")
+            ang = _norm_in_place(np.multiply(tr, self.sense) + start)
+        else:
+            assert phi is not None
+            ang = self._check_phi(phi, "phi")
+            tr = ang - start
+            if self.sense < 0:
+                np.negative(tr, out=tr)
+            np.mod(tr, TWO_PI, out=tr)
+            np.putmask(tr, tr > TWO_PI - 1e-13, 0.0)
+        return _freeze(ang), _freeze(tr), None if labels is None else _freeze(labels)
+
+    def _grid(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
+              strokes: Strokes | None) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]:
+        """(φ, rotation from position 0, position numbers or None, at an extreme) for :meth:`motion`,
+        read-only; the grid of m equal steps is kept per m (up to :data:`SHARED_FROM` positions), as
+        a course asks for the same 12 positions again and again."""
+        key = ("grid", m) if phi is None and phi_from_start is None else None
+        if key in self._cache:
+            return self._cache[key]                 # type: ignore[no-any-return]
+        start = strokes.phi_start if strokes is not None else self._default_start()
+        ang, tr, labels = self._crank_angles(m, phi, phi_from_start, start)
+        grid = ang, tr, labels, _freeze(at_extremes(ang, strokes))   # before solving: adds to no peak
+        if key is not None and ang.shape[0] < SHARED_FROM:
+            self._cache[key] = grid
+        return grid
+
+    def motion(self, m: int | None = None, *, phi: npt.ArrayLike | None = None,
+               phi_from_start: npt.ArrayLike | None = None, omega_1: float = 1.0, epsilon_1: float = 0.0,
+               level: int = 2) -> Motion:
         """The linkage at m + 1 positions 0…m (or at given crank angles), with velocities and
         accelerations.
 
@@ -520,52 +604,35 @@ class Linkage:
         ------
         AssemblyError
             A position where a group cannot be assembled or is at a toggle (named).
+
+        Examples
+        --------
+        >>> from graphmethods.kinematics.presets import six_bar_press
+        >>> mo = six_bar_press().motion(m=12, omega_1=10.0)
+        >>> mo.n, int(mo.index[-1]), bool(mo.extreme[0]), float(mo.v("D")[0, 0])
+        (13, 12, True, 0.0)
         """
         for nm, val, pos in (("omega_1", omega_1, True), ("epsilon_1", epsilon_1, False)):
             if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)) \
                     or not math.isfinite(val) or (pos and val <= 0):
                 raise InputError(f"{nm} must be a finite number{' > 0 (rad/s)' if pos else ' (rad/s²)'}, got {val!r}")
-        if sum(x is not None for x in (m, phi, phi_from_start)) > 1:
+        if (m is not None) + (phi is not None) + (phi_from_start is not None) > 1:
             raise InputError("give only one of m, phi or phi_from_start")
         strokes = self.strokes()
-        start = strokes.phi_start if strokes is not None else self._default_start()
-        labels = None
-        if phi is None and phi_from_start is None:
-            m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
-            self.check_full_turn()
-            k = np.arange(m + 1)
-            tr = (TWO_PI / m) * k
-            tr[m] = TWO_PI
-            ang = _norm(start + self.sense * tr)
-            ang[m] = ang[0]
-            labels = k
-        elif phi_from_start is not None:
-            tr = self._check_phi(phi_from_start, "phi_from_start")
-            ang = _norm(start + self.sense * tr)
-        else:
-            ang = self._check_phi(phi, "phi")
-            tr = np.mod(self.sense * (ang - start), TWO_PI)
-            tr = np.where(tr > TWO_PI - 1e-13, 0.0, tr)
+        ang, tr, labels, extreme = self._grid(m, phi, phi_from_start, strokes)
         st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)
-        extreme = np.zeros(ang.shape[0], dtype=bool)
         if strokes is not None:
-            for ph in (strokes.phi_start, strokes.phi_end):
-                extreme |= np.abs(np.mod(ang - ph + math.pi, TWO_PI) - math.pi) <= 1e-13
             self._snap(st, extreme)
-        cond = np.minimum.reduce(list(st.conditioning.values())) if st.conditioning else np.ones(ang.shape[0])
         ro = MappingProxyType
-        return Motion(linkage=self, phi=_ro(ang), phi_from_start=_ro(np.asarray(tr, dtype=float)),
-                      index=None if labels is None else _ro(labels), omega_1=float(omega_1),
+        return Motion(linkage=self, phi=ang, phi_from_start=tr, index=labels, omega_1=float(omega_1),
                       epsilon_1=float(epsilon_1), points=tuple(st.z), z=ro(st.z), v_=ro(st.v), a_=ro(st.a),
                       theta=ro(st.theta), omega=ro(st.omega), epsilon=ro(st.epsilon), relative=ro(st.relative),
-                      conditioning=_ro(cond), extreme=_ro(extreme), strokes=strokes, _state=st)
+                      conditioning=_freeze(_smallest(st.conditioning, ang.shape[0])), extreme=extreme,
+                      strokes=strokes, _state=st)
 
     def _snap(self, st: State, mask: np.ndarray) -> None:
         """At the extreme positions the output stands still exactly (as the plan draws it)."""
-        if not mask.any() or self.output is None:
+        if not np.count_nonzero(mask) or self.output is None:
             return
         kind, name = self.output
         if kind == "point":
@@ -575,6 +642,11 @@ class Linkage:
             st.omega[name] = np.where(mask, 0.0, st.omega[name])
 
     # ------------------------------------------------------------------ full turn, extremes
+    def _output(self) -> tuple[str, str]:
+        """The output, (``"point"``, name) or (``"link"``, number), where one is known to exist."""
+        assert self.output is not None, f"{self.name}: no output (neither a slider on the frame nor a rocker)"
+        return self.output
+
     def _default_start(self) -> float:
         return self._start
 
@@ -591,7 +663,9 @@ class Linkage:
             i = int(np.argmin(mg))
             # refine the smallest margin between its neighbours (golden section)
             lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
-            f = lambda x, g=g: float(g.margin(self.solve(np.array([x]), level=0))[0])  # noqa: E731
+            def f(x: float, g: Group = g) -> float:
+                return float(g.margin(self.solve(np.array([x]), level=0))[0])
+
             gr = (math.sqrt(5) - 1) / 2
             for _ in range(80):
                 a = hi - gr * (hi - lo)
@@ -607,29 +681,32 @@ class Linkage:
                                     f"the assembly would jump; change the lengths or study the range with phi=")
         self._cache["full_turn"] = True
 
-    def _out_value(self, st: State):
+    def _out_value(self, st: State) -> tuple[Any, Any, Any]:
         """(coordinate, its derivative, its second derivative) of the output over the positions."""
-        kind, name = self.output
+        kind, name = self._output()
         if kind == "point":
             gx, gy = self.guides[name]
             u = complex(gx, gy)
-            c = lambda z: z.real * u.real + z.imag * u.imag  # noqa: E731
+
+            def c(z: Any) -> Any:
+                return z.real * u.real + z.imag * u.imag
+
             return c(st.z[name]), c(st.v.get(name, st.z[name])), c(st.a.get(name, st.z[name]))
         return st.theta[name], st.omega.get(name), st.epsilon.get(name)
 
-    def extremes(self) -> tuple | None:
+    def extremes(self) -> tuple[float, float] | None:
         """Crank angles (rad) where the output is at its largest and smallest coordinate (its
         dead centres), found to machine precision; None if the output turns fully or there is no
         output."""
         if "extremes" in self._cache:
-            return self._cache["extremes"]
+            return self._cache["extremes"]            # type: ignore[no-any-return]
         res = None
         if self.output is not None:
             res = self._find_extremes()
         self._cache["extremes"] = res
         return res
 
-    def _find_extremes(self):
+    def _find_extremes(self) -> tuple[float, float] | None:
         N = 720
         phi = np.linspace(0.0, TWO_PI, N, endpoint=False)
         try:
@@ -664,7 +741,7 @@ class Linkage:
             x = xn
         s3 = self.solve(x, level=0)
         c, _, _ = self._out_value(s3)
-        if self.output[0] == "link":
+        if self._output()[0] == "link":
             c = np.unwrap(c) if c.size > 1 else c
         i_max, i_min = int(np.argmax(c)), int(np.argmin(c))
         if i_max == i_min:
@@ -674,18 +751,18 @@ class Linkage:
     def strokes(self) -> Strokes | None:
         """The extreme positions of the output, the working and return crank angles and K."""
         if "strokes" in self._cache:
-            return self._cache["strokes"]
+            return self._cache["strokes"]             # type: ignore[no-any-return]
         ext = self.extremes()
         res = None
         if ext is not None:
             pa, pb = ext                           # coordinate max, min
             na, nb = "output at its largest coordinate", "output at its smallest coordinate"
-            if self.output[0] == "point":
+            if self._output()[0] == "point":
                 na, nb = "dead centre (slider at +guide end)", "dead centre (slider at −guide end)"
             t_ab = float(np.mod(self.sense * (pb - pa), TWO_PI))
             ws = self.working_stroke
             far_a = self._farther_at(pa, pb)
-            if ws in ("toward_crank", "away_from_crank") and self.output[0] == "point":
+            if ws in ("toward_crank", "away_from_crank") and self._output()[0] == "point":
                 start_a = far_a if ws == "toward_crank" else not far_a
             elif abs(t_ab - math.pi) < 1e-12:
                 start_a = far_a                    # equal strokes: start where the output is farther out
@@ -706,9 +783,16 @@ class Linkage:
 
     def _farther_at(self, pa: float, pb: float) -> bool:
         """Is the output's joint (the slider, or the rocker's moving joint) farther from the crank's
-        centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)"""
-        kind, name = self.output
-        joint = name
+        centre at crank angle ``pa`` than at ``pb``? (the far dead centre, crank and coupler extended)
+        Kept per (pa, pb): the classic kinds ask it for the names of their extremes at every call."""
+        key = ("farther", pa, pb)
+        if key not in self._cache:
+            self._cache[key] = self._find_farther(pa, pb)
+        return bool(self._cache[key])
+
+    def _find_farther(self, pa: float, pb: float) -> bool:
+        kind, name = self._output()
+        joint: str | None = name
         if kind == "link":
             joint = next((g.outputs()[0][0] for g in self.groups if name in g.links), None)
         if joint is None:
@@ -724,9 +808,9 @@ class Linkage:
             st_ = self.strokes()
             assert st_ is not None, "only an output with a working stroke has ends"
             self._cache["ends"] = self.solve(np.array([st_.phi_start, st_.phi_end]), level=0)
-        return self._cache["ends"]
+        return self._cache["ends"]                    # type: ignore[no-any-return]
 
-    def _output_s(self, mo: Motion):
+    def _output_s(self, mo: Motion) -> np.ndarray | None:
         if self.output is None or self.output[0] != "point" or mo.strokes is None:
             return None
         name = self.output[1]
@@ -735,18 +819,19 @@ class Linkage:
         u = complex(gx, gy)
         zs, ze = st.z[name]
         d = 1.0 if ((ze - zs) * u.conjugate()).real >= 0 else -1.0
-        return d * (((mo.z[name] - zs) * u.conjugate()).real)
+        s: np.ndarray = d * (((mo.z[name] - zs) * u.conjugate()).real)
+        return s
 
     def stroke_H(self) -> float | None:
         """The output slider's stroke H, m (None for a rocker output)."""
         st_ = self.strokes()
-        if st_ is None or self.output[0] != "point":
+        if st_ is None or self._output()[0] != "point":
             return None
         st = self._ends()
-        zs, ze = st.z[self.output[1]]
+        zs, ze = st.z[self._output()[1]]
         return float(abs(ze - zs))
 
-    def _output_psi(self, mo: Motion):
+    def _output_psi(self, mo: Motion) -> np.ndarray | None:
         if self.output is None or self.output[0] != "link" or mo.strokes is None:
             return None
         link = self.output[1]
@@ -760,26 +845,64 @@ class Linkage:
     def psi_max(self) -> float | None:
         """The output rocker's swing, rad (None for a slider output)."""
         st_ = self.strokes()
-        if st_ is None or self.output[0] != "link":
+        if st_ is None or self._output()[0] != "link":
             return None
         st = self._ends()
-        th_s, th_e = st.theta[self.output[1]]
+        th_s, th_e = st.theta[self._output()[1]]
         return float(abs(_wrap(th_e - th_s)))
 
 
-def _norm(a):
-    a = np.mod(np.asarray(a, dtype=float), TWO_PI)
-    return np.where(a >= TWO_PI, 0.0, a) + 0.0
+def _norm(a: npt.ArrayLike) -> Any:
+    """Angle(s) in [0, 2π) (rad), −0 written 0: a float for a scalar, else a new array."""
+    b = np.mod(np.asarray(a, dtype=float), TWO_PI)
+    return np.where(b >= TWO_PI, 0.0, b) + 0.0
 
 
-def _wrap(a):
+def _norm_in_place(a: np.ndarray) -> np.ndarray:
+    """:func:`_norm` of a new float array, in place (no temporaries)."""
+    np.mod(a, TWO_PI, out=a)
+    np.putmask(a, a >= TWO_PI, 0.0)
+    a += 0.0
+    return a
+
+
+def _wrap(a: npt.ArrayLike) -> Any:
+    """Angle(s) in [−π, π) (rad)."""
     return np.mod(np.asarray(a, dtype=float) + np.pi, TWO_PI) - np.pi
 
 
-def _ro(a: np.ndarray) -> np.ndarray:
-    a = np.array(a)
+#: From this many positions up, a value the same at every position is one number seen n times
+#: (stride 0); below, a filled array is quicker to make.
+SHARED_FROM = 4096
+
+
+def _constant(value: complex | float, n: int) -> np.ndarray:
+    """A read-only array (n,) of ``value`` (complex or float): see :data:`SHARED_FROM`."""
+    if n >= SHARED_FROM:
+        return np.broadcast_to(value, (n,))
+    a = np.empty(n, dtype=complex if isinstance(value, complex) else float)
+    a.fill(value)
     a.flags.writeable = False
     return a
+
+
+def _freeze(a: np.ndarray) -> np.ndarray:
+    """Make a new array of ours read-only in place (no copy) and return it."""
+    a.flags.writeable = False
+    return a
+
+
+def _smallest(values: Mapping[str, np.ndarray], n: int) -> np.ndarray:
+    """The groups' conditioning, position by position the smallest (a new array; ones with no group)."""
+    arrays = list(values.values())
+    if not arrays:
+        return np.ones(n)
+    if len(arrays) == 1:
+        return np.array(arrays[0])
+    out: np.ndarray = np.minimum(arrays[0], arrays[1])
+    for a in arrays[2:]:
+        np.minimum(out, a, out=out)
+    return out
 
 
 __all__ = ["Crank", "GroupInfo", "Linkage", "Motion", "Point", "Structure", "fmt"]

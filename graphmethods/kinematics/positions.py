@@ -121,7 +121,8 @@ class Positions:
     stroke_direction: np.ndarray | None = None
     psi: np.ndarray | None = None
     psi_max: float | None = None
-    _geom: Mapping[str, tuple] = field(default_factory=lambda: MappingProxyType({}), repr=False, compare=False)
+    _geom: Mapping[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=lambda: MappingProxyType({}),
+                                                                repr=False, compare=False)
 
     # -- convenience ------------------------------------------------------------------
     @property
@@ -161,40 +162,74 @@ class Positions:
             raise InputError(f"no point {name!r} in this linkage; known points: {', '.join(self.coords)}") from None
 
 
-def build_positions(mech, phi: np.ndarray, *, m: int | None, phi_start: float, strokes: Strokes | None,
-                    geom: dict[str, tuple], theta: dict[str, np.ndarray], phi_from_start: np.ndarray | None = None,
-                    output: dict | None = None) -> Positions:
-    """Assemble a frozen :class:`Positions` (used by the mechanisms; not public API)."""
+def at_extremes(phi: np.ndarray, strokes: Strokes | None, *, tol: float = 1e-13) -> np.ndarray:
+    """True where the crank angle φ (rad) is within ``tol`` rad of an extreme position of ``strokes``.
+
+    Returns a new bool array (n,) (all False without strokes); its one temporary is (2, n).
+
+    >>> s = Strokes(phi_start=0.0, phi_end=math.pi, working_angle=math.pi, return_angle=math.pi, K=1.0,
+    ...             start_name="far", end_name="near")
+    >>> at_extremes(np.array([0.0, 1.0, math.pi, 2 * math.pi - 1e-14]), s).tolist()
+    [True, False, True, True]
+    """
+    n = phi.shape[0]
+    if strokes is None:
+        return np.zeros(n, dtype=bool)
+    d = np.empty((2, n))
+    np.subtract(phi, np.array([[strokes.phi_start], [strokes.phi_end]]), out=d)
+    d += math.pi
+    np.mod(d, 2.0 * math.pi, out=d)
+    d -= math.pi
+    np.abs(d, out=d)
+    out: np.ndarray = np.minimum(d[0], d[1], out=d[0]) <= tol
+    return out
+
+
+def _working(phi: np.ndarray, sense: int, strokes: Strokes, tol: float) -> np.ndarray:
+    """True where φ (rad) is on the working stroke, its ends included (a new bool array)."""
+    tr = phi - strokes.phi_start
+    if sense < 0:
+        np.negative(tr, out=tr)
+    np.mod(tr, 2.0 * math.pi, out=tr)
+    out: np.ndarray = (tr <= strokes.working_angle + tol) | (tr >= 2.0 * math.pi - tol)
+    return out
+
+
+def _own(a: Any) -> np.ndarray:
+    """``a`` as a read-only float array: frozen in place when it is a float array of its own (not a
+    view), else a frozen copy. :func:`build_positions` is handed new arrays, so it copies none."""
+    if isinstance(a, np.ndarray) and a.dtype == np.float64 and a.base is None and a.flags.owndata:
+        a.flags.writeable = False
+        return a
+    return _ro(np.array(a, dtype=float))
+
+
+def build_positions(mech: Any, phi: np.ndarray, *, m: int | None, phi_start: float, strokes: Strokes | None,
+                    geom: Mapping[str, tuple[np.ndarray, np.ndarray]], theta: Mapping[str, np.ndarray],
+                    phi_from_start: np.ndarray | None = None, output: Mapping[str, Any] | None = None) -> Positions:
+    """Assemble a frozen :class:`Positions` (used by the mechanisms; not public API).
+
+    The arrays given (``phi``, ``phi_from_start``, ``theta``, ``output``) become the result's own
+    and are made read-only in place: pass new arrays (views and other dtypes are copied).
+    """
     n = phi.shape[0]
     sense = mech.sense
+    tol = 1e-13
     if phi_from_start is None:
         phi_from_start = np.mod(sense * (phi - phi_start), 2.0 * math.pi)
-        phi_from_start = np.where(phi_from_start > 2.0 * math.pi - 1e-13, 0.0, phi_from_start)
-    tol = 1e-13
-    if strokes is not None:
-        d0 = np.abs(np.mod(phi - strokes.phi_start + math.pi, 2.0 * math.pi) - math.pi)
-        d1 = np.abs(np.mod(phi - strokes.phi_end + math.pi, 2.0 * math.pi) - math.pi)
-        extreme = (d0 <= tol) | (d1 <= tol)
-        tr = np.mod(sense * (phi - strokes.phi_start), 2.0 * math.pi)
-        working = (tr <= strokes.working_angle + tol) | (tr >= 2.0 * math.pi - tol)
-        working = _ro(working)
-    else:
-        extreme = np.zeros(n, dtype=bool)
-        working = None
-    index = None
-    if m is not None:
-        index = _ro(np.arange(n))
+        phi_from_start = np.where(phi_from_start > 2.0 * math.pi - tol, 0.0, phi_from_start)
+    working = None if strokes is None else _ro(_working(phi, sense, strokes, tol))
+    extreme = _ro(at_extremes(phi, strokes, tol=tol))
+    index = None if m is None else _ro(np.arange(n))
     coords = {}
     for name, (x, y) in geom.items():
         c = np.empty((n, 2))
         c[:, 0] = x
         c[:, 1] = y
         coords[name] = _ro(c)
-    out: dict[str, Any] = {k: (_ro(np.array(v, dtype=float)) if isinstance(v, np.ndarray) else v)
-                           for k, v in (output or {}).items()}
+    out: dict[str, Any] = {k: (_own(v) if isinstance(v, np.ndarray) else v) for k, v in (output or {}).items()}
     return Positions(
-        mechanism=mech, phi=_ro(np.array(phi, dtype=float)), phi_from_start=_ro(np.array(phi_from_start, dtype=float)),
-        m=m, index=index, strokes=strokes, extreme=_ro(extreme), working=working,
-        coords=MappingProxyType(coords), theta=MappingProxyType({k: _ro(np.array(v, dtype=float)) for k, v in theta.items()}),
-        _geom=MappingProxyType(geom), **out,
+        mechanism=mech, phi=_own(phi), phi_from_start=_own(phi_from_start), m=m, index=index, strokes=strokes,
+        extreme=extreme, working=working, coords=MappingProxyType(coords),
+        theta=MappingProxyType({k: _own(v) for k, v in theta.items()}), _geom=MappingProxyType(dict(geom)), **out,
     )

@@ -126,7 +126,8 @@ def six_bar_press(*, l_O1A: float = 0.08, l_AB: float = 0.30, l_O2B: float = 0.2
     g1 = RRR(P="A", Q="O2", C="B", l_PC=l_AB, l_QC=l_O2B, links=("2", "3"), branch=1)
     g2 = RRP(P="C", C="D", l=l_CD, guide=Guide(GROUND, complex(*guide_through), guide_angle), links=("4", "5"),
              branch=assembly)
-    return Linkage(ground={"O1": (0.0, 0.0), "O2": tuple(O2)}, crank=Crank("O1", "A", r=l_O1A), groups=[g1, g2],
+    return Linkage(ground={"O1": (0.0, 0.0), "O2": (float(O2[0]), float(O2[1]))}, crank=Crank("O1", "A", r=l_O1A),
+                   groups=[g1, g2],
                    points=[Point("C", "3", "O2", l_O2C, C_angle)] + _points(
                        points, {"O1A": ("1", "O1", "A", 0.0), "AB": ("2", "A", "B", 0.0), "O2B": ("3", "O2", "B", 0.0),
                                 "CD": ("4", "C", "D", 0.0)}),

@@ -100,8 +100,8 @@ def solve2(e1: Vec, e2: Vec, rhs: Vec) -> tuple[FloatArray, FloatArray, FloatArr
     Returns ``(x, y, det)`` with ``det = e1 × e2``; where det is 0 the values are not finite
     (callers check ``det`` first).
     """
-    det = cross(e1, e2)
-    if det.all():
+    det = np.asarray(cross(e1, e2))
+    if np.count_nonzero(det) == det.size:         # every position solvable (as det.all(), without its wrapper)
         return cross(rhs, e2) / det, cross(e1, rhs) / det, det
     with np.errstate(divide="ignore", invalid="ignore"):
         x = cross(rhs, e2) / det
@@ -377,14 +377,14 @@ class Group:
 
     def fail(self, st: State, bad: NDArray[np.bool_], why: Callable[[int], str]) -> None:
         """Raise AssemblyError at the first position where ``bad`` holds; ``why(i)`` explains it."""
-        if bad.any():
+        if np.count_nonzero(bad):
             i = int(np.argmax(bad))
             raise AssemblyError(f"group {self.name}: cannot be assembled at {st.where(i)}: {why(i)}")
 
     def check_det(self, st: State, det: FloatArray, what: str) -> None:
         """Refuse a position where the two construction lines are exactly parallel (a toggle)."""
         det = np.asarray(det)
-        if det.all():
+        if np.count_nonzero(det) == det.size:
             return
         bad = (det == 0.0) | ~np.isfinite(det)
         if bad.any():
