@@ -35,19 +35,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
-from graphmethods.scene import (
-    Frame,
-    Line,
-    Point,
-    Scale,
-    Scene,
-    Table,
-    Text,
-    Vector,
-    in_language,
-    markup,
-    notation as get_notation,
-)
+from graphmethods.scene import Frame, Line, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.primitives import DASHED, Style
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -57,42 +45,6 @@ SMALL_MM = K.SMALL_MM
 TABLE_MM = K.TABLE_MM
 LINE_STYLE = DASHED
 CELL = Style(width_mm=0.18)
-
-#: words of these figures (en, ru, zh); the notation profiles lack them
-WORDS = {
-    "plan":     ("Acceleration plan, position {k}", "План ускорений, положение {k}", "加速度多边形（位置{k}）"),
-    "plans":    ("Acceleration plans", "Планы ускорений", "加速度多边形"),
-    "table":    ("Accelerations per position", "Ускорения точек и звеньев по положениям", "各位置的加速度"),
-    "value":    ("Acceleration", "Ускорение", "加速度"),
-    "legend":   ("solid: known component, dashed: direction known, found by construction",
-                 "сплошные — известные составляющие, штриховые — найденные построением",
-                 "实线：已知分量；虚线：作图求得"),
-    "speed":    ("ω_1 = {w} rad/s, ε_1 = {e} rad/s²", "ω_1 = {w} рад/с, ε_1 = {e} рад/с²",
-                 "ω_1 = {w} rad/s，ε_1 = {e} rad/s²"),
-    "toward":   ("toward {c}", "к {c}", "指向 {c}"),
-    "turned":   ("v_{{{rel}}} turned 90° in the sense of ω_{{{n}}}", "v_{{{rel}}}, повёрнутая на 90° по ω_{{{n}}}",
-                 "v_{{{rel}}} 沿 ω_{{{n}}} 方向转 90°"),
-    "off":      ("off the scale", "вне масштаба", "超出比例"),
-    "eps_note": ("ε from the tangential components: ε = a^τ/l", "ε по касательным составляющим: ε = a^τ/l",
-                 "由切向分量求 ε：ε = a^τ/l"),
-    "phi_from": ("φ from position 0", "φ от положения 0", "φ 自位置0起"),
-    "signed":   ("slider accelerations signed along +x of the guide; others are magnitudes",
-                 "ускорения ползунов со знаком по оси x направляющей; остальные — модули",
-                 "滑块加速度沿导路 +x 方向为正，其余为大小"),
-}
-
-_UNITS = {"m/s²": ("m/s²", "м/с²", "m/s²"), "(m/s²)": ("(m/s²)", "(м/с²)", "(m/s²)"),
-          "rad/s²": ("rad/s²", "рад/с²", "rad/s²"), "rad/s": ("rad/s", "рад/с", "rad/s"),
-          "m/s": ("m/s", "м/с", "m/s"), "m": ("m", "м", "m")}
-
-
-def _word(nt, key: str, **kw) -> str:
-    return in_language(WORDS[key], nt, **kw)
-
-
-def _unit(nt, unit: str) -> str:
-    return in_language(_UNITS[unit], nt)
-
 
 _SYM = re.compile(r"^(a(?:\^[nτkr])?)_(\w+)$")
 
@@ -157,11 +109,11 @@ class _Problem:
         return acceleration_plans(self.linkage, m=int(self.m), omega_1=self.omega_1, epsilon_1=self.epsilon_1)
 
     def speed_text(self, nt) -> str:
-        return _word(nt, "speed", w=nt.number(self.omega_1, sig=4), e=nt.number(self.epsilon_1, sig=4))
+        return nt.word("acceleration.speed", w=nt.number(self.omega_1, sig=4), e=nt.number(self.epsilon_1, sig=4))
 
 
 def _pick_mu_a(mu_a, need: float, *, what: str, nt) -> Scale:
-    unit = _unit(nt, "(m/s²)")
+    unit = nt.unit("(m/s²)")
     if mu_a is None:
         per = convenient_at_least(need)
         return Scale("μ_a", unit, per, note=f"picked: {what} needs ≥ {need:.4g} (m/s²)/mm; chose {per:g}")
@@ -201,7 +153,7 @@ def _check_position(position, m: int) -> int:
 
 def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
     """(the vector equation, its known values) of every step, in markup."""
-    unit = _unit(nt, "m/s²")
+    unit = nt.unit("m/s²")
     cr = linkage.crank
     out = []
 
@@ -241,7 +193,7 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
 def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
     """(link, text) of ε of every link found from a tangential component: formula, value and sense."""
     out: list[tuple[str, str]] = []
-    unit = _unit(nt, "rad/s²")
+    unit = nt.unit("rad/s²")
     for s in plan.steps:
         for c in s.components:
             if c.kind != "tangential" or s.method == "crank" or any(c.link == o for o, _ in out):
@@ -319,17 +271,17 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     plans = pr.plans()
     k = _default_position(plans, pr.linkage) if position is None else _check_position(position, len(plans) - 1)
     plan = plans[k]
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=str(k)),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plan", k=str(k)),
                   problem=pr.problem if problem is None else problem, title_block=title_block)
     x0, _y0, x1, _y1 = sheet.box
     eqs = _equations(plan, pr.linkage, nt)
     eps = _eps_texts(plan, pr.linkage, nt)
     comps = plan.components
-    head = (K._word(nt, "vector"), K._word(nt, "length"), K._quantity(nt, _word(nt, "value"), "m/s²")
-            .replace("m/s²", _unit(nt, "m/s²")))
+    head = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
+            nt.quantity(nt.word("acceleration.value"), "m/s²"))
     probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00", f"{symbol(c.symbol)} = 000,000")
                                               for c in comps), size_mm=TABLE_MM, row_height_mm=6.0)
-    phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({_word(nt, 'phi_from')}),  "
+    phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('acceleration.phi_from')}),  "
            f"{pr.speed_text(nt)}")
     right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0])
     split = min(max(x1 - right_w - 6.0, x0 + 0.45 * (x1 - x0)), x0 + 0.66 * (x1 - x0))
@@ -407,7 +359,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     for el, ln in zip(cons, cons_meta):
         d = np.asarray(el.end) - np.asarray(el.start)
         prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
-        text = ln.label.replace("⟂", "⊥").replace("guide", K._word(nt, "guide")).replace("slot", K._word(nt, "guide"))
+        guide = nt.word("kinematics.guide")
+        text = ln.label.replace("⟂", "⊥").replace("guide", guide).replace("slot", guide)
         text = " ".join(K._sub(w) for w in text.split(" "))
         cons_labels.append(K._place(occ, el.end, text, prefer, size_mm=SMALL_MM, hard=hard,
                                     within=(area[0], area[1] - 4, area[2] + 4, area[3] + 4),
@@ -435,7 +388,7 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
     wy = table.bottom_left[1] + 6.0
     eps_els = [Text((tx, wy + i * 5.6), t, size_mm=TEXT_MM, name=f"epsilon-{link}") for i, (link, t) in enumerate(eps)]
-    legend = _word(nt, "legend")
+    legend = nt.word("acceleration.legend")
     scales = (s_a,)
     elements = ([sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + [table]
                 + eps_els)
@@ -461,7 +414,7 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
     nt = get_notation(notation)
     plans = pr.plans()[:-1]
     n = len(plans)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plans"),
                   problem=pr.problem if problem is None else problem, title_block=title_block)
     x0, _y0, x1, _y1 = sheet.box
     area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
@@ -501,7 +454,7 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
         prefix = f"plan-{k}-"
         cells.append(K.Polyline(((box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])),
                                 style=CELL, closed=True, name=f"{prefix}cell"))
-        ht = Text((box[0] + 1.8, box[1] + 1.5 + TEXT_MM * 0.76), K._word(nt, "position") + f" {k}", size_mm=TEXT_MM,
+        ht = Text((box[0] + 1.8, box[1] + 1.5 + TEXT_MM * 0.76), nt.word("kinematics.position") + f" {k}", size_mm=TEXT_MM,
                   bold=True, name=f"{prefix}heading")
         cells.append(ht)
         occ.add_primitives(ht.primitives())
@@ -524,7 +477,7 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
         drawn += vecs + [pole]
         main = {lb: at for lb, at in pts.items() if lb in p.labels.values()}
         labels += _place_labels(occ, main, p, size_mm=SMALL_MM + 0.2, within=box, prefix=prefix, leaders=labels)
-    legend = f"{pr.speed_text(nt)};  {_word(nt, 'legend')}"
+    legend = f"{pr.speed_text(nt)};  {nt.word('acceleration.legend')}"
     elements += cells + drawn + labels + sheet.captions((s_a,), legend=legend, reserve=True)
     return sheet.scene(elements, (s_a,), name=name, notes=(s_a.note,) if s_a.note else ())
 
@@ -578,14 +531,12 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     pr = _Problem(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
     nt = get_notation(notation)
     cols, rows = acceleration_rows(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "table"), problem=pr.problem if problem is None
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.table"), problem=pr.problem if problem is None
                   else problem, title_block=title_block, has_scales=False)
     x0, _y0, x1, _y1 = sheet.box
-    ua, ue = _unit(nt, "m/s²"), _unit(nt, "rad/s²")
-    head = [K._word(nt, "position"), K._quantity(nt, "φ", "°")]
+    head = [nt.word("kinematics.position"), nt.quantity("φ", "°")]
     for c in cols[2:]:
-        head.append(K._quantity(nt, c, "rad/s²" if c.startswith("ε") else "m/s²").replace("m/s²", ua)
-                    .replace("rad/s²", ue))
+        head.append(nt.quantity(c, "rad/s²" if c.startswith("ε") else "m/s²"))
     body = []
     for r in rows:
         body.append((str(int(r[0])), K._num(nt, r[1], 1)) + tuple(K._num(nt, v, 3) for v in r[2:]))
@@ -605,6 +556,6 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     if table.top_right[0] > x1:
         raise InputError(f"the table is {table.width_mm:.0f} mm wide but the sheet leaves {x1 - x0:.0f} mm; "
                          f"give a larger page")
-    note = Text((x0, table.bottom_left[1] + 6.0), f"{pr.speed_text(nt)};  {_word(nt, 'signed')}",
+    note = Text((x0, table.bottom_left[1] + 6.0), f"{pr.speed_text(nt)};  {nt.word('acceleration.signed')}",
                 size_mm=TEXT_MM, name="note")
     return sheet.scene([sheet.header(), table, note], (), name=name)

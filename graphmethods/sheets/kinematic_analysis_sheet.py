@@ -23,13 +23,11 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, in_language, notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, notation as get_notation
 from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.force_analysis_sheet import _case, sheet_page as _sheet_page
 from graphmethods.sheets.layout import Sheet
-
-_W = {"title": ("Kinematic analysis", "Кинематический анализ", "运动分析")}
 
 #: most acceleration plans one sheet draws (each needs a readable share of the lower row)
 MAX_PLANS = 4
@@ -102,7 +100,7 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
         raise InputError(f"page {page!r}: the kinematic-analysis sheet holds four parts (scheme, velocity plans, "
                          f"acceleration plans, the slider's diagrams) and is drawn on A1")
     pg = _sheet_page(page, "kinematic-analysis")
-    sheet = Sheet(nt=nt, page=None, title=title or in_language(_W["title"], nt), problem=title_of(case),
+    sheet = Sheet(nt=nt, page=None, title=title or nt.word("kinematics.analysis"), problem=title_of(case),
                   title_block=title_block, default_page=pg)
     x0, _, x1, _ = sheet.box
     top, bottom = sheet.top, sheet.caption_y + 1.0

@@ -76,20 +76,6 @@ CELL = Style(width_mm=0.18)
 CELL_ILL = Style(width_mm=0.5, dash=(2.0, 1.0))
 PRIME = "′"
 
-def _word(nt, key: str, **kw) -> str:
-    return nt.word(f"kinematics.{key}", **kw)
-
-
-def _unit(nt, unit: str) -> str:
-    return nt.unit(unit)
-
-
-def _quantity(nt, symbol: str, unit: str) -> str:
-    u = _unit(nt, unit)
-    if nt.quantity_style == "slash":
-        return f"{symbol}/{u}" if all(c not in u for c in "·/ °") else f"{symbol}/({u})"
-    return f"{symbol}, {u}"
-
 
 _SUB = re.compile(r"([A-Za-z])(\d+)")
 
@@ -172,8 +158,8 @@ class _Linkage:
     def speed_text(self, nt) -> str:
         w = nt.number(self.omega_1, sig=4)
         if self.n_rpm is not None:
-            return _word(nt, "speed_n", w=w, n=nt.number(self.n_rpm, sig=4))
-        return _word(nt, "speed", w=w)
+            return nt.word("kinematics.speed_n", w=w, n=nt.number(self.n_rpm, sig=4))
+        return nt.word("kinematics.speed", w=w)
 
 
 def _drawn(pos) -> list[int]:
@@ -407,7 +393,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
             fine = mech.positions(phi=fine_phi)
         except AssemblyError:               # the angles given span a range where it cannot be assembled
             fine = None
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "scheme", m=len(drawn)),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.scheme", m=len(drawn)),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
 
@@ -431,7 +417,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     avail_w = area[2] - area[0] - 2 * pad_x
     avail_h = area[3] - area[1] - pad_top - pad_bottom
     span_x, span_y = float(hi[0] - lo[0]), float(hi[1] - lo[1])
-    unit_l = _unit(nt, "m")
+    unit_l = nt.unit("m")
     if mu_l is None:
         need = max(span_x / avail_w, span_y / avail_h)
         per = convenient_at_least(need)
@@ -584,7 +570,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
         axis_y = a[1]
         reach = max([axis_y - bb[1] for bb in boxes] if out_side == "n" else [bb[3] - axis_y for bb in boxes]) \
             if boxes else 0.0
-        text = _word(nt, "stroke", H=nt.number(pos.H, sig=4), u=unit_l)
+        text = nt.word("kinematics.stroke", H=nt.number(pos.H, sig=4), u=unit_l)
         if free is not None:                              # along a guide at an angle, beyond its numbers
             a_, b_ = np.asarray(a, float), np.asarray(b, float)
             corners = [np.array([x, y]) for bb in boxes for x in (bb[0], bb[2]) for y in (bb[1], bb[3])]
@@ -626,11 +612,11 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     facts = []
     st = pos.strokes
     if st is not None and ext is not None:
-        facts.append(_word(nt, "extremes", a="0", b=ext.label))
-        facts.append(_word(nt, "theta", t=nt.number(math.degrees(st.theta), sig=4) + "°"))
-        facts.append(_word(nt, "K", K=nt.number(st.K, sig=4)))
+        facts.append(nt.word("kinematics.extremes", a="0", b=ext.label))
+        facts.append(nt.word("kinematics.theta", t=nt.number(math.degrees(st.theta), sig=4) + "°"))
+        facts.append(nt.word("kinematics.K", K=nt.number(st.K, sig=4)))
     if pos.psi_max is not None:
-        facts.append(_word(nt, "swing", p=nt.number(math.degrees(pos.psi_max), sig=4) + "°"))
+        facts.append(nt.word("kinematics.swing", p=nt.number(math.degrees(pos.psi_max), sig=4) + "°"))
     summary = []
     if facts:
         summary.append(Text((x0, sheet.caption_y - 6.5), ";   ".join(facts), size_mm=TEXT_MM, name="summary"))
@@ -887,7 +873,7 @@ def _plan_vectors(pts_mm: dict, vectors, *, prefix: str, head_mm: float = 2.2) -
 
 
 def _pick_mu_v(mu_v, need: float, *, what: str, nt) -> Scale:
-    unit = _unit(nt, "(m/s)")
+    unit = nt.unit("(m/s)")
     if mu_v is None:
         per = convenient_at_least(need)
         return Scale("μ_v", unit, per, note=f"picked: {what} needs ≥ {need:.4g} (m/s)/mm; chose {per:g}")
@@ -937,7 +923,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     pos = plans.positions
     drawn = _drawn(pos)
     images, vectors = _plan_layout(plans)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plans"),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
@@ -982,7 +968,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         prefix = f"plan-{k}-"
         cells.append(Polyline(((box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])),
                               style=CELL_ILL if bad else CELL, closed=True, name=f"{prefix}cell"))
-        head = _pos_label(pos, k) + (f" — {_word(nt, 'ill')}" if bad else "")
+        head = _pos_label(pos, k) + (f" — {nt.word('kinematics.ill')}" if bad else "")
         htext = Text((box[0] + 1.8, box[1] + 1.5 + TEXT_MM * 0.76), head, size_mm=TEXT_MM, bold=True,
                      name=f"{prefix}heading")
         cells.append(htext)
@@ -993,11 +979,11 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         lo, hi = arr.min(axis=0), arr.max(axis=0)
         w_mm, h_mm = s_v.to_mm(float(hi[0] - lo[0])), s_v.to_mm(float(hi[1] - lo[1]))
         if w_mm > inner[2] - inner[0] + 1e-6 or h_mm > inner[3] - inner[1] + 1e-6:
-            lines = [_word(nt, "off_scale") + ":"]
+            lines = [nt.word("kinematics.off_scale") + ":"]
             for v in vectors:
                 if v.start == "p" and not v.known:
                     val = float(np.hypot(*(xy_k[v.end])))
-                    lines.append(f"{v.symbol} = {nt.number(val, sig=4)} {_unit(nt, 'm/s')}")
+                    lines.append(f"{v.symbol} = {nt.number(val, sig=4)} {nt.unit('m/s')}")
             for i, t in enumerate(lines):
                 label_els.append(Text((inner[0], inner[1] + 4.0 + i * (SMALL_MM + 1.4)), t, size_mm=SMALL_MM,
                                       name=f"{prefix}value-{i}"))
@@ -1012,9 +998,9 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         drawn_els += vecs + [pole]
         label_els += _plan_labels(occ, pts, vectors, size_mm=SMALL_MM + 0.2, within=box, prefix=prefix,
                                   leaders=label_els)
-    legend = f"{lk.speed_text(nt)};  {_word(nt, 'legend')}"
+    legend = f"{lk.speed_text(nt)};  {nt.word('kinematics.legend')}"
     if ill.any():
-        legend += f";  {_word(nt, 'ill_frame')}"
+        legend += f";  {nt.word('kinematics.ill_frame')}"
     scales = (s_v,)
     elements += cells + drawn_els + label_els + sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
@@ -1070,15 +1056,15 @@ def _hull_area(pts: np.ndarray) -> float:
 
 def _sense_word(nt, w: float) -> str:
     if abs(w) < 1e-12:
-        return _word(nt, "at_rest")
-    return _word(nt, "ccw") if w > 0 else _word(nt, "cw")
+        return nt.word("kinematics.at_rest")
+    return nt.word("kinematics.ccw") if w > 0 else nt.word("kinematics.cw")
 
 
 def _equations(plans, k: int, nt, lk) -> list[str]:
     """The vector equations of the construction, in markup, one per line, with the values at position k."""
     mech = plans.positions.mechanism
     lines = []
-    unit = _unit(nt, "m/s")
+    unit = nt.unit("m/s")
     for name, c in plans.constructions.items():
         v = float(plans.speed(name)[k])
         if c.method == "known":
@@ -1129,13 +1115,13 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
         num_sym = f"v_{{{y}}}" if x in mech.fixed_joints else f"v_{{{_rel_name(mech, y, x)}}}"
         out.append(f"ω_{{{num}}} = {num_sym}/l_{{{link}}} = {nt.number(abs(w) * L, sig=4)}/{nt.number(L, sig=4)} = "
-                   f"{nt.number(abs(w), sig=4)} {_unit(nt, 'rad/s')}, {_sense_word(nt, w)}")
+                   f"{nt.number(abs(w), sig=4)} {nt.unit('rad/s')}, {_sense_word(nt, w)}")
     return out
 
 
 def _line_label(ln, nt) -> str:
     rel = "⊥" if ln.relation == "perpendicular" else "∥"       # ⊥: the glyph every font has
-    return f"{rel} {_word(nt, 'guide') if ln.to == 'guide' else _sub(ln.to)}"
+    return f"{rel} {nt.word('kinematics.guide') if ln.to == 'guide' else _sub(ln.to)}"
 
 
 def velocity_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,
@@ -1181,14 +1167,14 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
         raise InputError(f"position {position!r}: give one of the positions {drawn[0]}…{drawn[-1]}")
     k = int(k)
     images, vectors = _plan_layout(plans)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=_pos_label(pos, k)),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plan", k=_pos_label(pos, k)),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     # the column beside the plan first: its width decides how much of the sheet the plan gets
     eqs = _equations(plans, k, nt, lk)
-    phi = f"φ = {nt.number(math.degrees(pos.phi_from_start[k]), sig=5)}° ({_word(nt, 'phi_from')})"
+    phi = f"φ = {nt.number(math.degrees(pos.phi_from_start[k]), sig=5)}° ({nt.word('kinematics.phi_from')})"
     omega_texts = _omega_texts(plans, k, nt)
-    head = (_word(nt, "vector"), _word(nt, "length"), _quantity(nt, _word(nt, "value"), "m/s"))
+    head = (nt.word("kinematics.vector"), nt.word("kinematics.length"), nt.quantity(nt.word("kinematics.value"), "m/s"))
     probe = Table((0.0, 0.0), (head,) + tuple((_plan_markup(v.start) + _plan_markup(v.end), "000,00",
                                               f"{v.symbol} = 00,000") for v in vectors),
                   size_mm=TABLE_MM, row_height_mm=6.2)
@@ -1244,7 +1230,7 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     text_els = []
     for i, line in enumerate([phi] + eqs):
         text_els.append(Text((tx, ty + i * 5.6), line, size_mm=TEXT_MM, name=f"equation-{i}"))
-    rows = [(_word(nt, "vector"), _word(nt, "length"), _quantity(nt, _word(nt, "value"), "m/s"))]
+    rows = [(nt.word("kinematics.vector"), nt.word("kinematics.length"), nt.quantity(nt.word("kinematics.value"), "m/s"))]
     for v in vectors:
         L = math.dist(pts[v.start], pts[v.end])
         val = L * s_v.per_mm
@@ -1259,9 +1245,9 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
                  for i, (num, t) in enumerate(zip(_omega_numbers(mech), omega_texts))]
     notes = []
     if plans.ill_conditioned[k]:
-        notes.append(Text((tx, wy + len(omega_els) * 5.6 + 1.0), _word(nt, "ill_note"), size_mm=SMALL_MM,
+        notes.append(Text((tx, wy + len(omega_els) * 5.6 + 1.0), nt.word("kinematics.ill_note"), size_mm=SMALL_MM,
                           name="ill-conditioned"))
-    legend = f"{lk.speed_text(nt)};  {_word(nt, 'legend')}"
+    legend = f"{lk.speed_text(nt)};  {nt.word('kinematics.legend')}"
     scales = (s_v,)
     elements = ([sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + [table]
                 + omega_els + notes)
@@ -1383,10 +1369,10 @@ def velocity_rows(linkage, *, m: int | None = None, omega_1: float | None = None
 
 
 def _table_cells(t: VelocityTable, nt, *, markup_: bool = True) -> list[list[str]]:
-    head = [_word(nt, "position")]
+    head = [nt.word("kinematics.position")]
     for sym, u in zip(t.symbols[1:], t.units[1:]):
         s = sym if markup_ else markup.plain(sym) if "{" not in sym else sym.replace("{", "").replace("}", "")
-        head.append(_quantity(nt, s, u))
+        head.append(nt.quantity(s, u))
     rows = [head]
     for i, lab in enumerate(t.labels):
         row = [lab + (" *" if t.ill_conditioned[i] else "")]
@@ -1415,13 +1401,13 @@ def velocity_table(linkage, *, m: int | None = None, omega_1: float | None = Non
     lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
     t = velocity_rows(lk.plans, omega_1=None)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "table"),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.table"),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     rows = tuple(tuple(r) for r in _table_cells(t, nt))
-    notes = [lk.speed_text(nt), _word(nt, "signed")]
+    notes = [lk.speed_text(nt), nt.word("kinematics.signed")]
     if t.ill_conditioned.any():
-        notes.append("* " + _word(nt, "ill_note"))
+        notes.append("* " + nt.word("kinematics.ill_note"))
     avail = (sheet.caption_y - 6.0 * len(notes) - 4.0) - (sheet.top + 2.0)
     row_h = min(7.0, avail / len(rows))
     size = min(TABLE_MM, row_h * 0.5)
@@ -1456,7 +1442,7 @@ def velocity_table_markdown(linkage, *, m: int | None = None, omega_1: float | N
     out = ["| " + " | ".join(rows[0]) + " |", "|" + "|".join(":---:" if j == 0 else "---:" for j in
                                                             range(len(rows[0]))) + "|"]
     out += ["| " + " | ".join(r) + " |" for r in rows[1:]]
-    out += ["", lk.speed_text(nt).replace("_1", "₁"), _word(nt, "signed")]
+    out += ["", lk.speed_text(nt).replace("_1", "₁"), nt.word("kinematics.signed")]
     if t.ill_conditioned.any():
-        out.append("* " + _word(nt, "ill_note"))
+        out.append("* " + nt.word("kinematics.ill_note"))
     return "\n".join(out) + "\n"

@@ -464,7 +464,7 @@ def velocity_plan_steps(linkage, position: int | None = None, *, notation="en", 
     k = int(k)
     mech = plans.positions.mechanism
     s_v = figure.scales()[0]
-    unit = K._unit(nt, "m/s")
+    unit = nt.unit("m/s")
     images, vectors = K._plan_layout(plans)
     eq_text = {e.name: _text_of(figure, e.name) for e in figure.elements if e.name.startswith("equation-")}
     label_of = {c.label: n for n, c in plans.constructions.items()}
@@ -567,7 +567,7 @@ def acceleration_plan_steps(linkage, position: int | None = None, *, notation="e
                                   page=pg, title_block=tb)
     plan = plans[k]
     s_a = figure.scales()[0]
-    unit = SA._unit(nt, "m/s²")
+    unit = nt.unit("m/s²")
     cr = pr.linkage.crank
     eqs = SA._equations(plan, pr.linkage, nt)
 
