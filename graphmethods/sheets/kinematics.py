@@ -63,7 +63,7 @@ from graphmethods.scene import (
     notation as get_notation,
 )
 from graphmethods.scene.elements import Dimension, Element
-from graphmethods.scene.primitives import THIN, Style
+from graphmethods.scene.primitives import THIN, Label, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.units import convenient_at_least
@@ -589,7 +589,7 @@ def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str 
     from graphmethods.scene.elements import label_bbox
 
     left, right = (a, b) if a[0] <= b[0] else (b, a)
-    boxes = [label_bbox(p) for t in numbers for p in t.primitives()]
+    boxes = [label_bbox(cast(Label, p)) for t in numbers for p in t.primitives()]          # Text draws labels
     axis_y = a[1]
     reach = max([axis_y - bb[1] for bb in boxes] if out_side == "n" else [bb[3] - axis_y for bb in boxes]) \
         if boxes else 0.0
