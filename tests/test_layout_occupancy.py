@@ -62,6 +62,8 @@ def test_is_free_and_crossings_decide_as_the_plain_test(lines, boxes, probes, pa
     finally:
         layout._FEW = few
     assert occ.crossings(probes).tolist() == plain_crossings(occ, probes)
+    for kw in ({}, {"lines": False}, {"within": within}):      # all candidates at once, the same decisions
+        assert occ.free(probes, **kw).tolist() == [plain_is_free(occ, b, **kw) for b in probes], kw
 
 
 def test_registering_after_a_query_is_seen_by_the_next_one():
@@ -82,6 +84,7 @@ def test_hard_cases_decide_as_the_plain_test():
     for b in ((8.0, 5.0, 12.0, 7.0), (5.0, 18.0, 9.0, 22.0), (49.0, 49.0, 51.0, 51.0), (50.0, 50.0, 52.0, 52.0),
               (10.0 + 1e-12, 0.0, 11.0, 1.0), (0.0, 20.0 + 1e-12, 5.0, 21.0)):
         assert occ.is_free(b) == plain_is_free(occ, b), b
+        assert occ.free([b]).tolist() == [plain_is_free(occ, b)], b
 
 
 def test_a_tie_is_settled_the_same_way_whatever_the_last_bits():

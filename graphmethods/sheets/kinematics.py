@@ -221,8 +221,8 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
     for gap in gaps:                # near the point across a thin line rather than far from it
         cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
         boxes = [label_bbox(c) for c in cands]
-        ok = [occ.is_free(b, within=within, lines=False) and (hard is None or hard.is_free(b)) for b in boxes]
-        if not any(ok):
+        ok = _free_of(occ, hard, boxes, within=within, lines=False)
+        if not ok.any():
             continue
         hits = _crossings(occ, boxes) if avoid_lines else np.zeros(len(boxes), dtype=int)
         best = min((i for i in range(len(cands)) if ok[i]), key=lambda i: (hits[i], i))
@@ -235,13 +235,10 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
         break
     if lab is None:                 # crowded: further out, with a leader line to the point when asked for
         for gap in (gaps[-1] + 2.0, gaps[-1] + 4.0, gaps[-1] + 6.5, gaps[-1] + 9.5, gaps[-1] + 13.0):
-            for d in dirs:
-                cand = place_label(at, text, d, gap_mm=gap, size_mm=size_mm)
-                b = label_bbox(cand)
-                if occ.is_free(b, within=within, lines=False) and (hard is None or hard.is_free(b)):
-                    lab = cand
-                    break
-            if lab is not None:
+            cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
+            ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=False)
+            if ok.any():
+                lab = cands[int(np.argmax(ok))]
                 if leaders is not None:
                     b = label_bbox(lab)
                     near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
@@ -269,12 +266,19 @@ def _clean_further(occ, at, text, dirs, gaps, gap, size_mm, within, hard):
 
     nxt = [g for g in gaps if g > gap][:1]
     for g in nxt:
-        for d in dirs:
-            cand = place_label(at, text, d, gap_mm=g, size_mm=size_mm)
-            b = label_bbox(cand)
-            if occ.is_free(b, within=within) and (hard is None or hard.is_free(b)):
-                return cand
+        cands = [place_label(at, text, d, gap_mm=g, size_mm=size_mm) for d in dirs]
+        ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=True)
+        if ok.any():
+            return cands[int(np.argmax(ok))]
     return None
+
+
+def _free_of(occ: Occupancy, hard: Occupancy | None, boxes: list, *, within, lines: bool) -> np.ndarray:
+    """Which candidate boxes are free in ``occ`` (of its lines too when ``lines``) and of everything in ``hard``."""
+    ok = occ.free(boxes, within=within, lines=lines)
+    if hard is not None and ok.any():
+        ok &= hard.free(boxes)
+    return ok
 
 
 def _paper_deg(v) -> float:
