@@ -160,8 +160,8 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
         vals = []
         if s.method == "crank" and plan.epsilon_1 == 0.0:
             c = s.components[0]
-            vals.append(f"{symbol(c.symbol)} = ω_{{1}}²·l_{{{cr.centre + cr.pin}}} = {num(plan.omega_1)}²·{num(cr.r)} = "
-                        f"{num(c.magnitude)} {unit}")
+            vals.append(f"{symbol(c.symbol)} = ω_{{1}}²·l_{{{cr.centre + cr.pin}}} = "
+                        f"{num(plan.omega_1)}²·{num(cr.r)} = {num(c.magnitude)} {unit}")
         for c in s.components:
             if not c.known:
                 continue
@@ -376,8 +376,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
                                               for c in comps), size_mm=TABLE_MM, row_height_mm=lay.row_mm)
     phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('acceleration.phi_from')}),  "
            f"{pr.speed_text(nt)}")
-    split = K._plan_split(sheet.box, max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0]),
-                          lay)
+    right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0])
+    split = K._plan_split(sheet.box, right_w, lay)
     right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
     columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
     area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm - eq_h)

@@ -266,10 +266,11 @@ def _clean_further(occ, at, text, dirs, gaps, gap, size_mm, within, hard):
 
     nxt = [g for g in gaps if g > gap][:1]
     for g in nxt:
-        cands = [place_label(at, text, d, gap_mm=g, size_mm=size_mm) for d in dirs]
-        ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=True)
-        if ok.any():
-            return cands[int(np.argmax(ok))]
+        for d in dirs:              # one at a time: the first is often free, and a label costs its text's width
+            cand = place_label(at, text, d, gap_mm=g, size_mm=size_mm)
+            b = label_bbox(cand)
+            if occ.is_free(b, within=within) and (hard is None or hard.is_free(b)):
+                return cand
     return None
 
 
@@ -424,7 +425,8 @@ def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: Sche
         need = max(span_x / avail_w, span_y / avail_h)
         per = convenient_at_least(need)
         s_l = Scale("μ_l", unit_l, per, note=f"picked: the linkage spans {span_x:.4g} × {span_y:.4g} m in "
-                                             f"{avail_w:.0f} × {avail_h:.0f} mm, needs ≥ {need:.4g} m/mm; chose {per:g}")
+                                             f"{avail_w:.0f} × {avail_h:.0f} mm, needs ≥ {need:.4g} m/mm; "
+                                             f"chose {per:g}")
     else:
         s_l = Scale("μ_l", unit_l, mu_l.per_mm if isinstance(mu_l, Scale) else mu_l)
         if span_x / s_l.per_mm > avail_w * (1 + 1e-9) or span_y / s_l.per_mm > avail_h * (1 + 1e-9):
@@ -1088,7 +1090,8 @@ def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: P
         raise InputError(f"columns must be an integer from 1 to {n} (the number of plans), got {columns!r}")
     need, cw, ch = need_for(columns)
     if not math.isfinite(need) or need <= 0:
-        raise InputError(f"{n} plans in {columns} columns do not fit on this sheet; give other columns or a larger page")
+        raise InputError(f"{n} plans in {columns} columns do not fit on this sheet; give other columns or a "
+                         f"larger page")
     return _Grid(area, columns, cw, ch, need)
 
 

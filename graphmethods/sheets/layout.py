@@ -258,10 +258,10 @@ class Occupancy:
     def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
         """The first label beside ``at`` (directions × gaps) whose box is free; None when none is."""
         for gap in gaps:
-            labs = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in directions]
-            ok = self.free([label_bbox(lab) for lab in labs], within=within)
-            if ok.any():
-                return labs[int(np.argmax(ok))]
+            for d in directions:
+                lab = place_label(at, text, d, gap_mm=gap, size_mm=size_mm)
+                if self.is_free(label_bbox(lab), within=within):
+                    return lab
         return None
 
     def place_label(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
