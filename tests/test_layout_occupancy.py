@@ -1,4 +1,5 @@
-"""Label placement's free-space test, vectorised, decides exactly as the plain clipping test.
+"""Label placement's free-space test, vectorised, decides exactly as the plain clipping test, and its
+ties do not hang on the last bit.
 
 :meth:`Occupancy.is_free` and :meth:`Occupancy.crossings` run over numpy arrays with a
 bounding-box prefilter; here they are compared, decision by decision, with the scalar
@@ -14,19 +15,22 @@ from graphmethods.sheets.layout import Occupancy, _segment_hits_box
 
 
 def plain_is_free(occ: Occupancy, box, *, within=None, lines=True) -> bool:
-    pad = occ.pad
-    if within is not None and not (box[0] >= within[0] and box[1] >= within[1] and box[2] <= within[2]
-                                   and box[3] <= within[3]):
+    """The rule written out: padded boxes clear of each other unless they overlap by more than the tie
+    quantum; a line within the tie quantum of the padded box crosses it; a box may pass its region by it."""
+    pad, tie = occ.pad, layout.TIE_MM
+    if within is not None and not (box[0] >= within[0] - tie and box[1] >= within[1] - tie
+                                   and box[2] <= within[2] + tie and box[3] <= within[3] + tie):
         return False
-    g = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
+    g = (box[0] - (pad - tie), box[1] - (pad - tie), box[2] + (pad - tie), box[3] + (pad - tie))
     if any(g[0] < b[2] and b[0] < g[2] and g[1] < b[3] and b[1] < g[3] for b in occ.boxes):
         return False
+    g = (box[0] - (pad + tie), box[1] - (pad + tie), box[2] + (pad + tie), box[3] + (pad + tie))
     return not lines or not any(_segment_hits_box(p, q, g) for p, q in occ.segments)
 
 
 def plain_crossings(occ: Occupancy, boxes) -> list[int]:
-    pad = occ.pad
-    return [sum(_segment_hits_box(p, q, (b[0] - pad, b[1] - pad, b[2] + pad, b[3] + pad)) for p, q in occ.segments)
+    d = occ.pad + layout.TIE_MM
+    return [sum(_segment_hits_box(p, q, (b[0] - d, b[1] - d, b[2] + d, b[3] + d)) for p, q in occ.segments)
             for b in boxes]
 
 
@@ -58,6 +62,8 @@ def test_is_free_and_crossings_decide_as_the_plain_test(lines, boxes, probes, pa
     finally:
         layout._FEW = few
     assert occ.crossings(probes).tolist() == plain_crossings(occ, probes)
+    for kw in ({}, {"lines": False}, {"within": within}):      # all candidates at once, the same decisions
+        assert occ.free(probes, **kw).tolist() == [plain_is_free(occ, b, **kw) for b in probes], kw
 
 
 def test_registering_after_a_query_is_seen_by_the_next_one():
@@ -78,3 +84,25 @@ def test_hard_cases_decide_as_the_plain_test():
     for b in ((8.0, 5.0, 12.0, 7.0), (5.0, 18.0, 9.0, 22.0), (49.0, 49.0, 51.0, 51.0), (50.0, 50.0, 52.0, 52.0),
               (10.0 + 1e-12, 0.0, 11.0, 1.0), (0.0, 20.0 + 1e-12, 5.0, 21.0)):
         assert occ.is_free(b) == plain_is_free(occ, b), b
+        assert occ.free([b]).tolist() == [plain_is_free(occ, b)], b
+
+
+def test_a_tie_is_settled_the_same_way_whatever_the_last_bits():
+    """A line's label placed at the line's end with a gap equal to the padding touches the line exactly;
+    numpy versions differ in the last bit of such coordinates. Every spelling of the touch within 1e-9 mm
+    decides alike: the line crosses the label, a box touching another is clear of it, a box on its region's
+    edge is inside; beyond the quantum the plain geometry decides."""
+    occ = Occupancy(pad_mm=0.6)
+    occ.add_line(((0.0, 10.0), (30.0, 10.0)))              # ends at x = 30
+    occ.add_box((50.0, 0.0, 60.0, 5.0))
+    x = 30.0 + 0.6                                          # the label's left edge, padded, on the line's end
+    within = (x, 0.0, 100.0, 100.0)
+    for ulp in (-3, -1, 0, 1, 3):
+        e = ulp * 2.0 ** -44                                # a few last bits at this size (≈ 6e-14 mm each)
+        label = (x + e, 8.0, x + 6.0 + e, 12.0)
+        assert not occ.is_free(label) and occ.crossings([label]).tolist() == [1], ulp
+        assert occ.is_free(label, lines=False), ulp
+        assert occ.is_free((x + e, 1.0, 49.4 + e, 4.0), within=within), ulp        # padded, touches the box
+        assert not occ.is_free((x - 1e-8, 1.0, 40.0, 4.0), within=within)            # beyond the quantum: out
+    assert occ.is_free((x + 1e-8, 8.0, x + 6.0, 12.0))                             # beyond it: clear of the line
+    assert not occ.is_free((40.0, 1.0, 49.4 + 1e-8, 4.0))                          # and into the box

@@ -20,13 +20,6 @@ notation = importlib.import_module("graphmethods.scene.notation")  # the package
 
 PACKAGE = Path(graphmethods.__file__).parent
 
-#: modules that still keep a table of their own (issue 16: to be emptied)
-NOT_YET_MIGRATED = {
-    "sheets/acceleration.py",
-    "sheets/kinematic_analysis_sheet.py",
-}
-
-
 def _is_text_triple(node: ast.expr) -> bool:
     """(en, ru, zh): three strings, the second with Russian letters (not ("en", "ru", "zh") or suffixes)."""
     return isinstance(node, ast.Tuple) and len(node.elts) == 3 and \
@@ -74,10 +67,7 @@ def _figure_modules() -> list[Path]:
 def test_figure_modules_keep_no_vocabulary_of_their_own() -> None:
     offenders = {p.relative_to(PACKAGE).as_posix(): _tables(p) for p in _figure_modules()}
     offenders = {k: v for k, v in offenders.items() if v}
-    assert set(offenders) <= NOT_YET_MIGRATED, \
-        f"move these tables into scene/vocabulary/: { {k: offenders[k] for k in set(offenders) - NOT_YET_MIGRATED} }"
-    stale = NOT_YET_MIGRATED - set(offenders)
-    assert not stale, f"migrated: take {sorted(stale)} off NOT_YET_MIGRATED"
+    assert not offenders, f"move these into scene/vocabulary/ (nt.word, nt.sym, nt.unit): {offenders}"
 
 
 def _placeholders(text: str) -> set[str]:

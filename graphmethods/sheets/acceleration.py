@@ -30,69 +30,22 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import dataclass
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
-from graphmethods.scene import (
-    Frame,
-    Line,
-    Point,
-    Scale,
-    Scene,
-    Table,
-    Text,
-    Vector,
-    in_language,
-    markup,
-    notation as get_notation,
-)
+from graphmethods.scene import Line, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
+from graphmethods.scene.elements import Element
 from graphmethods.scene.primitives import DASHED, Style
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
-from graphmethods.units import convenient_at_least
 
 SMALL_MM = K.SMALL_MM
 TABLE_MM = K.TABLE_MM
 LINE_STYLE = DASHED
 CELL = Style(width_mm=0.18)
-
-#: words of these figures (en, ru, zh); the notation profiles lack them
-WORDS = {
-    "plan":     ("Acceleration plan, position {k}", "План ускорений, положение {k}", "加速度多边形（位置{k}）"),
-    "plans":    ("Acceleration plans", "Планы ускорений", "加速度多边形"),
-    "table":    ("Accelerations per position", "Ускорения точек и звеньев по положениям", "各位置的加速度"),
-    "value":    ("Acceleration", "Ускорение", "加速度"),
-    "legend":   ("solid: known component, dashed: direction known, found by construction",
-                 "сплошные — известные составляющие, штриховые — найденные построением",
-                 "实线：已知分量；虚线：作图求得"),
-    "speed":    ("ω_1 = {w} rad/s, ε_1 = {e} rad/s²", "ω_1 = {w} рад/с, ε_1 = {e} рад/с²",
-                 "ω_1 = {w} rad/s，ε_1 = {e} rad/s²"),
-    "toward":   ("toward {c}", "к {c}", "指向 {c}"),
-    "turned":   ("v_{{{rel}}} turned 90° in the sense of ω_{{{n}}}", "v_{{{rel}}}, повёрнутая на 90° по ω_{{{n}}}",
-                 "v_{{{rel}}} 沿 ω_{{{n}}} 方向转 90°"),
-    "off":      ("off the scale", "вне масштаба", "超出比例"),
-    "eps_note": ("ε from the tangential components: ε = a^τ/l", "ε по касательным составляющим: ε = a^τ/l",
-                 "由切向分量求 ε：ε = a^τ/l"),
-    "phi_from": ("φ from position 0", "φ от положения 0", "φ 自位置0起"),
-    "signed":   ("slider accelerations signed along +x of the guide; others are magnitudes",
-                 "ускорения ползунов со знаком по оси x направляющей; остальные — модули",
-                 "滑块加速度沿导路 +x 方向为正，其余为大小"),
-}
-
-_UNITS = {"m/s²": ("m/s²", "м/с²", "m/s²"), "(m/s²)": ("(m/s²)", "(м/с²)", "(m/s²)"),
-          "rad/s²": ("rad/s²", "рад/с²", "rad/s²"), "rad/s": ("rad/s", "рад/с", "rad/s"),
-          "m/s": ("m/s", "м/с", "m/s"), "m": ("m", "м", "m")}
-
-
-def _word(nt, key: str, **kw) -> str:
-    return in_language(WORDS[key], nt, **kw)
-
-
-def _unit(nt, unit: str) -> str:
-    return in_language(_UNITS[unit], nt)
-
 
 _SYM = re.compile(r"^(a(?:\^[nτkr])?)_(\w+)$")
 
@@ -157,22 +110,12 @@ class _Problem:
         return acceleration_plans(self.linkage, m=int(self.m), omega_1=self.omega_1, epsilon_1=self.epsilon_1)
 
     def speed_text(self, nt) -> str:
-        return _word(nt, "speed", w=nt.number(self.omega_1, sig=4), e=nt.number(self.epsilon_1, sig=4))
+        return nt.word("acceleration.speed", w=nt.number(self.omega_1, sig=4), e=nt.number(self.epsilon_1, sig=4))
 
 
 def _pick_mu_a(mu_a, need: float, *, what: str, nt) -> Scale:
-    unit = _unit(nt, "(m/s²)")
-    if mu_a is None:
-        per = convenient_at_least(need)
-        return Scale("μ_a", unit, per, note=f"picked: {what} needs ≥ {need:.4g} (m/s²)/mm; chose {per:g}")
-    per = mu_a.per_mm if isinstance(mu_a, Scale) else mu_a
-    if isinstance(per, bool) or not isinstance(per, (int, float)) or not math.isfinite(per) or per <= 0:
-        raise InputError(f"mu_a is the acceleration scale in (m/s²)/mm and must be > 0, got {mu_a!r}")
-    s = Scale("μ_a", unit, float(per))
-    if need > s.per_mm * (1 + 1e-9):
-        raise InputError(f"{what} at μ_a = {s.per_mm:g} (m/s²)/mm does not fit: it needs at least {need:.4g} "
-                         f"(m/s²)/mm; give a larger μ_a, a larger page, or none to have one picked")
-    return s
+    """μ_a of an acceleration plan (:func:`~graphmethods.sheets.kinematics._pick_plan_scale`)."""
+    return K._pick_plan_scale(mu_a, need, symbol="μ_a", unit="m/s²", what=what, nt=nt)
 
 
 def _default_position(plans: tuple[AccelerationPlan, ...], linkage) -> int:
@@ -201,7 +144,7 @@ def _check_position(position, m: int) -> int:
 
 def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
     """(the vector equation, its known values) of every step, in markup."""
-    unit = _unit(nt, "m/s²")
+    unit = nt.unit("m/s²")
     cr = linkage.crank
     out = []
 
@@ -217,8 +160,8 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
         vals = []
         if s.method == "crank" and plan.epsilon_1 == 0.0:
             c = s.components[0]
-            vals.append(f"{symbol(c.symbol)} = ω_{{1}}²·l_{{{cr.centre + cr.pin}}} = {num(plan.omega_1)}²·{num(cr.r)} = "
-                        f"{num(c.magnitude)} {unit}")
+            vals.append(f"{symbol(c.symbol)} = ω_{{1}}²·l_{{{cr.centre + cr.pin}}} = "
+                        f"{num(plan.omega_1)}²·{num(cr.r)} = {num(c.magnitude)} {unit}")
         for c in s.components:
             if not c.known:
                 continue
@@ -241,7 +184,7 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
 def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
     """(link, text) of ε of every link found from a tangential component: formula, value and sense."""
     out: list[tuple[str, str]] = []
-    unit = _unit(nt, "rad/s²")
+    unit = nt.unit("rad/s²")
     for s in plan.steps:
         for c in s.components:
             if c.kind != "tangential" or s.method == "crank" or any(c.link == o for o, _ in out):
@@ -256,31 +199,132 @@ def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
 
 def _place_labels(occ: Occupancy, pts: dict, plan: AccelerationPlan, *, size_mm: float, within, hard=None,
                   leaders=None, prefix: str = "") -> list:
-    """Labels of the images: coincident images share one label, each placed away from π."""
-    groups: list[list] = []
-    for label, at in pts.items():
-        for g in groups:
-            if math.dist(g[0][1], at) < 0.8:
-                g.append((label, at))
+    """Labels of the images: coincident images share one label, each placed away from π
+    (:func:`~graphmethods.sheets.kinematics._plan_labels`)."""
+    return K._plan_labels(occ, pts, "π", [lb for lb in pts if lb != "π"], markup_of=image, id_of=_id,
+                          size_mm=size_mm, within=within, prefix=prefix, hard=hard, leaders=leaders)
+
+
+@dataclass(frozen=True)
+class AccelerationPlanLayout(K.PlanLayout):
+    """The millimetre constants of one acceleration plan drawn large: those of the velocity plan, the
+    equations under the plan."""
+
+    row_mm: float = 6.0                 # the table's rows
+    equation_mm: float = 5.4            # between the lines of equations under the plan
+    equations_below_mm: float = 7.0     # the first equation below the plan's area
+    values_indent_mm: float = 6.0       # the known values under their equation
+    equation_columns_gap_mm: float = 8.0  # between two columns of equations (a slide)
+    min_plan_mm: float = 40.0           # the least height the plan may have
+
+
+ACCELERATION_PLAN_LAYOUT = AccelerationPlanLayout()
+
+Block = list[tuple[str, str, float]]
+
+
+def _equation_blocks(phi: str, eqs: list[tuple[str, str]], *, split_values: bool,
+                     lay: AccelerationPlanLayout) -> list[Block]:
+    """(name, text, indent) of φ and of each equation with its known values under it (each value on a line of
+    its own when ``split_values``)."""
+    dx = lay.values_indent_mm
+    if split_values:
+        return [[("equation-phi", phi, 0.0)]] + [
+            [(f"equation-{j}", a, 0.0)] + [(f"values-{j}" + (f"-{i}" if i else ""), t, dx)
+                                           for i, t in enumerate(b.split(";  ") if b else [])]
+            for j, (a, b) in enumerate(eqs)]
+    return [[("equation-phi", phi, 0.0)]] + [[(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, dx)] if b else [])
+                                             for j, (a, b) in enumerate(eqs)]
+
+
+def _equation_columns(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_bottom: float,
+                      lay: AccelerationPlanLayout) -> tuple[list[list[Block]], float, float]:
+    """The equations under the plan: one column, or two on a slide (a short page) when every line fits and
+    the table beside the plan does not reach them. Returns the columns, their height and a column's width."""
+    x0, _, x1, _ = sheet.box
+    half = (x1 - x0) / 2 - 4.0
+    blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
+    two = getattr(sheet.probe, "size", "") == "SLIDE" and len(blocks) > 2
+    if two:
+        blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
+        two = all(markup.text_width_mm(t, TEXT_MM) + dx <= half for b_ in blocks for _, t, dx in b_)
+        if not two:
+            blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
+    n_lines = sum(len(b_) for b_ in blocks)
+    cut, count = len(blocks), 0
+    if two:
+        for i, b_ in enumerate(blocks):
+            count += len(b_)
+            if count >= n_lines / 2:
+                cut = i + 1
                 break
-        else:
-            groups.append([(label, at)])
-    p = np.asarray(pts["π"])
-    out = []
-    for g in groups:
-        at = np.asarray(g[0][1])
-        text = ", ".join(image(lb) for lb, _ in g)
-        if any(lb == "π" for lb, _ in g):
-            ds = [np.asarray(q) - p for lb, q in pts.items() if lb != "π" and math.dist(q, p) > 0.8]
-            ds = [d / np.hypot(*d) for d in ds]
-            mm = -np.sum(ds, axis=0) if ds else np.array([-1.0, 1.0])
-            prefer = math.degrees(math.atan2(-mm[1], mm[0])) if np.hypot(*mm) > 1e-9 else 225.0
-        else:
-            d = at - p
-            prefer = math.degrees(math.atan2(-d[1], d[0]))
-        out.append(K._place(occ, tuple(at), text, prefer, size_mm=size_mm, within=within, hard=hard,
-                            name=f"{prefix}name-{_id(g[0][0])}", gaps=(0.8, 1.8, 3.0, 4.5), leaders=leaders))
+    columns = [blocks[:cut], blocks[cut:]] if two else [blocks]
+    eq_h = max(sum(len(b_) for b_ in col) for col in columns) * lay.equation_mm + 2.0
+    if two and sheet.caption_y - lay.caption_room_mm - eq_h < right_bottom:     # the table would reach them
+        blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
+        columns = [blocks]
+        eq_h = sum(len(b_) for b_ in blocks) * lay.equation_mm + 2.0
+    return columns, eq_h, half
+
+
+def _equation_texts(columns: list[list[Block]], at, half: float, lay: AccelerationPlanLayout) -> list[Element]:
+    """The equations' Text elements, the columns ``half + 8`` mm apart from ``at`` (mm)."""
+    x0, ey = at
+    out: list[Element] = []
+    for c_, col in enumerate(columns):
+        cx = x0 + c_ * (half + lay.equation_columns_gap_mm)
+        row = 0
+        for b_ in col:
+            for nm, line, dx in b_:
+                out.append(Text((cx + dx, ey + row * lay.equation_mm), line, size_mm=TEXT_MM, name=nm))
+                row += 1
     return out
+
+
+def _acceleration_lines(plan: AccelerationPlan, pts: dict, nt) -> tuple[list[Line], list[str]]:
+    """The construction lines (dashed, through their image, past the point found) and their labels."""
+    lines, texts = [], []
+    guide = nt.word("kinematics.guide")
+    for s in plan.steps:
+        X = np.asarray(pts[s.label])
+        for ln in s.lines:
+            d = np.array([ln.direction.real, -ln.direction.imag])
+            d /= float(np.hypot(*d))
+            lines.append(K._through(np.asarray(pts[ln.through]), d, X, f"line-{s.point}-{_id(ln.through)}",
+                                    LINE_STYLE))
+            text = ln.label.replace("⟂", "⊥").replace("guide", guide).replace("slot", guide)
+            texts.append(" ".join(K._sub(w) for w in text.split(" ")))
+    return lines, texts
+
+
+def _component_vectors(pts: dict, comps, *, prefix: str, head_mm: float, width_mm: float) -> list[Element]:
+    """The components of a plan as vectors (each once; those of zero length left out)."""
+    vecs: list[Element] = []
+    seen = set()
+    for c in comps:
+        if math.dist(pts[c.start], pts[c.end]) < 1e-9 or _elname(c) in seen:
+            continue
+        seen.add(_elname(c))
+        vecs.append(Vector(pts[c.start], pts[c.end], known=c.known, head_length_mm=head_mm, head_width_mm=width_mm,
+                           name=f"{prefix}{_elname(c)}"))
+    return vecs
+
+
+def _acceleration_column(comps, pts: dict, head, s_a: Scale, eps: list[tuple[str, str]], at, limit, nt,
+                         lay: AccelerationPlanLayout) -> list[Element]:
+    """Beside the plan at ``at`` (mm): every component's drawn length and value, then ε of the links; the
+    table must end left of and above ``limit`` (mm)."""
+    rows = [head]
+    for c in comps:
+        L = math.dist(pts[c.start], pts[c.end])
+        rows.append((image(c.start) + image(c.end), K._num(nt, L, 2),
+                     f"{symbol(c.symbol)} = {K._num(nt, L * s_a.per_mm, 3)}"))
+    table = Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")
+    if table.top_right[0] > limit[0] + 1e-6 or table.bottom_left[1] > limit[1]:
+        raise InputError("the table of vectors does not fit beside the plan; give a larger page")
+    wy = table.bottom_left[1] + lay.after_table_mm
+    return [table] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
+                      for i, (link, t) in enumerate(eps)]
 
 
 def acceleration_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,
@@ -316,130 +360,51 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     """
     pr = _Problem(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
     nt = get_notation(notation)
+    lay = ACCELERATION_PLAN_LAYOUT
     plans = pr.plans()
     k = _default_position(plans, pr.linkage) if position is None else _check_position(position, len(plans) - 1)
     plan = plans[k]
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=str(k)),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plan", k=str(k)),
                   problem=pr.problem if problem is None else problem, title_block=title_block)
     x0, _y0, x1, _y1 = sheet.box
     eqs = _equations(plan, pr.linkage, nt)
     eps = _eps_texts(plan, pr.linkage, nt)
     comps = plan.components
-    head = (K._word(nt, "vector"), K._word(nt, "length"), K._quantity(nt, _word(nt, "value"), "m/s²")
-            .replace("m/s²", _unit(nt, "m/s²")))
+    head = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
+            nt.quantity(nt.word("acceleration.value"), "m/s²"))
     probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00", f"{symbol(c.symbol)} = 000,000")
-                                              for c in comps), size_mm=TABLE_MM, row_height_mm=6.0)
-    phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({_word(nt, 'phi_from')}),  "
+                                              for c in comps), size_mm=TABLE_MM, row_height_mm=lay.row_mm)
+    phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('kinematics.phi_from')}),  "
            f"{pr.speed_text(nt)}")
     right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0])
-    split = min(max(x1 - right_w - 6.0, x0 + 0.45 * (x1 - x0)), x0 + 0.66 * (x1 - x0))
-    # the equations under the plan: one column, or two on a slide (a short page) when every line fits
-    blocks = [[("equation-phi", phi, 0.0)]] + [[(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, 6.0)] if b else [])
-                                               for j, (a, b) in enumerate(eqs)]
-    half = (x1 - x0) / 2 - 4.0
-    two = getattr(sheet.probe, "size", "") == "SLIDE" and len(blocks) > 2
-    if two:                                    # each known value on a line of its own
-        blocks = [[("equation-phi", phi, 0.0)]] + [
-            [(f"equation-{j}", a, 0.0)] + [(f"values-{j}" + (f"-{i}" if i else ""), t, 6.0)
-                                           for i, t in enumerate(b.split(";  ") if b else [])]
-            for j, (a, b) in enumerate(eqs)]
-        two = all(markup.text_width_mm(t, TEXT_MM) + dx <= half for b_ in blocks for _, t, dx in b_)
-        if not two:
-            blocks = [[("equation-phi", phi, 0.0)]] + [
-                [(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, 6.0)] if b else []) for j, (a, b) in enumerate(eqs)]
-    n_lines = sum(len(b_) for b_ in blocks)
-    cut, count = len(blocks), 0
-    if two:
-        for i, b_ in enumerate(blocks):
-            count += len(b_)
-            if count >= n_lines / 2:
-                cut = i + 1
-                break
-    columns = [blocks[:cut], blocks[cut:]] if two else [blocks]
-    eq_h = max(sum(len(b_) for b_ in col) for col in columns) * 5.4 + 2.0
-    right_bottom = sheet.top + 2.0 + probe.height_mm + 6.0 + 5.6 * len(eps)
-    if two and sheet.caption_y - 7.0 - eq_h < right_bottom:          # the table would reach the equations
-        blocks = [[("equation-phi", phi, 0.0)]] + [
-            [(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, 6.0)] if b else []) for j, (a, b) in enumerate(eqs)]
-        columns = [blocks]
-        eq_h = sum(len(b_) for b_ in blocks) * 5.4 + 2.0
-    area = (x0, sheet.top - 2.0, split - 4.0, sheet.caption_y - 7.0 - eq_h)
-    if area[3] - area[1] < 40.0:
+    split = K._plan_split(sheet.box, right_w, lay)
+    right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
+    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
+    area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm - eq_h)
+    if area[3] - area[1] < lay.min_plan_mm:
         raise InputError("the plan and its equations do not fit on this page; give a larger page")
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
-    lo, hi = arr.min(axis=0), arr.max(axis=0)
-    margin = 9.0
-    aw, ah = area[2] - area[0] - 2 * margin, area[3] - area[1] - 2 * margin
-    need = max(float(hi[0] - lo[0]) / aw, float(hi[1] - lo[1]) / ah)
-    if need <= 0:
-        raise InputError(f"position {k}: every acceleration is zero; there is no plan to draw")
-    s_a = _pick_mu_a(mu_a, need, what=f"the plan of position {k}", nt=nt)
-    mid = ((area[0] + area[2]) / 2, (area[1] + area[3]) / 2)
-    f = Frame((mid[0] - s_a.to_mm(float(lo[0] + hi[0]) / 2), mid[1] + s_a.to_mm(float(lo[1] + hi[1]) / 2)), s_a, s_a)
+    s_a, f = K._fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_a, symbol="μ_a", unit="m/s²", k=k, nt=nt, lay=lay)
     pts = {lb: f.pt(zz.real, zz.imag) for lb, zz in plan.images.items()}
     occ = sheet.occ
-    cons, cons_meta = [], []
-    for s in plan.steps:
-        X = np.asarray(pts[s.label])
-        for ln in s.lines:
-            P0 = np.asarray(pts[ln.through])
-            d = np.array([ln.direction.real, -ln.direction.imag])
-            d /= float(np.hypot(*d))
-            t = float((X - P0) @ d)
-            a, b = P0 + d * (min(0.0, t) - 10.0), P0 + d * (max(0.0, t) + 10.0)
-            cons.append(Line(tuple(a.tolist()), tuple(b.tolist()), style=LINE_STYLE,
-                             name=f"line-{s.point}-{_id(ln.through)}"))
-            cons_meta.append(ln)
+    cons, cons_texts = _acceleration_lines(plan, pts, nt)
     K._register(occ, *cons)
-    vecs = []
-    seen = set()
-    for c in comps:
-        if math.dist(pts[c.start], pts[c.end]) < 1e-9 or _elname(c) in seen:
-            continue
-        seen.add(_elname(c))
-        vecs.append(Vector(pts[c.start], pts[c.end], known=c.known, head_length_mm=3.0, head_width_mm=1.1,
-                           name=_elname(c)))
-    pole = Point(pts["π"], radius_mm=0.7, name="pole")
+    vecs = _component_vectors(pts, comps, prefix="", head_mm=lay.head_mm, width_mm=1.1)
+    pole = Point(pts["π"], radius_mm=lay.pole_mm, name="pole")
     K._register(occ, *vecs, pole)
     hard = Occupancy(pad_mm=0.3)
     K._register(hard, *vecs)
-    cons_labels = []
-    for el, ln in zip(cons, cons_meta):
-        d = np.asarray(el.end) - np.asarray(el.start)
-        prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
-        text = ln.label.replace("⟂", "⊥").replace("guide", K._word(nt, "guide")).replace("slot", K._word(nt, "guide"))
-        text = " ".join(K._sub(w) for w in text.split(" "))
-        cons_labels.append(K._place(occ, el.end, text, prefer, size_mm=SMALL_MM, hard=hard,
-                                    within=(area[0], area[1] - 4, area[2] + 4, area[3] + 4),
-                                    name=f"label-{el.name}", gaps=(0.6, 1.6, 3.0)))
+    cons_labels = K._label_lines(occ, cons, cons_texts, hard=hard, area=area)
     leaders: list = []
     names = _place_labels(occ, pts, plan, size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4),
                           hard=hard, leaders=leaders)
     # under the plan: φ and the equations; beside it: the table and ε
-    ey = area[3] + 7.0
-    text_els = []
-    for c_, col in enumerate(columns):
-        cx = x0 + c_ * (half + 8.0)
-        row = 0
-        for b_ in col:
-            for nm, line, dx in b_:
-                text_els.append(Text((cx + dx, ey + row * 5.4), line, size_mm=TEXT_MM, name=nm))
-                row += 1
-    tx, ty = split + 2.0, sheet.top + 2.0
-    rows = [head]
-    for c in comps:
-        L = math.dist(pts[c.start], pts[c.end])
-        rows.append((image(c.start) + image(c.end), K._num(nt, L, 2), f"{symbol(c.symbol)} = {K._num(nt, L * s_a.per_mm, 3)}"))
-    table = Table((tx, ty), tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=6.0, name="table")
-    if table.top_right[0] > x1 + 1e-6 or table.bottom_left[1] > area[3] + eq_h:
-        raise InputError("the table of vectors does not fit beside the plan; give a larger page")
-    wy = table.bottom_left[1] + 6.0
-    eps_els = [Text((tx, wy + i * 5.6), t, size_mm=TEXT_MM, name=f"epsilon-{link}") for i, (link, t) in enumerate(eps)]
-    legend = _word(nt, "legend")
+    text_els = _equation_texts(columns, (x0, area[3] + lay.equations_below_mm), half, lay)
+    column = _acceleration_column(comps, pts, head, s_a, eps, (split + lay.column_x_mm, sheet.top + lay.column_x_mm),
+                                  (x1, area[3] + eq_h), nt, lay)
     scales = (s_a,)
-    elements = ([sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + [table]
-                + eps_els)
-    elements += sheet.captions(scales, legend=legend, reserve=True)
+    elements = [sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + column
+    elements += sheet.captions(scales, legend=nt.word("acceleration.legend"), reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_a.note,) if s_a.note else ())
 
 
@@ -459,73 +424,35 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
     """
     pr = _Problem(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
     nt = get_notation(notation)
+    lay = K.PLAN_GRID_LAYOUT
     plans = pr.plans()[:-1]
-    n = len(plans)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plans"),
                   problem=pr.problem if problem is None else problem, title_block=title_block)
-    x0, _y0, x1, _y1 = sheet.box
-    area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
-    W, H = area[2] - area[0], area[3] - area[1]
-    ext = []
+    spans = []
     for p in plans:
         arr = np.array([[z.real, z.imag] for z in p.images.values()])
-        ext.append((np.ptp(arr[:, 0]), np.ptp(arr[:, 1])))
-    ext_a = np.array(ext)
-    pad_x, head_mm, pad_y = 6.0, 6.0, 4.5
-
-    def need_for(cols: int) -> tuple[float, float, float]:
-        rows = math.ceil(n / cols)
-        cw, ch = W / cols, H / rows
-        iw, ih = cw - 2 * pad_x, ch - head_mm - 2 * pad_y
-        if iw <= 5 or ih <= 5:
-            return math.inf, cw, ch
-        return float(max((ext_a[:, 0] / iw).max(), (ext_a[:, 1] / ih).max())), cw, ch
-
-    if columns is None:
-        columns = min((need_for(c)[0], c) for c in range(1, n + 1))[1]
-    elif isinstance(columns, bool) or not isinstance(columns, int) or not 1 <= columns <= n:
-        raise InputError(f"columns must be an integer from 1 to {n} (the number of plans), got {columns!r}")
-    need, cw, ch = need_for(columns)
-    if not math.isfinite(need) or need <= 0:
-        raise InputError(f"{n} plans in {columns} columns do not fit on this sheet; give other columns or a larger page")
-    s_a = _pick_mu_a(mu_a, need, what="the largest plan in its cell", nt=nt)
+        spans.append((np.ptp(arr[:, 0]), np.ptp(arr[:, 1])))
+    grid = K._plan_grid(sheet, np.array(spans), np.ones(len(spans), dtype=bool), columns, lay)
+    s_a = _pick_mu_a(mu_a, grid.need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
-    elements: list = [sheet.header()]
     cells: list = []
     drawn: list = []
     labels: list = []
     for k, p in enumerate(plans):
-        r, c = divmod(k, columns)
-        bx0, by0 = area[0] + c * cw, area[1] + r * ch
-        box = (bx0 + 0.8, by0 + 0.8, bx0 + cw - 0.8, by0 + ch - 0.8)
+        box, inner = grid.cell(k, lay)
         prefix = f"plan-{k}-"
-        cells.append(K.Polyline(((box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])),
-                                style=CELL, closed=True, name=f"{prefix}cell"))
-        ht = Text((box[0] + 1.8, box[1] + 1.5 + TEXT_MM * 0.76), K._word(nt, "position") + f" {k}", size_mm=TEXT_MM,
-                  bold=True, name=f"{prefix}heading")
-        cells.append(ht)
-        occ.add_primitives(ht.primitives())
-        inner = (box[0] + pad_x - 0.8, box[1] + head_mm + pad_y - 0.8, box[2] - pad_x + 0.8, box[3] - pad_y + 0.8)
+        cells += K._grid_cell(box, nt.word("kinematics.position") + f" {k}", prefix, K.CELL, occ, lay)
         arr = np.array([[z.real, z.imag] for z in p.images.values()])
-        lo, hi = arr.min(axis=0), arr.max(axis=0)
-        mid = ((inner[0] + inner[2]) / 2, (inner[1] + inner[3]) / 2)
-        f = Frame((mid[0] - s_a.to_mm(float(lo[0] + hi[0]) / 2), mid[1] + s_a.to_mm(float(lo[1] + hi[1]) / 2)), s_a, s_a)
+        f = K._centred_frame(inner, arr.min(axis=0), arr.max(axis=0), s_a)
         pts = {lb: f.pt(z.real, z.imag) for lb, z in p.images.items()}
-        seen = set()
-        vecs = []
-        for comp in p.components:
-            if math.dist(pts[comp.start], pts[comp.end]) < 1e-9 or _elname(comp) in seen:
-                continue
-            seen.add(_elname(comp))
-            vecs.append(Vector(pts[comp.start], pts[comp.end], known=comp.known, head_length_mm=2.2,
-                               head_width_mm=0.8, name=f"{prefix}{_elname(comp)}"))
-        pole = Point(pts["π"], radius_mm=0.55, name=f"{prefix}pole")
+        vecs = _component_vectors(pts, p.components, prefix=prefix, head_mm=2.2, width_mm=0.8)
+        pole = Point(pts["π"], radius_mm=lay.pole_mm, name=f"{prefix}pole")
         K._register(occ, *vecs, pole)
         drawn += vecs + [pole]
         main = {lb: at for lb, at in pts.items() if lb in p.labels.values()}
         labels += _place_labels(occ, main, p, size_mm=SMALL_MM + 0.2, within=box, prefix=prefix, leaders=labels)
-    legend = f"{pr.speed_text(nt)};  {_word(nt, 'legend')}"
-    elements += cells + drawn + labels + sheet.captions((s_a,), legend=legend, reserve=True)
+    legend = f"{pr.speed_text(nt)};  {nt.word('acceleration.legend')}"
+    elements = [sheet.header()] + cells + drawn + labels + sheet.captions((s_a,), legend=legend, reserve=True)
     return sheet.scene(elements, (s_a,), name=name, notes=(s_a.note,) if s_a.note else ())
 
 
@@ -578,14 +505,12 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     pr = _Problem(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
     nt = get_notation(notation)
     cols, rows = acceleration_rows(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "table"), problem=pr.problem if problem is None
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.table"), problem=pr.problem if problem is None
                   else problem, title_block=title_block, has_scales=False)
     x0, _y0, x1, _y1 = sheet.box
-    ua, ue = _unit(nt, "m/s²"), _unit(nt, "rad/s²")
-    head = [K._word(nt, "position"), K._quantity(nt, "φ", "°")]
+    head = [nt.word("kinematics.position"), nt.quantity("φ", "°")]
     for c in cols[2:]:
-        head.append(K._quantity(nt, c, "rad/s²" if c.startswith("ε") else "m/s²").replace("m/s²", ua)
-                    .replace("rad/s²", ue))
+        head.append(nt.quantity(c, "rad/s²" if c.startswith("ε") else "m/s²"))
     body = []
     for r in rows:
         body.append((str(int(r[0])), K._num(nt, r[1], 1)) + tuple(K._num(nt, v, 3) for v in r[2:]))
@@ -605,6 +530,6 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     if table.top_right[0] > x1:
         raise InputError(f"the table is {table.width_mm:.0f} mm wide but the sheet leaves {x1 - x0:.0f} mm; "
                          f"give a larger page")
-    note = Text((x0, table.bottom_left[1] + 6.0), f"{pr.speed_text(nt)};  {_word(nt, 'signed')}",
+    note = Text((x0, table.bottom_left[1] + 6.0), f"{pr.speed_text(nt)};  {nt.word('acceleration.signed')}",
                 size_mm=TEXT_MM, name="note")
     return sheet.scene([sheet.header(), table, note], (), name=name)

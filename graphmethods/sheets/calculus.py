@@ -56,7 +56,7 @@ from graphmethods.scene import (
 from graphmethods.scene.elements import Element, label_bbox
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, problem_title
+from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, problem_title
 
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables
@@ -250,6 +250,7 @@ class _Band:
 
     def __init__(self, *, x0: float, top: float, height: float, s_phi: Scale, s_y: Scale, lo: float, hi: float,
                  period: float, align: str = "middle") -> None:
+        lo = 0.0 if s_y.to_mm(-lo) < TIE_MM else lo         # a last bit below zero is zero (numpy versions differ)
         self.lo, self.hi = min(lo, 0.0), max(hi, 0.0)
         self.top, self.height = top, height
         used = s_y.to_mm(self.hi - self.lo)

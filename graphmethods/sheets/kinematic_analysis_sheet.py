@@ -17,22 +17,49 @@ Each part keeps its own scales, written under it; the title block names the sche
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, in_language, notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, notation as get_notation
 from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.force_analysis_sheet import _case, sheet_page as _sheet_page
 from graphmethods.sheets.layout import Sheet
 
-_W = {"title": ("Kinematic analysis", "Кинематический анализ", "运动分析")}
-
 #: most acceleration plans one sheet draws (each needs a readable share of the lower row)
 MAX_PLANS = 4
+
+
+@dataclass(frozen=True)
+class AnalysisSheetLayout:
+    """The A1 sheet's division into its parts (shares of the content box, mm between the parts)."""
+
+    gap_mm: float = 8.0                 # between the parts
+    upper_share: float = 0.52           # the upper row (scheme, velocity plans) of the height
+    scheme_share: float = 0.45          # the scheme of the upper row's width
+    diagrams_share: float = 0.4         # the slider's diagrams of the lower row's width
+
+
+ANALYSIS_SHEET_LAYOUT = AnalysisSheetLayout()
+
+
+def _plan_positions(case: Any, m: int, plan_positions: Sequence[int] | None) -> list[int]:
+    """The positions whose acceleration plans are drawn: given (checked) or :func:`default_plan_positions`."""
+    if plan_positions is None:
+        plan_positions = default_plan_positions(case, m)
+    ks = list(plan_positions)
+    if not 1 <= len(ks) <= MAX_PLANS:
+        raise InputError(f"plan positions {ks!r}: give 1 to {MAX_PLANS} positions for the acceleration plans")
+    for k in ks:
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) < m:
+            raise InputError(f"plan position {k!r}: give position numbers 0…{m - 1}")
+    if len(set(ks)) != len(ks):
+        raise InputError(f"plan positions {ks!r}: each position once")
+    return [int(k) for k in ks]
 
 
 def default_plan_positions(case: Any, m: int = 12) -> tuple[int, int]:
@@ -87,28 +114,19 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
 
     case = _case(subject)
     nt = get_notation(notation)
-    if plan_positions is None:
-        plan_positions = default_plan_positions(case, m)
-    ks = list(plan_positions)
-    if not 1 <= len(ks) <= MAX_PLANS:
-        raise InputError(f"plan positions {ks!r}: give 1 to {MAX_PLANS} positions for the acceleration plans")
-    for k in ks:
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= int(k) < m:
-            raise InputError(f"plan position {k!r}: give position numbers 0…{m - 1}")
-    if len(set(ks)) != len(ks):
-        raise InputError(f"plan positions {ks!r}: each position once")
-    ks = [int(k) for k in ks]
+    lay = ANALYSIS_SHEET_LAYOUT
+    ks = _plan_positions(case, m, plan_positions)
     if not isinstance(page, Page) and str(page).upper() != "A1":
         raise InputError(f"page {page!r}: the kinematic-analysis sheet holds four parts (scheme, velocity plans, "
                          f"acceleration plans, the slider's diagrams) and is drawn on A1")
     pg = _sheet_page(page, "kinematic-analysis")
-    sheet = Sheet(nt=nt, page=None, title=title or in_language(_W["title"], nt), problem=title_of(case),
+    sheet = Sheet(nt=nt, page=None, title=title or nt.word("kinematics.analysis"), problem=title_of(case),
                   title_block=title_block, default_page=pg)
     x0, _, x1, _ = sheet.box
     top, bottom = sheet.top, sheet.caption_y + 1.0
-    gap = 8.0
-    split_y = top + 0.52 * (bottom - top)
-    split_x = x0 + 0.45 * (x1 - x0)
+    gap = lay.gap_mm
+    split_y = top + lay.upper_share * (bottom - top)
+    split_x = x0 + lay.scheme_share * (x1 - x0)
     s_scheme = kinematic_scheme(case, notation=nt, title_block=False, m=m,
                                 page=region_page(pg, (x0, top, split_x - gap / 2, split_y)))
     s_vel = velocity_plan_grid(case, notation=nt, title_block=False, m=m,
@@ -118,11 +136,11 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
     right = x1
     try:
         probe = kinematic_diagrams(case, notation=nt, title_block=False, m=m,
-                                   page=region_page(pg, (x1 - 0.4 * (x1 - x0), lower[0], x1, lower[1])))
+                                   page=region_page(pg, (x1 - lay.diagrams_share * (x1 - x0), lower[0], x1, lower[1])))
     except InputError:                  # no slider: the acceleration plans take the whole row
         probe = None
     if probe is not None:
-        right = x1 - 0.4 * (x1 - x0) - gap
+        right = x1 - lay.diagrams_share * (x1 - x0) - gap
     w = (right - x0 - gap * (len(ks) - 1)) / len(ks)
     for j, k in enumerate(ks):
         left = x0 + j * (w + gap)
@@ -131,6 +149,12 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
                       f"acceleration-plan-{k}"))
     if probe is not None:
         parts.append((probe, "kinematic-diagrams"))
+    return _assembled(sheet, parts, name)
+
+
+def _assembled(sheet: Sheet, parts: list[tuple[Scene, str]], name: str) -> Scene:
+    """The parts as insets of the sheet, each with its own scales and notes; the title block names the
+    scheme's scales (the first part's)."""
     groups: list[Group] = []
     scales: tuple[Scale, ...] = ()
     for scene, nm in parts:
@@ -138,8 +162,8 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
         groups.append(g)
         scales += sc
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
-    return Scene(sheet.page(s_scheme.scales()), (sheet.header(), *groups), title=sheet.title,
-                 notation=nt.code, name=name, extra_scales=scales, notes=notes)
+    return Scene(sheet.page(parts[0][0].scales()), (sheet.header(), *groups), title=sheet.title,
+                 notation=sheet.nt.code, name=name, extra_scales=scales, notes=notes)
 
 
 __all__ = ["default_plan_positions", "kinematic_analysis_sheet"]

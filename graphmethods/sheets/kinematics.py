@@ -40,8 +40,10 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any, cast
 
 import numpy as np
 
@@ -61,7 +63,7 @@ from graphmethods.scene import (
     notation as get_notation,
 )
 from graphmethods.scene.elements import Dimension, Element
-from graphmethods.scene.primitives import THIN, Style
+from graphmethods.scene.primitives import THIN, Label, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.units import convenient_at_least
@@ -74,20 +76,6 @@ EXTREME = Style(width_mm=0.25, dash=(3.0, 1.0))
 CELL = Style(width_mm=0.18)
 CELL_ILL = Style(width_mm=0.5, dash=(2.0, 1.0))
 PRIME = "′"
-
-def _word(nt, key: str, **kw) -> str:
-    return nt.word(f"kinematics.{key}", **kw)
-
-
-def _unit(nt, unit: str) -> str:
-    return nt.unit(unit)
-
-
-def _quantity(nt, symbol: str, unit: str) -> str:
-    u = _unit(nt, unit)
-    if nt.quantity_style == "slash":
-        return f"{symbol}/{u}" if all(c not in u for c in "·/ °") else f"{symbol}/({u})"
-    return f"{symbol}, {u}"
 
 
 _SUB = re.compile(r"([A-Za-z])(\d+)")
@@ -171,8 +159,8 @@ class _Linkage:
     def speed_text(self, nt) -> str:
         w = nt.number(self.omega_1, sig=4)
         if self.n_rpm is not None:
-            return _word(nt, "speed_n", w=w, n=nt.number(self.n_rpm, sig=4))
-        return _word(nt, "speed", w=w)
+            return nt.word("kinematics.speed_n", w=w, n=nt.number(self.n_rpm, sig=4))
+        return nt.word("kinematics.speed", w=w)
 
 
 def _drawn(pos) -> list[int]:
@@ -233,8 +221,8 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
     for gap in gaps:                # near the point across a thin line rather than far from it
         cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
         boxes = [label_bbox(c) for c in cands]
-        ok = [occ.is_free(b, within=within, lines=False) and (hard is None or hard.is_free(b)) for b in boxes]
-        if not any(ok):
+        ok = _free_of(occ, hard, boxes, within=within, lines=False)
+        if not ok.any():
             continue
         hits = _crossings(occ, boxes) if avoid_lines else np.zeros(len(boxes), dtype=int)
         best = min((i for i in range(len(cands)) if ok[i]), key=lambda i: (hits[i], i))
@@ -247,13 +235,10 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
         break
     if lab is None:                 # crowded: further out, with a leader line to the point when asked for
         for gap in (gaps[-1] + 2.0, gaps[-1] + 4.0, gaps[-1] + 6.5, gaps[-1] + 9.5, gaps[-1] + 13.0):
-            for d in dirs:
-                cand = place_label(at, text, d, gap_mm=gap, size_mm=size_mm)
-                b = label_bbox(cand)
-                if occ.is_free(b, within=within, lines=False) and (hard is None or hard.is_free(b)):
-                    lab = cand
-                    break
-            if lab is not None:
+            cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
+            ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=False)
+            if ok.any():
+                lab = cands[int(np.argmax(ok))]
                 if leaders is not None:
                     b = label_bbox(lab)
                     near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
@@ -281,12 +266,20 @@ def _clean_further(occ, at, text, dirs, gaps, gap, size_mm, within, hard):
 
     nxt = [g for g in gaps if g > gap][:1]
     for g in nxt:
-        for d in dirs:
+        for d in dirs:              # one at a time: the first is often free, and a label costs its text's width
             cand = place_label(at, text, d, gap_mm=g, size_mm=size_mm)
             b = label_bbox(cand)
             if occ.is_free(b, within=within) and (hard is None or hard.is_free(b)):
                 return cand
     return None
+
+
+def _free_of(occ: Occupancy, hard: Occupancy | None, boxes: list, *, within, lines: bool) -> np.ndarray:
+    """Which candidate boxes are free in ``occ`` (of its lines too when ``lines``) and of everything in ``hard``."""
+    ok = occ.free(boxes, within=within, lines=lines)
+    if hard is not None and ok.any():
+        ok &= hard.free(boxes)
+    return ok
 
 
 def _paper_deg(v) -> float:
@@ -341,6 +334,322 @@ def _parts(mech, pos) -> _Parts:
     return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident))
 
 
+@dataclass(frozen=True)
+class SchemeLayout:
+    """The kinematic scheme's millimetre constants (paper mm)."""
+
+    pad_x_mm: float = 10.0              # beside the linkage
+    pad_top_mm: float = 10.0            # above it
+    pad_bottom_mm: float = 14.0         # below it: the stroke's dimension
+    caption_room_mm: float = 9.0        # between the drawing's area and the captions line
+    guide_overrun_mm: float = 8.0       # a guide beyond the slider's extreme positions
+    guide_offset_mm: float = 3.0        # its hatched surface from its line
+    block_length_mm: float = 8.0        # a block on a rocker or a yoke's block
+    block_height_mm: float = 4.5
+    mark_mm: float = 0.45               # the points marking the crank pin and output in every position
+    point_mm: float = 0.7               # the points of the thick position (centres of mass)
+    hard_pad_mm: float = 0.4            # what a label must never cover: thick links, blocks
+    joint_clear_mm: float = 1.3         # half the side of the square a joint or pivot keeps free
+    names_pad_mm: float = 1.4           # names keep clear of the numbers ("B 3" must not read as B₃)
+    pad_mm: float = 0.6                 # the occupancy's padding otherwise
+    names_gaps_mm: tuple[float, ...] = (2.2, 3.4, 4.8, 6.5, 8.5)
+    stroke_offset_mm: float = 4.0       # the dimension H beyond the numbers
+    summary_above_mm: float = 6.5       # the line of facts above the captions
+
+
+SCHEME_LAYOUT = SchemeLayout()
+
+
+@dataclass(frozen=True)
+class _SchemeGeometry:
+    """What the scheme draws, in metres: the positions, the parts, the extreme position, the paths."""
+
+    pos: Any
+    mech: Any
+    parts: _Parts
+    drawn: list[int]
+    thick: int | None
+    ext: _Extreme | None
+    ext_pos: Any                        # the extreme position when it falls between two numbered ones
+    fine: Any                           # 241 positions for the dotted paths (None: not drawn)
+    c_xy: np.ndarray                    # the crank's centre, m
+    r: float                            # the crank's length, m
+
+
+def _scheme_geometry(pos, thick: int | None, trajectories: bool) -> _SchemeGeometry:
+    """Step 1: the positions the scheme draws (the extreme one and the fine paths added)."""
+    mech = pos.mechanism
+    drawn = _drawn(pos)
+    if thick is not None and thick not in drawn:
+        raise InputError(f"thick = {thick!r}: the scheme draws positions {drawn[0]}…{drawn[-1]}; give one of them "
+                         f"(or None for all thin)")
+    parts = _parts(mech, pos)
+    ext = _end_extreme(pos)
+    ext_pos = mech.positions(phi=[ext.phi]) if ext is not None and ext.same_as is None else None
+    fine = None
+    if trajectories and parts.paths:
+        if pos.m is not None:               # a full turn
+            fine_phi = pos.phi[0] + mech.sense * np.linspace(0.0, 2.0 * math.pi, 241)
+        else:                               # between the angles given (where the linkage may not turn fully)
+            fine_phi = np.linspace(float(pos.phi.min()), float(pos.phi.max()), 241)
+        try:
+            fine = mech.positions(phi=fine_phi)
+        except AssemblyError:               # the angles given span a range where it cannot be assembled
+            fine = None
+    c_xy = pos.coords[parts.centre][0]
+    r = float(np.hypot(*(pos.coords[parts.pin][0] - c_xy)))
+    return _SchemeGeometry(pos, mech, parts, drawn, thick, ext, ext_pos, fine, c_xy, r)
+
+
+def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: SchemeLayout) -> tuple[Scale, Frame]:
+    """Step 2: μ_l (given, checked, or picked to fill the sheet) and the frame centring the drawing."""
+    x0, _, x1, _ = sheet.box
+
+    def coords(p, names, idx=None):
+        return [p.coords[j] if idx is None else p.coords[j][idx] for j in names]
+
+    joints = list(g.mech.joints) + list(g.parts.extra)
+    pts = coords(g.pos, joints, g.drawn)
+    if g.ext_pos is not None:
+        pts += coords(g.ext_pos, joints)
+    if g.fine is not None:
+        pts += coords(g.fine, g.parts.paths)
+    pts.append(np.array([g.c_xy - g.r, g.c_xy + g.r]))
+    allp = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    area = (x0, sheet.top, x1, sheet.caption_y - lay.caption_room_mm)
+    avail_w = area[2] - area[0] - 2 * lay.pad_x_mm
+    avail_h = area[3] - area[1] - lay.pad_top_mm - lay.pad_bottom_mm
+    span_x, span_y = float(hi[0] - lo[0]), float(hi[1] - lo[1])
+    if mu_l is None:
+        need = max(span_x / avail_w, span_y / avail_h)
+        per = convenient_at_least(need)
+        s_l = Scale("μ_l", unit_l, per, note=f"picked: the linkage spans {span_x:.4g} × {span_y:.4g} m in "
+                                             f"{avail_w:.0f} × {avail_h:.0f} mm, needs ≥ {need:.4g} m/mm; "
+                                             f"chose {per:g}")
+    else:
+        s_l = Scale("μ_l", unit_l, mu_l.per_mm if isinstance(mu_l, Scale) else mu_l)
+        if span_x / s_l.per_mm > avail_w * (1 + 1e-9) or span_y / s_l.per_mm > avail_h * (1 + 1e-9):
+            raise InputError(f"the linkage at μ_l = {s_l.per_mm:g} m/mm needs {span_x / s_l.per_mm:.0f} × "
+                             f"{span_y / s_l.per_mm:.0f} mm but the sheet leaves {avail_w:.0f} × {avail_h:.0f} mm; "
+                             f"give a larger μ_l (more m per mm), a larger page, or none to have one picked")
+    cx = (area[0] + area[2]) / 2 - s_l.to_mm(float(lo[0] + hi[0]) / 2)
+    cy = (area[1] + lay.pad_top_mm + area[3] - lay.pad_bottom_mm) / 2 + s_l.to_mm(float(lo[1] + hi[1]) / 2)
+    return s_l, Frame((cx, cy), s_l, s_l)
+
+
+def _scheme_links(g: _SchemeGeometry, f: Frame) -> tuple[list[Element], list[Element], list]:
+    """Step 3: the thin things (paths, crank circle, thin positions, the extreme one), the thick position,
+    and every link's (a, b, page points) for the choice of ground directions."""
+    def P(xy) -> tuple[float, float]:
+        return f.pt(xy[0], xy[1])
+
+    thin_els: list[Element] = []
+    if g.fine is not None:
+        for j in g.parts.paths:
+            thin_els.append(Polyline(f.pts(g.fine.coords[j][:, 0], g.fine.coords[j][:, 1]), style=TRAJECTORY,
+                                     name=f"path-{j}"))
+    t = np.linspace(0.0, 2.0 * math.pi, 181)
+    thin_els.append(Polyline(f.pts(g.c_xy[0] + g.r * np.cos(t), g.c_xy[1] + g.r * np.sin(t)), style=THIN,
+                             closed=True, name="crank-circle"))
+    link_segments: list = []
+
+    def link_lines(p, idx, style, tag) -> list[Element]:
+        out: list[Element] = []
+        for a, b in g.parts.links:
+            A, B = P(p.coords[a][idx]), P(p.coords[b][idx])
+            out.append(Line(A, B, style=style, name=f"{tag}-{a}{b}"))
+            link_segments.append((a, b, A, B))
+        for j in g.parts.extra:            # a point off its link line: the link drawn as a triangle
+            spec = next(q for q in g.mech.points if q.name == j)
+            if spec.angle != 0.0:
+                x, y, _, _ = g.mech._resolve_link(spec.link)
+                S = P(p.coords[j][idx])
+                out += [Line(P(p.coords[x][idx]), S, style=style, name=f"{tag}-{x}{j}"),
+                        Line(S, P(p.coords[y][idx]), style=style, name=f"{tag}-{j}{y}")]
+        return out
+
+    for k in g.drawn:
+        if k != g.thick:
+            thin_els += link_lines(g.pos, k, THIN, f"position-{k}")
+    if g.ext_pos is not None:
+        thin_els += link_lines(g.ext_pos, 0, EXTREME, "extreme")
+    thick_els = link_lines(g.pos, g.thick, THICK, "thick") if g.thick is not None else []
+    return thin_els, thick_els, link_segments
+
+
+def _scheme_grounds(g: _SchemeGeometry, P, link_segments: list, lay: SchemeLayout) -> list[Element]:
+    """Step 4: the sliders' guides (hatched on the side the links leave free) and the fixed pivots' ground."""
+    symbol_els: list[Element] = []
+    for j, (gx, gy) in g.parts.sliders.items():
+        u = np.array([gx, gy], dtype=float)
+        sp = np.concatenate([g.pos.coords[j][g.drawn]] + ([g.ext_pos.coords[j]] if g.ext_pos is not None else []))
+        proj = sp @ u
+        a_m, b_m = sp[np.argmin(proj)], sp[np.argmax(proj)]
+        ua = np.array([u[0], -u[1]])       # on paper
+        start = np.asarray(P(a_m)) - ua * lay.guide_overrun_mm
+        end = np.asarray(P(b_m)) + ua * lay.guide_overrun_mm
+        side = _free_side(start, end, link_segments, thick_dir=_thick_dir(g.pos, g.parts, j, g.thick))
+        symbol_els.append(Guide(tuple(start.tolist()), tuple(end.tolist()), offset_mm=lay.guide_offset_mm, side=side,
+                                name=f"guide-{j}"))
+    for j in g.parts.fixed:
+        at = P(g.pos.coords[j][0])
+        symbol_els.append(FixedPivot(at, direction_deg=_ground_direction(at, link_segments), name=f"pivot-{j}"))
+    return symbol_els
+
+
+def _scheme_joints(g: _SchemeGeometry, P, lay: SchemeLayout) -> tuple[list[Element], list[Element]]:
+    """Step 5: blocks, joints and points of the thick position; the marks of the crank pin and the output
+    point in every other position (and in the extreme one)."""
+    top_els: list[Element] = []
+    parts, pos, thick = g.parts, g.pos, g.thick
+    if thick is not None:
+        for j, (gx, gy) in parts.sliders.items():
+            top_els.append(SliderBlock(P(pos.coords[j][thick]), angle_deg=_paper_deg((gx, gy)), name=f"block-{j}"))
+        if parts.rocker_block is not None:
+            bp, pivot = parts.rocker_block
+            d = pos.coords[bp][thick] - pos.coords[pivot][thick]
+            top_els.append(SliderBlock(P(pos.coords[bp][thick]), angle_deg=_paper_deg(d), length_mm=lay.block_length_mm,
+                                       height_mm=lay.block_height_mm, name=f"block-{bp}"))
+        for y in _translating_yokes(g.mech):    # a yoke (RPP on the frame's guide): its slot through R, the block at P
+            R_xy, P_xy = pos.coords[y.R][thick], pos.coords[y.P][thick]
+            sd = np.array([math.cos(y.guide.angle + y.slot_angle), math.sin(y.guide.angle + y.slot_angle)])
+            base = R_xy + y.e * np.array([-sd[1], sd[0]])
+            half = 1.15 * g.r
+            top_els.append(Line(P(base - sd * half), P(base + sd * half), style=THICK, name=f"yoke-{y.R}"))
+            top_els.append(SliderBlock(P(P_xy), angle_deg=_paper_deg(sd), length_mm=lay.block_length_mm,
+                                       height_mm=lay.block_height_mm, name=f"block-{y.P}"))
+        for j in g.mech.joints:
+            if (j in parts.fixed or j in parts.sliders or j in parts.coincident
+                    or (parts.rocker_block and j == parts.rocker_block[0])):
+                continue
+            top_els.append(PinJoint(P(pos.coords[j][thick]), name=f"joint-{j}"))
+        for j in parts.extra:
+            top_els.append(Point(P(pos.coords[j][thick]), radius_mm=lay.point_mm, name=f"point-{j}"))
+    marks: list[Element] = []
+    for k in g.drawn:
+        if k == thick:
+            continue
+        for j in (parts.pin, parts.output):
+            marks.append(Point(P(pos.coords[j][k]), radius_mm=lay.mark_mm, name=f"mark-{j}-{k}"))
+    if g.ext_pos is not None:
+        for j in (parts.pin, parts.output):
+            marks.append(Point(P(g.ext_pos.coords[j][0]), radius_mm=lay.mark_mm, name=f"mark-{j}-extreme"))
+    return top_els, marks
+
+
+def _scheme_keep_clear(occ: Occupancy, thick_els: list[Element], top_els: list[Element], symbol_els: list[Element],
+                       lay: SchemeLayout) -> Occupancy:
+    """What a label must never cover (thick links, blocks: returned), and the joints and blocks kept free."""
+    hard = Occupancy(pad_mm=lay.hard_pad_mm)
+    _register(hard, *thick_els, *[e for e in top_els if isinstance(e, SliderBlock)])
+    c = lay.joint_clear_mm
+    for e in top_els + symbol_els:
+        if isinstance(e, (PinJoint, FixedPivot)):
+            x, y = e.at
+            occ.add_box((x - c, y - c, x + c, y + c))
+        elif isinstance(e, SliderBlock):
+            cs = np.asarray(e.corners())
+            occ.add_box((*cs.min(axis=0), *cs.max(axis=0)))
+    return hard
+
+
+def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_els: list[Element], nt,
+                    lay: SchemeLayout) -> tuple[list[Text], list[Element]]:
+    """Step 6: the position numbers at the output point, the stroke H beyond them, the numbers at the crank pin."""
+    parts, pos = g.parts, g.pos
+    guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
+    out_items = _numbered(pos, parts, g.drawn, g.ext, g.ext_pos, parts.output)
+    free = None                                           # a guide at an angle: the numbers' side on paper
+    out_side: str | None = None
+    if guide is not None:
+        out_side = "s" if guide.side > 0 else "n"
+        gs, ge = np.asarray(guide.start, float), np.asarray(guide.end, float)
+        ug = (ge - gs) / float(np.hypot(*(ge - gs)))
+        if abs(ug[1]) > 1e-9:
+            free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
+            toward = math.degrees(math.atan2(-free[1], free[0]))
+            dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward)
+        else:
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
+    else:
+        pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
+        numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
+    dims: list[Element] = []
+    if guide is not None and pos.H is not None and g.ext is not None:
+        end_xy = g.ext_pos.coords[parts.output][0] if g.ext_pos is not None else pos.coords[parts.output][g.ext.same_as]
+        text = nt.word("kinematics.stroke", H=nt.number(pos.H, sig=4), u=nt.unit("m"))
+        dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
+        dims.append(dim)
+        _register(occ, dim)
+    numbers += _crank_numbers(_numbered(pos, parts, g.drawn, g.ext, g.ext_pos, parts.pin), P(g.c_xy), P, occ,
+                              sheet.box)
+    return numbers, dims
+
+
+def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str | None,
+                      lay: SchemeLayout) -> Dimension:
+    """The stroke H dimensioned between the output's extreme points ``a`` and ``b`` (page mm), beyond
+    their numbers: along a guide at an angle (``free``: the unit normal toward the numbers) or level."""
+    from graphmethods.scene.elements import label_bbox
+
+    left, right = (a, b) if a[0] <= b[0] else (b, a)
+    boxes = [label_bbox(cast(Label, p)) for t in numbers for p in t.primitives()]          # Text draws labels
+    axis_y = a[1]
+    reach = max([axis_y - bb[1] for bb in boxes] if out_side == "n" else [bb[3] - axis_y for bb in boxes]) \
+        if boxes else 0.0
+    off = lay.stroke_offset_mm
+    if free is not None:                              # along a guide at an angle, beyond its numbers
+        a_, b_ = np.asarray(a, float), np.asarray(b, float)
+        corners = [np.array([x, y]) for bb in boxes for x in (bb[0], bb[2]) for y in (bb[1], bb[3])]
+        reach = max([float((c - a_) @ free) for c in corners], default=0.0)
+        lift = (max(reach, 2.0) + 0.8) * free
+        p1, p2 = a_ + lift, b_ + lift
+        if float(np.array([-(p2 - p1)[1], (p2 - p1)[0]]) @ free) < 0:
+            p1, p2 = p2, p1                           # the dimension's offset goes to the free side
+        return Dimension(tuple(p1.tolist()), tuple(p2.tolist()), text, offset_mm=off, size_mm=TEXT_MM,
+                         name="dimension-H")
+    rise = (max(reach, 2.0) + 0.8) * (-1.0 if out_side == "n" else 1.0)       # measured from beyond the numbers
+    left, right = (left[0], left[1] + rise), (right[0], right[1] + rise)
+    if out_side == "n":
+        return Dimension(right, left, text, offset_mm=off, size_mm=TEXT_MM, name="dimension-H")
+    return Dimension(left, right, text, offset_mm=off, size_mm=TEXT_MM, name="dimension-H")
+
+
+def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, lay: SchemeLayout) -> list[Text]:
+    """Step 7: the names of the joints of the thick position (position 0 when all are thin), away from the middle."""
+    labels = []
+    occ.pad = lay.names_pad_mm
+    ref = g.thick if g.thick is not None else 0
+    centroid = np.mean([P(g.pos.coords[j][ref]) for j in g.mech.joints], axis=0)
+    for j in list(g.mech.joints) + list(g.parts.extra):
+        if j in g.parts.coincident:
+            continue
+        at = P(g.pos.coords[j][ref])
+        away = np.asarray(at) - centroid
+        prefer = math.degrees(math.atan2(-away[1], away[0])) if np.hypot(*away) > 1e-9 else 90.0
+        if j in g.parts.fixed:
+            prefer = 180.0 if at[0] <= centroid[0] else 0.0
+        labels.append(_place(occ, at, _sub(j), prefer, size_mm=TEXT_MM + 0.3, within=box, name=f"name-{j}",
+                             gaps=lay.names_gaps_mm, hard=hard))
+    occ.pad = lay.pad_mm
+    return labels
+
+
+def _scheme_facts(pos, ext: _Extreme | None, nt) -> list[str]:
+    """What the drawing says in words: the extreme positions, θ and K, or the rocker's swing."""
+    facts = []
+    st = pos.strokes
+    if st is not None and ext is not None:
+        facts.append(nt.word("kinematics.extremes", a="0", b=ext.label))
+        facts.append(nt.word("kinematics.theta", t=nt.number(math.degrees(st.theta), sig=4) + "°"))
+        facts.append(nt.word("kinematics.K", K=nt.number(st.K, sig=4)))
+    if pos.psi_max is not None:
+        facts.append(nt.word("kinematics.swing", p=nt.number(math.degrees(pos.psi_max), sig=4) + "°"))
+    return facts
+
+
 def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | None = 0, trajectories: bool = True,
                      notation="en", page=None, title=None, problem=None, title_block: bool = True,
                      name: str = "kinematic-scheme") -> Scene:
@@ -387,255 +696,34 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     """
     lk = _Linkage.of(linkage, m=m)
     nt = get_notation(notation)
-    pos = lk.positions
-    mech = pos.mechanism
-    drawn = _drawn(pos)
-    if thick is not None and thick not in drawn:
-        raise InputError(f"thick = {thick!r}: the scheme draws positions {drawn[0]}…{drawn[-1]}; give one of them "
-                         f"(or None for all thin)")
-    parts = _parts(mech, pos)
-    ext = _end_extreme(pos)
-    ext_pos = mech.positions(phi=[ext.phi]) if ext is not None and ext.same_as is None else None
-    fine = None
-    if trajectories and parts.paths:
-        if pos.m is not None:               # a full turn
-            fine_phi = pos.phi[0] + mech.sense * np.linspace(0.0, 2.0 * math.pi, 241)
-        else:                               # between the angles given (where the linkage may not turn fully)
-            fine_phi = np.linspace(float(pos.phi.min()), float(pos.phi.max()), 241)
-        try:
-            fine = mech.positions(phi=fine_phi)
-        except AssemblyError:               # the angles given span a range where it cannot be assembled
-            fine = None
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "scheme", m=len(drawn)),
-                   problem=lk.problem if problem is None else problem, title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
-
-    # ---- the scale and the place of the drawing
-    def coords(p, names, idx=None):
-        return [p.coords[j] if idx is None else p.coords[j][idx] for j in names]
-
-    joints = list(mech.joints) + list(parts.extra)
-    pts = coords(pos, joints, drawn)
-    if ext_pos is not None:
-        pts += coords(ext_pos, joints)
-    if fine is not None:
-        pts += coords(fine, parts.paths)
-    c_xy = pos.coords[parts.centre][0]
-    r = float(np.hypot(*(pos.coords[parts.pin][0] - c_xy)))
-    pts.append(np.array([c_xy - r, c_xy + r]))
-    allp = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
-    lo, hi = allp.min(axis=0), allp.max(axis=0)
-    pad_x, pad_top, pad_bottom = 10.0, 10.0, 14.0
-    area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
-    avail_w = area[2] - area[0] - 2 * pad_x
-    avail_h = area[3] - area[1] - pad_top - pad_bottom
-    span_x, span_y = float(hi[0] - lo[0]), float(hi[1] - lo[1])
-    unit_l = _unit(nt, "m")
-    if mu_l is None:
-        need = max(span_x / avail_w, span_y / avail_h)
-        per = convenient_at_least(need)
-        s_l = Scale("μ_l", unit_l, per, note=f"picked: the linkage spans {span_x:.4g} × {span_y:.4g} m in "
-                                             f"{avail_w:.0f} × {avail_h:.0f} mm, needs ≥ {need:.4g} m/mm; chose {per:g}")
-    else:
-        s_l = Scale("μ_l", unit_l, mu_l.per_mm if isinstance(mu_l, Scale) else mu_l)
-        if span_x / s_l.per_mm > avail_w * (1 + 1e-9) or span_y / s_l.per_mm > avail_h * (1 + 1e-9):
-            raise InputError(f"the linkage at μ_l = {s_l.per_mm:g} m/mm needs {span_x / s_l.per_mm:.0f} × "
-                             f"{span_y / s_l.per_mm:.0f} mm but the sheet leaves {avail_w:.0f} × {avail_h:.0f} mm; "
-                             f"give a larger μ_l (more m per mm), a larger page, or none to have one picked")
-    cx = (area[0] + area[2]) / 2 - s_l.to_mm(float(lo[0] + hi[0]) / 2)
-    cy = (area[1] + pad_top + area[3] - pad_bottom) / 2 + s_l.to_mm(float(lo[1] + hi[1]) / 2)
-    f = Frame((cx, cy), s_l, s_l)
+    lay = SCHEME_LAYOUT
+    g = _scheme_geometry(lk.positions, thick, trajectories)
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.scheme", m=len(g.drawn)),
+                  problem=lk.problem if problem is None else problem, title_block=title_block)
+    s_l, f = _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay)
 
     def P(xy) -> tuple[float, float]:
         return f.pt(xy[0], xy[1])
 
     occ = sheet.occ
-    elements: list = [sheet.header()]
-
-    # ---- thin things first: paths, crank circle, thin positions, the extreme position
-    thin_els = []
-    if fine is not None:
-        for j in parts.paths:
-            thin_els.append(Polyline(f.pts(fine.coords[j][:, 0], fine.coords[j][:, 1]), style=TRAJECTORY,
-                                     name=f"path-{j}"))
-    t = np.linspace(0.0, 2.0 * math.pi, 181)
-    thin_els.append(Polyline(f.pts(c_xy[0] + r * np.cos(t), c_xy[1] + r * np.sin(t)), style=THIN, closed=True,
-                             name="crank-circle"))
-    link_segments = []                      # (k, pivot?, page points) for the choice of ground directions
-
-    def link_lines(p, idx, style, tag):
-        out = []
-        for a, b in parts.links:
-            A, B = P(p.coords[a][idx]), P(p.coords[b][idx])
-            out.append(Line(A, B, style=style, name=f"{tag}-{a}{b}"))
-            link_segments.append((a, b, A, B))
-        for j in parts.extra:              # a point off its link line: the link drawn as a triangle
-            spec = next(q for q in mech.points if q.name == j)
-            if spec.angle != 0.0:
-                x, y, _, _ = mech._resolve_link(spec.link)
-                S = P(p.coords[j][idx])
-                out += [Line(P(p.coords[x][idx]), S, style=style, name=f"{tag}-{x}{j}"),
-                        Line(S, P(p.coords[y][idx]), style=style, name=f"{tag}-{j}{y}")]
-        return out
-
-    for k in drawn:
-        if k != thick:
-            thin_els += link_lines(pos, k, THIN, f"position-{k}")
-    if ext_pos is not None:
-        thin_els += link_lines(ext_pos, 0, EXTREME, "extreme")
-    thick_els = link_lines(pos, thick, THICK, "thick") if thick is not None else []
+    thin_els, thick_els, link_segments = _scheme_links(g, f)
     _register(occ, *thin_els, *thick_els)
-
-    # ---- guides of the sliders: the hatched surface on the side the links leave free
-    symbol_els: list[Element] = []
-    for j, (gx, gy) in parts.sliders.items():
-        u = np.array([gx, gy], dtype=float)
-        sp = np.concatenate([pos.coords[j][drawn]] + ([ext_pos.coords[j]] if ext_pos is not None else []))
-        proj = sp @ u
-        a_m, b_m = sp[np.argmin(proj)], sp[np.argmax(proj)]
-        ua = np.array([u[0], -u[1]])       # on paper
-        start = np.asarray(P(a_m)) - ua * 8.0
-        end = np.asarray(P(b_m)) + ua * 8.0
-        side = _free_side(start, end, link_segments, thick_dir=_thick_dir(pos, parts, j, thick))
-        g = Guide(tuple(start.tolist()), tuple(end.tolist()), offset_mm=3.0, side=side, name=f"guide-{j}")
-        symbol_els.append(g)
-    for j in parts.fixed:
-        at = P(pos.coords[j][0])
-        symbol_els.append(FixedPivot(at, direction_deg=_ground_direction(at, link_segments), name=f"pivot-{j}"))
+    symbol_els = _scheme_grounds(g, P, link_segments, lay)
     _register(occ, *symbol_els)
-
-    # ---- blocks, joints, points of the thick position
-    top_els: list[Element] = []
-    if thick is not None:
-        for j, (gx, gy) in parts.sliders.items():
-            top_els.append(SliderBlock(P(pos.coords[j][thick]), angle_deg=_paper_deg((gx, gy)), name=f"block-{j}"))
-        if parts.rocker_block is not None:
-            bp, pivot = parts.rocker_block
-            d = pos.coords[bp][thick] - pos.coords[pivot][thick]
-            top_els.append(SliderBlock(P(pos.coords[bp][thick]), angle_deg=_paper_deg(d), length_mm=8.0,
-                                       height_mm=4.5, name=f"block-{bp}"))
-        for g in _translating_yokes(mech):       # a yoke (RPP on the frame's guide): its slot through R, the block at P
-            R_xy, P_xy = pos.coords[g.R][thick], pos.coords[g.P][thick]
-            sd = np.array([math.cos(g.guide.angle + g.slot_angle), math.sin(g.guide.angle + g.slot_angle)])
-            base = R_xy + g.e * np.array([-sd[1], sd[0]])
-            half = 1.15 * r
-            top_els.append(Line(P(base - sd * half), P(base + sd * half), style=THICK, name=f"yoke-{g.R}"))
-            top_els.append(SliderBlock(P(P_xy), angle_deg=_paper_deg(sd), length_mm=8.0, height_mm=4.5,
-                                       name=f"block-{g.P}"))
-        for j in mech.joints:
-            if (j in parts.fixed or j in parts.sliders or j in parts.coincident
-                    or (parts.rocker_block and j == parts.rocker_block[0])):
-                continue
-            top_els.append(PinJoint(P(pos.coords[j][thick]), name=f"joint-{j}"))
-        for j in parts.extra:
-            top_els.append(Point(P(pos.coords[j][thick]), radius_mm=0.7, name=f"point-{j}"))
-    marks = []
-    for k in drawn:                                   # the crank pin and output point in every position
-        if k == thick:
-            continue
-        for j in (parts.pin, parts.output):
-            marks.append(Point(P(pos.coords[j][k]), radius_mm=0.45, name=f"mark-{j}-{k}"))
-    if ext_pos is not None:
-        for j in (parts.pin, parts.output):
-            marks.append(Point(P(ext_pos.coords[j][0]), radius_mm=0.45, name=f"mark-{j}-extreme"))
+    top_els, marks = _scheme_joints(g, P, lay)
     _register(occ, *top_els, *marks)
-    hard = Occupancy(pad_mm=0.4)               # what a label must never cover: thick links, blocks
-    _register(hard, *thick_els, *[e for e in top_els if isinstance(e, SliderBlock)])
-    for e in top_els + symbol_els:
-        if isinstance(e, (PinJoint, FixedPivot)):
-            x, y = e.at
-            occ.add_box((x - 1.3, y - 1.3, x + 1.3, y + 1.3))
-        elif isinstance(e, SliderBlock):
-            cs = np.asarray(e.corners())
-            occ.add_box((*cs.min(axis=0), *cs.max(axis=0)))
-
-    # ---- the sense of rotation
-    rot, rot_label = _rotation_arrow(P(c_xy), s_l.to_mm(r), mech.sense, occ, link_segments)
+    hard = _scheme_keep_clear(occ, thick_els, top_els, symbol_els, lay)
+    rot, rot_label = _rotation_arrow(P(g.c_xy), s_l.to_mm(g.r), g.mech.sense, occ, link_segments)
     _register(occ, rot)
-
-    # ---- position numbers at the output point, the stroke H beyond them, numbers at the crank pin
-    guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
-    out_items = _numbered(pos, parts, drawn, ext, ext_pos, parts.output)
-    free = None                                           # a guide at an angle: the numbers' side on paper
-    if guide is not None:
-        out_side: str | None = "s" if guide.side > 0 else "n"
-        gs, ge = np.asarray(guide.start, float), np.asarray(guide.end, float)
-        ug = (ge - gs) / float(np.hypot(*(ge - gs)))
-        if abs(ug[1]) > 1e-9:
-            free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
-            toward = math.degrees(math.atan2(-free[1], free[0]))
-            dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
-            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward)
-        else:
-            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
-    else:
-        pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
-        numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
-    dims = []
-    if guide is not None and pos.H is not None and ext is not None:
-        j = parts.output
-        end_xy = ext_pos.coords[j][0] if ext_pos is not None else pos.coords[j][ext.same_as]
-        a, b = P(pos.coords[j][0]), P(end_xy)
-        left, right = (a, b) if a[0] <= b[0] else (b, a)
-        from graphmethods.scene.elements import label_bbox
-
-        boxes = [label_bbox(p) for t in numbers for p in t.primitives()]
-        axis_y = a[1]
-        reach = max([axis_y - bb[1] for bb in boxes] if out_side == "n" else [bb[3] - axis_y for bb in boxes]) \
-            if boxes else 0.0
-        text = _word(nt, "stroke", H=nt.number(pos.H, sig=4), u=unit_l)
-        if free is not None:                              # along a guide at an angle, beyond its numbers
-            a_, b_ = np.asarray(a, float), np.asarray(b, float)
-            corners = [np.array([x, y]) for bb in boxes for x in (bb[0], bb[2]) for y in (bb[1], bb[3])]
-            reach = max([float((c - a_) @ free) for c in corners], default=0.0)
-            lift = (max(reach, 2.0) + 0.8) * free
-            p1, p2 = a_ + lift, b_ + lift
-            if float(np.array([-(p2 - p1)[1], (p2 - p1)[0]]) @ free) < 0:
-                p1, p2 = p2, p1                           # the dimension's offset goes to the free side
-            dim = Dimension(tuple(p1.tolist()), tuple(p2.tolist()), text, offset_mm=4.0, size_mm=TEXT_MM,
-                            name="dimension-H")
-        else:
-            rise = (max(reach, 2.0) + 0.8) * (-1.0 if out_side == "n" else 1.0)       # measured from beyond the numbers
-            left, right = (left[0], left[1] + rise), (right[0], right[1] + rise)
-            dim = Dimension(right, left, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H") if out_side == "n" \
-                else Dimension(left, right, text, offset_mm=4.0, size_mm=TEXT_MM, name="dimension-H")
-        dims.append(dim)
-        _register(occ, dim)
-    numbers += _crank_numbers(_numbered(pos, parts, drawn, ext, ext_pos, parts.pin), P(c_xy), P, occ, sheet.box)
-
-    # ---- names of the joints of the thick position, and ω₁
-    labels = []
-    occ.pad = 1.4                   # the names keep clear of the numbers: "B 3" must not read as B₃
-    ref = thick if thick is not None else 0
-    centroid = np.mean([P(pos.coords[j][ref]) for j in mech.joints], axis=0)
-    for j in list(mech.joints) + list(parts.extra):
-        if j in parts.coincident:
-            continue
-        at = P(pos.coords[j][ref])
-        away = np.asarray(at) - centroid
-        prefer = math.degrees(math.atan2(-away[1], away[0])) if np.hypot(*away) > 1e-9 else 90.0
-        if j in parts.fixed:
-            prefer = 180.0 if at[0] <= centroid[0] else 0.0
-        labels.append(_place(occ, at, _sub(j), prefer, size_mm=TEXT_MM + 0.3, within=sheet.box, name=f"name-{j}",
-                             gaps=(2.2, 3.4, 4.8, 6.5, 8.5), hard=hard))
-    occ.pad = 0.6
-    labels.append(rot_label(occ))
-
-    # ---- what the drawing says in words
-    facts = []
-    st = pos.strokes
-    if st is not None and ext is not None:
-        facts.append(_word(nt, "extremes", a="0", b=ext.label))
-        facts.append(_word(nt, "theta", t=nt.number(math.degrees(st.theta), sig=4) + "°"))
-        facts.append(_word(nt, "K", K=nt.number(st.K, sig=4)))
-    if pos.psi_max is not None:
-        facts.append(_word(nt, "swing", p=nt.number(math.degrees(pos.psi_max), sig=4) + "°"))
-    summary = []
-    if facts:
-        summary.append(Text((x0, sheet.caption_y - 6.5), ";   ".join(facts), size_mm=TEXT_MM, name="summary"))
+    numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay)
+    labels = _scheme_names(g, P, occ, sheet.box, hard, lay) + [rot_label(occ)]
+    facts = _scheme_facts(g.pos, g.ext, nt)
+    summary = [Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts), size_mm=TEXT_MM,
+                    name="summary")] if facts else []
     legend = lk.speed_text(nt) if lk.n_rpm is not None else ""
     scales = (s_l,)
-    elements += thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + labels + numbers + summary
+    elements = ([sheet.header()] + thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + labels
+                + numbers + summary)
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
 
@@ -848,32 +936,38 @@ def _plan_markup(label: str) -> str:
     return _sub(label)
 
 
-def _plan_labels(occ, pts_mm: dict, vectors, *, size_mm, within, prefix: str, hard=None, leaders=None) -> list:
-    """Labels of the images of one plan: coincident images share one label ("p, b"), each placed away
-    from the pole (the pole away from its vectors)."""
+def _plan_labels(occ: Occupancy, pts_mm: dict, pole: str, rays: list[str], *, markup_of: Callable[[str], str],
+                 size_mm: float, within, prefix: str, id_of: Callable[[str], str] = str, hard=None,
+                 leaders=None) -> list[Text]:
+    """Labels of the images of one plan (velocity or acceleration): coincident images share one label
+    ("p, b"), each placed away from the ``pole``; the pole's label away from the images in ``rays``.
+
+    ``markup_of`` writes an image's label (``"s2"`` -> ``"s_{2}"``), ``id_of`` names it in the
+    element's name (π is ``pi``).
+    """
     groups: list[list] = []
     for label, at in pts_mm.items():
         for g in groups:
-            if np.hypot(*(np.asarray(g[0][1]) - np.asarray(at))) < 0.8:
+            if math.dist(g[0][1], at) < 0.8:
                 g.append((label, at))
                 break
         else:
             groups.append([(label, at)])
-    p = np.asarray(pts_mm["p"])
+    p = np.asarray(pts_mm[pole])
     out = []
     for g in groups:
         at = np.asarray(g[0][1])
-        text = ", ".join(_plan_markup(lb) for lb, _ in g)
-        if any(lb == "p" for lb, _ in g):
-            ds = [np.asarray(pts_mm[v.end]) - p for v in vectors if v.start == "p"]
+        text = ", ".join(markup_of(lb) for lb, _ in g)
+        if any(lb == pole for lb, _ in g):
+            ds = [np.asarray(pts_mm[e]) - p for e in rays]
             ds = [d / np.hypot(*d) for d in ds if np.hypot(*d) > 0.8]
-            m = -np.sum(ds, axis=0) if ds else np.array([-1.0, 1.0])
-            prefer = math.degrees(math.atan2(-m[1], m[0])) if np.hypot(*m) > 1e-9 else 225.0
+            mm = -np.sum(ds, axis=0) if ds else np.array([-1.0, 1.0])
+            prefer = math.degrees(math.atan2(-mm[1], mm[0])) if np.hypot(*mm) > 1e-9 else 225.0
         else:
             d = at - p
             prefer = math.degrees(math.atan2(-d[1], d[0]))
         out.append(_place(occ, tuple(at), text, prefer, size_mm=size_mm, within=within, hard=hard,
-                          name=f"{prefix}name-{g[0][0]}", gaps=(0.8, 1.8, 3.0, 4.5), leaders=leaders))
+                          name=f"{prefix}name-{id_of(g[0][0])}", gaps=(0.8, 1.8, 3.0, 4.5), leaders=leaders))
     return out
 
 
@@ -885,19 +979,131 @@ def _plan_vectors(pts_mm: dict, vectors, *, prefix: str, head_mm: float = 2.2) -
     return out
 
 
-def _pick_mu_v(mu_v, need: float, *, what: str, nt) -> Scale:
-    unit = _unit(nt, "(m/s)")
-    if mu_v is None:
+def _pick_plan_scale(given, need: float, *, symbol: str, unit: str, what: str, nt) -> Scale:
+    """The scale of a plan (``symbol`` μ_v or μ_a, values in ``unit``): picked (a convenient value of at
+    least ``need`` per mm), or the one given, checked to be a positive number the plan fits at."""
+    su = nt.unit(f"({unit})")
+    if given is None:
         per = convenient_at_least(need)
-        return Scale("μ_v", unit, per, note=f"picked: {what} needs ≥ {need:.4g} (m/s)/mm; chose {per:g}")
-    s = Scale("μ_v", unit, mu_v.per_mm if isinstance(mu_v, Scale) else mu_v)
+        return Scale(symbol, su, per, note=f"picked: {what} needs ≥ {need:.4g} ({unit})/mm; chose {per:g}")
+    per = given.per_mm if isinstance(given, Scale) else given
+    if isinstance(per, bool) or not isinstance(per, (int, float)) or not math.isfinite(per) or per <= 0:
+        kind = "velocity" if symbol == "μ_v" else "acceleration"
+        raise InputError(f"mu_{symbol[-1]} is the {kind} scale in ({unit})/mm and must be > 0, got {given!r}")
+    s = Scale(symbol, su, float(per))
     if need > s.per_mm * (1 + 1e-9):
-        raise InputError(f"{what} at μ_v = {s.per_mm:g} (m/s)/mm does not fit: it needs at least {need:.4g} "
-                         f"(m/s)/mm; give a larger μ_v, a larger page, or none to have one picked")
+        raise InputError(f"{what} at {symbol} = {s.per_mm:g} ({unit})/mm does not fit: it needs at least {need:.4g} "
+                         f"({unit})/mm; give a larger {symbol}, a larger page, or none to have one picked")
     return s
 
 
+def _pick_mu_v(mu_v, need: float, *, what: str, nt) -> Scale:
+    """μ_v of a velocity plan (:func:`_pick_plan_scale`)."""
+    return _pick_plan_scale(mu_v, need, symbol="μ_v", unit="m/s", what=what, nt=nt)
+
+
+def _centred_frame(box, lo, hi, s: Scale) -> Frame:
+    """The frame that draws a plan spanning ``lo``…``hi`` (physical units) to scale ``s``, centred in ``box`` (mm)."""
+    mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+    return Frame((mid[0] - s.to_mm(float(lo[0] + hi[0]) / 2), mid[1] + s.to_mm(float(lo[1] + hi[1]) / 2)), s, s)
+
+
+def _through(P0, d, X, name: str, style: Style) -> Line:
+    """A construction line through ``P0`` along the unit ``d`` (page mm), 10 mm past both it and the point ``X``."""
+    t = float((X - P0) @ d)
+    a, b = P0 + d * (min(0.0, t) - 10.0), P0 + d * (max(0.0, t) + 10.0)
+    return Line(tuple(a.tolist()), tuple(b.tolist()), style=style, name=name)
+
+
+def _label_lines(occ: Occupancy, lines: list[Line], texts: list[str], *, hard: Occupancy, area) -> list[Text]:
+    """Each construction line's label (⊥ AB, ∥ guide) at its far end, across it."""
+    out = []
+    for el, text in zip(lines, texts):
+        d = np.asarray(el.end) - np.asarray(el.start)
+        prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
+        out.append(_place(occ, el.end, text, prefer, size_mm=SMALL_MM, hard=hard,
+                          within=(area[0], area[1] - 4, area[2] + 4, area[3] + 4), name=f"label-{el.name}",
+                          gaps=(0.6, 1.6, 3.0)))
+    return out
+
+
 # ----------------------------------------------------------------------------- 2a. the grid of plans
+
+@dataclass(frozen=True)
+class PlanGridLayout:
+    """The millimetre constants of a sheet of plans, one cell per position (velocity and acceleration)."""
+
+    pad_x_mm: float = 6.0               # inside a cell, beside the plan
+    head_mm: float = 6.0                # the cell's heading
+    pad_y_mm: float = 4.5               # above and below the plan
+    caption_room_mm: float = 9.0        # between the cells and the captions line
+    inset_mm: float = 0.8               # a cell's frame inside its share of the sheet
+    heading_x_mm: float = 1.8           # the heading from the cell's top left corner
+    heading_y_mm: float = 1.5
+    value_gap_mm: float = 1.4           # between the lines of values of a plan off the scale
+    pole_mm: float = 0.55
+
+
+PLAN_GRID_LAYOUT = PlanGridLayout()
+
+
+@dataclass(frozen=True)
+class _Grid:
+    """The cells of a sheet of plans: the area they share, columns, a cell's width and height (mm)."""
+
+    area: tuple[float, float, float, float]
+    columns: int
+    cw: float
+    ch: float
+    need: float                         # physical units per mm the largest plan needs in its cell
+
+    def cell(self, idx: int, lay: PlanGridLayout) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """The frame of cell ``idx`` and the box inside it that the plan fills (mm)."""
+        r, c = divmod(idx, self.columns)
+        bx0, by0 = self.area[0] + c * self.cw, self.area[1] + r * self.ch
+        e = lay.inset_mm
+        box = (bx0 + e, by0 + e, bx0 + self.cw - e, by0 + self.ch - e)
+        inner = (box[0] + lay.pad_x_mm - e, box[1] + lay.head_mm + lay.pad_y_mm - e, box[2] - lay.pad_x_mm + e,
+                 box[3] - lay.pad_y_mm + e)
+        return box, inner
+
+
+def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: PlanGridLayout) -> _Grid:
+    """The grid of n plans whose extents are ``spans`` (n, 2): the columns given, or those giving the largest
+    common scale; only the plans ``fit`` (bool, n) have to fit their cells."""
+    x0, _, x1, _ = sheet.box
+    area = (x0, sheet.top, x1, sheet.caption_y - lay.caption_room_mm)
+    W, H = area[2] - area[0], area[3] - area[1]
+    n = len(spans)
+
+    def need_for(cols: int) -> tuple[float, float, float]:
+        rows = math.ceil(n / cols)
+        cw, ch = W / cols, H / rows
+        iw, ih = cw - 2 * lay.pad_x_mm, ch - lay.head_mm - 2 * lay.pad_y_mm
+        if iw <= 5 or ih <= 5:
+            return math.inf, cw, ch
+        return float(max((spans[fit, 0] / iw).max(), (spans[fit, 1] / ih).max())), cw, ch
+
+    if columns is None:
+        columns = min((need_for(c)[0], c) for c in range(1, n + 1))[1]
+    elif isinstance(columns, bool) or not isinstance(columns, int) or not 1 <= columns <= n:
+        raise InputError(f"columns must be an integer from 1 to {n} (the number of plans), got {columns!r}")
+    need, cw, ch = need_for(columns)
+    if not math.isfinite(need) or need <= 0:
+        raise InputError(f"{n} plans in {columns} columns do not fit on this sheet; give other columns or a "
+                         f"larger page")
+    return _Grid(area, columns, cw, ch, need)
+
+
+def _grid_cell(box, heading: str, prefix: str, style: Style, occ: Occupancy, lay: PlanGridLayout) -> list[Element]:
+    """A cell's frame and its bold heading (registered: labels keep off it)."""
+    frame = Polyline(((box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])), style=style,
+                     closed=True, name=f"{prefix}cell")
+    head = Text((box[0] + lay.heading_x_mm, box[1] + lay.heading_y_mm + TEXT_MM * 0.76), heading, size_mm=TEXT_MM,
+                bold=True, name=f"{prefix}heading")
+    occ.add_primitives(head.primitives())
+    return [frame, head]
+
 
 def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None = None, mu_v=None,
                        columns: int | None = None, notation="en", page=None, title=None, problem=None,
@@ -932,91 +1138,61 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     """
     lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
+    lay = PLAN_GRID_LAYOUT
     plans = lk.plans
     pos = plans.positions
     drawn = _drawn(pos)
     images, vectors = _plan_layout(plans)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plans"),
-                   problem=lk.problem if problem is None else problem, title_block=title_block)
-    x0, y0, x1, y1 = sheet.box
-    area = (x0, sheet.top, x1, sheet.caption_y - 9.0)
-    W, H = area[2] - area[0], area[3] - area[1]
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plans"),
+                  problem=lk.problem if problem is None else problem, title_block=title_block)
     spans = []
     for k in drawn:
         xy = np.array(list(_image_xy(plans, images, k).values()))
         spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
-    ext = np.array(spans)
     ill = np.asarray(plans.ill_conditioned)[drawn]
-    fit = ~ill if (~ill).any() else np.ones_like(ill)
-    n = len(drawn)
-    pad_x, head_mm, pad_y = 6.0, 6.0, 4.5
-
-    def need_for(cols):
-        rows = math.ceil(n / cols)
-        cw, ch = W / cols, H / rows
-        iw, ih = cw - 2 * pad_x, ch - head_mm - 2 * pad_y
-        if iw <= 5 or ih <= 5:
-            return math.inf, cw, ch
-        return float(max((ext[fit, 0] / iw).max(), (ext[fit, 1] / ih).max())), cw, ch
-
-    if columns is None:
-        cands = [(need_for(c)[0], c) for c in range(1, n + 1)]
-        columns = min(cands)[1]
-    elif not (isinstance(columns, int) and 1 <= columns <= n):
-        raise InputError(f"columns must be an integer from 1 to {n} (the number of plans), got {columns!r}")
-    need, cw, ch = need_for(columns)
-    if not math.isfinite(need) or need <= 0:
-        raise InputError(f"{n} plans in {columns} columns do not fit on this sheet; give other columns or a larger page")
-    s_v = _pick_mu_v(mu_v, need, what="the largest plan in its cell", nt=nt)
+    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, lay)
+    s_v = _pick_mu_v(mu_v, grid.need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
-    elements: list = [sheet.header()]
     cells: list[Element] = []
     drawn_els: list[Element] = []
     label_els: list[Element] = []
     for idx, k in enumerate(drawn):
-        r, c = divmod(idx, columns)
-        bx0, by0 = area[0] + c * cw, area[1] + r * ch
-        box = (bx0 + 0.8, by0 + 0.8, bx0 + cw - 0.8, by0 + ch - 0.8)
+        box, inner = grid.cell(idx, lay)
         bad = bool(plans.ill_conditioned[k])
         prefix = f"plan-{k}-"
-        cells.append(Polyline(((box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])),
-                              style=CELL_ILL if bad else CELL, closed=True, name=f"{prefix}cell"))
-        head = _pos_label(pos, k) + (f" — {_word(nt, 'ill')}" if bad else "")
-        htext = Text((box[0] + 1.8, box[1] + 1.5 + TEXT_MM * 0.76), head, size_mm=TEXT_MM, bold=True,
-                     name=f"{prefix}heading")
-        cells.append(htext)
-        occ.add_primitives(htext.primitives())
-        inner = (box[0] + pad_x - 0.8, box[1] + head_mm + pad_y - 0.8, box[2] - pad_x + 0.8, box[3] - pad_y + 0.8)
+        head = _pos_label(pos, k) + (f" — {nt.word('kinematics.ill')}" if bad else "")
+        cells += _grid_cell(box, head, prefix, CELL_ILL if bad else CELL, occ, lay)
         xy_k = _image_xy(plans, images, k)
         arr = np.array(list(xy_k.values()))
         lo, hi = arr.min(axis=0), arr.max(axis=0)
         w_mm, h_mm = s_v.to_mm(float(hi[0] - lo[0])), s_v.to_mm(float(hi[1] - lo[1]))
         if w_mm > inner[2] - inner[0] + 1e-6 or h_mm > inner[3] - inner[1] + 1e-6:
-            lines = [_word(nt, "off_scale") + ":"]
-            for v in vectors:
-                if v.start == "p" and not v.known:
-                    val = float(np.hypot(*(xy_k[v.end])))
-                    lines.append(f"{v.symbol} = {nt.number(val, sig=4)} {_unit(nt, 'm/s')}")
-            for i, t in enumerate(lines):
-                label_els.append(Text((inner[0], inner[1] + 4.0 + i * (SMALL_MM + 1.4)), t, size_mm=SMALL_MM,
-                                      name=f"{prefix}value-{i}"))
+            label_els += _off_scale_values(xy_k, vectors, inner, prefix, nt, lay)
             continue
-        mid = ((inner[0] + inner[2]) / 2, (inner[1] + inner[3]) / 2)
-        f = Frame((mid[0] - s_v.to_mm(float(lo[0] + hi[0]) / 2), mid[1] + s_v.to_mm(float(lo[1] + hi[1]) / 2)),
-                  s_v, s_v)
-        pts = {lb: f.pt(*v) for lb, v in xy_k.items()}
+        pts = {lb: _centred_frame(inner, lo, hi, s_v).pt(*v) for lb, v in xy_k.items()}
         vecs = _plan_vectors(pts, vectors, prefix=prefix)
-        pole = Point(pts["p"], radius_mm=0.55, name=f"{prefix}pole")
+        pole = Point(pts["p"], radius_mm=lay.pole_mm, name=f"{prefix}pole")
         _register(occ, *vecs, pole)
         drawn_els += vecs + [pole]
-        label_els += _plan_labels(occ, pts, vectors, size_mm=SMALL_MM + 0.2, within=box, prefix=prefix,
-                                  leaders=label_els)
-    legend = f"{lk.speed_text(nt)};  {_word(nt, 'legend')}"
+        label_els += _plan_labels(occ, pts, "p", [v.end for v in vectors if v.start == "p"], markup_of=_plan_markup,
+                                  size_mm=SMALL_MM + 0.2, within=box, prefix=prefix, leaders=label_els)
+    legend = f"{lk.speed_text(nt)};  {nt.word('kinematics.legend')}"
     if ill.any():
-        legend += f";  {_word(nt, 'ill_frame')}"
+        legend += f";  {nt.word('kinematics.ill_frame')}"
     scales = (s_v,)
-    elements += cells + drawn_els + label_els + sheet.captions(scales, legend=legend, reserve=True)
+    elements = [sheet.header()] + cells + drawn_els + label_els + sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
+
+
+def _off_scale_values(xy_k: dict, vectors, inner, prefix: str, nt, lay: PlanGridLayout) -> list[Element]:
+    """A plan too large for its cell at the common scale, written as values: |v| of every point found."""
+    lines = [nt.word("kinematics.off_scale") + ":"]
+    for v in vectors:
+        if v.start == "p" and not v.known:
+            val = float(np.hypot(*(xy_k[v.end])))
+            lines.append(f"{v.symbol} = {nt.number(val, sig=4)} {nt.unit('m/s')}")
+    return [Text((inner[0], inner[1] + 4.0 + i * (SMALL_MM + lay.value_gap_mm)), t, size_mm=SMALL_MM,
+                 name=f"{prefix}value-{i}") for i, t in enumerate(lines)]
 
 
 # ----------------------------------------------------------------------------- 2b. one large plan
@@ -1069,15 +1245,15 @@ def _hull_area(pts: np.ndarray) -> float:
 
 def _sense_word(nt, w: float) -> str:
     if abs(w) < 1e-12:
-        return _word(nt, "at_rest")
-    return _word(nt, "ccw") if w > 0 else _word(nt, "cw")
+        return nt.word("kinematics.at_rest")
+    return nt.word("kinematics.ccw") if w > 0 else nt.word("kinematics.cw")
 
 
 def _equations(plans, k: int, nt, lk) -> list[str]:
     """The vector equations of the construction, in markup, one per line, with the values at position k."""
     mech = plans.positions.mechanism
     lines = []
-    unit = _unit(nt, "m/s")
+    unit = nt.unit("m/s")
     for name, c in plans.constructions.items():
         v = float(plans.speed(name)[k])
         if c.method == "known":
@@ -1128,13 +1304,103 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
         num_sym = f"v_{{{y}}}" if x in mech.fixed_joints else f"v_{{{_rel_name(mech, y, x)}}}"
         out.append(f"ω_{{{num}}} = {num_sym}/l_{{{link}}} = {nt.number(abs(w) * L, sig=4)}/{nt.number(L, sig=4)} = "
-                   f"{nt.number(abs(w), sig=4)} {_unit(nt, 'rad/s')}, {_sense_word(nt, w)}")
+                   f"{nt.number(abs(w), sig=4)} {nt.unit('rad/s')}, {_sense_word(nt, w)}")
     return out
 
 
 def _line_label(ln, nt) -> str:
     rel = "⊥" if ln.relation == "perpendicular" else "∥"       # ⊥: the glyph every font has
-    return f"{rel} {_word(nt, 'guide') if ln.to == 'guide' else _sub(ln.to)}"
+    return f"{rel} {nt.word('kinematics.guide') if ln.to == 'guide' else _sub(ln.to)}"
+
+
+@dataclass(frozen=True)
+class PlanLayout:
+    """The millimetre constants of one plan drawn large with its column of equations and table."""
+
+    margin_mm: float = 9.0              # round the plan: its labels and the lines beyond its points
+    column_gap_mm: float = 6.0          # between the plan's share and the column beside it
+    min_share: float = 0.45             # the plan's share of the sheet's width, at least ...
+    max_share: float = 0.66             # ... and at most
+    plan_gap_mm: float = 4.0            # the plan's area ends this far before the column
+    above_mm: float = 2.0               # the plan may start this far above the sheet's top
+    caption_room_mm: float = 7.0        # between the plan (or its equations) and the captions line
+    column_x_mm: float = 2.0            # the column from the split, and from the sheet's top
+    line_mm: float = 5.6                # between the lines of text in the column
+    row_mm: float = 6.2                 # the table's rows
+    after_table_mm: float = 6.0         # the angular velocities (accelerations) below the table
+    head_mm: float = 3.0                # arrowheads
+    pole_mm: float = 0.7
+
+
+VELOCITY_PLAN_LAYOUT = PlanLayout()
+
+
+def _plan_split(box, right_w: float, lay: PlanLayout) -> float:
+    """Where the plan's share of the sheet ends and the column of ``right_w`` mm beside it begins (mm)."""
+    x0, x1 = box[0], box[2]
+    return min(max(x1 - right_w - lay.column_gap_mm, x0 + lay.min_share * (x1 - x0)), x0 + lay.max_share * (x1 - x0))
+
+
+def _fit_plan(area, lo, hi, given, *, symbol: str, unit: str, k: int, nt, lay: PlanLayout) -> tuple[Scale, Frame]:
+    """The scale of a plan spanning ``lo``…``hi`` drawn in ``area`` (within its margin), and its centred frame."""
+    aw, ah = area[2] - area[0] - 2 * lay.margin_mm, area[3] - area[1] - 2 * lay.margin_mm
+    need = max(float(hi[0] - lo[0]) / aw, float(hi[1] - lo[1]) / ah)
+    if need <= 0:
+        kind = "velocity" if symbol == "μ_v" else "acceleration"
+        raise InputError(f"position {k}: every {kind} is zero; there is no plan to draw")
+    s = _pick_plan_scale(given, need, symbol=symbol, unit=unit, what=f"the plan of position {k}", nt=nt)
+    return s, _centred_frame(area, lo, hi, s)
+
+
+def _velocity_lines(plans, k: int, pts: dict, f: Frame, nt) -> tuple[list[Line], list[str]]:
+    """The construction lines of position k: through their point, past the point found, thin; and their labels."""
+    lines, texts = [], []
+    for cname, c in plans.constructions.items():
+        if c.method != "intersection":
+            continue
+        X = np.asarray(pts[c.label])
+        for ln in c.lines:
+            d = np.array([ln.direction[k][0], -ln.direction[k][1]], dtype=float)
+            d /= float(np.hypot(*d))
+            lines.append(_through(np.asarray(f.pt(*ln.point[k])), d, X, f"line-{cname}-{ln.through}", THIN))
+            texts.append(_line_label(ln, nt))
+    return lines, texts
+
+
+def _velocity_column(plans, k: int, lk: _Linkage, nt) -> tuple[str, list[str], list[str], tuple[str, str, str]]:
+    """What the column beside the plan says: φ, the vector equations, ω of the links, the table's heading."""
+    phi = f"φ = {nt.number(math.degrees(plans.positions.phi_from_start[k]), sig=5)}° ({nt.word('kinematics.phi_from')})"
+    head = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
+            nt.quantity(nt.word("kinematics.value"), "m/s"))
+    return phi, _equations(plans, k, nt, lk), _omega_texts(plans, k, nt), head
+
+
+def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1: float, nt,
+                    lay: PlanLayout) -> list[Element]:
+    """The column beside the plan at ``at`` (mm): φ and the equations, the table of the vectors' drawn lengths
+    and values, ω of the links, the note of an ill-conditioned position."""
+    phi, eqs, omega_texts, head = texts
+    tx, ty = at
+    els: list[Element] = [Text((tx, ty + i * lay.line_mm), line, size_mm=TEXT_MM, name=f"equation-{i}")
+                          for i, line in enumerate([phi] + eqs)]
+    rows = [head]
+    for v in vectors:
+        L = math.dist(pts[v.start], pts[v.end])
+        rows.append((_plan_markup(v.start) + _plan_markup(v.end), _num(nt, L, 2),
+                     f"{v.symbol} = {_num(nt, L * s_v.per_mm, 3)}"))
+    table = Table((tx, ty + (len(eqs) + 1) * lay.line_mm + 2.0), tuple(rows), align="crl", size_mm=TABLE_MM,
+                  row_height_mm=lay.row_mm, name="table")
+    if table.top_right[0] > x1 + 1e-6:
+        raise InputError("the table of vectors does not fit beside the plan; give a larger page")
+    els.append(table)
+    wy = table.bottom_left[1] + lay.after_table_mm
+    numbers = _omega_numbers(plans.positions.mechanism)
+    els += [Text((tx, wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"omega-{num}")
+            for i, (num, t) in enumerate(zip(numbers, omega_texts))]
+    if plans.ill_conditioned[k]:
+        els.append(Text((tx, wy + len(omega_texts[:len(numbers)]) * lay.line_mm + 1.0),
+                        nt.word("kinematics.ill_note"), size_mm=SMALL_MM, name="ill-conditioned"))
+    return els
 
 
 def velocity_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,
@@ -1171,99 +1437,49 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     """
     lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
+    lay = VELOCITY_PLAN_LAYOUT
     plans = lk.plans
     pos = plans.positions
-    mech = pos.mechanism
     drawn = _drawn(pos)
     k = fullest_position(plans) if position is None else position
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or int(k) not in drawn:
         raise InputError(f"position {position!r}: give one of the positions {drawn[0]}…{drawn[-1]}")
     k = int(k)
     images, vectors = _plan_layout(plans)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "plan", k=_pos_label(pos, k)),
-                   problem=lk.problem if problem is None else problem, title_block=title_block)
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plan", k=_pos_label(pos, k)),
+                  problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     # the column beside the plan first: its width decides how much of the sheet the plan gets
-    eqs = _equations(plans, k, nt, lk)
-    phi = f"φ = {nt.number(math.degrees(pos.phi_from_start[k]), sig=5)}° ({_word(nt, 'phi_from')})"
-    omega_texts = _omega_texts(plans, k, nt)
-    head = (_word(nt, "vector"), _word(nt, "length"), _quantity(nt, _word(nt, "value"), "m/s"))
+    texts = _velocity_column(plans, k, lk, nt)
+    phi, eqs, omega_texts, head = texts
     probe = Table((0.0, 0.0), (head,) + tuple((_plan_markup(v.start) + _plan_markup(v.end), "000,00",
                                               f"{v.symbol} = 00,000") for v in vectors),
-                  size_mm=TABLE_MM, row_height_mm=6.2)
+                  size_mm=TABLE_MM, row_height_mm=lay.row_mm)
     right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in [phi] + eqs + omega_texts])
-    split = min(max(x1 - right_w - 6.0, x0 + 0.45 * (x1 - x0)), x0 + 0.66 * (x1 - x0))
-    area = (x0, sheet.top - 2.0, split - 4.0, sheet.caption_y - 7.0)
+    split = _plan_split(sheet.box, right_w, lay)
+    area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm)
     xy = _image_xy(plans, images, k)
     arr = np.array(list(xy.values()))
-    lo, hi = arr.min(axis=0), arr.max(axis=0)
-    margin = 9.0                                    # room for the labels and the lines beyond the points
-    aw, ah = area[2] - area[0] - 2 * margin, area[3] - area[1] - 2 * margin
-    need = max(float(hi[0] - lo[0]) / aw, float(hi[1] - lo[1]) / ah)
-    if need <= 0:
-        raise InputError(f"position {k}: every velocity is zero; there is no plan to draw")
-    s_v = _pick_mu_v(mu_v, need, what=f"the plan of position {k}", nt=nt)
-    mid = ((area[0] + area[2]) / 2, (area[1] + area[3]) / 2)
-    f = Frame((mid[0] - s_v.to_mm(float(lo[0] + hi[0]) / 2), mid[1] + s_v.to_mm(float(lo[1] + hi[1]) / 2)), s_v, s_v)
+    s_v, f = _fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_v, symbol="μ_v", unit="m/s", k=k, nt=nt, lay=lay)
     pts = {lb: f.pt(*v) for lb, v in xy.items()}
     occ = sheet.occ
-    # construction lines: through their point, past the point found, thin
-    cons, cons_labels = [], []
-    for cname, c in plans.constructions.items():
-        if c.method != "intersection":
-            continue
-        X = np.asarray(pts[c.label])
-        for ln in c.lines:
-            P0 = np.asarray(f.pt(*ln.point[k]))
-            d = np.array([ln.direction[k][0], -ln.direction[k][1]], dtype=float)
-            d /= float(np.hypot(*d))
-            t = float((X - P0) @ d)
-            a, b = P0 + d * (min(0.0, t) - 10.0), P0 + d * (max(0.0, t) + 10.0)
-            cons.append(Line(tuple(a.tolist()), tuple(b.tolist()), style=THIN, name=f"line-{cname}-{ln.through}"))
+    cons, cons_texts = _velocity_lines(plans, k, pts, f, nt)
     _register(occ, *cons)
-    vecs = _plan_vectors(pts, vectors, prefix="", head_mm=3.0)
-    pole = Point(pts["p"], radius_mm=0.7, name="pole")
+    vecs = _plan_vectors(pts, vectors, prefix="", head_mm=lay.head_mm)
+    pole = Point(pts["p"], radius_mm=lay.pole_mm, name="pole")
     _register(occ, *vecs, pole)
     hard = Occupancy(pad_mm=0.3)
     _register(hard, *vecs)
-    for ln_el, (_cname, lnk) in zip(cons, [(cn, ln) for cn, c in plans.constructions.items()
-                                          if c.method == "intersection" for ln in c.lines]):
-        end = ln_el.end
-        d = np.asarray(ln_el.end) - np.asarray(ln_el.start)
-        prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
-        cons_labels.append(_place(occ, end, _line_label(lnk, nt), prefer, size_mm=SMALL_MM, hard=hard,
-                                  within=(area[0], area[1] - 4, area[2] + 4, area[3] + 4),
-                                  name=f"label-{ln_el.name}", gaps=(0.6, 1.6, 3.0)))
+    cons_labels = _label_lines(occ, cons, cons_texts, hard=hard, area=area)
     leaders: list = []
-    names = _plan_labels(occ, pts, vectors, size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4),
-                         prefix="", hard=hard, leaders=leaders)
-    # beside the plan: equations, the table of vectors, the angular velocities
-    tx = split + 2.0
-    ty = sheet.top + 2.0
-    text_els = []
-    for i, line in enumerate([phi] + eqs):
-        text_els.append(Text((tx, ty + i * 5.6), line, size_mm=TEXT_MM, name=f"equation-{i}"))
-    rows = [(_word(nt, "vector"), _word(nt, "length"), _quantity(nt, _word(nt, "value"), "m/s"))]
-    for v in vectors:
-        L = math.dist(pts[v.start], pts[v.end])
-        val = L * s_v.per_mm
-        rows.append((_plan_markup(v.start) + _plan_markup(v.end), _num(nt, L, 2),
-                     f"{v.symbol} = {_num(nt, val, 3)}"))
-    table = Table((tx, ty + (len(eqs) + 1) * 5.6 + 2.0), tuple(rows), align="crl", size_mm=TABLE_MM,
-                  row_height_mm=6.2, name="table")
-    if table.top_right[0] > x1 + 1e-6:
-        raise InputError("the table of vectors does not fit beside the plan; give a larger page")
-    wy = table.bottom_left[1] + 6.0
-    omega_els = [Text((tx, wy + i * 5.6), t, size_mm=TEXT_MM, name=f"omega-{num}")
-                 for i, (num, t) in enumerate(zip(_omega_numbers(mech), omega_texts))]
-    notes = []
-    if plans.ill_conditioned[k]:
-        notes.append(Text((tx, wy + len(omega_els) * 5.6 + 1.0), _word(nt, "ill_note"), size_mm=SMALL_MM,
-                          name="ill-conditioned"))
-    legend = f"{lk.speed_text(nt)};  {_word(nt, 'legend')}"
+    names = _plan_labels(occ, pts, "p", [v.end for v in vectors if v.start == "p"], markup_of=_plan_markup,
+                         size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4), prefix="",
+                         hard=hard, leaders=leaders)
+    column = _velocity_texts(plans, k, texts, vectors, pts, s_v, (split + lay.column_x_mm, sheet.top + lay.column_x_mm),
+                             x1, nt, lay)
+    legend = f"{lk.speed_text(nt)};  {nt.word('kinematics.legend')}"
     scales = (s_v,)
-    elements = ([sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + [table]
-                + omega_els + notes)
+    elements = [sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + column
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
 
@@ -1382,10 +1598,10 @@ def velocity_rows(linkage, *, m: int | None = None, omega_1: float | None = None
 
 
 def _table_cells(t: VelocityTable, nt, *, markup_: bool = True) -> list[list[str]]:
-    head = [_word(nt, "position")]
+    head = [nt.word("kinematics.position")]
     for sym, u in zip(t.symbols[1:], t.units[1:]):
         s = sym if markup_ else markup.plain(sym) if "{" not in sym else sym.replace("{", "").replace("}", "")
-        head.append(_quantity(nt, s, u))
+        head.append(nt.quantity(s, u))
     rows = [head]
     for i, lab in enumerate(t.labels):
         row = [lab + (" *" if t.ill_conditioned[i] else "")]
@@ -1414,13 +1630,13 @@ def velocity_table(linkage, *, m: int | None = None, omega_1: float | None = Non
     lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
     t = velocity_rows(lk.plans, omega_1=None)
-    sheet = Sheet(nt=nt, page=page, title=title or _word(nt, "table"),
+    sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.table"),
                    problem=lk.problem if problem is None else problem, title_block=title_block)
     x0, y0, x1, y1 = sheet.box
     rows = tuple(tuple(r) for r in _table_cells(t, nt))
-    notes = [lk.speed_text(nt), _word(nt, "signed")]
+    notes = [lk.speed_text(nt), nt.word("kinematics.signed")]
     if t.ill_conditioned.any():
-        notes.append("* " + _word(nt, "ill_note"))
+        notes.append("* " + nt.word("kinematics.ill_note"))
     avail = (sheet.caption_y - 6.0 * len(notes) - 4.0) - (sheet.top + 2.0)
     row_h = min(7.0, avail / len(rows))
     size = min(TABLE_MM, row_h * 0.5)
@@ -1455,7 +1671,7 @@ def velocity_table_markdown(linkage, *, m: int | None = None, omega_1: float | N
     out = ["| " + " | ".join(rows[0]) + " |", "|" + "|".join(":---:" if j == 0 else "---:" for j in
                                                             range(len(rows[0]))) + "|"]
     out += ["| " + " | ".join(r) + " |" for r in rows[1:]]
-    out += ["", lk.speed_text(nt).replace("_1", "₁"), _word(nt, "signed")]
+    out += ["", lk.speed_text(nt).replace("_1", "₁"), nt.word("kinematics.signed")]
     if t.ill_conditioned.any():
-        out.append("* " + _word(nt, "ill_note"))
+        out.append("* " + nt.word("kinematics.ill_note"))
     return "\n".join(out) + "\n"

@@ -347,7 +347,7 @@ def _velocity_rules(figure: Scene, plans: Any, k: int, nt: Notation) -> list[tup
     from graphmethods.sheets import kinematics as K
 
     mech = plans.positions.mechanism
-    unit = K._unit(nt, "m/s")
+    unit = nt.unit("m/s")
     _images, vectors = K._plan_layout(plans)
     eq_text = {e.name: _text_of(figure, e.name) for e in figure.elements if e.name.startswith("equation-")}
     label_of = {c.label: n for n, c in plans.constructions.items()}
@@ -444,7 +444,7 @@ def acceleration_plan_steps(linkage: Any, position: int | None = None, *, notati
     figure = SA.acceleration_plan(linkage, k, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a, notation=nt,
                                   page=pg, title_block=tb)
     plan = plans[k]
-    tx = _AccelerationText(nt, SA._equations(plan, pr.linkage, nt), SA._unit(nt, "m/s²"))
+    tx = _AccelerationText(nt, SA._equations(plan, pr.linkage, nt), nt.unit("m/s²"))
     rules: list[tuple[str, Rule]] = [(nt.word("steps.a_pole", mu=figure.scales()[0].caption(nt)), _leader_of(
         ["title", "pole", "name-pi", "scale-captions", "legend", "equation-phi"]))]
     for j, st_ in enumerate(plan.steps):

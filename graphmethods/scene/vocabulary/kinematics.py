@@ -1,4 +1,4 @@
-"""Words of the kinematic figures: the scheme in m positions, velocity plans and their table.
+"""Words of the kinematic figures: the scheme in m positions, velocity plans and their table, the A1 sheet.
 
 >>> from graphmethods.scene.notation import get
 >>> get("zh").word("kinematics.plan", k=4)
@@ -6,6 +6,7 @@
 """
 
 WORDS = {
+    "analysis":     ("Kinematic analysis", "Кинематический анализ", "运动分析"),
     "scheme":       ("Kinematic scheme in {m} positions", "План механизма в {m} положениях",
                      "机构运动简图（{m}个位置）"),
     "plans":        ("Velocity plans", "Планы скоростей", "速度多边形"),

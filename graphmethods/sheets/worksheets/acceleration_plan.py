@@ -251,13 +251,11 @@ def _symbol_markup(symbol: str) -> str:
 
 def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     """The student's page (``key`` false) or the answer key of a variant."""
-    from graphmethods.sheets.acceleration import _unit as _acc_unit
-
     sh = Sheet(v, nt, key)
     nt = sh.nt
     sh.header()
     s_l = Scale(nt.sym("worksheets.mu_l"), nt.unit("m"), v.mu_l)
-    s_a = Scale("μ_a", _acc_unit(nt, "(m/s²)"), v.mu_a)
+    s_a = Scale("μ_a", nt.unit("(m/s²)"), v.mu_a)
     m = value_unit
     if v.mechanism == "slider-crank":
         sizes = (f"OA = {m(v.r, 'm', nt)}, AB = {m(v.l, 'm', nt)}, e = {m(v.d, 'm', nt)}, "
