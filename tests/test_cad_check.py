@@ -23,30 +23,32 @@ DRAWINGS = ROOT / "graphmethods" / "problems" / "data" / "drawings"
 ANSWERS = ROOT / "graphmethods" / "problems" / "data" / "answers"
 
 #: what tests/drawings/make_student_drawings.py planted: (new mistakes, their diagnosis, carried over)
+#: what a reversed Coriolis component carries into the slotted lever's plan
+_SLOTTED_CARRIED = {f"acceleration_plan.{k}" for k in ("at_A3O3_mm", "a_A3_mm", "a_A3_deg", "a_B_mm", "a_B_deg",
+                                                        "a_S3_mm", "a_S3_deg", "epsilon_3")}
+#: the items the W1 drawings with mistakes get wrong
+_W1_WRONG = {"energy_indicator.arrows_mm[2]", "results.omega_max", "results.omega_min", "results.J_F"}
+
 PLANTED = {
     "press_plan_correct.dxf": ("press", set(), set(), set()),
     "press_plan_mistakes.dxf": ("press", {"velocity_plan.ps2_mm", "drawing.ps2_deg", "results.v_B"}, {"scale_twice"},
                                 {"results.v_S2"}),
     "press_wittenbauer_correct.dxf": ("press", set(), set(), set()),
-    "press_wittenbauer_mistakes.dxf": ("press", {"energy_mass.kl_mm", "results.J_F"}, {"J_e_not_subtracted", "n_as_omega"},
-                                       set()),
+    "press_wittenbauer_mistakes.dxf": ("press", {"energy_mass.kl_mm", "results.J_F"},
+                                       {"J_e_not_subtracted", "n_as_omega"}, set()),
     "press_acc_correct.dxf": ("press", set(), set(), set()),
     "press_acc_mistakes.dxf": ("press", {"acceleration_plan.an_BA_deg"}, {"normal_reversed"},
                                {"acceleration_plan.at_BA_mm", "acceleration_plan.a_B_mm", "acceleration_plan.a_S2_mm",
                                 "acceleration_plan.a_S2_deg", "acceleration_plan.epsilon_2"}),
     "slotted_lever_acc_correct.dxf": ("slotted-lever", set(), set(), set()),
     "slotted_lever_acc_mistakes.dxf": ("slotted-lever", {"acceleration_plan.ak_A3A2_deg"}, {"coriolis_reversed"},
-                                       {f"acceleration_plan.{k}" for k in ("at_A3O3_mm", "a_A3_mm", "a_A3_deg", "a_B_mm",
-                                                                           "a_B_deg", "a_S3_mm", "a_S3_deg", "epsilon_3")}),
+                                       _SLOTTED_CARRIED),
     "slotted_lever_acc_mistakes.svg": ("slotted-lever", {"acceleration_plan.ak_A3A2_deg"}, {"coriolis_reversed"},
-                                       {f"acceleration_plan.{k}" for k in ("at_A3O3_mm", "a_A3_mm", "a_A3_deg", "a_B_mm",
-                                                                           "a_B_deg", "a_S3_mm", "a_S3_deg", "epsilon_3")}),
+                                       _SLOTTED_CARRIED),
     "w1_correct.dxf": ("W1", set(), set(), set()),
     "w1_correct.svg": ("W1", set(), set(), set()),
-    "w1_mistakes.dxf": ("W1", {"energy_indicator.arrows_mm[2]", "results.omega_max", "results.omega_min", "results.J_F"},
-                        {"sign_flipped", "delta_not_halved", "n_as_omega"}, {"results.delta_W_max"}),
-    "w1_mistakes.svg": ("W1", {"energy_indicator.arrows_mm[2]", "results.omega_max", "results.omega_min", "results.J_F"},
-                        {"sign_flipped", "delta_not_halved", "n_as_omega"}, {"results.delta_W_max"}),
+    "w1_mistakes.dxf": ("W1", _W1_WRONG, {"sign_flipped", "delta_not_halved", "n_as_omega"}, {"results.delta_W_max"}),
+    "w1_mistakes.svg": ("W1", _W1_WRONG, {"sign_flipped", "delta_not_halved", "n_as_omega"}, {"results.delta_W_max"}),
 }
 
 

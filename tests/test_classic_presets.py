@@ -181,7 +181,8 @@ def classic_mechanisms(draw):
         r = f(0.02, 0.2)
         e = f(-0.5, 0.5) * r
         return classic.SliderCrank(r=r, l=r + abs(e) + f(0.05, 0.5), e=e, assembly=draw(st.sampled_from([1, -1])),
-                                   sense=sense, working_stroke=draw(st.sampled_from(classic.SliderCrank.working_strokes)),
+                                   sense=sense,
+                                   working_stroke=draw(st.sampled_from(classic.SliderCrank.working_strokes)),
                                    points={"S2": ("AB", f(0.0, 0.05), f(-1.0, 1.0))})
     if kind == "FourBar":
         l2 = f(0.03, 0.08)
@@ -205,7 +206,8 @@ def classic_mechanisms(draw):
         return classic.SlottedLever(**lever, points={"S3": ("O3B", f(0.0, 0.2))})
     try:
         return classic.Shaper(**{**lever, "theta_O3": -math.pi / 2}, l_BC=f(0.3, 0.5),
-                              y_guide=(d + r) * f(0.9, 1.1) - d, points={"S3": ("O3B", f(0.0, 0.2)), "S4": ("BC", f(0.0, 0.1))})
+                              y_guide=(d + r) * f(0.9, 1.1) - d,
+                              points={"S3": ("O3B", f(0.0, 0.2)), "S4": ("BC", f(0.0, 0.1))})
     except AssemblyError:                        # the link BC would come in line with the rocker: not a shaper
         assume(False)
 

@@ -83,7 +83,8 @@ def test_real_process_bad_input_no_traceback():
     proc = subprocess.run([sys.executable, "-m", "graphmethods", "flywheel", "--areas", "1", "-1", "--n", "60",
                            "--delta", "-1"], capture_output=True, text=True)
     assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
-    proc = subprocess.run([sys.executable, "-m", "graphmethods", "flywheel", "--n", "60"], capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, "-m", "graphmethods", "flywheel", "--n", "60"], capture_output=True,
+                          text=True)
     assert proc.returncode == 2 and proc.stderr.count("\n") == 1
 
 

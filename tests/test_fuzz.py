@@ -335,7 +335,8 @@ def test_fuzz_flywheel_cli(data):
     closing = st.lists(st.floats(min_value=-1e4, max_value=1e4), min_size=1, max_size=n).map(
         lambda xs: [f"{x:.6g}" for x in xs] + [f"{-sum(float(f'{x:.6g}') for x in xs):.6g}"])
     areas = data.draw(st.one_of(closing, closing, closing, st.lists(number_texts(), min_size=1, max_size=n),
-                                st.lists(st.sampled_from(["1e99", "-1e99", "1e-99", "5", "-5"]), min_size=2, max_size=6)))
+                                st.lists(st.sampled_from(["1e99", "-1e99", "1e-99", "5", "-5"]), min_size=2,
+                                         max_size=6)))
     levels = data.draw(st.booleans())
     if levels and areas:
         areas = areas + [areas[0]]          # levels return to the first one

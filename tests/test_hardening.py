@@ -63,8 +63,8 @@ def answers(tmp_path, text, name="answers.toml"):
 # ----------------------------------------------------------------------------- check: the students' entries
 
 def test_check_omega_m_zero_is_judged_not_a_crash(tmp_path, capsys):
-    code, out, err = run(capsys, "check", "W1", answers(tmp_path, W1_ANSWERS + "[results]\nomega_m = 0\nomega_max = 63\n"
-                                                                   "J_F = 40\n"))
+    typed = W1_ANSWERS + "[results]\nomega_m = 0\nomega_max = 63\nJ_F = 40\n"
+    code, out, err = run(capsys, "check", "W1", answers(tmp_path, typed))
     assert code == 1 and err == ""                      # judged: wrong
     assert re.search(r"ω_m\s+62\.83\s+0\s.*wrong", out)
 
@@ -185,7 +185,8 @@ def test_ground_angle_reduced_mod_360(tmp_path, capsys):
     code, out_0, _ = run(capsys, "kinematics", case_file(tmp_path, FOUR, "b.json", ground_angle_deg=280), "--json")
     big, zero = json.loads(out_big), json.loads(out_0)
     assert [r["v_B"] for r in big["positions"]] == [r["v_B"] for r in zero["positions"]]
-    assert angle_deg(1e15 + 90, "a") == math.fmod(1e15 + 90, 360.0) and angle_deg(10 ** 30 + 45, "a") == (10 ** 30 + 45) % 360
+    assert angle_deg(1e15 + 90, "a") == math.fmod(1e15 + 90, 360.0)
+    assert angle_deg(10 ** 30 + 45, "a") == (10 ** 30 + 45) % 360
 
 
 def test_non_utf8_terminal(tmp_path):
@@ -441,6 +442,7 @@ def test_worksheet_force_replaces_the_whole_set_and_keeps_other_files(tmp_path, 
     (out / "svg" / "notes.txt").write_text("mine", encoding="utf-8")
     assert run(capsys, "worksheet", "indicator", "--variants", "1", "--out", out, "--quiet", "--force")[0] == 0
     files = sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file())
-    assert files == ["indicator-answers.toml", "indicator-en.pdf", "problems/indicator-01.json", "svg/indicator-01-key.svg",
-                     "svg/indicator-01-student.svg", "svg/notes.txt"]          # no variant 2 or 3 left over
+    # no variant 2 or 3 left over
+    assert files == ["indicator-answers.toml", "indicator-en.pdf", "problems/indicator-01.json",
+                     "svg/indicator-01-key.svg", "svg/indicator-01-student.svg", "svg/notes.txt"]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["class"]

@@ -27,7 +27,8 @@ def press_as_linkage() -> dict:
                     "guide": {"link": 0, "through": [0, p["e"]], "angle_deg": 0}, "branch": 1}],
         "points": {"S2": {"link": 2, "from": "A", "distance": p["l_AS2"]}},
         "output": "B", "working_stroke": "toward_crank",
-        "masses": {"1": {"J": p["J1"]}, "2": {"m": p["m2"], "J": p["J_S2"], "at": "S2"}, "3": {"m": p["m3"], "at": "B"}},
+        "masses": {"1": {"J": p["J1"]}, "2": {"m": p["m2"], "J": p["J_S2"], "at": "S2"},
+                   "3": {"m": p["m3"], "at": "B"}},
         "load": {"force": p["F0"], "on": "B", "from": p["force_from"], "to": p["force_to"]},
         "n_rpm": p["n_rpm"], "delta": p["delta"],
     }
@@ -139,7 +140,8 @@ def test_course_mechanisms_closed_forms():
     ww = read_case(DATA / "whitworth_quick_return.json").linkage
     assert ww.strokes().K == pytest.approx(2.0, rel=1e-12)                             # asin(d/r) = 30°
     assert ww.stroke_H() == pytest.approx(2 * 0.15, rel=1e-12)
-    assert ww.strokes() is not None and np.ptp(np.unwrap(ww.motion(m=12).theta["3"])) > 1.9 * math.pi     # the lever turns fully
+    # the lever turns fully
+    assert ww.strokes() is not None and np.ptp(np.unwrap(ww.motion(m=12).theta["3"])) > 1.9 * math.pi
     vc = read_case(DATA / "two_slider_compressor.json").linkage
     assert vc.stroke_H() == pytest.approx(0.12, rel=1e-12) and vc.strokes().K == pytest.approx(1.0, abs=1e-12)
 
@@ -194,7 +196,8 @@ def test_the_four_bar_and_the_shaper_written_as_linkages_give_their_studies():
         "crank": {"centre": "O1", "pin": "A", "r": sh["r"]},
         "groups": [{"type": "RPR", "links": [2, 3], "P": "A", "Q": "O3", "point": "A3"},
                    {"type": "RRP", "links": [4, 5], "P": "B", "C": "C", "l": sh["l_BC"],
-                    "guide": {"link": 0, "through": [0, sh["y_guide"]], "angle_deg": 0}, "branch": sh.get("assembly", 1)}],
+                    "guide": {"link": 0, "through": [0, sh["y_guide"]], "angle_deg": 0},
+                    "branch": sh.get("assembly", 1)}],
         "points": {"B": {"link": 3, "from": "O3", "distance": sh["l_O3B"]},
                    "S3": {"link": 3, "from": "O3", "distance": sh["l_O3S3"]},
                    "S4": {"link": 4, "from": "B", "distance": sh["l_BS4"]}},

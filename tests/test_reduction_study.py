@@ -89,7 +89,8 @@ def test_zhukovsky_lever_equals_the_power_method(phi, Fx, Fy, M2, sense):
 
 def test_gear_train_reduction_and_flywheel_transfer():
     from graphmethods.dynamics.flywheel import transfer
-    drive = reduce_drive([Shaft("motor", 0.02, 10.0, M=15.0), Shaft("counter", 0.3, 2.5), Shaft("crank", 4.0, 1.0, M=-100)])
+    drive = reduce_drive([Shaft("motor", 0.02, 10.0, M=15.0), Shaft("counter", 0.3, 2.5),
+                          Shaft("crank", 4.0, 1.0, M=-100)])
     assert drive.J_e == pytest.approx(0.02 * 100 + 0.3 * 6.25 + 4.0)
     assert drive.M_e == pytest.approx(150.0 - 100.0)
     # a flywheel of J_F on the crank equals J_F/100 on the motor shaft (10× faster)
@@ -170,10 +171,12 @@ from graphmethods.dynamics.reduction import ForceDiagram, diagram_moment  # noqa
 
 def test_force_diagram_reproduces_the_press_load(press):
     mech, load = press.mechanism, press.load
-    cut = ForceDiagram("B", x=(load.start, load.start, load.end, load.end), F=(0.0, load.magnitude, load.magnitude, 0.0))
+    cut = ForceDiagram("B", x=(load.start, load.start, load.end, load.end),
+                       F=(0.0, load.magnitude, load.magnitude, 0.0))
     pos = mech.positions(m=360)
     plans = mech.velocity_plans(pos)
-    np.testing.assert_allclose(diagram_moment(pos, plans, cut), resisting_moment(pos, plans, load), rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(diagram_moment(pos, plans, cut), resisting_moment(pos, plans, load), rtol=1e-12,
+                               atol=1e-9)
     assert cut.work(H=pos.H) == pytest.approx(load_work(mech, load), rel=1e-12)
 
 

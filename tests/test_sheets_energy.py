@@ -282,7 +282,8 @@ def test_w1_staircase_goes_down_first_as_the_source_prints_it(nt, worked_example
     rec = record(sheets.energy_indicator(problems.w1(), notation=nt))
     signs = []
     for a, b in zip("abcdefg", "bcdefgh"):
-        (start, *_), tip = rec.in_group(f"vector-{a}{b}", "path")[0].data[0], rec.in_group(f"vector-{a}{b}", "polygon")[0].data[0]
+        start, *_ = rec.in_group(f"vector-{a}{b}", "path")[0].data[0]
+        tip = rec.in_group(f"vector-{a}{b}", "polygon")[0].data[0]
         signs.append(1 if tip[1] < start[1] else -1)                  # up on the page is a gain
     assert signs == [1 if A > 0 else -1 for A in worked_examples["W1"]["areas_J"]]
     assert signs[0] == -1

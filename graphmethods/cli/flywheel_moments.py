@@ -21,7 +21,8 @@ def add_arguments(p) -> None:
     """The three options, on the flywheel command's parser."""
     p.add_argument("--M-d", dest="M_d", default=None, metavar="M",
                    help="driving moment: a number (N·m), a formula in phi (rad) such as "
-                        "\"20000 + 9500*sin(2*phi)\", or a CSV file of phi_deg,M points; missing: the balancing constant")
+                        "\"20000 + 9500*sin(2*phi)\", or a CSV file of phi_deg,M points; "
+                        "missing: the balancing constant")
     p.add_argument("--M-r", dest="M_r", default=None, metavar="M",
                    help="resisting moment, in the same forms as --M-d; missing: the balancing constant")
     p.add_argument("--period-deg", default=None, metavar="P",

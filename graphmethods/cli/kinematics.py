@@ -93,7 +93,8 @@ def _phi_list(text: str) -> list[float]:
         try:
             x = float(part)
         except ValueError:
-            raise InputError(f"--phi-deg: {part.strip()!r} is not an angle in degrees; give e.g. 30 or 0,90,180") from None
+            raise InputError(f"--phi-deg: {part.strip()!r} is not an angle in degrees; "
+                             "give e.g. 30 or 0,90,180") from None
         if not math.isfinite(x):
             raise InputError(f"--phi-deg: {part.strip()!r} must be a finite angle in degrees")
         out.append(x)

@@ -42,8 +42,8 @@ def add_parser(sub) -> None:
                         "zhukovsky-load (the load alone, M_r), energy-indicator, wittenbauer, kinematic-diagrams, "
                         "work-diagrams or kinematic-scheme")
     p.add_argument("--position", type=int, default=None, metavar="K",
-                   help="the position of a velocity, acceleration or force plan or of Zhukovsky's lever (default: chosen "
-                        "by the figure)")
+                   help="the position of a velocity, acceleration or force plan or of Zhukovsky's lever "
+                        "(default: chosen by the figure)")
     p.add_argument("--format", choices=("pdf", "svg", "html", "animated-svg"), default="pdf", dest="out_format",
                    help="pdf (one page per step, default), svg (numbered frames), html (one page), animated-svg")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")

@@ -311,7 +311,8 @@ def rim_flywheel(
     if H >= D:
         raise InputError(f"the rim would be {H:.3g} m thick for a {D:.3g} m mean diameter; choose a larger D or a disc")
     J_rim = m * ((D + H) ** 2 + (D - H) ** 2) / 8.0
-    return RimFlywheel(J=J, D=D, m=m, H=H, B=B, rho=rho, J_rim=J_rim, rim_speed=math.pi * D * n / 60.0, speed_limit=v_lim)
+    return RimFlywheel(J=J, D=D, m=m, H=H, B=B, rho=rho, J_rim=J_rim, rim_speed=math.pi * D * n / 60.0,
+                       speed_limit=v_lim)
 
 
 @dataclass(frozen=True)

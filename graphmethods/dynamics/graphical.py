@@ -63,7 +63,8 @@ def with_refined_estimate(wb: WittenbauerResult, J_F_fine: float, m_fine: int) -
     touches, is kept for data given without a model.
     """
     return replace(wb, error_estimate=J_F_fine - wb.J_F,
-                   error_method=f"J_F at {m_fine} positions minus J_F at {wb.m} (same construction, {m_fine // wb.m}× finer)")
+                   error_method=f"J_F at {m_fine} positions minus J_F at {wb.m} "
+                                f"(same construction, {m_fine // wb.m}× finer)")
 
 
 def chord_flywheels(model: ReducedModel, *, positions: int, omega_m: float, delta: float,

@@ -65,7 +65,8 @@ class KineticEnergy:
                 "delta": self.delta, "J_e": self.J_e, "T0": self.T0}
 
 
-def kinetic_energy(ew: ExcessWork, *, J_e: float, T0: float | None = None, omega_0: float | None = None) -> KineticEnergy:
+def kinetic_energy(ew: ExcessWork, *, J_e: float, T0: float | None = None,
+                   omega_0: float | None = None) -> KineticEnergy:
     """T = T0 + E at the boundaries of the table and ω = sqrt(2T/J_e), J_e constant.
 
     Give the starting energy T0 (J) or the starting speed omega_0 (rad/s), T0 = J_e ω0²/2.

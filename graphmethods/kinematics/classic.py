@@ -267,7 +267,8 @@ class FourBar(_Classic):
     def _check_full_turn(self) -> None:
         if not self.turns_fully:
             _fail(f"four-bar l1 = {_fmt(self.l1)}, l2 = {_fmt(self.l2)}, l3 = {_fmt(self.l3)}, l4 = {_fmt(self.l4)} m: "
-                  f"the crank O1A cannot make a full turn; assembly fails for " + "; and for ".join(self._failing_ranges())
+                  "the crank O1A cannot make a full turn; assembly fails for "
+                  + "; and for ".join(self._failing_ranges())
                   + f". {self._grashof_text()}. Use positions(phi=...) inside the range where it assembles, or "
                     f"change the lengths (full turn needs l1 + l2 < l3 + l4 and |l1 − l2| > |l3 − l4|)")
 

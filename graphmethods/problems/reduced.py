@@ -48,13 +48,15 @@ class ReducedProblem:
 
 
 def smooth_machine() -> ReducedProblem:
-    """A machine with smooth loads: J_e = 2 + 0.4 cos 2φ kg·m², M_e = 300 (sin φ + 0.4 sin 3φ) N·m, 200 rev/min, [δ] = 1/50."""
+    """A machine with smooth loads: J_e = 2 + 0.4 cos 2φ kg·m², M_e = 300 (sin φ + 0.4 sin 3φ) N·m, 200 rev/min,
+    [δ] = 1/50."""
     model = ReducedModel(
         J_e=lambda p: 2.0 + 0.4 * np.cos(2 * p),
         M_e=lambda p: 300.0 * (np.sin(p) + 0.4 * np.sin(3 * p)),
         dJ_e=lambda p: -0.8 * np.sin(2 * p),
     )
-    return ReducedProblem("smooth machine", "smooth moment and inertia, both harmonic", model, omega_from_n(200.0), 1 / 50,
+    return ReducedProblem("smooth machine", "smooth moment and inertia, both harmonic", model, omega_from_n(200.0),
+                          1 / 50,
                           title={"en": "machine with smooth loads", "ru": "машина с плавно изменяющимися нагрузками",
                                  "zh": "载荷平稳变化的机器"})
 

@@ -591,7 +591,8 @@ class Dimension(Element):
                 prims.append(_arrowhead(tuple(q1.tolist()), -u, hl, hw))
                 prims.append(_arrowhead(tuple(q2.tolist()), u, hl, hw))
             else:  # too short: arrows outside pointing in
-                prims.append(Path((tuple((q1 - u * (hl + 2)).tolist()), tuple((q2 + u * (hl + 2)).tolist())), self.style))
+                ends = (tuple((q1 - u * (hl + 2)).tolist()), tuple((q2 + u * (hl + 2)).tolist()))
+                prims.append(Path(ends, self.style))
                 prims.append(_arrowhead(tuple(q1.tolist()), u, hl, hw))
                 prims.append(_arrowhead(tuple(q2.tolist()), -u, hl, hw))
         if self.text:

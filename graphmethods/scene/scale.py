@@ -70,7 +70,8 @@ class Scale:
         try:
             value = float(self.per_mm)
         except (TypeError, ValueError):
-            raise InputError(f"scale {self.symbol}: {self.per_mm!r} is not a number; give units per mm, e.g. 100") from None
+            raise InputError(f"scale {self.symbol}: {self.per_mm!r} is not a number; "
+                             "give units per mm, e.g. 100") from None
         if not math.isfinite(value) or value <= 0:
             raise InputError(f"scale {self.symbol} = {self.per_mm!r} {self.unit}/mm: a scale must be a positive "
                              f"finite number of units per mm")
@@ -158,7 +159,8 @@ def pick_scale(span_value: float, span_mm: float, *, series: Iterable[float] = S
     if not mantissas or any(not (1.0 <= m < 10.0) for m in mantissas):
         raise InputError(f"pick_scale: series {series!r} must hold mantissas in [1, 10)")
     if span_value == 0:
-        return Scale(symbol, unit, mantissas[0], note=f"picked: nothing to fit; chose {format_value(mantissas[0])} {unit}/mm")
+        return Scale(symbol, unit, mantissas[0],
+                     note=f"picked: nothing to fit; chose {format_value(mantissas[0])} {unit}/mm")
     need = span_value / span_mm
     c = convenient_at_least(need, mantissas)
     note = (f"picked: {format_value(span_value)} {unit} over {format_value(span_mm)} mm needs "

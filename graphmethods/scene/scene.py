@@ -105,7 +105,8 @@ class Scene:
         for e in self.elements:
             if e.name == name:
                 return e
-        raise InputError(f"scene {self.name}: no element named {name!r}; have {', '.join(e.name for e in self.elements)}")
+        have = ", ".join(e.name for e in self.elements)
+        raise InputError(f"scene {self.name}: no element named {name!r}; have {have}")
 
     def axes(self) -> tuple[Axis, ...]:
         """The axes drawn (top-level elements and inside groups)."""

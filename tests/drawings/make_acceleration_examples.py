@@ -133,7 +133,8 @@ def svg_drawing(name: str, kw: dict, mu_a: float) -> str:
             t = float((pts[st.label] - pts[ln.through]) @ d)
             a, b = pts[ln.through] + d * (min(0.0, t) - 10.0), pts[ln.through] + d * (max(0.0, t) + 10.0)
             (ax, ay), (bx, by) = P(a), P(b)
-            out.append(f'<path style="fill:none;stroke:#808080;stroke-width:0.18" d="M {ax:.3f},{ay:.3f} L {bx:.3f},{by:.3f}"/>')
+            out.append('<path style="fill:none;stroke:#808080;stroke-width:0.18" '
+                       f'd="M {ax:.3f},{ay:.3f} L {bx:.3f},{by:.3f}"/>')
     for c in comps:
         (sx, sy), (tx, ty) = P(pts[c.start]), P(pts[c.end])
         out.append(f'<path style="fill:none;stroke:#000000;stroke-width:0.35;marker-end:url(#Arrow2)" '

@@ -249,7 +249,8 @@ def press_wittenbauer(mistakes: bool):
     omega = case.n_rpm if mistakes else case.omega_m             # n (rev/min) used as ω in J_F
     J_F = mu_T * kl / (omega ** 2 * case.delta)
     for i, text in enumerate(("Energy–mass diagram (Wittenbauer), press, m = 12", "μJ = 0,005 kg·m²/mm", "μT = 4 J/mm",
-                              f"tg ψmax = {res.tan_psi_max:.4f}", f"tg ψmin = {res.tan_psi_min:.4f}", f"JF = {J_F:.4g} kg·m²")):
+                              f"tg ψmax = {res.tan_psi_max:.4f}", f"tg ψmin = {res.tan_psi_min:.4f}",
+                              f"JF = {J_F:.4g} kg·m²")):
         msp.add_text(text, height=3.5).set_placement((250.0, 60.0 - 7.0 * i))
     return doc
 

@@ -47,7 +47,8 @@ def test_jump_exactly_at_a_sample_point():
 
 def test_crossing_exactly_at_a_vertex():
     M_r = MomentCurve.points([0, PI, 2 * PI], [0, 20, 0])   # M_d = 10 by balance; crossing at π/2 mid-chord
-    M_r_v = MomentCurve.points([0, PI / 2, PI, 3 * PI / 2, 2 * PI], [0, 10, 20, 10, 0])  # same curve, vertex at crossing
+    # the same curve, a vertex at the crossing
+    M_r_v = MomentCurve.points([0, PI / 2, PI, 3 * PI / 2, 2 * PI], [0, 10, 20, 10, 0])
     a, b = ew.from_moments(M_r=M_r), ew.from_moments(M_r=M_r_v)
     np.testing.assert_allclose(a.phi, b.phi, atol=1e-12)
     np.testing.assert_allclose(a.work, b.work, atol=1e-12)
