@@ -106,3 +106,18 @@ def test_the_help_lines_of_the_top_level_are_those_of_the_commands():
         (sub,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
         return {c.dest: c.help for c in sub._choices_actions}
     assert helps(lazy) == helps(full) == {name: line for name, (_, line) in COMMANDS.items()}
+
+
+def test_no_figure_function_over_80_lines():
+    """Issue 16: a figure reads as steps (scales, a frozen layout, element builders), none longer than 80 lines."""
+    import graphmethods
+
+    root = pathlib.Path(graphmethods.__file__).parent / "sheets"
+    long = []
+    for path in sorted(root.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                length = (node.end_lineno or node.lineno) - node.lineno + 1
+                if length > 80:
+                    long.append(f"{path.relative_to(root)}:{node.lineno} {node.name} ({length} lines)")
+    assert not long, long
