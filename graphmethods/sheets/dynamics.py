@@ -35,7 +35,7 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import TypeVar
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -46,6 +46,7 @@ from graphmethods.scene import (
     Dimension,
     Frame,
     Line,
+    Page,
     Point,
     Polyline,
     Scale,
@@ -415,11 +416,60 @@ def _curve_names(curves: Sequence[CurveSpec], lines: Sequence[Polyline], occ: Fa
     return els
 
 
-def _graph_scene(study, *, nt, title, page, title_block, name, curves, y_lo, y_hi, y_symbol, y_unit,
-                 scale_symbol, mu_Y, mu_phi, what, dots=None, marks=(), levels=(), legend="", zero=None,
-                 extra_notes=()) -> Scene:
-    """A whole A4 landscape figure of one φ graph (the standalone figures)."""
-    from graphmethods.scene import Page
+def phi_graph(study: Any, *, nt: Notation, title: str, name: str, curves: Sequence[CurveSpec], y_lo: float,
+              y_hi: float, y_symbol: str, y_unit: str, scale_symbol: str, what: str, page: Page | None = None,
+              title_block: bool = True, mu_Y: Any = None, mu_phi: Any = None,
+              dots: tuple[Any, Any] | None = None, marks: Sequence[MarkSpec] = (), levels: Sequence[Any] = (),
+              legend: str = "", zero: bool | None = None, extra_notes: Sequence[str] = ()) -> Scene:
+    """A whole figure of graphs against the crank angle φ over one turn (A4 landscape unless ``page``).
+
+    The toolkit's φ-graph, which the standalone graphs (J_e, M, ΔT, ω, ε, m_e) are built on: the
+    frame with its title and problem, μ_φ and the value scale chosen to fill the plot (or given),
+    the φ axis with the positions 0…m, the value axis with its values (a suppressed zero when the
+    values lie far from 0, said in the notes), the curves, dots, marks and levels, and the scale
+    captions.
+
+    Parameters
+    ----------
+    study : Study
+        Gives the positions (``study.phi``, ``study.m``) and the problem's title.
+    nt : Notation
+        The notation the texts are written in.
+    title, name : str
+        The figure's title (drawn) and its scene name (element ids).
+    curves : sequence of CurveSpec
+        ``CurveSpec(name, phi_rad, values, style, label)``, values in ``y_unit``.
+    y_lo, y_hi : float
+        The value range to fit, in ``y_unit``.
+    y_symbol, y_unit, scale_symbol : str
+        The value axis's symbol and unit (``nt.quantity`` writes them) and its scale's symbol (μ_M ...).
+    what : str
+        What the values are, for the message when a given scale cannot hold them.
+    mu_Y, mu_phi : Scale, float or None
+        Given scales (units per mm; μ_φ in rad/mm); ``None`` picks them.
+    dots : (phi, values), optional
+        Values marked with dots (the study's positions).
+    zero : bool or None
+        ``True`` keeps 0 on the value axis, ``False`` suppresses it, ``None`` decides by the range.
+
+    Returns
+    -------
+    Scene
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from graphmethods.dynamics.study import Study
+    >>> from graphmethods.problems.builtin import case
+    >>> from graphmethods.scene import notation
+    >>> study = Study(case("press"), positions=12)
+    >>> phi = np.linspace(0.0, 2 * np.pi, 73)
+    >>> scene = phi_graph(study, nt=notation("en"), title="sin φ", name="sine", y_lo=-1.0, y_hi=1.0,
+    ...                   curves=[CurveSpec("s", phi, np.sin(phi), MAIN, "sin φ")], y_symbol="y", y_unit="",
+    ...                   scale_symbol="μ_y", what="sin φ")
+    >>> scene.name, scene.element("curve-s").name
+    ('sine', 'curve-s')
+    """
 
     sheet = SheetFrame(nt=nt, page=page, title=title, problem=problem_text(study, nt), title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
@@ -509,7 +559,7 @@ def inertia_graph(study, *, mu_J=None, mu_phi=None, turned: bool = False, parts:
                 curves.append(CurveSpec(re.sub(r"\W+", "", key), phi, values, PART, _part_label(key)))
     y_hi = float(max(red.J_e.max(), J_k.max()))
     legend = f"{J_sym} = Σ[m_i(v_{{Si}}/ω_1)² + J_{{Si}}(ω_i/ω_1)²]"
-    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.inertia_graph')} {J_sym}(φ)", page=page,
+    return phi_graph(study, nt=nt, title=title or f"{nt.word('dynamics.inertia_graph')} {J_sym}(φ)", page=page,
                         title_block=title_block, name=name, curves=curves, y_lo=0.0, y_hi=y_hi, y_symbol=J_sym,
                         y_unit="kg·m²", scale_symbol=nt.sym("dynamics.mu_J"), mu_Y=mu_J, mu_phi=mu_phi,
                         what="the J_e graph", dots=(phi_k, J_k), legend=legend, zero=True)
@@ -647,7 +697,7 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     dm = drawn_moments(study, nt)
     legend = f"{nt.sym(dm.constant_key)} = {value_text(nt, dm.constant, 'N·m')} ({nt.word('dynamics.work_balance')})"
     ttl = f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}"
-    return _graph_scene(study, nt=nt, title=title or ttl,
+    return phi_graph(study, nt=nt, title=title or ttl,
                         page=page, title_block=title_block, name=name, curves=list(dm.curves), y_lo=dm.lo,
                         y_hi=dm.hi, y_symbol=nt.sym("M"), y_unit="N·m",
                         scale_symbol=nt.sym("mu_M"), mu_Y=mu_M, mu_phi=mu_phi, what="the moment graph",
@@ -707,7 +757,7 @@ def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notat
                                     f"{get_notation(nt).number(math.degrees(p1), sig=4)}°", True),
              MarkSpec(kmin, p2, v2, f"{nt.sym(family + kmin)} = {value_text(nt, v2, 'J')}, φ = "
                                     f"{get_notation(nt).number(math.degrees(p2), sig=4)}°", False)]
-    return _graph_scene(study, nt=nt, title=title or ttl, page=page, title_block=title_block, name=name,
+    return phi_graph(study, nt=nt, title=title or ttl, page=page, title_block=title_block, name=name,
                         curves=[CurveSpec(key, phi, Y, MAIN, "")], y_lo=float(Y.min()), y_hi=float(Y.max()),
                         y_symbol=nt.sym(family + key), y_unit="J", scale_symbol=nt.sym("mu_T"), mu_Y=mu_T,
                         mu_phi=mu_phi,
@@ -749,7 +799,7 @@ def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, 
     levels = [(mo.omega_m, f"{nt.sym('dynamics.omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
     legend = (f"δ = {n(mo.delta)};  {nt.sym('dynamics.J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} "
               f"({nt.word('dynamics.exact')})")
-    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
+    return phi_graph(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
                         y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
                         y_symbol=nt.sym("dynamics.omega"), y_unit="rad/s", scale_symbol=nt.sym("dynamics.mu_omega"),
@@ -783,7 +833,7 @@ def acceleration_graph(study, *, mu_eps=None, mu_phi=None, notation="en", page=N
     marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{eps_text}, φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
     legend = (f"{nt.sym('dynamics.chi')} = |{nt.sym('dynamics.eps')}|_{{max}}/{nt.sym('dynamics.omega_m')}² = "
               f"{n(mo.chi)}")
-    return _graph_scene(study, nt=nt, title=title or f"{nt.word('dynamics.accel_graph')} ε(φ)", page=page,
+    return phi_graph(study, nt=nt, title=title or f"{nt.word('dynamics.accel_graph')} ε(φ)", page=page,
                         title_block=title_block, name=name, curves=[CurveSpec("eps", phi, eps, MAIN, "")],
                         y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)),
                         y_symbol=nt.sym("dynamics.eps"),
@@ -1148,5 +1198,5 @@ __all__ = [
     "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
     "phi_graph_elements", "turned_inertia_elements", "axis_break", "DownAxis", "FastOccupancy", "SheetFrame",
     "CurveSpec",
-    "MarkSpec", "LeverLoad", "lever_load", "value_text",
+    "MarkSpec", "LeverLoad", "lever_load", "value_text", "phi_graph",
 ]

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from graphmethods.scene import notation as get_notation
-from graphmethods.sheets.dynamics import MAIN, CurveSpec, _graph_scene, as_study
+from graphmethods.sheets.dynamics import MAIN, CurveSpec, as_study, phi_graph
 
 
 def equivalent_mass_graph(study: Any, *, point: str | None = None, cap: float = 6.0, samples: int = 720,
@@ -54,7 +54,7 @@ def equivalent_mass_graph(study: Any, *, point: str | None = None, cap: float = 
             curves.append(CurveSpec(f"m_e-{len(curves) + 1}", phi[seg], m_e[seg], MAIN, "m_e" if not curves else ""))
     dk = np.asarray(dots_tr.m_e, dtype=float) <= top
     legend = nt.word("translating.legend", cap=nt.number(cap, sig=3), top=nt.number(top, sig=4))
-    return _graph_scene(study, nt=nt, title=nt.word("translating.title"), page=None, title_block=True,
+    return phi_graph(study, nt=nt, title=nt.word("translating.title"), page=None, title_block=True,
                         name="equivalent-mass-graph",
                         curves=curves, y_lo=0.0, y_hi=top, y_symbol="m_e", y_unit="kg", scale_symbol="μ_m",
                         mu_Y=mu_m, mu_phi=mu_phi, what="the equivalent mass", legend=legend, zero=True,
