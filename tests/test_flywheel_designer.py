@@ -199,3 +199,16 @@ def test_formula_90_reproduces_the_exact_flywheel_on_the_press(press_study):
     assert math.tan(math.radians(out["mu_max_deg"])) == pytest.approx(out["tan_mu_max"])
     md = press_study.to_markdown(exact=True)
     assert "| J_F_formula_90 |" in md and "| chi_artobolevsky |" in md
+
+
+def test_an_existing_hyperbola_file_keeps_the_figure_unwritten_too(capsys, tmp_path, monkeypatch):
+    """Two files asked for, the second exists: refused before either is written (no half a set)."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "h.svg").write_text("mine")
+    code, _, err = run(capsys, "flywheel", *W1, "--delta", "0.1", "--rim", "--figure", "f.svg", "--hyperbola", "h.svg")
+    assert code == 2 and "h.svg exists" in err and len(err.strip().splitlines()) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["h.svg"] and (tmp_path / "h.svg").read_text() == "mine"
+    code, _, err = run(capsys, "flywheel", *W1, "--delta", "0.1", "--rim", "--figure", "f.svg", "--hyperbola", "h.svg",
+                       "--force")
+    assert code == 0, err
+    assert (tmp_path / "f.svg").read_bytes().startswith(b"<?xml") and (tmp_path / "h.svg").read_text() != "mine"

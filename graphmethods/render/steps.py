@@ -35,9 +35,9 @@ import pathlib
 import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 
-from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.errors import InputError
 from graphmethods.render import svg as _svg
-from graphmethods.render.files import write_atomic
+from graphmethods.render.files import check_target, write_set
 from graphmethods.scene import markup
 from graphmethods.scene.notation import get as get_notation
 from graphmethods.scene.numbers import format_mm as fmt
@@ -355,21 +355,10 @@ def save(bu: BuildUp, path: str | os.PathLike[str], fmt_: str, *, overwrite: boo
         The files written.
     """
     files = outputs(bu, fmt_, path, seconds=seconds)
-    if not overwrite:
-        existing = [str(p) for p, _ in files if p.exists()]
-        if existing:
-            more = f" and {len(existing) - 1} more" if len(existing) > 1 else ""
-            raise OutputExistsError(f"{existing[0]}{more} exists; pass overwrite=True (or --force) to replace it")
-    written: list[pathlib.Path] = []
-    try:
-        for p, data in files:
-            written.append(write_atomic(p, data, overwrite=overwrite))
-    except BaseException:
-        if not overwrite:
-            for p in written:
-                p.unlink(missing_ok=True)
-        raise
-    return written
+    for target, _ in files:                     # a missing folder or an existing file: refused, nothing written
+        check_target(target, overwrite=overwrite)
+    folder = pathlib.Path(path).parent          # every file of a construction goes beside ``path``
+    return write_set(folder, {p.name: data for p, data in files}, overwrite=overwrite, what="steps folder")
 
 
 def manifest(bu: BuildUp) -> str:
