@@ -220,14 +220,12 @@ def _extract_face(path: str, index: int) -> str:
     out = pathlib.Path(matplotlib.get_cachedir()) / "graphmethods-fonts" / \
         f"{pathlib.Path(path).stem}-{index}-{key}.{'otf' if 'CFF ' in font else 'ttf'}"
     if not out.is_file():
+        from graphmethods.render.files import write_atomic
+
         out.parent.mkdir(parents=True, exist_ok=True)
-        tmp = out.with_name(f".{out.name}.{os.getpid()}.tmp")
-        try:
-            font.save(str(tmp))
-            os.replace(tmp, out)
-        finally:
-            if tmp.exists():
-                tmp.unlink()
+        buf = io.BytesIO()
+        font.save(buf)
+        write_atomic(out, buf.getvalue(), overwrite=True)   # another process may have made it meanwhile
     font.close()
     return str(out)
 
