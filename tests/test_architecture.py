@@ -45,10 +45,29 @@ def _imported_parts(path: pathlib.Path):
                     names = [mod + "." + a.name for a in node.names]
             else:
                 names = [node.module or ""]
+        if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "import_module"
+                and node.args):
+            names = [_literal_prefix(node.args[0])]       # an import by name counts as an import
         for name in names:
             parts = name.split(".")
             if parts[0] == "graphmethods" and len(parts) > 1:
                 yield parts[1], node.lineno
+
+
+def _literal_prefix(node: ast.expr) -> str:
+    """The module name an ``import_module`` call names, or its literal start (an f-string's)."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.JoinedStr) and node.values and isinstance(node.values[0], ast.Constant):
+        return str(node.values[0].value)
+    return ""
+
+
+#: the upward reaches the architecture allows, each with its reason
+UPWARD = {
+    ("scene/scene.py", "render"): "a notebook asks the scene for its SVG (Scene._repr_svg_): the writer is looked "
+                                  "up by name only when the scene is displayed, so the scene model imports no backend",
+}
 
 
 def test_every_part_has_a_layer():
@@ -62,6 +81,8 @@ def test_imports_only_go_downward():
         own = _part(path)
         for part, line in _imported_parts(path):
             if part not in LAYERS:
+                continue
+            if (path.relative_to(PKG).as_posix(), part) in UPWARD:
                 continue
             if LAYERS[part] > LAYERS[own] or (LAYERS[part] == LAYERS[own] and part != own and LAYERS[own] > 0):
                 bad.append(f"{path.relative_to(PKG.parent)}:{line} imports graphmethods.{part}")
@@ -109,7 +130,8 @@ def test_the_help_lines_of_the_top_level_are_those_of_the_commands():
 
 
 def test_no_figure_function_over_80_lines():
-    """Issue 16: a figure reads as steps (scales, a frozen layout, element builders), none longer than 80 lines."""
+    """Issue 16: a figure reads as steps (scales, a frozen layout, element builders), none longer than 80 lines
+    (its docstring not counted: the parameters and a running example are documentation, not steps)."""
     import graphmethods
 
     root = pathlib.Path(graphmethods.__file__).parent / "sheets"
@@ -118,6 +140,10 @@ def test_no_figure_function_over_80_lines():
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 length = (node.end_lineno or node.lineno) - node.lineno + 1
+                doc = node.body[0] if node.body and isinstance(node.body[0], ast.Expr) and isinstance(
+                    getattr(node.body[0], "value", None), ast.Constant) else None
+                if doc is not None:
+                    length -= (doc.end_lineno or doc.lineno) - doc.lineno + 1
                 if length > 80:
                     long.append(f"{path.relative_to(root)}:{node.lineno} {node.name} ({length} lines)")
     assert not long, long

@@ -43,7 +43,7 @@ from graphmethods.errors import InputError
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
 from graphmethods.scene.elements import CAP
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT, text_width_mm
+from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm, text_width_mm
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
 
@@ -311,7 +311,7 @@ class DxfRenderer:
         x = label.x - {"start": 0.0, "middle": sum(widths) / 2.0, "end": sum(widths)}[label.anchor]
         for (chunk, shift), w in zip(runs, widths):
             h = size * (1.0 if shift == 0 else SCRIPT_SCALE)
-            dy = {0: 0.0, -1: SUB_SHIFT * size, 1: -SUP_SHIFT * size}[shift]
+            dy = baseline_shift_mm(shift, size)
             e = self.msp.add_text(chunk, height=_num(h * CAP), dxfattribs=dict(attrs, style=style))
             e.set_placement(self._xy(x, label.y + dy), align=TextEntityAlignment.LEFT)
             self._keep(e)

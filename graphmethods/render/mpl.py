@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
 from graphmethods.render.fonts import check_drawable, check_scene, families, find_cjk_font  # noqa: F401
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
+from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
 
@@ -211,7 +211,7 @@ class MplRenderer:
         total = sum(widths)
         x = label.x - {"start": 0.0, "middle": total / 2, "end": total}[label.anchor]
         for (chunk, shift), sz, w in zip(runs, sizes, widths):
-            dy = {0: 0.0, -1: SUB_SHIFT * label.size_mm, 1: -SUP_SHIFT * label.size_mm}[shift]
+            dy = baseline_shift_mm(shift, label.size_mm)
             self._add_label(x, label.y + dy, chunk, sz, family, weight, label.color, "left")
             x += w
 

@@ -36,7 +36,7 @@ from graphmethods.errors import InputError
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
 from graphmethods.render.fonts import Face, check_drawable, faces
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT, plain
+from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm, plain
 from graphmethods.scene.numbers import format_mm as fmt
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
@@ -218,7 +218,7 @@ class PdfRenderer:
         self._set("rg", _rgb(label.color))
         parts = ["BT"]
         for size, width, shows, shift in laid:
-            dy = {0: 0.0, -1: SUB_SHIFT * label.size_mm, 1: -SUP_SHIFT * label.size_mm}[shift]
+            dy = baseline_shift_mm(shift, label.size_mm)
             parts.append(f"1 0 0 -1 {fmt(x)} {fmt(label.y + dy)} Tm")
             parts += [f"/{name} {fmt(size)} Tf {array} TJ" for name, array in shows]
             x += width

@@ -23,7 +23,7 @@ from typing import Any
 
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
-from graphmethods.scene.markup import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT
+from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm
 from graphmethods.scene.numbers import format_mm as fmt
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
@@ -131,7 +131,7 @@ class SvgRenderer:
         else:
             offset = 0.0  # current baseline shift, mm (down positive)
             for chunk, shift in runs:
-                target = {0: 0.0, -1: SUB_SHIFT * size, 1: -SUP_SHIFT * size}[shift]
+                target = baseline_shift_mm(shift, size)
                 span = self.dwg.tspan(clean_text(chunk))
                 if abs(target - offset) > 1e-12:
                     span["dy"] = fmt(target - offset)

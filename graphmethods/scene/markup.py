@@ -25,6 +25,16 @@ SCRIPT_SCALE = 0.7
 SUB_SHIFT = 0.22
 SUP_SHIFT = 0.38
 
+
+def baseline_shift_mm(shift: int, size_mm: float) -> float:
+    """How far a run's baseline lies below the line's (mm; a superscript's is negative), for a run's
+    ``shift`` of -1 (subscript), 0 or +1 (superscript) in text of ``size_mm``: every backend's one rule.
+
+    >>> baseline_shift_mm(-1, 5.0), baseline_shift_mm(0, 5.0), baseline_shift_mm(1, 5.0)
+    (1.1, 0.0, -1.9)
+    """
+    return {0: 0.0, -1: SUB_SHIFT * size_mm, 1: -SUP_SHIFT * size_mm}[shift]
+
 # Advance widths of DejaVu Sans (the default font of matplotlib) in em, for ASCII 32..126.
 _ASCII_EM = (
     0.318, 0.401, 0.46, 0.838, 0.636, 0.95, 0.78, 0.275, 0.39, 0.39, 0.5, 0.838, 0.318, 0.361, 0.318, 0.337,
