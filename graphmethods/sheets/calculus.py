@@ -46,17 +46,16 @@ from graphmethods.scene import (
     Scene,
     Table,
     Text,
-    format_value,
     markup,
     nice_ticks,
     notation as get_notation,
     pick_angle_scale,
     pick_scale,
 )
-from graphmethods.scene.elements import Element, label_bbox
+from graphmethods.scene.elements import Element
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
-from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, problem_title
+from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, clear_tick_labels, problem_title
 
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables
@@ -146,47 +145,6 @@ def register(occ: Occupancy, *elements: Element) -> None:
     """
     for e in elements:
         occ.add_primitives(e.primitives())
-
-
-def clear_tick_labels(axis: Axis, occ: Occupancy, *, keep_values: bool = False) -> Axis:
-    """The axis with the tick labels that would cover something already drawn left out (marks stay).
-
-    With ``keep_values`` (a value axis) an axis is never left without values: when every label
-    on its side would cover something, they go on the other side; when that is full too, the
-    labels that cover no text stay (a thin line may run through a number).
-
-    >>> from graphmethods.scene import Scale
-    >>> occ = Occupancy()
-    >>> occ.add_line(((5.0, 85.0), (30.0, 85.0)))                   # a line through the value 10
-    >>> ax = Axis((10.0, 95.0), Scale("μ", "J", 1.0), "y", max_value=30.0, ticks=(0.0, 10.0, 20.0))
-    >>> clear_tick_labels(ax, occ).tick_labels
-    ('0', '', '20')
-    """
-    from dataclasses import replace
-
-    from graphmethods.scene.primitives import Label as PLabel
-
-    labels = list(axis.tick_labels) if axis.tick_labels is not None else \
-        [format_value(v, decimal=axis.decimal) for v in axis.ticks]
-    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-
-    def kept(ax: Axis, lines: bool) -> list[str]:
-        texts = [p for p in replace(ax, label="").primitives() if isinstance(p, PLabel)]
-        out = list(labels)
-        for i, lab in zip(shown, texts):
-            if not occ.is_free(label_bbox(lab), lines=lines):
-                out[i] = ""
-        return out
-
-    out = kept(axis, True)
-    if keep_values and shown and not any(out[i] for i in shown):
-        other = replace(axis, labels_side="right") if axis.direction == "y" and axis.labels_side in ("", "left") \
-            else axis
-        out = kept(other, True)
-        if any(out[i] for i in shown):
-            return replace(other, tick_labels=tuple(out))
-        out = kept(axis, False)
-    return replace(axis, tick_labels=tuple(out))
 
 
 def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:
@@ -419,7 +377,7 @@ def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: i
     """A strip's φ and value axes, their tick labels that would cover what is drawn left out, and the
     position numbers that lost their place set beside their ticks (call after registering the strip)."""
     full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
-    ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True)
+    ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True, other_side=True)
     register(occ, ax_phi, ax_y)
     return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
 

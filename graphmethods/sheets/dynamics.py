@@ -34,8 +34,8 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
-from typing import Any, TypeVar
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -62,7 +62,7 @@ from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
-from graphmethods.sheets.layout import TEXT_MM, Box, Occupancy, given_angle_scale, given_scale, problem_title
+from graphmethods.sheets.layout import TEXT_MM, Box, clear_tick_labels, given_angle_scale, given_scale, problem_title
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
@@ -131,29 +131,6 @@ def format_number(v: float, decimal: str = ".") -> str:
     from graphmethods.scene.numbers import format_value
 
     return format_value(v, decimal=decimal)
-
-
-AxisT = TypeVar("AxisT", bound=Axis)
-
-
-def clear_ticks(axis: AxisT, occ: Occupancy, *, keep_values: bool = False) -> AxisT:
-    """The axis with the tick labels that something registered runs through left out (the marks stay).
-
-    With ``keep_values``, when lines would clear every value, those that cover no text stay
-    (a thin line through a number rather than an axis without values).
-    """
-    labels = list(axis.tick_labels) if axis.tick_labels is not None else None
-    texts = [p for p in axis.primitives() if isinstance(p, Label)]
-    if labels is None:
-        labels = [format_number(v, axis.decimal) for v in axis.ticks]
-    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-    free = [occ.is_free(label_bbox(lab)) for lab in texts[:len(shown)]]
-    if keep_values and shown and not any(free):
-        free = [occ.is_free(label_bbox(lab), lines=False) for lab in texts[:len(shown)]]
-    for i, ok in zip(shown, free):
-        if not ok:
-            labels[i] = ""
-    return replace(axis, tick_labels=tuple(labels))
 
 
 def position_labels(m: int, spacing_mm: float, *, min_gap_mm: float = 5.0) -> tuple[str, ...]:
@@ -326,7 +303,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
     occ.add_box((origin[0] - 0.5, min(y0_page, x_axis_y) - 0.5, origin[0] + 0.5, max(y0_page, x_axis_y) + 0.5))
     occ.add_line((ax_phi.start, ax_phi.tip))
     occ.add_line((ax_Y.start, ax_Y.tip))
-    ax_phi, ax_Y = clear_ticks(ax_phi, occ), clear_ticks(ax_Y, occ)
+    ax_phi, ax_Y = clear_tick_labels(ax_phi, occ), clear_tick_labels(ax_Y, occ)
     occ.register(ax_phi, ax_Y)
     for ax in (ax_phi, ax_Y):        # keep curve names well clear of the axis names
         name = [p for p in ax.primitives() if isinstance(p, Label)][-1:]
@@ -600,7 +577,7 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
     occ.register(curve, *breaks)
     occ.add_line((ax_J.start, ax_J.tip))
     occ.add_line((ax_phi.start, ax_phi.tip))
-    ax_J, ax_phi = clear_ticks(ax_J, occ), clear_ticks(ax_phi, occ)
+    ax_J, ax_phi = clear_tick_labels(ax_J, occ), clear_tick_labels(ax_phi, occ)
     occ.register(ax_J, ax_phi)
     dots = []
     for k in range(m):

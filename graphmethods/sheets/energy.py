@@ -45,13 +45,14 @@ from graphmethods.scene import (
 from graphmethods.scene.elements import Element, Group
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label, Style
-from graphmethods.sheets.calculus import clear_tick_labels, register
+from graphmethods.sheets.calculus import register
 from graphmethods.sheets.layout import (
     TEXT_MM,
     Box,
     Occupancy,
     Sheet,
     angle_deg_text,
+    clear_tick_labels,
     given_angle_scale,
     given_scale,
     problem_title,

@@ -15,13 +15,16 @@ True
 from __future__ import annotations
 
 import math
+from dataclasses import replace
+from typing import TypeVar
 
 import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, TitleBlock, markup, notation as get_notation
-from graphmethods.scene.elements import Element, label_bbox, make_label, place_label
+from graphmethods.scene.elements import Axis, Element, label_bbox, make_label, place_label
+from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
 from graphmethods.titles import text_in
@@ -462,6 +465,48 @@ class Sheet:
 
         return Scene(self.page(scales), tuple(elements), title=self.title, notation=self.nt.code, name=name,
                      extra_scales=tuple(scales), notes=tuple(notes))
+
+
+
+AxisT = TypeVar("AxisT", bound=Axis)
+
+
+def clear_tick_labels(axis: AxisT, occ: Occupancy, *, keep_values: bool = False, other_side: bool = False) -> AxisT:
+    """The axis with the tick labels that would cover something already registered left out (marks stay).
+
+    With ``keep_values`` (a value axis) an axis is never left without values: when every label
+    would cover something, they go on the other side of a y axis (``other_side``), and when that
+    is full too (or not asked for), the labels that cover no text stay (a thin line may run
+    through a number).
+
+    >>> from graphmethods.scene import Scale
+    >>> occ = Occupancy()
+    >>> occ.add_line(((5.0, 85.0), (30.0, 85.0)))                   # a line through the value 10
+    >>> ax = Axis((10.0, 95.0), Scale("μ", "J", 1.0), "y", max_value=30.0, ticks=(0.0, 10.0, 20.0))
+    >>> clear_tick_labels(ax, occ).tick_labels
+    ('0', '', '20')
+    """
+    labels = list(axis.tick_labels) if axis.tick_labels is not None else \
+        [format_value(v, decimal=axis.decimal) for v in axis.ticks]
+    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
+
+    def kept(ax: AxisT, lines: bool) -> list[str]:
+        texts = [p for p in replace(ax, label="").primitives() if isinstance(p, Label)]
+        out = list(labels)
+        for i, lab in zip(shown, texts):
+            if not occ.is_free(label_bbox(lab), lines=lines):
+                out[i] = ""
+        return out
+
+    out = kept(axis, True)
+    if keep_values and shown and not any(out[i] for i in shown):
+        if other_side and axis.direction == "y" and axis.labels_side in ("", "left"):
+            other = replace(axis, labels_side="right")
+            out = kept(other, True)
+            if any(out[i] for i in shown):
+                return replace(other, tick_labels=tuple(out))
+        out = kept(axis, False)
+    return replace(axis, tick_labels=tuple(out))
 
 
 def given_scale(given, symbol: str, u: str, span: float, span_mm: float, *, what: str) -> Scale:

@@ -69,7 +69,6 @@ from graphmethods.sheets.dynamics import (
     DrawnMoments,
     as_study,
     axis_break,
-    clear_ticks,
     delta_T_curve,
     drawn_moments,
     fine_angles,
@@ -83,7 +82,7 @@ from graphmethods.sheets.dynamics import (
     value_text,
 )
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
-from graphmethods.sheets.layout import Box, Occupancy
+from graphmethods.sheets.layout import Box, Occupancy, clear_tick_labels
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -375,9 +374,9 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{d.prefix}axis-J")
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
-    ax_T = clear_ticks(ax_T, occ, keep_values=True)
+    ax_T = clear_tick_labels(ax_T, occ, keep_values=True)
     occ.register(ax_T)
-    ax_J = clear_ticks(ax_J, occ, keep_values=True)
+    ax_J = clear_tick_labels(ax_J, occ, keep_values=True)
     occ.register(ax_J)
     return ax_T, ax_J
 

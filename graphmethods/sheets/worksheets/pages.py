@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import replace
 
 import numpy as np
 
@@ -227,21 +226,11 @@ def _flywheel_heads(nt) -> list[str]:
 
 def _clear_tick_labels(axis: Axis, points) -> Axis:
     """The axis with the tick labels that a polyline (page points) runs through left out."""
-    from graphmethods.scene.elements import label_bbox
-    from graphmethods.scene.primitives import Label
-    from graphmethods.sheets.layout import Occupancy
+    from graphmethods.sheets.layout import Occupancy, clear_tick_labels
 
     occ = Occupancy(pad_mm=0.4)
     occ.add_line(points)
-    texts = [p for p in axis.primitives() if isinstance(p, Label)]
-    labels = list(axis.tick_labels) if axis.tick_labels is not None else \
-        [format_tick(v, axis.decimal) for v in axis.ticks]
-    shown = [i for i, v in enumerate(axis.ticks) if labels[i] and not (axis.skip_zero_label and v == 0)]
-    for i, lab in zip(shown, texts):
-        if not occ.is_free(label_bbox(lab)):
-            labels[i] = ""
-    return replace(axis, tick_labels=tuple(labels))
-
+    return clear_tick_labels(axis, occ)
 
 def format_tick(v: float, decimal: str) -> str:
     from graphmethods.scene import format_value
