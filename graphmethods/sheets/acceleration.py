@@ -388,12 +388,12 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     pts = {lb: f.pt(zz.real, zz.imag) for lb, zz in plan.images.items()}
     occ = sheet.occ
     cons, cons_texts = _acceleration_lines(plan, pts, nt)
-    K._register(occ, *cons)
+    occ.register(*cons)
     vecs = _component_vectors(pts, comps, prefix="", head_mm=lay.head_mm, width_mm=1.1)
     pole = Point(pts["π"], radius_mm=lay.pole_mm, name="pole")
-    K._register(occ, *vecs, pole)
+    occ.register(*vecs, pole)
     hard = Occupancy(pad_mm=0.3)
-    K._register(hard, *vecs)
+    hard.register(*vecs)
     cons_labels = K._label_lines(occ, cons, cons_texts, hard=hard, area=area)
     leaders: list = []
     names = _place_labels(occ, pts, plan, size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4),
@@ -447,7 +447,7 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
         pts = {lb: f.pt(z.real, z.imag) for lb, z in p.images.items()}
         vecs = _component_vectors(pts, p.components, prefix=prefix, head_mm=2.2, width_mm=0.8)
         pole = Point(pts["π"], radius_mm=lay.pole_mm, name=f"{prefix}pole")
-        K._register(occ, *vecs, pole)
+        occ.register(*vecs, pole)
         drawn += vecs + [pole]
         main = {lb: at for lb, at in pts.items() if lb in p.labels.values()}
         labels += _place_labels(occ, main, p, size_mm=SMALL_MM + 0.2, within=box, prefix=prefix, leaders=labels)

@@ -137,16 +137,6 @@ def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.
     return xs, ys
 
 
-def register(occ: Occupancy, *elements: Element) -> None:
-    """Register everything some elements draw, so labels placed later keep off it.
-
-    (The cycle figures' one copy, also used by :mod:`graphmethods.sheets.energy`; its home is
-    :class:`graphmethods.sheets.layout.Occupancy`, as ``FastOccupancy.register`` has it.)
-    """
-    for e in elements:
-        occ.add_primitives(e.primitives())
-
-
 def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:
     """The position numbers a φ axis had to leave out, set beside their ticks where there is room
     (above the axis where a curve runs below it, and the other way round)."""
@@ -249,7 +239,7 @@ def _pole(band: _Band, H_mm: float, label: str, name: str, occ: Occupancy) -> li
     at = band.mm(-H_mm, 0.0)
     line = Line(at, band.origin, style=THIN, name=f"{name}-axis-extension")
     dot = Point(at, radius_mm=0.7, name=f"{name}-point")
-    register(occ, line, dot)
+    occ.register(line, dot)
     lab = occ.place_label(at, label, ("nw", "w", "sw", "n"), size_mm=TEXT_MM, gap_mm=1.0)
     text = Text((lab.x, lab.y), label, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-label")
     return [line, dot, text]
@@ -271,7 +261,7 @@ def _h_dimension(band: _Band, H_mm: float, ordinates_mm: ArrayLike, text: str, n
     depth = (down if below else up) + 5.0
     # the normal of p→q (rightwards on paper) is (0, 1): a positive offset is below the axis
     dim = Dimension(p, q, "", offset_mm=depth if below else -depth, name=f"dimension-{name}")
-    register(occ, dim)
+    occ.register(dim)
     lab = occ.place_label(dim.mid, text, ("s", "n") if below else ("n", "s"), size_mm=SMALL_MM, gap_mm=0.8)
     return [dim, Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"dimension-{name}-text")]
 
@@ -282,7 +272,7 @@ def _side_block(x: float, y: float, lines: list[str], name: str, occ: Occupancy)
     for k, t in enumerate(lines):
         els.append(Text((x, y + k * (TEXT_MM * 1.45)), t, size_mm=TEXT_MM if k == 0 else SMALL_MM + 0.2,
                         name=f"{name}-{k + 1}"))
-    register(occ, *els)
+    occ.register(*els)
     return els
 
 
@@ -378,7 +368,7 @@ def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: i
     position numbers that lost their place set beside their ticks (call after registering the strip)."""
     full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
     ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True, other_side=True)
-    register(occ, ax_phi, ax_y)
+    occ.register(ax_phi, ax_y)
     return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
 
 
@@ -453,7 +443,7 @@ def _s_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_s: 
                    enumerate(zip(sd.phi, pts_s)) if abs(q[1] - b_s.origin[1]) > 0.05]
     chords_s = [Line(pts_s[k], pts_s[k + 1], style=CHORD, name=f"chord-s-{k + 1}") for k in range(m)]
     dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
-    register(occ, curve_s, *ordinates_s, *chords_s)
+    occ.register(curve_s, *ordinates_s, *chords_s)
     axes, pos_s = _strip_axes(b_s, occ, nt=nt, y_label=nt.quantity(sym_s, nt.unit("m")), m=m, name="s", pos="pos-s")
     return b_s, [*axes, *ordinates_s, *chords_s, curve_s, *dots_s, *pos_s]
 
@@ -490,7 +480,7 @@ def _v_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_v: 
     curve_v = Polyline(b_v.pts(Xs, Ys), style=RESULT, name="curve-v")
     chords_v = _chords_of_points(b_v, v_pts_x, v_pts_y)
     pole_els_v = _pole(b_v, v.H_mm, f"{nt.sym('calculus.P')}_1", "pole-v", occ)
-    register(occ, curve_v, *rays_v, *proj_v, *chords_v)
+    occ.register(curve_v, *rays_v, *proj_v, *chords_v)
     axes, pos_v = _strip_axes(b_v, occ, nt=nt, y_label=nt.quantity(sym_v, nt.unit(ks.sd.units[0])), m=m, name="v",
                               pos="pos-v")
     dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')}", "H1", occ)
@@ -515,7 +505,7 @@ def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: 
     dots_a = [Point(p, radius_mm=0.55, name=f"dot-a-{k}") for k, p in enumerate(points_a)]
     curve_a = Polyline(b_a.pts(Xa, Ya), style=RESULT, name="curve-a")
     pole_els_a = _pole(b_a, a.H_mm, f"{nt.sym('calculus.P')}_2", "pole-a", occ)
-    register(occ, curve_a, *rays_a, *proj_a)
+    occ.register(curve_a, *rays_a, *proj_a)
     axes, pos_a = _strip_axes(b_a, occ, nt=nt, y_label=nt.quantity(sym_a, nt.unit(ks.sd.units[1])), m=m, name="a",
                               pos="pos-a")
     dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')}", "H2", occ)
@@ -813,7 +803,7 @@ def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: 
     curve_r = Polyline(b_M.pts(np.asarray(M_r.phi) - phi0, M_r.M), style=RESULT, name="curve-M_r")
     steps, projections, rays = _mean_ordinates(ws, b_M, x, M_d, M_r)
     pole_els = _pole(b_M, ws.H, nt.sym("calculus.P"), "pole", occ)
-    register(occ, curve_d, curve_r, *steps, *projections, *rays)
+    occ.register(curve_d, curve_r, *steps, *projections, *rays)
     axes, pos_M = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), m=len(x) - 1,
                               name="M", pos="pos-M")
     ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
@@ -834,7 +824,7 @@ def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     chords_r = Polyline(b_A.pts(x, wd.A_r.values), style=RESULT, name="chords-A_r")
     dots_A = [Point(p, radius_mm=0.5, name=f"dot-A_r-{k}") for k, p in enumerate(chords_r.points)]
     dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
-    register(occ, chords_d, chords_r)
+    occ.register(chords_d, chords_r)
     axes, pos_A = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)), m=len(x) - 1,
                               name="A", pos="pos-A")
     names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]),
@@ -852,7 +842,7 @@ def _dE_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     ordinates_E = [Line(b_E.pt(xk, 0.0), b_E.pt(xk, ek), style=THIN, name=f"ordinate-dE-{k}")
                    for k, (xk, ek) in enumerate(zip(x, dE)) if abs(s_A.to_mm(float(ek))) > 0.05]
     dots_E = [Point(p, radius_mm=0.5, name=f"dot-dE-{k}") for k, p in enumerate(curve_E.points)]
-    register(occ, curve_E, *ordinates_E)
+    occ.register(curve_E, *ordinates_E)
     axes, pos_E = _strip_axes(b_E, occ, nt=nt, y_label=nt.quantity(nt.sym("dE"), nt.unit(work_unit)), m=len(x) - 1,
                               name="dE", pos="pos-E")
     return b_E, [*axes, *ordinates_E, curve_E, *dots_E, *pos_E]

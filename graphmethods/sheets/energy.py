@@ -45,7 +45,6 @@ from graphmethods.scene import (
 from graphmethods.scene.elements import Element, Group
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label, Style
-from graphmethods.sheets.calculus import register
 from graphmethods.sheets.layout import (
     TEXT_MM,
     Box,
@@ -242,7 +241,7 @@ def _moment_axes(g: _MomentGraph, ew: Any, nt: Notation, occ: Occupancy,
     cd = Polyline(g.frame.pts(ew.M_d.phi - g.phi0, ew.M_d.M), style=MAIN, name="curve-M_d")
     cr = Polyline(g.frame.pts(ew.M_r.phi - g.phi0, ew.M_r.M), style=MAIN, name="curve-M_r")
     ax_phi, ax_M = _clear_ticks(ax_phi, cd, cr), _clear_ticks(ax_M, cd, cr)
-    register(occ, ax_phi, ax_M, cd, cr)
+    occ.register(ax_phi, ax_M, cd, cr)
     return ax_phi, ax_M, cd, cr
 
 
@@ -453,7 +452,7 @@ def moment_diagram(cycle: Any, *, mu_M: Any = None, mu_phi: Any = None, notation
     occ = sheet.occ
     ax_phi, ax_M, cd, cr = _moment_axes(g, ew, nt, occ, moment_unit)
     ordinates = _closing_ordinates(g, ew)
-    register(occ, *ordinates)
+    occ.register(*ordinates)
     regions, annotations = _intervals(g, ew, nt, occ, work_unit)
     points = _boundary_points(g, ew, occ)
     names = _moment_names(g, ew, nt, occ, cd, cr)
@@ -643,7 +642,7 @@ def _staircase(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy,
     dim = Dimension((x_dim, y(E[imin])), (x_dim, y(E[imax])),
                     f"{nt.sym('delta_W_max')} = {nt.number(ew.delta_W_max)} {nt.unit(work_unit)}",
                     size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
-    register(occ, ax, start_line, *vectors, *levels, *ext, dim)
+    occ.register(ax, start_line, *vectors, *levels, *ext, dim)
     return ax, start_line, vectors, levels, ext, dim
 
 
@@ -850,7 +849,7 @@ def _energy_axes(g: _EnergyGraph, nt: Notation, occ: Occupancy, sym: str,
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     curve = Polyline(g.frame.pts(g.phi - g.phi0, g.Y), style=MAIN, name="curve-E")
     ax_phi, ax_E = _clear_ticks(ax_phi, curve), _clear_ticks(ax_E, curve)
-    register(occ, ax_phi, ax_E, curve)
+    occ.register(ax_phi, ax_E, curve)
     return ax_phi, ax_E, curve
 
 
@@ -869,7 +868,7 @@ def _energy_extremes(g: _EnergyGraph, ew: Any, occ: Occupancy,
         guides.append(Line(at, (x_dim + 2.0, at[1]), style=DASHED, name=f"level-{key}"))
     dim = Dimension((x_dim, g.P(*ext_pts[k_min])[1]), (x_dim, g.P(*ext_pts[k_max])[1]), dim_text,
                     size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
-    register(occ, *guides, dim)
+    occ.register(*guides, dim)
     marks: list[Element] = []
     for key, (ph, v) in ext_pts.items():
         at = g.P(ph, v)

@@ -66,11 +66,6 @@ class FastOccupancy(Occupancy):
         self.add_label(lab)
         return lab, None
 
-    def register(self, *elements: Element) -> None:
-        """Register everything some elements draw."""
-        for e in elements:
-            self.add_primitives(e.primitives())
-
 
 class SheetFrame(Sheet):
     """The shared :class:`~graphmethods.sheets.layout.Sheet`, with a faster occupancy (these sheets place many

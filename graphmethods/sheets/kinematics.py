@@ -287,11 +287,6 @@ def _paper_deg(v) -> float:
     return math.degrees(math.atan2(float(v[1]), float(v[0])))
 
 
-def _register(occ: Occupancy, *elements) -> None:
-    for e in elements:
-        occ.add_primitives(e.primitives())
-
-
 # ----------------------------------------------------------------------------- 1. the kinematic scheme
 
 @dataclass(frozen=True)
@@ -542,7 +537,7 @@ def _scheme_keep_clear(occ: Occupancy, thick_els: list[Element], top_els: list[E
                        lay: SchemeLayout) -> Occupancy:
     """What a label must never cover (thick links, blocks: returned), and the joints and blocks kept free."""
     hard = Occupancy(pad_mm=lay.hard_pad_mm)
-    _register(hard, *thick_els, *[e for e in top_els if isinstance(e, SliderBlock)])
+    hard.register(*thick_els, *[e for e in top_els if isinstance(e, SliderBlock)])
     c = lay.joint_clear_mm
     for e in top_els + symbol_els:
         if isinstance(e, (PinJoint, FixedPivot)):
@@ -582,7 +577,7 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
         text = nt.word("kinematics.stroke", H=nt.number(pos.H, sig=4), u=nt.unit("m"))
         dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
         dims.append(dim)
-        _register(occ, dim)
+        occ.register(dim)
     numbers += _crank_numbers(_numbered(pos, parts, g.drawn, g.ext, g.ext_pos, parts.pin), P(g.c_xy), P, occ,
                               sheet.box)
     return numbers, dims
@@ -707,14 +702,14 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
 
     occ = sheet.occ
     thin_els, thick_els, link_segments = _scheme_links(g, f)
-    _register(occ, *thin_els, *thick_els)
+    occ.register(*thin_els, *thick_els)
     symbol_els = _scheme_grounds(g, P, link_segments, lay)
-    _register(occ, *symbol_els)
+    occ.register(*symbol_els)
     top_els, marks = _scheme_joints(g, P, lay)
-    _register(occ, *top_els, *marks)
+    occ.register(*top_els, *marks)
     hard = _scheme_keep_clear(occ, thick_els, top_els, symbol_els, lay)
     rot, rot_label = _rotation_arrow(P(g.c_xy), s_l.to_mm(g.r), g.mech.sense, occ, link_segments)
-    _register(occ, rot)
+    occ.register(rot)
     numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay)
     labels = _scheme_names(g, P, occ, sheet.box, hard, lay) + [rot_label(occ)]
     facts = _scheme_facts(g.pos, g.ext, nt)
@@ -1172,7 +1167,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         pts = {lb: _centred_frame(inner, lo, hi, s_v).pt(*v) for lb, v in xy_k.items()}
         vecs = _plan_vectors(pts, vectors, prefix=prefix)
         pole = Point(pts["p"], radius_mm=lay.pole_mm, name=f"{prefix}pole")
-        _register(occ, *vecs, pole)
+        occ.register(*vecs, pole)
         drawn_els += vecs + [pole]
         label_els += _plan_labels(occ, pts, "p", [v.end for v in vectors if v.start == "p"], markup_of=_plan_markup,
                                   size_mm=SMALL_MM + 0.2, within=box, prefix=prefix, leaders=label_els)
@@ -1464,12 +1459,12 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     pts = {lb: f.pt(*v) for lb, v in xy.items()}
     occ = sheet.occ
     cons, cons_texts = _velocity_lines(plans, k, pts, f, nt)
-    _register(occ, *cons)
+    occ.register(*cons)
     vecs = _plan_vectors(pts, vectors, prefix="", head_mm=lay.head_mm)
     pole = Point(pts["p"], radius_mm=lay.pole_mm, name="pole")
-    _register(occ, *vecs, pole)
+    occ.register(*vecs, pole)
     hard = Occupancy(pad_mm=0.3)
-    _register(hard, *vecs)
+    hard.register(*vecs)
     cons_labels = _label_lines(occ, cons, cons_texts, hard=hard, area=area)
     leaders: list = []
     names = _plan_labels(occ, pts, "p", [v.end for v in vectors if v.start == "p"], markup_of=_plan_markup,

@@ -152,6 +152,11 @@ class Occupancy:
     def add_label(self, label: Label) -> None:
         self.add_box(label_bbox(label))
 
+    def register(self, *elements: Element) -> None:
+        """Register everything some elements draw, so labels placed later keep off it."""
+        for e in elements:
+            self.add_primitives(e.primitives())
+
     def add_primitives(self, prims) -> None:
         """Register everything some primitives draw (paths, polygons, labels)."""
         for p in walk(prims):
