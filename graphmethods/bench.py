@@ -323,6 +323,8 @@ REFERENCES = {
     "slotted-lever": ("slotted_lever_flywheel", "closed-form slotted lever, DOP853 split at the extreme positions, "
                                                 "rtol 1e-13"),
     "scotch-yoke": ("scotch_yoke_flywheel", "closed-form sine mechanism, DOP853 split at the dead centres, rtol 1e-13"),
+    "shaper": ("shaper_flywheel", "closed-form shaper (lever, link, ram), analogues by complex steps, DOP853 split at "
+                                  "the switch angles, rtol 1e-13"),
 }
 
 

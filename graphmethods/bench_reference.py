@@ -302,3 +302,157 @@ def scotch_yoke_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: 
     pieces = [(a, b, f) for a, b, f in ((0.0, on, free), (on, off, loaded), (off, 2 * math.pi, free)) if b > a]
     return _support_line_flywheel(J_e, pieces, omega_m=math.pi * case["n_rpm"] / 30.0, delta=case["delta"],
                                   atol=1e-3 * rtol * F * r, rtol=rtol, grid=grid)
+
+
+# --------------------------------------------------------------------- the slider (ram) linkages
+#: a point in real arithmetic (x, y): floats, arrays, or complex-stepped arrays
+XY = tuple[Any, Any]
+
+
+def _crank_pin(case: Mapping[str, Any], phi: Any, centre: XY = (0.0, 0.0)) -> XY:
+    """The crank pin A = O1 + r·e^{iφ} (the crank turns counterclockwise from +x)."""
+    r = case["crank"]["r"] if "crank" in case else case["r"]
+    return centre[0] + r * np.cos(phi), centre[1] + r * np.sin(phi)
+
+
+def _along(P: XY, Q: XY, distance: float, *, length: Any = None, angle: float = 0.0) -> XY:
+    """The point ``distance`` from P along P→Q turned by ``angle`` (rad); ``length`` is |PQ| when known."""
+    dx, dy = Q[0] - P[0], Q[1] - P[1]
+    n = np.sqrt(dx * dx + dy * dy) if length is None else length
+    c, s = math.cos(angle), math.sin(angle)
+    return P[0] + distance * (c * dx - s * dy) / n, P[1] + distance * (s * dx + c * dy) / n
+
+
+def _slider_on_line(P: XY, through: XY, angle: float, l: float, branch: float) -> XY:
+    """The slider C on the line through ``through`` at ``angle`` (rad) joined to P by a rod of length l:
+    C = F + σ·√(l² − h²)·u with F the foot of P, h its distance from the line, σ the branch (+1 ahead)."""
+    ux, uy = math.cos(angle), math.sin(angle)
+    Rx, Ry = P[0] - through[0], P[1] - through[1]
+    h = ux * Ry - uy * Rx
+    s = ux * Rx + uy * Ry + branch * np.sqrt(l * l - h * h)
+    return through[0] + s * ux, through[1] + s * uy
+
+
+def _dyad_rrr(P: XY, Q: XY, l_PC: float, l_QC: float, branch: float) -> XY:
+    """The joint C of links P–C and Q–C (two circles), on the left of P→Q for branch +1."""
+    dx, dy = Q[0] - P[0], Q[1] - P[1]
+    D2 = dx * dx + dy * dy
+    D = np.sqrt(D2)
+    a = (l_PC * l_PC - l_QC * l_QC + D2) / (2 * D)
+    h = branch * np.sqrt(l_PC * l_PC - a * a)
+    ex, ey = dx / D, dy / D
+    return P[0] + a * ex - h * ey, P[1] + a * ey + h * ex
+
+
+def _point_analogues(points: Callable[[Any], dict[str, XY]], phi: Any) -> dict[str, tuple[Any, Any, Any, Any]]:
+    """Every point's (x, y, dx/dφ, dy/dφ) at ``phi``: one evaluation of the closed form at φ + i·h."""
+    P = points(np.asarray(phi, dtype=float) + 1j * _H)
+    return {k: (x.real, y.real, x.imag / _H, y.imag / _H) for k, (x, y) in P.items()}
+
+
+def _reduced_inertia(points: Callable[[Any], dict[str, XY]], J1: float,
+                     parts: Sequence[tuple[str, tuple[str, str] | None, float, float]]
+                     ) -> Callable[[np.ndarray], np.ndarray]:
+    """J_e(φ) = J1 + Σ m·v_S² + J·ω² (per ω1²) for parts (S, (P, Q) whose direction is the link's or None,
+    m, J): ω/ω1 of a link is (e × de/dφ)/|e|² of its vector e = Q − P."""
+    def J_e(phi: np.ndarray) -> np.ndarray:
+        p = _point_analogues(points, np.atleast_1d(phi))
+        J: np.ndarray = np.full(np.shape(np.atleast_1d(phi)), float(J1))
+        for S, link, m, J_S in parts:
+            _, _, vx, vy = p[S]
+            J = J + m * (vx * vx + vy * vy)
+            if link is not None and J_S:
+                x0, y0, vx0, vy0 = p[link[0]]
+                x1, y1, vx1, vy1 = p[link[1]]
+                ex, ey, dex, dey = x1 - x0, y1 - y0, vx1 - vx0, vy1 - vy0
+                w = (ex * dey - ey * dex) / (ex * ex + ey * ey)
+                J = J + J_S * w * w
+        return J
+    return J_e
+
+
+def _turn_roots(f: Callable[[Any], Any]) -> list[float]:
+    """The roots over one turn [0, 2π) of a vectorised f: sign changes on a 1/4° grid (one call), brentq."""
+    from scipy.optimize import brentq
+
+    xs = np.linspace(0.0, 2 * math.pi, 1441)
+    fs = np.asarray(f(xs))
+    return [float(brentq(lambda p: float(f(p)), xs[i], xs[i + 1], xtol=1e-15, rtol=1e-15))
+            for i in np.flatnonzero(np.sign(fs[:-1]) != np.sign(fs[1:]))]
+
+
+def _force_on_slider(points: Callable[[Any], dict[str, XY]], *, out: str, axis: tuple[float, float],
+                     J_e: Callable[[np.ndarray], np.ndarray], load: tuple[float, float, float], stroke: str,
+                     n_rpm: float, delta: float, rtol: float, grid: int) -> float:
+    """J_F of a counterclockwise crank driving the slider ``out`` along the guide direction ``axis``; the
+    load (F, from, to) opposes it on the working stroke (``"slow"``: the one of the larger crank angle;
+    ``"toward_crank"``: from the far dead centre) between those fractions of the stroke; M_d balances it."""
+    from scipy.optimize import brentq
+
+    def s(p: Any) -> Any:                                   # the slider's coordinate along its guide
+        x, y = points(np.asarray(p, dtype=float))[out]
+        return axis[0] * x + axis[1] * y
+
+    def ds(p: Any) -> Any:                                  # its analogue ds/dφ
+        x, y, vx, vy = _point_analogues(points, p)[out]
+        return axis[0] * vx + axis[1] * vy
+
+    p1, p2 = _turn_roots(ds)
+    if stroke == "slow":
+        start = p1 if (p2 - p1) % (2 * math.pi) > math.pi else p2
+    else:                                                   # toward the crank: from the farther dead centre
+
+        def far(p: float) -> float:
+            x, y = points(np.asarray(p, dtype=float))[out]
+            return float(x * x + y * y)
+        start = p1 if far(p1) > far(p2) else p2
+    end = p2 if start == p1 else p1
+    work = (end - start) % (2 * math.pi)
+    s0 = float(s(start))
+    H = abs(float(s(end)) - s0)
+    sign = 1.0 if float(s(end)) > s0 else -1.0
+    F, f_from, f_to = load
+
+    def frac(p: float) -> float:
+        return sign * (float(s(p)) - s0) / H
+
+    on = start if f_from == 0 else brentq(lambda p: frac(p) - f_from, start, start + work, xtol=1e-15, rtol=1e-15)
+    off = start + work if f_to == 1 else brentq(lambda p: frac(p) - f_to, start, start + work, xtol=1e-15,
+                                                rtol=1e-15)
+    M_d = F * H * (f_to - f_from) / (2 * math.pi)
+
+    def free(p: float) -> float:
+        return M_d
+
+    def loaded(p: float) -> float:
+        return M_d - F * abs(float(ds(p)))
+
+    pieces = [(a, b, f) for a, b, f in ((start, on, free), (on, off, loaded), (off, start + 2 * math.pi, free))
+              if b > a]
+    return _support_line_flywheel(J_e, pieces, omega_m=math.pi * n_rpm / 30.0, delta=delta,
+                                  atol=1e-3 * rtol * F * H, rtol=rtol, grid=grid)
+
+
+def shaper_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of a shaper file (``shaper.json``): the block at the crank pin A slides along the lever
+    O3B (B = O3 + l_O3B·(A − O3)/|O3A|), the link BC drives the ram C on y = y_guide ahead of B's foot
+    (x_C = x_B + √(l_BC² − (y_guide − y_B)²)); F0 on C over the slow stroke (``force_from``…``force_to``)."""
+    d, t3 = case["l_O1O3"], math.radians(case.get("theta_O3_deg", -90.0))
+    O3 = (d * math.cos(t3), d * math.sin(t3))
+    branch = float(case.get("assembly", 1))
+
+    def points(phi: Any) -> dict[str, XY]:
+        A = _crank_pin(case, phi)
+        B = _along(O3, A, case["l_O3B"])
+        C = _slider_on_line(B, (0.0, case["y_guide"]), 0.0, case["l_BC"], branch)
+        return {"O1": (0.0 * phi, 0.0 * phi), "O3": (0.0 * phi + O3[0], 0.0 * phi + O3[1]), "A": A, "B": B, "C": C,
+                "S3": _along(O3, A, case["l_O3S3"]), "S4": _along(B, C, case["l_BS4"], length=case["l_BC"])}
+
+    J_e = _reduced_inertia(points, case["J1"], [("A", None, case["m2"], 0.0),
+                                                ("S3", ("O3", "B"), case["m3"], case["J_S3"]),
+                                                ("S4", ("B", "C"), case["m4"], case["J_S4"]),
+                                                ("C", None, case["m5"], 0.0)])
+    return _force_on_slider(points, out="C", axis=(1.0, 0.0), J_e=J_e,
+                            load=(case["F0"], case["force_from"], case["force_to"]),
+                            stroke=case.get("working_stroke", "slow"), n_rpm=case["n_rpm"], delta=case["delta"],
+                            rtol=rtol, grid=grid)
