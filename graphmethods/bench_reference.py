@@ -377,8 +377,9 @@ def _turn_roots(f: Callable[[Any], Any]) -> list[float]:
 
     xs = np.linspace(0.0, 2 * math.pi, 1441)
     fs = np.asarray(f(xs))
-    return [float(brentq(lambda p: float(f(p)), xs[i], xs[i + 1], xtol=1e-15, rtol=1e-15))
-            for i in np.flatnonzero(np.sign(fs[:-1]) != np.sign(fs[1:]))]
+    exact = [float(xs[i]) for i in np.flatnonzero(fs[:-1] == 0)]     # a root on the grid (symmetric linkages)
+    return sorted(exact + [float(brentq(lambda p: float(f(p)), xs[i], xs[i + 1], xtol=1e-15, rtol=1e-15))
+                           for i in np.flatnonzero(fs[:-1] * fs[1:] < 0)])
 
 
 def _force_on_slider(points: Callable[[Any], dict[str, XY]], *, out: str, axis: tuple[float, float],
@@ -456,3 +457,108 @@ def shaper_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int =
                             load=(case["F0"], case["force_from"], case["force_to"]),
                             stroke=case.get("working_stroke", "slow"), n_rpm=case["n_rpm"], delta=case["delta"],
                             rtol=rtol, grid=grid)
+
+
+def _file_point(case: Mapping[str, Any], name: str, P: dict[str, XY], origin_to: str) -> XY:
+    """An extra point of a linkage file (``points``: link, from, distance, angle_deg) from its origin along the
+    link's direction origin → ``origin_to`` (for these linkages the link's own direction)."""
+    p = case["points"][name]
+    return _along(P[p["from"]], P[origin_to], p["distance"], angle=math.radians(p.get("angle_deg", 0.0)))
+
+
+def _guide(group: Mapping[str, Any]) -> tuple[XY, float, float, float]:
+    """An RRP group's guide of a linkage file: (a point on it, its angle in rad, the rod's length, the branch)."""
+    g = group["guide"]
+    return (tuple(g["through"]), math.radians(g.get("angle_deg", 0.0)),  # type: ignore[return-value]
+            group["l"], float(group.get("branch", 1)))
+
+
+def _file_slider_flywheel(case: Mapping[str, Any], points: Callable[[Any], dict[str, XY]],
+                          links: Mapping[str, tuple[str, str] | None], *, rtol: float, grid: int) -> float:
+    """J_F of a linkage file whose load is a force on a slider (the output): the masses of the file's links
+    (``links`` gives each link's direction as a pair of points, None for a slider or block), its load and
+    working stroke, the crank counterclockwise."""
+    masses, load = case["masses"], case["load"]
+    parts = [(mass["at"], links[k], mass.get("m", 0.0), mass.get("J", 0.0)) for k, mass in masses.items()
+             if k != "1"]
+    J_e = _reduced_inertia(points, masses["1"]["J"], parts)
+    out = load["on"]
+    group = next(g for g in case["groups"] if g.get("C") == out)
+    angle = math.radians(group["guide"].get("angle_deg", 0.0))
+    return _force_on_slider(points, out=out, axis=(math.cos(angle), math.sin(angle)), J_e=J_e,
+                            load=(load["force"], load["from"], load["to"]),
+                            stroke=case.get("working_stroke", "slow"), n_rpm=case["n_rpm"], delta=case["delta"],
+                            rtol=rtol, grid=grid)
+
+
+def _const(phi: Any, P: Sequence[float]) -> XY:
+    """A fixed point shaped like φ."""
+    return 0.0 * phi + P[0], 0.0 * phi + P[1]
+
+
+def six_bar_press_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the six-bar press file (``six_bar_press.json``): crank O1A, coupler AB and rocker O2B
+    (B the meeting of two circles, left of A→O2), the rocker's arm O2C, link CD and the ram D on its guide."""
+    rrr, rrp = case["groups"]
+    O1, O2 = case["fixed"]["O1"], case["fixed"]["O2"]
+    through, angle, l, branch = _guide(rrp)
+
+    def points(phi: Any) -> dict[str, XY]:
+        P = {"O1": _const(phi, O1), "O2": _const(phi, O2), "A": _crank_pin(case, phi, tuple(O1))}
+        P["B"] = _dyad_rrr(P["A"], P["O2"], rrr["l_PC"], rrr["l_QC"], float(rrr.get("branch", 1)))
+        P["C"] = _file_point(case, "C", P, "B")
+        P["D"] = _slider_on_line(P["C"], through, angle, l, branch)
+        P.update(S2=_file_point(case, "S2", P, "B"), S3=_file_point(case, "S3", P, "B"),
+                 S4=_file_point(case, "S4", P, "D"))
+        return P
+
+    return _file_slider_flywheel(case, points, {"2": ("A", "B"), "3": ("O2", "B"), "4": ("C", "D"), "5": None},
+                                 rtol=rtol, grid=grid)
+
+
+def _slotted_lever_ram(case: Mapping[str, Any], rtol: float, grid: int) -> float:
+    """J_F of a crank, a block at A in the slot of the lever O3 (its direction O3→A), a link from the lever's
+    point B to the ram C on its guide: the Whitworth and slotting-machine files."""
+    _, rrp = case["groups"]
+    O1, O3 = case["fixed"]["O1"], case["fixed"]["O3"]
+    through, angle, l, branch = _guide(rrp)
+
+    def points(phi: Any) -> dict[str, XY]:
+        P = {"O1": _const(phi, O1), "O3": _const(phi, O3), "A": _crank_pin(case, phi, tuple(O1))}
+        P["B"] = _file_point(case, "B", P, "A")
+        P["C"] = _slider_on_line(P["B"], through, angle, l, branch)
+        P.update(S3=_file_point(case, "S3", P, "A"), S4=_file_point(case, "S4", P, "C"))
+        return P
+
+    return _file_slider_flywheel(case, points, {"2": None, "3": ("O3", "A"), "4": ("B", "C"), "5": None},
+                                 rtol=rtol, grid=grid)
+
+
+def whitworth_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the Whitworth file (``whitworth_quick_return.json``): the crank longer than O1O3 turns
+    the slotted link fully; its arm O3B (opposite the slot) drives the ram by the link BC."""
+    return _slotted_lever_ram(case, rtol, grid)
+
+
+def slotting_machine_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the slotting-machine file (``slotting_machine.json``): an oscillating slotted lever
+    O3B and the link BC driving the ram C on the vertical guide."""
+    return _slotted_lever_ram(case, rtol, grid)
+
+
+def two_slider_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the two-slider file (``two_slider_compressor.json``): rods AB and AC from the one crank
+    pin to the pistons B and C on their guides; the force on the piston the load names."""
+    g1, g2 = case["groups"]
+    O = case["fixed"][case["crank"]["centre"]]
+
+    def points(phi: Any) -> dict[str, XY]:
+        P = {"A": _crank_pin(case, phi, tuple(O))}
+        for g in (g1, g2):
+            through, angle, l, branch = _guide(g)
+            P[g["C"]] = _slider_on_line(P["A"], through, angle, l, branch)
+        P.update(S2=_file_point(case, "S2", P, g1["C"]), S4=_file_point(case, "S4", P, g2["C"]))
+        return P
+
+    return _file_slider_flywheel(case, points, {"2": ("A", g1["C"]), "3": None, "4": ("A", g2["C"]), "5": None},
+                                 rtol=rtol, grid=grid)
