@@ -15,6 +15,7 @@ It needs scipy, which the toolkit itself does not: ``pip install 'graphmethods[b
 
 from __future__ import annotations
 
+import cmath
 import math
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
@@ -309,16 +310,33 @@ def scotch_yoke_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: 
 XY = tuple[Any, Any]
 
 
+
+def _sqrt(x: Any) -> Any:
+    """√x of a scalar in Python arithmetic (one step along the ODE: numpy's 0-d arrays cost ~1 µs an operation),
+    else numpy's."""
+    return cmath.sqrt(x) if type(x) is complex else math.sqrt(x) if type(x) is float else np.sqrt(x)
+
+
+def _cos(x: Any) -> Any:
+    """cos x, as :func:`_sqrt` chooses."""
+    return cmath.cos(x) if type(x) is complex else math.cos(x) if type(x) is float else np.cos(x)
+
+
+def _sin(x: Any) -> Any:
+    """sin x, as :func:`_sqrt` chooses."""
+    return cmath.sin(x) if type(x) is complex else math.sin(x) if type(x) is float else np.sin(x)
+
+
 def _crank_pin(case: Mapping[str, Any], phi: Any, centre: XY = (0.0, 0.0)) -> XY:
     """The crank pin A = O1 + r·e^{iφ} (the crank turns counterclockwise from +x)."""
     r = case["crank"]["r"] if "crank" in case else case["r"]
-    return centre[0] + r * np.cos(phi), centre[1] + r * np.sin(phi)
+    return centre[0] + r * _cos(phi), centre[1] + r * _sin(phi)
 
 
 def _along(P: XY, Q: XY, distance: float, *, length: Any = None, angle: float = 0.0) -> XY:
     """The point ``distance`` from P along P→Q turned by ``angle`` (rad); ``length`` is |PQ| when known."""
     dx, dy = Q[0] - P[0], Q[1] - P[1]
-    n = np.sqrt(dx * dx + dy * dy) if length is None else length
+    n = _sqrt(dx * dx + dy * dy) if length is None else length
     c, s = math.cos(angle), math.sin(angle)
     return P[0] + distance * (c * dx - s * dy) / n, P[1] + distance * (s * dx + c * dy) / n
 
@@ -329,7 +347,7 @@ def _slider_on_line(P: XY, through: XY, angle: float, l: float, branch: float) -
     ux, uy = math.cos(angle), math.sin(angle)
     Rx, Ry = P[0] - through[0], P[1] - through[1]
     h = ux * Ry - uy * Rx
-    s = ux * Rx + uy * Ry + branch * np.sqrt(l * l - h * h)
+    s = ux * Rx + uy * Ry + branch * _sqrt(l * l - h * h)
     return through[0] + s * ux, through[1] + s * uy
 
 
@@ -337,16 +355,16 @@ def _dyad_rrr(P: XY, Q: XY, l_PC: float, l_QC: float, branch: float) -> XY:
     """The joint C of links P–C and Q–C (two circles), on the left of P→Q for branch +1."""
     dx, dy = Q[0] - P[0], Q[1] - P[1]
     D2 = dx * dx + dy * dy
-    D = np.sqrt(D2)
+    D = _sqrt(D2)
     a = (l_PC * l_PC - l_QC * l_QC + D2) / (2 * D)
-    h = branch * np.sqrt(l_PC * l_PC - a * a)
+    h = branch * _sqrt(l_PC * l_PC - a * a)
     ex, ey = dx / D, dy / D
     return P[0] + a * ex - h * ey, P[1] + a * ey + h * ex
 
 
 def _point_analogues(points: Callable[[Any], dict[str, XY]], phi: Any) -> dict[str, tuple[Any, Any, Any, Any]]:
     """Every point's (x, y, dx/dφ, dy/dφ) at ``phi``: one evaluation of the closed form at φ + i·h."""
-    P = points(np.asarray(phi, dtype=float) + 1j * _H)
+    P = points(complex(phi, _H) if isinstance(phi, float) else np.asarray(phi, dtype=float) + 1j * _H)
     return {k: (x.real, y.real, x.imag / _H, y.imag / _H) for k, (x, y) in P.items()}
 
 
@@ -391,11 +409,11 @@ def _force_on_slider(points: Callable[[Any], dict[str, XY]], *, out: str, axis: 
     from scipy.optimize import brentq
 
     def s(p: Any) -> Any:                                   # the slider's coordinate along its guide
-        x, y = points(np.asarray(p, dtype=float))[out]
+        x, y = points(float(p) if np.ndim(p) == 0 else np.asarray(p, dtype=float))[out]
         return axis[0] * x + axis[1] * y
 
     def ds(p: Any) -> Any:                                  # its analogue ds/dφ
-        x, y, vx, vy = _point_analogues(points, p)[out]
+        x, y, vx, vy = _point_analogues(points, float(p) if np.ndim(p) == 0 else p)[out]
         return axis[0] * vx + axis[1] * vy
 
     p1, p2 = _turn_roots(ds)
@@ -404,7 +422,7 @@ def _force_on_slider(points: Callable[[Any], dict[str, XY]], *, out: str, axis: 
     else:                                                   # toward the crank: from the farther dead centre
 
         def far(p: float) -> float:
-            x, y = points(np.asarray(p, dtype=float))[out]
+            x, y = points(float(p))[out]
             return float(x * x + y * y)
         start = p1 if far(p1) > far(p2) else p2
     end = p2 if start == p1 else p1
@@ -469,7 +487,7 @@ def _file_point(case: Mapping[str, Any], name: str, P: dict[str, XY], origin_to:
 def _guide(group: Mapping[str, Any]) -> tuple[XY, float, float, float]:
     """An RRP group's guide of a linkage file: (a point on it, its angle in rad, the rod's length, the branch)."""
     g = group["guide"]
-    return (tuple(g["through"]), math.radians(g.get("angle_deg", 0.0)),  # type: ignore[return-value]
+    return ((g["through"][0], g["through"][1]), math.radians(g.get("angle_deg", 0.0)),
             group["l"], float(group.get("branch", 1)))
 
 
