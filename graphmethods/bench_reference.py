@@ -1,7 +1,9 @@
-"""An independent reference for the bench: the exact flywheel of an offset slider-crank press.
+"""An independent reference for the bench: the exact flywheel of the course linkages.
 
-Written apart from the toolkit's own solver, to time it against and to check its answer: the
-slider-crank in closed form, ΔE(φ) = ∫ M_e dφ by scipy's DOP853 integrator split at the load's
+Written apart from the toolkit's own solver, to time it against and to check its answer: each
+linkage in closed form (the offset slider-crank press, the four-bar, the slotted lever, the sine
+mechanism, the shaper, the six-bar press, the Whitworth mechanism, the slotting machine, the
+two-slider), read from its problem file, ΔE(φ) = ∫ M_e dφ by scipy's DOP853 integrator split at the load's
 switch angles (rtol 1e-13), the support-line intercepts max/min of ΔE − a·J_e on a grid polished by
 ``scipy.optimize.minimize_scalar``, and J_F = (b_max − b_min)/(δ ω_m²) (domain.md §7).
 
@@ -343,7 +345,11 @@ def _along(P: XY, Q: XY, distance: float, *, length: Any = None, angle: float = 
 
 def _slider_on_line(P: XY, through: XY, angle: float, l: float, branch: float) -> XY:
     """The slider C on the line through ``through`` at ``angle`` (rad) joined to P by a rod of length l:
-    C = F + σ·√(l² − h²)·u with F the foot of P, h its distance from the line, σ the branch (+1 ahead)."""
+    C = F + σ·√(l² − h²)·u with F the foot of P, h its distance from the line, σ the branch (+1 ahead).
+
+    >>> tuple(round(c, 12) for c in _slider_on_line((0.0, 0.3), (0.0, 0.0), 0.0, 0.5, 1.0))   # 3-4-5 triangle
+    (0.4, 0.0)
+    """
     ux, uy = math.cos(angle), math.sin(angle)
     Rx, Ry = P[0] - through[0], P[1] - through[1]
     h = ux * Ry - uy * Rx
@@ -352,7 +358,11 @@ def _slider_on_line(P: XY, through: XY, angle: float, l: float, branch: float) -
 
 
 def _dyad_rrr(P: XY, Q: XY, l_PC: float, l_QC: float, branch: float) -> XY:
-    """The joint C of links P–C and Q–C (two circles), on the left of P→Q for branch +1."""
+    """The joint C of links P–C and Q–C (two circles), on the left of P→Q for branch +1.
+
+    >>> tuple(round(float(c), 12) for c in _dyad_rrr((0.0, 0.0), (2.0, 0.0), 1.25, 1.25, 1.0))
+    (1.0, 0.75)
+    """
     dx, dy = Q[0] - P[0], Q[1] - P[1]
     D2 = dx * dx + dy * dy
     D = _sqrt(D2)
