@@ -384,8 +384,9 @@ def _reduced_inertia(points: Callable[[Any], dict[str, XY]], J1: float,
     """J_e(φ) = J1 + Σ m·v_S² + J·ω² (per ω1²) for parts (S, (P, Q) whose direction is the link's or None,
     m, J): ω/ω1 of a link is (e × de/dφ)/|e|² of its vector e = Q − P."""
     def J_e(phi: np.ndarray) -> np.ndarray:
-        p = _point_analogues(points, np.atleast_1d(phi))
-        J: np.ndarray = np.full(np.shape(np.atleast_1d(phi)), float(J1))
+        one = np.size(phi) == 1                              # the polish asks one angle at a time: Python scalars
+        p = _point_analogues(points, float(np.ravel(phi)[0]) if one else np.atleast_1d(phi))
+        J: Any = float(J1)
         for S, link, m, J_S in parts:
             _, _, vx, vy = p[S]
             J = J + m * (vx * vx + vy * vy)
@@ -395,7 +396,7 @@ def _reduced_inertia(points: Callable[[Any], dict[str, XY]], J1: float,
                 ex, ey, dex, dey = x1 - x0, y1 - y0, vx1 - vx0, vy1 - vy0
                 w = (ex * dey - ey * dex) / (ex * ex + ey * ey)
                 J = J + J_S * w * w
-        return J
+        return np.full(1, J) if one else np.asarray(J)
     return J_e
 
 
