@@ -323,6 +323,16 @@ REFERENCES = {
     "slotted-lever": ("slotted_lever_flywheel", "closed-form slotted lever, DOP853 split at the extreme positions, "
                                                 "rtol 1e-13"),
     "scotch-yoke": ("scotch_yoke_flywheel", "closed-form sine mechanism, DOP853 split at the dead centres, rtol 1e-13"),
+    "shaper": ("shaper_flywheel", "closed-form shaper (lever, link, ram), analogues by complex steps, DOP853 split at "
+                                  "the switch angles, rtol 1e-13"),
+    "six-bar-press": ("six_bar_press_flywheel", "closed-form six-bar press (two circles, ram on its guide), analogues "
+                                                "by complex steps, DOP853 split at the switch angles, rtol 1e-13"),
+    "whitworth": ("whitworth_flywheel", "closed-form Whitworth (turning slotted link, link, ram), analogues by "
+                                        "complex steps, DOP853 split at the switch angles, rtol 1e-13"),
+    "slotting-machine": ("slotting_machine_flywheel", "closed-form slotting machine (slotted lever, link, vertical "
+                                                      "ram), analogues by complex steps, DOP853 split, rtol 1e-13"),
+    "two-slider": ("two_slider_flywheel", "closed-form two-slider (two rods on one pin), analogues by complex steps, "
+                                          "DOP853 split at the switch angles, rtol 1e-13"),
 }
 
 

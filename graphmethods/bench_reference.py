@@ -1,7 +1,9 @@
-"""An independent reference for the bench: the exact flywheel of an offset slider-crank press.
+"""An independent reference for the bench: the exact flywheel of the course linkages.
 
-Written apart from the toolkit's own solver, to time it against and to check its answer: the
-slider-crank in closed form, ΔE(φ) = ∫ M_e dφ by scipy's DOP853 integrator split at the load's
+Written apart from the toolkit's own solver, to time it against and to check its answer: each
+linkage in closed form (the offset slider-crank press, the four-bar, the slotted lever, the sine
+mechanism, the shaper, the six-bar press, the Whitworth mechanism, the slotting machine, the
+two-slider), read from its problem file, ΔE(φ) = ∫ M_e dφ by scipy's DOP853 integrator split at the load's
 switch angles (rtol 1e-13), the support-line intercepts max/min of ΔE − a·J_e on a grid polished by
 ``scipy.optimize.minimize_scalar``, and J_F = (b_max − b_min)/(δ ω_m²) (domain.md §7).
 
@@ -15,6 +17,7 @@ It needs scipy, which the toolkit itself does not: ``pip install 'graphmethods[b
 
 from __future__ import annotations
 
+import cmath
 import math
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
@@ -302,3 +305,289 @@ def scotch_yoke_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: 
     pieces = [(a, b, f) for a, b, f in ((0.0, on, free), (on, off, loaded), (off, 2 * math.pi, free)) if b > a]
     return _support_line_flywheel(J_e, pieces, omega_m=math.pi * case["n_rpm"] / 30.0, delta=case["delta"],
                                   atol=1e-3 * rtol * F * r, rtol=rtol, grid=grid)
+
+
+# --------------------------------------------------------------------- the slider (ram) linkages
+#: a point in real arithmetic (x, y): floats, arrays, or complex-stepped arrays
+XY = tuple[Any, Any]
+
+
+
+def _sqrt(x: Any) -> Any:
+    """√x of a scalar in Python arithmetic (one step along the ODE: numpy's 0-d arrays cost ~1 µs an operation),
+    else numpy's."""
+    return cmath.sqrt(x) if type(x) is complex else math.sqrt(x) if type(x) is float else np.sqrt(x)
+
+
+def _cos(x: Any) -> Any:
+    """cos x, as :func:`_sqrt` chooses."""
+    return cmath.cos(x) if type(x) is complex else math.cos(x) if type(x) is float else np.cos(x)
+
+
+def _sin(x: Any) -> Any:
+    """sin x, as :func:`_sqrt` chooses."""
+    return cmath.sin(x) if type(x) is complex else math.sin(x) if type(x) is float else np.sin(x)
+
+
+def _crank_pin(case: Mapping[str, Any], phi: Any, centre: XY = (0.0, 0.0)) -> XY:
+    """The crank pin A = O1 + r·e^{iφ} (the crank turns counterclockwise from +x)."""
+    r = case["crank"]["r"] if "crank" in case else case["r"]
+    return centre[0] + r * _cos(phi), centre[1] + r * _sin(phi)
+
+
+def _along(P: XY, Q: XY, distance: float, *, length: Any = None, angle: float = 0.0) -> XY:
+    """The point ``distance`` from P along P→Q turned by ``angle`` (rad); ``length`` is |PQ| when known."""
+    dx, dy = Q[0] - P[0], Q[1] - P[1]
+    n = _sqrt(dx * dx + dy * dy) if length is None else length
+    c, s = math.cos(angle), math.sin(angle)
+    return P[0] + distance * (c * dx - s * dy) / n, P[1] + distance * (s * dx + c * dy) / n
+
+
+def _slider_on_line(P: XY, through: XY, angle: float, l: float, branch: float) -> XY:
+    """The slider C on the line through ``through`` at ``angle`` (rad) joined to P by a rod of length l:
+    C = F + σ·√(l² − h²)·u with F the foot of P, h its distance from the line, σ the branch (+1 ahead).
+
+    >>> tuple(round(c, 12) for c in _slider_on_line((0.0, 0.3), (0.0, 0.0), 0.0, 0.5, 1.0))   # 3-4-5 triangle
+    (0.4, 0.0)
+    """
+    ux, uy = math.cos(angle), math.sin(angle)
+    Rx, Ry = P[0] - through[0], P[1] - through[1]
+    h = ux * Ry - uy * Rx
+    s = ux * Rx + uy * Ry + branch * _sqrt(l * l - h * h)
+    return through[0] + s * ux, through[1] + s * uy
+
+
+def _dyad_rrr(P: XY, Q: XY, l_PC: float, l_QC: float, branch: float) -> XY:
+    """The joint C of links P–C and Q–C (two circles), on the left of P→Q for branch +1.
+
+    >>> tuple(round(float(c), 12) for c in _dyad_rrr((0.0, 0.0), (2.0, 0.0), 1.25, 1.25, 1.0))
+    (1.0, 0.75)
+    """
+    dx, dy = Q[0] - P[0], Q[1] - P[1]
+    D2 = dx * dx + dy * dy
+    D = _sqrt(D2)
+    a = (l_PC * l_PC - l_QC * l_QC + D2) / (2 * D)
+    h = branch * _sqrt(l_PC * l_PC - a * a)
+    ex, ey = dx / D, dy / D
+    return P[0] + a * ex - h * ey, P[1] + a * ey + h * ex
+
+
+def _point_analogues(points: Callable[[Any], dict[str, XY]], phi: Any) -> dict[str, tuple[Any, Any, Any, Any]]:
+    """Every point's (x, y, dx/dφ, dy/dφ) at ``phi``: one evaluation of the closed form at φ + i·h."""
+    P = points(complex(phi, _H) if isinstance(phi, float) else np.asarray(phi, dtype=float) + 1j * _H)
+    return {k: (x.real, y.real, x.imag / _H, y.imag / _H) for k, (x, y) in P.items()}
+
+
+def _reduced_inertia(points: Callable[[Any], dict[str, XY]], J1: float,
+                     parts: Sequence[tuple[str, tuple[str, str] | None, float, float]]
+                     ) -> Callable[[np.ndarray], np.ndarray]:
+    """J_e(φ) = J1 + Σ m·v_S² + J·ω² (per ω1²) for parts (S, (P, Q) whose direction is the link's or None,
+    m, J): ω/ω1 of a link is (e × de/dφ)/|e|² of its vector e = Q − P."""
+    def J_e(phi: np.ndarray) -> np.ndarray:
+        one = np.size(phi) == 1                              # the polish asks one angle at a time: Python scalars
+        p = _point_analogues(points, float(np.ravel(phi)[0]) if one else np.atleast_1d(phi))
+        J: Any = float(J1)
+        for S, link, m, J_S in parts:
+            _, _, vx, vy = p[S]
+            J = J + m * (vx * vx + vy * vy)
+            if link is not None and J_S:
+                x0, y0, vx0, vy0 = p[link[0]]
+                x1, y1, vx1, vy1 = p[link[1]]
+                ex, ey, dex, dey = x1 - x0, y1 - y0, vx1 - vx0, vy1 - vy0
+                w = (ex * dey - ey * dex) / (ex * ex + ey * ey)
+                J = J + J_S * w * w
+        return np.full(1, J) if one else np.asarray(J)
+    return J_e
+
+
+def _turn_roots(f: Callable[[Any], Any]) -> list[float]:
+    """The roots over one turn [0, 2π) of a vectorised f: sign changes on a 1/4° grid (one call), brentq."""
+    from scipy.optimize import brentq
+
+    xs = np.linspace(0.0, 2 * math.pi, 1441)
+    fs = np.asarray(f(xs))
+    exact = [float(xs[i]) for i in np.flatnonzero(fs[:-1] == 0)]     # a root on the grid (symmetric linkages)
+    return sorted(exact + [float(brentq(lambda p: float(f(p)), xs[i], xs[i + 1], xtol=1e-15, rtol=1e-15))
+                           for i in np.flatnonzero(fs[:-1] * fs[1:] < 0)])
+
+
+def _force_on_slider(points: Callable[[Any], dict[str, XY]], *, out: str, axis: tuple[float, float],
+                     J_e: Callable[[np.ndarray], np.ndarray], load: tuple[float, float, float], stroke: str,
+                     n_rpm: float, delta: float, rtol: float, grid: int) -> float:
+    """J_F of a counterclockwise crank driving the slider ``out`` along the guide direction ``axis``; the
+    load (F, from, to) opposes it on the working stroke (``"slow"``: the one of the larger crank angle;
+    ``"toward_crank"``: from the far dead centre) between those fractions of the stroke; M_d balances it."""
+    from scipy.optimize import brentq
+
+    def s(p: Any) -> Any:                                   # the slider's coordinate along its guide
+        x, y = points(float(p) if np.ndim(p) == 0 else np.asarray(p, dtype=float))[out]
+        return axis[0] * x + axis[1] * y
+
+    def ds(p: Any) -> Any:                                  # its analogue ds/dφ
+        x, y, vx, vy = _point_analogues(points, float(p) if np.ndim(p) == 0 else p)[out]
+        return axis[0] * vx + axis[1] * vy
+
+    p1, p2 = _turn_roots(ds)
+    if stroke == "slow":
+        start = p1 if (p2 - p1) % (2 * math.pi) > math.pi else p2
+    else:                                                   # toward the crank: from the farther dead centre
+
+        def far(p: float) -> float:
+            x, y = points(float(p))[out]
+            return float(x * x + y * y)
+        start = p1 if far(p1) > far(p2) else p2
+    end = p2 if start == p1 else p1
+    work = (end - start) % (2 * math.pi)
+    s0 = float(s(start))
+    H = abs(float(s(end)) - s0)
+    sign = 1.0 if float(s(end)) > s0 else -1.0
+    F, f_from, f_to = load
+
+    def frac(p: float) -> float:
+        return sign * (float(s(p)) - s0) / H
+
+    on = start if f_from == 0 else brentq(lambda p: frac(p) - f_from, start, start + work, xtol=1e-15, rtol=1e-15)
+    off = start + work if f_to == 1 else brentq(lambda p: frac(p) - f_to, start, start + work, xtol=1e-15,
+                                                rtol=1e-15)
+    M_d = F * H * (f_to - f_from) / (2 * math.pi)
+
+    def free(p: float) -> float:
+        return M_d
+
+    def loaded(p: float) -> float:
+        return M_d - F * abs(float(ds(p)))
+
+    pieces = [(a, b, f) for a, b, f in ((start, on, free), (on, off, loaded), (off, start + 2 * math.pi, free))
+              if b > a]
+    return _support_line_flywheel(J_e, pieces, omega_m=math.pi * n_rpm / 30.0, delta=delta,
+                                  atol=1e-3 * rtol * F * H, rtol=rtol, grid=grid)
+
+
+def shaper_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of a shaper file (``shaper.json``): the block at the crank pin A slides along the lever
+    O3B (B = O3 + l_O3B·(A − O3)/|O3A|), the link BC drives the ram C on y = y_guide ahead of B's foot
+    (x_C = x_B + √(l_BC² − (y_guide − y_B)²)); F0 on C over the slow stroke (``force_from``…``force_to``)."""
+    d, t3 = case["l_O1O3"], math.radians(case.get("theta_O3_deg", -90.0))
+    O3 = (d * math.cos(t3), d * math.sin(t3))
+    branch = float(case.get("assembly", 1))
+
+    def points(phi: Any) -> dict[str, XY]:
+        A = _crank_pin(case, phi)
+        B = _along(O3, A, case["l_O3B"])
+        C = _slider_on_line(B, (0.0, case["y_guide"]), 0.0, case["l_BC"], branch)
+        return {"O1": (0.0 * phi, 0.0 * phi), "O3": (0.0 * phi + O3[0], 0.0 * phi + O3[1]), "A": A, "B": B, "C": C,
+                "S3": _along(O3, A, case["l_O3S3"]), "S4": _along(B, C, case["l_BS4"], length=case["l_BC"])}
+
+    J_e = _reduced_inertia(points, case["J1"], [("A", None, case["m2"], 0.0),
+                                                ("S3", ("O3", "B"), case["m3"], case["J_S3"]),
+                                                ("S4", ("B", "C"), case["m4"], case["J_S4"]),
+                                                ("C", None, case["m5"], 0.0)])
+    return _force_on_slider(points, out="C", axis=(1.0, 0.0), J_e=J_e,
+                            load=(case["F0"], case["force_from"], case["force_to"]),
+                            stroke=case.get("working_stroke", "slow"), n_rpm=case["n_rpm"], delta=case["delta"],
+                            rtol=rtol, grid=grid)
+
+
+def _file_point(case: Mapping[str, Any], name: str, P: dict[str, XY], origin_to: str) -> XY:
+    """An extra point of a linkage file (``points``: link, from, distance, angle_deg) from its origin along the
+    link's direction origin → ``origin_to`` (for these linkages the link's own direction)."""
+    p = case["points"][name]
+    return _along(P[p["from"]], P[origin_to], p["distance"], angle=math.radians(p.get("angle_deg", 0.0)))
+
+
+def _guide(group: Mapping[str, Any]) -> tuple[XY, float, float, float]:
+    """An RRP group's guide of a linkage file: (a point on it, its angle in rad, the rod's length, the branch)."""
+    g = group["guide"]
+    return ((g["through"][0], g["through"][1]), math.radians(g.get("angle_deg", 0.0)),
+            group["l"], float(group.get("branch", 1)))
+
+
+def _file_slider_flywheel(case: Mapping[str, Any], points: Callable[[Any], dict[str, XY]],
+                          links: Mapping[str, tuple[str, str] | None], *, rtol: float, grid: int) -> float:
+    """J_F of a linkage file whose load is a force on a slider (the output): the masses of the file's links
+    (``links`` gives each link's direction as a pair of points, None for a slider or block), its load and
+    working stroke, the crank counterclockwise."""
+    masses, load = case["masses"], case["load"]
+    parts = [(mass["at"], links[k], mass.get("m", 0.0), mass.get("J", 0.0)) for k, mass in masses.items()
+             if k != "1"]
+    J_e = _reduced_inertia(points, masses["1"]["J"], parts)
+    out = load["on"]
+    group = next(g for g in case["groups"] if g.get("C") == out)
+    angle = math.radians(group["guide"].get("angle_deg", 0.0))
+    return _force_on_slider(points, out=out, axis=(math.cos(angle), math.sin(angle)), J_e=J_e,
+                            load=(load["force"], load["from"], load["to"]),
+                            stroke=case.get("working_stroke", "slow"), n_rpm=case["n_rpm"], delta=case["delta"],
+                            rtol=rtol, grid=grid)
+
+
+def _const(phi: Any, P: Sequence[float]) -> XY:
+    """A fixed point shaped like φ."""
+    return 0.0 * phi + P[0], 0.0 * phi + P[1]
+
+
+def six_bar_press_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the six-bar press file (``six_bar_press.json``): crank O1A, coupler AB and rocker O2B
+    (B the meeting of two circles, left of A→O2), the rocker's arm O2C, link CD and the ram D on its guide."""
+    rrr, rrp = case["groups"]
+    O1, O2 = case["fixed"]["O1"], case["fixed"]["O2"]
+    through, angle, l, branch = _guide(rrp)
+
+    def points(phi: Any) -> dict[str, XY]:
+        P = {"O1": _const(phi, O1), "O2": _const(phi, O2), "A": _crank_pin(case, phi, tuple(O1))}
+        P["B"] = _dyad_rrr(P["A"], P["O2"], rrr["l_PC"], rrr["l_QC"], float(rrr.get("branch", 1)))
+        P["C"] = _file_point(case, "C", P, "B")
+        P["D"] = _slider_on_line(P["C"], through, angle, l, branch)
+        P.update(S2=_file_point(case, "S2", P, "B"), S3=_file_point(case, "S3", P, "B"),
+                 S4=_file_point(case, "S4", P, "D"))
+        return P
+
+    return _file_slider_flywheel(case, points, {"2": ("A", "B"), "3": ("O2", "B"), "4": ("C", "D"), "5": None},
+                                 rtol=rtol, grid=grid)
+
+
+def _slotted_lever_ram(case: Mapping[str, Any], rtol: float, grid: int) -> float:
+    """J_F of a crank, a block at A in the slot of the lever O3 (its direction O3→A), a link from the lever's
+    point B to the ram C on its guide: the Whitworth and slotting-machine files."""
+    _, rrp = case["groups"]
+    O1, O3 = case["fixed"]["O1"], case["fixed"]["O3"]
+    through, angle, l, branch = _guide(rrp)
+
+    def points(phi: Any) -> dict[str, XY]:
+        P = {"O1": _const(phi, O1), "O3": _const(phi, O3), "A": _crank_pin(case, phi, tuple(O1))}
+        P["B"] = _file_point(case, "B", P, "A")
+        P["C"] = _slider_on_line(P["B"], through, angle, l, branch)
+        P.update(S3=_file_point(case, "S3", P, "A"), S4=_file_point(case, "S4", P, "C"))
+        return P
+
+    return _file_slider_flywheel(case, points, {"2": None, "3": ("O3", "A"), "4": ("B", "C"), "5": None},
+                                 rtol=rtol, grid=grid)
+
+
+def whitworth_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the Whitworth file (``whitworth_quick_return.json``): the crank longer than O1O3 turns
+    the slotted link fully; its arm O3B (opposite the slot) drives the ram by the link BC."""
+    return _slotted_lever_ram(case, rtol, grid)
+
+
+def slotting_machine_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the slotting-machine file (``slotting_machine.json``): an oscillating slotted lever
+    O3B and the link BC driving the ram C on the vertical guide."""
+    return _slotted_lever_ram(case, rtol, grid)
+
+
+def two_slider_flywheel(case: Mapping[str, Any], *, rtol: float = 1e-13, grid: int = 2000) -> float:
+    """J_F (kg·m²) of the two-slider file (``two_slider_compressor.json``): rods AB and AC from the one crank
+    pin to the pistons B and C on their guides; the force on the piston the load names."""
+    g1, g2 = case["groups"]
+    O = case["fixed"][case["crank"]["centre"]]
+
+    def points(phi: Any) -> dict[str, XY]:
+        P = {"A": _crank_pin(case, phi, tuple(O))}
+        for g in (g1, g2):
+            through, angle, l, branch = _guide(g)
+            P[g["C"]] = _slider_on_line(P["A"], through, angle, l, branch)
+        P.update(S2=_file_point(case, "S2", P, g1["C"]), S4=_file_point(case, "S4", P, g2["C"]))
+        return P
+
+    return _file_slider_flywheel(case, points, {"2": ("A", g1["C"]), "3": None, "4": ("A", g2["C"]), "5": None},
+                                 rtol=rtol, grid=grid)

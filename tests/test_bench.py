@@ -91,6 +91,37 @@ def test_a_changed_problem_changes_the_reference_alike():
     assert abs(J_core / Study(builtin.case("four-bar")).exact.J_F - 1) > 0.01
 
 
+#: one link length of each slider linkage changed: (built-in name, the file's keys down to the length, new value)
+ALTERED_LENGTHS = [("shaper", ("l_O3B",), 0.60),
+                   ("six-bar-press", ("groups", 1, "l"), 0.40),
+                   ("whitworth", ("points", "B", "distance"), 0.18),
+                   ("slotting-machine", ("points", "B", "distance"), 0.55),
+                   ("two-slider", ("crank", "r"), 0.07)]
+
+
+@pytest.mark.parametrize(("name", "keys", "value"), ALTERED_LENGTHS)
+def test_an_altered_link_moves_the_slider_references_and_the_core_alike(name, keys, value):
+    """The closed forms read the problem file's lengths: a longer or shorter link moves both J_F alike."""
+    pytest.importorskip("scipy")
+    import copy
+
+    from graphmethods import bench_reference
+    from graphmethods.dynamics.study import Study
+    from graphmethods.kinematics import case_from_dict
+    from graphmethods.problems import builtin
+
+    path = builtin.DATA / builtin.LINKAGES[name]
+    data = copy.deepcopy(json.loads(path.read_text(encoding="utf-8")))
+    inner = data
+    for k in keys[:-1]:
+        inner = inner[k]
+    assert inner[keys[-1]] != value
+    inner[keys[-1]] = value
+    J_core = Study(case_from_dict(data, source=str(path))).exact.J_F
+    assert getattr(bench_reference, bench.REFERENCES[name][0])(data) == pytest.approx(J_core, rel=1e-12)
+    assert abs(J_core / Study(builtin.case(name)).exact.J_F - 1) > 0.01
+
+
 def test_paired_timings_interleave_and_take_the_median_ratio():
     calls = []
     pair = bench.paired(lambda: calls.append("a"), lambda: calls.append("b"), repeat=4)
