@@ -147,3 +147,14 @@ def test_no_figure_function_over_80_lines():
                 if length > 80:
                     long.append(f"{path.relative_to(root)}:{node.lineno} {node.name} ({length} lines)")
     assert not long, long
+
+
+def test_a_flywheel_without_figures_loads_no_figure_layer():
+    """`graphmethods flywheel` that writes no file is numbers only: no scene, render or sheets (start-up time)."""
+    code = ("import sys\nfrom graphmethods.cli import main\n"
+            "main(['flywheel', '--areas', '-50', '550', '-100', '125', '-500', '25', '-50', '--n', '600',"
+            " '--delta', '1/300'])\n"
+            "print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('graphmethods.')"
+            " and m.split('.')[1] in ('scene', 'render', 'sheets')}), file=sys.stderr)")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert proc.stderr.strip() == "[]" and "J_F" in proc.stdout

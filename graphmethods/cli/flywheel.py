@@ -215,14 +215,12 @@ def run(args: argparse.Namespace) -> int:
     if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
         raise InputError("--figure and --hyperbola name the same file; give two names")
     check_finite(out)
-    from graphmethods.render.files import write_atomic
+    for key, path, data in (("figure", fig_path, fig_data), ("hyperbola", hyp_path, hyp_data)):
+        if path is not None and data is not None:
+            from graphmethods.render.files import write_atomic  # only when a file is asked for (start-up)
 
-    if fig_path is not None:
-        write_atomic(fig_path, fig_data, overwrite=args.force)
-        out["figure"] = str(fig_path)
-    if hyp_path is not None:
-        write_atomic(hyp_path, hyp_data, overwrite=args.force)
-        out["hyperbola"] = str(hyp_path)
+            write_atomic(path, data, overwrite=args.force)
+            out[key] = str(path)
     if args.json:
         print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
         return 0
