@@ -276,6 +276,10 @@ class DyadLoads:
         """The forces as the known sides of a polygon (label, N), in order."""
         return tuple((f.label, f.F) for f in forces)
 
+    def link2_step(self, outer: str) -> str:
+        """The step :meth:`link2_polygon` draws, in words: ``"link 2: R_12 + ΣF_2 + R_32 = 0"``."""
+        return f"link {self.l2}: R_{outer} + ΣF_{self.l2} + R_{self.l3}{self.l2} = 0"
+
     def link2_polygon(self, outer: str, R_outer: Cx, R_32: Cx) -> Polygon:
         """The polygon of link 2 alone that gives the inner reaction: ``R_outer + ΣF_2 + R_32 = 0``
         (``outer`` the outer reaction's pair digits, e.g. ``"12"``; forces in N)."""
@@ -305,6 +309,15 @@ def tangential(forces: Sequence[Force], P: Cx, C: Cx) -> tuple[Cx, Cx]:
     t = 1j * u
     R_t: Cx = -moment_about(forces, C) / cross(P - C, t) * t
     return u, R_t
+
+
+def tangential_step(link: str, C: str, outer: str, P: str) -> str:
+    """The step :func:`tangential` takes, in words: ``"link 2: ΣM_C = 0 gives R^τ_12 ⟂ AC"``.
+
+    >>> tangential_step("2", "B", "12", "A")
+    'link 2: ΣM_B = 0 gives R^τ_12 ⟂ AB'
+    """
+    return f"link {link}: ΣM_{C} = 0 gives R^τ_{outer} ⟂ {P}{C}"
 
 
 def xy(z: complex) -> list[float]:

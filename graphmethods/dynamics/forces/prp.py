@@ -51,7 +51,7 @@ def solve(g: PRP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
         steps=(f"plan: ΣF_{l2} + ΣF_{l3} + R_{t2} + R_{t1} = 0, each ⟂ its guide",
-               f"link {l2}: R_{t1} + ΣF_{l2} + R_{l3}{l2} = 0",
+               d.link2_step(t1),
                f"links {l2}, {l3}: ΣM_{g.C} = 0 gives the lines of R_{t1} and R_{t2}"),
         first=(),
         polygons=(

@@ -31,6 +31,7 @@ from graphmethods.dynamics.forces.base import (
     reaction,
     solve2,
     tangential,
+    tangential_step,
 )
 from graphmethods.kinematics.groups import RRP
 
@@ -54,9 +55,9 @@ def solve(g: RRP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
     ta, tg = f"{a}{l2}", f"{gl}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
-        steps=(f"link {l2}: ΣM_{g.C} = 0 gives R^τ_{ta} ⟂ {g.P}{g.C}",
+        steps=(tangential_step(l2, g.C, ta, g.P),
                f"plan: R^τ_{ta} + ΣF_{l2} + ΣF_{l3} + R_{tg} + R^n_{ta} = 0, R_{tg} ⟂ guide, R^n_{ta} ∥ {g.P}{g.C}",
-               f"link {l2}: R_{ta} + ΣF_{l2} + R_{l3}{l2} = 0",
+               d.link2_step(ta),
                f"link {l3}: ΣM_{g.C} = 0 gives the line of R_{tg} (h = M/N along the guide)"),
         first=((f"R^τ_{ta}", Rt2),),
         polygons=(

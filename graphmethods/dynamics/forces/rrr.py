@@ -32,6 +32,7 @@ from graphmethods.dynamics.forces.base import (
     reaction,
     solve2,
     tangential,
+    tangential_step,
 )
 from graphmethods.kinematics.groups import RRR
 
@@ -65,10 +66,10 @@ def solve(g: RRR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
     ta, tb = f"{a}{l2}", f"{b}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
-        steps=(f"link {l2}: ΣM_{g.C} = 0 gives R^τ_{ta} ⟂ {g.P}{g.C}",
-               f"link {l3}: ΣM_{g.C} = 0 gives R^τ_{tb} ⟂ {g.Q}{g.C}",
+        steps=(tangential_step(l2, g.C, ta, g.P),
+               tangential_step(l3, g.C, tb, g.Q),
                f"plan: R^τ_{ta} + ΣF_{l2} + ΣF_{l3} + R^τ_{tb} + R^n_{tb} + R^n_{ta} = 0, R^n ∥ the links",
-               f"link {l2}: R_{ta} + ΣF_{l2} + R_{l3}{l2} = 0"),
+               d.link2_step(ta)),
         first=((f"R^τ_{ta}", Rt2), (f"R^τ_{tb}", Rt3)),
         polygons=(
             Polygon((l2, l3), ((f"R^τ_{ta}", Rt2), *d.known(d.f2), *d.known(d.f3), (f"R^τ_{tb}", Rt3)),
