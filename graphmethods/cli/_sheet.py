@@ -3,28 +3,43 @@
 from __future__ import annotations
 
 import pathlib
+from typing import TYPE_CHECKING
 
 from graphmethods.errors import InputError, OutputExistsError
-from graphmethods.scene import Scene
+
+if TYPE_CHECKING:                      # the numeric commands (flywheel) import this module: no scene at start-up
+    from graphmethods.scene import Scene
 
 SUFFIXES = (".svg", ".pdf", ".dxf")
 
 
-def check_sheet_target(text: str, force: bool) -> pathlib.Path:
-    """The path of ``--sheet``, refused (before any work) when it cannot or must not be written."""
+def _endings(suffixes: tuple[str, ...]) -> str:
+    """``".svg, .pdf or .dxf"``."""
+    return suffixes[0] if len(suffixes) == 1 else f"{', '.join(suffixes[:-1])} or {suffixes[-1]}"
+
+
+def check_target(text: str, force: bool, *, option: str, suffixes: tuple[str, ...]) -> pathlib.Path:
+    """The path an output option (``--sheet``, ``--figure``) names, refused before any work when it
+    cannot or must not be written: empty, a suffix not in ``suffixes``, a missing directory, a
+    directory, or an existing file without ``--force``."""
     if text.strip() == "":
-        raise InputError("--sheet is empty; give a file name ending in .svg, .pdf or .dxf")
+        raise InputError(f"{option} is empty; give a file name ending in {_endings(suffixes)}")
     path = pathlib.Path(text)
-    if path.suffix.lower() not in SUFFIXES:
-        raise InputError(f"--sheet {path}: give a file name ending in .svg, .pdf or .dxf")
+    if path.suffix.lower() not in suffixes:
+        raise InputError(f"{option} {path}: give a file name ending in {_endings(suffixes)}")
     parent = path.parent if str(path.parent) else pathlib.Path(".")
     if not parent.is_dir():
-        raise InputError(f"--sheet {path}: directory {parent} does not exist; create it first")
+        raise InputError(f"{option} {path}: directory {parent} does not exist; create it first")
     if path.is_dir():
-        raise InputError(f"--sheet {path}: it is a directory; give a file name")
+        raise InputError(f"{option} {path}: it is a directory; give a file name")
     if path.exists() and not force:
         raise OutputExistsError(f"{path} exists; use --force to overwrite it")
     return path
+
+
+def check_sheet_target(text: str, force: bool) -> pathlib.Path:
+    """The path of ``--sheet``, refused (before any work) when it cannot or must not be written."""
+    return check_target(text, force, option="--sheet", suffixes=SUFFIXES)
 
 
 def scene_bytes(scene: Scene, path: pathlib.Path) -> bytes:

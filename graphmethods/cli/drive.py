@@ -11,10 +11,10 @@ M_i' = M_i u_i, and its natural frequencies. An existing figure file is kept unl
 from __future__ import annotations
 
 import argparse
-import pathlib
 
+from graphmethods.cli._sheet import check_target
 from graphmethods.cli.flywheel import parse_list
-from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.errors import InputError
 from graphmethods.units import json_text
 
 
@@ -61,17 +61,11 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"--names: give {n} names, one per mass; got {len(names)}")
     chain = reduce_chain([Mass(nm, j, ui, mi) for nm, j, ui, mi in zip(names, J, u, M)],
                          [Shaft(f"{i + 1}", ci, ui) for i, (ci, ui) in enumerate(zip(c, cu))])
-    path = pathlib.Path(args.figure) if args.figure is not None else None
+    path = None if args.figure is None else check_target(args.figure, args.force, option="--figure",
+                                                         suffixes=(".svg", ".pdf", ".png"))
     blob = None
     if path is not None:
         suffix = path.suffix.lower()
-        if suffix not in (".svg", ".pdf", ".png"):
-            raise InputError(f"--figure {path}: give a file name ending in .svg, .pdf or .png")
-        if path.exists() and not args.force:
-            raise OutputExistsError(f"{path} exists; use --force to overwrite it")
-        if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
-            raise InputError(f"--figure {path}: its folder does not exist or it is a folder; give a file in a folder "
-                             f"that exists")
         from graphmethods.render import formats
         from graphmethods.sheets.drive_scheme import drive_scheme
 

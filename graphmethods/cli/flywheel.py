@@ -17,6 +17,7 @@ import re
 from typing import Any
 
 from graphmethods.cli import flywheel_moments
+from graphmethods.cli._sheet import check_target
 from graphmethods.errors import InputError
 from graphmethods.units import check_finite, json_text, parse_number
 
@@ -134,20 +135,10 @@ def _sizing(args: argparse.Namespace, J_F: float, n_rpm: float, out: dict):
 
 def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
     """The flywheel figure's path and bytes (checked before any file is written), or (None, None)."""
-    import pathlib
-
-    from graphmethods.errors import OutputExistsError
-
     if args.figure is None:
         return None, None
-    path = pathlib.Path(args.figure)
+    path = check_target(args.figure, args.force, option="--figure", suffixes=(".svg", ".pdf", ".png"))
     suffix = path.suffix.lower()
-    if suffix not in (".svg", ".pdf", ".png"):
-        raise InputError(f"--figure {path}: give a file name ending in .svg, .pdf or .png")
-    if path.exists() and not args.force:
-        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
-    if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
-        raise InputError(f"--figure {path}: its folder does not exist or it is a folder")
     from graphmethods.sheets.flywheel_design import flywheel_design
 
     if rim is None:              # a disc alone: drawn in the rim's place
@@ -174,20 +165,10 @@ def _delta_table(args: argparse.Namespace) -> int:
 def _hyperbola_bytes(args: argparse.Namespace, delta_W_max: float, omega_m: float, J_e: float, delta: float,
                      machine: str | None) -> tuple:
     """The --hyperbola figure's path and bytes (checked before any file is written), or (None, None)."""
-    import pathlib
-
-    from graphmethods.errors import OutputExistsError
-
     if args.hyperbola is None:
         return None, None
-    path = pathlib.Path(args.hyperbola)
+    path = check_target(args.hyperbola, args.force, option="--hyperbola", suffixes=(".svg", ".pdf"))
     suffix = path.suffix.lower()
-    if suffix not in (".svg", ".pdf"):
-        raise InputError(f"--hyperbola {path}: give a file name ending in .svg or .pdf")
-    if path.exists() and not args.force:
-        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
-    if path.is_dir() or not (path.parent if str(path.parent) else pathlib.Path(".")).is_dir():
-        raise InputError(f"--hyperbola {path}: its folder does not exist or it is a folder")
     from graphmethods.sheets.flywheel_hyperbola import flywheel_hyperbola
 
     scene = flywheel_hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, delta=delta, machine=machine,

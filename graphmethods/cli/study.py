@@ -13,7 +13,8 @@ from __future__ import annotations
 import pathlib
 import sys
 
-from graphmethods.errors import InputError, OutputExistsError
+from graphmethods.cli._sheet import check_sheet_target
+from graphmethods.errors import InputError
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
@@ -59,31 +60,12 @@ def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
     return formats.to_bytes(scene, path.suffix)        # .svg, .pdf or .dxf (checked before any work)
 
 
-def _check_target(path: pathlib.Path, force: bool) -> None:
-    """Refuse early (before any work) a sheet file that cannot or must not be written."""
-    if str(path).strip() in ("", "."):
-        raise InputError("--sheet is empty; give a file name ending in .svg, .pdf or .dxf")
-    if path.suffix.lower() not in (".svg", ".pdf", ".dxf"):
-        raise InputError(f"--sheet {path}: give a file name ending in .svg, .pdf or .dxf")
-    parent = path.parent if str(path.parent) else pathlib.Path(".")
-    if not parent.is_dir():
-        raise InputError(f"--sheet {path}: directory {parent} does not exist; create it first")
-    if path.is_dir():
-        raise InputError(f"--sheet {path}: it is a directory; give a file name")
-    if path.exists() and not force:
-        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
-
-
 def run(args) -> int:
     from graphmethods.dynamics.study import Study
     from graphmethods.problems import builtin
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
-    sheet = pathlib.Path(args.sheet) if args.sheet is not None else None
-    if sheet is not None:
-        if args.sheet.strip() == "":
-            raise InputError("--sheet is empty; give a file name ending in .svg or .pdf")
-        _check_target(sheet, args.force)
+    sheet = check_sheet_target(args.sheet, args.force) if args.sheet is not None else None
     study = Study(builtin.case(args.case), positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)

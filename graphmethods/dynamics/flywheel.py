@@ -230,8 +230,38 @@ def transfer(J_F: float, *, omega_from: float, omega_to: float) -> float:
 
 
 # --------------------------------------------------------------------- sizing
+class _FlywheelMoments:
+    """What every sized flywheel reports from its mass m (kg), mean diameter D (m) and rim speed
+    (m/s): the speed check and the flywheel moments of the handbooks."""
+
+    m: float
+    D: float
+    rim_speed: float
+    speed_limit: float
+
+    @property
+    def speed_ok(self) -> bool:
+        """Whether the rim speed stays within ``speed_limit``."""
+        return self.rim_speed <= self.speed_limit
+
+    @property
+    def flywheel_moment(self) -> float:
+        """m D², kg·m² (the "flywheel moment" GD² of older texts, in mass units)."""
+        return self.m * self.D**2
+
+    @property
+    def weight_moment_kgf(self) -> float:
+        """Q·D² in the old units, kgf·m² (Q the weight in kgf): numerically m·D² at standard gravity."""
+        return self.m * G_STANDARD / KGF * self.D**2
+
+    @property
+    def weight_moment_N(self) -> float:
+        """G·D² = m g D², N·m² (the weight in newtons, g = 9.80665 m/s²)."""
+        return self.m * G_STANDARD * self.D**2
+
+
 @dataclass(frozen=True)
-class RimFlywheel:
+class RimFlywheel(_FlywheelMoments):
     """A spoked flywheel whose rim carries the inertia (spokes and hub neglected).
 
     D is the mean rim diameter, H the radial thickness, B the width (m); mass in kg;
@@ -256,25 +286,6 @@ class RimFlywheel:
     @property
     def D2(self) -> float:
         return self.D - self.H
-
-    @property
-    def speed_ok(self) -> bool:
-        return self.rim_speed <= self.speed_limit
-
-    @property
-    def flywheel_moment(self) -> float:
-        """m D², kg·m² (the "flywheel moment" GD² of older texts, in mass units)."""
-        return self.m * self.D**2
-
-    @property
-    def weight_moment_kgf(self) -> float:
-        """Q·D² in the old units, kgf·m² (Q the weight in kgf): numerically m·D² at standard gravity."""
-        return self.m * G_STANDARD / KGF * self.D**2
-
-    @property
-    def weight_moment_N(self) -> float:
-        """G·D² = m g D², N·m² (the weight in newtons, g = 9.80665 m/s²)."""
-        return self.m * G_STANDARD * self.D**2
 
 
 def rim_flywheel(
@@ -316,7 +327,7 @@ def rim_flywheel(
 
 
 @dataclass(frozen=True)
-class DiscFlywheel:
+class DiscFlywheel(_FlywheelMoments):
     """A solid disc flywheel: J = m D²/8, m = ρπD²B/4 (m, kg, m/s); ``speed_ok`` against ``speed_limit``."""
 
     J: float
@@ -326,25 +337,6 @@ class DiscFlywheel:
     rho: float
     rim_speed: float
     speed_limit: float = RIM_SPEED_LIMIT["steel"]
-
-    @property
-    def speed_ok(self) -> bool:
-        return self.rim_speed <= self.speed_limit
-
-    @property
-    def flywheel_moment(self) -> float:
-        """m D², kg·m²."""
-        return self.m * self.D**2
-
-    @property
-    def weight_moment_kgf(self) -> float:
-        """Q·D² in the old units, kgf·m² (Q the weight in kgf): numerically m·D² at standard gravity."""
-        return self.m * G_STANDARD / KGF * self.D**2
-
-    @property
-    def weight_moment_N(self) -> float:
-        """G·D² = m g D², N·m² (the weight in newtons, g = 9.80665 m/s²)."""
-        return self.m * G_STANDARD * self.D**2
 
 
 def disc_flywheel(J: float, *, D: float, n_rpm: float, rho: float = DENSITY["steel"],

@@ -217,6 +217,35 @@ _COMMON_TAIL = {
 #: its default (REQUIRED: none) and its meaning
 Spec = tuple[str | tuple[str, ...], object, str]
 
+#: the key groups the kinds share (the slotted lever and the shaper: the same crank, slot and rocker)
+_J1_O1: dict[str, Spec] = {
+    "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
+}
+_FORCE_SPAN: dict[str, Spec] = {
+    "force_from": ("fraction", REQUIRED, "fraction of the stroke where the force starts"),
+    "force_to": ("fraction", REQUIRED, "fraction of the stroke where the force ends"),
+}
+_ROCKER_MOMENT: dict[str, Spec] = {
+    "M3": ("nonneg", REQUIRED, "resisting moment on the rocker during its working swing, N·m"),
+    "moment_from": ("fraction", REQUIRED, "fraction of the swing where the moment starts"),
+    "moment_to": ("fraction", REQUIRED, "fraction of the swing where the moment ends"),
+}
+_SLOTTED: dict[str, Spec] = {
+    "r": ("positive", REQUIRED, "crank O1A, m"),
+    "l_O1O3": ("positive", REQUIRED, "centre distance O1O3, m"),
+    "l_O3B": ("positive", REQUIRED, "rocker O3B, m"),
+}
+_ROCKER_PLACE: dict[str, Spec] = {
+    "theta_O3_deg": ("real", -90.0, "direction of O1->O3 from +x, degrees"),
+    "l_O3S3": ("nonneg", REQUIRED, "distance from O3 to the rocker's centre of mass S3, m"),
+}
+_BLOCK_ROCKER_MASS: dict[str, Spec] = {
+    "m2": ("nonneg", 0.0, "block mass (at A), kg"),
+    "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
+    "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+}
+_SLOW_OR_FAST_SWING: dict[str, Spec] = {"working_stroke": (("slow", "fast"), "slow", "which swing works")}
+
 SPECS: dict[str, dict[str, Spec]] = {
     "slider_crank": {
         "r": ("positive", REQUIRED, "crank O-A, m"),
@@ -228,8 +257,7 @@ SPECS: dict[str, dict[str, Spec]] = {
         "m3": ("nonneg", REQUIRED, "slider mass, kg"),
         "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O, kg·m²"),
         "F0": ("nonneg", REQUIRED, "resisting force on the slider during the working stroke, N"),
-        "force_from": ("fraction", REQUIRED, "fraction of the stroke where the force starts"),
-        "force_to": ("fraction", REQUIRED, "fraction of the stroke where the force ends"),
+        **_FORCE_SPAN,
         "assembly": ("sign", 1, "+1: slider on the +x side of A, -1: on the -x side"),
         "working_stroke": (("toward_crank", "away_from_crank", "slow", "fast"), "toward_crank", "which stroke works"),
         **_COMMON_TAIL,
@@ -246,49 +274,34 @@ SPECS: dict[str, dict[str, Spec]] = {
         "J_S2": ("nonneg", REQUIRED, "coupler moment of inertia about S2, kg·m²"),
         "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
         "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
-        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
-        "M3": ("nonneg", REQUIRED, "resisting moment on the rocker during its working swing, N·m"),
-        "moment_from": ("fraction", REQUIRED, "fraction of the swing where the moment starts"),
-        "moment_to": ("fraction", REQUIRED, "fraction of the swing where the moment ends"),
+        **_J1_O1,
+        **_ROCKER_MOMENT,
         "assembly": ("sign", 1, "+1 or -1: the branch of the linkage"),
-        "working_stroke": (("slow", "fast"), "slow", "which swing works"),
+        **_SLOW_OR_FAST_SWING,
         **_COMMON_TAIL,
     },
     "slotted_lever": {
-        "r": ("positive", REQUIRED, "crank O1A, m"),
-        "l_O1O3": ("positive", REQUIRED, "centre distance O1O3, m"),
-        "l_O3B": ("positive", REQUIRED, "rocker O3B, m"),
-        "theta_O3_deg": ("real", -90.0, "direction of O1->O3 from +x, degrees"),
-        "l_O3S3": ("nonneg", REQUIRED, "distance from O3 to the rocker's centre of mass S3, m"),
-        "m2": ("nonneg", 0.0, "block mass (at A), kg"),
-        "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
-        "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
-        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
-        "M3": ("nonneg", REQUIRED, "resisting moment on the rocker during its working swing, N·m"),
-        "moment_from": ("fraction", REQUIRED, "fraction of the swing where the moment starts"),
-        "moment_to": ("fraction", REQUIRED, "fraction of the swing where the moment ends"),
-        "working_stroke": (("slow", "fast"), "slow", "which swing works"),
+        **_SLOTTED,
+        **_ROCKER_PLACE,
+        **_BLOCK_ROCKER_MASS,
+        **_J1_O1,
+        **_ROCKER_MOMENT,
+        **_SLOW_OR_FAST_SWING,
         **_COMMON_TAIL,
     },
     "shaper": {
-        "r": ("positive", REQUIRED, "crank O1A, m"),
-        "l_O1O3": ("positive", REQUIRED, "centre distance O1O3, m"),
-        "l_O3B": ("positive", REQUIRED, "rocker O3B, m"),
+        **_SLOTTED,
         "l_BC": ("positive", REQUIRED, "connecting link BC, m"),
         "y_guide": ("real", REQUIRED, "height of the ram's guide line above O1, m"),
-        "theta_O3_deg": ("real", -90.0, "direction of O1->O3 from +x, degrees"),
-        "l_O3S3": ("nonneg", REQUIRED, "distance from O3 to the rocker's centre of mass S3, m"),
+        **_ROCKER_PLACE,
         "l_BS4": ("nonneg", REQUIRED, "distance from B to the link's centre of mass S4, m"),
-        "m2": ("nonneg", 0.0, "block mass (at A), kg"),
-        "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
-        "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+        **_BLOCK_ROCKER_MASS,
         "m4": ("nonneg", REQUIRED, "link BC mass, kg"),
         "J_S4": ("nonneg", REQUIRED, "link BC moment of inertia about S4, kg·m²"),
         "m5": ("nonneg", REQUIRED, "ram mass, kg"),
-        "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
+        **_J1_O1,
         "F0": ("nonneg", REQUIRED, "cutting force on the ram during the working stroke, N"),
-        "force_from": ("fraction", REQUIRED, "fraction of the stroke where the force starts"),
-        "force_to": ("fraction", REQUIRED, "fraction of the stroke where the force ends"),
+        **_FORCE_SPAN,
         "assembly": ("sign", 1, "+1: ram C on the +x side of B, -1: on the -x side"),
         "working_stroke": (("slow", "fast"), "slow", "which stroke works"),
         **_COMMON_TAIL,

@@ -70,6 +70,12 @@ def _pt(p: Sequence[float] | NDArray[np.float64]) -> XY:
     return (x, y)
 
 
+def _checked_points(element: object, *names: str) -> None:
+    """Replace each named point field of a frozen element by its checked ``(x_mm, y_mm)`` (:func:`_pt`)."""
+    for name in names:
+        object.__setattr__(element, name, _pt(getattr(element, name)))
+
+
 def _pts(points: ArrayLike) -> tuple[XY, ...]:
     arr = np.asarray(points, dtype=float)
     if arr.ndim != 2 or arr.shape[1] != 2:
@@ -434,8 +440,7 @@ class Vector(Element):
     name: str = "vector"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "start", _pt(self.start))
-        object.__setattr__(self, "end", _pt(self.end))
+        _checked_points(self, "start", "end")
 
     @classmethod
     def of(cls, start: Sequence[float], *, value: float, scale: Scale, angle_deg: float = 0.0, **kw: Any) -> Vector:
@@ -544,8 +549,7 @@ class Dimension(Element):
     name: str = "dimension"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "start", _pt(self.start))
-        object.__setattr__(self, "end", _pt(self.end))
+        _checked_points(self, "start", "end")
 
     def _frame(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64],
                               NDArray[np.float64]]:
@@ -714,7 +718,7 @@ class Axis(Element):
                              f"max_value must exceed min_value")
         if self.tick_labels is not None and len(self.tick_labels) != len(self.ticks):
             raise InputError(f"{self.name}: {len(self.ticks)} ticks but {len(self.tick_labels)} tick labels")
-        object.__setattr__(self, "origin", _pt(self.origin))
+        _checked_points(self, "origin")
 
     def pos(self, value: float) -> XY:
         """Page point of ``value`` on the axis."""
@@ -811,7 +815,7 @@ class Table(Element):
             if len(r) != ncol:
                 raise InputError(f"{self.name}: row {i} has {len(r)} cells, the first row has {ncol}")
         object.__setattr__(self, "rows", rows)
-        object.__setattr__(self, "at", _pt(self.at))
+        _checked_points(self, "at")
         if self.col_widths_mm is not None and len(self.col_widths_mm) != ncol:
             raise InputError(f"{self.name}: {len(self.col_widths_mm)} column widths for {ncol} columns")
 

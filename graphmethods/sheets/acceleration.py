@@ -38,14 +38,13 @@ from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
 from graphmethods.scene import Line, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.elements import Element
-from graphmethods.scene.primitives import DASHED, Style
+from graphmethods.scene.primitives import DASHED
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 
 SMALL_MM = K.SMALL_MM
 TABLE_MM = K.TABLE_MM
 LINE_STYLE = DASHED
-CELL = Style(width_mm=0.18)
 
 _SYM = re.compile(r"^(a(?:\^[nτkr])?)_(\w+)$")
 

@@ -56,11 +56,11 @@ from graphmethods.scene.elements import Element
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, clear_tick_labels, problem_title
+from graphmethods.sheets.styles import PROJECTION
 
 SMALL_MM = 2.6          # tick labels, position numbers
 TABLE_MM = 2.9          # the accuracy tables
 RAY = Style(width_mm=0.13)                       # rays from the poles: the finest construction lines
-PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
 CHORD = Style(width_mm=0.18, stroke="#000000")
 RESULT = MAIN
 TWO_PI = 2.0 * math.pi

@@ -20,12 +20,12 @@ import numpy as np
 
 from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, nice_ticks, notation as get_notation
 from graphmethods.scene.elements import pi_ticks
-from graphmethods.scene.primitives import MAIN, Style
+from graphmethods.scene.primitives import MAIN
 from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, suppressed_base
 from graphmethods.sheets.layout import TEXT_MM, given_angle_scale, given_scale
+from graphmethods.sheets.styles import PART, PROJECTION
 
-DASHED = Style(width_mm=0.25, dash=(3.0, 1.2))
-GUIDE = Style(width_mm=0.13, dash=(1.2, 0.8))
+DASHED, GUIDE = PART, PROJECTION
 
 
 def cycle_panels(problem, *, notation="en", title: str | None = None, samples: int = 1441) -> Scene:

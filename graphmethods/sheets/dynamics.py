@@ -63,13 +63,10 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
 from graphmethods.sheets.layout import TEXT_MM, Box, clear_tick_labels, given_angle_scale, given_scale, problem_title
+from graphmethods.sheets.styles import LEVEL, PART
 
 SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
-PART = Style(width_mm=0.25, dash=(3.0, 1.2))
-LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
-PROJECTION = Style(width_mm=0.13, dash=(1.2, 0.8))
-OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
 # ----------------------------------------------------------------------------- words of these figures
 # Every word, symbol and unit is the notation's (scene/vocabulary/dynamics.py: nt.sym("dynamics.J_e")).

@@ -44,7 +44,7 @@ from graphmethods.scene import (
 )
 from graphmethods.scene.elements import Element, Group
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label, Style
+from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label
 from graphmethods.sheets.layout import (
     TEXT_MM,
     Box,
@@ -59,7 +59,6 @@ from graphmethods.sheets.layout import (
 
 SMALL_MM = 2.8          # tick labels, values beside vectors
 TABLE_MM = 3.8          # the excess-work table
-OPEN_MARK = Style(width_mm=0.25, fill="#ffffff")
 
 
 # ----------------------------------------------------------------------------- common parts

@@ -66,6 +66,7 @@ from graphmethods.scene.elements import Dimension, Element
 from graphmethods.scene.primitives import THIN, Label, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
+from graphmethods.sheets.styles import CELL
 from graphmethods.units import convenient_at_least
 
 SMALL_MM = 2.8          # position numbers, plan labels
@@ -73,7 +74,6 @@ TABLE_MM = 3.2          # tables
 THICK = Style(width_mm=0.6)
 TRAJECTORY = Style(width_mm=0.18, dash=(0.8, 0.8))
 EXTREME = Style(width_mm=0.25, dash=(3.0, 1.0))
-CELL = Style(width_mm=0.18)
 CELL_ILL = Style(width_mm=0.5, dash=(2.0, 1.0))
 PRIME = "′"
 
@@ -166,6 +166,14 @@ class _Linkage:
 def _drawn(pos) -> list[int]:
     """The positions a figure draws: 0…m−1 (position m is position 0), or every given angle."""
     return list(range(pos.m)) if pos.m is not None else list(range(pos.n))
+
+
+def _plans_of(linkage, *, m: int | None, omega_1: float | None) -> tuple[_Linkage, Any, Any, list[int]]:
+    """What every figure of velocity plans starts from: the linkage, its plans, their positions and
+    the positions drawn (:func:`_drawn`)."""
+    lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
+    plans = lk.plans
+    return lk, plans, plans.positions, _drawn(plans.positions)
 
 
 def _pos_label(pos, k: int) -> str:
@@ -1131,12 +1139,9 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     >>> s.scales()[0].caption(), s.element("plan-3-vector-pa").known
     ('μ_v = 0.04 (m/s)/mm', True)
     """
-    lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
+    lk, plans, pos, drawn = _plans_of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
     lay = PLAN_GRID_LAYOUT
-    plans = lk.plans
-    pos = plans.positions
-    drawn = _drawn(pos)
     images, vectors = _plan_layout(plans)
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plans"),
                   problem=lk.problem if problem is None else problem, title_block=title_block)
@@ -1430,12 +1435,9 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     >>> s.title, [ln.name for ln in s.elements if ln.name.startswith("line-")]
     ('План скоростей, положение 1', ['line-B-a', 'line-B-p'])
     """
-    lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
+    lk, plans, pos, drawn = _plans_of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)
     lay = VELOCITY_PLAN_LAYOUT
-    plans = lk.plans
-    pos = plans.positions
-    drawn = _drawn(pos)
     k = fullest_position(plans) if position is None else position
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or int(k) not in drawn:
         raise InputError(f"position {position!r}: give one of the positions {drawn[0]}…{drawn[-1]}")
@@ -1529,11 +1531,8 @@ def velocity_rows(linkage, *, m: int | None = None, omega_1: float | None = None
     >>> t.labels, [round(float(v), 6) for v in t.values[:, 2]]
     (('0 (4)', '1', '2', '3'), [0.0, -1.0, 0.0, 1.0])
     """
-    lk = _Linkage.of(linkage, m=m, omega_1=omega_1)
-    plans = lk.plans
-    pos = plans.positions
+    lk, plans, pos, drawn = _plans_of(linkage, m=m, omega_1=omega_1)
     mech = pos.mechanism
-    drawn = _drawn(pos)
     ext = _end_extreme(pos) if extremes else None
     plans_e = None
     if ext is not None and ext.same_as is None:

@@ -22,12 +22,12 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
-from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.scene.primitives import MAIN, THIN
 from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
+from graphmethods.sheets.styles import LEVEL, PROJECTION
 
-LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
-TURN = Style(width_mm=0.13, dash=(1.2, 0.8))
+TURN = PROJECTION
 
 #: (x, y) of a motion graph -> the key of its title in scene/vocabulary/motion.py
 _TITLES = {("t", "omega"): "motion.speed_t", ("phi", "omega"): "motion.speed_phi",

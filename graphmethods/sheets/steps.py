@@ -87,6 +87,18 @@ def step_page(page="slide") -> tuple[Page, tuple[float, float, float, float], fl
     return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM) / z, not slide
 
 
+def step_start(notation: str | Notation = "en", page: str | Page = "slide") -> tuple[
+        Notation, tuple[Page, tuple[float, float, float, float], float, bool]]:
+    """What every step figure starts from: its notation and :func:`step_page`'s page, caption box (mm),
+    caption size (mm) and title-block flag.
+
+    >>> nt, (page, box, size, tb) = step_start("ru", "A3")
+    >>> nt.code, page.size, size, tb
+    ('ru', 'A3', 5.0, True)
+    """
+    return get_notation(notation), step_page(page)
+
+
 #: the gap between the figure's page and the caption box, mm
 CAPTION_GAP_MM = 1.5
 
@@ -329,8 +341,7 @@ def velocity_plan_steps(linkage: Any, position: int | None = None, *, notation: 
     """  # noqa: E501 - a doctest's expected output is one line
     from graphmethods.sheets import kinematics as K
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     plans = K._Linkage.of(linkage, m=m, omega_1=omega_1).plans
     k = K.fullest_position(plans) if position is None else position
     figure = K.velocity_plan(linkage, k, m=m, omega_1=omega_1, mu_v=mu_v, notation=nt, page=pg, title_block=tb)
@@ -435,8 +446,7 @@ def acceleration_plan_steps(linkage: Any, position: int | None = None, *, notati
     """
     from graphmethods.sheets import acceleration as SA
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     pr = SA._Problem(linkage, m=m, omega_1=omega_1, epsilon_1=epsilon_1)
     plans = pr.plans()
     k = SA._default_position(plans, pr.linkage) if position is None else SA._check_position(position,
@@ -567,8 +577,7 @@ def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, wor
     """
     from graphmethods.sheets import energy as E_
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     figure = E_.energy_indicator(cycle, mu_E=mu_E, notation=nt, page=pg, title_block=tb, work_unit=work_unit)
     ew, _ = E_._cycle(cycle, nt)
     s_E = _axis_scale(figure, "axis-E")
@@ -606,8 +615,7 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     """
     from graphmethods.sheets import wittenbauer as W
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     figure = W.wittenbauer_diagram(source, mu_J=mu_J, mu_T=mu_T, tangents=tangents, notation=nt, page=pg,
                                    title_block=tb)
     data = W.diagram_data(source, tangents=tangents, notation=nt)
@@ -654,8 +662,7 @@ def differentiation_steps(subject, *, notation="en", page="slide", m: int = 12) 
     """
     from graphmethods.sheets import calculus as C
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     figure = C.kinematic_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     s_, v_, a_ = nt.sym("calculus.s"), nt.sym("calculus.v"), nt.sym("calculus.a")
 
@@ -688,8 +695,7 @@ def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> B
     """
     from graphmethods.sheets import calculus as C
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     figure = C.work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     P = _text_of(figure, "pole-label")
 
@@ -724,8 +730,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
     """
     from graphmethods.sheets import dynamics as D
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     figure = D.zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
     mu_v = next((sc for sc in figure.scales() if "v" in sc.symbol), figure.scales()[0])
     rules = [
@@ -783,8 +788,7 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
     """
     from graphmethods.sheets import forces as SF
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     fa, i = SF.analysed(case, position=position, phi_deg=None, m=m)
     figure = SF.force_plans(case, i, m=m, notation=nt, page=pg, title_block=tb)
     names = {e.name for e in figure.elements}
@@ -858,8 +862,7 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
     """
     from graphmethods.sheets import forces as SF
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     fa, i = SF.analysed(case, position=position, phi_deg=None, m=m)
     figure = SF.zhukovsky_forces(case, i, m=m, notation=nt, page=pg, title_block=tb)
     lev = fa.lever
@@ -914,8 +917,7 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
     """
     from graphmethods.sheets import kinematics as K
 
-    nt = get_notation(notation)
-    pg, box, cap_mm, tb = step_page(page)
+    nt, (pg, box, cap_mm, tb) = step_start(notation, page)
     figure = K.kinematic_scheme(linkage, m=m, notation=nt, page=pg, title_block=tb)
     mech = K._Linkage.of(linkage, m=m).mech
     pin = mech.crank_pin

@@ -61,7 +61,6 @@ from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Label, Style
 from graphmethods.sheets.dynamics import (
-    PROJECTION,
     SMALL_MM,
     TEXT_MM,
     TWO_PI,
@@ -83,6 +82,7 @@ from graphmethods.sheets.dynamics import (
 )
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, Occupancy, clear_tick_labels
+from graphmethods.sheets.styles import PROJECTION
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)

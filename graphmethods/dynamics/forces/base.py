@@ -17,7 +17,7 @@ h = M/N along the guide).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -241,6 +241,83 @@ class Kin:
     def direction(self, link: str) -> Cx:
         out: Cx = np.broadcast_to(np.asarray(self.e[link], dtype=complex), (self.n,))
         return out
+
+
+@dataclass(frozen=True, eq=False)
+class DyadLoads:
+    """The loads on a dyad's two links as every group solver starts from them, over the positions.
+
+    Attributes
+    ----------
+    l2, l3 : str
+        The group's links (the one at its first outer joint first).
+    f2, f3 : list of Force
+        Every force on each link (inertia, weight, load, reactions of later groups), N.
+    F2, F3 : complex ndarray (n,)
+        Their resultants, N.
+
+    >>> import numpy as np
+    >>> kin = Kin(z={}, e={}, n=1)
+    >>> w = Force("G_3", F=np.array([-5j]), at=np.array([0j]), M=np.zeros(1))
+    >>> d = dyad_loads(("2", "3"), kin, {"3": [w]})
+    >>> d.known(d.f3), xy(d.F2[0]), xy(d.F3[0])
+    ((('G_3', array([-0.-5.j])),), [0.0, 0.0], [0.0, -5.0])
+    """
+
+    l2: str
+    l3: str
+    f2: list[Force]
+    f3: list[Force]
+    F2: Cx
+    F3: Cx
+
+    @staticmethod
+    def known(forces: Sequence[Force]) -> tuple[tuple[str, Cx], ...]:
+        """The forces as the known sides of a polygon (label, N), in order."""
+        return tuple((f.label, f.F) for f in forces)
+
+    def link2_step(self, outer: str) -> str:
+        """The step :meth:`link2_polygon` draws, in words: ``"link 2: R_12 + ΣF_2 + R_32 = 0"``."""
+        return f"link {self.l2}: R_{outer} + ΣF_{self.l2} + R_{self.l3}{self.l2} = 0"
+
+    def link2_polygon(self, outer: str, R_outer: Cx, R_32: Cx) -> Polygon:
+        """The polygon of link 2 alone that gives the inner reaction: ``R_outer + ΣF_2 + R_32 = 0``
+        (``outer`` the outer reaction's pair digits, e.g. ``"12"``; forces in N)."""
+        return Polygon((self.l2,), ((f"R_{outer}", R_outer), *self.known(self.f2)),
+                       ((f"R_{self.l3}{self.l2}", None, R_32),))
+
+
+def dyad_loads(links: tuple[str, str], kin: Kin, loads: Mapping[str, Sequence[Force]]) -> DyadLoads:
+    """The loads of a dyad's links ``links`` read from ``loads`` (link -> forces, N), summed."""
+    l2, l3 = links
+    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
+    return DyadLoads(l2, l3, f2, f3, resultant(f2, kin.n), resultant(f3, kin.n))
+
+
+def tangential(forces: Sequence[Force], P: Cx, C: Cx) -> tuple[Cx, Cx]:
+    """The unit direction u of a link P→C and the tangential part ``R^τ`` at P of the reaction
+    that holds it, from the link's moments about C: ``(P − C) × R^τ + M_C = 0``, R^τ ⟂ PC
+    (positions m, forces N).
+
+    >>> import numpy as np
+    >>> f = Force("F", F=np.array([-10j]), at=np.array([0.5 + 0j]), M=np.zeros(1))   # 10 N down mid-link
+    >>> u, R_t = tangential([f], np.array([0j]), np.array([1 + 0j]))
+    >>> xy(u[0]), xy(R_t[0])              # half the load held at P
+    ([1.0, 0.0], [0.0, 5.0])
+    """
+    u = unit(C - P)
+    t = 1j * u
+    R_t: Cx = -moment_about(forces, C) / cross(P - C, t) * t
+    return u, R_t
+
+
+def tangential_step(link: str, C: str, outer: str, P: str) -> str:
+    """The step :func:`tangential` takes, in words: ``"link 2: ΣM_C = 0 gives R^τ_12 ⟂ AC"``.
+
+    >>> tangential_step("2", "B", "12", "A")
+    'link 2: ΣM_B = 0 gives R^τ_12 ⟂ AB'
+    """
+    return f"link {link}: ΣM_{C} = 0 gives R^τ_{outer} ⟂ {P}{C}"
 
 
 def xy(z: complex) -> list[float]:

@@ -25,9 +25,9 @@ from graphmethods.dynamics.forces.base import (
     GroupForces,
     Kin,
     Polygon,
+    dyad_loads,
     moment_about,
     reaction,
-    resultant,
     solve2,
 )
 from graphmethods.kinematics.groups import PRP
@@ -35,29 +35,26 @@ from graphmethods.kinematics.groups import PRP
 
 def solve(g: PRP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
     """Reactions of a PRP group (see the module docstring; parameters as :func:`..rrr.solve`)."""
-    l2, l3 = g.links
+    d = dyad_loads(g.links, kin, loads)
+    l2, l3, F2 = d.l2, d.l3, d.F2
     C = kin.z[g.C]
     g1, g2 = g.guide_1.link, g.guide_2.link
-    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
-    n = kin.n
     u1, u2 = kin.direction(l2), kin.direction(l3)
     n1, n2 = 1j * u1, 1j * u2
-    F2, F3 = resultant(f2, n), resultant(f3, n)
-    N1, N2 = solve2(n1, n2, -(F2 + F3))
+    N1, N2 = solve2(n1, n2, -(F2 + d.F3))
     R_12, R_43 = N1 * n1, N2 * n2
     R_32 = -(R_12 + F2)
-    reactions = (reaction(g1, l2, "P", R_12, C, -moment_about(f2, C), u1),
-                 reaction(g2, l3, "P", R_43, C, -moment_about(f3, C), u2),
+    reactions = (reaction(g1, l2, "P", R_12, C, -moment_about(d.f2, C), u1),
+                 reaction(g2, l3, "P", R_43, C, -moment_about(d.f3, C), u2),
                  reaction(l3, l2, "R", R_32, C))
     t1, t2 = f"{g1}{l2}", f"{g2}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
         steps=(f"plan: ΣF_{l2} + ΣF_{l3} + R_{t2} + R_{t1} = 0, each ⟂ its guide",
-               f"link {l2}: R_{t1} + ΣF_{l2} + R_{l3}{l2} = 0",
+               d.link2_step(t1),
                f"links {l2}, {l3}: ΣM_{g.C} = 0 gives the lines of R_{t1} and R_{t2}"),
         first=(),
         polygons=(
-            Polygon((l2, l3), (*((f.label, f.F) for f in f2), *((f.label, f.F) for f in f3)),
-                    ((f"R_{t2}", n2, R_43), (f"R_{t1}", n1, R_12))),
-            Polygon((l2,), ((f"R_{t1}", R_12), *((f.label, f.F) for f in f2)), ((f"R_{l3}{l2}", None, R_32),))))
+            Polygon((l2, l3), (*d.known(d.f2), *d.known(d.f3)), ((f"R_{t2}", n2, R_43), (f"R_{t1}", n1, R_12))),
+            d.link2_polygon(t1, R_12, R_32)))
     return GroupForces(reactions, plan)

@@ -27,9 +27,9 @@ from graphmethods.dynamics.forces.base import (
     Kin,
     Polygon,
     cross,
+    dyad_loads,
     moment_about,
     reaction,
-    resultant,
     solve2,
 )
 from graphmethods.kinematics.groups import RPP
@@ -37,15 +37,14 @@ from graphmethods.kinematics.groups import RPP
 
 def solve(g: RPP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
     """Reactions of an RPP group (see the module docstring; parameters as :func:`..rrr.solve`)."""
-    l2, l3 = g.links
+    d = dyad_loads(g.links, kin, loads)
+    l2, l3, f2, f3 = d.l2, d.l3, d.f2, d.f3
     P, Rz = kin.z[g.P], kin.z[g.R]
     a, gl = carrier(g.P), g.guide.link
-    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
-    n = kin.n
     u1, u2 = kin.direction(l2), kin.direction(l3)
     n1, n2 = 1j * u1, 1j * u2
     Mc_32 = -moment_about(f2, P)                   # couple of the slot on the block, about P
-    F2, F3 = resultant(f2, n), resultant(f3, n)
+    F2, F3 = d.F2, d.F3
     # yoke: ΣF_3 − N1·n1 + N2·n2 = 0  (R_23 = −R_32 = −N1·n1)
     N1, N2 = solve2(-n1, n2, -F3)
     R_32, R_g3 = N1 * n1, N2 * n2
@@ -63,6 +62,6 @@ def solve(g: RPP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
                f"link {l2}: ΣF_{l2} + R_{l3}{l2} + R_{ta} = 0"),
         first=(),
         polygons=(
-            Polygon((l3,), tuple((f.label, f.F) for f in f3), ((f"R_{l2}{l3}", n1, -R_32), (f"R_{tg}", n2, R_g3))),
-            Polygon((l2,), (*((f.label, f.F) for f in f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
+            Polygon((l3,), d.known(f3), ((f"R_{l2}{l3}", n1, -R_32), (f"R_{tg}", n2, R_g3))),
+            Polygon((l2,), (*d.known(f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
     return GroupForces(reactions, plan)

@@ -28,27 +28,25 @@ from graphmethods.dynamics.forces.base import (
     Kin,
     Polygon,
     cross,
+    dyad_loads,
     moment_about,
     reaction,
-    resultant,
 )
 from graphmethods.kinematics.groups import RPR
 
 
 def solve(g: RPR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
     """Reactions of an RPR group (see the module docstring; parameters as :func:`..rrr.solve`)."""
-    l2, l3 = g.links
+    d = dyad_loads(g.links, kin, loads)
+    l2, l3, f2, f3, F2, F3 = d.l2, d.l3, d.f2, d.f3, d.F2, d.F3
     P, Q = kin.z[g.P], kin.z[g.Q]
     a, b = carrier(g.P), carrier(g.Q)
-    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
-    n = kin.n
     u = kin.direction(l3)
     nrm = 1j * u
     Mc_32 = -moment_about(f2, P)                         # couple of the slot on the block, about P
     # link 3 about Q: M_Q(F_3) + (P − Q) × (−N·n) − Mc_32 = 0
     N = (moment_about(f3, Q) - Mc_32) / cross(P - Q, nrm)
     R_32 = N * nrm
-    F2, F3 = resultant(f2, n), resultant(f3, n)
     R_b3 = -(F3 - R_32)
     R_a2 = -(F2 + R_32)
     reactions = (reaction(a, l2, "R", R_a2, P), reaction(l3, l2, "P", R_32, P, Mc_32, u),
@@ -62,6 +60,6 @@ def solve(g: RPR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
                f"link {l2}: ΣF_{l2} + R_{l3}{l2} + R_{ta} = 0"),
         first=((f"R_{l2}{l3}", -R_32),),
         polygons=(
-            Polygon((l3,), (*((f.label, f.F) for f in f3), (f"R_{l2}{l3}", -R_32)), ((f"R_{tb}", None, R_b3),)),
-            Polygon((l2,), (*((f.label, f.F) for f in f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
+            Polygon((l3,), (*d.known(f3), (f"R_{l2}{l3}", -R_32)), ((f"R_{tb}", None, R_b3),)),
+            Polygon((l2,), (*d.known(f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
     return GroupForces(reactions, plan)

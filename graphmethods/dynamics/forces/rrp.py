@@ -26,46 +26,42 @@ from graphmethods.dynamics.forces.base import (
     GroupForces,
     Kin,
     Polygon,
-    cross,
+    dyad_loads,
     moment_about,
     reaction,
-    resultant,
     solve2,
-    unit,
+    tangential,
+    tangential_step,
 )
 from graphmethods.kinematics.groups import RRP
 
 
 def solve(g: RRP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
     """Reactions of an RRP group (see the module docstring; parameters as :func:`..rrr.solve`)."""
-    l2, l3 = g.links
+    d = dyad_loads(g.links, kin, loads)
+    l2, l3, F2 = d.l2, d.l3, d.F2
     P, C = kin.z[g.P], kin.z[g.C]
     a, gl = carrier(g.P), g.guide.link
-    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
-    n = kin.n
-    u2 = unit(C - P)
     u = kin.direction(l3)
     nrm = 1j * u
-    t2dir = 1j * u2
-    Rt2 = -moment_about(f2, C) / cross(P - C, t2dir) * t2dir
-    F2, F3 = resultant(f2, n), resultant(f3, n)
-    x, N = solve2(u2, nrm, -(Rt2 + F2 + F3))
+    u2, Rt2 = tangential(d.f2, P, C)           # the rod's moments about C
+    x, N = solve2(u2, nrm, -(Rt2 + F2 + d.F3))
     Rn2, R_g3 = x * u2, N * nrm
     R_a2 = Rt2 + Rn2
     R_32 = -(R_a2 + F2)
-    M_g3 = -moment_about(f3, C)          # the slider about C: R_23 passes through C
+    M_g3 = -moment_about(d.f3, C)          # the slider about C: R_23 passes through C
     reactions = (reaction(a, l2, "R", R_a2, P), reaction(gl, l3, "P", R_g3, C, M_g3, u),
                  reaction(l3, l2, "R", R_32, C))
     ta, tg = f"{a}{l2}", f"{gl}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
-        steps=(f"link {l2}: ΣM_{g.C} = 0 gives R^τ_{ta} ⟂ {g.P}{g.C}",
+        steps=(tangential_step(l2, g.C, ta, g.P),
                f"plan: R^τ_{ta} + ΣF_{l2} + ΣF_{l3} + R_{tg} + R^n_{ta} = 0, R_{tg} ⟂ guide, R^n_{ta} ∥ {g.P}{g.C}",
-               f"link {l2}: R_{ta} + ΣF_{l2} + R_{l3}{l2} = 0",
+               d.link2_step(ta),
                f"link {l3}: ΣM_{g.C} = 0 gives the line of R_{tg} (h = M/N along the guide)"),
         first=((f"R^τ_{ta}", Rt2),),
         polygons=(
-            Polygon((l2, l3), ((f"R^τ_{ta}", Rt2), *((f.label, f.F) for f in f2), *((f.label, f.F) for f in f3)),
+            Polygon((l2, l3), ((f"R^τ_{ta}", Rt2), *d.known(d.f2), *d.known(d.f3)),
                     ((f"R_{tg}", nrm, R_g3), (f"R^n_{ta}", u2, Rn2))),
-            Polygon((l2,), ((f"R_{ta}", R_a2), *((f.label, f.F) for f in f2)), ((f"R_{l3}{l2}", None, R_32),))))
+            d.link2_polygon(ta, R_a2, R_32)))
     return GroupForces(reactions, plan)

@@ -27,13 +27,12 @@ from graphmethods.dynamics.forces.base import (
     GroupForces,
     Kin,
     Polygon,
-    cross,
-    moment_about,
+    dyad_loads,
     on_link,
     reaction,
-    resultant,
     solve2,
-    unit,
+    tangential,
+    tangential_step,
 )
 from graphmethods.kinematics.groups import RRR
 
@@ -52,18 +51,13 @@ def solve(g: RRR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
     carrier : callable
         The link that carries a known joint (``carrier("A") == "1"``).
     """
-    l2, l3 = g.links
+    d = dyad_loads(g.links, kin, loads)
+    l2, l3, F2 = d.l2, d.l3, d.F2
     P, Q, C = kin.z[g.P], kin.z[g.Q], kin.z[g.C]
     a, b = carrier(g.P), carrier(g.Q)
-    f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
-    n = kin.n
-    u2, u3 = unit(C - P), unit(C - Q)
-    t2dir, t3dir = 1j * u2, 1j * u3
-    # moments about C: (P − C) × R^τ + M_C = 0
-    Rt2 = -moment_about(f2, C) / cross(P - C, t2dir) * t2dir
-    Rt3 = -moment_about(f3, C) / cross(Q - C, t3dir) * t3dir
-    F2, F3 = resultant(f2, n), resultant(f3, n)
-    x, y = solve2(u2, u3, -(Rt2 + F2 + F3 + Rt3))
+    u2, Rt2 = tangential(d.f2, P, C)           # moments about C
+    u3, Rt3 = tangential(d.f3, Q, C)
+    x, y = solve2(u2, u3, -(Rt2 + F2 + d.F3 + Rt3))
     Rn2, Rn3 = x * u2, y * u3
     R_a2 = Rt2 + Rn2
     R_b3 = Rt3 + Rn3
@@ -72,16 +66,15 @@ def solve(g: RRR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Calla
     ta, tb = f"{a}{l2}", f"{b}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
-        steps=(f"link {l2}: ΣM_{g.C} = 0 gives R^τ_{ta} ⟂ {g.P}{g.C}",
-               f"link {l3}: ΣM_{g.C} = 0 gives R^τ_{tb} ⟂ {g.Q}{g.C}",
+        steps=(tangential_step(l2, g.C, ta, g.P),
+               tangential_step(l3, g.C, tb, g.Q),
                f"plan: R^τ_{ta} + ΣF_{l2} + ΣF_{l3} + R^τ_{tb} + R^n_{tb} + R^n_{ta} = 0, R^n ∥ the links",
-               f"link {l2}: R_{ta} + ΣF_{l2} + R_{l3}{l2} = 0"),
+               d.link2_step(ta)),
         first=((f"R^τ_{ta}", Rt2), (f"R^τ_{tb}", Rt3)),
         polygons=(
-            Polygon((l2, l3), ((f"R^τ_{ta}", Rt2), *((f.label, f.F) for f in f2), *((f.label, f.F) for f in f3),
-                               (f"R^τ_{tb}", Rt3)),
+            Polygon((l2, l3), ((f"R^τ_{ta}", Rt2), *d.known(d.f2), *d.known(d.f3), (f"R^τ_{tb}", Rt3)),
                     ((f"R^n_{tb}", u3, Rn3), (f"R^n_{ta}", u2, Rn2))),
-            Polygon((l2,), ((f"R_{ta}", R_a2), *((f.label, f.F) for f in f2)), ((f"R_{l3}{l2}", None, R_32),))))
+            d.link2_polygon(ta, R_a2, R_32)))
     return GroupForces(reactions, plan)
 
 

@@ -251,9 +251,7 @@ def _symbol_markup(symbol: str) -> str:
 
 def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     """The student's page (``key`` false) or the answer key of a variant."""
-    sh = Sheet(v, nt, key)
-    nt = sh.nt
-    sh.header()
+    sh, nt = Sheet.begin(v, nt, key)
     s_l = Scale(nt.sym("worksheets.mu_l"), nt.unit("m"), v.mu_l)
     s_a = Scale("μ_a", nt.unit("(m/s²)"), v.mu_a)
     m = value_unit

@@ -79,6 +79,13 @@ class Sheet:
         self.els: list[Element] = []
         self.y = 35.0
 
+    @classmethod
+    def begin(cls, v: Variant, nt, key: bool) -> tuple[Sheet, Notation]:
+        """A new page of variant ``v`` with its header written, and the notation it is in."""
+        sh = cls(v, nt, key)
+        sh.header()
+        return sh, sh.nt
+
     def add(self, *els):
         self.els.extend(els)
 
@@ -241,9 +248,7 @@ def format_tick(v: float, decimal: str) -> str:
 def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     from graphmethods.sheets.layout import Occupancy
 
-    sh = Sheet(v, nt, key)
-    nt = sh.nt
-    sh.header()
+    sh, nt = Sheet.begin(v, nt, key)
     c, f = v.excess_work, v.flywheel
     s_M = Scale(nt.sym("mu_M"), nt.unit("N·m"), v.mu_M)
     s_phi = Scale(nt.sym("mu_phi"), nt.unit("rad"), v.mu_phi)
@@ -328,9 +333,7 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     from graphmethods.scene.elements import Frame
     from graphmethods.sheets.layout import Occupancy
 
-    sh = Sheet(v, nt, key)
-    nt = sh.nt
-    sh.header()
+    sh, nt = Sheet.begin(v, nt, key)
     c, f = v.excess_work, v.flywheel
     s_M = Scale(nt.sym("mu_M"), nt.unit("N·m"), v.mu_M)
     s_phi = Scale(nt.sym("mu_phi"), nt.unit("rad"), v.mu_phi, alt_per_mm=v.mu_phi_deg, alt_unit="°")
@@ -416,9 +419,7 @@ def _plan_layout(v: PlanVariant, top: float, H: float):
 def _plan_page(v: PlanVariant, nt, key: bool) -> Scene:
     from graphmethods.sheets.layout import Occupancy
 
-    sh = Sheet(v, nt, key)
-    nt = sh.nt
-    sh.header()
+    sh, nt = Sheet.begin(v, nt, key)
     s_l = Scale(nt.sym("worksheets.mu_l"), nt.unit("m"), v.mu_l)
     s_v = Scale(nt.sym("dynamics.mu_v"), nt.unit("(m/s)"), v.mu_v)
     sh.statement(dict(mu_l=s_l.caption(nt), mu_v=s_v.caption(nt), phi=f"{nt.number(v.phi_deg)}°",
@@ -484,9 +485,7 @@ def _em_layout(v: EnergyMassVariant, top: float, H: float):
 
 def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
 
-    sh = Sheet(v, nt, key)
-    nt = sh.nt
-    sh.header()
+    sh, nt = Sheet.begin(v, nt, key)
     p = v.press
     J_e_sym, dT = nt.sym("dynamics.J_e"), nt.sym("E") if nt.code == "ru" else "ΔT"
     s_J = Scale(nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), v.mu_J)
