@@ -114,34 +114,43 @@ class RRP(Group):
     def velocities(self, st: State) -> None:
         G, u, wg, _ = self.guide.line(st)
         vG, _ = self.guide.kinematics(st)
-        C = st.z[self.C]
-        s = st.relative[self._name()]["s"]
-        rP = C - st.z[self.P]
+        name = self._name()
+        s = st.relative[name]["s"]
+        rP = st.z[self.C] - st.z[self.P]
+        nP = -1j * rP
+        turning = 1j * wg * s * u                       # the guide's point under C turning with its link
         # v_G + iω_g·s·u + ṡ·u = v_P + ω·i·rP
-        sd, w, det = solve2(u, -1j * rP, st.v[self.P] - vG - 1j * wg * s * u)
+        sd, w, det = solve2(u, nP, st.v[self.P] - vG - turning)
         self.check_det(st, det, f"the rod {self.P}{self.C} stands perpendicular to the guide")
-        st.conditioning[self._name()] = np.abs(det) / self.l
+        st.conditioning[name] = np.abs(det) / self.l
         st.omega[self.links[0]] = w
         st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else st.omega[self.guide.link]
-        v_guide = vG + 1j * wg * s * u
-        st.v[self.C] = v_guide + sd * u              # exactly along a guide of the frame
-        st.relative[self._name()].update({"s_dot": sd, "v_rel": sd * u, "v_guide": v_guide})
+        v_guide = vG + turning
+        v_rel = sd * u
+        st.v[self.C] = v_guide + v_rel              # exactly along a guide of the frame
+        st.relative[name].update({"s_dot": sd, "v_rel": v_rel, "v_guide": v_guide})
+        st.keep(name, (rP, nP, det))
 
     def accelerations(self, st: State) -> None:
         G, u, wg, eg = self.guide.line(st)
         _, aG = self.guide.kinematics(st)
-        C = st.z[self.C]
-        rel = st.relative[self._name()]
+        name = self._name()
+        rel = st.relative[name]
         s, sd = rel["s"], rel["s_dot"]
-        rP = C - st.z[self.P]
+        kept = st.kept.pop(name, None)
+        if kept is None:
+            rP = st.z[self.C] - st.z[self.P]
+            kept = (rP, -1j * rP, None)
+        rP, nP, det = kept
         w = st.omega[self.links[0]]
         a_guide = aG + (1j * eg - wg * wg) * s * u          # the guide's point under C
         a_k = 2j * wg * sd * u                              # Coriolis, 2ω_g × v_rel
-        sdd, e, _ = solve2(u, -1j * rP, st.a[self.P] - w * w * rP - a_guide - a_k)
+        sdd, e, _ = solve2(u, nP, st.a[self.P] - w * w * rP - a_guide - a_k, det)
         st.epsilon[self.links[0]] = e
         st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else st.epsilon[self.guide.link]
-        st.a[self.C] = a_guide + a_k + sdd * u
-        rel.update({"s_ddot": sdd, "a_rel": sdd * u, "a_coriolis": a_k, "a_guide": a_guide})
+        a_rel = sdd * u
+        st.a[self.C] = a_guide + a_k + a_rel
+        rel.update({"s_ddot": sdd, "a_rel": a_rel, "a_coriolis": a_k, "a_guide": a_guide})
 
     def records(self, st: State) -> tuple[Record, ...]:
         P, C = self.P, self.C
