@@ -479,14 +479,28 @@ class Linkage:
             else:
                 step.positions(st)
         if level >= 1:
-            st.omega[cr.link] = _constant(Om, n)
+            st.omega[cr.link] = self._kept_constant(Om, n)
             st.v[cr.pin] = 1j * Om * cr.r * e
             self._velocities(st)
         if level >= 2:
-            st.epsilon[cr.link] = _constant(Ep, n)
+            st.epsilon[cr.link] = self._kept_constant(Ep, n)
             st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
             self._accelerations(st)
         return st
+
+    def _kept_constant(self, value: float, n: int) -> np.ndarray:
+        """The crank's ω or ε at every position (see :func:`_constant`), kept for up to 16 (value, n)
+        below :data:`SHARED_FROM`, as a course asks for the same crank speed again and again."""
+        if n >= SHARED_FROM:
+            return _constant(value, n)
+        kept: dict[tuple[int, str], np.ndarray] = self._cache.setdefault("constants", {})
+        key = (n, value.hex())                      # the exact value: −0.0 is not 0.0
+        a = kept.get(key)
+        if a is None:
+            if len(kept) >= 16:
+                kept.clear()
+            a = kept[key] = _constant(value, n)
+        return a
 
     def _fixed(self, n: int) -> tuple[dict[str, np.ndarray], np.ndarray]:
         """The fixed joints' positions and their zero velocity as read-only arrays (n,) (see
