@@ -21,7 +21,9 @@ the centre, a^τ ⟂ the link.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -70,13 +72,21 @@ class RRR(Group):
     def joints(self) -> Joints:
         return Joints(known=(self.P, self.Q), found=(self.C,))
 
+    @functools.cached_property
+    def _k(self) -> tuple[Any, ...]:
+        """The group's numbers as 0-d arrays: l_PC, l_QC, l_PC + l_QC, l_PC² − l_QC², 2, i·branch. Numpy
+        takes a 0-d array as an operand faster than a Python number (about 0.3 µs a call); the values,
+        and so the results, are the same to the bit."""
+        l1, l2 = self.l_PC, self.l_QC
+        return tuple(np.array(x) for x in (l1, l2, l1 + l2, l1 * l1 - l2 * l2, 2.0, 1j * self.branch))
+
     def _heron(self, st: State) -> tuple[ComplexArray, ComplexArray, FloatArray, FloatArray]:
         P, Q = st.z[self.P], st.z[self.Q]
         D = Q - P
         d = np.abs(D)
-        l1, l2 = self.l_PC, self.l_QC
+        l1, l2, l12 = self._k[:3]
         d_l1 = d + l1
-        prod = (l1 + l2 - d) * (d + l2 - l1) * (d_l1 - l2) * (d_l1 + l2)
+        prod = (l12 - d) * (d + l2 - l1) * (d_l1 - l2) * (d_l1 + l2)
         return P, D, d, prod
 
     def margin(self, st: State) -> FloatArray:
@@ -107,12 +117,12 @@ class RRR(Group):
 
     def _place(self, st: State, P: ComplexArray, D: ComplexArray, d: FloatArray, prod: FloatArray) -> None:
         """C from Heron's ``prod`` (≥ 0 at every position: the caller clips it)."""
-        l1, l2 = self.l_PC, self.l_QC
-        d2 = 2.0 * d
+        l1, l2, _, sq, two, ib = self._k
+        d2 = two * d
         h = np.sqrt(prod) / d2
-        a = (l1 * l1 - l2 * l2 + d * d) / d2
+        a = (sq + d * d) / d2
         e = D / d
-        C = P + (a + 1j * self.branch * h) * e
+        C = P + (a + ib * h) * e
         st.z[self.C] = C
         st.e[self.links[0]] = (C - P) / l1
         st.e[self.links[1]] = (C - st.z[self.Q]) / l2
