@@ -181,6 +181,7 @@ class RRP(Group):
         a_guide = aG + turn_a * s * u                       # the guide's point under C
         a_k = cor * sd * u                                  # Coriolis, 2ω_g × v_rel
         sdd, e, _ = solve2(u, nP, st.a[self.P] - w * w * rP - a_guide - a_k, det)
+        del kept, rP, nP, det                           # not held meanwhile (peak memory at 10⁶ positions)
         st.epsilon[self.links[0]] = e
         st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else st.epsilon[self.guide.link]
         a_rel = sdd * u
