@@ -19,6 +19,7 @@ point O of it is ``v_O + 1j*omega*(X - O)`` and its acceleration
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -31,6 +32,12 @@ from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 
 GROUND = "0"
+
+#: Below this many positions a group keeps what its velocity solution found (its arms and the two
+#: construction lines with their cross product) in :attr:`State.kept` for its acceleration
+#: solution, which uses the same lines; from here up it computes them again, so that they take no
+#: memory meanwhile (the same value as ``kinematics.linkage.SHARED_FROM``).
+KEEP_BELOW = 4096
 
 #: a plane vector over the positions, or one for all of them (a guide on the frame: it broadcasts)
 Vec = ComplexArray | complex
@@ -94,12 +101,16 @@ def dot(a: Vec, b: Vec) -> FloatArray:
     return out
 
 
-def solve2(e1: Vec, e2: Vec, rhs: Vec) -> tuple[FloatArray, FloatArray, FloatArray]:
+def solve2(e1: Vec, e2: Vec, rhs: Vec, det: FloatArray | None = None) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Real x, y with ``x·e1 + y·e2 = rhs`` (complex plane vectors, vectorised).
 
     Returns ``(x, y, det)`` with ``det = e1 × e2``; where det is 0 the values are not finite
-    (callers check ``det`` first).
+    (callers check ``det`` first). A ``det`` given is that of the same ``e1``, ``e2``, already
+    checked to be nonzero at every position (the acceleration plan's lines are the velocity
+    plan's): it is used as it is.
     """
+    if det is not None:
+        return cross(rhs, e2) / det, cross(e1, rhs) / det, det
     det = np.asarray(cross(e1, e2))
     if np.count_nonzero(det) == det.size:         # every position solvable (as det.all(), without its wrapper)
         return cross(rhs, e2) / det, cross(e1, rhs) / det, det
@@ -176,6 +187,9 @@ class State:
         Coriolis terms) as complex arrays.
     conditioning : dict group name -> ndarray (n,)
         |sin| of the angle between the two construction lines of the group's plan.
+    kept : dict group name -> tuple
+        What a group's velocity solution leaves for its acceleration solution (below
+        :data:`KEEP_BELOW` positions); the acceleration solution takes it out.
     """
 
     phi: FloatArray
@@ -190,6 +204,12 @@ class State:
     relative: dict[str, Sliding] = field(default_factory=dict)
     conditioning: dict[str, FloatArray] = field(default_factory=dict)
     kinematic: bool = True
+    kept: dict[str, tuple[Any, ...]] = field(default_factory=dict, repr=False)
+
+    def keep(self, group: str, values: tuple[Any, ...]) -> None:
+        """Keep a group's intermediate ``values`` for its next step (below :data:`KEEP_BELOW` positions)."""
+        if self.phi.shape[0] < KEEP_BELOW:
+            self.kept[group] = values
 
     @property
     def zeros(self) -> FloatArray:
@@ -238,11 +258,16 @@ class Guide:
     through: str | complex
     angle: float = 0.0
 
+    @functools.cached_property
+    def turn(self) -> complex:
+        """The guide's direction in the frame of its link, e^(i·angle)."""
+        return complex(math.cos(self.angle), math.sin(self.angle))
+
     def line(self, st: State) -> tuple[Vec, Vec, Real, Real]:
         """(G, u, omega, epsilon): a point of the line, its unit direction, and the turning of the
         link that carries it (zeros for the frame), each over the positions."""
         G = st.z[self.through] if isinstance(self.through, str) else complex(self.through)
-        turn = complex(math.cos(self.angle), math.sin(self.angle))
+        turn = self.turn
         if self.link == GROUND:
             return G, turn, 0.0, 0.0          # scalars: they broadcast over the positions
         return G, st.e[self.link] * turn, st.omega.get(self.link, 0.0), st.epsilon.get(self.link, 0.0)

@@ -25,7 +25,9 @@ term a^k = 2·ω_guide × v_rel (zero on the frame) and a^r ∥ the guide.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -35,6 +37,7 @@ from graphmethods.kinematics.groups.base import (
     Guide,
     Joints,
     Pair,
+    Real,
     Record,
     State,
     Vec,
@@ -87,8 +90,31 @@ class RRP(Group):
     def joints(self) -> Joints:
         return Joints(known=(self.P,), found=(self.C,), guides=(self.guide,))
 
+    @functools.cached_property
+    def _k(self) -> tuple[Any, ...]:
+        """The group's numbers as 0-d arrays: l, l·(1 + 1e-15), the branch, 0. Numpy takes a 0-d array
+        as an operand faster than a Python number (about 0.3 µs a call); the values, and so the results,
+        are the same to the bit."""
+        return tuple(np.array(x) for x in (float(self.l), self.l * (1.0 + 1e-15), float(self.branch), 0.0))
+
+    @functools.cached_property
+    def _frame(self) -> tuple[Any, ...] | None:
+        """On a guide of the frame through given coordinates: its point G, direction u, the velocity and
+        acceleration of G (0), and the factors i·ω_g, i·ε_g − ω_g², 2i·ω_g (0) as 0-d arrays (see
+        :attr:`_k`); else None."""
+        if self.guide.link != GROUND or isinstance(self.guide.through, str):
+            return None
+        w = 0.0
+        return tuple(np.array(x) for x in (complex(self.guide.through), self.guide.turn, 0j, 0j, 1j * w,
+                                           1j * w - w * w, 2j * w))
+
+    def _line(self, st: State) -> tuple[Vec, Vec, Real, Real]:
+        """:meth:`Guide.line`, on the frame as 0-d arrays."""
+        fr = self._frame
+        return self.guide.line(st) if fr is None else (fr[0], fr[1], 0.0, 0.0)
+
     def _geometry(self, st: State) -> tuple[Vec, Vec, ComplexArray, FloatArray]:
-        G, u, _, _ = self.guide.line(st)
+        G, u, _, _ = self._line(st)
         R = st.z[self.P] - G
         h = cross(u, R)
         return G, u, R, h
@@ -99,49 +125,68 @@ class RRP(Group):
 
     def positions(self, st: State) -> None:
         G, u, R, h = self._geometry(st)
-        l = self.l
-        bad = np.abs(h) > l * (1.0 + 1e-15)
+        l, lim, branch, zero = self._k
+        bad = np.abs(h) > lim
         self.fail(st, bad, lambda i: f"{self.P} is {fmt(abs(h[i]))} m from the guide of {self.C}, farther than "
-                                     f"{self.P}{self.C} = {fmt(l)} m")
-        w = np.sqrt(np.maximum((l - h) * (l + h), 0.0))
-        s = dot(u, R) + self.branch * w
+                                     f"{self.P}{self.C} = {fmt(self.l)} m")
+        w = np.sqrt(np.maximum((l - h) * (l + h), zero))
+        s = dot(u, R) + branch * w
         C = G + s * u
         st.z[self.C] = C
         st.relative[self._name()] = {"s": s}
         st.e[self.links[0]] = (C - st.z[self.P]) / l
-        st.e[self.links[1]] = u                       # a scalar on the frame: it broadcasts
+        st.e[self.links[1]] = self.guide.line(st)[1] if self._frame is None else self.guide.turn  # broadcasts
+
+    def _guide_motion(self, st: State) -> tuple[Vec, Vec, Any, Any, Any]:
+        """(v_G, a_G, i·ω_g, i·ε_g − ω_g², 2i·ω_g) of the guide (see :attr:`_frame`)."""
+        fr = self._frame
+        if fr is not None:
+            return fr[2], fr[3], fr[4], fr[5], fr[6]
+        _, _, wg, eg = self.guide.line(st)
+        vG, aG = self.guide.kinematics(st)
+        return vG, aG, 1j * wg, 1j * eg - wg * wg, 2j * wg
 
     def velocities(self, st: State) -> None:
-        G, u, wg, _ = self.guide.line(st)
-        vG, _ = self.guide.kinematics(st)
-        C = st.z[self.C]
-        s = st.relative[self._name()]["s"]
-        rP = C - st.z[self.P]
+        _, u, _, _ = self._line(st)
+        vG, _, iwg, _, _ = self._guide_motion(st)
+        name = self._name()
+        s = st.relative[name]["s"]
+        rP = st.z[self.C] - st.z[self.P]
+        nP = -1j * rP
+        turning = iwg * s * u                           # the guide's point under C turning with its link
         # v_G + iω_g·s·u + ṡ·u = v_P + ω·i·rP
-        sd, w, det = solve2(u, -1j * rP, st.v[self.P] - vG - 1j * wg * s * u)
+        sd, w, det = solve2(u, nP, st.v[self.P] - vG - turning)
         self.check_det(st, det, f"the rod {self.P}{self.C} stands perpendicular to the guide")
-        st.conditioning[self._name()] = np.abs(det) / self.l
+        st.conditioning[name] = np.abs(det) / self._k[0]
         st.omega[self.links[0]] = w
         st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else st.omega[self.guide.link]
-        v_guide = vG + 1j * wg * s * u
-        st.v[self.C] = v_guide + sd * u              # exactly along a guide of the frame
-        st.relative[self._name()].update({"s_dot": sd, "v_rel": sd * u, "v_guide": v_guide})
+        v_guide = vG + turning
+        v_rel = sd * u
+        st.v[self.C] = v_guide + v_rel              # exactly along a guide of the frame
+        st.relative[name].update({"s_dot": sd, "v_rel": v_rel, "v_guide": v_guide})
+        st.keep(name, (rP, nP, det))
 
     def accelerations(self, st: State) -> None:
-        G, u, wg, eg = self.guide.line(st)
-        _, aG = self.guide.kinematics(st)
-        C = st.z[self.C]
-        rel = st.relative[self._name()]
+        _, u, _, _ = self._line(st)
+        _, aG, _, turn_a, cor = self._guide_motion(st)
+        name = self._name()
+        rel = st.relative[name]
         s, sd = rel["s"], rel["s_dot"]
-        rP = C - st.z[self.P]
+        kept = st.kept.pop(name, None)
+        if kept is None:
+            rP = st.z[self.C] - st.z[self.P]
+            kept = (rP, -1j * rP, None)
+        rP, nP, det = kept
         w = st.omega[self.links[0]]
-        a_guide = aG + (1j * eg - wg * wg) * s * u          # the guide's point under C
-        a_k = 2j * wg * sd * u                              # Coriolis, 2ω_g × v_rel
-        sdd, e, _ = solve2(u, -1j * rP, st.a[self.P] - w * w * rP - a_guide - a_k)
+        a_guide = aG + turn_a * s * u                       # the guide's point under C
+        a_k = cor * sd * u                                  # Coriolis, 2ω_g × v_rel
+        sdd, e, _ = solve2(u, nP, st.a[self.P] - w * w * rP - a_guide - a_k, det)
+        del kept, rP, nP, det                           # not held meanwhile (peak memory at 10⁶ positions)
         st.epsilon[self.links[0]] = e
         st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else st.epsilon[self.guide.link]
-        st.a[self.C] = a_guide + a_k + sdd * u
-        rel.update({"s_ddot": sdd, "a_rel": sdd * u, "a_coriolis": a_k, "a_guide": a_guide})
+        a_rel = sdd * u
+        st.a[self.C] = a_guide + a_k + a_rel
+        rel.update({"s_ddot": sdd, "a_rel": a_rel, "a_coriolis": a_k, "a_guide": a_guide})
 
     def records(self, st: State) -> tuple[Record, ...]:
         P, C = self.P, self.C
