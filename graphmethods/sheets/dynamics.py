@@ -60,6 +60,7 @@ from graphmethods.scene import (
 )
 from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
 from graphmethods.sheets.layout import TEXT_MM, Box, clear_tick_labels, given_angle_scale, given_scale, problem_title
@@ -111,7 +112,7 @@ class DownAxis(Axis):
                  Polygon(((tx, ty), (tx - 0.55, ty - 3.0), (tx + 0.55, ty - 3.0)))]
         labels = self.tick_labels
         if labels is None:
-            labels = tuple(format_number(v, self.decimal) for v in self.ticks)
+            labels = tuple(format_value(v, decimal=self.decimal) for v in self.ticks)
         for v, text in zip(self.ticks, labels):
             x, y = self.pos(v)
             prims.append(Path(((x - self.tick_mm, y), (x, y)), AXIS))
@@ -122,12 +123,6 @@ class DownAxis(Axis):
             prims.append(make_label((tx, ty + 1.0), self.label, size_mm=self.size_mm + 0.5, anchor="middle",
                                     valign="top"))
         return tuple(prims)
-
-
-def format_number(v: float, decimal: str = ".") -> str:
-    from graphmethods.scene.numbers import format_value
-
-    return format_value(v, decimal=decimal)
 
 
 def position_labels(m: int, spacing_mm: float, *, min_gap_mm: float = 5.0) -> tuple[str, ...]:

@@ -74,7 +74,7 @@ from graphmethods.sheets.worksheets.elements import (
     slider,
     wrap,
 )
-from graphmethods.sheets.worksheets.pages import format_tick, key_page, student_page
+from graphmethods.sheets.worksheets.pages import key_page, student_page
 from graphmethods.sheets.worksheets.texts import STATEMENTS, TITLES, value_unit
 from graphmethods.sheets.worksheets.variants import (
     KINDS,
@@ -100,7 +100,7 @@ __all__ = [
     "KINDS", "PROBLEM_FORMAT", "RED", "SEGMENTS", "STATEMENTS", "TITLES", "ColorText", "EnergyMassVariant",
     "Grid", "IndicatorVariant", "PlanVariant", "Shapes", "StepMomentVariant", "Variant", "Worksheet",
     "acceleration_plan", "answers", "arc", "clip_ray", "contents", "dxf_names", "energy_mass_construction",
-    "energy_mass_from_press", "existing_outputs", "extremes", "file_names", "format_tick", "ground", "key_page",
+    "energy_mass_from_press", "existing_outputs", "extremes", "file_names", "ground", "key_page",
     "markup", "moment_regions", "output_names", "parse_id", "pin", "region_perimeters_mm",
     "register", "slider", "slider_crank_scheme", "staircase", "student_page",
     "value_unit", "variant", "variant_from_dict", "variants", "velocity_plan", "worksheet", "wrap",

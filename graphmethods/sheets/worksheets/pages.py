@@ -239,12 +239,6 @@ def _clear_tick_labels(axis: Axis, points) -> Axis:
     occ.add_line(points)
     return clear_tick_labels(axis, occ)
 
-def format_tick(v: float, decimal: str) -> str:
-    from graphmethods.scene import format_value
-
-    return format_value(v, decimal=decimal)
-
-
 def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     from graphmethods.sheets.layout import Occupancy
 
