@@ -352,8 +352,7 @@ def read_bytes(path: str | os.PathLike[str], *, missing: str = "no such file", p
     cap = MAX_INPUT_BYTES if limit is None else limit
     input_file(path, missing=missing, prefix=prefix, limit=cap)
     try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))     # a file swapped for a FIFO: no block
-        with os.fdopen(fd, "rb") as fh:
+        with open(path, "rb") as fh:
             data = fh.read(cap + 1)
     except FileNotFoundError:
         raise InputError(f"{prefix}{path}: {missing}") from None

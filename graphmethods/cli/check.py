@@ -67,6 +67,10 @@ def run(args) -> int:
     from graphmethods.sheets.check import check
 
     is_drawing = pathlib.Path(args.answers).suffix.lower() in (".dxf", ".svg")
+    if args.overlay:
+        from graphmethods.render.files import not_an_input
+
+        not_an_input(args.overlay, args.answers, args.problem, what="--overlay")
     report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
     if args.overlay:
         path = pathlib.Path(args.overlay)

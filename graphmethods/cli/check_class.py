@@ -92,8 +92,10 @@ def run(args) -> int:
             more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
             raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
-    write_set(out, {str(path.relative_to(out)): data for path, data in blobs.items()}, overwrite=args.force,
-              what="class report folder")
+    names = {str(path.relative_to(out)): data for path, data in blobs.items()}
+    # --force replaces the report whole: reports and overlays of students no longer in the folder go
+    stale = [str(p.relative_to(out)) for p in sorted((out / "students").glob("*")) if p.is_file()] if args.force else []
+    write_set(out, names, overwrite=args.force, stale=stale, what="class report folder")
     print(f"{report.summary()}; wrote {fixed[0]}, {fixed[1].name}, {fixed[2].name} and {len(blobs) - 3} files in "
           f"{out / 'students'}")
     return report.exit_status()
