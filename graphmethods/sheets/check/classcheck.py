@@ -151,8 +151,8 @@ class ClassReport:
         """The table as CSV (``sep``-separated, quoted where needed), every text cell that a spreadsheet would
         take for a formula (``=``, ``+``, ``-``, ``@`` first) prefixed with ``'``.
 
-        >>> safe_cell("=HYPERLINK(\"http://x\")"), safe_cell("-3"), safe_cell("ok")
-        ('\'=HYPERLINK("http://x")', '-3', 'ok')
+        >>> safe_cell("=HYPERLINK(1)"), safe_cell("-3"), safe_cell("ok")
+        ("'=HYPERLINK(1)", '-3', 'ok')
         """
         buf = io.StringIO()
         csv.writer(buf, delimiter=sep, lineterminator="\r\n").writerows(

@@ -10,7 +10,7 @@ Markdown is CommonMark: a blank line before and after every list and table, so t
 
 >>> from graphmethods.sheets.check import check
 >>> rep = check("W1", {"energy_indicator": {"mu_E": 5.0, "arrows_mm": [-10, 110, 20, 25, -100, 5, -10]}})
->>> [line for line in report_text(rep, "ru").splitlines() if line.startswith("вектор c–d")][0].split("  ")[-1]
+>>> [line for line in report_text(rep, "ru").splitlines() if line.startswith("вектор c–d")][0].split("  ")[-1].strip()
 'неверно: перепутан знак избыточной работы'
 """
 
