@@ -198,7 +198,7 @@ def count(value: object, name: str, *, low: int, high: int, why: str = "") -> in
         raise InputError(f"{name} = {value!r} must be {limit}")
     if isinstance(value, str):
         s = value.strip()
-        if not s.lstrip("+-").isdigit() or len(s) > 30:
+        if not (s.lstrip("+-").isdigit() and s.isascii()) or len(s) > 30:     # "²" is a digit, no number
             raise InputError(f"{name} = {_shown(value)} must be {limit}")
         value = int(s)
     if isinstance(value, Integral):

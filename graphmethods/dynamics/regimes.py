@@ -349,6 +349,7 @@ def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: B
     return phi_0
 
 
+@np.errstate(over="ignore", invalid="ignore")     # an overflowing trial stage is rejected, not reported by numpy
 def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, drive_off_at: float | None = None,
         brake: Brake | None = None, extra: Extra | None = None, phi_0: float | None = None, omega_0: float = 0.0,
         t_0: float = 0.0, t_end: float | None = None, turns: float | None = None, until_steady: bool = False,
@@ -428,6 +429,8 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
 
     def rhs(t: float, y: FloatArray) -> FloatArray:
         phi, omega = y[0], y[1]
+        if not (math.isfinite(phi) and math.isfinite(omega) and abs(omega) < 1e150):
+            return np.full(4, math.nan)       # a trial stage that overflowed: the step is rejected and shortened
         p = np.array([phi])
         J = J_F + float(J_e(p)[0])
         if not J > 0:

@@ -100,7 +100,7 @@ class _Reader:
         return raw
 
     def link(self, key: str, raw: Json) -> str:
-        if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not str(raw).isdigit():
+        if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not (str(raw).isdigit() and str(raw).isascii()):
             self.err(key, f"must be a link number (0 = frame, 1 = crank, 2, ...); got {raw!r}")
         return str(int(raw))
 

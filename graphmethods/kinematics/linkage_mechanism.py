@@ -96,7 +96,7 @@ class LinkageMechanism(Mechanism):
         self.link_joints = MappingProxyType(joints)
         self._translating = frozenset(k for k in names if self._slides_on_frame(k))
         self.link_numbers = MappingProxyType({int(k): v for k, v in names.items()
-                                              if k.isdigit() and k not in self._translating})
+                                              if k.isdigit() and k.isascii() and k not in self._translating})
         self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
                             if p.name not in driving)
 
