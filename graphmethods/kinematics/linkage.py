@@ -239,6 +239,10 @@ class Motion:
         return self.linkage._output_psi(self)
 
 
+#: Most Assur groups a linkage may have (textbook mechanisms: one to five; each group's checks cost a solve)
+MAX_GROUPS = 64
+
+
 class Linkage:
     """A planar linkage: fixed joints, a crank, class-II groups in solving order, extra points.
 
@@ -274,6 +278,9 @@ class Linkage:
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
             raise InputError(f"{name}: working_stroke must be slow, fast, toward_crank or away_from_crank; "
                              f"got {working_stroke!r}")
+        if len(groups) > MAX_GROUPS:
+            raise InputError(f"{name}: {len(groups)} Assur groups; at most {MAX_GROUPS} are accepted (MAX_GROUPS: a "
+                             f"machine of the course has two to five)")
         self.name = name
         self._start = float(_norm(start))
         self.sense = int(sense)
@@ -672,28 +679,33 @@ class Linkage:
             return
         phi = np.linspace(0.0, TWO_PI, samples, endpoint=False)
         st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
-        for g in self.groups:
-            mg = g.margin(st)
-            scale = float(np.max(np.abs(mg))) or 1.0
-            i = int(np.argmin(mg))
-            # refine the smallest margin between its neighbours (golden section)
-            lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
-            def f(x: float, g: Group = g) -> float:
-                return float(g.margin(self.solve(np.array([x]), level=0))[0])
+        groups = list(self.groups)
+        margins = [g.margin(st) for g in groups]
+        scale = np.array([float(np.max(np.abs(mg))) or 1.0 for mg in margins])
+        i = np.array([int(np.argmin(mg)) for mg in margins])
+        # refine each group's smallest margin between its neighbours (golden section), every group at once:
+        # one solve per step at the groups' own angles (linear in the groups, not quadratic)
+        lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
+        k = np.arange(len(groups))
 
-            gr = (math.sqrt(5) - 1) / 2
-            for _ in range(80):
-                a = hi - gr * (hi - lo)
-                b = lo + gr * (hi - lo)
-                if f(a) < f(b):
-                    hi = b
-                else:
-                    lo = a
-            x = 0.5 * (lo + hi)
-            if f(x) <= 1e-12 * scale:
-                raise AssemblyError(f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x) % 360:.6g}° "
-                                    f"(its links come in line): the crank cannot turn through it on one branch, "
-                                    f"the assembly would jump; change the lengths or study the range with phi=")
+        def f(x: np.ndarray) -> np.ndarray:
+            s_x = self.solve(x, level=0)
+            return np.array([g.margin(s_x)[j] for j, g in zip(k, groups)], dtype=float)
+
+        gr = (math.sqrt(5) - 1) / 2
+        for _ in range(80):
+            a = hi - gr * (hi - lo)
+            b = lo + gr * (hi - lo)
+            left = f(a) < f(b)
+            hi = np.where(left, b, hi)
+            lo = np.where(left, lo, a)
+        x = 0.5 * (lo + hi)
+        for j, (g, m_x) in enumerate(zip(groups, f(x))):
+            if m_x <= 1e-12 * scale[j]:
+                raise AssemblyError(f"{self.name}: group {g.name} reaches a toggle at φ = "
+                                    f"{math.degrees(x[j]) % 360:.6g}° (its links come in line): the crank cannot "
+                                    f"turn through it on one branch, the assembly would jump; change the lengths or "
+                                    f"study the range with phi=")
         self._cache["full_turn"] = True
 
     def _out_value(self, st: State) -> tuple[Any, Any, Any]:
