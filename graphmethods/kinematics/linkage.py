@@ -42,6 +42,7 @@ import numpy.typing as npt
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, fmt
 from graphmethods.kinematics.positions import Strokes, at_extremes
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count, real
 
 TWO_PI = 2.0 * math.pi
 
@@ -566,7 +567,7 @@ class Linkage:
             m = 12 if m is None else m
             if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
                 raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
+            m = count(m, "the number of positions m", low=3, high=MAX_POSITIONS_COMPUTED)
             self.check_full_turn()
             labels = np.arange(m + 1)
             tr = (TWO_PI / m) * labels
@@ -635,9 +636,10 @@ class Linkage:
         (13, 12, True, 0.0)
         """
         for nm, val, pos in (("omega_1", omega_1, True), ("epsilon_1", epsilon_1, False)):
-            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)) \
-                    or not math.isfinite(val) or (pos and val <= 0):
+            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)):
                 raise InputError(f"{nm} must be a finite number{' > 0 (rad/s)' if pos else ' (rad/s²)'}, got {val!r}")
+            real(val, nm, unit="rad/s" if pos else "rad/s²", lo=0.0 if pos else None, lo_open=pos)   # 1e100 policy
+        omega_1, epsilon_1 = float(omega_1), float(epsilon_1)
         if (m is not None) + (phi is not None) + (phi_from_start is not None) > 1:
             raise InputError("give only one of m, phi or phi_from_start")
         strokes = self.strokes()
