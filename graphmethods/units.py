@@ -305,6 +305,9 @@ def check_text(value: str, name: str) -> str:
         value.encode("utf-8")
     except UnicodeEncodeError as exc:
         bad = value[exc.start]
+        if "\udc80" <= bad <= "\udcff":     # a byte of a command line or file name that is not UTF-8
+            raise InputError(f"{name}: the text holds the byte 0x{ord(bad) - 0xDC00:02x}, which is not UTF-8 (at "
+                             f"position {exc.start}); write it in UTF-8") from None
         raise InputError(f"{name}: the text holds {bad!a}, half of a UTF-16 surrogate pair and not a character "
                          f"(at position {exc.start}); write the character itself") from None
     return value
