@@ -642,6 +642,8 @@ class Linkage:
         omega_1, epsilon_1 = float(omega_1), float(epsilon_1)
         if (m is not None) + (phi is not None) + (phi_from_start is not None) > 1:
             raise InputError("give only one of m, phi or phi_from_start")
+        if m is not None and (isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3):
+            raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")   # before it is a key
         strokes = self.strokes()
         ang, tr, labels, extreme = self._grid(m, phi, phi_from_start, strokes)
         st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)
