@@ -91,4 +91,10 @@ WORDS = {
                        "共 {n} 份：全对 {ok} 份，有错 {bad} 份"),
     "class_failed":   ("{n} could not be checked", "не удалось проверить {n}", "无法校核 {n} 份"),
     "not_checked":    ("could not be checked: {why}", "не удалось проверить: {why}", "无法校核：{why}"),
+    "follows_own":    ("follows from the student's own values: expected {value} from those",
+                       "следует из собственных значений студента: по ним должно быть {value}",
+                       "由学生自己的数值得出：按这些值应为 {value}"),
+    "follows_plain":  ("follows from the student's own values", "следует из собственных значений студента",
+                       "由学生自己的数值得出"),
+    "read_from":      ("read from {file}: {values}", "прочитано из {file}: {values}", "读自 {file}：{values}"),
 }

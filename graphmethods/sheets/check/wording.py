@@ -16,6 +16,7 @@ Markdown is CommonMark: a blank line before and after every list and table, so t
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING
 
 from graphmethods.scene import markup, notation as get_notation
@@ -121,10 +122,25 @@ def _tail(report: CheckReport, nt: Notation) -> list[list[str]]:
     if undiag:
         out.append([word(nt, "unexplained")] + [f"- {labels[i.key]}" for i in undiag])
     if report.carried:
-        out.append([word(nt, "carried_list")] + [f"- {labels[i.key]}{colon}{i.note}" for i in report.carried])
-    out += [[word(nt, "note", text=n)] for n in report.notes]
+        out.append([word(nt, "carried_list")] + [f"- {labels[i.key]}{colon}{note_text(i.note, nt)}"
+                                                 for i in report.carried])
+    out += [[word(nt, "note", text=note_text(n, nt))] for n in report.notes]
     out.append([word(nt, "result", summary=summary(report, nt))])
     return out
+
+
+def note_text(note: str, nt: Notation) -> str:
+    """A note of the checker (English, made where the item is judged) in the report's language: where a
+    carried item's value comes from, and what was read from a drawing."""
+    if nt.code == "en" or not note:
+        return note
+    m = re.search(r"expected (\S+) from those$", note)
+    if note.startswith("follows from"):
+        return word(nt, "follows_own", value=m.group(1)) if m else word(nt, "follows_plain")
+    m = re.match(r"read from (.+?): (.*)$", note)
+    if m:
+        return word(nt, "read_from", file=m.group(1), values=m.group(2))
+    return note
 
 
 def _width(text: str) -> int:
