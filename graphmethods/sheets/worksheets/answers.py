@@ -102,7 +102,7 @@ LISTS = frozenset({"arrows_mm", "works_J", "areas_mm2"})
 
 
 def template(kind: str, *, page: tuple[str, str] = ("A4", "portrait"), problem: str = "",
-             seed: int | None = None) -> str:
+             seed: int | None = None, lang: str = "en") -> str:
     """The blank answers file of a worksheet kind, as TOML text with a comment on every key.
 
     Parameters
@@ -115,33 +115,60 @@ def template(kind: str, *, page: tuple[str, str] = ("A4", "portrait"), problem: 
         The problem id to put in (e.g. ``"indicator:7:3"``); left blank for a class set.
     seed : int, optional
         The class set's seed, named in the comment that says which PROBLEM to check against.
+    lang : {"en", "ru", "zh"}
+        The language of the comments (the keys are the same in every language).
 
     Returns
     -------
     str
         TOML text that ``graphmethods check`` reads once its values are filled in.
+
+    Examples
+    --------
+    >>> print(template("velocity-plan", lang="ru").splitlines()[0])
+    # Ответы к заданию «velocity-plan»; скопируйте файл для каждого студента, заполните и запустите
     """
     if kind not in KEYS:
         raise InputError(f"no answers template for kind {kind!r}; kinds: {', '.join(KEYS)}")
+    if lang not in ("en", "ru", "zh"):
+        raise InputError(f"lang {lang!r}: give en, ru or zh")
+
+    def say(key: str, **fill: str) -> str:
+        return comment(key, lang).format(**fill)
+    variant = f"{kind}:{'SEED' if seed is None else seed}:N"
     lines = [
-        f"# Answers of a \"{kind}\" worksheet; copy this file for each student, fill it in, then run",
+        "# " + say("tpl_head", kind=kind),
         "#     graphmethods check PROBLEM THE-COPY.toml",
-        f"# PROBLEM is the variant's id, {kind}:{'SEED' if seed is None else seed}:N with N the variant number "
-        f"printed on the sheet,",
-        f"# or its problem file problems/{kind}-NN.json.",
-        "# Replace each \"\" or [] by what you measured or wrote (a number, or a list of numbers);",
-        "# a key left \"\" or [] is not answered and not checked. Lengths in mm as measured on paper.",
+        "# " + say("tpl_problem", id=variant),
+        "# " + say("tpl_file", kind=kind),
+        "# " + say("tpl_fill"),
+        "# " + say("tpl_blank"),
         f"problem = \"{problem}\"",
         "student = \"\"",
         "",
-        "[page]                      # the sheet you drew on",
+        "[page]".ljust(28) + "# " + say("tpl_page"),
         f"size = \"{page[0]}\"",
         f"orientation = \"{page[1]}\"",
     ]
     for section, keys in KEYS[kind]:
         lines += ["", f"[{section}]"]
         width = max(len(k) for k, _ in keys) + 5
-        for key, comment in keys:
+        for key, english in keys:
             blank = "[]" if key in LISTS else '""'
-            lines.append(f"{key} = {blank}".ljust(width + 3) + f"  # {comment}")
+            text = english if lang == "en" else comment(_COMMENT_KEYS.get((kind, key), f"tpl_{key}"), lang)
+            lines.append(f"{key} = {blank}".ljust(width + 3) + f"  # {text}")
     return "\n".join(lines) + "\n"
+
+
+#: the comments of keys that read differently per kind, or share a word with other keys
+_COMMENT_KEYS = {**{(k, f"omega_{w}_at"): f"tpl_omega_{w}_at_{k}" for k in ("indicator", "step-moment", "wittenbauer")
+                    for w in ("max", "min")},
+                 **{(k, key): "tpl_rad_s" for k in KEYS for key in ("omega_max", "omega_min")},
+                 **{(k, key): "tpl_m_s" for k in KEYS for key in ("v_A", "v_B", "v_BA", "v_S2")}}
+
+
+def comment(key: str, lang: str) -> str:
+    """A comment of the answers file in ``lang`` (the vocabulary's check family, plain text)."""
+    from graphmethods.scene.vocabulary.check import WORDS
+
+    return WORDS[key][("en", "ru", "zh").index(lang)]

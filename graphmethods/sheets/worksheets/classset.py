@@ -82,7 +82,8 @@ def file_names(ws: Worksheet) -> dict[str, object]:
         out[next(names)] = k
         out[next(names)] = v
     page = ws.students[0].page
-    out[next(names)] = answers.template(ws.kind, page=(page.size, page.orientation), seed=ws.seed)
+    lang = ws.notation if isinstance(ws.notation, str) else getattr(ws.notation, "code", "en")
+    out[next(names)] = answers.template(ws.kind, page=(page.size, page.orientation), seed=ws.seed, lang=lang)
     return out
 
 
