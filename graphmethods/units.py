@@ -164,6 +164,19 @@ def real(value: object, name: str, *, unit: str = "", lo: float | None = None, h
     return v
 
 
+def is_finite(value: object) -> bool:
+    """``math.isfinite`` for any number a user may pass: an integer too large for a float (a 400-digit
+    integer) is not finite here, where ``math.isfinite`` raises OverflowError.
+
+    >>> is_finite(10**400), is_finite(2.5), is_finite(float("nan"))
+    (False, True, False)
+    """
+    try:
+        return math.isfinite(value)  # type: ignore[arg-type]
+    except (OverflowError, TypeError, ValueError):
+        return False
+
+
 def angle_deg(value: object, name: str) -> float:
     """An angle in degrees, any finite number, reduced exactly modulo 360 (same sign as given).
 

@@ -47,7 +47,7 @@ from graphmethods.kinematics.classic import SliderCrank
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.kinematics.positions import Positions
 from graphmethods.kinematics.vectors import FloatArray
-from graphmethods.units import convenient_at_least, convenient_at_most
+from graphmethods.units import convenient_at_least, convenient_at_most, is_finite
 
 #: Round pole distances (× 10^k mm) the sheets pick from: a length measured with a ruler.
 POLE_SERIES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
@@ -84,7 +84,7 @@ def _positive(v: object, name: str) -> float:
         value = float(v)  # type: ignore[arg-type]  # any input: what float() refuses is reported
     except (TypeError, ValueError):
         raise InputError(f"{name} = {v!r} must be a positive number") from None
-    if not (value > 0 and math.isfinite(value)):
+    if not (value > 0 and is_finite(value)):
         raise InputError(f"{name} = {v!r} must be a positive number")
     return value
 

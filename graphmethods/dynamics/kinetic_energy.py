@@ -13,7 +13,6 @@ W4 (Russian lecture, kG·m units): four equal parts, areas 200 mm² each at μ_M
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -21,6 +20,7 @@ import numpy as np
 
 from graphmethods.dynamics.excess_work import ExcessWork
 from graphmethods.errors import InputError, MotionError
+from graphmethods.units import is_finite
 
 
 @dataclass(frozen=True, eq=False)
@@ -71,13 +71,13 @@ def kinetic_energy(ew: ExcessWork, *, J_e: float, T0: float | None = None,
 
     Give the starting energy T0 (J) or the starting speed omega_0 (rad/s), T0 = J_e ω0²/2.
     """
-    if not (isinstance(J_e, (int, float)) and math.isfinite(J_e) and J_e > 0):
+    if not (isinstance(J_e, (int, float)) and is_finite(J_e) and J_e > 0):
         raise InputError(f"J_e = {J_e!r} must be a positive inertia in kg·m²")
     if (T0 is None) == (omega_0 is None):
         raise InputError("give the starting state once: T0 (J) or omega_0 (rad/s)")
     if T0 is None:
         assert omega_0 is not None
-        if not (math.isfinite(omega_0) and omega_0 > 0):
+        if not (is_finite(omega_0) and omega_0 > 0):
             raise InputError(f"omega_0 = {omega_0!r} must be a positive speed in rad/s")
         T0 = 0.5 * J_e * omega_0**2
     T = T0 + ew.E

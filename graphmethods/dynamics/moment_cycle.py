@@ -44,7 +44,7 @@ from graphmethods.dynamics.formula import Formula, looks_like_formula
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError
 from graphmethods.kinematics.vectors import FloatArray
-from graphmethods.units import parse_number, read_text
+from graphmethods.units import is_finite, parse_number, read_text
 
 __all__ = ["MomentInput", "moment_input", "read_points_csv", "MomentCycle", "moment_cycle", "Acceleration",
            "common_period_deg"]
@@ -120,7 +120,7 @@ def read_points_csv(path: str | os.PathLike[str], *, period: float, name: str = 
             if not phi_deg:          # a header line
                 continue
             raise InputError(f"{name}: {p}, line {lineno}: {line!r} is not two numbers phi_deg,M") from None
-        if not (math.isfinite(a) and math.isfinite(m)):
+        if not (is_finite(a) and is_finite(m)):
             raise InputError(f"{name}: {p}, line {lineno}: {line!r} is not finite")
         phi_deg.append(a)
         M.append(m)
@@ -147,7 +147,7 @@ def moment_input(text: object, *, period: float = 2 * math.pi, name: str = "M") 
     >>> m.kind, round(m.curve.mean(), 9)
     ('formula', 10.0)
     """
-    if not (isinstance(period, (int, float)) and math.isfinite(period) and period > 0):
+    if not (isinstance(period, (int, float)) and is_finite(period) and period > 0):
         raise InputError(f"the period must be a positive angle, got {period!r} rad")
     s = str(text).strip()
     if not s:
@@ -233,7 +233,7 @@ class MomentCycle:
 
     def epsilon(self, *, J: float) -> Acceleration:
         """ε extremes for a machine of constant total inertia J (kg·m²) on the reduced shaft."""
-        if not (isinstance(J, (int, float)) and math.isfinite(J) and J > 0):
+        if not (isinstance(J, (int, float)) and is_finite(J) and J > 0):
             raise InputError(f"the inertia J = {J!r} kg·m² must be positive to give an angular acceleration")
         return Acceleration(float(J), self.M_e_max / J, self.M_e_min / J,
                             list(self.phi_M_e_max_deg), list(self.phi_M_e_min_deg))

@@ -49,7 +49,7 @@ import numpy as np
 import numpy.typing as npt
 
 from graphmethods.errors import InputError, MotionError, NoFlywheelNeeded
-from graphmethods.units import real
+from graphmethods.units import is_finite, real
 
 __all__ = [
     "ReducedModel",
@@ -131,7 +131,7 @@ def _as_function(value: PhiFunction | float, name: str) -> PhiFunction:
     except (TypeError, ValueError):
         raise InputError(f"{name}: give a function of φ (vectorised over numpy arrays) or a number, "
                          f"not {type(value).__name__}") from None
-    if not math.isfinite(c):
+    if not is_finite(c):
         raise InputError(f"{name}: {value!r} is not finite")
     return lambda phi: np.full(np.shape(phi), c)
 
@@ -249,7 +249,7 @@ class ReducedModel:
     def __post_init__(self) -> None:
         for name in ("phi_T", "phi_0"):
             value = getattr(self, name)
-            if not isinstance(value, (int, float)) or not math.isfinite(value):
+            if not isinstance(value, (int, float)) or not is_finite(value):
                 raise InputError(f"ReducedModel.{name}: {value!r} is not a finite number of radians")
         if self.phi_T <= 0:
             raise InputError(f"ReducedModel.phi_T: the period must be positive, got {self.phi_T!r} rad")
@@ -1132,7 +1132,7 @@ def periodic_motion(model: ReducedModel, *, J_F: float, omega_m: float, mean: st
     (0.05, 10.25, 9.75)
     """
     J_F = float(J_F)
-    if not math.isfinite(J_F):
+    if not is_finite(J_F):
         raise InputError(f"J_F: {J_F!r} is not finite")
     omega_m = _check_positive(omega_m, "omega_m")
     mean = _check_mean(mean)

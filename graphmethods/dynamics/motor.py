@@ -46,7 +46,7 @@ import numpy as np
 from graphmethods.dynamics.motion import MotionResult, ReducedModel, _check_count, _check_mean, _check_positive, _frozen
 from graphmethods.errors import InputError, MotionError
 from graphmethods.kinematics.vectors import FloatArray
-from graphmethods.units import omega_from_n
+from graphmethods.units import is_finite, omega_from_n
 
 __all__ = ["DCMotor", "InductionMotor", "Motor", "motor_motion"]
 
@@ -474,7 +474,7 @@ def motor_motion(model: ReducedModel, motor: Motor, *, J_F: float, steps: int = 
     (True, 30.117)
     """
     J_F = float(J_F)
-    if not math.isfinite(J_F):
+    if not is_finite(J_F):
         raise InputError(f"J_F: {J_F!r} is not finite")
     steps = _check_count(steps, "steps", 4)
     positions = _check_count(positions, "positions", 1)

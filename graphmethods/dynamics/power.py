@@ -23,11 +23,11 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 from graphmethods.errors import InputError
+from graphmethods.units import is_finite
 
 #: IEC 60072-1 rated outputs of three-phase induction motors, kW (the usual catalogue steps).
 IEC_RATED_KW: tuple[float, ...] = (0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5, 2.2, 3.0, 4.0, 5.5, 7.5, 11.0, 15.0,
@@ -37,7 +37,7 @@ IEC_RATED_KW: tuple[float, ...] = (0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5,
 
 def _eta(value: float, name: str) -> float:
     v = float(value)
-    if not (math.isfinite(v) and 0.0 < v <= 1.0):
+    if not (is_finite(v) and 0.0 < v <= 1.0):
         raise InputError(f"{name} = {value!r}: an efficiency is a number in (0, 1], e.g. 0.95")
     return v
 
@@ -53,7 +53,7 @@ def mean_power(*, M_m: float, omega_m: float) -> float:
         Mean speed of that shaft, rad/s (keyword-only).
     """
     M, w = float(M_m), float(omega_m)
-    if not (math.isfinite(M) and math.isfinite(w) and w > 0):
+    if not (is_finite(M) and is_finite(w) and w > 0):
         raise InputError(f"M_m = {M_m!r} N·m and ω_m = {omega_m!r} rad/s must be finite, ω_m positive")
     return abs(M) * w
 
@@ -89,7 +89,7 @@ def efficiency_parallel(etas: Sequence[float], *, shares: Sequence[float]) -> fl
         raise InputError(f"give one share of the input power per mechanism; got {len(etas)} efficiencies and "
                          f"{len(shares)} shares")
     a = [float(x) for x in shares]
-    if any(not (math.isfinite(x) and x >= 0) for x in a) or abs(sum(a) - 1.0) > 1e-9:
+    if any(not (is_finite(x) and x >= 0) for x in a) or abs(sum(a) - 1.0) > 1e-9:
         raise InputError(f"the shares {list(shares)} must be non-negative and add up to 1 (they add up to {sum(a):g})")
     return sum(x * _eta(e, f"η_{i + 1}") for i, (x, e) in enumerate(zip(a, etas)))
 
@@ -134,10 +134,10 @@ def choose_motor(N_mean: float, *, eta: float = 1.0, reserve: float = 1.0,
         Rated powers to choose from, kW (default :data:`IEC_RATED_KW`).
     """
     N = float(N_mean)
-    if not (math.isfinite(N) and N >= 0):
+    if not (is_finite(N) and N >= 0):
         raise InputError(f"the mean power {N_mean!r} W must be a non-negative number")
     r = float(reserve)
-    if not (math.isfinite(r) and r >= 1.0):
+    if not (is_finite(r) and r >= 1.0):
         raise InputError(f"reserve = {reserve!r}: a reserve factor is 1 or more, e.g. 1.1")
     e = _eta(eta, "η")
     need = N / e * r

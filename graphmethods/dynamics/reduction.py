@@ -37,6 +37,7 @@ from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.kinematics.plans import VelocityPlans
 from graphmethods.kinematics.positions import Positions
 from graphmethods.kinematics.vectors import FloatArray
+from graphmethods.units import is_finite
 
 TWO_PI = 2.0 * math.pi
 
@@ -401,9 +402,9 @@ def reduce_drive(shafts: Sequence[Shaft]) -> ReducedDrive:
     parts: dict[str, float] = {}
     J = M = 0.0
     for s in shafts:
-        if not (math.isfinite(s.J) and s.J >= 0):
+        if not (is_finite(s.J) and s.J >= 0):
             raise InputError(f"shaft {s.name}: J = {s.J!r} must be a non-negative inertia in kg·m²")
-        if not (math.isfinite(s.omega_ratio) and s.omega_ratio != 0):
+        if not (is_finite(s.omega_ratio) and s.omega_ratio != 0):
             raise InputError(f"shaft {s.name}: the speed ratio ω_i/ω = {s.omega_ratio!r} must be a non-zero number")
         part = s.J * s.omega_ratio**2
         parts[s.name] = part

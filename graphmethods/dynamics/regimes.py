@@ -44,7 +44,7 @@ import numpy.typing as npt
 
 from graphmethods.dynamics.motion import FloatArray, PhiFunction, ReducedModel, _check_positive
 from graphmethods.errors import InputError, MotionError
-from graphmethods.units import real
+from graphmethods.units import is_finite, real
 
 __all__ = ["Brake", "ConstantDrive", "Run", "SteadyState", "run"]
 
@@ -97,7 +97,7 @@ class Brake:
     def __post_init__(self) -> None:
         for name in ("M_b", "c"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+            if not (isinstance(v, (int, float)) and is_finite(v) and v >= 0):
                 raise InputError(f"Brake.{name} = {v!r}: give a finite moment ≥ 0")
 
     def __call__(self, omega: float, t: float) -> float:
@@ -340,7 +340,7 @@ def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: B
         raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
     if t_end is None and turns is None and not until_steady:
         raise InputError("say when to stop: t_end (s), turns, or until_steady")
-    if t_end is not None and not (math.isfinite(t_end) and t_end > t_0):
+    if t_end is not None and not (is_finite(t_end) and t_end > t_0):
         raise InputError(f"t_end = {t_end!r} s must come after t_0 = {t_0!r} s")
     if turns is not None:
         _check_positive(turns, "turns")
@@ -434,7 +434,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
 
     def rhs(t: float, y: FloatArray) -> FloatArray:
         phi, omega = y[0], y[1]
-        if not (math.isfinite(phi) and math.isfinite(omega) and abs(omega) < 1e150):
+        if not (is_finite(phi) and is_finite(omega) and abs(omega) < 1e150):
             return np.full(4, math.nan)       # a trial stage that overflowed: the step is rejected and shortened
         p = np.array([phi])
         J = J_F + float(J_e(p)[0])
@@ -456,7 +456,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
     phi_stop = phi_0 + TWO_PI * turns if turns is not None else math.inf
     t_stop = t_end if t_end is not None else math.inf
     switch_times = sorted(x for x in (drive_off_at, None if brake is None else brake.t_on)
-                          if x is not None and math.isfinite(x) and x > t_0)
+                          if x is not None and is_finite(x) and x > t_0)
 
     ts, Ys, Ks = [t_0], [y], []
     eps_list = [k1[1]]
@@ -485,11 +485,11 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
         if h is None:       # an initial step: a small fraction of the time to turn or to speed up
             scale_t = min(abs(1e-2 * w_ref / k1[1]) if k1[1] else math.inf,
                           1e-2 * TWO_PI / max(abs(y[1]), 1e-300))
-            h = min(scale_t, (t_stop - t) if math.isfinite(t_stop) else scale_t)
-            h = h if math.isfinite(h) and h > 0 else 1e-6
+            h = min(scale_t, (t_stop - t) if is_finite(t_stop) else scale_t)
+            h = h if is_finite(h) and h > 0 else 1e-6
         # land exactly on switch times and the end time
         limit = min([s for s in switch_times if s > t + 1e-15 * max(1.0, abs(t))] + [t_stop])
-        h_try = min(h, limit - t) if math.isfinite(limit) else h
+        h_try = min(h, limit - t) if is_finite(limit) else h
         if h_land is not None:
             h_try = min(h_land, h_try)
         K = np.empty((7, 4))
@@ -497,7 +497,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
         for s in range(1, 7):
             K[s] = rhs(t + _C[s] * h_try, y + h_try * (_A[s] @ K[:s]))
         y_new = y + h_try * (_B @ K)
-        if h_land is None and y_new[0] > next_break and math.isfinite(next_break) and np.all(np.isfinite(y_new)):
+        if h_land is None and y_new[0] > next_break and is_finite(next_break) and np.all(np.isfinite(y_new)):
             # the step passes a break: take it again, ending on the break (located on this step's dense
             # output: φ is smooth through a jump of M), with the moment's left limit up to it
             lo, hi = _crossing(t, h_try, y, K, next_break)
@@ -554,7 +554,7 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
         if y[0] >= phi_stop:
             ended_by = "turns"
             break
-        if t >= t_stop * (1 - 1e-15) and math.isfinite(t_stop):
+        if t >= t_stop * (1 - 1e-15) and is_finite(t_stop):
             ended_by = "t_end"
             break
         if until_steady:
@@ -744,7 +744,7 @@ def _steady_state(res: Run, boundary: Sequence[tuple[float, float, float]], k: i
     phase_p = phis[order] - phis[order][0]
     w_p = ws[order]
 
-    shift = 0.0 if not math.isfinite(remaining) else remaining     # Aitken's estimate of what is left
+    shift = 0.0 if not is_finite(remaining) else remaining     # Aitken's estimate of what is left
 
     def steady_omega(phi: npt.ArrayLike) -> FloatArray:
         s = np.mod(np.asarray(phi) - phis[order][0], L)

@@ -42,7 +42,7 @@ import numpy.typing as npt
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, fmt
 from graphmethods.kinematics.positions import Strokes, at_extremes
-from graphmethods.units import MAX_POSITIONS_COMPUTED, count, real
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count, is_finite, real
 
 TWO_PI = 2.0 * math.pi
 
@@ -292,7 +292,7 @@ class Linkage:
                 x, y = (float(c) for c in xy)
             except (TypeError, ValueError):
                 raise InputError(f"{name}: fixed joint {k!r} must be (x, y) in m, got {xy!r}") from None
-            if not (math.isfinite(x) and math.isfinite(y)):
+            if not (is_finite(x) and is_finite(y)):
                 raise InputError(f"{name}: fixed joint {k!r} must have finite coordinates, got {xy!r}")
             self.ground[str(k)] = complex(x, y)
         self.crank = crank

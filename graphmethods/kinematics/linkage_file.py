@@ -52,7 +52,7 @@ from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RR
 from graphmethods.kinematics.linkage import MAX_GROUPS, Crank, Linkage, Point
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
-from graphmethods.units import parse_number
+from graphmethods.units import is_finite, parse_number
 
 TOP_KEYS = ("kind", "name", "about", "units", "fixed", "crank", "sense", "groups", "points", "output",
             "working_stroke", "masses", "load", "n_rpm", "delta")
@@ -82,7 +82,7 @@ class _Reader:
         if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
             self.err(key, f"must be a number; got {raw!r}")
         value = parse_number(raw, name=f"{self.source}: key {key!r}")
-        if not math.isfinite(value):
+        if not is_finite(value):
             self.err(key, f"must be finite; got {raw!r}")
         if check == "positive" and not value > 0:
             self.err(key, f"must be > 0; got {raw!r}")

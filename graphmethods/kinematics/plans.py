@@ -24,7 +24,6 @@ the angular velocities the ratios ω_i/ω₁.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -34,7 +33,7 @@ from numpy.typing import NDArray
 from graphmethods.errors import InputError
 from graphmethods.kinematics.positions import Positions
 from graphmethods.kinematics.vectors import FloatArray
-from graphmethods.units import CONVENIENT, convenient_at_least
+from graphmethods.units import CONVENIENT, convenient_at_least, is_finite
 
 
 def convenient_scale(raw: float, *, series: tuple[float, ...] = CONVENIENT) -> float:
@@ -46,7 +45,7 @@ def convenient_scale(raw: float, *, series: tuple[float, ...] = CONVENIENT) -> f
     >>> convenient_scale(0.0213), convenient_scale(3.0), convenient_scale(5.0)
     (0.025, 4.0, 5.0)
     """
-    if not (isinstance(raw, (int, float, np.floating)) and abs(raw) <= 1e308 and math.isfinite(raw) and raw > 0):
+    if not (isinstance(raw, (int, float, np.floating)) and abs(raw) <= 1e308 and is_finite(raw) and raw > 0):
         raise InputError(f"a scale must be a positive finite number, got {raw!r}")
     return convenient_at_least(float(raw), series)
 
@@ -225,7 +224,7 @@ class VelocityPlans:
             raise InputError("give exactly one of fit_mm (longest vector) or pa_mm (length of pa) in mm")
         length = fit_mm if fit_mm is not None else pa_mm
         assert length is not None                                  # exactly one of them is given (checked above)
-        if not (math.isfinite(length) and length > 0):
+        if not (is_finite(length) and length > 0):
             raise InputError(f"the drawn length must be a positive number of mm, got {length!r}")
         if fit_mm is not None:
             raw = max(float(np.max(self.speed(k))) for k in self.vectors)

@@ -30,6 +30,7 @@ import numpy as np
 
 from graphmethods.dynamics.motion import ReducedModel, periodic_motion
 from graphmethods.errors import InputError
+from graphmethods.units import is_finite
 
 
 @dataclass(frozen=True, eq=False)
@@ -169,7 +170,7 @@ def boundary_speeds(problem, *, J: float | None = None) -> BoundarySpeeds:
         J_total = float(fw.J_total) if fw.needed else float(problem.J_e)
     else:
         J_total = float(J)
-    if not (math.isfinite(J_total) and J_total > 0):
+    if not (is_finite(J_total) and J_total > 0):
         raise InputError(f"problem {problem.id}: the total inertia J = {J_total!r} must be a positive number of "
                          f"kg·m²")
     from graphmethods.dynamics.flywheel import level_speeds

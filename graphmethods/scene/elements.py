@@ -49,6 +49,7 @@ from graphmethods.scene.primitives import (
     walk,
 )
 from graphmethods.scene.scale import Scale
+from graphmethods.units import is_finite
 
 if TYPE_CHECKING:
     from shapely.geometry.base import BaseGeometry
@@ -65,7 +66,7 @@ def _pt(p: Sequence[float] | NDArray[np.float64]) -> XY:
         x, y = float(x), float(y)
     except (TypeError, ValueError):
         raise InputError(f"expected a point (x_mm, y_mm), got {p!r}") from None
-    if not (math.isfinite(x) and math.isfinite(y)):
+    if not (is_finite(x) and is_finite(y)):
         raise InputError(f"point {p!r} is not finite; a figure cannot place it")
     return (x, y)
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 
 from graphmethods.errors import InputError
+from graphmethods.units import is_finite
 
 MINUS = "\u2212"
 
@@ -39,7 +40,7 @@ def format_mm(x: float) -> str:
     ('0.001', '-2', '0')
     """
     x = float(x)
-    if not math.isfinite(x):
+    if not is_finite(x):
         raise InputError(f"cannot write the coordinate {x!r} mm: a figure element computed it from non-finite data")
     s = f"{x:.3f}".rstrip("0").rstrip(".")
     if s in ("-0", ""):
@@ -81,7 +82,7 @@ def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool =
     '2.5·10⁻⁶'
     """
     value = float(value)
-    if not math.isfinite(value):
+    if not is_finite(value):
         raise InputError(f"cannot write the value {value!r} on a figure: it is not finite")
     if value == 0:
         return "0"

@@ -25,7 +25,7 @@ from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.scene.numbers import format_value
-from graphmethods.units import CONVENIENT, convenient_at_least
+from graphmethods.units import CONVENIENT, convenient_at_least, is_finite
 
 if TYPE_CHECKING:
     from graphmethods.scene.notation import Notation
@@ -72,7 +72,7 @@ class Scale:
         except (TypeError, ValueError):
             raise InputError(f"scale {self.symbol}: {self.per_mm!r} is not a number; "
                              "give units per mm, e.g. 100") from None
-        if not math.isfinite(value) or value <= 0:
+        if not is_finite(value) or value <= 0:
             raise InputError(f"scale {self.symbol} = {self.per_mm!r} {self.unit}/mm: a scale must be a positive "
                              f"finite number of units per mm")
         object.__setattr__(self, "per_mm", value)
@@ -152,7 +152,7 @@ def pick_scale(span_value: float, span_mm: float, *, series: Iterable[float] = S
         span_value, span_mm = abs(float(span_value)), float(span_mm)
     except (TypeError, ValueError):
         raise InputError(f"pick_scale: span {span_value!r} over {span_mm!r} mm is not a pair of numbers") from None
-    if not (math.isfinite(span_value) and math.isfinite(span_mm)) or span_mm <= 0:
+    if not (is_finite(span_value) and is_finite(span_mm)) or span_mm <= 0:
         raise InputError(f"pick_scale for {symbol}: cannot fit {span_value!r} {unit} into {span_mm!r} mm; "
                          f"the span must be finite and the paper length positive")
     mantissas = tuple(sorted({float(m) for m in series} | (set(SERIES_EXTRA) if allow_15_3 else set())))

@@ -56,6 +56,7 @@ from graphmethods.sheets.layout import (
     given_scale,
     problem_title,
 )
+from graphmethods.units import is_finite
 
 SMALL_MM = 2.8          # tick labels, values beside vectors
 TABLE_MM = 3.8          # the excess-work table
@@ -772,7 +773,7 @@ def _kinetic_base(ew: Any, T0: float | None, J_e: float | None, omega_0: float |
         if J_e is None or omega_0 is None:
             raise InputError("give T0 (J), or both J_e (kg·m²) and omega_0 (rad/s), for the kinetic-energy graph")
         T0 = 0.5 * float(J_e) * float(omega_0) ** 2
-    if T0 is not None and not (math.isfinite(T0) and T0 > 0):
+    if T0 is not None and not (is_finite(T0) and T0 > 0):
         raise InputError(f"T0 = {T0!r} must be a positive kinetic energy in {work_unit}")
     return T0
 

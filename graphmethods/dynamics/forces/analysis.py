@@ -22,7 +22,6 @@ give M_b again (:mod:`.lever`). Vectorised over the positions of a :class:`Motio
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -48,6 +47,7 @@ from graphmethods.dynamics.forces.base import (
 )
 from graphmethods.dynamics.forces.lever import Lever, power_balance, zhukovsky
 from graphmethods.errors import InputError
+from graphmethods.units import is_finite
 
 #: standard gravity, m/s² (acts along −y of the file's frame)
 G_STANDARD = 9.81
@@ -225,7 +225,7 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
     """
     lk = motion.linkage
     n = motion.n
-    if not (isinstance(gravity, (int, float)) and math.isfinite(gravity) and gravity >= 0):
+    if not (isinstance(gravity, (int, float)) and is_finite(gravity) and gravity >= 0):
         raise InputError(f"gravity must be a finite g ≥ 0 in m/s², got {gravity!r}")
     if lk.crank.pin not in motion.a_:
         raise InputError("the force analysis needs accelerations: solve the motion with level=2")
@@ -237,7 +237,7 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
             raise InputError(f"a mass on link {ms.link!r}: the moving links are {', '.join(lk.links)}")
         if ms.at not in motion.z:
             raise InputError(f"a mass at {ms.at!r}: no such point; points: {', '.join(motion.points)}")
-        if not (math.isfinite(ms.m) and math.isfinite(ms.J) and ms.m >= 0 and ms.J >= 0):
+        if not (is_finite(ms.m) and is_finite(ms.J) and ms.m >= 0 and ms.J >= 0):
             raise InputError(f"the mass of link {ms.link}: m = {ms.m!r} kg and J = {ms.J!r} kg·m² must be finite "
                              f"and ≥ 0")
         S: Cx = np.asarray(motion.z[ms.at], dtype=complex)

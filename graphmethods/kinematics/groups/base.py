@@ -30,6 +30,7 @@ from numpy.typing import NDArray
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
+from graphmethods.units import is_finite
 
 GROUND = "0"
 
@@ -429,7 +430,7 @@ def check_length(name: str, value: object, *, positive: bool = True) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise InputError(f"{name} must be a number in m, got {value!r}")
     length = float(value)
-    if not math.isfinite(length):
+    if not is_finite(length):
         raise InputError(f"{name} must be finite, got {length!r}")
     if positive and length <= 0:
         raise InputError(f"{name} must be > 0 m, got {length!r}")
