@@ -37,7 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.dynamics.moments import MomentCurve, balance
 from graphmethods.errors import InputError, UnbalancedCycleError
-from graphmethods.units import finite_array, real
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count, finite_array, real
 
 #: Default closure tolerance for measured data (areas, works, levels): |Σ A_i| / Σ|A_i|.
 CLOSURE_TOL_MEASURED = 0.05
@@ -51,6 +51,7 @@ def point_labels(n: int) -> tuple[str, ...]:
     >>> point_labels(3), point_labels(28)[-2:]
     (('a', 'b', 'c'), ('a1', 'b1'))
     """
+    n = count(n, "the number of points n", low=0, high=MAX_POSITIONS_COMPUTED)     # bounded before the loop
     return tuple(chr(97 + i % 26) + (str(i // 26) if i >= 26 else "") for i in range(n))
 
 

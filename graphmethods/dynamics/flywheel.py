@@ -23,7 +23,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from graphmethods.errors import InputError
-from graphmethods.units import DELTA_MAX, finite_result, n_from_omega, omega_from_n, real
+from graphmethods.units import DELTA_MAX, finite_array, finite_result, n_from_omega, omega_from_n, real
 
 #: Rim speeds usually allowed, m/s (domain.md §6): cast iron 25–30, steel higher.
 RIM_SPEED_LIMIT = {"cast iron": 25.0, "steel": 40.0}
@@ -203,7 +203,7 @@ def level_speeds(E: ArrayLike, *, J: float, omega_m: float) -> np.ndarray:
     >>> round(float(w.max() + w.min()) / 2 / (20 * np.pi), 12), round(float(w[4] - w[1]) * 43.69 * 20 * np.pi, 6)
     (1.0, 575.0)
     """
-    levels = np.asarray(E, dtype=float)
+    levels = finite_array(E, "E")
     J = _finite(J, "J", positive=True, hint="the total inertia on the shaft, kg·m²")
     omega_m = _finite(omega_m, "omega_m", positive=True, hint="rad/s")
     if levels.ndim != 1 or levels.size < 2 or not np.all(np.isfinite(levels)):

@@ -46,7 +46,7 @@ import numpy as np
 from graphmethods.dynamics.motion import MotionResult, ReducedModel, _check_count, _check_mean, _check_positive, _frozen
 from graphmethods.errors import InputError, MotionError
 from graphmethods.kinematics.vectors import FloatArray
-from graphmethods.units import is_finite, omega_from_n
+from graphmethods.units import omega_from_n, real
 
 __all__ = ["DCMotor", "InductionMotor", "Motor", "motor_motion"]
 
@@ -473,9 +473,7 @@ def motor_motion(model: ReducedModel, motor: Motor, *, J_F: float, steps: int = 
     >>> 0 < res.delta < 0.05, round(res.omega_m_time, 3)
     (True, 30.117)
     """
-    J_F = float(J_F)
-    if not is_finite(J_F):
-        raise InputError(f"J_F: {J_F!r} is not finite")
+    J_F = real(J_F, "J_F", unit="kg·m²", tiny_ok=True)      # the number policy: finite, at most 1e100
     steps = _check_count(steps, "steps", 4)
     positions = _check_count(positions, "positions", 1)
     mean = _check_mean(mean)

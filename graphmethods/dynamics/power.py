@@ -27,7 +27,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from graphmethods.errors import InputError
-from graphmethods.units import is_finite
+from graphmethods.units import is_finite, real
 
 #: IEC 60072-1 rated outputs of three-phase induction motors, kW (the usual catalogue steps).
 IEC_RATED_KW: tuple[float, ...] = (0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5, 2.2, 3.0, 4.0, 5.5, 7.5, 11.0, 15.0,
@@ -36,7 +36,7 @@ IEC_RATED_KW: tuple[float, ...] = (0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5,
 
 
 def _eta(value: float, name: str) -> float:
-    v = float(value)
+    v = real(value, name, tiny_ok=True)
     if not (is_finite(v) and 0.0 < v <= 1.0):
         raise InputError(f"{name} = {value!r}: an efficiency is a number in (0, 1], e.g. 0.95")
     return v
@@ -52,7 +52,7 @@ def mean_power(*, M_m: float, omega_m: float) -> float:
     omega_m : float
         Mean speed of that shaft, rad/s (keyword-only).
     """
-    M, w = float(M_m), float(omega_m)
+    M, w = real(M_m, "M_m", unit="N·m"), real(omega_m, "omega_m", unit="rad/s")
     if not (is_finite(M) and is_finite(w) and w > 0):
         raise InputError(f"M_m = {M_m!r} N·m and ω_m = {omega_m!r} rad/s must be finite, ω_m positive")
     return abs(M) * w
@@ -64,8 +64,8 @@ def efficiency_series(etas: Sequence[float]) -> float:
     >>> efficiency_series([0.96, 0.96])
     0.9216
     """
-    if len(etas) == 0:
-        raise InputError("give the efficiency of at least one mechanism")
+    if isinstance(etas, (str, bytes)) or not hasattr(etas, "__len__") or len(etas) == 0:
+        raise InputError(f"give the efficiency of at least one mechanism as a list, got {etas!r}")
     out = 1.0
     for i, e in enumerate(etas):
         out *= _eta(e, f"η_{i + 1}")
@@ -85,10 +85,13 @@ def efficiency_parallel(etas: Sequence[float], *, shares: Sequence[float]) -> fl
     >>> round(efficiency_parallel([0.95, 0.85], shares=[0.25, 0.75]), 6)
     0.875
     """
+    for what, seq in (("efficiencies", etas), ("shares", shares)):
+        if isinstance(seq, (str, bytes)) or not hasattr(seq, "__len__"):
+            raise InputError(f"give the {what} as a list, got {seq!r}")
     if len(etas) == 0 or len(etas) != len(shares):
         raise InputError(f"give one share of the input power per mechanism; got {len(etas)} efficiencies and "
                          f"{len(shares)} shares")
-    a = [float(x) for x in shares]
+    a = [real(x, f"α_{i + 1}", tiny_ok=True) for i, x in enumerate(shares)]
     if any(not (is_finite(x) and x >= 0) for x in a) or abs(sum(a) - 1.0) > 1e-9:
         raise InputError(f"the shares {list(shares)} must be non-negative and add up to 1 (they add up to {sum(a):g})")
     return sum(x * _eta(e, f"η_{i + 1}") for i, (x, e) in enumerate(zip(a, etas)))
@@ -100,7 +103,7 @@ def moment_with_losses(M: float, *, eta: float) -> float:
     >>> moment_with_losses(90.0, eta=0.9)
     100.0
     """
-    return float(M) / _eta(eta, "η")
+    return real(M, "M", unit="N·m", tiny_ok=True) / _eta(eta, "η")
 
 
 @dataclass(frozen=True)
@@ -133,10 +136,10 @@ def choose_motor(N_mean: float, *, eta: float = 1.0, reserve: float = 1.0,
     series : sequence of float
         Rated powers to choose from, kW (default :data:`IEC_RATED_KW`).
     """
-    N = float(N_mean)
+    N = real(N_mean, "N_mean", unit="W", tiny_ok=True)
     if not (is_finite(N) and N >= 0):
         raise InputError(f"the mean power {N_mean!r} W must be a non-negative number")
-    r = float(reserve)
+    r = real(reserve, "reserve", tiny_ok=True)
     if not (is_finite(r) and r >= 1.0):
         raise InputError(f"reserve = {reserve!r}: a reserve factor is 1 or more, e.g. 1.1")
     e = _eta(eta, "η")
