@@ -12,7 +12,7 @@ your own folder of such scripts instead.
     graphmethods gallery --out gallery-out --dxf    # and DXF (1 unit = 1 mm, layers by role)
     graphmethods gallery --regenerate               # rewrite gallery/*.svg (and marked PNGs), from the project folder
 
-Heavy modules (the sheets, svgwrite, matplotlib) are imported only when the command runs.
+Heavy modules (the sheets, matplotlib) are imported only when the command runs.
 """
 
 from __future__ import annotations
