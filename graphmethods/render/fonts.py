@@ -416,7 +416,7 @@ def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
     face = _face(path, index)
     if not face._font.has("CFF "):             # TrueType: read and cut from the file's bytes
         return subset_truetype(face._font, gids)
-    from fontTools import subset               # CFF outlines (Noto Sans CJK): fontTools' subsetter
+    from fontTools import subset  # CFF outlines (Noto Sans CJK): fontTools' subsetter
 
     font = _sfnt(path, index)
     cff = "CFF " in font

@@ -183,7 +183,7 @@ class Sfnt:
         """The ``post`` table's italic angle in degrees (0 without one)."""
         if "post" not in self.tables:
             return 0.0
-        return struct.unpack_from(">i", self.table("post"), 4)[0] / 65536.0
+        return float(struct.unpack_from(">i", self.table("post"), 4)[0]) / 65536.0
 
     def _loca(self) -> np.ndarray:
         n = self.num_glyphs + 1
