@@ -10,8 +10,7 @@ import numpy as np
 import pytest
 
 from graphmethods.errors import AssemblyError
-from graphmethods.kinematics import linkage as L
-from graphmethods.kinematics import presets
+from graphmethods.kinematics import linkage as L, presets
 from graphmethods.render import fonts, sfnt, svg
 from graphmethods.scene import Page, Scene, Text, markup
 

@@ -1016,12 +1016,14 @@ def _freeze(a: np.ndarray) -> np.ndarray:
 
 
 def _smallest(values: Mapping[str, np.ndarray], n: int) -> np.ndarray:
-    """The groups' conditioning, position by position the smallest (a new array; ones with no group)."""
+    """The groups' conditioning, position by position the smallest (a new array, or a view of the one group's;
+    ones with no group)."""
     arrays = list(values.values())
     if not arrays:
         return np.ones(n)
     if len(arrays) == 1:
-        return np.array(arrays[0])
+        view: np.ndarray = np.asarray(arrays[0]).view()      # the group's own array, not a copy (frozen as a view)
+        return view
     out: np.ndarray = np.minimum(arrays[0], arrays[1])
     for a in arrays[2:]:
         np.minimum(out, a, out=out)
