@@ -817,7 +817,7 @@ class Linkage:
             hi = np.where(~same & (fx != 0), x, hi)
             with np.errstate(divide="ignore", invalid="ignore"):
                 xn = x - fx / dfx
-            ok = np.isfinite(xn) & (xn > lo) & (xn < hi)
+            ok = np.isfinite(xn) & (xn >= lo) & (xn <= hi)
             xn = np.where(ok, xn, 0.5 * (lo + hi))
             xn = np.where(fx == 0.0, x, xn)
             if np.all(np.abs(xn - x) <= 1e-15 * (1 + np.abs(x))):
