@@ -20,7 +20,11 @@ never drawn as empty boxes.
 
 A :class:`Face` gives what a layout and a PDF need of a font face, in font units: the
 glyph of a character, advance widths, pair kerning, the code a PDF shows it by, and a
-subset of the font program.
+subset of the font program. It reads them from the font file's bytes
+(:mod:`graphmethods.render.sfnt`: the same numbers FreeType gives), once per process:
+DejaVu Sans is found next to matplotlib without importing it, so a PDF of Latin, Greek
+and Cyrillic text imports neither matplotlib nor fontTools; fontTools subsets CFF
+outlines (Noto Sans CJK), and matplotlib's font list finds the CJK font.
 
 >>> face = faces("M_d", bold=False)[0]
 >>> face.units_per_em, face.advance(face.glyph("M"))
