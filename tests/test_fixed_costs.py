@@ -1,6 +1,7 @@
 """No fixed costs where a teacher waits (issue 30): the full-turn check and the dead centres once per geometry,
 fonts measured from the font file, SVG written once as text; each as exact as what it replaced."""
 
+import importlib.util
 import math
 import subprocess
 import sys
@@ -133,3 +134,19 @@ def test_svg_text_is_escaped_as_xml_requires_and_reads_back(text):
     (label,) = [c.data for c in record(scene).calls if c.kind == "text"]
     (elem,) = root.iter(f"{ns}text")
     assert "".join(elem.itertext()) == "".join(svg.clean_text(chunk) for chunk, _ in label.runs)
+
+
+def test_the_fixed_cost_rows_measure_the_right_things():
+    """Their numbers are reported, never asserted; what they compute is checked (here the in-process rows)."""
+    from graphmethods import bench
+
+    rows = bench.bench_fixed_costs(repeat=1, n_time=2000, n_memory=20_000, processes=False)
+    by = {(r.case, r.method.split(":")[0]): r for r in rows}
+    fresh = by[("press read afresh", "exact J_F (file read, linkage built, dead centres found) / the scipy solver")] \
+        if importlib.util.find_spec("scipy") else None
+    if fresh is not None:
+        assert fresh.error < 1e-12 and fresh.target.startswith("≤ 1.25×") and fresh.extra["ratio"] > 0
+    core = [r for r in rows if r.case == "slider-crank press"]
+    assert [r.size for r in core] == [2000, 20_000]
+    assert core[0].error < 1e-13 and core[0].target == "≤ 3× closed form"
+    assert core[1].target == "≤ 1.8× closed form" and "MiB" in core[1].note
