@@ -33,7 +33,7 @@ def add_parser(sub) -> None:
     p.add_argument("--overlay", metavar="FILE",
                    help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
-                   help="notation and language of the overlay (the report stays English)")
+                   help="language of the report and notation of the overlay")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
     drawing = p.add_argument_group("a drawing (.dxf, .svg): what is not written on it")
     drawing.add_argument("--position", type=int, default=None, help="the position a velocity plan is drawn for")
@@ -67,6 +67,10 @@ def run(args) -> int:
     from graphmethods.sheets.check import check
 
     is_drawing = pathlib.Path(args.answers).suffix.lower() in (".dxf", ".svg")
+    if args.overlay:
+        from graphmethods.render.files import not_an_input
+
+        not_an_input(args.overlay, args.answers, args.problem, what="--overlay")
     report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
     if args.overlay:
         path = pathlib.Path(args.overlay)
@@ -87,7 +91,8 @@ def run(args) -> int:
             if suffix not in formats.FORMATS:
                 raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
             formats.save(scene, path, overwrite=args.force)
-    out = {"text": report.to_text, "markdown": report.to_markdown, "json": report.to_json}[args.format]()
+    out = report.to_json() if args.format == "json" else (
+        report.to_markdown(args.lang) if args.format == "markdown" else report.to_text(args.lang))
     print(out.rstrip("\n"))
     if args.overlay:
         print(f"overlay: {args.overlay} ({report.page.size} {report.page.orientation}, print at 100 %)",

@@ -15,7 +15,7 @@ import argparse
 from graphmethods.cli._sheet import check_target
 from graphmethods.cli.flywheel import parse_list
 from graphmethods.errors import InputError
-from graphmethods.units import json_text
+from graphmethods.units import check_text, json_text
 
 
 def add_parser(sub) -> None:
@@ -56,7 +56,8 @@ def run(args: argparse.Namespace) -> int:
     M = _list(args.M, "--M", n, 0.0)
     c = parse_list(args.c, "--c")
     cu = _list(args.c_u, "--c-u", len(c), 1.0)
-    names = [s.strip() for s in args.names.split(",")] if args.names else [str(i + 1) for i in range(n)]
+    names = [check_text(s.strip(), "--names") for s in args.names.split(",")] if args.names else \
+        [str(i + 1) for i in range(n)]
     if len(names) != n:
         raise InputError(f"--names: give {n} names, one per mass; got {len(names)}")
     chain = reduce_chain([Mass(nm, j, ui, mi) for nm, j, ui, mi in zip(names, J, u, M)],

@@ -131,6 +131,16 @@ def add_parser(sub) -> None:
     p.set_defaults(func=run)
 
 
+def is_source_checkout(root: pathlib.Path) -> bool:
+    """True when ``root`` is graphmethods' own source folder: its pyproject.toml names the project and the
+    package lies beside it (a user's folder that merely has a ``gallery/`` is not one)."""
+    try:
+        text = (root / "pyproject.toml").read_text(encoding="utf-8", errors="replace")[:20_000]
+    except OSError:
+        return False
+    return 'name = "graphmethods"' in text and (root / "graphmethods" / "__init__.py").is_file()
+
+
 def run(args) -> int:
 
     found = figures(args.dir)
@@ -141,6 +151,10 @@ def run(args) -> int:
         if not out.is_dir():
             raise InputError(f"--regenerate rewrites the golden files of a source checkout: no folder {out} here; "
                              f"run it from the project folder")
+        if args.dir is None and not is_source_checkout(out.resolve().parent):
+            raise InputError(f"--regenerate rewrites the golden files of a source checkout, and {out.resolve().parent} "
+                             f"is none (no pyproject.toml of graphmethods beside graphmethods/); to build the "
+                             f"figures here use --out FOLDER")
     else:
         if args.out is not None and args.out.strip() == "":
             raise InputError("--out is empty; give a folder (it is created if missing)")

@@ -44,6 +44,7 @@ import numpy.typing as npt
 
 from graphmethods.dynamics.motion import FloatArray, PhiFunction, ReducedModel, _check_positive
 from graphmethods.errors import InputError, MotionError
+from graphmethods.units import real
 
 __all__ = ["Brake", "ConstantDrive", "Run", "SteadyState", "run"]
 
@@ -325,12 +326,16 @@ def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: B
     """The arguments of :func:`run` checked (InputError naming the bad one); returns the starting angle φ0."""
     if not isinstance(model, ReducedModel):
         raise InputError("model: give a ReducedModel (J_e(φ) and M_e(φ))")
-    if not math.isfinite(float(J_F)):
-        raise InputError(f"J_F = {J_F!r} kg·m² is not finite")
-    phi_0 = model.phi_0 if phi_0 is None else float(phi_0)
+    real(J_F, "J_F", unit="kg·m²", tiny_ok=True)          # the number policy: finite, at most 1e100
+    phi_0 = model.phi_0 if phi_0 is None else real(phi_0, "phi_0", unit="rad", tiny_ok=True)
     for name, v in (("phi_0", phi_0), ("omega_0", omega_0), ("t_0", t_0)):
-        if not (isinstance(v, (int, float)) and math.isfinite(v)):
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
             raise InputError(f"{name} = {v!r} is not a finite number")
+        real(v, name, tiny_ok=True)
+    if t_end is not None:
+        real(t_end, "t_end", unit="s", tiny_ok=True)
+    if turns is not None:
+        real(turns, "turns", tiny_ok=True)
     if omega_0 < 0:
         raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
     if t_end is None and turns is None and not until_steady:
@@ -349,6 +354,7 @@ def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: B
     return phi_0
 
 
+@np.errstate(over="ignore", invalid="ignore")     # an overflowing trial stage is rejected, not reported by numpy
 def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, drive_off_at: float | None = None,
         brake: Brake | None = None, extra: Extra | None = None, phi_0: float | None = None, omega_0: float = 0.0,
         t_0: float = 0.0, t_end: float | None = None, turns: float | None = None, until_steady: bool = False,
@@ -428,6 +434,8 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
 
     def rhs(t: float, y: FloatArray) -> FloatArray:
         phi, omega = y[0], y[1]
+        if not (math.isfinite(phi) and math.isfinite(omega) and abs(omega) < 1e150):
+            return np.full(4, math.nan)       # a trial stage that overflowed: the step is rejected and shortened
         p = np.array([phi])
         J = J_F + float(J_e(p)[0])
         if not J > 0:

@@ -44,6 +44,7 @@ import numpy.typing as npt
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, fmt
 from graphmethods.kinematics.positions import Strokes, at_extremes
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count, real
 
 TWO_PI = 2.0 * math.pi
 
@@ -267,6 +268,10 @@ class Motion:
         return self.linkage._output_psi(self)
 
 
+#: Most Assur groups a linkage may have (textbook mechanisms: one to five; each group's checks cost a solve)
+MAX_GROUPS = 64
+
+
 class Linkage:
     """A planar linkage: fixed joints, a crank, class-II groups in solving order, extra points.
 
@@ -302,6 +307,9 @@ class Linkage:
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
             raise InputError(f"{name}: working_stroke must be slow, fast, toward_crank or away_from_crank; "
                              f"got {working_stroke!r}")
+        if len(groups) > MAX_GROUPS:
+            raise InputError(f"{name}: {len(groups)} Assur groups; at most {MAX_GROUPS} are accepted (MAX_GROUPS: a "
+                             f"machine of the course has two to five)")
         self.name = name
         self._start = float(_norm(start))
         self.sense = int(sense)
@@ -615,7 +623,7 @@ class Linkage:
             m = 12 if m is None else m
             if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
                 raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
+            m = count(m, "the number of positions m", low=3, high=MAX_POSITIONS_COMPUTED)
             self.check_full_turn()
             labels = np.arange(m + 1)
             tr = (TWO_PI / m) * labels
@@ -684,11 +692,14 @@ class Linkage:
         (13, 12, True, 0.0)
         """
         for nm, val, pos in (("omega_1", omega_1, True), ("epsilon_1", epsilon_1, False)):
-            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)) \
-                    or not math.isfinite(val) or (pos and val <= 0):
+            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)):
                 raise InputError(f"{nm} must be a finite number{' > 0 (rad/s)' if pos else ' (rad/s²)'}, got {val!r}")
+            real(val, nm, unit="rad/s" if pos else "rad/s²", lo=0.0 if pos else None, lo_open=pos)   # 1e100 policy
+        omega_1, epsilon_1 = float(omega_1), float(epsilon_1)
         if (m is not None) + (phi is not None) + (phi_from_start is not None) > 1:
             raise InputError("give only one of m, phi or phi_from_start")
+        if m is not None and (isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3):
+            raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")   # before it is a key
         strokes = self.strokes()
         ang, tr, labels, extreme = self._grid(m, phi, phi_from_start, strokes)
         st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)

@@ -48,11 +48,17 @@ from graphmethods.scene.elements import CAP
 from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm, text_width_mm
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
+from graphmethods.units import input_file
 
 if TYPE_CHECKING:                      # ezdxf is imported only when a DXF is written or read
     from ezdxf.document import Drawing
     from ezdxf.entities import DXFGraphic
 
+#: Most entities a drawing read may give once its blocks are expanded, every copy counted (a student's plan:
+#: a few hundred; a course sheet with its title block: a few thousand)
+MAX_DXF_ENTITIES = 200_000
+#: Deepest nesting of block references a drawing read may have
+MAX_DXF_DEPTH = 8
 #: DXF release written: AutoCAD 2010 (AC1024), read by AutoCAD, KOMPAS, nanoCAD, LibreCAD, BricsCAD, QCAD
 DXF_VERSION = "R2010"
 #: the GUIDs written in the header (ezdxf would make random ones)
@@ -510,8 +516,14 @@ def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawi
     """
     doc, name = _read_document(source)
     reader = _DxfReader()
-    for entity in doc.modelspace():
-        reader.visit(entity)
+    try:
+        for entity in doc.modelspace():
+            reader.visit(entity)
+    except InputError as exc:
+        raise InputError(f"{name}: {exc}") from None
+    except (ValueError, TypeError, ZeroDivisionError, IndexError, KeyError, AttributeError, OverflowError,
+            RecursionError) as exc:          # an entity ezdxf read but cannot give (a broken block reference)
+        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {_one_line(exc)})") from None
     return reader.drawing(name, _to_mm(doc))
 
 
@@ -521,6 +533,8 @@ def _read_document(source: str | os.PathLike[str] | bytes | bytearray) -> tuple[
     from ezdxf.lldxf.const import DXFError
 
     name = str(source) if not isinstance(source, (bytes, bytearray)) else "<dxf>"
+    if not isinstance(source, (bytes, bytearray)):
+        input_file(source, missing="no such drawing")       # a regular file within the size cap, before ezdxf
     try:
         if isinstance(source, (bytes, bytearray)):
             doc = ezdxf.read(io.StringIO(bytes(source).decode("utf-8", errors="replace")))
@@ -528,11 +542,24 @@ def _read_document(source: str | os.PathLike[str] | bytes | bytearray) -> tuple[
             doc = ezdxf.readfile(str(source))
     except OSError as exc:
         if isinstance(source, (bytes, bytearray)) or pathlib.Path(source).is_file():     # ezdxf: "is not a DXF file"
-            raise InputError(f"{name}: not a readable DXF drawing ({exc})") from None
-        raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {exc})") from None
-    except (DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:   # ezdxf on a cut file
-        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
+            raise InputError(f"{name}: not a readable DXF drawing ({_one_line(exc)})") from None
+        raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {_one_line(exc)})") from None
+    except (DXFError, ValueError, TypeError, IndexError, KeyError, AttributeError, UnicodeDecodeError, StopIteration,
+            EOFError, RecursionError, OverflowError) as exc:   # ezdxf on a cut or malformed file
+        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {_one_line(exc)})") from None
     return doc, name
+
+
+def _decoded(text: str) -> str:
+    """A DXF text with ezdxf's own decoding of the ``\\U+03BC`` escapes older DXF versions store (μ, Δ, ω)."""
+    from ezdxf.lldxf.encoding import decode_dxf_unicode, has_dxf_unicode
+
+    return decode_dxf_unicode(text) if has_dxf_unicode(text) else text
+
+
+def _one_line(exc: BaseException) -> str:
+    """An exception's message as one line (a parser's message may quote a line of the file, newline and all)."""
+    return " ".join(str(exc).split())[:200]
 
 
 def _xy(v: Any) -> tuple[float, float]:           # an ezdxf Vec2/Vec3 or a point tuple
@@ -553,10 +580,23 @@ class _DxfReader:
         self.texts: list[CadText] = []
         # TEXT entities: (text, x, y, height, left-aligned, last run's height, its x, its text, halign, valign)
         self.runs: list[tuple[Any, ...]] = []
+        self.count = 0                 # entities visited, every copy of a block's entity counted
 
     def visit(self, entity: Any, depth: int = 0) -> None:    # any DXF entity (its attributes differ by type)
         t = entity.dxftype()
-        if t == "INSERT" and depth < 8:
+        self.count += 1
+        if self.count > MAX_DXF_ENTITIES:
+            raise InputError(f"more than {MAX_DXF_ENTITIES} entities once its blocks are expanded "
+                             f"(MAX_DXF_ENTITIES, counted in copies); explode fewer blocks or draw the entities")
+        if t == "INSERT":
+            if depth >= MAX_DXF_DEPTH:
+                raise InputError(f"blocks inserted more than {MAX_DXF_DEPTH} levels deep (MAX_DXF_DEPTH)")
+            block = entity.block()
+            copies = int(getattr(entity, "mcount", 1) or 1) * (len(block) if block is not None else 0)
+            if self.count + copies > MAX_DXF_ENTITIES:
+                raise InputError(f"more than {MAX_DXF_ENTITIES} entities once its blocks are expanded "
+                                 f"(MAX_DXF_ENTITIES, counted in copies: block {entity.dxf.name!r} adds "
+                                 f"{copies}); explode fewer blocks or draw the entities")
             for e in entity.virtual_entities():
                 self.visit(e, depth + 1)
         elif t == "LINE":
@@ -574,7 +614,7 @@ class _DxfReader:
             self.text(entity)
         elif t == "MTEXT":
             h = float(entity.dxf.get("char_height", 2.5))
-            text = entity.plain_text(split=False).strip()
+            text = _decoded(entity.plain_text(split=False)).strip()
             ap = int(entity.dxf.get("attachment_point", 1))      # 1 top left … 9 bottom right
             col, row = (ap - 1) % 3, (ap - 1) // 3
             at = entity.dxf.insert
@@ -636,7 +676,7 @@ class _DxfReader:
     def text(self, entity: Any) -> None:
         """A TEXT as a run of its label (joined to the previous run when it is that label's sub/superscript)."""
         h = float(entity.dxf.height)
-        text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
+        text = _decoded(entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text)
         halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
         aligned = (halign or valign) and entity.dxf.hasattr("align_point")
         at = entity.dxf.align_point if aligned else entity.dxf.insert
@@ -715,10 +755,12 @@ def overlay_onto(source: str | os.PathLike[str], scene: Scene, *, shift: tuple[f
     import ezdxf
     from ezdxf.lldxf.const import DXFError
 
+    input_file(source, missing="no such drawing")
     try:
         doc = ezdxf.readfile(str(source))
-    except (OSError, DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:
-        raise InputError(f"{source}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
+    except (OSError, DXFError, ValueError, TypeError, IndexError, KeyError, AttributeError, UnicodeDecodeError,
+            StopIteration, EOFError, RecursionError, OverflowError) as exc:
+        raise InputError(f"{source}: not a readable DXF drawing ({exc.__class__.__name__}: {_one_line(exc)})") from None
     if layer not in doc.layers:
         doc.layers.add(layer, color=1)                  # red
     for name, (font, family, bold) in TEXT_STYLES.items():

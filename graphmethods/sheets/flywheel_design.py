@@ -48,28 +48,32 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     notation : {"en", "ru", "zh"}
     """
     nt = get_notation(notation)
+    if not hasattr(rim, "H") and disc is None:       # a disc alone (flywheel --disc without --rim)
+        rim, disc = None, rim
     sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.design_title"), problem=problem,
                        title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     lay = LAYOUT
     top = sheet.top + lay.top_mm
     room_h = 0.5 * (sheet.caption_y - lay.bottom_mm - top)  # the drawings above, the table under them
-    parts = [rim] + ([disc] if disc is not None else [])
-    widest = max(rim.D + rim.H, disc.D if disc is not None else 0.0)
-    span_w = rim.B + (disc.B if disc is not None else 0.0)
+    parts = [p for p in (rim, disc) if p is not None]
+    widest = max(p.D + getattr(p, "H", 0.0) for p in parts)
+    span_w = sum(p.B for p in parts)
     room_w = (x1 - x0) * lay.drawings_share - lay.dimensions_mm
     s_l = given_scale(mu_l, "μ_l", nt.unit("m"), max(widest, span_w * room_h / max(room_w, 1.0)), room_h,
                       what="the flywheel")
     cy = top + room_h / 2                                     # the axis of rotation (horizontal on paper)
     xr = x0 + lay.rim_left_mm
     els: list[Any] = [sheet.header()]
-    els += _rim_section(rim, s_l, nt, xr, cy, top)
+    if rim is not None:
+        els += _rim_section(rim, s_l, nt, xr, cy, top)
     if disc is not None:
-        els += _disc_section(disc, s_l, nt, xr + s_l.to_mm(rim.B) + lay.disc_gap_mm, cy, top)
+        els += _disc_section(disc, s_l, nt, xr + (s_l.to_mm(rim.B) + lay.disc_gap_mm if rim is not None else 0.0),
+                             cy, top)
     els.append(Table((x0 + 10.0, cy + room_h / 2 + 14.0), _table_rows(parts, nt), align="lrr", size_mm=2.8,
                      name="table"))
     verdicts = []
-    for p, key in zip(parts, ("rim", "disc")):
+    for p, key in zip(parts, ("rim", "disc") if rim is not None else ("disc",)):
         verdict = nt.word("flywheel.ok") if p.rim_speed <= p.speed_limit else nt.word("flywheel.over")
         verdicts.append(f"{nt.word(f'flywheel.{key}')}: {verdict}")
     els.append(Text((x0, sheet.caption_y - 7.0), ";  ".join(verdicts), size_mm=TEXT_MM, name="verdict"))
@@ -154,7 +158,7 @@ def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     """The table: J, m, mD², D and B, ρ and the rim speed of each flywheel."""
     num = nt.number
     kg, kgm2, ms, mm = nt.unit("kg"), nt.unit("kg·m²"), nt.unit("m/s"), nt.unit("mm")
-    head = ("", nt.word("flywheel.rim_short")) + ((nt.word("flywheel.disc_short"),) if len(parts) > 1 else ())
+    head = ("",) + tuple(nt.word("flywheel.rim_short" if hasattr(p, "H") else "flywheel.disc_short") for p in parts)
     rows: list[tuple[str, ...]] = [head]
 
     def row(label: str, f: Any) -> None:

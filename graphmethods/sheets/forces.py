@@ -76,7 +76,7 @@ def _markup(label: str, nt: Notation | str | None = None) -> str:
     sub = m.group(3)
     if m.group(1) in ("F", "M") and not sup:
         words = get_notation(nt)
-        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()):
+        if sub[:1] == "i" and (len(sub) == 1 or (sub[1:].isdigit() and sub[1:].isascii())):
             sub = words.word("forces.sub_inertia") + sub[1:]
         elif sub == "b":
             sub = words.word("forces.sub_balance")
