@@ -176,7 +176,7 @@ def run(args) -> int:
     res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=args.n,
                  epsilon_1=args.epsilon_1)
     if args.json:
-        print(json_text(res, ensure_ascii=False, indent=1))
+        print(json_text(res, indent=1))
     else:
         check_finite({k: v for k, v in res.items() if k != "pairs"})
         print(_text(res, args.lang))

@@ -23,8 +23,7 @@ def run(args) -> int:
 
     rows = listing()
     if args.json:
-        print(json.dumps([{"name": r.name, "kind": r.kind, "title": r.title} for r in rows], indent=1,
-                         ensure_ascii=False))
+        print(json.dumps([{"name": r.name, "kind": r.kind, "title": r.title} for r in rows], indent=1))
         return 0
     print(f"{'name':<18}{'kind':<15}title")
     for r in rows:

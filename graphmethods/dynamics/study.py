@@ -416,3 +416,32 @@ def _fine_study(case: Case, m: int) -> Study:
     fine = Study.__new__(Study)
     fine.case, fine.m, fine.estimate, fine.computed = case, int(m), False, []
     return fine
+
+
+class AngleStudy(Study):
+    """A :class:`Study` whose positions are the linkage at given crank angles, not 0…m: the plans and
+    figures of a textbook's own crank angle.
+
+    Parameters
+    ----------
+    case : Case
+    phi_deg : sequence of float
+        Crank angles, degrees from +x, counterclockwise (as the problem file defines φ).
+
+    Examples
+    --------
+    >>> from graphmethods.problems.builtin import case
+    >>> s = AngleStudy(case("press"), [30.0, 120.0])
+    >>> s.positions.n
+    2
+    """
+
+    def __init__(self, case: Case, phi_deg: ArrayLike) -> None:
+        super().__init__(case, positions=3)
+        self.phi_angles: FloatArray = np.radians(np.asarray(phi_deg, dtype=float).ravel())
+        self.m = int(self.phi_angles.size)
+
+    @_logged
+    def positions(self) -> Positions:
+        """The linkage at the given crank angles."""
+        return self.mechanism.positions(phi=self.phi_angles)

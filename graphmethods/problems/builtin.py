@@ -102,9 +102,48 @@ def case_path(spec) -> pathlib.Path:
                      f"see `graphmethods problems`)")
 
 
+#: the name that stands for standard input wherever a problem file is read
+STDIN = "-"
+
+
+def read_stdin_case():
+    """The linkage problem file given on standard input (``graphmethods study - < press.json``)."""
+    import sys
+
+    from graphmethods.kinematics.case import case_from_dict
+    from graphmethods.units import json_value
+
+    try:
+        text = sys.stdin.read()
+    except UnicodeDecodeError as exc:
+        raise InputError(f"standard input: not UTF-8 text ({exc.reason})") from None
+    if not text.strip():
+        raise InputError("standard input is empty: give a problem file there (graphmethods problems press --file "
+                         "> press.json, edited) or name a file")
+    return case_from_dict(json_value(text, "standard input"), source="standard input")
+
+
+def file_text(name: str) -> str:
+    """The problem file of a built-in linkage, as it ships (to redirect, edit and give back).
+
+    >>> import json
+    >>> json.loads(file_text("press"))["r"]
+    0.1
+    """
+    return read_text_file(case_path(name))
+
+
+def read_text_file(path: pathlib.Path) -> str:
+    from graphmethods.units import read_text
+
+    return read_text(path)
+
+
 def case(spec):
-    """The linkage problem of a file or a built-in name, read and validated
+    """The linkage problem of a file, a built-in name or ``-`` (standard input), read and validated
     (:func:`graphmethods.kinematics.read_case`)."""
     from graphmethods.kinematics import read_case
 
+    if str(spec) == STDIN:
+        return read_stdin_case()
     return read_case(case_path(spec))

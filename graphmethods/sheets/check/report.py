@@ -155,7 +155,7 @@ class CheckReport:
                 "notes": list(self.notes)}
 
     def to_json(self) -> str:
-        return json_text(self.to_dict(), indent=1, ensure_ascii=False)
+        return json_text(self.to_dict(), indent=1)
 
     def _rows(self):
         for it in self.items:
