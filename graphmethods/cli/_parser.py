@@ -54,7 +54,7 @@ def numbers(text: str) -> list[float]:
     >>> numbers("0, 90,1/2")
     [0.0, 90.0, 0.5]
     """
-    parts = [p for p in str(text).split(",")]
+    parts = str(text).split(",")
     if not any(p.strip() for p in parts) or any(not p.strip() for p in parts):
         raise argparse.ArgumentTypeError(f"{text!r}: give numbers separated by commas, e.g. 0,90,180")
     return [number(p.strip()) for p in parts]

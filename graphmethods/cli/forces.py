@@ -107,9 +107,9 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
         for f in forces:
             if f.label.startswith("F_i"):
                 continue
-            F, Mf = complex(f.F[i]), float(f.M[i])
-            if F != 0:
-                loads.append({"label": f.label, "link": int(k), "at": _v(complex(f.at[i])), "force": _v(F)})
+            Fz, Mf = complex(f.F[i]), float(f.M[i])
+            if Fz != 0:
+                loads.append({"label": f.label, "link": int(k), "at": _v(complex(f.at[i])), "force": _v(Fz)})
             if Mf != 0:
                 loads.append({"label": f.label, "link": int(k), "moment": _f(Mf)})
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))

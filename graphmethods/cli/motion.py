@@ -31,13 +31,16 @@ def preprocess_argv(argv: list[str]) -> list[str]:
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli.kinematics import builtin_names
+
     p = sub.add_parser(
         "motion", help="motion from given initial conditions: start-up, steady running, run-down",
         description="Integrate J_e(φ)dω/dt + ½ω²dJ_e/dφ = M(φ, ω, t) from φ0, ω0, t0 for a built-in problem "
-                    "(W3, W4, press, four-bar, slotted-lever, shaper) or a linkage problem file, and print "
+                    "(W3, W4, W4-exact, " + builtin_names() + ") or a linkage problem file, and print "
                     "t, φ, ω, ε (SI) and a summary.",
         epilog="Example: graphmethods motion press --motor induction:P=5500,n=1440,n_sync=1500,lam=2.2 --until-steady")
-    p.add_argument("case", metavar="CASE", help="a built-in problem name or a linkage problem file (JSON)")
+    p.add_argument("case", metavar="CASE", help="a built-in problem (W3, W4, W4-exact, " + builtin_names() + ") or a "
+                   "linkage problem file (JSON; - reads it from standard input)")
     p.add_argument("--phi0", default=None, metavar="DEG", help="initial crank angle, degrees (default: position 0)")
     p.add_argument("--omega0", default=None, metavar="RAD_S",
                    help="initial speed, rad/s (default: the problem's own ω0, else 0: start from rest)")
@@ -64,10 +67,11 @@ def add_parser(sub) -> None:
     p.add_argument("--rtol", default="1e-10", help="relative tolerance of the integrator (default 1e-10)")
     p.add_argument("--json", action="store_true", help="print one JSON object: arrays t, phi, omega, epsilon "
                                                        "and the summary")
-    p.add_argument("--figures", default=None, metavar="DIR",
-                   help="also draw ω(t), ω(φ) and ε(φ) into DIR (created if missing), scale-true")
+    p.add_argument("-o", "--out", "--figures", dest="figures", default=None, metavar="DIR",
+                   help="also draw ω(t), ω(φ) and ε(φ) into DIR (created if missing), scale-true (older name "
+                        "--figures still accepted)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
-    p.add_argument("--format", choices=("svg", "pdf", "png"), default="svg", dest="fig_format",
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default="svg", dest="fig_format",
                    help="file format of the figures (default svg)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     p.set_defaults(func=run)

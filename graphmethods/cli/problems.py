@@ -7,6 +7,7 @@ The name goes wherever a command takes a problem: ``graphmethods study press``,
 from __future__ import annotations
 
 import json
+import sys
 
 
 def add_parser(sub) -> None:
@@ -14,12 +15,28 @@ def add_parser(sub) -> None:
                        description="List the built-in problems: name, kind and title. Give the name wherever a "
                        "command takes a problem file: graphmethods study press, graphmethods kinematics shaper, "
                        "graphmethods check W1 ANSWERS.toml.")
+    p.add_argument("name", metavar="NAME", nargs="?", default=None,
+                   help="with --file: the built-in linkage problem whose file to print")
+    p.add_argument("--file", action="store_true",
+                   help="print NAME's problem file as it ships, to redirect and edit (graphmethods problems press "
+                        "--file > my_press.json; then graphmethods study my_press.json)")
     p.add_argument("--json", action="store_true", help="print one JSON list of {name, kind, title}")
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
-    from graphmethods.problems.builtin import listing
+    from graphmethods.errors import InputError
+    from graphmethods.problems.builtin import file_text, listing
+
+    if args.name is not None or args.file:
+        if args.name is None or not args.file:
+            raise InputError("give a name and --file to print a built-in problem's file, e.g. graphmethods problems "
+                             "press --file > press.json; or neither, for the list")
+        if args.json:
+            raise InputError("--file prints the problem file (JSON itself); leave out --json")
+        text = file_text(args.name)
+        sys.stdout.write(text if text.endswith("\n") else text + "\n")
+        return 0
 
     rows = listing()
     if args.json:

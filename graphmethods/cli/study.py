@@ -10,7 +10,6 @@ An existing file is kept unless ``--force``; on any error nothing is written.
 
 from __future__ import annotations
 
-import pathlib
 import sys
 
 from graphmethods.cli._sheet import check_sheet_target

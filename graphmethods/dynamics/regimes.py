@@ -804,7 +804,6 @@ def _dense_samples(res: Run, per_step: int = 8) -> tuple[FloatArray, FloatArray,
     n = res.steps
     idx = np.repeat(np.arange(n), per_step)
     theta = np.tile(np.arange(per_step) / per_step, n)
-    h = res.t[idx + 1] - res.t[idx]
     slope = np.stack([np.ones_like(theta), 2 * theta, 3 * theta**2, 4 * theta**3], axis=-1)
     Q = np.einsum("...sk,sp->...kp", res._K[idx], _P)
     ts, ys = res._dense(idx, theta)

@@ -54,13 +54,14 @@ TWO_PI = 2.0 * math.pi
 
 
 _T = TypeVar("_T")
+_S = TypeVar("_S", bound="Study")
 
 
-def _logged(fn: Callable[[Study], _T]) -> cached_property[_T]:
+def _logged(fn: Callable[[_S], _T]) -> cached_property[_T]:
     """A cached property that records its name in ``computed`` the one time it runs."""
     name = fn.__name__
 
-    def wrapper(self: Study) -> _T:
+    def wrapper(self: _S) -> _T:
         value = fn(self)
         self.computed.append(name)
         return value

@@ -134,6 +134,10 @@ def machine(spec, *, J_F: float | None = None) -> Machine:
         return _cycle_machine(cycles[low](), J_F)
     from graphmethods.kinematics import read_case
 
+    if text == "-":                        # the problem file on standard input
+        from graphmethods.problems.builtin import read_stdin_case
+
+        return _linkage_machine(read_stdin_case(), "stdin", J_F)
     if low in LINKAGES:
         return _linkage_machine(read_case(DATA / LINKAGES[low]), low, J_F)
     p = pathlib.Path(text)
