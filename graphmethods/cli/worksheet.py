@@ -104,7 +104,7 @@ def add_parser(sub) -> None:
     p.add_argument("--variants", type=int, default=1, metavar="N", help="number of variants (default 1)")
     p.add_argument("--seed", type=int, default=0, metavar="S", help="seed; the same seed gives the same variants")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")
-    p.add_argument("--out", required=True, metavar="DIR", help="output folder (created if missing)")
+    p.add_argument("-o", "--out", required=True, metavar="DIR", help="output folder (created if missing)")
     p.add_argument("--force", action="store_true", help="replace existing files")
     p.add_argument("--quiet", action="store_true", help="no progress on stderr")
     p.add_argument("--dxf", action="store_true", help="also write each page as DXF in DIR/dxf/ (students draw on it in "
