@@ -123,14 +123,37 @@ def read_stdin_case():
     return case_from_dict(json_value(text, "standard input"), source="standard input")
 
 
+def example_files() -> dict[str, pathlib.Path]:
+    """The example students' files that ship with the package (answers files, drawings made in CAD), by
+    file name: what ``graphmethods check`` reads in the README's examples.
+
+    >>> "w1_mistakes.toml" in example_files()
+    True
+    """
+    found = sorted([*(DATA / "answers").glob("*.toml"), *(DATA / "drawings").glob("*.dxf"),
+                    *(DATA / "drawings").glob("*.svg")], key=lambda p: p.name)
+    return {p.name: p for p in found}
+
+
 def file_text(name: str) -> str:
-    """The problem file of a built-in linkage, as it ships (to redirect, edit and give back).
+    """The problem file of a built-in linkage, or an example student's file (by its file name), as it
+    ships: to redirect, edit and give back.
 
     >>> import json
     >>> json.loads(file_text("press"))["r"]
     0.1
+    >>> file_text("w1_mistakes.toml").startswith("#")
+    True
     """
-    return read_text_file(case_path(name))
+    return read_text_file(file_path(name))
+
+
+def file_path(name: str) -> pathlib.Path:
+    """Where the file :func:`file_text` prints lies in the installed package."""
+    examples = example_files()
+    if str(name) in examples:
+        return examples[str(name)]
+    return case_path(name)
 
 
 def read_text_file(path: pathlib.Path) -> str:
