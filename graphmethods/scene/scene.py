@@ -173,7 +173,8 @@ class Scene:
         ...     p.name
         'a.svg'
         """
-        import importlib          # the writers sit one layer up (graphmethods.render), looked up at call time
+        # the writers sit one layer up (graphmethods.render), looked up by name at call time
+        import importlib
 
         return importlib.import_module("graphmethods.render.formats").save(self, path, overwrite=overwrite)
 
