@@ -298,17 +298,53 @@ def test_scene_save_overwrites_when_asked(tmp_path):
 # ------------------------------------------------------------------ progress on stderr, --quiet
 
 
-def test_progress_line_goes_to_stderr_and_quiet_silences_it(capsys, tmp_path):
+def test_progress_on_a_terminal_is_one_line_rewritten_and_cleared_before_an_error(capsys, tmp_path, monkeypatch):
+    import io
+
+    from graphmethods.cli import _progress
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    term = Terminal()
+    monkeypatch.setattr(sys, "stderr", term)
     folder = tmp_path / "scripts"
     folder.mkdir()
-    (folder / "one.py").write_text("from graphmethods.scene import Page, Scene, Text\n"
-                                   "def build():\n    return Scene(Page('A4'), (Text((10, 12), 'x', name='t'),))\n",
-                                   encoding="utf-8")
+    (folder / "a_one.py").write_text("from graphmethods.scene import Page, Scene, Text\n"
+                                     "def build():\n    return Scene(Page('A4'), (Text((10, 12), 'x', name='t'),))\n",
+                                     encoding="utf-8")
     assert main(["gallery", "--dir", str(folder), "-o", str(tmp_path / "out")]) == 0
-    out = capsys.readouterr()
-    assert "[1/1] one" in out.err and "[1/1]" not in out.out
-    assert main(["gallery", "--dir", str(folder), "-o", str(tmp_path / "out"), "--force", "--quiet"]) == 0
-    assert capsys.readouterr().err == ""
+    shown = term.getvalue()
+    assert "\rgallery [1/1] a_one" in shown and "\n" not in shown and shown.endswith("\r")   # cleared
+    assert "wrote" in capsys.readouterr().out                 # the results on stdout
+    term.seek(0)
+    term.truncate()
+    (folder / "b_broken.py").write_text("def build():\n    return 1 / 0\n", encoding="utf-8")
+    assert main(["gallery", "--dir", str(folder), "-o", str(tmp_path / "out2")]) == 2
+    last = term.getvalue().split("\r")[-1]
+    assert last.startswith("graphmethods gallery: error: b_broken") and last.count("\n") == 1
+    assert not _progress._ACTIVE
+    term.seek(0)
+    term.truncate()
+    assert main(["gallery", "--dir", str(folder), "-o", str(tmp_path / "out3"), "--quiet"]) == 2
+    assert "[1/2]" not in term.getvalue()
+
+
+def test_progress_into_a_file_is_a_line_now_and_then():
+    import io
+
+    from graphmethods.cli._progress import Progress
+
+    out = io.StringIO()
+    p = Progress(label="bench ", stream=out, tty=False, every=0.0)
+    p(1, 2, "flywheel")
+    p(2, 2, "kinematics")
+    p.done()
+    assert out.getvalue() == "bench [1/2] flywheel\nbench [2/2] kinematics\n"
+    quiet = io.StringIO()
+    Progress(quiet=True, stream=quiet, tty=False, every=0.0)(1, 1, "x")
+    assert quiet.getvalue() == ""
 
 
 # ------------------------------------------------------------------ the README's commands
