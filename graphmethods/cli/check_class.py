@@ -76,7 +76,7 @@ def run(args) -> int:
 
     from graphmethods.cli._progress import Progress
 
-    line = Progress(quiet=args.quiet)
+    line = Progress(quiet=args.quiet, every=0.0)      # into a file: one line per student, with its verdict
 
     def progress(i, n, s):
         what = s.report.summary() if s.report is not None else f"could not be checked: {s.error}"
