@@ -704,6 +704,23 @@ def _steady_check(boundary: Sequence[tuple[float, float, float]], tol: float) ->
     return None, remaining
 
 
+def _golden_max(f: Callable[[float], float], lo: float, hi: float, iterations: int) -> tuple[float, float]:
+    """(x, f(x)) of the largest f on [lo, hi] by golden-section search (f unimodal there)."""
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
+    fc, fd = f(c), f(d)
+    for _ in range(iterations):
+        if fc >= fd:
+            hi, d, fd = d, c, fc
+            c = hi - g * (hi - lo)
+            fc = f(c)
+        else:
+            lo, c, fc = c, d, fd
+            d = lo + g * (hi - lo)
+            fd = f(d)
+    return (c, fc) if fc >= fd else (d, fd)
+
+
 def _golden_extreme(res: Run, ts: FloatArray, ws: FloatArray, phis: FloatArray, j: int,
                     sense: int) -> tuple[float, float]:
     """(ω, φ) of the maximum (sense +1) or minimum (−1) of ω(t) near the sample j of the last period (times ts,
@@ -713,23 +730,7 @@ def _golden_extreme(res: Run, ts: FloatArray, ws: FloatArray, phis: FloatArray, 
     step = float(ts[1] - ts[0])             # at the ends the bracket reaches into the neighbour periods
     lo = float(ts[j - 1]) if j > 0 else max(float(ts[0]) - step, float(res.t[0]))
     hi = float(ts[j + 1]) if j < ts.size - 1 else min(float(ts[-1]) + step, float(res.t[-1]))
-    g = (math.sqrt(5.0) - 1.0) / 2.0
-
-    def f(tt: float) -> float:
-        return sense * float(res.at_time([tt])["omega"][0])
-
-    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
-    fc, fd = f(c), f(d)
-    for _ in range(40):
-        if fc >= fd:
-            hi, d, fd = d, c, fc
-            c = hi - g * (hi - lo)
-            fc = f(c)
-        else:
-            lo, c, fc = c, d, fd
-            d = lo + g * (hi - lo)
-            fd = f(d)
-    tt = c if fc >= fd else d
+    tt, _ = _golden_max(lambda x: sense * float(res.at_time([x])["omega"][0]), lo, hi, 40)
     at = res.at_time([tt])
     if sense * (at["omega"][0] - ws[j]) >= 0:
         return float(at["omega"][0]), float(at["phi"][0])
@@ -839,24 +840,13 @@ def _epsilon_extreme(res: Run, ts: FloatArray, es: FloatArray, sense: int) -> tu
     """(ε, t) of the largest (sense +1) or smallest (−1) ε: golden section around the best sample."""
     j = int(np.argmax(sense * es))
     lo, hi = float(ts[max(j - 1, 0)]), float(ts[min(j + 1, ts.size - 1)])
-    g = (math.sqrt(5.0) - 1.0) / 2.0
 
     def f(tt: float) -> float:
         return sense * float(res.at_time([tt])["epsilon"][0])
 
-    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
-    fc, fd = f(c), f(d)
-    for _ in range(50):
-        if fc >= fd:
-            hi, d, fd = d, c, fc
-            c = hi - g * (hi - lo)
-            fc = f(c)
-        else:
-            lo, c, fc = c, d, fd
-            d = lo + g * (hi - lo)
-            fd = f(d)
-    cands = [(fc, c), (fd, d), (f(float(ts[j])), float(ts[j])), (sense * float(es[j]), float(ts[j]))]
-    cands += [(sense * float(e), float(t)) for e, t in zip(res.epsilon, res.t) if abs(t - ts[j]) <= hi - lo]
+    x, fx = _golden_max(f, lo, hi, 50)
+    cands = [(fx, x), (f(float(ts[j])), float(ts[j])), (sense * float(es[j]), float(ts[j]))]
+    cands += [(sense * float(e), float(t)) for e, t in zip(res.epsilon, res.t) if lo <= t <= hi]
     v, t = max(cands)
     return sense * v, t
 
