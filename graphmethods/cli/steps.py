@@ -33,14 +33,15 @@ KINDS = {"slides": "pdf", "frames": "svg", "page": "html", "animation": "animate
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, number
+    from graphmethods.cli.kinematics import builtin_names
 
     p = sub.add_parser("steps", help=HELP,
                        description="Build a textbook construction step by step: each step adds its lines and "
                        "points, in colour over the earlier steps in grey, with a caption saying what is drawn "
                        "and why.")
     p.add_argument("case", metavar="CASE",
-                   help="press, four-bar, slotted-lever, shaper (or another built-in linkage), W1, W2, W3, W4, or a "
-                        "linkage problem file")
+                   help="a built-in linkage (" + builtin_names() + "), W1, W2, W3, W4, or a linkage problem file "
+                        "(- reads it from standard input)")
     p.add_argument("figure", metavar="FIGURE",
                    help="velocity-plan, acceleration-plan, force-plans, zhukovsky-lever (every force, M_b), "
                         "zhukovsky-load (the load alone, M_r), energy-indicator, wittenbauer, kinematic-diagrams, "
@@ -83,7 +84,7 @@ def run(args) -> int:
                          "animation for standard output")
     bu = steps.build(args.case, args.figure, position=args.position, notation=args.lang, page=args.page,
                      m=args.positions)
-    stem = pathlib.Path(str(args.case)).stem.lower().replace("-", "_")
+    stem = "stdin" if args.case == "-" else pathlib.Path(str(args.case)).stem.lower().replace("-", "_")
     figure = str(args.figure).lower().replace("-", "_")
     extra = "_animated" if fmt == "animated-svg" else ""
     default = f"{stem}_{figure}_{args.lang}{extra}{SUFFIX[fmt]}"
