@@ -125,6 +125,18 @@ def test_fractions_are_numbers(capsys):
     assert res["positions"][0]["phi_deg"] == pytest.approx(45.0) and res["epsilon_1"] == 0.5
 
 
+def test_study_takes_the_speed_as_n_or_omega(capsys):
+    _, a, _ = run(capsys, "study", "press", "--no-exact", "--n", "150", "--json")
+    _, b, _ = run(capsys, "study", "press", "--no-exact", "--omega", "15.707963267948966",
+                  "--json")
+    ja, jb = json.loads(a), json.loads(b)
+    assert ja["n_rpm"] == 150.0 and jb["n_rpm"] == pytest.approx(150.0)
+    # J_F + J_e ∝ 1/ω²: half the speed, four times the total inertia
+    _, c, _ = run(capsys, "study", "press", "--no-exact", "--json")
+    jc = json.loads(c)
+    assert ja["J_F_energy"] + ja["J_e_mean"] == pytest.approx(4 * (jc["J_F_energy"] + jc["J_e_mean"]), rel=0.02)
+
+
 def test_omega_and_n_are_the_same_speed(capsys):
     _, a, _ = run(capsys, "forces", "press", "--phi-deg", "30", "--n", "300", "--json")
     _, b, _ = run(capsys, "forces", "press", "--phi-deg", "30", "--omega", "31.41592653589793", "--json")

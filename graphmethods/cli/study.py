@@ -19,7 +19,7 @@ from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, numbers
-    from graphmethods.cli.kinematics import builtin_names
+    from graphmethods.cli.kinematics import add_speed, builtin_names
 
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
                        description="Solve a linkage problem (a problem file, or a built-in linkage: "
@@ -34,6 +34,7 @@ def add_parser(sub) -> None:
     p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
                    help="also give J_e, dJ_e/dφ, M_d, M_r, M_e, ω, ε and the powers N_d = M_d·ω, N_r = M_r·ω of the "
                         "steady motion (with the exact J_F) at these crank angles (degrees from +x)")
+    add_speed(p)
     p.add_argument("--no-exact", action="store_true", help="skip the exact reference solution (faster)")
     p.add_argument("--translating", nargs="?", const="", default=None, metavar="POINT",
                    help="also reduce to a translating link at POINT (default: the point the load acts on): "
@@ -89,6 +90,7 @@ def _angle_table(rows: list[dict]) -> list[str]:
 
 def run(args) -> int:
     from graphmethods.cli._sheet import refuse_two_on_stdout, report_stream
+    from graphmethods.cli.kinematics import speed_rpm
     from graphmethods.dynamics.study import Study
     from graphmethods.problems import builtin
 
@@ -97,7 +99,13 @@ def run(args) -> int:
     if sheet is None and args.format is not None:
         raise InputError("--format is the sheet's file format; add -o FILE (or -o - for standard output)")
     refuse_two_on_stdout(args.json, sheet)
-    study = Study(builtin.case(args.case), positions=args.positions)
+    case = builtin.case(args.case)
+    n_rpm = speed_rpm(args)
+    if n_rpm is not None:                    # the mean speed of the file replaced, everything else kept
+        import dataclasses
+
+        case = dataclasses.replace(case, n_rpm=n_rpm)
+    study = Study(case, positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
     if args.eta is not None:
