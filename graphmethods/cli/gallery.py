@@ -120,7 +120,8 @@ def add_parser(sub) -> None:
                        "problems) into a folder, as scale-true SVG (optionally PNG).")
     p.add_argument("--dir", default=None,
                    help="build the scripts of this folder instead (each <name>.py defines build() -> Scene)")
-    p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
+    p.add_argument("-o", "--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
+    p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
     p.add_argument("--dxf", action="store_true",
@@ -174,11 +175,14 @@ def run(args) -> int:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(existing[:3])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
+    from graphmethods.cli._progress import Progress
     from graphmethods.render import formats
     from graphmethods.render.files import write_set
 
     blobs, lines = {}, []
-    for name, module, targets in jobs:      # build every figure first: a failing script writes nothing
+    progress = Progress(quiet=args.quiet, label="gallery ")
+    for k, (name, module, targets) in enumerate(jobs, start=1):  # build every figure first: a failing script writes
+        progress(k, len(jobs), name)                              # nothing
         try:
             scene = build(module)
         except GraphmethodsError as exc:
@@ -190,6 +194,7 @@ def run(args) -> int:
         line = " and ".join([f"wrote {targets[0]}"] + [t.name for t in targets[1:]])
         scales = "; ".join(s.caption() for s in scene.scales())
         lines.append(line + (f"  ({scales})" if scales else ""))
+    progress.done()
     write_set(out, blobs, overwrite=overwrite, what="gallery folder")
     for line in lines:
         print(line, file=sys.stdout)

@@ -98,12 +98,15 @@ class _Problem:
             self.omega_1, self.problem, self.n_rpm = (1.0 if omega_1 is None else float(omega_1)), "", None
             return
         lk = K._Linkage.of(obj, m=m, omega_1=omega_1)
+        self.phi = getattr(obj, "phi_angles", None)      # a study at given crank angles (AngleStudy)
         mech = lk.mech
         self.linkage = mech.linkage          # every mechanism is a linkage of the core
         self.m = 12 if lk.m is None else lk.m
         self.omega_1, self.problem, self.n_rpm = lk.omega_1, lk.problem, lk.n_rpm
 
     def plans(self) -> tuple[AccelerationPlan, ...]:
+        if getattr(self, "phi", None) is not None:
+            return acceleration_plans(self.linkage, phi=self.phi, omega_1=self.omega_1, epsilon_1=self.epsilon_1)
         if isinstance(self.m, bool) or not isinstance(self.m, (int, np.integer)) or self.m < 3:
             raise InputError(f"the number of positions m must be an integer ≥ 3, got {self.m!r}")
         return acceleration_plans(self.linkage, m=int(self.m), omega_1=self.omega_1, epsilon_1=self.epsilon_1)
@@ -361,7 +364,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     nt = get_notation(notation)
     lay = ACCELERATION_PLAN_LAYOUT
     plans = pr.plans()
-    k = _default_position(plans, pr.linkage) if position is None else _check_position(position, len(plans) - 1)
+    last = len(plans) - (1 if getattr(pr, "phi", None) is None else 0)     # at given angles: no repeated last one
+    k = _default_position(plans, pr.linkage) if position is None else _check_position(position, last)
     plan = plans[k]
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plan", k=str(k)),
                   problem=pr.problem if problem is None else problem, title_block=title_block)

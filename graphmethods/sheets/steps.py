@@ -1000,6 +1000,8 @@ def resolve_case(case):
     builtin = {"w1": problems.w1, "w2": problems.w2, "w3": problems.w3, "w4": problems.w4_drawing}
     if low in builtin:
         return builtin[low]()
+    if text == every.STDIN:                   # the problem file on standard input
+        return every.case(text)
     p = pathlib.Path(text)
     if not p.is_file():
         known = list(dict.fromkeys([*LINKAGES, *every.LINKAGES])) + list(CYCLES)
