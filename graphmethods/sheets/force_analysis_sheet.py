@@ -24,6 +24,7 @@ from graphmethods.scene import Page, Scene, Table, Text, notation as get_notatio
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.composition import inset, region_page
+from graphmethods.sheets.engine.lettering import lettered_by_page
 from graphmethods.sheets.layout import TEXT_MM, Sheet
 
 
@@ -46,6 +47,7 @@ def sheet_page(page: str | Page, what: str) -> Page:
     return Page(size, "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True)
 
 
+@lettered_by_page("A1")
 def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                          gravity: bool = False, page: str | Page = "A1", notation: Any = "en",
                          title: str | None = None, title_block: bool = True, name: str = "force-analysis") -> Scene:

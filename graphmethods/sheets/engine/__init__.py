@@ -38,9 +38,9 @@ No millimetre literal in a recipe that the engine could derive.
 from graphmethods.sheets.engine.axes import AxisRange, axis_range, broken_axis_mark, nice_step, nice_ticks
 from graphmethods.sheets.engine.compose import GAP_MM, Split, course_page, shares_for
 from graphmethods.sheets.engine.labels import COMPASS, Ink
-from graphmethods.sheets.engine.lettering import LETTERING, SERIES_MM, Lettering, is_course_sheet, lettering
+from graphmethods.sheets.engine.lettering import LETTERING, SERIES_MM, Lettering, is_course_sheet, lettered, lettering
 from graphmethods.sheets.engine.panel import Panel, extent_of
 
 __all__ = ["COMPASS", "GAP_MM", "LETTERING", "SERIES_MM", "AxisRange", "Ink", "Lettering", "Panel", "Split",
-           "axis_range", "broken_axis_mark", "course_page", "extent_of", "is_course_sheet", "lettering",
+           "axis_range", "broken_axis_mark", "course_page", "extent_of", "is_course_sheet", "lettered", "lettering",
            "nice_step", "nice_ticks", "shares_for"]

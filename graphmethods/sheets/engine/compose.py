@@ -9,7 +9,7 @@ drawing fills its box at about the same scale, as on a course sheet.
 >>> tree = Split("h", (("scheme", 0.4), (Split("v", (("lever", 1), ("plans", 1))), 0.6)), gap_mm=10.0)
 >>> b = tree.boxes((0.0, 0.0, 510.0, 300.0))
 >>> b["scheme"], b["lever"], b["plans"]
-((0.0, 0.0, 200.0, 300.0), (210.0, 0.0, 510.0, 145.0), (210.0, 155.0, 510.0, 300.0))
+((0.0, 0.0, 200.0, 300.0), (210.0, 0.0, 510.0, 146.0), (210.0, 154.0, 510.0, 300.0))
 """
 
 from __future__ import annotations

@@ -13,8 +13,15 @@ Lettering(label_mm=3.5, value_mm=5.0, title_mm=7.0, heading_mm=5.0, minimum_mm=3
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, TypeVar, cast
+
+from graphmethods.scene.markup import MIN_TEXT_MM
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 #: the standard series of lettering sizes (mm): ГОСТ 2.304, GB/T 14691, ISO 3098
 SERIES_MM = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0)
@@ -79,4 +86,39 @@ def is_course_sheet(page: Any) -> bool:
     return str(getattr(page, "size", page)).upper() in ("A0", "A1", "A2")
 
 
-__all__ = ["LETTERING", "SERIES_MM", "Lettering", "is_course_sheet", "lettering"]
+@contextmanager
+def lettered(page: Any) -> Iterator[Lettering]:
+    """Build figures lettered for ``page``'s format: every text made inside is at least its minimum size.
+
+    The parts of an A1 sheet are drawn by the figure functions of the A4 figures; built inside
+    ``with lettered("A1"):`` their texts (and tables' rows) come out at 3.5 mm and up, and their label
+    placement works with those sizes. Outside, sizes are as given.
+
+    >>> from graphmethods.scene import Text
+    >>> with lettered("A1"):
+    ...     t = Text((0, 0), "B", size_mm=2.8)
+    >>> t.size_mm, Text((0, 0), "B", size_mm=2.8).size_mm
+    (3.5, 2.8)
+    """
+    let = lettering(page)
+    token = MIN_TEXT_MM.set(let.minimum_mm if is_course_sheet(page) else MIN_TEXT_MM.get())
+    try:
+        yield let
+    finally:
+        MIN_TEXT_MM.reset(token)
+
+
+def lettered_by_page(default: str = "A1") -> Callable[[F], F]:
+    """Decorate a sheet function so that it builds its parts :func:`lettered` for its ``page`` argument
+    (``default`` when not given)."""
+    def wrap(fn: F) -> F:
+        @functools.wraps(fn)
+        def sheet(*args: Any, **kwargs: Any) -> Any:
+            page = kwargs.get("page", default)
+            with lettered(page if hasattr(page, "size") else str(page).upper()):
+                return fn(*args, **kwargs)
+        return cast(F, sheet)
+    return wrap
+
+
+__all__ = ["LETTERING", "SERIES_MM", "Lettering", "is_course_sheet", "lettered", "lettered_by_page", "lettering"]
