@@ -719,9 +719,12 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     labels += wanted
     cr = mo.linkage.crank
     # the labels keep off M_b's arc and its name
-    els.append(_drawn(occ, _moment_arc(at(z[cr.centre]), L.balance_mm, 110.0 if Mb > 0 else -110.0,
-                                       around(z[cr.centre]),
-                                       label=nt.sym("forces.M_b"), size_mm=SMALL_MM, name="M_b")))
+    centre = at(z[cr.centre])
+    els.append(_drawn(occ, _moment_arc(centre, L.balance_mm, 110.0 if Mb > 0 else -110.0, around(z[cr.centre]),
+                                       name="M_b")))
+    mid = math.radians(clear_direction(around(z[cr.centre])))     # its name placed as every label is
+    labels.append(((centre[0] + L.balance_mm * math.cos(mid), centre[1] - L.balance_mm * math.sin(mid)),
+                   nt.sym("forces.M_b"), "label-M_b"))
     els += _labels(occ, labels, L.within(area))
     els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.scheme_legend"), name)
