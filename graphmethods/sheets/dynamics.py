@@ -609,7 +609,8 @@ def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, 
 # ----------------------------------------------------------------------------- 2. M_d and M_r(φ)
 
 def moment_curves(study) -> tuple[np.ndarray, np.ndarray, float]:
-    """M_r at the positions (the drawn chords) and the balancing M_d, N·m."""
+    """M_r as drawn (its ordinates at the positions and the switching positions, the smooth curve
+    between them: :attr:`~graphmethods.dynamics.study.Study.moments`), its knots (rad) and the balancing M_d, N·m."""
     M_d, M_r = study.moments
     return np.asarray(M_r.M, dtype=float), np.asarray(M_r.phi, dtype=float), float(M_d.mean())
 
@@ -634,14 +635,13 @@ def drawn_moments(study, nt) -> DrawnMoments:
     """:class:`DrawnMoments` of a study in the notation ``nt`` (its curve names)."""
     M_r, phi_k, M_d = moment_curves(study)
     ends = np.array([0.0, TWO_PI])
-    if study.is_engine:
-        curve, ck, cv, key = -M_r, "M_r", -M_d, "M_d"
-    else:
-        curve, ck, cv, key = M_r, "M_d", M_d, "M_r"
+    sign = -1.0 if study.is_engine else 1.0
+    curve, cv = sign * M_r, sign * M_d
+    ck, key = ("M_r", "M_d") if study.is_engine else ("M_d", "M_r")
     curves = (CurveSpec(key, phi_k, curve, MAIN, nt.sym(key)),
               CurveSpec(ck, ends, np.array([cv, cv]), MAIN, nt.sym(ck)))
-    return DrawnMoments(curves, (phi_k, curve), float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck,
-                        float(cv))
+    dots = (np.asarray(study.phi, dtype=float), sign * np.asarray(study.M_r, dtype=float))   # the ordinates
+    return DrawnMoments(curves, dots, float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck, float(cv))
 
 
 def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, title=None, title_block: bool = True,
