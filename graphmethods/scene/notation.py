@@ -150,9 +150,19 @@ class Notation:
             return f"{symbol}/{u}" if simple else f"{symbol}/({u})"
         return f"{symbol}, {u}"
 
-    def number(self, value: float, *, sig: int = 4, plus: bool = False) -> str:
-        """A value written with this tradition's decimal separator and a typographic minus."""
-        return format_value(value, sig=sig, decimal=self.decimal, plus=plus)
+    def number(self, value: float, *, sig: int = 4, plus: bool = False, reference: float | None = None) -> str:
+        """A value written with this tradition's decimal separator and a typographic minus; 0 when it
+        is within the round-off of a computation of size ``reference``
+        (:func:`~graphmethods.scene.numbers.within_roundoff`)."""
+        return format_value(value, sig=sig, decimal=self.decimal, plus=plus, reference=reference)
+
+    def zero(self, symbol: str, because: str) -> str:
+        """A quantity that is zero in this position, said with its reason, as a textbook writes it.
+
+        >>> get("en").zero("a^n_{BA}", "ω_{2}")
+        'a^n_{BA} = 0 (ω_{2} = 0 in this position)'
+        """
+        return f"{symbol} = 0 ({self.word('numbers.zero_here', q=because)})"
 
 
 def _build(code: str) -> Notation:

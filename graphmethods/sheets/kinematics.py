@@ -63,6 +63,7 @@ from graphmethods.scene import (
     notation as get_notation,
 )
 from graphmethods.scene.elements import Dimension, Element
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Label, Style
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -582,7 +583,7 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
     dims: list[Element] = []
     if guide is not None and pos.H is not None and g.ext is not None:
         end_xy = g.ext_pos.coords[parts.output][0] if g.ext_pos is not None else pos.coords[parts.output][g.ext.same_as]
-        text = nt.word("kinematics.stroke", H=nt.number(pos.H, sig=4), u=nt.unit("m"))
+        text = nt.word("kinematics.stroke", H=nt.number(pos.H * 1000.0, sig=4), u=nt.unit("mm"))   # a dimension: mm
         dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
         dims.append(dim)
         occ.register(dim)
@@ -1303,6 +1304,9 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
             continue
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
         num_sym = f"v_{{{y}}}" if x in mech.fixed_joints else f"v_{{{_rel_name(mech, y, x)}}}"
+        if within_roundoff(w, plans.omega_1):           # the link stands still in this position
+            out.append(nt.zero(f"ω_{{{num}}}", num_sym))
+            continue
         out.append(f"ω_{{{num}}} = {num_sym}/l_{{{link}}} = {nt.number(abs(w) * L, sig=4)}/{nt.number(L, sig=4)} = "
                    f"{nt.number(abs(w), sig=4)} {nt.unit('rad/s')}, {_sense_word(nt, w)}")
     return out
