@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphmethods.cli import _sheet
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
@@ -54,6 +55,7 @@ def add_parser(sub) -> None:
                    help="also write the force-analysis sheet of this position (SVG, PDF or DXF, scale-true)")
     p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    _sheet.add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -156,6 +158,7 @@ def run(args) -> int:
         raise InputError(f"--epsilon-1 must be a finite angular acceleration in rad/s², got {args.epsilon_1}")
     if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
         raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
+    _sheet.check_signature(args)
     sheet = None
     if args.sheet is not None:
         from graphmethods.cli._sheet import check_sheet_target
@@ -167,12 +170,12 @@ def run(args) -> int:
     case = builtin.case(args.case)
     data = None
     if sheet is not None:
-        from graphmethods.cli._sheet import scene_bytes
+        from graphmethods.cli._sheet import scene_bytes, signed
         from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
 
         scene = force_analysis_sheet(case, args.position, phi_deg=args.phi_deg, m=m, gravity=args.gravity,
                                      page=args.page, notation=args.lang)
-        data = scene_bytes(scene, sheet)
+        data = scene_bytes(signed(scene, args), sheet)
     res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=args.n,
                  epsilon_1=args.epsilon_1)
     if args.json:

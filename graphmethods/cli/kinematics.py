@@ -35,6 +35,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphmethods.cli import _sheet
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 #: Most positions the figures draw: the velocity table keeps rows at least 4 mm high on its page.
@@ -76,6 +77,7 @@ def add_parser(sub) -> None:
                    help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
                         "and a return-stroke position)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
+    _sheet.add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -331,9 +333,10 @@ def run(args) -> int:
     if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
         raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
     phi_deg = None if args.phi_deg is None else _phi_list(args.phi_deg)
+    _sheet.check_signature(args)
     sheet, sheet_data = None, None
     if args.sheet is not None:
-        from graphmethods.cli._sheet import check_sheet_target, scene_bytes
+        from graphmethods.cli._sheet import check_sheet_target, scene_bytes, signed
         from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
 
         if phi_deg is not None or args.n is not None or args.epsilon_1 != 0.0:
@@ -342,8 +345,8 @@ def run(args) -> int:
         count(args.positions, "--positions", low=3, high=FIGURES_MAX_POSITIONS, why="the sheet draws every position")
         sheet = check_sheet_target(args.sheet, args.force)
         ks = None if args.plan_positions is None else _position_list(args.plan_positions)
-        sheet_data = scene_bytes(kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page,
-                                                          notation=args.lang), sheet)
+        sheet_data = scene_bytes(signed(kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks,
+                                                                 page=args.page, notation=args.lang), args), sheet)
     elif args.plan_positions is not None:
         raise InputError("--plan-positions applies to the sheet; add --sheet FILE")
     res = table(case, args.positions, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=args.n)
