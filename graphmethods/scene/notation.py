@@ -82,7 +82,7 @@ _WORDS = {
     "figure":           ("Figure", "Рисунок", "图"),
     "max_label":        ("max", "max", "max"),
     "min_label":        ("min", "min", "min"),
-    "gain_loss":        ("+ gain, − loss", "+ избыток, − недостаток", "+ 盈功, − 亏功"),
+    "gain_loss":        ("+ gain, − loss", "+ избыток, − недостаток", "+ 盈功，− 亏功"),
 }
 
 _UNITS_RU = {
@@ -155,6 +155,11 @@ class Notation:
         is within the round-off of a computation of size ``reference``
         (:func:`~graphmethods.scene.numbers.within_roundoff`)."""
         return format_value(value, sig=sig, decimal=self.decimal, plus=plus, reference=reference)
+
+    @property
+    def colon(self) -> str:
+        """The colon after a caption: full-width "：" in Chinese text, ": " otherwise."""
+        return "：" if self.code == "zh" else ": "
 
     def zero(self, symbol: str, because: str) -> str:
         """A quantity that is zero in this position, said with its reason, as a textbook writes it.

@@ -31,6 +31,20 @@ THIN = Style(width_mm=0.18)
 CAPTION_MM = 3.5          # the smallest lettering of an A1/A2 sheet (ГОСТ 2.304, GB/T 14691)
 TITLE_MM = 7.0
 
+#: the language whose course sheets carry each standard form
+STANDARD_OF = {"gost": "ru", "gb": "zh"}
+
+
+def form_for(code: str) -> str:
+    """The main inscription of a course sheet in language ``code``: ``"gost"`` (ru), ``"gb"`` (zh) or
+    ``"simple"``.
+
+    >>> form_for("ru"), form_for("zh"), form_for("en")
+    ('gost', 'gb', 'simple')
+    """
+    return next((f for f, c in STANDARD_OF.items() if c == code), "simple")
+
+
 #: (width, height) of each form, mm
 SIZE = {"gost": (185.0, 55.0), "gb": (180.0, 56.0)}
 
@@ -230,4 +244,4 @@ def _gb(b: FormBlock, x0: float, y0: float) -> list[Primitive]:
     return out
 
 
-__all__ = ["FormBlock", "SIZE"]
+__all__ = ["FormBlock", "SIZE", "STANDARD_OF", "form_for"]

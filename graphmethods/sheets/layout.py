@@ -27,6 +27,7 @@ from graphmethods.scene.elements import Axis, Element, label_bbox, make_label, p
 from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
+from graphmethods.scene.title_blocks import form_for
 from graphmethods.titles import text_in
 
 Box = tuple[float, float, float, float]
@@ -360,8 +361,6 @@ class Occupancy:
 
 #: the page sizes of a course sheet, whose main inscription follows the language's standard
 COURSE_SHEETS = ("A1", "A2")
-#: the standard main inscription of each language's course sheets (ГОСТ 2.104 form 1, GB/T 10609.1)
-FORMS = {"ru": "gost", "zh": "gb"}
 
 
 def course_title_block(tb: TitleBlock, nt) -> TitleBlock:
@@ -373,9 +372,9 @@ def course_title_block(tb: TitleBlock, nt) -> TitleBlock:
     'gost'
     """
     nt = get_notation(nt)
-    form = FORMS.get(nt.code, "simple")
+    form = form_for(nt.code)
     if form == "simple":
-        rows = tuple((nt.word(f"title_block.{k}"), "") for k in ("student", "group", "sheet"))
+        rows = tuple((nt.word(k), "") for k in ("title_block.student", "worksheets.group", "title_block.sheet"))
         return replace(tb, person=rows)
     return replace(tb, form=form, fields=(("designation", tb.problem),))
 

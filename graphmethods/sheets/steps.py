@@ -804,13 +804,13 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
         poly = pl.polygons[0]
         nk = len(poly.known)
         head = _text_of(figure, f"caption-{j}")
-        known = nt.word("steps.f_known", g=head, forces=", ".join(SF._markup(lbl) for lbl, _ in poly.known))
+        known = nt.word("steps.f_known", g=head, forces=", ".join(SF._markup(lbl, nt) for lbl, _ in poly.known))
         if pl.first:
-            known += nt.word("steps.f_first", parts=", ".join(SF._markup(lbl) for lbl, _ in pl.first))
+            known += nt.word("steps.f_first", parts=", ".join(SF._markup(lbl, nt) for lbl, _ in pl.first))
         rules.append((known, lambda n, j=j, nk=nk: n == f"caption-{j}" or n.startswith(f"known-{j}-") or any(
             n == f"label-{j}-{s}" for s in range(nk))))
         closing = poly.closing
-        labels = [SF._markup(lbl) for lbl, _, _ in closing]
+        labels = [SF._markup(lbl, nt) for lbl, _, _ in closing]
         if len(closing) == 2 and all(d is not None for _, d, _ in closing):
             g = groups.get(pl.group)
             rel = [_relation(nt, complex(d[i]), g, fa.motion, i) if g is not None else nt.word("steps.known_dir")
@@ -822,7 +822,7 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
                           lambda n, j=j: n.startswith(f"closing-{j}-")))
             mine = [r for r in fa.reactions.values() if (r.by in pl.links or r.on in pl.links)
                     and not ({r.by, r.on} & solved)]
-            listed = "; ".join(f"{SF._markup(r.key)} = {size(r.R)}" for r in sorted(mine, key=lambda r: r.key))
+            listed = "; ".join(f"{SF._markup(r.key, nt)} = {size(r.R)}" for r in sorted(mine, key=lambda r: r.key))
             rules.append((nt.word("steps.f_react", list=listed), lambda n, j=j, nk=nk: (
                 n.startswith(f"label-{j}-") and int(n.rsplit("-", 1)[1]) >= nk)
                 or n.startswith((f"inner-{j}-", f"label-inner-{j}-"))))      # each link's own polygon
@@ -888,7 +888,7 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
         if couple and not couple_said:
             wanted.add("text-1")
             couple_said = True
-        rules.append((nt.word(text, F=SF._markup(lbl), M=f"{nt.number(moment, sig=4)} {nm_}"),
+        rules.append((nt.word(text, F=SF._markup(lbl, nt), M=f"{nt.number(moment, sig=4)} {nm_}"),
                       lambda n, w=frozenset(wanted): n in w))
         j += len(idx)
     Fb, Mb = nt.sym("forces.F_b"), nt.sym("forces.M_b")

@@ -26,5 +26,4 @@ WORDS = {
     "sheets":    ("Sheets", "Листов", "共张"),
     "of":        ("Sheet {k} of {n}", "Лист {k}, листов {n}", "共 {n} 张 第 {k} 张"),
     "student":   ("Student", "Студент", "学生"),
-    "group":     ("Group", "Группа", "班级"),
 }
