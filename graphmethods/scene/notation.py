@@ -161,6 +161,11 @@ class Notation:
         """The colon after a caption: full-width "：" in Chinese text, ": " otherwise."""
         return "：" if self.code == "zh" else ": "
 
+    @property
+    def semicolon(self) -> str:
+        """The separator of two clauses: full-width "；" in Chinese text, ";  " otherwise."""
+        return "；" if self.code == "zh" else ";  "
+
     def zero(self, symbol: str, because: str) -> str:
         """A quantity that is zero in this position, said with its reason, as a textbook writes it.
 

@@ -14,9 +14,14 @@ WORDS = {
     "rim_short": ("rim", "обод", "轮缘式"),
     "disc_short": ("disc", "диск", "盘式"),
     "mass": ("mass m", "масса m", "质量 m"),
+    "scale": ("Scale 1 : {k}", "М 1 : {k}", "比例 1 : {k}"),
+    "hub_note": ("hub and bore by the usual proportions:", "ступица и отверстие по обычным соотношениям:",
+                 "轮毂与轴孔按常用比例："),
+    "hub_rule": ("d ≈ 0.15 D, hub ⌀ 1.8 d, length 1.5 d", "d ≈ 0,15 D, ⌀ ступицы 1,8 d, длина 1,5 d",
+                 "d ≈ 0.15 D，轮毂直径 1.8 d，长度 1.5 d"),
     "moment": ("flywheel moment mD²", "маховой момент mD²", "飞轮矩 mD²"),
-    "speed": ("rim speed", "окружная скорость обода", "轮缘圆周速度"),
-    "limit": ("limit", "допускаемая", "许用"),
+    "speed": ("rim speed", "скорость обода", "轮缘速度"),
+    "limit": ("its limit", "допускаемая", "许用速度"),
     "ok": ("within the limit", "в пределах допускаемой", "在许用范围内"),
     "over": ("OVER the limit: a larger D is not allowed; use steel or a smaller n",
              "ПРЕВЫШЕНА: сталь или меньшая частота", "超过许用值：改用钢或降低转速"),
@@ -32,3 +37,5 @@ WORDS = {
                         "[δ] в пределах таблицы 1/{a} … 1/{b} (рекомендуемые [δ] для машин)",
                         "[δ] 取表中范围 1/{a} … 1/{b}（各类机器的许用 [δ]）"),
 }
+
+UNITS_RU = {"kg/m³": "кг/м³"}
