@@ -14,7 +14,7 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
-from graphmethods.scene.elements import Table
+from graphmethods.scene.elements import Table, lettered_size
 from graphmethods.scene.primitives import Path, Primitive, Style
 from graphmethods.scene.title_blocks import FormBlock
 
@@ -45,6 +45,9 @@ class TitleBlock:
     form: str = "simple"
     person: tuple[tuple[str, str], ...] = ()
     fields: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "size_mm", lettered_size(self.size_mm))     # 3.5 mm and up on A1/A2
 
     def rows(self) -> tuple[tuple[str, str], ...]:
         rows = [(self.headings[0], self.title)]
