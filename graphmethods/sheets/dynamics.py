@@ -544,6 +544,34 @@ def axis_break(at: tuple[float, float], name: str) -> Polyline:
     return Polyline(((x - 1.5, y), (x - 0.75, y - 1.5), (x + 0.75, y + 1.5), (x + 1.5, y)), style=THIN, name=name)
 
 
+def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: float = 12.0
+                  ) -> tuple[tuple[float, ...], tuple[str, ...], str]:
+    """The J_e axis's ticks (kg·m²), their labels and the axis's name, readable: a small J_e is written in
+    10⁻³ kg·m² (no "0.05225" five-digit jam), and the ticks stand at least a label's width apart.
+
+    >>> from graphmethods.scene import notation
+    >>> t, labels, name = inertia_ticks(0.0517, 0.0552, Scale("μ_J", "kg·m²", 2e-5), notation("en"))
+    >>> labels[:3], name
+    (('52', '52.5', '53'), 'J_e, 10⁻³ kg·m²')
+    """
+    nt = get_notation(nt)
+    top = max(abs(J_from), abs(J_to))
+    exp = 3 * math.floor(math.log10(top) / 3) if 0.0 < top < 0.1 else 0
+    f = 10.0 ** -exp
+    gap = min_gap_mm
+    for _ in range(6):
+        ticks = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=gap) if J_from <= t <= J_to)
+        labels = tuple(nt.number(t * f, sig=6) for t in ticks)
+        need = max((markup.text_width_mm(lab, SMALL_MM) for lab in labels), default=0.0) + 4.0
+        if need <= gap:
+            break
+        gap = need
+    sup = str(exp).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    unit = f"10{sup} {nt.unit('kg·m²')}" if exp else "kg·m²"
+    return ticks, labels, nt.quantity(nt.sym("dynamics.J_e"), unit) if exp else nt.quantity(
+        nt.sym("dynamics.J_e"), "kg·m²")
+
+
 def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np.ndarray, J: np.ndarray,
                             phi_k: np.ndarray, J_k: np.ndarray, nt, occ, J_to: float, prefix: str = "J-",
                             within=None, J_from: float = 0.0) -> list:
@@ -555,9 +583,9 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
     """
     ox, oy = origin
     period = float(phi_k[-1] - phi_k[0])
-    ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=12.0) if J_from <= t <= J_to)
+    ticks_J, labels_J, name_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=12.0)
     ax_J = Axis((ox - s_J.to_mm(J_from), oy), s_J, "x", min_value=J_from, max_value=J_to, ticks=ticks_J,
-                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM,
+                tick_labels=labels_J, label=name_J, size_mm=SMALL_MM,
                 decimal=get_notation(nt).decimal, labels_side="above", skip_zero_label=True, name=f"{prefix}axis-J")
     spacing = s_phi.to_mm(period / m)
     ax_phi = DownAxis(origin, s_phi, "y", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),

@@ -74,6 +74,7 @@ from graphmethods.sheets.dynamics import (
     given_angle_scale,
     given_scale,
     inertia_curve,
+    inertia_ticks,
     phi_graph_elements,
     problem_text,
     suppressed_base,
@@ -117,9 +118,12 @@ class DiagramData:
             res = replace(res, error_estimate=self.estimate.error_estimate, error_method=self.estimate.error_method)
         return res
 
-    def extent(self) -> tuple[float, float, float]:
-        """(J_to, T_hi, T_lo): the abscissa's reach (kg·m²) and the ordinate's range (J), k and l included."""
+    def extent(self, J_0: float = 0.0) -> tuple[float, float, float]:
+        """(J_to, T_hi, T_lo): the abscissa's reach (kg·m²) and the ordinate's range (J), k and l included
+        where the ordinate axis stands (J_e = ``J_0``, kg·m²): an axis runs to its data, not further."""
         unit_res = self.result(1.0, 1.0)
+        if J_0 > 0.0:
+            unit_res = offset_origin(unit_res, J_0)
         T_hi = max(float(self.delta_T.max()), unit_res.k_mm, unit_res.l_mm, 0.0)
         T_lo = min(float(self.delta_T.min()), unit_res.k_mm, unit_res.l_mm, 0.0)
         return float(self.J_e.max()), T_hi, T_lo
@@ -343,7 +347,7 @@ class _DiagramPlace:
         s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
         X, Y = np.asarray(res.x_mm, dtype=float), np.asarray(res.y_mm, dtype=float)
         ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
-        ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=14.0) if J_from <= t <= J_to)
+        ticks_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=14.0)[0]
         R = lay.psi_radius_mm
         right = float(X[:-1].min()) >= R + lay.psi_room_mm
         tick_w = max((markup.text_width_mm(nt.number(t), SMALL_MM) for t in ticks_T), default=0.0)
@@ -369,8 +373,9 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
                 label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal,
                 skip_zero_label=True, name=f"{d.prefix}axis-T")
     below = float(np.mean(d.Y[:-1] < 0)) > 0.5
+    _, labels_J, name_J = inertia_ticks(d.J_from, d.J_to, s_J, nt, min_gap_mm=14.0)
     ax_J = Axis((ox - s_J.to_mm(d.J_from), oy), s_J, "x", min_value=d.J_from, max_value=d.J_to, ticks=d.ticks_J,
-                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
+                tick_labels=labels_J, label=name_J, size_mm=SMALL_MM, decimal=nt.decimal,
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{d.prefix}axis-J")
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
@@ -517,8 +522,8 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
         err = nt.word("wittenbauer.none")
     else:
         err = f"+{value_text(nt, res.error_estimate, 'kg·m²', sig=3)}".replace("+−", "−")
-    O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}"
-    O1_word = nt.word("wittenbauer.O1_on") if on_sheet else nt.word("wittenbauer.O1")
+    O1_word = nt.word("wittenbauer.O1_on")           # drawn: its place; else said as a textbook says it
+    O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}" if on_sheet else nt.word("wittenbauer.O1_off")
     tg = "tg" if nt.code == "ru" else "tan"
     psi_max, psi_min = nt.sym("dynamics.psi_max"), nt.sym("dynamics.psi_min")
     tg_max = f"{tg} {psi_max} = {n(res.tan_psi_max)}, {psi_max} = {n(math.degrees(res.psi_max))}°"
@@ -713,6 +718,11 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
                        problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
     content = _sheet_content(study, nt, tangents)
     lay = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi)
+    for _ in range(3):                                   # k and l where the ordinate axis stands: the ΔT range
+        if lay.J_0 == 0.0 or content.J_0 == lay.J_0:
+            break
+        content = content.with_origin(lay.J_0)
+        lay = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi)
     res = lay.result(content)
     occ = sheet.occ
     proj = _projection_lines(content, lay, res)          # the thinnest, under everything
@@ -773,6 +783,13 @@ class SheetContent:
     J_to: float
     T_lo: float
     T_hi: float
+    J_0: float = 0.0                      # where the ordinate axis stands, kg·m² (the T range's k and l)
+
+    def with_origin(self, J_0: float) -> SheetContent:
+        """The content with its ΔT range (J) from the data, the fine curve and k, l on the ordinate axis at J_0."""
+        _, T_hi, T_lo = self.data.extent(J_0)
+        return replace(self, T_lo=min(T_lo, float(self.dT_fine.min())), T_hi=max(T_hi, float(self.dT_fine.max())),
+                       J_0=J_0)
 
 
 def _sheet_content(study: Study, nt: Notation, tangents: str) -> SheetContent:
@@ -781,10 +798,10 @@ def _sheet_content(study: Study, nt: Notation, tangents: str) -> SheetContent:
     phi = fine_angles(study.m)
     J_fine = inertia_curve(study, phi).J_e
     dT_fine = delta_T_curve(study, phi)
-    _, T_hi, T_lo = data.extent()
-    return SheetContent(data, phi, J_fine, dT_fine, drawn_moments(study, nt),
-                        J_lo=float(min(data.J_e.min(), J_fine.min())), J_to=float(max(data.J_e.max(), J_fine.max())),
-                        T_lo=min(T_lo, float(dT_fine.min())), T_hi=max(T_hi, float(dT_fine.max())))
+    content = SheetContent(data, phi, J_fine, dT_fine, drawn_moments(study, nt),
+                           J_lo=float(min(data.J_e.min(), J_fine.min())),
+                           J_to=float(max(data.J_e.max(), J_fine.max())), T_lo=0.0, T_hi=0.0)
+    return content.with_origin(0.0)
 
 
 @dataclass(frozen=True)

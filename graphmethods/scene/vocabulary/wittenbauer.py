@@ -35,7 +35,7 @@ WORDS = {
     "at_omega_max":     ("ω_{max} at position", "ω_{max} в положении", "ω_{max}位置"),
     "at_omega_min":     ("ω_{min} at position", "ω_{min} в положении", "ω_{min}位置"),
     "error":            ("error estimate (m = {m})", "оценка погрешности (m = {m})", "误差估计（m = {m}）"),
-    "O1":               ("O_1 (off the sheet)", "O_1 (вне листа)", "O_1（图外）"),
+    "O1_off":           ("beyond the sheet", "за пределами листа", "在图纸之外"),
     "O1_on":            ("O_1", "O_1", "O_1"),
     "none":             ("not estimated", "не оценена", "未估计"),
     "tangents":         ("tangents", "тангенсы", "正切"),
