@@ -81,6 +81,7 @@ from graphmethods.sheets.dynamics import (
     turned_inertia_elements,
     value_text,
 )
+from graphmethods.sheets.engine.lettering import lettered_by_page
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, Occupancy, clear_tick_labels
 from graphmethods.sheets.styles import PROJECTION
@@ -675,6 +676,7 @@ def _sheet_page(page) -> Page:
     return Page(size, "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True)
 
 
+@lettered_by_page("A1")
 def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None, mu_phi=None,
                            tangents: str = "exact", notation="en", title=None, title_block: bool = True,
                            name: str = "dynamic-analysis") -> Scene:
@@ -736,12 +738,13 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
     table = _place_table(occ, rows, cands)
     occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
+    ordinates = _ordinates_table(occ, content, nt, x1, table.at[1] + table.height_mm + 14.0, sheet.caption_y)
     heads = _sheet_headings(sheet, content, lay, nt)
     table_head = Text((table.at[0], table.at[1] - 2.0), nt.word("wittenbauer.result"), size_mm=TEXT_MM + 0.8,
                       bold=True, name="heading-result")
     scales = (lay.s_phi, lay.s_M, lay.s_T, lay.s_J)
     elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
-                + sheet.captions(scales))
+                + ordinates + sheet.captions(scales))
     J_0 = lay.J_0
     notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
         f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm" + (f" and J_0 = {J_0:g} kg·m²" if J_0 else ""),)
@@ -967,6 +970,33 @@ def _free_heading(occ: Occupancy, at: tuple[float, float], text: str, size: floa
                 if occ.is_free(bold_bbox(trial), within=within, lines=lines):
                     return trial
     return make_label(at, text, size_mm=size, bold=True)
+
+
+def _ordinates_table(occ: Occupancy, content: SheetContent, nt: Notation, right: float, top: float,
+                     bottom: float) -> list[Element]:
+    """The course sheet's table of ordinates: per position k, φ, the drawn moment, ΔT and J_e, under the
+    result (what the graphs were drawn from), with its heading; nothing when no place is free."""
+    data, dm = content.data, content.moments
+    key = "M_d" if dm.constant_key == "M_r" else "M_r"
+    n = nt.number
+    head = ("k", nt.quantity("φ", "°"), nt.quantity(nt.sym(key), "N·m"), nt.quantity(nt.sym("dynamics.dT"), "J"),
+            nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"))
+    moment = dm.dots[1]
+    M_ref, T_ref = float(np.abs(moment).max()), float(np.abs(data.delta_T).max())     # round-off is written 0
+    rows = [head] + [(str(k), n(math.degrees(float(data.phi[k] - data.phi[0])), sig=4),
+                      n(float(moment[k]), sig=4, reference=M_ref), n(float(data.delta_T[k]), sig=4, reference=T_ref),
+                      n(float(data.J_e[k]), sig=4)) for k in range(len(data.phi))]
+    probe = Table((0.0, 0.0), tuple(rows), align="rrrrr", name="ordinates")
+    heading = nt.word("wittenbauer.ordinates")
+    w = max(probe.width_mm, markup.text_width_mm(heading, TEXT_MM + 0.8) * 1.1)    # the bold heading fits too
+    h = probe.height_mm
+    for y in np.arange(top, bottom - h, 5.0):
+        box = (right - w, float(y), right, float(y) + h)
+        if occ.is_free((box[0], box[1] - 10.0, box[2], box[3])):
+            occ.add_box((box[0], box[1] - 10.0, box[2], box[3]))
+            return [Text((box[0], box[1] - 2.0), heading, size_mm=TEXT_MM + 0.8, bold=True, name="heading-ordinates"),
+                    Table((box[0], box[1]), tuple(rows), align="rrrrr", name="ordinates")]
+    return []
 
 
 def _suppressed_zero(J_lo: float, J_hi: float) -> bool:

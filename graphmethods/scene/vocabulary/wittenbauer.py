@@ -17,6 +17,7 @@ WORDS = {
     "inertia_turned":   ("Reduced moment of inertia, turned 90°", "Приведённый момент инерции (повёрнут на 90°)",
                          "等效转动惯量（旋转90°）"),
     "result":           ("Result", "Результат", "结果"),
+    "ordinates":        ("Ordinates at the positions", "Ординаты в положениях механизма", "各位置的纵坐标"),
     "delta":            ("coefficient of fluctuation", "коэффициент неравномерности", "速度不均匀系数"),
     "omega_m":          ("mean angular velocity", "средняя угловая скорость", "平均角速度"),
     "M_d":              ("driving moment", "движущий момент", "等效驱动力矩"),
