@@ -882,8 +882,8 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     probe_rows = wide_rows(result_rows(content.data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi),
                                        J_0=1.0 if _suppressed_zero(content.J_lo, content.J_to) else 0.0))
     table_w = _table(probe_rows, (0, 0)).width_mm
-    J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), SMALL_MM + 0.5) + \
-        lay.J_name_extra_mm
+    J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), f"10⁻³ {nt.unit('kg·m²')}"),
+                                     SMALL_MM + 0.5) + lay.J_name_extra_mm      # the name a small J_e takes
     room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
     s_J, J_0 = _inertia_scale(mu_J, nt, content.J_lo, content.J_to, room_J)
     # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
