@@ -112,3 +112,28 @@ def scene_bytes(scene: Scene, target: Target | pathlib.Path) -> bytes:
     from graphmethods.render import formats
 
     return formats.to_bytes(scene, target.suffix)
+
+
+def add_signature_options(p) -> None:
+    """``--student``, ``--group``, ``--sheet-no``: the sheet's main inscription (with ``--sheet``)."""
+    g = p.add_argument_group("the sheet's main inscription (with --sheet)")
+    g.add_argument("--student", default="", metavar="NAME", help="the student's name (Разраб. / 设计)")
+    g.add_argument("--group", default="", metavar="GROUP", help="the student's group (or organisation)")
+    g.add_argument("--sheet-no", default="", metavar="K[/N]", help="the sheet's number K, or K of N sheets")
+
+
+def signed(scene: Scene, args) -> Scene:
+    """The scene with the student's name, group and sheet number of ``args`` in its main inscription."""
+    from graphmethods.sheets.layout import sign_sheet
+
+    k, _, n = str(getattr(args, "sheet_no", "") or "").partition("/")
+    return sign_sheet(scene, student=str(getattr(args, "student", "") or "").strip(),
+                      group=str(getattr(args, "group", "") or "").strip(), sheet_no=k.strip(), sheets=n.strip())
+
+
+def check_signature(args) -> None:
+    """Refuse the inscription's options without ``--sheet`` (they would be silently lost)."""
+    given = [o for o, a in (("--student", "student"), ("--group", "group"), ("--sheet-no", "sheet_no"))
+             if str(getattr(args, a, "") or "").strip()]
+    if given and getattr(args, "sheet", None) is None:
+        raise InputError(f"{', '.join(given)}: for the sheet's main inscription; add --sheet FILE")

@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphmethods.cli import _sheet
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
@@ -60,6 +61,7 @@ def add_parser(sub) -> None:
                    help="file format of the sheet (default: the file name's suffix; needed with -o -)")
     p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    _sheet.add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -183,6 +185,7 @@ def run(args) -> int:
     if args.position is not None and not 0 <= args.position <= m:
         raise InputError(f"--position {args.position}: give a position from 0 to {m} (--positions {m})")
     n_rpm = speed_rpm(args)
+    _sheet.check_signature(args)
     sheet = None
     if args.sheet is not None:
         if n_rpm is not None or args.epsilon_1 != 0.0:
@@ -195,12 +198,12 @@ def run(args) -> int:
     case = builtin.case(args.case)
     data = None
     if sheet is not None:
-        from graphmethods.cli._sheet import scene_bytes
+        from graphmethods.cli._sheet import scene_bytes, signed
         from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
 
         scene = force_analysis_sheet(case, args.position, phi_deg=args.phi_deg, m=m, gravity=args.gravity,
                                      page=args.page, notation=args.lang)
-        data = scene_bytes(scene, sheet)
+        data = scene_bytes(signed(scene, args), sheet)
     res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=n_rpm,
                  epsilon_1=args.epsilon_1)
     out = report_stream(sheet)

@@ -1,11 +1,11 @@
-"""``graphmethods gallery``: build every figure of the gallery (one small module per figure).
+"""``graphmethods gallery``: build every figure of the gallery (one catalogue row per figure).
 
-The figures are the modules of :mod:`graphmethods.gallery` (each defines ``build() -> Scene``), so
-the command works from an installed package. In a source checkout each figure's committed golden
+The figures are the rows of :mod:`graphmethods.gallery.catalogue` (each has ``build() -> Scene``),
+so the command works from an installed package. In a source checkout each figure's committed golden
 SVG is ``gallery/<name>.svg``, which the tests compare with. This command builds every figure into
 a folder, never over an existing file unless ``--force``; ``--regenerate`` rewrites the golden files
-of a source checkout on purpose (and the PNGs of figures that set ``PNG = True``); ``--dir`` builds
-your own folder of such scripts instead.
+of a source checkout on purpose (and the PNGs of rows with ``png=True``); ``--dir`` builds your own
+folder of scripts (each ``<name>.py`` defines ``build() -> Scene``) instead.
 
     graphmethods gallery --out gallery-out          # SVG of every figure
     graphmethods gallery --out gallery-out --png    # and PNG
@@ -62,26 +62,23 @@ def _check_module(module: ModuleType, where: str) -> None:
         raise InputError(f"{where}: a gallery script must define build() returning a Scene")
 
 
-def figures(directory=None) -> list[tuple[str, ModuleType]]:
-    """(name, module) of every figure: the built-in ones, or the scripts of ``directory``."""
+def figures(directory=None) -> list:
+    """(name, figure) of every figure: the catalogue's rows, or the scripts of ``directory`` (modules);
+    each has ``build()``."""
     if directory is not None:
         return [(p.stem, load(p)) for p in scripts(directory)]
     from graphmethods import gallery as builtin
 
-    out = []
-    for name in builtin.figure_names():
-        module = builtin.figure_module(name)
-        _check_module(module, f"graphmethods.gallery.{name}")
-        out.append((name, module))
-    return out
+    return [(name, builtin.figure(name)) for name in builtin.figure_names()]
 
 
 def build(figure):
-    """The scene a figure builds: a built-in figure's name, a module, or a script's path."""
+    """The scene a figure builds: a built-in figure's name or catalogue row, a module, or a script's path."""
+    from graphmethods.gallery import Figure
     from graphmethods.scene import Scene
 
-    if isinstance(figure, ModuleType):
-        module, where = figure, figure.__name__
+    if isinstance(figure, (ModuleType, Figure)):
+        module, where = figure, getattr(figure, "__name__", None) or f"graphmethods.gallery: {figure.name}"
     elif isinstance(figure, pathlib.Path) or str(figure).endswith(".py"):
         module, where = load(figure), str(figure)
     else:
@@ -89,7 +86,7 @@ def build(figure):
 
         if figure not in builtin.figure_names():
             raise InputError(f"no built-in figure {figure!r}")
-        module, where = builtin.figure_module(figure), f"graphmethods.gallery.{figure}"
+        module, where = builtin.figure(figure), f"graphmethods.gallery: {figure}"
     scene = module.build()
     if not isinstance(scene, Scene):
         raise InputError(f"{where}: build() returned {type(scene).__name__}, not a Scene")

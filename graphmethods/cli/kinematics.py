@@ -35,6 +35,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphmethods.cli import _sheet
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 #: Most positions the figures draw: the velocity table keeps rows at least 4 mm high on its page.
@@ -112,6 +113,7 @@ def add_parser(sub) -> None:
                    help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
                         "and a return-stroke position)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
+    _sheet.add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -416,7 +418,7 @@ def _sheet_data(case, args, phi_deg, n_rpm):
         if args.plan_positions is not None:
             raise InputError("--plan-positions applies to the sheet; add --sheet FILE")
         return None, None
-    from graphmethods.cli._sheet import check_sheet_target, scene_bytes
+    from graphmethods.cli._sheet import check_sheet_target, scene_bytes, signed
     from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
 
     if phi_deg is not None or n_rpm is not None or args.epsilon_1 != 0.0:
@@ -425,8 +427,8 @@ def _sheet_data(case, args, phi_deg, n_rpm):
     count(args.positions, "--positions", low=3, high=FIGURES_MAX_POSITIONS, why="the sheet draws every position")
     sheet = check_sheet_target(args.sheet, args.force, None if args.sheet != "-" else args.fig_format)
     ks = None if args.plan_positions is None else _position_list(args.plan_positions)
-    return sheet, scene_bytes(kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page,
-                                                       notation=args.lang), sheet)
+    scene = kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page, notation=args.lang)
+    return sheet, scene_bytes(signed(scene, args), sheet)
 
 
 def run(args) -> int:
@@ -449,6 +451,7 @@ def run(args) -> int:
     n_rpm = speed_rpm(args)
     case = builtin.case(args.case)
     phi_deg = args.phi_deg
+    _sheet.check_signature(args)
     sheet, sheet_data = _sheet_data(case, args, phi_deg, n_rpm)
     refuse_two_on_stdout(args.json, sheet)
     res = table(case, m, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=n_rpm)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import sys
 
-from graphmethods.cli._sheet import check_sheet_target
+from graphmethods.cli._sheet import add_signature_options, check_sheet_target, check_signature, signed
 from graphmethods.errors import InputError
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
@@ -54,10 +54,11 @@ def add_parser(sub) -> None:
                    help="notation and language of the sheet (default en)")
     p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    add_signature_options(p)
     p.set_defaults(func=run)
 
 
-def _sheet_bytes(study, target, *, page: str, lang: str) -> bytes:
+def _sheet_bytes(study, target, *, page: str, lang: str, args=None) -> bytes:
     from graphmethods.errors import NoFlywheelNeeded
     from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
 
@@ -68,7 +69,7 @@ def _sheet_bytes(study, target, *, page: str, lang: str) -> bytes:
                          f"(run without --sheet for the numbers)") from None
     from graphmethods.render import formats
 
-    return formats.to_bytes(scene, target.suffix)        # checked before any work
+    return formats.to_bytes(signed(scene, args), target.suffix)        # checked before any work
 
 
 #: the columns of the table at --phi-deg angles: key, header
@@ -95,6 +96,7 @@ def run(args) -> int:
     from graphmethods.problems import builtin
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
+    check_signature(args)
     sheet = check_sheet_target(args.sheet, args.force, args.format) if args.sheet is not None else None
     if sheet is None and args.format is not None:
         raise InputError("--format is the sheet's file format; add -o FILE (or -o - for standard output)")
@@ -106,7 +108,7 @@ def run(args) -> int:
 
         case = dataclasses.replace(case, n_rpm=n_rpm)
     study = Study(case, positions=args.positions)
-    data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
+    data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang, args=args) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
     if args.eta is not None:
         from graphmethods.dynamics.power import efficiency_series

@@ -51,6 +51,8 @@ from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import MAX_POSITIONS, count
 
 TWO_PI = 2.0 * math.pi
+SMOOTH = 32             # chords per interval between positions in the drawn M_r (a smooth curve by hand)
+JUMP_SIDE = 1e-9        # rad either side of a switching position: the two ordinates of the jump
 
 
 _T = TypeVar("_T")
@@ -272,9 +274,17 @@ class Study:
     # ----------------------------------------------------------------- the graphical methods at m positions
     @_logged
     def moments(self) -> tuple[MomentCurve, MomentCurve]:
-        """M_d and M_r as drawn: M_r through its values at the positions (straight chords), M_d balancing it."""
-        M_r = MomentCurve.points(self.phi, self.M_r)
-        return MomentCurve.constant(M_r.mean(), period=TWO_PI), M_r
+        """M_d and M_r as the course draws them.
+
+        M_r goes through its ordinates at the positions and at the load's switching positions, with
+        the jumps there (as the course adds the switching positions), and between them is the smooth
+        curve a draftsman draws through the ordinates: the reduced moment itself, by
+        :data:`SMOOTH` chords per interval. M_d is the constant that balances its work: the work
+        balance :attr:`M_d` to about 10⁻⁵, so a sheet prints the study's M_d and J_F.
+        """
+        phi, M_r = drawn_resisting_moment(self)
+        curve = MomentCurve.points(phi, M_r)
+        return MomentCurve.constant(curve.mean(), period=TWO_PI), curve
 
     @_logged
     def excess_work(self) -> ew.ExcessWork:
@@ -449,6 +459,35 @@ class Study:
             "J_e_mean": float(np.mean(self.J_e[:-1])),
             "note": "no flywheel is needed: the mechanism's own inertia keeps δ within [δ] (J_F = 0); " + why,
         }
+
+def drawn_resisting_moment(study: Study) -> tuple[FloatArray, FloatArray]:
+    """The knots (rad from position 0) and ordinates (N·m) of M_r as drawn: the positions, SMOOTH
+    steps between them, and both sides of every jump at the load's switching positions.
+
+    >>> from graphmethods.problems import builtin
+    >>> st = Study(builtin.case("press"))
+    >>> phi, M_r = drawn_resisting_moment(st)
+    >>> phi.size == 12 * SMOOTH + 1 + 4, abs(MomentCurve.points(phi, M_r).mean() / st.M_d - 1) < 1e-4
+    (True, True)
+    """
+    grid = np.linspace(0.0, TWO_PI, study.m * SMOOTH + 1)
+    grid[::SMOOTH] = study.phi                      # the positions themselves, bit for bit
+    M = study._M_r_exact(grid)
+    M[::SMOOTH] = study.M_r
+    phi_k, M_k = [grid], [M]
+    try:
+        switches = [a for a in study.switch_angles if 0.0 < a < TWO_PI]
+    except InputError:                              # a load without a working stroke: no switching positions
+        switches = []
+    for a in switches:
+        left, right = study._M_r_exact(np.array([a - JUMP_SIDE, a + JUMP_SIDE]))
+        phi_k.append(np.array([a, a]))
+        M_k.append(np.array([left, right]))
+    x = np.concatenate(phi_k)
+    y = np.concatenate(M_k)
+    order = np.argsort(x, kind="stable")           # a switching position's left side before its right
+    return x[order], y[order]
+
 
 def _fine_study(case: Case, m: int) -> Study:
     """The finer construction behind the error estimate: REFINE·m positions, beyond the user's limit

@@ -38,6 +38,7 @@ from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
 from graphmethods.scene import Line, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.elements import Element
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import DASHED
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -172,11 +173,18 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
             if c.kind == "normal":
                 ends = (cr.centre + cr.pin) if s.method == "crank" else rel[len(s.point):] + s.point
                 w = abs(plan.omega[c.link])
+                if within_roundoff(w, plan.omega_1):        # the link stands still here: no normal component
+                    vals.append(nt.zero(symbol(c.symbol), f"ω_{{{c.link}}}"))
+                    continue
                 vals.append(f"{symbol(c.symbol)} = ω_{{{c.link}}}²·l_{{{ends}}} = {num(w)}²·{num(c.factor)} = "
                             f"{num(c.magnitude)} {unit}")
             elif c.kind == "tangential":                 # the crank's own a^τ (ε₁ given)
                 vals.append(f"{symbol(c.symbol)} = ε_{{{c.link}}}·l_{{{cr.centre + cr.pin}}} = "
                             f"{num(abs(plan.epsilon_1))}·{num(c.factor)} = {num(c.magnitude)} {unit}")
+            elif c.kind == "coriolis" and within_roundoff(plan.omega[c.link], plan.omega_1):
+                vals.append(nt.zero(symbol(c.symbol), f"ω_{{{c.link}}}"))
+            elif c.kind == "coriolis" and within_roundoff(c.factor, plan.omega_1 * cr.r):
+                vals.append(nt.zero(symbol(c.symbol), f"v_{{{rel}}}"))
             elif c.kind == "coriolis":
                 vals.append(f"{symbol(c.symbol)} = 2·ω_{{{c.link}}}·v_{{{rel}}} = 2·{num(abs(plan.omega[c.link]))}·"
                             f"{num(c.factor)} = {num(c.magnitude)} {unit}")
@@ -188,12 +196,17 @@ def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
     """(link, text) of ε of every link found from a tangential component: formula, value and sense."""
     out: list[tuple[str, str]] = []
     unit = nt.unit("rad/s²")
+    r = linkage.crank.r
+    a_ref = plan.omega_1**2 * r + abs(plan.epsilon_1) * r     # the size of the plan's accelerations
     for s in plan.steps:
         for c in s.components:
             if c.kind != "tangential" or s.method == "crank" or any(c.link == o for o, _ in out):
                 continue
             e = plan.epsilon[c.link]
             rel = c.symbol.split("_", 1)[1]
+            if within_roundoff(c.magnitude, a_ref):       # no tangential component: the link's ε is 0
+                out.append((c.link, nt.zero(f"ε_{{{c.link}}}", symbol(c.symbol))))
+                continue
             out.append((c.link, (f"ε_{{{c.link}}} = {symbol(c.symbol)}/l_{{{rel[len(s.point):] + s.point}}} = "
                                 f"{nt.number(c.magnitude, sig=4)}/{nt.number(c.factor, sig=4)} = "
                                 f"{nt.number(abs(e), sig=4)} {unit}, {K._sense_word(nt, e)}")))

@@ -507,7 +507,8 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
-    names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
+    names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
+             for p, z in images.items()]
     els += _labels(occ, [(pole, "p", "label-pole"), *names, *vec_labels], L.within(area))
     els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.lever_legend"), name)
@@ -704,7 +705,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
     occ = sheet.occ
     els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
-    labels: list[LabelSpec] = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
+    labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     segs, _blocks = _links_of(mo, i)
 
     pivots = [z[p] for p in mo.linkage.ground]
