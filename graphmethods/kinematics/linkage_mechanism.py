@@ -141,7 +141,7 @@ class LinkageMechanism(Mechanism):
     def _link_names(self, driving: set[str]) -> tuple[dict[str, str], dict[str, tuple[str, str]], set[str]]:
         """Canonical names of the links as the classic classes name them: by their two joints ("AB",
         "O2B"), "block" for a block on a slotted link; and those joints."""
-        from graphmethods.kinematics.groups import PRP, RRP, RRR
+        from graphmethods.kinematics.groups import PRP, RRP, RRR, Triad
         lk = self.linkage
         cr = lk.crank
         names = {cr.link: cr.centre + cr.pin}
@@ -152,6 +152,10 @@ class LinkageMechanism(Mechanism):
             pairs: list[tuple[str, str, str]] = []
             if isinstance(g, RRR):
                 pairs = [(g.links[0], g.P, g.C), (g.links[1], g.Q, g.C)]
+            elif isinstance(g, Triad):           # the basic link by its first two joints, each binary link by its two
+                pairs = sorted([(g.links[0], g.inner[0], g.inner[1]),
+                                *((k, P, B) for k, P, B in zip(g.links[1:], g.outer, g.inner))],
+                               key=lambda p: (len(p[0]), p[0]))
             elif isinstance(g, RRP):
                 pairs = [(g.links[0], g.P, g.C)]
                 names[g.links[1]] = f"slider{g.links[1]}"
@@ -320,7 +324,7 @@ class LinkageMechanism(Mechanism):
         two are in line at position ``i`` (its velocity is ⟂ to both): the shaper's lever, not the
         Whitworth's; and a link whose
         two joints rest (the shaper's BC)."""
-        from graphmethods.kinematics.groups import RRP, RRR
+        from graphmethods.kinematics.groups import RRP, RRR, Triad
         lk = self.linkage
         if lk.output is None:
             return set(), set()
@@ -345,6 +349,10 @@ class LinkageMechanism(Mechanism):
                     points.add(g.C)
                 if isinstance(g, (RRP, RRR)) and g.P in points and g.C in points:
                     links.add(g.links[0])                 # a link with two points at rest rests
+                if isinstance(g, Triad) and set(g.links[1:]) & links and sum(P in ground for P in g.outer) >= 2:
+                    # a rocker of a triad on two fixed joints stops: the rest of it is a structure (a truss)
+                    links |= {g.links[0]} | {k for k, P in zip(g.links[1:], g.outer) if P in ground}
+                    points |= set(g.inner)
             points |= {p.name for p in lk.points if p.link in links and (p.origin in ground or p.origin in points)}
             if (len(links), len(points)) == before:
                 break
