@@ -271,3 +271,51 @@ def test_every_error_is_ours():
         kw.update(bad)
         with pytest.raises(GraphmethodsError):
             Triad(**kw)
+
+
+# ---------------------------------------------------------------------- the force analysis
+def _forces(gravity=9.81, epsilon_1=4.0, m=24):
+    from graphmethods.dynamics.forces.analysis import Mass, kinetostatics
+    from graphmethods.dynamics.forces.base import Force
+
+    case = read_case(DATA / "triad_six_bar.json")
+    lk = case.linkage
+    mo = lk.motion(m=m, omega_1=9.0, epsilon_1=epsilon_1)
+    masses = [Mass(i.link, i.point, i.m, i.J) for i in case.inertias]
+    n = mo.n
+    load = [("5", Force("M_c5", np.zeros(n, dtype=complex), mo.z["F"], np.full(n, -150.0))),
+            ("3", Force("F_3", np.full(n, 40 - 25j), mo.z["D"], np.zeros(n)))]
+    return mo, kinetostatics(mo, masses=masses, loads=load, gravity=gravity)
+
+
+def test_the_triad_forces_satisfy_the_power_balance_and_the_lever():
+    _, fa = _forces()
+    scale = np.max(np.abs(fa.M_balance))
+    assert np.max(np.abs(fa.M_balance - fa.M_balance_power)) < 1e-10 * scale
+    assert np.max(np.abs(fa.M_balance - fa.M_balance_lever)) < 1e-10 * scale
+
+
+def test_every_link_of_the_triad_is_in_equilibrium():
+    """The six reactions found together hold each of the four links (forces and moments), to rounding."""
+    from graphmethods.dynamics.forces.base import moment_about, on_link, resultant
+
+    mo, fa = _forces()
+    for link in ("2", "3", "4", "5"):
+        forces = list(fa.applied[link]) + [on_link(r, link) for r in fa.reactions.values() if link in (r.by, r.on)]
+        size = max(np.max(np.abs(f.F)) for f in forces)
+        assert np.max(np.abs(resultant(forces, mo.n))) < 1e-9 * size
+        assert np.max(np.abs(moment_about(forces, mo.z["B"]))) < 1e-9 * size
+    assert {"R_12", "R_23", "R_34", "R_35", "R_04", "R_05", "R_01"} <= set(fa.reactions)
+
+
+def test_the_forces_command_prints_the_triad_reactions():
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-m", "graphmethods", "forces", "triad-six-bar", "--phi-deg", "30",
+                          "--gravity", "--json"], capture_output=True, text=True, check=True,
+                         env={**__import__("os").environ, "PYTHONPATH": str(pathlib.Path(__file__).parents[1])})
+    data = json.loads(out.stdout)
+    assert data["structure"] == "I(0,1) → III(2,3,4,5)"
+    assert abs(data["M_balance"] - data["M_balance_lever"]) < 1e-9 * abs(data["M_balance"])
+    assert set(data["reactions"]) == {"R_01", "R_04", "R_05", "R_12", "R_23", "R_34", "R_35"}
