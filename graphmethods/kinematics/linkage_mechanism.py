@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics import vectors as V
-from graphmethods.kinematics.groups import GROUND, RPP, RPR, Group, State
+from graphmethods.kinematics.groups import GROUND, RPP, RPR, Group, State, Triad
 from graphmethods.kinematics.linkage import Linkage, Motion, Point
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
@@ -293,6 +293,10 @@ class LinkageMechanism(Mechanism):
         constructions = _LazyConstructions(lambda: self._constructions(st))
         order = self.joints + tuple(p.name for p in self.points)
         vectors = {k: V.frozen(_xy(st.v[k])) for k in order + tuple(k for k in st.v if k not in order)}
+        for g in self._triads():                          # Assur's special point, a point of the basic link
+            K, _ = g.special_point(st)
+            B1, t = g.inner[0], g.links[0]
+            vectors[g.special] = V.frozen(_xy(st.v[B1] + 1j * st.omega[t] * (K - st.z[B1])))
         return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
                              vectors=MappingProxyType(vectors),
                              omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
@@ -300,6 +304,10 @@ class LinkageMechanism(Mechanism):
                              constructions=constructions,
                              sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
                              sin_threshold=float(sin_threshold))
+
+    def _triads(self) -> tuple[Triad, ...]:
+        """The linkage's class III groups."""
+        return tuple(g for g in self.linkage.groups if isinstance(g, Triad))
 
     def _raise_toggle(self, positions: Positions, i: int, st: State) -> None:
         """Refuse a position where two construction lines are parallel (a toggle), naming it."""
@@ -381,6 +389,7 @@ class LinkageMechanism(Mechanism):
         cons.append(PointConstruction(name=cr.pin, method="known",
                                       equation=f"v_{cr.pin} = ω₁·l_{cr.centre}{cr.pin}, ⟂ {cr.centre}{cr.pin}, "
                                                f"in the sense of ω₁"))
+        found: dict[int, str] = {}
         for step in lk._steps:
             if hasattr(step, "records"):
                 for rec in step.records(st):
@@ -388,12 +397,13 @@ class LinkageMechanism(Mechanism):
                         continue
                     equation, rename = self._textbook(step, rec.equation)
                     lines = tuple(ConstructionLine(
-                        through=self._plan_label(st, pt),
+                        through=found.get(id(pt)) or self._plan_label(st, pt),
                         relation="perpendicular" if lab.startswith("⟂") else "parallel",
                         to=rename.get(lab[2:], lab[2:]), point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
                         for lab, pt, d in rec.lines)
                     cons.append(PointConstruction(name=rec.point, method="intersection", equation=equation,
                                                   lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
+                    found[id(rec.meet)] = rec.point.lower()   # a triad's lines pass through Assur's point
                     if isinstance(step, RPP):
                         cons.append(PointConstruction(
                             name=step.R, method="same", on=step.coincident,
