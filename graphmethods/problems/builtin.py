@@ -32,6 +32,7 @@ LINKAGES = {
     "two-slider": "two_slider_compressor.json",
     "engine": "single_cylinder_engine.json",
     "scotch-yoke": "scotch_yoke_pump.json",
+    "triad-six-bar": "triad_six_bar.json",
 }
 
 #: cycle problems: name -> function of :mod:`graphmethods.problems` that builds it

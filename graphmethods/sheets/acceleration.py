@@ -335,12 +335,17 @@ def _acceleration_column(comps, pts: dict, head, s_a: Scale, eps: list[tuple[str
         L = math.dist(pts[c.start], pts[c.end])
         rows.append((image(c.start) + image(c.end), K._num(nt, L, 2),
                      f"{symbol(c.symbol)} = {K._num(nt, L * s_a.per_mm, 3)}"))
-    table = Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")
-    if table.top_right[0] > limit[0] + 1e-6 or table.bottom_left[1] > limit[1]:
+    tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")]
+    below = lay.after_table_mm + len(eps) * lay.line_mm                             # ε of the links under it
+    if tables[0].bottom_left[1] + below > limit[1] + 2 * lay.line_mm:   # a long table (a triad's): rows closer
+        room = limit[1] - at[1] - below
+        row = max(TABLE_MM * 1.7, room / (len(rows) + 0.5))
+        tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")]
+    if max(t.top_right[0] for t in tables) > limit[0] + 1e-6 or max(t.bottom_left[1] for t in tables) > limit[1]:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
-    wy = table.bottom_left[1] + lay.after_table_mm
-    return [table] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
-                      for i, (link, t) in enumerate(eps)]
+    wy = max(t.bottom_left[1] for t in tables) + lay.after_table_mm
+    return [*tables] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
+                        for i, (link, t) in enumerate(eps)]
 
 
 def acceleration_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,

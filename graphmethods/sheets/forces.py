@@ -537,6 +537,9 @@ def _links_of(mo: Any, i: int) -> tuple[list[tuple[str, str]], list[tuple[str, c
             blocks.append((g.P, guide(g.links[1])))
         elif g.kind == "PRP":
             blocks += [(g.C, guide(ln)) for ln in g.links]
+        elif g.kind == "triad":                   # the basic link as a triangle, the three binary links
+            B1, B2, B3 = g.inner
+            segs += [(B1, B2), (B2, B3), (B1, B3), *zip(g.outer, g.inner)]
         else:
             segs.append((g.P, g.R))
             blocks.append((g.P, guide(g.links[0])))
