@@ -97,10 +97,14 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
             info["h"] = _f(hh) if math.isfinite(hh) else None
         pairs[key] = info
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
+    info = getattr(case, "drawn", None)
+    extra: dict[str, Any] = {}
+    if info is not None:
+        extra = {"structure": info.structure.as_json(), "loads": _loads(fa, i)}
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
-        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0),
+        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0 if lk.swing is None else math.degrees(float(mo.phi[i]))),
         "n_rpm": case.n_rpm if n_rpm is None else n_rpm, "omega_1": omega_1, "epsilon_1": epsilon_1,
         "sense": "ccw" if lk.sense == 1 else "cw", "gravity": 9.81 if gravity else 0.0,
         "structure": lk.structure().formula,
@@ -108,7 +112,25 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
         "M_balance": _f(Mb), "M_balance_lever": _f(Ml), "M_balance_power": _f(Mp),
         "difference_lever_percent": _f(fa.difference_percent(fa.M_balance_lever)[i]),
         "difference_power_percent": _f(fa.difference_percent(fa.M_balance_power)[i]),
+        **extra,
     }
+
+
+def _loads(fa, i: int) -> list[dict[str, Any]]:
+    """Every external load acting at position i (the working load included): a force at its point, a moment."""
+    from graphmethods.dynamics.forces.problem import EXTERNAL
+
+    out: list[dict[str, Any]] = []
+    for link, forces in fa.applied.items():
+        for f in forces:
+            if not f.label.startswith(EXTERNAL):
+                continue
+            F, M = complex(f.F[i]), float(f.M[i])
+            if F != 0:
+                out.append({"link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
+            if M != 0:
+                out.append({"link": int(link), "moment": _f(M)})
+    return out
 
 
 def _text(res: dict[str, Any], lang: str) -> str:

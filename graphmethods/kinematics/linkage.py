@@ -264,17 +264,25 @@ class Linkage:
         For messages.
     start : float
         Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
+    swing : (float, float), optional
+        A driver that swings (a lever, a rocker) between these absolute angles (rad, first < second):
+        m positions spread over the range, angles outside it refused, no strokes; None: a full turn.
     """
 
     def __init__(self, *, ground: Mapping[str, tuple[float, float]], crank: Crank, groups: Sequence[Group] = (),
                  points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
-                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0) -> None:
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0,
+                 swing: tuple[float, float] | None = None) -> None:
         if isinstance(sense, bool) or sense not in (1, -1):
             raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
             raise InputError(f"{name}: working_stroke must be slow, fast, toward_crank or away_from_crank; "
                              f"got {working_stroke!r}")
         self.name = name
+        self.swing = None if swing is None else (float(swing[0]), float(swing[1]))
+        if self.swing is not None and not (math.isfinite(self.swing[0]) and math.isfinite(self.swing[1])
+                                           and 0.0 < self.swing[1] - self.swing[0] <= TWO_PI):
+            raise InputError(f"{name}: the driver's range must be two finite angles a < b ≤ a + 360°, got {swing!r}")
         self._start = float(_norm(start))
         self.sense = int(sense)
         self.working_stroke = working_stroke
@@ -555,6 +563,8 @@ class Linkage:
         """(φ from +x, rotation from position 0, position numbers or None) for :meth:`motion`: new
         arrays, read-only."""
         labels = None
+        if self.swing is not None:
+            return self._swing_angles(m, phi, phi_from_start)
         if phi is None and phi_from_start is None:
             m = 12 if m is None else m
             if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
@@ -578,6 +588,36 @@ class Linkage:
             np.mod(tr, TWO_PI, out=tr)
             np.putmask(tr, tr > TWO_PI - 1e-13, 0.0)
         return _freeze(ang), _freeze(tr), None if labels is None else _freeze(labels)
+
+    def _swing_angles(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        """:meth:`_crank_angles` of a swinging driver: m equal steps from the range's start to its end, or the
+        angles given, each taken into the range (modulo 360°) or refused."""
+        assert self.swing is not None
+        a, b = self.swing
+        labels = None
+        if phi is None and phi_from_start is None:
+            m = 12 if m is None else m
+            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1:
+                raise InputError(f"the number of positions m must be an integer ≥ 1, got {m!r}")
+            m = int(m)
+            self.check_full_turn()
+            labels = np.arange(m + 1)
+            ang = a + (b - a) * (labels / m)
+            ang[m] = b
+        else:
+            ang = self._check_phi(phi_from_start, "phi_from_start") + a if phi is None else self._check_phi(phi, "phi")
+            ang = a + np.mod(ang - a, TWO_PI)
+            tol = 1e-12 * max(1.0, abs(a), abs(b))
+            ang = np.where(ang > TWO_PI + a - tol, a, ang)
+            bad = ang > b + tol
+            if bad.any():
+                x = float(np.degrees(ang[bad][0]))
+                raise InputError(f"{self.name}: the driver's angle {x % 360:.6g}° lies outside its range "
+                                 f"[{math.degrees(a):.6g}°, {math.degrees(b):.6g}°] (range_deg)")
+            ang = np.minimum(ang, b)
+            self.check_full_turn()
+        return _freeze(ang), _freeze(ang - a), None if labels is None else _freeze(labels)
 
     def _grid(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
               strokes: Strokes | None) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]:
@@ -670,14 +710,17 @@ class Linkage:
         full crank turn (its assembly margin reaches zero, where the branch could jump)."""
         if "full_turn" in self._cache:
             return
-        phi = np.linspace(0.0, TWO_PI, samples, endpoint=False)
+        a0, span = (0.0, TWO_PI) if self.swing is None else (self.swing[0], self.swing[1] - self.swing[0])
+        phi = a0 + np.linspace(0.0, span, samples, endpoint=self.swing is not None)
         st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
         for g in self.groups:
             mg = g.margin(st)
             scale = float(np.max(np.abs(mg))) or 1.0
             i = int(np.argmin(mg))
             # refine the smallest margin between its neighbours (golden section)
-            lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
+            lo, hi = phi[i] - span / samples, phi[i] + span / samples
+            if self.swing is not None:
+                lo, hi = max(lo, self.swing[0]), min(hi, self.swing[1])
             def f(x: float, g: Group = g) -> float:
                 return float(g.margin(self.solve(np.array([x]), level=0))[0])
 
@@ -690,6 +733,10 @@ class Linkage:
                 else:
                     lo = a
             x = 0.5 * (lo + hi)
+            if f(x) <= 1e-12 * scale and self.swing is not None:
+                raise AssemblyError(f"{self.name}: the driver's range reaches a toggle of group {g.name} at "
+                                    f"φ = {math.degrees(x):.6g}° (its links come in line): the assembly would jump; "
+                                    f"narrow range_deg to stay clear of it")
             if f(x) <= 1e-12 * scale:
                 raise AssemblyError(f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x) % 360:.6g}° "
                                     f"(its links come in line): the crank cannot turn through it on one branch, "
@@ -716,7 +763,7 @@ class Linkage:
         if "extremes" in self._cache:
             return self._cache["extremes"]            # type: ignore[no-any-return]
         res = None
-        if self.output is not None:
+        if self.output is not None and self.swing is None:
             res = self._find_extremes()
         self._cache["extremes"] = res
         return res
