@@ -712,6 +712,8 @@ class Linkage:
             return
         a0, span = (0.0, TWO_PI) if self.swing is None else (self.swing[0], self.swing[1] - self.swing[0])
         phi = a0 + np.linspace(0.0, span, samples, endpoint=self.swing is not None)
+        if self.swing is not None:
+            self._check_swing_assembles(phi)
         st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
         for g in self.groups:
             mg = g.margin(st)
@@ -742,6 +744,29 @@ class Linkage:
                                     f"(its links come in line): the crank cannot turn through it on one branch, "
                                     f"the assembly would jump; change the lengths or study the range with phi=")
         self._cache["full_turn"] = True
+
+    def _check_swing_assembles(self, phi: np.ndarray) -> None:
+        """A swinging driver's range that leaves the assembly: refused at the angle where it does (bisected
+        between the last sample that assembles and the first that does not, from the range's start)."""
+        def ok(x: float) -> bool:
+            try:
+                self.solve(np.array([x]), level=0)
+            except AssemblyError:
+                return False
+            return True
+
+        good = np.array([ok(float(x)) for x in phi[:: max(1, phi.size // 256)]] + [ok(float(phi[-1]))])
+        if good.all():
+            return
+        xs = np.append(phi[:: max(1, phi.size // 256)], phi[-1])
+        j = int(np.argmin(good))
+        lo, hi = (float(xs[j - 1]), float(xs[j])) if j > 0 else (float(xs[0]), float(xs[0]))
+        if j > 0 and good[j - 1]:
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+        raise AssemblyError(f"{self.name}: the driver's range reaches a toggle at φ = {math.degrees(lo):.6g}°: beyond "
+                            f"it the linkage cannot be assembled; narrow range_deg to stay clear of it")
 
     def _out_value(self, st: State) -> tuple[Any, Any, Any]:
         """(coordinate, its derivative, its second derivative) of the output over the positions."""
