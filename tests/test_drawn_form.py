@@ -8,8 +8,7 @@ import pathlib
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, given, settings, strategies as st
 
 from graphmethods import cli
 from graphmethods.dynamics.forces import case_forces
@@ -19,7 +18,8 @@ from graphmethods.kinematics.drawn import drawn_case, link_angles, slide_kinemat
 from graphmethods.kinematics.structure import StructureError
 
 DATA = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
-BUILTIN = ["scotch_yoke_pump.json", "single_cylinder_engine.json", "six_bar_press.json", "slotting_machine.json",
+BUILTIN = ["slider_crank_press.json", "shaper.json", "four_bar_rocker.json", "slotted_lever.json",
+           "scotch_yoke_pump.json", "single_cylinder_engine.json", "six_bar_press.json", "slotting_machine.json",
            "two_slider_compressor.json", "whitworth_quick_return.json"]
 
 
@@ -136,7 +136,7 @@ def test_power_balance_with_load_vectors_moments_and_gravity():
     g = 9.81
     power = np.zeros(mo.n)
     for it in case.inertias:
-        S, v, a = mo.z[it.point], mo.v_[it.point], mo.a_[it.point]
+        v, a = mo.v_[it.point], mo.a_[it.point]
         F = -it.m * a - 1j * it.m * g
         power += (F * np.conj(v)).real - it.J * mo.epsilon[it.link] * mo.omega[it.link]
     for ld in case.drawn.loads:
@@ -152,7 +152,8 @@ def test_power_balance_with_load_vectors_moments_and_gravity():
 # ----------------------------------------------------------------------------------------------- swinging drivers
 LEVER = drawn({"O": [0, 0], "A": [0.1, 0.0], "B": [0.45, 0.1]},
               {"0": ["O"], "1": ["O", "A"], "2": ["A", "B"], "3": ["B"]},
-              [{"block": 3, "on": 0, "at": "B", "angle_deg": 0}], driver={"link": 1, "about": "O", "range_deg": [-30, 60]})
+              [{"block": 3, "on": 0, "at": "B", "angle_deg": 0}],
+              driver={"link": 1, "about": "O", "range_deg": [-30, 60]})
 
 
 def test_a_swinging_driver_spreads_its_positions_over_the_range_and_refuses_angles_outside(capsys):
@@ -195,7 +196,8 @@ REFUSED = {
                 "link 4 has no pair"),
     "PPP": (drawn({"O": [0, 0], "A": [0.1, 0], "P2": [0.1, 0.05], "C": [0.2, 0.1]},
                   {"0": ["O"], "1": ["O", "A"], "2": ["P2"], "3": ["C"]},
-                  [{"block": 2, "on": 1, "at": "P2", "angle_deg": 90}, {"block": 2, "on": 3, "at": "P2", "angle_deg": 0},
+                  [{"block": 2, "on": 1, "at": "P2", "angle_deg": 90},
+                   {"block": 2, "on": 3, "at": "P2", "angle_deg": 0},
                    {"block": 3, "on": 0, "at": "C", "angle_deg": 45}]), r"three prismatic pairs \(PPP\)"),
     "pin on a slide": (drawn({"O": [0, 0], "A": [0.1, 0.0], "O3": [0.0, -0.3]},
                              {"0": ["O", "O3"], "1": ["O", "A"], "2": ["A"], "3": ["O3", "A"]},

@@ -97,10 +97,10 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
             info["h"] = _f(hh) if math.isfinite(hh) else None
         pairs[key] = info
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
-    info = getattr(case, "drawn", None)
+    drawn = getattr(case, "drawn", None)
     extra: dict[str, Any] = {}
-    if info is not None:
-        extra = {"structure": info.structure.as_json(), "loads": _loads(fa, i)}
+    if drawn is not None:
+        extra = {"structure": drawn.structure.as_json(), "loads": _loads(fa, i)}
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
@@ -143,7 +143,8 @@ def _text(res: dict[str, Any], lang: str) -> str:
     lines = [f"{nt.word('forces.report_title')}: {res['case'] or res['kind']}  ({res['source']})",
              (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°, "
               f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} rad/s ({res['sense']}), "
-              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
+              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², "
+              f"{res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"),
              f"{nt.word('forces.gravity')}: {weights}", "", nt.word("forces.inertia_loads"),
              (f"{nt.word('forces.link'):>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  "
               f"{'M_i [N·m]':>12}  {'h [m]':>10}")]
@@ -155,6 +156,16 @@ def _text(res: dict[str, Any], lang: str) -> str:
               f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
+    if res.get("loads"):
+        lines += ["", nt.word("forces.external"),
+                  f"{nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  {'F_x [N]':>12}  {'F_y [N]':>12}  "
+                  f"{'M [N·m]':>12}"]
+        for ld in res["loads"]:
+            if "force" in ld:
+                (x, y), (fx, fy) = ld["at"], ld["force"]
+                lines.append(f"{ld['link']:>6}  {x:10.5f}  {y:10.5f}  {fx:12.3f}  {fy:12.3f}  {'-':>12}")
+            else:
+                lines.append(f"{ld['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {ld['moment']:12.4f}")
     diff = nt.word("forces.diff")
     lines += ["", nt.word("forces.balancing"),
               f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",

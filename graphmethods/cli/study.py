@@ -66,7 +66,11 @@ def run(args) -> int:
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
     sheet = check_sheet_target(args.sheet, args.force) if args.sheet is not None else None
-    study = Study(builtin.case(args.case), positions=args.positions)
+    from graphmethods.kinematics.drawn import require_cycle
+
+    case = builtin.case(args.case)
+    require_cycle(case, "the study")
+    study = Study(case, positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
     if args.eta is not None:

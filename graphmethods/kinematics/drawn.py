@@ -133,6 +133,20 @@ class DrawnCase(LinkageCase):
         return super().__getattr__(key)
 
 
+def require_cycle(case: Any, command: str) -> None:
+    """Refuse a drawn file for a command that studies the steady cycle (the study, the motion): every key it
+    needs and the file leaves out, in one line; or a driver that swings instead of turning fully."""
+    info = getattr(case, "drawn", None)
+    if info is None:
+        return
+    if info.missing:
+        raise InputError(f"{case.source}: {command} needs {', '.join(info.missing)}, missing from the file")
+    if info.swing is not None:
+        a, b = (math.degrees(x) for x in info.swing)
+        raise InputError(f"{case.source}: {command} follows the crank over whole turns; this driver swings over "
+                         f"range_deg [{a:g}, {b:g}] (kinematics and forces take it)")
+
+
 def is_drawn(data: Mapping[str, Any]) -> bool:
     """Is this ``"kind": "linkage"`` file in the drawn form (it has ``joints``)?"""
     return "joints" in data
@@ -557,6 +571,8 @@ def slide_kinematics(info: DrawnInfo, motion: Any) -> list[dict[str, Any]]:
     out = []
     for s in info.slides:
         P, vb, ab = (np.asarray(t[s.at], dtype=complex) for t in (motion.z, motion.v_, motion.a_))
+        w: Any
+        e: Any
         if s.ref is None:
             u: Any = cmath.exp(1j * s.angle)
             w = e = 0.0
@@ -598,4 +614,4 @@ def drawn_case(data: Mapping[str, Any], *, source: str = "<dict>") -> DrawnCase:
 
 
 __all__ = ["DrawnCase", "DrawnInfo", "DrawnLoad", "DrawnSlide", "TOP_KEYS", "compile_drawn", "drawn_case", "is_drawn",
-           "link_angles", "slide_kinematics"]
+           "link_angles", "require_cycle", "slide_kinematics"]

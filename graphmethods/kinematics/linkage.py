@@ -606,7 +606,9 @@ class Linkage:
             ang = a + (b - a) * (labels / m)
             ang[m] = b
         else:
-            ang = self._check_phi(phi_from_start, "phi_from_start") + a if phi is None else self._check_phi(phi, "phi")
+            given = phi_from_start if phi_from_start is not None else phi
+            assert given is not None
+            ang = self._check_phi(given, "phi_from_start" if phi is None else "phi") + (a if phi is None else 0.0)
             ang = a + np.mod(ang - a, TWO_PI)
             tol = 1e-12 * max(1.0, abs(a), abs(b))
             ang = np.where(ang > TWO_PI + a - tol, a, ang)

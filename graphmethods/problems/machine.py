@@ -88,7 +88,9 @@ def _cycle_machine(p) -> Machine:
 
 def _linkage_machine(case, name: str) -> Machine:
     from graphmethods.dynamics.study import Study
+    from graphmethods.kinematics.drawn import require_cycle
 
+    require_cycle(case, "the motion")
     study = Study(case, positions=12, estimate=False)
     m = TABLE_POSITIONS
     phi = TWO_PI * np.arange(m + 1) / m
@@ -127,6 +129,10 @@ def machine(spec) -> Machine:
     if low in LINKAGES:
         return _linkage_machine(read_case(DATA / LINKAGES[low]), low)
     p = pathlib.Path(text)
+    if not p.exists() and low.startswith("drawn"):
+        from graphmethods.problems.builtin import case_path
+
+        p = case_path(low)                       # the drawn form's worked files and drawn/NAME
     if not p.exists():
         names = ", ".join(["W1", "W2", "W3", "W4", "W4-exact"] + list(LINKAGES))
         raise InputError(f"{text!r}: not a built-in problem ({names}) and no such file")
