@@ -271,18 +271,28 @@ def test_the_group_form_still_reads(capsys):
 
 
 # ----------------------------------------------------------------------------------------------- random drawings
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(pts=st.lists(st.tuples(st.floats(-0.5, 0.5), st.floats(-0.5, 0.5)), min_size=4, max_size=4),
-       slider=st.booleans(), ang=st.floats(-180, 180))
-def test_random_drawn_mechanisms_assemble_as_drawn_or_are_refused_with_a_reason(pts, slider, ang):
+       kind=st.sampled_from(["RRR", "RRP", "RPR", "RRR+RRP"]), ang=st.floats(-180, 180),
+       swing=st.one_of(st.none(), st.tuples(st.floats(-200, 200), st.floats(1, 360))))
+def test_random_drawn_mechanisms_assemble_as_drawn_or_are_refused_with_a_reason(pts, kind, ang, swing):
     (ox, oy), (ax, ay), (bx, by), (dx, dy) = pts
-    if slider:
+    driver = None if swing is None else {"link": 1, "about": "O", "range_deg": [swing[0], swing[0] + swing[1]]}
+    if kind == "RRP":
         data = drawn({"O": [ox, oy], "A": [ax, ay], "B": [bx, by]},
                      {"0": ["O"], "1": ["O", "A"], "2": ["A", "B"], "3": ["B"]},
-                     [{"block": 3, "on": 0, "at": "B", "angle_deg": ang}])
+                     [{"block": 3, "on": 0, "at": "B", "angle_deg": ang}], driver=driver)
+    elif kind == "RPR":
+        data = drawn({"O": [ox, oy], "A": [ax, ay], "D": [dx, dy]},
+                     {"0": ["O", "D"], "1": ["O", "A"], "2": ["A"], "3": ["D"]},
+                     [{"block": 2, "on": 3, "at": "A", "angle_deg": ang}], driver=driver)
+    elif kind == "RRR+RRP":
+        data = drawn({"O": [ox, oy], "A": [ax, ay], "B": [bx, by], "D": [dx, dy], "E": [bx + 0.3, by]},
+                     {"0": ["O", "D"], "1": ["O", "A"], "2": ["A", "B"], "3": ["D", "B"], "4": ["B", "E"],
+                      "5": ["E"]}, [{"block": 5, "on": 0, "at": "E", "angle_deg": ang}], driver=driver)
     else:
         data = drawn({"O": [ox, oy], "A": [ax, ay], "B": [bx, by], "D": [dx, dy]},
-                     {"0": ["O", "D"], "1": ["O", "A"], "2": ["A", "B"], "3": ["D", "B"]})
+                     {"0": ["O", "D"], "1": ["O", "A"], "2": ["A", "B"], "3": ["D", "B"]}, driver=driver)
     try:
         case = drawn_case(data)
     except InputError as exc:
