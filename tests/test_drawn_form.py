@@ -70,6 +70,16 @@ def test_every_builtin_linkage_in_both_forms_gives_the_same_results(name):
         assert np.abs(r.R - fb.reactions[key].R).max() <= 1e-12 * big, key
 
 
+@pytest.mark.parametrize("name", ["slider_crank_press.json", "six_bar_press.json"])
+def test_the_study_of_both_forms_is_the_same(name):
+    from graphmethods.dynamics.study import Study
+
+    a = Study(read_case(DATA / name), positions=24).summary()
+    b = Study(read_case(DATA / "drawn" / name), positions=24).summary()
+    for key in ("M_d", "delta_W_max", "J_F_energy", "J_F_wittenbauer", "J_F_exact", "J_e_min", "J_e_max"):
+        assert b[key] == pytest.approx(a[key], rel=1e-9, abs=1e-12), key
+
+
 # ----------------------------------------------------------------------------------------------- every dyad kind
 @pytest.mark.parametrize("kind", sorted(KINDS))
 def test_each_dyad_kind_velocities_and_accelerations_are_the_derivatives_of_positions(kind):
@@ -164,6 +174,20 @@ def test_a_swinging_driver_spreads_its_positions_over_the_range_and_refuses_angl
     with pytest.raises(InputError, match="outside its range"):
         case.linkage.motion(phi=np.radians([90.0]))
     assert np.allclose(np.degrees(case.linkage.motion(phi=np.radians([350.0])).phi), [-10.0])
+
+
+def test_the_command_line_prints_a_swinging_driver_s_angles_as_the_range_gives_them(tmp_path, capsys):
+    f = tmp_path / "lever.json"
+    f.write_text(json.dumps(LEVER))
+    assert cli.main(["kinematics", str(f), "--positions", "3", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)["positions"]
+    assert [r["phi_deg"] for r in rows] == [-30.0, 0.0, 30.0, 60.0]
+    assert cli.main(["kinematics", str(f), "--phi-deg", "350", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["positions"][0]["phi_deg"] == -10.0
+    assert cli.main(["kinematics", str(f), "--phi-deg", "90"]) == 2
+    assert "outside its range" in capsys.readouterr().err
+    assert cli.main(["forces", str(f), "--phi-deg", "-20", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["phi_deg"] == -20.0
 
 
 def test_a_range_that_reaches_a_toggle_is_refused_with_its_angle():

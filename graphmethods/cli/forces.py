@@ -69,6 +69,7 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
            gravity: bool = False, n_rpm: float | None = None, epsilon_1: float = 0.0) -> dict:
     """The force analysis as a JSON-ready dict (see the module docstring)."""
     from graphmethods.dynamics.forces import case_forces
+    from graphmethods.kinematics.drawn import driver_angles_deg
     from graphmethods.units import omega_from_n
 
     omega_1 = case.omega_m if n_rpm is None else omega_from_n(n_rpm)
@@ -104,7 +105,8 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
-        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0 if lk.swing is None else math.degrees(float(mo.phi[i]))),
+        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0 if lk.swing is None else
+                      driver_angles_deg(case.drawn, mo, None if phi_deg is None else [phi_deg])[i]),
         "n_rpm": case.n_rpm if n_rpm is None else n_rpm, "omega_1": omega_1, "epsilon_1": epsilon_1,
         "sense": "ccw" if lk.sense == 1 else "cw", "gravity": 9.81 if gravity else 0.0,
         "structure": lk.structure().formula,

@@ -188,10 +188,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
             cols[f"omega_{k}"] = plan.omega(link)
             units[f"omega_{k}"] = "rad/s"
     info = getattr(case, "drawn", None)
-    angles, slides = _drawn_columns(info, motion, cols, units)
-    if info is not None and info.swing is not None and phi_deg is not None:      # as given, inside the range
-        a = math.degrees(info.swing[0])
-        cols["phi_deg"] = a + np.mod(np.asarray(phi_deg, dtype=float) - a, 360.0)
+    angles, slides = _drawn_columns(info, motion, cols, units, phi_deg)
     rows = []
     for i in range(pos.n):
         row: dict[str, Any] = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
@@ -233,7 +230,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
     return out
 
 
-def _drawn_columns(info, motion, cols: dict, units: dict) -> tuple[dict, list]:
+def _drawn_columns(info, motion, cols: dict, units: dict, phi_deg=None) -> tuple[dict, list]:
     """A drawn file's link angles and slides over the positions; their flat columns added to ``cols``
     (``angle_k_deg``, ``v_rel_b/o``, ``a_rel_b/o``, ``a_cor_b/o`` its magnitude); the driver's angle as
     the file gives it (inside a swinging driver's range)."""
@@ -241,10 +238,10 @@ def _drawn_columns(info, motion, cols: dict, units: dict) -> tuple[dict, list]:
 
     if info is None:
         return {}, []
-    from graphmethods.kinematics.drawn import link_angles, slide_kinematics
+    from graphmethods.kinematics.drawn import driver_angles_deg, link_angles, slide_kinematics
 
     if info.swing is not None:
-        cols["phi_deg"] = np.degrees(np.asarray(motion.phi, dtype=float))
+        cols["phi_deg"] = driver_angles_deg(info, motion, phi_deg)
     angles = link_angles(info, motion)
     for k, a in angles.items():
         cols[f"angle_{k}_deg"] = a

@@ -95,7 +95,7 @@ class DrawnInfo:
     phi_0 : float
         The driver's angle in the drawing, rad.
     swing : (float, float) or None
-        The driver's range, rad (None: a full turn).
+        The driver's range, rad (None: a full turn); ``swing_deg`` as the file gives it, degrees.
     angle_offset : mapping link -> float
         The file's angle of a link minus the core's direction of it, rad (constant).
     slides : tuple of DrawnSlide
@@ -109,6 +109,7 @@ class DrawnInfo:
     structure: Decomposition
     phi_0: float
     swing: tuple[float, float] | None
+    swing_deg: tuple[float, float] | None
     angle_offset: Mapping[str, float]
     slides: tuple[DrawnSlide, ...]
     loads: tuple[DrawnLoad, ...]
@@ -220,6 +221,7 @@ class _Compiler:
             self.slides.append(Slide(block, on, at, ang))
 
     def driver(self) -> tuple[str, str, tuple[float, float] | None]:
+        """(driver link, its pivot, its range in degrees or None)."""
         rd = self.rd
         if "driver" not in self.data:
             rd.err("driver", "is missing: {\"link\": 1, \"about\": \"O\"} (and \"range_deg\": [a, b] if it swings)")
@@ -241,7 +243,7 @@ class _Compiler:
             a, b = (rd.number(f"driver.range_deg[{i}]", r[i]) for i in (0, 1))
             if not a < b <= a + 360.0:
                 rd.err("driver.range_deg", f"must be [a, b] with a < b ≤ a + 360; got {r!r}")
-            swing = (math.radians(a), math.radians(b))
+            swing = (a, b)
         return link, about, swing
 
     def speed(self, out: dict[str, Any], missing: list[str]) -> None:
@@ -544,10 +546,30 @@ def compile_drawn(data: Mapping[str, Any], *, source: str = "<dict>") -> tuple[d
             (p for p in (*cp.links[s.on], *(n for n, q in cp.points.items() if str(q["link"]) == s.on),
                          *(n for n, c in cp.carrier.items() if c == s.on)) if p in cp.st.z), None)
         slides.append(DrawnSlide(s.block, s.on, s.at, s.angle, turn, ref))
-    info = DrawnInfo(structure=struct, phi_0=phi_0, swing=swing, angle_offset=MappingProxyType(offsets),
+    info = DrawnInfo(structure=struct, phi_0=phi_0, swing_deg=swing,
+                     swing=None if swing is None else (math.radians(swing[0]), math.radians(swing[1])),
+                     angle_offset=MappingProxyType(offsets),
                      slides=tuple(slides), loads=tuple(loads), missing=tuple(missing),
                      group_form=MappingProxyType(out))
     return out, info
+
+
+def driver_angles_deg(info: DrawnInfo, motion: Any, phi_deg: Any = None) -> np.ndarray:
+    """The driver's angles as the file gives them, degrees: a swinging driver's inside its range (the
+    angles asked for taken into it, or the range's m equal steps, without a round trip through rad);
+    a full turn's in [0, 360)."""
+    if info.swing_deg is None:
+        src = np.degrees(np.asarray(motion.phi, dtype=float)) if phi_deg is None else np.asarray(phi_deg, float)
+        out: np.ndarray = np.mod(src, 360.0)
+        return out
+    a, b = info.swing_deg
+    if phi_deg is not None:                  # the motion has refused an angle outside the range
+        x: np.ndarray = a + np.mod(np.asarray(phi_deg, dtype=float) - a, 360.0)
+    elif motion.index is not None:
+        x = a + (b - a) * (np.asarray(motion.index, dtype=float) / (len(motion.index) - 1))
+    else:
+        x = np.degrees(np.asarray(motion.phi, dtype=float))
+    return x
 
 
 def link_angles(info: DrawnInfo, motion: Any) -> dict[str, np.ndarray]:
@@ -614,4 +636,4 @@ def drawn_case(data: Mapping[str, Any], *, source: str = "<dict>") -> DrawnCase:
 
 
 __all__ = ["DrawnCase", "DrawnInfo", "DrawnLoad", "DrawnSlide", "TOP_KEYS", "compile_drawn", "drawn_case", "is_drawn",
-           "link_angles", "require_cycle", "slide_kinematics"]
+           "driver_angles_deg", "link_angles", "require_cycle", "slide_kinematics"]

@@ -281,7 +281,8 @@ class Linkage:
         self.name = name
         self.swing = None if swing is None else (float(swing[0]), float(swing[1]))
         if self.swing is not None and not (math.isfinite(self.swing[0]) and math.isfinite(self.swing[1])
-                                           and 0.0 < self.swing[1] - self.swing[0] <= TWO_PI):
+                                           and 0.0 < self.swing[1] - self.swing[0]
+                                           <= TWO_PI + 1e-12 * (1.0 + abs(self.swing[0]))):
             raise InputError(f"{name}: the driver's range must be two finite angles a < b ≤ a + 360°, got {swing!r}")
         self._start = float(_norm(start))
         self.sense = int(sense)
@@ -566,10 +567,7 @@ class Linkage:
         if self.swing is not None:
             return self._swing_angles(m, phi, phi_from_start)
         if phi is None and phi_from_start is None:
-            m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
+            m = _count_positions(m, 3)
             self.check_full_turn()
             labels = np.arange(m + 1)
             tr = (TWO_PI / m) * labels
@@ -597,10 +595,7 @@ class Linkage:
         a, b = self.swing
         labels = None
         if phi is None and phi_from_start is None:
-            m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1:
-                raise InputError(f"the number of positions m must be an integer ≥ 1, got {m!r}")
-            m = int(m)
+            m = _count_positions(m, 1)
             self.check_full_turn()
             labels = np.arange(m + 1)
             ang = a + (b - a) * (labels / m)
@@ -939,6 +934,14 @@ class Linkage:
         st = self._ends()
         th_s, th_e = st.theta[self._output()[1]]
         return float(abs(_wrap(th_e - th_s)))
+
+
+def _count_positions(m: int | None, low: int) -> int:
+    """The number of positions m (12 when None): an integer ≥ ``low``, else InputError."""
+    m = 12 if m is None else m
+    if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < low:
+        raise InputError(f"the number of positions m must be an integer ≥ {low}, got {m!r}")
+    return int(m)
 
 
 def _norm(a: npt.ArrayLike) -> Any:
