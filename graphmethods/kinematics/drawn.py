@@ -406,7 +406,15 @@ class _Compiler:
             raise StructureError(f"{self.source}: the class III group {fg.label} (base link {fg.links[0]}, links "
                                  f"{', '.join(fg.links[1:])}) is found, but this build has no class III solver yet")
         g = _group(self.rd, i, spec)
-        g.positions(self.st)
+        if spec["type"] == "triad":        # solved from its track by the linkage; here it stands as drawn
+            z = {k: complex(*xy) for k, xy in spec["drawn"].items()}
+            B = [z[b] for b in spec["inner"]]
+            self.st.e[str(spec["links"][0])] = np.array([(B[1] - B[0]) / abs(B[1] - B[0])])
+            for k, p, b in zip(spec["links"][1:], spec["outer"], spec["inner"]):
+                self.st.e[str(k)] = np.array([(z[b] - z[p]) / abs(z[b] - z[p])])
+                self.st.z[b] = np.array([z[b]])
+        else:
+            g.positions(self.st)
         found, _ = g.outputs()
         scale = max(1.0, *(abs(v) for v in self.z.values()))
         for p in found:

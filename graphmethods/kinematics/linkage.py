@@ -384,13 +384,15 @@ class Linkage:
         infos = [GroupInfo("crank", 1, 0, ("0", self.crank.link))]
         parts = [f"I(0,{self.crank.link})"]
         p5 = 1
+        roman = {1: "I", 2: "II", 3: "III"}
         for g in self.groups:
-            infos.append(GroupInfo(g.kind, 2, 2, tuple(g.links)))
-            parts.append(f"II({g.links[0]},{g.links[1]})")
+            infos.append(GroupInfo(g.kind, g.cls, g.order, tuple(g.links)))
+            shown = g.links if g.cls == 2 else sorted(g.links, key=lambda k: (len(k), k))   # III(2,3,4,5)
+            parts.append(f"{roman.get(g.cls, str(g.cls))}({','.join(shown)})")
             p5 += len(g.pairs)
         n = len(self.links)
         return Structure(groups=tuple(infos), formula=" → ".join(parts), n_moving=n, p_lower=p5, p_higher=0,
-                         dof=3 * n - 2 * p5, mechanism_class=2 if self.groups else 1)
+                         dof=3 * n - 2 * p5, mechanism_class=max((g.cls for g in self.groups), default=1))
 
     def _choose_output(self, output: str | None) -> tuple[str, str] | None:
         guides = self.guides
@@ -423,8 +425,12 @@ class Linkage:
                     break
 
     def _group_rockers(self, g: Group) -> Iterator[tuple[str, str]]:
-        from graphmethods.kinematics.groups import RPR, RRR
-        if isinstance(g, RRR):
+        from graphmethods.kinematics.groups import RPR, RRR, Triad
+        if isinstance(g, Triad):
+            for k, P in zip(g.links[1:], g.outer):
+                if P in self.ground:
+                    yield k, P
+        elif isinstance(g, RRR):
             if g.Q in self.ground:
                 yield g.links[1], g.Q
             elif g.P in self.ground:
@@ -452,7 +458,7 @@ class Linkage:
 
     # ------------------------------------------------------------------ solving
     def solve(self, phi: npt.ArrayLike, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
-              labels: np.ndarray | None = None) -> State:
+              labels: np.ndarray | None = None, upto: Group | None = None) -> State:
         """Solve the linkage at crank angles ``phi`` (rad); level 0 positions, 1 + velocities,
         2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`.
 
@@ -471,6 +477,8 @@ class Linkage:
             phi = phi.reshape(-1)
         n = phi.shape[0]
         st = State(phi=phi, labels=labels)
+        if self._triads:
+            st.track.update(self._tracks() if upto is None else self._cache.get("tracks", {}))
         fixed, zero_c = self._fixed(n)
         for k, z in fixed.items():
             st.z[k] = z                              # a point of the result, the same at every position
@@ -484,6 +492,8 @@ class Linkage:
         st.theta[cr.link] = phi if not phi.flags.writeable else phi.copy()
         st.e[cr.link] = e
         for step in self._steps:
+            if step is upto:
+                return st                            # the outer joints of a triad, for its track
             if isinstance(step, Point):
                 st.z[step.name] = st.z[step.origin] + step.offset * st.e[step.link]
             else:
@@ -497,6 +507,26 @@ class Linkage:
             st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
             self._accelerations(st)
         return st
+
+    @functools.cached_property
+    def _triads(self) -> tuple[Group, ...]:
+        """The class III groups, which solve their positions from a track (:mod:`.groups.triad`)."""
+        return tuple(g for g in self.groups if g.cls == 3)
+
+    def _tracks(self) -> dict[str, Any]:
+        """Each triad's drawn assembly continued over the crank's motion, made once, in solving order
+        (a triad's outer joints may hang on an earlier triad)."""
+        tracks: dict[str, Any] | None = self._cache.get("tracks")
+        if tracks is None or len(tracks) < len(self._triads):
+            tracks = self._cache["tracks"] = {}
+            try:
+                for g in self._triads:
+                    tracks[g._name()] = cast(Any, g).track(
+                        lambda phi, g=g: self.solve(phi, level=0, upto=g))
+            except AssemblyError as exc:
+                del self._cache["tracks"]
+                raise AssemblyError(f"{self.name}: {exc}") from None
+        return tracks
 
     def _kept_constant(self, value: float, n: int) -> np.ndarray:
         """The crank's ω or ε at every position (see :func:`_constant`), kept for up to 16 (value, n)
@@ -878,7 +908,8 @@ class Linkage:
         kind, name = self._output()
         joint: str | None = name
         if kind == "link":
-            joint = next((g.outputs()[0][0] for g in self.groups if name in g.links), None)
+            joint = next((g.outputs()[0][list(g.links).index(name) - 1 if g.cls == 3 else 0]
+                          for g in self.groups if name in g.links), None)
         if joint is None:
             return True
         st = self.solve(np.array([pa, pb]), level=0)

@@ -14,7 +14,9 @@ key                   meaning
 ``groups``            the Assur groups in solving order, each ``{"type": ..., "links": [i, j], ...}``:
                       RRR ``P, Q, C, l_PC, l_QC, branch``; RRP (or PRR) ``P, C, l, guide, branch``;
                       RPR ``P, Q, point, e, branch``; PRP ``C, guide_1, guide_2``;
-                      RPP ``P, R, point, guide, slot_angle_deg, e``. A guide is
+                      RPP ``P, R, point, guide, slot_angle_deg, e``; a class III ``triad``
+                      ``links [t, k1, k2, k3], outer [P1, P2, P3], inner [B1, B2, B3], drawn`` (the
+                      six joints at the drawn position, {name: [x, y]}). A guide is
                       ``{"link": 0, "through": [x, y] or "joint", "angle_deg": 0}``.
 ``points``            extra points: ``{"S2": {"link": 2, "from": "A", "distance": 0.15, "angle_deg": 0}}``
                       (angle from the link's own direction); a group may be driven from one
@@ -48,7 +50,7 @@ from typing import Any, NoReturn
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.case import Case, DiagramLoad, Inertia, Load
-from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Group, Guide
+from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Group, Guide, Triad
 from graphmethods.kinematics.linkage import Crank, Linkage, Point
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
@@ -138,6 +140,8 @@ def _group(rd: _Reader, i: int, raw: Json) -> Group:
     t = raw.get("type")
     if t not in KINDS:
         rd.err(f"{key}.type", f"must be one of {', '.join(KINDS)}; got {t!r}")
+    if t == "triad":
+        return _triad(rd, key, raw)
     spec = GROUP_KEYS[t]
     rd.obj(key, raw, ("type", "links", *spec))
     links = raw.get("links")
@@ -175,6 +179,39 @@ def _group(rd: _Reader, i: int, raw: Json) -> Group:
             return PRP(C=kw["C"], guide_1=kw["guide_1"], guide_2=kw["guide_2"], links=lk)
         return RPP(P=kw["P"], R=kw["R"], coincident=kw["point"], guide=kw["guide"],
                    slot_angle=math.radians(kw["slot_angle_deg"]), e=kw["e"], links=lk)
+    except InputError as exc:
+        rd.err(key, str(exc))
+
+
+def _triad(rd: _Reader, key: str, raw: Mapping[str, Json]) -> Triad:
+    """``{"type": "triad", "links": [t, k1, k2, k3], "outer": [P1, P2, P3], "inner": [B1, B2, B3],
+    "drawn": {name: [x, y], ...}}``: a class III group given at its drawn position."""
+    rd.obj(key, raw, ("type", "links", "outer", "inner", "drawn"))
+    for k in ("links", "outer", "inner", "drawn"):
+        if k not in raw:
+            rd.err(f"{key}.{k}", "is missing (a triad needs links [t, k1, k2, k3], outer [P1, P2, P3], "
+                                 "inner [B1, B2, B3] and the drawn position of those six joints)")
+    links = raw["links"]
+    if not isinstance(links, (list, tuple)) or len(links) != 4:
+        rd.err(f"{key}.links", f"must be the four link numbers [t, k1, k2, k3] (t the basic link); got {links!r}")
+    lk = tuple(rd.link(f"{key}.links[{i}]", x) for i, x in enumerate(links))
+    if GROUND in lk:
+        rd.err(f"{key}.links", "the frame (0) is not a link of a group")
+    names: dict[str, tuple[str, ...]] = {}
+    for k in ("outer", "inner"):
+        v = raw[k]
+        if not isinstance(v, (list, tuple)) or len(v) != 3:
+            rd.err(f"{key}.{k}", f"must be three joint names; got {v!r}")
+        names[k] = tuple(rd.text(f"{key}.{k}[{i}]", x) for i, x in enumerate(v))
+    drawn_raw = rd.obj(f"{key}.drawn", raw["drawn"], (*names["outer"], *names["inner"]))
+    drawn = []
+    for k in (*names["outer"], *names["inner"]):
+        if k not in drawn_raw:
+            rd.err(f"{key}.drawn.{k}", "is missing: [x, y] of the joint at the drawn position, m")
+        x, y = rd.xy(f"{key}.drawn.{k}", drawn_raw[k])
+        drawn.append((k, complex(x, y)))
+    try:
+        return Triad(outer=names["outer"], inner=names["inner"], drawn=tuple(drawn), links=lk)  # type: ignore[arg-type]
     except InputError as exc:
         rd.err(key, str(exc))
 

@@ -32,6 +32,7 @@ LINKAGES = {
     "two-slider": "two_slider_compressor.json",
     "engine": "single_cylinder_engine.json",
     "scotch-yoke": "scotch_yoke_pump.json",
+    "triad-six-bar": "triad_six_bar.json",
 }
 
 #: worked files of the drawn form (README): name -> file in ``graphmethods/problems/data/drawn``; every

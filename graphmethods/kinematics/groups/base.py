@@ -190,6 +190,9 @@ class State:
     kept : dict group name -> tuple
         What a group's velocity solution leaves for its acceleration solution (below
         :data:`KEEP_BELOW` positions); the acceleration solution takes it out.
+    track : dict group name -> Track
+        A triad's drawn assembly continued over the crank's motion (:mod:`.triad`), which its
+        positions start Newton's method from.
     """
 
     phi: FloatArray
@@ -205,6 +208,7 @@ class State:
     conditioning: dict[str, FloatArray] = field(default_factory=dict)
     kinematic: bool = True
     kept: dict[str, tuple[Any, ...]] = field(default_factory=dict, repr=False)
+    track: dict[str, Any] = field(default_factory=dict, repr=False)
 
     def keep(self, group: str, values: tuple[Any, ...]) -> None:
         """Keep a group's intermediate ``values`` for its next step (below :data:`KEEP_BELOW` positions)."""
@@ -341,6 +345,9 @@ class Group:
     kind = "?"
     links: tuple[str, str] = ("", "")
     branch: int = 1
+    #: Assur's class and order of the group (a dyad: II, 2; a triad: III, 3)
+    cls = 2
+    order = 2
 
     @property
     def pairs(self) -> tuple[Pair, ...]:
