@@ -20,7 +20,7 @@ from graphmethods.kinematics.structure import StructureError
 DATA = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
 BUILTIN = ["slider_crank_press.json", "shaper.json", "four_bar_rocker.json", "slotted_lever.json",
            "scotch_yoke_pump.json", "single_cylinder_engine.json", "six_bar_press.json", "slotting_machine.json",
-           "two_slider_compressor.json", "whitworth_quick_return.json"]
+           "two_slider_compressor.json", "whitworth_quick_return.json", "triad_six_bar.json"]
 
 
 def drawn(joints, links, slides=(), driver=None, **extra):
@@ -43,7 +43,8 @@ PRP = drawn({"O": [0, 0], "A": [0.1, 0.0], "C": [0.1, 0.05]},
             {"0": ["O"], "1": ["O", "A"], "2": ["C"], "3": ["C"]},
             [{"block": 2, "on": 1, "at": "C", "angle_deg": 90}, {"block": 3, "on": 0, "at": "C", "angle_deg": 0}],
             driver={"link": 1, "about": "O", "range_deg": [-60, 60]})
-KINDS = {"RRR": FOUR_BAR, "RRP": SLIDER, "RPR": SLOTTED, "RPP": YOKE, "PRP": PRP}
+TRIAD = json.loads((DATA / "drawn" / "example_six_bar_triad.json").read_text(encoding="utf-8"))
+KINDS = {"RRR": FOUR_BAR, "RRP": SLIDER, "RPR": SLOTTED, "RPP": YOKE, "PRP": PRP, "triad": TRIAD}
 
 
 # ----------------------------------------------------------------------------------------------- both forms
@@ -249,18 +250,15 @@ def test_refused_structures_name_their_reason(name):
     assert "\n" not in str(exc.value)
 
 
-def test_a_triad_is_found_and_named():
-    """A six-bar with a class III group: found as III(2,3,4,5) (solved once the class III solver is in)."""
-    data = json.loads((DATA / "drawn" / "six_bar_triad.json").read_text()) \
-        if (DATA / "drawn" / "six_bar_triad.json").exists() else None
-    if data is None:
-        pytest.skip("no triad example shipped")
-    try:
-        case = drawn_case(data)
-    except StructureError as exc:
-        assert "III(2,3,4,5)" in str(exc)
-        return
+def test_a_triad_is_found_solved_as_drawn_and_its_forces_balance():
+    """The six-bar with a class III group: found as III(2,3,4,5), kept in its drawn assembly, and its force
+    analysis with loads anywhere and gravity agrees with the power balance and the lever."""
+    case = drawn_case(TRIAD)
     assert case.drawn.structure.formula == "I(0,1) → III(2,3,4,5)"
+    assert case.drawn.structure.as_json()["groups"] == [{"class": 3, "links": [2, 3, 4, 5], "type": "triad"}]
+    fa = case_forces(case, phi_deg=[0.0, 100.0, 250.0], gravity=True, epsilon_1=3.0)
+    assert np.allclose(fa.M_balance, fa.M_balance_power, rtol=1e-9, atol=1e-9)
+    assert np.allclose(fa.M_balance, fa.M_balance_lever, rtol=1e-9, atol=1e-9)
 
 
 # ----------------------------------------------------------------------------------------------- command line
