@@ -15,7 +15,6 @@ from graphmethods.dynamics.forces import case_forces
 from graphmethods.errors import InputError
 from graphmethods.kinematics import case_from_dict, read_case
 from graphmethods.kinematics.drawn import drawn_case, link_angles, slide_kinematics
-from graphmethods.kinematics.structure import StructureError
 
 DATA = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
 BUILTIN = ["slider_crank_press.json", "shaper.json", "four_bar_rocker.json", "slotted_lever.json",
