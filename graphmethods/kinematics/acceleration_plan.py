@@ -557,8 +557,9 @@ class _Builder:
             self.steps.append(Step(B[x], lab, "intersection",
                                    f"a_{B[x]} = a_{frm} + a^n_{B[x]}{frm} + a^τ_{B[x]}{frm} = a_{P[x]} + "
                                    f"a^n_{B[x]}{P[x]} + a^τ_{B[x]}{P[x]}",
-                                   (c1, c2, Component(f"a^τ_{B[x]}{frm}", "tangential", n1, lab, t1, False, link,
-                                                      c1.factor),
+                                   (c1, *((c2,) if x == i else ()),       # a^n of B_j, B_k: drawn for K
+                                    Component(f"a^τ_{B[x]}{frm}", "tangential", n1, lab, t1, False, link,
+                                              c1.factor),
                                     Component(f"a^τ_{B[x]}{P[x]}", "tangential", n2, lab, t2, False, ks[x], c2.factor),
                                     Component(f"a_{B[x]}", "absolute", "π", lab, b, False)), (l1, l2), sin_between=s))
             self.member(t, B[x])

@@ -25,10 +25,9 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.scene import Element, Page, Scene
-from graphmethods.scene import notation as get_notation
-from graphmethods.scene.elements import Group as ElementGroup
-from graphmethods.scene.elements import Line, Polyline, Text
+from graphmethods.problems.reference_cases import title_of
+from graphmethods.scene import Element, Page, Scene, notation as get_notation
+from graphmethods.scene.elements import Group as ElementGroup, Line, Polyline, Text
 from graphmethods.scene.primitives import MAIN, Circle, Style
 from graphmethods.sheets.engine import Ink, Panel, Split, extent_of, lettering, shares_for
 from graphmethods.sheets.frame import SheetFrame
@@ -161,7 +160,7 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
         ang = math.degrees(math.atan2(u.imag, u.real))
         d = 9.0 * np.array([math.cos(math.radians(ang)), -math.sin(math.radians(ang))])
         c = np.asarray(to(z[j]))
-        els.append(Guide(tuple(c - d), tuple(c + d), name=f"guide-{j}"))             # type: ignore[arg-type]
+        els.append(Guide(tuple(c - d), tuple(c + d), name=f"guide-{j}"))
     for j, k in part.blocks:
         u = e[k]
         els.append(SliderBlock(to(z[j]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), length_mm=7.0,
@@ -186,8 +185,8 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
             m = sum(z[j] for j in js) / len(js)
             lab, _ = ink.place(to(m), k, size_mm=size_mm, within=panel.box, leader=False)
         else:
-            lab, _ = ink.place(to(z[js[0]]), k, size_mm=size_mm, directions=("s", "n", "e", "w"), within=panel.box,
-                               leader=False)
+            lab, _ = ink.place(to(z[js[0]]), k, size_mm=size_mm, directions=("n", "ne", "nw", "s"), gap_mm=3.0,
+                               within=panel.box, leader=False)
         texts.append(Text((lab.x, lab.y), k, size_mm=size_mm, bold=True, name=f"number-{k}"))
     return els + texts
 
@@ -209,7 +208,7 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
     lk = getattr(case, "linkage", case)
     nt = get_notation(notation)
     sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("structure.title"),
-                       problem=case if hasattr(case, "linkage") else "", title_block=True,
+                       problem=title_of(case) if hasattr(case, "linkage") else "", title_block=True,
                        default_page=Page("A4", "landscape", frame=True))
     let = lettering(sheet.page(()))
     st = lk.solve([_drawn_angle(lk) if phi is None else float(phi)], level=0)
@@ -237,7 +236,8 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
                      bold=True, name=f"{name}-formula"),
                 Text((cx, by0 + let.label_mm * 2.5), nt.word("structure.driver") if part.cls == 1 else
                      nt.word("structure.group", cls=ROMAN.get(part.cls, part.cls), order=part.order) +
-                     f" ({part.kind})", size_mm=let.label_mm, anchor="middle", name=f"{name}-class")]
+                     (f" ({part.kind})" if part.cls == 2 else ""), size_mm=let.label_mm, anchor="middle",
+                     name=f"{name}-class")]
         for h in head:
             ink.add_primitives(h.primitives())
         els.append(ElementGroup(tuple(head + _part_elements(part, z, e, panel, ink, let.label_mm)), name=name))
@@ -246,7 +246,7 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
     for key, text in (("formula", nt.word("structure.formula", formula=s.formula)),
                       ("dof", nt.word("structure.dof", n=s.n_moving, p5=s.p_lower, p4=s.p_higher, W=s.dof)),
                       ("class", nt.word("structure.class", cls=ROMAN.get(s.mechanism_class, s.mechanism_class)))):
-        els.append(Text((x0, y), text, size_mm=let.value_mm, markup=False, name=key))
+        els.append(Text((x0, y), text, size_mm=let.value_mm, name=key))
         y += let.value_mm * 1.6
     els += sheet.captions([common], nt.word("structure.outer"))
     return sheet.scene(els, [common], name="structure-diagram")
