@@ -47,6 +47,14 @@ KINDS = {"RRR": FOUR_BAR, "RRP": SLIDER, "RPR": SLOTTED, "RPP": YOKE, "PRP": PRP
 
 
 # ----------------------------------------------------------------------------------------------- both forms
+def test_every_builtin_linkage_ships_in_the_drawn_form():
+    from graphmethods.problems import builtin
+
+    assert sorted(BUILTIN) == sorted(builtin.LINKAGES.values())
+    for name in builtin.LINKAGES:
+        assert builtin.case_path(f"drawn/{name}").parent.name == "drawn"
+
+
 @pytest.mark.parametrize("name", BUILTIN)
 def test_every_builtin_linkage_in_both_forms_gives_the_same_results(name):
     group, draw = read_case(DATA / name), read_case(DATA / "drawn" / name)

@@ -251,11 +251,12 @@ class _Compiler:
         if "omega_1" in d and "n_rpm" in d:
             rd.err("omega_1", "give the driver's speed once: omega_1 (rad/s, counterclockwise +) or n_rpm with sense")
         if "omega_1" in d:
-            if "sense" in d:
-                rd.err("sense", "omega_1 carries its sense by its sign; leave out sense")
             w = rd.number("omega_1", d["omega_1"])
             if w == 0:
                 rd.err("omega_1", "must not be 0 (rad/s, counterclockwise +)")
+            if "sense" in d and d["sense"] != ("ccw" if w > 0 else "cw"):
+                rd.err("sense", f"omega_1 = {w:g} rad/s carries its sense by its sign (counterclockwise +); "
+                                f"sense {d['sense']!r} contradicts it: leave sense out")
             out["n_rpm"] = abs(w) * 30.0 / math.pi
             out["sense"] = "ccw" if w > 0 else "cw"
         elif "n_rpm" in d:
