@@ -77,6 +77,7 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
            gravity: bool = False, n_rpm: float | None = None, epsilon_1: float = 0.0) -> dict:
     """The force analysis as a JSON-ready dict (see the module docstring)."""
     from graphmethods.dynamics.forces import case_forces
+    from graphmethods.kinematics.drawn import driver_angles_deg
     from graphmethods.units import omega_from_n
 
     omega_1 = case.omega_m if n_rpm is None else omega_from_n(n_rpm)
@@ -115,10 +116,15 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
             if Mf != 0:
                 loads.append({"label": f.label, "link": int(k), "moment": _f(Mf)})
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
+    drawn = getattr(case, "drawn", None)
+    extra: dict[str, Any] = {}
+    if drawn is not None:
+        extra = {"structure": drawn.structure.as_json(), "loads": _loads(fa, i)}
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
-        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0),
+        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0 if lk.swing is None else
+                      driver_angles_deg(case.drawn, mo, None if phi_deg is None else [phi_deg])[i]),
         "n_rpm": case.n_rpm if n_rpm is None else n_rpm, "omega_1": omega_1, "epsilon_1": epsilon_1,
         "sense": "ccw" if lk.sense == 1 else "cw", "gravity": 9.81 if gravity else 0.0,
         "structure": lk.structure().formula,
@@ -126,7 +132,25 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
         "M_balance": _f(Mb), "M_balance_lever": _f(Ml), "M_balance_power": _f(Mp),
         "difference_lever_percent": _f(fa.difference_percent(fa.M_balance_lever)[i]),
         "difference_power_percent": _f(fa.difference_percent(fa.M_balance_power)[i]),
+        **extra,
     }
+
+
+def _loads(fa, i: int) -> list[dict[str, Any]]:
+    """Every external load acting at position i (the working load included): a force at its point, a moment."""
+    from graphmethods.dynamics.forces.problem import EXTERNAL
+
+    out: list[dict[str, Any]] = []
+    for link, forces in fa.applied.items():
+        for f in forces:
+            if not f.label.startswith(EXTERNAL):
+                continue
+            F, M = complex(f.F[i]), float(f.M[i])
+            if F != 0:
+                out.append({"link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
+            if M != 0:
+                out.append({"link": int(link), "moment": _f(M)})
+    return out
 
 
 def _text(res: dict[str, Any], lang: str) -> str:
@@ -139,7 +163,8 @@ def _text(res: dict[str, Any], lang: str) -> str:
     lines = [f"{nt.word('forces.report_title')}: {res['case'] or res['kind']}  ({res['source']})",
              (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°, "
               f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} rad/s ({res['sense']}), "
-              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
+              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², "
+              f"{res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"),
              f"{nt.word('forces.gravity')}: {weights}", "", nt.word("forces.inertia_loads"),
              (f"{nt.word('forces.link'):>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  "
               f"{'M_i [N·m]':>12}  {'h [m]':>10}")]
@@ -165,6 +190,16 @@ def _text(res: dict[str, Any], lang: str) -> str:
               f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
+    if res.get("loads"):
+        lines += ["", nt.word("forces.external"),
+                  f"{nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  {'F_x [N]':>12}  {'F_y [N]':>12}  "
+                  f"{'M [N·m]':>12}"]
+        for ld in res["loads"]:
+            if "force" in ld:
+                (x, y), (fx, fy) = ld["at"], ld["force"]
+                lines.append(f"{ld['link']:>6}  {x:10.5f}  {y:10.5f}  {fx:12.3f}  {fy:12.3f}  {'-':>12}")
+            else:
+                lines.append(f"{ld['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {ld['moment']:12.4f}")
     diff = nt.word("forces.diff")
     lines += ["", nt.word("forces.balancing"),
               f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",

@@ -158,7 +158,7 @@ def _state(case, motion, i: int) -> tuple[dict, dict]:
     fixed = set(case.linkage.ground)
     points = {}
     for name in motion.points:
-        if name in fixed:
+        if name in fixed or name.startswith("_"):       # "_": the drawn form's hidden points
             continue
         z, v, a = motion.z[name][i], motion.v_[name][i], motion.a_[name][i]
         points[name] = {"xy": [_clean(z.real), _clean(z.imag)], "v": [_clean(v.real), _clean(v.imag)],
@@ -206,7 +206,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         units["psi_deg"] = "°"
     fixed = {c.name for c in plan.constructions.values() if c.method == "pole"}
     for name in plan.vectors:
-        if name in fixed:
+        if name in fixed or name.startswith("_"):
             continue
         key = f"v_{name}"
         cols[key] = plan.v_along_guide(name) if name in mech.guides else plan.speed(name)
@@ -236,6 +236,8 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         if k >= 2:
             cols[f"epsilon_{k}"] = np.asarray(motion.epsilon[str(k)], dtype=float)
             units[f"epsilon_{k}"] = "rad/s²"
+    info = getattr(case, "drawn", None)
+    angles, slides = _drawn_columns(info, motion, cols, units, phi_deg)
     rows = []
     for i in range(pos.n):
         row: dict[str, Any] = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
@@ -243,6 +245,12 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
             row["position"] = None
         row["ill_conditioned"] = bool(plan.ill_conditioned[i])
         row["points"], row["links"] = _state(case, motion, i)
+        for k, a in angles.items():
+            row["links"][k]["angle_deg"] = _clean(a[i])
+        if info is not None:
+            row["slides"] = [{"block": int(s["block"]), "on": int(s["on"]), "at": s["at"],
+                              "v_rel": _clean(s["v_rel"][i]), "a_rel": _clean(s["a_rel"][i]),
+                              "a_cor": [_clean(s["a_cor"][i].real), _clean(s["a_cor"][i].imag)]} for s in slides]
         rows.append(row)
     out = {
         "case": case.name, "kind": case.kind, "source": case.source, "n_rpm": case.n_rpm if n_rpm is None else n_rpm,
@@ -254,6 +262,10 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         "groups": [{"type": g.kind, "class": g.cls, "order": g.order, "links": list(g.links)}
                    for g in case.linkage.structure().groups],
     }
+    if info is not None:
+        out["structure"] = info.structure.as_json()
+        out["driver"] = {"link": int(info.structure.driver), "phi_0_deg": math.degrees(info.phi_0),
+                         "range_deg": None if info.swing is None else [math.degrees(x) for x in info.swing]}
     if st is not None:
         out.update(phi_start_deg=math.degrees(st.phi_start), phi_end_deg=math.degrees(st.phi_end),
                    working_angle_deg=math.degrees(st.working_angle), return_angle_deg=math.degrees(st.return_angle),
@@ -277,9 +289,35 @@ def _columns(res: dict, keys: list[str]) -> list[str]:
         for k, w in zip(keys, width):
             v = row[k]
             cells.append(("-" if v is None else str(v)).rjust(w) if k == "position"
-                         else f"{v:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
+                         else f"{v + 0.0 if abs(v) >= 5e-6 else 0.0:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
         lines.append("  ".join(cells) + ("  ill-conditioned" if row["ill_conditioned"] else ""))
     return lines
+
+
+def _drawn_columns(info, motion, cols: dict, units: dict, phi_deg=None) -> tuple[dict, list]:
+    """A drawn file's link angles and slides over the positions; their flat columns added to ``cols``
+    (``angle_k_deg``, ``v_rel_b/o``, ``a_rel_b/o``, ``a_cor_b/o`` its magnitude); the driver's angle as
+    the file gives it (inside a swinging driver's range)."""
+    import numpy as np
+
+    if info is None:
+        return {}, []
+    from graphmethods.kinematics.drawn import driver_angles_deg, link_angles, slide_kinematics
+
+    if info.swing is not None:
+        cols["phi_deg"] = driver_angles_deg(info, motion, phi_deg)
+    angles = link_angles(info, motion)
+    for k, a in angles.items():
+        cols[f"angle_{k}_deg"] = a
+        units[f"angle_{k}_deg"] = "°"
+    slides = slide_kinematics(info, motion)
+    for s in slides:
+        tag = f"{s['block']}/{s['on']}"
+        for key, val, unit in (("v_rel", s["v_rel"], "m/s"), ("a_rel", s["a_rel"], "m/s²"),
+                               ("a_cor", np.abs(s["a_cor"]), "m/s²")):
+            cols[f"{key}_{tag}"] = val
+            units[f"{key}_{tag}"] = unit
+    return angles, slides
 
 
 def _text(res: dict) -> str:
@@ -287,20 +325,22 @@ def _text(res: dict) -> str:
              f"n = {res['n_rpm']:g} rev/min, ω₁ = {res['omega_1']:.6g} rad/s ({res['sense']}), "
              + (f"m = {res['m']} positions from {res.get('start', 'φ = 0')}" if res["m"] is not None
                 else "at the given crank angles"),
-             f"structure {res['structure']}"]
+             f"structure {res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"
+             + (f", W = {res['structure']['dof']}" if isinstance(res["structure"], dict) else "")]
     if "K" in res:
         lines.append(f"working stroke {res['working_angle_deg']:.4f}°, return {res['return_angle_deg']:.4f}°, "
                      f"K = {res['K']:.4f}" + (f", stroke H = {res['stroke_H']:.6g} m" if "stroke_H" in res else "")
                      + (f", swing ψ_max = {res['psi_max_deg']:.4f}°" if "psi_max_deg" in res else ""))
     lines.append("links: " + ", ".join(f"{k} = {v}" for k, v in res["links"].items()))
-    keys = [k for k in res["positions"][0] if k not in ("ill_conditioned", "points", "links")]
+    keys = [k for k in res["positions"][0] if k not in ("ill_conditioned", "points", "links", "slides")]
     second = [k for k in keys if k.startswith(("a_", "epsilon_"))]
     lines.append("velocities")
     lines += _columns(res, [k for k in keys if k not in second])
     lines.append(f"accelerations (ε₁ = {res['epsilon_1']:g} rad/s²; a slider's along its guide, other points' "
                  f"magnitudes; ε counterclockwise +)")
     lines += _columns(res, ["position", "phi_deg", *second])
-    if res["m"] is not None and len(res["positions"]) == res["m"] + 1:
+    if (res["m"] is not None and len(res["positions"]) == res["m"] + 1
+            and (res.get("driver") or {}).get("range_deg") is None):
         lines.append(f"position {res['m']} = position 0")
     return "\n".join(lines)
 

@@ -297,11 +297,15 @@ class Linkage:
         For messages.
     start : float
         Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
+    swing : (float, float), optional
+        A driver that swings (a lever, a rocker) between these absolute angles (rad, first < second):
+        m positions spread over the range, angles outside it refused, no strokes; None: a full turn.
     """
 
     def __init__(self, *, ground: Mapping[str, tuple[float, float]], crank: Crank, groups: Sequence[Group] = (),
                  points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
-                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0) -> None:
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0,
+                 swing: tuple[float, float] | None = None) -> None:
         if isinstance(sense, bool) or sense not in (1, -1):
             raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
@@ -311,6 +315,11 @@ class Linkage:
             raise InputError(f"{name}: {len(groups)} Assur groups; at most {MAX_GROUPS} are accepted (MAX_GROUPS: a "
                              f"machine of the course has two to five)")
         self.name = name
+        self.swing = None if swing is None else (float(swing[0]), float(swing[1]))
+        if self.swing is not None and not (math.isfinite(self.swing[0]) and math.isfinite(self.swing[1])
+                                           and 0.0 < self.swing[1] - self.swing[0]
+                                           <= TWO_PI + 1e-12 * (1.0 + abs(self.swing[0]))):
+            raise InputError(f"{name}: the driver's range must be two finite angles a < b ≤ a + 360°, got {swing!r}")
         self._start = float(_norm(start))
         self.sense = int(sense)
         self.working_stroke = working_stroke
@@ -356,7 +365,7 @@ class Linkage:
         if any(p is None for p in parts):
             return None
         return (tuple(sorted((k, v.real, v.imag) for k, v in self.ground.items())), *parts, self.sense,
-                self._start, self.working_stroke, self.output)
+                self._start, self.working_stroke, self.output, self.swing)
 
     # ------------------------------------------------------------------ structure
     def _check_order(self) -> None:
@@ -649,11 +658,10 @@ class Linkage:
         """(φ from +x, rotation from position 0, position numbers or None) for :meth:`motion`: new
         arrays, read-only."""
         labels = None
+        if self.swing is not None:
+            return self._swing_angles(m, phi, phi_from_start)
         if phi is None and phi_from_start is None:
-            m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = count(m, "the number of positions m", low=3, high=MAX_POSITIONS_COMPUTED)
+            m = _count_positions(m, 3)
             self.check_full_turn()
             labels = np.arange(m + 1)
             tr = (TWO_PI / m) * labels
@@ -672,6 +680,35 @@ class Linkage:
             np.mod(tr, TWO_PI, out=tr)
             np.putmask(tr, tr > TWO_PI - 1e-13, 0.0)
         return _freeze(ang), _freeze(tr), None if labels is None else _freeze(labels)
+
+    def _swing_angles(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        """:meth:`_crank_angles` of a swinging driver: m equal steps from the range's start to its end, or the
+        angles given, each taken into the range (modulo 360°) or refused."""
+        assert self.swing is not None
+        a, b = self.swing
+        labels = None
+        if phi is None and phi_from_start is None:
+            m = _count_positions(m, 1)
+            self.check_full_turn()
+            labels = np.arange(m + 1)
+            ang = a + (b - a) * (labels / m)
+            ang[m] = b
+        else:
+            given = phi_from_start if phi_from_start is not None else phi
+            assert given is not None
+            ang = self._check_phi(given, "phi_from_start" if phi is None else "phi") + (a if phi is None else 0.0)
+            ang = a + np.mod(ang - a, TWO_PI)
+            tol = 1e-12 * max(1.0, abs(a), abs(b))
+            ang = np.where(ang > TWO_PI + a - tol, a, ang)
+            bad = ang > b + tol
+            if bad.any():
+                x = float(np.degrees(ang[bad][0]))
+                raise InputError(f"{self.name}: the driver's angle {x % 360:.6g}° lies outside its range "
+                                 f"[{math.degrees(a):.6g}°, {math.degrees(b):.6g}°] (range_deg)")
+            ang = np.minimum(ang, b)
+            self.check_full_turn()
+        return _freeze(ang), _freeze(ang - a), None if labels is None else _freeze(labels)
 
     def _grid(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
               strokes: Strokes | None) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]:
@@ -779,29 +816,64 @@ class Linkage:
         self._cache["full_turn"] = True
 
     def _find_toggle(self, samples: int) -> str | None:
-        """The AssemblyError's message for the first group that reaches a toggle in a full turn, or None."""
-        phi = np.linspace(0.0, TWO_PI, samples, endpoint=False)
+        """The AssemblyError's message for the first group that reaches a toggle in a full turn (or in a
+        swinging driver's range), or None."""
+        a0, span = (0.0, TWO_PI) if self.swing is None else (self.swing[0], self.swing[1] - self.swing[0])
+        phi = a0 + np.linspace(0.0, span, samples, endpoint=self.swing is not None)
         try:
+            if self.swing is not None:
+                self._check_swing_assembles(phi)
             st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
             if not self.groups:
                 return None
             margins = [g.margin(st) for g in self.groups]
             scales = [float(np.max(np.abs(mg))) or 1.0 for mg in margins]
             centres = np.array([phi[int(np.argmin(mg))] for mg in margins])
-            x, smallest = _refine_minima(self._own_margins, centres, TWO_PI / samples)
+            x, smallest = _refine_minima(self._own_margins, centres, span / samples)
         except AssemblyError as exc:
             return str(exc)
         for k, g in enumerate(self.groups):
-            if smallest[k] <= 1e-12 * scales[k]:
-                return (f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x[k]) % 360:.6g}° "
-                        f"(its links come in line): the crank cannot turn through it on one branch, "
-                        f"the assembly would jump; change the lengths or study the range with phi=")
+            if smallest[k] > 1e-12 * scales[k]:
+                continue
+            if self.swing is not None:
+                return (f"{self.name}: the driver's range reaches a toggle of group {g.name} at "
+                        f"φ = {math.degrees(x[k]):.6g}° (its links come in line): the assembly would jump; "
+                        f"narrow range_deg to stay clear of it")
+            return (f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x[k]) % 360:.6g}° "
+                    f"(its links come in line): the crank cannot turn through it on one branch, "
+                    f"the assembly would jump; change the lengths or study the range with phi=")
         return None
 
     def _own_margins(self, phi: np.ndarray) -> np.ndarray:
-        """Row k: group k's assembly margin at the angles of row k of ``phi`` (all rows in one solve)."""
+        """Row k: group k's assembly margin at the angles of row k of ``phi`` (all rows in one solve; a
+        swinging driver's angles held inside its range)."""
+        if self.swing is not None:
+            phi = np.clip(phi, self.swing[0], self.swing[1])
         st = self.solve(phi.reshape(-1), level=0)
         return np.stack([g.margin(st).reshape(phi.shape)[k] for k, g in enumerate(self.groups)])
+
+    def _check_swing_assembles(self, phi: np.ndarray) -> None:
+        """A swinging driver's range that leaves the assembly: refused at the angle where it does (bisected
+        between the last sample that assembles and the first that does not, from the range's start)."""
+        def ok(x: float) -> bool:
+            try:
+                self.solve(np.array([x]), level=0)
+            except AssemblyError:
+                return False
+            return True
+
+        good = np.array([ok(float(x)) for x in phi[:: max(1, phi.size // 256)]] + [ok(float(phi[-1]))])
+        if good.all():
+            return
+        xs = np.append(phi[:: max(1, phi.size // 256)], phi[-1])
+        j = int(np.argmin(good))
+        lo, hi = (float(xs[j - 1]), float(xs[j])) if j > 0 else (float(xs[0]), float(xs[0]))
+        if j > 0 and good[j - 1]:
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+        raise AssemblyError(f"{self.name}: the driver's range reaches a toggle at φ = {math.degrees(lo):.6g}°: beyond "
+                            f"it the linkage cannot be assembled; narrow range_deg to stay clear of it")
 
     def _out_value(self, st: State) -> tuple[Any, Any, Any]:
         """(coordinate, its derivative, its second derivative) of the output over the positions."""
@@ -826,7 +898,7 @@ class Linkage:
             res: tuple[float, float] | None = self._geometry["extremes"]
         else:
             res = None
-            if self.output is not None:
+            if self.output is not None and self.swing is None:
                 res = self._find_extremes()
             self._geometry["extremes"] = res
         self._cache["extremes"] = res
@@ -981,6 +1053,14 @@ class Linkage:
         st = self._ends()
         th_s, th_e = st.theta[self._output()[1]]
         return float(abs(_wrap(th_e - th_s)))
+
+
+def _count_positions(m: int | None, low: int) -> int:
+    """The number of positions m (12 when None): an integer ≥ ``low``, else InputError."""
+    m = 12 if m is None else m
+    if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < low:
+        raise InputError(f"the number of positions m must be an integer ≥ {low}, got {m!r}")
+    return count(m, "the number of positions m", low=low, high=MAX_POSITIONS_COMPUTED)
 
 
 def _norm(a: npt.ArrayLike) -> Any:

@@ -216,7 +216,8 @@ def _triad(rd: _Reader, key: str, raw: Mapping[str, Json]) -> Triad:
         rd.err(key, str(exc))
 
 
-def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage:
+def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>",
+                  swing: tuple[float, float] | None = None) -> Linkage:
     """The :class:`Linkage` of a ``"kind": "linkage"`` problem (only its kinematic keys are read)."""
     rd = _Reader(source)
     raw_fixed = data.get("fixed")
@@ -263,26 +264,36 @@ def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkag
     name = str(Title.of(title, where=f"{source}: key 'name'")) if title is not None else "linkage"
     try:
         return Linkage(ground=ground, crank=crank, groups=groups, points=points, sense=1 if sense == "ccw" else -1,
-                       output=None if output is None else str(output), working_stroke=ws, name=name or "linkage")
+                       output=None if output is None else str(output), working_stroke=ws, name=name or "linkage",
+                       swing=swing)
     except AssemblyError as exc:
         raise AssemblyError(f"{source}: {exc}") from None
     except InputError as exc:
         raise InputError(f"{source}: {exc}") from None
 
 
-def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> LinkageCase:
-    """Validate a ``"kind": "linkage"`` problem and build its :class:`~graphmethods.kinematics.case.Case`."""
+def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>", drawn: Any = None) -> LinkageCase:
+    """Validate a ``"kind": "linkage"`` problem and build its :class:`~graphmethods.kinematics.case.Case`.
+
+    A file in the drawn form (it has ``joints``) is compiled first
+    (:func:`graphmethods.kinematics.drawn.drawn_case`); ``drawn`` is what that compiler adds to the group
+    form (then the speed, [δ] and the working load may be missing: a command that needs them says so).
+    """
+    if drawn is None and "joints" in data:
+        from graphmethods.kinematics.drawn import drawn_case
+
+        return drawn_case(data, source=source)
     rd = _Reader(source)
     unknown = [k for k in data if k not in TOP_KEYS]
     if unknown:
         rd.err(unknown[0], f"unknown key for kind 'linkage'; the keys are: {', '.join(TOP_KEYS)}")
-    lk = build_linkage(data, source=source)
+    lk = build_linkage(data, source=source, swing=None if drawn is None else drawn.swing)
     mech = LinkageMechanism(lk, kind=lk.name)
     try:
         lk.check_full_turn()
     except AssemblyError as exc:
         raise AssemblyError(f"{source}: {exc}") from None
-    known = set(lk.solve([0.0], level=0).z)
+    known = set(lk.solve([0.0 if drawn is None else drawn.phi_0], level=0).z)
     inertias: list[Inertia] = []
     masses = data.get("masses", {})
     if not isinstance(masses, Mapping):
@@ -301,6 +312,8 @@ def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage
         if rd.text(f"{key}.at", at) not in known:
             rd.err(f"{key}.at", f"no point {at!r}; points: {', '.join(sorted(known))}")
         inertias.append(Inertia(link, at, m, J))
+    if drawn is not None:
+        return _drawn_tail(rd, data, lk, mech, tuple(inertias), drawn)
     if "load" not in data:
         rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or "
                        "{\"moment\": ..., \"on\": 3, ...}")
@@ -318,6 +331,27 @@ def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage
     return LinkageCase(kind="linkage", title=title, about=data.get("about", ""), source=source, mechanism=mech,
                        n_rpm=n_rpm, delta=delta, inertias=tuple(inertias), load=load,
                        values=MappingProxyType(values))
+
+
+def _drawn_tail(rd: _Reader, data: Mapping[str, Json], lk: Linkage, mech: LinkageMechanism,
+                inertias: tuple[Inertia, ...], drawn: Any) -> LinkageCase:
+    """The case of a drawn file: the speed, [δ] and the working load only if the file gives them."""
+    from graphmethods.kinematics.drawn import DrawnCase
+
+    load: Load | DiagramLoad | None = None
+    if "load" in data:
+        ld = rd.obj("load", data["load"], ("force", "moment", "diagram", "on", "from", "to"))
+        load = _diagram_load(rd, ld, lk) if "diagram" in ld else _step_load(rd, ld, lk)
+    n_rpm = rd.number("n_rpm", data["n_rpm"], "positive") if "n_rpm" in data else 0.0
+    delta = rd.number("delta", data["delta"], "delta") if "delta" in data else 0.0
+    title = Title.of(data.get("name"), where=f"{rd.source}: key 'name'")
+    case = DrawnCase(kind="linkage", title=title, about=data.get("about", ""), source=rd.source, mechanism=mech,
+                     n_rpm=n_rpm, delta=delta, inertias=inertias, load=load,   # type: ignore[arg-type]
+                     values=MappingProxyType(dict(data)), drawn=drawn)
+    for key, given in (("n_rpm", "n_rpm" in data), ("delta", "delta" in data), ("load", load is not None)):
+        if not given:
+            object.__delattr__(case, key)     # asked for, it names every key missing (DrawnCase.__getattr__)
+    return case
 
 
 def _diagram_load(rd: _Reader, ld: Mapping[str, Json], lk: Linkage) -> DiagramLoad:

@@ -35,6 +35,14 @@ LINKAGES = {
     "triad-six-bar": "triad_six_bar.json",
 }
 
+#: worked files of the drawn form (README): name -> file in ``graphmethods/problems/data/drawn``; every
+#: linkage above is also there in the drawn form, as ``drawn/NAME`` (``graphmethods kinematics drawn/shaper``)
+DRAWN = {
+    "drawn-four-bar": "example_four_bar.json",
+    "drawn-slotted-lever": "example_slotted_lever.json",
+    "drawn-six-bar-triad": "example_six_bar_triad.json",
+}
+
 #: cycle problems: name -> function of :mod:`graphmethods.problems` that builds it
 CYCLES = {"W1": "w1", "W2": "w2", "W3": "w3", "W4": "w4_drawing", "W4-exact": "w4_exact"}
 
@@ -93,14 +101,18 @@ def case_path(spec) -> pathlib.Path:
     for name, file in LINKAGES.items():
         if key == name:
             return DATA / file
+        if key == f"drawn/{name}" and (DATA / "drawn" / file).is_file():
+            return DATA / "drawn" / file
+    if key in DRAWN:
+        return DATA / "drawn" / DRAWN[key]
     if key in {_key(c) for c in CYCLES}:
         raise InputError(f"{spec} is a cycle problem (works, areas or moments), not a linkage: see "
                          f"`graphmethods examples` and `graphmethods check {spec} ANSWERS.toml`; linkage problems: "
                          f"{', '.join(LINKAGES)}")
     if p.exists():
         raise InputError(f"{spec}: a folder, not a problem file")
-    raise InputError(f"{spec}: no such problem file, and not a built-in problem (linkages: {', '.join(LINKAGES)}; "
-                     f"see `graphmethods problems`)")
+    raise InputError(f"{spec}: no such problem file, and not a built-in problem (linkages: {', '.join(LINKAGES)}, "
+                     f"each also as drawn/NAME; {', '.join(DRAWN)}; see `graphmethods problems`)")
 
 
 #: the name that stands for standard input wherever a problem file is read

@@ -89,7 +89,9 @@ def _cycle_machine(p, J_F_given: float | None = None) -> Machine:
 def _linkage_machine(case, name: str, J_F_given: float | None = None) -> Machine:
     from graphmethods.dynamics.study import Study
     from graphmethods.errors import NoFlywheelNeeded
+    from graphmethods.kinematics.drawn import require_cycle
 
+    require_cycle(case, "the motion")
     study = Study(case, positions=12, estimate=False)
     m = TABLE_POSITIONS
     phi = TWO_PI * np.arange(m + 1) / m
@@ -141,6 +143,10 @@ def machine(spec, *, J_F: float | None = None) -> Machine:
     if low in LINKAGES:
         return _linkage_machine(read_case(DATA / LINKAGES[low]), low, J_F)
     p = pathlib.Path(text)
+    if not p.exists() and low.startswith("drawn"):
+        from graphmethods.problems.builtin import case_path
+
+        p = case_path(low)                       # the drawn form's worked files and drawn/NAME
     if not p.exists():
         names = ", ".join(["W1", "W2", "W3", "W4", "W4-exact"] + list(LINKAGES))
         raise InputError(f"{text!r}: not a built-in problem ({names}) and no such file")
