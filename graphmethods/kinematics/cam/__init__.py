@@ -13,7 +13,7 @@ Conventions (the offset's side, where φ starts, the cam's own frame) are in
 >>> from graphmethods.kinematics.cam import EXAMPLE, cam_from_dict, design
 >>> cam = design(cam_from_dict(EXAMPLE))
 >>> round(cam.base_radius, 6), round(cam.alpha_max_return_deg, 4)
-(0.03, 41.8147)
+(0.00641, 41.0904)
 """
 
 from graphmethods.kinematics.cam.design import CamDesign, CamState, Impact, design

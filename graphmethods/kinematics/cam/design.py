@@ -18,12 +18,13 @@ sections (:func:`~graphmethods.kinematics.cam.extrema.maximize`).
 >>> from graphmethods.kinematics.cam.problem import EXAMPLE, cam_from_dict
 >>> d = design(cam_from_dict(EXAMPLE))
 >>> round(d.pitch_base_radius, 9), round(d.alpha_max_rise_deg, 9)
-(0.040000372, 30.0)
+(0.016410132, 30.0)
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,10 +32,12 @@ from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.cam.extrema import maximize
-from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, to_cam_frame
+from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, psi_0, to_cam_frame
 from graphmethods.kinematics.cam.problem import CamProblem, Phase
 
 Array = NDArray[np.float64]
+#: a function of (s, ds/dφ, d²s/dφ²) over a phase, to be maximised
+Objective = Callable[[Array, Array, Array], Array]
 
 
 @dataclass(frozen=True)
@@ -146,7 +149,7 @@ class CamDesign:
                         to_cam_frame(pitch, rad, p.sense), to_cam_frame(prof, rad, p.sense))
 
 
-def _smooth_pieces(phases: tuple[Phase, ...], kinds: tuple[str, ...]):
+def _smooth_pieces(phases: tuple[Phase, ...], kinds: tuple[str, ...]) -> Iterator[tuple[Phase, float, float, bool]]:
     """(phase, x_lo, x_hi, left) for every smooth piece of the phases of these kinds."""
     for ph in phases:
         if ph.kind in kinds:
@@ -154,13 +157,14 @@ def _smooth_pieces(phases: tuple[Phase, ...], kinds: tuple[str, ...]):
                 yield ph, lo, hi, hi < 1.0
 
 
-def _phase_max(ph: Phase, lo: float, hi: float, left: bool, g) -> tuple[float, float]:
+def _phase_max(ph: Phase, lo: float, hi: float, left: bool, g: Objective) -> tuple[float, float]:
     """max over x in [lo, hi] of g(s, s1, s2) on one piece of a phase: (φ in degrees, value)."""
     x, v = maximize(lambda t: g(*ph.values(t, left=left)[:3]), lo, hi)
     return ph.start_deg + x * ph.angle_deg, v
 
 
-def _max_over(phases, kinds, g) -> tuple[float, float]:
+def _max_over(phases: tuple[Phase, ...], kinds: tuple[str, ...], g: Objective) -> tuple[float, float]:
+    """(φ in degrees, value) of the largest g over the phases of these kinds."""
     best = (0.0, -math.inf)
     for ph, lo, hi, left in _smooth_pieces(phases, kinds):
         cand = _phase_max(ph, lo, hi, left, g)
@@ -180,7 +184,10 @@ def _design_translating(p: CamProblem) -> float:
     s0 = -math.inf
     for kind, limit in (("rise", p.alpha_max_deg), ("return", p.alpha_return_max_deg)):
         t = _tan(limit)
-        s0 = max(s0, _max_over(p.phases, (kind,), lambda s, s1, s2: np.abs(s1 - e) / t - s)[1])
+
+        def need(s: Array, s1: Array, s2: Array, t: float = t) -> Array:
+            return np.abs(s1 - e) / t - s
+        s0 = max(s0, _max_over(p.phases, (kind,), need)[1])
     if not s0 > 0.0:
         raise InputError(f"the pressure angle limits hold at any base radius (s₀ = {s0:g} m); give base_radius")
     return math.hypot(s0, e)
@@ -188,7 +195,7 @@ def _design_translating(p: CamProblem) -> float:
 
 def _alpha_max(p: CamProblem, r0: float, kind: str) -> tuple[float, float]:
     """(φ, largest |α| in rad) over the phases of this kind at the pitch base radius r₀."""
-    def g(s, s1, s2):
+    def g(s: Array, s1: Array, s2: Array) -> Array:
         return np.abs(pitch_frame(p.follower_type, r0, s, s1, s2, offset=p.offset, arm=p.arm, pivot=p.pivot).alpha)
     return _max_over(p.phases, (kind,), g)
 
@@ -202,8 +209,7 @@ def _design_oscillating(p: CamProblem) -> float:
 
     def excess(r0: float) -> float:
         try:
-            from graphmethods.kinematics.cam.geometry import _psi_0
-            if _psi_0(r0, p.arm, p.pivot) + swing >= math.pi:
+            if psi_0(r0, p.arm, p.pivot) + swing >= math.pi:
                 return math.inf
             return max(_alpha_max(p, r0, k)[1] - lim[k] for k in lim if any(ph.kind == k for ph in p.phases))
         except InputError:
@@ -221,7 +227,7 @@ def _design_oscillating(p: CamProblem) -> float:
         if mid in (lo, hi):
             break
         lo, hi = (lo, mid) if excess(mid) <= 0.0 else (mid, hi)
-    return hi
+    return float(hi)
 
 
 def _impacts(p: CamProblem) -> tuple[Impact, ...]:
@@ -236,7 +242,7 @@ def _impacts(p: CamProblem) -> tuple[Impact, ...]:
         end = [float(v[0]) for v in ph.values(np.array([1.0]), left=True)]
         start = [float(v[0]) for v in nxt.values(np.array([0.0]))]
         joins.append((nxt.start_deg, end, start))
-        for lo, hi in ph.pieces()[1:]:
+        for lo, _hi in ph.pieces()[1:]:
             a = [float(v[0]) for v in ph.values(np.array([lo]), left=True)]
             b = [float(v[0]) for v in ph.values(np.array([lo]))]
             joins.append((ph.start_deg + lo * ph.angle_deg, a, b))
@@ -291,7 +297,7 @@ def design(p: CamProblem) -> CamDesign:
         alpha_r = alpha_t = (0.0, 0.0)
         width: float | None = 2.0 * _max_over(p.phases, kinds, lambda s, s1, s2: np.abs(s1))[1]
     else:
-        def kappa(s, s1, s2):
+        def kappa(s: Array, s1: Array, s2: Array) -> Array:
             return pitch_frame(p.follower_type, r0, s, s1, s2, offset=p.offset, arm=p.arm, pivot=p.pivot).kappa
         phi_rho, k_max = _max_over(p.phases, kinds, kappa)
         rho = 1.0 / k_max if k_max > 0.0 else math.inf

@@ -10,8 +10,8 @@ the search closes on the end).
 
 >>> import numpy as np
 >>> x, v = maximize(lambda t: np.sin(3.0 * t), 0.0, 1.0)
->>> round(x, 9), v
-(0.523598776, 1.0)
+>>> round(x, 6), v
+(0.523599, 1.0)
 """
 
 from __future__ import annotations

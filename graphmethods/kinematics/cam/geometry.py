@@ -22,7 +22,7 @@ the envelope of its lines, touching at ``(ds/dφ, r_b + s)``, with ``ρ = r_b + 
 >>> import numpy as np
 >>> g = pitch_frame("translating", 0.04, np.array([0.0]), np.array([0.02]), np.array([0.0]), offset=0.0)
 >>> [round(float(v), 12) for v in (g.alpha[0], g.kappa[0])]
-[0.463647609001, 25.0]
+[0.463647609001, 26.832815729997]
 """
 
 from __future__ import annotations
@@ -67,7 +67,12 @@ class PitchFrame:
         return self.B - roller_radius * n
 
 
-def _psi_0(r0: float, arm: float, pivot: float) -> float:
+def psi_0(r0: float, arm: float, pivot: float) -> float:
+    """ψ₀, the angle OAB (rad) of an oscillating follower on the base circle r₀ (arm l, pivot distance a).
+
+    >>> round(math.degrees(psi_0(0.05, 0.1, 0.12)), 6)
+    24.624318
+    """
     c = (pivot ** 2 + arm ** 2 - r0 ** 2) / (2.0 * pivot * arm)
     if not -1.0 < c < 1.0:
         raise InputError(f"the pitch base radius {r0:g} m cannot be reached by an arm of {arm:g} m pivoted {pivot:g} m "
@@ -112,7 +117,7 @@ def pitch_frame(follower_type: str, r0: float, s: Array, s1: Array, s2: Array, *
         B, B1, B2 = np.stack((z + offset, s0 + s), 1), np.stack((z, s1), 1), np.stack((z, s2), 1)
         u = np.stack((z, z + 1.0), 1)
     else:
-        th = _psi_0(r0, arm, pivot) + s
+        th = psi_0(r0, arm, pivot) + s
         sn, cs = np.sin(th), np.cos(th)
         B = np.stack((pivot - arm * cs, arm * sn), 1)
         B1 = arm * s1[:, None] * np.stack((sn, cs), 1)

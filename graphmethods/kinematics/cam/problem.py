@@ -30,7 +30,8 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -145,7 +146,7 @@ class CamProblem:
     alpha_max_deg: float | None
     alpha_return_max_deg: float
     rho_min_allowed: float = 0.0
-    title: Title = Title()
+    title: Title = field(default_factory=Title)
     kind: str = "cam"
 
     @property
@@ -165,7 +166,7 @@ class CamProblem:
 
         >>> p = cam_from_dict(EXAMPLE)
         >>> [round(float(v[0]), 12) for v in p.motion([60.0])]
-        [0.01, 0.015278874536, 0.0, -0.5200...]
+        [0.01, 0.019098593171, 0.0, -0.08594366927]
         """
         phi = np.mod(np.asarray(phi_deg, dtype=float), 360.0)
         starts = np.array([p.start_deg for p in self.phases])
@@ -190,7 +191,7 @@ EXAMPLE = {"kind": "cam", "follower": {"type": "translating", "contact": "roller
            "pressure_angle_max_deg": 30, "pressure_angle_return_max_deg": 70}
 
 
-def _choice(d: Mapping, key: str, options: tuple[str, ...], where: str, default: str | None = None) -> str:
+def _choice(d: Mapping[str, Any], key: str, options: tuple[str, ...], where: str, default: str | None = None) -> str:
     value = d.get(key, default)
     if value is None:
         raise InputError(f"{where}: missing key {key!r}; give one of {', '.join(options)}")
@@ -199,7 +200,7 @@ def _choice(d: Mapping, key: str, options: tuple[str, ...], where: str, default:
     return value.strip().lower()
 
 
-def _mapping(d: Mapping, key: str, where: str) -> Mapping:
+def _mapping(d: Mapping[str, Any], key: str, where: str) -> Mapping[str, Any]:
     value = d.get(key)
     if not isinstance(value, Mapping):
         raise InputError(f"{where}: key {key!r} must be an object, e.g. "
@@ -240,7 +241,7 @@ def _phases(motion: object, oscillating: bool, where: str) -> tuple[Phase, ...]:
     return tuple(Phase(k, s, a, h, law, lv - low) for k, s, a, h, law, lv in raw)
 
 
-def cam_from_dict(data: Mapping, *, source: str = "cam problem") -> CamProblem:
+def cam_from_dict(data: Mapping[str, Any], *, source: str = "cam problem") -> CamProblem:
     """A :class:`CamProblem` from the decoded JSON of a ``"kind": "cam"`` file, every key checked.
 
     Raises
