@@ -71,7 +71,7 @@ def psi_0(r0: float, arm: float, pivot: float) -> float:
     """ψ₀, the angle OAB (rad) of an oscillating follower on the base circle r₀ (arm l, pivot distance a).
 
     >>> round(math.degrees(psi_0(0.05, 0.1, 0.12)), 6)
-    24.624318
+    24.146848
     """
     c = (pivot ** 2 + arm ** 2 - r0 ** 2) / (2.0 * pivot * arm)
     if not -1.0 < c < 1.0:
