@@ -19,17 +19,19 @@ the designed O = (e, −s₀) sits on its edge and r₀ = |O| (:mod:`graphmethod
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from graphmethods.dynamics.graphical_calculus import ChordIntegral, integrate_by_chords
+from graphmethods.errors import InputError
 from graphmethods.kinematics.cam import CamDesign
 from graphmethods.scene import Axis, Line, Point, Polyline, Region, Scale, Table, Text, pick_scale
 from graphmethods.scene.elements import Element, make_label
-from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import DASHED, MAIN, THIN
+from graphmethods.scene.notation import Notation, get as get_notation
+from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.scene.scale import pick_angle_scale
 from graphmethods.sheets.calculus import CHORD, RAY
 from graphmethods.sheets.layout import Box, Occupancy
@@ -39,6 +41,13 @@ from graphmethods.sheets.styles import LEVEL
 TEXT_MM, HEAD_MM = 3.5, 5.0
 #: the room left of each diagram's ordinate line for its pole, mm
 POLE_ROOM_MM = 45.0
+#: the value axis stands this far right of φ = 2π (clear of the φ axis's arrow and name), mm
+VALUE_AXIS_MM = 14.0
+
+
+def segment(points: Sequence[tuple[float, float]], style: Style, *, name: str) -> Line:
+    """A :class:`Line` between the first two of ``points`` (mm)."""
+    return Line(points[0], points[1], style, name=name)
 
 
 def heading(box: Box, text: str, occ: Occupancy, name: str) -> tuple[list[Element], float]:
@@ -118,7 +127,7 @@ class Band:
     lo: float
     hi: float
 
-    def pt(self, phi: np.ndarray, y: np.ndarray) -> list[tuple[float, float]]:
+    def pt(self, phi: Any, y: Any) -> list[tuple[float, float]]:
         X = self.x0 + np.asarray(phi) / self.mu_phi.per_mm
         Y = self.y0 - np.asarray(y) / self.mu_y.per_mm
         return list(zip(X.tolist(), Y.tolist()))
@@ -135,7 +144,7 @@ def _phi_axis(band: Band, y: float, nt: Notation, name: str) -> Axis:
 def _value_axis(band: Band, nt: Notation, label: str, name: str) -> Axis:
     from graphmethods.scene import nice_ticks
 
-    right = band.x0 + band.mu_phi.to_mm(2 * math.pi) + 8.0
+    right = band.x0 + band.mu_phi.to_mm(2 * math.pi) + VALUE_AXIS_MM
     ticks = nice_ticks(band.lo, band.hi, band.mu_y, min_gap_mm=9.0)
     labels = tuple(nt.number(t, sig=3) for t in ticks)
     return Axis((right, band.y0), band.mu_y, "y", band.lo, band.hi, ticks=ticks, tick_labels=labels,
@@ -145,7 +154,7 @@ def _value_axis(band: Band, nt: Notation, label: str, name: str) -> Axis:
 def _frame_lines(band: Band, name: str) -> list[Element]:
     """The ordinate line at φ = 0 (the rays' target) and the zero line across the diagram."""
     y_top, y_bot = band.y0 - band.mu_y.to_mm(band.hi), band.y0 - band.mu_y.to_mm(band.lo)
-    right = band.x0 + band.mu_phi.to_mm(2 * math.pi) + 8.0
+    right = band.x0 + band.mu_phi.to_mm(2 * math.pi) + VALUE_AXIS_MM
     return [Line((band.x0, y_top), (band.x0, y_bot), THIN, name=f"{name}-ordinate"),
             Line((band.x0, band.y0), (right, band.y0), THIN, name=f"{name}-zero")]
 
@@ -157,7 +166,7 @@ def band_elements(band: Band, occ: Occupancy, nt: Notation, *, label: str, name:
     the pole P_k with its rays and its distance H_k written beside it."""
     els: list[Element] = [*_frame_lines(band, name)]
     y_bot = band.y0 - band.mu_y.to_mm(band.lo)
-    els.append(_phi_axis(band, y_bot + 4.0, nt, name))
+    els.append(_phi_axis(band, y_bot + 6.5, nt, name))
     els.append(_value_axis(band, nt, label, name))
     if curve is not None:
         els.append(Polyline(tuple(curve), MAIN, name=f"{name}-curve"))
@@ -178,12 +187,65 @@ def band_elements(band: Band, occ: Occupancy, nt: Notation, *, label: str, name:
     occ.register(*els)
     if integral is not None:
         P = (band.x0 - integral.H_mm, band.y0)
-        for text, nm in ((nt.word("cam.pole", k=k), "pole-name"),
-                         (nt.word("cam.H", k=k, value=nt.number(integral.H_mm, sig=3)), "H")):
-            lab = occ.place_label(P, text, ("n", "s", "nw", "sw", "ne", "se"), size_mm=TEXT_MM, gap_mm=2.0,
-                                  within=band.box)
-            els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-{nm}"))
+        text = nt.word("cam.pole", k=k, value=nt.number(integral.H_mm, sig=3))
+        lab, leader = occ.place_label_with_leader(P, text, ("w", "nw", "sw", "n", "s"), size_mm=TEXT_MM, gap_mm=1.5,
+                                                  within=band.box)
+        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-pole-name"))
+        if leader is not None:
+            els.append(Line(leader[0], leader[1], THIN, name=f"{name}-pole-leader"))
     return els
+
+
+#: each motion diagram's room besides its plot: heading, a pad, the φ axis with its numbers (mm)
+BAND_EXTRA_MM, BAND_GAP_MM = 27.0, 6.0
+
+
+def _span(v: np.ndarray) -> tuple[float, float]:
+    return min(float(v.min()), 0.0), max(float(v.max()), 0.0)
+
+
+def _motion_scales(cam: CamDesign, box: Box, n_div: int) -> tuple[Scale, Scale, Construction]:
+    """μ_φ, μ_a and the construction: the acceleration analogue takes at most a third of the column's plot
+    height at its convenient scale, the two integrals share what it leaves (their poles at round distances)."""
+    p = cam.problem
+    if any(ph.law == "uniform" for ph in p.phases):
+        raise InputError(get_notation("en").word("cam.no_uniform"))
+    x0, y0, x1, y1 = box
+    mu_phi = pick_angle_scale(2 * math.pi, x1 - x0 - POLE_ROOM_MM - 44.0, symbol="μ_φ")
+    s, s1, s2, _ = p.motion(np.linspace(0.0, 360.0, 1441))
+    plot = y1 - y0 - 3 * BAND_EXTRA_MM - 2 * BAND_GAP_MM
+    unit = "rad" if p.oscillating else "m"
+    lo, hi = _span(s2)
+    mu_a = pick_scale(hi - lo, plot / 3.0, symbol="μ_a", unit=unit)
+    for _ in range(8):
+        rest = plot - mu_a.to_mm(hi - lo)
+        v_lo, v_hi = _span(s1)
+        try:
+            con = construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
+                               fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=0.5 * rest)
+        except ValueError:
+            mu_a = pick_scale(mu_a.per_mm * 1.01 * plot, plot, symbol="μ_a", unit=unit)
+            continue
+        rest_s = rest - con.first.mu ** -1 * (v_hi - v_lo)
+        if con.second.H_mm * 1.5 <= POLE_ROOM_MM - 8.0 and rest_s > 0:     # a larger s diagram where it fits
+            con = construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
+                               fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=rest_s) \
+                if _fits(cam, n_div, mu_phi, mu_a, rest, rest_s) else con
+        return mu_phi, mu_a, con
+    raise InputError("no pole distance within the sheet's room draws these motion diagrams; the data are too "
+                     "uneven for the A1 cam sheet")
+
+
+def _fits(cam: CamDesign, n_div: int, mu_phi: Scale, mu_a: Scale, rest: float, rest_s: float) -> bool:
+    """Whether the displacement diagram drawn to fill ``rest_s`` keeps its pole within the room."""
+    s1 = cam.problem.motion(np.linspace(0.0, 360.0, 1441))[1]
+    v_lo, v_hi = _span(s1)
+    try:
+        construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
+                     fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=rest_s)
+    except ValueError:
+        return False
+    return True
 
 
 def motion_column(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_div: int
@@ -192,46 +254,35 @@ def motion_column(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     its pole, s as chords; their scales and the construction's numbers."""
     p = cam.problem
     x0, y0, x1, y1 = box
-    gap = 6.0
-    h = (y1 - y0 - 2 * gap) / 3.0
-    width = x1 - x0 - POLE_ROOM_MM - 8.0 - 30.0
-    mu_phi = pick_angle_scale(2 * math.pi, width, symbol="μ_φ")
+    mu_phi, mu_a, con = _motion_scales(cam, box, n_div)
     phi = np.linspace(0.0, 2 * math.pi, 1441)
     s, s1, s2, _ = p.motion(np.degrees(phi))
-    plot_h = h - HEAD_MM - 22.0
     unit = "rad" if p.oscillating else "m"
-    mu_a = pick_scale(float(s2.max() - min(s2.min(), 0.0)), plot_h, symbol="μ_a", unit=unit)
-    for _ in range(8):
-        try:
-            con = construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
-                               fit_v=plot_h * max(s1.max(), -s1.min()) / max(s1.max() - min(s1.min(), 0), 1e-300),
-                               fit_s=plot_h)
-            break
-        except ValueError:
-            mu_a = pick_scale(mu_a.per_mm * 1.01 * plot_h, plot_h, symbol="μ_a", unit=unit)
-    else:
-        raise ValueError("no pole distance fits the cam sheet's diagrams")
-    sym = ("cam.dpsi", "cam.d2psi", "cam.psi") if p.oscillating else ("cam.ds", "cam.d2s", "cam.s")
+    sym = ("cam.dpsi", "cam.d2psi", "cam.psi") if p.oscillating else ("cam.ds", "cam.d2s", "calculus.s")
     scales = [mu_phi, mu_a, Scale("μ_v", unit, con.first.mu), Scale("μ_s", unit, con.second.mu)]
     data = [(s2, scales[1], None, con.first, nt.word("cam.d2s_title"), nt.sym(sym[1])),
             (s1, scales[2], con.first, con.second, nt.word("cam.ds_title"), nt.sym(sym[0])),
             (s, scales[3], con.second, None, nt.word("cam.psi_title" if p.oscillating else "cam.s_title"),
              nt.sym(sym[2]))]
     els: list[Element] = []
+    top0 = y0
+    spare = (y1 - y0 - 3 * BAND_EXTRA_MM - 2 * BAND_GAP_MM
+             - sum(d[1].to_mm(_span(d[0])[1] - _span(d[0])[0]) for d in data)) / 3.0
     for i, (vals, mu, chords_of, integ, title, label) in enumerate(data):
-        head, top = heading((x0, y0 + i * (h + gap), x1, y1), title, occ, f"m{i}")
+        head, top = heading((x0, top0, x1, y1), title, occ, f"m{i}")
         els += head
-        lo, hi = min(float(vals.min()), 0.0), max(float(vals.max()), 0.0)
+        lo, hi = _span(vals)
         if chords_of is not None:
-            cv = chords_of.values + float(vals[0])
-            lo, hi = min(lo, float(cv.min())), max(hi, float(cv.max()))
-        zero_y = top + 6.0 + mu.to_mm(hi)
-        band = Band((x0, y0 + i * (h + gap), x1, y0 + i * (h + gap) + h), x0 + POLE_ROOM_MM, zero_y, mu_phi, mu,
-                    lo, hi)
+            c_lo, c_hi = _span(chords_of.values + float(vals[0]))
+            lo, hi = min(lo, c_lo), max(hi, c_hi)
+        zero_y = top + 6.0 + max(spare, 0.0) / 2.0 + mu.to_mm(hi)
+        bottom = top0 + BAND_EXTRA_MM + mu.to_mm(hi - lo) + max(spare, 0.0)
+        band = Band((x0, top0, x1, bottom), x0 + POLE_ROOM_MM, zero_y, mu_phi, mu, lo, hi)
         curve = band.pt(phi, vals) if chords_of is None else None
         chords = band.pt(chords_of.x, chords_of.values + float(vals[0])) if chords_of is not None else None
         els += band_elements(band, occ, nt, label=f"{label}, {nt.unit(unit)}", name=f"m{i}",
                              curve=curve, chords=chords, integral=integ, k=i + 1)
+        top0 = bottom + BAND_GAP_MM
     return els, scales, con
 
 
@@ -271,7 +322,7 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
     _, s, s1, t = _zone_edge(cam, np.zeros(1))
     xa, xb = min(float(s1.min()), p.offset, 0.0), max(float(s1.max()), p.offset, 0.0)
     x0, _, x1, y1 = box
-    left, right, bottom = x0 + 2.0, x1 - 30.0, y1 - 2.0
+    left, right, bottom = x0 + 16.0, x1 - 24.0, y1 - 10.0
     y_need = float(s.max()) + 1.3 * s0
     mu = pick_scale(max((xb - xa) * 1.1 / (right - left), y_need / (bottom - top - 16.0)), 1.0, symbol="μ_l",
                     unit="m")
@@ -291,32 +342,30 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
                            Polyline(tuple(P(s1, s)), MAIN, name="c-curve")]
     body += _tangents(cam, s, s1, t, P, (x_min, y_lo, x_max, y_hi))
     O = P(p.offset, -s0)[0]
-    gap = 22.0
-    body += [Axis(P(0.0, 0.0)[0], mu, "x", x_min, x_max, ticks=_ticks(x_min, x_max, mu, gap), label=nt.sym("cam.ds"),
-                  tick_labels=tuple(nt.number(v, sig=3) for v in _ticks(x_min, x_max, mu, gap)),
-                  size_mm=TEXT_MM, name="c-axis-ds"),
-             Axis(P(0.0, 0.0)[0], mu, "y", y_lo, y_hi, ticks=_ticks(y_lo, y_hi, mu, gap), label=nt.sym("cam.s"),
-                  tick_labels=tuple(nt.number(v, sig=3) for v in _ticks(y_lo, y_hi, mu, gap)),
-                  size_mm=TEXT_MM, name="c-axis-s"),
+    gx, gy = _ticks(x_min, x_max, mu, 22.0), _ticks(y_lo, y_hi, mu, 22.0)
+    body += [Axis(P(0.0, y_lo)[0], mu, "x", x_min, x_max, ticks=gx, tick_labels=tuple(nt.number(v, sig=3) for v in gx),
+                  label=nt.sym("cam.ds"), size_mm=TEXT_MM, name="c-axis-ds"),
+             Axis(P(x_min, 0.0)[0], mu, "y", y_lo, y_hi, ticks=gy, tick_labels=tuple(nt.number(v, sig=3) for v in gy),
+                  label=nt.sym("calculus.s"), size_mm=TEXT_MM, name="c-axis-s"),
+             segment(P(np.array([0.0, 0.0]), np.array([y_lo, y_hi])), THIN, name="c-follower-line"),
+             segment(P(np.array([x_min, x_max]), np.array([0.0, 0.0])), THIN, name="c-zero"),
              Line(O, P(0.0, 0.0)[0], LEVEL, name="c-r0"), Point(O, radius_mm=1.0, name="c-O")]
     occ.register(*body)
     els += body
     r0 = f"O: {nt.sym('cam.r_0')} = {nt.number(cam.pitch_base_radius, sig=4)} {nt.unit('m')}"
-    for text, at, nm in ((r0, O, "c-O-name"), (nt.word("cam.zone"), P(x_min + 0.15 * (x_max - x_min), y_lo)[0],
-                                               "c-zone-name")):
-        lab, leader = occ.place_label_with_leader(at, text, ("e", "w", "ne", "nw", "se", "sw", "n"), size_mm=TEXT_MM,
-                                                  within=box)
-        els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=nm))
-        if leader is not None:
-            els.append(Line(leader[0], leader[1], THIN, name=f"{nm}-leader"))
+    lab, leader = occ.place_label_with_leader(O, r0, ("e", "w", "ne", "nw", "se", "sw", "n"), size_mm=TEXT_MM,
+                                              within=box)
+    els.append(Text((lab.x, lab.y), r0, size_mm=TEXT_MM, anchor=lab.anchor, name="c-O-name"))
+    if leader is not None:
+        els.append(Line(leader[0], leader[1], THIN, name="c-O-leader"))
     return els, mu
 
 
 def _ticks(lo: float, hi: float, mu: Scale, gap_mm: float) -> tuple[float, ...]:
-    """Ticks at a convenient step at least ``gap_mm`` apart, zero left out (the axes cross there)."""
+    """Ticks at a convenient step at least ``gap_mm`` apart."""
     from graphmethods.scene import nice_ticks
 
-    return tuple(v for v in nice_ticks(lo, hi, mu, min_gap_mm=gap_mm) if v != 0.0)
+    return nice_ticks(lo, hi, mu, min_gap_mm=gap_mm)
 
 
 def _tangents(cam: CamDesign, s: np.ndarray, s1: np.ndarray, t: np.ndarray, P: Any,
@@ -353,13 +402,13 @@ def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, lim
     mu_y = pick_scale(hi - lo, y1 - top - 20.0, symbol=symbol, unit=unit)
     mu_phi = pick_angle_scale(2 * math.pi, x1 - x0 - 40.0, symbol="μ′_φ")
     band = Band(box, x0 + 4.0, top + 6.0 + mu_y.to_mm(hi), mu_phi, mu_y, lo, hi)
-    body: list[Element] = [Line((band.x0, band.y0), (band.x0 + mu_phi.to_mm(2 * math.pi) + 8.0, band.y0), THIN,
-                                name=f"{name}-zero"),
+    right = band.x0 + mu_phi.to_mm(2 * math.pi) + VALUE_AXIS_MM
+    body: list[Element] = [Line((band.x0, band.y0), (right, band.y0), THIN, name=f"{name}-zero"),
                            Polyline(tuple(band.pt(phi, values)), MAIN, name=f"{name}-curve")]
     for k, v in enumerate(limits):
-        body.append(Line(*band.pt(np.array([0.0, 2 * math.pi]), np.array([v, v])), LEVEL, name=f"{name}-lim-{k}"))
+        body.append(segment(band.pt(np.array([0.0, 2 * math.pi]), np.array([v, v])), LEVEL, name=f"{name}-lim-{k}"))
     y_bot = band.y0 - mu_y.to_mm(lo)
-    body += [_phi_axis(band, y_bot + 4.0, nt, name), _value_axis(band, nt, label, name)]
+    body += [_phi_axis(band, y_bot + 6.5, nt, name), _value_axis(band, nt, label, name)]
     occ.register(*body)
     return els + body, mu_y
 
@@ -397,6 +446,10 @@ def fitted_table(at: tuple[float, float], rows: tuple[tuple[str, ...], ...], box
         if at[0] + table.width_mm <= x1 and at[1] + table.height_mm <= y1:
             break
     assert table is not None
+    widths = table.column_widths()
+    extra = (x1 - at[0] - table.width_mm) / len(widths)           # the columns share the box's width
+    if extra > 0:
+        table = replace(table, col_widths_mm=tuple(w + extra for w in widths))
     return table
 
 
@@ -406,13 +459,16 @@ def positions_table(cam: CamDesign, box: Box, nt: Notation, n_div: int) -> list[
     phi = np.degrees(nodes(cam, n_div)[:-1])
     st = cam.state(phi)
     osc = p.oscillating
-    s_head = f"{nt.sym('cam.psi')}, °" if osc else f"{nt.sym('cam.s')}, {nt.unit('m')}"
+    s_head = f"{nt.sym('cam.psi')}, °" if osc else f"{nt.sym('calculus.s')}, {nt.unit('m')}"
     v_head = nt.sym("cam.dpsi") if osc else f"{nt.sym('cam.ds')}, {nt.unit('m')}"
-    head = ("k", "φ, °", s_head, v_head, f"{nt.sym('cam.alpha')}, °")
-    rows = [(str(k), nt.number(f, sig=4), nt.number(math.degrees(sv) if osc else sv, sig=4), nt.number(dv, sig=4),
-             nt.number(a, sig=4)) for k, (f, sv, dv, a) in enumerate(zip(phi, st.s, st.ds, st.alpha_deg))]
+    flat = p.contact == "flat"
+    head = ("k", "φ, °", s_head, v_head) + (() if flat else (f"{nt.sym('cam.alpha')}, °",))
+    rows = [(str(k), nt.number(f, sig=4), nt.number(math.degrees(sv) if osc else sv, sig=4), nt.number(dv, sig=4))
+            + (() if flat else (nt.number(a, sig=4),)) for k, (f, sv, dv, a) in
+            enumerate(zip(phi, st.s, st.ds, st.alpha_deg))]
     head_els, top = heading(box, nt.word("cam.positions"), Occupancy(), "positions")
-    return [*head_els, fitted_table((box[0], top + 2.0), (head, *rows), box, align="rrrrr", name="positions-table")]
+    return [*head_els, fitted_table((box[0], top + 2.0), (head, *rows), box, align="r" * len(head),
+                                        name="positions-table")]
 
 
 __all__ = ["Construction", "alpha_graph", "combined_diagram", "construction", "motion_column", "nodes", "phi_graph",

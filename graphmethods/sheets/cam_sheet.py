@@ -54,7 +54,9 @@ from graphmethods.sheets.cam_diagrams import (
     nodes,
     positions_table,
     rho_graph,
+    segment,
 )
+from graphmethods.sheets.frame import FastOccupancy
 from graphmethods.sheets.layout import Box, Occupancy
 from graphmethods.sheets.styles import PROJECTION
 
@@ -131,7 +133,7 @@ class Inversion:
     profile: np.ndarray                # dense profile
     pitch_k: np.ndarray                # pitch points at the division points
     followers: list[np.ndarray]        # each division point's follower axis (translating) or arm (oscillating)
-    pivot_arc: np.ndarray | None       # the arc of the pivot's positions (oscillating)
+    pivot_arc: np.ndarray | None       # the circle of the pivot's positions (oscillating)
     stem: np.ndarray                   # the follower in position 0: its stem or arm
 
     def points(self) -> np.ndarray:
@@ -153,7 +155,7 @@ def inversion(cam: CamDesign, n_div: int) -> Inversion:
     if p.oscillating:
         pivots = _rot(np.column_stack((np.full(phi_k.shape, p.pivot), np.zeros(phi_k.shape))), phi_k, p.sense)
         followers = [np.array([a, b]) for a, b in zip(pivots, st.pitch)]
-        ang = np.linspace(float(phi_k.min()) - 0.1, float(phi_k.max()) + 0.1, 97)
+        ang = np.linspace(0.0, 2 * math.pi, 181)          # the whole circle the pivot runs on in the inversion
         arc = _rot(np.column_stack((np.full(ang.shape, p.pivot), np.zeros(ang.shape))), ang, p.sense)
         stem = np.array([pivots[0], st.pitch[0]])
     else:
@@ -190,8 +192,8 @@ def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     if not p.oscillating and p.offset and p.contact != "flat":
         els.append(Circles(((cx, cy, mu.to_mm(abs(p.offset))),), THIN, name="offset-circle"))
     if geo.pivot_arc is not None:
-        els.append(Polyline(P(geo.pivot_arc), CENTRES, name="pivot-arc"))
-    els += [Line(*P(line), PROJECTION, name=f"follower-{i}") for i, line in enumerate(geo.followers)]
+        els.append(Polyline(P(geo.pivot_arc), CENTRES, closed=True, name="pivot-circle"))
+    els += [segment(P(line), PROJECTION, name=f"follower-{i}") for i, line in enumerate(geo.followers)]
     if p.contact == "roller":
         els.append(Polyline(P(geo.pitch), CENTRES, closed=True, name="pitch-curve"))
         els.append(Circles(tuple((x, y, mu.to_mm(p.roller_radius)) for x, y in P(geo.pitch_k)), THIN,
@@ -223,14 +225,14 @@ def _flat_lines(cam: CamDesign, phi_k: np.ndarray, P: Any) -> list[Element]:
     out: list[Element] = []
     for i, (f, sv, _v) in enumerate(zip(phi_k, s, s1)):
         seg = np.array([[-half, cam.base_radius + sv], [half, cam.base_radius + sv]])
-        out.append(Line(*P(_rot(seg, np.array([f, f]), p.sense)), THIN, name=f"face-{i}"))
+        out.append(segment(P(_rot(seg, np.array([f, f]), p.sense)), THIN, name=f"face-{i}"))
     return out
 
 
 def _follower_at_zero(cam: CamDesign, geo: Inversion, P: Any, mu: Scale) -> list[Element]:
     """The follower drawn in position 0: roller (or edge, or face) and its stem or arm, heavy."""
     p = cam.problem
-    out: list[Element] = [Line(*P(geo.stem), MAIN, name="stem-0")]
+    out: list[Element] = [segment(P(geo.stem), MAIN, name="stem-0")]
     if p.oscillating:
         out.append(Point(P(geo.stem[0])[0], radius_mm=1.0, name="pivot-0"))
     if p.contact == "roller":
@@ -256,8 +258,8 @@ def _alpha_mark(cam: CamDesign, P: Any, occ: Occupancy, nt: Notation, box: Box) 
                                                                   math.cos(math.atan2(B[1], p.pivot - B[0]))])
     L = 0.45 * cam.pitch_base_radius
     rad = np.array([math.radians(f)] * 2)
-    out: list[Element] = [Line(*P(_rot(np.array([B, B + L * n]), rad, p.sense)), THIN, name="alpha-normal"),
-                          Line(*P(_rot(np.array([B, B + L * u]), rad, p.sense)), DASHED, name="alpha-velocity")]
+    out: list[Element] = [segment(P(_rot(np.array([B, B + L * n]), rad, p.sense)), THIN, name="alpha-normal"),
+                          segment(P(_rot(np.array([B, B + L * u]), rad, p.sense)), DASHED, name="alpha-velocity")]
     occ.register(*out)
     text = nt.word("cam.alpha_max", sym=nt.sym("cam.alpha"), value=nt.number(a, sig=4))
     at = P(_rot(np.array([B + 0.6 * L * (n + u) / 2]), rad[:1], p.sense))[0]
@@ -278,8 +280,10 @@ def _numbers(points: tuple[tuple[float, float], ...], centre: tuple[float, float
         ew = "e" if dx > 0 else "w"
         ns = "s" if dy > 0 else "n"
         dirs = (ns + ew, ew, ns, "n", "s", "e", "w", "ne", "nw", "se", "sw")
-        lab = occ.place_label((x, y), str(i), dirs, size_mm=TEXT_MM, gap_mm=1.5, within=box)
+        lab, leader = occ.place_label_with_leader((x, y), str(i), dirs, size_mm=TEXT_MM, gap_mm=1.5, within=box)
         out.append(Text((lab.x, lab.y), str(i), size_mm=TEXT_MM, anchor=lab.anchor, name=f"number-{i}"))
+        if leader is not None:
+            out.append(Line(leader[0], leader[1], THIN, name=f"number-{i}-leader"))
     return out
 
 
@@ -298,7 +302,7 @@ def results_rows(cam: CamDesign, nt: Notation, con: Any) -> list[tuple[str, str]
     h = nt.number(math.degrees(p.stroke), sig=4) + "°" if p.oscillating else _m(nt, p.stroke)
     rows = [(w("cam.row_follower"), f"{w('cam.' + p.follower_type)}, {w('cam.' + p.contact)}"),
             (w("cam.row_phases"), angles), (w("cam.row_laws"), " / ".join(laws)),
-            (f"{w('cam.row_stroke')} {nt.sym('cam.h')}", h),
+            (f"{w('cam.row_stroke')} {nt.sym('dynamics.h')}", h),
             (w("cam.row_omega"), f"{nt.number(p.omega, sig=4)} {nt.unit('rad/s')}")]
     if p.contact != "flat":
         rows.append((f"{w('cam.row_limits')} [{sym_a}]",
@@ -348,7 +352,7 @@ def cam_sheet(cam: CamDesign, *, notation: Any = "en", n_div: int = 8, name: str
     probe = _page(nt, title, problem, [Scale("μ", "m", 1.0)] * 3)
     x0, y0, x1, y1 = probe.content_box()
     bx = _boxes(probe, _profile_width(cam, n_div, (x1 - 330.0, y0 + TITLE_MM + 6.0, x1, y0 + 0.64 * (y1 - y0))))
-    occ = Occupancy()
+    occ = FastOccupancy()
     occ.add_box((x0, y0, x0 + 200.0, y0 + TITLE_MM + 1.5))
     motion, m_scales, con = motion_column(cam, bx.motion, occ, nt, n_div=n_div)
     if cam.problem.oscillating or cam.problem.contact == "flat":

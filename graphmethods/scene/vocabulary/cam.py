@@ -8,7 +8,6 @@
 """
 
 SYMBOLS = {
-    "s":      ("s", "S", "s"),
     "psi":    ("ψ", "ψ", "ψ"),
     "ds":     ("ds/dφ", "dS/dφ", "ds/dφ"),
     "d2s":    ("d²s/dφ²", "d²S/dφ²", "d²s/dφ²"),
@@ -20,7 +19,6 @@ SYMBOLS = {
     "r_r":    ("r_r", "r_р", "r_r"),
     "e":      ("e", "e", "e"),
     "rho":    ("ρ", "ρ", "ρ"),
-    "h":      ("h", "h", "h"),
 }
 
 WORDS = {
@@ -43,9 +41,7 @@ WORDS = {
     "profile":      ("Cam profile by inversion of motion", "Профиль кулачка методом обращения движения",
                      "反转法绘制凸轮廓线"),
     "results":      ("Results", "Результаты", "结果"),
-    "zone":         ("admissible zone", "допустимая область", "许用区"),
-    "pole":         ("P_{k}", "P_{k}", "P_{k}"),
-    "H":            ("H_{k} = {value} mm", "H_{k} = {value} мм", "H_{k} = {value} mm"),
+    "pole":         ("P_{k}: H_{k} = {value} mm", "P_{k}: H_{k} = {value} мм", "P_{k}：H_{k} = {value} mm"),
     "alpha_max":    ("{sym}_{{max}} = {value}°", "{sym}_{{max}} = {value}°", "{sym}_{{max}} = {value}°"),
     "row_follower": ("follower", "толкатель", "从动件"),
     "translating":  ("translating", "поступательный", "直动"),
@@ -65,10 +61,14 @@ WORDS = {
                      "许用压力角（推程 / 回程）"),
     "row_base":     ("base radius of the profile", "радиус основной шайбы профиля", "实际廓线基圆半径"),
     "row_pitch":    ("base radius of the pitch curve", "радиус центрового профиля", "理论廓线基圆半径"),
-    "row_designed": ("designed: smallest with the pressure angle within [α]", "найден: наименьший при ϑ ≤ [ϑ]",
-                     "设计值：压力角不超过[α]的最小值"),
-    "row_designed_flat": ("designed: smallest with ρ ≥ ρ_min", "найден: наименьший при ρ ≥ ρ_min",
-                          "设计值：ρ ≥ ρ_min 的最小值"),
+    "row_designed": ("designed: α ≤ [α]", "найден: ϑ ≤ [ϑ]", "设计值：α ≤ [α]"),
+    "no_uniform":   ("the cam sheet integrates the acceleration analogue, which is infinite where a uniform phase "
+                     "starts and ends (hard impacts): choose another law for the sheet, or use the numbers alone",
+                     "лист интегрирует аналог ускорения, который бесконечен в начале и конце равномерной фазы "
+                     "(жёсткие удары): выберите другой закон для листа или используйте только числа",
+                     "图纸对类加速度进行积分，而等速运动段的起止处类加速度为无穷大（刚性冲击）：请改用其他运动规律，"
+                     "或只输出数值"),
+    "row_designed_flat": ("designed: ρ ≥ ρ_{min}", "найден: ρ ≥ ρ_{min}", "设计值：ρ ≥ ρ_{min}"),
     "row_given":    ("given", "задан", "给定"),
     "row_offset":   ("offset", "эксцентриситет", "偏距"),
     "row_roller":   ("roller radius", "радиус ролика", "滚子半径"),
