@@ -16,6 +16,7 @@ ordinary text passes through unchanged. A run is ``(text, shift)`` with shift
 from __future__ import annotations
 
 import functools
+from contextvars import ContextVar
 
 Run = tuple[str, int]
 
@@ -158,6 +159,13 @@ def char_em(ch: str) -> float:
     return 0.7
 
 
+#: the smallest font size (mm) of the text made while it is set: a course sheet (A1, A2) letters at 3.5 mm
+#: and up, so its parts, drawn by the same figure functions as the A4 figures, are lettered up while they
+#: are built (:func:`graphmethods.sheets.engine.lettering.lettered` sets it; 0: as given). Widths measured
+#: meanwhile (:func:`text_width_mm`) are those of the lettered-up text.
+MIN_TEXT_MM: ContextVar[float] = ContextVar("MIN_TEXT_MM", default=0.0)
+
+
 def text_width_mm(text: str, size_mm: float, *, markup: bool = True) -> float:
     """Estimated width of a text on paper, mm, for layout (tables, label placement).
 
@@ -168,7 +176,7 @@ def text_width_mm(text: str, size_mm: float, *, markup: bool = True) -> float:
     size_mm : float, mm
         Font size (em height).
     """
-    return _width_em(text, markup) * size_mm
+    return _width_em(text, markup) * max(size_mm, MIN_TEXT_MM.get())
 
 
 @functools.lru_cache(maxsize=8192)

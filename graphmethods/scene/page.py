@@ -14,7 +14,7 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
-from graphmethods.scene.elements import Table
+from graphmethods.scene.elements import Table, lettered_size
 from graphmethods.scene.primitives import Path, Primitive, Style
 
 #: ISO 216 sizes in mm, (short side, long side); SLIDE is a 16:9 presentation slide (13.333 × 7.5 in)
@@ -38,6 +38,9 @@ class TitleBlock:
     scales: tuple[str, ...] = ()
     headings: tuple[str, str, str] = ("Figure", "Problem", "Scales")
     size_mm: float = 3.2
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "size_mm", lettered_size(self.size_mm))     # 3.5 mm and up on A1/A2
 
     def rows(self) -> tuple[tuple[str, str], ...]:
         rows = [(self.headings[0], self.title)]

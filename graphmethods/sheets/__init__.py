@@ -37,7 +37,9 @@ from graphmethods.sheets.dynamics import (
 from graphmethods.sheets.energy import energy_graph, energy_indicator, excess_work_table, moment_diagram
 from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
 from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
-from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan, velocity_plan_grid, velocity_table
+from graphmethods.sheets.kinematic_scheme import kinematic_scheme
+from graphmethods.sheets.velocity_plans import velocity_plan, velocity_plan_grid
+from graphmethods.sheets.velocity_table import velocity_table
 from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, wittenbauer_diagram
 
 __all__ = [

@@ -41,6 +41,7 @@ from graphmethods.scene.elements import Element
 from graphmethods.scene.primitives import DASHED
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
+from graphmethods.sheets.styles import CELL
 
 SMALL_MM = K.SMALL_MM
 TABLE_MM = K.TABLE_MM
@@ -440,7 +441,7 @@ def acceleration_plan_grid(linkage, *, m: int | None = None, omega_1: float | No
     for k, p in enumerate(plans):
         box, inner = grid.cell(k, lay)
         prefix = f"plan-{k}-"
-        cells += K._grid_cell(box, nt.word("kinematics.position") + f" {k}", prefix, K.CELL, occ, lay)
+        cells += K._grid_cell(box, nt.word("kinematics.position") + f" {k}", prefix, CELL, occ, lay)
         arr = np.array([[z.real, z.imag] for z in p.images.values()])
         f = K._centred_frame(inner, arr.min(axis=0), arr.max(axis=0), s_a)
         pts = {lb: f.pt(z.real, z.imag) for lb, z in p.images.items()}

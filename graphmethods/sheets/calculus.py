@@ -52,7 +52,7 @@ from graphmethods.scene import (
     pick_angle_scale,
     pick_scale,
 )
-from graphmethods.scene.elements import Element
+from graphmethods.scene.elements import Element, lettered_size
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, clear_tick_labels, problem_title
@@ -281,9 +281,11 @@ def _table(rows: Rows, *, align: str, name: str, right: float | None = None, lef
     """A table whose columns fit their texts (bold headings measured wide), placed by one corner."""
     cells = tuple(tuple(r) for r in rows)
     pad = 1.5
-    widths = tuple(max(markup.text_width_mm(r[j], TABLE_MM) * (1.16 if i == 0 else 1.0) for i, r in enumerate(cells))
+    size = lettered_size(TABLE_MM)                  # 3.5 mm and up on a course sheet
+    row = 6.0 * size / TABLE_MM
+    widths = tuple(max(markup.text_width_mm(r[j], size) * (1.16 if i == 0 else 1.0) for i, r in enumerate(cells))
                    + 2 * pad + 1.0 for j in range(len(cells[0])))
-    w, h = sum(widths), 6.0 * len(cells)
+    w, h = sum(widths), row * len(cells)
     if left is not None:
         x = left
     else:
@@ -294,7 +296,7 @@ def _table(rows: Rows, *, align: str, name: str, right: float | None = None, lef
     else:
         assert bottom is not None, "a table is placed by its top or its bottom edge"
         y = bottom - h
-    return Table((x, y), cells, col_widths_mm=widths, align=align, size_mm=TABLE_MM, row_height_mm=6.0,
+    return Table((x, y), cells, col_widths_mm=widths, align=align, size_mm=size, row_height_mm=row,
                  padding_mm=pad, name=name)
 
 

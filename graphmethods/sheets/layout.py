@@ -434,10 +434,13 @@ class Sheet:
                                            scales=("μ",) if has_scales else (), nt=nt, title_block=title_block)
         self.box = probe.content_box()
         x0, y0, x1, y1 = self.box
-        self.top = y0 + TITLE_MM + top_gap_mm
+        from graphmethods.sheets.engine.lettering import is_course_sheet, lettering
+
+        self.title_mm = lettering(probe).title_mm if is_course_sheet(probe) else TITLE_MM   # 7 mm on A1/A2
+        self.top = y0 + self.title_mm + top_gap_mm
         self.caption_y = y1 - 1.0
         self.occ = Occupancy()
-        self.occ.add_box((x0, y0, x1, y0 + TITLE_MM + 1.5))
+        self.occ.add_box((x0, y0, x1, y0 + self.title_mm + 1.5))
 
     def page(self, scales):
         return standard_page(self._page_arg, title=self.title, problem=self.problem,
@@ -448,7 +451,7 @@ class Sheet:
         from graphmethods.scene import Text
 
         x0, y0, _, _ = self.box
-        return Text((x0, y0 + TITLE_MM), self.title, size_mm=TITLE_MM, bold=True, name="title")
+        return Text((x0, y0 + self.title_mm), self.title, size_mm=self.title_mm, bold=True, name="title")
 
     def captions(self, scales, legend: str = "", *, reserve: bool = False) -> list:
         """The scale captions at the left of the bottom line, a legend at its right; ``reserve``
