@@ -15,6 +15,7 @@ from graphmethods.problems.builtin import CAMS, cam_problem
 from graphmethods.render.recording import record
 from graphmethods.scene.elements import label_bbox
 from graphmethods.sheets.cam_sheet import cam_sheet
+from graphmethods.sheets.engine.quality import faults, measure
 from graphmethods.sheets.layout import segments_hit_boxes
 from tests.test_every_sheet_layout import bare_axes, text_faults
 
@@ -112,6 +113,7 @@ def test_the_cam_sheet_keeps_the_standard(name, lang, sheets):
     assert _labels_on_lines(rec) == []
     ink = _ink_cells(rec, scene.page.inner_box())
     assert 1.0 - ink.mean() <= 0.5, f"{1.0 - ink.mean():.1%} of the 20 mm cells are empty"
+    assert faults(measure(scene)) == []                  # the engine's measure of every sheet
 
 
 def test_the_sheet_prints_the_numbers_of_the_command_line(capsys, sheets):

@@ -34,11 +34,12 @@ from graphmethods.scene.notation import Notation, get as get_notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.scene.scale import pick_angle_scale
 from graphmethods.sheets.calculus import CHORD, RAY
+from graphmethods.sheets.engine import lettering
 from graphmethods.sheets.layout import Box, Occupancy
 from graphmethods.sheets.styles import LEVEL
 
-#: lettering on the A1 cam sheet (ГОСТ 2.304: at least 3.5 mm on A1), headings, the sheet's title
-TEXT_MM, HEAD_MM = 3.5, 5.0
+#: lettering on the A1 cam sheet (the engine's table, ГОСТ 2.304: labels 3.5 mm, headings 5 mm)
+TEXT_MM, HEAD_MM = lettering("A1").label_mm, lettering("A1").heading_mm
 #: the room left of each diagram's ordinate line for its pole, mm
 POLE_ROOM_MM = 45.0
 #: the value axis stands this far right of φ = 2π (clear of the φ axis's arrow and name), mm
@@ -437,10 +438,10 @@ def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[l
 
 def fitted_table(at: tuple[float, float], rows: tuple[tuple[str, ...], ...], box: Box, *, align: str,
                  name: str, header_rows: int = 1) -> Table:
-    """A table in the largest standard lettering (5, 4.5, 4 or 3.5 mm) that keeps it inside ``box``."""
+    """A table in the largest standard lettering (5 or 3.5 mm, ГОСТ 2.304) that keeps it inside ``box``."""
     x0, y0, x1, y1 = box
     table = None
-    for size in (5.0, 4.5, 4.0, TEXT_MM):
+    for size in (lettering("A1").value_mm, TEXT_MM):
         table = Table(at, rows, size_mm=size, row_height_mm=1.8 * size + 0.6, align=align, header_rows=header_rows,
                       name=name)
         if at[0] + table.width_mm <= x1 and at[1] + table.height_mm <= y1:

@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.kinematics.cam import CamDesign
+from graphmethods.kinematics.cam import CamDesign, CamProblem, design
 from graphmethods.scene import (
     Group,
     Line,
@@ -56,11 +56,12 @@ from graphmethods.sheets.cam_diagrams import (
     rho_graph,
     segment,
 )
+from graphmethods.sheets.engine import course_page, lettering
 from graphmethods.sheets.frame import FastOccupancy
 from graphmethods.sheets.layout import Box, Occupancy
 from graphmethods.sheets.styles import PROJECTION
 
-TITLE_MM = 7.0
+TITLE_MM = lettering("A1").title_mm
 #: the dash-dot of a circle of centres (the pitch curve's base circle)
 CENTRES = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 
@@ -115,7 +116,7 @@ def _boxes(page: Page, profile_mm: float) -> SheetBoxes:
 def _page(nt: Notation, title: str, problem: str, scales: list[Scale]) -> Page:
     tb = TitleBlock(title, problem, tuple(s.caption(nt) for s in scales[:3]),
                     headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")), size_mm=TEXT_MM)
-    return Page("A1", "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True, title_block=tb)
+    return course_page("A1").with_(title_block=tb)
 
 
 def _rot(points: np.ndarray, phi: np.ndarray, sense: str) -> np.ndarray:
@@ -331,13 +332,13 @@ def results_rows(cam: CamDesign, nt: Notation, con: Any) -> list[tuple[str, str]
     return rows
 
 
-def cam_sheet(cam: CamDesign, *, notation: Any = "en", n_div: int = 8, name: str = "cam-sheet") -> Scene:
+def cam_sheet(cam: CamDesign | CamProblem, *, notation: Any = "en", n_div: int = 8, name: str = "cam-sheet") -> Scene:
     """The A1 cam sheet of a designed cam (see the module docstring).
 
     Parameters
     ----------
-    cam : CamDesign
-        From :func:`graphmethods.kinematics.cam.design`.
+    cam : CamDesign or CamProblem
+        From :func:`graphmethods.kinematics.cam.design` (a problem is designed first).
     notation : {"en", "ru", "zh"}
     n_div : int
         Strips per rise and per return (the division points of the construction and of the inversion).
@@ -346,6 +347,8 @@ def cam_sheet(cam: CamDesign, *, notation: Any = "en", n_div: int = 8, name: str
     -------
     Scene
     """
+    if isinstance(cam, CamProblem):
+        cam = design(cam)
     nt = get_notation(notation)
     title = nt.word("cam.sheet")
     problem = cam.problem.title.title_in(nt.code)
