@@ -47,8 +47,8 @@ def test_the_sheet_holds_scheme_lever_plans_and_the_result_table_of_that_positio
         d = _number(r[2])               # printed to three decimals of a per cent, as a course project does
         assert r[2].count(".") + r[2].count(",") == 1 and len(r[2].replace(",", ".").split(".")[1]) == 3
         assert d == pytest.approx(float(fa.difference_percent(other)[k]), abs=5e-4) and d < 1e-3
-    # every scale of the parts is in the scene, and the title block holds the scheme's
-    assert len(s.scales()) >= 4 and any("μ_l" in c for c in s.page.title_block.scales)
+    # every scale of the parts is in the scene, and the title block holds the scheme's (lever and scheme may share μ_l)
+    assert len(s.scales()) >= 3 and any("μ_l" in c for c in s.page.title_block.scales)
 
 
 def test_a2_a_crank_angle_and_bad_input():

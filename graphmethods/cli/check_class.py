@@ -32,7 +32,9 @@ def add_parser(sub) -> None:
                        "2 the command could not run.")
     p.add_argument("directory", metavar="DIR", help="the folder of the students' files")
     p.add_argument("--problem", default=None, help="the problem for every file (else named inside or in the file name)")
-    p.add_argument("--out", default="class-report", help="folder to write the table and reports (default class-report)")
+    p.add_argument("-o", "--out", default="class-report",
+                   help="folder to write the table and reports (default class-report)")
+    p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="language of the table, the reports and the overlays")
     p.add_argument("--no-overlays", action="store_true", help="write no overlays (faster)")
@@ -75,11 +77,16 @@ def run(args) -> int:
         if existing:
             raise OutputExistsError(f"{', '.join(existing)} exist; use --force to overwrite, or another --out")
 
+    from graphmethods.cli._progress import Progress
+
+    line = Progress(quiet=args.quiet, every=0.0)      # into a file: one line per student, with its verdict
+
     def progress(i, n, s):
         what = s.report.summary() if s.report is not None else f"could not be checked: {s.error}"   # stderr: en
-        print(f"[{i}/{n}] {s.path.name}: {what}", file=sys.stderr)
+        line(i, n, f"{s.path.name}: {what}")
 
     report = check_class(files, problem=args.problem, progress=progress)
+    line.done()
     lang = args.lang
     blobs = {fixed[0]: report.csv_bytes(lang), fixed[1]: report.to_markdown(lang).encode("utf-8"),
              fixed[2]: report.to_html(lang=lang).encode("utf-8"), fixed[3]: report.csv_bytes(lang, sep=";")}

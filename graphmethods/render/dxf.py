@@ -7,10 +7,12 @@ laid side by side, 20 mm apart. Each primitive goes on the layer of its role (:d
 derived from the names of the groups around it and its style (:func:`role_of`):
 
 * paths become LWPOLYLINEs with the stroke's lineweight and, when dashed, a linetype of the same
-  dash pattern in mm; filled triangles (arrowheads) SOLIDs; other filled polygons and filled
+  dash pattern in mm, under a standard name (:data:`STANDARD_LINETYPES`) so that LibreCAD dashes it
+  too; filled triangles (arrowheads) SOLIDs; other filled polygons and filled
   circles solid HATCHes; circles CIRCLEs;
-* text becomes TEXT in the style ``GM-SANS`` (DejaVu Sans; a CAD program without it substitutes
-  its own sans font, e.g. Arial), its height the capital height of the scene's font size; a label
+* text becomes TEXT in a style of :data:`TEXT_STYLES` (Arial, and Noto Sans CJK for Chinese; each style
+  named after the LibreCAD font that draws it there), its height the capital height of the scene's
+  font size; a label
   with sub/superscripts becomes one TEXT per run, shifted and scaled as in SVG;
 * black is ByLayer (colour 7: black on a white background, white on a black one), other colours
   true colours; white fills (the open circles of joints and marks) are left unfilled;
@@ -78,12 +80,30 @@ LAYERS = {
     "text": ("TEXT", 7, "labels, numbers, captions"),
 }
 
-#: text styles: name -> (font file, family, bold)
+#: text styles: name -> (font file, family, bold). A CAD program (AutoCAD, nanoCAD, BricsCAD, KOMPAS, ezdxf's
+#: viewer) finds a style's font by its file name: Arial is on every Windows and macOS (ezdxf on Linux falls back to
+#: DejaVu Sans); Chinese is drawn with Noto Sans CJK, the file Debian, Ubuntu, Fedora and Arch install
+#: (fonts-noto-cjk) and the one graphmethods' PNG/PDF use; a Windows CAD program without it substitutes its own.
+#: LibreCAD takes a text's style NAME for its own (.lff) font, so each style is named after the LibreCAD font that
+#: draws it: OpenGostTypeB (Latin, Greek, Cyrillic: the ГОСТ 2.304 type B letters) and kst32b (with Chinese).
 TEXT_STYLES = {
-    "GM-SANS": ("DejaVuSans.ttf", "DejaVu Sans", False),
-    "GM-SANS-BOLD": ("DejaVuSans-Bold.ttf", "DejaVu Sans", True),
-    "GM-CJK": ("NotoSansCJKsc-Regular.otf", "Noto Sans CJK SC", False),
+    "OpenGostTypeB-Regular": ("arial.ttf", "Arial", False),
+    "lc_opengost-br": ("arialbd.ttf", "Arial", True),
+    "kst32b": ("NotoSansCJK-Regular.ttc", "Noto Sans CJK SC", False),
 }
+STYLE_SANS, STYLE_BOLD, STYLE_CJK = TEXT_STYLES
+
+#: dash patterns (mm, on and off) -> the standard linetype name each is written under. LibreCAD draws only the
+#: linetypes it knows by name (any other prints solid), in its own pattern of that family; AutoCAD, ezdxf's viewer
+#: and the others draw the pattern the file defines (ours). So each pattern of the figures has a standard name of
+#: its family (dashes, dots, dash-dots), the shortest dashes the "2" (half) names; a pattern not listed keeps a
+#: name of its own (GM-DASH-…), exact everywhere but LibreCAD.
+STANDARD_LINETYPES = {
+    (1.2, 0.8): "DASHED2", (2.0, 1.0): "HIDDEN2", (2.5, 1.2): "DASHED", (3.0, 1.0): "HIDDEN",
+    (3.0, 1.2): "ACAD_ISO02W100", (4.0, 1.5): "DASHEDX2", (0.8, 0.8): "DOT", (0.5, 1.0): "DOT2",
+    (6.0, 1.2, 1.0, 1.2): "DASHDOT", (6.0, 1.5, 1.0, 1.5): "CENTER", (5.0, 1.2, 1.0, 1.2): "DASHDOT2",
+}
+_LINETYPE_NOTE = "graphmethods dash "
 
 #: DXF lineweights (1/100 mm) a CAD program accepts
 _LINEWEIGHTS = (0, 5, 9, 13, 15, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 80, 90, 100, 106, 120, 140, 158, 200, 211)
@@ -217,14 +237,18 @@ class DxfRenderer:
         return attrs
 
     def _linetype(self, dash: tuple[float, ...]) -> str:
+        """The linetype of a dash pattern (mm), defined in the file on first use: its standard name
+        (:data:`STANDARD_LINETYPES`) unless the drawing already has that name for another pattern."""
         parts = [float(d) for d in dash]
         if len(parts) % 2:
             parts = parts * 2
-        name = "GM-DASH-" + "-".join(f"{d:g}".replace(".", "p") for d in parts)
+        note = _LINETYPE_NOTE + " ".join(f"{d:g}" for d in parts) + " mm"
+        name = STANDARD_LINETYPES.get(tuple(round(d, 3) for d in parts))
+        if name is None or (name in self.doc.linetypes and self.doc.linetypes.get(name).dxf.description != note):
+            name = "GM-DASH-" + "-".join(f"{d:g}".replace(".", "p") for d in parts)
         if name not in self.doc.linetypes:
             pattern = [sum(parts)] + [d if i % 2 == 0 else -d for i, d in enumerate(parts)]
-            self.doc.linetypes.add(name, pattern=pattern,
-                                   description="graphmethods dash " + " ".join(f"{d:g}" for d in parts) + " mm")
+            self.doc.linetypes.add(name, pattern=pattern, description=note)
         return name
 
     def _keep(self, entity: DXFGraphic) -> None:
@@ -303,7 +327,7 @@ class DxfRenderer:
             return
         attrs = self._attribs("text", None, label.color)
         cjk = any(_CJK.search(t) for t, _ in runs)
-        style = "GM-CJK" if cjk else ("GM-SANS-BOLD" if label.bold else "GM-SANS")
+        style = STYLE_CJK if cjk else (STYLE_BOLD if label.bold else STYLE_SANS)
         size = label.size_mm
         if len(runs) == 1 and runs[0][1] == 0:
             text, _ = runs[0]
@@ -336,7 +360,7 @@ def _new_document() -> Drawing:
     doc.header["$MEASUREMENT"] = 1            # metric
     doc.header["$LWDISPLAY"] = 1              # show lineweights
     doc.header["$LTSCALE"] = 1.0
-    doc.header["$TEXTSTYLE"] = "GM-SANS"
+    doc.header["$TEXTSTYLE"] = STYLE_SANS
     for _role, (name, color, description) in LAYERS.items():
         layer = doc.layers.add(name, color=color)
         layer.description = description

@@ -32,6 +32,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.scene import markup
+from graphmethods.scene.markup import MIN_TEXT_MM
 from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import (
     AXIS,
@@ -58,6 +59,16 @@ if TYPE_CHECKING:
 
 #: vertical metrics of the default font, in em: ascent above the baseline, descent below, cap height
 ASCENT, DESCENT, CAP = 0.76, 0.24, 0.73
+
+def lettered_size(size_mm: float) -> float:
+    """A font size raised to the smallest the sheet being drawn allows (:data:`MIN_TEXT_MM`)."""
+    return max(float(size_mm), MIN_TEXT_MM.get())
+
+
+def _letter(element: Any) -> None:
+    """Raise a frozen element's ``size_mm`` to :func:`lettered_size` (at construction, inside the sheet)."""
+    if MIN_TEXT_MM.get() > element.size_mm:
+        object.__setattr__(element, "size_mm", MIN_TEXT_MM.get())
 
 
 def _pt(p: Sequence[float] | NDArray[np.float64]) -> XY:
@@ -148,6 +159,7 @@ def make_label(at: Sequence[float], text: str, *, size_mm: float = 3.5, anchor: 
     if anchor not in ("start", "middle", "end"):
         raise InputError(f"text anchor {anchor!r}: use 'start', 'middle' or 'end'")
     x, y = _pt(at)
+    size_mm = lettered_size(size_mm)
     shift = {"baseline": 0.0, "middle": CAP / 2, "top": ASCENT, "bottom": -DESCENT}
     if valign not in shift:
         raise InputError(f"text valign {valign!r}: use one of {', '.join(shift)}")
@@ -187,6 +199,9 @@ class Text(Element):
     bold: bool = False
     markup: bool = True
     name: str = "text"
+
+    def __post_init__(self) -> None:
+        _letter(self)
 
     def primitives(self) -> tuple[Primitive, ...]:
         return (make_label(self.at, self.text, size_mm=self.size_mm, anchor=self.anchor, valign=self.valign,
@@ -515,6 +530,9 @@ class Point(Element):
     gap_mm: float = 1.0
     name: str = "point"
 
+    def __post_init__(self) -> None:
+        _letter(self)
+
     def primitives(self) -> tuple[Primitive, ...]:
         x, y = _pt(self.at)
         style = Style(stroke=None, width_mm=0.0, fill="#000000") if self.filled else THIN.with_(fill="#ffffff")
@@ -551,6 +569,7 @@ class Dimension(Element):
 
     def __post_init__(self) -> None:
         _checked_points(self, "start", "end")
+        _letter(self)
 
     def _frame(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64],
                               NDArray[np.float64]]:
@@ -719,6 +738,7 @@ class Axis(Element):
                              f"max_value must exceed min_value")
         if self.tick_labels is not None and len(self.tick_labels) != len(self.ticks):
             raise InputError(f"{self.name}: {len(self.ticks)} ticks but {len(self.tick_labels)} tick labels")
+        _letter(self)
         _checked_points(self, "origin")
 
     def pos(self, value: float) -> XY:
@@ -817,6 +837,13 @@ class Table(Element):
                 raise InputError(f"{self.name}: row {i} has {len(r)} cells, the first row has {ncol}")
         object.__setattr__(self, "rows", rows)
         _checked_points(self, "at")
+        given = self.size_mm
+        _letter(self)
+        if self.size_mm > given:                 # lettered up on a course sheet: the cells grow with the text
+            k = self.size_mm / given
+            object.__setattr__(self, "row_height_mm", self.row_height_mm * k)
+            if self.col_widths_mm is not None:
+                object.__setattr__(self, "col_widths_mm", tuple(w * k for w in self.col_widths_mm))
         if self.col_widths_mm is not None and len(self.col_widths_mm) != ncol:
             raise InputError(f"{self.name}: {len(self.col_widths_mm)} column widths for {ncol} columns")
 
@@ -899,6 +926,9 @@ class ScaleCaptions(Element):
     gap_mm: float = 10.0
     anchor: str = "start"
     name: str = "scale-captions"
+
+    def __post_init__(self) -> None:
+        _letter(self)
 
     def captions(self) -> tuple[str, ...]:
         return tuple(s.caption(self.notation) for s in self.scales)

@@ -16,6 +16,8 @@ ordinary text passes through unchanged. A run is ``(text, shift)`` with shift
 from __future__ import annotations
 
 import functools
+import re
+from contextvars import ContextVar
 
 Run = tuple[str, int]
 
@@ -130,6 +132,16 @@ def plain(text: str) -> str:
     return "".join(t for t, _ in parse(text))
 
 
+def lowered_digits(name: str) -> str:
+    """A point or link name as the books write it, its digits lowered: ``"S2"`` -> ``"S_{2}"``,
+    ``"O3A"`` -> ``"O_{3}A"``, ``"s4"`` -> ``"s_{4}"`` (one notation on every sheet).
+
+    >>> lowered_digits("S2"), lowered_digits("O3A"), lowered_digits("B")
+    ('S_{2}', 'O_{3}A', 'B')
+    """
+    return re.sub(r"([A-Za-z])(\d+)", lambda mt: f"{mt.group(1)}_{{{mt.group(2)}}}", name)
+
+
 def is_cjk(ch: str) -> bool:
     """True for a Chinese/Japanese/Korean ideograph, kana, or full-width punctuation."""
     o = ord(ch)
@@ -158,6 +170,13 @@ def char_em(ch: str) -> float:
     return 0.7
 
 
+#: the smallest font size (mm) of the text made while it is set: a course sheet (A1, A2) letters at 3.5 mm
+#: and up, so its parts, drawn by the same figure functions as the A4 figures, are lettered up while they
+#: are built (:func:`graphmethods.sheets.engine.lettering.lettered` sets it; 0: as given). Widths measured
+#: meanwhile (:func:`text_width_mm`) are those of the lettered-up text.
+MIN_TEXT_MM: ContextVar[float] = ContextVar("MIN_TEXT_MM", default=0.0)
+
+
 def text_width_mm(text: str, size_mm: float, *, markup: bool = True) -> float:
     """Estimated width of a text on paper, mm, for layout (tables, label placement).
 
@@ -168,7 +187,7 @@ def text_width_mm(text: str, size_mm: float, *, markup: bool = True) -> float:
     size_mm : float, mm
         Font size (em height).
     """
-    return _width_em(text, markup) * size_mm
+    return _width_em(text, markup) * max(size_mm, MIN_TEXT_MM.get())
 
 
 @functools.lru_cache(maxsize=8192)

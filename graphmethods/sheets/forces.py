@@ -34,12 +34,14 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import THIN
+from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
 TABLE_MM = 3.2
+#: the links of the linkage: a main line (ГОСТ 2.303: 0.5–1.4 mm), heavier than the forces' shafts
+LINK = Style(width_mm=0.6)
 
 def analysed(case, *, position: int | None, phi_deg: float | None, m: int, gravity: bool = False):
     """The force analysis a force figure draws and the index of its position in it: position
@@ -204,6 +206,8 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
     error: InputError | None = None
     for n_o, (area, corner) in enumerate(((beside, (split + 2.0, sheet.top + 2.0)),
                                           (above, (x0 + L.left_mm, sheet.top + 2.0)))):
+        if min(area[2] - area[0], area[3] - area[1]) <= 2 * L.margin_mm + 10.0:
+            continue                                  # the texts leave no room for a drawing beside them
         try:
             s_l, at = fit(area)
         except InputError as e:
@@ -211,8 +215,7 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
             continue
         options.append((s_l.per_mm, n_o, area, corner, s_l, at))
     if not options:
-        assert error is not None
-        raise error
+        raise error or InputError("the figure's texts leave no room for its drawing on this page; give a larger page")
     _, _, area, (tx, ty), s_l, at = min(options, key=lambda o: (o[0], o[1]))
     return area, _column(texts, tx, ty, L), s_l, at
 
@@ -504,7 +507,8 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
-    names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
+    names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
+             for p, z in images.items()]
     els += _labels(occ, [(pole, "p", "label-pole"), *names, *vec_labels], L.within(area))
     els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.lever_legend"), name)
@@ -533,6 +537,9 @@ def _links_of(mo: Any, i: int) -> tuple[list[tuple[str, str]], list[tuple[str, c
             blocks.append((g.P, guide(g.links[1])))
         elif g.kind == "PRP":
             blocks += [(g.C, guide(ln)) for ln in g.links]
+        elif g.kind == "triad":                   # the basic link as a triangle, the three binary links
+            B1, B2, B3 = g.inner
+            segs += [(B1, B2), (B2, B3), (B1, B3), *zip(g.outer, g.inner)]
         else:
             segs.append((g.P, g.R))
             blocks.append((g.P, guide(g.links[0])))
@@ -546,8 +553,9 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
 
     lk = mo.linkage
     segs, blocks = _links_of(mo, i)
-    els: list[Element] = [_drawn(occ, Line(at(z[a]), at(z[b]), name=f"link-{a}-{b}")) for a, b in segs
+    els: list[Element] = [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
                           if abs(z[a] - z[b]) > 0]
+    els += _guides(mo, blocks, at)
     els += [FixedPivot(at(z[p]), name=f"pivot-{p}") for p in lk.ground]
     els += [SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}")
             for j, (p, u) in enumerate(blocks)]
@@ -556,6 +564,43 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
     for el in els:
         occ.add_primitives(el.primitives())
     return els
+
+
+def _strokes(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[tuple[int, complex, complex]]:
+    """The blocks that slide on the frame (along one fixed line in every position): each one's index and the
+    two ends of its stroke (m, complex)."""
+    out = []
+    for j, (p, u) in enumerate(blocks):
+        zs = np.asarray(mo.z[p], dtype=complex).reshape(-1)
+        if abs(u) == 0 or np.ptp(((zs - zs[0]) * u.conjugate()).imag) > 1e-9 * (1.0 + float(np.ptp(np.abs(zs)))):
+            continue                                # a guide on a moving link, or not along a fixed line
+        e = u / abs(u)
+        s = ((zs - zs[0]) * e.conjugate()).real
+        out.append((j, complex(zs[0] + s.min() * e), complex(zs[0] + s.max() * e)))
+    return out
+
+
+def _guide_ends(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[complex]:
+    """The ends of the frame's guides (m): the scheme is scaled to hold them."""
+    return [z for _, a, b in _strokes(mo, blocks) for z in (a, b)]
+
+
+def _guides(mo: Any, blocks: Sequence[tuple[str, complex]], at: ToMm) -> list[Element]:
+    """The hatched guide of each block that slides on the frame (its guide's direction the same in every
+    position), along the block's whole stroke and a block's length beyond either end."""
+    from graphmethods.sheets.kinematic_symbols import Guide
+
+    out: list[Element] = []
+    for j, za, zb in _strokes(mo, blocks):
+        a, b = at(za), at(zb)
+        d = math.dist(a, b)
+        if d == 0:
+            continue
+        e = ((b[0] - a[0]) / d, (b[1] - a[1]) / d)
+        reach = 8.0                                 # mm beyond the stroke: the block's half length and more
+        out.append(Guide((a[0] - reach * e[0], a[1] - reach * e[1]), (b[0] + reach * e[0], b[1] + reach * e[1]),
+                         side=-1 if e[0] >= 0 else 1, name=f"guide-{j}"))
+    return out
 
 
 def _directions(w: complex, z: dict[str, complex], segs: Sequence[tuple[str, str]]) -> list[float]:
@@ -616,7 +661,8 @@ def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_
             tip = (start[0] + F.real / s_F.per_mm, start[1] - F.imag / s_F.per_mm)
             els.append(_drawn(occ, Vector(start, tip, head_length_mm=L.head_mm, name=f"force-{n_f}")))
             n_f += 1
-            labels.append((tip, _markup(label, nt), f"label-{label}"))
+            labels.append((tip, f"{_markup(label, nt)} = {nt.number(abs(F), sig=4)} {nt.unit('N')}",
+                           f"label-{label}"))
         if M != 0.0:
             mlabel = "M" + label[1:] if label.startswith("F") else label
             avoid = around(where) + ([math.degrees(cmath.phase(F))] if abs(F) > 0 else [])
@@ -658,11 +704,11 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
     s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, L.largest_force_mm, what="the largest force")
-    cloud = np.array(list(z.values()))
+    cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1]))
     area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
     occ = sheet.occ
     els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
-    labels: list[LabelSpec] = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
+    labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     segs, _blocks = _links_of(mo, i)
 
     pivots = [z[p] for p in mo.linkage.ground]
@@ -677,9 +723,12 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     labels += wanted
     cr = mo.linkage.crank
     # the labels keep off M_b's arc and its name
-    els.append(_drawn(occ, _moment_arc(at(z[cr.centre]), L.balance_mm, 110.0 if Mb > 0 else -110.0,
-                                       around(z[cr.centre]),
-                                       label=nt.sym("forces.M_b"), size_mm=SMALL_MM, name="M_b")))
+    centre = at(z[cr.centre])
+    els.append(_drawn(occ, _moment_arc(centre, L.balance_mm, 110.0 if Mb > 0 else -110.0, around(z[cr.centre]),
+                                       name="M_b")))
+    mid = math.radians(clear_direction(around(z[cr.centre])))     # its name placed as every label is
+    labels.append(((centre[0] + L.balance_mm * math.cos(mid), centre[1] - L.balance_mm * math.sin(mid)),
+                   nt.sym("forces.M_b"), "label-M_b"))
     els += _labels(occ, labels, L.within(area))
     els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.scheme_legend"), name)

@@ -23,7 +23,7 @@ from graphmethods.scene import Page, Scale, ScaleCaptions, Text, markup, notatio
 from graphmethods.scene.elements import Element, label_bbox, make_label, place_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import Label
-from graphmethods.sheets.layout import TEXT_MM, TITLE_MM, Box, Occupancy, Sheet
+from graphmethods.sheets.layout import TEXT_MM, Box, Occupancy, Sheet
 
 Point2 = tuple[float, float]
 
@@ -79,7 +79,7 @@ class SheetFrame(Sheet):
                          default_page=default_page)
         x0, y0, _, _ = self.box
         self.occ = FastOccupancy()
-        self.occ.add_box((x0, y0, x0 + markup.text_width_mm(title, TITLE_MM) * 1.08, y0 + TITLE_MM + 1.5))
+        self.occ.add_box((x0, y0, x0 + markup.text_width_mm(title, self.title_mm) * 1.08, y0 + self.title_mm + 1.5))
 
     def captions(self, scales: Sequence[Scale], legend: str = "", *, reserve: bool = False) -> list[Element]:
         """The scale captions on the bottom line (left), a legend at its right end; both kept off lines

@@ -27,6 +27,7 @@ from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, Scene, notation as get_notation
 from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
+from graphmethods.sheets.engine.lettering import lettered_by_page
 from graphmethods.sheets.force_analysis_sheet import _case, sheet_page as _sheet_page
 from graphmethods.sheets.layout import Sheet
 
@@ -84,6 +85,7 @@ def default_plan_positions(case: Any, m: int = 12) -> tuple[int, int]:
     return (int(work), int(back[len(back) // 2]))
 
 
+@lettered_by_page("A1")
 def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Sequence[int] | None = None,
                              page: str | Page = "A1", notation: Any = "en", title: str | None = None,
                              title_block: bool = True, name: str = "kinematic-analysis") -> Scene:

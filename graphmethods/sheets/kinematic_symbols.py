@@ -28,7 +28,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Element, Region
-from graphmethods.scene.elements import make_label
+from graphmethods.scene.elements import lettered_size, make_label
 from graphmethods.scene.primitives import THIN, Circle, Path, Polygon, Style
 
 XY = tuple[float, float]
@@ -264,6 +264,9 @@ class RotationArrow(Element):
     label: str = ""
     size_mm: float = 3.2
     name: str = "rotation"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "size_mm", lettered_size(self.size_mm))
 
     def arc_points(self) -> tuple[XY, ...]:
         c = np.asarray(_xy(self.centre))

@@ -155,7 +155,7 @@ class CheckReport:
                 "notes": list(self.notes)}
 
     def to_json(self) -> str:
-        return json_text(self.to_dict(), indent=1, ensure_ascii=False)
+        return json_text(self.to_dict(), indent=1)
 
     def to_text(self, lang: str = "en") -> str:
         """Aligned plain text in ``lang`` (en, ru, zh): one line per item with its verdict in words, then the
