@@ -535,10 +535,8 @@ class _Builder:
             comps += [c1, Component(f"a^n_{K}{B[x]}", "normal", n1, n2, a2, True, t, abs(self.z[B[x]] - self.z[K]))]
             r = self.z[B[x]] - self.z[P[x]]
             lines.append(Line(f"⟂ {P[x]}{B[x]}", n2, self.images[n2], 1j * r / abs(r)))
-        kk, s = self.meet(lines[0], lines[1], self.where)
-        lab = self.put(K, kk)
-        comps += [Component(f"a^τ_{K}{B[x]}", "tangential", lines[m].through, lab, kk - lines[m].point, False, t,
-                            abs(self.z[K] - self.z[B[x]])) for m, x in enumerate((j, k))]
+        kk, s = self.meet(lines[0], lines[1], self.where)      # k: where the two dashed lines meet (its a^τ,
+        lab = self.put(K, kk)                                  # mixed of two links, give no ε: not drawn)
         comps.append(Component(f"a_{K}", "absolute", "π", lab, kk, False))
         self.steps.append(Step(K, lab, "intersection",
                                f"a_{K} = a_{P[j]} + a^n_{B[j]}{P[j]} + a^n_{K}{B[j]} + a^τ = a_{P[k]} + "
@@ -558,8 +556,8 @@ class _Builder:
                                    f"a_{B[x]} = a_{frm} + a^n_{B[x]}{frm} + a^τ_{B[x]}{frm} = a_{P[x]} + "
                                    f"a^n_{B[x]}{P[x]} + a^τ_{B[x]}{P[x]}",
                                    (c1, *((c2,) if x == i else ()),       # a^n of B_j, B_k: drawn for K
-                                    Component(f"a^τ_{B[x]}{frm}", "tangential", n1, lab, t1, False, link,
-                                              c1.factor),
+                                    *((Component(f"a^τ_{B[x]}{frm}", "tangential", n1, lab, t1, False, link,
+                                                 c1.factor),) if x == i else ()),   # ε_t: from b_i's alone
                                     Component(f"a^τ_{B[x]}{P[x]}", "tangential", n2, lab, t2, False, ks[x], c2.factor),
                                     Component(f"a_{B[x]}", "absolute", "π", lab, b, False)), (l1, l2), sin_between=s))
             self.member(t, B[x])

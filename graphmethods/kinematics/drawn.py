@@ -134,14 +134,16 @@ class DrawnCase(LinkageCase):
         return super().__getattr__(key)
 
 
-def require_cycle(case: Any, command: str) -> None:
+def require_cycle(case: Any, command: str, *, speed_given: bool = False) -> None:
     """Refuse a drawn file for a command that studies the steady cycle (the study, the motion): every key it
-    needs and the file leaves out, in one line; or a driver that swings instead of turning fully."""
+    needs and the file leaves out, in one line (the speed not, when the command line gives it); or a driver
+    that swings instead of turning fully."""
     info = getattr(case, "drawn", None)
     if info is None:
         return
-    if info.missing:
-        raise InputError(f"{case.source}: {command} needs {', '.join(info.missing)}, missing from the file")
+    missing = [k for k in info.missing if not (speed_given and k.startswith("omega_1"))]
+    if missing:
+        raise InputError(f"{case.source}: {command} needs {', '.join(missing)}, missing from the file")
     if info.swing is not None:
         a, b = (math.degrees(x) for x in info.swing)
         raise InputError(f"{case.source}: {command} follows the crank over whole turns; this driver swings over "

@@ -51,7 +51,7 @@ from typing import Any, NoReturn
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.case import Case, DiagramLoad, Inertia, Load
 from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Group, Guide, Triad
-from graphmethods.kinematics.linkage import Crank, Linkage, Point
+from graphmethods.kinematics.linkage import MAX_GROUPS, Crank, Linkage, Point
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
 from graphmethods.units import parse_number
@@ -102,7 +102,7 @@ class _Reader:
         return raw
 
     def link(self, key: str, raw: Json) -> str:
-        if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not str(raw).isdigit():
+        if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not (str(raw).isdigit() and str(raw).isascii()):
             self.err(key, f"must be a link number (0 = frame, 1 = crank, 2, ...); got {raw!r}")
         return str(int(raw))
 
@@ -240,6 +240,8 @@ def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>",
     groups_raw = data.get("groups", [])
     if not isinstance(groups_raw, list) or not groups_raw:
         rd.err("groups", "must be a list of Assur groups in solving order, e.g. [{\"type\": \"RRR\", ...}]")
+    if len(groups_raw) > MAX_GROUPS:              # refused before any group is read
+        rd.err("groups", f"{len(groups_raw)} groups; at most {MAX_GROUPS} are accepted (MAX_GROUPS)")
     groups = [_group(rd, i, g) for i, g in enumerate(groups_raw)]
     points: list[Point] = []
     pts = data.get("points", {})

@@ -34,6 +34,7 @@ from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, Strokes, build_positions
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
+from graphmethods.units import real
 
 #: |sin| between two construction lines at or below which they are parallel (a toggle: refused)
 TOGGLE_SIN = 1e-14
@@ -96,7 +97,7 @@ class LinkageMechanism(Mechanism):
         self.link_joints = MappingProxyType(joints)
         self._translating = frozenset(k for k in names if self._slides_on_frame(k))
         self.link_numbers = MappingProxyType({int(k): v for k, v in names.items()
-                                              if k.isdigit() and k not in self._translating})
+                                              if k.isdigit() and k.isascii() and k not in self._translating})
         self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
                             if p.name not in driving)
 
@@ -276,8 +277,10 @@ class LinkageMechanism(Mechanism):
         if not isinstance(positions, Positions) or positions.mechanism is not self:
             raise InputError("velocity_plans needs Positions of this same linkage (from self.positions(...))")
         if isinstance(omega_1, bool) or not isinstance(omega_1, (int, float, np.floating, np.integer)) \
-                or not math.isfinite(omega_1) or omega_1 <= 0:
+                or omega_1 <= 0:
             raise InputError(f"omega_1 is the crank speed in rad/s and must be > 0, got {omega_1!r}")
+        omega_1 = real(omega_1, "omega_1", unit="rad/s", lo=0.0, lo_open=True,
+                       hint="the crank speed in rad/s")          # the number policy: finite, 1e-100 … 1e100
         lk = self.linkage
         st = lk.solve(positions.phi, omega_1=float(omega_1), level=1,
                       labels=positions.index)

@@ -331,7 +331,7 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
     dims: list[Element] = []
     if guide is not None and pos.H is not None and g.ext is not None:
         end_xy = g.ext_pos.coords[parts.output][0] if g.ext_pos is not None else pos.coords[parts.output][g.ext.same_as]
-        text = nt.word("kinematics.stroke", H=nt.number(pos.H, sig=4), u=nt.unit("m"))
+        text = nt.word("kinematics.stroke", H=nt.number(pos.H * 1000.0, sig=4), u=nt.unit("mm"))   # a dimension: mm
         dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
         dims.append(dim)
         occ.register(dim)
