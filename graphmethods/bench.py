@@ -680,6 +680,43 @@ def bench_calculus(ms=(6, 12, 24, 48, 96), *, repeat=3) -> list[Row]:
     return rows
 
 
+# --------------------------------------------------------------------- cams
+def bench_cam(*, n: int = 3600, repeat: int = 5) -> list[Row]:
+    """The cam of the contract's example (offset roller, cycloidal rise, harmonic return): the profile by
+    inversion at ``n`` points with its envelope (target under 5 ms; error: the envelope's distance to the
+    pitch point less the roller radius), the designed base radius (error against a direct minimisation on a
+    grid of 4·10⁵ angles per phase) and the whole design; the chord integration's error in s on the sheet."""
+    from graphmethods.kinematics.cam import EXAMPLE, cam_from_dict, design
+    from graphmethods.kinematics.cam.design import _design_translating
+    from graphmethods.sheets.cam_diagrams import construction
+
+    p = cam_from_dict(EXAMPLE)
+    cam = design(p)
+    phi = np.linspace(0.0, 360.0, n, endpoint=False)
+    t_prof = median_time(lambda: cam.state(phi), repeat=repeat)
+    st = cam.state(phi)
+    env = float(np.abs(np.hypot(*(st.pitch - st.profile).T) - p.roller_radius).max())
+    rows = [Row("cam", "example cam: profile by inversion + roller envelope", "closed form, vectorised", n, t_prof,
+                env, note="error: | |B − profile| − r_r | (m)", target="≤ 5 ms", holds=t_prof <= 5e-3)]
+    best = -np.inf
+    for ph in p.phases:
+        if ph.kind != "dwell":
+            lim = p.alpha_max_deg if ph.kind == "rise" else p.alpha_return_max_deg
+            s, s1, _, _ = ph.values(np.linspace(0.0, 1.0, 400_001))
+            best = max(best, float(np.max(np.abs(s1 - p.offset) / math.tan(math.radians(lim or 30.0)) - s)))
+    direct = math.hypot(best, p.offset)
+    t_r0 = median_time(lambda: _design_translating(p), repeat=repeat)
+    rows.append(Row("cam", "example cam: designed base radius r₀", "grid + golden sections per phase", None, t_r0,
+                    abs(_design_translating(p) - direct) / direct, note="against a dense grid (4·10⁵ per phase)"))
+    rows.append(Row("cam", "example cam: the whole design (r₀, α_max, ρ_min, impacts)", "design()", None,
+                    median_time(lambda: design(p), repeat=max(1, repeat // 2))))
+    for n_div in (4, 8, 16):
+        con = construction(cam, n_div, mu_phi=math.radians(1.5), mu_a=4e-4, room_mm=1e9, fit_v=60.0, fit_s=120.0)
+        rows.append(Row("cam", "example cam: s by chords from d²s/dφ²", "method of chords, twice", len(con.nodes),
+                        None, con.error_s / p.stroke, note="largest |s − s_exact| at the nodes over h"))
+    return rows
+
+
 # --------------------------------------------------------------------- a whole sheet
 def bench_sheet(*, repeat=5) -> list[Row]:
     """The 12-position study of the press with its A1 dynamic-analysis sheet, as SVG, in-process."""
@@ -989,6 +1026,7 @@ SECTIONS: dict[str, Callable[..., list[Row]]] = {
     "gallery": bench_gallery,
     "motion": bench_motion,
     "fixed": bench_fixed_costs,
+    "cam": bench_cam,
 }
 
 #: Arguments of each section for --quick (CI): small sizes, few repeats.
@@ -1004,6 +1042,7 @@ QUICK: dict[str, dict[str, Any]] = {
     "gallery": dict(repeat=3),
     "motion": dict(rtols=(1e-8,), repeat=1),
     "fixed": dict(repeat=3, n_time=10**4, n_memory=None, processes=False),
+    "cam": dict(repeat=3),
 }
 
 

@@ -33,6 +33,7 @@ COMMANDS = {
     "bench": ("bench", "measure speed against error (Markdown table and JSON)"),
     "motion": ("motion", "motion from given initial conditions: start-up, steady running, run-down"),
     "drive": ("drive", "a drive of several masses reduced to one shaft: J', c', natural frequencies"),
+    "cam": ("cam", "cam mechanism: base radius from the pressure angle, motion, profile, the A1 cam sheet"),
     "steps": ("steps", "a construction step by step for a lecture: PDF slides, SVG frames, animation, HTML page"),
 }
 

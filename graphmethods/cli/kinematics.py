@@ -226,7 +226,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
             cols[f"omega_{k}"] = plan.omega(link)
             units[f"omega_{k}"] = "rad/s"
     for name in motion.points:            # accelerations: sliders signed along their guide, others |a|
-        if name in set(case.linkage.ground) or name in fixed or name.startswith("_"):
+        if name in set(case.linkage.ground) or name in fixed:
             continue
         a = np.asarray(motion.a_[name])
         guide = mech.guides.get(name)
@@ -279,6 +279,21 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
     return out
 
 
+def _columns(res: dict, keys: list[str]) -> list[str]:
+    """One table of the text output: a header of the keys with their units, a row per position."""
+    head = [k if k not in res["units"] else f"{k} [{res['units'][k]}]" for k in keys]
+    width = [max(10, len(h)) for h in head]
+    lines = ["  ".join(h.rjust(w) for h, w in zip(head, width))]
+    for row in res["positions"]:
+        cells = []
+        for k, w in zip(keys, width):
+            v = row[k]
+            cells.append(("-" if v is None else str(v)).rjust(w) if k == "position"
+                         else f"{v + 0.0 if abs(v) >= 5e-6 else 0.0:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
+        lines.append("  ".join(cells) + ("  ill-conditioned" if row["ill_conditioned"] else ""))
+    return lines
+
+
 def _drawn_columns(info, motion, cols: dict, units: dict, phi_deg=None) -> tuple[dict, list]:
     """A drawn file's link angles and slides over the positions; their flat columns added to ``cols``
     (``angle_k_deg``, ``v_rel_b/o``, ``a_rel_b/o``, ``a_cor_b/o`` its magnitude); the driver's angle as
@@ -305,21 +320,6 @@ def _drawn_columns(info, motion, cols: dict, units: dict, phi_deg=None) -> tuple
     return angles, slides
 
 
-def _columns(res: dict, keys: list[str]) -> list[str]:
-    """One table of the text output: a header of the keys with their units, a row per position."""
-    head = [k if k not in res["units"] else f"{k} [{res['units'][k]}]" for k in keys]
-    width = [max(10, len(h)) for h in head]
-    lines = ["  ".join(h.rjust(w) for h, w in zip(head, width))]
-    for row in res["positions"]:
-        cells = []
-        for k, w in zip(keys, width):
-            v = row[k]
-            cells.append(("-" if v is None else str(v)).rjust(w) if k == "position"
-                         else f"{v + 0.0 if abs(v) >= 5e-6 else 0.0:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
-        lines.append("  ".join(cells) + ("  ill-conditioned" if row["ill_conditioned"] else ""))
-    return lines
-
-
 def _text(res: dict) -> str:
     lines = [f"{res['case'] or res['kind']}  ({res['kind']}, {res['source']})",
              f"n = {res['n_rpm']:g} rev/min, ω₁ = {res['omega_1']:.6g} rad/s ({res['sense']}), "
@@ -339,8 +339,8 @@ def _text(res: dict) -> str:
     lines.append(f"accelerations (ε₁ = {res['epsilon_1']:g} rad/s²; a slider's along its guide, other points' "
                  f"magnitudes; ε counterclockwise +)")
     lines += _columns(res, ["position", "phi_deg", *second])
-    if res["m"] is not None and len(res["positions"]) == res["m"] + 1 and \
-            (res.get("driver") or {}).get("range_deg") is None:
+    if (res["m"] is not None and len(res["positions"]) == res["m"] + 1
+            and (res.get("driver") or {}).get("range_deg") is None):
         lines.append(f"position {res['m']} = position 0")
     return "\n".join(lines)
 

@@ -101,7 +101,10 @@ def run(args) -> int:
     if sheet is None and args.format is not None:
         raise InputError("--format is the sheet's file format; add -o FILE (or -o - for standard output)")
     refuse_two_on_stdout(args.json, sheet)
+    from graphmethods.kinematics.drawn import require_cycle
+
     case = builtin.case(args.case)
+    require_cycle(case, "the study")
     n_rpm = speed_rpm(args)
     from graphmethods.kinematics.drawn import require_cycle
 

@@ -817,11 +817,9 @@ class Linkage:
 
     def _find_toggle(self, samples: int) -> str | None:
         """The AssemblyError's message for the first group that reaches a toggle in a full turn (or in a
-        swinging driver's range, its ends included), or None."""
+        swinging driver's range), or None."""
         a0, span = (0.0, TWO_PI) if self.swing is None else (self.swing[0], self.swing[1] - self.swing[0])
         phi = a0 + np.linspace(0.0, span, samples, endpoint=self.swing is not None)
-        own = self._own_margins if self.swing is None else \
-            (lambda x: self._own_margins(np.clip(x, self.swing[0], self.swing[1])))
         try:
             if self.swing is not None:
                 self._check_swing_assembles(phi)
@@ -831,22 +829,26 @@ class Linkage:
             margins = [g.margin(st) for g in self.groups]
             scales = [float(np.max(np.abs(mg))) or 1.0 for mg in margins]
             centres = np.array([phi[int(np.argmin(mg))] for mg in margins])
-            x, smallest = _refine_minima(own, centres, span / samples)
+            x, smallest = _refine_minima(self._own_margins, centres, span / samples)
         except AssemblyError as exc:
             return str(exc)
         for k, g in enumerate(self.groups):
-            if smallest[k] <= 1e-12 * scales[k] and self.swing is not None:
+            if smallest[k] > 1e-12 * scales[k]:
+                continue
+            if self.swing is not None:
                 return (f"{self.name}: the driver's range reaches a toggle of group {g.name} at "
-                        f"φ = {math.degrees(float(np.clip(x[k], *self.swing))):.6g}° (its links come in line): the "
-                        f"assembly would jump; narrow range_deg to stay clear of it")
-            if smallest[k] <= 1e-12 * scales[k]:
-                return (f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x[k]) % 360:.6g}° "
-                        f"(its links come in line): the crank cannot turn through it on one branch, "
-                        f"the assembly would jump; change the lengths or study the range with phi=")
+                        f"φ = {math.degrees(x[k]):.6g}° (its links come in line): the assembly would jump; "
+                        f"narrow range_deg to stay clear of it")
+            return (f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x[k]) % 360:.6g}° "
+                    f"(its links come in line): the crank cannot turn through it on one branch, "
+                    f"the assembly would jump; change the lengths or study the range with phi=")
         return None
 
     def _own_margins(self, phi: np.ndarray) -> np.ndarray:
-        """Row k: group k's assembly margin at the angles of row k of ``phi`` (all rows in one solve)."""
+        """Row k: group k's assembly margin at the angles of row k of ``phi`` (all rows in one solve; a
+        swinging driver's angles held inside its range)."""
+        if self.swing is not None:
+            phi = np.clip(phi, self.swing[0], self.swing[1])
         st = self.solve(phi.reshape(-1), level=0)
         return np.stack([g.margin(st).reshape(phi.shape)[k] for k, g in enumerate(self.groups)])
 

@@ -43,6 +43,12 @@ DRAWN = {
     "drawn-six-bar-triad": "example_six_bar_triad.json",
 }
 
+#: cam problems: name -> ``"kind": "cam"`` problem file in ``graphmethods/problems/data`` (``graphmethods cam NAME``)
+CAMS = {
+    "shaper-cam": "shaper_feed_cam.json",
+    "oscillating-cam": "oscillating_roller_cam.json",
+}
+
 #: cycle problems: name -> function of :mod:`graphmethods.problems` that builds it
 CYCLES = {"W1": "w1", "W2": "w2", "W3": "w3", "W4": "w4_drawing", "W4-exact": "w4_exact"}
 
@@ -62,7 +68,7 @@ class BuiltinProblem:
 
 def names() -> list[str]:
     """Every built-in problem's name, cycle problems first."""
-    return [*CYCLES, *LINKAGES]
+    return [*CYCLES, *LINKAGES, *CAMS]
 
 
 def _key(name: str) -> str:
@@ -82,6 +88,9 @@ def listing() -> list[BuiltinProblem]:
     for name, file in LINKAGES.items():
         c = read_case(DATA / file)
         out.append(BuiltinProblem(name, c.kind, title_of(c).title_in("en")))
+    for name in CAMS:
+        cp = cam_problem(name)
+        out.append(BuiltinProblem(name, cp.kind, cp.title.title_in("en")))
     return out
 
 
@@ -105,6 +114,8 @@ def case_path(spec) -> pathlib.Path:
             return DATA / "drawn" / file
     if key in DRAWN:
         return DATA / "drawn" / DRAWN[key]
+    if key in CAMS:
+        raise InputError(f"{spec} is a cam problem: see `graphmethods cam {spec}`")
     if key in {_key(c) for c in CYCLES}:
         raise InputError(f"{spec} is a cycle problem (works, areas or moments), not a linkage: see "
                          f"`graphmethods examples` and `graphmethods check {spec} ANSWERS.toml`; linkage problems: "
@@ -183,3 +194,29 @@ def case(spec):
     if str(spec) == STDIN:
         return read_stdin_case()
     return read_case(case_path(spec))
+
+
+def cam_problem(spec):
+    """The cam problem of a ``"kind": "cam"`` file or a built-in cam name, read and checked
+    (:func:`graphmethods.kinematics.cam.read_cam`).
+
+    >>> cam_problem("shaper-cam").contact
+    'roller'
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is neither a file nor a built-in cam problem (the message names them).
+    """
+    from graphmethods.kinematics.cam import read_cam
+
+    p = pathlib.Path(str(spec))
+    if p.is_file():
+        return read_cam(p)
+    key = _key(spec)
+    if key in CAMS:
+        return read_cam(DATA / CAMS[key])
+    if p.exists():
+        raise InputError(f"{spec}: a folder, not a problem file")
+    raise InputError(f"{spec}: no such problem file, and not a built-in cam problem ({', '.join(CAMS)}; "
+                     f"see `graphmethods problems`)")
