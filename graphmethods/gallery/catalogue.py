@@ -497,15 +497,18 @@ CATALOGUE: tuple[Figure, ...] = (
        "plan with its construction lines, the equations under it, the table of vector lengths and ε of the links, "
        "English notation."),
     _F("triad_six_bar_structure_en", "case:triad-six-bar", "structure_diagram.structure_diagram", "en", {},
-       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, each apart to one scale with its outer pairs "
+       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, "
+       "each apart to one scale with its outer pairs "
        "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
        "English notation.", png=True),
     _F("triad_six_bar_structure_ru", "case:triad-six-bar", "structure_diagram.structure_diagram", "ru", {},
-       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, each apart to one scale with its outer pairs "
+       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, "
+       "each apart to one scale with its outer pairs "
        "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
        "Russian notation."),
     _F("triad_six_bar_structure_zh", "case:triad-six-bar", "structure_diagram.structure_diagram", "zh", {},
-       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, each apart to one scale with its outer pairs "
+       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, "
+       "each apart to one scale with its outer pairs "
        "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
        "Chinese notation."),
     _F("w1_energy_indicator_en", "cycle:w1", "energy.energy_indicator", "en", {},
