@@ -105,21 +105,12 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
             hh = float(r.h[i])
             info["h"] = _f(hh) if math.isfinite(hh) else None
         pairs[key] = info
-    loads = []                      # every external load at this position: the working load, weights, the file's
-    for k, forces in fa.applied.items():
-        for f in forces:
-            if f.label.startswith("F_i"):
-                continue
-            Fz, Mf = complex(f.F[i]), float(f.M[i])
-            if Fz != 0:
-                loads.append({"label": f.label, "link": int(k), "at": _v(complex(f.at[i])), "force": _v(Fz)})
-            if Mf != 0:
-                loads.append({"label": f.label, "link": int(k), "moment": _f(Mf)})
+    loads = _loads(fa, i)           # every external load at this position, the working load included
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
     drawn = getattr(case, "drawn", None)
     extra: dict[str, Any] = {}
     if drawn is not None:
-        extra = {"structure": drawn.structure.as_json(), "loads": _loads(fa, i)}
+        extra = {"structure": drawn.structure.as_json()}
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
@@ -147,9 +138,9 @@ def _loads(fa, i: int) -> list[dict[str, Any]]:
                 continue
             F, M = complex(f.F[i]), float(f.M[i])
             if F != 0:
-                out.append({"link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
+                out.append({"label": f.label, "link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
             if M != 0:
-                out.append({"link": int(link), "moment": _f(M)})
+                out.append({"label": f.label, "link": int(link), "moment": _f(M)})
     return out
 
 
@@ -190,16 +181,6 @@ def _text(res: dict[str, Any], lang: str) -> str:
               f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
-    if res.get("loads"):
-        lines += ["", nt.word("forces.external"),
-                  f"{nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  {'F_x [N]':>12}  {'F_y [N]':>12}  "
-                  f"{'M [N·m]':>12}"]
-        for ld in res["loads"]:
-            if "force" in ld:
-                (x, y), (fx, fy) = ld["at"], ld["force"]
-                lines.append(f"{ld['link']:>6}  {x:10.5f}  {y:10.5f}  {fx:12.3f}  {fy:12.3f}  {'-':>12}")
-            else:
-                lines.append(f"{ld['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {ld['moment']:12.4f}")
     diff = nt.word("forces.diff")
     lines += ["", nt.word("forces.balancing"),
               f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",
