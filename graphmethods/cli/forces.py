@@ -105,7 +105,16 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
             hh = float(r.h[i])
             info["h"] = _f(hh) if math.isfinite(hh) else None
         pairs[key] = info
-    loads = _loads(fa, i)           # every external load at this position, the working load included
+    loads = []                      # every external load at this position: the working load, weights, the file's
+    for k, forces in fa.applied.items():
+        for f in forces:
+            if f.label.startswith("F_i"):
+                continue
+            Fz, Mf = complex(f.F[i]), float(f.M[i])
+            if Fz != 0:
+                loads.append({"label": f.label, "link": int(k), "at": _v(complex(f.at[i])), "force": _v(Fz)})
+            if Mf != 0:
+                loads.append({"label": f.label, "link": int(k), "moment": _f(Mf)})
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
     drawn = getattr(case, "drawn", None)
     extra: dict[str, Any] = {}
@@ -125,23 +134,6 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
         "difference_power_percent": _f(fa.difference_percent(fa.M_balance_power)[i]),
         **extra,
     }
-
-
-def _loads(fa, i: int) -> list[dict[str, Any]]:
-    """Every external load acting at position i (the working load included): a force at its point, a moment."""
-    from graphmethods.dynamics.forces.problem import EXTERNAL
-
-    out: list[dict[str, Any]] = []
-    for link, forces in fa.applied.items():
-        for f in forces:
-            if not f.label.startswith(EXTERNAL):
-                continue
-            F, M = complex(f.F[i]), float(f.M[i])
-            if F != 0:
-                out.append({"label": f.label, "link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
-            if M != 0:
-                out.append({"label": f.label, "link": int(link), "moment": _f(M)})
-    return out
 
 
 def _text(res: dict[str, Any], lang: str) -> str:
