@@ -37,8 +37,9 @@ LINKAGE_FIGURES = ("kinematic_scheme", "velocity_plan_grid", "velocity_plan", "v
                    "work_diagrams")
 CYCLE_FIGURES = ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph", "work_diagrams")
 
-CASES = [(p, f) for p in builtin.names()
+CASES = [(p, f) for p in builtin.names() if p not in builtin.CAMS
          for f in (CYCLE_FIGURES if p in builtin.CYCLES else SHEETS + LINKAGE_FIGURES)]
+CASES += [(p, "cam_sheet") for p in builtin.CAMS]
 
 _cache: dict = {}
 
@@ -53,6 +54,8 @@ def subject(name):
 def draw(problem, figure, lang):
     """The scene of a figure, or None when the problem cannot have it (the refusal is tested elsewhere)."""
     try:
+        if figure == "cam_sheet":
+            return sheets.cam_sheet(builtin.cam_problem(problem), notation=lang)
         if figure == "force_analysis_sheet":
             return sheets.force_analysis_sheet(subject(problem), position=3, notation=lang)
         return getattr(sheets, figure)(subject(problem), notation=lang)
@@ -61,9 +64,15 @@ def draw(problem, figure, lang):
 
 
 def one_truth_faults(problem, figure, scene) -> list[str]:
-    """The hook for "one truth": the numbers a sheet prints against the command line's (lane truth fills it:
-    the dynamic sheet's M_d and J_F against ``study --json``). Nothing is checked here yet."""
-    return []
+    """"One truth": the numbers a sheet prints against the command line's: the dynamic sheet's M_d and
+    J_F against ``study --json`` (:func:`tests.test_one_truth.dynamic_sheet_truth_faults`)."""
+    if figure != "dynamic_analysis_sheet":
+        return []
+    try:
+        from test_one_truth import dynamic_sheet_truth_faults
+    except ImportError:                                 # run from the repository root as a package
+        from tests.test_one_truth import dynamic_sheet_truth_faults
+    return dynamic_sheet_truth_faults(problem, scene)
 
 
 @pytest.mark.parametrize("lang", LANGS)
