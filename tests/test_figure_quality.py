@@ -37,8 +37,9 @@ LINKAGE_FIGURES = ("kinematic_scheme", "velocity_plan_grid", "velocity_plan", "v
                    "work_diagrams")
 CYCLE_FIGURES = ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph", "work_diagrams")
 
-CASES = [(p, f) for p in builtin.names()
+CASES = [(p, f) for p in builtin.names() if p not in builtin.CAMS
          for f in (CYCLE_FIGURES if p in builtin.CYCLES else SHEETS + LINKAGE_FIGURES)]
+CASES += [(p, "cam_sheet") for p in builtin.CAMS]
 
 _cache: dict = {}
 
@@ -53,6 +54,8 @@ def subject(name):
 def draw(problem, figure, lang):
     """The scene of a figure, or None when the problem cannot have it (the refusal is tested elsewhere)."""
     try:
+        if figure == "cam_sheet":
+            return sheets.cam_sheet(builtin.cam_problem(problem), notation=lang)
         if figure == "force_analysis_sheet":
             return sheets.force_analysis_sheet(subject(problem), position=3, notation=lang)
         return getattr(sheets, figure)(subject(problem), notation=lang)

@@ -12,7 +12,7 @@ folder of scripts (each ``<name>.py`` defines ``build() -> Scene``) instead.
     graphmethods gallery --out gallery-out --dxf    # and DXF (1 unit = 1 mm, layers by role)
     graphmethods gallery --regenerate               # rewrite gallery/*.svg (and marked PNGs), from the project folder
 
-Heavy modules (the sheets, svgwrite, matplotlib) are imported only when the command runs.
+Heavy modules (the sheets, matplotlib) are imported only when the command runs.
 """
 
 from __future__ import annotations
@@ -117,7 +117,8 @@ def add_parser(sub) -> None:
                        "problems) into a folder, as scale-true SVG (optionally PNG).")
     p.add_argument("--dir", default=None,
                    help="build the scripts of this folder instead (each <name>.py defines build() -> Scene)")
-    p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
+    p.add_argument("-o", "--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
+    p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
     p.add_argument("--dxf", action="store_true",
@@ -126,6 +127,16 @@ def add_parser(sub) -> None:
                    help="in a source checkout: rewrite the committed golden SVGs in gallery/ (or in --dir), "
                         "and the PNGs of figures with PNG = True")
     p.set_defaults(func=run)
+
+
+def is_source_checkout(root: pathlib.Path) -> bool:
+    """True when ``root`` is graphmethods' own source folder: its pyproject.toml names the project and the
+    package lies beside it (a user's folder that merely has a ``gallery/`` is not one)."""
+    try:
+        text = (root / "pyproject.toml").read_text(encoding="utf-8", errors="replace")[:20_000]
+    except OSError:
+        return False
+    return 'name = "graphmethods"' in text and (root / "graphmethods" / "__init__.py").is_file()
 
 
 def run(args) -> int:
@@ -138,6 +149,10 @@ def run(args) -> int:
         if not out.is_dir():
             raise InputError(f"--regenerate rewrites the golden files of a source checkout: no folder {out} here; "
                              f"run it from the project folder")
+        if args.dir is None and not is_source_checkout(out.resolve().parent):
+            raise InputError(f"--regenerate rewrites the golden files of a source checkout, and {out.resolve().parent} "
+                             f"is none (no pyproject.toml of graphmethods beside graphmethods/); to build the "
+                             f"figures here use --out FOLDER")
     else:
         if args.out is not None and args.out.strip() == "":
             raise InputError("--out is empty; give a folder (it is created if missing)")
@@ -157,11 +172,14 @@ def run(args) -> int:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(existing[:3])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
+    from graphmethods.cli._progress import Progress
     from graphmethods.render import formats
     from graphmethods.render.files import write_set
 
     blobs, lines = {}, []
-    for name, module, targets in jobs:      # build every figure first: a failing script writes nothing
+    progress = Progress(quiet=args.quiet, label="gallery ")
+    for k, (name, module, targets) in enumerate(jobs, start=1):  # build every figure first: a failing script writes
+        progress(k, len(jobs), name)                              # nothing
         try:
             scene = build(module)
         except GraphmethodsError as exc:
@@ -173,6 +191,7 @@ def run(args) -> int:
         line = " and ".join([f"wrote {targets[0]}"] + [t.name for t in targets[1:]])
         scales = "; ".join(s.caption() for s in scene.scales())
         lines.append(line + (f"  ({scales})" if scales else ""))
+    progress.done()
     write_set(out, blobs, overwrite=overwrite, what="gallery folder")
     for line in lines:
         print(line, file=sys.stdout)

@@ -56,13 +56,14 @@ JUMP_SIDE = 1e-9        # rad either side of a switching position: the two ordin
 
 
 _T = TypeVar("_T")
+_S = TypeVar("_S", bound="Study")
 
 
-def _logged(fn: Callable[[Study], _T]) -> cached_property[_T]:
+def _logged(fn: Callable[[_S], _T]) -> cached_property[_T]:
     """A cached property that records its name in ``computed`` the one time it runs."""
     name = fn.__name__
 
-    def wrapper(self: Study) -> _T:
+    def wrapper(self: _S) -> _T:
         value = fn(self)
         self.computed.append(name)
         return value
@@ -324,6 +325,45 @@ class Study:
         """The exact flywheel for [δ] and its motion (the reference for the errors)."""
         return exact_flywheel(self.model, omega_m=self.omega_m, delta=self.delta)
 
+    def at_angles(self, phi_deg: ArrayLike) -> list[dict[str, float]]:
+        """The reduced quantities and the steady motion at given crank angles, as a textbook asks for them.
+
+        At each angle (degrees from +x, counterclockwise, as the problem file defines φ): J_e (kg·m²),
+        dJ_e/dφ (kg·m²/rad), M_d, M_r and M_e = M_d − M_r (N·m), the steady motion's ω (rad/s) and ε
+        (rad/s²) with the exact flywheel for [δ] (J_F = 0 when none is needed), and the powers
+        N_d = M_d·ω and N_r = M_r·ω (W). ω² = 2(T0 + ΔE(φ))/(J_F + J_e), ε = (M_e − ½ω² dJ_e/dφ)/(J_F + J_e).
+
+        Examples
+        --------
+        >>> from graphmethods.problems.builtin import case
+        >>> row = Study(case("press")).at_angles([30.0])[0]
+        >>> round(row["M_d"], 2), bool(row["omega"] > 0)
+        (143.43, True)
+        """
+        from graphmethods.dynamics.motion import _balanced_energy, periodic_motion
+
+        x = np.mod(np.asarray(phi_deg, dtype=float).ravel(), 360.0)
+        rot = self.mechanism.positions(phi=np.radians(x)).phi_from_start
+        try:
+            J_F = float(self.exact.J_F)
+        except NoFlywheelNeeded:
+            J_F = 0.0
+        model = self.model
+        steady = periodic_motion(model, J_F=J_F, omega_m=self.omega_m)
+        E = _balanced_energy(model, 1e-6)
+        dE = np.asarray(E(model.phi_0 + np.mod(rot - model.phi_0, model.phi_T)), dtype=float)
+        J_e = self._J_e_exact(rot)
+        dJ = model.dJ_e_at(rot) if hasattr(model, "dJ_e_at") else self._dJ_e_exact(rot)
+        M_d, M_r = self.moment_curves(rot)
+        M_e = M_d - M_r
+        J = J_F + J_e
+        omega = np.sqrt(2.0 * (steady.T0 + dE) / J)
+        eps = (M_e - 0.5 * omega**2 * dJ) / J
+        return [{"phi_deg": float(a), "phi_from_start_deg": float(np.degrees(r)), "J_e": float(je),
+                 "dJ_e_dphi": float(dj), "M_d": float(md), "M_r": float(mr), "M_e": float(me), "J_F": J_F,
+                 "omega": float(w), "epsilon": float(e), "N_d": float(md * w), "N_r": float(mr * w)}
+                for a, r, je, dj, md, mr, me, w, e in zip(x, rot, J_e, dJ, M_d, M_r, M_e, omega, eps)]
+
     # ----------------------------------------------------------------- report
     def to_markdown(self, *, exact: bool | None = None) -> str:
         """The study's results as a Markdown table (quantity, value, unit), as a notebook shows it.
@@ -455,3 +495,32 @@ def _fine_study(case: Case, m: int) -> Study:
     fine = Study.__new__(Study)
     fine.case, fine.m, fine.estimate, fine.computed = case, int(m), False, []
     return fine
+
+
+class AngleStudy(Study):
+    """A :class:`Study` whose positions are the linkage at given crank angles, not 0…m: the plans and
+    figures of a textbook's own crank angle.
+
+    Parameters
+    ----------
+    case : Case
+    phi_deg : sequence of float
+        Crank angles, degrees from +x, counterclockwise (as the problem file defines φ).
+
+    Examples
+    --------
+    >>> from graphmethods.problems.builtin import case
+    >>> s = AngleStudy(case("press"), [30.0, 120.0])
+    >>> s.positions.n
+    2
+    """
+
+    def __init__(self, case: Case, phi_deg: ArrayLike) -> None:
+        super().__init__(case, positions=3)
+        self.phi_angles: FloatArray = np.radians(np.asarray(phi_deg, dtype=float).ravel())
+        self.m = int(self.phi_angles.size)
+
+    @_logged
+    def positions(self) -> Positions:
+        """The linkage at the given crank angles."""
+        return self.mechanism.positions(phi=self.phi_angles)

@@ -13,7 +13,8 @@
 - graphical calculus (:mod:`~graphmethods.sheets.calculus`): :func:`kinematic_diagrams`, :func:`work_diagrams`;
 - the course project's A1 sheets: :func:`kinematic_analysis_sheet` (the first,
   :mod:`~graphmethods.sheets.kinematic_analysis_sheet`) and :func:`force_analysis_sheet` (the second,
-  :mod:`~graphmethods.sheets.force_analysis_sheet`).
+  :mod:`~graphmethods.sheets.force_analysis_sheet`); the cam sheet :func:`cam_sheet`
+  (:mod:`~graphmethods.sheets.cam_sheet`).
 
 Every function takes keyword scales (picked and captioned when not given) and ``notation="en"|"ru"|"zh"``.
 
@@ -26,6 +27,7 @@ Every function takes keyword scales (picked and captioned when not given) and ``
 
 from graphmethods.sheets.acceleration import acceleration_plan, acceleration_plan_grid, acceleration_table
 from graphmethods.sheets.calculus import kinematic_diagrams, work_diagrams
+from graphmethods.sheets.cam_sheet import cam_sheet
 from graphmethods.sheets.dynamics import (
                                           acceleration_graph,
                                           delta_T_graph,
@@ -43,7 +45,8 @@ from graphmethods.sheets.velocity_table import velocity_table
 from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, wittenbauer_diagram
 
 __all__ = [
-    "acceleration_graph", "acceleration_plan", "acceleration_plan_grid", "acceleration_table", "delta_T_graph",
+    "acceleration_graph", "acceleration_plan", "acceleration_plan_grid", "acceleration_table", "cam_sheet",
+    "delta_T_graph",
     "dynamic_analysis_sheet", "energy_graph", "energy_indicator",
     "excess_work_table", "force_analysis_sheet", "inertia_graph", "kinematic_analysis_sheet",
     "kinematic_diagrams", "kinematic_scheme", "moment_diagram",

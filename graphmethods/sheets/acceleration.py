@@ -100,12 +100,15 @@ class _Problem:
             self.omega_1, self.problem, self.n_rpm = (1.0 if omega_1 is None else float(omega_1)), "", None
             return
         lk = K._Linkage.of(obj, m=m, omega_1=omega_1)
+        self.phi = getattr(obj, "phi_angles", None)      # a study at given crank angles (AngleStudy)
         mech = lk.mech
         self.linkage = mech.linkage          # every mechanism is a linkage of the core
         self.m = 12 if lk.m is None else lk.m
         self.omega_1, self.problem, self.n_rpm = lk.omega_1, lk.problem, lk.n_rpm
 
     def plans(self) -> tuple[AccelerationPlan, ...]:
+        if getattr(self, "phi", None) is not None:
+            return acceleration_plans(self.linkage, phi=self.phi, omega_1=self.omega_1, epsilon_1=self.epsilon_1)
         if isinstance(self.m, bool) or not isinstance(self.m, (int, np.integer)) or self.m < 3:
             raise InputError(f"the number of positions m must be an integer ≥ 3, got {self.m!r}")
         return acceleration_plans(self.linkage, m=int(self.m), omega_1=self.omega_1, epsilon_1=self.epsilon_1)
@@ -332,12 +335,17 @@ def _acceleration_column(comps, pts: dict, head, s_a: Scale, eps: list[tuple[str
         L = math.dist(pts[c.start], pts[c.end])
         rows.append((image(c.start) + image(c.end), K._num(nt, L, 2),
                      f"{symbol(c.symbol)} = {K._num(nt, L * s_a.per_mm, 3)}"))
-    table = Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")
-    if table.top_right[0] > limit[0] + 1e-6 or table.bottom_left[1] > limit[1]:
+    tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")]
+    below = lay.after_table_mm + len(eps) * lay.line_mm                             # ε of the links under it
+    if tables[0].bottom_left[1] + below > limit[1] + 2 * lay.line_mm:   # a long table (a triad's): rows closer
+        room = limit[1] - at[1] - below
+        row = max(TABLE_MM * 1.7, room / (len(rows) + 0.5))
+        tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")]
+    if max(t.top_right[0] for t in tables) > limit[0] + 1e-6 or max(t.bottom_left[1] for t in tables) > limit[1]:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
-    wy = table.bottom_left[1] + lay.after_table_mm
-    return [table] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
-                      for i, (link, t) in enumerate(eps)]
+    wy = max(t.bottom_left[1] for t in tables) + lay.after_table_mm
+    return [*tables] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
+                        for i, (link, t) in enumerate(eps)]
 
 
 def acceleration_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,
@@ -375,7 +383,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     nt = get_notation(notation)
     lay = ACCELERATION_PLAN_LAYOUT
     plans = pr.plans()
-    k = _default_position(plans, pr.linkage) if position is None else _check_position(position, len(plans) - 1)
+    last = len(plans) - (1 if getattr(pr, "phi", None) is None else 0)     # at given angles: no repeated last one
+    k = _default_position(plans, pr.linkage) if position is None else _check_position(position, last)
     plan = plans[k]
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plan", k=str(k)),
                   problem=pr.problem if problem is None else problem, title_block=title_block)

@@ -205,11 +205,11 @@ def suppressed_base(lo: float, hi: float, scale: Scale, *, zero: bool | None = N
     """
     if zero is None:
         zero = not (lo > 0 and (hi - lo) < 0.35 * hi)
-    if zero:
+    if zero or not hi > lo:          # a constant (J_e of masses on the crank only): the axis from 0 shows it
         return 0.0
     ticks = nice_ticks(lo - (hi - lo), hi, scale, min_gap_mm=8.0)
     below = [t for t in ticks if t <= lo - 0.02 * (hi - lo)]
-    return float(below[-1]) if below else float(ticks[0])
+    return float(below[-1]) if below else (float(ticks[0]) if ticks else 0.0)
 
 
 # ----------------------------------------------------------------------------- the φ graph

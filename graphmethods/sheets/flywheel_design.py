@@ -119,13 +119,15 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     notation : {"en", "ru", "zh"}
     """
     nt = get_notation(notation)
+    if not hasattr(rim, "H") and disc is None:       # a disc alone (flywheel --disc without --rim)
+        rim, disc = None, rim
     sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.design_title"), problem=problem,
                        title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     lay = LAYOUT
     top = sheet.top + lay.top_mm
     bottom = sheet.caption_y - lay.bottom_mm
-    parts = [rim] + ([disc] if disc is not None else [])
+    parts = [p for p in (rim, disc) if p is not None]
     room_w = x1 - x0 - lay.table_mm - lay.gap_mm
     k = 1000.0 * float(mu_l) if mu_l is not None else drawing_scale(parts, room_w, bottom - top, lay)
     s_l = Scale("μ_l", nt.unit("m"), k / 1000.0, note=f"1 : {k:g}, the largest drawing scale that fits")
@@ -134,10 +136,10 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     widths = [_width(p) * 1000.0 / k + _dims_width(lay) for p in parts]
     spare = (room_w - sum(widths) - lay.gap_mm * (len(parts) - 1)) / (len(parts) + 1)
     x = x0 + max(spare, 0.0)
-    for p, w, key in zip(parts, widths, ("rim", "disc")):
+    for p, w in zip(parts, widths):
         centre = x + w / 2
         kind = "rim" if hasattr(p, "H") else "disc"
-        els += _section(p, kind, s_l, nt, centre, cy, top, name=key)
+        els += _section(p, kind, s_l, nt, centre, cy, top, name=kind)
         x += w + lay.gap_mm + max(spare, 0.0)
     els.append(Text((x0 + 2.0, sheet.top + 4.0), nt.word("flywheel.scale", k=f"{k:g}"), size_mm=TEXT_MM,
                     name="scale-note"))
@@ -148,7 +150,7 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
         els.append(Text((tx, top + table.height_mm + 6.0 + 4.5 * i), nt.word(f"flywheel.{key}"), size_mm=2.8,
                         name=f"hub-note-{i}"))
     verdicts = []
-    for p, key in zip(parts, ("rim", "disc")):
+    for p, key in zip(parts, ("rim", "disc") if rim is not None else ("disc",)):
         verdict = nt.word("flywheel.ok") if p.rim_speed <= p.speed_limit else nt.word("flywheel.over")
         verdicts.append(f"{nt.word(f'flywheel.{key}')}{nt.colon}{verdict}")
     els.append(Text((x0, sheet.caption_y - 7.0), nt.semicolon.join(verdicts), size_mm=TEXT_MM, name="verdict"))
@@ -216,7 +218,7 @@ def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, 
 def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     """The table: J, m, mD², D and B, ρ and the rim speed of each flywheel."""
     num = nt.number
-    head = ("", nt.word("flywheel.rim_short")) + ((nt.word("flywheel.disc_short"),) if len(parts) > 1 else ())
+    head = ("",) + tuple(nt.word("flywheel.rim_short" if hasattr(p, "H") else "flywheel.disc_short") for p in parts)
     rows: list[tuple[str, ...]] = [head]
 
     def row(label: str, f: Any) -> None:

@@ -708,7 +708,11 @@ def resolve_case(case):
     builtin = {"w1": problems.w1, "w2": problems.w2, "w3": problems.w3, "w4": problems.w4_drawing}
     if low in builtin:
         return builtin[low]()
+    if text == every.STDIN:                   # the problem file on standard input
+        return every.case(text)
     p = pathlib.Path(text)
+    if not p.is_file() and (low.startswith("drawn") and (low in every.DRAWN or low[6:] in every.LINKAGES)):
+        p = every.case_path(low)                 # the drawn form's worked files and drawn/NAME
     if not p.is_file():
         known = list(dict.fromkeys([*LINKAGES, *every.LINKAGES])) + list(CYCLES)
         raise InputError(f"case {text!r}: not a built-in problem ({', '.join(known)}) and no such file")
