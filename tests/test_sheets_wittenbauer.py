@@ -102,6 +102,11 @@ def check_rays(scene, res_J_F, prefix, tol=1e-3):
     return y_l - y_k
 
 
+def J_axis_from(scene, prefix=""):
+    """Where a diagram's J axis starts (its suppressed zero, kg·m²; 0 without one)."""
+    return float(scene.element(f"{prefix}axis-J").min_value)
+
+
 def mu(scene, symbol_start):
     return next(s for s in scene.scales() if s.symbol.startswith(symbol_start))
 
@@ -113,7 +118,7 @@ def test_rays_bound_the_curve_touch_it_and_kl_on_paper_gives_J_F(scenes, press):
     for fid, scene, prefix in scenes:
         kl = check_rays(scene, exact_kl.J_F, prefix)
         mu_T = next(s for s in scene.scales() if s.unit in ("J", "Дж")).per_mm
-        J_0 = scene.element(f"{prefix}axis-J").min_value     # where the drawn ordinate axis stands (0 on A4)
+        J_0 = scene.element(f"{prefix}axis-J").min_value     # where the drawn ordinate axis stands (J_0, or 0)
         J_F = kl * mu_T / (press.omega_m**2 * press.delta) - J_0
         assert J_F == pytest.approx(exact_kl.J_F, rel=1e-9), fid
         rec = record(scene)
@@ -240,7 +245,8 @@ def test_every_problem_file_draws_a_correct_sheet(name):
     check_rays(sheet, study.wittenbauer.J_F, "D-")
     diagram = wittenbauer_diagram(study, notation="zh")
     kl = check_rays(diagram, study.wittenbauer.J_F, "")
-    assert kl * mu(diagram, "μ_E").per_mm / (c.omega_m**2 * c.delta) == pytest.approx(study.wittenbauer.J_F, rel=1e-9)
+    assert kl * mu(diagram, "μ_E").per_mm / (c.omega_m**2 * c.delta) - J_axis_from(diagram) == pytest.approx(
+        study.wittenbauer.J_F, rel=1e-9)
 
 
 def ellipse(m=12, *, J0=2.0, dJ=0.4, T=300.0, lag=0.7):
@@ -261,7 +267,7 @@ def test_any_closed_curve_draws_correctly_and_J_F_does_not_depend_on_the_scales(
     scene = wittenbauer_diagram(res)
     kl = check_rays(scene, res.J_F, "")
     mu_T = mu(scene, "μ_T").per_mm
-    assert kl * mu_T / (omega**2 * delta) == pytest.approx(res.J_F, rel=1e-7, abs=1e-9 * J0)
+    assert kl * mu_T / (omega**2 * delta) - J_axis_from(scene) == pytest.approx(res.J_F, rel=1e-7, abs=1e-9 * J0)
 
 
 @pytest.mark.hard
@@ -272,7 +278,7 @@ def test_small_delta_puts_O1_hundreds_of_sheets_away_and_the_rays_still_bound(pr
     drawn = [r for r in scene.notes if r.startswith("J_F")]
     assert drawn
     kl = check_rays(scene, res.J_F, "")
-    assert kl * mu(scene, "μ_T").per_mm / (30.0**2 * 1e-3) == pytest.approx(res.J_F, rel=1e-9)
+    assert kl * mu(scene, "μ_T").per_mm / (30.0**2 * 1e-3) - J_axis_from(scene) == pytest.approx(res.J_F, rel=1e-9)
     x0, _, x1, _ = scene.page.inner_box()
     on_paper = wittenbauer(J_e=J, delta_T=dT, omega_m=30.0, delta=1e-3, mu_J=mu(scene, "μ_J").per_mm,
                            mu_T=mu(scene, "μ_T").per_mm, phi=phi)
@@ -313,7 +319,7 @@ def test_constant_J_e_gives_a_vertical_curve_and_the_delta_W_max_flywheel():
     scene = wittenbauer_diagram(res)
     kl = check_rays(scene, res.J_F, "")
     dW = float(dT.max() - dT.min())
-    J_F = kl * mu(scene, "μ_T").per_mm / (10.0**2 * 0.05)
+    J_F = kl * mu(scene, "μ_T").per_mm / (10.0**2 * 0.05) - J_axis_from(scene)
     assert J_F == pytest.approx(dW / (10.0**2 * 0.05) - 2.0, rel=1e-9)
     xs = curve_points(record(scene), "curve")[:, 0]
     assert np.ptp(xs) < 1e-9                                             # a vertical line
@@ -338,8 +344,8 @@ def test_textbook_tangents_draw_their_own_rays_and_the_other_J_F(press):
     study = Study(press, positions=12)
     book = wittenbauer_diagram(study, mu_J=0.005, mu_T=10.0, tangents="textbook")
     kl = check_rays(book, 0, "")
-    assert kl * 10.0 / (press.omega_m**2 * press.delta) == pytest.approx(study.wittenbauer.J_F_other_tangents,
-                                                                          rel=1e-9)
+    J_F = kl * 10.0 / (press.omega_m**2 * press.delta) - J_axis_from(book)
+    assert J_F == pytest.approx(study.wittenbauer.J_F_other_tangents, rel=1e-9)
     assert "(1 ± δ)" in " ".join(record(book).texts("result"))
 
 

@@ -32,7 +32,6 @@ from graphmethods.sheets.dynamics import (
     inertia_curve,
     phi_graph_elements,
     problem_text,
-    suppressed_base,
     turned_inertia_elements,
     value_text,
 )
@@ -47,8 +46,10 @@ from graphmethods.sheets.wittenbauer import (
     bold_bbox,
     diagram_data,
     diagram_elements,
+    inertia_scale,
     offset_origin,
     result_rows,
+    suppressed_zero,
     wide_rows,
 )
 
@@ -267,12 +268,12 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     x_L = x0 + lay.graphs_left_mm
     left_end = x_L + L_phi + lay.graphs_gap_mm
     probe_rows = wide_rows(result_rows(content.data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi),
-                                       J_0=1.0 if _suppressed_zero(content.J_lo, content.J_to) else 0.0))
+                                       J_0=1.0 if suppressed_zero(content.J_lo, content.J_to) else 0.0))
     table_w = _table(probe_rows, (0, 0)).width_mm
     J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), f"10⁻³ {nt.unit('kg·m²')}"),
                                      SMALL_MM + 0.5) + lay.J_name_extra_mm      # the name a small J_e takes
     room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
-    s_J, J_0 = _inertia_scale(mu_J, nt, content.J_lo, content.J_to, room_J)
+    s_J, J_0 = inertia_scale(mu_J, nt, content.J_lo, content.J_to, room_J)
     # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
     x_a_min = left_end + lay.diagram_gap_mm
     x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
@@ -384,30 +385,6 @@ def _ordinates_table(occ: Occupancy, content: SheetContent, nt: Notation, right:
             return [Text((box[0], box[1] - 2.0), heading, size_mm=TEXT_MM + 0.8, bold=True, name="heading-ordinates"),
                     Table((box[0], box[1]), tuple(rows), align="rrrrr", name="ordinates")]
     return []
-
-
-def _suppressed_zero(J_lo: float, J_hi: float) -> bool:
-    """Does the J axis start near J_e,min? When J_e varies by less than 35 % of its largest value."""
-    return J_lo > 0.0 and J_hi - J_lo < 0.35 * J_hi
-
-
-def _inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[Scale, float]:
-    """μ_J of the A1 sheet's diagram and where its J axis starts (0, or a suppressed zero J_0 > 0).
-
-    A J_e that varies by less than 35 % of its largest value (the rule of the φ graphs) gets its
-    axis from a round value below J_e,min, so the curve fills the width ``room_mm``; 20 mm and
-    2 % of it are kept for the step down to that value.
-
-    >>> from graphmethods.scene import notation
-    >>> s, J_0 = _inertia_scale(None, notation("en"), 0.0542, 0.0682, 200.0)
-    >>> s.per_mm, J_0, s.to_mm(0.0682 - J_0) <= 200.0
-    (0.0001, 0.053, True)
-    """
-    symbol, unit = nt.sym("dynamics.mu_J"), nt.unit("kg·m²")
-    if not _suppressed_zero(J_lo, J_hi):
-        return given_scale(mu_J, symbol, unit, J_hi, room_mm, what="the J_e axis"), 0.0
-    s_J = given_scale(mu_J, symbol, unit, J_hi - J_lo, 0.98 * room_mm - 20.0, what="the J_e axis")
-    return s_J, suppressed_base(J_lo, J_hi, s_J, zero=False)
 
 
 def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:

@@ -621,6 +621,8 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     data = W.diagram_data(source, tangents=tangents, notation=nt)
     s_T, s_J = _axis_scale(figure, "axis-T"), _axis_scale(figure, "axis-J")
     res = data.result(s_J.per_mm, s_T.per_mm)
+    J_0 = float(getattr(figure.element("axis-J"), "min_value", 0.0))   # its suppressed zero, as the A1 sheet's
+    res = W.offset_origin(res, J_0) if J_0 > 0.0 else res
     J, T = nt.sym("dynamics.J_e"), nt.sym("dynamics.dT")
 
     ray = {}

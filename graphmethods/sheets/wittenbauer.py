@@ -577,6 +577,48 @@ def _place_table(occ, rows, candidates, name="result") -> Table:
     return table
 
 
+def inertia_origin(J_lo: float, J_hi: float) -> float:
+    """The suppressed zero J_0 of a J_e varying little (kg·m²): a round value below J_e,min, the same on the
+    A1 sheet, the A4 diagram, the slides and the HTML stepper (it depends on J_e alone, not on a scale).
+
+    >>> inertia_origin(0.54395, 0.70344), inertia_origin(0.0516, 0.0552)
+    (0.5, 0.051)
+    """
+    span = J_hi - J_lo
+    raw = span / 4.0 if span > 1e-9 * abs(J_hi) else abs(J_hi) / 10.0     # a constant J_e: a tenth of it
+    k = math.floor(math.log10(raw))
+    step = min(m * 10.0**k for m in (1.0, 2.0, 2.5, 5.0, 10.0) if m * 10.0**k >= raw)
+    J_0 = math.floor(J_lo / step) * step
+    if J_0 > J_lo - 0.02 * span:
+        J_0 -= step
+    return float(f"{max(J_0, 0.0):.12g}")
+
+
+def suppressed_zero(J_lo: float, J_hi: float) -> bool:
+    """Does the J axis start near J_e,min? When J_e varies by less than 35 % of its largest value."""
+    return J_lo > 0.0 and 0.0 < J_hi - J_lo < 0.35 * J_hi          # a constant J_e: its axis from 0
+
+
+def inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[Scale, float]:
+    """μ_J of a Wittenbauer diagram and where its J axis starts (0, or a suppressed zero J_0 > 0).
+
+    A J_e that varies by less than 35 % of its largest value (the rule of the φ graphs) gets its
+    axis from a round value below J_e,min, so the curve fills the width ``room_mm``; 20 mm and
+    2 % of it are kept for the step down to that value.
+
+    >>> from graphmethods.scene import notation
+    >>> s, J_0 = inertia_scale(None, notation("en"), 0.0542, 0.0682, 200.0)
+    >>> s.per_mm, J_0, s.to_mm(0.0682 - J_0) <= 200.0
+    (0.0001, 0.052, True)
+    """
+    symbol, unit = nt.sym("dynamics.mu_J"), nt.unit("kg·m²")
+    if not suppressed_zero(J_lo, J_hi):
+        return given_scale(mu_J, symbol, unit, J_hi, room_mm, what="the J_e axis"), 0.0
+    s_J = given_scale(mu_J, symbol, unit, J_hi - J_lo, 0.98 * room_mm - 20.0, what="the J_e axis")
+    return s_J, inertia_origin(J_lo, J_hi)
+
+
+
 # ----------------------------------------------------------------------------- 1. the compact A4 figure
 
 def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact", notation="en", page=None,
@@ -617,15 +659,20 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
                        problem=data.problem if problem is None else problem, title_block=title_block,
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
-    J_to, T_hi, T_lo = data.extent()
+    J_lo = float(data.J_e.min())
+    J_0 = inertia_origin(J_lo, float(data.J_e.max())) if suppressed_zero(J_lo, float(data.J_e.max())) else 0.0
+    J_to, T_hi, T_lo = data.extent(J_0)         # the J axis from J_0, as on the A1 sheet; ΔT to k and l there
     probe_res = data.result(1.0, 1.0)
-    table_w = _table(compact_rows(result_rows(probe_res, nt)), (0, 0)).width_mm
+    table_w = _table(compact_rows(result_rows(probe_res, nt, J_0=J_0)), (0, 0)).width_mm
     ax_x = x0 + 22.0
     py0, py1 = sheet.top + 10.0, sheet.caption_y - 9.0
     avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
-    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to, avail_X, what="the J_e axis")
+    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to - J_0, avail_X - (20.0 if J_0 else 0.0),
+                      what="the J_e axis")
     s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
     res = data.result(s_J.per_mm, s_T.per_mm)
+    res = offset_origin(res, J_0) if J_0 > 0.0 else res
+    ax_x += 20.0 if J_0 else 0.0                # room for the step down to J_0 (the broken axis)
     origin = (ax_x, py0 + s_T.to_mm(T_hi))
     page_probe = sheet.probe
     clip = page_probe.inner_box()
@@ -635,9 +682,9 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     if tb is not None:
         avoid = ((x0 - 10.0, tb.at[1], clip[2], clip[3]),)
     els = diagram_elements(res, origin=origin, nt=nt, occ=sheet.occ, clip=clip, avoid=avoid, J_to=J_to,
-                           T_hi=T_hi, T_lo=T_lo, within=sheet.box)
+                           T_hi=T_hi, T_lo=T_lo, within=sheet.box, J_from=J_0)
     on_sheet = O1_on_sheet(res, origin, clip)
-    rows = compact_rows(result_rows(res, nt, on_sheet=on_sheet))
+    rows = compact_rows(result_rows(res, nt, on_sheet=on_sheet, J_0=J_0))
     w = _table(rows, (0, 0)).width_mm
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 40.0, 4.0)]
     cands += [(x, sheet.top) for x in np.arange(x1 - w, x0, -6.0)]

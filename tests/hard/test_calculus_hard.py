@@ -9,7 +9,6 @@ import pytest
 
 from graphmethods import problems
 from graphmethods.dynamics import graphical_calculus as gc
-from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.dynamics.study import Study
 from graphmethods.kinematics import SliderCrank, read_case
 from graphmethods.sheets import calculus
@@ -104,5 +103,7 @@ def test_very_few_intervals_m6():
         assert e6 > e12
     st = Study(case, positions=6)
     wd = gc.study_work_diagrams(st, mu_phi=PI / 90, mu_M=10.0)
-    assert abs(wd.closure) < 1e-9 and wd.A_r.accuracy.at_nodes > 1.0     # M_r drawn from 6 points errs
-    assert MomentCurve.points(st.phi, st.M_r).work() == pytest.approx(wd.A_r.values[-1])
+    # M_r is drawn as the course draws it (its ordinates, the load's jumps at the switching positions, the
+    # smooth curve between): even from 6 points its work at the nodes is the exact one to a fraction of a joule
+    assert abs(wd.closure) < 1e-9 and wd.A_r.accuracy.at_nodes < 1.0
+    assert st.moments[1].work() == pytest.approx(wd.A_r.values[-1])
