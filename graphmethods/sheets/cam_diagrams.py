@@ -51,14 +51,15 @@ def segment(points: Sequence[tuple[float, float]], style: Style, *, name: str) -
     return Line(points[0], points[1], style, name=name)
 
 
-def heading(box: Box, text: str, occ: Occupancy, name: str) -> tuple[list[Element], float]:
-    """A panel's heading at its top left, wrapped to its width; the elements and the y below it (mm)."""
+def heading(box: Box, text: str, occ: Occupancy, name: str, *, share: float = 0.9) -> tuple[list[Element], float]:
+    """A panel's heading at its top left, wrapped to ``share`` of its width; the elements and the y below it
+    (mm)."""
     from graphmethods.sheets.calculus import _wrap
 
     x0, y0, x1, _ = box
     out: list[Element] = []
     y = y0
-    for k, line in enumerate(_wrap(text, 0.9 * (x1 - x0), HEAD_MM)):
+    for k, line in enumerate(_wrap(text, share * (x1 - x0), HEAD_MM)):
         y += HEAD_MM * (1.0 if k == 0 else 1.3)
         out.append(Text((x0, y), line, size_mm=HEAD_MM, bold=True, name=f"{name}-title-{k + 1}"))
         occ.add_label(make_label((x0, y), line, size_mm=HEAD_MM, bold=True))
