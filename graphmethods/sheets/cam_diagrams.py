@@ -46,6 +46,19 @@ POLE_ROOM_MM = 45.0
 VALUE_AXIS_MM = 14.0
 
 
+def register_ink(occ: Occupancy, *elements: Element) -> None:
+    """Register everything the elements draw, circles (points, rollers) as 48-gons, so labels keep off it."""
+    from graphmethods.scene.primitives import Circle, walk
+
+    occ.register(*elements)
+    for e in elements:
+        for prim in walk(e.primitives()):
+            if isinstance(prim, Circle):
+                t = np.linspace(0.0, 2 * math.pi, 49)
+                xs, ys = prim.cx + prim.r * np.cos(t), prim.cy + prim.r * np.sin(t)
+                occ.add_line(list(zip(xs.tolist(), ys.tolist())))
+
+
 def segment(points: Sequence[tuple[float, float]], style: Style, *, name: str) -> Line:
     """A :class:`Line` between the first two of ``points`` (mm)."""
     return Line(points[0], points[1], style, name=name)
@@ -186,7 +199,7 @@ def band_elements(band: Band, occ: Occupancy, nt: Notation, *, label: str, name:
         for i, m in enumerate(means):
             els.append(Line(P, (band.x0, band.y0 - m / band.mu_y.per_mm), RAY, name=f"{name}-ray-{i}"))
         els.append(Point(P, radius_mm=0.8, name=f"{name}-pole"))
-    occ.register(*els)
+    register_ink(occ, *els)
     if integral is not None:
         P = (band.x0 - integral.H_mm, band.y0)
         text = nt.word("cam.pole", k=k, value=nt.number(integral.H_mm, sig=3))
@@ -352,7 +365,7 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
              segment(P(np.array([0.0, 0.0]), np.array([y_lo, y_hi])), THIN, name="c-follower-line"),
              segment(P(np.array([x_min, x_max]), np.array([0.0, 0.0])), THIN, name="c-zero"),
              Line(O, P(0.0, 0.0)[0], LEVEL, name="c-r0"), Point(O, radius_mm=1.0, name="c-O")]
-    occ.register(*body)
+    register_ink(occ, *body)
     els += body
     r0 = f"O: {nt.sym('cam.r_0')} = {nt.number(cam.pitch_base_radius, sig=4)} {nt.unit('m')}"
     lab, leader = occ.place_label_with_leader(O, r0, ("e", "w", "ne", "nw", "se", "sw", "n"), size_mm=TEXT_MM,
@@ -411,7 +424,7 @@ def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, lim
         body.append(segment(band.pt(np.array([0.0, 2 * math.pi]), np.array([v, v])), LEVEL, name=f"{name}-lim-{k}"))
     y_bot = band.y0 - mu_y.to_mm(lo)
     body += [_phi_axis(band, y_bot + 6.5, nt, name), _value_axis(band, nt, label, name)]
-    occ.register(*body)
+    register_ink(occ, *body)
     return els + body, mu_y
 
 

@@ -53,6 +53,7 @@ from graphmethods.sheets.cam_diagrams import (
     motion_column,
     nodes,
     positions_table,
+    register_ink,
     rho_graph,
     segment,
 )
@@ -205,16 +206,11 @@ def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     els += [Point(q, radius_mm=0.7, name=f"B-{i}") for i, q in enumerate(P(geo.pitch_k))]
     els += _follower_at_zero(cam, geo, P, mu)
     els.append(Point((cx, cy), radius_mm=1.0, name="O"))
-    occ.register(*els)
-    for e in els:
-        if isinstance(e, Circles):
-            for x, y, r in e.circles:
-                t = np.linspace(0.0, 2 * math.pi, 49)
-                occ.add_line(list(zip((x + r * np.cos(t)).tolist(), (y + r * np.sin(t)).tolist())))
-    els += _alpha_mark(cam, P, occ, nt, box)
-    els += _numbers(P(geo.pitch_k), (cx, cy), occ, box)
+    register_ink(occ, *els)
     lab = occ.place_label((cx, cy), "O", ("sw", "se", "nw", "ne", "s", "w"), size_mm=TEXT_MM, within=box)
     els.append(Text((lab.x, lab.y), "O", size_mm=TEXT_MM, anchor=lab.anchor, name="O-name"))
+    els += _alpha_mark(cam, P, occ, nt, box)
+    els += _numbers(P(geo.pitch_k), (cx, cy), occ, box)
     return head + els, mu
 
 
@@ -261,7 +257,7 @@ def _alpha_mark(cam: CamDesign, P: Any, occ: Occupancy, nt: Notation, box: Box) 
     rad = np.array([math.radians(f)] * 2)
     out: list[Element] = [segment(P(_rot(np.array([B, B + L * n]), rad, p.sense)), THIN, name="alpha-normal"),
                           segment(P(_rot(np.array([B, B + L * u]), rad, p.sense)), DASHED, name="alpha-velocity")]
-    occ.register(*out)
+    register_ink(occ, *out)
     text = nt.word("cam.alpha_max", sym=nt.sym("cam.alpha"), value=nt.number(a, sig=4))
     at = P(_rot(np.array([B + 0.6 * L * (n + u) / 2]), rad[:1], p.sense))[0]
     lab, leader = occ.place_label_with_leader(at, text, ("ne", "nw", "se", "sw", "e", "w"), size_mm=TEXT_MM,
