@@ -889,6 +889,131 @@ def plot_error_vs_time(rows: list[Row], path) -> None:
     plt.close(fig)
 
 
+# --------------------------------------------------------------------- fixed costs (issue 30)
+#: targets of the fixed-cost rows: ratios to their yardstick, from interleaved runs
+FIXED_TARGETS = {"gallery": 20.0, "pdf": 1.25, "fresh_flywheel": 1.25, "core_time": 3.0, "core_memory": 1.8,
+                 "class_page": 0.2}
+
+
+def _process(*args: str, cwd: str | None = None) -> Callable[[], object]:
+    """A command in a fresh interpreter (``python ARGS``), its output kept from the terminal."""
+    return lambda: subprocess.run([sys.executable, *args], check=True, capture_output=True, cwd=cwd)
+
+
+def _fixed_processes(repeat: int, gallery_repeat: int, variants: int) -> list[Row]:
+    """Whole commands as a teacher types them, each in interleaved pairs with its yardstick."""
+    import tempfile
+
+    from graphmethods import gallery
+
+    numpy = _process("-c", "import numpy")
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        cli = ("-m", "graphmethods")
+        n = len(gallery.figure_names())
+        pair = paired(_process(*cli, "gallery", "--out", f"{tmp}/gallery", "--force"), numpy, repeat=gallery_repeat)
+        limit = FIXED_TARGETS["gallery"]
+        rows.append(Row("fixed costs", f"gallery, {n} figures", "graphmethods gallery (fresh process) / python -c "
+                        "'import numpy'", n, pair.a, None, note=f"{1000 * pair.a / n:.0f} ms a figure",
+                        extra={"ratio": pair.ratio, "import numpy, s": pair.b}, target=f"≤ {limit:g}× import numpy",
+                        holds=pair.ratio <= limit))
+        sheet = (*cli, "study", "press", "--no-exact", "--force", "--sheet")
+        pair = paired(_process(*sheet, f"{tmp}/sheet.pdf"), _process(*sheet, f"{tmp}/sheet.svg"), repeat=repeat)
+        limit = FIXED_TARGETS["pdf"]
+        rows.append(Row("fixed costs", "press A1 dynamic-analysis sheet", "as PDF / as SVG (fresh processes)", None,
+                        pair.a, None, extra={"ratio": pair.ratio, "SVG, s": pair.b}, target=f"≤ {limit:g}× the SVG",
+                        holds=pair.ratio <= limit))
+        pair = paired(_process(*cli, "kinematics", "press", "--force", "--sheet", f"{tmp}/k.pdf"), numpy,
+                      repeat=repeat)
+        rows.append(Row("fixed costs", "kinematics press --sheet x.pdf", "fresh process / python -c 'import numpy'",
+                        None, pair.a, None, extra={"ratio": pair.ratio}))
+        pages = 2 * variants
+        limit = FIXED_TARGETS["class_page"]
+        pair = paired(_process(*cli, "worksheet", "acceleration-plan", "--variants", str(variants), "--seed", "7",
+                               "--out", f"{tmp}/class", "--force", "--quiet"), numpy, repeat=max(1, repeat // 2))
+        rows.append(Row("fixed costs", f"acceleration-plan class set, {variants} variants",
+                        "graphmethods worksheet (fresh process), a page / python -c 'import numpy'", pages,
+                        pair.a / pages, None, note=f"{pair.a:.2f} s for {pages} pages (PDF + SVG + problem files)",
+                        extra={"ratio": pair.ratio / pages}, target=f"a page ≤ {limit:g}× import numpy",
+                        holds=pair.ratio / pages <= limit))
+    return rows
+
+
+def _fresh_press_flywheel(repeat: int) -> list[Row]:
+    """The exact flywheel of the press read from its file afresh (the first time in a process: the geometry
+    cache emptied) against the independent scipy solver on the same file."""
+    from graphmethods.kinematics import linkage, read_case
+    from graphmethods.problems import builtin
+
+    path = builtin.DATA / builtin.LINKAGES["press"]
+
+    def fresh() -> float:
+        from graphmethods.dynamics.study import Study
+
+        linkage._GEOMETRY.clear()
+        return float(Study(read_case(path)).exact.J_F)
+
+    try:
+        from graphmethods.bench_reference import press_flywheel
+
+        data = json.loads(path.read_text(encoding="utf-8"))
+        reference: Callable[[], object] = functools.partial(press_flywheel, data)
+        J_ref = float(press_flywheel(data))
+    except ImportError:
+        return [Row("fixed costs", "press read afresh", "exact J_F", None, median_time(fresh, repeat=repeat), None,
+                    note="the scipy reference needs pip install 'graphmethods[bench]'")]
+    J = fresh()
+    pair = paired(fresh, reference, repeat=max(repeat, 3))
+    limit = FIXED_TARGETS["fresh_flywheel"]
+    return [Row("fixed costs", "press read afresh", "exact J_F (file read, linkage built, dead centres found) / "
+                "the scipy solver", None, pair.a, abs(J - J_ref) / abs(J_ref),
+                extra={"ratio": pair.ratio, "scipy, s": pair.b}, target=f"≤ {limit:g}× the scipy solver",
+                holds=pair.ratio <= limit)]
+
+
+def _slider_crank_core(n_time: int, n_memory: int | None, repeat: int) -> list[Row]:
+    """The slider-crank press's p, v, a (and ω₂, ε₂) by the core against the hand-written closed form: time
+    at ``n_time`` positions, peak memory at ``n_memory``."""
+    from graphmethods.problems import builtin
+
+    press = builtin.case("press").linkage
+    d = _press_data()
+    w, e = 10.0, 3.0
+
+    def closed(phi: np.ndarray) -> Any:
+        return slider_crank_closed_form(phi, w, e, r=d["r"], l=d["l"], e=d["e"], l_AS2=d["l_AS2"])
+
+    phi = np.linspace(0.0, 2 * math.pi, n_time, endpoint=False)
+    mo = press.motion(phi=phi, omega_1=w, epsilon_1=e)
+    pair = paired(lambda: press.motion(phi=phi, omega_1=w, epsilon_1=e), lambda: closed(phi),
+                  repeat=max(repeat, min(50, int(2e6 // n_time))))
+    limit = FIXED_TARGETS["core_time"]
+    rows = [Row("fixed costs", "slider-crank press", "core: Linkage.motion(phi=) (p + v + a) / closed form", n_time,
+                pair.a, _press_error(mo, closed(phi)), extra={"ratio": pair.ratio, "closed form, s": pair.b},
+                target=f"≤ {limit:g}× closed form", holds=pair.ratio <= limit)]
+    if n_memory:
+        phi = np.linspace(0.0, 2 * math.pi, n_memory, endpoint=False)
+        core = _peak_bytes(lambda: press.motion(phi=phi, omega_1=w, epsilon_1=e))
+        hand = _peak_bytes(lambda: closed(phi))
+        limit = FIXED_TARGETS["core_memory"]
+        rows.append(Row("fixed costs", "slider-crank press", "core: peak memory / closed form", n_memory, None, None,
+                        note=f"{core / 2**20:.0f} MiB against {hand / 2**20:.0f} MiB", extra={"ratio": core / hand},
+                        target=f"≤ {limit:g}× closed form", holds=core <= limit * hand))
+    return rows
+
+
+def bench_fixed_costs(*, repeat: int = 5, gallery_repeat: int = 3, variants: int = 30, n_time: int = 10**5,
+                      n_memory: int | None = 10**6, processes: bool = True) -> list[Row]:
+    """What a teacher waits for, each against a yardstick in interleaved runs (issue 30): the whole gallery and
+    an A1 sheet as PDF (fresh processes, against ``python -c "import numpy"`` and the same sheet as SVG), a
+    class set a page, the exact flywheel of the press read afresh (against the scipy solver), and the
+    slider-crank core's time and peak memory (against the hand-written closed form)."""
+    rows = _fixed_processes(repeat, gallery_repeat, variants) if processes else []
+    rows += _fresh_press_flywheel(repeat)
+    rows += _slider_crank_core(n_time, n_memory, repeat)
+    return rows
+
+
 SECTIONS: dict[str, Callable[..., list[Row]]] = {
     "flywheel": bench_flywheel,
     "kinematics": bench_kinematics,
@@ -900,6 +1025,7 @@ SECTIONS: dict[str, Callable[..., list[Row]]] = {
     "startup": bench_startup,
     "gallery": bench_gallery,
     "motion": bench_motion,
+    "fixed": bench_fixed_costs,
     "cam": bench_cam,
 }
 
@@ -915,6 +1041,7 @@ QUICK: dict[str, dict[str, Any]] = {
     "startup": dict(repeat=3),
     "gallery": dict(repeat=3),
     "motion": dict(rtols=(1e-8,), repeat=1),
+    "fixed": dict(repeat=3, n_time=10**4, n_memory=None, processes=False),
     "cam": dict(repeat=3),
 }
 

@@ -69,6 +69,9 @@ MAX_VARIANTS = 1000
 DELTA_MAX = 1.0
 #: Deepest nesting a JSON input may have (problem files are two levels deep).
 MAX_JSON_DEPTH = 100
+#: Largest file a reader takes (problem, answers, CSV, SVG, DXF), bytes: a drawing of a course sheet is a
+#: few MB; checked before reading.
+MAX_INPUT_BYTES = 64 * 1024 * 1024
 
 
 def _shown(value: object) -> str:
@@ -195,7 +198,7 @@ def count(value: object, name: str, *, low: int, high: int, why: str = "") -> in
         raise InputError(f"{name} = {value!r} must be {limit}")
     if isinstance(value, str):
         s = value.strip()
-        if not s.lstrip("+-").isdigit() or len(s) > 30:
+        if not (s.lstrip("+-").isdigit() and s.isascii()) or len(s) > 30:     # "²" is a digit, no number
             raise InputError(f"{name} = {_shown(value)} must be {limit}")
         value = int(s)
     if isinstance(value, Integral):
@@ -302,29 +305,84 @@ def check_text(value: str, name: str) -> str:
         value.encode("utf-8")
     except UnicodeEncodeError as exc:
         bad = value[exc.start]
+        if "\udc80" <= bad <= "\udcff":     # a byte of a command line or file name that is not UTF-8
+            raise InputError(f"{name}: the text holds the byte 0x{ord(bad) - 0xDC00:02x}, which is not UTF-8 (at "
+                             f"position {exc.start}); write it in UTF-8") from None
         raise InputError(f"{name}: the text holds {bad!a}, half of a UTF-16 surrogate pair and not a character "
                          f"(at position {exc.start}); write the character itself") from None
     return value
 
 
+def input_file(path: str | os.PathLike[str], *, missing: str = "no such file", prefix: str = "",
+               limit: int | None = None) -> int:
+    """Check a user's file before anything reads it: it exists, is a regular file (not ``/dev/zero``, a FIFO,
+    a socket or a folder) and holds at most ``limit`` bytes (default :data:`MAX_INPUT_BYTES`); its size.
+
+    >>> input_file("/dev/zero")
+    Traceback (most recent call last):
+    ...
+    graphmethods.errors.InputError: /dev/zero: not a regular file (a device, a pipe or a folder); give a file
+    """
+    import pathlib
+    import stat
+
+    p = pathlib.Path(path)
+    cap = MAX_INPUT_BYTES if limit is None else limit
+    try:
+        st = os.stat(p)
+    except FileNotFoundError:
+        raise InputError(f"{prefix}{p}: {missing}") from None
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{prefix}{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise InputError(f"{prefix}{p}: not a regular file (a device, a pipe or a folder); give a file")
+    if st.st_size > cap:
+        raise InputError(f"{prefix}{p}: {st.st_size} bytes, more than the {cap} bytes an input file may hold "
+                         f"(MAX_INPUT_BYTES)")
+    return int(st.st_size)
+
+
+def read_bytes(path: str | os.PathLike[str], *, missing: str = "no such file", prefix: str = "",
+               limit: int | None = None) -> bytes:
+    """The bytes of a user's file, read only after :func:`input_file` has passed it, and never more than
+    ``limit`` bytes (a file that grows while read is refused too).
+
+    >>> read_bytes("/no/such/drawing.svg", missing="no such drawing")
+    Traceback (most recent call last):
+    ...
+    graphmethods.errors.InputError: /no/such/drawing.svg: no such drawing
+    """
+    cap = MAX_INPUT_BYTES if limit is None else limit
+    input_file(path, missing=missing, prefix=prefix, limit=cap)
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(cap + 1)
+    except FileNotFoundError:
+        raise InputError(f"{prefix}{path}: {missing}") from None
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{prefix}{path}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+    if len(data) > cap:
+        raise InputError(f"{prefix}{path}: more than the {cap} bytes an input file may hold (MAX_INPUT_BYTES)")
+    return data
+
+
 def read_text(path: str | os.PathLike[str], *, missing: str = "no such file", prefix: str = "") -> str:
-    """The UTF-8 text of a user's file, or one :class:`InputError` line: ``{prefix}{path}: {missing}``
-    when it does not exist, ``{prefix}{path}: cannot read it (...)`` when it cannot be read.
+    """The UTF-8 text of a user's file (a byte-order mark, as Excel and Notepad write it, dropped), or one
+    :class:`InputError` line: ``{prefix}{path}: {missing}`` when it does not exist, ``{prefix}{path}: cannot
+    read it (...)`` when it cannot be read, a refusal when it is no regular file or too large
+    (:func:`read_bytes`).
 
     >>> read_text("/no/such/answers.toml", missing="no such answers file")
     Traceback (most recent call last):
     ...
     graphmethods.errors.InputError: /no/such/answers.toml: no such answers file
     """
-    import pathlib
-
-    p = pathlib.Path(path)
+    data = read_bytes(path, missing=missing, prefix=prefix)
     try:
-        return p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{prefix}{p}: {missing}") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{prefix}{p}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+        return data.decode("utf-8").removeprefix("\ufeff")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{prefix}{path}: not UTF-8 text (byte {exc.start}: {data[exc.start:exc.start + 1]!r}); "
+                         f"save it as UTF-8") from None
 
 
 def json_value(text: str, source: str) -> Any:

@@ -269,7 +269,8 @@ def test_text_markdown_and_json_say_the_same():
     r = ck.check("W1", ANSWERS / "w1_mistakes.toml")
     text, md, js = r.to_text(), r.to_markdown(), json.loads(r.to_json())
     assert "n (rev/min) used as ω (rad/s): J_F" in text and "Result:" in text
-    assert md.startswith("### Check of W1") and "| arrow c–d | -20 | 20 |" in md and "**wrong (sign_flipped)**" in md
+    assert md.startswith("### Check of W1") and "| arrow c–d | -20 | 20 |" in md
+    assert "**wrong: sign flipped in the staircase**" in md and "carried over" in text      # verdicts in words
     assert js["ok"] is False and [m["code"] for m in js["mistakes"]] == ["sign_flipped", "delta_not_halved",
                                                                          "n_as_omega"]
     assert {i["key"]: i["verdict"] for i in js["items"]}["results.delta_W_max"] == "carried"

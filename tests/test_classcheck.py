@@ -38,7 +38,7 @@ def test_the_class_table_agrees_with_each_check(klass, tmp_path, capsys):
     files = sorted(p.name for p in klass.iterdir())
     assert [ln.split("]")[0] + "]" for ln in err.splitlines() if ln.startswith("[")] == \
         [f"[{i}/{len(files)}]" for i in range(1, len(files) + 1)]     # progress: one line per file
-    rows = list(csv.reader(io.StringIO((tmp_path / "out" / "class.csv").read_text(encoding="utf-8"))))
+    rows = list(csv.reader(io.StringIO((tmp_path / "out" / "class.csv").read_text(encoding="utf-8-sig"))))
     head, body = rows[0], rows[1:]
     assert [r[0] for r in body] == files
     reports = {f: check(_problem_of(klass / f), klass / f) for f in files if f != "zz_broken.toml"}
@@ -56,8 +56,8 @@ def test_the_class_table_agrees_with_each_check(klass, tmp_path, capsys):
         assert cells["score"] == f"{ok + carried / 2:g}/{len(rep.items)}"
         for it in rep.items:
             col = 5 + keys.index(it.key)
-            assert r[col].split(" ")[0] == it.verdict
-            assert all(m in r[col] for m in it.mistakes)
+            assert r[col].split(":")[0] == {"ok": "correct", "carried": "carried over", "wrong": "wrong"}[it.verdict]
+            assert all(MISTAKE_WORDS[m] in r[col] for m in it.mistakes)      # named in words, not codes
         answered = {it.key for it in rep.items}
         assert all(r[5 + k] == "" for k, key in enumerate(keys) if key not in answered)
         assert (tmp_path / "out" / "students" / f"{r[0]}.md").read_text(encoding="utf-8") == rep.to_markdown()
@@ -66,6 +66,11 @@ def test_the_class_table_agrees_with_each_check(klass, tmp_path, capsys):
     n_mistakes = sum(1 for f in files if "_mistakes" in f or ("_acc_" in f and "_correct" not in f))
     assert n_correct + n_mistakes + 1 == len(files)
     assert f"{len(files)} files: {n_correct} all correct, {n_mistakes} with mistakes, 1 could not be checked" in out
+
+
+MISTAKE_WORDS = {code: words[0] for code, words in __import__("graphmethods.scene.vocabulary.check",
+                                                             fromlist=["WORDS"]).WORDS.items()}
+MISTAKE_WORDS["J_e_not_subtracted"] = "not subtracted"
 
 
 def _problem_of(path):

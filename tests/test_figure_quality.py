@@ -64,9 +64,15 @@ def draw(problem, figure, lang):
 
 
 def one_truth_faults(problem, figure, scene) -> list[str]:
-    """The hook for "one truth": the numbers a sheet prints against the command line's (lane truth fills it:
-    the dynamic sheet's M_d and J_F against ``study --json``). Nothing is checked here yet."""
-    return []
+    """"One truth": the numbers a sheet prints against the command line's: the dynamic sheet's M_d and
+    J_F against ``study --json`` (:func:`tests.test_one_truth.dynamic_sheet_truth_faults`)."""
+    if figure != "dynamic_analysis_sheet":
+        return []
+    try:
+        from test_one_truth import dynamic_sheet_truth_faults
+    except ImportError:                                 # run from the repository root as a package
+        from tests.test_one_truth import dynamic_sheet_truth_faults
+    return dynamic_sheet_truth_faults(problem, scene)
 
 
 @pytest.mark.parametrize("lang", LANGS)

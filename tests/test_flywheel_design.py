@@ -5,10 +5,13 @@ import math
 
 import numpy as np
 import pytest
+import shapely
 
 from graphmethods.cli import main
 from graphmethods.dynamics.flywheel import DENSITY, RIM_SPEED_LIMIT, disc_flywheel, rim_flywheel
-from graphmethods.sheets.flywheel_design import flywheel_design
+from graphmethods.render.recording import record
+from graphmethods.scene.elements import label_bbox
+from graphmethods.sheets.flywheel_design import DRAWING_SCALES, flywheel_design
 
 J_F = 900 * 575 / (math.pi**2 * 600**2 / 300)        # W1's flywheel, kg·m²
 
@@ -32,15 +35,34 @@ def test_the_drawing_is_to_scale():
     r, d = rim_flywheel(J_F, n_rpm=600.0, D=0.75), disc_flywheel(J_F, D=0.75, n_rpm=600.0)
     s = flywheel_design(r, d)
     (mu,) = s.scales()
+    assert mu.per_mm * 1000 in DRAWING_SCALES and mu.per_mm == pytest.approx(0.01)        # 1 : 10 fills A4
+    assert s.element("scale-note").text == "Scale 1 : 10"
     dim = s.element("dim-rim-D1")
     assert dim.length_mm * mu.per_mm == pytest.approx(r.D1, abs=mu.per_mm * 1e-3)
+    assert dim.text == f"⌀{r.D1 * 1000:.0f}"                                              # ⌀916, not "D = …"
     pts = np.array(s.element("rim-section-upper").outline)
     assert np.ptp(pts[:, 0]) * mu.per_mm == pytest.approx(r.B, abs=mu.per_mm * 1e-3)
     assert np.ptp(pts[:, 1]) * mu.per_mm == pytest.approx(r.H, abs=mu.per_mm * 1e-3)
-    disc_pts = np.array(s.element("disc-section").outline)
-    assert np.ptp(disc_pts[:, 1]) * mu.per_mm == pytest.approx(d.D, abs=mu.per_mm * 1e-3)
+    assert s.element("dim-disc-D1").length_mm * mu.per_mm == pytest.approx(d.D, abs=mu.per_mm * 1e-3)
+    for part in ("rim", "disc"):                          # a hub and a bore on each
+        assert s.element(f"{part}-hub-upper") and s.element(f"dim-{part}-bore").text.startswith("⌀")
     fast = flywheel_design(rim_flywheel(J_F, n_rpm=900.0, D=0.75), notation="en")
     assert "OVER" in fast.element("verdict").text
+
+
+@pytest.mark.parametrize("lang", ["en", "ru", "zh"])
+def test_dimension_values_stand_clear_of_every_line(lang):
+    s = flywheel_design(rim_flywheel(J_F, n_rpm=600.0, D=0.75), disc_flywheel(J_F, D=0.75, n_rpm=600.0),
+                        notation=lang)
+    rec = record(s)
+    segments = [(a, b) for c in rec.calls if c.kind == "path" for a, b in zip(c.data[0], c.data[0][1:])]
+    dims = [c.data for c in rec.calls if c.kind == "text" and any(g.startswith("dim-") for g in c.groups)]
+    assert len(dims) == 11                                # rim: ⌀D1 ⌀D2 ⌀hub ⌀bore B L; disc: no ⌀D2
+    for lab in dims:
+        x0, y0, x1, y1 = label_bbox(lab)
+        box = shapely.box(x0 - 0.3, y0 - 0.3, x1 + 0.3, y1 + 0.3)
+        crossing = [seg for seg in segments if box.intersects(shapely.LineString(seg))]
+        assert not crossing, (lab.text, crossing[:3])
 
 
 def test_flywheel_command_sizes_and_draws(capsys, tmp_path):

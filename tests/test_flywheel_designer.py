@@ -86,7 +86,7 @@ def test_machine_gives_the_same_flywheel_as_its_delta(capsys, end, denominator):
     (["--machine", "windmill"], "not in the table"),
     (["--delta", "0.1", "--machine-end", "lenient"], "--machine only"),
     (["--J", "50", "--hyperbola", "x.svg"], "--hyperbola"),
-    (["--delta", "0.1", "--hyperbola", "x.png"], ".svg or .pdf"),
+    (["--delta", "0.1", "--hyperbola", "x.gif"], ".svg, .pdf, .png or .dxf"),     # every renderer format (issue 28)
 ])
 def test_bad_input_one_line_exit_2(capsys, tmp_path, monkeypatch, argv, needle):
     monkeypatch.chdir(tmp_path)

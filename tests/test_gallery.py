@@ -1,12 +1,12 @@
 """Every gallery figure is a test: rebuilt, it must equal its committed SVG (after C14N).
 
-The figures are the modules of graphmethods.gallery (they ship with the package); their golden
+The figures are the rows of graphmethods.gallery.catalogue (they ship with the package); their golden
 SVGs stay in the source checkout's gallery/ folder."""
 
 import argparse
+import importlib
 import pathlib
 import re
-import shutil
 
 import pytest
 
@@ -16,7 +16,7 @@ from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 
 GALLERY = pathlib.Path(__file__).resolve().parents[1] / "gallery"          # the golden files
-SOURCES = pathlib.Path(builtin.__file__).parent                            # the figure modules
+SOURCES = pathlib.Path(builtin.__file__).parent                            # the catalogue
 NAMES = builtin.figure_names()
 REGENERATE = "graphmethods gallery --regenerate"
 
@@ -76,18 +76,30 @@ def test_the_gallery_covers_w1_to_w4_in_three_notations():
             for nt in ("en", "ru", "zh"):
                 assert f"{case}_{fig}_{nt}" in names
     for name in NAMES:
-        module = builtin.figure_module(name)
-        source = SOURCES / f"{name}.py"
-        assert module.__doc__ and len(source.read_text(encoding="utf-8").splitlines()) < 25   # small, readable
-        if getattr(module, "PNG", False):
+        row = builtin.figure(name)
+        module, function = row.figure.rsplit(".", 1)
+        assert row.about and callable(getattr(importlib.import_module(f"graphmethods.sheets.{module}"), function))
+        assert row.language in ("en", "ru", "zh") and row.problem.partition(":")[1] == ":"
+        if row.png:
             assert (GALLERY / f"{name}.png").exists(), f"{name}.png (shown by the README) is missing"
+
+
+def test_the_gallery_is_one_catalogue_not_a_module_per_figure():
+    assert sorted(p.name for p in SOURCES.glob("*.py")) == ["__init__.py", "catalogue.py"]
+    assert len(builtin.CATALOGUE) == len(NAMES) == len(set(NAMES))
+
+
+def _script(folder: pathlib.Path, name: str) -> None:
+    """A gallery script of one's own (as --dir takes them) that draws a catalogue figure."""
+    (folder / f"{name}.py").write_text(f'"""{name}."""\n\nfrom graphmethods.gallery import figure\n\n\n'
+                                       f"def build():\n    return figure({name!r}).build()\n", encoding="utf-8")
 
 
 def test_cli_builds_into_a_folder_and_refuses_to_overwrite(tmp_path, capsys):
     src = tmp_path / "gal"
     src.mkdir()
-    for name in ("w1_energy_indicator_zh.py", "w3_moment_diagram_ru.py"):
-        shutil.copy(SOURCES / name, src / name)
+    for name in ("w1_energy_indicator_zh", "w3_moment_diagram_ru"):
+        _script(src, name)
     out = tmp_path / "out"
     assert gallery.run(_args("--dir", str(src), "--out", str(out))) == 0
     assert sorted(p.name for p in out.iterdir()) == ["w1_energy_indicator_zh.svg", "w3_moment_diagram_ru.svg"]
@@ -105,7 +117,7 @@ def test_cli_builds_into_a_folder_and_refuses_to_overwrite(tmp_path, capsys):
 def test_cli_writes_pngs_on_request(tmp_path):
     src = tmp_path / "gal"
     src.mkdir()
-    shutil.copy(SOURCES / "w4_energy_graph_ru.py", src)
+    _script(src, "w4_energy_graph_ru")
     assert gallery.run(_args("--dir", str(src), "--out", str(tmp_path / "o"), "--png")) == 0
     assert (tmp_path / "o" / "w4_energy_graph_ru.png").read_bytes()[:4] == b"\x89PNG"
 
@@ -113,7 +125,7 @@ def test_cli_writes_pngs_on_request(tmp_path):
 def test_regenerate_rewrites_the_gallery_folder_itself(tmp_path):
     src = tmp_path / "gal"
     src.mkdir()
-    shutil.copy(SOURCES / "w2_excess_work_table_en.py", src)
+    _script(src, "w2_excess_work_table_en")
     (src / "w2_excess_work_table_en.svg").write_text("stale", encoding="utf-8")
     assert gallery.run(_args("--dir", str(src), "--regenerate")) == 0
     assert (src / "w2_excess_work_table_en.svg").read_bytes() == (GALLERY / "w2_excess_work_table_en.svg").read_bytes()

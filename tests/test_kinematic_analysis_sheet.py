@@ -87,7 +87,7 @@ def test_kinematics_sheet_is_written_and_never_overwritten_without_force(run, tm
     (("--sheet", "k.svg", "--plan-positions", "2,x"), "not a position number"),
     (("--sheet", "k.svg", "--plan-positions", "12"), "0…11"),
     (("--sheet", "k.svg", "--epsilon-1", "3"), "leave out"),
-    (("--sheet", "k.png"), "ending in .svg"),
+    (("--sheet", "k.gif"), "ending in .svg"),      # .png and .dxf are sheets too (issue 28)
     (("--plan-positions", "2"), "add --sheet"),
 ])
 def test_kinematics_sheet_bad_input_is_one_line_exit_2_and_no_file(run, tmp_path, monkeypatch, argv, words):

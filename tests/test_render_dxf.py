@@ -103,7 +103,8 @@ def test_every_velocity_vector_is_value_over_mu_v_long(press, plan_dxf):
     assert all(e.dxf.layer == "VECTORS-FOUND" for e in group_entities(doc, "vector-pb"))
     found_shaft = next(e for e in group_entities(doc, "vector-pb") if e.dxftype() == "LWPOLYLINE")
     pattern = doc.linetypes.get(found_shaft.dxf.linetype).pattern_tags.tags
-    assert found_shaft.dxf.linetype.startswith("GM-DASH") and [t.value for t in pattern if t.code == 49] == [2.5, -1.2]
+    # a standard name (LibreCAD dashes only the linetypes it knows by name), our pattern (AutoCAD, ezdxf draw it)
+    assert found_shaft.dxf.linetype == "DASHED" and [t.value for t in pattern if t.code == 49] == [2.5, -1.2]
     assert found_shaft.dxf.lineweight == 35
 
 
@@ -168,7 +169,7 @@ def test_text_is_text_in_a_named_style():
     doc = read(dxf.to_bytes(scene))
     texts = [e for e in doc.modelspace() if e.dxftype() == "TEXT"]
     assert [t.dxf.text for t in texts] == ["ΔW", "max", " = 575 J", "Мд"]
-    assert {t.dxf.style for t in texts} == {"GM-SANS"} and doc.styles.get("GM-SANS").dxf.font == "DejaVuSans.ttf"
+    assert {t.dxf.style for t in texts} == {dxf.STYLE_SANS} and doc.styles.get(dxf.STYLE_SANS).dxf.font == "arial.ttf"
     base, sub = texts[0], texts[1]
     assert base.dxf.insert.y == pytest.approx(210 - 30) and sub.dxf.insert.y < base.dxf.insert.y   # subscript lower
     assert sub.dxf.height == pytest.approx(0.7 * base.dxf.height)
@@ -251,3 +252,48 @@ def test_cli_gallery_writes_dxf(tmp_path, capsys):
     assert rc == 0 and "w1_energy_indicator_en.dxf" in out
     doc = ezdxf.readfile(tmp_path / "out" / "w1_energy_indicator_en.dxf")
     assert np.isclose(sum(1 for g in doc.groups if g[0].startswith("vector-")), 7)
+
+
+# the linetype names LibreCAD draws dashed (RS_FilterDXFRW::nameToLineType); any other name prints solid there
+_LIBRECAD_LINETYPES = {"DOT", "DOT2", "DOTX2", "ACAD_ISO07W100", "DASHED", "HIDDEN", "ACAD_ISO02W100", "ACAD_ISO03W100",
+                       "DASHED2", "HIDDEN2", "DASHEDX2", "HIDDENX2", "DASHDOT", "ACAD_ISO10W100", "DASHDOT2",
+                       "DASHDOTX2", "CENTER", "CENTER2", "CENTERX2", "DIVIDE", "DIVIDE2", "DIVIDEX2", "BORDER",
+                       "BORDER2", "BORDERX2"}
+
+
+def test_every_dash_of_the_gallery_has_a_linetype_name_librecad_draws_and_our_pattern():
+    import re
+
+    golden = pathlib.Path(__file__).resolve().parents[1] / "gallery"
+    dashes = {tuple(float(v) for v in m.split()) for p in golden.glob("*.svg") if not p.stem.startswith("bench_")
+              for m in re.findall(r'stroke-dasharray="([^"]+)"', p.read_text(encoding="utf-8"))}
+    assert dashes and dashes <= set(dxf.STANDARD_LINETYPES)
+    assert set(dxf.STANDARD_LINETYPES.values()) <= _LIBRECAD_LINETYPES
+    assert len(set(dxf.STANDARD_LINETYPES.values())) == len(dxf.STANDARD_LINETYPES)      # one name, one pattern
+    doc = read(dxf.to_bytes(Scene(Page("A4"), (Text((20, 20), "x", name="t"),))))
+    renderer = dxf.DxfRenderer(doc, 0.0)
+    for dash, name in dxf.STANDARD_LINETYPES.items():
+        assert renderer._linetype(dash) == name
+        tags = [t.value for t in doc.linetypes.get(name).pattern_tags.tags if t.code == 49]
+        assert tags == [d if i % 2 == 0 else -d for i, d in enumerate(dash)]
+
+
+def test_a_drawing_with_its_own_dashed_linetype_keeps_it_and_ours_gets_a_name_of_its_own():
+    scene = Scene(Page("A4"), (Text((20, 20), "x", name="t"),))
+    doc = read(dxf.to_bytes(scene))
+    doc.linetypes.add("DASHED", pattern=[20.0, 12.7, -7.3], description="the student's own")
+    renderer = dxf.DxfRenderer(doc, 0.0)
+    assert renderer._linetype((2.5, 1.2)) == "GM-DASH-2p5-1p2"
+    assert doc.linetypes.get("DASHED").dxf.description == "the student's own"
+
+
+def test_text_styles_name_fonts_cad_programs_find_and_librecad_fonts():
+    # AutoCAD, BricsCAD, nanoCAD, KOMPAS and ezdxf's viewer find a style's font by its file name; LibreCAD takes the
+    # style's name for one of its own fonts (standard.lff, without Greek or Cyrillic, when it knows none)
+    assert {name: font for name, (font, _, _) in dxf.TEXT_STYLES.items()} == {
+        "OpenGostTypeB-Regular": "arial.ttf", "lc_opengost-br": "arialbd.ttf", "kst32b": "NotoSansCJK-Regular.ttc"}
+    doc = read(dxf.to_bytes(Scene(Page("A4"), (Text((20, 20), "速度多边形 ω", name="t"),
+                                                  Text((20, 40), "План скоростей", name="u", bold=True)))))
+    styles = {t.dxf.text: t.dxf.style for t in doc.modelspace() if t.dxftype() == "TEXT"}
+    assert styles == {"速度多边形 ω": "kst32b", "План скоростей": "lc_opengost-br"}
+    assert doc.styles.get("kst32b").get_extended_font_data()[0] == "Noto Sans CJK SC"

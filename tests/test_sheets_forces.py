@@ -41,7 +41,7 @@ def test_sides_are_the_forces_to_scale_and_the_polygons_close(name, k):
 
 def test_three_languages_and_the_scale_is_reported():
     titles = {lang: force_plans(builtin.case("press"), position=3, notation=lang).title for lang in ("en", "ru", "zh")}
-    assert titles == {"en": "Force plans, position 3", "ru": "Планы сил, положение 3", "zh": "力多边形, 位置 3"}
+    assert titles == {"en": "Force plans, position 3", "ru": "Планы сил, положение 3", "zh": "力多边形，位置 3"}
     s = force_plans(builtin.case("press"), position=3, mu_F=100.0)
     assert s.scales()[0].per_mm == 100.0
 

@@ -108,7 +108,7 @@ def test_scheme_links_are_their_lengths_to_scale(case):
     # the stroke is dimensioned to scale between the slider's extreme positions
     dim = scene.element("dimension-H")
     assert dim.length_mm * mu_l.per_mm == pytest.approx(pos.H, abs=1e-3 * mu_l.per_mm)
-    assert f"{pos.H:.4g}" in markup.plain(dim.text)
+    assert f"{pos.H * 1000:.4g} mm" in markup.plain(dim.text)        # a dimension is in mm, as drawings give it
 
 
 def test_scheme_numbers_every_position_at_the_crank_pin_and_the_output():

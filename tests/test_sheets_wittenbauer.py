@@ -156,7 +156,7 @@ def test_a_J_e_varying_little_gets_a_suppressed_zero_the_curve_fills_the_diagram
     assert kl * mu_T / (c.omega_m**2 * c.delta) - J_0 == pytest.approx(study.wittenbauer.J_F, rel=1e-9)
     table = " ".join(rec.texts("result"))
     assert f"Jп0 = {get_number('ru', J_0)} кг·м²" in table and get_number("ru", study.wittenbauer.J_F) in table
-    assert "O1 (вне листа) (" in table                                             # O1, far off, reported
+    assert "O1 за пределами листа" in table                                        # O1, far off, said so
 
 
 @pytest.mark.parametrize("name", ["four_bar_rocker", "single_cylinder_engine", "scotch_yoke_pump",

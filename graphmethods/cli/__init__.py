@@ -23,7 +23,7 @@ COMMANDS = {
     "flywheel": ("flywheel", "excess-work table, ΔW_max and the flywheel (approximate method)"),
     "examples": ("examples", "solve and print the published worked examples W1–W4"),
     "problems": ("problems", "list the built-in problems (their names work in place of a problem file)"),
-    "kinematics": ("kinematics", "positions and velocity plans of a linkage problem file"),
+    "kinematics": ("kinematics", "positions, velocities and accelerations of a linkage (plans, figures, the A1 sheet)"),
     "forces": ("forces", "force (kinetostatic) analysis in one position: reactions and the balancing moment"),
     "study": ("study", "dynamic study of a linkage problem: J_e, M_r, the flywheel three ways"),
     "gallery": ("gallery", "build every gallery figure (SVG, optionally PNG)"),
@@ -108,6 +108,16 @@ def main(argv: list[str] | None = None) -> int:
     args = build_parser(command).parse_args(argv)
     try:
         return int(args.func(args) or 0)
+    except BaseException:
+        if "graphmethods.cli._progress" in sys.modules:     # a progress line on the terminal ends first
+            sys.modules["graphmethods.cli._progress"].clear()
+        return _failed(args)
+
+
+def _failed(args: argparse.Namespace) -> int:
+    """The exception being handled as one line on stderr and its exit status (re-raised when not ours)."""
+    try:
+        raise
     except GraphmethodsError as exc:
         print(f"graphmethods {args.command}: error: {exc}", file=sys.stderr)
         return 2

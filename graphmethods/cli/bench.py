@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import pathlib
-import sys
 
 from graphmethods.errors import InputError, OutputExistsError
 
@@ -14,7 +13,8 @@ def add_parser(sub) -> None:
                        "solution, in one run. --quick finishes in well under a minute.")
     p.add_argument("--quick", action="store_true", help="small sizes, for CI")
     p.add_argument("--only", action="append", metavar="SECTION", help="run only this section (repeatable)")
-    p.add_argument("--out", metavar="DIR", help="also write bench.md, bench.json and the error-against-time plot "
+    p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+    p.add_argument("-o", "--out", metavar="DIR", help="also write bench.md, bench.json and the error-against-time plot "
                    "(error_vs_time.svg, when the flywheel section runs) into DIR")
     p.add_argument("--force", action="store_true", help="overwrite existing files in --out")
     p.set_defaults(func=run)
@@ -40,8 +40,16 @@ def run(args) -> int:
         existing = [str(t) for t in targets if t.exists()]
         if existing and not args.force:
             raise OutputExistsError(f"{', '.join(existing)} exist; add --force to overwrite")
-    rows = bench.run_all(quick=args.quick, sections=args.only,
-                         progress=lambda name: print(f"… {name}", file=sys.stderr, flush=True))
+    from graphmethods.cli._progress import Progress
+
+    line, done = Progress(quiet=args.quiet, label="bench "), [0]
+
+    def progress(name: str) -> None:
+        done[0] += 1
+        line(done[0], len(args.only or bench.SECTIONS), name)
+
+    rows = bench.run_all(quick=args.quick, sections=args.only, progress=progress)
+    line.done()
     md = bench.to_markdown(rows)
     print(md)
     if out is not None:

@@ -149,8 +149,6 @@ def run(args) -> int:
     out = json_text(res, indent=1, ensure_ascii=False) if args.json else _text(res)
     print(out)
     if sheet is not None and data is not None:       # written last: an error above leaves no file behind
-        from graphmethods.render.files import write_atomic
-
-        write_atomic(sheet, data, overwrite=args.force)
+        sheet.write(data, overwrite=args.force)
         print(f"wrote {sheet} (A1, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

@@ -1,9 +1,9 @@
 """``graphmethods check PROBLEM ANSWERS.toml``: check a hand drawing against the exact construction.
 
     graphmethods check W1 graphmethods/problems/data/answers/w1_mistakes.toml
-    graphmethods check press answers.toml --format json
-    graphmethods check indicator:7:3 answers.toml --overlay film.pdf
-    graphmethods check press plan.dxf --overlay checked.dxf     # a drawing made in CAD (.dxf or .svg)
+    graphmethods check press answers.toml --report json
+    graphmethods check indicator:7:3 answers.toml -o film.pdf
+    graphmethods check press plan.dxf -o checked.dxf     # a drawing made in CAD (.dxf or .svg)
 
 PROBLEM is a built-in id (W1, W2, W3, W4, press, slotted-lever), a worksheet variant id (KIND:SEED:N) or a problem
 file (a worksheet's problems/*.json, or a slider-crank case file). The report lists each item with
@@ -18,6 +18,8 @@ import sys
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import integer, number
+
     p = sub.add_parser("check", help="check a student's hand drawing (answers file) and diagnose usual mistakes",
                        description="Compare what a student measured and wrote (a TOML answers file) with the exact "
                        "construction at the student's own scales: verdict per item against drafting tolerances, "
@@ -29,17 +31,20 @@ def add_parser(sub) -> None:
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
                    "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, read and "
                    "measured)")
-    p.add_argument("--format", choices=("text", "markdown", "json"), default="text", help="report format")
-    p.add_argument("--overlay", metavar="FILE",
-                   help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size")
+    p.add_argument("--report", "--format", dest="format", choices=("text", "markdown", "json"), default="text",
+                   help="report style (default text; older name --format still accepted)")
+    p.add_argument("-o", "--out", "--overlay", dest="overlay", metavar="FILE",
+                   help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size (older name --overlay "
+                        "still accepted)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
-                   help="notation and language of the overlay (the report stays English)")
+                   help="language of the report and notation of the overlay")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
     drawing = p.add_argument_group("a drawing (.dxf, .svg): what is not written on it")
-    drawing.add_argument("--position", type=int, default=None, help="the position a velocity plan is drawn for")
-    drawing.add_argument("--mu-v", type=float, default=None, help="μ_v of the velocity plan, (m/s)/mm")
-    drawing.add_argument("--mu-E", type=float, default=None, help="μ_E of the energy indicator, J/mm")
-    drawing.add_argument("--mu-a", type=float, default=None, help="μ_a of the acceleration plan, (m/s²)/mm")
+    drawing.add_argument("--position", type=integer, default=None, metavar="K",
+                         help="the position a velocity plan is drawn for")
+    drawing.add_argument("--mu-v", type=number, default=None, help="μ_v of the velocity plan, (m/s)/mm")
+    drawing.add_argument("--mu-E", type=number, default=None, help="μ_E of the energy indicator, J/mm")
+    drawing.add_argument("--mu-a", type=number, default=None, help="μ_a of the acceleration plan, (m/s²)/mm")
     drawing.add_argument("--point", action="append", default=[], metavar="LABEL=X,Y",
                          help="a point whose letter is missing, in drawing mm (repeat for several)")
     p.set_defaults(func=run)
@@ -67,6 +72,10 @@ def run(args) -> int:
     from graphmethods.sheets.check import check
 
     is_drawing = pathlib.Path(args.answers).suffix.lower() in (".dxf", ".svg")
+    if args.overlay:
+        from graphmethods.render.files import not_an_input
+
+        not_an_input(args.overlay, args.answers, args.problem, what="--overlay")
     report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
     if args.overlay:
         path = pathlib.Path(args.overlay)
@@ -87,7 +96,8 @@ def run(args) -> int:
             if suffix not in formats.FORMATS:
                 raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
             formats.save(scene, path, overwrite=args.force)
-    out = {"text": report.to_text, "markdown": report.to_markdown, "json": report.to_json}[args.format]()
+    out = report.to_json() if args.format == "json" else (
+        report.to_markdown(args.lang) if args.format == "markdown" else report.to_text(args.lang))
     print(out.rstrip("\n"))
     if args.overlay:
         print(f"overlay: {args.overlay} ({report.page.size} {report.page.orientation}, print at 100 %)",

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import argparse
 
-from graphmethods.cli._sheet import check_target
+from graphmethods.cli._sheet import check_target, refuse_two_on_stdout, report_stream
 from graphmethods.cli.flywheel import parse_list
 from graphmethods.errors import InputError
-from graphmethods.units import json_text
+from graphmethods.units import check_text, json_text
 
 
 def add_parser(sub) -> None:
@@ -31,7 +31,11 @@ def add_parser(sub) -> None:
     p.add_argument("--M", default=None, metavar="M1,M2,...", help="moments on the masses, N·m (+ driving)")
     p.add_argument("--names", default=None, metavar="NAME1,NAME2,...", help="names of the masses")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--figure", default=None, metavar="FILE.svg|.pdf|.png", help="also draw the reduced scheme")
+    p.add_argument("-o", "--out", "--figure", dest="figure", default=None, metavar="FILE.svg|.pdf|.png|.dxf|-",
+                   help="also draw the reduced scheme; - writes it to standard output in --format, and nothing else "
+                        "(older name --figure still accepted)")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
+                   help="file format of the figure (default: the file name's suffix; needed with -o -)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figure (default en)")
     p.add_argument("--force", action="store_true", help="overwrite an existing figure file")
     p.set_defaults(func=run)
@@ -56,28 +60,31 @@ def run(args: argparse.Namespace) -> int:
     M = _list(args.M, "--M", n, 0.0)
     c = parse_list(args.c, "--c")
     cu = _list(args.c_u, "--c-u", len(c), 1.0)
-    names = [s.strip() for s in args.names.split(",")] if args.names else [str(i + 1) for i in range(n)]
+    names = [check_text(s.strip(), "--names") for s in args.names.split(",")] if args.names else \
+        [str(i + 1) for i in range(n)]
     if len(names) != n:
         raise InputError(f"--names: give {n} names, one per mass; got {len(names)}")
     chain = reduce_chain([Mass(nm, j, ui, mi) for nm, j, ui, mi in zip(names, J, u, M)],
                          [Shaft(f"{i + 1}", ci, ui) for i, (ci, ui) in enumerate(zip(c, cu))])
-    path = None if args.figure is None else check_target(args.figure, args.force, option="--figure",
-                                                         suffixes=(".svg", ".pdf", ".png"))
+    path = None if args.figure is None else check_target(args.figure, args.force, option="-o/--figure",
+                                                         fmt=args.format)
+    if path is None and args.format is not None:
+        raise InputError("--format is the figure's file format; add -o FILE (or -o - for standard output)")
+    refuse_two_on_stdout(args.json, path)
     blob = None
     if path is not None:
-        suffix = path.suffix.lower()
         from graphmethods.render import formats
         from graphmethods.sheets.drive_scheme import drive_scheme
 
-        blob = formats.to_bytes(drive_scheme(chain, notation=args.lang), suffix)
+        blob = formats.to_bytes(drive_scheme(chain, notation=args.lang), path.suffix)
     out = chain.to_dict()
     if path is not None and blob is not None:
-        from graphmethods.render.files import write_atomic
-
-        write_atomic(path, blob, overwrite=args.force)
-        out["figure"] = str(path)
+        path.write(blob, overwrite=args.force)
+        if not path.to_stdout:
+            out["figure"] = str(path)
+    stream = report_stream(path)
     if args.json:
-        print(json_text(out, indent=1))
+        print(json_text(out, indent=1), file=stream)
         return 0
     width = max(map(len, out))
     for key, value in out.items():
@@ -85,5 +92,5 @@ def run(args: argparse.Namespace) -> int:
             value = ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in value)
         elif isinstance(value, float):
             value = f"{value:.6g}"
-        print(f"{key.ljust(width)}  {value}")
+        print(f"{key.ljust(width)}  {value}", file=stream)
     return 0

@@ -17,7 +17,7 @@ import re
 from typing import Any
 
 from graphmethods.cli import flywheel_moments
-from graphmethods.cli._sheet import check_target
+from graphmethods.cli._sheet import check_target, refuse_two_on_stdout, report_stream
 from graphmethods.errors import InputError
 from graphmethods.units import check_finite, json_text, parse_number
 
@@ -82,7 +82,7 @@ def add_parser(sub) -> None:
                    help="with --machine: the table row's strict end (smaller δ, default) or its lenient end")
     p.add_argument("--delta-table", action="store_true",
                    help="print the table of recommended [δ] by machine (with --lang, --json) and stop")
-    p.add_argument("--hyperbola", default=None, metavar="FILE.svg|.pdf",
+    p.add_argument("--hyperbola", default=None, metavar="FILE.svg|.pdf|.png|.dxf|-",
                    help="draw the J_F–[δ] hyperbola over the table's range of [δ], the chosen [δ] marked")
     p.add_argument("--J-e", default="0",
                    help="the mechanism's own reduced inertia, kg·m², subtracted from the required total")
@@ -94,8 +94,11 @@ def add_parser(sub) -> None:
     p.add_argument("--material", choices=("cast-iron", "steel"), default=None,
                    help="flywheel material (density, rim-speed limit): default cast iron for a rim, steel for a disc")
     p.add_argument("--H-over-B", default="1.5", help="rim: radial thickness over width (default 1.5)")
-    p.add_argument("--figure", default=None, metavar="FILE.svg|.pdf|.png",
-                   help="with --rim or --disc: draw the flywheel(s) to scale, dimensioned, with the table")
+    p.add_argument("--figure", default=None, metavar="FILE.svg|.pdf|.png|.dxf|-",
+                   help="with --rim or --disc: draw the flywheel(s) to scale, dimensioned, with the table (- for "
+                        "standard output in --format)")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
+                   help="file format of the figure that goes to standard output (--figure - or --hyperbola -)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figure (default en)")
     p.add_argument("--force", action="store_true", help="overwrite an existing figure file")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
@@ -137,8 +140,8 @@ def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
     """The flywheel figure's path and bytes (checked before any file is written), or (None, None)."""
     if args.figure is None:
         return None, None
-    path = check_target(args.figure, args.force, option="--figure", suffixes=(".svg", ".pdf", ".png"))
-    suffix = path.suffix.lower()
+    path = check_target(args.figure, args.force, option="--figure", fmt=_stdout_format(args, args.figure))
+    suffix = path.suffix
     from graphmethods.sheets.flywheel_design import flywheel_design
 
     if rim is None:              # a disc alone: drawn in the rim's place
@@ -148,6 +151,11 @@ def _figure_bytes(args: argparse.Namespace, rim, disc) -> tuple:
     from graphmethods.render import formats
 
     return path, formats.to_bytes(scene, suffix)
+
+
+def _stdout_format(args: argparse.Namespace, text: str) -> str | None:
+    """``--format`` for the one figure that goes to standard output (``-``); a file's suffix names its own."""
+    return args.format if text == "-" else None
 
 
 def _delta_table(args: argparse.Namespace) -> int:
@@ -167,8 +175,8 @@ def _hyperbola_bytes(args: argparse.Namespace, delta_W_max: float, omega_m: floa
     """The --hyperbola figure's path and bytes (checked before any file is written), or (None, None)."""
     if args.hyperbola is None:
         return None, None
-    path = check_target(args.hyperbola, args.force, option="--hyperbola", suffixes=(".svg", ".pdf"))
-    suffix = path.suffix.lower()
+    path = check_target(args.hyperbola, args.force, option="--hyperbola", fmt=_stdout_format(args, args.hyperbola))
+    suffix = path.suffix
     from graphmethods.sheets.flywheel_hyperbola import flywheel_hyperbola
 
     scene = flywheel_hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, delta=delta, machine=machine,
@@ -185,6 +193,9 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("give the mean speed: --n (rev/min) or --omega (rad/s)")
     if args.delta is None and args.J is None and args.machine is None:
         raise InputError("give the goal: --delta [δ], --machine NAME (its [δ] from the table) or --J (the δ it gives)")
+    if args.format is not None and "-" not in (args.figure, args.hyperbola):
+        raise InputError("--format is the format of a figure on standard output: give --figure - or --hyperbola - "
+                         "(a file's name ends in its format)")
     machine = _machine(args)
     cycle, mc = _read_cycle(args)
     out, omega_m, J_e = _solve(args, cycle, mc, machine)
@@ -193,19 +204,23 @@ def run(args: argparse.Namespace) -> int:
     hyp_path, hyp_data = (_hyperbola_bytes(args, cycle.delta_W_max, omega_m, J_e, float(out["delta"]),
                                            None if machine is None else machine.key)
                           if args.hyperbola is not None else (None, None))
-    if fig_path is not None and hyp_path is not None and fig_path.resolve() == hyp_path.resolve():
+    if (fig_path is not None and hyp_path is not None and fig_path.path is not None and hyp_path.path is not None
+            and fig_path.path.resolve() == hyp_path.path.resolve()):
         raise InputError("--figure and --hyperbola name the same file; give two names")
+    refuse_two_on_stdout(args.json, fig_path, hyp_path)
     check_finite(out)
     for key, path, data in (("figure", fig_path, fig_data), ("hyperbola", hyp_path, hyp_data)):
         if path is not None and data is not None:
-            from graphmethods.render.files import write_atomic  # only when a file is asked for (start-up)
-
-            write_atomic(path, data, overwrite=args.force)
-            out[key] = str(path)
+            path.write(data, overwrite=args.force)
+            if not path.to_stdout:
+                out[key] = str(path)
     if args.json:
         print(json_text(out, indent=1))       # also refuses a result that is not finite, naming it
         return 0
-    _print_report(args, out, cycle, mc, machine, omega_m=omega_m, J_e=J_e)
+    import contextlib
+
+    with contextlib.redirect_stdout(report_stream(fig_path, hyp_path)):     # a drawing on stdout: report on stderr
+        _print_report(args, out, cycle, mc, machine, omega_m=omega_m, J_e=J_e)
     return 0
 
 

@@ -25,35 +25,43 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphmethods.cli import _sheet
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import integer, number
+    from graphmethods.cli.kinematics import add_speed, builtin_names
+
     p = sub.add_parser(
         "forces", help="force (kinetostatic) analysis in one position: reactions and the balancing moment",
         description="The force analysis of a linkage problem in one position: inertia forces and moments, the "
-                    "reaction in every pair group by group, the balancing moment on the crank from the force "
-                    "plans, checked by Zhukovsky's lever and the power balance.")
-    p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name (graphmethods problems)")
+                    "applied loads, the reaction in every pair group by group, the balancing moment on the crank "
+                    "from the force plans, checked by Zhukovsky's lever and the power balance.")
+    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
+                   "linkage: " + builtin_names())
     where = p.add_mutually_exclusive_group(required=True)
-    where.add_argument("--phi-deg", type=float, default=None, metavar="A",
-                       help="the crank angle, degrees from +x, counterclockwise")
-    where.add_argument("--position", type=int, default=None, metavar="K",
+    where.add_argument("--phi-deg", type=number, default=None, metavar="A",
+                       help="the crank angle, degrees from +x, counterclockwise (one angle: one force analysis)")
+    where.add_argument("--position", type=integer, default=None, metavar="K",
                        help="position K of 0…M, counted from the start of the working stroke")
-    p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
+    p.add_argument("--positions", "-m", type=integer, default=12, metavar="M",
                    help="equal crank steps per turn for --position (default 12)")
     p.add_argument("--gravity", action="store_true", help="add the weights (g = 9.81 m/s² along −y)")
-    p.add_argument("--n", type=float, default=None, metavar="N",
-                   help="mean crank speed, rev/min (default: the file's n_rpm)")
-    p.add_argument("--epsilon-1", type=float, default=0.0, metavar="E",
+    add_speed(p)
+    p.add_argument("--epsilon-1", type=number, default=0.0, metavar="E",
                    help="crank angular acceleration, rad/s², + when the crank speeds up (default 0)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="language of the table and the sheet (default en)")
-    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
-                   help="also write the force-analysis sheet of this position (SVG, PDF or DXF, scale-true)")
+    p.add_argument("-o", "--out", "--sheet", dest="sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
+                   help="also write the force-analysis sheet of this position (scale-true); - writes it to standard "
+                        "output in --format, and nothing else (older name --sheet still accepted)")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
+                   help="file format of the sheet (default: the file name's suffix; needed with -o -)")
     p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    _sheet.add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -69,6 +77,7 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
            gravity: bool = False, n_rpm: float | None = None, epsilon_1: float = 0.0) -> dict:
     """The force analysis as a JSON-ready dict (see the module docstring)."""
     from graphmethods.dynamics.forces import case_forces
+    from graphmethods.kinematics.drawn import driver_angles_deg
     from graphmethods.units import omega_from_n
 
     omega_1 = case.omega_m if n_rpm is None else omega_from_n(n_rpm)
@@ -96,19 +105,52 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
             hh = float(r.h[i])
             info["h"] = _f(hh) if math.isfinite(hh) else None
         pairs[key] = info
+    loads = []                      # every external load at this position: the working load, weights, the file's
+    for k, forces in fa.applied.items():
+        for f in forces:
+            if f.label.startswith("F_i"):
+                continue
+            Fz, Mf = complex(f.F[i]), float(f.M[i])
+            if Fz != 0:
+                loads.append({"label": f.label, "link": int(k), "at": _v(complex(f.at[i])), "force": _v(Fz)})
+            if Mf != 0:
+                loads.append({"label": f.label, "link": int(k), "moment": _f(Mf)})
     Mb, Ml, Mp = (float(x[i]) for x in (fa.M_balance, fa.M_balance_lever, fa.M_balance_power))
+    drawn = getattr(case, "drawn", None)
+    extra: dict[str, Any] = {}
+    if drawn is not None:
+        extra = {"structure": drawn.structure.as_json(), "loads": _loads(fa, i)}
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
-        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0),
+        "phi_deg": _f(math.degrees(float(mo.phi[i])) % 360.0 if lk.swing is None else
+                      driver_angles_deg(case.drawn, mo, None if phi_deg is None else [phi_deg])[i]),
         "n_rpm": case.n_rpm if n_rpm is None else n_rpm, "omega_1": omega_1, "epsilon_1": epsilon_1,
         "sense": "ccw" if lk.sense == 1 else "cw", "gravity": 9.81 if gravity else 0.0,
         "structure": lk.structure().formula,
-        "links": links, "reactions": reactions, "pairs": pairs,
+        "links": links, "loads": loads, "reactions": reactions, "pairs": pairs,
         "M_balance": _f(Mb), "M_balance_lever": _f(Ml), "M_balance_power": _f(Mp),
         "difference_lever_percent": _f(fa.difference_percent(fa.M_balance_lever)[i]),
         "difference_power_percent": _f(fa.difference_percent(fa.M_balance_power)[i]),
+        **extra,
     }
+
+
+def _loads(fa, i: int) -> list[dict[str, Any]]:
+    """Every external load acting at position i (the working load included): a force at its point, a moment."""
+    from graphmethods.dynamics.forces.problem import EXTERNAL
+
+    out: list[dict[str, Any]] = []
+    for link, forces in fa.applied.items():
+        for f in forces:
+            if not f.label.startswith(EXTERNAL):
+                continue
+            F, M = complex(f.F[i]), float(f.M[i])
+            if F != 0:
+                out.append({"link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
+            if M != 0:
+                out.append({"link": int(link), "moment": _f(M)})
+    return out
 
 
 def _text(res: dict[str, Any], lang: str) -> str:
@@ -121,7 +163,8 @@ def _text(res: dict[str, Any], lang: str) -> str:
     lines = [f"{nt.word('forces.report_title')}: {res['case'] or res['kind']}  ({res['source']})",
              (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°, "
               f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} rad/s ({res['sense']}), "
-              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², {res['structure']}"),
+              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², "
+              f"{res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"),
              f"{nt.word('forces.gravity')}: {weights}", "", nt.word("forces.inertia_loads"),
              (f"{nt.word('forces.link'):>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  "
               f"{'M_i [N·m]':>12}  {'h [m]':>10}")]
@@ -129,10 +172,34 @@ def _text(res: dict[str, Any], lang: str) -> str:
         fx, fy = d["F_i"]
         h = "-" if d["h"] is None else f"{d['h']:.5f}"
         lines.append(f"{k:>6}  {fx:12.3f}  {fy:12.3f}  {math.hypot(fx, fy):12.3f}  {d['M_i']:12.4f}  {h:>10}")
+    lines += ["", nt.word("forces.applied_loads")]
+    if not res["loads"]:
+        lines.append(f"  {nt.word('forces.no_load')}")
+    else:
+        lines.append(f"{nt.word('forces.load'):>8}  {nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  "
+                     f"{'F_x [N]':>12}  {'F_y [N]':>12}  {'|F| [N]':>12}  {'M [N·m]':>12}")
+    for d in res["loads"]:
+        if "force" in d:
+            (x, y), (fx, fy) = d["at"], d["force"]
+            lines.append(f"{d['label']:>8}  {d['link']:>6}  {x:10.5f}  {y:10.5f}  {fx:12.3f}  {fy:12.3f}  "
+                         f"{math.hypot(fx, fy):12.3f}  {'-':>12}")
+        else:
+            lines.append(f"{d['label']:>8}  {d['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {'-':>12}  "
+                         f"{d['moment']:12.4f}")
     lines += ["", nt.word("forces.reactions"),
               f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
+    if res.get("loads"):
+        lines += ["", nt.word("forces.external"),
+                  f"{nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  {'F_x [N]':>12}  {'F_y [N]':>12}  "
+                  f"{'M [N·m]':>12}"]
+        for ld in res["loads"]:
+            if "force" in ld:
+                (x, y), (fx, fy) = ld["at"], ld["force"]
+                lines.append(f"{ld['link']:>6}  {x:10.5f}  {y:10.5f}  {fx:12.3f}  {fy:12.3f}  {'-':>12}")
+            else:
+                lines.append(f"{ld['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {ld['moment']:12.4f}")
     diff = nt.word("forces.diff")
     lines += ["", nt.word("forces.balancing"),
               f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",
@@ -144,47 +211,46 @@ def _text(res: dict[str, Any], lang: str) -> str:
 
 
 def run(args) -> int:
+    from graphmethods.cli._sheet import check_sheet_target, refuse_two_on_stdout, report_stream
+    from graphmethods.cli.kinematics import speed_rpm
     from graphmethods.errors import InputError
     from graphmethods.problems import builtin
 
-    if args.phi_deg is not None and not math.isfinite(args.phi_deg):
-        raise InputError(f"--phi-deg must be a finite angle in degrees, got {args.phi_deg}")
     m = count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
     if args.position is not None and not 0 <= args.position <= m:
         raise InputError(f"--position {args.position}: give a position from 0 to {m} (--positions {m})")
-    if not math.isfinite(args.epsilon_1):
-        raise InputError(f"--epsilon-1 must be a finite angular acceleration in rad/s², got {args.epsilon_1}")
-    if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
-        raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
+    n_rpm = speed_rpm(args)
+    _sheet.check_signature(args)
     sheet = None
     if args.sheet is not None:
-        from graphmethods.cli._sheet import check_sheet_target
-
-        if args.n is not None or args.epsilon_1 != 0.0:
-            raise InputError("--sheet draws the file's mean speed with ε₁ = 0; leave out --n and --epsilon-1 "
+        if n_rpm is not None or args.epsilon_1 != 0.0:
+            raise InputError("--sheet draws the file's mean speed with ε₁ = 0; leave out --n/--omega and --epsilon-1 "
                              "(or run them without --sheet)")
-        sheet = check_sheet_target(args.sheet, args.force)
+        sheet = check_sheet_target(args.sheet, args.force, args.format)
+    elif args.format is not None:
+        raise InputError("--format is the sheet's file format; add -o FILE (or -o - for standard output)")
+    refuse_two_on_stdout(args.json, sheet)
     case = builtin.case(args.case)
     data = None
     if sheet is not None:
-        from graphmethods.cli._sheet import scene_bytes
+        from graphmethods.cli._sheet import scene_bytes, signed
         from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
 
         scene = force_analysis_sheet(case, args.position, phi_deg=args.phi_deg, m=m, gravity=args.gravity,
                                      page=args.page, notation=args.lang)
-        data = scene_bytes(scene, sheet)
-    res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=args.n,
+        data = scene_bytes(signed(scene, args), sheet)
+    res = result(case, phi_deg=args.phi_deg, position=args.position, m=m, gravity=args.gravity, n_rpm=n_rpm,
                  epsilon_1=args.epsilon_1)
+    out = report_stream(sheet)
     if args.json:
-        print(json_text(res, ensure_ascii=False, indent=1))
+        print(json_text(res, indent=1), file=out)
     else:
         check_finite({k: v for k, v in res.items() if k != "pairs"})
-        print(_text(res, args.lang))
+        print(_text(res, args.lang), file=out)
     if data is not None and sheet is not None:     # written last: an error above leaves no file behind
         import sys
 
-        from graphmethods.render.files import write_atomic
-
-        write_atomic(sheet, data, overwrite=args.force)
-        print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
+        sheet.write(data, overwrite=args.force)
+        if not sheet.to_stdout:
+            print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

@@ -1,18 +1,18 @@
-"""``graphmethods gallery``: build every figure of the gallery (one small module per figure).
+"""``graphmethods gallery``: build every figure of the gallery (one catalogue row per figure).
 
-The figures are the modules of :mod:`graphmethods.gallery` (each defines ``build() -> Scene``), so
-the command works from an installed package. In a source checkout each figure's committed golden
+The figures are the rows of :mod:`graphmethods.gallery.catalogue` (each has ``build() -> Scene``),
+so the command works from an installed package. In a source checkout each figure's committed golden
 SVG is ``gallery/<name>.svg``, which the tests compare with. This command builds every figure into
 a folder, never over an existing file unless ``--force``; ``--regenerate`` rewrites the golden files
-of a source checkout on purpose (and the PNGs of figures that set ``PNG = True``); ``--dir`` builds
-your own folder of such scripts instead.
+of a source checkout on purpose (and the PNGs of rows with ``png=True``); ``--dir`` builds your own
+folder of scripts (each ``<name>.py`` defines ``build() -> Scene``) instead.
 
     graphmethods gallery --out gallery-out          # SVG of every figure
     graphmethods gallery --out gallery-out --png    # and PNG
     graphmethods gallery --out gallery-out --dxf    # and DXF (1 unit = 1 mm, layers by role)
     graphmethods gallery --regenerate               # rewrite gallery/*.svg (and marked PNGs), from the project folder
 
-Heavy modules (the sheets, svgwrite, matplotlib) are imported only when the command runs.
+Heavy modules (the sheets, matplotlib) are imported only when the command runs.
 """
 
 from __future__ import annotations
@@ -62,26 +62,23 @@ def _check_module(module: ModuleType, where: str) -> None:
         raise InputError(f"{where}: a gallery script must define build() returning a Scene")
 
 
-def figures(directory=None) -> list[tuple[str, ModuleType]]:
-    """(name, module) of every figure: the built-in ones, or the scripts of ``directory``."""
+def figures(directory=None) -> list:
+    """(name, figure) of every figure: the catalogue's rows, or the scripts of ``directory`` (modules);
+    each has ``build()``."""
     if directory is not None:
         return [(p.stem, load(p)) for p in scripts(directory)]
     from graphmethods import gallery as builtin
 
-    out = []
-    for name in builtin.figure_names():
-        module = builtin.figure_module(name)
-        _check_module(module, f"graphmethods.gallery.{name}")
-        out.append((name, module))
-    return out
+    return [(name, builtin.figure(name)) for name in builtin.figure_names()]
 
 
 def build(figure):
-    """The scene a figure builds: a built-in figure's name, a module, or a script's path."""
+    """The scene a figure builds: a built-in figure's name or catalogue row, a module, or a script's path."""
+    from graphmethods.gallery import Figure
     from graphmethods.scene import Scene
 
-    if isinstance(figure, ModuleType):
-        module, where = figure, figure.__name__
+    if isinstance(figure, (ModuleType, Figure)):
+        module, where = figure, getattr(figure, "__name__", None) or f"graphmethods.gallery: {figure.name}"
     elif isinstance(figure, pathlib.Path) or str(figure).endswith(".py"):
         module, where = load(figure), str(figure)
     else:
@@ -89,7 +86,7 @@ def build(figure):
 
         if figure not in builtin.figure_names():
             raise InputError(f"no built-in figure {figure!r}")
-        module, where = builtin.figure_module(figure), f"graphmethods.gallery.{figure}"
+        module, where = builtin.figure(figure), f"graphmethods.gallery: {figure}"
     scene = module.build()
     if not isinstance(scene, Scene):
         raise InputError(f"{where}: build() returned {type(scene).__name__}, not a Scene")
@@ -120,7 +117,8 @@ def add_parser(sub) -> None:
                        "problems) into a folder, as scale-true SVG (optionally PNG).")
     p.add_argument("--dir", default=None,
                    help="build the scripts of this folder instead (each <name>.py defines build() -> Scene)")
-    p.add_argument("--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
+    p.add_argument("-o", "--out", default=None, help=f"where to write the figures (default: {DEFAULT_OUT})")
+    p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
     p.add_argument("--png", action="store_true", help="also write a PNG of every figure")
     p.add_argument("--dxf", action="store_true",
@@ -129,6 +127,16 @@ def add_parser(sub) -> None:
                    help="in a source checkout: rewrite the committed golden SVGs in gallery/ (or in --dir), "
                         "and the PNGs of figures with PNG = True")
     p.set_defaults(func=run)
+
+
+def is_source_checkout(root: pathlib.Path) -> bool:
+    """True when ``root`` is graphmethods' own source folder: its pyproject.toml names the project and the
+    package lies beside it (a user's folder that merely has a ``gallery/`` is not one)."""
+    try:
+        text = (root / "pyproject.toml").read_text(encoding="utf-8", errors="replace")[:20_000]
+    except OSError:
+        return False
+    return 'name = "graphmethods"' in text and (root / "graphmethods" / "__init__.py").is_file()
 
 
 def run(args) -> int:
@@ -141,6 +149,10 @@ def run(args) -> int:
         if not out.is_dir():
             raise InputError(f"--regenerate rewrites the golden files of a source checkout: no folder {out} here; "
                              f"run it from the project folder")
+        if args.dir is None and not is_source_checkout(out.resolve().parent):
+            raise InputError(f"--regenerate rewrites the golden files of a source checkout, and {out.resolve().parent} "
+                             f"is none (no pyproject.toml of graphmethods beside graphmethods/); to build the "
+                             f"figures here use --out FOLDER")
     else:
         if args.out is not None and args.out.strip() == "":
             raise InputError("--out is empty; give a folder (it is created if missing)")
@@ -160,11 +172,14 @@ def run(args) -> int:
             more = f" and {len(existing) - 3} more" if len(existing) > 3 else ""
             raise OutputExistsError(f"{', '.join(existing[:3])}{more} exist; use --force to overwrite, "
                                     f"or another --out")
+    from graphmethods.cli._progress import Progress
     from graphmethods.render import formats
     from graphmethods.render.files import write_set
 
     blobs, lines = {}, []
-    for name, module, targets in jobs:      # build every figure first: a failing script writes nothing
+    progress = Progress(quiet=args.quiet, label="gallery ")
+    for k, (name, module, targets) in enumerate(jobs, start=1):  # build every figure first: a failing script writes
+        progress(k, len(jobs), name)                              # nothing
         try:
             scene = build(module)
         except GraphmethodsError as exc:
@@ -176,6 +191,7 @@ def run(args) -> int:
         line = " and ".join([f"wrote {targets[0]}"] + [t.name for t in targets[1:]])
         scales = "; ".join(s.caption() for s in scene.scales())
         lines.append(line + (f"  ({scales})" if scales else ""))
+    progress.done()
     write_set(out, blobs, overwrite=overwrite, what="gallery folder")
     for line in lines:
         print(line, file=sys.stdout)

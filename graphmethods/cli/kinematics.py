@@ -35,47 +35,85 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphmethods.cli import _sheet
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 #: Most positions the figures draw: the velocity table keeps rows at least 4 mm high on its page.
 FIGURES_MAX_POSITIONS = 30
 
 
+def builtin_names() -> str:
+    """The built-in linkages' names, for the help texts (from the registry, never typed)."""
+    from graphmethods.problems.builtin import LINKAGES
+
+    return ", ".join(LINKAGES)
+
+
+def add_speed(p) -> None:
+    """``--n`` or ``--omega``: the crank's mean speed, the same two names on every command."""
+    from graphmethods.cli._parser import number
+
+    speed = p.add_mutually_exclusive_group()
+    speed.add_argument("--n", type=number, default=None, metavar="N",
+                       help="mean crank speed, rev/min (default: the file's n_rpm)")
+    speed.add_argument("--omega", type=number, default=None, metavar="W",
+                       help="mean crank speed, rad/s (instead of --n)")
+
+
+def speed_rpm(args) -> float | None:
+    """The speed ``--n`` or ``--omega`` gives, in rev/min (None: the file's), refused unless positive."""
+    from graphmethods.errors import InputError
+    from graphmethods.units import n_from_omega
+
+    if args.n is not None and not args.n > 0:
+        raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
+    if getattr(args, "omega", None) is not None:
+        if not args.omega > 0:
+            raise InputError(f"--omega must be a positive speed in rad/s, got {args.omega:g}")
+        return n_from_omega(args.omega)
+    return args.n
+
+
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import integer, number, numbers
+
     p = sub.add_parser(
-        "kinematics", help="positions and velocity plans of a linkage problem file",
-        description="Positions 0…M of a linkage problem file (slider-crank press, four-bar, slotted lever, "
-                    "shaper) and its velocities at the file's mean crank speed, from the velocity plans.")
-    p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name: press, shaper, "
-                   "four-bar, slotted-lever (graphmethods problems)")
-    p.add_argument("--positions", "-m", type=int, default=12, metavar="M",
+        "kinematics", help="positions, velocities and accelerations of a linkage (plans, figures, the A1 sheet)",
+        description="Positions 0…M of a linkage (a problem file, or a built-in linkage: " + builtin_names()
+                    + ") and its velocities and accelerations at the file's mean crank speed, from the plans.")
+    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
+                   "linkage: " + builtin_names())
+    p.add_argument("--positions", "-m", type=integer, default=12, metavar="M",
                    help="number of equal crank steps per turn (default 12; positions 0…M)")
-    p.add_argument("--phi-deg", default=None, metavar="A[,B,...]",
-                   help="analyse at these crank angles (degrees from +x, counterclockwise) instead of M positions")
-    p.add_argument("--epsilon-1", type=float, default=0.0, metavar="E",
+    p.add_argument("--position", type=integer, default=None, metavar="K",
+                   help="print (and with --figures draw the plans of) position K of 0…M only")
+    p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
+                   help="analyse at these crank angles (degrees from +x, counterclockwise) instead of M positions; "
+                        "with --figures, the plans at each angle")
+    p.add_argument("--epsilon-1", type=number, default=0.0, metavar="E",
                    help="crank angular acceleration, rad/s², + when the crank speeds up (default 0)")
-    p.add_argument("--n", type=float, default=None, metavar="N",
-                   help="mean crank speed, rev/min (default: the file's n_rpm)")
+    add_speed(p)
     p.add_argument("--json", action="store_true", help="print one JSON object whose 'positions' is the list")
     p.add_argument("--figures", metavar="DIR", default=None,
                    help="also write the figures (scheme, velocity plans, one large plan, velocity table, the same "
-                        "for accelerations) into DIR")
+                        "for accelerations) into DIR; with --phi-deg, the scheme and the plans at those angles")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default="svg", dest="fig_format",
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None, dest="fig_format",
                    help="file format of the figures (default svg; dxf: 1 unit = 1 mm, layers by role; the table is "
-                        "also written as Markdown)")
-    p.add_argument("--plan-position", type=int, default=None, metavar="K",
-                   help="the position drawn as one large velocity plan (default: the fullest plan of the working "
-                        "stroke)")
-    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
+                        "also written as Markdown), and of the sheet when it goes to standard output (--sheet -)")
+    p.add_argument("--plan-position", type=integer, default=None, metavar="K",
+                   help="the position drawn as one large velocity plan (default: --position, else the fullest plan "
+                        "of the working stroke)")
+    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
                    help="also write the kinematic-analysis sheet (scheme, velocity plans, acceleration plans, the "
-                        "slider's diagrams; SVG, PDF or DXF, scale-true)")
+                        "slider's diagrams; scale-true); - writes it to standard output in --format, and nothing else")
     p.add_argument("--page", type=str.upper, choices=("A1",), default="A1",
                    help="sheet size: A1 (the sheet's four parts need it)")
     p.add_argument("--plan-positions", default=None, metavar="K[,L,...]",
                    help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
                         "and a return-stroke position)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
+    _sheet.add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -120,7 +158,7 @@ def _state(case, motion, i: int) -> tuple[dict, dict]:
     fixed = set(case.linkage.ground)
     points = {}
     for name in motion.points:
-        if name in fixed:
+        if name in fixed or name.startswith("_"):       # "_": the drawn form's hidden points
             continue
         z, v, a = motion.z[name][i], motion.v_[name][i], motion.a_[name][i]
         points[name] = {"xy": [_clean(z.real), _clean(z.imag)], "v": [_clean(v.real), _clean(v.imag)],
@@ -168,7 +206,7 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         units["psi_deg"] = "°"
     fixed = {c.name for c in plan.constructions.values() if c.method == "pole"}
     for name in plan.vectors:
-        if name in fixed:
+        if name in fixed or name.startswith("_"):
             continue
         key = f"v_{name}"
         cols[key] = plan.v_along_guide(name) if name in mech.guides else plan.speed(name)
@@ -187,6 +225,19 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         if k >= 2:
             cols[f"omega_{k}"] = plan.omega(link)
             units[f"omega_{k}"] = "rad/s"
+    for name in motion.points:            # accelerations: sliders signed along their guide, others |a|
+        if name in set(case.linkage.ground) or name in fixed:
+            continue
+        a = np.asarray(motion.a_[name])
+        guide = mech.guides.get(name)
+        cols[f"a_{name}"] = (a.real * guide[0] + a.imag * guide[1]) if guide is not None else np.abs(a)
+        units[f"a_{name}"] = "m/s²"
+    for k in mech.link_numbers:
+        if k >= 2:
+            cols[f"epsilon_{k}"] = np.asarray(motion.epsilon[str(k)], dtype=float)
+            units[f"epsilon_{k}"] = "rad/s²"
+    info = getattr(case, "drawn", None)
+    angles, slides = _drawn_columns(info, motion, cols, units, phi_deg)
     rows = []
     for i in range(pos.n):
         row: dict[str, Any] = {key: (int(v[i]) if key == "position" else _clean(v[i])) for key, v in cols.items()}
@@ -194,6 +245,12 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
             row["position"] = None
         row["ill_conditioned"] = bool(plan.ill_conditioned[i])
         row["points"], row["links"] = _state(case, motion, i)
+        for k, a in angles.items():
+            row["links"][k]["angle_deg"] = _clean(a[i])
+        if info is not None:
+            row["slides"] = [{"block": int(s["block"]), "on": int(s["on"]), "at": s["at"],
+                              "v_rel": _clean(s["v_rel"][i]), "a_rel": _clean(s["a_rel"][i]),
+                              "a_cor": [_clean(s["a_cor"][i].real), _clean(s["a_cor"][i].imag)]} for s in slides]
         rows.append(row)
     out = {
         "case": case.name, "kind": case.kind, "source": case.source, "n_rpm": case.n_rpm if n_rpm is None else n_rpm,
@@ -205,6 +262,10 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
         "groups": [{"type": g.kind, "class": g.cls, "order": g.order, "links": list(g.links)}
                    for g in case.linkage.structure().groups],
     }
+    if info is not None:
+        out["structure"] = info.structure.as_json()
+        out["driver"] = {"link": int(info.structure.driver), "phi_0_deg": math.degrees(info.phi_0),
+                         "range_deg": None if info.swing is None else [math.degrees(x) for x in info.swing]}
     if st is not None:
         out.update(phi_start_deg=math.degrees(st.phi_start), phi_end_deg=math.degrees(st.phi_end),
                    working_angle_deg=math.degrees(st.working_angle), return_angle_deg=math.degrees(st.return_angle),
@@ -218,29 +279,68 @@ def table(case, m: int | None = 12, *, phi_deg=None, epsilon_1: float = 0.0, n_r
     return out
 
 
-def _text(res: dict) -> str:
-    lines = [f"{res['case'] or res['kind']}  ({res['kind']}, {res['source']})",
-             f"n = {res['n_rpm']:g} rev/min, ω₁ = {res['omega_1']:.6g} rad/s ({res['sense']}), "
-             + (f"m = {res['m']} positions from {res.get('start', 'φ = 0')}" if res["m"] is not None
-                else "at the given crank angles"),
-             f"structure {res['structure']}"]
-    if "K" in res:
-        lines.append(f"working stroke {res['working_angle_deg']:.4f}°, return {res['return_angle_deg']:.4f}°, "
-                     f"K = {res['K']:.4f}" + (f", stroke H = {res['stroke_H']:.6g} m" if "stroke_H" in res else "")
-                     + (f", swing ψ_max = {res['psi_max_deg']:.4f}°" if "psi_max_deg" in res else ""))
-    lines.append("links: " + ", ".join(f"{k} = {v}" for k, v in res["links"].items()))
-    keys = [k for k in res["positions"][0] if k not in ("ill_conditioned", "points", "links")]
+def _columns(res: dict, keys: list[str]) -> list[str]:
+    """One table of the text output: a header of the keys with their units, a row per position."""
     head = [k if k not in res["units"] else f"{k} [{res['units'][k]}]" for k in keys]
     width = [max(10, len(h)) for h in head]
-    lines.append("  ".join(h.rjust(w) for h, w in zip(head, width)))
+    lines = ["  ".join(h.rjust(w) for h, w in zip(head, width))]
     for row in res["positions"]:
         cells = []
         for k, w in zip(keys, width):
             v = row[k]
             cells.append(("-" if v is None else str(v)).rjust(w) if k == "position"
-                         else f"{v:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
+                         else f"{v + 0.0 if abs(v) >= 5e-6 else 0.0:.{3 if k.endswith('_deg') else 5}f}".rjust(w))
         lines.append("  ".join(cells) + ("  ill-conditioned" if row["ill_conditioned"] else ""))
-    if res["m"] is not None:
+    return lines
+
+
+def _drawn_columns(info, motion, cols: dict, units: dict, phi_deg=None) -> tuple[dict, list]:
+    """A drawn file's link angles and slides over the positions; their flat columns added to ``cols``
+    (``angle_k_deg``, ``v_rel_b/o``, ``a_rel_b/o``, ``a_cor_b/o`` its magnitude); the driver's angle as
+    the file gives it (inside a swinging driver's range)."""
+    import numpy as np
+
+    if info is None:
+        return {}, []
+    from graphmethods.kinematics.drawn import driver_angles_deg, link_angles, slide_kinematics
+
+    if info.swing is not None:
+        cols["phi_deg"] = driver_angles_deg(info, motion, phi_deg)
+    angles = link_angles(info, motion)
+    for k, a in angles.items():
+        cols[f"angle_{k}_deg"] = a
+        units[f"angle_{k}_deg"] = "°"
+    slides = slide_kinematics(info, motion)
+    for s in slides:
+        tag = f"{s['block']}/{s['on']}"
+        for key, val, unit in (("v_rel", s["v_rel"], "m/s"), ("a_rel", s["a_rel"], "m/s²"),
+                               ("a_cor", np.abs(s["a_cor"]), "m/s²")):
+            cols[f"{key}_{tag}"] = val
+            units[f"{key}_{tag}"] = unit
+    return angles, slides
+
+
+def _text(res: dict) -> str:
+    lines = [f"{res['case'] or res['kind']}  ({res['kind']}, {res['source']})",
+             f"n = {res['n_rpm']:g} rev/min, ω₁ = {res['omega_1']:.6g} rad/s ({res['sense']}), "
+             + (f"m = {res['m']} positions from {res.get('start', 'φ = 0')}" if res["m"] is not None
+                else "at the given crank angles"),
+             f"structure {res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"
+             + (f", W = {res['structure']['dof']}" if isinstance(res["structure"], dict) else "")]
+    if "K" in res:
+        lines.append(f"working stroke {res['working_angle_deg']:.4f}°, return {res['return_angle_deg']:.4f}°, "
+                     f"K = {res['K']:.4f}" + (f", stroke H = {res['stroke_H']:.6g} m" if "stroke_H" in res else "")
+                     + (f", swing ψ_max = {res['psi_max_deg']:.4f}°" if "psi_max_deg" in res else ""))
+    lines.append("links: " + ", ".join(f"{k} = {v}" for k, v in res["links"].items()))
+    keys = [k for k in res["positions"][0] if k not in ("ill_conditioned", "points", "links", "slides")]
+    second = [k for k in keys if k.startswith(("a_", "epsilon_"))]
+    lines.append("velocities")
+    lines += _columns(res, [k for k in keys if k not in second])
+    lines.append(f"accelerations (ε₁ = {res['epsilon_1']:g} rad/s²; a slider's along its guide, other points' "
+                 f"magnitudes; ε counterclockwise +)")
+    lines += _columns(res, ["position", "phi_deg", *second])
+    if (res["m"] is not None and len(res["positions"]) == res["m"] + 1
+            and (res.get("driver") or {}).get("range_deg") is None):
         lines.append(f"position {res['m']} = position 0")
     return "\n".join(lines)
 
@@ -277,8 +377,37 @@ def figures(case, m: int, *, notation: str = "en", plan_position: int | None = N
     }
 
 
+def angle_figures(case, phi_deg, *, notation: str = "en", epsilon_1: float = 0.0) -> dict:
+    """The figures at given crank angles (degrees from +x): the scheme in those positions, and the velocity
+    and acceleration plans drawn large at each angle (``velocity_plan_30deg``, ``acceleration_plan_30deg``).
+
+    The textbook's own crank angle (a problem that says "at φ = 30°") gets its plans exactly there.
+    """
+    from graphmethods.dynamics.study import AngleStudy
+    from graphmethods.errors import InputError
+    from graphmethods.sheets import acceleration as sa, kinematics as ks
+
+    if len(phi_deg) > FIGURES_MAX_POSITIONS:
+        raise InputError(f"--figures draws the plans of at most {FIGURES_MAX_POSITIONS} crank angles; give fewer "
+                         f"--phi-deg angles")
+    from graphmethods.scene.notation import get
+
+    nt = get(notation)
+    study = AngleStudy(case, [a % 360.0 for a in phi_deg])
+    out: dict = {"kinematic_scheme": ks.kinematic_scheme(study, notation=notation)}
+    for i, a in enumerate(phi_deg):
+        shown = nt.number(a % 360.0, sig=6)
+        tag = f"{a % 360.0:g}".replace(".", "_") + "deg"
+        out[f"velocity_plan_{tag}"] = ks.velocity_plan(study, i, notation=notation,
+                                                       title=nt.word("kinematics.plan_at", phi=shown))
+        out[f"acceleration_plan_{tag}"] = sa.acceleration_plan(
+            study, i, epsilon_1=epsilon_1, notation=notation, title=nt.word("acceleration.plan_at", phi=shown))
+    return out
+
+
 def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", fmt: str = "svg",
-                  plan_position: int | None = None, overwrite: bool = False, epsilon_1: float = 0.0) -> list:
+                  plan_position: int | None = None, overwrite: bool = False, epsilon_1: float = 0.0,
+                  phi_deg=None) -> list:
     """Build every figure, then write them all into ``directory`` (created if missing).
 
     Nothing is written when a figure cannot be built or a file exists (without ``overwrite``);
@@ -297,7 +426,8 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
 
     if str(directory).strip() == "":
         raise InputError("--figures is empty; give a folder (it is created if missing)")
-    scenes = figures(case, m, notation=notation, plan_position=plan_position, epsilon_1=epsilon_1)
+    scenes = (figures(case, m, notation=notation, plan_position=plan_position, epsilon_1=epsilon_1)
+              if phi_deg is None else angle_figures(case, phi_deg, notation=notation, epsilon_1=epsilon_1))
     out = pathlib.Path(directory)
     if out.exists() and not out.is_dir():
         raise InputError(f"--figures {out}: it is a file, not a directory")
@@ -320,60 +450,72 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
     return list(blobs)
 
 
+def _sheet_data(case, args, phi_deg, n_rpm):
+    """(target, bytes) of ``--sheet`` (checked before any work), or (None, None)."""
+    from graphmethods.errors import InputError
+
+    if args.sheet is None:
+        if args.plan_positions is not None:
+            raise InputError("--plan-positions applies to the sheet; add --sheet FILE")
+        return None, None
+    from graphmethods.cli._sheet import check_sheet_target, scene_bytes, signed
+    from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
+
+    if phi_deg is not None or n_rpm is not None or args.epsilon_1 != 0.0:
+        raise InputError("--sheet draws the positions 0…M at the file's mean speed with ε₁ = 0; leave out "
+                         "--phi-deg, --n/--omega and --epsilon-1 (or run them without --sheet)")
+    count(args.positions, "--positions", low=3, high=FIGURES_MAX_POSITIONS, why="the sheet draws every position")
+    sheet = check_sheet_target(args.sheet, args.force, None if args.sheet != "-" else args.fig_format)
+    ks = None if args.plan_positions is None else _position_list(args.plan_positions)
+    scene = kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page, notation=args.lang)
+    return sheet, scene_bytes(signed(scene, args), sheet)
+
+
 def run(args) -> int:
+    import pathlib
+    import sys
+
+    from graphmethods.cli._sheet import refuse_two_on_stdout, report_stream
     from graphmethods.errors import InputError
     from graphmethods.problems import builtin
 
-    count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
-    case = builtin.case(args.case)
-    if not math.isfinite(args.epsilon_1):
-        raise InputError(f"--epsilon-1 must be a finite angular acceleration in rad/s², got {args.epsilon_1}")
-    if args.n is not None and not (math.isfinite(args.n) and args.n > 0):
-        raise InputError(f"--n must be a positive speed in rev/min, got {args.n:g}")
-    phi_deg = None if args.phi_deg is None else _phi_list(args.phi_deg)
-    sheet, sheet_data = None, None
-    if args.sheet is not None:
-        from graphmethods.cli._sheet import check_sheet_target, scene_bytes
-        from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
-
-        if phi_deg is not None or args.n is not None or args.epsilon_1 != 0.0:
-            raise InputError("--sheet draws the positions 0…M at the file's mean speed with ε₁ = 0; leave out "
-                             "--phi-deg, --n and --epsilon-1 (or run them without --sheet)")
-        count(args.positions, "--positions", low=3, high=FIGURES_MAX_POSITIONS, why="the sheet draws every position")
-        sheet = check_sheet_target(args.sheet, args.force)
-        ks = None if args.plan_positions is None else _position_list(args.plan_positions)
-        sheet_data = scene_bytes(kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page,
-                                                          notation=args.lang), sheet)
-    elif args.plan_positions is not None:
-        raise InputError("--plan-positions applies to the sheet; add --sheet FILE")
-    res = table(case, args.positions, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=args.n)
-    written = []
-    if args.figures is not None and phi_deg is not None:
-        raise InputError("--figures draws the positions 0…M; leave out --phi-deg")
-    if args.figures is not None:
-        import pathlib
-
-        written = write_figures(case, args.positions, args.figures, stem=pathlib.Path(args.case).stem,
-                                notation=args.lang, fmt=args.fig_format, plan_position=args.plan_position,
-                                overwrite=args.force, epsilon_1=args.epsilon_1)
-    elif args.plan_position is not None or args.fig_format != "svg" or (
-            sheet is None and (args.force or args.lang != "en")):
+    m = count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
+    if args.position is not None and args.phi_deg is not None:
+        raise InputError("--position K picks a position of 0…M, --phi-deg gives crank angles: give one of them")
+    if args.position is not None and not 0 <= args.position <= m:
+        raise InputError(f"--position {args.position}: give a position from 0 to {m} (--positions {m})")
+    if args.sheet is None and args.figures is None and (args.plan_position is not None or args.fig_format
+                                                        or args.force or args.lang != "en"):
         raise InputError("--lang, --format, --plan-position and --force apply to the figures; add --figures DIR "
-                         "(--lang and --force also to --sheet FILE)")
+                         "(--lang, --format and --force also to --sheet FILE)")
+    n_rpm = speed_rpm(args)
+    case = builtin.case(args.case)
+    phi_deg = args.phi_deg
+    _sheet.check_signature(args)
+    sheet, sheet_data = _sheet_data(case, args, phi_deg, n_rpm)
+    refuse_two_on_stdout(args.json, sheet)
+    res = table(case, m, phi_deg=phi_deg, epsilon_1=args.epsilon_1, n_rpm=n_rpm)
+    if args.position is not None:
+        res["positions"] = [res["positions"][args.position]]
+    written = []
+    if args.figures is not None:
+        stem = "stdin" if args.case == builtin.STDIN else pathlib.Path(args.case).stem
+        plan_position = args.plan_position if args.plan_position is not None else args.position
+        written = write_figures(case, m, args.figures, stem=stem, notation=args.lang, fmt=args.fig_format or "svg",
+                                plan_position=plan_position, overwrite=args.force, epsilon_1=args.epsilon_1,
+                                phi_deg=phi_deg)
+    out = report_stream(sheet)
     if args.json:
         if written:
             res["figures"] = [str(p) for p in written]
-        print(json_text(res, ensure_ascii=False, indent=1))
+        print(json_text(res, indent=1), file=out)
     else:
         check_finite(res)          # the same finiteness check before the text is printed
-        print(_text(res))
+        print(_text(res), file=out)
         for p in written:
-            print(f"wrote {p}")
+            print(f"wrote {p}", file=out)
     if sheet is not None and sheet_data is not None:      # written last: an error above leaves no file behind
-        import sys
-
-        from graphmethods.render.files import write_atomic
-
-        write_atomic(sheet, sheet_data, overwrite=args.force)
-        print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
+        sheet.write(sheet_data, overwrite=args.force)
+        if not sheet.to_stdout:
+            print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

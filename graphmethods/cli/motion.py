@@ -31,13 +31,16 @@ def preprocess_argv(argv: list[str]) -> list[str]:
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli.kinematics import builtin_names
+
     p = sub.add_parser(
         "motion", help="motion from given initial conditions: start-up, steady running, run-down",
         description="Integrate J_e(φ)dω/dt + ½ω²dJ_e/dφ = M(φ, ω, t) from φ0, ω0, t0 for a built-in problem "
-                    "(W3, W4, press, four-bar, slotted-lever, shaper) or a linkage problem file, and print "
+                    "(W3, W4, W4-exact, " + builtin_names() + ") or a linkage problem file, and print "
                     "t, φ, ω, ε (SI) and a summary.",
         epilog="Example: graphmethods motion press --motor induction:P=5500,n=1440,n_sync=1500,lam=2.2 --until-steady")
-    p.add_argument("case", metavar="CASE", help="a built-in problem name or a linkage problem file (JSON)")
+    p.add_argument("case", metavar="CASE", help="a built-in problem (W3, W4, W4-exact, " + builtin_names() + ") or a "
+                   "linkage problem file (JSON; - reads it from standard input)")
     p.add_argument("--phi0", default=None, metavar="DEG", help="initial crank angle, degrees (default: position 0)")
     p.add_argument("--omega0", default=None, metavar="RAD_S",
                    help="initial speed, rad/s (default: the problem's own ω0, else 0: start from rest)")
@@ -64,10 +67,11 @@ def add_parser(sub) -> None:
     p.add_argument("--rtol", default="1e-10", help="relative tolerance of the integrator (default 1e-10)")
     p.add_argument("--json", action="store_true", help="print one JSON object: arrays t, phi, omega, epsilon "
                                                        "and the summary")
-    p.add_argument("--figures", default=None, metavar="DIR",
-                   help="also draw ω(t), ω(φ) and ε(φ) into DIR (created if missing), scale-true")
+    p.add_argument("-o", "--out", "--figures", dest="figures", default=None, metavar="DIR",
+                   help="also draw ω(t), ω(φ) and ε(φ) into DIR (created if missing), scale-true (older name "
+                        "--figures still accepted)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figures (default en)")
-    p.add_argument("--format", choices=("svg", "pdf", "png"), default="svg", dest="fig_format",
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default="svg", dest="fig_format",
                    help="file format of the figures (default svg)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     p.set_defaults(func=run)
@@ -152,8 +156,11 @@ def run(args: argparse.Namespace) -> int:
     elif args.brake_at is not None:
         raise InputError("--brake-at needs --brake M_B")
 
-    m = machine(args.case)
-    J_F = m.J_F if args.J_F is None else parse_number(args.J_F, name="--J-F")
+    J_F_given = _opt(args.J_F, "--J-F")
+    if J_F_given is not None and J_F_given < 0:
+        raise InputError(f"--J-F {args.J_F}: a flywheel's inertia is 0 or positive, kg·m²")
+    m = machine(args.case, J_F=J_F_given)
+    J_F = m.J_F
     extra_J = 0.0
     if args.motor is not None:
         drive, extra_J = parse_motor(args.motor, omega_m=m.omega_m)
@@ -170,12 +177,24 @@ def run(args: argparse.Namespace) -> int:
     if omega_0 is None:
         omega_0 = m.omega_0 if m.omega_0 is not None else 0.0
     phi_0 = None if args.phi0 is None else math.radians(parse_number(args.phi0, name="--phi0"))
+    speed_dependent = args.motor is not None or (brake is not None and brake.c != 0) or (
+        args.moment is not None and "omega" in args.moment.replace("ω", "omega"))
+    if args.until_steady and not speed_dependent and omega_0 == 0:
+        raise InputError("--until-steady from rest needs a drive whose moment depends on the speed (--motor "
+                         "induction:... or dc:...): with the problem's own constant M_d every period gives back the "
+                         "energy it started with, so a machine started from rest never settles to a steady speed; "
+                         "give --motor, or a starting speed --omega0 (then the motion repeats from there)")
     res = integrate(model, J_F=J_F + extra_J, drive=drive, drive_off_at=_opt(args.drive_off_at, "--drive-off-at"),
                     brake=brake, extra=extra, phi_0=phi_0, omega_0=omega_0, t_0=t0, t_end=t_end, turns=turns,
                     until_steady=args.until_steady, tol=tol, rtol=rtol, omega_ref=m.omega_m, max_steps=MAX_STEPS)
+    if args.until_steady and res.ended_by == "stopped":
+        raise InputError(f"--until-steady: the machine stopped at t = {res.t[-1]:.6g} s (φ = "
+                         f"{math.degrees(res.phi[-1]):.6g}°) before a steady state: a steady state needs the drive to "
+                         f"carry the machine through each period's resistance; give a motor (--motor), a larger "
+                         f"--omega0 or more flywheel (--J-F)")
     summary = {"case": m.name, "J_F": J_F, "J_rotor_reduced": extra_J,
                "drive": ("motor " + args.motor) if args.motor else
-                        (f"constant M_d = {m.M_d!r} N·m" if m.M_d is not None else "M_d(φ) of the problem"),
+                        (f"constant M_d = {m.M_d:.9g} N·m" if m.M_d is not None else "M_d(φ) of the problem"),
                "phi0_deg": math.degrees(res.phi[0]), "omega0": float(res.omega[0]), "t0": t0}
     if args.motor is not None:
         summary["motor_ratio"] = drive.ratio
@@ -191,11 +210,11 @@ def run(args: argparse.Namespace) -> int:
     steady: dict | None = summary.pop("steady", None)  # type: ignore[assignment]
     width = max(map(len, summary))
     for key, value in summary.items():
-        print(f"{key.ljust(width)}  {value:.6g}" if isinstance(value, float) else f"{key.ljust(width)}  {value}")
+        print(f"{key.ljust(width)}  {value:.9g}" if isinstance(value, float) else f"{key.ljust(width)}  {value}")
     if steady is not None:
         print("steady state:")
         for key, value in steady.items():
-            shown = f"{value:.6g}" if isinstance(value, float) else f"{value}"
+            shown = f"{value:.9g}" if isinstance(value, float) else f"{value}"
             print(f"  {key.ljust(width)}  {shown}")
     return 0
 

@@ -10,23 +10,31 @@ An existing file is kept unless ``--force``; on any error nothing is written.
 
 from __future__ import annotations
 
-import pathlib
 import sys
 
-from graphmethods.cli._sheet import check_sheet_target
+from graphmethods.cli._sheet import add_signature_options, check_sheet_target, check_signature, signed
 from graphmethods.errors import InputError
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import integer, numbers
+    from graphmethods.cli.kinematics import add_speed, builtin_names
+
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
-                       description="Solve a linkage problem (a problem file, or a built-in name such as press: "
-                       "see graphmethods problems): "
+                       description="Solve a linkage problem (a problem file, or a built-in linkage: "
+                       + builtin_names() + "): "
                        "M_d by work balance, ΔW_max, J_F by the ΔW_max method and by the Wittenbauer diagram at "
-                       "M positions, the exact J_F, and where ω_max and ω_min occur. With --sheet, also draw the "
-                       "dynamic-analysis sheet (M_e, ΔT, J_e turned 90°, the energy–mass diagram, the result).")
-    p.add_argument("case", metavar="CASE", help="problem file (.json) or built-in problem name (graphmethods problems)")
-    p.add_argument("--positions", type=int, default=12, metavar="M", help="number of positions (default 12)")
+                       "M positions, the exact J_F, and where ω_max and ω_min occur; with --phi-deg, J_e, M_e, the "
+                       "powers, ω and ε at those crank angles. With -o/--sheet, also draw the dynamic-analysis sheet "
+                       "(M_e, ΔT, J_e turned 90°, the energy–mass diagram, the result).")
+    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
+                   "linkage: " + builtin_names())
+    p.add_argument("--positions", "-m", type=integer, default=12, metavar="M", help="number of positions (default 12)")
+    p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
+                   help="also give J_e, dJ_e/dφ, M_d, M_r, M_e, ω, ε and the powers N_d = M_d·ω, N_r = M_r·ω of the "
+                        "steady motion (with the exact J_F) at these crank angles (degrees from +x)")
+    add_speed(p)
     p.add_argument("--no-exact", action="store_true", help="skip the exact reference solution (faster)")
     p.add_argument("--translating", nargs="?", const="", default=None, metavar="POINT",
                    help="also reduce to a translating link at POINT (default: the point the load acts on): "
@@ -37,37 +45,73 @@ def add_parser(sub) -> None:
     p.add_argument("--reserve", default="1", metavar="K", help="with --eta: reserve factor on the motor's power "
                                                                "(default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
-                   help="also write the dynamic-analysis sheet (SVG, PDF or DXF, scale-true)")
+    p.add_argument("-o", "--out", "--sheet", dest="sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
+                   help="also write the dynamic-analysis sheet (scale-true); - writes it to standard output in "
+                        "--format, and nothing else (older name --sheet still accepted)")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
+                   help="file format of the sheet (default: the file name's suffix; needed with -o -)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="notation and language of the sheet (default en)")
     p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    add_signature_options(p)
     p.set_defaults(func=run)
 
 
-def _sheet_bytes(study, path: pathlib.Path, *, page: str, lang: str) -> bytes:
+def _sheet_bytes(study, target, *, page: str, lang: str, args=None) -> bytes:
     from graphmethods.errors import NoFlywheelNeeded
     from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
 
     try:
         scene = dynamic_analysis_sheet(study, page=page, notation=lang)
     except NoFlywheelNeeded as exc:
-        raise InputError(f"--sheet {path}: {exc}; the sheet has no flywheel to construct, so nothing was written "
+        raise InputError(f"--sheet {target}: {exc}; the sheet has no flywheel to construct, so nothing was written "
                          f"(run without --sheet for the numbers)") from None
     from graphmethods.render import formats
 
-    return formats.to_bytes(scene, path.suffix)        # .svg, .pdf or .dxf (checked before any work)
+    return formats.to_bytes(signed(scene, args), target.suffix)        # checked before any work
+
+
+#: the columns of the table at --phi-deg angles: key, header
+AT_ANGLE = (("phi_deg", "φ [°]"), ("J_e", "J_e [kg·m²]"), ("dJ_e_dphi", "dJ_e/dφ [kg·m²/rad]"), ("M_d", "M_d [N·m]"),
+            ("M_r", "M_r [N·m]"), ("M_e", "M_e [N·m]"), ("omega", "ω [rad/s]"), ("epsilon", "ε [rad/s²]"),
+            ("N_d", "N_d [W]"), ("N_r", "N_r [W]"))
+
+
+def _angle_table(rows: list[dict]) -> list[str]:
+    """The table of ``--phi-deg`` for the text output (the same numbers as ``"at_angles"`` in --json)."""
+    width = [max(11, len(h)) for _, h in AT_ANGLE]
+    lines = [f"at the given crank angles (steady motion with J_F = {rows[0]['J_F']:.6g} kg·m²; M_e = M_d − M_r)",
+             "  ".join(h.rjust(w) for (_, h), w in zip(AT_ANGLE, width))]
+    for r in rows:
+        lines.append("  ".join(f"{r[k]:.{3 if k == 'phi_deg' else 6}g}".rjust(w) if k != "phi_deg"
+                               else f"{r[k]:.3f}".rjust(w) for (k, _), w in zip(AT_ANGLE, width)))
+    return lines
 
 
 def run(args) -> int:
+    from graphmethods.cli._sheet import refuse_two_on_stdout, report_stream
+    from graphmethods.cli.kinematics import speed_rpm
     from graphmethods.dynamics.study import Study
     from graphmethods.problems import builtin
 
     count(args.positions, "--positions", low=3, high=MAX_POSITIONS, why="checked before any work")
-    sheet = check_sheet_target(args.sheet, args.force) if args.sheet is not None else None
-    study = Study(builtin.case(args.case), positions=args.positions)
-    data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang) if sheet is not None else None
+    check_signature(args)
+    sheet = check_sheet_target(args.sheet, args.force, args.format) if args.sheet is not None else None
+    if sheet is None and args.format is not None:
+        raise InputError("--format is the sheet's file format; add -o FILE (or -o - for standard output)")
+    refuse_two_on_stdout(args.json, sheet)
+    from graphmethods.kinematics.drawn import require_cycle
+
+    case = builtin.case(args.case)
+    require_cycle(case, "the study")
+    n_rpm = speed_rpm(args)
+    if n_rpm is not None:                    # the mean speed of the file replaced, everything else kept
+        import dataclasses
+
+        case = dataclasses.replace(case, n_rpm=n_rpm)
+    study = Study(case, positions=args.positions)
+    data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang, args=args) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
     if args.eta is not None:
         from graphmethods.dynamics.power import efficiency_series
@@ -79,26 +123,35 @@ def run(args) -> int:
         tr = study.translating(args.translating or None)
         point = args.translating or str(study.case.load.at)
         out["translating"] = {"point": point, **tr.to_dict()}
+    if args.phi_deg is not None:
+        out["at_angles"] = study.at_angles(args.phi_deg)
     check_finite(out)                        # a result that is not finite is refused, naming it
     if data is not None and sheet is not None:   # written last: an error above leaves no file behind
-        from graphmethods.render.files import write_atomic
-
-        write_atomic(sheet, data, overwrite=args.force)
+        sheet.write(data, overwrite=args.force)
+    stream = report_stream(sheet)
     if args.json:
-        print(json_text(out, indent=1))
+        print(json_text(out, indent=1), file=stream)
     else:
-        width = max(map(len, out))
-        for key, value in out.items():
-            if key == "power":
-                value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
-            elif key == "translating":
-                value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "
-                         + ", ".join(f"{x:.5g}" for x in value["F_e"]) + " N at positions "
-                         + ", ".join(map(str, value["positions"])) + " (dead centres: "
-                         + ", ".join(map(str, value["dead_centre_positions"])) + ")")
-            elif isinstance(value, float):
-                value = f"{value:.6g}"
-            print(f"{key.ljust(width)}  {value}")
-    if sheet is not None:
+        _print_text(out, stream)
+    if sheet is not None and not sheet.to_stdout:
         print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0
+
+
+def _print_text(out: dict, stream) -> None:
+    """The study as ``key  value`` lines, then the table at the given angles."""
+    rows = out.pop("at_angles", None)
+    width = max(map(len, out))
+    for key, value in out.items():
+        if key == "power":
+            value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
+        elif key == "translating":
+            value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "
+                     + ", ".join(f"{x:.5g}" for x in value["F_e"]) + " N at positions "
+                     + ", ".join(map(str, value["positions"])) + " (dead centres: "
+                     + ", ".join(map(str, value["dead_centre_positions"])) + ")")
+        elif isinstance(value, float):
+            value = f"{value:.6g}"
+        print(f"{key.ljust(width)}  {value}", file=stream)
+    if rows:
+        print("\n".join(_angle_table(rows)), file=stream)

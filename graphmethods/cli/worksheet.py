@@ -92,6 +92,8 @@ def write_worksheet(sheet: Worksheet, out_dir: str | os.PathLike[str], *, overwr
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import integer
+
     p = sub.add_parser("worksheet", help="printable worksheets with answer keys (variants from a seed)",
                        description="Variants of a worksheet for a class, reproducible from a seed: a student page "
                        "and an answer-key page each, in one PDF (students, then keys), an SVG per page, and a "
@@ -101,10 +103,10 @@ def add_parser(sub) -> None:
     p.add_argument("kind", choices=KINDS, help="indicator (W1 style), step-moment (W3 style), velocity-plan "
                    "(slider-crank in one position), wittenbauer (slider-crank press), acceleration-plan "
                    "(slider-crank or slotted lever in one position)")
-    p.add_argument("--variants", type=int, default=1, metavar="N", help="number of variants (default 1)")
-    p.add_argument("--seed", type=int, default=0, metavar="S", help="seed; the same seed gives the same variants")
+    p.add_argument("--variants", type=integer, default=1, metavar="N", help="number of variants (default 1)")
+    p.add_argument("--seed", type=integer, default=0, metavar="S", help="seed; the same seed gives the same variants")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")
-    p.add_argument("--out", required=True, metavar="DIR", help="output folder (created if missing)")
+    p.add_argument("-o", "--out", required=True, metavar="DIR", help="output folder (created if missing)")
     p.add_argument("--force", action="store_true", help="replace existing files")
     p.add_argument("--quiet", action="store_true", help="no progress on stderr")
     p.add_argument("--dxf", action="store_true", help="also write each page as DXF in DIR/dxf/ (students draw on it in "

@@ -26,7 +26,8 @@ from graphmethods.dynamics.flywheel import Flywheel, flywheel
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.dynamics.motion import ReducedModel
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
-from graphmethods.units import convenient_at_least
+from graphmethods.errors import InputError
+from graphmethods.units import MAGNITUDE_MIN, convenient_at_least
 
 
 @dataclass(frozen=True, eq=False)
@@ -44,8 +45,16 @@ class ChordFlywheels:
 
 def diagram_scales(J_e: np.ndarray, delta_T: np.ndarray, *, span_mm: float = 150.0) -> tuple[float, float]:
     """Convenient μ_J, μ_T for an energy–mass diagram about ``span_mm`` across."""
+    J_max = float(J_e.max())
+    if not J_max > 0:
+        raise InputError("the reduced moment of inertia J_e is zero in every position (every mass and moment of "
+                         "inertia of the problem is zero): an energy–mass diagram needs them; give the masses")
     span_T = float(np.ptp(delta_T)) or 1.0
-    return convenient_at_least(float(J_e.max()) / span_mm), convenient_at_least(span_T / span_mm)
+    if span_T / span_mm < MAGNITUDE_MIN or J_max / span_mm < MAGNITUDE_MIN:
+        raise InputError(f"the kinetic energy varies by {span_T:.3g} J and J_e reaches {J_max:.3g} kg·m² over the "
+                         f"cycle: too small to draw at any scale (the loads or masses of the problem are below "
+                         f"{MAGNITUDE_MIN:g} in their units)")
+    return convenient_at_least(J_max / span_mm), convenient_at_least(span_T / span_mm)
 
 
 #: The finer construction that estimates the error at m positions has REFINE·m positions, at most FINE_CAP.

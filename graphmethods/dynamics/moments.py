@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
-from graphmethods.units import finite_array, real
+from graphmethods.units import MAGNITUDE_MAX, finite_array, real
 
 TWO_PI = 2.0 * math.pi
 
@@ -204,11 +204,11 @@ class MomentCurve:
         M = np.asarray(f(phi), dtype=float)
         if M.shape != phi.shape:
             M = np.broadcast_to(M, phi.shape).astype(float)
-        bad = ~np.isfinite(M)
+        bad = ~np.isfinite(M) | (np.abs(M) > MAGNITUDE_MAX)
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
-            raise InputError(f"the moment function gave {M[i]!r} at phi = {phi[i]:g} rad; "
-                             "it must be finite over the whole period")
+            raise InputError(f"the moment function gave {M[i]!r} at phi = {phi[i]:g} rad; it must be finite and "
+                             f"within ±{MAGNITUDE_MAX:g} N·m over the whole period")
         return M
 
     # ----------------------------------------------------------------- queries

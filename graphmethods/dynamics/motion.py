@@ -386,6 +386,11 @@ def _check_positive(value: object, name: str) -> float:
 # ΔE(φ): the primitive of M_e, by vectorised adaptive Gauss–Kronrod quadrature
 # --------------------------------------------------------------------------------------------
 
+#: Most intervals the adaptive quadrature of a moment may split a period into (15 evaluations each): a moment
+#: given as a formula that oscillates too fast to follow (sin(1e15·φ)) is refused instead of sampled without bound
+MAX_QUADRATURE_INTERVALS = 2**18
+
+
 class _Primitive:
     """The running integral F(x) = ∫_a^x f, evaluable at any x in [a, b] to ~rtol·∫|f|.
 
@@ -422,6 +427,10 @@ class _Primitive:
             if ok.all():
                 break
             lo, hi = lo[~ok], hi[~ok]
+            if sum(x.size for x in keep_lo) + 2 * lo.size > MAX_QUADRATURE_INTERVALS:
+                raise InputError(f"the moment varies too fast to integrate: more than {MAX_QUADRATURE_INTERVALS} "
+                                 f"intervals of φ (MAX_QUADRATURE_INTERVALS) would be needed to follow it; a moment "
+                                 f"of a machine changes a few times per turn, not millions")
             mid = 0.5 * (lo + hi)
             lo, hi = np.concatenate([lo, mid]), np.concatenate([mid, hi])
         else:  # pragma: no cover - the width floor ends the bisection long before

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.errors import InputError
+from graphmethods.units import real
 
 
 @dataclass(frozen=True)
@@ -102,8 +103,12 @@ class ReducedChain:
 
 
 def _finite(v: float, what: str, *, positive: bool) -> float:
-    x = float(v)
-    if not math.isfinite(x) or (x <= 0 if positive else x == 0):
+    """A number by the toolkit's policy (finite, magnitudes 1e-100 … 1e100), positive or non-zero."""
+    try:
+        x = real(v, what)
+    except InputError as exc:
+        raise InputError(f"{exc}; give a {'positive' if positive else 'non-zero'} finite number") from None
+    if x <= 0 if positive else x == 0:
         raise InputError(f"{what} = {v!r}: give a {'positive' if positive else 'non-zero'} finite number")
     return x
 

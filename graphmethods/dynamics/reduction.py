@@ -170,11 +170,16 @@ def resisting_moment(positions: Positions, plans: VelocityPlans, load: Load | Di
     return out
 
 
+#: parts each bracket of :func:`load_switch_angles` is split into a round (one solve of 2·(_SPLIT − 1) angles)
+_SPLIT = 32
+
+
 def load_switch_angles(mechanism: LinkageMechanism, load: Load | DiagramLoad) -> tuple[float, float]:
     """Crank rotations from position 0 (rad) where the load switches on and off.
 
     The stroke fraction grows monotonically over the working stroke, so each switch angle is the
-    root of ``fraction(φ) = start`` (``= end``), found by bisection to machine precision.
+    root of ``fraction(φ) = start`` (``= end``), found to machine precision by splitting both brackets
+    into :data:`_SPLIT` parts a round, all in one solve of the linkage.
     """
     strokes = mechanism.strokes()
     if strokes is None:
@@ -183,13 +188,24 @@ def load_switch_angles(mechanism: LinkageMechanism, load: Load | DiagramLoad) ->
         return 0.0, float(strokes.working_angle)
     lo = np.zeros(2)
     hi = np.full(2, strokes.working_angle)
-    target = np.array([load.start, load.end])
-    for _ in range(64):
-        mid = 0.5 * (lo + hi)
-        frac = _stroke_fraction(mechanism.positions(phi_from_start=mid), load)
-        below = frac < target
-        lo = np.where(below, mid, lo)
-        hi = np.where(below, hi, mid)
+    target = np.array([load.start, load.end])[:, None]
+    steps = np.arange(1, _SPLIT) / _SPLIT
+    rows = np.arange(2)
+    tiny = strokes.working_angle * 2.0 ** -64
+    done = np.zeros(2, dtype=bool)
+    settled = done.copy()
+    for _ in range(64):          # each round splits both brackets in _SPLIT in one solve: 11 rounds, not 64
+        t = lo[:, None] + (hi - lo)[:, None] * steps
+        below = _stroke_fraction(mechanism.positions(phi_from_start=t.ravel()), load).reshape(t.shape) < target
+        j = np.where(below.all(axis=1), _SPLIT - 1, np.argmin(below, axis=1))   # the first point not below
+        new_lo = np.where(j > 0, t[rows, np.maximum(j - 1, 0)], lo)
+        new_hi = np.where(j < _SPLIT - 1, t[rows, np.minimum(j, _SPLIT - 2)], hi)
+        # a bracket is done when it no longer narrows (adjacent numbers) or is as narrow as 64 halvings make it
+        done |= ((new_lo == lo) & (new_hi == hi)) | (new_hi - new_lo <= tiny)
+        lo, hi = np.where(settled, lo, new_lo), np.where(settled, hi, new_hi)
+        settled = done.copy()
+        if settled.all():
+            break
     a, b = 0.5 * (lo + hi)
     return float(a), float(b)
 

@@ -44,6 +44,7 @@ import numpy.typing as npt
 
 from graphmethods.dynamics.motion import FloatArray, PhiFunction, ReducedModel, _check_positive
 from graphmethods.errors import InputError, MotionError
+from graphmethods.units import real
 
 __all__ = ["Brake", "ConstantDrive", "Run", "SteadyState", "run"]
 
@@ -287,13 +288,36 @@ class Run:
         t = self.t[i] + theta * (self.t[i + 1] - self.t[i])
         return {"phi": x, "t": t, "omega": y[:, 1], "epsilon": eps}
 
+    def extremes(self) -> dict[str, float]:
+        """The extremes of ω and ε over the whole run, found on the dense solution (not at the steps).
+
+        ω_max and ω_min lie at a root of ε (bisected on the fifth-order partial steps) or at an end of
+        the run; ε_max and ε_min by a golden-section search there. ``error_extremes_omega`` bounds
+        the error of the ω extremes: the integrator's global estimate plus the last bracket's spread.
+
+        Returns
+        -------
+        dict
+            ``omega_max_run``, ``t_omega_max_run`` (s), ``phi_omega_max_run_deg`` (°, absolute) and the
+            same for ``omega_min_run``; ``epsilon_max_run``, ``epsilon_min_run`` (rad/s²) with their times;
+            ``error_extremes_omega`` (rad/s).
+
+        Examples
+        --------
+        >>> from graphmethods.dynamics.motion import ReducedModel
+        >>> r = run(ReducedModel(J_e=1.0, M_e=lambda p: np.cos(p)), omega_0=1.0, turns=1)
+        >>> bool(abs(r.extremes()["omega_max_run"] - math.sqrt(3.0)) < 1e-8)   # ½ω² = ½ + sin φ at φ = π/2
+        True
+        """
+        return _dense_extremes(self)
+
     def summary(self) -> dict[str, Any]:
         """A JSON-ready summary (no arrays)."""
         out = {"ended_by": self.ended_by, "t_end": float(self.t[-1]), "phi_end_deg": math.degrees(self.phi[-1]),
                "omega_end": float(self.omega[-1]), "turns": float((self.phi[-1] - self.phi[0]) / TWO_PI),
                "steps": self.steps, "rtol": self.rtol, "error_estimate_omega": self.error_estimate,
-               "energy_residual": self.energy_residual, "omega_max_run": float(self.omega.max()),
-               "epsilon_max_run": float(self.epsilon.max()), "epsilon_min_run": float(self.epsilon.min())}
+               "energy_residual": self.energy_residual}
+        out.update(self.extremes())
         if self.steady is not None:
             out["steady"] = self.steady.to_dict()
         return out
@@ -325,12 +349,16 @@ def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: B
     """The arguments of :func:`run` checked (InputError naming the bad one); returns the starting angle φ0."""
     if not isinstance(model, ReducedModel):
         raise InputError("model: give a ReducedModel (J_e(φ) and M_e(φ))")
-    if not math.isfinite(float(J_F)):
-        raise InputError(f"J_F = {J_F!r} kg·m² is not finite")
-    phi_0 = model.phi_0 if phi_0 is None else float(phi_0)
+    real(J_F, "J_F", unit="kg·m²", tiny_ok=True)          # the number policy: finite, at most 1e100
+    phi_0 = model.phi_0 if phi_0 is None else real(phi_0, "phi_0", unit="rad", tiny_ok=True)
     for name, v in (("phi_0", phi_0), ("omega_0", omega_0), ("t_0", t_0)):
-        if not (isinstance(v, (int, float)) and math.isfinite(v)):
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
             raise InputError(f"{name} = {v!r} is not a finite number")
+        real(v, name, tiny_ok=True)
+    if t_end is not None:
+        real(t_end, "t_end", unit="s", tiny_ok=True)
+    if turns is not None:
+        real(turns, "turns", tiny_ok=True)
     if omega_0 < 0:
         raise InputError(f"omega_0 = {omega_0!r} rad/s: the run starts at rest (0) or turning forwards (> 0)")
     if t_end is None and turns is None and not until_steady:
@@ -349,6 +377,7 @@ def _check_run(model: ReducedModel, *, J_F: float, drive: Drive | None, brake: B
     return phi_0
 
 
+@np.errstate(over="ignore", invalid="ignore")     # an overflowing trial stage is rejected, not reported by numpy
 def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, drive_off_at: float | None = None,
         brake: Brake | None = None, extra: Extra | None = None, phi_0: float | None = None, omega_0: float = 0.0,
         t_0: float = 0.0, t_end: float | None = None, turns: float | None = None, until_steady: bool = False,
@@ -428,6 +457,8 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
 
     def rhs(t: float, y: FloatArray) -> FloatArray:
         phi, omega = y[0], y[1]
+        if not (math.isfinite(phi) and math.isfinite(omega) and abs(omega) < 1e150):
+            return np.full(4, math.nan)       # a trial stage that overflowed: the step is rejected and shortened
         p = np.array([phi])
         J = J_F + float(J_e(p)[0])
         if not J > 0:
@@ -566,6 +597,12 @@ def run(model: ReducedModel, *, J_F: float = 0.0, drive: Drive | None = None, dr
                                   f"the period start still changes by {abs(boundary[-1][1] - boundary[-2][1]):.3g} "
                                   f"rad/s a period; check the drive against the load")
     else:
+        if until_steady and len(boundary) >= 2:
+            raise MotionError(f"no steady state within {max_steps} steps ({len(boundary) - 1} periods, t = {t:.6g} s): "
+                              f"the speed at the period start still changes by "
+                              f"{abs(boundary[-1][1] - boundary[-2][1]):.3g} rad/s a period; the speed settles only "
+                              f"when a moment depends on it (a motor, a brake M_B + C·ω with C > 0, a moment in ω), "
+                              f"and the more slowly the smaller that dependence is against the inertia")
         raise MotionError(f"the run needs more than {max_steps} steps (t = {t:.6g} s); shorten it or loosen rtol")
 
     t_arr = np.array(ts)
@@ -675,6 +712,23 @@ def _steady_check(boundary: Sequence[tuple[float, float, float]], tol: float) ->
     return None, remaining
 
 
+def _golden_max(f: Callable[[float], float], lo: float, hi: float, iterations: int) -> tuple[float, float]:
+    """(x, f(x)) of the largest f on [lo, hi] by golden-section search (f unimodal there)."""
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
+    fc, fd = f(c), f(d)
+    for _ in range(iterations):
+        if fc >= fd:
+            hi, d, fd = d, c, fc
+            c = hi - g * (hi - lo)
+            fc = f(c)
+        else:
+            lo, c, fc = c, d, fd
+            d = lo + g * (hi - lo)
+            fd = f(d)
+    return (c, fc) if fc >= fd else (d, fd)
+
+
 def _golden_extreme(res: Run, ts: FloatArray, ws: FloatArray, phis: FloatArray, j: int,
                     sense: int) -> tuple[float, float]:
     """(ω, φ) of the maximum (sense +1) or minimum (−1) of ω(t) near the sample j of the last period (times ts,
@@ -684,23 +738,7 @@ def _golden_extreme(res: Run, ts: FloatArray, ws: FloatArray, phis: FloatArray, 
     step = float(ts[1] - ts[0])             # at the ends the bracket reaches into the neighbour periods
     lo = float(ts[j - 1]) if j > 0 else max(float(ts[0]) - step, float(res.t[0]))
     hi = float(ts[j + 1]) if j < ts.size - 1 else min(float(ts[-1]) + step, float(res.t[-1]))
-    g = (math.sqrt(5.0) - 1.0) / 2.0
-
-    def f(tt: float) -> float:
-        return sense * float(res.at_time([tt])["omega"][0])
-
-    c, d = hi - g * (hi - lo), lo + g * (hi - lo)
-    fc, fd = f(c), f(d)
-    for _ in range(40):
-        if fc >= fd:
-            hi, d, fd = d, c, fc
-            c = hi - g * (hi - lo)
-            fc = f(c)
-        else:
-            lo, c, fc = c, d, fd
-            d = lo + g * (hi - lo)
-            fd = f(d)
-    tt = c if fc >= fd else d
+    tt, _ = _golden_max(lambda x: sense * float(res.at_time([x])["omega"][0]), lo, hi, 40)
     at = res.at_time([tt])
     if sense * (at["omega"][0] - ws[j]) >= 0:
         return float(at["omega"][0]), float(at["phi"][0])
@@ -768,3 +806,73 @@ def _steady_state(res: Run, boundary: Sequence[tuple[float, float, float]], k: i
         phi_omega_max=p_max, phi_omega_min=p_min, omega_m_textbook=om_tb, omega_m_time=float(L / t_T),
         omega_m_integral=float((QB - QA) / L), delta=(w_max - w_min) / om_tb, t_T=float(t_T),
         epsilon_max=float(eps.max()), epsilon_min=float(eps.min()), remaining=float(abs(remaining)), phi_T=L)
+
+
+def _dense_samples(res: Run, per_step: int = 8) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Times, ω and ε (the slope of the dense output's ω) at ``per_step`` points of every step and its end."""
+    n = res.steps
+    idx = np.repeat(np.arange(n), per_step)
+    theta = np.tile(np.arange(per_step) / per_step, n)
+    slope = np.stack([np.ones_like(theta), 2 * theta, 3 * theta**2, 4 * theta**3], axis=-1)
+    Q = np.einsum("...sk,sp->...kp", res._K[idx], _P)
+    ts, ys = res._dense(idx, theta)
+    eps = np.einsum("...kp,...p->...k", Q, slope)[:, 1]
+    ts = np.append(ts, res.t[-1])
+    return ts, np.append(ys[:, 1], res.omega[-1]), np.append(eps, res.epsilon[-1])
+
+
+def _omega_extreme(res: Run, ts: FloatArray, ws: FloatArray, sense: int) -> tuple[float, float, float, float]:
+    """(ω, t, φ, spread) of the largest (sense +1) or smallest (−1) ω: the root of ε next to the best
+    sample, bisected on the fifth-order partial steps, or an end of the run."""
+    j = int(np.argmax(sense * ws))
+    lo, hi = float(ts[max(j - 1, 0)]), float(ts[min(j + 1, ts.size - 1)])
+    best = res.at_time([ts[j]])
+    cands = [(float(best["omega"][0]), float(ts[j]), float(best["phi"][0]))]
+    e_lo, e_hi = (float(res.at_time([x])["epsilon"][0]) for x in (lo, hi))
+    spread = 0.0
+    if sense * e_lo > 0 > sense * e_hi:              # a root of ε inside: ω has its extreme there
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            if sense * float(res.at_time([mid])["epsilon"][0]) > 0:
+                lo = mid
+            else:
+                hi = mid
+        ends = res.at_time([lo, hi])
+        spread = float(abs(ends["omega"][1] - ends["omega"][0]))
+        cands.append((float(ends["omega"][0]), lo, float(ends["phi"][0])))
+    w, t, phi = max(cands, key=lambda c: sense * c[0])
+    return w, t, phi, spread
+
+
+def _epsilon_extreme(res: Run, ts: FloatArray, es: FloatArray, sense: int) -> tuple[float, float]:
+    """(ε, t) of the largest (sense +1) or smallest (−1) ε: golden section around the best sample."""
+    j = int(np.argmax(sense * es))
+    lo, hi = float(ts[max(j - 1, 0)]), float(ts[min(j + 1, ts.size - 1)])
+
+    def f(tt: float) -> float:
+        return sense * float(res.at_time([tt])["epsilon"][0])
+
+    x, fx = _golden_max(f, lo, hi, 50)
+    cands = [(fx, x), (f(float(ts[j])), float(ts[j])), (sense * float(es[j]), float(ts[j]))]
+    cands += [(sense * float(e), float(t)) for e, t in zip(res.epsilon, res.t) if lo <= t <= hi]
+    v, t = max(cands)
+    return sense * v, t
+
+
+def _dense_extremes(res: Run) -> dict[str, float]:
+    """See :meth:`Run.extremes`."""
+    if res.steps == 0:
+        w, e = float(res.omega[0]), float(res.epsilon[0])
+        t, p = float(res.t[0]), math.degrees(float(res.phi[0]))
+        return {"omega_max_run": w, "t_omega_max_run": t, "phi_omega_max_run_deg": p, "omega_min_run": w,
+                "t_omega_min_run": t, "phi_omega_min_run_deg": p, "epsilon_max_run": e, "t_epsilon_max_run": t,
+                "epsilon_min_run": e, "t_epsilon_min_run": t, "error_extremes_omega": res.error_estimate}
+    ts, ws, es = _dense_samples(res)
+    w_max, t_max, p_max, s_max = _omega_extreme(res, ts, ws, +1)
+    w_min, t_min, p_min, s_min = _omega_extreme(res, ts, ws, -1)
+    e_max, te_max = _epsilon_extreme(res, ts, es, +1)
+    e_min, te_min = _epsilon_extreme(res, ts, es, -1)
+    return {"omega_max_run": w_max, "t_omega_max_run": t_max, "phi_omega_max_run_deg": math.degrees(p_max),
+            "omega_min_run": w_min, "t_omega_min_run": t_min, "phi_omega_min_run_deg": math.degrees(p_min),
+            "epsilon_max_run": e_max, "t_epsilon_max_run": te_max, "epsilon_min_run": e_min,
+            "t_epsilon_min_run": te_min, "error_extremes_omega": res.error_estimate + max(s_max, s_min)}

@@ -51,16 +51,19 @@ from graphmethods.kinematics.vectors import FloatArray
 from graphmethods.units import MAX_POSITIONS, count
 
 TWO_PI = 2.0 * math.pi
+SMOOTH = 32             # chords per interval between positions in the drawn M_r (a smooth curve by hand)
+JUMP_SIDE = 1e-9        # rad either side of a switching position: the two ordinates of the jump
 
 
 _T = TypeVar("_T")
+_S = TypeVar("_S", bound="Study")
 
 
-def _logged(fn: Callable[[Study], _T]) -> cached_property[_T]:
+def _logged(fn: Callable[[_S], _T]) -> cached_property[_T]:
     """A cached property that records its name in ``computed`` the one time it runs."""
     name = fn.__name__
 
-    def wrapper(self: Study) -> _T:
+    def wrapper(self: _S) -> _T:
         value = fn(self)
         self.computed.append(name)
         return value
@@ -271,9 +274,17 @@ class Study:
     # ----------------------------------------------------------------- the graphical methods at m positions
     @_logged
     def moments(self) -> tuple[MomentCurve, MomentCurve]:
-        """M_d and M_r as drawn: M_r through its values at the positions (straight chords), M_d balancing it."""
-        M_r = MomentCurve.points(self.phi, self.M_r)
-        return MomentCurve.constant(M_r.mean(), period=TWO_PI), M_r
+        """M_d and M_r as the course draws them.
+
+        M_r goes through its ordinates at the positions and at the load's switching positions, with
+        the jumps there (as the course adds the switching positions), and between them is the smooth
+        curve a draftsman draws through the ordinates: the reduced moment itself, by
+        :data:`SMOOTH` chords per interval. M_d is the constant that balances its work: the work
+        balance :attr:`M_d` to about 10⁻⁵, so a sheet prints the study's M_d and J_F.
+        """
+        phi, M_r = drawn_resisting_moment(self)
+        curve = MomentCurve.points(phi, M_r)
+        return MomentCurve.constant(curve.mean(), period=TWO_PI), curve
 
     @_logged
     def excess_work(self) -> ew.ExcessWork:
@@ -313,6 +324,45 @@ class Study:
     def exact(self) -> FlywheelResult:
         """The exact flywheel for [δ] and its motion (the reference for the errors)."""
         return exact_flywheel(self.model, omega_m=self.omega_m, delta=self.delta)
+
+    def at_angles(self, phi_deg: ArrayLike) -> list[dict[str, float]]:
+        """The reduced quantities and the steady motion at given crank angles, as a textbook asks for them.
+
+        At each angle (degrees from +x, counterclockwise, as the problem file defines φ): J_e (kg·m²),
+        dJ_e/dφ (kg·m²/rad), M_d, M_r and M_e = M_d − M_r (N·m), the steady motion's ω (rad/s) and ε
+        (rad/s²) with the exact flywheel for [δ] (J_F = 0 when none is needed), and the powers
+        N_d = M_d·ω and N_r = M_r·ω (W). ω² = 2(T0 + ΔE(φ))/(J_F + J_e), ε = (M_e − ½ω² dJ_e/dφ)/(J_F + J_e).
+
+        Examples
+        --------
+        >>> from graphmethods.problems.builtin import case
+        >>> row = Study(case("press")).at_angles([30.0])[0]
+        >>> round(row["M_d"], 2), bool(row["omega"] > 0)
+        (143.43, True)
+        """
+        from graphmethods.dynamics.motion import _balanced_energy, periodic_motion
+
+        x = np.mod(np.asarray(phi_deg, dtype=float).ravel(), 360.0)
+        rot = self.mechanism.positions(phi=np.radians(x)).phi_from_start
+        try:
+            J_F = float(self.exact.J_F)
+        except NoFlywheelNeeded:
+            J_F = 0.0
+        model = self.model
+        steady = periodic_motion(model, J_F=J_F, omega_m=self.omega_m)
+        E = _balanced_energy(model, 1e-6)
+        dE = np.asarray(E(model.phi_0 + np.mod(rot - model.phi_0, model.phi_T)), dtype=float)
+        J_e = self._J_e_exact(rot)
+        dJ = model.dJ_e_at(rot) if hasattr(model, "dJ_e_at") else self._dJ_e_exact(rot)
+        M_d, M_r = self.moment_curves(rot)
+        M_e = M_d - M_r
+        J = J_F + J_e
+        omega = np.sqrt(2.0 * (steady.T0 + dE) / J)
+        eps = (M_e - 0.5 * omega**2 * dJ) / J
+        return [{"phi_deg": float(a), "phi_from_start_deg": float(np.degrees(r)), "J_e": float(je),
+                 "dJ_e_dphi": float(dj), "M_d": float(md), "M_r": float(mr), "M_e": float(me), "J_F": J_F,
+                 "omega": float(w), "epsilon": float(e), "N_d": float(md * w), "N_r": float(mr * w)}
+                for a, r, je, dj, md, mr, me, w, e in zip(x, rot, J_e, dJ, M_d, M_r, M_e, omega, eps)]
 
     # ----------------------------------------------------------------- report
     def to_markdown(self, *, exact: bool | None = None) -> str:
@@ -410,9 +460,67 @@ class Study:
             "note": "no flywheel is needed: the mechanism's own inertia keeps δ within [δ] (J_F = 0); " + why,
         }
 
+def drawn_resisting_moment(study: Study) -> tuple[FloatArray, FloatArray]:
+    """The knots (rad from position 0) and ordinates (N·m) of M_r as drawn: the positions, SMOOTH
+    steps between them, and both sides of every jump at the load's switching positions.
+
+    >>> from graphmethods.problems import builtin
+    >>> st = Study(builtin.case("press"))
+    >>> phi, M_r = drawn_resisting_moment(st)
+    >>> phi.size == 12 * SMOOTH + 1 + 4, abs(MomentCurve.points(phi, M_r).mean() / st.M_d - 1) < 1e-4
+    (True, True)
+    """
+    grid = np.linspace(0.0, TWO_PI, study.m * SMOOTH + 1)
+    grid[::SMOOTH] = study.phi                      # the positions themselves, bit for bit
+    M = study._M_r_exact(grid)
+    M[::SMOOTH] = study.M_r
+    phi_k, M_k = [grid], [M]
+    try:
+        switches = [a for a in study.switch_angles if 0.0 < a < TWO_PI]
+    except InputError:                              # a load without a working stroke: no switching positions
+        switches = []
+    for a in switches:
+        left, right = study._M_r_exact(np.array([a - JUMP_SIDE, a + JUMP_SIDE]))
+        phi_k.append(np.array([a, a]))
+        M_k.append(np.array([left, right]))
+    x = np.concatenate(phi_k)
+    y = np.concatenate(M_k)
+    order = np.argsort(x, kind="stable")           # a switching position's left side before its right
+    return x[order], y[order]
+
+
 def _fine_study(case: Case, m: int) -> Study:
     """The finer construction behind the error estimate: REFINE·m positions, beyond the user's limit
     MAX_POSITIONS (the kinematics core checks its own, MAX_POSITIONS_COMPUTED)."""
     fine = Study.__new__(Study)
     fine.case, fine.m, fine.estimate, fine.computed = case, int(m), False, []
     return fine
+
+
+class AngleStudy(Study):
+    """A :class:`Study` whose positions are the linkage at given crank angles, not 0…m: the plans and
+    figures of a textbook's own crank angle.
+
+    Parameters
+    ----------
+    case : Case
+    phi_deg : sequence of float
+        Crank angles, degrees from +x, counterclockwise (as the problem file defines φ).
+
+    Examples
+    --------
+    >>> from graphmethods.problems.builtin import case
+    >>> s = AngleStudy(case("press"), [30.0, 120.0])
+    >>> s.positions.n
+    2
+    """
+
+    def __init__(self, case: Case, phi_deg: ArrayLike) -> None:
+        super().__init__(case, positions=3)
+        self.phi_angles: FloatArray = np.radians(np.asarray(phi_deg, dtype=float).ravel())
+        self.m = int(self.phi_angles.size)
+
+    @_logged
+    def positions(self) -> Positions:
+        """The linkage at the given crank angles."""
+        return self.mechanism.positions(phi=self.phi_angles)

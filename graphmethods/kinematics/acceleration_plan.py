@@ -10,6 +10,9 @@ From the pole π at the scale μ_a, group by group in the order of the structura
 - a block sliding on a turning link (RPR, a guide on a moving link): ``a_A3 = a_A2 + a^k_A3A2 +
   a^r_A3A2``, the Coriolis component 2·ω₃·v_A3A2 with its direction v_A3A2 turned 90° in the
   sense of ω₃, the relative component unknown, ∥ the slot; with ``a_A3 = a_O3 + a^n_A3O3 + a^τ_A3O3``;
+- a triad (class III): Assur's special point K first, on two dashed lines ⟂ two binary links, each
+  through the end of that link's a^n and of K's a^n about the link's inner joint; then the third
+  binary link's joint from k, and the other two from it;
 - extra points by similarity: the images of the points of one link form a figure similar to
   the link (``a_S = a_B + (a_C − a_B)·(S − B)/(C − B)`` in complex numbers).
 
@@ -43,7 +46,7 @@ from typing import Any
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.kinematics.groups import GROUND, PRP, RPP, RPR, RRP, RRR, Guide
+from graphmethods.kinematics.groups import GROUND, PRP, RPP, RPR, RRP, RRR, Guide, Triad
 from graphmethods.kinematics.groups.base import State
 from graphmethods.kinematics.linkage import Linkage, Point
 
@@ -515,6 +518,52 @@ class _Builder:
         self.steps.append(Step(R, rl, same, f"a_{R} = a_{A3}" if same == "same" else f"{R} on link {yoke}",
                                (Component(f"a_{R}", "absolute", "π", rl, aR, False),), on=(A3,)))
 
+    def triad(self, g: Triad) -> None:
+        """Assur's special point K (on the lines of two binary links, a point of the basic link) first,
+        then the joint of the third binary link from K, then the other two from it (see
+        :mod:`.groups.triad`)."""
+        Ks, (i, j, k) = g.special_point(self.st)
+        K, t = g.special, g.links[0]
+        P, B, ks = g.outer, g.inner, g.links[1:]
+        self.z[K] = complex(Ks[self.i])
+        comps: list[Component] = []
+        lines = []
+        for x in (j, k):                     # a_K = a_Px + a^n_BxPx + a^n_KBx + a^τ (⟂ PxBx)
+            n1, c1, _ = self.two_points(ks[x], P[x], B[x])
+            a2 = self.normal(t, K, B[x])
+            n2 = self.aux(f"n_{K}{B[x]}", self.images[n1] + a2)
+            comps += [c1, Component(f"a^n_{K}{B[x]}", "normal", n1, n2, a2, True, t, abs(self.z[B[x]] - self.z[K]))]
+            r = self.z[B[x]] - self.z[P[x]]
+            lines.append(Line(f"⟂ {P[x]}{B[x]}", n2, self.images[n2], 1j * r / abs(r)))
+        kk, s = self.meet(lines[0], lines[1], self.where)      # k: where the two dashed lines meet (its a^τ,
+        lab = self.put(K, kk)                                  # mixed of two links, give no ε: not drawn)
+        comps.append(Component(f"a_{K}", "absolute", "π", lab, kk, False))
+        self.steps.append(Step(K, lab, "intersection",
+                               f"a_{K} = a_{P[j]} + a^n_{B[j]}{P[j]} + a^n_{K}{B[j]} + a^τ = a_{P[k]} + "
+                               f"a^n_{B[k]}{P[k]} + a^n_{K}{B[k]} + a^τ (Assur's point)", tuple(comps),
+                               (lines[0], lines[1]), sin_between=s))
+        self.member(t, K)
+        for x, frm, link in ((i, K, t), (j, B[i], t), (k, B[i], t)):
+            n1, c1, l1 = self.two_points(link, frm, B[x])
+            n2, c2, l2 = self.two_points(ks[x], P[x], B[x])
+            b, s = self.meet(l1, l2, self.where)
+            lab = self.put(B[x], b)
+            t1, t2 = b - self.images[n1], b - self.images[n2]
+            if x == i:
+                self.tangential(t, frm, B[x], t1)
+            self.tangential(ks[x], P[x], B[x], t2)
+            self.steps.append(Step(B[x], lab, "intersection",
+                                   f"a_{B[x]} = a_{frm} + a^n_{B[x]}{frm} + a^τ_{B[x]}{frm} = a_{P[x]} + "
+                                   f"a^n_{B[x]}{P[x]} + a^τ_{B[x]}{P[x]}",
+                                   (c1, *((c2,) if x == i else ()),       # a^n of B_j, B_k: drawn for K
+                                    *((Component(f"a^τ_{B[x]}{frm}", "tangential", n1, lab, t1, False, link,
+                                                 c1.factor),) if x == i else ()),   # ε_t: from b_i's alone
+                                    Component(f"a^τ_{B[x]}{P[x]}", "tangential", n2, lab, t2, False, ks[x], c2.factor),
+                                    Component(f"a_{B[x]}", "absolute", "π", lab, b, False)), (l1, l2), sin_between=s))
+            self.member(t, B[x])
+            self.member(ks[x], P[x])
+            self.member(ks[x], B[x])
+
     eps_1: float = 0.0
     where: str = ""
 
@@ -533,6 +582,8 @@ class _Builder:
                 self.prp(step)
             elif isinstance(step, RPP):
                 self.rpp(step)
+            elif isinstance(step, Triad):
+                self.triad(step)
             else:                                       # pragma: no cover - every group kind is above
                 raise InputError(f"no acceleration plan construction for group {step.name}")
 

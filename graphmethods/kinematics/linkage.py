@@ -29,8 +29,10 @@ extreme positions found numerically to machine precision (:meth:`Linkage.strokes
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
+from collections import OrderedDict
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -42,8 +44,35 @@ import numpy.typing as npt
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.groups.base import GROUND, Group, Guide, Record, State, check_length, fmt
 from graphmethods.kinematics.positions import Strokes, at_extremes
+from graphmethods.units import MAX_POSITIONS_COMPUTED, count, real
 
 TWO_PI = 2.0 * math.pi
+
+#: what a geometry's full-turn check and dead centres found, shared by every Linkage of the same numbers
+#: (a figure, a class set or a problem read afresh builds the same linkage again and again); the key is
+#: :meth:`Linkage.geometry_key`, the value a dict of "full_turn" (None, or the AssemblyError's message),
+#: "extremes" and "strokes". Bounded: the least recently used geometry goes first.
+_GEOMETRY: OrderedDict[tuple[Any, ...], dict[str, Any]] = OrderedDict()
+_GEOMETRY_SIZE = 512
+
+
+def _numbers(obj: Any) -> Any:
+    """A hashable value holding every number of a frozen dataclass (its type and fields, nested), or
+    None when some field is not hashable or not a dataclass field (such a linkage is not shared)."""
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        out: list[Any] = [type(obj).__qualname__]
+        for f in dataclasses.fields(obj):
+            v = _numbers(getattr(obj, f.name))
+            if v is None:
+                return None
+            out.append((f.name, v))
+        return tuple(out)
+    if isinstance(obj, (tuple, list)):
+        items = [_numbers(v) for v in obj]
+        return None if any(v is None for v in items) else (type(obj).__name__, tuple(items))
+    if isinstance(obj, (str, int, float, complex, bool)) or obj is None:
+        return ("value", obj)
+    return None
 
 
 @dataclass(frozen=True)
@@ -239,6 +268,10 @@ class Motion:
         return self.linkage._output_psi(self)
 
 
+#: Most Assur groups a linkage may have (textbook mechanisms: one to five; each group's checks cost a solve)
+MAX_GROUPS = 64
+
+
 class Linkage:
     """A planar linkage: fixed joints, a crank, class-II groups in solving order, extra points.
 
@@ -264,17 +297,29 @@ class Linkage:
         For messages.
     start : float
         Crank angle of position 0 (rad) when the output has no extreme positions (it turns fully).
+    swing : (float, float), optional
+        A driver that swings (a lever, a rocker) between these absolute angles (rad, first < second):
+        m positions spread over the range, angles outside it refused, no strokes; None: a full turn.
     """
 
     def __init__(self, *, ground: Mapping[str, tuple[float, float]], crank: Crank, groups: Sequence[Group] = (),
                  points: Iterable[Point] = (), sense: int = 1, output: str | None = None,
-                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0) -> None:
+                 working_stroke: str = "slow", name: str = "linkage", start: float = 0.0,
+                 swing: tuple[float, float] | None = None) -> None:
         if isinstance(sense, bool) or sense not in (1, -1):
             raise InputError(f"{name}: sense must be +1 (counterclockwise) or -1 (clockwise), got {sense!r}")
         if working_stroke not in ("slow", "fast", "toward_crank", "away_from_crank"):
             raise InputError(f"{name}: working_stroke must be slow, fast, toward_crank or away_from_crank; "
                              f"got {working_stroke!r}")
+        if len(groups) > MAX_GROUPS:
+            raise InputError(f"{name}: {len(groups)} Assur groups; at most {MAX_GROUPS} are accepted (MAX_GROUPS: a "
+                             f"machine of the course has two to five)")
         self.name = name
+        self.swing = None if swing is None else (float(swing[0]), float(swing[1]))
+        if self.swing is not None and not (math.isfinite(self.swing[0]) and math.isfinite(self.swing[1])
+                                           and 0.0 < self.swing[1] - self.swing[0]
+                                           <= TWO_PI + 1e-12 * (1.0 + abs(self.swing[0]))):
+            raise InputError(f"{name}: the driver's range must be two finite angles a < b ≤ a + 360°, got {swing!r}")
         self._start = float(_norm(start))
         self.sense = int(sense)
         self.working_stroke = working_stroke
@@ -293,6 +338,34 @@ class Linkage:
         self._check_order()
         self.output = self._choose_output(output)
         self._cache: dict[Any, Any] = {}
+        key = self.geometry_key()
+        self._geometry: dict[str, Any] = {}
+        if key is not None:
+            got = _GEOMETRY.get(key)
+            if got is None:
+                got = _GEOMETRY[key] = {}
+                if len(_GEOMETRY) > _GEOMETRY_SIZE:
+                    _GEOMETRY.popitem(last=False)
+            else:
+                _GEOMETRY.move_to_end(key)
+            self._geometry = got
+
+    def geometry_key(self) -> tuple[Any, ...] | None:
+        """Every number and choice that fixes the linkage's motion (fixed joints, crank, groups, extra points,
+        sense, start, working stroke, output) as one hashable key, or None when a group is not a frozen
+        dataclass of numbers. Two linkages with the same key share their full-turn check and dead centres.
+
+        Examples
+        --------
+        >>> from graphmethods.kinematics.presets import six_bar_press
+        >>> six_bar_press().geometry_key() == six_bar_press().geometry_key() is not None
+        True
+        """
+        parts = [_numbers(self.crank), _numbers(list(self.groups)), _numbers(list(self.points))]
+        if any(p is None for p in parts):
+            return None
+        return (tuple(sorted((k, v.real, v.imag) for k, v in self.ground.items())), *parts, self.sense,
+                self._start, self.working_stroke, self.output, self.swing)
 
     # ------------------------------------------------------------------ structure
     def _check_order(self) -> None:
@@ -375,13 +448,15 @@ class Linkage:
         infos = [GroupInfo("crank", 1, 0, ("0", self.crank.link))]
         parts = [f"I(0,{self.crank.link})"]
         p5 = 1
+        roman = {1: "I", 2: "II", 3: "III"}
         for g in self.groups:
-            infos.append(GroupInfo(g.kind, 2, 2, tuple(g.links)))
-            parts.append(f"II({g.links[0]},{g.links[1]})")
+            infos.append(GroupInfo(g.kind, g.cls, g.order, tuple(g.links)))
+            shown = g.links if g.cls == 2 else sorted(g.links, key=lambda k: (len(k), k))   # III(2,3,4,5)
+            parts.append(f"{roman.get(g.cls, str(g.cls))}({','.join(shown)})")
             p5 += len(g.pairs)
         n = len(self.links)
         return Structure(groups=tuple(infos), formula=" → ".join(parts), n_moving=n, p_lower=p5, p_higher=0,
-                         dof=3 * n - 2 * p5, mechanism_class=2 if self.groups else 1)
+                         dof=3 * n - 2 * p5, mechanism_class=max((g.cls for g in self.groups), default=1))
 
     def _choose_output(self, output: str | None) -> tuple[str, str] | None:
         guides = self.guides
@@ -414,8 +489,12 @@ class Linkage:
                     break
 
     def _group_rockers(self, g: Group) -> Iterator[tuple[str, str]]:
-        from graphmethods.kinematics.groups import RPR, RRR
-        if isinstance(g, RRR):
+        from graphmethods.kinematics.groups import RPR, RRR, Triad
+        if isinstance(g, Triad):
+            for k, P in zip(g.links[1:], g.outer):
+                if P in self.ground:
+                    yield k, P
+        elif isinstance(g, RRR):
             if g.Q in self.ground:
                 yield g.links[1], g.Q
             elif g.P in self.ground:
@@ -443,7 +522,7 @@ class Linkage:
 
     # ------------------------------------------------------------------ solving
     def solve(self, phi: npt.ArrayLike, *, omega_1: float = 1.0, epsilon_1: float = 0.0, level: int = 2,
-              labels: np.ndarray | None = None) -> State:
+              labels: np.ndarray | None = None, upto: Group | None = None) -> State:
         """Solve the linkage at crank angles ``phi`` (rad); level 0 positions, 1 + velocities,
         2 + accelerations. Returns the raw :class:`~graphmethods.kinematics.groups.State`.
 
@@ -462,6 +541,8 @@ class Linkage:
             phi = phi.reshape(-1)
         n = phi.shape[0]
         st = State(phi=phi, labels=labels)
+        if self._triads:
+            st.track.update(self._tracks() if upto is None else self._cache.get("tracks", {}))
         fixed, zero_c = self._fixed(n)
         for k, z in fixed.items():
             st.z[k] = z                              # a point of the result, the same at every position
@@ -475,6 +556,8 @@ class Linkage:
         st.theta[cr.link] = phi if not phi.flags.writeable else phi.copy()
         st.e[cr.link] = e
         for step in self._steps:
+            if step is upto:
+                return st                            # the outer joints of a triad, for its track
             if isinstance(step, Point):
                 st.z[step.name] = st.z[step.origin] + step.offset * st.e[step.link]
             else:
@@ -488,6 +571,26 @@ class Linkage:
             st.a[cr.pin] = (1j * Ep - Om * Om) * cr.r * e
             self._accelerations(st)
         return st
+
+    @functools.cached_property
+    def _triads(self) -> tuple[Group, ...]:
+        """The class III groups, which solve their positions from a track (:mod:`.groups.triad`)."""
+        return tuple(g for g in self.groups if g.cls == 3)
+
+    def _tracks(self) -> dict[str, Any]:
+        """Each triad's drawn assembly continued over the crank's motion, made once, in solving order
+        (a triad's outer joints may hang on an earlier triad)."""
+        tracks: dict[str, Any] | None = self._cache.get("tracks")
+        if tracks is None or len(tracks) < len(self._triads):
+            tracks = self._cache["tracks"] = {}
+            try:
+                for g in self._triads:
+                    tracks[g._name()] = cast(Any, g).track(
+                        lambda phi, g=g: self.solve(phi, level=0, upto=g))
+            except AssemblyError as exc:
+                del self._cache["tracks"]
+                raise AssemblyError(f"{self.name}: {exc}") from None
+        return tracks
 
     def _kept_constant(self, value: float, n: int) -> np.ndarray:
         """The crank's ω or ε at every position (see :func:`_constant`), kept for up to 16 (value, n)
@@ -555,11 +658,10 @@ class Linkage:
         """(φ from +x, rotation from position 0, position numbers or None) for :meth:`motion`: new
         arrays, read-only."""
         labels = None
+        if self.swing is not None:
+            return self._swing_angles(m, phi, phi_from_start)
         if phi is None and phi_from_start is None:
-            m = 12 if m is None else m
-            if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
-                raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
-            m = int(m)
+            m = _count_positions(m, 3)
             self.check_full_turn()
             labels = np.arange(m + 1)
             tr = (TWO_PI / m) * labels
@@ -578,6 +680,35 @@ class Linkage:
             np.mod(tr, TWO_PI, out=tr)
             np.putmask(tr, tr > TWO_PI - 1e-13, 0.0)
         return _freeze(ang), _freeze(tr), None if labels is None else _freeze(labels)
+
+    def _swing_angles(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        """:meth:`_crank_angles` of a swinging driver: m equal steps from the range's start to its end, or the
+        angles given, each taken into the range (modulo 360°) or refused."""
+        assert self.swing is not None
+        a, b = self.swing
+        labels = None
+        if phi is None and phi_from_start is None:
+            m = _count_positions(m, 1)
+            self.check_full_turn()
+            labels = np.arange(m + 1)
+            ang = a + (b - a) * (labels / m)
+            ang[m] = b
+        else:
+            given = phi_from_start if phi_from_start is not None else phi
+            assert given is not None
+            ang = self._check_phi(given, "phi_from_start" if phi is None else "phi") + (a if phi is None else 0.0)
+            ang = a + np.mod(ang - a, TWO_PI)
+            tol = 1e-12 * max(1.0, abs(a), abs(b))
+            ang = np.where(ang > TWO_PI + a - tol, a, ang)
+            bad = ang > b + tol
+            if bad.any():
+                x = float(np.degrees(ang[bad][0]))
+                raise InputError(f"{self.name}: the driver's angle {x % 360:.6g}° lies outside its range "
+                                 f"[{math.degrees(a):.6g}°, {math.degrees(b):.6g}°] (range_deg)")
+            ang = np.minimum(ang, b)
+            self.check_full_turn()
+        return _freeze(ang), _freeze(ang - a), None if labels is None else _freeze(labels)
 
     def _grid(self, m: int | None, phi: npt.ArrayLike | None, phi_from_start: npt.ArrayLike | None,
               strokes: Strokes | None) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]:
@@ -628,11 +759,14 @@ class Linkage:
         (13, 12, True, 0.0)
         """
         for nm, val, pos in (("omega_1", omega_1, True), ("epsilon_1", epsilon_1, False)):
-            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)) \
-                    or not math.isfinite(val) or (pos and val <= 0):
+            if isinstance(val, bool) or not isinstance(val, (int, float, np.floating, np.integer)):
                 raise InputError(f"{nm} must be a finite number{' > 0 (rad/s)' if pos else ' (rad/s²)'}, got {val!r}")
+            real(val, nm, unit="rad/s" if pos else "rad/s²", lo=0.0 if pos else None, lo_open=pos)   # 1e100 policy
+        omega_1, epsilon_1 = float(omega_1), float(epsilon_1)
         if (m is not None) + (phi is not None) + (phi_from_start is not None) > 1:
             raise InputError("give only one of m, phi or phi_from_start")
+        if m is not None and (isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3):
+            raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")   # before it is a key
         strokes = self.strokes()
         ang, tr, labels, extreme = self._grid(m, phi, phi_from_start, strokes)
         st = self.solve(ang, omega_1=omega_1, epsilon_1=epsilon_1, labels=labels, level=level)
@@ -667,34 +801,79 @@ class Linkage:
 
     def check_full_turn(self, samples: int = 2048) -> None:
         """Raise AssemblyError if some group cannot be assembled, or passes a toggle, somewhere in a
-        full crank turn (its assembly margin reaches zero, where the branch could jump)."""
+        full crank turn (its assembly margin reaches zero, where the branch could jump).
+
+        Checked once per geometry (see :meth:`geometry_key`): ``samples`` positions in one solve, then the
+        smallest margin of every group refined at once, each round solving 33 angles per group across its
+        bracket (:func:`_refine_minima`), to 1e-15 rad."""
         if "full_turn" in self._cache:
             return
-        phi = np.linspace(0.0, TWO_PI, samples, endpoint=False)
-        st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
-        for g in self.groups:
-            mg = g.margin(st)
-            scale = float(np.max(np.abs(mg))) or 1.0
-            i = int(np.argmin(mg))
-            # refine the smallest margin between its neighbours (golden section)
-            lo, hi = phi[i] - TWO_PI / samples, phi[i] + TWO_PI / samples
-            def f(x: float, g: Group = g) -> float:
-                return float(g.margin(self.solve(np.array([x]), level=0))[0])
-
-            gr = (math.sqrt(5) - 1) / 2
-            for _ in range(80):
-                a = hi - gr * (hi - lo)
-                b = lo + gr * (hi - lo)
-                if f(a) < f(b):
-                    hi = b
-                else:
-                    lo = a
-            x = 0.5 * (lo + hi)
-            if f(x) <= 1e-12 * scale:
-                raise AssemblyError(f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x) % 360:.6g}° "
-                                    f"(its links come in line): the crank cannot turn through it on one branch, "
-                                    f"the assembly would jump; change the lengths or study the range with phi=")
+        if "full_turn" not in self._geometry:
+            self._geometry["full_turn"] = self._find_toggle(samples)
+        message = self._geometry["full_turn"]
+        if message is not None:
+            raise AssemblyError(message)
         self._cache["full_turn"] = True
+
+    def _find_toggle(self, samples: int) -> str | None:
+        """The AssemblyError's message for the first group that reaches a toggle in a full turn (or in a
+        swinging driver's range), or None."""
+        a0, span = (0.0, TWO_PI) if self.swing is None else (self.swing[0], self.swing[1] - self.swing[0])
+        phi = a0 + np.linspace(0.0, span, samples, endpoint=self.swing is not None)
+        try:
+            if self.swing is not None:
+                self._check_swing_assembles(phi)
+            st = self.solve(phi, level=0)               # raises at a sample that cannot assemble
+            if not self.groups:
+                return None
+            margins = [g.margin(st) for g in self.groups]
+            scales = [float(np.max(np.abs(mg))) or 1.0 for mg in margins]
+            centres = np.array([phi[int(np.argmin(mg))] for mg in margins])
+            x, smallest = _refine_minima(self._own_margins, centres, span / samples)
+        except AssemblyError as exc:
+            return str(exc)
+        for k, g in enumerate(self.groups):
+            if smallest[k] > 1e-12 * scales[k]:
+                continue
+            if self.swing is not None:
+                return (f"{self.name}: the driver's range reaches a toggle of group {g.name} at "
+                        f"φ = {math.degrees(x[k]):.6g}° (its links come in line): the assembly would jump; "
+                        f"narrow range_deg to stay clear of it")
+            return (f"{self.name}: group {g.name} reaches a toggle at φ = {math.degrees(x[k]) % 360:.6g}° "
+                    f"(its links come in line): the crank cannot turn through it on one branch, "
+                    f"the assembly would jump; change the lengths or study the range with phi=")
+        return None
+
+    def _own_margins(self, phi: np.ndarray) -> np.ndarray:
+        """Row k: group k's assembly margin at the angles of row k of ``phi`` (all rows in one solve; a
+        swinging driver's angles held inside its range)."""
+        if self.swing is not None:
+            phi = np.clip(phi, self.swing[0], self.swing[1])
+        st = self.solve(phi.reshape(-1), level=0)
+        return np.stack([g.margin(st).reshape(phi.shape)[k] for k, g in enumerate(self.groups)])
+
+    def _check_swing_assembles(self, phi: np.ndarray) -> None:
+        """A swinging driver's range that leaves the assembly: refused at the angle where it does (bisected
+        between the last sample that assembles and the first that does not, from the range's start)."""
+        def ok(x: float) -> bool:
+            try:
+                self.solve(np.array([x]), level=0)
+            except AssemblyError:
+                return False
+            return True
+
+        good = np.array([ok(float(x)) for x in phi[:: max(1, phi.size // 256)]] + [ok(float(phi[-1]))])
+        if good.all():
+            return
+        xs = np.append(phi[:: max(1, phi.size // 256)], phi[-1])
+        j = int(np.argmin(good))
+        lo, hi = (float(xs[j - 1]), float(xs[j])) if j > 0 else (float(xs[0]), float(xs[0]))
+        if j > 0 and good[j - 1]:
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+        raise AssemblyError(f"{self.name}: the driver's range reaches a toggle at φ = {math.degrees(lo):.6g}°: beyond "
+                            f"it the linkage cannot be assembled; narrow range_deg to stay clear of it")
 
     def _out_value(self, st: State) -> tuple[Any, Any, Any]:
         """(coordinate, its derivative, its second derivative) of the output over the positions."""
@@ -715,9 +894,13 @@ class Linkage:
         output."""
         if "extremes" in self._cache:
             return self._cache["extremes"]            # type: ignore[no-any-return]
-        res = None
-        if self.output is not None:
-            res = self._find_extremes()
+        if "extremes" in self._geometry:
+            res: tuple[float, float] | None = self._geometry["extremes"]
+        else:
+            res = None
+            if self.output is not None and self.swing is None:
+                res = self._find_extremes()
+            self._geometry["extremes"] = res
         self._cache["extremes"] = res
         return res
 
@@ -747,7 +930,7 @@ class Linkage:
             hi = np.where(~same & (fx != 0), x, hi)
             with np.errstate(divide="ignore", invalid="ignore"):
                 xn = x - fx / dfx
-            ok = np.isfinite(xn) & (xn > lo) & (xn < hi)
+            ok = np.isfinite(xn) & (xn >= lo) & (xn <= hi)
             xn = np.where(ok, xn, 0.5 * (lo + hi))
             xn = np.where(fx == 0.0, x, xn)
             if np.all(np.abs(xn - x) <= 1e-15 * (1 + np.abs(x))):
@@ -767,6 +950,10 @@ class Linkage:
         """The extreme positions of the output, the working and return crank angles and K."""
         if "strokes" in self._cache:
             return self._cache["strokes"]             # type: ignore[no-any-return]
+        if "strokes" in self._geometry:               # found for a linkage of the same numbers
+            shared: Strokes | None = self._geometry["strokes"]
+            self._cache["strokes"] = shared
+            return shared
         ext = self.extremes()
         res = None
         if ext is not None:
@@ -793,7 +980,7 @@ class Linkage:
                 start, end, w, ns, ne = pb, pa, TWO_PI - t_ab, nb, na
             res = Strokes(phi_start=float(_norm(start)), phi_end=float(_norm(end)), working_angle=w,
                           return_angle=TWO_PI - w, K=w / (TWO_PI - w), start_name=ns, end_name=ne)
-        self._cache["strokes"] = res
+        self._cache["strokes"] = self._geometry["strokes"] = res
         return res
 
     def _farther_at(self, pa: float, pb: float) -> bool:
@@ -809,7 +996,8 @@ class Linkage:
         kind, name = self._output()
         joint: str | None = name
         if kind == "link":
-            joint = next((g.outputs()[0][0] for g in self.groups if name in g.links), None)
+            joint = next((g.outputs()[0][list(g.links).index(name) - 1 if g.cls == 3 else 0]
+                          for g in self.groups if name in g.links), None)
         if joint is None:
             return True
         st = self.solve(np.array([pa, pb]), level=0)
@@ -867,6 +1055,14 @@ class Linkage:
         return float(abs(_wrap(th_e - th_s)))
 
 
+def _count_positions(m: int | None, low: int) -> int:
+    """The number of positions m (12 when None): an integer ≥ ``low``, else InputError."""
+    m = 12 if m is None else m
+    if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < low:
+        raise InputError(f"the number of positions m must be an integer ≥ {low}, got {m!r}")
+    return count(m, "the number of positions m", low=low, high=MAX_POSITIONS_COMPUTED)
+
+
 def _norm(a: npt.ArrayLike) -> Any:
     """Angle(s) in [0, 2π) (rad), −0 written 0: a float for a scalar, else a new array."""
     b = np.mod(np.asarray(a, dtype=float), TWO_PI)
@@ -906,6 +1102,35 @@ def _constant(value: complex | float, n: int) -> np.ndarray:
     return a
 
 
+def _refine_minima(f: Any, centres: np.ndarray, half_width: float, *, points: int = 33,
+                   tol: float = 1e-15) -> tuple[np.ndarray, np.ndarray]:
+    """Local minima of k functions at once, each near its own centre: ``f`` maps angles of shape (k, n) to
+    values of the same shape (row k: function k). Each round evaluates ``points`` angles across every
+    bracket in one call and narrows each bracket to the two steps around its smallest value, until the
+    brackets are ``tol`` wide (relative). Returns the angles and the values there.
+
+    >>> x, v = _refine_minima(lambda a: (a - np.array([[0.3], [1.0]])) ** 2, np.array([0.31, 0.99]), 0.05)
+    >>> bool(np.abs(x - [0.3, 1.0]).max() < 1e-14), bool(v.max() < 1e-28)
+    (True, True)
+    """
+    c = np.array(centres, dtype=float)
+    h = np.full(c.shape, float(half_width))
+    steps = np.linspace(-1.0, 1.0, points)
+    best = np.asarray(f(c[:, None]))[:, 0]
+    for _ in range(60):
+        ang = c[:, None] + h[:, None] * steps
+        vals = np.asarray(f(ang))
+        i = np.argmin(vals, axis=1)
+        rows = np.arange(c.size)
+        better = vals[rows, i] <= best
+        c = np.where(better, ang[rows, i], c)
+        best = np.where(better, vals[rows, i], best)
+        h = 2.0 * h / (points - 1)
+        if np.all(h <= tol * (1.0 + np.abs(c))):
+            break
+    return c, best
+
+
 def _freeze(a: np.ndarray) -> np.ndarray:
     """Make a new array of ours read-only in place (no copy) and return it."""
     a.flags.writeable = False
@@ -913,12 +1138,14 @@ def _freeze(a: np.ndarray) -> np.ndarray:
 
 
 def _smallest(values: Mapping[str, np.ndarray], n: int) -> np.ndarray:
-    """The groups' conditioning, position by position the smallest (a new array; ones with no group)."""
+    """The groups' conditioning, position by position the smallest (a new array, or a view of the one group's;
+    ones with no group)."""
     arrays = list(values.values())
     if not arrays:
         return np.ones(n)
     if len(arrays) == 1:
-        return np.array(arrays[0])
+        view: np.ndarray = np.asarray(arrays[0]).view()      # the group's own array, not a copy (frozen as a view)
+        return view
     out: np.ndarray = np.minimum(arrays[0], arrays[1])
     for a in arrays[2:]:
         np.minimum(out, a, out=out)

@@ -14,7 +14,9 @@ key                   meaning
 ``groups``            the Assur groups in solving order, each ``{"type": ..., "links": [i, j], ...}``:
                       RRR ``P, Q, C, l_PC, l_QC, branch``; RRP (or PRR) ``P, C, l, guide, branch``;
                       RPR ``P, Q, point, e, branch``; PRP ``C, guide_1, guide_2``;
-                      RPP ``P, R, point, guide, slot_angle_deg, e``. A guide is
+                      RPP ``P, R, point, guide, slot_angle_deg, e``; a class III ``triad``
+                      ``links [t, k1, k2, k3], outer [P1, P2, P3], inner [B1, B2, B3], drawn`` (the
+                      six joints at the drawn position, {name: [x, y]}). A guide is
                       ``{"link": 0, "through": [x, y] or "joint", "angle_deg": 0}``.
 ``points``            extra points: ``{"S2": {"link": 2, "from": "A", "distance": 0.15, "angle_deg": 0}}``
                       (angle from the link's own direction); a group may be driven from one
@@ -48,8 +50,8 @@ from typing import Any, NoReturn
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.kinematics.case import Case, DiagramLoad, Inertia, Load
-from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Group, Guide
-from graphmethods.kinematics.linkage import Crank, Linkage, Point
+from graphmethods.kinematics.groups import GROUND, KINDS, PRP, RPP, RPR, RRP, RRR, Group, Guide, Triad
+from graphmethods.kinematics.linkage import MAX_GROUPS, Crank, Linkage, Point
 from graphmethods.kinematics.linkage_mechanism import LinkageMechanism
 from graphmethods.titles import Title
 from graphmethods.units import parse_number
@@ -100,7 +102,7 @@ class _Reader:
         return raw
 
     def link(self, key: str, raw: Json) -> str:
-        if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not str(raw).isdigit():
+        if isinstance(raw, bool) or not isinstance(raw, (int, str)) or not (str(raw).isdigit() and str(raw).isascii()):
             self.err(key, f"must be a link number (0 = frame, 1 = crank, 2, ...); got {raw!r}")
         return str(int(raw))
 
@@ -138,6 +140,8 @@ def _group(rd: _Reader, i: int, raw: Json) -> Group:
     t = raw.get("type")
     if t not in KINDS:
         rd.err(f"{key}.type", f"must be one of {', '.join(KINDS)}; got {t!r}")
+    if t == "triad":
+        return _triad(rd, key, raw)
     spec = GROUP_KEYS[t]
     rd.obj(key, raw, ("type", "links", *spec))
     links = raw.get("links")
@@ -179,7 +183,41 @@ def _group(rd: _Reader, i: int, raw: Json) -> Group:
         rd.err(key, str(exc))
 
 
-def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage:
+def _triad(rd: _Reader, key: str, raw: Mapping[str, Json]) -> Triad:
+    """``{"type": "triad", "links": [t, k1, k2, k3], "outer": [P1, P2, P3], "inner": [B1, B2, B3],
+    "drawn": {name: [x, y], ...}}``: a class III group given at its drawn position."""
+    rd.obj(key, raw, ("type", "links", "outer", "inner", "drawn"))
+    for k in ("links", "outer", "inner", "drawn"):
+        if k not in raw:
+            rd.err(f"{key}.{k}", "is missing (a triad needs links [t, k1, k2, k3], outer [P1, P2, P3], "
+                                 "inner [B1, B2, B3] and the drawn position of those six joints)")
+    links = raw["links"]
+    if not isinstance(links, (list, tuple)) or len(links) != 4:
+        rd.err(f"{key}.links", f"must be the four link numbers [t, k1, k2, k3] (t the basic link); got {links!r}")
+    lk = tuple(rd.link(f"{key}.links[{i}]", x) for i, x in enumerate(links))
+    if GROUND in lk:
+        rd.err(f"{key}.links", "the frame (0) is not a link of a group")
+    names: dict[str, tuple[str, ...]] = {}
+    for k in ("outer", "inner"):
+        v = raw[k]
+        if not isinstance(v, (list, tuple)) or len(v) != 3:
+            rd.err(f"{key}.{k}", f"must be three joint names; got {v!r}")
+        names[k] = tuple(rd.text(f"{key}.{k}[{i}]", x) for i, x in enumerate(v))
+    drawn_raw = rd.obj(f"{key}.drawn", raw["drawn"], (*names["outer"], *names["inner"]))
+    drawn = []
+    for k in (*names["outer"], *names["inner"]):
+        if k not in drawn_raw:
+            rd.err(f"{key}.drawn.{k}", "is missing: [x, y] of the joint at the drawn position, m")
+        x, y = rd.xy(f"{key}.drawn.{k}", drawn_raw[k])
+        drawn.append((k, complex(x, y)))
+    try:
+        return Triad(outer=names["outer"], inner=names["inner"], drawn=tuple(drawn), links=lk)  # type: ignore[arg-type]
+    except InputError as exc:
+        rd.err(key, str(exc))
+
+
+def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>",
+                  swing: tuple[float, float] | None = None) -> Linkage:
     """The :class:`Linkage` of a ``"kind": "linkage"`` problem (only its kinematic keys are read)."""
     rd = _Reader(source)
     raw_fixed = data.get("fixed")
@@ -202,6 +240,8 @@ def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkag
     groups_raw = data.get("groups", [])
     if not isinstance(groups_raw, list) or not groups_raw:
         rd.err("groups", "must be a list of Assur groups in solving order, e.g. [{\"type\": \"RRR\", ...}]")
+    if len(groups_raw) > MAX_GROUPS:              # refused before any group is read
+        rd.err("groups", f"{len(groups_raw)} groups; at most {MAX_GROUPS} are accepted (MAX_GROUPS)")
     groups = [_group(rd, i, g) for i, g in enumerate(groups_raw)]
     points: list[Point] = []
     pts = data.get("points", {})
@@ -224,26 +264,36 @@ def build_linkage(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkag
     name = str(Title.of(title, where=f"{source}: key 'name'")) if title is not None else "linkage"
     try:
         return Linkage(ground=ground, crank=crank, groups=groups, points=points, sense=1 if sense == "ccw" else -1,
-                       output=None if output is None else str(output), working_stroke=ws, name=name or "linkage")
+                       output=None if output is None else str(output), working_stroke=ws, name=name or "linkage",
+                       swing=swing)
     except AssemblyError as exc:
         raise AssemblyError(f"{source}: {exc}") from None
     except InputError as exc:
         raise InputError(f"{source}: {exc}") from None
 
 
-def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> LinkageCase:
-    """Validate a ``"kind": "linkage"`` problem and build its :class:`~graphmethods.kinematics.case.Case`."""
+def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>", drawn: Any = None) -> LinkageCase:
+    """Validate a ``"kind": "linkage"`` problem and build its :class:`~graphmethods.kinematics.case.Case`.
+
+    A file in the drawn form (it has ``joints``) is compiled first
+    (:func:`graphmethods.kinematics.drawn.drawn_case`); ``drawn`` is what that compiler adds to the group
+    form (then the speed, [δ] and the working load may be missing: a command that needs them says so).
+    """
+    if drawn is None and "joints" in data:
+        from graphmethods.kinematics.drawn import drawn_case
+
+        return drawn_case(data, source=source)
     rd = _Reader(source)
     unknown = [k for k in data if k not in TOP_KEYS]
     if unknown:
         rd.err(unknown[0], f"unknown key for kind 'linkage'; the keys are: {', '.join(TOP_KEYS)}")
-    lk = build_linkage(data, source=source)
+    lk = build_linkage(data, source=source, swing=None if drawn is None else drawn.swing)
     mech = LinkageMechanism(lk, kind=lk.name)
     try:
         lk.check_full_turn()
     except AssemblyError as exc:
         raise AssemblyError(f"{source}: {exc}") from None
-    known = set(lk.solve([0.0], level=0).z)
+    known = set(lk.solve([0.0 if drawn is None else drawn.phi_0], level=0).z)
     inertias: list[Inertia] = []
     masses = data.get("masses", {})
     if not isinstance(masses, Mapping):
@@ -262,6 +312,8 @@ def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage
         if rd.text(f"{key}.at", at) not in known:
             rd.err(f"{key}.at", f"no point {at!r}; points: {', '.join(sorted(known))}")
         inertias.append(Inertia(link, at, m, J))
+    if drawn is not None:
+        return _drawn_tail(rd, data, lk, mech, tuple(inertias), drawn)
     if "load" not in data:
         rd.err("load", "is missing: {\"force\": N, \"on\": \"D\", \"from\": 0, \"to\": 1} or "
                        "{\"moment\": ..., \"on\": 3, ...}")
@@ -279,6 +331,27 @@ def linkage_case(data: Mapping[str, Json], *, source: str = "<dict>") -> Linkage
     return LinkageCase(kind="linkage", title=title, about=data.get("about", ""), source=source, mechanism=mech,
                        n_rpm=n_rpm, delta=delta, inertias=tuple(inertias), load=load,
                        values=MappingProxyType(values))
+
+
+def _drawn_tail(rd: _Reader, data: Mapping[str, Json], lk: Linkage, mech: LinkageMechanism,
+                inertias: tuple[Inertia, ...], drawn: Any) -> LinkageCase:
+    """The case of a drawn file: the speed, [δ] and the working load only if the file gives them."""
+    from graphmethods.kinematics.drawn import DrawnCase
+
+    load: Load | DiagramLoad | None = None
+    if "load" in data:
+        ld = rd.obj("load", data["load"], ("force", "moment", "diagram", "on", "from", "to"))
+        load = _diagram_load(rd, ld, lk) if "diagram" in ld else _step_load(rd, ld, lk)
+    n_rpm = rd.number("n_rpm", data["n_rpm"], "positive") if "n_rpm" in data else 0.0
+    delta = rd.number("delta", data["delta"], "delta") if "delta" in data else 0.0
+    title = Title.of(data.get("name"), where=f"{rd.source}: key 'name'")
+    case = DrawnCase(kind="linkage", title=title, about=data.get("about", ""), source=rd.source, mechanism=mech,
+                     n_rpm=n_rpm, delta=delta, inertias=inertias, load=load,   # type: ignore[arg-type]
+                     values=MappingProxyType(dict(data)), drawn=drawn)
+    for key, given in (("n_rpm", "n_rpm" in data), ("delta", "delta" in data), ("load", load is not None)):
+        if not given:
+            object.__delattr__(case, key)     # asked for, it names every key missing (DrawnCase.__getattr__)
+    return case
 
 
 def _diagram_load(rd: _Reader, ld: Mapping[str, Json], lk: Linkage) -> DiagramLoad:

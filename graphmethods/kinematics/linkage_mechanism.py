@@ -28,12 +28,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics import vectors as V
-from graphmethods.kinematics.groups import GROUND, RPP, RPR, Group, State
+from graphmethods.kinematics.groups import GROUND, RPP, RPR, Group, State, Triad
 from graphmethods.kinematics.linkage import Linkage, Motion, Point
 from graphmethods.kinematics.mechanism import Mechanism, PointOnLink
 from graphmethods.kinematics.plans import ConstructionLine, PointConstruction, VelocityPlans
 from graphmethods.kinematics.positions import Positions, Strokes, build_positions
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
+from graphmethods.units import real
 
 #: |sin| between two construction lines at or below which they are parallel (a toggle: refused)
 TOGGLE_SIN = 1e-14
@@ -96,7 +97,7 @@ class LinkageMechanism(Mechanism):
         self.link_joints = MappingProxyType(joints)
         self._translating = frozenset(k for k in names if self._slides_on_frame(k))
         self.link_numbers = MappingProxyType({int(k): v for k, v in names.items()
-                                              if k.isdigit() and k not in self._translating})
+                                              if k.isdigit() and k.isascii() and k not in self._translating})
         self.points = tuple(PointOnLink(p.name, self._on(p), p.distance, p.angle) for p in linkage.points
                             if p.name not in driving)
 
@@ -141,7 +142,7 @@ class LinkageMechanism(Mechanism):
     def _link_names(self, driving: set[str]) -> tuple[dict[str, str], dict[str, tuple[str, str]], set[str]]:
         """Canonical names of the links as the classic classes name them: by their two joints ("AB",
         "O2B"), "block" for a block on a slotted link; and those joints."""
-        from graphmethods.kinematics.groups import PRP, RRP, RRR
+        from graphmethods.kinematics.groups import PRP, RRP, RRR, Triad
         lk = self.linkage
         cr = lk.crank
         names = {cr.link: cr.centre + cr.pin}
@@ -152,6 +153,10 @@ class LinkageMechanism(Mechanism):
             pairs: list[tuple[str, str, str]] = []
             if isinstance(g, RRR):
                 pairs = [(g.links[0], g.P, g.C), (g.links[1], g.Q, g.C)]
+            elif isinstance(g, Triad):           # the basic link by its first two joints, each binary link by its two
+                pairs = sorted([(g.links[0], g.inner[0], g.inner[1]),
+                                *((k, P, B) for k, P, B in zip(g.links[1:], g.outer, g.inner))],
+                               key=lambda p: (len(p[0]), p[0]))
             elif isinstance(g, RRP):
                 pairs = [(g.links[0], g.P, g.C)]
                 names[g.links[1]] = f"slider{g.links[1]}"
@@ -272,8 +277,10 @@ class LinkageMechanism(Mechanism):
         if not isinstance(positions, Positions) or positions.mechanism is not self:
             raise InputError("velocity_plans needs Positions of this same linkage (from self.positions(...))")
         if isinstance(omega_1, bool) or not isinstance(omega_1, (int, float, np.floating, np.integer)) \
-                or not math.isfinite(omega_1) or omega_1 <= 0:
+                or omega_1 <= 0:
             raise InputError(f"omega_1 is the crank speed in rad/s and must be > 0, got {omega_1!r}")
+        omega_1 = real(omega_1, "omega_1", unit="rad/s", lo=0.0, lo_open=True,
+                       hint="the crank speed in rad/s")          # the number policy: finite, 1e-100 … 1e100
         lk = self.linkage
         st = lk.solve(positions.phi, omega_1=float(omega_1), level=1,
                       labels=positions.index)
@@ -289,6 +296,10 @@ class LinkageMechanism(Mechanism):
         constructions = _LazyConstructions(lambda: self._constructions(st))
         order = self.joints + tuple(p.name for p in self.points)
         vectors = {k: V.frozen(_xy(st.v[k])) for k in order + tuple(k for k in st.v if k not in order)}
+        for g in self._triads():                          # Assur's special point, a point of the basic link
+            K, _ = g.special_point(st)
+            B1, t = g.inner[0], g.links[0]
+            vectors[g.special] = V.frozen(_xy(st.v[B1] + 1j * st.omega[t] * (K - st.z[B1])))
         return VelocityPlans(positions=positions, omega_1=float(omega_1), sense=self.sense,
                              vectors=MappingProxyType(vectors),
                              omegas=MappingProxyType({self._canon[k]: V.frozen(np.asarray(w, float))
@@ -296,6 +307,10 @@ class LinkageMechanism(Mechanism):
                              constructions=constructions,
                              sin_min=V.frozen(sin_min), ill_conditioned=V.frozen(sin_min < sin_threshold),
                              sin_threshold=float(sin_threshold))
+
+    def _triads(self) -> tuple[Triad, ...]:
+        """The linkage's class III groups."""
+        return tuple(g for g in self.linkage.groups if isinstance(g, Triad))
 
     def _raise_toggle(self, positions: Positions, i: int, st: State) -> None:
         """Refuse a position where two construction lines are parallel (a toggle), naming it."""
@@ -320,7 +335,7 @@ class LinkageMechanism(Mechanism):
         two are in line at position ``i`` (its velocity is ⟂ to both): the shaper's lever, not the
         Whitworth's; and a link whose
         two joints rest (the shaper's BC)."""
-        from graphmethods.kinematics.groups import RRP, RRR
+        from graphmethods.kinematics.groups import RRP, RRR, Triad
         lk = self.linkage
         if lk.output is None:
             return set(), set()
@@ -345,6 +360,10 @@ class LinkageMechanism(Mechanism):
                     points.add(g.C)
                 if isinstance(g, (RRP, RRR)) and g.P in points and g.C in points:
                     links.add(g.links[0])                 # a link with two points at rest rests
+                if isinstance(g, Triad) and set(g.links[1:]) & links and sum(P in ground for P in g.outer) >= 2:
+                    # a rocker of a triad on two fixed joints stops: the rest of it is a structure (a truss)
+                    links |= {g.links[0]} | {k for k, P in zip(g.links[1:], g.outer) if P in ground}
+                    points |= set(g.inner)
             points |= {p.name for p in lk.points if p.link in links and (p.origin in ground or p.origin in points)}
             if (len(links), len(points)) == before:
                 break
@@ -373,6 +392,7 @@ class LinkageMechanism(Mechanism):
         cons.append(PointConstruction(name=cr.pin, method="known",
                                       equation=f"v_{cr.pin} = ω₁·l_{cr.centre}{cr.pin}, ⟂ {cr.centre}{cr.pin}, "
                                                f"in the sense of ω₁"))
+        found: dict[int, str] = {}
         for step in lk._steps:
             if hasattr(step, "records"):
                 for rec in step.records(st):
@@ -380,12 +400,13 @@ class LinkageMechanism(Mechanism):
                         continue
                     equation, rename = self._textbook(step, rec.equation)
                     lines = tuple(ConstructionLine(
-                        through=self._plan_label(st, pt),
+                        through=found.get(id(pt)) or self._plan_label(st, pt),
                         relation="perpendicular" if lab.startswith("⟂") else "parallel",
                         to=rename.get(lab[2:], lab[2:]), point=V.frozen(_xy(pt)), direction=V.frozen(_xy(d)))
                         for lab, pt, d in rec.lines)
                     cons.append(PointConstruction(name=rec.point, method="intersection", equation=equation,
                                                   lines=lines, sin_between=V.frozen(np.asarray(rec.sin_between))))
+                    found[id(rec.meet)] = rec.point.lower()   # a triad's lines pass through Assur's point
                     if isinstance(step, RPP):
                         cons.append(PointConstruction(
                             name=step.R, method="same", on=step.coincident,

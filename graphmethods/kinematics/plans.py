@@ -46,7 +46,7 @@ def convenient_scale(raw: float, *, series: tuple[float, ...] = CONVENIENT) -> f
     >>> convenient_scale(0.0213), convenient_scale(3.0), convenient_scale(5.0)
     (0.025, 4.0, 5.0)
     """
-    if not (isinstance(raw, (int, float, np.floating)) and math.isfinite(raw) and raw > 0):
+    if not (isinstance(raw, (int, float, np.floating)) and abs(raw) <= 1e308 and math.isfinite(raw) and raw > 0):
         raise InputError(f"a scale must be a positive finite number, got {raw!r}")
     return convenient_at_least(float(raw), series)
 

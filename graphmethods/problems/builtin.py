@@ -32,6 +32,15 @@ LINKAGES = {
     "two-slider": "two_slider_compressor.json",
     "engine": "single_cylinder_engine.json",
     "scotch-yoke": "scotch_yoke_pump.json",
+    "triad-six-bar": "triad_six_bar.json",
+}
+
+#: worked files of the drawn form (README): name -> file in ``graphmethods/problems/data/drawn``; every
+#: linkage above is also there in the drawn form, as ``drawn/NAME`` (``graphmethods kinematics drawn/shaper``)
+DRAWN = {
+    "drawn-four-bar": "example_four_bar.json",
+    "drawn-slotted-lever": "example_slotted_lever.json",
+    "drawn-six-bar-triad": "example_six_bar_triad.json",
 }
 
 #: cam problems: name -> ``"kind": "cam"`` problem file in ``graphmethods/problems/data`` (``graphmethods cam NAME``)
@@ -101,6 +110,10 @@ def case_path(spec) -> pathlib.Path:
     for name, file in LINKAGES.items():
         if key == name:
             return DATA / file
+        if key == f"drawn/{name}" and (DATA / "drawn" / file).is_file():
+            return DATA / "drawn" / file
+    if key in DRAWN:
+        return DATA / "drawn" / DRAWN[key]
     if key in CAMS:
         raise InputError(f"{spec} is a cam problem: see `graphmethods cam {spec}`")
     if key in {_key(c) for c in CYCLES}:
@@ -109,15 +122,77 @@ def case_path(spec) -> pathlib.Path:
                          f"{', '.join(LINKAGES)}")
     if p.exists():
         raise InputError(f"{spec}: a folder, not a problem file")
-    raise InputError(f"{spec}: no such problem file, and not a built-in problem (linkages: {', '.join(LINKAGES)}; "
-                     f"see `graphmethods problems`)")
+    raise InputError(f"{spec}: no such problem file, and not a built-in problem (linkages: {', '.join(LINKAGES)}, "
+                     f"each also as drawn/NAME; {', '.join(DRAWN)}; see `graphmethods problems`)")
+
+
+#: the name that stands for standard input wherever a problem file is read
+STDIN = "-"
+
+
+def read_stdin_case():
+    """The linkage problem file given on standard input (``graphmethods study - < press.json``)."""
+    import sys
+
+    from graphmethods.kinematics.case import case_from_dict
+    from graphmethods.units import json_value
+
+    try:
+        text = sys.stdin.read()
+    except UnicodeDecodeError as exc:
+        raise InputError(f"standard input: not UTF-8 text ({exc.reason})") from None
+    if not text.strip():
+        raise InputError("standard input is empty: give a problem file there (graphmethods problems press --file "
+                         "> press.json, edited) or name a file")
+    return case_from_dict(json_value(text, "standard input"), source="standard input")
+
+
+def example_files() -> dict[str, pathlib.Path]:
+    """The example students' files that ship with the package (answers files, drawings made in CAD), by
+    file name: what ``graphmethods check`` reads in the README's examples.
+
+    >>> "w1_mistakes.toml" in example_files()
+    True
+    """
+    found = sorted([*(DATA / "answers").glob("*.toml"), *(DATA / "drawings").glob("*.dxf"),
+                    *(DATA / "drawings").glob("*.svg")], key=lambda p: p.name)
+    return {p.name: p for p in found}
+
+
+def file_text(name: str) -> str:
+    """The problem file of a built-in linkage, or an example student's file (by its file name), as it
+    ships: to redirect, edit and give back.
+
+    >>> import json
+    >>> json.loads(file_text("press"))["r"]
+    0.1
+    >>> file_text("w1_mistakes.toml").startswith("#")
+    True
+    """
+    return read_text_file(file_path(name))
+
+
+def file_path(name: str) -> pathlib.Path:
+    """Where the file :func:`file_text` prints lies in the installed package."""
+    examples = example_files()
+    if str(name) in examples:
+        return examples[str(name)]
+    return case_path(name)
+
+
+def read_text_file(path: pathlib.Path) -> str:
+    from graphmethods.units import read_text
+
+    return read_text(path)
 
 
 def case(spec):
-    """The linkage problem of a file or a built-in name, read and validated
+    """The linkage problem of a file, a built-in name or ``-`` (standard input), read and validated
     (:func:`graphmethods.kinematics.read_case`)."""
     from graphmethods.kinematics import read_case
 
+    if str(spec) == STDIN:
+        return read_stdin_case()
     return read_case(case_path(spec))
 
 

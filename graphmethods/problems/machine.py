@@ -63,7 +63,7 @@ class Machine:
     problem: object = None
 
 
-def _cycle_machine(p) -> Machine:
+def _cycle_machine(p, J_F_given: float | None = None) -> Machine:
     if p.M_d is None and p.M_r is None:
         raise InputError(f"problem {p.id} is given as areas or works, not as moments of φ, so its motion in time "
                          f"is not defined between the boundaries; use W3, W4 or a problem with moment curves")
@@ -77,18 +77,21 @@ def _cycle_machine(p) -> Machine:
     breaks = tuple(float(x) for x in np.unique(part.phi[:-1]))      # knots, with the period's start
     model = ReducedModel(J_e=float(p.J_e), M_e=lambda x: part(x), phi_T=part.period, phi_0=part.start,
                          breaks=breaks)
-    J_F = 0.0
+    J_F = 0.0 if J_F_given is None else J_F_given
     omega_m = None
     if p.n_rpm is not None:
         omega_m = math.pi * p.n_rpm / 30.0
-        if p.delta is not None:
+        if p.delta is not None and J_F_given is None:
             J_F = max(p.flywheel().J_F, 0.0)
     return Machine(p.id, model, Md, J_F, p.omega_0, omega_m, p)
 
 
-def _linkage_machine(case, name: str) -> Machine:
+def _linkage_machine(case, name: str, J_F_given: float | None = None) -> Machine:
     from graphmethods.dynamics.study import Study
+    from graphmethods.errors import NoFlywheelNeeded
+    from graphmethods.kinematics.drawn import require_cycle
 
+    require_cycle(case, "the motion")
     study = Study(case, positions=12, estimate=False)
     m = TABLE_POSITIONS
     phi = TWO_PI * np.arange(m + 1) / m
@@ -107,13 +110,22 @@ def _linkage_machine(case, name: str) -> Machine:
     knots.sort(key=lambda k: (k[0], k[2]))
     M_r = MomentCurve(np.array([k[0] for k in knots]), np.array([k[1] for k in knots]))
     model = ReducedModel(J_e=spline.J_e, dJ_e=spline.dJ_e, M_e=lambda x: -M_r(x), breaks=tuple(switches))
-    J_F = study.exact.J_F
+    if J_F_given is not None:              # honoured as given: the problem's own J_F is not computed
+        J_F = J_F_given
+    else:
+        try:
+            J_F = study.exact.J_F
+        except NoFlywheelNeeded:           # its own inertia keeps δ within [δ]: no flywheel
+            J_F = 0.0
     return Machine(name, model, float(study.M_d), float(J_F), None, float(case.omega_m))
 
 
-def machine(spec) -> Machine:
+def machine(spec, *, J_F: float | None = None) -> Machine:
     """The machine of a built-in problem name (W1–W4, W4-exact and the linkages of
-    :data:`graphmethods.problems.builtin.LINKAGES`) or of a linkage problem file (JSON)."""
+    :data:`graphmethods.problems.builtin.LINKAGES`) or of a linkage problem file (JSON).
+
+    ``J_F`` (kg·m²), when given, is the flywheel as is: the problem's own J_F for [δ] is then not
+    computed (nor refused when no flywheel is needed)."""
     from graphmethods import problems
 
     text = str(spec).strip()
@@ -121,13 +133,21 @@ def machine(spec) -> Machine:
     cycles = {"w1": problems.w1, "w2": problems.w2, "w3": problems.w3, "w4": problems.w4_exact,
               "w4-exact": problems.w4_exact, "w4-drawing": problems.w4_drawing}
     if low in cycles:
-        return _cycle_machine(cycles[low]())
+        return _cycle_machine(cycles[low](), J_F)
     from graphmethods.kinematics import read_case
 
+    if text == "-":                        # the problem file on standard input
+        from graphmethods.problems.builtin import read_stdin_case
+
+        return _linkage_machine(read_stdin_case(), "stdin", J_F)
     if low in LINKAGES:
-        return _linkage_machine(read_case(DATA / LINKAGES[low]), low)
+        return _linkage_machine(read_case(DATA / LINKAGES[low]), low, J_F)
     p = pathlib.Path(text)
+    if not p.exists() and low.startswith("drawn"):
+        from graphmethods.problems.builtin import case_path
+
+        p = case_path(low)                       # the drawn form's worked files and drawn/NAME
     if not p.exists():
         names = ", ".join(["W1", "W2", "W3", "W4", "W4-exact"] + list(LINKAGES))
         raise InputError(f"{text!r}: not a built-in problem ({names}) and no such file")
-    return _linkage_machine(read_case(p), p.stem)
+    return _linkage_machine(read_case(p), p.stem, J_F)

@@ -7,10 +7,12 @@ laid side by side, 20 mm apart. Each primitive goes on the layer of its role (:d
 derived from the names of the groups around it and its style (:func:`role_of`):
 
 * paths become LWPOLYLINEs with the stroke's lineweight and, when dashed, a linetype of the same
-  dash pattern in mm; filled triangles (arrowheads) SOLIDs; other filled polygons and filled
+  dash pattern in mm, under a standard name (:data:`STANDARD_LINETYPES`) so that LibreCAD dashes it
+  too; filled triangles (arrowheads) SOLIDs; other filled polygons and filled
   circles solid HATCHes; circles CIRCLEs;
-* text becomes TEXT in the style ``GM-SANS`` (DejaVu Sans; a CAD program without it substitutes
-  its own sans font, e.g. Arial), its height the capital height of the scene's font size; a label
+* text becomes TEXT in a style of :data:`TEXT_STYLES` (Arial, and Noto Sans CJK for Chinese; each style
+  named after the LibreCAD font that draws it there), its height the capital height of the scene's
+  font size; a label
   with sub/superscripts becomes one TEXT per run, shifted and scaled as in SVG;
 * black is ByLayer (colour 7: black on a white background, white on a black one), other colours
   true colours; white fills (the open circles of joints and marks) are left unfilled;
@@ -46,11 +48,17 @@ from graphmethods.scene.elements import CAP
 from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm, text_width_mm
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
+from graphmethods.units import input_file
 
 if TYPE_CHECKING:                      # ezdxf is imported only when a DXF is written or read
     from ezdxf.document import Drawing
     from ezdxf.entities import DXFGraphic
 
+#: Most entities a drawing read may give once its blocks are expanded, every copy counted (a student's plan:
+#: a few hundred; a course sheet with its title block: a few thousand)
+MAX_DXF_ENTITIES = 200_000
+#: Deepest nesting of block references a drawing read may have
+MAX_DXF_DEPTH = 8
 #: DXF release written: AutoCAD 2010 (AC1024), read by AutoCAD, KOMPAS, nanoCAD, LibreCAD, BricsCAD, QCAD
 DXF_VERSION = "R2010"
 #: the GUIDs written in the header (ezdxf would make random ones)
@@ -72,12 +80,30 @@ LAYERS = {
     "text": ("TEXT", 7, "labels, numbers, captions"),
 }
 
-#: text styles: name -> (font file, family, bold)
+#: text styles: name -> (font file, family, bold). A CAD program (AutoCAD, nanoCAD, BricsCAD, KOMPAS, ezdxf's
+#: viewer) finds a style's font by its file name: Arial is on every Windows and macOS (ezdxf on Linux falls back to
+#: DejaVu Sans); Chinese is drawn with Noto Sans CJK, the file Debian, Ubuntu, Fedora and Arch install
+#: (fonts-noto-cjk) and the one graphmethods' PNG/PDF use; a Windows CAD program without it substitutes its own.
+#: LibreCAD takes a text's style NAME for its own (.lff) font, so each style is named after the LibreCAD font that
+#: draws it: OpenGostTypeB (Latin, Greek, Cyrillic: the ГОСТ 2.304 type B letters) and kst32b (with Chinese).
 TEXT_STYLES = {
-    "GM-SANS": ("DejaVuSans.ttf", "DejaVu Sans", False),
-    "GM-SANS-BOLD": ("DejaVuSans-Bold.ttf", "DejaVu Sans", True),
-    "GM-CJK": ("NotoSansCJKsc-Regular.otf", "Noto Sans CJK SC", False),
+    "OpenGostTypeB-Regular": ("arial.ttf", "Arial", False),
+    "lc_opengost-br": ("arialbd.ttf", "Arial", True),
+    "kst32b": ("NotoSansCJK-Regular.ttc", "Noto Sans CJK SC", False),
 }
+STYLE_SANS, STYLE_BOLD, STYLE_CJK = TEXT_STYLES
+
+#: dash patterns (mm, on and off) -> the standard linetype name each is written under. LibreCAD draws only the
+#: linetypes it knows by name (any other prints solid), in its own pattern of that family; AutoCAD, ezdxf's viewer
+#: and the others draw the pattern the file defines (ours). So each pattern of the figures has a standard name of
+#: its family (dashes, dots, dash-dots), the shortest dashes the "2" (half) names; a pattern not listed keeps a
+#: name of its own (GM-DASH-…), exact everywhere but LibreCAD.
+STANDARD_LINETYPES = {
+    (1.2, 0.8): "DASHED2", (2.0, 1.0): "HIDDEN2", (2.5, 1.2): "DASHED", (3.0, 1.0): "HIDDEN",
+    (3.0, 1.2): "ACAD_ISO02W100", (4.0, 1.5): "DASHEDX2", (0.8, 0.8): "DOT", (0.5, 1.0): "DOT2",
+    (6.0, 1.2, 1.0, 1.2): "DASHDOT", (6.0, 1.5, 1.0, 1.5): "CENTER", (5.0, 1.2, 1.0, 1.2): "DASHDOT2",
+}
+_LINETYPE_NOTE = "graphmethods dash "
 
 #: DXF lineweights (1/100 mm) a CAD program accepts
 _LINEWEIGHTS = (0, 5, 9, 13, 15, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 80, 90, 100, 106, 120, 140, 158, 200, 211)
@@ -211,14 +237,18 @@ class DxfRenderer:
         return attrs
 
     def _linetype(self, dash: tuple[float, ...]) -> str:
+        """The linetype of a dash pattern (mm), defined in the file on first use: its standard name
+        (:data:`STANDARD_LINETYPES`) unless the drawing already has that name for another pattern."""
         parts = [float(d) for d in dash]
         if len(parts) % 2:
             parts = parts * 2
-        name = "GM-DASH-" + "-".join(f"{d:g}".replace(".", "p") for d in parts)
+        note = _LINETYPE_NOTE + " ".join(f"{d:g}" for d in parts) + " mm"
+        name = STANDARD_LINETYPES.get(tuple(round(d, 3) for d in parts))
+        if name is None or (name in self.doc.linetypes and self.doc.linetypes.get(name).dxf.description != note):
+            name = "GM-DASH-" + "-".join(f"{d:g}".replace(".", "p") for d in parts)
         if name not in self.doc.linetypes:
             pattern = [sum(parts)] + [d if i % 2 == 0 else -d for i, d in enumerate(parts)]
-            self.doc.linetypes.add(name, pattern=pattern,
-                                   description="graphmethods dash " + " ".join(f"{d:g}" for d in parts) + " mm")
+            self.doc.linetypes.add(name, pattern=pattern, description=note)
         return name
 
     def _keep(self, entity: DXFGraphic) -> None:
@@ -297,7 +327,7 @@ class DxfRenderer:
             return
         attrs = self._attribs("text", None, label.color)
         cjk = any(_CJK.search(t) for t, _ in runs)
-        style = "GM-CJK" if cjk else ("GM-SANS-BOLD" if label.bold else "GM-SANS")
+        style = STYLE_CJK if cjk else (STYLE_BOLD if label.bold else STYLE_SANS)
         size = label.size_mm
         if len(runs) == 1 and runs[0][1] == 0:
             text, _ = runs[0]
@@ -330,7 +360,7 @@ def _new_document() -> Drawing:
     doc.header["$MEASUREMENT"] = 1            # metric
     doc.header["$LWDISPLAY"] = 1              # show lineweights
     doc.header["$LTSCALE"] = 1.0
-    doc.header["$TEXTSTYLE"] = "GM-SANS"
+    doc.header["$TEXTSTYLE"] = STYLE_SANS
     for _role, (name, color, description) in LAYERS.items():
         layer = doc.layers.add(name, color=color)
         layer.description = description
@@ -486,8 +516,14 @@ def read_drawing(source: str | os.PathLike[str] | bytes | bytearray) -> CadDrawi
     """
     doc, name = _read_document(source)
     reader = _DxfReader()
-    for entity in doc.modelspace():
-        reader.visit(entity)
+    try:
+        for entity in doc.modelspace():
+            reader.visit(entity)
+    except InputError as exc:
+        raise InputError(f"{name}: {exc}") from None
+    except (ValueError, TypeError, ZeroDivisionError, IndexError, KeyError, AttributeError, OverflowError,
+            RecursionError) as exc:          # an entity ezdxf read but cannot give (a broken block reference)
+        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {_one_line(exc)})") from None
     return reader.drawing(name, _to_mm(doc))
 
 
@@ -497,6 +533,8 @@ def _read_document(source: str | os.PathLike[str] | bytes | bytearray) -> tuple[
     from ezdxf.lldxf.const import DXFError
 
     name = str(source) if not isinstance(source, (bytes, bytearray)) else "<dxf>"
+    if not isinstance(source, (bytes, bytearray)):
+        input_file(source, missing="no such drawing")       # a regular file within the size cap, before ezdxf
     try:
         if isinstance(source, (bytes, bytearray)):
             doc = ezdxf.read(io.StringIO(bytes(source).decode("utf-8", errors="replace")))
@@ -504,11 +542,24 @@ def _read_document(source: str | os.PathLike[str] | bytes | bytearray) -> tuple[
             doc = ezdxf.readfile(str(source))
     except OSError as exc:
         if isinstance(source, (bytes, bytearray)) or pathlib.Path(source).is_file():     # ezdxf: "is not a DXF file"
-            raise InputError(f"{name}: not a readable DXF drawing ({exc})") from None
-        raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {exc})") from None
-    except (DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:   # ezdxf on a cut file
-        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
+            raise InputError(f"{name}: not a readable DXF drawing ({_one_line(exc)})") from None
+        raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {_one_line(exc)})") from None
+    except (DXFError, ValueError, TypeError, IndexError, KeyError, AttributeError, UnicodeDecodeError, StopIteration,
+            EOFError, RecursionError, OverflowError) as exc:   # ezdxf on a cut or malformed file
+        raise InputError(f"{name}: not a readable DXF drawing ({exc.__class__.__name__}: {_one_line(exc)})") from None
     return doc, name
+
+
+def _decoded(text: str) -> str:
+    """A DXF text with ezdxf's own decoding of the ``\\U+03BC`` escapes older DXF versions store (μ, Δ, ω)."""
+    from ezdxf.lldxf.encoding import decode_dxf_unicode, has_dxf_unicode
+
+    return decode_dxf_unicode(text) if has_dxf_unicode(text) else text
+
+
+def _one_line(exc: BaseException) -> str:
+    """An exception's message as one line (a parser's message may quote a line of the file, newline and all)."""
+    return " ".join(str(exc).split())[:200]
 
 
 def _xy(v: Any) -> tuple[float, float]:           # an ezdxf Vec2/Vec3 or a point tuple
@@ -529,10 +580,23 @@ class _DxfReader:
         self.texts: list[CadText] = []
         # TEXT entities: (text, x, y, height, left-aligned, last run's height, its x, its text, halign, valign)
         self.runs: list[tuple[Any, ...]] = []
+        self.count = 0                 # entities visited, every copy of a block's entity counted
 
     def visit(self, entity: Any, depth: int = 0) -> None:    # any DXF entity (its attributes differ by type)
         t = entity.dxftype()
-        if t == "INSERT" and depth < 8:
+        self.count += 1
+        if self.count > MAX_DXF_ENTITIES:
+            raise InputError(f"more than {MAX_DXF_ENTITIES} entities once its blocks are expanded "
+                             f"(MAX_DXF_ENTITIES, counted in copies); explode fewer blocks or draw the entities")
+        if t == "INSERT":
+            if depth >= MAX_DXF_DEPTH:
+                raise InputError(f"blocks inserted more than {MAX_DXF_DEPTH} levels deep (MAX_DXF_DEPTH)")
+            block = entity.block()
+            copies = int(getattr(entity, "mcount", 1) or 1) * (len(block) if block is not None else 0)
+            if self.count + copies > MAX_DXF_ENTITIES:
+                raise InputError(f"more than {MAX_DXF_ENTITIES} entities once its blocks are expanded "
+                                 f"(MAX_DXF_ENTITIES, counted in copies: block {entity.dxf.name!r} adds "
+                                 f"{copies}); explode fewer blocks or draw the entities")
             for e in entity.virtual_entities():
                 self.visit(e, depth + 1)
         elif t == "LINE":
@@ -550,7 +614,7 @@ class _DxfReader:
             self.text(entity)
         elif t == "MTEXT":
             h = float(entity.dxf.get("char_height", 2.5))
-            text = entity.plain_text(split=False).strip()
+            text = _decoded(entity.plain_text(split=False)).strip()
             ap = int(entity.dxf.get("attachment_point", 1))      # 1 top left … 9 bottom right
             col, row = (ap - 1) % 3, (ap - 1) // 3
             at = entity.dxf.insert
@@ -612,7 +676,7 @@ class _DxfReader:
     def text(self, entity: Any) -> None:
         """A TEXT as a run of its label (joined to the previous run when it is that label's sub/superscript)."""
         h = float(entity.dxf.height)
-        text = entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text
+        text = _decoded(entity.plain_text() if hasattr(entity, "plain_text") else entity.dxf.text)
         halign, valign = int(entity.dxf.get("halign", 0)), int(entity.dxf.get("valign", 0))
         aligned = (halign or valign) and entity.dxf.hasattr("align_point")
         at = entity.dxf.align_point if aligned else entity.dxf.insert
@@ -691,10 +755,12 @@ def overlay_onto(source: str | os.PathLike[str], scene: Scene, *, shift: tuple[f
     import ezdxf
     from ezdxf.lldxf.const import DXFError
 
+    input_file(source, missing="no such drawing")
     try:
         doc = ezdxf.readfile(str(source))
-    except (OSError, DXFError, ValueError, UnicodeDecodeError, StopIteration, EOFError) as exc:
-        raise InputError(f"{source}: not a readable DXF drawing ({exc.__class__.__name__}: {exc})") from None
+    except (OSError, DXFError, ValueError, TypeError, IndexError, KeyError, AttributeError, UnicodeDecodeError,
+            StopIteration, EOFError, RecursionError, OverflowError) as exc:
+        raise InputError(f"{source}: not a readable DXF drawing ({exc.__class__.__name__}: {_one_line(exc)})") from None
     if layer not in doc.layers:
         doc.layers.add(layer, color=1)                  # red
     for name, (font, family, bold) in TEXT_STYLES.items():

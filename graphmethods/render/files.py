@@ -74,6 +74,29 @@ def check_target(path: str | os.PathLike[str], *, overwrite: bool = False, what:
     return target
 
 
+def not_an_input(output: str | os.PathLike[str], *inputs: str | os.PathLike[str] | None, what: str = "output") -> None:
+    """Refuse an output file that is one of the command's inputs (the same path, a link to it, the same file),
+    even with ``--force``: a student's drawing is never overwritten by its own check.
+
+    >>> not_an_input("in.svg", "./in.svg", what="--overlay")
+    Traceback (most recent call last):
+    ...
+    graphmethods.errors.InputError: --overlay in.svg is an input of this command (in.svg); give another file name
+    """
+    out = pathlib.Path(output)
+    for given in inputs:
+        if given is None:
+            continue
+        src = pathlib.Path(given)
+        try:
+            same = os.path.abspath(out) == os.path.abspath(src) or (out.exists() and src.exists()
+                                                                   and os.path.samefile(out, src))
+        except OSError:
+            same = False
+        if same:
+            raise InputError(f"{what} {out} is an input of this command ({src}); give another file name")
+
+
 @contextlib.contextmanager
 def interrupts_held() -> Iterator[None]:
     """Hold back SIGINT and SIGTERM for the few renames that commit a set (delivered right after)."""
@@ -161,11 +184,13 @@ def write_set(directory: str | os.PathLike[str], files: Mapping[str, bytes], *, 
               what: str = "folder") -> list[pathlib.Path]:
     """Write a set of files (relative path -> bytes) into ``directory`` as a whole.
 
-    The set is written into a temporary folder beside ``directory`` (created with its parents if
-    missing), then moved into place: one rename when ``directory`` is new, else a rename per file
-    with SIGINT/SIGTERM held back and every replaced file kept until the last rename succeeds. So an
-    error, a full disk or an interrupt leaves either the old set or the new one, and no temporary
-    folder. ``stale`` names old files of the same set that the new one no longer has (they go too).
+    The set is written into a temporary folder on ``directory``'s own file system (inside it when it
+    exists, beside it when it is new; its parents are created if missing), then moved into place: one
+    rename when ``directory`` is new, else a rename per file with SIGINT/SIGTERM held back and every
+    replaced file kept until the last rename succeeds. So an error, a full disk or an interrupt leaves
+    either the old set or the new one, and no temporary folder; SIGTERM unwinds as SIGINT does (the
+    process then exits with status 143). ``stale`` names old files of the same set that the new one no
+    longer has (they go too, so that a forced set equals a fresh one).
 
     Raises
     ------
@@ -203,33 +228,64 @@ def write_set(directory: str | os.PathLike[str], files: Mapping[str, bytes], *, 
                                 f"(overwrite=True) to replace them, or another folder")
     stale = [n for n in stale if n not in files and (out / n).is_file()]
     made = _make_folder(out.parent, what) if not out.parent.exists() else []
-    staging = out.parent / f".{out.name}.{secrets.token_hex(6)}.tmp"
+    # staged on the target's own file system: inside the folder when it exists (it may be a mount point,
+    # whose parent lies on another device), beside it when it is new (it will be made where its parent is)
+    token = secrets.token_hex(6)
+    staging = out / f".staging.{token}.tmp" if out.is_dir() else out.parent / f".{out.name}.{token}.tmp"
     ok = False
-    try:
+    with _terminate_as_exit():
         try:
-            staging.mkdir()
-            for name, data in files.items():
-                target = staging / name
-                target.parent.mkdir(parents=True, exist_ok=True)
-                with open(target, "xb") as fh:
-                    fh.write(data)
-        except OSError as exc:
-            raise output_error(what, out, exc) from None
-        with interrupts_held():
-            if not out.exists():
-                try:
-                    os.rename(staging, out)
-                except OSError as exc:
-                    raise output_error(what, out, exc) from None
-            else:
-                _swap_in(staging, out, list(files), stale, what)
-        ok = True
-    finally:
-        if staging.exists():
-            shutil.rmtree(staging, ignore_errors=True)
-        if not ok:
-            _remove_folders(made)
+            _stage_and_swap(staging, out, files, stale, what)
+            ok = True
+        finally:
+            with interrupts_held():                    # a second signal does not cut the clean-up short
+                if staging.exists():
+                    shutil.rmtree(staging, ignore_errors=True)
+                if not ok:
+                    _remove_folders(made)
     return [out / name for name in files]
+
+
+@contextlib.contextmanager
+def _terminate_as_exit() -> Iterator[None]:
+    """SIGTERM (a ``kill``, a closed session, a CI timeout) unwinds as SIGINT does while a set is written: the
+    staging folder is removed and the process then exits with status 128 + 15, as the signal would."""
+    main = threading.current_thread() is threading.main_thread()
+    old = None
+    if main:
+        def on_term(signum: int, frame: object) -> None:
+            raise SystemExit(128 + signum)
+        try:
+            old = signal.signal(signal.SIGTERM, on_term)
+        except (ValueError, OSError):          # not settable here (an embedded interpreter)
+            main = False
+    try:
+        yield
+    finally:
+        if main:
+            signal.signal(signal.SIGTERM, old if old is not None else signal.SIG_DFL)
+
+
+def _stage_and_swap(staging: pathlib.Path, out: pathlib.Path, files: Mapping[str, bytes], stale: list[str],
+                    what: str) -> None:
+    """Write ``files`` into ``staging``, then move them into ``out`` (one rename when ``out`` is new)."""
+    try:
+        staging.mkdir()
+        for name, data in files.items():
+            target = staging / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            with open(target, "xb") as fh:
+                fh.write(data)
+    except OSError as exc:
+        raise output_error(what, out, exc) from None
+    with interrupts_held():
+        if not out.exists():
+            try:
+                os.rename(staging, out)
+            except OSError as exc:
+                raise output_error(what, out, exc) from None
+        else:
+            _swap_in(staging, out, list(files), stale, what)
 
 
 def _swap_in(staging: pathlib.Path, out: pathlib.Path, names: Iterable[str], stale: Iterable[str],

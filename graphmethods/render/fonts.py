@@ -20,7 +20,11 @@ never drawn as empty boxes.
 
 A :class:`Face` gives what a layout and a PDF need of a font face, in font units: the
 glyph of a character, advance widths, pair kerning, the code a PDF shows it by, and a
-subset of the font program.
+subset of the font program. It reads them from the font file's bytes
+(:mod:`graphmethods.render.sfnt`: the same numbers FreeType gives), once per process:
+DejaVu Sans is found next to matplotlib without importing it, so a PDF of Latin, Greek
+and Cyrillic text imports neither matplotlib nor fontTools; fontTools subsets CFF
+outlines (Noto Sans CJK), and matplotlib's font list finds the CJK font.
 
 >>> face = faces("M_d", bold=False)[0]
 >>> face.units_per_em, face.advance(face.glyph("M"))
@@ -40,6 +44,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from graphmethods.errors import MissingFontError
+from graphmethods.render.sfnt import Sfnt, subset_truetype
 from graphmethods.scene.markup import has_cjk
 
 if TYPE_CHECKING:
@@ -312,13 +317,6 @@ def families(text: str) -> list[str]:
     return [BASE_FAMILY]
 
 
-def _flag(enum: str, member: str, old: str) -> Any:
-    """A FreeType flag by its matplotlib >= 3.10 enum name, or its older module constant."""
-    from matplotlib import ft2font
-
-    return getattr(getattr(ft2font, enum), member) if hasattr(ft2font, enum) else getattr(ft2font, old)
-
-
 @dataclass(frozen=True)
 class PdfMetrics:
     """What a PDF font descriptor says of a face, in 1/1000 em: its PostScript name, the kind of outlines
@@ -358,66 +356,47 @@ class Face:
     """
 
     def __init__(self, path: str, index: int = 0):
-        import matplotlib
-        from matplotlib import ft2font
-
         self.path, self.index = path, int(index)
-        kwargs: dict[str, Any] = {"face_index": self.index} if self.index else {}
-        if tuple(int(v) for v in matplotlib.__version__.split(".")[:2]) < (3, 11):
-            # before 3.11 a face squeezes x by its hinting factor (8 by default): outlines, boxes, kerning
-            kwargs["hinting_factor"] = 1
-        self._ft: Any = ft2font.FT2Font(path, **kwargs)     # Any: its signatures differ across matplotlib 3.6-3.11
-        self.units_per_em = int(self._ft.units_per_EM)
-        self._cmap = self._ft.get_charmap()
-        self._no_scale = _flag("LoadFlags", "NO_SCALE", "LOAD_NO_SCALE")
-        self._unscaled = _flag("Kerning", "UNSCALED", "KERNING_UNSCALED")
-        self._advances: dict[int, int] = {}
-        self._kerns: dict[tuple[int, int], int] = {}
+        self._font = Sfnt(path, self.index)
+        self.units_per_em = int(self._font.units_per_em)
         self._cids: list[int] | None = None
 
     def glyph(self, char: str) -> int | None:
         """Glyph index of ``char``, or None when the font has none."""
-        return self._cmap.get(ord(char)) or None
+        return self._font.cmap.get(ord(char))
 
     def advance(self, gid: int) -> int:
         """Advance width of glyph ``gid`` in font units."""
-        adv = self._advances.get(gid)
-        if adv is None:
-            adv = self._advances[gid] = int(self._ft.load_glyph(gid, self._no_scale).horiAdvance)
-        return adv
+        return int(self._font.advances[gid])
 
     def kerning(self, left: int, right: int) -> int:
         """Pair kerning between two glyphs in font units (0 when the font has none)."""
-        key = (left, right)
-        k = self._kerns.get(key)
-        if k is None:
-            k = self._kerns[key] = int(self._ft.get_kerning(left, right, self._unscaled))
-        return k
+        return self._font.kerning.get((left << 16) | right, 0)
 
     @functools.cache  # noqa: B019 - one instance per font file (the faces are cached), kept for the run
     def pdf_metrics(self) -> PdfMetrics:
-        """The face's name, kind of outlines and descriptor metrics (1/1000 em), read with fontTools."""
-        f = _sfnt(self.path, self.index)
-        try:
-            em = 1000.0 / f["head"].unitsPerEm
-            name = f["name"].getDebugName(6) or f["name"].getDebugName(4) or "Font"
-            ps_name = re.sub(r"[^A-Za-z0-9._-]", "", name) or "Font"
-            cid_keyed, ros = False, ("Adobe", "Identity", 0)
-            if "CFF " in f:
-                top = f["CFF "].cff.topDictIndex[0]
-                if hasattr(top, "ROS"):
-                    cid_keyed, ros = True, (str(top.ROS[0]), str(top.ROS[1]), int(top.ROS[2]))
-            head, hhea = f["head"], f["hhea"]
-            os2 = f.get("OS/2", None)
-            cap = getattr(os2, "sCapHeight", 0) if os2 is not None else 0
-            return PdfMetrics(
-                ps_name=ps_name, outlines="CFF" if "CFF " in f else "TrueType", cid_keyed=cid_keyed, ros=ros,
-                ascent=round(hhea.ascent * em, 3), descent=round(hhea.descent * em, 3),
-                cap_height=round((cap or hhea.ascent) * em, 3),
-                bbox=tuple(round(v * em, 3) for v in (head.xMin, head.yMin, head.xMax, head.yMax)),
-                italic_angle=float(f["post"].italicAngle) if "post" in f else 0.0)
-        finally:
-            f.close()
+        """The face's name, kind of outlines and descriptor metrics (1/1000 em), read from the file."""
+        f = self._font
+        em = 1000.0 / f.units_per_em
+        name = f.name(6) or f.name(4) or "Font"
+        ps_name = re.sub(r"[^A-Za-z0-9._-]", "", name) or "Font"
+        cff = f.has("CFF ")
+        cid_keyed, ros = False, ("Adobe", "Identity", 0)
+        if cff:
+            font = _sfnt(self.path, self.index)
+            top = font["CFF "].cff.topDictIndex[0]
+            if hasattr(top, "ROS"):
+                cid_keyed, ros = True, (str(top.ROS[0]), str(top.ROS[1]), int(top.ROS[2]))
+            font.close()
+        os2 = f.os2()
+        cap = os2[1] if os2 is not None else 0
+        return PdfMetrics(
+            ps_name=ps_name, outlines="CFF" if cff else "TrueType", cid_keyed=cid_keyed, ros=ros,
+            ascent=round(f.ascent * em, 3), descent=round(f.descent * em, 3),
+            cap_height=round((cap or f.ascent) * em, 3),
+            bbox=(round(f.bbox[0] * em, 3), round(f.bbox[1] * em, 3), round(f.bbox[2] * em, 3),
+                  round(f.bbox[3] * em, 3)),
+            italic_angle=f.italic_angle())
 
     def code(self, gid: int) -> int:
         """The 2-byte code a PDF shows glyph ``gid`` by: its CID in a CID-keyed CFF font, else ``gid``."""
@@ -438,7 +417,10 @@ class Face:
 
 @functools.lru_cache(maxsize=32)
 def _subset(path: str, index: int, gids: tuple[int, ...]) -> bytes:
-    from fontTools import subset
+    face = _face(path, index)
+    if not face._font.has("CFF "):             # TrueType: read and cut from the file's bytes
+        return subset_truetype(face._font, gids)
+    from fontTools import subset  # CFF outlines (Noto Sans CJK): fontTools' subsetter
 
     font = _sfnt(path, index)
     cff = "CFF " in font
@@ -476,6 +458,16 @@ def _face(path: str, index: int = 0) -> Face:
 
 @functools.cache
 def _base_path(bold: bool) -> str:
+    """DejaVu Sans as matplotlib ships it (the file its font list resolves the family to), found without
+    importing matplotlib; matplotlib's own lookup only when that file is missing."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("matplotlib")
+    name = "DejaVuSans-Bold.ttf" if bold else "DejaVuSans.ttf"
+    for loc in (spec.submodule_search_locations or []) if spec is not None else []:
+        path = pathlib.Path(loc) / "mpl-data" / "fonts" / "ttf" / name
+        if path.is_file():
+            return str(path)
     from matplotlib.font_manager import FontProperties, findfont
 
     return str(findfont(FontProperties(family=BASE_FAMILY, weight="bold" if bold else "normal")))

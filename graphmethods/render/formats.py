@@ -4,7 +4,7 @@ Every format answers the same two calls: :func:`to_bytes` ``(scenes, suffix)`` a
 ``(scenes, path, overwrite=)``, where ``scenes`` is one :class:`~graphmethods.scene.scene.Scene` or
 several. SVG and PNG hold one figure; PDF (one page a scene) and DXF (the figures left to right)
 hold several. Each backend is imported only when its format is used (``import graphmethods``
-loads neither matplotlib nor svgwrite).
+loads neither matplotlib nor ezdxf).
 
 >>> from graphmethods.scene import Scene, Page, Text
 >>> scene = Scene(Page("A4"), (Text((10, 10), "M_d"),))

@@ -32,6 +32,7 @@ import html as _html
 import json
 import os
 import pathlib
+import re
 import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 
@@ -358,7 +359,13 @@ def save(bu: BuildUp, path: str | os.PathLike[str], fmt_: str, *, overwrite: boo
     for target, _ in files:                     # a missing folder or an existing file: refused, nothing written
         check_target(target, overwrite=overwrite)
     folder = pathlib.Path(path).parent          # every file of a construction goes beside ``path``
-    return write_set(folder, {p.name: data for p, data in files}, overwrite=overwrite, what="steps folder")
+    stale: list[str] = []
+    if fmt_ == "svg" and overwrite and folder.is_dir():     # frames of an earlier, longer build go too
+        stem = files[0][0].name.rsplit("-", 1)[0]
+        frame = re.compile(re.escape(stem) + r"-\d+\.svg")
+        stale = sorted(p.name for p in folder.iterdir() if frame.fullmatch(p.name) and p.is_file())
+    return write_set(folder, {p.name: data for p, data in files}, overwrite=overwrite, stale=stale,
+                     what="steps folder")
 
 
 def manifest(bu: BuildUp) -> str:

@@ -16,6 +16,7 @@ ordinary text passes through unchanged. A run is ``(text, shift)`` with shift
 from __future__ import annotations
 
 import functools
+import re
 from contextvars import ContextVar
 
 Run = tuple[str, int]
@@ -129,6 +130,16 @@ def plain(text: str) -> str:
     'ψmax'
     """
     return "".join(t for t, _ in parse(text))
+
+
+def lowered_digits(name: str) -> str:
+    """A point or link name as the books write it, its digits lowered: ``"S2"`` -> ``"S_{2}"``,
+    ``"O3A"`` -> ``"O_{3}A"``, ``"s4"`` -> ``"s_{4}"`` (one notation on every sheet).
+
+    >>> lowered_digits("S2"), lowered_digits("O3A"), lowered_digits("B")
+    ('S_{2}', 'O_{3}A', 'B')
+    """
+    return re.sub(r"([A-Za-z])(\d+)", lambda mt: f"{mt.group(1)}_{{{mt.group(2)}}}", name)
 
 
 def is_cjk(ch: str) -> bool:

@@ -82,7 +82,7 @@ _WORDS = {
     "figure":           ("Figure", "Рисунок", "图"),
     "max_label":        ("max", "max", "max"),
     "min_label":        ("min", "min", "min"),
-    "gain_loss":        ("+ gain, − loss", "+ избыток, − недостаток", "+ 盈功, − 亏功"),
+    "gain_loss":        ("+ gain, − loss", "+ избыток, − недостаток", "+ 盈功，− 亏功"),
 }
 
 _UNITS_RU = {
@@ -150,9 +150,29 @@ class Notation:
             return f"{symbol}/{u}" if simple else f"{symbol}/({u})"
         return f"{symbol}, {u}"
 
-    def number(self, value: float, *, sig: int = 4, plus: bool = False) -> str:
-        """A value written with this tradition's decimal separator and a typographic minus."""
-        return format_value(value, sig=sig, decimal=self.decimal, plus=plus)
+    def number(self, value: float, *, sig: int = 4, plus: bool = False, reference: float | None = None) -> str:
+        """A value written with this tradition's decimal separator and a typographic minus; 0 when it
+        is within the round-off of a computation of size ``reference``
+        (:func:`~graphmethods.scene.numbers.within_roundoff`)."""
+        return format_value(value, sig=sig, decimal=self.decimal, plus=plus, reference=reference)
+
+    @property
+    def colon(self) -> str:
+        """The colon after a caption: full-width "：" in Chinese text, ": " otherwise."""
+        return "：" if self.code == "zh" else ": "
+
+    @property
+    def semicolon(self) -> str:
+        """The separator of two clauses: full-width "；" in Chinese text, ";  " otherwise."""
+        return "；" if self.code == "zh" else ";  "
+
+    def zero(self, symbol: str, because: str) -> str:
+        """A quantity that is zero in this position, said with its reason, as a textbook writes it.
+
+        >>> get("en").zero("a^n_{BA}", "ω_{2}")
+        'a^n_{BA} = 0 (ω_{2} = 0 in this position)'
+        """
+        return f"{symbol} = 0 ({self.word('numbers.zero_here', q=because)})"
 
 
 def _build(code: str) -> Notation:

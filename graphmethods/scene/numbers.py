@@ -18,6 +18,17 @@ import math
 from graphmethods.errors import InputError
 
 MINUS = "\u2212"
+ROUNDOFF = 1e-9     # a value below this share of its computation's scale is that computation's round-off
+
+
+def within_roundoff(value: float, reference: float) -> bool:
+    """True when ``value`` is the round-off of a computation whose values are of size ``reference``
+    (|value| ≤ 10⁻⁹·|reference|): it is zero, and is written 0, never 4.8·10⁻³⁰.
+
+    >>> within_roundoff(4.796e-30, 0.24 * 31.4**2), within_roundoff(0.3, 1.0), within_roundoff(0.0, 0.0)
+    (True, False, True)
+    """
+    return abs(float(value)) <= ROUNDOFF * abs(float(reference))
 
 
 def format_mm(x: float) -> str:
@@ -59,7 +70,8 @@ def _round_sig(value: float, sig: int) -> tuple[float, int]:
     return rounded, decimals
 
 
-def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool = False) -> str:
+def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool = False,
+                 reference: float | None = None) -> str:
     """Format a physical value for a label: ``sig`` significant digits, no trailing zeros.
 
     Parameters
@@ -72,18 +84,21 @@ def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool =
         Decimal separator (``","`` in the Russian profile).
     plus : bool
         Write an explicit ``+`` in front of positive values (signed excess work).
+    reference : float, optional
+        The size of the values the computation of ``value`` handles (ω₁ for an angular speed,
+        ω₁²·r for an acceleration): a value within its round-off (:func:`within_roundoff`) is 0.
 
     Examples
     --------
     >>> format_value(43.69476), format_value(1234567.0), format_value(15.0, plus=True)
     ('43.69', '1234567', '+15')
-    >>> format_value(2.5e-6)
-    '2.5·10⁻⁶'
+    >>> format_value(2.5e-6), format_value(6.119e-14, reference=12.6)
+    ('2.5·10⁻⁶', '0')
     """
     value = float(value)
     if not math.isfinite(value):
         raise InputError(f"cannot write the value {value!r} on a figure: it is not finite")
-    if value == 0:
+    if value == 0 or (reference is not None and within_roundoff(value, reference)):
         return "0"
     mag = abs(value)
     if mag < 1e-4 or mag >= 1e12:

@@ -16,6 +16,7 @@ from graphmethods.errors import InputError
 from graphmethods.scene import markup
 from graphmethods.scene.elements import Table, lettered_size
 from graphmethods.scene.primitives import Path, Primitive, Style
+from graphmethods.scene.title_blocks import FormBlock
 
 #: ISO 216 sizes in mm, (short side, long side); SLIDE is a 16:9 presentation slide (13.333 × 7.5 in)
 PAPER = {"A4": (210.0, 297.0), "A3": (297.0, 420.0), "A2": (420.0, 594.0), "A1": (594.0, 841.0),
@@ -30,7 +31,10 @@ class TitleBlock:
 
     ``title`` is markup; ``problem`` is drawn literally (user text). ``scales`` are
     scale captions (markup). ``headings`` are the three row names in the figure's
-    notation.
+    notation. ``form`` is ``"simple"`` (this table), ``"gost"`` (ГОСТ 2.104 form 1, 185 × 55 mm)
+    or ``"gb"`` (GB/T 10609.1, 180 × 56 mm), see :mod:`graphmethods.scene.title_blocks`;
+    ``person`` are the student's rows ((heading, text), the simple form) and ``fields`` the
+    standard forms' cells (student, organisation, sheet_no, sheets, designation, ...).
     """
 
     title: str
@@ -38,6 +42,9 @@ class TitleBlock:
     scales: tuple[str, ...] = ()
     headings: tuple[str, str, str] = ("Figure", "Problem", "Scales")
     size_mm: float = 3.2
+    form: str = "simple"
+    person: tuple[tuple[str, str], ...] = ()
+    fields: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "size_mm", lettered_size(self.size_mm))     # 3.5 mm and up on A1/A2
@@ -48,10 +55,14 @@ class TitleBlock:
             rows.append((self.headings[1], markup.literal(self.problem)))
         if self.scales:
             rows.append((self.headings[2], ";  ".join(self.scales)))
+        rows += [(h, markup.literal(t)) for h, t in self.person]
         return tuple(rows)
 
-    def table(self, right: float, bottom: float) -> Table:
-        """The block as a table whose bottom-right corner is at (right, bottom)."""
+    def table(self, right: float, bottom: float) -> Table | FormBlock:
+        """The block whose bottom-right corner is at (right, bottom): a table, or a standard form."""
+        if self.form != "simple":
+            return FormBlock.of(self.form, right=right, bottom=bottom,
+                                fields={"title": markup.plain(self.title), **dict(self.fields)})
         probe = Table((0.0, 0.0), self.rows(), header_rows=0, align="ll", size_mm=self.size_mm, row_height_mm=7.0,
                       bold_rows=(0,), name="title-block")
         w, h = probe.width_mm, probe.height_mm

@@ -151,6 +151,33 @@ class Scene:
         """Estimated box (x0, y0, x1, y1) in mm of everything drawn."""
         return bbox(self.groups())
 
+    def save(self, path: Any, *, overwrite: bool = False) -> Any:
+        """Write the scene as the file ``path`` names it (.svg, .pdf, .png or .dxf), atomically, as
+        :func:`graphmethods.render.formats.save` does; ``overwrite=True`` replaces an existing file
+        (as matplotlib's ``savefig`` does), else an existing file is kept and
+        :class:`~graphmethods.errors.OutputExistsError` raised.
+
+        Returns
+        -------
+        pathlib.Path
+            The path written.
+
+        Examples
+        --------
+        >>> import tempfile, pathlib
+        >>> from graphmethods.scene import Page, Text
+        >>> s = Scene(Page("A4"), (Text((10, 12), "M_d", name="t"),))
+        >>> with tempfile.TemporaryDirectory() as d:
+        ...     p = s.save(pathlib.Path(d) / "a.svg")
+        ...     p = s.save(pathlib.Path(d) / "a.svg", overwrite=True)      # again: replaced
+        ...     p.name
+        'a.svg'
+        """
+        # the writers sit one layer up (graphmethods.render), looked up by name at call time
+        import importlib
+
+        return importlib.import_module("graphmethods.render.formats").save(self, path, overwrite=overwrite)
+
     def _repr_svg_(self) -> str:
         """Inline display in notebooks (Jupyter calls this): the SVG of the scene."""
         # The SVG writer sits one layer up (graphmethods.render); it is looked up by

@@ -38,6 +38,7 @@ from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
 from graphmethods.scene import Line, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.elements import Element
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import DASHED
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -99,12 +100,15 @@ class _Problem:
             self.omega_1, self.problem, self.n_rpm = (1.0 if omega_1 is None else float(omega_1)), "", None
             return
         lk = K._Linkage.of(obj, m=m, omega_1=omega_1)
+        self.phi = getattr(obj, "phi_angles", None)      # a study at given crank angles (AngleStudy)
         mech = lk.mech
         self.linkage = mech.linkage          # every mechanism is a linkage of the core
         self.m = 12 if lk.m is None else lk.m
         self.omega_1, self.problem, self.n_rpm = lk.omega_1, lk.problem, lk.n_rpm
 
     def plans(self) -> tuple[AccelerationPlan, ...]:
+        if getattr(self, "phi", None) is not None:
+            return acceleration_plans(self.linkage, phi=self.phi, omega_1=self.omega_1, epsilon_1=self.epsilon_1)
         if isinstance(self.m, bool) or not isinstance(self.m, (int, np.integer)) or self.m < 3:
             raise InputError(f"the number of positions m must be an integer ≥ 3, got {self.m!r}")
         return acceleration_plans(self.linkage, m=int(self.m), omega_1=self.omega_1, epsilon_1=self.epsilon_1)
@@ -169,11 +173,18 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
             if c.kind == "normal":
                 ends = (cr.centre + cr.pin) if s.method == "crank" else rel[len(s.point):] + s.point
                 w = abs(plan.omega[c.link])
+                if within_roundoff(w, plan.omega_1):        # the link stands still here: no normal component
+                    vals.append(nt.zero(symbol(c.symbol), f"ω_{{{c.link}}}"))
+                    continue
                 vals.append(f"{symbol(c.symbol)} = ω_{{{c.link}}}²·l_{{{ends}}} = {num(w)}²·{num(c.factor)} = "
                             f"{num(c.magnitude)} {unit}")
             elif c.kind == "tangential":                 # the crank's own a^τ (ε₁ given)
                 vals.append(f"{symbol(c.symbol)} = ε_{{{c.link}}}·l_{{{cr.centre + cr.pin}}} = "
                             f"{num(abs(plan.epsilon_1))}·{num(c.factor)} = {num(c.magnitude)} {unit}")
+            elif c.kind == "coriolis" and within_roundoff(plan.omega[c.link], plan.omega_1):
+                vals.append(nt.zero(symbol(c.symbol), f"ω_{{{c.link}}}"))
+            elif c.kind == "coriolis" and within_roundoff(c.factor, plan.omega_1 * cr.r):
+                vals.append(nt.zero(symbol(c.symbol), f"v_{{{rel}}}"))
             elif c.kind == "coriolis":
                 vals.append(f"{symbol(c.symbol)} = 2·ω_{{{c.link}}}·v_{{{rel}}} = 2·{num(abs(plan.omega[c.link]))}·"
                             f"{num(c.factor)} = {num(c.magnitude)} {unit}")
@@ -185,12 +196,17 @@ def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
     """(link, text) of ε of every link found from a tangential component: formula, value and sense."""
     out: list[tuple[str, str]] = []
     unit = nt.unit("rad/s²")
+    r = linkage.crank.r
+    a_ref = plan.omega_1**2 * r + abs(plan.epsilon_1) * r     # the size of the plan's accelerations
     for s in plan.steps:
         for c in s.components:
             if c.kind != "tangential" or s.method == "crank" or any(c.link == o for o, _ in out):
                 continue
             e = plan.epsilon[c.link]
             rel = c.symbol.split("_", 1)[1]
+            if within_roundoff(c.magnitude, a_ref):       # no tangential component: the link's ε is 0
+                out.append((c.link, nt.zero(f"ε_{{{c.link}}}", symbol(c.symbol))))
+                continue
             out.append((c.link, (f"ε_{{{c.link}}} = {symbol(c.symbol)}/l_{{{rel[len(s.point):] + s.point}}} = "
                                 f"{nt.number(c.magnitude, sig=4)}/{nt.number(c.factor, sig=4)} = "
                                 f"{nt.number(abs(e), sig=4)} {unit}, {K._sense_word(nt, e)}")))
@@ -319,12 +335,17 @@ def _acceleration_column(comps, pts: dict, head, s_a: Scale, eps: list[tuple[str
         L = math.dist(pts[c.start], pts[c.end])
         rows.append((image(c.start) + image(c.end), K._num(nt, L, 2),
                      f"{symbol(c.symbol)} = {K._num(nt, L * s_a.per_mm, 3)}"))
-    table = Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")
-    if table.top_right[0] > limit[0] + 1e-6 or table.bottom_left[1] > limit[1]:
+    tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")]
+    below = lay.after_table_mm + len(eps) * lay.line_mm                             # ε of the links under it
+    if tables[0].bottom_left[1] + below > limit[1] + 2 * lay.line_mm:   # a long table (a triad's): rows closer
+        room = limit[1] - at[1] - below
+        row = max(TABLE_MM * 1.7, room / (len(rows) + 0.5))
+        tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")]
+    if max(t.top_right[0] for t in tables) > limit[0] + 1e-6 or max(t.bottom_left[1] for t in tables) > limit[1]:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
-    wy = table.bottom_left[1] + lay.after_table_mm
-    return [table] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
-                      for i, (link, t) in enumerate(eps)]
+    wy = max(t.bottom_left[1] for t in tables) + lay.after_table_mm
+    return [*tables] + [Text((at[0], wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"epsilon-{link}")
+                        for i, (link, t) in enumerate(eps)]
 
 
 def acceleration_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,
@@ -362,7 +383,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     nt = get_notation(notation)
     lay = ACCELERATION_PLAN_LAYOUT
     plans = pr.plans()
-    k = _default_position(plans, pr.linkage) if position is None else _check_position(position, len(plans) - 1)
+    last = len(plans) - (1 if getattr(pr, "phi", None) is None else 0)     # at given angles: no repeated last one
+    k = _default_position(plans, pr.linkage) if position is None else _check_position(position, last)
     plan = plans[k]
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("acceleration.plan", k=str(k)),
                   problem=pr.problem if problem is None else problem, title_block=title_block)

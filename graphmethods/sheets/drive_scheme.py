@@ -100,7 +100,7 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     els.append(Table((x0 + 0.6 * (x1 - x0), sheet.top + 8.0), tuple(rows), align="lrrrrr", size_mm=2.8,
                      name="table"))
     freq = ", ".join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
-    els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}: ω = {freq} {nt.unit('rad/s')}",
+    els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}{nt.colon}ω = {freq} {nt.unit('rad/s')}",
                     size_mm=TEXT_MM, name="frequencies"))
     els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}: J_e = ΣJ' = {num(chain.J_e, sig=5)} "
                     f"{nt.unit('kg·m²')}, M_e = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}",

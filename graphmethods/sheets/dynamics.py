@@ -43,7 +43,6 @@ from graphmethods.dynamics.study import Study
 from graphmethods.errors import InputError
 from graphmethods.scene import (
     Axis,
-    Dimension,
     Frame,
     Line,
     Page,
@@ -51,9 +50,7 @@ from graphmethods.scene import (
     Polyline,
     Scale,
     Scene,
-    Table,
     Text,
-    Vector,
     markup,
     nice_ticks,
     notation as get_notation,
@@ -137,7 +134,6 @@ def position_labels(m: int, spacing_mm: float, *, min_gap_mm: float = 5.0) -> tu
 
 def as_study(obj, positions: int = 12):
     """A Study from a Study or a problem Case (studied at ``positions``)."""
-    from graphmethods.dynamics.study import Study
 
     if isinstance(obj, Study):
         return obj
@@ -209,11 +205,11 @@ def suppressed_base(lo: float, hi: float, scale: Scale, *, zero: bool | None = N
     """
     if zero is None:
         zero = not (lo > 0 and (hi - lo) < 0.35 * hi)
-    if zero:
+    if zero or not hi > lo:          # a constant (J_e of masses on the crank only): the axis from 0 shows it
         return 0.0
     ticks = nice_ticks(lo - (hi - lo), hi, scale, min_gap_mm=8.0)
     below = [t for t in ticks if t <= lo - 0.02 * (hi - lo)]
-    return float(below[-1]) if below else float(ticks[0])
+    return float(below[-1]) if below else (float(ticks[0]) if ticks else 0.0)
 
 
 # ----------------------------------------------------------------------------- the φ graph
@@ -544,6 +540,34 @@ def axis_break(at: tuple[float, float], name: str) -> Polyline:
     return Polyline(((x - 1.5, y), (x - 0.75, y - 1.5), (x + 0.75, y + 1.5), (x + 1.5, y)), style=THIN, name=name)
 
 
+def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: float = 12.0
+                  ) -> tuple[tuple[float, ...], tuple[str, ...], str]:
+    """The J_e axis's ticks (kg·m²), their labels and the axis's name, readable: a small J_e is written in
+    10⁻³ kg·m² (no "0.05225" five-digit jam), and the ticks stand at least a label's width apart.
+
+    >>> from graphmethods.scene import notation
+    >>> t, labels, name = inertia_ticks(0.0517, 0.0552, Scale("μ_J", "kg·m²", 2e-5), notation("en"))
+    >>> labels[:3], name
+    (('52', '52.5', '53'), 'J_e, 10⁻³ kg·m²')
+    """
+    nt = get_notation(nt)
+    top = max(abs(J_from), abs(J_to))
+    exp = 3 * math.floor(math.log10(top) / 3) if 0.0 < top < 0.1 else 0
+    f = 10.0 ** -exp
+    gap = min_gap_mm
+    for _ in range(6):
+        ticks = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=gap) if J_from <= t <= J_to)
+        labels = tuple(nt.number(t * f, sig=6) for t in ticks)
+        need = max((markup.text_width_mm(lab, SMALL_MM) for lab in labels), default=0.0) + 4.0
+        if need <= gap:
+            break
+        gap = need
+    sup = str(exp).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    unit = f"10{sup} {nt.unit('kg·m²')}" if exp else "kg·m²"
+    return ticks, labels, nt.quantity(nt.sym("dynamics.J_e"), unit) if exp else nt.quantity(
+        nt.sym("dynamics.J_e"), "kg·m²")
+
+
 def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np.ndarray, J: np.ndarray,
                             phi_k: np.ndarray, J_k: np.ndarray, nt, occ, J_to: float, prefix: str = "J-",
                             within=None, J_from: float = 0.0) -> list:
@@ -555,9 +579,9 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
     """
     ox, oy = origin
     period = float(phi_k[-1] - phi_k[0])
-    ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=12.0) if J_from <= t <= J_to)
+    ticks_J, labels_J, name_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=12.0)
     ax_J = Axis((ox - s_J.to_mm(J_from), oy), s_J, "x", min_value=J_from, max_value=J_to, ticks=ticks_J,
-                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM,
+                tick_labels=labels_J, label=name_J, size_mm=SMALL_MM,
                 decimal=get_notation(nt).decimal, labels_side="above", skip_zero_label=True, name=f"{prefix}axis-J")
     spacing = s_phi.to_mm(period / m)
     ax_phi = DownAxis(origin, s_phi, "y", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
@@ -609,7 +633,8 @@ def _turned_inertia_scene(study, *, nt, phi, J, J_k, phi_k, mu_J, mu_phi, page, 
 # ----------------------------------------------------------------------------- 2. M_d and M_r(φ)
 
 def moment_curves(study) -> tuple[np.ndarray, np.ndarray, float]:
-    """M_r at the positions (the drawn chords) and the balancing M_d, N·m."""
+    """M_r as drawn (its ordinates at the positions and the switching positions, the smooth curve
+    between them: :attr:`~graphmethods.dynamics.study.Study.moments`), its knots (rad) and the balancing M_d, N·m."""
     M_d, M_r = study.moments
     return np.asarray(M_r.M, dtype=float), np.asarray(M_r.phi, dtype=float), float(M_d.mean())
 
@@ -634,14 +659,13 @@ def drawn_moments(study, nt) -> DrawnMoments:
     """:class:`DrawnMoments` of a study in the notation ``nt`` (its curve names)."""
     M_r, phi_k, M_d = moment_curves(study)
     ends = np.array([0.0, TWO_PI])
-    if study.is_engine:
-        curve, ck, cv, key = -M_r, "M_r", -M_d, "M_d"
-    else:
-        curve, ck, cv, key = M_r, "M_d", M_d, "M_r"
+    sign = -1.0 if study.is_engine else 1.0
+    curve, cv = sign * M_r, sign * M_d
+    ck, key = ("M_r", "M_d") if study.is_engine else ("M_d", "M_r")
     curves = (CurveSpec(key, phi_k, curve, MAIN, nt.sym(key)),
               CurveSpec(ck, ends, np.array([cv, cv]), MAIN, nt.sym(ck)))
-    return DrawnMoments(curves, (phi_k, curve), float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck,
-                        float(cv))
+    dots = (np.asarray(study.phi, dtype=float), sign * np.asarray(study.M_r, dtype=float))   # the ordinates
+    return DrawnMoments(curves, dots, float(min(curve.min(), cv, 0.0)), float(max(curve.max(), cv)), ck, float(cv))
 
 
 def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, title=None, title_block: bool = True,
@@ -734,434 +758,9 @@ def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notat
                         zero=None if kinetic else True)
 
 
-# ----------------------------------------------------------------------------- 4. ω(φ) and ε(φ)
-
-def speed_graph(study, *, mu_omega=None, mu_phi=None, notation="en", page=None, title=None,
-                title_block: bool = True, name: str = "speed-graph") -> Scene:
-    """ω(φ) of the exact steady motion with the exact flywheel for [δ]: ω_m, ω_max and ω_min marked.
-
-    The ω axis starts at a round value below ω_min (its first tick), so the fluctuation
-    is visible.
-
-    Examples
-    --------
-    >>> import pathlib
-    >>> from graphmethods.kinematics import read_case
-    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
-    >>> s = speed_graph(press)
-    >>> s.element("label-omega_max").text
-    'ω_{max} = 32.04 rad/s, φ = 23.22°'
-    """
-    study = as_study(study)
-    nt = get_notation(notation)
-    ex = study.exact
-    mo = ex.motion
-    phi = np.asarray(mo.phi, dtype=float) - float(mo.phi[0])
-    w = np.asarray(mo.omega, dtype=float)
-    n = get_notation(nt).number
-    marks = [MarkSpec("omega_max", ex.phi_omega_max_from_0, ex.omega_max,
-                      f"{nt.sym('dynamics.omega_max')} = {value_text(nt, ex.omega_max, 'rad/s')}, φ = "
-                      f"{n(math.degrees(ex.phi_omega_max_from_0))}°", True),
-             MarkSpec("omega_min", ex.phi_omega_min_from_0, ex.omega_min,
-                      f"{nt.sym('dynamics.omega_min')} = {value_text(nt, ex.omega_min, 'rad/s')}, φ = "
-                      f"{n(math.degrees(ex.phi_omega_min_from_0))}°", False)]
-    levels = [(mo.omega_m, f"{nt.sym('dynamics.omega_m')} = {value_text(nt, mo.omega_m, 'rad/s')}", "omega_m")]
-    legend = (f"δ = {n(mo.delta)};  {nt.sym('dynamics.J_F')} = {value_text(nt, ex.J_F, 'kg·m²')} "
-              f"({nt.word('dynamics.exact')})")
-    return phi_graph(study, nt=nt, title=title or f"{nt.word('dynamics.speed_graph')} ω(φ)", page=page,
-                        title_block=title_block, name=name, curves=[CurveSpec("omega", phi, w, MAIN, "")],
-                        y_lo=float(min(w.min(), ex.omega_min)), y_hi=float(max(w.max(), ex.omega_max)),
-                        y_symbol=nt.sym("dynamics.omega"), y_unit="rad/s", scale_symbol=nt.sym("dynamics.mu_omega"),
-                        mu_Y=mu_omega,
-                        mu_phi=mu_phi, what="the ω graph", marks=marks, levels=levels, legend=legend, zero=None)
-
-
-def acceleration_graph(study, *, mu_eps=None, mu_phi=None, notation="en", page=None, title=None,
-                       title_block: bool = True, name: str = "acceleration-graph") -> Scene:
-    """ε(φ) = (M_e − ½ω² dJ_e/dφ)/(J_F + J_e) of the exact motion: the largest |ε| and χ = |ε|_max/ω_m².
-
-    ε jumps where the load switches on and off.
-
-    Examples
-    --------
-    >>> import pathlib
-    >>> from graphmethods.kinematics import read_case
-    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
-    >>> s = acceleration_graph(press, notation="ru")
-    >>> s.element("axis-Y").label
-    'ε, рад/с²'
-    """
-    study = as_study(study)
-    nt = get_notation(notation)
-    mo = study.exact.motion
-    phi = np.asarray(mo.phi, dtype=float) - float(mo.phi[0])
-    eps = np.asarray(mo.epsilon, dtype=float)
-    n = get_notation(nt).number
-    p = float(mo.phi_epsilon_max - mo.phi[0])
-    eps_text = f"{nt.sym('dynamics.eps_max')} = {value_text(nt, mo.epsilon_max, 'rad/s²')}"
-    marks = [MarkSpec("eps_max", p, mo.epsilon_max, f"{eps_text}, φ = {n(math.degrees(p))}°", mo.epsilon_max > 0)]
-    legend = (f"{nt.sym('dynamics.chi')} = |{nt.sym('dynamics.eps')}|_{{max}}/{nt.sym('dynamics.omega_m')}² = "
-              f"{n(mo.chi)}")
-    return phi_graph(study, nt=nt, title=title or f"{nt.word('dynamics.accel_graph')} ε(φ)", page=page,
-                        title_block=title_block, name=name, curves=[CurveSpec("eps", phi, eps, MAIN, "")],
-                        y_lo=float(min(eps.min(), 0.0)), y_hi=float(max(eps.max(), 0.0)),
-                        y_symbol=nt.sym("dynamics.eps"),
-                        y_unit="rad/s²", scale_symbol=nt.sym("dynamics.mu_eps"), mu_Y=mu_eps, mu_phi=mu_phi,
-                        what="the ε graph", marks=marks, legend=legend, zero=True)
-
-
-# ----------------------------------------------------------------------------- 5. the Zhukovsky lever
-
-def _link_points(link: str, names) -> tuple[str, str] | None:
-    """The two named points a link name joins (``"O2B"`` -> ``("O2", "B")``), or None."""
-    parts = re.findall(r"[A-Z][0-9]*", link)
-    if len(parts) == 2 and "".join(parts) == link and all(p in names for p in parts):
-        return parts[0], parts[1]
-    return None
-
-
-@dataclass(frozen=True)
-class LeverLoad:
-    """The load at one position as a force at the image of its point (a moment on a rocker becomes M/l at its end)."""
-
-    point: str
-    force: np.ndarray        # N, (2,)
-    M_r: float               # the power method's reduced moment there, N·m
-
-
-def lever_load(study, k: int) -> LeverLoad:
-    """The working-stroke load at position ``k`` as one force (N) at a point of the linkage."""
-    load = study.case.load
-    plans, pos = study.plans, study.positions
-    M_r = float(study.M_r[k])
-    if M_r <= 0.0:
-        loaded = [int(i) for i in np.flatnonzero(np.asarray(study.M_r)[:-1] > 0)]
-        raise InputError(f"position {k} carries no load (M_r = 0 there), so the lever has no force to show; "
-                         f"choose a loaded position: {', '.join(map(str, loaded)) or 'none'}")
-    if load.kind == "force":
-        g = np.asarray(study.mechanism.guides[load.at], dtype=float)
-        v = float(plans.v_along_guide(load.at)[k])
-        return LeverLoad(load.at, -load.magnitude * math.copysign(1.0, v) * g / np.hypot(*g), M_r)
-    ends = _link_points(study.mechanism.link_name(load.at), pos.names)
-    if ends is None:
-        raise InputError(f"the moment load on link {load.at} cannot be shown on the lever: its end points are "
-                         f"not named points of the linkage")
-    speeds = [float(plans.speed(p)[k]) for p in ends]
-    i = int(np.argmax(speeds))
-    end, other = ends[i], ends[1 - i]
-    l = float(np.hypot(*(pos.xy(end)[k] - pos.xy(other)[k])))
-    v = plans.v(end)[k]
-    return LeverLoad(end, -load.magnitude / l * v / np.hypot(*v), M_r)
-
-
-def _default_lever_position(study) -> int:
-    """The loaded position whose plan images lie furthest apart (the clearest lever)."""
-    plans = study.plans
-    M_r = np.asarray(study.M_r)[:-1]
-    moving = [p for p in plans.order if plans.label(p) != "p"]
-    V = np.stack([plans.v(p)[:-1] for p in moving], axis=1)                      # (m, n, 2)
-    d = np.hypot(*(V[:, :, None, :] - V[:, None, :, :]).transpose(3, 0, 1, 2))   # (m, n, n)
-    iu = np.triu_indices(len(moving), 1)
-    spread = d[:, iu[0], iu[1]].min(axis=1) if len(iu[0]) else np.ones(len(M_r))
-    spread = np.where(M_r > 0, spread, -1.0)
-    return int(np.argmax(spread))
-
-
-def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None, notation="en", page=None,
-                    title=None, title_block: bool = True, name: str = "zhukovsky-lever") -> Scene:
-    """Zhukovsky's lever at one position: the velocity plan turned 90°, the load at the image of its point.
-
-    The plan (drawn for ω₁ = ω_m to μ_v) is turned 90° against the crank's rotation and
-    treated as a rigid lever pivoted at the pole p; the working load F is applied at the
-    image of its point (a moment M on a rocker as the force M/l at its end), and its arm h
-    about p is dimensioned. Then M_r = F·h·μ_v/ω₁, the same value as the power method's
-    (written beside it for comparison).
-
-    Parameters
-    ----------
-    position : int, optional
-        The position (0…m−1); by default the one with the largest M_r.
-    mu_v : float or Scale, optional
-        (m/s) per mm of the plan; picked when not given.
-    mu_F : float or Scale, optional
-        N per mm of the force vector; picked when not given.
-
-    Raises
-    ------
-    InputError
-        If no load acts at the position.
-
-    Examples
-    --------
-    >>> import pathlib
-    >>> from graphmethods.kinematics import read_case
-    >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
-    >>> s = zhukovsky_lever(press, position=2)
-    >>> s.element("label-h").text
-    'h = 121.4 mm'
-    """
-    from graphmethods.scene import Page
-
-    study = as_study(study)
-    require_step_load(study, "Zhukovsky lever")
-    nt = get_notation(notation)
-    k = _lever_position(study, position)
-    g = LeverGeometry.of(study, k)
-    lay = LEVER
-    sheet = SheetFrame(nt=nt, page=page,
-                       title=title or f"{nt.word('dynamics.lever')}, {nt.word('dynamics.position')} {k}",
-                       problem=problem_text(study, nt), title_block=title_block,
-                       default_page=Page("A4", "landscape", frame=True))
-    x0, y0, x1, y1 = sheet.box
-    nb = nt.number
-    s_F = given_scale(mu_F, nt.sym("dynamics.mu_F"), nt.unit("N"), g.F_abs, lay.force_mm if mu_F is None else 1e9,
-                      what="the force vector")
-    f_len = s_F.to_mm(g.F_abs)
-    rows_probe = ((nt.word("dynamics.plan_turned"),
-                   f"{nt.sym('dynamics.omega_1')} = {value_text(nt, g.omega_1, 'rad/s')}"),
-                  (nt.word("dynamics.by_lever"), f"= {nb(g.F_abs)}·00.00·{nb(1.0e-4)}/{nb(g.omega_1)}"))
-    table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=TEXT_MM).width_mm
-    box = (x0 + lay.left_mm, sheet.top + lay.top_mm, x1 - table_w - lay.table_gap_mm, sheet.caption_y - lay.bottom_mm)
-    s_v = _lever_scale(g, mu_v, box, f_len, nt)
-    img, tip, foot, lo, hi = g.on_paper(s_v, f_len)
-    p_page = _pole_on_page(box, lo, hi, s_v, s_F)
-    occ = sheet.occ
-    lever_lines, force, line_of_action, h_mm = _lever_lines(study, g, p_page, img, tip, foot, f_len)
-    occ.register(*lever_lines, force, *line_of_action)
-    arm, h_label = _lever_arm(g, p_page, img, foot, h_mm, occ, nt, sheet.box)
-    pole = Point(_at(p_page, np.zeros(2)), radius_mm=0.9, name="pole")
-    occ.add_box((p_page[0] - 1, p_page[1] - 1, p_page[0] + 1, p_page[1] + 1))
-    F_text = f"{nt.sym('dynamics.F')} = {value_text(nt, g.F_abs, 'N')}"
-    els: list[Element] = lever_lines + line_of_action + [arm, h_label, force, pole]
-    els += _lever_names(study, g, p_page, img, force, F_text, occ, sheet.box)
-    # the result, worked out on the drawing, beside the power method's value
-    M_lever = g.F_abs * h_mm * s_v.per_mm / g.omega_1
-    rows = _lever_rows(g, nt, F_text, h_mm, s_v, M_lever)
-    probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM, row_height_mm=lay.row_mm)
-    table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM,
-                  row_height_mm=lay.row_mm, name="result")
-    occ.add_box((table.at[0], table.at[1], table.at[0] + table.width_mm, table.at[1] + table.height_mm))
-    els += [table]
-    scales = (s_v, s_F)
-    elements = [sheet.header()] + els + sheet.captions(scales)
-    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
-                 notes=(s_v.note, s_F.note, f"position {k}: M_r by the lever {M_lever:.6g} N·m, by power "
-                        f"{g.load.M_r:.6g} N·m"))
-
-
-@dataclass(frozen=True)
-class ZhukovskyLayout:
-    """The millimetre constants of the Zhukovsky lever sheet."""
-
-    left_mm: float = 12.0        # the lever's box inside the frame: left
-    top_mm: float = 8.0          # below the title
-    table_gap_mm: float = 14.0   # left of the result table
-    bottom_mm: float = 14.0      # above the captions
-    force_mm: float = 30.0       # the force vector's length when μ_F is picked
-    arm_offset_mm: float = 8.0   # the arm's dimension line from the arm
-    row_mm: float = 7.0          # the result table's rows
-
-
-LEVER = ZhukovskyLayout()
-
-
-def _lever_position(study: Study, position: int | None) -> int:
-    """The position drawn: the given one (0…m, m being 0 again), or the one with the largest M_r."""
-    m = study.m
-    if position is None:
-        return _default_lever_position(study)
-    if isinstance(position, bool) or not isinstance(position, (int, np.integer)) or not 0 <= position <= m:
-        raise InputError(f"position {position!r}: give a position number 0…{m}")
-    return int(position) % m
-
-
-def _at(p_page: np.ndarray, off: np.ndarray) -> tuple[float, float]:
-    """The page point ``off`` mm from the pole p."""
-    q = p_page + off
-    return (float(q[0]), float(q[1]))
-
-
-@dataclass(frozen=True)
-class LeverGeometry:
-    """The velocity plan at one position turned 90° against ω₁ (m/s), and the load at the image of its point."""
-
-    k: int
-    names: tuple[str, ...]
-    images: dict[str, np.ndarray]      # m/s, turned
-    load: LeverLoad
-    F_abs: float                       # N
-    Fhat: np.ndarray                   # the force's direction on paper (y down)
-    omega_1: float                     # rad/s
-
-    @classmethod
-    def of(cls, study: Study, k: int) -> LeverGeometry:
-        plans = study.plans
-        sense = int(plans.sense)
-
-        def turned(v: object) -> np.ndarray:
-            v = np.asarray(v, dtype=float)
-            return np.array([v[1], -v[0]]) if sense > 0 else np.array([-v[1], v[0]])
-
-        names = tuple(plans.order)
-        ld = lever_load(study, k)
-        F = np.asarray(ld.force, dtype=float)
-        F_abs = float(np.hypot(*F))
-        return cls(k, names, {p: turned(plans.v(p)[k]) for p in names}, ld, F_abs, np.array([F[0], -F[1]]) / F_abs,
-                   float(plans.omega_1))
-
-    def paper(self, v: np.ndarray, s_v: Scale) -> np.ndarray:
-        """A turned velocity as a paper offset from p (mm, y down)."""
-        return np.array([v[0], -v[1]]) / s_v.per_mm
-
-    def on_paper(self, s_v: Scale, f_len: float) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray,
-                                                          np.ndarray, np.ndarray]:
-        """Paper offsets from p (mm) of the images, the force's tip and the arm's foot, and their extent."""
-        img = {p: np.array([v[0], -v[1]]) / s_v.per_mm for p, v in self.images.items()}
-        b = img[self.load.point]
-        tip = b + self.Fhat * f_len
-        foot = b - self.Fhat * float(np.dot(b, self.Fhat))              # foot of the perpendicular from p
-        cloud = np.vstack(list(img.values()) + [np.zeros(2), tip, foot])
-        return img, tip, foot, cloud.min(axis=0), cloud.max(axis=0)
-
-
-def _pole_on_page(box: Box, lo: np.ndarray, hi: np.ndarray, s_v: Scale, s_F: Scale) -> np.ndarray:
-    """Where the pole p stands so that the lever's extent ``lo``…``hi`` (mm from p) is centred in ``box``.
-
-    Raises
-    ------
-    InputError
-        When the lever at the given scales does not fit the box.
-    """
-    bw, bh = box[2] - box[0], box[3] - box[1]
-    if hi[0] - lo[0] > bw + 1e-9 or hi[1] - lo[1] > bh + 1e-9:
-        raise InputError(f"the lever at {markup.plain(s_v.caption())} and {markup.plain(s_F.caption())} needs "
-                         f"{(hi - lo)[0]:.0f} × {(hi - lo)[1]:.0f} mm but the sheet leaves {bw:.0f} × {bh:.0f} mm; "
-                         f"give larger scales or none")
-    return np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2]) - (lo + hi) / 2
-
-
-def _lever_scale(g: LeverGeometry, mu_v: object, box: Box, f_len: float, nt: Notation) -> Scale:
-    """μ_v: given, or the first round value at which the lever (images, force, arm) fits the box."""
-    u_v = nt.unit("(m/s)")
-    if mu_v is not None:
-        return mu_v if isinstance(mu_v, Scale) else Scale(nt.sym("dynamics.mu_v"), u_v, mu_v)  # type: ignore[arg-type]
-    bw, bh = box[2] - box[0], box[3] - box[1]
-    span = max(float(np.ptp([v[0] for v in g.images.values()] + [0.0])) / bw,
-               float(np.ptp([v[1] for v in g.images.values()] + [0.0])) / bh)
-    for c in sorted({float(f"{mm!r}e{e}") for e in range(math.floor(math.log10(span)) - 1,
-                                                            math.floor(math.log10(span)) + 4)
-                     for mm in (1.0, 2.0, 2.5, 4.0, 5.0)}):
-        if c < span:
-            continue
-        lo, hi = g.on_paper(Scale(nt.sym("dynamics.mu_v"), u_v, c), f_len)[3:]
-        if hi[0] - lo[0] <= bw and hi[1] - lo[1] <= bh:
-            return Scale(nt.sym("dynamics.mu_v"), u_v, c, note=f"picked: the lever fits {bw:.0f} × {bh:.0f} mm at "
-                                                              f"{nt.number(c)} (m/s)/mm")
-    raise InputError("the lever does not fit the sheet; give mu_v and mu_F")  # pragma: no cover - F alone fits
-
-
-def _lever_lines(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[str, np.ndarray], tip: np.ndarray,
-                 foot: np.ndarray, f_len: float) -> tuple[list[Element], Vector, list[Element], float]:
-    """The lever (p to every image, the links between images), the force, its line of action to the arm's foot."""
-    plans = study.plans
-    lever_lines: list[Element] = []
-    for p in g.names:
-        if plans.label(p) == "p" or np.hypot(*g.images[p]) == 0:
-            continue
-        lever_lines.append(Line(_at(p_page, np.zeros(2)), _at(p_page, img[p]), style=MAIN,
-                                name=f"lever-p{plans.label(p)}"))
-    for link in study.mechanism.omega_links:
-        ends = _link_points(link, list(g.names))
-        if ends is None or any(plans.label(e) == "p" for e in ends):
-            continue
-        a, b = ends
-        lever_lines.append(Line(_at(p_page, img[a]), _at(p_page, img[b]), style=MAIN,
-                                name=f"lever-{plans.label(a)}{plans.label(b)}"))
-    b_img = img[g.load.point]
-    force = Vector(_at(p_page, b_img), _at(p_page, tip), name="force-F")
-    line_of_action: list[Element] = []
-    t_foot = float(np.dot(foot - b_img, g.Fhat))
-    if t_foot < 0.0 or t_foot > f_len:         # the foot is off the vector: carry its line of action there
-        far = tip if t_foot > f_len else b_img
-        line_of_action.append(Line(_at(p_page, far), _at(p_page, foot),
-                                   style=Style(width_mm=0.18, dash=(5.0, 1.2, 1.0, 1.2)), name="line-of-action"))
-    return lever_lines, force, line_of_action, float(np.hypot(*foot))
-
-
-def _lever_arm(g: LeverGeometry, p_page: np.ndarray, img: dict[str, np.ndarray], foot: np.ndarray, h_mm: float,
-               occ: FastOccupancy, nt: Notation, within: Box) -> tuple[Dimension, Text]:
-    """The arm h dimensioned beside it, on the side away from the lever, and its value written along it."""
-    u = foot / max(h_mm, 1e-12)
-    normal = np.array([-u[1], u[0]])
-    centre = np.mean(np.vstack(list(img.values())), axis=0) - foot / 2
-    side = -1.0 if float(np.dot(centre, normal)) > 0 else 1.0
-    arm = Dimension(_at(p_page, np.zeros(2)), _at(p_page, foot), "", offset_mm=LEVER.arm_offset_mm * side,
-                    size_mm=TEXT_MM, name="dimension-h")
-    occ.register(arm)
-    h_text = f"{nt.sym('dynamics.h')} = {nt.number(h_mm)} {nt.unit('mm')}"
-    a_, b_ = np.asarray(arm.line_start), np.asarray(arm.line_end)
-    away = np.asarray(arm.line_start) - np.asarray(arm.start)          # from the arm towards its dimension line
-    compass = "e" if away[0] > abs(away[1]) else "w" if -away[0] > abs(away[1]) else ("s" if away[1] > 0 else "n")
-    order = {"e": ("e", "ne", "se", "w"), "w": ("w", "nw", "sw", "e"), "n": ("n", "ne", "nw", "s"),
-             "s": ("s", "se", "sw", "n")}[compass]
-    h_lab = None
-    for t in (0.5, 0.4, 0.6, 0.3, 0.7):
-        h_lab = occ.first_free(tuple((a_ + (b_ - a_) * t).tolist()), h_text, order, (1.2, 2.5), TEXT_MM, within)
-        if h_lab is not None:
-            break
-    if h_lab is None:
-        h_lab = occ.place_label_with_leader(tuple(((a_ + b_) / 2).tolist()), h_text, order, size_mm=TEXT_MM,
-                                            within=within)[0]
-    else:
-        occ.add_label(h_lab)
-    return arm, Text((h_lab.x, h_lab.y), h_text, size_mm=TEXT_MM, anchor=h_lab.anchor, name="label-h")
-
-
-def _lever_names(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[str, np.ndarray], force: Vector,
-                 F_text: str, occ: FastOccupancy, within: Box) -> list[Element]:
-    """The images' dots, the names p, a, b, … beside them, and the force's value."""
-    plans = study.plans
-    dots: list[Element] = []
-    for p in g.names:
-        lab_text = plans.label(p)
-        if lab_text == "p":
-            continue
-        q = _at(p_page, img[p])
-        dots.append(Point(q, radius_mm=0.6, name=f"image-{lab_text}"))
-        occ.add_box((q[0] - 0.7, q[1] - 0.7, q[0] + 0.7, q[1] + 0.7))
-    labels: list[Element] = []
-    pole: list[str | None] = [None]
-    for point in pole + list(g.names):
-        text = "p" if point is None else plans.label(point)
-        if point is not None and text == "p":
-            continue
-        q = _at(p_page, np.zeros(2)) if point is None else _at(p_page, img[point])
-        lab = occ.place_label(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=within)
-        labels.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"name-{text}"))
-    lab, leader = occ.place_label_with_leader(force.mid, F_text, ("n", "s", "ne", "se", "nw", "sw", "e", "w"),
-                                              size_mm=TEXT_MM, gap_mm=1.5, within=within)
-    labels.append(Text((lab.x, lab.y), F_text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-F"))
-    if leader is not None:
-        labels.append(Line(leader[0], leader[1], style=THIN, name="leader-F"))
-    return dots + labels
-
-
-def _lever_rows(g: LeverGeometry, nt: Notation, F_text: str, h_mm: float, s_v: Scale,
-                M_lever: float) -> tuple[tuple[str, str], ...]:
-    """The result: M_r = F·h·μ_v/ω₁ worked out on the drawing, beside the power method's value."""
-    nb = nt.number
-    return (
-        (nt.word("dynamics.plan_turned"), f"{nt.sym('dynamics.omega_1')} = {value_text(nt, g.omega_1, 'rad/s')}"),
-        (nt.word("dynamics.force"), F_text),
-        (nt.word("dynamics.arm"), f"{nt.sym('dynamics.h')} = {nb(h_mm)} {nt.unit('mm')}"),
-        (nt.word("dynamics.by_lever"),
-         f"{nt.sym('M_r')} = {nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/"
-         f"{nt.sym('dynamics.omega_1')}"),
-        ("", f"= {nb(g.F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(g.omega_1)}"),
-        ("", f"= {value_text(nt, M_lever, 'N·m')}"),
-        (nt.word("dynamics.by_power"), f"{nt.sym('M_r')} = {value_text(nt, g.load.M_r, 'N·m')}"),
-    )
-
+# split out of this module, imported here so that every name reads as before: speed_graphs.py, zhukovsky_lever.py
+from graphmethods.sheets.speed_graphs import acceleration_graph, speed_graph  # noqa: E402
+from graphmethods.sheets.zhukovsky_lever import LeverLoad, lever_load, zhukovsky_lever  # noqa: E402
 
 __all__ = [
     "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",

@@ -1,15 +1,19 @@
-"""The flywheel as a designer sees it: the rim (spoked) flywheel and the solid disc sized from J_F,
-their axial sections drawn to one length scale μ_l and dimensioned, with the table of masses,
-flywheel moments m·D² and rim speeds against the material's limit (domain.md §6). A4 landscape.
+"""The flywheel as an engineering drawing: the rim (spoked) flywheel and the solid disc sized from J_F,
+each in axial section at one standard scale of the drawing series (1 : 2, 1 : 2.5, 1 : 4, 1 : 5,
+1 : 10, 1 : 15, 1 : 20, ...; the largest that fits the page), with rim, spokes or web, hub and bore,
+⌀ dimensions in mm written clear of every line, and the table of masses, flywheel moments m·D² and
+rim speeds against the material's limit (domain.md §6). A4 landscape.
 
-Rim: J ≈ m D²/4, m = ρ π D H B (mean diameter D, radial thickness H, width B, H/B given);
-the drawing shows the rim's section at ±D/2 from the axis (spokes and hub, neglected in J, drawn
-thin). Disc: J = m D²/8, m = ρ π D² B/4.
+Rim: J ≈ m D²/4, m = ρ π D H B (mean diameter D, radial thickness H, width B, H/B given); the spokes
+and the hub are neglected in J. Disc: J = m D²/8, m = ρ π D² B/4. The hub and the bore follow the
+usual proportions (bore d ≈ 0.15 D on the normal series of sizes, hub ⌀ 1.8 d, hub length 1.5 d):
+the shaft's own design fixes d. Spokes cut along their length are drawn unhatched, as the drafting
+standards draw them.
 
 >>> from graphmethods.dynamics.flywheel import disc_flywheel, rim_flywheel
 >>> s = flywheel_design(rim_flywheel(43.69, n_rpm=600.0, D=0.75), disc_flywheel(43.69, D=0.75, n_rpm=600.0))
->>> s.scales()[0].caption("en")
-'μ_l = 0.02 m/mm'
+>>> s.scales()[0].caption("en"), s.element("scale-note").text
+('μ_l = 0.01 m/mm', 'Scale 1 : 10')
 """
 
 from __future__ import annotations
@@ -17,155 +21,214 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from graphmethods.errors import InputError
 from graphmethods.scene import Line, Page, Scale, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Dimension, Element, Region, Table
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import THIN, Style
+from graphmethods.scene.primitives import Style
 from graphmethods.sheets.frame import SheetFrame
-from graphmethods.sheets.layout import TEXT_MM, given_scale
+from graphmethods.sheets.layout import TEXT_MM
 
 AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 OUTLINE = Style(width_mm=0.5)
+#: the reduction scales of a machine drawing (ГОСТ 2.302, GB/T 14690), 1 : k
+DRAWING_SCALES = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 50.0, 75.0, 100.0)
+#: the normal linear sizes (ГОСТ 6636 Ra 20), mm: the bore is rounded up to one
+NORMAL_MM = (20, 22, 25, 28, 32, 36, 40, 45, 50, 56, 63, 71, 80, 90, 100, 110, 125, 140, 160, 180, 200, 220, 250,
+             280, 320, 360, 400)
 
+
+@dataclass(frozen=True)
+class FlywheelDesignLayout:
+    """The millimetre constants of the flywheel drawing."""
+
+    top_mm: float = 12.0             # the headings below the top of the drawing
+    bottom_mm: float = 10.0          # kept above the captions
+    dim_step_mm: float = 12.0        # between parallel dimension lines (≥ 7, and a value's width)
+    dim_first_mm: float = 8.0        # the first dimension line from the contour
+    value_mm: float = 10.5           # a ⌀ value's width and its gap
+    width_dims_mm: float = 12.0      # above and below a section: its width dimensions
+    table_mm: float = 80.0           # the table's column at the right
+    gap_mm: float = 8.0              # between the drawings
+
+
+LAYOUT = FlywheelDesignLayout()
+
+
+@dataclass(frozen=True)
+class Hub:
+    """The hub and the bore of a flywheel of mean diameter D (m), by the usual proportions."""
+
+    d: float          # bore, m
+    d_hub: float      # hub's outer diameter, m
+    L: float          # hub's length, m
+
+    @classmethod
+    def of(cls, D: float, B: float) -> Hub:
+        d_mm = next((v for v in NORMAL_MM if v >= 150.0 * D), NORMAL_MM[-1])
+        d = d_mm / 1000.0
+        return cls(d=d, d_hub=1.8 * d, L=max(1.5 * d, 1.2 * B))
 
 
 def _rect(x0: float, y0: float, x1: float, y1: float) -> tuple[tuple[float, float], ...]:
     return ((x0, y0), (x1, y0), (x1, y1), (x0, y1))
 
 
+def _outer_D(p: Any) -> float:
+    return float(getattr(p, "D1", p.D))
+
+
+def _width(p: Any) -> float:
+    return max(p.B, Hub.of(p.D, p.B).L)
+
+
+def _dims_width(lay: FlywheelDesignLayout) -> float:
+    """The width two ⌀ dimensions take on each side of a section, mm."""
+    return 2 * (lay.dim_first_mm + lay.dim_step_mm + lay.value_mm)
+
+
+def drawing_scale(parts: list[Any], room_w: float, room_h: float, lay: FlywheelDesignLayout = LAYOUT) -> float:
+    """The largest standard drawing scale 1 : k at which every section and its dimensions fit, k.
+
+    >>> from graphmethods.dynamics.flywheel import rim_flywheel
+    >>> drawing_scale([rim_flywheel(43.69, n_rpm=600.0, D=0.75)], 160.0, 130.0)
+    10.0
+    """
+    dims_w = _dims_width(lay)
+    for k in DRAWING_SCALES:
+        w = sum(_width(p) * 1000.0 / k + dims_w for p in parts) + lay.gap_mm * (len(parts) - 1)
+        h = max(_outer_D(p) for p in parts) * 1000.0 / k + 2 * lay.width_dims_mm
+        if w <= room_w and h <= room_h:
+            return k
+    raise InputError(f"the flywheel (⌀{max(_outer_D(p) for p in parts) * 1000:.0f} mm) does not fit the page "
+                     f"even at 1 : {DRAWING_SCALES[-1]:g}; give a larger page")
+
+
 def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: Page | None = None,
                     mu_l: float | None = None, title: str | None = None, problem: str = "") -> Scene:
-    """The rim flywheel (and the disc, when given) drawn to scale, dimensioned, with the table.
+    """The rim flywheel (and the disc, when given) as a drawing: sections at a standard scale, ⌀ dimensions, table.
 
     Parameters
     ----------
-    rim : RimFlywheel
-        From :func:`graphmethods.dynamics.flywheel.rim_flywheel`.
+    rim : RimFlywheel or DiscFlywheel
+        From :func:`graphmethods.dynamics.flywheel.rim_flywheel` (or a disc drawn alone).
     disc : DiscFlywheel, optional
         From :func:`graphmethods.dynamics.flywheel.disc_flywheel`.
     mu_l : float, optional
-        Length scale, m/mm (picked to fit when not given).
+        Length scale, m/mm (default: the largest standard drawing scale that fits, 1 : k is k/1000 m/mm).
     notation : {"en", "ru", "zh"}
     """
     nt = get_notation(notation)
+    if not hasattr(rim, "H") and disc is None:       # a disc alone (flywheel --disc without --rim)
+        rim, disc = None, rim
     sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.design_title"), problem=problem,
                        title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     lay = LAYOUT
     top = sheet.top + lay.top_mm
-    room_h = 0.5 * (sheet.caption_y - lay.bottom_mm - top)  # the drawings above, the table under them
-    parts = [rim] + ([disc] if disc is not None else [])
-    widest = max(rim.D + rim.H, disc.D if disc is not None else 0.0)
-    span_w = rim.B + (disc.B if disc is not None else 0.0)
-    room_w = (x1 - x0) * lay.drawings_share - lay.dimensions_mm
-    s_l = given_scale(mu_l, "μ_l", nt.unit("m"), max(widest, span_w * room_h / max(room_w, 1.0)), room_h,
-                      what="the flywheel")
-    cy = top + room_h / 2                                     # the axis of rotation (horizontal on paper)
-    xr = x0 + lay.rim_left_mm
+    bottom = sheet.caption_y - lay.bottom_mm
+    parts = [p for p in (rim, disc) if p is not None]
+    room_w = x1 - x0 - lay.table_mm - lay.gap_mm
+    k = 1000.0 * float(mu_l) if mu_l is not None else drawing_scale(parts, room_w, bottom - top, lay)
+    s_l = Scale("μ_l", nt.unit("m"), k / 1000.0, note=f"1 : {k:g}, the largest drawing scale that fits")
+    cy = (top + bottom) / 2                                    # the axis of rotation (horizontal on paper)
     els: list[Any] = [sheet.header()]
-    els += _rim_section(rim, s_l, nt, xr, cy, top)
-    if disc is not None:
-        els += _disc_section(disc, s_l, nt, xr + s_l.to_mm(rim.B) + lay.disc_gap_mm, cy, top)
-    els.append(Table((x0 + 10.0, cy + room_h / 2 + 14.0), _table_rows(parts, nt), align="lrr", size_mm=2.8,
-                     name="table"))
+    widths = [_width(p) * 1000.0 / k + _dims_width(lay) for p in parts]
+    spare = (room_w - sum(widths) - lay.gap_mm * (len(parts) - 1)) / (len(parts) + 1)
+    x = x0 + max(spare, 0.0)
+    for p, w in zip(parts, widths):
+        centre = x + w / 2
+        kind = "rim" if hasattr(p, "H") else "disc"
+        els += _section(p, kind, s_l, nt, centre, cy, top, name=kind)
+        x += w + lay.gap_mm + max(spare, 0.0)
+    els.append(Text((x0 + 2.0, sheet.top + 4.0), nt.word("flywheel.scale", k=f"{k:g}"), size_mm=TEXT_MM,
+                    name="scale-note"))
+    tx = x1 - lay.table_mm
+    table = Table((tx, top), _table_rows(parts, nt), align="lrr", size_mm=2.8, name="table")
+    els.append(table)
+    for i, key in enumerate(("hub_note", "hub_rule")):
+        els.append(Text((tx, top + table.height_mm + 6.0 + 4.5 * i), nt.word(f"flywheel.{key}"), size_mm=2.8,
+                        name=f"hub-note-{i}"))
     verdicts = []
-    for p, key in zip(parts, ("rim", "disc")):
+    for p, key in zip(parts, ("rim", "disc") if rim is not None else ("disc",)):
         verdict = nt.word("flywheel.ok") if p.rim_speed <= p.speed_limit else nt.word("flywheel.over")
-        verdicts.append(f"{nt.word(f'flywheel.{key}')}: {verdict}")
-    els.append(Text((x0, sheet.caption_y - 7.0), ";  ".join(verdicts), size_mm=TEXT_MM, name="verdict"))
+        verdicts.append(f"{nt.word(f'flywheel.{key}')}{nt.colon}{verdict}")
+    els.append(Text((x0, sheet.caption_y - 7.0), nt.semicolon.join(verdicts), size_mm=TEXT_MM, name="verdict"))
     els += sheet.captions((s_l,))
     return Scene(sheet.page((s_l,)), tuple(els), title=sheet.title, notation=nt.code, name="flywheel-design")
 
 
-@dataclass(frozen=True)
-class FlywheelDesignLayout:
-    """The millimetre constants of the flywheel design sheet."""
-
-    top_mm: float = 12.0             # the headings below the top of the drawing
-    bottom_mm: float = 22.0          # kept above the captions
-    drawings_share: float = 0.55     # of the width, for the sections
-    dimensions_mm: float = 90.0      # of that share, for the dimensions
-    rim_left_mm: float = 50.0        # the rim's section from the frame
-    disc_gap_mm: float = 95.0        # between the rim's section and the disc's
-
-
-LAYOUT = FlywheelDesignLayout()
+def _diameter(name: str, x: float, cy: float, r: float, side: int, level: int, lay: FlywheelDesignLayout,
+              value_m: float) -> Dimension:
+    """A ⌀ dimension of radius ``r`` (mm on paper) on the ``side`` (−1 left, +1 right) of the contour at
+    ``x``, on the ``level``-th dimension line out: its value between its line and the next one out."""
+    off = lay.dim_first_mm + level * lay.dim_step_mm
+    a, b = (x, cy + r), (x, cy - r)                            # measured upwards: the line to the right
+    if side < 0:
+        a, b = b, a                                            # measured downwards: the line to the left
+    return Dimension(a, b, f"⌀{value_m * 1000:.0f}", offset_mm=off, size_mm=TEXT_MM, name=name)
 
 
-def _length(nt: Notation, v: float) -> str:
-    """A length in m written in mm, ``"750 mm"``."""
-    return f"{nt.number(v * 1000.0, sig=4)} {nt.unit('mm')}"
-
-
-def _rim_section(rim: Any, s_l: Scale, nt: Notation, xr: float, cy: float, top: float) -> list[Element]:
-    """The rim flywheel's axial section at ``xr`` about the axis ``cy``: rim, spokes, hub, dimensions."""
-    els: list[Element] = []
-    b = s_l.to_mm(rim.B)
-    r_out, r_in = s_l.to_mm(rim.D1) / 2, s_l.to_mm(rim.D2) / 2
-    els.append(Text((xr - 30.0, top - 4.0), nt.word("flywheel.rim"), size_mm=TEXT_MM + 0.4, bold=True,
-                    name="heading-rim"))
-    hub = max(0.12 * r_in, 3.0)
-    for sgn, key in ((-1, "upper"), (1, "lower")):
-        ya, yb = cy + sgn * r_in, cy + sgn * r_out
-        els.append(Region(_rect(xr, min(ya, yb), xr + b, max(ya, yb)), hatch_angle_deg=45.0, hatch_spacing_mm=2.0,
-                          name=f"rim-section-{key}"))
-        els.append(Line((xr, ya), (xr, yb), style=OUTLINE, name=f"rim-{key}-left"))
-        els.append(Line((xr + b, ya), (xr + b, yb), style=OUTLINE, name=f"rim-{key}-right"))
-        els.append(Line((xr, ya), (xr + b, ya), style=OUTLINE, name=f"rim-{key}-inner"))
-        els.append(Line((xr, yb), (xr + b, yb), style=OUTLINE, name=f"rim-{key}-outer"))
-        # a spoke and the hub (thin: neglected in J)
-        els.append(Line((xr + b / 2, cy + sgn * hub), (xr + b / 2, ya), style=THIN, name=f"spoke-{key}"))
-    els.append(Line((xr + b / 2 - 0.6 * b, cy - hub), (xr + b / 2 + 0.6 * b, cy - hub), style=THIN, name="hub-top"))
-    els.append(Line((xr + b / 2 - 0.6 * b, cy + hub), (xr + b / 2 + 0.6 * b, cy + hub), style=THIN, name="hub-bottom"))
-    els.append(Line((xr - 10.0, cy), (xr + b + 10.0, cy), style=AXIS, name="rim-axis"))
-    els.append(Dimension((xr, cy - r_out), (xr, cy + r_out), f"D_{{1}} = {_length(nt, rim.D1)}", offset_mm=12.0,
-                         size_mm=TEXT_MM, name="dim-rim-D1"))
-    r_m = s_l.to_mm(rim.D) / 2
-    els.append(Dimension((xr + b, cy + r_m), (xr + b, cy - r_m), f"D = {_length(nt, rim.D)}", offset_mm=42.0,
-                         size_mm=TEXT_MM, name="dim-rim-D"))
-    els.append(Dimension((xr, cy - r_out), (xr + b, cy - r_out), f"B = {_length(nt, rim.B)}", offset_mm=-6.0,
-                         size_mm=TEXT_MM, name="dim-rim-B"))
-    els.append(Dimension((xr + b, cy - r_in), (xr + b, cy - r_out), f"H = {_length(nt, rim.H)}", offset_mm=6.0,
-                         size_mm=TEXT_MM, name="dim-rim-H"))
-    return els
-
-
-def _disc_section(disc: Any, s_l: Scale, nt: Notation, xd: float, cy: float, top: float) -> list[Element]:
-    """The solid disc's axial section at ``xd`` about the axis ``cy``, dimensioned."""
-    els: list[Element] = []
-    bd = s_l.to_mm(disc.B)
-    rd = s_l.to_mm(disc.D) / 2
-    els.append(Text((xd - 10.0, top - 4.0), nt.word("flywheel.disc"), size_mm=TEXT_MM + 0.4, bold=True,
-                    name="heading-disc"))
-    els.append(Region(_rect(xd, cy - rd, xd + bd, cy + rd), hatch_angle_deg=45.0, hatch_spacing_mm=2.0,
-                      name="disc-section"))
-    for i, (p, q) in enumerate((((xd, cy - rd), (xd + bd, cy - rd)), ((xd + bd, cy - rd), (xd + bd, cy + rd)),
-                                ((xd + bd, cy + rd), (xd, cy + rd)), ((xd, cy + rd), (xd, cy - rd)))):
-        els.append(Line(p, q, style=OUTLINE, name=f"disc-edge-{i}"))
-    els.append(Line((xd - 10.0, cy), (xd + bd + 10.0, cy), style=AXIS, name="disc-axis"))
-    els.append(Dimension((xd + bd, cy + rd), (xd + bd, cy - rd), f"D = {_length(nt, disc.D)}", offset_mm=10.0,
-                         size_mm=TEXT_MM, name="dim-disc-D"))
-    els.append(Dimension((xd, cy - rd), (xd + bd, cy - rd), f"B = {_length(nt, disc.B)}", offset_mm=-6.0,
-                         size_mm=TEXT_MM, name="dim-disc-B"))
+def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, top: float, *,
+             name: str) -> list[Element]:
+    """One flywheel's axial section centred at ``xc`` on the axis ``cy``: the rim or the web, the hub, the
+    bore (empty), spokes unhatched; ⌀ dimensions left (outer) and right (hub, bore), widths above and below."""
+    lay = LAYOUT
+    hub = Hub.of(p.D, p.B)
+    mm = s_l.to_mm
+    b, L = mm(p.B), mm(hub.L)
+    r_bore, r_hub = mm(hub.d) / 2, mm(hub.d_hub) / 2
+    r_out = mm(_outer_D(p)) / 2
+    r_in = mm(p.D2) / 2 if kind == "rim" else r_hub
+    xl, xr = xc - b / 2, xc + b / 2                            # the rim's or the web's faces
+    hl, hr = xc - L / 2, xc + L / 2                            # the hub's faces
+    els: list[Element] = [Text((xc, top - 4.0), nt.word(f"flywheel.{kind}"), size_mm=TEXT_MM + 0.5, bold=True,
+                               anchor="middle", name=f"heading-{name}")]
+    for sgn, half in ((-1, "upper"), (1, "lower")):
+        y_in, y_out = cy + sgn * r_in, cy + sgn * r_out
+        y_bore, y_hub = cy + sgn * r_bore, cy + sgn * r_hub
+        outer = _rect(xl, min(y_in, y_out), xr, max(y_in, y_out))
+        els.append(Region(outer, hatch_angle_deg=45.0, hatch_spacing_mm=2.0,
+                          name=f"{'rim' if kind == 'rim' else 'disc'}-section-{half}"))
+        els.append(Region(_rect(hl, min(y_bore, y_hub), hr, max(y_bore, y_hub)), hatch_angle_deg=45.0,
+                          hatch_spacing_mm=2.0, name=f"{name}-hub-{half}"))
+        els += [Line(a, c, style=OUTLINE, name=f"{name}-{half}-{i}") for i, (a, c) in enumerate((
+            (outer[0], outer[1]), (outer[1], outer[2]), (outer[2], outer[3]), (outer[3], outer[0]),
+            ((hl, y_bore), (hr, y_bore)), ((hl, y_hub), (hr, y_hub)), ((hl, y_bore), (hl, y_hub)),
+            ((hr, y_bore), (hr, y_hub))))]
+        if kind == "rim":                                      # a spoke cut along its length: not hatched
+            w = 0.45 * b
+            els += [Line((xc - w / 2, y_hub), (xc - w / 2, y_in), style=OUTLINE, name=f"{name}-spoke-{half}-a"),
+                    Line((xc + w / 2, y_hub), (xc + w / 2, y_in), style=OUTLINE, name=f"{name}-spoke-{half}-b")]
+    reach = max(b, L) / 2 + 4.0
+    els.append(Line((xc - reach, cy), (xc + reach, cy), style=AXIS, name=f"{name}-axis"))
+    right = max(xr, hr)
+    els += [_diameter(f"dim-{name}-D1", xl, cy, r_out, -1, 1, lay, _outer_D(p))]
+    if kind == "rim":
+        els.append(_diameter(f"dim-{name}-D2", xl, cy, r_in, -1, 0, lay, p.D2))
+    els += [_diameter(f"dim-{name}-hub", right, cy, r_hub, 1, 1, lay, hub.d_hub),
+            _diameter(f"dim-{name}-bore", right, cy, r_bore, 1, 0, lay, hub.d)]
+    els.append(Dimension((xl, cy - r_out), (xr, cy - r_out), f"{p.B * 1000:.0f}", offset_mm=-7.0, size_mm=TEXT_MM,
+                         name=f"dim-{name}-B"))
+    els.append(Dimension((hl, cy + r_hub), (hr, cy + r_hub), f"{hub.L * 1000:.0f}",
+                         offset_mm=(cy + r_out - (cy + r_hub)) + 7.0, size_mm=TEXT_MM, name=f"dim-{name}-L"))
     return els
 
 
 def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     """The table: J, m, mD², D and B, ρ and the rim speed of each flywheel."""
     num = nt.number
-    kg, kgm2, ms, mm = nt.unit("kg"), nt.unit("kg·m²"), nt.unit("m/s"), nt.unit("mm")
-    head = ("", nt.word("flywheel.rim_short")) + ((nt.word("flywheel.disc_short"),) if len(parts) > 1 else ())
+    head = ("",) + tuple(nt.word("flywheel.rim_short" if hasattr(p, "H") else "flywheel.disc_short") for p in parts)
     rows: list[tuple[str, ...]] = [head]
 
     def row(label: str, f: Any) -> None:
         rows.append((label,) + tuple(f(p) for p in parts))
 
-    row(f"J, {kgm2}", lambda p: num(p.J, sig=5))
-    row(f"{nt.word('flywheel.mass')}, {kg}", lambda p: num(p.m, sig=4))
-    row(f"{nt.word('flywheel.moment')}, {kgm2}", lambda p: num(p.m * p.D**2, sig=4))
-    row(f"D, B, {mm}", lambda p: f"{num(p.D * 1000, sig=4)}, {num(p.B * 1000, sig=3)}")
-    row(f"ρ, {nt.unit('kg/m³')}", lambda p: num(p.rho, sig=4))
-    limit = nt.word("flywheel.limit")
-    row(f"{nt.word('flywheel.speed')}, {ms}",
-        lambda p: f"{num(p.rim_speed, sig=3)} ({limit} {num(p.speed_limit, sig=3)})")
+    row(nt.quantity("J", "kg·m²"), lambda p: num(p.J, sig=5))
+    row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=4))
+    row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=4))
+    row(nt.quantity("D, B", "mm"), lambda p: f"{num(p.D * 1000, sig=4)}, {num(p.B * 1000, sig=3)}")
+    row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=4))
+    row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=3))
+    row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=3))
     return tuple(rows)

@@ -3,6 +3,9 @@ coefficient of fluctuation [δ], over the range of the table of recommended [δ]
 (:mod:`graphmethods.dynamics.permissible_delta`), the chosen [δ] marked (domain.md §4, §6). A designer
 reads from it how fast a stricter [δ] makes the flywheel grow. A4 landscape.
 
+The abscissa is 1/[δ], so the hyperbola is drawn as the straight line it is in 1/[δ] and a machine's
+band of [δ] (1/200 … 1/300 for an AC generator) is a third of the axis, not 1.7 mm at its origin.
+
 >>> s = flywheel_hyperbola(575.0, omega_m=62.83185307179586, J_e=0.0, delta=1 / 300)
 >>> s.name, s.element("chosen").name
 ('flywheel-hyperbola', 'chosen')
@@ -31,7 +34,7 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
                        machine: str | None = None, notation: str = "en", page: Page | None = None,
                        mu_delta: float | None = None, mu_J: float | None = None, samples: int = 240,
                        title: str | None = None, problem: str = "") -> Scene:
-    """J_F against [δ], drawn to scales μ_δ (1/mm) and μ_J (kg·m²/mm), the chosen [δ] marked.
+    """J_F against 1/[δ], drawn to scales μ_{1/δ} (1/mm) and μ_J (kg·m²/mm), the chosen [δ] marked.
 
     Parameters
     ----------
@@ -46,7 +49,7 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
     machine : str, optional
         A row of the [δ] table: its range is drawn as a band on the δ axis.
     mu_delta, mu_J : float, optional
-        Scales (picked to fit when not given).
+        Scales of 1/[δ] (per mm) and of J_F (picked to fit when not given).
     samples : int
         Points of the curve (geometrically spaced in δ).
     """
@@ -63,45 +66,46 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
     if not J_hi > 0:
         raise InputError(f"J_F ≤ 0 over the whole range of [δ]: J_e = {J_e:g} kg·m² already keeps δ within "
                          f"1/{1 / lo:.4g}; no flywheel and no hyperbola to draw")
-    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.hyperbola_title"), problem=problem,
-                       title_block=True,
-                       default_page=Page("A4", "landscape", frame=True))
+    JF, wm, Je = nt.sym("dynamics.J_F"), nt.sym("dynamics.omega_m"), nt.sym("dynamics.J_e")
+    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.hyperbola_title", JF=JF),
+                       problem=problem, title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     px0, px1 = x0 + 30.0, x1 - 28.0
     py0, py1 = sheet.top + 14.0, sheet.caption_y - 24.0
-    s_d = given_scale(mu_delta, "μ_{δ}", "", hi, px1 - px0, what="the δ axis")
+    x_hi = 1.0 / lo                                    # the abscissa is 1/[δ]: the hyperbola drawn straight
+    s_d = given_scale(mu_delta, "μ_{1/δ}", "", x_hi, px1 - px0, what="the 1/[δ] axis")
     kgm2 = nt.unit("kg·m²")
     s_J = given_scale(mu_J, "μ_{J}", kgm2, J_hi - J_lo, py1 - py0, what="the J_F axis")
     origin = (px0, py0 + s_J.to_mm(J_hi))
 
     def at(d: float, j: float) -> tuple[float, float]:
-        return (origin[0] + s_d.to_mm(d), origin[1] - s_J.to_mm(j))
+        return (origin[0] + s_d.to_mm(1.0 / d), origin[1] - s_J.to_mm(j))
 
     num = nt.number
     els: list[Any] = [sheet.header()]
-    els.append(Axis(origin, s_d, "x", min_value=0.0, max_value=hi, ticks=nice_ticks(0.0, hi, s_d),
-                    label="[δ]", skip_zero_label=True, name="axis-delta"))
+    els.append(Axis(origin, s_d, "x", min_value=0.0, max_value=x_hi, ticks=nice_ticks(0.0, x_hi, s_d),
+                    label="1/[δ]", skip_zero_label=True, decimal=nt.decimal, name="axis-delta"))
     els.append(Axis(origin, s_J, "y", min_value=J_lo, max_value=J_hi, ticks=nice_ticks(J_lo, J_hi, s_J),
-                    label=nt.quantity("J_{F}", "kg·m²"), name="axis-J"))
+                    label=nt.quantity(JF, "kg·m²"), decimal=nt.decimal, name="axis-J"))
     els.append(Polyline(tuple(at(float(d), float(j)) for d, j in zip(deltas, J)), style=MAIN, name="hyperbola"))
     if row is not None:
-        els.append(Line(at(row.strict, 0.0), at(row.lenient, 0.0), style=BAND, name="machine-band"))
-        els.append(Text((at(row.strict, 0.0)[0], origin[1] + 9.0), f"{row.name(nt.code)}: {row.range_text()}",
+        els.append(Line(at(row.lenient, 0.0), at(row.strict, 0.0), style=BAND, name="machine-band"))
+        els.append(Text((at(row.lenient, 0.0)[0], origin[1] + 9.0), f"{row.name(nt.code)}{nt.colon}{row.range_text()}",
                         size_mm=SMALL_MM, name="machine-label"))
     if delta is not None:
         J_c = float(hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, deltas=[float(delta)])[0])
         p = at(float(delta), J_c)
         els.append(Line(at(float(delta), 0.0), p, style=DASHED, name="chosen-delta-line"))
-        els.append(Line(at(0.0, J_c), p, style=DASHED, name="chosen-J-line"))
-        els.append(Point(p, f"{nt.word('flywheel.chosen')}: [δ] = 1/{num(1 / float(delta), sig=4)}, J_{{F}} = "
-                            f"{num(J_c, sig=4)} {kgm2}", label_dir="e", radius_mm=0.9, size_mm=TEXT_MM,
+        els.append(Line((origin[0], p[1]), p, style=DASHED, name="chosen-J-line"))
+        els.append(Point(p, f"{nt.word('flywheel.chosen')}{nt.colon}[δ] = 1/{num(1 / float(delta), sig=4)}, {JF} = "
+                            f"{num(J_c, sig=4)} {kgm2}", label_dir="nw", radius_mm=0.9, size_mm=TEXT_MM,
                          name="chosen"))
     notes_y = sheet.caption_y - 16.0
-    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula") + ";  " + nt.word(
-        "flywheel.hyperbola_data", W=num(float(delta_W_max), sig=5), w=num(float(omega_m), sig=5),
-        J=num(float(J_e), sig=4)),
-        size_mm=TEXT_MM, name="formula"))
-    rng = nt.word("flywheel.hyperbola_range", a=f"{1 / hi:.4g}", b=f"{1 / lo:.4g}")
+    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula", JF=JF, wm=wm, Je=Je) + ";  " +
+                    nt.word("flywheel.hyperbola_data", W=num(float(delta_W_max), sig=5), w=num(float(omega_m), sig=5),
+                            J=num(float(J_e), sig=4), wm=wm, Je=Je),
+                    size_mm=TEXT_MM, name="formula"))
+    rng = nt.word("flywheel.hyperbola_range", a=num(1 / hi, sig=4), b=num(1 / lo, sig=4))
     els.append(Text((x0 + 4.0, notes_y + 5.0), rng,
                     size_mm=SMALL_MM, name="range-note"))
     els += sheet.captions((s_d, s_J))

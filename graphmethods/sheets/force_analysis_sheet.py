@@ -97,7 +97,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
              (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"])), "lever"),
              (force_plans(case, at_k, **kw, page=region_page(pg, boxes["plans"])), "plans")]
     groups = [inset(scene, nm) for scene, nm in parts]
-    tx, ty = boxes["result"][0] + 4.0, boxes["result"][1]
+    tx, ty = boxes["result"][0] + 4.0, boxes["result"][1] + (lettering(pg).heading_mm + 3.0 if "lever" in
+                                                             _left_of(boxes, "result") else 0.0)
     heading = Text((tx, ty + 4.0), nt.word("forces.sheet_result"), size_mm=size + 0.8, bold=True,
                    name="result-heading")
     table = Table((tx, ty + 8.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size, name="result")
@@ -106,6 +107,12 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
     return Scene(sheet.page(groups[0][1]), (sheet.header(), *(g for g, _ in groups), heading, table),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _left_of(boxes: dict[str, Box], name: str) -> list[str]:
+    """The parts whose boxes end left of ``name``'s on its first line (their headings may run into it)."""
+    b = boxes[name]
+    return [k for k, o in boxes.items() if k != name and o[2] <= b[0] and o[1] <= b[1] < o[3]]
 
 
 def _result_rows(fa: Any, i: int, nt: Any) -> list[tuple[str, str, str]]:

@@ -78,7 +78,7 @@ def _markup(label: str, nt: Notation | str | None = None) -> str:
     sub = m.group(3)
     if m.group(1) in ("F", "M") and not sup:
         words = get_notation(nt)
-        if sub[:1] == "i" and (len(sub) == 1 or sub[1:].isdigit()):
+        if sub[:1] == "i" and (len(sub) == 1 or (sub[1:].isdigit() and sub[1:].isascii())):
             sub = words.word("forces.sub_inertia") + sub[1:]
         elif sub == "b":
             sub = words.word("forces.sub_balance")
@@ -507,7 +507,8 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
-    names = [(at(z), p.lower() if len(p) == 1 else p[0].lower() + p[1:], f"image-{p}") for p, z in images.items()]
+    names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
+             for p, z in images.items()]
     els += _labels(occ, [(pole, "p", "label-pole"), *names, *vec_labels], L.within(area))
     els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.lever_legend"), name)
@@ -536,6 +537,9 @@ def _links_of(mo: Any, i: int) -> tuple[list[tuple[str, str]], list[tuple[str, c
             blocks.append((g.P, guide(g.links[1])))
         elif g.kind == "PRP":
             blocks += [(g.C, guide(ln)) for ln in g.links]
+        elif g.kind == "triad":                   # the basic link as a triangle, the three binary links
+            B1, B2, B3 = g.inner
+            segs += [(B1, B2), (B2, B3), (B1, B3), *zip(g.outer, g.inner)]
         else:
             segs.append((g.P, g.R))
             blocks.append((g.P, guide(g.links[0])))
@@ -704,7 +708,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
     occ = sheet.occ
     els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
-    labels: list[LabelSpec] = [(at(z[p]), p, f"point-{p}") for p in sorted(z)]
+    labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     segs, _blocks = _links_of(mo, i)
 
     pivots = [z[p] for p in mo.linkage.ground]
@@ -719,9 +723,12 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     labels += wanted
     cr = mo.linkage.crank
     # the labels keep off M_b's arc and its name
-    els.append(_drawn(occ, _moment_arc(at(z[cr.centre]), L.balance_mm, 110.0 if Mb > 0 else -110.0,
-                                       around(z[cr.centre]),
-                                       label=nt.sym("forces.M_b"), size_mm=SMALL_MM, name="M_b")))
+    centre = at(z[cr.centre])
+    els.append(_drawn(occ, _moment_arc(centre, L.balance_mm, 110.0 if Mb > 0 else -110.0, around(z[cr.centre]),
+                                       name="M_b")))
+    mid = math.radians(clear_direction(around(z[cr.centre])))     # its name placed as every label is
+    labels.append(((centre[0] + L.balance_mm * math.cos(mid), centre[1] - L.balance_mm * math.sin(mid)),
+                   nt.sym("forces.M_b"), "label-M_b"))
     els += _labels(occ, labels, L.within(area))
     els += column
     return _finish(sheet, els, (s_l, s_F), nt.word("forces.scheme_legend"), name)

@@ -61,9 +61,16 @@ def _translating_yokes(mech) -> list:
     return [g for g in getattr(lk, "groups", ()) if isinstance(g, RPP) and g.guide.link == "0"]
 
 
+def _plates(mech) -> tuple[tuple[str, str], ...]:
+    """The other two sides of each triad's basic (ternary) link, drawn as a triangle B1 B2 B3."""
+    lk = getattr(mech, "linkage", None)
+    return tuple(side for g in getattr(lk, "groups", ()) if getattr(g, "cls", 2) == 3
+                 for side in ((g.inner[1], g.inner[2]), (g.inner[0], g.inner[2])))
+
+
 def _parts(mech, pos) -> _Parts:
     fixed = tuple(mech.fixed_joints)
-    links = tuple(mech.link_joints.values())
+    links = tuple(mech.link_joints.values()) + _plates(mech)
     sliders = dict(mech.guides)
     pin = mech.crank_pin
     centre = next(x for x, y in links if y == pin)
@@ -324,7 +331,7 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
     dims: list[Element] = []
     if guide is not None and pos.H is not None and g.ext is not None:
         end_xy = g.ext_pos.coords[parts.output][0] if g.ext_pos is not None else pos.coords[parts.output][g.ext.same_as]
-        text = nt.word("kinematics.stroke", H=nt.number(pos.H, sig=4), u=nt.unit("m"))
+        text = nt.word("kinematics.stroke", H=nt.number(pos.H * 1000.0, sig=4), u=nt.unit("mm"))   # a dimension: mm
         dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
         dims.append(dim)
         occ.register(dim)

@@ -22,11 +22,12 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, TitleBlock, markup, notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, TitleBlock, markup, notation as get_notation
 from graphmethods.scene.elements import Axis, Element, label_bbox, make_label, place_label
 from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
+from graphmethods.scene.title_blocks import form_for
 from graphmethods.titles import text_in
 
 Box = tuple[float, float, float, float]
@@ -358,6 +359,51 @@ class Occupancy:
         return None
 
 
+#: the page sizes of a course sheet, whose main inscription follows the language's standard
+COURSE_SHEETS = ("A1", "A2")
+
+
+def course_title_block(tb: TitleBlock, nt) -> TitleBlock:
+    """The main inscription of an A1/A2 course sheet: ГОСТ 2.104 form 1 (ru), GB/T 10609.1 (zh), or the
+    simple block with the student's rows held free (en), all of a fixed height.
+
+    >>> from graphmethods.scene import TitleBlock
+    >>> course_title_block(TitleBlock("Dynamic analysis", "press"), "ru").form
+    'gost'
+    """
+    nt = get_notation(nt)
+    form = form_for(nt.code)
+    if form == "simple":
+        rows = tuple((nt.word(k), "") for k in ("title_block.student", "worksheets.group", "title_block.sheet"))
+        return replace(tb, person=rows)
+    return replace(tb, form=form, fields=(("designation", tb.problem),))
+
+
+def sign_sheet(scene: Scene, *, student: str = "", group: str = "", sheet_no: str = "", sheets: str = "") -> Scene:
+    """The sheet with the student's name, group and sheet number (of ``sheets``) in its main inscription.
+
+    >>> from graphmethods.scene import Page
+    >>> pg = standard_page(Page("A1", frame=True), title="T", problem="p", scales=(), nt="ru")
+    >>> s = sign_sheet(Scene(page=pg), student="Иванов И. И.", group="МТ-31", sheet_no="3", sheets="4")
+    >>> dict(s.page.title_block.fields)["student"], dict(s.page.title_block.fields)["organisation"]
+    ('Иванов И. И.', 'МТ-31')
+    """
+    tb = scene.page.title_block
+    if tb is None or not (student or group or sheet_no or sheets):
+        return scene
+    if tb.form == "simple":
+        given = {0: student, 1: group, 2: f"{sheet_no}/{sheets}" if sheets else sheet_no}
+        person = tuple((h, given.get(i, t) or t) for i, (h, t) in enumerate(tb.person)) or tuple(
+            (h, v) for h, v in zip(("Student", "Group", "Sheet"), given.values()) if v)
+        tb = replace(tb, person=person)
+    else:
+        fields = dict(tb.fields)
+        fields.update({k: v for k, v in (("student", student), ("organisation", group), ("sheet_no", sheet_no),
+                                         ("sheets", sheets)) if v})
+        tb = replace(tb, fields=tuple(fields.items()))
+    return replace(scene, page=scene.page.with_(title_block=tb))
+
+
 def standard_page(page: Page | None, *, title: str, problem, scales: tuple[str, ...], nt,
                   title_block: bool = True) -> Page:
     """The page of a sheet: A4 landscape with a frame and a title block unless ``page`` is given.
@@ -369,6 +415,8 @@ def standard_page(page: Page | None, *, title: str, problem, scales: tuple[str, 
     nt = get_notation(nt)
     tb = TitleBlock(title, text_in(problem, nt.code), scales,
                     headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")))
+    if page is not None and page.size in COURSE_SHEETS:
+        tb = course_title_block(tb, nt)
     if page is None:
         return Page("A4", "landscape", frame=True, title_block=tb if title_block else None)
     if page.title_block is None and title_block:

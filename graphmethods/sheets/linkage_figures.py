@@ -178,8 +178,8 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
     from graphmethods.scene.elements import label_bbox, place_label
 
     dirs = tuple(dirs) if dirs else _dirs(prefer_deg)
-    lab = None
-    for gap in gaps:                # near the point across a thin line rather than far from it
+    lab = _first_clear(occ, hard, at, text, dirs, gaps, size_mm, within, leaders, name) if avoid_lines else None
+    for gap in (gaps if lab is None else ()):     # crowded: near the point across a thin line
         cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
         boxes = [label_bbox(c) for c in cands]
         ok = _free_of(occ, hard, boxes, within=within, lines=False)
@@ -214,6 +214,32 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
         lab = place_label(at, text, dirs[0], gap_mm=gaps[0], size_mm=size_mm)
     occ.add_label(lab)
     return Text((lab.x, lab.y), text, size_mm=size_mm, anchor=lab.anchor, name=name)
+
+
+def _first_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, dirs, gaps, size_mm: float, within,
+                 leaders: list | None, name: str):
+    """The first place free of every line and label: beside the point (the directions at each gap), then
+    further out with a leader line back to it (when ``leaders`` collects them); None when there is none."""
+    from graphmethods.scene.elements import label_bbox, place_label
+
+    far = (gaps[-1] + 2.5, gaps[-1] + 5.0, gaps[-1] + 8.0) if leaders is not None else ()
+    for gap in (*gaps, *far):
+        cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
+        ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=True)
+        if not ok.any():
+            continue
+        lab = cands[int(np.argmax(ok))]
+        if gap > gaps[-1] and leaders is not None:
+            b = label_bbox(lab)
+            near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
+            dd = np.asarray(near) - np.asarray(at)
+            L = float(np.hypot(*dd))
+            if L > 1.5:
+                start = tuple((np.asarray(at) + dd / L * 0.9).tolist())
+                leaders.append(Line(start, near, style=THIN, name=f"leader-{name}"))
+                occ.add_line((start, near))
+        return lab
+    return None
 
 
 def _crossings(occ: Occupancy, boxes) -> np.ndarray:

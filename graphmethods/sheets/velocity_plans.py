@@ -15,6 +15,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Frame, Line, Point, Polyline, Scale, Scene, Table, Text, markup, notation as get_notation
 from graphmethods.scene.elements import Element
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.sheets.linkage_figures import (
@@ -314,6 +315,9 @@ def _omega_texts(plans, k: int, nt) -> list[str]:
             continue
         L = float(np.hypot(*(pos.coords[y][k] - pos.coords[x][k])))
         num_sym = f"v_{{{y}}}" if x in mech.fixed_joints else f"v_{{{_rel_name(mech, y, x)}}}"
+        if within_roundoff(w, plans.omega_1):           # the link stands still in this position
+            out.append(nt.zero(f"ω_{{{num}}}", num_sym))
+            continue
         out.append(f"ω_{{{num}}} = {num_sym}/l_{{{link}}} = {nt.number(abs(w) * L, sig=4)}/{nt.number(L, sig=4)} = "
                    f"{nt.number(abs(w), sig=4)} {nt.unit('rad/s')}, {_sense_word(nt, w)}")
     return out

@@ -33,12 +33,10 @@ The construction itself (support lines, tangencies, the error estimate) is
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import numpy as np
 
-from graphmethods.dynamics.study import Study
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
 from graphmethods.scene import (
@@ -55,34 +53,22 @@ from graphmethods.scene import (
     markup,
     nice_ticks,
     notation as get_notation,
-    pick_scale,
 )
-from graphmethods.scene.elements import Element, label_bbox, make_label
+from graphmethods.scene.elements import Element, label_bbox
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Label, Style
 from graphmethods.sheets.dynamics import (
     SMALL_MM,
     TEXT_MM,
-    TWO_PI,
-    CurveSpec,
-    DrawnMoments,
     as_study,
     axis_break,
-    delta_T_curve,
-    drawn_moments,
-    fine_angles,
-    given_angle_scale,
     given_scale,
-    inertia_curve,
-    phi_graph_elements,
+    inertia_ticks,
     problem_text,
-    suppressed_base,
-    turned_inertia_elements,
     value_text,
 )
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
-from graphmethods.sheets.layout import Box, Occupancy, clear_tick_labels
-from graphmethods.sheets.styles import PROJECTION
+from graphmethods.sheets.layout import Box, clear_tick_labels
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -117,9 +103,12 @@ class DiagramData:
             res = replace(res, error_estimate=self.estimate.error_estimate, error_method=self.estimate.error_method)
         return res
 
-    def extent(self) -> tuple[float, float, float]:
-        """(J_to, T_hi, T_lo): the abscissa's reach (kg·m²) and the ordinate's range (J), k and l included."""
+    def extent(self, J_0: float = 0.0) -> tuple[float, float, float]:
+        """(J_to, T_hi, T_lo): the abscissa's reach (kg·m²) and the ordinate's range (J), k and l included
+        where the ordinate axis stands (J_e = ``J_0``, kg·m²): an axis runs to its data, not further."""
         unit_res = self.result(1.0, 1.0)
+        if J_0 > 0.0:
+            unit_res = offset_origin(unit_res, J_0)
         T_hi = max(float(self.delta_T.max()), unit_res.k_mm, unit_res.l_mm, 0.0)
         T_lo = min(float(self.delta_T.min()), unit_res.k_mm, unit_res.l_mm, 0.0)
         return float(self.J_e.max()), T_hi, T_lo
@@ -343,7 +332,7 @@ class _DiagramPlace:
         s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
         X, Y = np.asarray(res.x_mm, dtype=float), np.asarray(res.y_mm, dtype=float)
         ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
-        ticks_J = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=14.0) if J_from <= t <= J_to)
+        ticks_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=14.0)[0]
         R = lay.psi_radius_mm
         right = float(X[:-1].min()) >= R + lay.psi_room_mm
         tick_w = max((markup.text_width_mm(nt.number(t), SMALL_MM) for t in ticks_T), default=0.0)
@@ -369,8 +358,9 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
                 label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal,
                 skip_zero_label=True, name=f"{d.prefix}axis-T")
     below = float(np.mean(d.Y[:-1] < 0)) > 0.5
+    _, labels_J, name_J = inertia_ticks(d.J_from, d.J_to, s_J, nt, min_gap_mm=14.0)
     ax_J = Axis((ox - s_J.to_mm(d.J_from), oy), s_J, "x", min_value=d.J_from, max_value=d.J_to, ticks=d.ticks_J,
-                label=nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), size_mm=SMALL_MM, decimal=nt.decimal,
+                tick_labels=labels_J, label=name_J, size_mm=SMALL_MM, decimal=nt.decimal,
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{d.prefix}axis-J")
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
@@ -517,8 +507,8 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
         err = nt.word("wittenbauer.none")
     else:
         err = f"+{value_text(nt, res.error_estimate, 'kg·m²', sig=3)}".replace("+−", "−")
-    O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}"
-    O1_word = nt.word("wittenbauer.O1_on") if on_sheet else nt.word("wittenbauer.O1")
+    O1_word = nt.word("wittenbauer.O1_on")           # drawn: its place; else said as a textbook says it
+    O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}" if on_sheet else nt.word("wittenbauer.O1_off")
     tg = "tg" if nt.code == "ru" else "tan"
     psi_max, psi_min = nt.sym("dynamics.psi_max"), nt.sym("dynamics.psi_min")
     tg_max = f"{tg} {psi_max} = {n(res.tan_psi_max)}, {psi_max} = {n(math.degrees(res.psi_max))}°"
@@ -659,331 +649,8 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
 
 
-# ----------------------------------------------------------------------------- 2. the A1 / A2 sheet
-
-def _sheet_page(page) -> Page:
-    if isinstance(page, Page):
-        return page
-    size = str(page).upper()
-    if size not in ("A1", "A2", "A3"):
-        raise InputError(f"page {page!r}: the dynamic-analysis sheet is drawn on A1 or A2 (or A3, tight)")
-    return Page(size, "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True)
-
-
-def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None, mu_phi=None,
-                           tangents: str = "exact", notation="en", title=None, title_block: bool = True,
-                           name: str = "dynamic-analysis") -> Scene:
-    """The dynamic-analysis sheet of a course project: flywheel by the Wittenbauer method, on A1 or A2.
-
-    Left: the reduced moments M_d, M_r(φ) above ΔT(φ) (one φ scale, positions aligned).
-    Right: J_e(φ) turned 90° above the energy–mass diagram, sharing its J_e scale; ΔT levels
-    are projected horizontally from the ΔT graph and J_e values vertically from the turned
-    graph, meeting at the numbered points of the curve. μ_J is picked for the diagram: its
-    J axis (0…J_e max, so that k and l lie on the ordinate axis) over the width left between the
-    graphs and the result table. Both rays run inside the diagram's own frame, from the
-    ordinate axis (k, l) to just past the curve, with ψ_max and ψ_min marked; k, l and kl are
-    dimensioned; the result table gives δ, ω_m, the scales, kl, J_F, the positions of ω_max and
-    ω_min, the error estimate and O1 (named off the sheet unless it falls in the frame).
-
-    Only the positions, velocity plans, J_e, M_r and ΔT at the m positions are computed
-    (never the exact motion).
-
-    Parameters
-    ----------
-    study : Study or Case
-    page : {"A1", "A2"} or Page
-        Landscape with a frame and a title block.
-    mu_J, mu_T, mu_M, mu_phi : float or Scale, optional
-        Scales (kg·m²/mm, J/mm, N·m/mm, rad/mm); picked to fill the sheet when not given.
-    tangents : {"exact", "textbook"}
-
-    Examples
-    --------
-    >>> import pathlib
-    >>> from graphmethods.dynamics.study import Study
-    >>> from graphmethods.kinematics import read_case
-    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
-    >>> s = dynamic_analysis_sheet(st, page="A2")
-    >>> (s.page.size, s.page.orientation), "exact" in st.computed
-    (('A2', 'landscape'), False)
-    """
-    study = as_study(study)
-    nt = get_notation(notation)
-    sheet = SheetFrame(nt=nt, page=None, title=title or nt.word("wittenbauer.dynamic_analysis"),
-                       problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
-    content = _sheet_content(study, nt, tangents)
-    lay = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi)
-    res = lay.result(content)
-    occ = sheet.occ
-    proj = _projection_lines(content, lay, res)          # the thinnest, under everything
-    occ.register(*proj)
-    diag, turned, M_els, T_els = _sheet_graphs(sheet, content, lay, res, nt)
-    O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
-    rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, content.moments, lay.s_M, lay.s_phi),
-                                 on_sheet=O1_drawn, J_0=lay.J_0))
-    w = _table(rows, (0, 0)).width_mm
-    x1 = sheet.box[2]
-    cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
-    table = _place_table(occ, rows, cands)
-    occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
-    heads = _sheet_headings(sheet, content, lay, nt)
-    table_head = Text((table.at[0], table.at[1] - 2.0), nt.word("wittenbauer.result"), size_mm=TEXT_MM + 0.8,
-                      bold=True, name="heading-result")
-    scales = (lay.s_phi, lay.s_M, lay.s_T, lay.s_J)
-    elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
-                + sheet.captions(scales))
-    J_0 = lay.J_0
-    notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
-        f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm" + (f" and J_0 = {J_0:g} kg·m²" if J_0 else ""),)
-    return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
-
-
-@dataclass(frozen=True)
-class DynamicSheetLayout:
-    """The millimetre constants of the A1/A2 dynamic-analysis sheet (see :func:`dynamic_analysis_sheet`)."""
-
-    graphs_left_mm: float = 22.0          # the φ graphs' ordinate axes from the frame
-    turned_axis_mm: float = 14.0          # the turned J_e graph's J axis below the top of the drawing
-    diagram_bottom_mm: float = 10.0       # the diagram's lowest level above the captions
-    under_turned_mm: float = 22.0         # under the turned graph's φ axis: arrow, name, gap
-    min_diagram_mm: float = 40.0          # the least height of the diagram
-    graphs_share: float = 0.36            # the longest φ axis, as a share of the sheet's width
-    M_below_mm: float = 10.0              # the M graph's φ axis above the level of the turned graph's end
-    M_top_mm: float = 16.0                # the M graph's top below the top of the drawing
-    graphs_gap_mm: float = 12.0           # right of the φ graphs
-    diagram_gap_mm: float = 40.0          # between the φ graphs and the diagram's ordinate axis
-    table_gap_mm: float = 12.0            # between the J axis's name and the result table
-    J_name_extra_mm: float = 10.0         # beside the J axis's name
-    heading_mm: float = TEXT_MM + 0.8     # the size of the headings over the parts
-
-
-LAYOUT = DynamicSheetLayout()
-
-
-@dataclass(frozen=True)
-class SheetContent:
-    """What the sheet draws, in physical units: the positions, the fine curves, the drawn moments."""
-
-    data: DiagramData
-    phi: np.ndarray                       # fine angles, rad
-    J_fine: np.ndarray                    # J_e at them, kg·m²
-    dT_fine: np.ndarray                   # ΔT at them, J
-    moments: DrawnMoments
-    J_lo: float
-    J_to: float
-    T_lo: float
-    T_hi: float
-
-
-def _sheet_content(study: Study, nt: Notation, tangents: str) -> SheetContent:
-    """Positions, velocity plans, J_e, M_r and ΔT at the m positions and between them (never the exact motion)."""
-    data = diagram_data(study, tangents=tangents, notation=nt)
-    phi = fine_angles(study.m)
-    J_fine = inertia_curve(study, phi).J_e
-    dT_fine = delta_T_curve(study, phi)
-    _, T_hi, T_lo = data.extent()
-    return SheetContent(data, phi, J_fine, dT_fine, drawn_moments(study, nt),
-                        J_lo=float(min(data.J_e.min(), J_fine.min())), J_to=float(max(data.J_e.max(), J_fine.max())),
-                        T_lo=min(T_lo, float(dT_fine.min())), T_hi=max(T_hi, float(dT_fine.max())))
-
-
-@dataclass(frozen=True)
-class SheetPlacement:
-    """The scales of the sheet and where its parts stand (page mm)."""
-
-    s_phi: Scale
-    s_M: Scale
-    s_T: Scale
-    s_J: Scale
-    J_0: float          # where the J axes start, kg·m² (0, or a suppressed zero)
-    x_L: float          # the φ graphs' ordinate axes
-    x_a: float          # the diagram's ordinate axis (and the turned graph's φ axis)
-    y_Jt: float         # the turned graph's J axis
-    y_M0: float         # the M graph's φ axis
-    y0_T: float         # the level ΔT = 0 (the ΔT graph's φ axis and the diagram's J axis)
-    d_top: float        # the diagram's top
-
-    def result(self, content: SheetContent) -> WittenbauerResult:
-        """The construction at these scales, with its ordinate axis at J_0."""
-        res = content.data.result(self.s_J.per_mm, self.s_T.per_mm)
-        return offset_origin(res, self.J_0) if self.J_0 > 0.0 else res
-
-
-def _phi_scale(sheet: SheetFrame, content: SheetContent, nt: Notation, mu_phi: object, mu_T: object,
-               diagram_room: Callable[[float], float], lay: DynamicSheetLayout = LAYOUT) -> Scale:
-    """μ_φ: given, or the one that leaves the diagram largest, then draws the graphs largest."""
-    W = sheet.box[2] - sheet.box[0]
-    T_span = content.T_hi - content.T_lo
-    if mu_phi is not None:
-        return given_angle_scale(mu_phi, nt.sym("mu_phi"), TWO_PI,
-                                 min(diagram_room(0.0) - lay.min_diagram_mm, lay.graphs_share * W))
-    best = None
-    for c in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 10.0):
-        L = 360.0 / c
-        room = diagram_room(L)
-        if L > lay.graphs_share * W or room < lay.min_diagram_mm:
-            continue
-        tall = T_span / (pick_scale(T_span, room).per_mm if mu_T is None else
-                         (mu_T.per_mm if isinstance(mu_T, Scale) else float(mu_T)))  # type: ignore[arg-type]
-        if best is None or tall * L > best[0] * (1 + 1e-9):     # the diagram's height × the graphs' length
-            best = (tall * L, c)
-    if best is None:
-        raise InputError(f"the sheet {sheet.probe.size} is too small for the dynamic-analysis layout; "
-                         f"use A1 or A2")
-    return Scale(nt.sym("mu_phi"), "rad", math.radians(best[1]), alt_per_mm=best[1], alt_unit="°",
-                 note=f"picked: {best[1]:g}°/mm draws the graphs and the energy–mass diagram largest together")
-
-
-def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, mu_J: object, mu_T: object,
-                     mu_M: object, mu_phi: object, lay: DynamicSheetLayout = LAYOUT) -> SheetPlacement:
-    """The scales and the places of the parts: [M graph | turned J_e graph] over [ΔT graph | diagram].
-
-    μ_J fits the diagram's content to the width beside the graphs: 0…J_e max, or, for a J_e that
-    varies little about a large mean, J_0…J_e max from a round J_0 below J_e min (a suppressed
-    zero); the rays keep their true slopes and are clipped to the diagram's own frame.
-    """
-    x0, _, x1, _ = sheet.box
-    y_Jt = sheet.top + lay.turned_axis_mm
-    d_bottom = sheet.caption_y - lay.diagram_bottom_mm
-
-    def diagram_room(L_phi: float) -> float:
-        return d_bottom - (y_Jt + L_phi + lay.under_turned_mm)
-
-    s_phi = _phi_scale(sheet, content, nt, mu_phi, mu_T, diagram_room, lay)
-    L_phi = s_phi.to_mm(TWO_PI)
-    d_top = y_Jt + L_phi + lay.under_turned_mm
-    s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), content.T_hi - content.T_lo, d_bottom - d_top,
-                      what="the ΔT axis")
-    dm = content.moments
-    s_M = given_scale(mu_M, nt.sym("mu_M"), nt.unit("N·m"), dm.hi - dm.lo,
-                      y_Jt + L_phi - lay.M_below_mm - (sheet.top + lay.M_top_mm), what="the moment graph")
-    x_L = x0 + lay.graphs_left_mm
-    left_end = x_L + L_phi + lay.graphs_gap_mm
-    probe_rows = wide_rows(result_rows(content.data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi),
-                                       J_0=1.0 if _suppressed_zero(content.J_lo, content.J_to) else 0.0))
-    table_w = _table(probe_rows, (0, 0)).width_mm
-    J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"), SMALL_MM + 0.5) + \
-        lay.J_name_extra_mm
-    room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
-    s_J, J_0 = _inertia_scale(mu_J, nt, content.J_lo, content.J_to, room_J)
-    # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
-    x_a_min = left_end + lay.diagram_gap_mm
-    x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
-    return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=max(x_a_min, (x_a_min + x_a_max) / 2), y_Jt=y_Jt,
-                          y_M0=y_Jt + L_phi - lay.M_below_mm - s_M.to_mm(-dm.lo), y0_T=d_top + s_T.to_mm(content.T_hi),
-                          d_top=d_top)
-
-
-def _projection_lines(content: SheetContent, lay: SheetPlacement, res: WittenbauerResult) -> list[Element]:
-    """ΔT levels projected across from the ΔT graph, J_e values down from the turned graph, to the curve."""
-    J_k, dT_k, phi_k = content.data.J_e, content.data.delta_T, content.data.phi
-    s_phi, s_T, s_J = lay.s_phi, lay.s_T, lay.s_J
-    proj: list[Element] = []
-    m = len(phi_k) - 1
-    for k in range(0, m, max(1, math.ceil(m / 36))):        # every position (every n-th when m is large)
-        at_T = (lay.x_L + s_phi.to_mm(float(phi_k[k] - phi_k[0])), lay.y0_T - s_T.to_mm(float(dT_k[k])))
-        at_D = (lay.x_a + float(res.x_mm[k]), lay.y0_T - float(res.y_mm[k]))
-        at_J = (lay.x_a + s_J.to_mm(float(J_k[k]) - lay.J_0), lay.y_Jt + s_phi.to_mm(float(phi_k[k] - phi_k[0])))
-        proj.append(Line(at_T, at_D, style=PROJECTION, name=f"projection-T-{k}"))
-        proj.append(Line(at_J, at_D, style=PROJECTION, name=f"projection-J-{k}"))
-    return proj
-
-
-def _sheet_graphs(sheet: SheetFrame, content: SheetContent, lay: SheetPlacement, res: WittenbauerResult,
-                  nt: Notation) -> tuple[list[Element], list[Element], list[Element], list[Element]]:
-    """The diagram (first: its rays and labels take precedence), the turned J_e graph, the M and ΔT graphs."""
-    occ = sheet.occ
-    x0 = sheet.box[0]
-    clip = sheet.probe.inner_box()
-    avoid: tuple[tuple[float, float, float, float], ...] = ()
-    if sheet.probe.title_block is not None:
-        tb = sheet.probe.title_block.table(clip[2], clip[3])
-        avoid = ((x0 - 20.0, tb.at[1], clip[2], clip[3]),)
-    data, dm, m = content.data, content.moments, len(content.data.phi) - 1
-    phi_k = data.phi
-    diag = diagram_elements(res, origin=(lay.x_a, lay.y0_T), nt=nt, occ=occ, clip=clip, avoid=avoid,
-                            J_to=content.J_to, T_hi=content.T_hi, T_lo=content.T_lo, within=sheet.box, prefix="D-",
-                            y_top_mm=lay.s_T.to_mm(content.T_hi) + 4.0, own_frame=True, J_from=lay.J_0)
-    turned = turned_inertia_elements(origin=(lay.x_a, lay.y_Jt), s_J=lay.s_J, s_phi=lay.s_phi, m=m, phi=content.phi,
-                                     J=content.J_fine, phi_k=phi_k, J_k=data.J_e, nt=nt, occ=occ, J_to=content.J_to,
-                                     prefix="J-", within=sheet.box, J_from=lay.J_0)
-    within_left = (x0, sheet.top, lay.x_a - 10.0, sheet.caption_y - 6.0)
-    M_els = phi_graph_elements(origin=(lay.x_L, lay.y_M0), s_phi=lay.s_phi, s_Y=lay.s_M, m=m, phi_k=phi_k,
-                               curves=list(dm.curves), nt=nt, occ=occ, y_from=dm.lo, y_to=dm.hi, axis_level=0.0,
-                               y_label=nt.quantity(nt.sym("M"), "N·m"), dots=dm.dots, prefix="M-",
-                               within=within_left)
-    dT = content.dT_fine
-    T_els = phi_graph_elements(origin=(lay.x_L, lay.y0_T), s_phi=lay.s_phi, s_Y=lay.s_T, m=m, phi_k=phi_k,
-                               curves=[CurveSpec("dT", content.phi, dT, MAIN, "")], nt=nt, occ=occ,
-                               y_from=min(float(dT.min()), 0.0), y_to=max(float(dT.max()), 0.0),
-                               axis_level=0.0, y_label=nt.quantity(nt.sym("dynamics.dT"), "J"),
-                               dots=(phi_k, data.delta_T), prefix="T-", within=within_left)
-    return diag, turned, M_els, T_els
-
-
-def _sheet_headings(sheet: SheetFrame, content: SheetContent, lay: SheetPlacement, nt: Notation,
-                    size: float = LAYOUT.heading_mm) -> list[Element]:
-    """Small bold headings over the four parts, each moved to the nearest place where it covers nothing."""
-    occ = sheet.occ
-    heads: list[Element] = []
-    M_hi, dT_hi = content.moments.hi, max(float(content.dT_fine.max()), 0.0)
-    for key, text, at in (("M", f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}(φ)",
-                           (lay.x_L + 10.0, lay.y_M0 - lay.s_M.to_mm(M_hi) - 8.0)),
-                          ("T", f"{nt.word('dynamics.delta_T_graph')} {nt.sym('dynamics.dT')}(φ)",
-                           (lay.x_L + 10.0, lay.y0_T - lay.s_T.to_mm(dT_hi) - 12.0)),
-                          ("J", f"{nt.word('wittenbauer.inertia_turned')} {nt.sym('dynamics.J_e')}(φ)",
-                           (lay.x_a + 10.0, lay.y_Jt - 9.0)),
-                          ("D", nt.word("wittenbauer.wittenbauer"), (lay.x_a + 12.0, lay.d_top - 6.0))):
-        lab = _free_heading(occ, at, text, size, sheet.box)
-        occ.add_box(bold_bbox(lab))
-        heads.append(Text((lab.x, lab.y), text, size_mm=size, bold=True, name=f"heading-{key}"))
-    return heads
-
-
-def _free_heading(occ: Occupancy, at: tuple[float, float], text: str, size: float,
-                  within: tuple[float, float, float, float]) -> Label:
-    """A bold label near ``at`` free of everything; else of texts and boxes (thin lines may cross it)."""
-    for lines in (True, False):
-        for dx in (0.0, -10.0, -20.0, -40.0, -60.0, -80.0, -100.0, 10.0, 20.0, 40.0):
-            for dy in (0.0, -4.0, 4.0, -8.0, 8.0, -12.0, 12.0):
-                trial = make_label((at[0] + dx, at[1] + dy), text, size_mm=size, bold=True)
-                if occ.is_free(bold_bbox(trial), within=within, lines=lines):
-                    return trial
-    return make_label(at, text, size_mm=size, bold=True)
-
-
-def _suppressed_zero(J_lo: float, J_hi: float) -> bool:
-    """Does the J axis start near J_e,min? When J_e varies by less than 35 % of its largest value."""
-    return J_lo > 0.0 and J_hi - J_lo < 0.35 * J_hi
-
-
-def _inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[Scale, float]:
-    """μ_J of the A1 sheet's diagram and where its J axis starts (0, or a suppressed zero J_0 > 0).
-
-    A J_e that varies by less than 35 % of its largest value (the rule of the φ graphs) gets its
-    axis from a round value below J_e,min, so the curve fills the width ``room_mm``; 20 mm and
-    2 % of it are kept for the step down to that value.
-
-    >>> from graphmethods.scene import notation
-    >>> s, J_0 = _inertia_scale(None, notation("en"), 0.0542, 0.0682, 200.0)
-    >>> s.per_mm, J_0, s.to_mm(0.0682 - J_0) <= 200.0
-    (0.0001, 0.053, True)
-    """
-    symbol, unit = nt.sym("dynamics.mu_J"), nt.unit("kg·m²")
-    if not _suppressed_zero(J_lo, J_hi):
-        return given_scale(mu_J, symbol, unit, J_hi, room_mm, what="the J_e axis"), 0.0
-    s_J = given_scale(mu_J, symbol, unit, J_hi - J_lo, 0.98 * room_mm - 20.0, what="the J_e axis")
-    return s_J, suppressed_base(J_lo, J_hi, s_J, zero=False)
-
-
-def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:
-    n = get_notation(nt).number
-    mm = get_notation(nt).unit("mm")
-    k = dm.constant_key
-    return ((nt.word(f"wittenbauer.{k}"), f"{nt.sym(k)} = {value_text(nt, dm.constant, 'N·m')}"),
-            (nt.word("wittenbauer.scale_M"), f"{nt.sym('mu_M')} = {n(s_M.per_mm)} {nt.unit('N·m')}/{mm}"),
-            (nt.word("wittenbauer.scale_phi"), f"{nt.sym('mu_phi')} = {n(s_phi.per_mm)} {nt.unit('rad')}/{mm}"))
-
+# split out of this module, imported here so that every name reads as before: dynamic_analysis_sheet.py
+from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet  # noqa: E402
 
 __all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
            "ray_span", "result_rows"]

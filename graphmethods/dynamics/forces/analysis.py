@@ -30,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.dynamics.forces import prp, rpp, rpr, rrp, rrr
+from graphmethods.dynamics.forces import prp, rpp, rpr, rrp, rrr, triad
 from graphmethods.dynamics.forces.base import (
     GROUND,
     Cx,
@@ -54,7 +54,7 @@ G_STANDARD = 9.81
 
 #: group kind -> its force solver (a new dyad type: one module with ``solve``, one line here)
 SOLVERS: dict[str, Callable[..., GroupForces]] = {
-    "RRR": rrr.solve, "RRP": rrp.solve, "RPR": rpr.solve, "PRP": prp.solve, "RPP": rpp.solve}
+    "RRR": rrr.solve, "RRP": rrp.solve, "RPR": rpr.solve, "PRP": prp.solve, "RPP": rpp.solve, "triad": triad.solve}
 
 
 @dataclass(frozen=True)
@@ -173,7 +173,10 @@ def _carriers(lk: Any) -> tuple[dict[str, str], dict[str, tuple[str, str]]]:
     for p in lk.points:
         one[p.name] = p.link
     for g in lk.groups:
-        if g.kind in ("RPR", "RPP"):
+        if g.kind == "triad":
+            for k, b in zip(g.links[1:], g.inner):
+                two[b] = (k, g.links[0])
+        elif g.kind in ("RPR", "RPP"):
             one[g.coincident] = g.links[1]
             if g.kind == "RPP":
                 one[g.R] = g.links[1]
@@ -187,6 +190,10 @@ def _rigid_refs(lk: Any) -> dict[str, tuple[str, str | None]]:
     power) and a second one (None: along the link's own direction, 0.1 m) for a couple's forces."""
     refs: dict[str, tuple[str, str | None]] = {lk.crank.link: (lk.crank.centre, lk.crank.pin)}
     for g in lk.groups:
+        if g.kind == "triad":
+            refs[g.links[0]] = (g.inner[0], g.inner[1])
+            refs.update({k: (p, b) for k, p, b in zip(g.links[1:], g.outer, g.inner)})
+            continue
         l2, l3 = g.links
         if g.kind == "RRR":
             refs[l2], refs[l3] = (g.P, g.C), (g.Q, g.C)

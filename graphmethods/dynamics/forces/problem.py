@@ -86,6 +86,24 @@ def working_load(case: Any, motion: Any, positions: Any) -> list[tuple[str, Forc
     return [(link, Force(f"F_c{link}", np.asarray(F, dtype=complex), at, np.zeros(n)))]
 
 
+#: label prefixes of the external loads (the working load, the drawn form's loads) among a link's forces
+EXTERNAL = ("F_c", "M_c", "F_e", "M_e")
+
+
+def drawn_loads(info: Any, motion: Any) -> list[tuple[str, Force]]:
+    """The constant loads of a drawn file (:class:`graphmethods.kinematics.drawn.DrawnLoad`) as (link, Force):
+    a force at its point of the link, or a moment (drawn at a point of the link)."""
+    n = motion.n
+    out = []
+    for i, ld in enumerate(info.loads):
+        at = np.asarray(motion.z[ld.at or motion.linkage.crank.centre], dtype=complex)
+        if ld.kind == "force":
+            out.append((ld.link, Force(f"F_e{i + 1}", np.full(n, ld.F, dtype=complex), at, np.zeros(n))))
+        else:
+            out.append((ld.link, Force(f"M_e{i + 1}", np.zeros(n, dtype=complex), at, np.full(n, ld.M))))
+    return out
+
+
 def case_forces(case: Any, *, phi_deg: Sequence[float] | None = None, m: int | None = None,
                 omega_1: float | None = None, epsilon_1: float = 0.0, gravity: bool = False) -> ForceAnalysis:
     """The force analysis of a problem file at crank angles ``phi_deg`` (degrees from +x) or at the
@@ -101,5 +119,8 @@ def case_forces(case: Any, *, phi_deg: Sequence[float] | None = None, m: int | N
         positions = case.mechanism.positions(m=12 if m is None else m)
     masses = [Mass(link_number(case, it.link, it.point), it.point, float(it.m), float(it.J))
               for it in case.inertias]
-    loads = working_load(case, motion, positions)
+    info = getattr(case, "drawn", None)
+    loads = working_load(case, motion, positions) if info is None or "load" in case.__dict__ else []
+    if info is not None:
+        loads += drawn_loads(info, motion)
     return kinetostatics(motion, masses=masses, loads=loads, gravity=G_STANDARD if gravity else 0.0)

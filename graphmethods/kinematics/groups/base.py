@@ -23,7 +23,7 @@ import functools
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import Any, TypedDict, cast
+from typing import Any, ClassVar, TypedDict, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -87,6 +87,42 @@ class Sliding(TypedDict, total=False):
     a_guide_2: ComplexArray
     a_coriolis_1: ComplexArray
     a_coriolis_2: ComplexArray
+
+
+class Relative(dict[str, Any]):
+    """A group's sliding quantities (:class:`Sliding`), some not stored but computed when first asked for:
+    the relative velocity and acceleration along the guide from what is stored (``v_rel = s_dot·u``,
+    ``a_rel = s_ddot·u``), and whatever the group names in :attr:`lazy` (a key → a function of no
+    arguments). Each is the product the group would have stored, so the same bits; once asked for, it is
+    kept.
+
+    >>> import numpy as np
+    >>> rel = Relative(s_dot=np.array([2.0]), u=np.array(1j))
+    >>> "v_rel" in rel, "a_rel" in rel, rel["v_rel"].tolist()
+    (True, False, [2j])
+    """
+
+    DERIVED: ClassVar[dict[str, str]] = {"v_rel": "s_dot", "a_rel": "s_ddot"}
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.lazy: dict[str, Any] = {}
+
+    def _derivable(self, key: object) -> bool:
+        if key in self.lazy:
+            return True
+        base = self.DERIVED.get(key) if isinstance(key, str) else None
+        return base is not None and dict.__contains__(self, base) and dict.__contains__(self, "u")
+
+    def __contains__(self, key: object) -> bool:
+        return dict.__contains__(self, key) or self._derivable(key)
+
+    def __missing__(self, key: str) -> Any:
+        if not self._derivable(key):
+            raise KeyError(key)
+        value = self.lazy.pop(key)() if key in self.lazy else self[self.DERIVED[key]] * self["u"]
+        self[key] = value
+        return value
 
 
 def cross(a: Vec, b: Vec) -> FloatArray:
@@ -190,6 +226,9 @@ class State:
     kept : dict group name -> tuple
         What a group's velocity solution leaves for its acceleration solution (below
         :data:`KEEP_BELOW` positions); the acceleration solution takes it out.
+    track : dict group name -> Track
+        A triad's drawn assembly continued over the crank's motion (:mod:`.triad`), which its
+        positions start Newton's method from.
     """
 
     phi: FloatArray
@@ -205,6 +244,7 @@ class State:
     conditioning: dict[str, FloatArray] = field(default_factory=dict)
     kinematic: bool = True
     kept: dict[str, tuple[Any, ...]] = field(default_factory=dict, repr=False)
+    track: dict[str, Any] = field(default_factory=dict, repr=False)
 
     def keep(self, group: str, values: tuple[Any, ...]) -> None:
         """Keep a group's intermediate ``values`` for its next step (below :data:`KEEP_BELOW` positions)."""
@@ -213,12 +253,21 @@ class State:
 
     @property
     def zeros(self) -> FloatArray:
-        """A shared read-only array of n zeros (the angular velocity of a translating link)."""
+        """A read-only array of n zeros (the angular velocity of a translating link) that holds no memory:
+        one 0.0 seen n times (a broadcast view)."""
         z: FloatArray | None = self.__dict__.get("_zeros")
         if z is None:
-            z = np.zeros(self.phi.shape)
-            z.flags.writeable = False
+            z = np.broadcast_to(np.zeros(()), self.phi.shape)
             self.__dict__["_zeros"] = z
+        return z
+
+    def zeros_complex(self) -> ComplexArray:
+        """A read-only complex array of n zeros holding no memory (a guide of the frame: its point's velocity,
+        acceleration and Coriolis term)."""
+        z: ComplexArray | None = self.__dict__.get("_zeros_complex")
+        if z is None:
+            z = np.broadcast_to(np.zeros((), dtype=complex), self.phi.shape)
+            self.__dict__["_zeros_complex"] = z
         return z
 
     def __post_init__(self) -> None:
@@ -341,6 +390,9 @@ class Group:
     kind = "?"
     links: tuple[str, str] = ("", "")
     branch: int = 1
+    #: Assur's class and order of the group (a dyad: II, 2; a triad: III, 3)
+    cls = 2
+    order = 2
 
     @property
     def pairs(self) -> tuple[Pair, ...]:

@@ -14,7 +14,7 @@ Accelerations: ``a_C = a_P + a^n_CP + a^τ_CP = a_C(guide) + a^k + a^r`` with th
 term a^k = 2·ω_guide × v_rel (zero on the frame) and a^r ∥ the guide.
 
 >>> import numpy as np
->>> from graphmethods.kinematics.groups.base import Guide, State
+>>> from graphmethods.kinematics.groups.base import Relative, Guide, State
 >>> st = State(phi=np.zeros(1))
 >>> st.z["A"] = np.array([0.0 + 0.3j]); st.v["A"] = np.array([-1.0 + 0j]); st.a["A"] = np.zeros(1, complex)
 >>> g = RRP(P="A", C="B", l=0.5, guide=Guide("0", 0j, 0.0), links=("2", "3"))
@@ -39,6 +39,7 @@ from graphmethods.kinematics.groups.base import (
     Pair,
     Real,
     Record,
+    Relative,
     State,
     Vec,
     cross,
@@ -47,6 +48,11 @@ from graphmethods.kinematics.groups.base import (
     solve2,
 )
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
+
+
+def _product(a: Any, b: Any, c: Any) -> Any:
+    """a·b·c, for a quantity computed when asked."""
+    return a * b * c
 
 
 @dataclass(frozen=True, eq=False)
@@ -133,7 +139,7 @@ class RRP(Group):
         s = dot(u, R) + branch * w
         C = G + s * u
         st.z[self.C] = C
-        st.relative[self._name()] = {"s": s}
+        st.relative[self._name()] = Relative(s=s, u=u)   # type: ignore[assignment]  # v_rel, a_rel when asked
         st.e[self.links[0]] = (C - st.z[self.P]) / l
         st.e[self.links[1]] = self.guide.line(st)[1] if self._frame is None else self.guide.turn  # broadcasts
 
@@ -153,17 +159,18 @@ class RRP(Group):
         s = st.relative[name]["s"]
         rP = st.z[self.C] - st.z[self.P]
         nP = -1j * rP
-        turning = iwg * s * u                           # the guide's point under C turning with its link
+        frame = self._frame is not None
+        # the guide's point under C turning with its link (on the frame: zeros, no array)
+        turning = st.zeros_complex() if frame else iwg * s * u
         # v_G + iω_g·s·u + ṡ·u = v_P + ω·i·rP
         sd, w, det = solve2(u, nP, st.v[self.P] - vG - turning)
         self.check_det(st, det, f"the rod {self.P}{self.C} stands perpendicular to the guide")
         st.conditioning[name] = np.abs(det) / self._k[0]
         st.omega[self.links[0]] = w
         st.omega[self.links[1]] = st.zeros if self.guide.link == GROUND else st.omega[self.guide.link]
-        v_guide = vG + turning
-        v_rel = sd * u
-        st.v[self.C] = v_guide + v_rel              # exactly along a guide of the frame
-        st.relative[name].update({"s_dot": sd, "v_rel": v_rel, "v_guide": v_guide})
+        v_guide = st.zeros_complex() if frame else vG + turning
+        st.v[self.C] = v_guide + sd * u             # exactly along a guide of the frame; v_rel = ṡ·u when asked
+        st.relative[name].update({"s_dot": sd, "v_guide": v_guide})
         st.keep(name, (rP, nP, det))
 
     def accelerations(self, st: State) -> None:
@@ -178,15 +185,22 @@ class RRP(Group):
             kept = (rP, -1j * rP, None)
         rP, nP, det = kept
         w = st.omega[self.links[0]]
-        a_guide = aG + turn_a * s * u                       # the guide's point under C
-        a_k = cor * sd * u                                  # Coriolis, 2ω_g × v_rel
+        frame = self._frame is not None
+        if frame:                                           # a guide of the frame: both are zeros, no array
+            a_guide = a_k = st.zeros_complex()
+        else:
+            a_guide = aG + turn_a * s * u                   # the guide's point under C
+            a_k = cor * sd * u                              # Coriolis, 2ω_g × v_rel
         sdd, e, _ = solve2(u, nP, st.a[self.P] - w * w * rP - a_guide - a_k, det)
         del kept, rP, nP, det                           # not held meanwhile (peak memory at 10⁶ positions)
         st.epsilon[self.links[0]] = e
         st.epsilon[self.links[1]] = st.zeros if self.guide.link == GROUND else st.epsilon[self.guide.link]
-        a_rel = sdd * u
-        st.a[self.C] = a_guide + a_k + a_rel
-        rel.update({"s_ddot": sdd, "a_rel": a_rel, "a_coriolis": a_k, "a_guide": a_guide})
+        st.a[self.C] = a_guide + a_k + sdd * u             # a_rel = s̈·u when asked
+        rel.update({"s_ddot": sdd, "a_guide": a_guide})
+        if frame:       # 2ω_g × v_rel = 0 (its zeros signed as the product signs them), computed when asked
+            rel.lazy["a_coriolis"] = functools.partial(_product, cor, sd, u)   # type: ignore[attr-defined]
+        else:
+            rel["a_coriolis"] = a_k
 
     def records(self, st: State) -> tuple[Record, ...]:
         P, C = self.P, self.C

@@ -7,6 +7,7 @@
 
 WORDS = {
     "plan":     ("Acceleration plan, position {k}", "План ускорений, положение {k}", "加速度多边形（位置{k}）"),
+    "plan_at":  ("Acceleration plan, φ = {phi}°", "План ускорений, φ = {phi}°", "加速度多边形（φ = {phi}°）"),
     "plans":    ("Acceleration plans", "Планы ускорений", "加速度多边形"),
     "table":    ("Accelerations per position", "Ускорения точек и звеньев по положениям", "各位置的加速度"),
     "value":    ("Acceleration", "Ускорение", "加速度"),

@@ -15,3 +15,5 @@ WORDS = {
     "freq": ("natural frequencies", "собственные частоты", "固有频率"),
     "rigid": ("rigid drive", "жёсткий привод", "刚性传动"),
 }
+
+UNITS_RU = {"N·m/rad": "Н·м/рад"}

@@ -11,6 +11,7 @@ WORDS = {
                      "机构运动简图（{m}个位置）"),
     "plans":        ("Velocity plans", "Планы скоростей", "速度多边形"),
     "plan":         ("Velocity plan, position {k}", "План скоростей, положение {k}", "速度多边形（位置{k}）"),
+    "plan_at":  ("Velocity plan, φ = {phi}°", "План скоростей, φ = {phi}°", "速度多边形（φ = {phi}°）"),
     "table":        ("Velocities per position", "Скорости точек и звеньев по положениям", "各位置的速度"),
     "position":     ("Position", "Положение", "位置"),
     "guide":        ("guide", "направляющей", "导路"),

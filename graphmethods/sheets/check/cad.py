@@ -1,8 +1,9 @@
 """Checking a drawing made in CAD: the student's velocity plan, energy indicator or energy–mass diagram as
-DXF (or SVG), drawn at their own scales, read, measured and checked as
-:func:`graphmethods.sheets.check.check` checks an answers file.
+DXF (or SVG, read by :mod:`graphmethods.sheets.check.svg_reader`), drawn at their own scales, read, measured
+and checked as :func:`graphmethods.sheets.check.check` checks an answers file.
 
-What is read (mm, y up; the DXF through :func:`graphmethods.render.dxf.read_drawing`, an SVG here):
+What is read (mm, y up; the DXF through :func:`graphmethods.render.dxf.read_drawing`, an SVG through
+:func:`graphmethods.sheets.check.svg_reader.read_svg`):
 
 * **arrows**: a straight segment with an arrowhead at one end (a filled triangle: SOLID, HATCH, a
   polyline segment of changing width, an SVG filled path, or an SVG ``marker-end``/``marker-start``);
@@ -49,7 +50,6 @@ import math
 import pathlib
 import re
 import unicodedata
-import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -63,9 +63,11 @@ from graphmethods.sheets.check.checking import check
 from graphmethods.sheets.check.hypotheses import em_data, plan_data
 from graphmethods.sheets.check.problems import CycleData, LinkageData, load_problem
 from graphmethods.sheets.check.report import TOL_MM, Checker, CheckReport, Item
+from graphmethods.sheets.check.svg_reader import read_svg
 from graphmethods.sheets.check.typed_answers import validate_answers
 from graphmethods.sheets.worksheets.elements import RED
 from graphmethods.sheets.worksheets.variants import SEGMENTS
+from graphmethods.units import input_file
 
 #: how far a label may be from the point it names, mm
 LABEL_REACH_MM = 10.0
@@ -111,228 +113,10 @@ def _number(s: str) -> float:
     return float(s.replace("−", "-").replace(",", "."))
 
 
-# ----------------------------------------------------------------------------- reading SVG
-
-_SVG = "{http://www.w3.org/2000/svg}"
-_PATH_TOKEN = re.compile(r"[MmLlHhVvZzCcSsQqTtAa]|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-
-
-def _transform(text: str | None) -> np.ndarray:
-    """An SVG transform attribute as a 3×3 matrix (translate, scale, rotate, matrix)."""
-    m = np.eye(3)
-    for name, args in re.findall(r"(\w+)\s*\(([^)]*)\)", text or ""):
-        v = [float(x) for x in re.split(r"[\s,]+", args.strip()) if x]
-        if name == "translate":
-            t = np.array([[1, 0, v[0]], [0, 1, v[1] if len(v) > 1 else 0.0], [0, 0, 1]])
-        elif name == "scale":
-            t = np.diag([v[0], v[1] if len(v) > 1 else v[0], 1.0])
-        elif name == "rotate":
-            a = math.radians(v[0])
-            t = np.array([[math.cos(a), -math.sin(a), 0], [math.sin(a), math.cos(a), 0], [0, 0, 1]])
-            if len(v) == 3:
-                t = (np.array([[1, 0, v[1]], [0, 1, v[2]], [0, 0, 1]]) @ t
-                     @ np.array([[1, 0, -v[1]], [0, 1, -v[2]], [0, 0, 1]]))
-        elif name == "matrix":
-            t = np.array([[v[0], v[2], v[4]], [v[1], v[3], v[5]], [0, 0, 1]])
-        else:
-            continue
-        m = m @ t
-    return m
-
-
-def _path_points(d: str) -> list[list[tuple[float, float]]]:
-    """The vertices of an SVG path's subpaths (curves reduced to their end points)."""
-    toks = _PATH_TOKEN.findall(d or "")
-    subs: list[list[tuple[float, float]]] = []
-    x = y = 0.0
-    start = (0.0, 0.0)
-    cmd = ""
-    i = 0
-    counts = {"m": 2, "l": 2, "h": 1, "v": 1, "z": 0, "c": 6, "s": 4, "q": 4, "t": 2, "a": 7}
-    while i < len(toks):
-        if re.match(r"[A-Za-z]", toks[i]):
-            cmd = toks[i]
-            i += 1
-            if cmd in "Zz":
-                if subs and subs[-1]:
-                    subs[-1].append(start)
-                x, y = start
-                continue
-        if not cmd:
-            raise InputError(f"SVG path data {d[:40]!r}: it does not start with a command")
-        n = counts[cmd.lower()]
-        args = [float(t) for t in toks[i:i + n]]
-        if len(args) < n:
-            break
-        i += n
-        rel = cmd.islower()
-        c = cmd.lower()
-        if c == "h":
-            x = x + args[0] if rel else args[0]
-        elif c == "v":
-            y = y + args[0] if rel else args[0]
-        else:
-            ex, ey = args[-2], args[-1]
-            x, y = (x + ex, y + ey) if rel else (ex, ey)
-        if c == "m":
-            subs.append([(x, y)])
-            start = (x, y)
-            cmd = "l" if rel else "L"            # further pairs after a moveto are lines
-        else:
-            if not subs:
-                subs.append([start])
-            subs[-1].append((x, y))
-    return subs
-
-
-def read_svg(source) -> CadDrawing:
-    """Read an SVG drawing (Inkscape's, or any with a viewBox in mm) into a :class:`CadDrawing` (mm, y up).
-
-    Lines, polylines, polygons and paths give segments (filled closed shapes give filled polygons);
-    ``marker-end``/``marker-start`` give an arrowhead at that end; texts give texts.
-    """
-    name = str(source)
-    root = _svg_root(source)
-    base, H = _svg_page(root)
-    reader = _SvgReader(H)
-    reader.visit(root, base, {})
-    return CadDrawing(tuple(reader.segs), tuple(reader.fills), (), tuple(reader.texts), source=name)
-
-
-def _svg_root(source) -> ET.Element:
-    """The SVG's root element, or an InputError saying why the file cannot be read as one."""
-    name = str(source)
-    try:
-        root = ET.fromstring(pathlib.Path(source).read_bytes())
-    except OSError as exc:
-        raise InputError(f"{name}: cannot read it ({exc.__class__.__name__}: {exc})") from None
-    except ET.ParseError as exc:
-        raise InputError(f"{name}: not a readable SVG drawing ({exc})") from None
-    if root.tag not in (_SVG + "svg", "svg"):
-        raise InputError(f"{name}: not an SVG drawing (its root is {root.tag})")
-    return root
-
-
-def _length_mm(v: str | None) -> float | None:
-    """An SVG length (``"210mm"``, ``"8.5in"``, ``"96px"``, a bare number in px) in mm, or None."""
-    if not v:
-        return None
-    m = re.match(r"^\s*([-+]?[\d.]+)\s*(mm|cm|in|px|pt)?\s*$", v)
-    if not m:
-        return None
-    return float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "px": 25.4 / 96,
-                                None: 25.4 / 96}[m.group(2)]
-
-
-def _svg_page(root: ET.Element) -> tuple[np.ndarray, float]:
-    """(the matrix from user units to mm, the page height in mm) from the viewBox, width and height."""
-    vb = [float(x) for x in re.split(r"[\s,]+", root.get("viewBox", "").strip()) if x]
-    W, H = _length_mm(root.get("width")), _length_mm(root.get("height"))
-    if len(vb) == 4:
-        sx = (W / vb[2]) if W else 1.0
-        sy = (H / vb[3]) if H else sx
-        return np.array([[sx, 0, -vb[0] * sx], [0, sy, -vb[1] * sy], [0, 0, 1]]), H or vb[3] * sy
-    return np.diag([25.4 / 96, 25.4 / 96, 1.0]), H or 0.0
-
-
-class _SvgReader:
-    """Walks an SVG's elements with their transforms and styles, collecting segments, filled polygons
-    (arrowheads) and texts in mm, y up."""
-
-    _SKIPPED = ("defs", "marker", "metadata", "title", "desc", "style", "clipPath", "mask", "symbol")
-
-    def __init__(self, H: float) -> None:
-        self.H = H
-        self.segs: list = []
-        self.fills: list = []
-        self.texts: list = []
-
-    @staticmethod
-    def style_of(el, inherited: dict) -> dict:
-        st = dict(inherited)
-        for k in ("fill", "stroke", "marker-end", "marker-start", "font-size"):
-            if el.get(k) is not None:
-                st[k] = el.get(k)
-        for part in (el.get("style") or "").split(";"):
-            if ":" in part:
-                k, v = part.split(":", 1)
-                st[k.strip()] = v.strip()
-        return st
-
-    def to_mm(self, m, pts):
-        out = []
-        for px, py in pts:
-            X, Y, _ = m @ np.array([px, py, 1.0])
-            out.append((float(X), float(self.H - Y)))           # y up, as in a DXF
-        return out
-
-    def shape(self, m, st, subs, closed_shape=False):
-        filled = st.get("fill", "#000000") not in ("none", "transparent") and st.get("fill") is not None
-        for sub in subs:
-            pts = self.to_mm(m, sub)
-            closed = closed_shape or (len(pts) > 2 and math.dist(pts[0], pts[-1]) < 1e-6)
-            if filled and closed and len(pts) >= 3:
-                self.fills.append(tuple(pts[:-1] if math.dist(pts[0], pts[-1]) < 1e-6 else pts))
-                continue
-            for a, b in zip(pts, pts[1:] + ([pts[0]] if closed_shape else [])):
-                if math.dist(a, b) > 1e-9:
-                    self.segs.append((a, b))
-            for key, end, prev in (("marker-end", -1, -2), ("marker-start", 0, 1)):
-                if st.get(key, "none") != "none" and len(pts) >= 2:
-                    tip, back = np.array(pts[end]), np.array(pts[prev])
-                    u = (tip - back) / max(float(np.hypot(*(tip - back))), 1e-9)
-                    base_pt = tip - 2.5 * u
-                    n = np.array([-u[1], u[0]]) * 0.5
-                    self.fills.append((tuple(tip), tuple(base_pt + n), tuple(base_pt - n)))
-
-    def text(self, el, m, st) -> None:
-        chars = "".join(el.itertext()).strip()
-        if not chars:
-            return
-        fs = re.match(r"\s*([\d.]+)", str(st.get("font-size", "3.5")))
-        size = float(fs.group(1)) if fs else 3.5          # in user units (px in a viewBox are user units)
-        x = float((el.get("x") or "0").split()[0])
-        y = float((el.get("y") or "0").split()[0])
-        tspan = el.find(_SVG + "tspan")
-        if tspan is not None and tspan.get("x") is not None:
-            x, y = float(tspan.get("x").split()[0]), float(tspan.get("y", y).split()[0])
-        anchor = st.get("text-anchor", el.get("text-anchor", "start"))
-        w = 0.6 * size * len(chars)
-        cx = x + {"start": w / 2, "middle": 0.0, "end": -w / 2}.get(anchor, w / 2)
-        (X, Y), = self.to_mm(m, [(cx, y - 0.36 * size)])
-        scale = math.sqrt(abs(np.linalg.det(m[:2, :2])))
-        self.texts.append(CadText(chars, X, Y, size * CAP * scale))
-
-    def visit(self, el, m, st) -> None:
-        tag = el.tag.replace(_SVG, "")
-        if tag in self._SKIPPED:
-            return
-        m = m @ _transform(el.get("transform"))
-        st = self.style_of(el, st)
-        f = lambda k: float(el.get(k, 0) or 0)      # noqa: E731
-        if tag == "line":
-            self.shape(m, dict(st, fill="none"), [[(f("x1"), f("y1")), (f("x2"), f("y2"))]])
-        elif tag in ("polyline", "polygon"):
-            v = [float(x) for x in re.split(r"[\s,]+", (el.get("points") or "").strip()) if x]
-            self.shape(m, st if tag == "polygon" else dict(st, fill="none"), [list(zip(v[0::2], v[1::2]))],
-                       closed_shape=tag == "polygon")
-        elif tag == "rect":
-            x, y, w, h = f("x"), f("y"), f("width"), f("height")
-            self.shape(m, st, [[(x, y), (x + w, y), (x + w, y + h), (x, y + h)]], closed_shape=True)
-        elif tag == "path":
-            self.shape(m, st, _path_points(el.get("d", "")))
-        elif tag == "text":
-            self.text(el, m, st)
-            return
-        for child in el:
-            self.visit(child, m, st)
-
-
 def read(source) -> CadDrawing:
     """A DXF or SVG drawing by its file suffix."""
     p = pathlib.Path(source)
-    if not p.exists():
-        raise InputError(f"{p}: no such drawing")
+    input_file(p, missing="no such drawing")           # a regular file within the size cap, before reading
     if p.suffix.lower() == ".svg":
         return read_svg(p)
     if p.suffix.lower() == ".dxf":

@@ -103,74 +103,112 @@ class ClassReport:
         return 0 if self.all_ok else 1
 
     @staticmethod
-    def cell(s: Submission, key: str) -> str:
-        """A table cell: the verdict of item ``key`` (with the mistakes named), ``""`` when not answered."""
+    def cell(s: Submission, key: str, lang: str = "en") -> str:
+        """A table cell: the verdict of item ``key`` in words, the mistakes named (``""`` when not answered)."""
+        from graphmethods.sheets.check.wording import notation_of, verdict_text
+
         if s.report is None:
             return ""
         for it in s.report.items:
             if it.key == key:
-                return it.verdict + (" (" + ", ".join(it.mistakes) + ")" if it.mistakes else "")
+                return verdict_text(it, notation_of(lang))
         return ""
 
-    def rows(self) -> list[list[str]]:
+    def rows(self, lang: str = "en") -> list[list[str]]:
         """Header row, then one row per student: file, student, problem, score, per cent, the items, error."""
-        head = ["file", "student", "problem", "score", "%"] + [label for _, label in self.columns] + ["error"]
+        from graphmethods.sheets.check.wording import item_label, notation_of, word
+
+        nt = notation_of(lang)
+        labels = []
+        for key, label in self.columns:
+            first = next((it for s in self.submissions if s.report for it in s.report.items if it.key == key), None)
+            sub = next((s for s in self.submissions if s.report and first in s.report.items), None)
+            labels.append(item_label(first, sub.report, nt) if first is not None and sub and sub.report else label)
+        head = ([word(nt, "col_file"), word(nt, "col_name"), word(nt, "col_problem"), word(nt, "col_score"), "%"]
+                + labels + [word(nt, "col_error")])
         out = [head]
         for s in self.submissions:
             pct = s.percent
             out.append([s.path.name, s.student, s.problem, s.score_text, "" if pct is None else f"{pct:.0f}"]
-                       + [self.cell(s, k) for k, _ in self.columns] + [s.error or ""])
+                       + [self.cell(s, k, lang) for k, _ in self.columns] + [s.error or ""])
         return out
 
-    def summary(self) -> str:
+    def summary(self, lang: str = "en") -> str:
+        from graphmethods.sheets.check.wording import notation_of, word
+
         n = len(self.submissions)
         n_ok = sum(1 for s in self.submissions if s.report is not None and s.report.ok)
-        text = f"{n} file{'s' if n != 1 else ''}: {n_ok} all correct, {n - n_ok - len(self.failed)} with mistakes"
-        if self.failed:
-            text += f", {len(self.failed)} could not be checked"
-        return text
+        if lang == "en":
+            text = f"{n} file{'s' if n != 1 else ''}: {n_ok} all correct, {n - n_ok - len(self.failed)} with mistakes"
+            return text + (f", {len(self.failed)} could not be checked" if self.failed else "")
+        nt = notation_of(lang)
+        text = word(nt, "class_summary", n=n, ok=n_ok, bad=n - n_ok - len(self.failed))
+        sep = "，" if lang == "zh" else ", "
+        return text + (sep + word(nt, "class_failed", n=len(self.failed)) if self.failed else "")
 
     # -- output
-    def to_csv(self) -> str:
-        """The table as CSV (comma-separated, quoted where needed, UTF-8 text)."""
+    def to_csv(self, lang: str = "en", *, sep: str = ",") -> str:
+        """The table as CSV (``sep``-separated, quoted where needed), every text cell that a spreadsheet would
+        take for a formula (``=``, ``+``, ``-``, ``@`` first) prefixed with ``'``.
+
+        >>> safe_cell("=HYPERLINK(1)"), safe_cell("-3"), safe_cell("ok")
+        ("'=HYPERLINK(1)", '-3', 'ok')
+        """
         buf = io.StringIO()
-        csv.writer(buf, lineterminator="\n").writerows(self.rows())
+        csv.writer(buf, delimiter=sep, lineterminator="\r\n").writerows(
+            [[safe_cell(c) for c in r] for r in self.rows(lang)])
         return buf.getvalue()
 
-    def to_markdown(self) -> str:
-        """The table as Markdown, then the summary."""
-        rows = self.rows()
+    def csv_bytes(self, lang: str = "en", *, sep: str = ",") -> bytes:
+        """:meth:`to_csv` as UTF-8 with a byte-order mark, the way Excel recognises UTF-8 (without it, Cyrillic
+        and Chinese names show as mojibake); ``sep=";"`` for the locales whose Excel splits on ``;``."""
+        return self.to_csv(lang, sep=sep).encode("utf-8-sig")
+
+    def to_markdown(self, lang: str = "en") -> str:
+        """The table as CommonMark (a blank line around the table and each paragraph), then the summary."""
+        from graphmethods.sheets.check.wording import notation_of, word
+
+        nt = notation_of(lang)
+        ok = word(nt, "ok")
+        rows = self.rows(lang)
+        n_items = len(self.columns)
 
         def esc(c: str) -> str:
             return c.replace("|", "\\|").replace("\n", " ")
-        lines = ["# Class check", "", "| " + " | ".join(esc(c) for c in rows[0]) + " |",
+        lines = [f"# {word(nt, 'class_check')}", "", "| " + " | ".join(esc(c) for c in rows[0]) + " |",
                  "|" + "|".join("---" for _ in rows[0]) + "|"]
         for r in rows[1:]:
-            lines.append("| " + " | ".join(esc(c) if not c.startswith("wrong") else f"**{esc(c)}**" for c in r) + " |")
-        lines += ["", f"Result: {self.summary()}", "",
-                  "Scores: ok 1, carried over ½, wrong 0, over the items each student answered."]
+            lines.append("| " + " | ".join(f"**{esc(c)}**" if 5 <= k < 5 + n_items and c and c != ok else esc(c)
+                                           for k, c in enumerate(r)) + " |")
+        lines += ["", word(nt, "result", summary=self.summary(lang)), "", word(nt, "scores")]
         return "\n".join(lines) + "\n"
 
-    def to_html(self, *, title: str = "Class check") -> str:
-        """A self-contained HTML page (no scripts, no external files): the table, then each student's report."""
-        rows = self.rows()
+    def to_html(self, *, title: str | None = None, lang: str = "en") -> str:
+        """A self-contained HTML page in ``lang`` (no scripts, no external files): the table, then each
+        student's report."""
+        from graphmethods.sheets.check.wording import notation_of, word
+
+        nt = notation_of(lang)
+        title = title or word(nt, "class_check")
+        rows = self.rows(lang)
         e = html.escape
         css = ("body{font-family:'DejaVu Sans',Arial,sans-serif;margin:2em;color:#111}"
                "table{border-collapse:collapse;font-size:0.9em}td,th{border:1px solid #999;padding:0.25em 0.5em;"
                "vertical-align:top}th{background:#eee}td.ok{background:#e3f4e3}td.carried{background:#fdf3d0}"
                "td.wrong{background:#f8d7d7;font-weight:bold}td.error{color:#a00}td.num{text-align:right}"
                "pre{background:#f6f6f6;padding:0.8em;overflow-x:auto}")
-        out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">', f"<title>{e(title)}</title>",
-               f"<style>{css}</style>", "</head>", "<body>", f"<h1>{e(title)}</h1>", f"<p>{e(self.summary())}. "
-               "Scores: ok 1, carried over ½, wrong 0, over the items each student answered.</p>", "<table>",
+        out = ["<!DOCTYPE html>", f'<html lang="{e(lang)}">', "<head>", '<meta charset="utf-8">',
+               f"<title>{e(title)}</title>", f"<style>{css}</style>", "</head>", "<body>", f"<h1>{e(title)}</h1>",
+               f"<p>{e(self.summary(lang))}. {e(word(nt, 'scores'))}</p>", "<table>",
                "<tr>" + "".join(f"<th>{e(c)}</th>" for c in rows[0]) + "</tr>"]
         n_items = len(self.columns)
-        for r in rows[1:]:
+        for s, r in zip(self.submissions, rows[1:]):
+            verdicts = {it.key: it.verdict for it in (s.report.items if s.report else ())}
             cells = []
             for k, c in enumerate(r):
                 cls = ""
                 if 5 <= k < 5 + n_items and c:
-                    cls = c.split(" ")[0]
+                    cls = verdicts.get(self.columns[k - 5][0], "")
                 elif k in (3, 4):
                     cls = "num"
                 elif k == len(r) - 1 and c:
@@ -180,10 +218,21 @@ class ClassReport:
         out.append("</table>")
         for s in self.submissions:
             out.append(f"<h2>{e(s.student)} — {e(s.path.name)}</h2>")
-            body = s.report.to_text() if s.report is not None else f"could not be checked: {s.error}"
+            body = (s.report.to_text(lang) if s.report is not None else word(nt, "not_checked", why=s.error or ""))
             out.append(f"<pre>{e(body)}</pre>")
         out += ["</body>", "</html>"]
         return "\n".join(out) + "\n"
+
+
+_NUMBER_CELL = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
+
+
+def safe_cell(text: str) -> str:
+    """A CSV cell a spreadsheet shows as text: one that starts with ``=``, ``+``, ``-``, ``@``, a tab or a
+    carriage return (and is not a plain number) gets a leading ``'``, so ``=HYPERLINK(…)`` is no formula."""
+    if text and text[0] in "=+-@\t\r" and not _NUMBER_CELL.match(text):
+        return "'" + text
+    return text
 
 
 def class_files(directory) -> list[pathlib.Path]:
@@ -230,6 +279,8 @@ def check_file(path, *, problem: str | None = None) -> Submission:
     """Check one student's file (an answers file or a drawing); errors become the submission's ``error``."""
     path = pathlib.Path(path)
     student, from_name = names_from_file_name(path)
+    # a file name that is not valid UTF-8 (its bytes kept as surrogates): shown with replacement characters
+    student = student.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
     named = problem or from_name
     report: CheckReport
     try:
@@ -253,8 +304,10 @@ def check_file(path, *, problem: str | None = None) -> Submission:
         return Submission(path, student, str(named), report=report)
     except GraphmethodsError as exc:
         return Submission(path, student, str(named or ""), error=str(exc))
-    except (OSError, UnicodeDecodeError, ValueError) as exc:      # a file no reader could make sense of
-        return Submission(path, student, str(named or ""), error=f"{type(exc).__name__}: {exc}")
+    except (OSError, UnicodeDecodeError, ValueError, ArithmeticError, LookupError, TypeError, AttributeError,
+            RecursionError) as exc:      # a file no reader could make sense of: its row says so, the class goes on
+        why = " ".join(f"{type(exc).__name__}: {exc}".split())[:300]
+        return Submission(path, student, str(named or ""), error=why)
 
 
 def check_class(files, *, problem: str | None = None,

@@ -155,59 +155,23 @@ class CheckReport:
                 "notes": list(self.notes)}
 
     def to_json(self) -> str:
-        return json_text(self.to_dict(), indent=1, ensure_ascii=False)
+        return json_text(self.to_dict(), indent=1)
 
-    def _rows(self):
-        for it in self.items:
-            yield (it.label, _fmt(it.expected), _fmt(it.student), _fmt(it.deviation), _fmt(it.tolerance),
-                   it.unit, it.verdict + (" (" + ", ".join(it.mistakes) + ")" if it.mistakes else ""))
+    def to_text(self, lang: str = "en") -> str:
+        """Aligned plain text in ``lang`` (en, ru, zh): one line per item with its verdict in words, then the
+        mistakes, the carried items and the summary (:func:`graphmethods.sheets.check.wording.report_text`)."""
+        from graphmethods.sheets.check.wording import report_text
 
-    def to_text(self) -> str:
-        """Aligned plain text: one line per item, then the mistakes and the summary."""
-        head = ("item", "expected", "student", "deviation", "tolerance", "unit", "verdict")
-        rows = [head] + list(self._rows())
-        widths = [max(len(r[k]) for r in rows) for k in range(len(head))]
-        lines = [f"Check of {self.problem} ({self.title})" + (f" — {self.student}" if self.student else "")]
-        lines += ["  ".join(c.ljust(w) if k in (0, 5, 6) else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths)))
-                  .rstrip() for r in rows]
-        lines += self._tail("- ")
-        return "\n".join(lines) + "\n"
+        return report_text(self, lang)
 
-    def to_markdown(self) -> str:
-        """A Markdown table of the items, then the mistakes and the summary."""
-        head = ("item", "expected", "student", "deviation", "tolerance", "unit", "verdict")
-        lines = [f"### Check of {self.problem} ({self.title})" + (f" — {self.student}" if self.student else ""), "",
-                 "| " + " | ".join(head) + " |",
-                 "|" + "|".join(("---", "--:", "--:", "--:", "--:", "---", "---")) + "|"]
-        for r in self._rows():
-            cells = list(r)
-            if not cells[6].startswith("ok"):
-                cells[6] = f"**{cells[6]}**"
-            lines.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
-        lines.append("")
-        lines += self._tail("- ")
-        return "\n".join(lines) + "\n"
+    def to_markdown(self, lang: str = "en") -> str:
+        """A CommonMark table of the items, then the mistakes and the summary, in ``lang``."""
+        from graphmethods.sheets.check.wording import report_markdown
+
+        return report_markdown(self, lang)
 
     def _repr_markdown_(self) -> str:          # a notebook shows the report
         return self.to_markdown()
-
-    def _tail(self, bullet: str) -> list[str]:
-        out = []
-        if self.mistakes:
-            out.append("Mistakes recognised:")
-            labels = {i.key: i.label for i in self.items}
-            out += [f"{bullet}{m.text}: {', '.join(labels[k] for k in m.items)}" for m in self.mistakes]
-        undiag = [i for i in self.wrong if not i.mistakes]
-        if undiag:
-            out.append("Wrong, no usual mistake fits:")
-            out += [f"{bullet}{i.label}" for i in undiag]
-        carried = self.carried
-        if carried:
-            out.append("Carried over (follow from the student's own earlier values):")
-            out += [f"{bullet}{i.label}: {i.note}" for i in carried]
-        out += [f"Note: {n}" for n in self.notes]
-        out.append(f"Result: {self.summary()}")
-        return out
 
     def overlay(self, *, notation="en") -> Scene:
         """The correct construction at the student's scales on a page the size of theirs, to print 1:1 on
@@ -218,7 +182,7 @@ class CheckReport:
         notation : str or Notation
             ``"en"``, ``"ru"`` or ``"zh"``: the symbols, units, number style and words of everything the
             overlay draws (heading, how to print it, the list of wrong items with the names of the
-            mistakes, see :data:`WORDS`). The text, Markdown and JSON reports stay English.
+            mistakes, see :data:`WORDS`). The text and Markdown reports take the language as ``lang``.
 
         Returns
         -------

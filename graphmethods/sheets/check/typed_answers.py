@@ -56,10 +56,49 @@ def load_toml(text: str, *, source: str = "<answers>") -> dict:
         import tomllib
     else:                                # Python 3.10: the same parser, installed as a dependency
         import tomli as tomllib
+    _toml_depth(text, source)
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{source}: not valid TOML ({exc})") from None
+        raise InputError(f"{source}: not valid TOML ({' '.join(str(exc).split())})") from None
+    except RecursionError:
+        raise InputError(f"{source}: TOML nested more than {MAX_TOML_DEPTH} levels deep (MAX_TOML_DEPTH)") from None
+
+
+#: Deepest nesting of arrays and inline tables an answers file may have (its lists are flat: one level)
+MAX_TOML_DEPTH = 50
+
+
+def _toml_depth(text: str, source: str) -> None:
+    """Refuse arrays or inline tables nested deeper than :data:`MAX_TOML_DEPTH` before the recursive parser
+    sees them (strings and comments skipped)."""
+    level = line = 0
+    quote = ""
+    escaped = comment = False
+    for ch in text:
+        if ch == "\n":
+            line += 1
+            comment = False
+        if comment:
+            continue
+        if quote:
+            if escaped:
+                escaped = False
+            elif ch == "\\" and quote == '"':
+                escaped = True
+            elif ch == quote:
+                quote = ""
+        elif ch in "\"'":
+            quote = ch
+        elif ch == "#":
+            comment = True
+        elif ch in "[{":
+            level += 1
+            if level > MAX_TOML_DEPTH:
+                raise InputError(f"{source}, line {line + 1}: arrays or tables nested more than {MAX_TOML_DEPTH} "
+                                 f"levels deep (MAX_TOML_DEPTH); an answer is a number, text or a flat list")
+        elif ch in "]}":
+            level = max(level - 1, 0)
 
 
 def read_answers(path) -> dict:
@@ -95,7 +134,8 @@ def validate_answers(data: dict, *, source: str = "<answers>") -> dict:
         for k, v in value.items():
             if k not in SCHEMA[key]:
                 raise InputError(f"{source}: [{key}] has no key {k!r}; its keys are {', '.join(SCHEMA[key])}")
-            if v == "" or v == []:      # left blank in a template (sheets.worksheets.answers): not answered
+            if (isinstance(v, str) and v == "") or (isinstance(v, (list, tuple)) and len(v) == 0):
+                continue                # left blank in a template (sheets.worksheets.answers): not answered
                 continue
             kind = KEY_KINDS.get(k, "text" if k.endswith("_sense") else "number")
             sec[k] = _typed_answer(kind, _answer_value(v, f"{source}: [{key}] {k}"), f"{source}: [{key}] {k}")
@@ -144,6 +184,13 @@ def _not_a_number(v, where: str):
 
 
 def _answer_value(v, where: str, depth: int = 0):
+    if type(v).__module__ == "numpy":     # a numpy scalar or array in an answers dict built in Python
+        import numpy as np
+
+        if isinstance(v, np.ndarray):
+            v = v.tolist()
+        elif isinstance(v, np.generic):
+            v = v.item()
     if isinstance(v, bool):
         raise InputError(f"{where}: expected a number or text, got {v!r}")
     if isinstance(v, int):

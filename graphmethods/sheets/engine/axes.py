@@ -70,7 +70,7 @@ def nice_ticks(lo: float, hi: float, max_n: int = 6) -> tuple[float, ...]:
     lo, hi : float
         The data range (any order; equal values get a range around them).
     max_n : int
-        Most intervals between ticks (MaxNLocator's ``nbins``).
+        Most intervals between ticks (MaxNLocator's ``nbins``; data on both sides of 0 need 2).
 
     Returns
     -------

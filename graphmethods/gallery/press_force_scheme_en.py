@@ -1,9 +1,0 @@
-"""The press problem in position 3 with every force on it: inertia forces and moments, weights, the
-working load, and the balancing moment on the crank."""
-
-from graphmethods.problems import builtin
-from graphmethods.sheets.forces import force_scheme
-
-
-def build():
-    return force_scheme(builtin.case("press"), position=3, gravity=True, notation="en")

@@ -1,9 +1,0 @@
-"""W3 (step resisting moment, M_d by work balance): energy indicator diagram (staircase of excess
-works), Russian notation.
-"""
-
-from graphmethods import problems, sheets
-
-
-def build():
-    return sheets.energy_indicator(problems.w3(), notation="ru")
