@@ -25,6 +25,9 @@ from graphmethods.units import MAX_POSITIONS, count, json_text
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import integer, numbers
+    from graphmethods.cli._sheet import add_signature_options
+
     p = sub.add_parser(
         "cam", help="cam mechanism: base radius from the pressure angle, motion, profile, the A1 cam sheet",
         description="Design and analyse a cam mechanism problem file (\"kind\": \"cam\"): the base radius, the "
@@ -32,16 +35,20 @@ def add_parser(sub) -> None:
                     "the profile by inversion; optionally the A1 cam sheet.", allow_abbrev=False)
     p.add_argument("case", metavar="CASE", help="cam problem file (.json) or built-in cam problem name "
                    "(graphmethods problems)")
-    p.add_argument("--positions", "-m", type=str, default="360", metavar="M",
+    p.add_argument("--positions", "-m", type=integer, default=360, metavar="M",
                    help="number of equal cam steps per turn listed (default 360; φ = 360·k/M, k = 0…M−1)")
-    p.add_argument("--phi-deg", default=None, metavar="A[,B,...]",
+    p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
                    help="list these cam angles (degrees from the start of the first phase) instead of M positions")
     p.add_argument("--json", action="store_true", help="print one JSON object (the contract's keys)")
-    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.dxf", default=None,
+    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
                    help="also write the A1 cam sheet (motion diagrams by graphical integration, the combined "
-                        "ds/dφ–s diagram, the profile by inversion)")
+                        "ds/dφ–s diagram, the profile by inversion); - writes it to standard output in --format, "
+                        "and nothing else")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None, dest="fig_format",
+                   help="the sheet's format when it goes to standard output (--sheet -)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the sheet (default en)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -54,10 +61,8 @@ def _num(x: float) -> float | None:
 
 
 def _angles(args) -> list[float]:
-    from graphmethods.cli.kinematics import _phi_list
-
     if args.phi_deg is not None:
-        return _phi_list(args.phi_deg)
+        return list(args.phi_deg)
     m = count(args.positions, "--positions", low=1, high=MAX_POSITIONS)
     return [360.0 * k / m for k in range(m)]
 
@@ -125,30 +130,30 @@ def _text(res: dict[str, Any]) -> str:
 
 
 def run(args) -> int:
+    from graphmethods.cli import _sheet
+    from graphmethods.errors import InputError
     from graphmethods.kinematics.cam import design
     from graphmethods.problems.builtin import cam_problem
 
     sheet = None
     if args.sheet is not None:
-        from graphmethods.cli._sheet import check_sheet_target
-
-        sheet = check_sheet_target(args.sheet, args.force)
-    elif args.force or args.lang != "en":
-        from graphmethods.errors import InputError
-
-        raise InputError("--lang and --force apply to the sheet; add --sheet FILE")
+        sheet = _sheet.check_sheet_target(args.sheet, args.force, None if args.sheet != "-" else args.fig_format)
+    elif args.force or args.lang != "en" or args.fig_format:
+        raise InputError("--lang, --format and --force apply to the sheet; add --sheet FILE")
+    _sheet.check_signature(args)
+    _sheet.refuse_two_on_stdout(args.json, sheet)
     angles = _angles(args)
     cam = design(cam_problem(args.case))
     res = table(cam, angles)
     data = None
     if sheet is not None:
-        from graphmethods.cli._sheet import scene_bytes
         from graphmethods.sheets.cam_sheet import cam_sheet
 
-        data = scene_bytes(cam_sheet(cam, notation=args.lang), sheet)
+        data = _sheet.scene_bytes(_sheet.signed(cam_sheet(cam, notation=args.lang), args), sheet)
     out = json_text(res, indent=1, ensure_ascii=False) if args.json else _text(res)
-    print(out)
+    report = _sheet.report_stream(sheet)
+    print(out, file=report)
     if sheet is not None and data is not None:       # written last: an error above leaves no file behind
         sheet.write(data, overwrite=args.force)
-        print(f"wrote {sheet} (A1, {args.lang})", file=sys.stderr if args.json else sys.stdout)
+        print(f"wrote {sheet} (A1, {args.lang})", file=sys.stderr if args.json or sheet.to_stdout else sys.stdout)
     return 0
