@@ -339,7 +339,7 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
     x0, _, x1, y1 = box
     left, right, bottom = x0 + 16.0, x1 - 24.0, y1 - 10.0
     y_need = float(s.max()) + 1.3 * s0
-    mu = pick_scale(max((xb - xa) * 1.1 / (right - left), y_need / (bottom - top - 16.0)), 1.0, symbol="μ_l",
+    mu = pick_scale(max((xb - xa) * 1.1 / (right - left), y_need / (bottom - top - 16.0)), 1.0, symbol="μ′_l",
                     unit="m")
     pad = 0.5 * (mu.to_value(right - left) - (xb - xa))
     x_min, x_max = xa - pad, xb + pad
