@@ -272,7 +272,7 @@ def test_cli_bad_input_is_one_line_and_exit_2(argv, words, capsys):
 
     try:
         code = main(argv)
-    except SystemExit as exc:             # argparse's own refusal: one line, exit 2
+    except SystemExit as exc:           # refused by argparse's shared number type (issue 28's one policy)
         code = exc.code
     assert code == 2
     err = capsys.readouterr().err

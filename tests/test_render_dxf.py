@@ -5,7 +5,6 @@ import io
 import math
 import os
 import pathlib
-import shutil
 import subprocess
 import sys
 
@@ -14,7 +13,7 @@ import pytest
 
 ezdxf = pytest.importorskip("ezdxf")
 
-from graphmethods import cli, gallery as gallery_figures  # noqa: E402
+from graphmethods import cli  # noqa: E402
 from graphmethods.errors import OutputExistsError  # noqa: E402
 from graphmethods.kinematics import read_case  # noqa: E402
 from graphmethods.render import dxf  # noqa: E402
@@ -246,7 +245,10 @@ def test_cli_study_sheet_and_check_overlay_as_dxf(tmp_path, capsys):
 def test_cli_gallery_writes_dxf(tmp_path, capsys):
     d = tmp_path / "g"
     d.mkdir()
-    shutil.copy(pathlib.Path(gallery_figures.__file__).parent / "w1_energy_indicator_en.py", d)
+    # a figure script of one's own (the built-in figures are rows of the gallery's catalogue now)
+    (d / "w1_energy_indicator_en.py").write_text(
+        "from graphmethods.gallery import figure_module\n\n\ndef build():\n"
+        "    return figure_module('w1_energy_indicator_en').build()\n", encoding="utf-8")
     rc = cli.main(["gallery", "--dir", str(d), "--out", str(tmp_path / "out"), "--dxf"])
     out = capsys.readouterr().out
     assert rc == 0 and "w1_energy_indicator_en.dxf" in out

@@ -11,7 +11,8 @@ plain text by default, one JSON object with ``--json`` (keys of the contract in
     graphmethods cam shaper-cam --positions 12
     graphmethods cam shaper-cam --json --phi-deg 30,45
 
-``--sheet FILE.svg|.pdf|.dxf`` also writes the A1 cam sheet in ``--lang en|ru|zh``; an existing
+``-o FILE.svg|.pdf|.png|.dxf`` (older name ``--sheet``; ``-`` with ``--format`` for standard output)
+also writes the A1 cam sheet in ``--lang en|ru|zh``; an existing
 file is kept unless ``--force``; on any error nothing is written.
 """
 
@@ -26,13 +27,12 @@ from graphmethods.units import MAX_POSITIONS, count, json_text
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, numbers
-    from graphmethods.cli._sheet import add_signature_options
 
     p = sub.add_parser(
         "cam", help="cam mechanism: base radius from the pressure angle, motion, profile, the A1 cam sheet",
         description="Design and analyse a cam mechanism problem file (\"kind\": \"cam\"): the base radius, the "
                     "largest pressure angles, the radius of curvature and undercut, s, v, a, the pitch curve and "
-                    "the profile by inversion; optionally the A1 cam sheet.", allow_abbrev=False)
+                    "the profile by inversion; optionally the A1 cam sheet.")
     p.add_argument("case", metavar="CASE", help="cam problem file (.json) or built-in cam problem name "
                    "(graphmethods problems)")
     p.add_argument("--positions", "-m", type=integer, default=360, metavar="M",
@@ -40,15 +40,14 @@ def add_parser(sub) -> None:
     p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
                    help="list these cam angles (degrees from the start of the first phase) instead of M positions")
     p.add_argument("--json", action="store_true", help="print one JSON object (the contract's keys)")
-    p.add_argument("--sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
+    p.add_argument("-o", "--out", "--sheet", dest="sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
                    help="also write the A1 cam sheet (motion diagrams by graphical integration, the combined "
-                        "ds/dφ–s diagram, the profile by inversion); - writes it to standard output in --format, "
-                        "and nothing else")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None, dest="fig_format",
-                   help="the sheet's format when it goes to standard output (--sheet -)")
+                        "ds/dφ–s diagram, the profile by inversion); - writes it to standard output in --format, and "
+                        "nothing else (older name --sheet still accepted)")
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
+                   help="file format of the sheet (default: the file name's suffix; needed with -o -)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the sheet (default en)")
     p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
-    add_signature_options(p)
     p.set_defaults(func=run)
 
 
@@ -130,30 +129,31 @@ def _text(res: dict[str, Any]) -> str:
 
 
 def run(args) -> int:
-    from graphmethods.cli import _sheet
+    from graphmethods.cli._sheet import check_sheet_target, refuse_two_on_stdout, report_stream
     from graphmethods.errors import InputError
     from graphmethods.kinematics.cam import design
     from graphmethods.problems.builtin import cam_problem
 
     sheet = None
     if args.sheet is not None:
-        sheet = _sheet.check_sheet_target(args.sheet, args.force, None if args.sheet != "-" else args.fig_format)
-    elif args.force or args.lang != "en" or args.fig_format:
-        raise InputError("--lang, --format and --force apply to the sheet; add --sheet FILE")
-    _sheet.check_signature(args)
-    _sheet.refuse_two_on_stdout(args.json, sheet)
+        sheet = check_sheet_target(args.sheet, args.force, args.format)
+    elif args.force or args.lang != "en" or args.format is not None:
+        raise InputError("--lang, --format and --force apply to the sheet; add -o FILE (older name --sheet), or -o - "
+                         "with --format")
+    refuse_two_on_stdout(args.json, sheet)
     angles = _angles(args)
     cam = design(cam_problem(args.case))
     res = table(cam, angles)
     data = None
     if sheet is not None:
+        from graphmethods.cli._sheet import scene_bytes
         from graphmethods.sheets.cam_sheet import cam_sheet
 
-        data = _sheet.scene_bytes(_sheet.signed(cam_sheet(cam, notation=args.lang), args), sheet)
-    out = json_text(res, indent=1, ensure_ascii=False) if args.json else _text(res)
-    report = _sheet.report_stream(sheet)
-    print(out, file=report)
+        data = scene_bytes(cam_sheet(cam, notation=args.lang), sheet)
+    out = json_text(res, indent=1) if args.json else _text(res)
+    print(out, file=report_stream(sheet))
     if sheet is not None and data is not None:       # written last: an error above leaves no file behind
         sheet.write(data, overwrite=args.force)
-        print(f"wrote {sheet} (A1, {args.lang})", file=sys.stderr if args.json or sheet.to_stdout else sys.stdout)
+        if not sheet.to_stdout:
+            print(f"wrote {sheet} (A1, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0

@@ -119,7 +119,7 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
     drawn = getattr(case, "drawn", None)
     extra: dict[str, Any] = {}
     if drawn is not None:
-        extra = {"structure": drawn.structure.as_json(), "loads": _loads(fa, i)}
+        extra = {"structure": drawn.structure.as_json()}
     return {
         "case": case.name, "kind": case.kind, "source": case.source,
         "position": None if phi_deg is not None else int(position or 0), "m": None if phi_deg is not None else m,
@@ -134,23 +134,6 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
         "difference_power_percent": _f(fa.difference_percent(fa.M_balance_power)[i]),
         **extra,
     }
-
-
-def _loads(fa, i: int) -> list[dict[str, Any]]:
-    """Every external load acting at position i (the working load included): a force at its point, a moment."""
-    from graphmethods.dynamics.forces.problem import EXTERNAL
-
-    out: list[dict[str, Any]] = []
-    for link, forces in fa.applied.items():
-        for f in forces:
-            if not f.label.startswith(EXTERNAL):
-                continue
-            F, M = complex(f.F[i]), float(f.M[i])
-            if F != 0:
-                out.append({"link": int(link), "at": _v(complex(f.at[i])), "force": _v(F)})
-            if M != 0:
-                out.append({"link": int(link), "moment": _f(M)})
-    return out
 
 
 def _text(res: dict[str, Any], lang: str) -> str:
@@ -190,16 +173,6 @@ def _text(res: dict[str, Any], lang: str) -> str:
               f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
-    if res.get("loads"):
-        lines += ["", nt.word("forces.external"),
-                  f"{nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  {'F_x [N]':>12}  {'F_y [N]':>12}  "
-                  f"{'M [N·m]':>12}"]
-        for ld in res["loads"]:
-            if "force" in ld:
-                (x, y), (fx, fy) = ld["at"], ld["force"]
-                lines.append(f"{ld['link']:>6}  {x:10.5f}  {y:10.5f}  {fx:12.3f}  {fy:12.3f}  {'-':>12}")
-            else:
-                lines.append(f"{ld['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {ld['moment']:12.4f}")
     diff = nt.word("forces.diff")
     lines += ["", nt.word("forces.balancing"),
               f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",

@@ -106,6 +106,9 @@ def run(args) -> int:
     case = builtin.case(args.case)
     require_cycle(case, "the study")
     n_rpm = speed_rpm(args)
+    from graphmethods.kinematics.drawn import require_cycle
+
+    require_cycle(case, "the study", speed_given=n_rpm is not None)
     if n_rpm is not None:                    # the mean speed of the file replaced, everything else kept
         import dataclasses
 

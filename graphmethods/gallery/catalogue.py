@@ -500,10 +500,29 @@ CATALOGUE: tuple[Figure, ...] = (
        "The six-bar press: the A1 kinematic-analysis sheet (the course project's first sheet: the scheme in 12 "
        "positions, the velocity plans, the acceleration plans of a working-stroke and a return-stroke position, the "
        "slider's kinematic diagrams when there is a slider); notation en."),
+    _F("six_bar_press_structure_en", "case:six-bar-press", "structure_diagram.structure_diagram", "en", {},
+       "The six-bar press split into its driver and its Assur groups, each apart to one scale with its outer pairs "
+       "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
+       "English notation."),
     _F("slotted_lever_acceleration_plan_en", "case:slotted-lever", "acceleration.acceleration_plan", "en", {},
        "Crank and oscillating slotted lever (Coriolis) (problems/data/slotted_lever.json): one large acceleration "
        "plan with its construction lines, the equations under it, the table of vector lengths and ε of the links, "
        "English notation."),
+    _F("triad_six_bar_structure_en", "case:triad-six-bar", "structure_diagram.structure_diagram", "en", {},
+       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, "
+       "each apart to one scale with its outer pairs "
+       "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
+       "English notation.", png=True),
+    _F("triad_six_bar_structure_ru", "case:triad-six-bar", "structure_diagram.structure_diagram", "ru", {},
+       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, "
+       "each apart to one scale with its outer pairs "
+       "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
+       "Russian notation."),
+    _F("triad_six_bar_structure_zh", "case:triad-six-bar", "structure_diagram.structure_diagram", "zh", {},
+       "The class III six-bar (problems/data/triad_six_bar.json) split into its driver and its Assur groups, "
+       "each apart to one scale with its outer pairs "
+       "marked, the structural formula, W and the class (the structural-analysis chapter's figure); "
+       "Chinese notation."),
     _F("w1_energy_indicator_en", "cycle:w1", "energy.energy_indicator", "en", {},
        "W1 (diesel generator, areas only): energy indicator diagram (staircase of excess works), English notation."),
     _F("w1_energy_indicator_ru", "cycle:w1", "energy.energy_indicator", "ru", {},

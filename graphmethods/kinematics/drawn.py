@@ -134,14 +134,16 @@ class DrawnCase(LinkageCase):
         return super().__getattr__(key)
 
 
-def require_cycle(case: Any, command: str) -> None:
+def require_cycle(case: Any, command: str, *, speed_given: bool = False) -> None:
     """Refuse a drawn file for a command that studies the steady cycle (the study, the motion): every key it
-    needs and the file leaves out, in one line; or a driver that swings instead of turning fully."""
+    needs and the file leaves out, in one line (the speed not, when the command line gives it); or a driver
+    that swings instead of turning fully."""
     info = getattr(case, "drawn", None)
     if info is None:
         return
-    if info.missing:
-        raise InputError(f"{case.source}: {command} needs {', '.join(info.missing)}, missing from the file")
+    missing = [k for k in info.missing if not (speed_given and k.startswith("omega_1"))]
+    if missing:
+        raise InputError(f"{case.source}: {command} needs {', '.join(missing)}, missing from the file")
     if info.swing is not None:
         a, b = (math.degrees(x) for x in info.swing)
         raise InputError(f"{case.source}: {command} follows the crank over whole turns; this driver swings over "
@@ -439,14 +441,21 @@ def _hidden_requests(cp: _Compiler) -> tuple[list[DrawnLoad], dict[str, Any]]:
     if not isinstance(raw, list):
         rd.err("loads", "must be a list of {force, link, at} or {moment, link}")
 
-    def point(key: str, link: str, at: Any) -> str:
+    def point(key: str, link: str, at: Any, name: str) -> str:
+        """A named point of the link, or one made at [x, y] (the textbook's name: S3 for a mass, L1 a load)."""
         if isinstance(at, str):
             if at not in cp.links[link]:
                 rd.err(key, f"{at!r} is not a point of link {link} ({', '.join(cp.links[link])})")
             return at
         x, y = rd.xy(key, at)
-        name = f"{HIDDEN}{key}"
-        cp.wanted.setdefault(link, []).append((name, complex(x, y)))
+        z = complex(x, y)
+        same = [j for j in cp.links[link] if cp.z[j] == z]
+        if same:
+            return same[0]
+        taken = {n for ws in cp.wanted.values() for n, _ in ws}
+        while name in cp.z or name in taken:
+            name += "'"                       # S3 taken by a joint: S3' (as a drawing would)
+        cp.wanted.setdefault(link, []).append((name, z))
         return name
 
     for i, ld in enumerate(raw):
@@ -463,7 +472,8 @@ def _hidden_requests(cp: _Compiler) -> tuple[list[DrawnLoad], dict[str, Any]]:
             if "at" not in ld:
                 rd.err(f"{key}.at", "is missing: the point the force acts at (a point name or [x, y])")
             fx, fy = rd.xy(f"{key}.force", ld["force"])
-            loads.append(DrawnLoad(link, point(f"{key}.at", link, ld["at"]), complex(fx, fy), 0.0, "force"))
+            loads.append(DrawnLoad(link, point(f"{key}.at", link, ld["at"], f"L{i + 1}"), complex(fx, fy), 0.0,
+                                   "force"))
         else:
             if "at" in ld:
                 rd.err(f"{key}.at", "a moment acts on the whole link; leave out at")
@@ -479,7 +489,7 @@ def _hidden_requests(cp: _Compiler) -> tuple[list[DrawnLoad], dict[str, Any]]:
             rd.err(f"masses.{k}", f"no moving link {link} in links")
         spec = dict(rd.obj(f"masses.{k}", spec, ("m", "J", "at")))
         if "at" in spec:
-            spec["at"] = point(f"masses.{k}.at", link, spec["at"])
+            spec["at"] = point(f"masses.{k}.at", link, spec["at"], f"S{link}")
         masses[k] = spec
     return loads, masses
 

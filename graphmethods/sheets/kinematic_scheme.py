@@ -140,7 +140,7 @@ def _scheme_geometry(pos, thick: int | None, trajectories: bool) -> _SchemeGeome
     ext_pos = mech.positions(phi=[ext.phi]) if ext is not None and ext.same_as is None else None
     fine = None
     if trajectories and parts.paths:
-        if pos.m is not None:               # a full turn
+        if pos.m is not None and getattr(getattr(mech, "linkage", None), "swing", None) is None:   # a full turn
             fine_phi = pos.phi[0] + mech.sense * np.linspace(0.0, 2.0 * math.pi, 241)
         else:                               # between the angles given (where the linkage may not turn fully)
             fine_phi = np.linspace(float(pos.phi.min()), float(pos.phi.max()), 241)

@@ -200,15 +200,7 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
             ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=False)
             if ok.any():
                 lab = cands[int(np.argmax(ok))]
-                if leaders is not None:
-                    b = label_bbox(lab)
-                    near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
-                    dd = np.asarray(near) - np.asarray(at)
-                    L = float(np.hypot(*dd))
-                    if L > 1.5:
-                        start = tuple((np.asarray(at) + dd / L * 0.9).tolist())
-                        leaders.append(Line(start, near, style=THIN, name=f"leader-{name}"))
-                        occ.add_line((start, near))
+                _leader(occ, at, lab, leaders, name)
                 break
     if lab is None:
         lab = place_label(at, text, dirs[0], gap_mm=gaps[0], size_mm=size_mm)
@@ -229,17 +221,27 @@ def _first_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, dirs, ga
         if not ok.any():
             continue
         lab = cands[int(np.argmax(ok))]
-        if gap > gaps[-1] and leaders is not None:
-            b = label_bbox(lab)
-            near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
-            dd = np.asarray(near) - np.asarray(at)
-            L = float(np.hypot(*dd))
-            if L > 1.5:
-                start = tuple((np.asarray(at) + dd / L * 0.9).tolist())
-                leaders.append(Line(start, near, style=THIN, name=f"leader-{name}"))
-                occ.add_line((start, near))
+        if gap > gaps[-1]:
+            _leader(occ, at, lab, leaders, name)
         return lab
     return None
+
+
+def _leader(occ: Occupancy, at, lab, leaders: list | None, name: str) -> None:
+    """A thin leader from near ``at`` to the nearest point of the label's box, collected in ``leaders`` and
+    registered (when ``leaders`` collects them and the label is more than 1.5 mm away)."""
+    from graphmethods.scene.elements import label_bbox
+
+    if leaders is None:
+        return
+    b = label_bbox(lab)
+    near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
+    dd = np.asarray(near) - np.asarray(at)
+    L = float(np.hypot(*dd))
+    if L > 1.5:
+        start = tuple((np.asarray(at) + dd / L * 0.9).tolist())
+        leaders.append(Line(start, near, style=THIN, name=f"leader-{name}"))
+        occ.add_line((start, near))
 
 
 def _crossings(occ: Occupancy, boxes) -> np.ndarray:

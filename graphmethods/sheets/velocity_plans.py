@@ -283,7 +283,11 @@ def _equations(plans, k: int, nt, lk) -> list[str]:
             eq = f"v_{{{name}}} = v_{{{y}}} + v_{{{_rel_name(mech, name, y)}}}" if y else f"v_{{{name}}}"
             lines.append(f"{eq};  " + ",  ".join(parts))
         elif c.method == "similarity":
-            x, y = next((a, b) for a, b in mech.link_joints.values() if a + b == c.on or b + a == c.on)
+            ends = next(((a, b) for a, b in mech.link_joints.values() if a + b == c.on or b + a == c.on), None)
+            if ends is None:             # a point of a slider or block (it translates with it): as the record says
+                lines.append(c.equation)
+                continue
+            x, y = ends
             if c.on == y + x:
                 x, y = y, x
             ix, iy = (plans.label(x), plans.label(y))

@@ -86,10 +86,6 @@ def working_load(case: Any, motion: Any, positions: Any) -> list[tuple[str, Forc
     return [(link, Force(f"F_c{link}", np.asarray(F, dtype=complex), at, np.zeros(n)))]
 
 
-#: label prefixes of the external loads (the working load, the drawn form's loads) among a link's forces
-EXTERNAL = ("F_c", "M_c", "F_e", "M_e")
-
-
 def drawn_loads(info: Any, motion: Any) -> list[tuple[str, Force]]:
     """The constant loads of a drawn file (:class:`graphmethods.kinematics.drawn.DrawnLoad`) as (link, Force):
     a force at its point of the link, or a moment (drawn at a point of the link)."""

@@ -86,8 +86,6 @@ WORDS = {
     "reactions": ("Reactions (force of link i on link j)",
                   "Реакции (сила звена i на звено j)",
                   "运动副反力 (构件 i 对构件 j 的力)"),
-    "external": ("External loads (the working load included)", "Внешние нагрузки (с рабочей нагрузкой)",
-                 "外载荷 (含工作阻力)"),
     "balancing": ("Balancing moment on the crank (counterclockwise +)",
                   "Уравновешивающий момент на кривошипе (против часовой +)",
                   "曲柄上的平衡力矩 (逆时针为正)"),
