@@ -164,3 +164,25 @@ def test_a_uniform_phase_is_refused_by_the_sheet_with_the_reason():
     d["base_radius"] = 0.03
     with pytest.raises(InputError, match="uniform"):
         cam_sheet(design(cam_from_dict(d)))
+
+
+@pytest.mark.parametrize("name", list(CAMS))
+def test_the_inversion_step_by_step_takes_every_element_once(name):
+    from graphmethods.sheets.steps import build
+
+    bu = build(name, "inversion", notation="ru", page="A4")
+    assert len(bu) == 7
+    taken = [i for st in bu.steps for i in st.elements]
+    assert sorted(taken) == list(range(len(bu.figure.elements)))
+    assert bu.scene_at(len(bu)) == bu.figure
+    assert faults(measure(bu.figure)) == [] or all("empty" in f for f in faults(measure(bu.figure)))
+
+
+def test_a_cam_problem_has_only_the_inversion_steps():
+    from graphmethods.errors import InputError
+    from graphmethods.sheets.steps import build
+
+    with pytest.raises(InputError, match="inversion"):
+        build("shaper-cam", "velocity-plan")
+    with pytest.raises(InputError, match="inversion"):
+        build("press", "inversion")

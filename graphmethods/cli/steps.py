@@ -45,6 +45,7 @@ def add_parser(sub) -> None:
     p.add_argument("figure", metavar="FIGURE",
                    help="velocity-plan, acceleration-plan, force-plans, zhukovsky-lever (every force, M_b), "
                         "zhukovsky-load (the load alone, M_r), energy-indicator, wittenbauer, kinematic-diagrams, "
+                        "inversion (a cam problem's profile), "
                         "work-diagrams or kinematic-scheme")
     p.add_argument("--position", type=integer, default=None, metavar="K",
                    help="the position of a velocity, acceleration or force plan or of Zhukovsky's lever "

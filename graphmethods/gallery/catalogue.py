@@ -112,7 +112,8 @@ def problem(key: str) -> Any:
 
     ``case:NAME`` a built-in linkage (:func:`graphmethods.problems.builtin.case`); ``study:NAME`` its
     :class:`~graphmethods.dynamics.study.Study` at 12 positions; ``cycle:w1`` … ``cycle:w4-exact`` a
-    worked example; ``variant:KIND`` worksheet variant 1 of seed 7; and the few of their own
+    worked example; ``cam:NAME`` a built-in cam problem; ``variant:KIND`` worksheet variant 1 of seed 7; and the
+    few of their own
     (``drive:three-mass-drive``, ``flywheels:w1``, ``hyperbola:w1``).
     """
     kind, _, name = key.partition(":")
@@ -129,6 +130,10 @@ def problem(key: str) -> Any:
         from graphmethods import problems
 
         return getattr(problems, name.replace("-", "_"))()
+    if kind == "cam":
+        from graphmethods.problems import builtin
+
+        return builtin.cam_problem(name)
     if kind == "variant":
         from graphmethods.sheets import worksheets
 
@@ -144,6 +149,13 @@ def _F(name: str, problem: str, figure: str, language: str, options: Mapping[str
 
 
 CATALOGUE: tuple[Figure, ...] = (
+    _F("shaper_cam_sheet_en", "cam:shaper-cam", "cam_sheet.cam_sheet", "en", {},
+       "The shaper's table-feed cam on its A1 sheet: d²s/dφ² integrated twice by chords, the combined ds/dφ–s "
+       "diagram with the tangents at [α] and the zone of the cam centre, α(φ), the profile by inversion, the "
+       "results.", png=True),
+    _F("oscillating_cam_sheet_zh", "cam:oscillating-cam", "cam_sheet.cam_sheet", "zh", {},
+       "The oscillating roller follower's cam on its A1 sheet, Chinese notation: the motion diagrams by chords, "
+       "α(φ), the division points, the profile by inversion with the pivot's circle.", png=True),
     _F("drive_scheme_en", "drive:three-mass-drive", "drive_scheme.drive_scheme", "en", {},
        "A three-mass drive (motor 0.08 kg·m² at 6ω, intermediate gear 0.5 kg·m² at 2ω, crankshaft 12 kg·m²; shafts "
        "2000 N·m/rad at 6ω and 40 000 N·m/rad at ω) and its scheme reduced to the crankshaft, English notation."),

@@ -46,19 +46,33 @@ POLE_ROOM_MM = 45.0
 VALUE_AXIS_MM = 14.0
 
 
+def register_ink(occ: Occupancy, *elements: Element) -> None:
+    """Register everything the elements draw, circles (points, rollers) as 48-gons, so labels keep off it."""
+    from graphmethods.scene.primitives import Circle, walk
+
+    occ.register(*elements)
+    for e in elements:
+        for prim in walk(e.primitives()):
+            if isinstance(prim, Circle):
+                t = np.linspace(0.0, 2 * math.pi, 49)
+                xs, ys = prim.cx + prim.r * np.cos(t), prim.cy + prim.r * np.sin(t)
+                occ.add_line(list(zip(xs.tolist(), ys.tolist())))
+
+
 def segment(points: Sequence[tuple[float, float]], style: Style, *, name: str) -> Line:
     """A :class:`Line` between the first two of ``points`` (mm)."""
     return Line(points[0], points[1], style, name=name)
 
 
-def heading(box: Box, text: str, occ: Occupancy, name: str) -> tuple[list[Element], float]:
-    """A panel's heading at its top left, wrapped to its width; the elements and the y below it (mm)."""
+def heading(box: Box, text: str, occ: Occupancy, name: str, *, share: float = 0.9) -> tuple[list[Element], float]:
+    """A panel's heading at its top left, wrapped to ``share`` of its width; the elements and the y below it
+    (mm)."""
     from graphmethods.sheets.calculus import _wrap
 
     x0, y0, x1, _ = box
     out: list[Element] = []
     y = y0
-    for k, line in enumerate(_wrap(text, 0.9 * (x1 - x0), HEAD_MM)):
+    for k, line in enumerate(_wrap(text, share * (x1 - x0), HEAD_MM)):
         y += HEAD_MM * (1.0 if k == 0 else 1.3)
         out.append(Text((x0, y), line, size_mm=HEAD_MM, bold=True, name=f"{name}-title-{k + 1}"))
         occ.add_label(make_label((x0, y), line, size_mm=HEAD_MM, bold=True))
@@ -185,7 +199,7 @@ def band_elements(band: Band, occ: Occupancy, nt: Notation, *, label: str, name:
         for i, m in enumerate(means):
             els.append(Line(P, (band.x0, band.y0 - m / band.mu_y.per_mm), RAY, name=f"{name}-ray-{i}"))
         els.append(Point(P, radius_mm=0.8, name=f"{name}-pole"))
-    occ.register(*els)
+    register_ink(occ, *els)
     if integral is not None:
         P = (band.x0 - integral.H_mm, band.y0)
         text = nt.word("cam.pole", k=k, value=nt.number(integral.H_mm, sig=3))
@@ -325,7 +339,7 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
     x0, _, x1, y1 = box
     left, right, bottom = x0 + 16.0, x1 - 24.0, y1 - 10.0
     y_need = float(s.max()) + 1.3 * s0
-    mu = pick_scale(max((xb - xa) * 1.1 / (right - left), y_need / (bottom - top - 16.0)), 1.0, symbol="μ_l",
+    mu = pick_scale(max((xb - xa) * 1.1 / (right - left), y_need / (bottom - top - 16.0)), 1.0, symbol="μ′_l",
                     unit="m")
     pad = 0.5 * (mu.to_value(right - left) - (xb - xa))
     x_min, x_max = xa - pad, xb + pad
@@ -351,7 +365,7 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
              segment(P(np.array([0.0, 0.0]), np.array([y_lo, y_hi])), THIN, name="c-follower-line"),
              segment(P(np.array([x_min, x_max]), np.array([0.0, 0.0])), THIN, name="c-zero"),
              Line(O, P(0.0, 0.0)[0], LEVEL, name="c-r0"), Point(O, radius_mm=1.0, name="c-O")]
-    occ.register(*body)
+    register_ink(occ, *body)
     els += body
     r0 = f"O: {nt.sym('cam.r_0')} = {nt.number(cam.pitch_base_radius, sig=4)} {nt.unit('m')}"
     lab, leader = occ.place_label_with_leader(O, r0, ("e", "w", "ne", "nw", "se", "sw", "n"), size_mm=TEXT_MM,
@@ -410,7 +424,7 @@ def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, lim
         body.append(segment(band.pt(np.array([0.0, 2 * math.pi]), np.array([v, v])), LEVEL, name=f"{name}-lim-{k}"))
     y_bot = band.y0 - mu_y.to_mm(lo)
     body += [_phi_axis(band, y_bot + 6.5, nt, name), _value_axis(band, nt, label, name)]
-    occ.register(*body)
+    register_ink(occ, *body)
     return els + body, mu_y
 
 

@@ -21,7 +21,7 @@ Every number printed is the one ``graphmethods cam FILE --json`` prints (the sam
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -53,6 +53,7 @@ from graphmethods.sheets.cam_diagrams import (
     motion_column,
     nodes,
     positions_table,
+    register_ink,
     rho_graph,
     segment,
 )
@@ -170,14 +171,14 @@ def inversion(cam: CamDesign, n_div: int) -> Inversion:
     return Inversion(phi_k, dense.pitch, dense.profile, st.pitch, followers, arc, stem)
 
 
-def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_div: int
-                  ) -> tuple[list[Element], Scale]:
+def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_div: int,
+                  heading_share: float = 0.9) -> tuple[list[Element], Scale]:
     """The profile by inversion (see the module docstring), as large as the box allows."""
     p = cam.problem
     geo = inversion(cam, n_div)
     pts = geo.points()
     x0, y0, x1, y1 = box
-    head, top = heading(box, nt.word("cam.profile"), occ, "profile")
+    head, top = heading(box, nt.word("cam.profile"), occ, "profile", share=heading_share)
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     mu = pick_scale(max((hi[0] - lo[0]) / (x1 - x0 - 10.0), (hi[1] - lo[1]) / (y1 - top - 12.0)), 1.0,
                     symbol="μ_l", unit="m")
@@ -205,16 +206,11 @@ def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     els += [Point(q, radius_mm=0.7, name=f"B-{i}") for i, q in enumerate(P(geo.pitch_k))]
     els += _follower_at_zero(cam, geo, P, mu)
     els.append(Point((cx, cy), radius_mm=1.0, name="O"))
-    occ.register(*els)
-    for e in els:
-        if isinstance(e, Circles):
-            for x, y, r in e.circles:
-                t = np.linspace(0.0, 2 * math.pi, 49)
-                occ.add_line(list(zip((x + r * np.cos(t)).tolist(), (y + r * np.sin(t)).tolist())))
-    els += _alpha_mark(cam, P, occ, nt, box)
-    els += _numbers(P(geo.pitch_k), (cx, cy), occ, box)
+    register_ink(occ, *els)
     lab = occ.place_label((cx, cy), "O", ("sw", "se", "nw", "ne", "s", "w"), size_mm=TEXT_MM, within=box)
     els.append(Text((lab.x, lab.y), "O", size_mm=TEXT_MM, anchor=lab.anchor, name="O-name"))
+    els += _alpha_mark(cam, P, occ, nt, box)
+    els += _numbers(P(geo.pitch_k), (cx, cy), occ, box)
     return head + els, mu
 
 
@@ -261,7 +257,7 @@ def _alpha_mark(cam: CamDesign, P: Any, occ: Occupancy, nt: Notation, box: Box) 
     rad = np.array([math.radians(f)] * 2)
     out: list[Element] = [segment(P(_rot(np.array([B, B + L * n]), rad, p.sense)), THIN, name="alpha-normal"),
                           segment(P(_rot(np.array([B, B + L * u]), rad, p.sense)), DASHED, name="alpha-velocity")]
-    occ.register(*out)
+    register_ink(occ, *out)
     text = nt.word("cam.alpha_max", sym=nt.sym("cam.alpha"), value=nt.number(a, sig=4))
     at = P(_rot(np.array([B + 0.6 * L * (n + u) / 2]), rad[:1], p.sense))[0]
     lab, leader = occ.place_label_with_leader(at, text, ("ne", "nw", "se", "sw", "e", "w"), size_mm=TEXT_MM,
@@ -380,4 +376,31 @@ def cam_sheet(cam: CamDesign | CamProblem, *, notation: Any = "en", n_div: int =
     return Scene(page, elements, title=title, notation=nt.code, name=name, extra_scales=tuple(scales))
 
 
-__all__ = ["cam_sheet", "profile_panel", "results_rows"]
+def cam_inversion(cam: CamDesign | CamProblem, *, notation: Any = "en", page: Page | None = None,
+                  title_block: bool = True, n_div: int = 8, name: str = "cam-inversion") -> Scene:
+    """The profile by inversion alone, on its own page (A4 landscape by default): the lecture's figure.
+
+    Its elements are the profile panel's, by name (``base-circle``, ``follower-k``, ``B-k``, ``number-k``,
+    ``pitch-curve``, ``rollers``, ``profile``, ``stem-0``, ``alpha-…``), so the steps can split it.
+
+    >>> from graphmethods.problems.builtin import cam_problem
+    >>> s = cam_inversion(cam_problem("oscillating-cam"))
+    >>> s.page.size, "pivot-circle" in [e.name for e in s.elements]
+    ('A4', True)
+    """
+    if isinstance(cam, CamProblem):
+        cam = design(cam)
+    nt = get_notation(notation)
+    title = nt.word("cam.inversion")
+    pg = page if page is not None else Page("A4", "landscape", frame=True)
+    probe = pg if pg.title_block is not None or not title_block else pg.with_(title_block=TitleBlock(
+        title, cam.problem.title.title_in(nt.code), ("μ_l",),
+        headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")), size_mm=TEXT_MM))
+    occ = FastOccupancy()
+    els, mu = profile_panel(cam, probe.content_box(), occ, nt, n_div=n_div, heading_share=0.55)
+    if title_block and probe.title_block is not None:
+        probe = probe.with_(title_block=replace(probe.title_block, scales=(mu.caption(nt),)))
+    return Scene(probe, tuple(els), title=title, notation=nt.code, name=name, extra_scales=(mu,))
+
+
+__all__ = ["cam_inversion", "cam_sheet", "profile_panel", "results_rows"]

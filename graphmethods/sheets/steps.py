@@ -663,6 +663,13 @@ from graphmethods.sheets.construction_steps import (  # noqa: E402
 # ----------------------------------------------------------------------------- by name
 
 #: figure name -> (step source, what it needs: "linkage" or "cycle")
+def _inversion_steps(cam: Any, *, notation: Any = "en", page: Any = "slide") -> BuildUp:
+    """The cam profile by inversion (:func:`graphmethods.sheets.cam_steps.inversion_steps`)."""
+    from graphmethods.sheets.cam_steps import inversion_steps
+
+    return inversion_steps(cam, notation=notation, page=page)
+
+
 FIGURES: dict[str, tuple[Callable, str]] = {
     "velocity-plan": (velocity_plan_steps, "linkage"),
     "acceleration-plan": (acceleration_plan_steps, "linkage"),
@@ -674,6 +681,7 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "zhukovsky-lever": (zhukovsky_forces_steps, "linkage"),
     "zhukovsky-load": (zhukovsky_steps, "study"),
     "kinematic-scheme": (scheme_steps, "linkage"),
+    "inversion": (_inversion_steps, "cam"),
 }
 
 #: the figures drawn in one position (``--position K``)
@@ -683,6 +691,20 @@ POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-le
 LINKAGES = {"press": "slider_crank_press.json", "four-bar": "four_bar_rocker.json",
             "slotted-lever": "slotted_lever.json", "shaper": "shaper.json"}
 CYCLES = ("W1", "W2", "W3", "W4")
+
+
+def _is_cam_file(text: str) -> bool:
+    """Whether ``text`` names a ``"kind": "cam"`` problem file."""
+    from graphmethods.units import json_value
+
+    p = pathlib.Path(text)
+    if not p.is_file():
+        return False
+    try:
+        data = json_value(p.read_text(encoding="utf-8"), text)
+    except (InputError, OSError, UnicodeDecodeError):
+        return False
+    return isinstance(data, dict) and data.get("kind") == "cam"
 
 
 def resolve_case(case):
@@ -701,6 +723,8 @@ def resolve_case(case):
     low = text.lower().replace("_", "-")
     from graphmethods.problems import builtin as every
 
+    if low in every.CAMS or _is_cam_file(text):
+        return every.cam_problem(text)
     if low in LINKAGES or low in every.LINKAGES:
         from graphmethods.kinematics import read_case
 
@@ -752,6 +776,15 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
     fn, needs = FIGURES[key]
     obj = resolve_case(case)
     is_linkage = isinstance(obj, Case)
+    if (needs == "cam") != (getattr(obj, "kind", "") == "cam"):
+        raise InputError(f"{key} is not drawn for {case}: a cam problem's construction is the inversion "
+                         f"(graphmethods steps CAM inversion); the others need a linkage or a cycle")
+    if needs == "cam":
+        def make_cam(pg):
+            return fn(obj, notation=notation, page=pg)
+        if isinstance(page, str) and page.strip().lower() == "slide":
+            return for_projector(make_cam)
+        return make_cam(page)
     if position is not None and key not in POSITIONED:
         raise InputError(f"--position is for the velocity, acceleration and force plans and Zhukovsky's lever only, "
                          f"not for {key}")

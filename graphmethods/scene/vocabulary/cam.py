@@ -89,6 +89,26 @@ WORDS = {
     "none":         ("none", "нет", "无"),
     "row_error":    ("chord integration error in s at the {n} nodes", "погрешность интегрирования хордами в S "
                      "в {n} точках", "弦线法积分的位移误差（{n}个分点）"),
+    "inversion":    ("Cam profile by inversion of motion", "Построение профиля кулачка методом обращения движения",
+                     "反转法绘制凸轮廓线"),
+    "step_base":    ("Centre O and the base circle, to {mu}: the cam stands still, the follower turns by −φ",
+                     "Центр O и основная окружность в масштабе {mu}: кулачок неподвижен, толкатель поворачиваем на −φ",
+                     "画凸轮中心 O 和基圆（{mu}）：凸轮不动，从动件反转 −φ"),
+    "step_lines":   ("Turn the follower back by −φ_k at each division point k (its axis, or the arm from its pivot)",
+                     "Поворачиваем толкатель на −φ_k в каждой точке деления k (его ось или коромысло от опоры)",
+                     "在各分点 k 将从动件反转 −φ_k（导路或摆杆）"),
+    "step_points":  ("Lay off s_k on each turned position: the roller centres (pitch points) B_k",
+                     "Откладываем S_k на каждом повёрнутом положении: центры ролика B_k",
+                     "在各反转位置上量取 s_k，得滚子中心 B_k"),
+    "step_pitch":   ("Join B_0 … B_n by a smooth curve: the pitch curve", "Соединяем B_0 … B_n плавной кривой: "
+                     "центровой профиль", "光滑连接 B_0 … B_n，得理论廓线"),
+    "step_rollers": ("Draw the roller (or the flat face) in each position", "Строим ролик (или тарелку) в каждом "
+                     "положении", "在各位置画出滚子（或平底）"),
+    "step_profile": ("The profile is the envelope of the rollers (the faces): r_b = {rb}",
+                     "Профиль — огибающая роликов (тарелок): r_b = {rb}", "廓线为滚子（平底）的包络线：r_b = {rb}"),
+    "step_alpha":   ("The follower in position 0 and the largest pressure angle {alpha}",
+                     "Толкатель в положении 0 и наибольший угол давления {alpha}",
+                     "位置 0 的从动件及最大压力角 {alpha}"),
     "row_omega":    ("cam speed", "угловая скорость кулачка", "凸轮角速度"),
 }
 
