@@ -38,7 +38,9 @@ from graphmethods.sheets.check import validate_answers
 from graphmethods.units import count, real
 
 DATA = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems" / "data"
-CASES = {p.stem: json.loads(p.read_text(encoding="utf-8")) for p in sorted(DATA.glob("*.json"))}
+# every shipped problem file: the group form, the cams and the drawn form (drawn/NAME), mutated alike
+CASES = {str(p.relative_to(DATA).with_suffix("")): json.loads(p.read_text(encoding="utf-8"))
+         for p in sorted(DATA.glob("*.json")) + sorted((DATA / "drawn").glob("*.json"))}
 HANG_S = 20
 # no "explain" phase: its line tracing slows every call tenfold and would pass for a hang
 PHASES = [Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink]
