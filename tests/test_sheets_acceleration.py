@@ -27,7 +27,10 @@ def _drawn_vector(rec, name: str) -> complex:
 
 
 def _special_point_a(lk, mo, point, k):
-    """a of Assur's special point K of a triad from the core: a point of the basic link t, a_K = a_B + (iε_t − ω_t²)(K − B)."""
+    """a of Assur's special point K of a triad from the core, a point of its basic link t.
+
+    a_K = a_B + (iε_t − ω_t²)(K − B).
+    """
     g = next(g for g in lk.groups if g.kind == "triad" and g.special == point)
     K = complex(g.special_point(mo._state)[0][k])
     B, t = g.inner[0], str(g.links[0])
