@@ -8,6 +8,7 @@ import pytest
 from figure_checks import assert_fits_and_labels_apart
 from test_sheets_kinematics import _check_plan
 
+from graphmethods.errors import InputError
 from graphmethods.kinematics import read_case
 from graphmethods.render.recording import record
 from graphmethods.sheets import kinematics as ks
@@ -16,7 +17,13 @@ DATA = pathlib.Path(__file__).resolve().parents[1] / "graphmethods" / "problems"
 FILES = sorted(p.name for p in DATA.glob("*.json") if json.loads(p.read_text()).get("kind") == "linkage")
 
 
-@pytest.mark.parametrize("name", FILES)
+_TRIAD_TABLE = pytest.mark.xfail(strict=True, raises=InputError, reason=(
+    "triad_six_bar.json: the velocity table of a class III six-bar (9 points, 5 links) is 357 mm wide, "
+    "the A4 sheet leaves 267 mm (as in test_every_sheet_layout's KNOWN)"))
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=_TRIAD_TABLE) if n == "triad_six_bar.json" else n
+                                  for n in FILES])
 @pytest.mark.parametrize("lang", ["en", "zh"])
 def test_figures_of_linkage_files_fit_and_plans_are_to_scale(name, lang):
     case = read_case(DATA / name)

@@ -121,7 +121,7 @@ def test_linkage_figures_draw_the_title_in_their_language(name, nt):
     case = read_case(DATA / f"{name}.json")
     title = title_of(case)
     for scene in linkage_figures(case, nt):
-        texts = drawn(scene)
+        texts = " ".join(drawn(scene).split())            # the ГОСТ title block wraps a long title in its cell
         assert title.title_in("en") not in texts, f"{name} {scene.name} ({nt}) draws the English title"
         assert title.title_in(nt) in texts, f"{name} {scene.name} ({nt}) does not draw the {nt} title"
 

@@ -208,7 +208,10 @@ def load_switch_angles(mechanism: LinkageMechanism, load: Load | DiagramLoad) ->
         if settled.all():
             break
     a, b = 0.5 * (lo + hi)
-    return float(a), float(b)
+    # a switch at a dead centre (fraction 0 or 1) is the stroke's own end, exact: the fraction touches its
+    # target there with zero slope, so bisection would only find it to √ε (1e-8 rad)
+    return (0.0 if load.start <= 0.0 else float(a),
+            float(strokes.working_angle) if load.end >= 1.0 else float(b))
 
 
 def load_work(mechanism: LinkageMechanism, load: Load | DiagramLoad) -> float:

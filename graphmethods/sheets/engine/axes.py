@@ -34,6 +34,24 @@ def _clean(v: float) -> float:
     return 0.0 if r == 0 else r
 
 
+def _tick_indices(lo: float, hi: float, step: float) -> tuple[int, int]:
+    """The first and last multiples of ``step`` covering [lo, hi], forgiving only round-off.
+
+    A value within 1e-9 of a multiple, relative to the value (and absolute below 1, unless the whole
+    range is smaller), counts as on it: ``0.30000000000000004`` and a noise of 1e-15 about 0 add no
+    interval, a real 1.2e-7 above 0 does.
+
+    >>> _tick_indices(-101.0, 1.2e-7, 200.0), _tick_indices(-17.3, 6.8e-16, 5.0)
+    ((-1, 1), (-4, 0))
+    """
+    span = hi - lo
+
+    def slack(v: float) -> float:
+        return 1e-9 * min(max(1.0, abs(v)), max(abs(v), span))
+
+    return math.floor((lo + slack(lo)) / step), math.ceil((hi - slack(hi)) / step)
+
+
 def nice_step(lo: float, hi: float, max_n: int) -> float:
     """The step of :func:`nice_ticks`: the smallest 1, 2, 2.5, 5 × 10ᵏ covering [lo, hi] in ≤ max_n intervals.
 
@@ -55,8 +73,7 @@ def nice_step(lo: float, hi: float, max_n: int) -> float:
     for e in (k - 1, k, k + 1):
         for m in STEPS:
             step = float(f"{m!r}e{e}")
-            first = math.floor(lo / step + 1e-9)
-            last = math.ceil(hi / step - 1e-9)
+            first, last = _tick_indices(lo, hi, step)
             if last - first <= max_n and step >= raw * (1 - 1e-12):
                 return step
     return float(f"1e{k + 2}")                       # pragma: no cover - 10^(k+1) always fits
@@ -90,8 +107,7 @@ def nice_ticks(lo: float, hi: float, max_n: int = 6) -> tuple[float, ...]:
     if lo == hi:
         span = abs(hi) or 1.0
         lo, hi = lo - span / 2, hi + span / 2
-    first = math.floor(lo / step + 1e-9)
-    last = math.ceil(hi / step - 1e-9)
+    first, last = _tick_indices(lo, hi, step)
     return tuple(_clean(i * step) for i in range(first, last + 1))
 
 
