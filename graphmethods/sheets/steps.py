@@ -227,7 +227,7 @@ def projector_figure(make: Callable[[Page], Scene]) -> Scene:
     >>> from graphmethods.problems import builtin
     >>> from graphmethods.sheets.forces import force_scheme
     >>> s = projector_figure(lambda pg: force_scheme(builtin.case("press"), 3, page=pg, title_block=False))
-    >>> s.page.size, any(n.startswith("drawn 1.2 : 1") for n in s.notes)
+    >>> s.page.size, any(n.startswith("drawn 1.3 : 1") for n in s.notes)
     ('SLIDE', True)
     """
     from graphmethods.scene.steps import Step
