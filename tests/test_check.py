@@ -416,9 +416,9 @@ def test_the_overlay_lines_in_three_notations():
         "ωmin: 62.62 (expected 62.73) rad/s — (1 ± δ) instead of (1 ± δ/2)",
         "JF: 0.6458 (expected 43.69) kg·m² — n (rev/min) used as ω (rad/s)"]
     r = ck.check("press", ANSWERS / "press_wittenbauer_mistakes.toml")
-    assert red_list(r.overlay(notation="ru"))[1:3] == ["kl: 132,1 (должно быть 126,7) мм — не вычтен Jп",
+    assert red_list(r.overlay(notation="ru"))[1:3] == ["kl: 136,5 (должно быть 131,1) мм — не вычтен Jп",
                                                        "положение ωmin: 7 (должно быть 5) — неверно"]
-    assert "kl = 132,1 мм?" in record(r.overlay(notation="ru")).texts()
+    assert "kl = 136,5 мм?" in record(r.overlay(notation="ru")).texts()
     assert "ωmin 所在位置：7（应为 5）——错误" in red_list(r.overlay(notation="zh"))
 
 

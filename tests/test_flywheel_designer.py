@@ -124,15 +124,16 @@ def test_hyperbola_figure_is_to_scale():
     ox, oy = ax_d.origin
     curve = s.element("hyperbola")
     assert isinstance(curve, Polyline)
+    # the abscissa is 1/[δ] (the hyperbola J_F = W/(ω_m²·[δ]) − J_e drawn against it is a straight line)
     x = (np.array([p[0] for p in curve.points]) - ox) * ax_d.scale.per_mm
     y = (oy - np.array([p[1] for p in curve.points])) * ax_J.scale.per_mm
-    assert x.min() == pytest.approx(1 / 300) and x.max() == pytest.approx(1 / 5)
-    assert np.allclose(y, W / (w**2 * x) - Je, rtol=1e-9, atol=1e-9)
+    assert x.min() == pytest.approx(5) and x.max() == pytest.approx(300)
+    assert np.allclose(y, W * x / w**2 - Je, rtol=1e-9, atol=1e-9)
     chosen = s.element("chosen")
     assert isinstance(chosen, Point)
-    d = (chosen.at[0] - ox) * ax_d.scale.per_mm
-    assert d == pytest.approx(1 / 10)              # the press row's strict end
-    assert (oy - chosen.at[1]) * ax_J.scale.per_mm == pytest.approx(W / (w**2 * d) - Je)
+    inv_d = (chosen.at[0] - ox) * ax_d.scale.per_mm
+    assert inv_d == pytest.approx(10)              # the press row's strict end, [δ] = 1/10
+    assert (oy - chosen.at[1]) * ax_J.scale.per_mm == pytest.approx(W * inv_d / w**2 - Je)
 
 
 def test_hyperbola_cli_writes_once(capsys, tmp_path):

@@ -398,8 +398,8 @@ def test_study_command_writes_pdf_and_nothing_on_error(tmp_path, capsys, press_c
     bad = tmp_path / "bad.json"
     bad.write_text('{"r": 0.1}', encoding="utf-8")
     assert main(["study", str(bad), "--sheet", str(tmp_path / "x.svg")]) == 2
-    assert main(["study", str(press_case_path), "--sheet", str(tmp_path / "x.png")]) == 2
+    assert main(["study", str(press_case_path), "--sheet", str(tmp_path / "x.jpg")]) == 2   # .png is a format now
     assert main(["study", str(press_case_path), "--sheet", str(tmp_path / "no" / "x.svg")]) == 2
     err = capsys.readouterr().err
-    assert ".svg, .pdf or .dxf" in err and "does not exist" in err
+    assert ".svg, .pdf, .png or .dxf" in err and "does not exist" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json", "sheet.pdf"]

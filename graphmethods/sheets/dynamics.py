@@ -548,7 +548,7 @@ def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: flo
     >>> from graphmethods.scene import notation
     >>> t, labels, name = inertia_ticks(0.0517, 0.0552, Scale("μ_J", "kg·m²", 2e-5), notation("en"))
     >>> labels[:3], name
-    (('52', '52.5', '53'), 'J_e, 10⁻³ kg·m²')
+    (('51.75', '52', '52.25'), 'J_e, 10⁻³ kg·m²')
     """
     nt = get_notation(nt)
     top = max(abs(J_from), abs(J_to))
@@ -682,8 +682,8 @@ def moment_graph(study, *, mu_M=None, mu_phi=None, notation="en", page=None, tit
     >>> from graphmethods.kinematics import read_case
     >>> press = read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json")
     >>> s = moment_graph(press, mu_M=5.0)
-    >>> round(s.element("axis-phi").origin[1] - s.element("curve-M_d").points[0][1], 6)   # 155.3 N·m at 5 N·m/mm
-    31.054517
+    >>> round(s.element("axis-phi").origin[1] - s.element("curve-M_d").points[0][1], 6)   # 143.4 N·m at 5 N·m/mm
+    28.685531
     """
     study = as_study(study)
     nt = get_notation(notation)

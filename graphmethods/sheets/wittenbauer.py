@@ -27,7 +27,7 @@ The construction itself (support lines, tangencies, the error estimate) is
 >>> study = Study(press, positions=12)
 >>> scene = wittenbauer_diagram(study)
 >>> [s.caption() for s in scene.scales()], "exact" in study.computed
-(['μ_T = 10 J/mm', 'μ_J = 0.005 kg·m²/mm'], False)
+(['μ_T = 5 J/mm', 'μ_J = 0.002 kg·m²/mm'], False)
 """
 
 from __future__ import annotations
@@ -609,7 +609,7 @@ def inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[S
     >>> from graphmethods.scene import notation
     >>> s, J_0 = inertia_scale(None, notation("en"), 0.0542, 0.0682, 200.0)
     >>> s.per_mm, J_0, s.to_mm(0.0682 - J_0) <= 200.0
-    (0.0001, 0.052, True)
+    (0.0001, 0.05, True)
     """
     symbol, unit = nt.sym("dynamics.mu_J"), nt.unit("kg·m²")
     if not suppressed_zero(J_lo, J_hi):
@@ -651,7 +651,7 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     (0.01, 5.0, 132.63)
     >>> s = wittenbauer_diagram(res, notation="zh")           # redrawn to scales that fit the sheet
     >>> s.element("label-kl").text, [sc.caption("zh") for sc in s.scales()]
-    ('kl = 66.31 mm', ['μ_E = 10 J/mm', 'μ_J = 0.02 kg·m²/mm'])
+    ('kl = 69.11 mm', ['μ_E = 10 J/mm', 'μ_J = 0.01 kg·m²/mm'])
     """
     nt = get_notation(notation)
     data = diagram_data(source, tangents=tangents, notation=nt)

@@ -230,20 +230,21 @@ def press_wittenbauer(mistakes: bool):
         msp.add_text(str(i), height=2.5).set_placement((q[0] + 1.2, q[1] + 1.0))
     k = o + np.array([0.0, res.k_mm + 0.15])
     l_ = o + np.array([0.0, res.l_mm - 0.2])
-    for start, tan in ((k, res.tan_psi_max), (l_, res.tan_psi_min)):
-        tan = math.tan(math.atan(tan) + math.radians(0.15 if tan > res.tan_psi_min else -0.1))   # a hand's slip
-        d = np.array([1.0, tan]) / math.hypot(1.0, tan)
-        msp.add_line(tuple(start - 12.0 * d), tuple(start + 170.0 * d))
+    reach = (12.0, 170.0)                                         # the rays' lengths behind and past k, l
     kl = res.kl_mm + 0.35
     if mistakes:                 # k and l on the vertical through the curve's leftmost point (J_e not subtracted)
         x_min = o[0] + float(J.min()) / mu_J
         msp.add_line((x_min, 12.0), (x_min, 280.0))
-        cross = []
-        for start, tan in ((k, res.tan_psi_max), (l_, res.tan_psi_min)):
-            tan = math.tan(math.atan(tan) + math.radians(0.15 if tan > res.tan_psi_min else -0.1))
-            cross.append(start + (x_min - start[0]) * np.array([1.0, tan]))
-        k, l_ = cross
+        # the student marks k and l on that vertical and draws the rays through them (the hand's slip
+        # turns each ray about its mark, so the marks stay within the drafting tolerance)
+        k = k + (x_min - o[0]) * np.array([1.0, res.tan_psi_max])
+        l_ = l_ + (x_min - o[0]) * np.array([1.0, res.tan_psi_min])
+        reach = (12.0 + x_min - o[0], 170.0 - (x_min - o[0]))
         kl = float(k[1] - l_[1])
+    for start, tan in ((k, res.tan_psi_max), (l_, res.tan_psi_min)):
+        tan = math.tan(math.atan(tan) + math.radians(0.15 if tan > res.tan_psi_min else -0.1))   # a hand's slip
+        d = np.array([1.0, tan]) / math.hypot(1.0, tan)
+        msp.add_line(tuple(start - reach[0] * d), tuple(start + reach[1] * d))
     msp.add_text("k", height=3.5).set_placement((k[0] - 4.5, k[1] + 1.2))
     msp.add_text("l", height=3.5).set_placement((l_[0] - 3.8, l_[1] - 4.0))
     omega = case.n_rpm if mistakes else case.omega_m             # n (rev/min) used as ω in J_F

@@ -1,0 +1,170 @@
+"""The projector slide: a figure or a construction's steps laid out on a smaller design page and
+drawn z : 1 on a 16:9 slide, so its text reads from the back of a lecture hall.
+
+:func:`for_projector` sizes the steps of :mod:`graphmethods.sheets.steps`; :func:`projector_figure`
+does the same for any one figure; :func:`layout_faults` says what leaves the slide or covers text.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from graphmethods.errors import InputError
+from graphmethods.scene import Page, Scene
+from graphmethods.scene.steps import PROJECTOR_TEXT, BuildUp, DesignPage, enlarge
+
+#: the gap between the figure's page and the caption box, mm
+CAPTION_GAP_MM = 1.5
+
+#: the 16:9 slide the steps are shown on (no frame, no title block)
+SLIDE_PAGE = Page("slide", "landscape", margins_mm=(8.0, 8.0, 4.0, 8.0), frame=False)
+#: how much a slide's design page may be enlarged, tried from the largest down
+ZOOMS = (1.9, 1.8, 1.7, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)
+
+
+def design_slide(z: float) -> Page:
+    """The slide laid out at 1/z of its size (margins too), to be drawn z : 1 (:class:`DesignPage`).
+
+    >>> p = design_slide(2.0)
+    >>> p.width_mm, p.margins_mm
+    (169.35, (4.0, 4.0, 2.0, 4.0))
+    """
+    if z == 1.0:
+        return SLIDE_PAGE
+    t, r, b, left = SLIDE_PAGE.margins_mm
+    return DesignPage("slide", "landscape", margins_mm=(t / z, r / z, b / z, left / z), frame=False, enlarged=z)
+
+
+def smallest_text_mm(bu: BuildUp) -> float:
+    """The smallest text of the steps' slides, mm: the figure's labels and the step captions."""
+    from graphmethods.render.recording import record
+
+    sizes = [c.data.size_mm for c in record(bu.figure).calls if c.kind == "text"]
+    return min(sizes + [bu.caption_mm])
+
+
+def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
+    """Steps on a 16:9 slide with text sized for a projector.
+
+    The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
+    about 1/70 of its height. So the figure is laid out on a smaller design page, 1/z of the
+    slide, and the whole drawing (text, lines, captions) is drawn z : 1: nothing is laid out
+    anew, so nothing can come to overlap or leave the frame. z is the smallest of :data:`ZOOMS`
+    that makes the smallest text :data:`~graphmethods.scene.steps.PROJECTOR_TEXT` of the slide's
+    height (1/40: 4.8 mm), or, for a figure too dense for that, the largest at which its layout
+    still fits. The scales and millimetres written stay those of the drawing at 1 : 1; a note on
+    the slide says so.
+
+    Parameters
+    ----------
+    make : callable
+        Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
+    """
+    bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
+    reference = make(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+    drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
+
+    def holds(bu: BuildUp, z: float) -> bool:
+        """No overlap, nothing out of the page, and the construction drawn on the slide at least
+        :data:`KEEP_SIZE` as large as at 1 : 1 (a figure that keeps fixed margins for its labels
+        would otherwise shrink its drawing to make room)."""
+        if layout_faults(bu):
+            return False
+        return all(z / sc.per_mm >= KEEP_SIZE / drawn[sc.symbol, sc.unit] for sc in bu.figure.scales()
+                   if (sc.symbol, sc.unit) in drawn and sc.unit not in ("rad", "°"))
+
+    def attempt(z: float) -> BuildUp | None:
+        try:
+            bu = make(design_slide(z))
+        except InputError:
+            return None
+        return bu if holds(bu, z) else None
+
+    need = bound / smallest_text_mm(reference)          # the text sizes do not depend on the page
+    # the candidates, largest first: the smallest enlargement that is enough, and every one below it
+    enough = [w for w in ZOOMS[:-1] if w >= need - 1e-9]
+    candidates = [w for w in ZOOMS[:-1] if w <= (enough[-1] if enough else ZOOMS[0]) + 1e-9]
+    # a smaller enlargement leaves more room, so the ones that hold are a tail of the list: bisect
+    lo, hi, best = 0, len(candidates) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        found = attempt(candidates[mid])
+        if found is not None:
+            best, hi = found, mid - 1
+        else:
+            lo = mid + 1
+    return _on_slide(best if best is not None else reference)
+
+
+def layout_faults(bu: BuildUp) -> list[str]:
+    """What in the finished figure leaves the page's inner box (down to the caption box) or covers
+    other text: estimated label boxes (as the layout estimates them) and every line's points.
+
+    >>> from graphmethods.sheets.steps import build
+    >>> layout_faults(build("W1", "energy-indicator", page="A4"))
+    []
+    """
+    from graphmethods.render.recording import record
+    from graphmethods.scene.elements import label_bbox
+
+    fig = bu.figure
+    x0, y0, x1, _ = fig.page.inner_box()
+    y1 = bu.caption_box[1]                     # down to the caption box
+    tol = 0.05
+    faults: list[str] = []
+    boxes: list[tuple[str, tuple[float, float, float, float]]] = []
+    for c in record(fig).calls:
+        owner = c.groups[0] if c.groups else ""
+        if c.kind == "text":
+            b = label_bbox(c.data)
+            boxes.append((owner, b))
+        elif c.kind in ("path", "polygon"):
+            points = c.data[0] if c.kind == "path" else c.data
+            xs, ys = [p[0] for p in points], [p[1] for p in points]
+            b = (min(xs), min(ys), max(xs), max(ys))
+        else:
+            continue
+        if b[0] < x0 - tol or b[1] < y0 - tol or b[2] > x1 + tol or b[3] > y1 + tol:
+            faults.append(f"{owner} leaves the page's inner box")
+    for i, (na, a) in enumerate(boxes):
+        for nb, b in boxes[i + 1:]:
+            if na != nb and min(a[2], b[2]) - max(a[0], b[0]) > 0.3 and min(a[3], b[3]) - max(a[1], b[1]) > 0.3:
+                faults.append(f"{na} covers {nb}")
+    return faults
+
+
+def projector_figure(make: Callable[[Page], Scene]) -> Scene:
+    """Any figure on a 16:9 slide with its text sized for a projector, as :func:`for_projector`
+    sizes the steps' slides (no caption band): ``make`` draws the figure on a given page.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import force_scheme
+    >>> s = projector_figure(lambda pg: force_scheme(builtin.case("press"), 3, page=pg, title_block=False))
+    >>> s.page.size, any(n.startswith("drawn 1.3 : 1") for n in s.notes)
+    ('SLIDE', True)
+    """
+    from graphmethods.scene.steps import Step
+
+    def as_steps(page: Page) -> BuildUp:
+        fig = make(page)
+        x0, _, x1, y1 = page.inner_box()
+        y1 += CAPTION_GAP_MM / float(getattr(page, "enlarged", 1.0))   # the last line's descenders, in the margin
+        return BuildUp(fig, (Step("", tuple(range(len(fig.elements)))),), (x0, y1, x1, y1), caption_mm=1e3)
+
+    return for_projector(as_steps).figure
+
+
+def _on_slide(bu: BuildUp) -> BuildUp:
+    """The steps drawn on the whole slide: enlarged from their design page (z = 1: as they are),
+    the caption band inside the slide's margins."""
+    z = float(getattr(bu.figure.page, "enlarged", 1.0))
+    return enlarge(bu, SLIDE_PAGE, note_mm=SLIDE_NOTE_MM / z)
+
+
+#: an enlarged slide draws the construction at least this fraction of its size at 1 : 1
+KEEP_SIZE = 0.75
+
+#: the enlargement note's size on the slide, mm
+SLIDE_NOTE_MM = 5.0
