@@ -41,7 +41,7 @@ class FontFormatError(ValueError):
 
 def _checksum(data: bytes) -> int:
     padded = data + b"\0" * (-len(data) % 4)
-    return int(np.frombuffer(padded, dtype=">u4").sum(dtype=np.uint64) & 0xFFFFFFFF)
+    return int(np.frombuffer(padded, dtype=">u4").sum(dtype=np.uint64)) & 0xFFFFFFFF   # numpy 1.23: no uint64 & int
 
 
 class Sfnt:
