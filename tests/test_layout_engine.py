@@ -4,7 +4,7 @@ labels placed against ink, lettering per format."""
 import math
 
 import pytest
-from hypothesis import given, strategies as st
+from hypothesis import example, given, strategies as st
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Line, Page, Scene, Text
@@ -28,6 +28,8 @@ finite = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinit
 
 
 @given(finite, finite, st.integers(min_value=2, max_value=12))
+@example(0.0, 5e-324, 2)              # a subnormal range (found on numpy 1.23's floors)
+@example(1.19e-7, -101.0, 2)
 def test_nice_ticks_cover_the_data_at_a_nice_step_in_at_most_max_n_intervals(a, b, n):
     lo, hi = min(a, b), max(a, b)
     t = nice_ticks(lo, hi, n)

@@ -65,8 +65,8 @@ def nice_step(lo: float, hi: float, max_n: int) -> float:
         raise InputError(f"max_n = {max_n!r}: give a whole number of intervals ≥ 1")
     if hi < lo:
         lo, hi = hi, lo
-    if hi == lo:
-        span = abs(hi) or 1.0
+    if hi - lo < 1e-300:             # equal values, or closer than a normal float can step (subnormal)
+        span = max(abs(hi), abs(lo), 1e-300) if (hi or lo) else 1.0
         lo, hi = lo - span / 2, hi + span / 2
     raw = (hi - lo) / max_n
     k = math.floor(math.log10(raw))
