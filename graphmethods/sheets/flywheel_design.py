@@ -121,7 +121,10 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     nt = get_notation(notation)
     if not hasattr(rim, "H") and disc is None:       # a disc alone (flywheel --disc without --rim)
         rim, disc = None, rim
-    sheet = SheetFrame(nt=nt, page=page, title=title or nt.word("flywheel.design_title"), problem=problem,
+    default_title = (nt.word("flywheel.design_title") if rim is not None and disc is not None
+                     else nt.word("flywheel.design_title_rim") if rim is not None
+                     else nt.word("flywheel.design_title_disc"))
+    sheet = SheetFrame(nt=nt, page=page, title=title or default_title, problem=problem,
                        title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     lay = LAYOUT

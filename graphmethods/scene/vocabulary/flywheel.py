@@ -9,6 +9,8 @@ WORDS = {
     # the design sheet (sheets/flywheel_design.py)
     "design_title": ("Flywheel design: rim and disc", "Конструкция маховика: обод и диск",
                      "飞轮结构设计：轮缘式与盘式"),
+    "design_title_rim": ("Flywheel design: rim", "Конструкция маховика: обод", "飞轮结构设计：轮缘式"),
+    "design_title_disc": ("Flywheel design: disc", "Конструкция маховика: диск", "飞轮结构设计：盘式"),
     "rim": ("rim (spoked) flywheel", "маховик с ободом (спицевый)", "轮缘式飞轮"),
     "disc": ("solid disc", "сплошной диск", "盘式飞轮"),
     "rim_short": ("rim", "обод", "轮缘式"),
