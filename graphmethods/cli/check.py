@@ -5,7 +5,8 @@
     graphmethods check indicator:7:3 answers.toml -o film.pdf
     graphmethods check press plan.dxf -o checked.dxf     # a drawing made in CAD (.dxf or .svg)
 
-PROBLEM is a built-in id (W1, W2, W3, W4, press, slotted-lever, or a cam: shaper-cam, oscillating-cam), a worksheet variant id (KIND:SEED:N) or a problem
+PROBLEM is a built-in id (W1, W2, W3, W4, press, slotted-lever, or a cam: shaper-cam, oscillating-cam), a
+worksheet variant id (KIND:SEED:N) or a problem
 file (a worksheet's problems/*.json, or a slider-crank case file). The report lists each item with
 its expected value at the student's scales, the deviation, the tolerance and the verdict, then the
 usual mistakes recognised. Exit status 0 when everything is right, 1 when something is wrong.
@@ -30,8 +31,8 @@ def add_parser(sub) -> None:
                    help="W1, W2, W3, W4, press, slotted-lever, a cam (shaper-cam, oscillating-cam), KIND:SEED:N, or a "
                    "problem file")
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
-                   "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, a cam profile, "
-                   "read and measured)")
+                   "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, a cam "
+                   "profile, read and measured)")
     p.add_argument("--report", "--format", dest="format", choices=("text", "markdown", "json"), default="text",
                    help="report style (default text; older name --format still accepted)")
     p.add_argument("-o", "--out", "--overlay", dest="overlay", metavar="FILE",
@@ -79,7 +80,9 @@ def run(args) -> int:
 
         not_an_input(args.overlay, args.answers, args.problem, what="--overlay")
     from graphmethods.sheets.check import cam
+    from graphmethods.sheets.check.report import CheckReport
 
+    report: CheckReport
     if cam.is_cam_problem(args.problem):          # a cam profile: drawn in CAD, or typed into cam-answers.toml
         report = (cam.check_drawing(args.problem, args.answers, mu_l=args.mu_l) if is_drawing
                   else cam.check_cam_answers(args.problem, args.answers))

@@ -272,7 +272,7 @@ def inversion_elements(cam: CamDesign, centre: tuple[float, float], mu_l: float,
     if p.offset:
         els.append(Circles(((cx, cy, abs(p.offset) / mu_l),), THIN, name=f"{name}-offset-circle"))
     lines = follower_lines(cam, phi_deg if full else (0.0,), reach=reach)
-    els += [Line(*P(ln), style=AXIS, name=f"{name}-follower-{k}") for k, ln in enumerate(lines)]
+    els += [Line(P(ln)[0], P(ln)[1], style=AXIS, name=f"{name}-follower-{k}") for k, ln in enumerate(lines)]
     st = cam.state(np.asarray(phi_deg if full else (0.0,)))
     if full:
         dense = cam.state(np.linspace(0.0, 360.0, 721))
@@ -327,16 +327,16 @@ def _statement(v: CamVariant, nt: Notation, s_l: Scale) -> dict[str, str]:
     roller = v.contact == "roller"
     follower = nt.word("cam.roller" if roller else "cam.knife")
     if roller:
-        follower += f" (r_{{r}} = {nt.number(v.roller_radius * 1000)} {nt.unit('mm')})" if nt.code != "ru" else \
-            f" (r_{{р}} = {nt.number(v.roller_radius * 1000)} {nt.unit('mm')})"
+        follower += f" ({nt.sym('cam.r_r')} = {nt.number(v.roller_radius * 1000)} {nt.unit('mm')})"
+    rb = _say("rb_roller", nt, rb=nt.sym("cam.r_b"), r0=nt.sym("cam.r_0"), rr=nt.sym("cam.r_r")) if roller else ""
     return {"follower": follower, "offset": _say("offset", nt, e=f"{nt.number(v.offset * 1000)} {nt.unit('mm')}")
             if v.offset else "", "h": f"{nt.number(v.lift * 1000)} {nt.unit('mm')}", "rise": ang(v.rise_deg),
             "rise_law": nt.word("cam." + v.rise_law), "dwell": ang(v.dwell_deg), "ret": ang(v.return_deg),
             "ret_law": nt.word("cam." + v.return_law),
             "dwell2": _say("dwell2", nt, a=ang(v.dwell2_deg)) if v.dwell2_deg > 1e-9 else "",
             "alpha": nt.number(v.alpha_max_deg), "alpha_ret": nt.number(v.alpha_return_max_deg),
-            "pitch": _say("pitch_roller" if roller else "pitch_knife", nt), "rb": _say("rb_roller", nt, rb=nt.sym("cam.r_b"), r0=nt.sym("cam.r_0"), rr=nt.sym("cam.r_r")) if roller
-            else "", "mu_l": s_l.caption(nt), "curves": _say("curves_roller" if roller else "curves_knife", nt)}
+            "pitch": _say("pitch_roller" if roller else "pitch_knife", nt), "rb": rb, "mu_l": s_l.caption(nt),
+            "curves": _say("curves_roller" if roller else "curves_knife", nt)}
 
 
 #: the statement's fill-ins kept on one line (a number with its unit, a scale)
@@ -387,7 +387,8 @@ def _answers(v: CamVariant, nt: Notation) -> tuple[list[str], list[str], list[st
                      f"{nt.number(cam.base_radius * 1000, sig=4)} {nt.unit('mm')}")
     lines.append(f"{al}_{{max}}: φ = {nt.number(round(cam.phi_alpha_max_rise_deg, 1))}° "
                  f"({nt.number(a['alpha_max_rise_deg'], sig=3)}°), φ = "
-                 f"{nt.number(round(cam.phi_alpha_max_return_deg, 1))}° ({nt.number(a['alpha_max_return_deg'], sig=3)}°)")
+                 f"{nt.number(round(cam.phi_alpha_max_return_deg, 1))}° "
+                 f"({nt.number(a['alpha_max_return_deg'], sig=3)}°)")
     return heads, vals, lines
 
 
