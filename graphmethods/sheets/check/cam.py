@@ -434,7 +434,8 @@ def _read_geometry(c: Curves, cam: CamDesign, mu: float) -> dict[str, Any]:
         elif len(pts) >= 2:
             d = pts[-1] - pts[0]
             L = float(np.hypot(*d))
-            if L >= 5.0 and np.max(np.abs(np.cross(pts - pts[0], d / L))) <= 0.05:
+            q = pts - pts[0]
+            if L >= 5.0 and np.max(np.abs(q[:, 0] * d[1] - q[:, 1] * d[0])) / L <= 0.05:
                 segments.append((pts[0], pts[-1]))
     ox, oy = _centre(c, circles)
     O = np.array([ox, oy])

@@ -21,7 +21,7 @@ answers typed into ``cam-answers.toml`` (:mod:`graphmethods.sheets.check.cam`).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Any, ClassVar
 
@@ -238,13 +238,13 @@ class Circles(Element):
 
 def follower_lines(cam: CamDesign, phi_deg: Any, *, reach: float) -> np.ndarray:
     """The follower's axis at cam angles φ (degrees) turned back by −φ into the cam's frame: for each angle the
-    foot on the offset circle (or 35 % of s₀ out, in-line) and the point ``reach`` m past the pitch point,
-    shape (N, 2, 2), m."""
+    point 40 % of s₀ out from the foot on the offset circle (the centre is left clear for the letter O) and the
+    point ``reach`` m past the pitch point, shape (N, 2, 2), m."""
     p = cam.problem
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     s = p.motion(phi)[0]
     s0 = math.sqrt(max(cam.pitch_base_radius ** 2 - p.offset ** 2, 0.0))
-    start = 0.0 if p.offset else 0.35 * s0
+    start = 0.4 * s0                     # clear of the centre, where O is lettered
     rad = np.radians(phi)
     a = to_cam_frame(np.column_stack((np.full(phi.shape, p.offset), np.full(phi.shape, start))), rad, p.sense)
     b = to_cam_frame(np.column_stack((np.full(phi.shape, p.offset), s0 + s + reach)), rad, p.sense)
@@ -289,8 +289,11 @@ def inversion_elements(cam: CamDesign, centre: tuple[float, float], mu_l: float,
     from graphmethods.sheets.cam_diagrams import register_ink
 
     register_ink(occ, *els)
-    lab = occ.place_label((cx, cy), "O", ("sw", "se", "nw", "ne", "s", "w", "n", "e"), size_mm=TEXT_MM, gap_mm=1.6)
+    lab, leader = occ.place_label_with_leader((cx, cy), "O", ("sw", "se", "nw", "ne", "s", "w", "n", "e"),
+                                              size_mm=TEXT_MM, gap_mm=0.8)
     els.append(Text((lab.x, lab.y), "O", size_mm=TEXT_MM, anchor=lab.anchor, name=f"{name}-O-name"))
+    if leader is not None:
+        els.append(Line(leader[0], leader[1], style=THIN, name=f"{name}-O-leader"))
     for k, ln in enumerate(lines):
         (xa, ya), (x, y) = P(ln)
         u = np.array([x - xa, y - ya]) / max(math.hypot(x - xa, y - ya), 1e-9)
@@ -429,7 +432,10 @@ def page(v: CamVariant, nt: Any, key: bool) -> Scene:
     sh.y = top + H + CAPTION_ROOM
     heads, vals, lines = _answers(v, nt)
     answers_and_solution(sh, heads, vals, lines)
-    return sh.scene((s_l, s_c))
+    scene = sh.scene((s_l, s_c))
+    # the footer at the A4 standard's smallest lettering (2.5 mm; the shared footer writes 2.3 mm)
+    return replace(scene, elements=tuple(replace(e, size_mm=2.5) if e.name.startswith("footer") else e
+                                         for e in scene.elements))
 
 
 # registered with the other kinds (graphmethods.sheets.worksheets imports this module at its end)
