@@ -2,7 +2,10 @@
 answers, the overlay, and bad files refused in one line."""
 
 import json
+import os
 import pathlib
+import shutil
+import subprocess
 
 import pytest
 
@@ -139,3 +142,18 @@ def test_a_cam_answers_file_with_a_wrong_key_is_refused():
         cc.check_cam("shaper-cam", {"cam": {"mu_l": 0.0005, "s_mm": [0.0, 1.0]}})
     with pytest.raises(InputError, match="no scale"):
         cc.check_cam("shaper-cam", {"cam": {"base_radius": 0.011}})
+
+
+@pytest.mark.skipif(not (shutil.which("librecad") and shutil.which("pdftocairo")), reason="needs librecad, poppler")
+def test_a_drawing_printed_through_librecad_reads_alike(tmp_path):
+    """LibreCAD prints the DXF (dxf2pdf, scale 1:1), poppler writes that PDF as SVG: every spline becomes many
+    short separate paths, every text glyph outlines; the pieces are joined back, the scale given."""
+    src = tmp_path / "cam.dxf"
+    src.write_bytes((DRAWINGS / "shaper_cam_correct.dxf").read_bytes())
+    env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
+    subprocess.run(["librecad", "dxf2pdf", "-s", "1", "-t", str(tmp_path), str(src)], env=env, check=True,
+                   capture_output=True, timeout=120)
+    subprocess.run(["pdftocairo", "-svg", str(tmp_path / "cam.pdf"), str(tmp_path / "cam.svg")], check=True,
+                   timeout=120)
+    rep = cc.check_drawing("shaper-cam", tmp_path / "cam.svg", mu_l=0.0005)
+    assert rep.ok and len(rep.items) == 22                 # no α: LibreCAD's texts come back as outlines

@@ -72,9 +72,63 @@ def read_curves(source: Any) -> Curves:
         curves = _svg_curves(p)
     if not curves:
         raise InputError(f"{p}: no lines or curves in the drawing")
+    curves = joined(curves)
     segs = tuple((tuple(map(float, a)), tuple(map(float, b))) for c, _ in curves for a, b in zip(c, c[1:]))
     drawing = CadDrawing(segs, flat.fills, (), flat.texts, source=flat.source)   # type: ignore[arg-type]
     return Curves(tuple(c for c, _ in curves), tuple(k for _, k in curves), flat.texts, drawing)
+
+
+#: open pieces whose ends are closer than this are one curve, mm
+JOIN_MM = 0.05
+
+
+def joined(curves: list[tuple[np.ndarray, bool]]) -> list[tuple[np.ndarray, bool]]:
+    """Open pieces joined end to end into chains (a profile drawn as many arcs or lines, or a spline a program
+    wrote as separate short paths); a chain whose ends meet is closed. Pieces at a branch (three ends at one
+    point) are left as they are.
+
+    >>> tri = [np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[1.0, 0.0], [1.0, 1.0]]),
+    ...        np.array([[0.0, 0.0], [1.0, 1.0]])]
+    >>> [(len(c), k) for c, k in joined([(q, False) for q in tri])]
+    [(4, True)]
+    """
+    done = [c for c in curves if c[1]]
+    pieces = [c for c, k in curves if not k]
+    ends: dict[tuple[int, int], list[tuple[int, int]]] = {}
+
+    def cell(q: np.ndarray) -> tuple[int, int]:
+        return (round(float(q[0]) / JOIN_MM), round(float(q[1]) / JOIN_MM))
+
+    def near(q: np.ndarray) -> list[tuple[int, int]]:
+        cx, cy = cell(q)
+        return [e for dx in (-1, 0, 1) for dy in (-1, 0, 1) for e in ends.get((cx + dx, cy + dy), ())
+                if float(np.hypot(*(pieces[e[0]][0 if e[1] == 0 else -1] - q))) <= JOIN_MM]
+    for i, c in enumerate(pieces):
+        for side in (0, 1):
+            ends.setdefault(cell(c[0] if side == 0 else c[-1]), []).append((i, side))
+    used = [False] * len(pieces)
+    out = list(done)
+    for i in range(len(pieces)):
+        if used[i]:
+            continue
+        used[i] = True
+        chain = [pieces[i]]
+        for grow_end in (True, False):            # extend at the end, then at the start
+            while True:
+                tip = chain[-1][-1] if grow_end else chain[0][0]
+                cand = [e for e in near(tip) if not used[e[0]]]
+                if len(cand) != 1:
+                    break
+                j, side = cand[0]
+                used[j] = True
+                q = pieces[j] if (side == 0) == grow_end else pieces[j][::-1]
+                if grow_end:
+                    chain.append(q[1:])
+                else:
+                    chain.insert(0, q[:-1])
+        pts = np.vstack(chain)
+        out.append(_closed(pts, False))
+    return out
 
 
 def _closed(pts: np.ndarray, flag: bool) -> tuple[np.ndarray, bool]:

@@ -434,8 +434,8 @@ def page(v: CamVariant, nt: Any, key: bool) -> Scene:
     answers_and_solution(sh, heads, vals, lines)
     scene = sh.scene((s_l, s_c))
     # the footer at the A4 standard's smallest lettering (2.5 mm; the shared footer writes 2.3 mm)
-    return replace(scene, elements=tuple(replace(e, size_mm=2.5) if e.name.startswith("footer") else e
-                                         for e in scene.elements))
+    return replace(scene, elements=tuple(replace(e, size_mm=2.5) if isinstance(e, Text) and e.name.startswith("footer")
+                                         else e for e in scene.elements))
 
 
 # registered with the other kinds (graphmethods.sheets.worksheets imports this module at its end)
