@@ -33,7 +33,8 @@ from graphmethods.kinematics.cam.geometry import to_cam_frame
 from graphmethods.scene import Point, Polyline, Scale, Scene, Text
 from graphmethods.scene.elements import Element, Line, make_label
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import MAIN, THIN, Circle, Primitive, Style
+from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.sheets.cam_sheet import CENTRES, Circles
 from graphmethods.sheets.worksheets.classset import register
 from graphmethods.sheets.worksheets.elements import TEXT_MM, X0, X1, wrap
 from graphmethods.sheets.worksheets.pages import CAPTION_ROOM, Sheet, answers_and_solution
@@ -44,8 +45,7 @@ LAWS = ("parabolic", "harmonic", "cycloidal", "polynomial_345")
 CONTACTS = ("knife", "roller")
 #: each rise and return is divided into this many equal parts on a worksheet
 N_DIV = 6
-#: the dash-dot of a circle of centres and the follower's axes
-CENTRES = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
+#: the dash-dot of the follower's axes
 AXIS = Style(width_mm=0.18, dash=(8.0, 1.5, 1.0, 1.5))
 
 TITLE = Title.of({"en": "Disc cam: base radius and profile", "ru": "Синтез кулачкового механизма",
@@ -223,18 +223,6 @@ def _reach(cam: CamDesign) -> float:
 
 
 # ----------------------------------------------------------------------------- the profile by inversion
-
-@dataclass(frozen=True)
-class Circles(Element):
-    """Circles of one style: ``(x, y, r)`` in mm."""
-
-    circles: tuple[tuple[float, float, float], ...] = ()
-    style: Style = THIN
-    name: str = "circles"
-
-    def primitives(self) -> tuple[Primitive, ...]:
-        return tuple(Circle(x, y, r, self.style) for x, y, r in self.circles)
-
 
 def follower_lines(cam: CamDesign, phi_deg: Any, *, reach: float) -> np.ndarray:
     """The follower's axis at cam angles φ (degrees) turned back by −φ into the cam's frame: for each angle the
