@@ -157,3 +157,14 @@ def test_a_drawing_printed_through_librecad_reads_alike(tmp_path):
                    timeout=120)
     rep = cc.check_drawing("shaper-cam", tmp_path / "cam.svg", mu_l=0.0005)
     assert rep.ok and len(rep.items) == 22                 # no α: LibreCAD's texts come back as outlines
+
+
+def test_check_class_routes_cam_drawings(tmp_path, capsys):
+    inbox = tmp_path / "inbox"
+    inbox.mkdir()
+    (inbox / "petrov__shaper-cam.dxf").write_bytes((DRAWINGS / "shaper_cam_mistakes.dxf").read_bytes())
+    (inbox / "ivanova__shaper-cam.svg").write_bytes((DRAWINGS / "shaper_cam_correct.svg").read_bytes())
+    assert main(["check-class", str(inbox), "-o", str(tmp_path / "rep"), "--quiet"]) == 1
+    table = (tmp_path / "rep" / "class.md").read_text(encoding="utf-8")
+    assert "| ivanova | shaper-cam | 24/24 |" in table and "petrov" in table
+    assert (tmp_path / "rep" / "students" / "petrov__shaper-cam.dxf-overlay.dxf").exists()

@@ -190,6 +190,8 @@ def _svg_curves(p: pathlib.Path) -> list[tuple[np.ndarray, bool]]:
         for el in svg.elements():
             if isinstance(el, se.Shape) and not isinstance(el, se.Use):
                 out += _svg_shape(el if isinstance(el, se.Path) else se.Path(el), se, H, MM_PER_PX)
+    except InputError as exc:
+        raise InputError(f"{p}: {exc}") from None
     except (ValueError, TypeError, ZeroDivisionError, IndexError, KeyError, AttributeError, OverflowError) as exc:
         raise InputError(f"{p}: not a readable SVG drawing ({exc.__class__.__name__}: {str(exc)[:80]})") from None
     return out
@@ -207,7 +209,11 @@ def _svg_shape(path: Any, se: Any, H: float, k: float) -> list[tuple[np.ndarray,
                 subs[-1].append((seg.end.x, seg.end.y))
                 closed[-1] = closed[-1] or isinstance(seg, se.Close)
             else:
-                n = max(8, min(256, int(seg.length(error=1e-3) * k / 0.5) + 1))
+                coarse = np.array([(q.x, q.y) for q in (seg.point(t) for t in np.linspace(0.0, 1.0, 9))], dtype=float)
+                L = float(np.sum(np.hypot(*np.diff(coarse, axis=0).T))) * k          # mm, from 8 chords
+                if not math.isfinite(L):
+                    raise InputError("a curve of the drawing has a coordinate that is not finite")
+                n = max(8, min(256, int(L / 0.5) + 1))
                 subs[-1] += [(q.x, q.y) for q in (seg.point(t) for t in np.linspace(0.0, 1.0, n + 1)[1:])]
     out = []
     for pts, c in zip(subs, closed):
