@@ -24,6 +24,7 @@ from __future__ import annotations
 import io
 import math
 import pathlib
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -66,10 +67,9 @@ def read_curves(source: Any) -> Curves:
 
     p = pathlib.Path(source)
     flat = read(p)                        # checks the file (size, syntax) and reads its texts
-    if p.suffix.lower() == ".dxf":
-        curves = _dxf_curves(p)
-    else:
-        curves = _svg_curves(p)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):      # a non-finite number is refused below
+        warnings.simplefilter("ignore")
+        curves = _dxf_curves(p) if p.suffix.lower() == ".dxf" else _svg_curves(p)
     if not curves:
         raise InputError(f"{p}: no lines or curves in the drawing")
     curves = joined(curves)
