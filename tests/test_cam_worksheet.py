@@ -106,3 +106,17 @@ def test_worksheet_command_writes_the_class_set(tmp_path, capsys):
     first = (out / "svg" / "cam-01-student.svg").read_bytes()
     assert main(["worksheet", "cam", "--variants", "2", "--seed", "3", "-o", str(out), "--quiet", "--force"]) == 0
     assert (out / "svg" / "cam-01-student.svg").read_bytes() == first          # the same seed, the same bytes
+
+
+def test_the_problem_file_is_a_cam_file_with_the_keys_numbers(tmp_path, capsys):
+    import json
+
+    v = ws.variant("cam", seed=3, number=2)
+    f = tmp_path / "cam-02.json"
+    f.write_text(v.to_json(), encoding="utf-8")
+    assert main(["cam", str(f), "--json", "--phi-deg", ",".join(str(a) for a in v.positions_deg)]) == 0
+    out = json.loads(capsys.readouterr().out)
+    a = v.answers()
+    assert out["base_radius"] == a["base_radius"] and out["pressure_angle_max_rise_deg"] == a["alpha_max_rise_deg"]
+    assert [p["s"] / v.mu_l for p in out["positions"]] == pytest.approx(a["s_mm"], abs=1e-9)
+    assert ws.variant_from_dict(json.loads(f.read_text(encoding="utf-8"))).data() == v.data()

@@ -142,6 +142,11 @@ class CamVariant(Variant):
                 "pressure_angle_max_deg": self.alpha_max_deg,
                 "pressure_angle_return_max_deg": self.alpha_return_max_deg}
 
+    def to_dict(self) -> dict[str, Any]:
+        """The worksheet's problem file, which is also a ``"kind": "cam"`` problem file: ``graphmethods cam`` reads
+        it (the same numbers as the key), ``graphmethods check`` reads it as the variant."""
+        return {**super().to_dict(), **{k: v for k, v in self.problem_dict().items() if k != "kind"}}
+
     @cached_property
     def problem(self) -> CamProblem:
         return cam_from_dict(self.problem_dict(), source=f"worksheet {self.id}")
