@@ -144,9 +144,10 @@ def _alpha_spread(cam: CamDesign, r0: float, d: float) -> tuple[float, float]:
             abs(out[1].alpha_max_return_deg - out[0].alpha_max_return_deg) / 2)
 
 
-def _own(cam: CamDesign, base_radius: float | None) -> CamDesign | None:
-    """The design at the student's own base radius (what follows from it), or None."""
-    if base_radius is None or not base_radius > 0 or abs(base_radius - cam.base_radius) < 1e-12:
+def _own(cam: CamDesign, base_radius: float | None, tol: float) -> CamDesign | None:
+    """The design at the student's own base radius (what follows from it), or None when that is within the
+    tolerance ``tol`` (m) of the exact one (nothing then follows from it)."""
+    if base_radius is None or not base_radius > 0 or abs(base_radius - cam.base_radius) <= tol:
         return None
     try:
         return _variant(cam, base_radius=float(base_radius))
@@ -158,22 +159,30 @@ def _own(cam: CamDesign, base_radius: float | None) -> CamDesign | None:
 
 def _radius_items(ck: Checker, cam: CamDesign, sec: dict, mu: float) -> None:
     p = cam.problem
-    other = None
-    if p.offset:
-        try:
-            other = _variant(cam, offset=-p.offset)
-        except InputError:
-            other = None
+    tol_b, tol_0 = rel(TOL_MM * mu, cam.base_radius), rel(TOL_MM * mu, cam.pitch_base_radius)
+    wrong = (abs(float(sec.get("base_radius", cam.base_radius)) - cam.base_radius) > tol_b
+             or abs(float(sec.get("pitch_base_radius", cam.pitch_base_radius)) - cam.pitch_base_radius) > tol_0)
+    other = _other_side(cam) if wrong else None
     if "base_radius" in sec:
         hyp = [("pitch_for_profile", cam.pitch_base_radius if p.contact == "roller" else None)]
         hyp.append(("offset_wrong_side", other.base_radius if other is not None else None))
-        ck.value("cam.base_radius", "base radius r_b", "m", cam.base_radius, float(sec["base_radius"]),
-                 rel(TOL_MM * mu, cam.base_radius), hypotheses=hyp, note="±0.5 mm·μ_l + 0.1 %")
+        ck.value("cam.base_radius", "base radius r_b", "m", cam.base_radius, float(sec["base_radius"]), tol_b,
+                 hypotheses=hyp, note="±0.5 mm·μ_l + 0.1 %")
     if "pitch_base_radius" in sec and p.contact == "roller":
         ck.value("cam.pitch_base_radius", "pitch base radius r_0", "m", cam.pitch_base_radius,
-                 float(sec["pitch_base_radius"]), rel(TOL_MM * mu, cam.pitch_base_radius),
+                 float(sec["pitch_base_radius"]), tol_0,
                  hypotheses=[("offset_wrong_side", other.pitch_base_radius if other is not None else None)],
                  note="±0.5 mm·μ_l + 0.1 %")
+
+
+def _other_side(cam: CamDesign) -> CamDesign | None:
+    """The design with the offset on the other side (a usual mistake), or None (in-line, or not designable)."""
+    if not cam.problem.offset:
+        return None
+    try:
+        return _variant(cam, offset=-cam.problem.offset)
+    except InputError:
+        return None
 
 
 def _s_items(ck: Checker, cam: CamDesign, sec: dict, mu: float) -> None:
@@ -193,11 +202,10 @@ def _s_items(ck: Checker, cam: CamDesign, sec: dict, mu: float) -> None:
                  note="±0.5 mm")
 
 
-def _alpha_items(ck: Checker, cam: CamDesign, sec: dict, mu: float) -> None:
+def _alpha_items(ck: Checker, cam: CamDesign, sec: dict, mu: float, own: CamDesign | None) -> None:
     keys = [k for k in ("alpha_max_rise_deg", "alpha_max_return_deg") if k in sec]
     if not keys:
         return
-    own = _own(cam, sec.get("base_radius"))
     spread = _alpha_spread(cam, cam.pitch_base_radius, TOL_MM * mu)
     for key, label, sp in (("alpha_max_rise_deg", "largest pressure angle, rise", spread[0]),
                            ("alpha_max_return_deg", "largest pressure angle, return", spread[1])):
@@ -208,14 +216,14 @@ def _alpha_items(ck: Checker, cam: CamDesign, sec: dict, mu: float) -> None:
                  own_from="the student's base radius", note="±(0.5° + the change of α_max with r₀ ± 0.5 mm·μ_l)")
 
 
-def _curve_items(ck: Checker, cam: CamDesign, sec: dict, extra: dict) -> None:
+def _curve_items(ck: Checker, cam: CamDesign, sec: dict, extra: dict, own: CamDesign | None) -> None:
     """The drawn profile (and pitch curve) against the exact ones (see :func:`_curve_item`)."""
     for which, label in (("profile", "profile: largest distance from the exact one"),
                          ("pitch", "pitch curve: largest distance from the exact one")):
         pts = extra.get(which)
         if pts is None:
             continue
-        _curve_item(ck, cam, sec, pts, which, label)
+        _curve_item(ck, cam, sec, pts, which, label, own)
 
 
 def _dense(cam: CamDesign, which: str, *, mirrored: bool = False) -> np.ndarray:
@@ -244,19 +252,19 @@ def _distance(points_m: np.ndarray, curve_m: np.ndarray) -> float:
     return float(np.max(shapely.distance(shapely.points(points_m), ring)))
 
 
-def _curve_item(ck: Checker, cam: CamDesign, sec: dict, pts_m: np.ndarray, which: str, label: str) -> None:
+def _curve_item(ck: Checker, cam: CamDesign, sec: dict, pts_m: np.ndarray, which: str, label: str,
+                own: CamDesign | None) -> None:
     mu = float(sec["mu_l"])
     dev = _distance(pts_m, _dense(cam, which)) / mu
     codes: list[str] = []
     verdict, note = ("ok" if dev <= TOL_CURVE_MM else "wrong"), "±0.5 mm drafting + 0.5 mm between the points"
     if verdict == "wrong":
-        own = _own(cam, sec.get("base_radius"))
+        other = _other_side(cam)
         if own is not None and _distance(pts_m, _dense(own, which)) / mu <= TOL_CURVE_MM:
             verdict, note = "carried", "follows from the student's base radius"
         elif _distance(pts_m, _dense(cam, which, mirrored=True)) / mu <= TOL_CURVE_MM:
             codes.append("inversion_same_sense")
-        elif cam.problem.offset and _distance(pts_m, _dense(_variant(cam, offset=-cam.problem.offset), which)) \
-                / mu <= TOL_CURVE_MM:
+        elif other is not None and _distance(pts_m, _dense(other, which)) / mu <= TOL_CURVE_MM:
             codes.append("offset_wrong_side")
     ck.items.append(Item(f"cam.{which}_dev_mm", label, "mm", 0.0, round(dev, 3), round(dev, 3), TOL_CURVE_MM, verdict,
                          tuple(codes), note))
@@ -349,8 +357,9 @@ def check_cam(problem: Any, answers: dict, *, extra: dict | None = None, student
     _radius_items(ck, cam, sec, sec["mu_l"])
     if "s_mm" in sec:
         _s_items(ck, cam, sec, sec["mu_l"])
-    _alpha_items(ck, cam, sec, sec["mu_l"])
-    _curve_items(ck, cam, sec, extra or {})
+    own = _own(cam, sec.get("base_radius"), rel(TOL_MM * sec["mu_l"], cam.base_radius))
+    _alpha_items(ck, cam, sec, sec["mu_l"], own)
+    _curve_items(ck, cam, sec, extra or {}, own)
     if not ck.items:
         raise InputError("the answers hold nothing to check: give base_radius, s_mm, the largest pressure angles, "
                          "or a drawing with the base circle and the profile")
