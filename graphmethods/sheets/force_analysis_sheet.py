@@ -20,12 +20,13 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scene, Table, Text, notation as get_notation
+from graphmethods.scene import Group, Page, Scene, Table, Text, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
+from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
 from graphmethods.sheets.layout import Box, Sheet
 
 
@@ -75,7 +76,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     InputError
         A position outside 0…m, a page other than A1/A2, a problem that is not a linkage.
     """
-    from graphmethods.sheets.forces import force_plans, force_scheme, zhukovsky_forces
+    from graphmethods.sheets.forces import force_scheme, zhukovsky_forces
 
     case = _case(subject)
     nt = get_notation(notation)
@@ -84,29 +85,53 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
-    rows = _result_rows(fa, i, nt)
     size = lettering(pg).label_mm
-    table = Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size, name="result")
-    heading_w = text_width_mm(nt.word("forces.sheet_result"), size + 0.8) * 1.08
-    col_w = max(table.width_mm, heading_w) + 4.0
-    boxes = force_sheet_boxes(fa, i, (sheet.box[0], sheet.top, sheet.box[2], sheet.caption_y + 1.0), col_w,
-                              gap_mm=GAP_MM.get(pg.size, 8.0))
+    rows = _result_rows(fa, i, nt)
+    react_rows, _ = SF._plans_results(fa, i, nt, gravity)
+    tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
+              Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size))
+    notes_text = [nt.word("forces.crank_prime")] + ([nt.word("forces.weights")] if gravity else [])
+    col_w = max([t.width_mm for t in tables] + [text_width_mm(t, size) for t in notes_text]
+                + [text_width_mm(nt.word("forces.sheet_result"), size + 0.8) * 1.08]) + 4.0
+    gap = GAP_MM.get(pg.size, 8.0)
+    inner = pg.inner_box()
+    tb_top = sheet.probe.title_block.table(inner[2], inner[3]).bbox()[1] if title_block else inner[3]
+    content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
+    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
     at_k = i if phi_deg is None else None
     kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
-    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"])), "scheme"),
-             (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"])), "lever"),
-             (force_plans(case, at_k, **kw, page=region_page(pg, boxes["plans"])), "plans")]
+    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]), title=nt.word("forces.scheme_short"),
+                           layout=_panel_layout(boxes["scheme"])), "scheme"),
+             (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
+                               title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
+    for j in range(len(fa.plans)):
+        parts += [(group_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"group-{j}"])), f"group-{j}"),
+                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"])), f"plan-{j}")]
     groups = [inset(scene, nm) for scene, nm in parts]
-    tx, ty = boxes["result"][0] + 4.0, boxes["result"][1] + (lettering(pg).heading_mm + 3.0 if "lever" in
-                                                             _left_of(boxes, "result") else 0.0)
-    heading = Text((tx, ty + 4.0), nt.word("forces.sheet_result"), size_mm=size + 0.8, bold=True,
+    plans = Group(elements=tuple(g for g, _ in groups[2:]), name="plans")
+    tx, ty = boxes["result"][0] + 2.0, boxes["result"][1]
+    heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size + 0.8, bold=True,
                    name="result-heading")
-    table = Table((tx, ty + 8.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size, name="result")
+    table = Table((tx, ty + 2.5 * size), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size,
+                  name="result")
+    y = table.bottom_left[1] + 2.0 * size
+    reactions = Table((tx, y), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size,
+                      name="reactions")
+    y = reactions.bottom_left[1] + 2.0 * size
+    column = [Text((tx, y + k * 1.8 * size), t, size_mm=size, name=f"note-{k}") for k, t in enumerate(notes_text)]
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
-    return Scene(sheet.page(groups[0][1]), (sheet.header(), *(g for g, _ in groups), heading, table),
+    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], plans, heading, table,
+                                            reactions, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _panel_layout(box: Box) -> SF.ForceFigureLayout:
+    """The scheme's or the lever's layout in a panel of the sheet: its largest force about a sixth of the
+    panel's smaller side (30…60 mm), room kept round the drawing for it."""
+    F = min(60.0, max(30.0, (min(box[2] - box[0], box[3] - box[1])) / 6.0))
+    return SF.ForceFigureLayout(largest_force_mm=F, margin_mm=0.6 * F + 6.0)
 
 
 def _left_of(boxes: dict[str, Box], name: str) -> list[str]:
@@ -136,31 +161,43 @@ def _aspect(points: Any) -> float:
     return min(5.0, max(0.2, w / h if h > 0 else 5.0))
 
 
-def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0) -> dict[str, Box]:
-    """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, the force plans and the result
-    table, arranged by the shapes of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
+def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
+                      column_bottom: float | None = None) -> dict[str, Box]:
+    """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
+    (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
+    of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
 
-    A tall linkage (a shaper's rocker) takes a column the height of the sheet, as wide as its shape asks, and
-    the lever a column beside it; the force plans, long and flat, share the rest under the result table. A
-    flat linkage (a press) takes a row across the top beside the result table, the lever and the plans share
-    the row below.
+    The result column (``col_w`` wide) stands at the right, down to ``column_bottom`` (the title block's
+    top). Left of it, a tall linkage (a shaper's rocker) takes a column the height of the sheet, the lever
+    a column beside it, and the force plans one over another in a third; a flat linkage (a press) takes a
+    row across the top with the lever beside it, and the plans share the row below side by side.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import analysed
+    >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
+    >>> sorted(force_sheet_boxes(fa, i, (25.0, 27.0, 826.0, 579.0), 150.0))
+    ['group-0', 'group-1', 'lever', 'plan-0', 'plan-1', 'result', 'scheme']
     """
     mo = fa.motion
-    scheme = _aspect(complex(mo.z[p][i]) for p in mo.points)
+    scheme = _aspect([complex(mo.z[p][i]) for p in mo.points] + SF._guide_ends(mo, SF._links_of(mo, i)[1]))
     lever = _aspect([0j] + [1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in mo.linkage.ground])
     x0, y0, x1, y1 = box
-    W, H = x1 - x0, y1 - y0
+    out = {"result": (x1 - col_w, y0, x1, y1 if column_bottom is None else column_bottom)}
+    left = (x0, y0, x1 - col_w - gap_mm, y1)
+    W, H = left[2] - left[0], left[3] - left[1]
+    n = len(fa.plans)
+    plans = tuple((Split("h", ((f"group-{j}", 0.42), (f"plan-{j}", 0.58)), gap_mm=gap_mm), 1.0) for j in range(n))
     if scheme < 1.2:                                            # a tall linkage: columns
-        w_s = min(0.4, max(0.22, scheme * H / W + 0.1))
-        w_l = min(0.3, max(0.2, lever * H / W + 0.08))
-        right = Split("v", (("result", 1.0), ("plans", 6.0)), gap_mm=gap_mm)
-        tree = Split("h", (("scheme", w_s), ("lever", w_l), (right, 1.0 - w_s - w_l)), gap_mm=gap_mm)
+        w_s = min(0.4, max(0.25, scheme * H / W + 0.1))
+        w_l = min(0.25, max(0.16, lever * H / W + 0.05))
+        tree = Split("h", (("scheme", w_s), ("lever", w_l), (Split("v", plans, gap_mm=gap_mm), 1.0 - w_s - w_l)),
+                     gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
-        h_s = min(0.55, max(0.35, (W - col_w) / scheme / H + 0.1))
-        top = Split("h", (("scheme", W - col_w - gap_mm), ("result", col_w)), gap_mm=gap_mm)
-        bottom = Split("h", (("lever", 0.4), ("plans", 0.6)), gap_mm=gap_mm)
-        tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
-    return tree.boxes(box)
+        h_s = min(0.55, max(0.4, W * 0.6 / scheme / H + 0.1))
+        top = Split("h", (("scheme", 0.62), ("lever", 0.38)), gap_mm=gap_mm)
+        tree = Split("v", ((top, h_s), (Split("h", plans, gap_mm=gap_mm), 1.0 - h_s)), gap_mm=gap_mm)
+    out.update(tree.boxes(left))
+    return out
 
 
 __all__ = ["force_analysis_sheet", "force_sheet_boxes", "sheet_page"]
