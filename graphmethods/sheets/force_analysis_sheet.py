@@ -1,17 +1,19 @@
 """The course project's second sheet: the force (kinetostatic) analysis of one position, on A1 or A2.
 
-Left, the whole height: the linkage in that position with every force
-(:func:`~graphmethods.sheets.forces.force_scheme`); right, above: Zhukovsky's lever with every force
-(:func:`~graphmethods.sheets.forces.zhukovsky_forces`); right, below: the force plan of each group and
-of the crank, every reaction's magnitude (:func:`~graphmethods.sheets.forces.force_plans`); at the top
-right corner the result table: the
-balancing moment from the force plans, from the lever and from the power balance, with their
-differences in per cent. Each part keeps its own scales, written under it and in the title block.
+The linkage in that position with every force (:func:`~graphmethods.sheets.forces.force_scheme`), large;
+Zhukovsky's lever with every force (:func:`~graphmethods.sheets.forces.zhukovsky_forces`); for each Assur
+group, and for the crank, two panels side by side: the group cut from the linkage with its forces and the
+reactions of the links it was cut from (:func:`~graphmethods.sheets.force_sheet_plans.group_panel`), and its
+force plan at its own convenient μ_F filling its panel, with its vector equation and the reactions it finds
+(:func:`~graphmethods.sheets.force_sheet_plans.plan_panel`; the crank's plan closed by the balancing force
+F_b and R′_01). At the right, above the title block: the balancing moment from the force plans, from the
+lever and from the power balance with their differences in per cent, and every reaction's magnitude. Each
+part keeps its own scales, written under it; the title block names the scheme's.
 
 >>> from graphmethods.problems import builtin
 >>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A2")
 >>> [e.name for e in s.elements][1:]
-['scheme', 'lever', 'plans', 'result-heading', 'result']
+['scheme', 'lever', 'plans', 'result-heading', 'result', 'reactions', 'note-0']
 """
 
 from __future__ import annotations
@@ -95,13 +97,14 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
                 + [text_width_mm(nt.word("forces.sheet_result"), size + 0.8) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
     inner = pg.inner_box()
-    tb_top = sheet.probe.title_block.table(inner[2], inner[3]).bbox()[1] if title_block else inner[3]
+    block = sheet.probe.title_block
+    tb_top = inner[3] - (block.table(inner[2], inner[3]).height_mm if block is not None else 0.0)
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
     at_k = i if phi_deg is None else None
     kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
-    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]), title=nt.word("forces.scheme_short"),
-                           layout=_panel_layout(boxes["scheme"])), "scheme"),
+    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
+                           title=nt.word("forces.scheme_short"), layout=_panel_layout(boxes["scheme"])), "scheme"),
              (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
                                title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
     for j in range(len(fa.plans)):

@@ -13,7 +13,7 @@ the frame's reaction with F_b in place of M_b, closes it (dashed).
 >>> from graphmethods.sheets.forces import analysed
 >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
 >>> [label for label, _, _ in plan_sides(fa, len(fa.plans) - 1, i)]
-['R_21', 'F_b', "R'_01"]
+['F_i1', 'R_21', 'F_b', "R'_01"]
 """
 
 from __future__ import annotations
@@ -56,6 +56,13 @@ def _label(lbl: str, nt: Notation) -> str:
     return SF._markup(lbl, nt)
 
 
+def _keep_clear(sheet: Sheet, text: Text) -> None:
+    """Labels placed later keep off ``text``."""
+    box = text.bbox()
+    if box is not None:
+        sheet.occ.add_box(box)
+
+
 def plan_equation(fa: Any, j: int, i: int, nt: Notation) -> str:
     """The vector equation of plan ``j``: its sides (none of round-off size) summed to zero.
 
@@ -63,7 +70,7 @@ def plan_equation(fa: Any, j: int, i: int, nt: Notation) -> str:
     >>> from graphmethods.sheets.forces import analysed
     >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
     >>> plan_equation(fa, 0, i, get_notation("en"))
-    'R^{τ}_{34} + F_{i4} + F_{i5} + F_{c5} + R_{05} + R^{n}_{34} = 0'
+    'R^{τ}_{12} + F_{i2} + F_{i3} + F_{c3} + R_{03} + R^{n}_{12} = 0'
     """
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
@@ -105,7 +112,7 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     pts = np.cumsum([0j] + [F for _, F, _ in sides])
     size = lettering(page).label_mm
     eq = Text((sheet.box[0], sheet.top + size), plan_equation(fa, j, i, nt), size_mm=size, name=f"equation-{j}")
-    sheet.occ.add_box(eq.bbox())
+    _keep_clear(sheet, eq)
     found = _found(fa, j, i, sides)
     pitch = 1.8 * size
     area = (sheet.box[0] + L.left_mm + L.overhang_mm, sheet.top + 2.5 * size + len(found) * pitch + L.overhang_mm,
@@ -119,11 +126,12 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     s_F = given_scale(None, "μ_F", nt.unit("N"), span * pw, pw, what="the force plan")
     at = SF._cell(pts, (area[0], area[1], pw, ph), s_F)
     els: list[Element] = [sheet.header(), eq]
+    mu = s_F.caption(nt).split(" = ", 1)[1]
     for k, (lbl, R) in enumerate(found):
-        line = (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {s_F.caption(nt).split(' = ', 1)[1]}"
+        line = (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
                 f" = {nt.number(R, sig=5)} {nt.unit('N')}")
         t = Text((sheet.box[0], sheet.top + size + (k + 1) * pitch), line, size_mm=size, name=f"found-{j}-{k}")
-        sheet.occ.add_box(t.bbox())
+        _keep_clear(sheet, t)
         els.append(t)
     if pl.group.startswith("I "):
         drawn, wanted = _crank_plan(j, sides, pts, at, nt, sheet, L)
