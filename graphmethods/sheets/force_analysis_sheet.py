@@ -20,11 +20,15 @@ from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
+
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Group, Page, Scene, Table, Text, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.sheets import forces as SF
+from graphmethods.sheets.acceleration import acceleration_plan
+from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
@@ -90,8 +94,10 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     size = lettering(pg).label_mm
     rows = _result_rows(fa, i, nt)
     react_rows, _ = SF._plans_results(fa, i, nt, gravity)
+    inertia_rows = _inertia_rows(fa, i, nt)
     tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size))
+              Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
+              Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
     notes_text = [nt.word("forces.crank_prime")] + ([nt.word("forces.weights")] if gravity else [])
     col_w = max([t.width_mm for t in tables] + [text_width_mm(t, size) for t in notes_text]
                 + [text_width_mm(nt.word("forces.sheet_result"), size + 0.8) * 1.08]) + 4.0
@@ -107,11 +113,16 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
                            title=nt.word("forces.scheme_short"), layout=_panel_layout(boxes["scheme"])), "scheme"),
              (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
                                title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
+    if "acceleration" in boxes:
+        parts.append((acceleration_plan(case, i, m=m, notation=nt, page=region_page(pg, boxes["acceleration"]),
+                                        title_block=False), "acceleration"))
     for j in range(len(fa.plans)):
         parts += [(group_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"group-{j}"])), f"group-{j}"),
                   (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"])), f"plan-{j}")]
     groups = [inset(scene, nm) for scene, nm in parts]
-    plans = Group(elements=tuple(g for g, _ in groups[2:]), name="plans")
+    plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
+                  name="plans")
+    others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
     tx, ty = boxes["result"][0] + 2.0, boxes["result"][1]
     heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size + 0.8, bold=True,
                    name="result-heading")
@@ -121,11 +132,21 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     reactions = Table((tx, y), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size,
                       name="reactions")
     y = reactions.bottom_left[1] + 2.0 * size
-    column = [Text((tx, y + k * 1.8 * size), t, size_mm=size, name=f"note-{k}") for k, t in enumerate(notes_text)]
+    inertia = Table((tx, y), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size,
+                    name="inertia")
+    y = inertia.bottom_left[1] + 2.0 * size
+    column: list[Any] = [inertia]
+    column += [Text((tx, y + k * 1.8 * size), t, size_mm=size, name=f"note-{k}") for k, t in enumerate(notes_text)]
+    y += len(notes_text) * 1.8 * size + gap
+    graph_box = (boxes["result"][0], y, boxes["result"][2], boxes["result"][3])
+    if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
+        graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
+        column.append(graph)
+        groups.append((graph, g_scales))
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
-    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], plans, heading, table,
+    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, heading, table,
                                             reactions, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
 
@@ -133,7 +154,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:
     """The scheme's or the lever's layout in a panel of the sheet: its largest force about a sixth of the
     panel's smaller side (30…60 mm), room kept round the drawing for it."""
-    F = min(60.0, max(30.0, (min(box[2] - box[0], box[3] - box[1])) / 6.0))
+    F = min(80.0, max(30.0, (min(box[2] - box[0], box[3] - box[1])) / 4.0))
     return SF.ForceFigureLayout(largest_force_mm=F, margin_mm=0.6 * F + 6.0)
 
 
@@ -141,6 +162,19 @@ def _left_of(boxes: dict[str, Box], name: str) -> list[str]:
     """The parts whose boxes end left of ``name``'s on its first line (their headings may run into it)."""
     b = boxes[name]
     return [k for k, o in boxes.items() if k != name and o[2] <= b[0] and o[1] <= b[1] < o[3]]
+
+
+def _inertia_rows(fa: Any, i: int, nt: Any) -> list[tuple[str, str, str]]:
+    """The inertia loads of position ``i``: each moving link's |F_i| (N) and M_i (N·m), round-off as 0."""
+    rows = [(nt.word("forces.link"), nt.quantity("|F_{" + nt.word("forces.sub_inertia") + "}|", "N"),
+             nt.quantity("M_{" + nt.word("forces.sub_inertia") + "}", "N·m"))]
+    loads = [f for fs in fa.applied.values() for f in fs if f.label.startswith("F_i")]
+    big_F = max([float(abs(f.F[i])) for f in loads] + [0.0])
+    big_M = big_F * float(np.ptp(np.abs([complex(fa.motion.z[p][i]) for p in fa.motion.points])) or 1.0)
+    for f in loads:
+        F, M = SF.round_off_zero(float(abs(f.F[i])), big_F), SF.round_off_zero(float(f.M[i]), big_M)
+        rows.append((f.label[3:], nt.number(F, sig=5), nt.number(M, sig=5)))
+    return rows
 
 
 def _result_rows(fa: Any, i: int, nt: Any) -> list[tuple[str, str, str]]:
@@ -179,7 +213,7 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
     >>> from graphmethods.sheets.forces import analysed
     >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
     >>> sorted(force_sheet_boxes(fa, i, (25.0, 27.0, 826.0, 579.0), 150.0))
-    ['group-0', 'group-1', 'lever', 'plan-0', 'plan-1', 'result', 'scheme']
+    ['acceleration', 'group-0', 'group-1', 'lever', 'plan-0', 'plan-1', 'result', 'scheme']
     """
     mo = fa.motion
     scheme = _aspect([complex(mo.z[p][i]) for p in mo.points] + SF._guide_ends(mo, SF._links_of(mo, i)[1]))
@@ -189,16 +223,17 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
     left = (x0, y0, x1 - col_w - gap_mm, y1)
     W, H = left[2] - left[0], left[3] - left[1]
     n = len(fa.plans)
-    plans = tuple((Split("h", ((f"group-{j}", 0.42), (f"plan-{j}", 0.58)), gap_mm=gap_mm), 1.0) for j in range(n))
+    pairs = tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap_mm), 1.0) for j in range(n))
     if scheme < 1.2:                                            # a tall linkage: columns
-        w_s = min(0.4, max(0.25, scheme * H / W + 0.1))
-        w_l = min(0.25, max(0.16, lever * H / W + 0.05))
-        tree = Split("h", (("scheme", w_s), ("lever", w_l), (Split("v", plans, gap_mm=gap_mm), 1.0 - w_s - w_l)),
-                     gap_mm=gap_mm)
+        w_s = min(0.4, max(0.22, scheme * H / W + 0.1))
+        top = Split("h", (("lever", 0.4), ("acceleration", 0.6)), gap_mm=gap_mm)
+        right = Split("v", ((top, 0.42), (Split("h", pairs, gap_mm=gap_mm), 0.58)), gap_mm=gap_mm)
+        tree = Split("h", (("scheme", w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
-        h_s = min(0.55, max(0.4, W * 0.6 / scheme / H + 0.1))
-        top = Split("h", (("scheme", 0.62), ("lever", 0.38)), gap_mm=gap_mm)
-        tree = Split("v", ((top, h_s), (Split("h", plans, gap_mm=gap_mm), 1.0 - h_s)), gap_mm=gap_mm)
+        h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
+        top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)), gap_mm=gap_mm)
+        bottom = Split("h", (("lever", 0.7), *pairs), gap_mm=gap_mm)
+        tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
     out.update(tree.boxes(left))
     return out
 
