@@ -91,7 +91,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
-    size = lettering(pg).label_mm
+    size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
+    note_mm = lettering(pg).label_mm
     rows = _result_rows(fa, i, nt)
     react_rows, _ = SF._plans_results(fa, i, nt, gravity)
     inertia_rows = _inertia_rows(fa, i, nt)
@@ -99,23 +100,25 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
               Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
               Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
     notes_text = [nt.word("forces.crank_prime")] + ([nt.word("forces.weights")] if gravity else [])
-    col_w = max([t.width_mm for t in tables] + [text_width_mm(t, size) for t in notes_text]
-                + [text_width_mm(nt.word("forces.sheet_result"), size + 0.8) * 1.08]) + 4.0
+    col_w = max([t.width_mm for t in tables] + [text_width_mm(t, note_mm) for t in notes_text]
+                + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
     inner = pg.inner_box()
     block = sheet.probe.title_block
     tb_top = inner[3] - (block.table(inner[2], inner[3]).height_mm if block is not None else 0.0)
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
+    accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
+    if accel is None:                               # the plan of accelerations does not fit: the others take its room
+        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False)
     at_k = i if phi_deg is None else None
     kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
     parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
                            title=nt.word("forces.scheme_short"), layout=_panel_layout(boxes["scheme"])), "scheme"),
              (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
                                title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
-    if "acceleration" in boxes:
-        parts.append((acceleration_plan(case, i, m=m, notation=nt, page=region_page(pg, boxes["acceleration"]),
-                                        title_block=False), "acceleration"))
+    if accel is not None:
+        parts.append((accel, "acceleration"))
     for j in range(len(fa.plans)):
         parts += [(group_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"group-{j}"])), f"group-{j}"),
                   (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"])), f"plan-{j}")]
@@ -124,7 +127,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
     tx, ty = boxes["result"][0] + 2.0, boxes["result"][1]
-    heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size + 0.8, bold=True,
+    heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
                    name="result-heading")
     table = Table((tx, ty + 2.5 * size), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size,
                   name="result")
@@ -136,8 +139,9 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
                     name="inertia")
     y = inertia.bottom_left[1] + 2.0 * size
     column: list[Any] = [inertia]
-    column += [Text((tx, y + k * 1.8 * size), t, size_mm=size, name=f"note-{k}") for k, t in enumerate(notes_text)]
-    y += len(notes_text) * 1.8 * size + gap
+    column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
+               for k, t in enumerate(notes_text)]
+    y += len(notes_text) * 1.8 * note_mm + gap
     graph_box = (boxes["result"][0], y, boxes["result"][2], boxes["result"][3])
     if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
         graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
@@ -198,8 +202,50 @@ def _aspect(points: Any) -> float:
     return min(5.0, max(0.2, w / h if h > 0 else 5.0))
 
 
+def _acceleration(case: Any, i: int, m: int, nt: Any, pg: Page, box: Box) -> Scene | None:
+    """The plan of accelerations of position ``i`` in ``box`` (where the inertia forces' a_S and ε come from),
+    or None when it cannot be drawn there or its equations run out of the box."""
+    try:
+        scene = acceleration_plan(case, i, m=m, notation=nt, page=region_page(pg, box), title_block=False)
+    except InputError:
+        return None
+    boxes = [b for b in (e.bbox() for e in scene.elements) if b is not None]
+    inside = all(b[0] >= box[0] - 1.0 and b[1] >= box[1] - 1.0 and b[2] <= box[2] + 1.0 and b[3] <= box[3] + 1.0
+                 for b in boxes)
+    return scene if inside else None
+
+
+def _lever_width(aspect: float, height: float, room: float) -> float:
+    """The width (mm) of the lever's panel ``height`` mm high: its drawing's width at the height it can have,
+    room for its forces either side, and its lines of text (at least 130 mm, at most 45 % of ``room``)."""
+    return min(0.45 * room, max(130.0, aspect * max(height - 100.0, 40.0) + 110.0))
+
+
+def _pairs(fa: Any, i: int, n: int, gap_mm: float) -> Split:
+    """The groups cut from the linkage and their force plans: side by side in columns, each group over its
+    plan, when the drawings are tall; one pair under another, each group beside its plan, when they are flat
+    (a slider-crank's group and its long polygon)."""
+    flat = sum(_aspect(c) > 1.3 for c in _pair_clouds(fa, i)) >= len(fa.plans)
+    if flat:
+        rows = tuple((Split("h", ((f"group-{j}", 0.5), (f"plan-{j}", 0.5)), gap_mm=gap_mm), 1.0) for j in range(n))
+        return Split("v", rows, gap_mm=gap_mm)
+    cols = tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap_mm), 1.0) for j in range(n))
+    return Split("h", cols, gap_mm=gap_mm)
+
+
+def _pair_clouds(fa: Any, i: int) -> list[list[complex]]:
+    """The points of each group's cut drawing (m) and of each force polygon (N): their shapes."""
+    from graphmethods.sheets.force_sheet_plans import group_cloud, plan_sides
+
+    out = []
+    for j in range(len(fa.plans)):
+        out.append(group_cloud(fa, j, i))
+        out.append(list(np.cumsum([0j] + [F for _, F, _ in plan_sides(fa, j, i)])))
+    return out
+
+
 def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
-                      column_bottom: float | None = None) -> dict[str, Box]:
+                      column_bottom: float | None = None, acceleration: bool = True) -> dict[str, Box]:
     """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
     (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
     of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
@@ -223,16 +269,20 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
     left = (x0, y0, x1 - col_w - gap_mm, y1)
     W, H = left[2] - left[0], left[3] - left[1]
     n = len(fa.plans)
-    pairs = tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap_mm), 1.0) for j in range(n))
     if scheme < 1.2:                                            # a tall linkage: columns
         w_s = min(0.4, max(0.22, scheme * H / W + 0.1))
-        top = Split("h", (("lever", 0.4), ("acceleration", 0.6)), gap_mm=gap_mm)
-        right = Split("v", ((top, 0.42), (Split("h", pairs, gap_mm=gap_mm), 0.58)), gap_mm=gap_mm)
+        rest = W * (1.0 - w_s)
+        w_l = _lever_width(lever, 0.42 * H, rest)
+        top = (Split("h", (("lever", w_l), ("acceleration", rest - w_l - gap_mm)), gap_mm=gap_mm) if acceleration
+               else Split("h", (("lever", 1.0),), gap_mm=gap_mm))
+        right = Split("v", ((top, 0.42), (_pairs(fa, i, n, gap_mm), 0.58)), gap_mm=gap_mm)
         tree = Split("h", (("scheme", w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
         h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
-        top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)), gap_mm=gap_mm)
-        bottom = Split("h", (("lever", 0.7), *pairs), gap_mm=gap_mm)
+        top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)) if acceleration else (("scheme", 1.0),),
+                    gap_mm=gap_mm)
+        w_l = _lever_width(lever, (1.0 - h_s) * H, W)
+        bottom = Split("h", (("lever", w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
         tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
     out.update(tree.boxes(left))
     return out

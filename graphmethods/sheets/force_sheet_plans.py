@@ -114,8 +114,9 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     eq = Text((sheet.box[0], sheet.top + size), plan_equation(fa, j, i, nt), size_mm=size, name=f"equation-{j}")
     _keep_clear(sheet, eq)
     found = _found(fa, j, i, sides)
-    pitch = 1.8 * size
-    area = (sheet.box[0] + L.left_mm + L.overhang_mm, sheet.top + 2.5 * size + len(found) * pitch + L.overhang_mm,
+    value_mm = lettering(page).value_mm
+    pitch = 1.8 * value_mm
+    area = (sheet.box[0] + L.left_mm + L.overhang_mm, sheet.top + 2.0 * size + (len(found) + 0.5) * pitch + L.overhang_mm,
             sheet.box[2] - L.left_mm - L.overhang_mm, sheet.caption_y - L.bottom_mm)
     pw, ph = area[2] - area[0], area[3] - area[1]
     if pw <= 10.0 or ph <= 10.0:
@@ -130,7 +131,7 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     for k, (lbl, R) in enumerate(found):
         line = (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
                 f" = {nt.number(R, sig=5)} {nt.unit('N')}")
-        t = Text((sheet.box[0], sheet.top + size + (k + 1) * pitch), line, size_mm=size, name=f"found-{j}-{k}")
+        t = Text((sheet.box[0], sheet.top + size + (k + 1) * pitch), line, size_mm=value_mm, name=f"found-{j}-{k}")
         _keep_clear(sheet, t)
         els.append(t)
     if pl.group.startswith("I "):
@@ -185,6 +186,18 @@ def _group_points(mo: Any, j_links: tuple[str, ...], g: Any) -> set[str]:
     return names
 
 
+def _group_of(fa: Any, j: int) -> Any:
+    """The linkage's group (or crank) of plan ``j`` (the plans run from the last group to the crank)."""
+    lk = fa.motion.linkage
+    return lk.crank if fa.plans[j].group.startswith("I ") else lk.groups[len(fa.plans) - 2 - j]
+
+
+def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
+    """The points (m) of plan ``j``'s group cut from the linkage in position ``i``: its shape."""
+    mo = fa.motion
+    return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
+
+
 def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
     """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
     its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
@@ -194,9 +207,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     mo = fa.motion
     pl = fa.plans[j]
     lk = mo.linkage
-    crank = pl.group.startswith("I ")
-    g = lk.crank if crank else lk.groups[len(fa.plans) - 2 - j]
-    pts_names = _group_points(mo, tuple(pl.links), g)
+    pts_names = _group_points(mo, tuple(pl.links), _group_of(fa, j))
     sheet = Sheet(nt=nt, page=page, title=nt.word("forces.cut_group"), problem="", title_block=False)
     z = {p: complex(mo.z[p][i]) for p in pts_names}
     sides = plan_sides(fa, j, i)
