@@ -100,12 +100,13 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
               Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
               Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
     notes_text = [nt.word("forces.crank_prime")] + ([nt.word("forces.weights")] if gravity else [])
-    col_w = max([t.width_mm for t in tables] + [text_width_mm(t, note_mm) for t in notes_text]
+    block = sheet.probe.title_block
+    inner = pg.inner_box()
+    tb = block.table(inner[2], inner[3]) if block is not None else None
+    col_w = max([t.width_mm for t in tables] + ([tb.width_mm - 5.0] if tb is not None else []) + [text_width_mm(t, note_mm) for t in notes_text]
                 + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
-    inner = pg.inner_box()
-    block = sheet.probe.title_block
-    tb_top = inner[3] - (block.table(inner[2], inner[3]).height_mm if block is not None else 0.0)
+    tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
@@ -225,7 +226,7 @@ def _pairs(fa: Any, i: int, n: int, gap_mm: float) -> Split:
     """The groups cut from the linkage and their force plans: side by side in columns, each group over its
     plan, when the drawings are tall; one pair under another, each group beside its plan, when they are flat
     (a slider-crank's group and its long polygon)."""
-    flat = sum(_aspect(c) > 1.3 for c in _pair_clouds(fa, i)) >= len(fa.plans)
+    flat = all(_aspect(c) > 1.3 for c in _pair_clouds(fa, i))
     if flat:
         rows = tuple((Split("h", ((f"group-{j}", 0.5), (f"plan-{j}", 0.5)), gap_mm=gap_mm), 1.0) for j in range(n))
         return Split("v", rows, gap_mm=gap_mm)

@@ -226,7 +226,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     from graphmethods.scene import Line
     from graphmethods.sheets.kinematic_symbols import PinJoint, SliderBlock
 
-    els: list[Element] = [sheet.header()]
+    els: list[Element] = [sheet.header(), *(SF._drawn(occ, e) for e in SF.plates(segs, z, at))]
     els += [SF._drawn(occ, Line(at(z[a]), at(z[b]), style=SF.LINK, name=f"link-{a}-{b}")) for a, b in segs]
     els += [SF._drawn(occ, SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)),
                                        name=f"block-{k}")) for k, (p, u) in enumerate(blocks) if p in z]

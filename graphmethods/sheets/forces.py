@@ -568,8 +568,9 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
 
     lk = mo.linkage
     segs, blocks = _links_of(mo, i)
-    els: list[Element] = [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
-                          if abs(z[a] - z[b]) > 0]
+    els: list[Element] = plates(segs, z, at)
+    els += [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
+            if abs(z[a] - z[b]) > 0]
     els += _guides(mo, blocks, at)
     els += [FixedPivot(at(z[p]), name=f"pivot-{p}") for p in lk.ground]
     els += [SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}")
@@ -579,6 +580,15 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
     for el in els:
         occ.add_primitives(el.primitives())
     return els
+
+
+def plates(segs: Sequence[tuple[str, str]], z: dict[str, complex], at: ToMm) -> list[Element]:
+    """The links with three joints among ``segs`` (a triad's basic link) drawn as hatched plates
+    (:mod:`graphmethods.sheets.plates`)."""
+    from graphmethods.sheets.plates import plate, triangles
+
+    return [el for tri in triangles([(a, b) for a, b in segs if a in z and b in z])
+            for el in plate([at(z[p]) for p in tri], name="plate-" + "".join(tri))]
 
 
 def _strokes(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[tuple[int, complex, complex]]:
