@@ -2,7 +2,8 @@
 
 On the force sheet, beside the result table: the course finds M_b by the force plans (and checks it by
 Zhukovsky's lever) in every position; the graph joins the ordinates M_b(φ_k) by chords, as drawn by hand,
-and marks the position the sheet analyses with its value (the result table's). The φ axis runs from
+and marks the position the sheet analyses (its ordinate a main line), its value written under the graph (the
+result table's). The φ axis runs from
 position 0 to m (its tick marks numbered by position), the M_b axis has nice ticks
 (:func:`~graphmethods.sheets.engine.axes.nice_ticks`), every one labelled, and includes 0.
 
@@ -60,7 +61,7 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
     ticks = nice_ticks(min(float(M.min()), 0.0), max(float(M.max()), 0.0), 6)
     label_w = max(len(nt.number(t, sig=6)) for t in ticks) * 0.62 * size + 3.0
     x0, x1 = sheet.box[0] + label_w + 2.0, sheet.box[2] - 4.0
-    y0, y1 = sheet.top + 2.0 * size, sheet.caption_y - 4.0 * size
+    y0, y1 = sheet.top + 2.0 * size, sheet.caption_y - 5.5 * size
     if x1 - x0 < 30.0 or y1 - y0 < 30.0:
         raise InputError("the balancing-moment graph has no room on this page; give a larger page")
     lo, hi = ticks[0], ticks[-1]
@@ -87,11 +88,10 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
             els.append(Text((x, y1 + 1.6 * size), str(k), size_mm=size, anchor="middle", name=f"position-{k}"))
     els.append(Polyline(tuple(at(k, float(M[k])) for k in range(n)), name="curve-M_b"))
     mark = at(i, float(M[i]))
-    value = f"{M_b} = {nt.number(float(M[i]), sig=6)} {nt.unit('N·m')}"
-    up = M[i] >= 0
+    value = f"{nt.word('forces.position_value', k=i)}: {M_b} = {nt.number(float(M[i]), sig=6)} {nt.unit('N·m')}"
     els += [Point(mark, radius_mm=1.0, name="mark"),
-            Text((mark[0] + 2.0, mark[1] + (-1.5 if up else 1.2 * size + 1.5)), value, size_mm=size,
-                 name="mark-value")]
+            Line((mark[0], zero), mark, name=f"ordinate-{i}-analysed"),
+            Text((sheet.box[0], y1 + 3.4 * size), value, size_mm=size, name="mark-value")]
     els += sheet.captions((s_M,), legend="")
     return sheet.scene(els, (s_M,), name=name)
 

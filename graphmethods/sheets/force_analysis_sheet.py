@@ -6,14 +6,17 @@ group, and for the crank, two panels side by side: the group cut from the linkag
 reactions of the links it was cut from (:func:`~graphmethods.sheets.force_sheet_plans.group_panel`), and its
 force plan at its own convenient μ_F filling its panel, with its vector equation and the reactions it finds
 (:func:`~graphmethods.sheets.force_sheet_plans.plan_panel`; the crank's plan closed by the balancing force
-F_b and R′_01). At the right, above the title block: the balancing moment from the force plans, from the
-lever and from the power balance with their differences in per cent, and every reaction's magnitude. Each
+F_b and R′_01); the plan of accelerations of the position, where the inertia forces' a_S and ε come from
+(:func:`~graphmethods.sheets.acceleration.acceleration_plan`, left out when its equations do not fit its
+panel). At the right, above the title block: the balancing moment from the force plans, from the lever and
+from the power balance with their differences in per cent, every reaction's magnitude, the inertia loads,
+and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`). Each
 part keeps its own scales, written under it; the title block names the scheme's.
 
 >>> from graphmethods.problems import builtin
->>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A2")
+>>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A1")
 >>> [e.name for e in s.elements][1:]
-['scheme', 'lever', 'plans', 'result-heading', 'result', 'reactions', 'note-0']
+['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia', 'note-0', 'balancing']
 """
 
 from __future__ import annotations
@@ -103,7 +106,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     block = sheet.probe.title_block
     inner = pg.inner_box()
     tb = block.table(inner[2], inner[3]) if block is not None else None
-    col_w = max([t.width_mm for t in tables] + ([tb.width_mm - 5.0] if tb is not None else []) + [text_width_mm(t, note_mm) for t in notes_text]
+    col_w = max([t.width_mm for t in tables] + ([tb.width_mm - 5.0] if tb is not None else [])
+                + [text_width_mm(t, note_mm) for t in notes_text]
                 + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
     tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)

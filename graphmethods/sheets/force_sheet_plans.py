@@ -116,7 +116,8 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     found = _found(fa, j, i, sides)
     value_mm = lettering(page).value_mm
     pitch = 1.8 * value_mm
-    area = (sheet.box[0] + L.left_mm + L.overhang_mm, sheet.top + 2.0 * size + (len(found) + 0.5) * pitch + L.overhang_mm,
+    top = sheet.top + 2.0 * size + (len(found) + 0.5) * pitch + L.overhang_mm
+    area = (sheet.box[0] + L.left_mm + L.overhang_mm, top,
             sheet.box[2] - L.left_mm - L.overhang_mm, sheet.caption_y - L.bottom_mm)
     pw, ph = area[2] - area[0], area[3] - area[1]
     if pw <= 10.0 or ph <= 10.0:
