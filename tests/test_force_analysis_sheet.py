@@ -195,7 +195,7 @@ def test_every_plan_has_its_own_panel_and_the_reactions_it_prints_are_the_json_s
     assert len(drawn) >= 3 and any(abs((a * b.conjugate()).imag) > 1e-6 * abs(a) * abs(b) for a in drawn for b in drawn)
     mo = fa.motion
     OA = complex(mo.z[mo.linkage.crank.pin][3]) - complex(mo.z[mo.linkage.crank.centre][3])
-    F_b = dict((lbl, F) for lbl, F, _ in sides)["F_b"]
+    F_b = {lbl: F for lbl, F, _ in sides}["F_b"]
     assert abs((OA.conjugate() * F_b).real) <= 1e-9 * abs(OA) * abs(F_b)
     assert (OA.conjugate() * F_b).imag == pytest.approx(float(fa.M_balance[3]), rel=1e-9)
 
