@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Element, Page, Scene, Text, Vector, markup, notation as get_notation
+from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.engine.lettering import lettering
@@ -199,6 +199,57 @@ def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
     return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
 
 
+def fit_with_arrows(points: list[complex], arrows: list[tuple[complex, complex]], s_F: Scale, area: SF.Box,
+                    nt: Notation, *, pad_mm: float = 14.0) -> tuple[Scale, SF.ToMm]:
+    """The largest convenient μ_l (m per mm) at which ``points`` (m) and the ``arrows`` drawn from their points
+    to μ_F (each (point m, force N)) fit ``area`` with ``pad_mm`` round them for the labels, and the map from a
+    point (m) to the page (mm) centring the whole drawing in ``area``.
+
+    >>> from graphmethods.scene import Scale
+    >>> s_l, at = fit_with_arrows([0j, 0.1 + 0j], [(0.1 + 0j, 100 + 0j)], Scale("μ_F", "N", 10.0),
+    ...                           (0.0, 0.0, 200.0, 100.0), get_notation("en"))
+    >>> s_l.per_mm, at(0j)
+    (0.001, (45.0, 50.0))
+    """
+    from graphmethods.scene.scale import pick_scale
+
+    room = (area[2] - area[0] - 2 * pad_mm, area[3] - area[1] - 2 * pad_mm)
+    z = np.asarray(points, dtype=complex)
+    span = max(float(np.ptp(z.real)) * room[1] / max(room[0], 1e-9), float(np.ptp(z.imag)), 1e-12)
+    first = pick_scale(span, max(room[1], 1e-9), symbol="μ_l", unit=nt.unit("m"))
+    tips = np.asarray([p for p, _ in arrows], dtype=complex)
+    offsets = np.asarray([F / s_F.per_mm for _, F in arrows], dtype=complex)
+    mu = first.per_mm
+    for _ in range(40):                         # up the series 1, 2, 2.5, 4, 5 × 10ᵏ until the arrows fit too
+        xs = np.concatenate([z.real / mu, tips.real / mu + offsets.real])
+        ys = np.concatenate([z.imag / mu, tips.imag / mu + offsets.imag])
+        if np.ptp(xs) <= room[0] + 1e-9 and np.ptp(ys) <= room[1] + 1e-9:
+            break
+        mu = _next_scale(mu)
+    s_l = Scale("μ_l", nt.unit("m"), mu)
+    cx = (area[0] + area[2]) / 2 - (float(xs.min()) + float(xs.max())) / 2
+    cy = (area[1] + area[3]) / 2 + (float(ys.min()) + float(ys.max())) / 2
+
+    def at(w: complex) -> tuple[float, float]:
+        return (cx + w.real / mu, cy - w.imag / mu)
+
+    return s_l, at
+
+
+def _next_scale(per_mm: float) -> float:
+    """The next larger value of the convenient series 1, 2, 2.5, 4, 5 × 10ᵏ after ``per_mm``.
+
+    >>> _next_scale(0.002), _next_scale(0.005), _next_scale(0.0025)
+    (0.0025, 0.01, 0.004)
+    """
+    k = math.floor(math.log10(per_mm) + 1e-9)
+    for m in (1.0, 2.0, 2.5, 4.0, 5.0, 10.0):
+        v = float(f"{m * 10.0 ** k:.12g}")
+        if v > per_mm * (1 + 1e-9):
+            return v
+    return float(f"{10.0 ** (k + 1) * 2:.12g}")
+
+
 def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
     """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
     its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
@@ -217,10 +268,11 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     w, h = sheet.box[2] - sheet.box[0], sheet.caption_y - sheet.top
     F_mm = min(60.0, max(20.0, min(w, h) / 3.5))
     L = SF.ForceFigureLayout(largest_force_mm=F_mm, margin_mm=0.6 * F_mm + 6.0)
-    cloud = np.array(list(z.values()) + list(where.values()))
     area = (sheet.box[0], sheet.top + 4.0, sheet.box[2], sheet.caption_y - L.bottom_mm)
-    s_l, at = SF._fit(cloud, area, L, None, nt, "the group")
     s_F = given_scale(None, "μ_F", nt.unit("N"), big, F_mm, what="the largest force")
+    arrows = [(where[lbl], F) for lbl, F, _ in sides]
+    arrows += [(complex(f.at[i]), complex(f.F[i])) for ln in pl.links for f in fa.applied.get(ln, ())]
+    s_l, at = fit_with_arrows(list(z.values()) + list(where.values()), arrows, s_F, area, nt)
     segs, blocks = SF._links_of(mo, i)
     segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0]
     occ = sheet.occ
