@@ -21,17 +21,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from graphmethods.dynamics.forces.base import (
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    cross,
-    dyad_loads,
-    moment_about,
-    reaction,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, dyad_loads, reaction
+from graphmethods.dynamics.forces.statics import cross, moment_about
 from graphmethods.kinematics.groups import RPR
 
 
