@@ -172,10 +172,9 @@ def problem_text(study, nt="en") -> str:
 
     Examples
     --------
-    >>> import pathlib
     >>> from graphmethods.dynamics.study import Study
-    >>> from graphmethods.kinematics import read_case
-    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+    >>> from graphmethods.problems.builtin import case
+    >>> st = Study(case("press"))
     >>> problem_text(st, "ru"), problem_text(st, "zh")
     ('дезаксиальный кривошипно-ползунный пресс, m = 12', '偏置曲柄滑块压力机，m = 12')
     """
