@@ -132,6 +132,16 @@ def plain(text: str) -> str:
     return "".join(t for t, _ in parse(text))
 
 
+def typed(text: str) -> str:
+    """The text as plain-text reports write it: a subscript after ``_``, a superscript after ``^`` (the
+    spelling of the English item names, ``ω_max``), so a lowered index is not read into its symbol.
+
+    >>> typed("ω_{ср}"), typed("tg ψ_{min}"), typed("J_{м}"), typed(r"a\\_b")
+    ('ω_ср', 'tg ψ_min', 'J_м', 'a_b')
+    """
+    return "".join(("_" if shift < 0 else "^" if shift > 0 else "") + t for t, shift in parse(text))
+
+
 def lowered_digits(name: str) -> str:
     """A point or link name as the books write it, its digits lowered: ``"S2"`` -> ``"S_{2}"``,
     ``"O3A"`` -> ``"O_{3}A"``, ``"s4"`` -> ``"s_{4}"`` (one notation on every sheet).
