@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.dynamics.forces.statics import Cx, Fl, cross
+from graphmethods.dynamics.forces.statics import Cx, Fl, cross, moment_about
 from graphmethods.errors import InputError
 
 GROUND = "0"
@@ -253,6 +253,43 @@ class DyadLoads:
         (``outer`` the outer reaction's pair digits, e.g. ``"12"``; forces in N)."""
         return Polygon((self.l2,), ((f"R_{outer}", R_outer), *self.known(self.f2)),
                        ((f"R_{self.l3}{self.l2}", None, R_32),))
+
+    def slot_couple(self, at: Cx) -> Fl:
+        """The couple of the slot of link 3 on block 2 pinned at ``at`` (m), N·m: the block's own moments about
+        its pin, reversed (the slot's force R_32 passes through the pin)."""
+        return -moment_about(self.f2, at)
+
+    def block_in_slot(self, a: str, P: str, at: Cx, R_32: Cx, Mc_32: Fl, u: Cx) -> BlockInSlot:
+        """Block 2, pinned at ``P`` (position ``at``, m) to link ``a``, sliding in the slot of link 3 (unit
+        direction ``u``) that pushes it with ``R_32`` (N) and the couple ``Mc_32`` (:meth:`slot_couple`): the
+        reaction at P from the block's polygon, and the steps and the polygon that say so (RPP, RPR).
+
+        >>> import numpy as np
+        >>> f = Force("F", F=np.array([-10j]), at=np.array([0.1 + 0j]), M=np.zeros(1))
+        >>> d = dyad_loads(("2", "3"), Kin(z={}, e={}, n=1), {"2": [f]})
+        >>> at = np.array([0j])
+        >>> b = d.block_in_slot("1", "A", at, np.array([4j]), d.slot_couple(at), np.array([1 + 0j]))
+        >>> float(d.slot_couple(at)[0]), xy(b.reactions[0].R[0]), b.steps[0]     # 10 N at 0.1 m; 10 − 4 N at A
+        (1.0, [0.0, 6.0], 'link 2: ΣM_A = 0 gives the couple of the slot on the block')
+        """
+        R_a2 = -(self.F2 + R_32)
+        ta = f"{a}{self.l2}"
+        return BlockInSlot(
+            reactions=(reaction(a, self.l2, "R", R_a2, at), reaction(self.l3, self.l2, "P", R_32, at, Mc_32, u)),
+            steps=(f"link {self.l2}: ΣM_{P} = 0 gives the couple of the slot on the block",
+                   f"link {self.l2}: ΣF_{self.l2} + R_{self.l3}{self.l2} + R_{ta} = 0"),
+            polygon=Polygon((self.l2,), (*self.known(self.f2), (f"R_{self.l3}{self.l2}", R_32)),
+                            ((f"R_{ta}", None, R_a2),)))
+
+
+@dataclass(frozen=True, eq=False)
+class BlockInSlot:
+    """What :meth:`DyadLoads.block_in_slot` finds: the reactions on the block (R_a2 at P, then R_32 with the
+    slot's couple), the first and the last step of the group's plan, and the block's polygon."""
+
+    reactions: tuple[Reaction, Reaction]
+    steps: tuple[str, str]
+    polygon: Polygon
 
 
 def dyad_loads(links: tuple[str, str], kin: Kin, loads: Mapping[str, Sequence[Force]]) -> DyadLoads:
