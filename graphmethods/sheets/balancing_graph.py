@@ -12,7 +12,7 @@ position 0 to m (its tick marks numbered by position), the M_b axis has nice tic
 >>> from graphmethods.sheets.forces import analysed
 >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
 >>> s = balancing_graph(fa, i, page=Page("A4", "landscape", frame=True))
->>> len([e for e in s.elements if e.name.startswith("ordinate-")])
+>>> len([e for e in s.elements if e.name.startswith("ordinate-") and e.name[9:].isdigit()])   # positions 0…12
 13
 """
 
