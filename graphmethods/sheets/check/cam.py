@@ -51,7 +51,7 @@ from graphmethods.kinematics.cam.geometry import to_cam_frame
 from graphmethods.scene import Page, Scene
 from graphmethods.sheets.check.cad import DrawingReport, _page_for, _page_xy, normalise
 from graphmethods.sheets.check.cam_reader import SAME_CENTRE_MM, Curves, fit_circle, read_curves
-from graphmethods.sheets.check.report import MISTAKES, TOL_MM, Checker, Item, rel
+from graphmethods.sheets.check.report import MISTAKES, TOL_MM, Checker, Item, Mistake, rel
 from graphmethods.titles import Title
 
 #: the usual mistakes of a cam profile (their names in en/ru/zh: the vocabulary's check family)
@@ -61,7 +61,6 @@ CAM_MISTAKES = {
     "s_from_centre": "s laid off from the foot of the follower's axis instead of from the base circle",
     "inversion_same_sense": "the follower turned with the cam (+φ) instead of against it (−φ): the profile mirrored",
 }
-MISTAKES.update(CAM_MISTAKES)
 
 #: the tolerance of a drawn curve against the exact one, mm (drafting plus the sag between the points)
 TOL_CURVE_MM = 1.0
@@ -281,6 +280,19 @@ class CamReport(DrawingReport):
     """A cam check's report: its overlay is the exact construction at the student's μ_l about their O."""
 
     cam_data: CamData | None = field(default=None, repr=False)
+
+    @property
+    def mistakes(self) -> tuple:
+        """The diagnosed mistakes (:data:`CAM_MISTAKES` besides the others), in the order they first appear."""
+        order: list[str] = []
+        by: dict[str, list[str]] = {}
+        for it in self.items:
+            for code in it.mistakes:
+                by.setdefault(code, []).append(it.key)
+                if code not in order:
+                    order.append(code)
+        names = {**MISTAKES, **CAM_MISTAKES}
+        return tuple(Mistake(c, names[c], tuple(by[c])) for c in order)
 
     def overlay(self, *, notation: Any = "en") -> Scene:
         """The exact profile by inversion at the student's μ_l, with O where the student's is (or the page's
