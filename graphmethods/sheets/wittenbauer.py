@@ -366,7 +366,7 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
     occ.add_line((ax_J.start, ax_J.tip))
     ax_T = clear_tick_labels(ax_T, occ, keep_values=True)
     occ.register(ax_T)
-    ax_J = clear_tick_labels(ax_J, occ, keep_values=True)
+    ax_J = clear_tick_labels(ax_J, occ, keep_values=True, other_side=True)
     occ.register(ax_J)
     return ax_T, ax_J
 
