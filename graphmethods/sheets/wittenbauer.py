@@ -556,23 +556,23 @@ def wide_rows(rows) -> tuple:
     return tuple((a, b) for a, b, _ in rows)
 
 
-def _table(rows, at, name="result") -> Table:
-    probe = Table((0.0, 0.0), rows, header_rows=0, align="l" * len(rows[0]), size_mm=TABLE_MM, padding_mm=1.6)
+def _table(rows, at, name="result", size_mm: float = TABLE_MM) -> Table:
+    probe = Table((0.0, 0.0), rows, header_rows=0, align="l" * len(rows[0]), size_mm=size_mm, padding_mm=1.6)
     widths = tuple(w * 1.05 + 0.5 for w in probe.column_widths())       # room for the estimate's error
-    return Table(at, rows, col_widths_mm=widths, header_rows=0, align="l" * len(rows[0]), size_mm=TABLE_MM,
-                 row_height_mm=5.6, padding_mm=1.6, name=name)
+    return Table(at, rows, col_widths_mm=widths, header_rows=0, align="l" * len(rows[0]), size_mm=size_mm,
+                 row_height_mm=5.6 * size_mm / TABLE_MM, padding_mm=1.6, name=name)
 
 
-def _place_table(occ, rows, candidates, name="result") -> Table:
+def _place_table(occ, rows, candidates, name="result", size_mm: float = TABLE_MM) -> Table:
     """The table at the first candidate top-left corner where it covers nothing (the first otherwise)."""
-    probe = _table(rows, (0.0, 0.0))
+    probe = _table(rows, (0.0, 0.0), size_mm=size_mm)
     w, h = probe.width_mm, probe.height_mm
     for at in candidates:
         if occ.is_free((at[0], at[1], at[0] + w, at[1] + h)):
             break
     else:
         at = candidates[0]
-    table = _table(rows, at, name)
+    table = _table(rows, at, name, size_mm)
     occ.add_box((at[0], at[1], at[0] + w, at[1] + h))
     return table
 
