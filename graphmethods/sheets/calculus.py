@@ -46,8 +46,8 @@ from graphmethods.scene import (
     Scene,
     Table,
     Text,
+    axis_ticks,
     markup,
-    nice_ticks,
     notation as get_notation,
     pick_angle_scale,
     pick_scale,
@@ -225,9 +225,9 @@ class _Band:
                       tick_labels=_number_labels(m, step_mm), label=nt.sym("phi"), size_mm=SMALL_MM,
                       skip_zero_label=self.lo < 0, name=f"axis-phi-{name}")
         room = self.s_y.per_mm * 2.0
-        ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.tick_gap_mm) if y_ticks else ()
+        ticks = axis_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.tick_gap_mm) if y_ticks else ()
         if y_ticks and not any(ticks):      # only 0, which is not written: closer values rather than none
-            ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.close_tick_gap_mm)
+            ticks = axis_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.close_tick_gap_mm)
         ax_y = Axis(self.origin, self.s_y, "y", min_value=self.lo if self.lo < 0 else 0.0,
                     max_value=max(self.hi, room), ticks=ticks, label=y_label, size_mm=SMALL_MM,
                     decimal=nt.decimal, skip_zero_label=True, name=f"axis-{name}")

@@ -16,7 +16,7 @@ from graphmethods.errors import InputError
 from graphmethods.scene import Line, Page, Scale, Scene, Table, Text, markup, notation as get_notation, pick_scale
 from graphmethods.scene.elements import Element, Group, label_bbox, make_label
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import MAIN, Label
+from graphmethods.scene.primitives import MAIN, Label, walk
 from graphmethods.sheets.dynamics import (
     SMALL_MM,
     TEXT_MM,
@@ -174,24 +174,11 @@ def _title_block_top(sheet: SheetFrame) -> float:
 RESULT_SIZES_MM = (5.0, TABLE_MM)
 
 
-def _texts(prims: object) -> list[Label]:
-    """The labels among primitives, groups opened."""
-    if isinstance(prims, Label):
-        return [prims]
-    inner = getattr(prims, "primitives", None) or getattr(prims, "children", None)
-    if isinstance(prims, (tuple, list)):
-        inner = prims
-    if inner is None:
-        return []
-    if callable(inner):
-        inner = inner()
-    return [lab for p in inner for lab in _texts(p)]  # type: ignore[union-attr]
-
-
 def _broken_at_texts(lines: list[Element], others: list[Element], gap_mm: float = 0.6) -> list[Element]:
     """Thin projection lines broken where they would run through a text (a draftsman stops a thin line at the
     text and goes on past it): each line becomes a group of its pieces, under the same name."""
-    boxes = np.array([label_bbox(lab) for e in others for lab in _texts(e.primitives())], dtype=float).reshape(-1, 4)
+    boxes = np.array([label_bbox(p) for e in others for p in walk(e.primitives()) if isinstance(p, Label)],
+                     dtype=float).reshape(-1, 4)
     boxes += np.array([-gap_mm, -gap_mm, gap_mm, gap_mm])
     out: list[Element] = []
     for e in lines:
@@ -478,7 +465,8 @@ def _ordinates_table(occ: Occupancy, content: SheetContent, nt: Notation, right:
         probe = Table((0.0, 0.0), tuple(rows), align="rrrrr", size_mm=size, row_height_mm=row_mm, name="ordinates")
         widths = np.asarray(probe.column_widths(), dtype=float)
         if width_mm > widths.sum():
-            probe = replace(probe, col_widths_mm=tuple(float(c) for c in widths + (width_mm - widths.sum()) / len(widths)))
+            spread = widths + (width_mm - widths.sum()) / len(widths)
+            probe = replace(probe, col_widths_mm=tuple(float(c) for c in spread))
         w = max(probe.width_mm, markup.text_width_mm(heading, TEXT_MM + 0.8) * 1.1)    # the bold heading fits too
         h = probe.height_mm
         for y in np.arange(top, bottom - h, 5.0):

@@ -21,8 +21,8 @@ from graphmethods.scene import (
     Scale,
     Scene,
     Text,
+    axis_ticks,
     markup,
-    nice_ticks,
     notation as get_notation,
     pi_ticks,
 )
@@ -136,7 +136,7 @@ def _energy_axes(g: _EnergyGraph, nt: Notation, occ: Occupancy, sym: str,
                   labels_side="above" if -lo > hi else "below")
     room = g.s_E.to_value(L.values_above_mm) if -lo > hi else g.s_E.per_mm   # tick labels above the φ axis
     ax_E = Axis(origin, g.s_E, "y", min_value=lo if lo < 0 else 0.0, max_value=max(hi, room),
-                ticks=nice_ticks(lo, hi, g.s_E, min_gap_mm=L.E_tick_gap_mm), label=nt.quantity(sym, work_unit),
+                ticks=axis_ticks(lo, hi, g.s_E, min_gap_mm=L.E_tick_gap_mm), label=nt.quantity(sym, work_unit),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     curve = Polyline(g.frame.pts(g.phi - g.phi0, g.Y), style=MAIN, name="curve-E")
     ax_phi, ax_E = _clear_ticks(ax_phi, curve), _clear_ticks(ax_E, curve)

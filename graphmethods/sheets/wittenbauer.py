@@ -50,8 +50,8 @@ from graphmethods.scene import (
     Scene,
     Table,
     Text,
+    axis_ticks,
     markup,
-    nice_ticks,
     notation as get_notation,
 )
 from graphmethods.scene.elements import Element, label_bbox
@@ -331,7 +331,7 @@ class _DiagramPlace:
         s_J = Scale(nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), res.mu_J)
         s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
         X, Y = np.asarray(res.x_mm, dtype=float), np.asarray(res.y_mm, dtype=float)
-        ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
+        ticks_T = tuple(t for t in axis_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
         ticks_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=14.0)[0]
         R = lay.psi_radius_mm
         right = float(X[:-1].min()) >= R + lay.psi_room_mm
