@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -52,7 +52,7 @@ from graphmethods.scene import (
     pick_angle_scale,
     pick_scale,
 )
-from graphmethods.scene.elements import Element, lettered_size
+from graphmethods.scene.elements import ASCENT, DESCENT, Element, lettered_size
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, clear_tick_labels, problem_title
@@ -328,6 +328,21 @@ def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) ->
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
+def _column_table(rows: Rows, title: str, *, align: str, name: str, title_name: str, right: float, bottom: float,
+                  under: Sequence[Element], floor: float) -> list[Element]:
+    """The right column's table with its title, its bottom at ``bottom``, or lower (down to ``floor``) when its
+    title would cover the notes above it (``under``: on a short strip, a slide)."""
+    table = _table(rows, align=align, name=name, right=right, bottom=bottom)
+    n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
+    title_top = table.at[1] - 2.0 - (n - 1) * TABLE_MM * 1.35 - ASCENT * (TABLE_MM + 0.2)
+    clear = max((t.at[1] + (DESCENT + markup.SUB_SHIFT) * t.size_mm for t in under if isinstance(t, Text)),
+                default=-math.inf)
+    if title_top < clear + 1.5:
+        down = min(clear + 1.5 - title_top, max(0.0, floor - bottom))
+        table = replace(table, at=(table.at[0], table.at[1] + down))
+    return [*_titled_table(table, title, title_name), table]
+
+
 def _fmt(nt: Notation, value: float, sig: int = 3) -> str:
     return nt.number(float(value), sig=sig)
 
@@ -515,7 +530,7 @@ def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: 
 
 
 def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x1: float, occ: Occupancy,
-                      nt: Notation, *, given: tuple[bool, bool], sym_v: str, sym_a: str) -> list[Element]:
+                      nt: Notation, *, given: tuple[bool, bool], sym_v: str, sym_a: str, floor: float) -> list[Element]:
     """The right column: the formula of each scale beside its graph, then the comparison table."""
     rx, drop, sd, mm = x1 - ks.right_col, LAYOUT.block_drop_mm, ks.sd, nt.unit("mm")
     s_s, s_v, s_a, s_t = ks.s_s, ks.s_v, ks.s_a, ks.s_t
@@ -534,8 +549,9 @@ def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x
                                                       f"H_2 = {nt.number(sd.a.H_mm)} {mm} ({how[1]})"],
                             "formula-a", occ)
     rows = _comparison_rows(nt, sd, sym_v, sym_a)
-    table = _table(rows, align="llrr", name="comparison-table", right=x1, bottom=bands[2].top + ks.strip_mm)
-    return elements + _titled_table(table, nt.word("calculus.comparison"), "comparison-title") + [table]
+    return elements + _column_table(rows, nt.word("calculus.comparison"), align="llrr", name="comparison-table",
+                                    title_name="comparison-title", right=x1, bottom=bands[2].top + ks.strip_mm,
+                                    under=elements, floor=floor)
 
 
 def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = None, analogues: bool = False,
@@ -586,7 +602,8 @@ def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = Non
     b_v, els_v = _v_strip(ks, occ, nt, m, sym_v)
     b_a, els_a = _a_strip(ks, occ, nt, m, sym_a)
     column = _kinematic_column(ks, (b_s, b_v, b_a), sheet.box[2], occ, nt, given=(H1_mm is not None,
-                               H2_mm is not None), sym_v=sym_v, sym_a=sym_a)
+                               H2_mm is not None), sym_v=sym_v, sym_a=sym_a,
+                               floor=sheet.caption_y - TEXT_MM - 1.5)
     scales = ks.all()
     elements = [sheet.header(), *els_s, *els_v, *els_a, *column, *sheet.captions(scales)]
     notes = tuple(n for n in (ks.s_phi.note, ks.s_s.note) if n) + (
