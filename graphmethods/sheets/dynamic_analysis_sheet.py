@@ -35,7 +35,7 @@ from graphmethods.sheets.dynamics import (
     turned_inertia_elements,
     value_text,
 )
-from graphmethods.sheets.engine.lettering import lettered_by_page
+from graphmethods.sheets.engine.lettering import lettered, lettered_by_page
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import Occupancy
 from graphmethods.sheets.styles import PROJECTION
@@ -134,6 +134,50 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
         f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm" + (f" and J_0 = {J_0:g} kg·m²" if J_0 else ""),)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
+
+
+def sheet_scales(study, *, page="A1", tangents: str = "exact") -> tuple[Scale, Scale, float]:
+    """μ_J, μ_T and J_0 of the energy–mass diagram of ``study``'s dynamic-analysis sheet: the scales its
+    construction is drawn and measured at (tan ψ, k, l, kl), the same in every language, which the slides,
+    the HTML stepper and ``study --json`` use so that they print the sheet's numbers.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> s_J, s_T, J_0 = sheet_scales(Study(builtin.case("press"), positions=12))
+    >>> s_J.per_mm, s_T.per_mm, J_0
+    (0.0005, 2.5, 0.5)
+    """
+    _, lay = _default_placement(study, page=page, tangents=tangents)
+    return lay.s_J, lay.s_T, lay.J_0
+
+
+def sheet_construction(study, *, page="A1", tangents: str = "exact") -> dict[str, float]:
+    """The numbers of the dynamic-analysis sheet's energy–mass construction, as ``study --json`` reports them
+    (``"sheet"``): μ_J (kg·m²/mm), μ_T (J/mm), J_0 (kg·m²), tan ψ_max, tan ψ_min, kl (mm) and J_F (kg·m²).
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> c = sheet_construction(Study(builtin.case("press"), positions=12))
+    >>> c["mu_J"], c["mu_T"], round(c["kl_mm"], 1), round(c["J_F"], 2)
+    (0.001, 2.5, 217.6, 13.28)
+    """
+    content, lay = _default_placement(study, page=page, tangents=tangents)
+    res = lay.result(content)
+    return {"mu_J": lay.s_J.per_mm, "mu_T": lay.s_T.per_mm, "J_0": lay.J_0, "tan_psi_max": float(res.tan_psi_max),
+            "tan_psi_min": float(res.tan_psi_min), "kl_mm": float(res.kl_mm), "J_F": float(res.J_F)}
+
+
+def _default_placement(study, *, page, tangents: str) -> tuple[SheetContent, SheetPlacement]:
+    """The content and placement of the sheet with every scale picked (they do not depend on the language)."""
+    study = as_study(study)
+    nt = get_notation("en")
+    with lettered(page if hasattr(page, "size") else str(page).upper()):
+        sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
+                           problem=problem_text(study, nt), title_block=True, default_page=_sheet_page(page))
+        return _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=None, mu_T=None, mu_M=None,
+                               mu_phi=None)
 
 
 def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **scales: object

@@ -622,7 +622,8 @@ def inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[S
 # ----------------------------------------------------------------------------- 1. the compact A4 figure
 
 def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact", notation="en", page=None,
-                        title=None, problem=None, title_block: bool = True, name: str = "wittenbauer") -> Scene:
+                        title=None, problem=None, title_block: bool = True, name: str = "wittenbauer",
+                        J_0: float | None = None) -> Scene:
     """The Wittenbauer energy–mass diagram alone, on an A4 landscape sheet, with its result table.
 
     Parameters
@@ -634,6 +635,9 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
         kg·m² per mm (abscissa) and J per mm (ordinate); picked to fill the sheet when not given.
     tangents : {"exact", "textbook"}
         tan ψ with (1 ± δ/2)² or (1 ± δ) (a Study source only; a result keeps its own).
+    J_0 : float, optional
+        Where the J_e axis starts, kg·m² (0 ≤ J_0 ≤ J_e,min): the A1 sheet's, for a drawing of its
+        construction; picked from the data when not given (0, or a suppressed zero).
 
     Returns
     -------
@@ -660,7 +664,11 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
     J_lo = float(data.J_e.min())
-    J_0 = inertia_origin(J_lo, float(data.J_e.max())) if suppressed_zero(J_lo, float(data.J_e.max())) else 0.0
+    if J_0 is None:
+        J_0 = inertia_origin(J_lo, float(data.J_e.max())) if suppressed_zero(J_lo, float(data.J_e.max())) else 0.0
+    elif not (math.isfinite(J_0) and 0.0 <= J_0 <= J_lo):
+        raise InputError(f"J_0 = {J_0!r} kg·m²: the J_e axis starts at 0 or below J_e,min = {J_lo:g} kg·m²")
+    J_0 = float(J_0)
     J_to, T_hi, T_lo = data.extent(J_0)         # the J axis from J_0, as on the A1 sheet; ΔT to k and l there
     probe_res = data.result(1.0, 1.0)
     table_w = _table(compact_rows(result_rows(probe_res, nt, J_0=J_0)), (0, 0)).width_mm
