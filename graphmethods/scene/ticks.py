@@ -131,10 +131,18 @@ def axis_ticks(lo: float, hi: float, scale: Scale, *, min_gap_mm: float = 8.0) -
     """
     lo, hi = min(float(lo), float(hi)), max(float(lo), float(hi))
     length_mm = scale.to_mm(hi - lo)
-    max_n = max(1, int(length_mm // min_gap_mm)) if math.isfinite(length_mm) else 1
-    ticks = nice_ticks(lo, hi, max_n)
+    n0 = max(1, int(length_mm // min_gap_mm)) if math.isfinite(length_mm) else 1
     slack = 1e-9 * max(abs(lo), abs(hi), hi - lo, 1e-300)
-    return tuple(t for t in ticks if lo - slack <= t <= hi + slack)
+    kept: tuple[float, ...] = ()
+    # the rule counts the intervals that run past the axis's ends too; a short axis whose end intervals are
+    # cut off may keep fewer than three ticks: a few more intervals, as long as the ticks stay min_gap_mm apart
+    for max_n in range(n0, n0 + 4):
+        if kept and scale.to_mm(nice_step(lo, hi, max_n)) < min_gap_mm * (1 - 1e-9):
+            break
+        kept = tuple(t for t in nice_ticks(lo, hi, max_n) if lo - slack <= t <= hi + slack)
+        if len(kept) >= 3:
+            break
+    return kept
 
 
 __all__ = ["STEPS", "axis_ticks", "nice_step", "nice_ticks"]
