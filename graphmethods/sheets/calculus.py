@@ -379,11 +379,25 @@ def _slider_subject(subject: Any, nt: Notation) -> tuple[Any, float | None, str]
                      f"linkage with a slider, got {type(subject).__name__}")
 
 
+def _free_values(axis: Axis, occ: Occupancy) -> bool:
+    """Does the axis write a value other than 0 clear of what is drawn, on either side of a y axis?"""
+    sides = (axis, replace(axis, labels_side="right")) if axis.labels_side in ("", "left") else (axis,)
+    return any(any(lab for t, lab in zip(a.ticks, clear_tick_labels(a, occ).tick_labels or ()) if t != 0)
+               for a in sides)
+
+
 def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: int, name: str,
                 pos: str) -> tuple[list[Axis], list[Text]]:
     """A strip's φ and value axes, their tick labels that would cover what is drawn left out, and the
     position numbers that lost their place set beside their ticks (call after registering the strip)."""
     full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
+    if ax_y.ticks and not _free_values(ax_y, occ):      # every value would be crossed: closer
+        for gap in np.linspace(LAYOUT.tick_gap_mm, LAYOUT.close_tick_gap_mm, 5)[1:]:   # ticks, some of them free
+            closer = replace(ax_y, ticks=axis_ticks(band.lo, band.hi, band.s_y, min_gap_mm=float(gap)),
+                             tick_labels=None)
+            if _free_values(closer, occ):
+                ax_y = closer
+                break
     ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True, other_side=True)
     occ.register(ax_phi, ax_y)
     return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
