@@ -394,10 +394,10 @@ def _velocity_column(plans, k: int, lk: _Linkage, nt) -> tuple[str, list[str], l
     return phi, _equations(plans, k, nt, lk), _omega_texts(plans, k, nt), head
 
 
-def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1: float, nt,
+def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1: float, bottom: float, nt,
                     lay: PlanLayout) -> list[Element]:
-    """The column beside the plan at ``at`` (mm): φ and the equations, the table of the vectors' drawn lengths
-    and values, ω of the links, the note of an ill-conditioned position."""
+    """The column beside the plan at ``at`` (mm), to end above ``bottom`` (mm): φ and the equations, the table
+    of the vectors' drawn lengths and values, ω of the links, the note of an ill-conditioned position."""
     phi, eqs, omega_texts, head = texts
     tx, ty = at
     els: list[Element] = [Text((tx, ty + i * lay.line_mm), line, size_mm=TEXT_MM, name=f"equation-{i}")
@@ -407,13 +407,17 @@ def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1
         L = math.dist(pts[v.start], pts[v.end])
         rows.append((_plan_markup(v.start) + _plan_markup(v.end), _num(nt, L, 2),
                      f"{v.symbol} = {_num(nt, L * s_v.per_mm, 3)}"))
-    table = Table((tx, ty + (len(eqs) + 1) * lay.line_mm + 2.0), tuple(rows), align="crl", size_mm=TABLE_MM,
-                  row_height_mm=lay.row_mm, name="table")
+    numbers = _omega_numbers(plans.positions.mechanism)
+    t_top = ty + (len(eqs) + 1) * lay.line_mm + 2.0
+    below = lay.after_table_mm + (len(omega_texts) + bool(plans.ill_conditioned[k])) * lay.line_mm
+    row = lay.row_mm                    # a long column (a triad's): the table's rows closer, down to 1.7 text heights
+    if t_top + len(rows) * row + below > bottom:
+        row = max(TABLE_MM * 1.7, (bottom - t_top - below) / len(rows))
+    table = Table((tx, t_top), tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")
     if table.top_right[0] > x1 + 1e-6:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
     els.append(table)
     wy = table.bottom_left[1] + lay.after_table_mm
-    numbers = _omega_numbers(plans.positions.mechanism)
     els += [Text((tx, wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"omega-{num}")
             for i, (num, t) in enumerate(zip(numbers, omega_texts))]
     if plans.ill_conditioned[k]:
@@ -492,7 +496,8 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
                          size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4), prefix="",
                          hard=hard, leaders=leaders)
     column = _velocity_texts(plans, k, texts, vectors, pts, s_v, (split + lay.column_x_mm, sheet.top + lay.column_x_mm),
-                             x1, nt, lay)
+                             x1, min(sheet.caption_y, sheet.page((s_v,)).content_box()[3] - 1.0) - lay.caption_room_mm,
+                             nt, lay)
     legend = f"{lk.speed_text(nt)};  {nt.word('kinematics.legend')}"
     scales = (s_v,)
     elements = [sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + column
