@@ -54,8 +54,7 @@ NOT_DRAWN = {
 KNOWN: dict[tuple[str, str, str], str] = {
     **{("triad-six-bar", f, lang): why for lang in LANGS for f, why in (
         ("velocity_plan", "a class III group has five links' ω to write under the plan: the lines run below the frame"),
-        ("velocity_table", "the table of a class III six-bar (9 points, 5 links) is wider than an A4 page"),
-        ("kinematic_analysis_sheet", "its velocity table and plan texts, as in velocity_table and velocity_plan"))},
+        ("velocity_table", "the table of a class III six-bar (9 points, 5 links) is wider than an A4 page"))},
 }
 
 CASES = [(p, f) for p in builtin.names() if p not in builtin.CAMS

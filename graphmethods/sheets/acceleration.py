@@ -269,12 +269,16 @@ def _equation_blocks(phi: str, eqs: list[tuple[str, str]], *, split_values: bool
 
 
 def _equation_columns(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_bottom: float,
-                      lay: AccelerationPlanLayout) -> tuple[list[list[Block]], float, float]:
+                      lay: AccelerationPlanLayout, width: float = math.inf) -> tuple[list[list[Block]], float, float]:
     """The equations under the plan: one column, or two on a slide (a short page) when every line fits and
-    the table beside the plan does not reach them. Returns the columns, their height and a column's width."""
+    the table beside the plan does not reach them; the known values each on a line of its own when a line of
+    them is wider than ``width`` (mm: the plan's share, the column beside reaching down to them). Returns the
+    columns, their height and a column's width."""
     x0, _, x1, _ = sheet.box
     half = (x1 - x0) / 2 - 4.0
     blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
+    if any(markup.text_width_mm(t, TEXT_MM) + dx > width for b_ in blocks for _, t, dx in b_):
+        blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
     two = getattr(sheet.probe, "size", "") == "SLIDE" and len(blocks) > 2
     if two:
         blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
@@ -443,7 +447,9 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
     split = K._plan_split(sheet.box, right_w, lay)
-    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
+    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=split - x0 - lay.plan_gap_mm)
+    if sheet.caption_y - lay.caption_room_mm - eq_h - sheet.top < lay.min_plan_mm:   # no room for a line a value
+        columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
     area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm - eq_h)
     beside = _equations_beside(phi, eqs, sheet, right_w, right_bottom, lay)
     if beside is not None:              # a tall page: the equations under the table, the plan the whole height ...

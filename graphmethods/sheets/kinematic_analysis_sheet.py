@@ -24,7 +24,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, Table, notation as get_notation
 from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.lettering import lettered_by_page
@@ -171,7 +171,8 @@ def _right_part(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, f
                       for (fn, _), (a, b) in zip(tables, rows)]
         except InputError:              # too wide or too long: one table, or none
             continue
-        left = max(left, x1 - max(p.element("table").width_mm for p in probes) - 2 * lay.table_pad_mm)
+        widths = [t.width_mm for p in probes for t in p.elements if isinstance(t, Table)]
+        left = max(left, x1 - max(widths) - 2 * lay.table_pad_mm)
         return ([(fn(case, notation=nt, title_block=False, m=m, page=region_page(pg, (left, a, x1, b))), nm)
                  for (fn, nm), (a, b) in zip(tables, rows)], left - lay.gap_mm)
     return [], x1
