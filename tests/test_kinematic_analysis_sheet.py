@@ -84,7 +84,7 @@ def test_a_normal_acceleration_names_the_length_of_its_own_points():
 
     s = acceleration_plan(builtin.case("triad-six-bar"), 2)
     texts = [markup.plain(e.text) for e in s.elements if hasattr(e, "text")]
-    normals = [t for line in texts for t in line.split(";  ") if t.startswith("anBA") or t.startswith("anCE")]
+    normals = [t for line in texts for t in line.split(";  ") if t.startswith(("anBA", "anCE"))]
     assert normals and all(("lAB" in t) or ("lEC" in t) for t in normals), normals
     assert not any("= ω2²·lK3" in t for t in texts)
 

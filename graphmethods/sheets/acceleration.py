@@ -318,6 +318,20 @@ def _equations_beside(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_
     return split, [blocks]
 
 
+def _runs_under(columns: list[list[Block]], top: float, x0: float, split: float, right_bottom: float,
+                lay: AccelerationPlanLayout) -> bool:
+    """Does a line of the equations (the first at ``top``, mm) reach past ``split`` above ``right_bottom``, where
+    the table and ε beside the plan are?"""
+    row = 0
+    for b_ in columns[0]:
+        for _, t, dx in b_:
+            y = top + row * lay.equation_mm
+            if y - TEXT_MM < right_bottom and x0 + dx + markup.text_width_mm(t, TEXT_MM) > split - lay.plan_gap_mm:
+                return True
+            row += 1
+    return False
+
+
 def _plan_need(area, arr: np.ndarray, lay: AccelerationPlanLayout) -> float:
     """The convenient μ (per mm) a plan of points ``arr`` (n, 2) gets in ``area`` within its margins (inf when
     the area has no room)."""
@@ -447,9 +461,12 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
     split = K._plan_split(sheet.box, right_w, lay)
-    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=split - x0 - lay.plan_gap_mm)
-    if sheet.caption_y - lay.caption_room_mm - eq_h - sheet.top < lay.min_plan_mm:   # no room for a line a value
-        columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
+    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
+    if _runs_under(columns, sheet.caption_y - lay.caption_room_mm - eq_h + lay.equations_below_mm, x0, split,
+                   right_bottom, lay):                                  # a line of values would run under ε
+        split_up = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=split - x0 - lay.plan_gap_mm)
+        if sheet.caption_y - lay.caption_room_mm - split_up[1] - sheet.top >= lay.min_plan_mm:
+            columns, eq_h, half = split_up
     area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm - eq_h)
     beside = _equations_beside(phi, eqs, sheet, right_w, right_bottom, lay)
     if beside is not None:              # a tall page: the equations under the table, the plan the whole height ...
