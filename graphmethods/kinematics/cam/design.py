@@ -32,7 +32,7 @@ from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.cam.extrema import maximize
-from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, psi_0, to_cam_frame
+from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, pressure_angle, psi_0, to_cam_frame
 from graphmethods.kinematics.cam.problem import CamProblem, Phase
 
 Array = NDArray[np.float64]
@@ -196,6 +196,8 @@ def _design_translating(p: CamProblem) -> float:
 def _alpha_max(p: CamProblem, r0: float, kind: str) -> tuple[float, float]:
     """(φ, largest |α| in rad) over the phases of this kind at the pitch base radius r₀."""
     def g(s: Array, s1: Array, s2: Array) -> Array:
+        if p.oscillating:                   # α alone (the bisection on r₀ asks for it ~10⁴ times)
+            return np.abs(pressure_angle(r0, s, s1, arm=p.arm, pivot=p.pivot))
         return np.abs(pitch_frame(p.follower_type, r0, s, s1, s2, offset=p.offset, arm=p.arm, pivot=p.pivot).alpha)
     return _max_over(p.phases, (kind,), g)
 
@@ -215,11 +217,11 @@ def _design_oscillating(p: CamProblem) -> float:
         except InputError:
             return math.inf
     grid = np.linspace(lo_r, hi_r, 66)[1:-1]
-    ok = [r for r in grid if excess(r) <= 0.0]
-    if not ok:
+    first_ok = next((r for r in grid if excess(r) <= 0.0), None)     # the grid scanned up to the first fit
+    if first_ok is None:
         raise InputError(f"no base radius keeps the pressure angles within [α] = {p.alpha_max_deg:g}° / "
                          f"{p.alpha_return_max_deg:g}° with this arm and pivot; give base_radius or change them")
-    hi = ok[0]
+    hi = first_ok
     i = int(np.searchsorted(grid, hi))
     lo = grid[i - 1] if i > 0 else lo_r
     for _ in range(200):
@@ -255,8 +257,46 @@ def _impacts(p: CamProblem) -> tuple[Impact, ...]:
     return tuple(out)
 
 
+#: the designs made in this process, by problem (frozen, hashable): the gallery, a sheet's figures and a class
+#: set draw one cam several times, and an oscillating follower's bisection on r₀ is the costly part
+_DESIGNS: dict[CamProblem, CamDesign] = {}
+
+
 def design(p: CamProblem) -> CamDesign:
     """Design (or take) the base radius and find the cam's extremes (see the module's docstring).
+
+    Made once per problem in a process (a :class:`CamDesign` is frozen: the same problem gives the same
+    design, shared).
+
+    Parameters
+    ----------
+    p : CamProblem
+
+    Returns
+    -------
+    CamDesign
+
+    Raises
+    ------
+    InputError
+        A base radius that cannot be designed or used (the message says why and what to give).
+
+    Examples
+    --------
+    >>> from graphmethods.kinematics.cam.problem import EXAMPLE, cam_from_dict
+    >>> design(cam_from_dict(EXAMPLE)) is design(cam_from_dict(EXAMPLE))
+    True
+    """
+    made = _DESIGNS.get(p)
+    if made is None:
+        if len(_DESIGNS) >= 64:
+            _DESIGNS.clear()
+        made = _DESIGNS[p] = design_afresh(p)
+    return made
+
+
+def design_afresh(p: CamProblem) -> CamDesign:
+    """:func:`design` without the process's cache (what the bench times).
 
     Parameters
     ----------
