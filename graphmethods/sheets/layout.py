@@ -265,12 +265,23 @@ class Occupancy:
         return segments_hit_boxes(seg[near], grown).sum(axis=1).astype(int)
 
     def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
-        """The first label beside ``at`` (directions × gaps) whose box is free; None when none is."""
-        for gap in gaps:
-            for d in directions:
-                lab = place_label(at, text, d, gap_mm=gap, size_mm=size_mm)
+        """The first label beside ``at`` (directions × gaps) whose box is free; None when none is.
+
+        The first direction alone, then the others of a gap in one :meth:`free` call (the same decisions
+        as :meth:`is_free` one by one, in the same order).
+        """
+        for k, gap in enumerate(gaps):
+            if k == 0:
+                lab = place_label(at, text, directions[0], gap_mm=gap, size_mm=size_mm)
                 if self.is_free(label_bbox(lab), within=within):
                     return lab
+            rest = directions[1:] if k == 0 else directions
+            if not rest:
+                continue
+            labels = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in rest]
+            hit = np.flatnonzero(self.free([label_bbox(lab) for lab in labels], within=within))
+            if len(hit):
+                return labels[int(hit[0])]
         return None
 
     def place_label(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
