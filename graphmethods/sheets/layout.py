@@ -125,6 +125,31 @@ def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     return hit & (t0 <= t1)
 
 
+def _pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """:func:`segments_hit_boxes` of aligned pairs: does segment ``seg[i]`` pass through box ``boxes[i]``?
+
+    The same arithmetic pair by pair (the same divisions, the same comparisons), on 1-d arrays: the
+    pairs worth testing only, not every segment against every box.
+
+    >>> _pairs_hit(np.array([[0.0, 10.0, 100.0, 10.0]] * 2), np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])
+    ...            ).tolist()
+    [True, False]
+    """
+    px, py = seg[:, 0], seg[:, 1]
+    dx, dy = seg[:, 2] - seg[:, 0], seg[:, 3] - seg[:, 1]
+    x0, y0, x1, y1 = boxes[:, 0], boxes[:, 1], boxes[:, 2], boxes[:, 3]
+    t0, t1 = np.zeros(len(seg)), np.ones(len(seg))
+    hit = np.ones(len(seg), dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
+            zero = pk == 0
+            hit &= ~(zero & (qk < 0))
+            t = qk / np.where(zero, 1.0, pk)
+            t0 = np.where(pk < 0, np.maximum(t0, t), t0)
+            t1 = np.where(pk > 0, np.minimum(t1, t), t1)
+    return hit & (t0 <= t1)
+
+
 class Occupancy:
     """What is drawn already (line segments and boxes), to place labels where nothing is.
 
@@ -246,9 +271,15 @@ class Occupancy:
         g = np.column_stack((boxes[:, 0] - d, boxes[:, 1] - d, boxes[:, 2] + d, boxes[:, 3] + d))
         rows = np.flatnonzero(ok)
         gr = g[rows]
-        near = self._near((gr[:, 0].min(), gr[:, 1].min(), gr[:, 2].max(), gr[:, 3].max()))
-        if near.any():
-            ok[rows] = ~segments_hit_boxes(self._seg[near], gr).any(axis=1)
+        near = np.flatnonzero(self._near((gr[:, 0].min(), gr[:, 1].min(), gr[:, 2].max(), gr[:, 3].max())))
+        if len(near):
+            e = _NEAR_MM                           # each box against the segments near it (as _near)
+            lo, hi = self._seg_lo[near], self._seg_hi[near]
+            i, j = np.nonzero((lo[None, :, 0] <= gr[:, 2, None] + e) & (hi[None, :, 0] >= gr[:, 0, None] - e)
+                              & (lo[None, :, 1] <= gr[:, 3, None] + e) & (hi[None, :, 1] >= gr[:, 1, None] - e))
+            if len(i):
+                hit = _pairs_hit(self._seg[near[j]], gr[i])
+                ok[rows[np.unique(i[hit])]] = False
         return ok
 
     def crossings(self, boxes) -> np.ndarray:
