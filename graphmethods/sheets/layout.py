@@ -260,15 +260,15 @@ class Occupancy:
                    & (boxes[:, 2] <= within[2] + TIE_MM) & (boxes[:, 3] <= within[3] + TIE_MM))
         b = self.box_array()
         if len(b) and ok.any():
-            d = self.pad + -TIE_MM                 # as _grown(box, -TIE_MM)
-            g = np.column_stack((boxes[:, 0] - d, boxes[:, 1] - d, boxes[:, 2] + d, boxes[:, 3] + d))
+            d = self.pad + -TIE_MM                 # as _grown(box, -TIE_MM) (x − d is x + (−d) to the bit)
+            g = boxes + np.array((-d, -d, d, d))
             hit = ((g[:, 0, None] < b[None, :, 2]) & (b[None, :, 0] < g[:, 2, None])
                    & (g[:, 1, None] < b[None, :, 3]) & (b[None, :, 1] < g[:, 3, None]))
             ok &= ~hit.any(axis=1)
         if not lines or not ok.any() or not len(self.segment_array()):
             return ok
         d = self.pad + TIE_MM                      # as _grown(box, TIE_MM)
-        g = np.column_stack((boxes[:, 0] - d, boxes[:, 1] - d, boxes[:, 2] + d, boxes[:, 3] + d))
+        g = boxes + np.array((-d, -d, d, d))
         rows = np.flatnonzero(ok)
         gr = g[rows]
         near = np.flatnonzero(self._near((gr[:, 0].min(), gr[:, 1].min(), gr[:, 2].max(), gr[:, 3].max())))
@@ -277,7 +277,13 @@ class Occupancy:
             lo, hi = self._seg_lo[near], self._seg_hi[near]
             i, j = np.nonzero((lo[None, :, 0] <= gr[:, 2, None] + e) & (hi[None, :, 0] >= gr[:, 0, None] - e)
                               & (lo[None, :, 1] <= gr[:, 3, None] + e) & (hi[None, :, 1] >= gr[:, 1, None] - e))
-            if len(i):
+            if len(i) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
+                segs, grl, blocked = self.segments, gr.tolist(), set()
+                for a, k in zip(i.tolist(), near[j].tolist()):
+                    if a not in blocked and _segment_hits_box(segs[k][0], segs[k][1], grl[a]):
+                        blocked.add(a)
+                ok[rows[sorted(blocked)]] = False
+            else:
                 hit = _pairs_hit(self._seg[near[j]], gr[i])
                 ok[rows[np.unique(i[hit])]] = False
         return ok
