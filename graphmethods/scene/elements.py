@@ -862,7 +862,8 @@ class Table(Element):
         lettering = MIN_TEXT_MM.get()              # the widths measured depend on it (text_width_mm)
         memo = self.__dict__.get("_widths_memo")   # measured once per lettering (each cell asks for them)
         if memo is not None and memo[0] == lettering:
-            return memo[1]
+            cached: tuple[float, ...] = memo[1]
+            return cached
         widths = self._fitted_widths()
         object.__setattr__(self, "_widths_memo", (lettering, widths))
         return widths

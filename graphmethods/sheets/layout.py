@@ -131,8 +131,8 @@ def _pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     The same arithmetic pair by pair (the same divisions, the same comparisons), on 1-d arrays: the
     pairs worth testing only, not every segment against every box.
 
-    >>> _pairs_hit(np.array([[0.0, 10.0, 100.0, 10.0]] * 2), np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])
-    ...            ).tolist()
+    >>> seg = np.array([[0.0, 10.0, 100.0, 10.0]] * 2)
+    >>> _pairs_hit(seg, np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])).tolist()
     [True, False]
     """
     px, py = seg[:, 0], seg[:, 1]
