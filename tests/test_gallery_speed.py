@@ -134,3 +134,18 @@ def test_paired_processes_time_both_commands_in_turn_and_their_cpu():
     wall, cpu = bench.paired_processes(bench._process("-c", "pass"), bench._process("-c", "pass"), repeat=2)
     assert wall.a > 0 and wall.b > 0
     assert cpu is None or (cpu.a > 0 and cpu.b > 0 and math.isfinite(cpu.ratio))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(0, 10**6), st.integers(0, 250), st.integers(0, 25), st.booleans())
+def test_a_ring_of_leaders_takes_the_first_that_try_leader_takes(seed, n_seg, n_box, strict):
+    at = tuple(np.random.default_rng(seed).uniform(10, 50, 2))
+    angles = tuple(range(0, 360, 15))
+    one, ring = _scene(seed, n_seg, n_box), _scene(seed, n_seg, n_box)
+    expected = None
+    for ang in angles:
+        expected = one.try_leader(at, "F_{21}", 12.0, ang, size_mm=3.5, strict=strict)
+        if expected is not None:
+            break
+    assert ring.try_leaders(at, "F_{21}", 12.0, angles, size_mm=3.5, strict=strict) == expected
+    assert ring.boxes == one.boxes and ring.segments == one.segments

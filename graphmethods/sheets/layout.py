@@ -150,6 +150,17 @@ def _pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     return hit & (t0 <= t1)
 
 
+def _leader_candidate(at, text: str, r: float, ang: float, size_mm: float
+                      ) -> tuple[Label, tuple[float, float], tuple[float, float]]:
+    """A label ``r`` mm from ``at`` at ``ang`` degrees and its leader's start and end (not yet tested)."""
+    x, y = at
+    a = math.radians(ang)
+    c, s = math.cos(a), math.sin(a)
+    end = (x + r * c, y - r * s)
+    d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
+    return place_label(end, text, d, gap_mm=0.8, size_mm=size_mm), (x + 1.5 * c, y - 1.5 * s), end
+
+
 class Occupancy:
     """What is drawn already (line segments and boxes), to place labels where nothing is.
 
@@ -349,10 +360,9 @@ class Occupancy:
         down = (315, 225, 340, 200, 295, 245, 270)
         for side in ((up, down) if upward else (down, up)):
             for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0):
-                for ang in side:
-                    found = self.try_leader(at, text, r, ang, size_mm=size_mm, within=within)
-                    if found is not None:
-                        return found
+                found = self.try_leaders(at, text, r, side, size_mm=size_mm, within=within)
+                if found is not None:
+                    return found
         lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
         self.add_label(lab)
         return lab, None
@@ -361,17 +371,26 @@ class Occupancy:
                    strict: bool = True) -> tuple[Label, tuple[tuple[float, float], tuple[float, float]]] | None:
         """The label ``r`` mm from ``at`` at ``ang`` degrees, with its leader, registered, when it is free
         (and, ``strict``, its leader crosses no label); else None."""
-        x, y = at
-        a = math.radians(ang)
-        c, s = math.cos(a), math.sin(a)
-        end = (x + r * c, y - r * s)
-        d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
-        lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-        start = (x + 1.5 * c, y - 1.5 * s)
+        lab, start, end = _leader_candidate(at, text, r, ang, size_mm)
         if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
             self.add_label(lab)
             self.add_line((start, end))
             return lab, (end, start)
+        return None
+
+    def try_leaders(self, at, text: str, r: float, angles, *, size_mm: float, within: Box | None = None,
+                    strict: bool = True) -> tuple[Label, tuple[tuple[float, float], tuple[float, float]]] | None:
+        """:meth:`try_leader` at each of ``angles`` in turn, the first that fits (registered), else None: the
+        same decisions, the ring's free-space tests in one :meth:`free` call."""
+        cands = [_leader_candidate(at, text, r, ang, size_mm) for ang in angles]
+        if not cands:
+            return None
+        ok = self.free([label_bbox(lab) for lab, _, _ in cands], within=within)
+        for (lab, start, end), free in zip(cands, ok.tolist()):
+            if free and not (strict and self._line_blocked(start, end)):
+                self.add_label(lab)
+                self.add_line((start, end))
+                return lab, (end, start)
         return None
 
     def _line_blocked(self, p, q) -> bool:
