@@ -318,6 +318,9 @@ class Occupancy:
         The first direction alone, then the others of a gap in one :meth:`free` call (the same decisions
         as :meth:`is_free` one by one, in the same order).
         """
+        directions = tuple(directions)
+        if not directions:
+            return None
         for k, gap in enumerate(gaps):
             if k == 0:
                 lab = place_label(at, text, directions[0], gap_mm=gap, size_mm=size_mm)
