@@ -108,21 +108,8 @@ def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     """
     seg = np.asarray(seg, dtype=float).reshape(-1, 4)
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
-    px, py = seg[None, :, 0], seg[None, :, 1]
-    dx, dy = seg[None, :, 2] - seg[None, :, 0], seg[None, :, 3] - seg[None, :, 1]
-    x0, y0, x1, y1 = (boxes[:, i, None] for i in range(4))
-    shape = (len(boxes), len(seg))
-    t0, t1 = np.zeros(shape), np.ones(shape)
-    hit = np.ones(shape, dtype=bool)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
-            pk = np.broadcast_to(pk, shape)
-            zero = pk == 0
-            hit &= ~(zero & (qk < 0))
-            t = qk / np.where(zero, 1.0, pk)
-            t0 = np.where(pk < 0, np.maximum(t0, t), t0)
-            t1 = np.where(pk > 0, np.minimum(t1, t), t1)
-    return hit & (t0 <= t1)
+    k, n = len(boxes), len(seg)
+    return _pairs_hit(np.tile(seg, (k, 1)), np.repeat(boxes, n, axis=0)).reshape(k, n)
 
 
 def _pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:

@@ -308,21 +308,8 @@ def design(p: CamProblem) -> CamDesign:
 
 
 def design_afresh(p: CamProblem) -> CamDesign:
-    """:func:`design` without the process's cache (what the bench times).
-
-    Parameters
-    ----------
-    p : CamProblem
-
-    Returns
-    -------
-    CamDesign
-
-    Raises
-    ------
-    InputError
-        A base radius that cannot be designed or used (the message says why and what to give).
-    """
+    """:func:`design` without the process's cache (what the bench times); the same parameters, result and
+    errors."""
     rr = p.roller_radius
     designed = p.base_radius is None
     if p.contact == "flat":
