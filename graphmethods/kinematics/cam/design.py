@@ -299,7 +299,10 @@ def design(p: CamProblem) -> CamDesign:
     >>> design(cam_from_dict(EXAMPLE)) is design(cam_from_dict(EXAMPLE))
     True
     """
-    made = _DESIGNS.get(p)
+    try:
+        made = _DESIGNS.get(p)
+    except TypeError:                       # a problem holding something unhashable: designed afresh
+        return design_afresh(p)
     if made is None:
         if len(_DESIGNS) >= 64:
             _DESIGNS.clear()
