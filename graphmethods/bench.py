@@ -984,7 +984,7 @@ def _fixed_processes(repeat: int, gallery_repeat: int, variants: int) -> list[Ro
         limit = FIXED_TARGETS["class_page"]
         pair, cpu = paired_processes(_process(*cli, "worksheet", "acceleration-plan", "--variants", str(variants),
                                               "--seed", "7", "--out", f"{tmp}/class", "--force", "--quiet"), numpy,
-                                     repeat=max(1, repeat // 2))
+                                     repeat=max(3, repeat // 2))
         ratio, both = _ratios(pair, cpu, pages)
         rows.append(Row("fixed costs", f"acceleration-plan class set, {variants} variants",
                         "graphmethods worksheet (fresh process), a page / python -c 'import numpy'", pages,
