@@ -714,12 +714,6 @@ def bench_cam(*, n: int = 3600, repeat: int = 5) -> list[Row]:
         con = construction(cam, n_div, mu_phi=math.radians(1.5), mu_a=4e-4, room_mm=1e9, fit_v=60.0, fit_s=120.0)
         rows.append(Row("cam", "example cam: s by chords from d²s/dφ²", "method of chords, twice", len(con.nodes),
                         None, con.error_s / p.stroke, note="largest |s − s_exact| at the nodes over h"))
-    from graphmethods.problems.builtin import cam_problem
-
-    osc = cam_problem("oscillating-cam")
-    rows.append(Row("cam", "oscillating roller follower: the whole design (r₀ by bisection)", "design()", None,
-                    median_time(lambda: design_afresh(osc), repeat=max(1, repeat // 2)),
-                    note=f"r₀ = {design_afresh(osc).pitch_base_radius!r} m (the same bits as the full bisection)"))
     return rows
 
 
