@@ -111,8 +111,26 @@ _OTHERS: Mapping[str, Callable[[], Any]] = MappingProxyType({
 })
 
 
+#: the problems read in this process, by key: the figures of one problem share it, and with it what its
+#: study has computed (positions, plans, the exact flywheel: cached properties), the way a teacher's
+#: session draws one problem's figures in turn. A problem and its results are never changed by a figure.
+_READ: dict[str, Any] = {}
+
+
 def problem(key: str) -> Any:
-    """The problem a row draws, by ``kind:key``.
+    """The problem a row draws, by ``kind:key``, read once per process (shared by the rows that draw it;
+    see :func:`problem_afresh`).
+
+    >>> problem("study:press") is problem("study:press")
+    True
+    """
+    if key not in _READ:
+        _READ[key] = problem_afresh(key)
+    return _READ[key]
+
+
+def problem_afresh(key: str) -> Any:
+    """The problem a row draws, by ``kind:key``, read anew.
 
     ``case:NAME`` a built-in linkage (:func:`graphmethods.problems.builtin.case`); ``study:NAME`` its
     :class:`~graphmethods.dynamics.study.Study` at 12 positions; ``cycle:w1`` … ``cycle:w4-exact`` a

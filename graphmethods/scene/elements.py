@@ -22,6 +22,7 @@ a vector of length value/μ, :class:`Axis` ticks values.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -98,13 +99,20 @@ def _pts(points: ArrayLike) -> tuple[XY, ...]:
     return tuple((float(x), float(y)) for x, y in arr)
 
 
+@functools.lru_cache(maxsize=16384)
+def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float]:
+    """(width, ascent, descent) of a label's runs in em (label placement asks for the same texts again and again)."""
+    w = sum((1.0 if s == 0 else markup.SCRIPT_SCALE) * sum(markup.char_em(c) for c in t) for t, s in runs)
+    descent = DESCENT + (markup.SUB_SHIFT if any(s < 0 for _, s in runs) else 0.0)
+    ascent = ASCENT + (0.1 if any(s > 0 for _, s in runs) else 0.0)
+    return w, ascent, descent
+
+
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers."""
-    w = sum((1.0 if s == 0 else markup.SCRIPT_SCALE) * sum(markup.char_em(c) for c in t) for t, s in lab.runs)
+    w, ascent, descent = _runs_extent(lab.runs)
     w *= lab.size_mm
     x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
-    descent = DESCENT + (markup.SUB_SHIFT if any(s < 0 for _, s in lab.runs) else 0.0)
-    ascent = ASCENT + (0.1 if any(s > 0 for _, s in lab.runs) else 0.0)
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
 
@@ -833,6 +841,16 @@ class Table(Element):
         """Column widths in mm (given, or fitted to the widest text plus padding)."""
         if self.col_widths_mm is not None:
             return tuple(float(w) for w in self.col_widths_mm)
+        lettering = MIN_TEXT_MM.get()              # the widths measured depend on it (text_width_mm)
+        memo = self.__dict__.get("_widths_memo")   # measured once per lettering (each cell asks for them)
+        if memo is not None and memo[0] == lettering:
+            cached: tuple[float, ...] = memo[1]
+            return cached
+        widths = self._fitted_widths()
+        object.__setattr__(self, "_widths_memo", (lettering, widths))
+        return widths
+
+    def _fitted_widths(self) -> tuple[float, ...]:
         ncol = len(self.rows[0])
         widths = []
         for j in range(ncol):
