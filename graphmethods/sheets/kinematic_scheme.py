@@ -35,6 +35,7 @@ from graphmethods.sheets.linkage_figures import (
     _pos_label,
     _sub,
 )
+from graphmethods.sheets.plates import Plate, body_outline, link_bodies
 from graphmethods.units import convenient_at_least
 
 # ----------------------------------------------------------------------------- 1. the kinematic scheme
@@ -51,6 +52,7 @@ class _Parts:
     extra: tuple[str, ...]
     paths: tuple[str, ...]
     coincident: tuple[str, ...] = ()         # points of slotted links under a block's pin (A3): not drawn
+    bodies: tuple[tuple[str, ...], ...] = ()  # each link's joints as drawn: a line, or a plate (ternary link)
 
 
 def _translating_yokes(mech) -> list:
@@ -61,16 +63,9 @@ def _translating_yokes(mech) -> list:
     return [g for g in getattr(lk, "groups", ()) if isinstance(g, RPP) and g.guide.link == "0"]
 
 
-def _plates(mech) -> tuple[tuple[str, str], ...]:
-    """The other two sides of each triad's basic (ternary) link, drawn as a triangle B1 B2 B3."""
-    lk = getattr(mech, "linkage", None)
-    return tuple(side for g in getattr(lk, "groups", ()) if getattr(g, "cls", 2) == 3
-                 for side in ((g.inner[1], g.inner[2]), (g.inner[0], g.inner[2])))
-
-
 def _parts(mech, pos) -> _Parts:
     fixed = tuple(mech.fixed_joints)
-    links = tuple(mech.link_joints.values()) + _plates(mech)
+    links = tuple(mech.link_joints.values())
     sliders = dict(mech.guides)
     pin = mech.crank_pin
     centre = next(x for x, y in links if y == pin)
@@ -83,7 +78,9 @@ def _parts(mech, pos) -> _Parts:
         output = next(y for x, y in links if x in fixed and x != centre)
     extra = tuple(p.name for p in mech.points)
     moving = [j for j in mech.joints if j not in fixed and j != pin and j not in coincident and j not in sliders]
-    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident))
+    bodies = tuple(link_bodies(mech).values())
+    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident),
+                  bodies)
 
 
 @dataclass(frozen=True)
@@ -206,16 +203,22 @@ def _scheme_links(g: _SchemeGeometry, f: Frame) -> tuple[list[Element], list[Ele
                              closed=True, name="crank-circle"))
     link_segments: list = []
 
+    plated = {j for body in g.parts.bodies if len(body) > 2 for j in body}
+
     def link_lines(p, idx, style, tag) -> list[Element]:
         out: list[Element] = []
-        for a, b in g.parts.links:
-            A, B = P(p.coords[a][idx]), P(p.coords[b][idx])
-            out.append(Line(A, B, style=style, name=f"{tag}-{a}{b}"))
-            link_segments.append((a, b, A, B))
+        for body in g.parts.bodies:
+            corners = body_outline([P(p.coords[j][idx]) for j in body])
+            if len(corners) > 2:           # a ternary link: a plate, hatched in the thick position
+                out.append(Plate(corners, outline_style=style, hatch=style is THICK, name=f"{tag}-{''.join(body)}"))
+            else:
+                out.append(Line(corners[0], corners[1], style=style, name=f"{tag}-{''.join(body)}"))
+            ring = corners + corners[:1] if len(corners) > 2 else corners
+            link_segments.extend(("", "", A, B) for A, B in zip(ring, ring[1:]))
         for j in g.parts.extra:            # a point off its link line: the link drawn as a triangle
             spec = next(q for q in g.mech.points if q.name == j)
-            if spec.angle != 0.0:
-                x, y, _, _ = g.mech._resolve_link(spec.link)
+            x, y, _, _ = g.mech._resolve_link(spec.link)
+            if spec.angle != 0.0 and not {x, y} <= plated:
                 S = P(p.coords[j][idx])
                 out += [Line(P(p.coords[x][idx]), S, style=style, name=f"{tag}-{x}{j}"),
                         Line(S, P(p.coords[y][idx]), style=style, name=f"{tag}-{j}{y}")]
