@@ -310,7 +310,7 @@ def _scheme_keep_clear(occ: Occupancy, thick_els: list[Element], top_els: list[E
 
 
 def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_els: list[Element], nt,
-                    lay: SchemeLayout) -> tuple[list[Text], list[Element]]:
+                    lay: SchemeLayout, leaders: list) -> tuple[list[Text], list[Element]]:
     """Step 6: the position numbers at the output point, the stroke H beyond them, the numbers at the crank pin."""
     parts, pos = g.parts, g.pos
     guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
@@ -325,22 +325,39 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
             free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
             toward = math.degrees(math.atan2(-free[1], free[0]))
             dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
-            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward,
+                                      leaders=leaders)
         else:
-            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side, leaders=leaders)
     else:
         pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
-        numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
+        numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])),
+                                  leaders=leaders)
     dims: list[Element] = []
     if guide is not None and pos.H is not None and g.ext is not None:
         end_xy = g.ext_pos.coords[parts.output][0] if g.ext_pos is not None else pos.coords[parts.output][g.ext.same_as]
         text = nt.word("kinematics.stroke", H=nt.number(pos.H * 1000.0, sig=4), u=nt.unit("mm"))   # a dimension: mm
-        dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
+        dim = _clear_dimension(_stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free,
+                                                 out_side, lay), occ, sheet.box)
         dims.append(dim)
         occ.register(dim)
     numbers += _crank_numbers(_numbered(pos, parts, g.drawn, g.ext, g.ext_pos, parts.pin), P(g.c_xy), P, occ,
-                              sheet.box)
+                              sheet.box, leaders)
     return numbers, dims
+
+
+def _clear_dimension(dim: Dimension, occ: Occupancy, box) -> Dimension:
+    """The dimension moved further out (its offset grown in 2 mm steps, up to 60 mm) until its value is free
+    of every line and label drawn; as it was when it nowhere is."""
+    from dataclasses import replace
+
+    from graphmethods.scene.elements import label_bbox
+
+    for extra in np.arange(0.0, 60.0, 2.0):
+        trial = replace(dim, offset_mm=dim.offset_mm + float(extra))
+        if all(occ.is_free(label_bbox(p), within=box) for p in trial.primitives() if isinstance(p, Label)):
+            return trial
+    return dim
 
 
 def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str | None,
@@ -372,7 +389,8 @@ def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str 
     return Dimension(left, right, text, offset_mm=off, size_mm=TEXT_MM, name="dimension-H")
 
 
-def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, lay: SchemeLayout) -> list[Text]:
+def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, lay: SchemeLayout,
+                  leaders: list) -> list[Text]:
     """Step 7: the names of the joints of the thick position (position 0 when all are thin), away from the middle."""
     labels = []
     occ.pad = lay.names_pad_mm
@@ -387,7 +405,7 @@ def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, l
         if j in g.parts.fixed:
             prefer = 180.0 if at[0] <= centroid[0] else 0.0
         labels.append(_place(occ, at, _sub(j), prefer, size_mm=TEXT_MM + 0.3, within=box, name=f"name-{j}",
-                             gaps=lay.names_gaps_mm, hard=hard))
+                             gaps=lay.names_gaps_mm, hard=hard, leaders=leaders, ring=True))
     occ.pad = lay.pad_mm
     return labels
 
@@ -470,15 +488,16 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     hard = _scheme_keep_clear(occ, thick_els, top_els, symbol_els, lay)
     rot, rot_label = _rotation_arrow(P(g.c_xy), s_l.to_mm(g.r), g.mech.sense, occ, link_segments)
     occ.register(rot)
-    numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay)
-    labels = _scheme_names(g, P, occ, sheet.box, hard, lay) + [rot_label(occ)]
+    leaders: list[Element] = []            # from labels that found no free place beside their point
+    numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay, leaders)
+    labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders) + [rot_label(occ, leaders)]
     facts = _scheme_facts(g.pos, g.ext, nt)
     summary = [Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts), size_mm=TEXT_MM,
                     name="summary")] if facts else []
     legend = lk.speed_text(nt) if lk.n_rpm is not None else ""
     scales = (s_l,)
-    elements = ([sheet.header()] + thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + labels
-                + numbers + summary)
+    elements = ([sheet.header()] + thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + leaders
+                + labels + numbers + summary)
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
 
@@ -573,10 +592,11 @@ def _rotation_arrow(centre, r_mm: float, sense: int, occ: Occupancy, segments):
     assert best is not None                    # the loop runs at least once
     arr = best[1]
 
-    def label(occ_):
+    def label(occ_, leaders):
         mid = math.radians(arr.start_deg + arr.sweep_deg / 2)
         at = (centre[0] + radius * math.cos(mid), centre[1] - radius * math.sin(mid))
-        return _place(occ_, at, "ω_1", math.degrees(mid), size_mm=TEXT_MM + 0.3, name="name-omega-1",
+        return _place(occ_, at, "ω_1", math.degrees(mid), size_mm=TEXT_MM + 0.3, name="name-omega-1", leaders=leaders,
+                      ring=True,
                       gaps=(1.0, 2.2, 3.5))
 
     return arr, label
@@ -590,7 +610,7 @@ def _numbered(pos, parts, drawn, ext, ext_pos, j):
     return items
 
 
-def _crank_numbers(items, centre, P, occ, box) -> list:
+def _crank_numbers(items, centre, P, occ, box, leaders: list) -> list:
     """The position numbers at the crank pin, outside the crank circle."""
     out = []
     c = np.asarray(centre)
@@ -599,11 +619,13 @@ def _crank_numbers(items, centre, P, occ, box) -> list:
         radial = math.degrees(math.atan2(-(a - c)[1], (a - c)[0]))
         dirs = [d for d in _dirs(radial) if abs((_COMPASS[d] - radial + 180.0) % 360.0 - 180.0) <= 70.0]
         out.append(_place(occ, tuple(a), text, radial, size_mm=SMALL_MM, within=box, name=f"number-A-{tag}",
+                          leaders=leaders, ring=True,
                           gaps=(1.0, 2.4, 4.0), dirs=dirs))
     return out
 
 
-def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None) -> list:
+def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None,
+                    leaders: list | None = None) -> list:
     """The position numbers at the output point: for a slider in a row on the free side of its guide
     (``side`` "n" or "s" for a horizontal guide, or the compass ``dirs`` and angle ``prefer`` (deg) of
     the free side of a guide at an angle; points closer than 2 mm share a label, "1, 11"); for a
@@ -623,12 +645,13 @@ def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=No
         text = ", ".join(t for _, _, t in g)
         if side is not None:
             toward = prefer if prefer is not None else (90.0 if side == "n" else 270.0)
-            out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box,
+            out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box, leaders=leaders, ring=True,
                               dirs=dirs or (side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
                               name=f"number-out-{tag}"))
             continue
         prefer = math.degrees(math.atan2(-(o - pivot)[1], (o - pivot)[0]))
         out.append(_place(occ, tuple(o), text, prefer, size_mm=SMALL_MM, within=box, name=f"number-out-{tag}",
+                          leaders=leaders, ring=True,
                           gaps=(1.0, 2.4, 4.0, 6.0)))
     return out
 
