@@ -150,6 +150,16 @@ def _scheme_geometry(pos, thick: int | None, trajectories: bool) -> _SchemeGeome
     return _SchemeGeometry(pos, mech, parts, drawn, thick, ext, ext_pos, fine, c_xy, r)
 
 
+def _crank_path_angles(g: _SchemeGeometry) -> np.ndarray | None:
+    """The angles (rad, 61 of them) of a swinging driver's arc: from its first position to its last, the way
+    it swings (a lever or rocker given ``range_deg``); None for a crank that turns fully (its circle)."""
+    if getattr(getattr(g.mech, "linkage", None), "swing", None) is None:
+        return None
+    d = g.pos.coords[g.parts.pin] - g.c_xy
+    ang = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    return np.linspace(float(ang.min()), float(ang.max()), 61)
+
+
 def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: SchemeLayout) -> tuple[Scale, Frame]:
     """Step 2: μ_l (given, checked, or picked to fill the sheet) and the frame centring the drawing."""
     x0, _, x1, _ = sheet.box
@@ -163,7 +173,9 @@ def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: Sche
         pts += coords(g.ext_pos, joints)
     if g.fine is not None:
         pts += coords(g.fine, g.parts.paths)
-    pts.append(np.array([g.c_xy - g.r, g.c_xy + g.r]))
+    t = _crank_path_angles(g)
+    pts.append(np.array([g.c_xy - g.r, g.c_xy + g.r]) if t is None
+               else g.c_xy + g.r * np.column_stack((np.cos(t), np.sin(t))))
     allp = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     area = (x0, sheet.top, x1, sheet.caption_y - lay.caption_room_mm)
@@ -198,9 +210,11 @@ def _scheme_links(g: _SchemeGeometry, f: Frame) -> tuple[list[Element], list[Ele
         for j in g.parts.paths:
             thin_els.append(Polyline(f.pts(g.fine.coords[j][:, 0], g.fine.coords[j][:, 1]), style=TRAJECTORY,
                                      name=f"path-{j}"))
-    t = np.linspace(0.0, 2.0 * math.pi, 181)
+    t = _crank_path_angles(g)
+    full = t is None
+    t = np.linspace(0.0, 2.0 * math.pi, 181) if t is None else t
     thin_els.append(Polyline(f.pts(g.c_xy[0] + g.r * np.cos(t), g.c_xy[1] + g.r * np.sin(t)), style=THIN,
-                             closed=True, name="crank-circle"))
+                             closed=full, name="crank-circle" if full else "crank-arc"))
     link_segments: list = []
 
     plated = {j for body in g.parts.bodies if len(body) > 2 for j in body}
