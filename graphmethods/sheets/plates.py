@@ -76,7 +76,7 @@ def link_bodies(mech: Any) -> dict[str, tuple[str, ...]]:
     return {k: tuple(sorted(v, key=lambda j: order.get(j, len(order)))) for k, v in out.items()}
 
 
-def is_plate(corners: Sequence[XY]) -> bool:
+def is_plate(corners: Sequence[XY] | np.ndarray) -> bool:
     """Whether a body's joints (at least three, any unit) span an area: not all on one line."""
     pts = np.asarray(corners, dtype=float).reshape(-1, 2)
     if len(pts) < 3:
