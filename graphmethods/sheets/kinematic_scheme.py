@@ -90,6 +90,7 @@ class SchemeLayout:
     pad_x_mm: float = 10.0              # beside the linkage
     pad_top_mm: float = 10.0            # above it
     pad_bottom_mm: float = 14.0         # below it: the stroke's dimension
+    pad_steep_mm: float = 4.0           # above and below when the output's guide is steep (H dimensioned beside it)
     caption_room_mm: float = 9.0        # between the drawing's area and the captions line
     guide_overrun_mm: float = 8.0       # a guide beyond the slider's extreme positions
     guide_offset_mm: float = 3.0        # its hatched surface from its line
@@ -160,6 +161,15 @@ def _crank_path_angles(g: _SchemeGeometry) -> np.ndarray | None:
     return np.linspace(float(ang.min()), float(ang.max()), 61)
 
 
+def _vertical_pads(g: _SchemeGeometry, lay: SchemeLayout) -> tuple[float, float]:
+    """The room (mm) above and below the linkage: for the stroke's dimension under or over a level guide; a
+    steep guide (slotting machine) has its dimension beside it and needs less."""
+    guide = g.parts.sliders.get(g.parts.output)
+    if guide is not None and abs(float(guide[1])) > abs(float(guide[0])):
+        return lay.pad_steep_mm, lay.pad_steep_mm
+    return lay.pad_top_mm, lay.pad_bottom_mm
+
+
 def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: SchemeLayout) -> tuple[Scale, Frame]:
     """Step 2: μ_l (given, checked, or picked to fill the sheet) and the frame centring the drawing."""
     x0, _, x1, _ = sheet.box
@@ -180,7 +190,8 @@ def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: Sche
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     area = (x0, sheet.top, x1, sheet.caption_y - lay.caption_room_mm)
     avail_w = area[2] - area[0] - 2 * lay.pad_x_mm
-    avail_h = area[3] - area[1] - lay.pad_top_mm - lay.pad_bottom_mm
+    pad_top, pad_bottom = _vertical_pads(g, lay)
+    avail_h = area[3] - area[1] - pad_top - pad_bottom
     span_x, span_y = float(hi[0] - lo[0]), float(hi[1] - lo[1])
     if mu_l is None:
         need = max(span_x / avail_w, span_y / avail_h)
@@ -195,7 +206,7 @@ def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: Sche
                              f"{span_y / s_l.per_mm:.0f} mm but the sheet leaves {avail_w:.0f} × {avail_h:.0f} mm; "
                              f"give a larger μ_l (more m per mm), a larger page, or none to have one picked")
     cx = (area[0] + area[2]) / 2 - s_l.to_mm(float(lo[0] + hi[0]) / 2)
-    cy = (area[1] + lay.pad_top_mm + area[3] - lay.pad_bottom_mm) / 2 + s_l.to_mm(float(lo[1] + hi[1]) / 2)
+    cy = (area[1] + pad_top + area[3] - pad_bottom) / 2 + s_l.to_mm(float(lo[1] + hi[1]) / 2)
     return s_l, Frame((cx, cy), s_l, s_l)
 
 
