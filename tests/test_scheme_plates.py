@@ -42,7 +42,7 @@ def test_the_triad_s_basic_link_is_a_hatched_plate_in_the_thick_position():
     scene = kinematic_scheme(builtin.case("triad-six-bar"))
     thick = scene.element("thick-BCD")
     assert isinstance(thick, Plate) and thick.hatch and len(thick.corners) == 3
-    assert len(thick.region().hatch_segments()) > 5
+    assert len(thick.elements()[0].hatch_segments()) > 5
     thin = [e for e in scene.elements if isinstance(e, Plate) and e.name.startswith("position-")]
     assert len(thin) == 11 and not any(p.hatch for p in thin)          # the other positions: outlines only
     joints = {scene.element(f"joint-{j}").at for j in "BCD"}

@@ -1,21 +1,27 @@
-"""Links as the scheme draws them: a binary link as a line, a ternary (or higher) link as a plate.
+"""Links with three or more joints drawn as plates (ГОСТ 2.770: a ternary link is a rigid triangle, its
+outline a main line, its interior hatched), shared by the figures that draw a linkage in a position.
 
-A link that carries three or more joints is one rigid body. ГОСТ 2.770 and the textbooks draw it as a
-plate: the polygon through its joints, its outline as thick as the links and its inside hatched, so
-that it cannot be read as a chain of binary links. When the joints of a link lie on one line (a rocker
-O₂B extended to C) the link is the one line from end to end, so that every joint stands on it.
+:func:`triangles` finds the plates of a linkage drawn as segments between points (three points joined
+pairwise: a triad's basic link); :func:`plate` draws one.
 
-:func:`link_bodies` lists each link's joints from a mechanism (the joints only: centres of mass are
-points marked on a link, not joints of it); :func:`body_outline` orders a body's corners on paper;
-:class:`Plate` draws one. The kinematic scheme and the force sheet both draw their links through here.
+>>> triangles([("B", "C"), ("C", "D"), ("B", "D"), ("A", "B")])
+[('B', 'C', 'D')]
+>>> [e.name for e in plate([(0.0, 0.0), (30.0, 0.0), (10.0, 20.0)], name="plate-BCD")]
+['plate-BCD-hatch', 'plate-BCD']
+>>> plate([(0.0, 0.0), (10.0, 0.0), (20.0, 0.0)], name="p")       # joints in a line: a bar, not a plate
+[]
+
+The kinematic scheme draws a linkage in many positions from its mechanism: :func:`link_bodies` lists each
+link's joints (the joints only: centres of mass are points marked on a link, not joints of it),
+:func:`body_outline` orders a body's corners on paper (joints in line: the one line from end to end, so a
+rocker O₂B extended to C stands on C), and :class:`Plate` is the element of one position (hatched in the
+thick position through :func:`plate`, outlined only in the thin ones).
 
 >>> from graphmethods.problems import builtin
 >>> link_bodies(builtin.case("six-bar-press").mechanism)["3"]
 ('B', 'O2', 'C')
 >>> is_plate(((0.0, 0.0), (10.0, 0.0), (20.0, 0.0))), is_plate(((0.0, 0.0), (10.0, 0.0), (5.0, 6.0)))
 (False, True)
->>> [type(p).__name__ for p in Plate(((0, 0), (20, 0), (10, 12))).primitives()][-1]
-'Path'
 """
 
 from __future__ import annotations
@@ -27,15 +33,49 @@ from typing import Any
 
 import numpy as np
 
-from graphmethods.scene import Element, Region
+from graphmethods.scene import Element, Polyline
+from graphmethods.scene.elements import Region
 from graphmethods.scene.primitives import Primitive, Style
 
-XY = tuple[float, float]
+#: the plate's outline: a main line, as the links (ГОСТ 2.303)
+OUTLINE = Style(width_mm=0.6)
+#: the smallest area (mm²) a plate's outline must enclose: three joints nearly in a line draw as a bar
+MIN_AREA_MM2 = 4.0
 
-#: a plate's outline: as thick as the links of the thick position
-PLATE_OUTLINE = Style(width_mm=0.6)
-#: its hatching
-PLATE_HATCH = Style(width_mm=0.18)
+
+def triangles(segments: Sequence[tuple[str, str]]) -> list[tuple[str, str, str]]:
+    """The triples of points joined pairwise by ``segments`` (each sorted, the list sorted): the plates."""
+    pairs = {frozenset(s) for s in segments if s[0] != s[1]}
+    names = sorted({p for s in segments for p in s})
+    out = []
+    for a_i, a in enumerate(names):
+        for b_i in range(a_i + 1, len(names)):
+            b = names[b_i]
+            if frozenset((a, b)) not in pairs:
+                continue
+            out += [(a, b, c) for c in names[b_i + 1:] if frozenset((a, c)) in pairs and frozenset((b, c)) in pairs]
+    return out
+
+
+def plate(points: Sequence[tuple[float, float]], *, name: str, spacing_mm: float = 3.0) -> list[Element]:
+    """A plate through ``points`` (mm, in order round it): its interior hatched at 45° (thin lines
+    ``spacing_mm`` apart) and its outline a main line; none when the points enclose no area.
+
+    Parameters
+    ----------
+    points : sequence of (x, y), mm
+        The joints of the link, in order round it.
+    name : str
+        The outline's element name; the hatching is ``name + "-hatch"``.
+    """
+    pts = [(float(x), float(y)) for x, y in points]
+    area = 0.5 * abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])))
+    if len(pts) < 3 or area < MIN_AREA_MM2:
+        return []
+    return [Region(tuple(pts), hatch_angle_deg=45.0, hatch_spacing_mm=spacing_mm, name=f"{name}-hatch"),
+            Polyline(tuple(pts), style=OUTLINE, closed=True, name=name)]
+
+
 #: corners closer to a line than this share of the body's longest side: the joints are in line
 IN_LINE = 0.02
 
@@ -76,7 +116,7 @@ def link_bodies(mech: Any) -> dict[str, tuple[str, ...]]:
     return {k: tuple(sorted(v, key=lambda j: order.get(j, len(order)))) for k, v in out.items()}
 
 
-def is_plate(corners: Sequence[XY] | np.ndarray) -> bool:
+def is_plate(corners: Sequence[tuple[float, float]] | np.ndarray) -> bool:
     """Whether a body's joints (at least three, any unit) span an area: not all on one line."""
     pts = np.asarray(corners, dtype=float).reshape(-1, 2)
     if len(pts) < 3:
@@ -91,7 +131,7 @@ def is_plate(corners: Sequence[XY] | np.ndarray) -> bool:
     return bool(off.max() > IN_LINE * span)
 
 
-def body_outline(corners: Sequence[XY]) -> tuple[XY, ...]:
+def body_outline(corners: Sequence[tuple[float, float]]) -> tuple[tuple[float, float], ...]:
     """The body as it is drawn: for a plate its corners in turn around their centre (a convex polygon
     through every joint), for joints in line the two ends of the line.
 
@@ -116,38 +156,39 @@ def body_outline(corners: Sequence[XY]) -> tuple[XY, ...]:
 
 @dataclass(frozen=True)
 class Plate(Element):
-    """A ternary (or higher) link: the polygon through its joints, outlined and hatched (paper mm).
+    """A ternary (or higher) link in one position of a scheme: :func:`plate` (hatched) or its outline alone.
 
     Parameters
     ----------
     corners : sequence of (float, float), mm
         The joints, in turn around the plate (:func:`body_outline`).
     outline_style : Style
-        The outline (thick for the drawn position, thin for the others).
+        The outline (a main line for the drawn position, thin or dashed for the others).
     hatch : bool
         Hatch the inside (the thick position); the thin positions are outlines only.
     hatch_spacing_mm : float, mm
         Distance between hatching lines.
 
-    >>> p = Plate(((0, 0), (30, 0), (15, 20)), hatch=False)
-    >>> len(p.primitives())
-    1
+    >>> [type(p).__name__ for p in Plate(((0, 0), (30, 0), (15, 20)), hatch=False).primitives()]
+    ['Path']
     """
 
-    corners: tuple[XY, ...]
-    outline_style: Style = PLATE_OUTLINE
+    corners: tuple[tuple[float, float], ...]
+    outline_style: Style = OUTLINE
     hatch: bool = True
     hatch_spacing_mm: float = 2.0
     name: str = "plate"
 
-    def region(self) -> Region:
-        """The plate as a hatched region with its outline."""
-        return Region(self.corners, hatch_angle_deg=45.0 if self.hatch else None,
-                      hatch_spacing_mm=self.hatch_spacing_mm, style=PLATE_HATCH, outline_style=self.outline_style,
-                      name=self.name)
+    def elements(self) -> list[Element]:
+        """What draws it: the hatching and the outline (:func:`plate`), or the outline alone."""
+        if self.hatch:
+            drawn = plate(self.corners, name=self.name, spacing_mm=self.hatch_spacing_mm)
+            if drawn:
+                return [*drawn[:-1], Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
+        return [Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
 
     def primitives(self) -> tuple[Primitive, ...]:
-        return self.region().primitives()
+        return tuple(p for e in self.elements() for p in e.primitives())
 
 
-__all__ = ["PLATE_HATCH", "PLATE_OUTLINE", "Plate", "body_outline", "is_plate", "link_bodies"]
+__all__ = ["OUTLINE", "Plate", "body_outline", "is_plate", "link_bodies", "plate", "triangles"]
