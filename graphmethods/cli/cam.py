@@ -26,7 +26,7 @@ from graphmethods.units import MAX_POSITIONS, count, json_text
 
 
 def add_parser(sub) -> None:
-    from graphmethods.cli._parser import integer, numbers
+    from graphmethods.cli._parser import add_figure_options, integer, numbers
 
     p = sub.add_parser(
         "cam", help="cam mechanism: base radius from the pressure angle, motion, profile, the A1 cam sheet",
@@ -44,10 +44,7 @@ def add_parser(sub) -> None:
                    help="also write the A1 cam sheet (motion diagrams by graphical integration, the combined "
                         "ds/dφ–s diagram, the profile by inversion); - writes it to standard output in --format, and "
                         "nothing else (older name --sheet still accepted)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
-                   help="file format of the sheet (default: the file name's suffix; needed with -o -)")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the sheet (default en)")
-    p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    add_figure_options(p, "sheet")
     p.set_defaults(func=run)
 
 

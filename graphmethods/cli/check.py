@@ -16,6 +16,9 @@ from __future__ import annotations
 import pathlib
 import sys
 
+REPORTS = ("text", "markdown", "json")
+FIGURES = ("svg", "pdf", "png", "dxf")
+
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, number
@@ -31,11 +34,14 @@ def add_parser(sub) -> None:
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
                    "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, read and "
                    "measured)")
-    p.add_argument("--report", "--format", dest="format", choices=("text", "markdown", "json"), default="text",
-                   help="report style (default text; older name --format still accepted)")
-    p.add_argument("-o", "--out", "--overlay", dest="overlay", metavar="FILE",
-                   help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size (older name --overlay "
+    p.add_argument("--report", dest="report", choices=REPORTS, default=None, help="report style (default text)")
+    p.add_argument("-o", "--out", "--overlay", dest="overlay", metavar="FILE|-",
+                   help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size; - writes it to "
+                        "standard output in --format, and the report to standard error (older name --overlay "
                         "still accepted)")
+    p.add_argument("--format", dest="format", choices=(*FIGURES, *REPORTS), default=None,
+                   help="file format of the overlay on standard output (-o -); text, markdown or json: the report "
+                        "style (older name of --report, still accepted)")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
                    help="language of the report and notation of the overlay")
     p.add_argument("--force", action="store_true", help="replace an existing overlay file")
@@ -67,39 +73,68 @@ def _drawing_report(args):
                              mu_a=args.mu_a, points=points or None)
 
 
+def _styles(args) -> tuple[str, str | None]:
+    """The report style and the overlay's file format from ``--report`` and ``--format`` (which names either:
+    a file format, or the report style by its older name)."""
+    from graphmethods.errors import InputError
+
+    old = args.format if args.format in REPORTS else None
+    if old and args.report and old != args.report:
+        raise InputError(f"--report {args.report} and --format {old} name two report styles; give one")
+    fmt = args.format if args.format in FIGURES else None
+    if fmt and args.overlay not in (None, "-") and pathlib.Path(args.overlay).suffix.lower() != f".{fmt}":
+        raise InputError(f"--overlay {args.overlay}: the name ends in {pathlib.Path(args.overlay).suffix}, "
+                         f"--format says {fmt}; give one of them")
+    if args.overlay == "-" and fmt is None:
+        raise InputError("-o - writes the overlay to standard output: say its format with --format svg|pdf|png|dxf")
+    return args.report or old or "text", fmt
+
+
+def _overlay_bytes(report, args, is_drawing: bool, suffix: str) -> bytes | None:
+    """The overlay in the format ``suffix`` (the check in red over the student's own drawing for a CAD file;
+    the drawing's own DXF rewritten when both are DXF); None for a suffix no renderer writes."""
+    from graphmethods.render import formats
+
+    if is_drawing:
+        from graphmethods.sheets.check import cad
+
+        if suffix == ".dxf" and pathlib.Path(args.answers).suffix.lower() == ".dxf":
+            return cad.overlay_dxf(report, notation=args.lang)
+        scene = cad.overlay_on_drawing(report, notation=args.lang)
+    else:
+        scene = report.overlay(notation=args.lang)
+    return formats.to_bytes(scene, suffix) if suffix in formats.FORMATS else None
+
+
 def run(args) -> int:
     from graphmethods.errors import InputError
     from graphmethods.sheets.check import check
 
+    style, fmt = _styles(args)
+    to_stdout = args.overlay == "-"
     is_drawing = pathlib.Path(args.answers).suffix.lower() in (".dxf", ".svg")
-    if args.overlay:
+    if args.overlay and not to_stdout:
         from graphmethods.render.files import not_an_input
 
         not_an_input(args.overlay, args.answers, args.problem, what="--overlay")
     report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
     if args.overlay:
-        path = pathlib.Path(args.overlay)
-        suffix = path.suffix.lower()
-        if is_drawing:                  # the check in red over the student's own drawing
-            from graphmethods.sheets.check import cad
-
-            scene = cad.overlay_on_drawing(report, notation=args.lang)
+        suffix = f".{fmt}" if to_stdout else pathlib.Path(args.overlay).suffix.lower()
+        data = _overlay_bytes(report, args, is_drawing, suffix)
+        if data is None:
+            raise InputError(f"--overlay {args.overlay}: give a file ending in .svg, .pdf, .png or .dxf")
+        if to_stdout:
+            sys.stdout.flush()
+            sys.stdout.buffer.write(data)
+            sys.stdout.buffer.flush()
         else:
-            scene = report.overlay(notation=args.lang)
-        if suffix == ".dxf" and is_drawing and pathlib.Path(args.answers).suffix.lower() == ".dxf":
             from graphmethods.render.files import write_atomic
 
-            write_atomic(path, cad.overlay_dxf(report, notation=args.lang), overwrite=args.force)
-        else:
-            from graphmethods.render import formats
-
-            if suffix not in formats.FORMATS:
-                raise InputError(f"--overlay {path}: give a file ending in .svg, .pdf, .png or .dxf")
-            formats.save(scene, path, overwrite=args.force)
-    out = report.to_json() if args.format == "json" else (
-        report.to_markdown(args.lang) if args.format == "markdown" else report.to_text(args.lang))
-    print(out.rstrip("\n"))
+            write_atomic(pathlib.Path(args.overlay), data, overwrite=args.force)
+    out = report.to_json() if style == "json" else (
+        report.to_markdown(args.lang) if style == "markdown" else report.to_text(args.lang))
+    print(out.rstrip("\n"), file=sys.stderr if to_stdout else sys.stdout)
     if args.overlay:
-        print(f"overlay: {args.overlay} ({report.page.size} {report.page.orientation}, print at 100 %)",
-              file=sys.stderr)
+        where = "standard output" if to_stdout else args.overlay
+        print(f"overlay: {where} ({report.page.size} {report.page.orientation}, print at 100 %)", file=sys.stderr)
     return 0 if report.ok else 1

@@ -19,7 +19,7 @@ from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, numbers
-    from graphmethods.cli.kinematics import add_speed, builtin_names
+    from graphmethods.cli.kinematics import add_linkage_case, add_speed, builtin_names
 
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
                        description="Solve a linkage problem (a problem file, or a built-in linkage: "
@@ -28,8 +28,7 @@ def add_parser(sub) -> None:
                        "M positions, the exact J_F, and where ω_max and ω_min occur; with --phi-deg, J_e, M_e, the "
                        "powers, ω and ε at those crank angles. With -o/--sheet, also draw the dynamic-analysis sheet "
                        "(M_e, ΔT, J_e turned 90°, the energy–mass diagram, the result).")
-    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
-                   "linkage: " + builtin_names())
+    add_linkage_case(p)
     p.add_argument("--positions", "-m", type=integer, default=12, metavar="M", help="number of positions (default 12)")
     p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
                    help="also give J_e, dJ_e/dφ, M_d, M_r, M_e, ω, ε and the powers N_d = M_d·ω, N_r = M_r·ω of the "

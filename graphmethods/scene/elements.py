@@ -432,7 +432,18 @@ def _arrowhead(tip: XY, direction: np.ndarray, length: float, width: float) -> P
 
 
 @dataclass(frozen=True)
-class Vector(Element):
+class _Segment(Element):
+    """An element drawn between two points ``start`` and ``end`` (mm), checked finite on construction."""
+
+    start: XY
+    end: XY
+
+    def __post_init__(self) -> None:
+        _checked_points(self, "start", "end")
+
+
+@dataclass(frozen=True)
+class Vector(_Segment):
     """An arrow from ``start`` to ``end`` (its tip). Solid when known, dashed when unknown.
 
     Drawn as a shaft (a :class:`Path` from ``start`` to the base of the head) and a
@@ -447,16 +458,11 @@ class Vector(Element):
     (True, (0.0, -20.0))
     """
 
-    start: XY
-    end: XY
     known: bool = True
     head_length_mm: float = 3.0
     head_width_mm: float = 1.1
     style: Style = VECTOR
     name: str = "vector"
-
-    def __post_init__(self) -> None:
-        _checked_points(self, "start", "end")
 
     @classmethod
     def of(cls, start: Sequence[float], *, value: float, scale: Scale, angle_deg: float = 0.0, **kw: Any) -> Vector:
@@ -544,7 +550,7 @@ class Point(Element):
 
 
 @dataclass(frozen=True)
-class Dimension(Element):
+class Dimension(_Segment):
     """A dimension line between two measured points, with its value written beside it.
 
     The line is drawn ``offset_mm`` away from the measured points along the normal
@@ -559,8 +565,6 @@ class Dimension(Element):
     ((5.0, 50.0), (5.0, 10.0), 40.0)
     """
 
-    start: XY
-    end: XY
     text: str = ""
     offset_mm: float = 0.0
     size_mm: float = 3.5
@@ -568,7 +572,7 @@ class Dimension(Element):
     name: str = "dimension"
 
     def __post_init__(self) -> None:
-        _checked_points(self, "start", "end")
+        super().__post_init__()
         _letter(self)
 
     def _frame(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64],

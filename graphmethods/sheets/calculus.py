@@ -34,27 +34,25 @@ from numpy.typing import ArrayLike
 
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
-from graphmethods.scene import (
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import (
     Axis,
     Dimension,
+    Element,
     Frame,
     Line,
-    Page,
     Point,
     Polyline,
-    Scale,
-    Scene,
     Table,
     Text,
-    markup,
+    lettered_size,
     nice_ticks,
-    notation as get_notation,
-    pick_angle_scale,
-    pick_scale,
 )
-from graphmethods.scene.elements import Element, lettered_size
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.scene.scale import Scale, pick_angle_scale, pick_scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, clear_tick_labels, problem_title
 from graphmethods.sheets.styles import PROJECTION
 

@@ -41,24 +41,25 @@ import numpy as np
 
 from graphmethods.dynamics.study import Study
 from graphmethods.errors import InputError
-from graphmethods.scene import (
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import (
     Axis,
+    Element,
     Frame,
     Line,
-    Page,
     Point,
     Polyline,
-    Scale,
-    Scene,
     Text,
-    markup,
+    label_bbox,
+    make_label,
     nice_ticks,
-    notation as get_notation,
 )
-from graphmethods.scene.elements import Element, label_bbox, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import format_value
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
+from graphmethods.scene.scale import Scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
 from graphmethods.sheets.layout import TEXT_MM, Box, clear_tick_labels, given_angle_scale, given_scale, problem_title
 from graphmethods.sheets.styles import LEVEL, PART
@@ -171,10 +172,9 @@ def problem_text(study, nt="en") -> str:
 
     Examples
     --------
-    >>> import pathlib
     >>> from graphmethods.dynamics.study import Study
-    >>> from graphmethods.kinematics import read_case
-    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+    >>> from graphmethods.problems.builtin import case
+    >>> st = Study(case("press"))
     >>> problem_text(st, "ru"), problem_text(st, "zh")
     ('дезаксиальный кривошипно-ползунный пресс, m = 12', '偏置曲柄滑块压力机，m = 12')
     """

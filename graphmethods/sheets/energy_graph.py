@@ -10,25 +10,13 @@ from typing import Any
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import (
-    Axis,
-    Dimension,
-    Frame,
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    Text,
-    markup,
-    nice_ticks,
-    notation as get_notation,
-    pi_ticks,
-)
-from graphmethods.scene.elements import Element, Group
+from graphmethods.scene import markup, nice_ticks, notation as get_notation, pi_ticks
+from graphmethods.scene.elements import Axis, Dimension, Element, Frame, Group, Line, Point, Polyline, Text
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import DASHED, MAIN, THIN
+from graphmethods.scene.scale import Scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.energy import SMALL_MM, _clear_ticks, _cycle
 from graphmethods.sheets.layout import TEXT_MM, Box, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale
 

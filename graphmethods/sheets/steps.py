@@ -288,10 +288,8 @@ def acceleration_plan_steps(linkage: Any, position: int | None = None, *, notati
     ----------
     linkage : Case, Study, Mechanism or Linkage
         As :func:`graphmethods.sheets.acceleration.acceleration_plan` takes it.
-    position : int, optional
-        The position drawn (default: the fullest plan of the working stroke).
-    notation : {'en', 'ru', 'zh'}
-    page : 'slide', 'A4' … 'A1' or Page
+    position, notation, page
+        As :func:`velocity_plan_steps` takes them.
 
     Examples
     --------

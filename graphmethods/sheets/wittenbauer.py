@@ -39,24 +39,24 @@ import numpy as np
 
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
-from graphmethods.scene import (
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import (
     Axis,
     Dimension,
+    Element,
     Line,
-    Page,
     Point,
     Polyline,
-    Scale,
-    Scene,
     Table,
     Text,
-    markup,
+    label_bbox,
     nice_ticks,
-    notation as get_notation,
 )
-from graphmethods.scene.elements import Element, label_bbox
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import MAIN, THIN, Label, Style
+from graphmethods.scene.scale import Scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.dynamics import (
     SMALL_MM,
     TEXT_MM,

@@ -11,21 +11,13 @@ import numpy as np
 
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
-from graphmethods.scene import (
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    markup,
-    notation as get_notation,
-    pick_angle_scale,
-    pick_scale,
-)
-from graphmethods.scene.elements import Element
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import Element, Line, Point, Polyline
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import THIN
+from graphmethods.scene.scale import Scale, pick_angle_scale, pick_scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.calculus import (
     LAYOUT,
     RAY,
