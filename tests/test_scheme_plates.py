@@ -42,7 +42,7 @@ def test_the_triad_s_basic_link_is_a_hatched_plate_in_the_thick_position():
     scene = kinematic_scheme(builtin.case("triad-six-bar"))
     thick = scene.element("thick-BCD")
     assert isinstance(thick, Plate) and thick.hatch and len(thick.corners) == 3
-    assert len(thick.elements()[0].hatch_segments()) > 5
+    assert len(thick.parts()[0].hatch_segments()) > 5
     thin = [e for e in scene.elements if isinstance(e, Plate) and e.name.startswith("position-")]
     assert len(thin) == 11 and not any(p.hatch for p in thin)          # the other positions: outlines only
     joints = {scene.element(f"joint-{j}").at for j in "BCD"}
@@ -92,3 +92,10 @@ def test_the_pole_rays_are_broken_behind_the_tick_labels():
     rec = record(scene)
     rays = [c for c in rec.calls if c.kind == "path" and any(g.startswith("ray-v-") for g in c.groups)]
     assert len(rays) > 12                                      # ... each into pieces that still reach the axis
+
+
+def test_the_kinematic_sheet_holds_the_triad_s_scheme_with_its_plate():
+    from graphmethods.sheets import kinematic_analysis_sheet
+
+    scene = kinematic_analysis_sheet(Study(builtin.case("triad-six-bar"), positions=12))
+    assert scene.scales()                                       # the plate is an element, not a group of them

@@ -135,35 +135,14 @@ def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.
     return xs, ys
 
 
-#: a ray stops this far (mm) short of a tick label it would cross
-BREAK_MM = 0.4
-
-
 def _broken_behind(rays: list[Line], axis: Axis) -> list[Line]:
     """The rays of a pole interrupted where they would cross the value axis's tick labels (a line is broken
-    for an inscription, ГОСТ 2.303): each ray as the pieces of it outside the labels' boxes."""
-    import shapely
-    from shapely.geometry import LineString, box
-
+    for an inscription, ГОСТ 2.303): :func:`~graphmethods.sheets.linkage_figures.broken_behind`."""
     from graphmethods.scene.elements import label_bbox
     from graphmethods.scene.primitives import Label
+    from graphmethods.sheets.linkage_figures import broken_behind
 
-    boxes = [label_bbox(p) for p in axis.primitives() if isinstance(p, Label)]
-    if not boxes:
-        return rays
-    cover = shapely.union_all([box(b[0] - BREAK_MM, b[1] - BREAK_MM, b[2] + BREAK_MM, b[3] + BREAK_MM)
-                               for b in boxes])
-    out: list[Line] = []
-    for ray in rays:
-        seg = LineString([ray.start, ray.end])
-        if not seg.intersects(cover):
-            out.append(ray)
-            continue
-        parts = [q for q in shapely.get_parts(seg.difference(cover)) if q.length > 1e-6]
-        for k, q in enumerate(parts):
-            (x0, y0), (x1, y1) = q.coords[0], q.coords[-1]
-            out.append(Line((x0, y0), (x1, y1), style=ray.style, name=ray.name if k == 0 else f"{ray.name}-{k}"))
-    return out
+    return broken_behind(rays, [label_bbox(p) for p in axis.primitives() if isinstance(p, Label)])
 
 
 def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:

@@ -15,7 +15,7 @@ import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.scene import Frame, Line, Point, Polyline, Scale, Scene, Text, notation as get_notation
-from graphmethods.scene.elements import Dimension, Element
+from graphmethods.scene.elements import Dimension, Element, label_bbox
 from graphmethods.scene.primitives import THIN, Label
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -34,6 +34,7 @@ from graphmethods.sheets.linkage_figures import (
     _place,
     _pos_label,
     _sub,
+    broken_behind,
 )
 from graphmethods.sheets.plates import Plate, body_outline, link_bodies
 from graphmethods.units import convenient_at_least
@@ -515,6 +516,9 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     occ.register(rot)
     leaders: list[Element] = []            # from labels that found no free place beside their point
     numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay, leaders)
+    values = [label_bbox(p) for d in dims for p in d.primitives() if isinstance(p, Label)]
+    thin_els = [q for e in thin_els                  # thin lines broken behind a value that found no clear place
+                for q in (broken_behind([e], values) if isinstance(e, Line) else [e])]
     labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders) + [rot_label(occ, leaders)]
     facts = _scheme_facts(g.pos, g.ext, nt)
     summary = [Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts), size_mm=TEXT_MM,

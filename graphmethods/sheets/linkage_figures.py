@@ -268,6 +268,40 @@ def _ring_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, prefer_de
     return None
 
 
+#: a line stops this far (mm) short of a label it would cross
+BREAK_MM = 0.4
+
+
+def broken_behind(lines: list, boxes: list) -> list:
+    """Lines interrupted where they would cross the boxes of labels (mm): a line is broken for an
+    inscription (ГОСТ 2.303, 2.307) when no place clear of it is left. Each line that crosses a box
+    becomes the pieces of it outside the boxes grown by :data:`BREAK_MM` (named ``name``, ``name-1``, ...);
+    the others are returned as they are.
+
+    >>> [(e.start, e.end) for e in broken_behind([Line((0, 0), (10, 0), name="l")], [(4, -1, 6, 1)])]
+    [((0.0, 0.0), (3.6, 0.0)), ((6.4, 0.0), (10.0, 0.0))]
+    """
+    import shapely
+    from shapely.geometry import LineString, box
+
+    if not boxes:
+        return list(lines)
+    cover = shapely.union_all([box(b[0] - BREAK_MM, b[1] - BREAK_MM, b[2] + BREAK_MM, b[3] + BREAK_MM)
+                               for b in boxes])
+    out: list = []
+    for ln in lines:
+        seg = LineString([ln.start, ln.end])
+        if not seg.intersects(cover):
+            out.append(ln)
+            continue
+        parts = [q for q in shapely.get_parts(seg.difference(cover)) if q.length > 1e-6]
+        for k, q in enumerate(parts):
+            (x0, y0), (x1, y1) = q.coords[0], q.coords[-1]
+            out.append(Line((float(x0), float(y0)), (float(x1), float(y1)), style=ln.style,
+                            name=ln.name if k == 0 else f"{ln.name}-{k}"))
+    return out
+
+
 def _leader_blocked(occ: Occupancy, at, p, q) -> bool:
     """Does a leader p–q to the point ``at`` cross a label or a box kept clear, other than the boxes round
     ``at`` itself (a joint's, a block's)?"""

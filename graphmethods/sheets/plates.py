@@ -179,7 +179,7 @@ class Plate(Element):
     hatch_spacing_mm: float = 2.0
     name: str = "plate"
 
-    def elements(self) -> list[Element]:
+    def parts(self) -> list[Element]:
         """What draws it: the hatching and the outline (:func:`plate`), or the outline alone."""
         if self.hatch:
             drawn = plate(self.corners, name=self.name, spacing_mm=self.hatch_spacing_mm)
@@ -188,7 +188,7 @@ class Plate(Element):
         return [Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
 
     def primitives(self) -> tuple[Primitive, ...]:
-        return tuple(p for e in self.elements() for p in e.primitives())
+        return tuple(p for e in self.parts() for p in e.primitives())
 
 
 __all__ = ["OUTLINE", "Plate", "body_outline", "is_plate", "link_bodies", "plate", "triangles"]
