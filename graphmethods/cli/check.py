@@ -5,7 +5,8 @@
     graphmethods check indicator:7:3 answers.toml -o film.pdf
     graphmethods check press plan.dxf -o checked.dxf     # a drawing made in CAD (.dxf or .svg)
 
-PROBLEM is a built-in id (W1, W2, W3, W4, press, slotted-lever), a worksheet variant id (KIND:SEED:N) or a problem
+PROBLEM is a built-in id (W1, W2, W3, W4, press, slotted-lever, or a cam: shaper-cam, oscillating-cam), a
+worksheet variant id (KIND:SEED:N) or a problem
 file (a worksheet's problems/*.json, or a slider-crank case file). The report lists each item with
 its expected value at the student's scales, the deviation, the tolerance and the verdict, then the
 usual mistakes recognised. Exit status 0 when everything is right, 1 when something is wrong.
@@ -30,10 +31,11 @@ def add_parser(sub) -> None:
                        epilog="A blank answers file for each worksheet kind is written by graphmethods worksheet "
                        "(KIND-answers.toml); the keys are described in the README.")
     p.add_argument("problem", metavar="PROBLEM",
-                   help="W1, W2, W3, W4, press, slotted-lever, KIND:SEED:N, or a problem file")
+                   help="W1, W2, W3, W4, press, slotted-lever, a cam (shaper-cam, oscillating-cam), KIND:SEED:N, or a "
+                   "problem file")
     p.add_argument("answers", metavar="ANSWERS.toml", help="the student's answers file, or a drawing made in CAD "
-                   "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, read and "
-                   "measured)")
+                   "(.dxf, .svg: a velocity or acceleration plan, an energy indicator or energy–mass diagram, a cam "
+                   "profile, read and measured)")
     p.add_argument("--report", dest="report", choices=REPORTS, default=None, help="report style (default text)")
     p.add_argument("-o", "--out", "--overlay", dest="overlay", metavar="FILE|-",
                    help="write the overlay (.svg, .pdf, .png or .dxf) at the student's page size; - writes it to "
@@ -51,6 +53,7 @@ def add_parser(sub) -> None:
     drawing.add_argument("--mu-v", type=number, default=None, help="μ_v of the velocity plan, (m/s)/mm")
     drawing.add_argument("--mu-E", type=number, default=None, help="μ_E of the energy indicator, J/mm")
     drawing.add_argument("--mu-a", type=number, default=None, help="μ_a of the acceleration plan, (m/s²)/mm")
+    drawing.add_argument("--mu-l", type=number, default=None, help="μ_l of a cam profile, m/mm")
     drawing.add_argument("--point", action="append", default=[], metavar="LABEL=X,Y",
                          help="a point whose letter is missing, in drawing mm (repeat for several)")
     p.set_defaults(func=run)
@@ -117,7 +120,15 @@ def run(args) -> int:
         from graphmethods.render.files import not_an_input
 
         not_an_input(args.overlay, args.answers, args.problem, what="--overlay")
-    report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
+    from graphmethods.sheets.check import cam
+    from graphmethods.sheets.check.report import CheckReport
+
+    report: CheckReport
+    if cam.is_cam_problem(args.problem):          # a cam profile: drawn in CAD, or typed into cam-answers.toml
+        report = (cam.check_drawing(args.problem, args.answers, mu_l=args.mu_l) if is_drawing
+                  else cam.check_cam_answers(args.problem, args.answers))
+    else:
+        report = _drawing_report(args) if is_drawing else check(args.problem, pathlib.Path(args.answers))
     if args.overlay:
         suffix = f".{fmt}" if to_stdout else pathlib.Path(args.overlay).suffix.lower()
         data = _overlay_bytes(report, args, is_drawing, suffix)

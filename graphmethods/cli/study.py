@@ -115,6 +115,10 @@ def run(args) -> int:
     study = Study(case, positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang, args=args) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
+    if out.get("flywheel_needed", True):     # the A1 sheet's construction: the numbers it, the slides and
+        from graphmethods.sheets.dynamic_analysis_sheet import sheet_construction  # the stepper print
+
+        out["sheet"] = sheet_construction(study)
     if args.eta is not None:
         from graphmethods.dynamics.power import efficiency_series
         from graphmethods.units import parse_number
@@ -145,7 +149,7 @@ def _print_text(out: dict, stream) -> None:
     rows = out.pop("at_angles", None)
     width = max(map(len, out))
     for key, value in out.items():
-        if key == "power":
+        if key in ("power", "sheet"):
             value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
         elif key == "translating":
             value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "

@@ -635,28 +635,6 @@ class Dimension(_Segment):
 
 # --------------------------------------------------------------------------- axes
 
-def nice_ticks(v_min: float, v_max: float, scale: Scale, *, min_gap_mm: float = 8.0) -> tuple[float, ...]:
-    """Tick values: multiples of a convenient step (1, 2, 2.5, 5 × 10^k) at least ``min_gap_mm`` apart.
-
-    >>> nice_ticks(-60, 20, Scale("μ_M", "N·m", 0.5))
-    (-60.0, -55.0, -50.0, -45.0, -40.0, -35.0, -30.0, -25.0, -20.0, -15.0, -10.0, -5.0, 0.0, 5.0, 10.0, 15.0, 20.0)
-    """
-    need = scale.to_value(min_gap_mm)
-    k = math.floor(math.log10(need))
-    step: float | None = None
-    for e in (k, k + 1):
-        for m in (1.0, 2.0, 2.5, 5.0):
-            c = float(f"{m!r}e{e}")
-            if c >= need * (1 - 1e-9):
-                step = c
-                break
-        if step is not None:
-            break
-    assert step is not None                    # 5 × 10^(k+1) > 10^k ≥ need
-    i0, i1 = math.ceil(v_min / step - 1e-9), math.floor(v_max / step + 1e-9)
-    return tuple(float(round(i * step, 12)) for i in range(i0, i1 + 1))
-
-
 def pi_ticks(period: float, scale: Scale, *, min_gap_mm: float = 8.0) -> tuple[tuple[float, ...], tuple[str, ...]]:
     """Ticks for an angle axis at multiples of π/12, π/6, π/4, π/2 or π, labelled ``"π/2"``, ``"3π/2"``.
 
@@ -963,6 +941,6 @@ class Group(Element):
 
 __all__ = [
     "Element", "Text", "Line", "Polyline", "Curve", "Frame", "Region", "SignMark", "Vector", "Point", "Dimension",
-    "Axis", "Table", "ScaleCaptions", "Group", "nice_ticks", "pi_ticks", "make_label", "place_label", "label_bbox",
+    "Axis", "Table", "ScaleCaptions", "Group", "pi_ticks", "make_label", "place_label", "label_bbox",
     "bbox", "ASCENT", "DESCENT", "CAP",
 ]

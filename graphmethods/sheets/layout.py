@@ -320,16 +320,19 @@ class Occupancy:
         d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
         lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
         start = (x + 1.5 * c, y - 1.5 * s)
-        if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
+        if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end, at)):
             self.add_label(lab)
             self.add_line((start, end))
             return lab, (end, start)
         return None
 
-    def _line_blocked(self, p, q) -> bool:
+    def _line_blocked(self, p, q, anchor=None) -> bool:
         """Does the segment p–q cross or touch a registered label box (within the tie quantum)? (A leader
-        may cross lines.)"""
+        may cross lines; the marks around its own ``anchor`` do not block it: it must reach the point.)"""
         b = self.box_array() + np.array([-TIE_MM, -TIE_MM, TIE_MM, TIE_MM])          # a touch crosses
+        if anchor is not None and len(b):
+            ax, ay = anchor
+            b = b[~((b[:, 0] <= ax) & (ax <= b[:, 2]) & (b[:, 1] <= ay) & (ay <= b[:, 3]))]
         seg = np.array([[p[0], p[1], q[0], q[1]]], dtype=float)
         return bool(len(b)) and bool(segments_hit_boxes(seg, b).any())
 
@@ -531,7 +534,7 @@ def clear_tick_labels(axis: AxisT, occ: Occupancy, *, keep_values: bool = False,
     """The axis with the tick labels that would cover something already registered left out (marks stay).
 
     With ``keep_values`` (a value axis) an axis is never left without values: when every label
-    would cover something, they go on the other side of a y axis (``other_side``), and when that
+    would cover something, they go on the other side of the axis (``other_side``), and when that
     is full too (or not asked for), the labels that cover no text stay (a thin line may run
     through a number).
 
@@ -556,8 +559,10 @@ def clear_tick_labels(axis: AxisT, occ: Occupancy, *, keep_values: bool = False,
 
     out = kept(axis, True)
     if keep_values and shown and not any(out[i] for i in shown):
-        if other_side and axis.direction == "y" and axis.labels_side in ("", "left"):
-            other = replace(axis, labels_side="right")
+        if other_side:
+            flip = {"": "right", "left": "right"} if axis.direction == "y" else \
+                {"": "above", "below": "above", "above": "below"}
+            other = replace(axis, labels_side=flip.get(axis.labels_side, axis.labels_side))
             out = kept(other, True)
             if any(out[i] for i in shown):
                 return replace(other, tick_labels=tuple(out))
