@@ -11,7 +11,6 @@ from graphmethods.dynamics.study import Study
 from graphmethods.kinematics.case import case_from_dict
 from graphmethods.problems import builtin
 from graphmethods.render import svg
-from graphmethods.render.recording import record
 from graphmethods.scene import Line
 from graphmethods.sheets import kinematic_diagrams, kinematic_scheme
 from graphmethods.sheets.engine.quality import measure
