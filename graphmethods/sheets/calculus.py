@@ -137,6 +137,16 @@ def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.
     return xs, ys
 
 
+def _broken_behind(rays: list[Line], axis: Axis) -> list[Line]:
+    """The rays of a pole interrupted where they would cross the value axis's tick labels (a line is broken
+    for an inscription, ГОСТ 2.303): :func:`~graphmethods.sheets.linkage_figures.broken_behind`."""
+    from graphmethods.scene.elements import label_bbox
+    from graphmethods.scene.primitives import Label
+    from graphmethods.sheets.linkage_figures import broken_behind
+
+    return broken_behind(rays, [label_bbox(p) for p in axis.primitives() if isinstance(p, Label)])
+
+
 def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:
     """The position numbers a φ axis had to leave out, set beside their ticks where there is room
     (above the axis where a curve runs below it, and the other way round)."""
@@ -514,6 +524,7 @@ def _v_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_v: 
     occ.register(curve_v, *rays_v, *proj_v, *chords_v)
     axes, pos_v = _strip_axes(b_v, occ, nt=nt, y_label=nt.quantity(sym_v, nt.unit(ks.sd.units[0])), m=m, name="v",
                               pos="pos-v")
+    rays_v = _broken_behind(rays_v, axes[1])
     dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')}", "H1", occ)
     return b_v, [*axes, *rays_v, *proj_v, *chords_v, curve_v, *dots_v, *pole_els_v, *dim_v, *pos_v]
 
@@ -539,6 +550,7 @@ def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: 
     occ.register(curve_a, *rays_a, *proj_a)
     axes, pos_a = _strip_axes(b_a, occ, nt=nt, y_label=nt.quantity(sym_a, nt.unit(ks.sd.units[1])), m=m, name="a",
                               pos="pos-a")
+    rays_a = _broken_behind(rays_a, axes[1])
     dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')}", "H2", occ)
     return b_a, [*axes, *rays_a, *proj_a, curve_a, *dots_a, *pole_els_a, *dim_a, *pos_a]
 

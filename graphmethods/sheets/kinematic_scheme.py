@@ -15,7 +15,7 @@ import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.scene import Frame, Line, Point, Polyline, Scale, Scene, Text, notation as get_notation
-from graphmethods.scene.elements import Dimension, Element
+from graphmethods.scene.elements import Dimension, Element, label_bbox
 from graphmethods.scene.primitives import THIN, Label
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -34,7 +34,9 @@ from graphmethods.sheets.linkage_figures import (
     _place,
     _pos_label,
     _sub,
+    broken_behind,
 )
+from graphmethods.sheets.plates import Plate, body_outline, link_bodies
 from graphmethods.units import convenient_at_least
 
 # ----------------------------------------------------------------------------- 1. the kinematic scheme
@@ -51,6 +53,7 @@ class _Parts:
     extra: tuple[str, ...]
     paths: tuple[str, ...]
     coincident: tuple[str, ...] = ()         # points of slotted links under a block's pin (A3): not drawn
+    bodies: tuple[tuple[str, ...], ...] = ()  # each link's joints as drawn: a line, or a plate (ternary link)
 
 
 def _translating_yokes(mech) -> list:
@@ -61,16 +64,9 @@ def _translating_yokes(mech) -> list:
     return [g for g in getattr(lk, "groups", ()) if isinstance(g, RPP) and g.guide.link == "0"]
 
 
-def _plates(mech) -> tuple[tuple[str, str], ...]:
-    """The other two sides of each triad's basic (ternary) link, drawn as a triangle B1 B2 B3."""
-    lk = getattr(mech, "linkage", None)
-    return tuple(side for g in getattr(lk, "groups", ()) if getattr(g, "cls", 2) == 3
-                 for side in ((g.inner[1], g.inner[2]), (g.inner[0], g.inner[2])))
-
-
 def _parts(mech, pos) -> _Parts:
     fixed = tuple(mech.fixed_joints)
-    links = tuple(mech.link_joints.values()) + _plates(mech)
+    links = tuple(mech.link_joints.values())
     sliders = dict(mech.guides)
     pin = mech.crank_pin
     centre = next(x for x, y in links if y == pin)
@@ -83,7 +79,9 @@ def _parts(mech, pos) -> _Parts:
         output = next(y for x, y in links if x in fixed and x != centre)
     extra = tuple(p.name for p in mech.points)
     moving = [j for j in mech.joints if j not in fixed and j != pin and j not in coincident and j not in sliders]
-    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident))
+    bodies = tuple(link_bodies(mech).values())
+    return _Parts(fixed, links, sliders, block, output, centre, pin, extra, tuple(moving) + extra, tuple(coincident),
+                  bodies)
 
 
 @dataclass(frozen=True)
@@ -93,6 +91,7 @@ class SchemeLayout:
     pad_x_mm: float = 10.0              # beside the linkage
     pad_top_mm: float = 10.0            # above it
     pad_bottom_mm: float = 14.0         # below it: the stroke's dimension
+    pad_steep_mm: float = 4.0           # above and below when the output's guide is steep (H dimensioned beside it)
     caption_room_mm: float = 9.0        # between the drawing's area and the captions line
     guide_overrun_mm: float = 8.0       # a guide beyond the slider's extreme positions
     guide_offset_mm: float = 3.0        # its hatched surface from its line
@@ -153,6 +152,25 @@ def _scheme_geometry(pos, thick: int | None, trajectories: bool) -> _SchemeGeome
     return _SchemeGeometry(pos, mech, parts, drawn, thick, ext, ext_pos, fine, c_xy, r)
 
 
+def _crank_path_angles(g: _SchemeGeometry) -> np.ndarray | None:
+    """The angles (rad, 61 of them) of a swinging driver's arc: from its first position to its last, the way
+    it swings (a lever or rocker given ``range_deg``); None for a crank that turns fully (its circle)."""
+    if getattr(getattr(g.mech, "linkage", None), "swing", None) is None:
+        return None
+    d = g.pos.coords[g.parts.pin] - g.c_xy
+    ang = np.unwrap(np.arctan2(d[:, 1], d[:, 0]))
+    return np.linspace(float(ang.min()), float(ang.max()), 61)
+
+
+def _vertical_pads(g: _SchemeGeometry, lay: SchemeLayout) -> tuple[float, float]:
+    """The room (mm) above and below the linkage: for the stroke's dimension under or over a level guide; a
+    steep guide (slotting machine) has its dimension beside it and needs less."""
+    guide = g.parts.sliders.get(g.parts.output)
+    if guide is not None and abs(float(guide[1])) > abs(float(guide[0])):
+        return lay.pad_steep_mm, lay.pad_steep_mm
+    return lay.pad_top_mm, lay.pad_bottom_mm
+
+
 def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: SchemeLayout) -> tuple[Scale, Frame]:
     """Step 2: μ_l (given, checked, or picked to fill the sheet) and the frame centring the drawing."""
     x0, _, x1, _ = sheet.box
@@ -166,12 +184,15 @@ def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: Sche
         pts += coords(g.ext_pos, joints)
     if g.fine is not None:
         pts += coords(g.fine, g.parts.paths)
-    pts.append(np.array([g.c_xy - g.r, g.c_xy + g.r]))
+    t = _crank_path_angles(g)
+    pts.append(np.array([g.c_xy - g.r, g.c_xy + g.r]) if t is None
+               else g.c_xy + g.r * np.column_stack((np.cos(t), np.sin(t))))
     allp = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     area = (x0, sheet.top, x1, sheet.caption_y - lay.caption_room_mm)
     avail_w = area[2] - area[0] - 2 * lay.pad_x_mm
-    avail_h = area[3] - area[1] - lay.pad_top_mm - lay.pad_bottom_mm
+    pad_top, pad_bottom = _vertical_pads(g, lay)
+    avail_h = area[3] - area[1] - pad_top - pad_bottom
     span_x, span_y = float(hi[0] - lo[0]), float(hi[1] - lo[1])
     if mu_l is None:
         need = max(span_x / avail_w, span_y / avail_h)
@@ -186,7 +207,7 @@ def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: Sche
                              f"{span_y / s_l.per_mm:.0f} mm but the sheet leaves {avail_w:.0f} × {avail_h:.0f} mm; "
                              f"give a larger μ_l (more m per mm), a larger page, or none to have one picked")
     cx = (area[0] + area[2]) / 2 - s_l.to_mm(float(lo[0] + hi[0]) / 2)
-    cy = (area[1] + lay.pad_top_mm + area[3] - lay.pad_bottom_mm) / 2 + s_l.to_mm(float(lo[1] + hi[1]) / 2)
+    cy = (area[1] + pad_top + area[3] - pad_bottom) / 2 + s_l.to_mm(float(lo[1] + hi[1]) / 2)
     return s_l, Frame((cx, cy), s_l, s_l)
 
 
@@ -201,21 +222,29 @@ def _scheme_links(g: _SchemeGeometry, f: Frame) -> tuple[list[Element], list[Ele
         for j in g.parts.paths:
             thin_els.append(Polyline(f.pts(g.fine.coords[j][:, 0], g.fine.coords[j][:, 1]), style=TRAJECTORY,
                                      name=f"path-{j}"))
-    t = np.linspace(0.0, 2.0 * math.pi, 181)
+    t = _crank_path_angles(g)
+    full = t is None
+    t = np.linspace(0.0, 2.0 * math.pi, 181) if t is None else t
     thin_els.append(Polyline(f.pts(g.c_xy[0] + g.r * np.cos(t), g.c_xy[1] + g.r * np.sin(t)), style=THIN,
-                             closed=True, name="crank-circle"))
+                             closed=full, name="crank-circle" if full else "crank-arc"))
     link_segments: list = []
+
+    plated = {j for body in g.parts.bodies if len(body) > 2 for j in body}
 
     def link_lines(p, idx, style, tag) -> list[Element]:
         out: list[Element] = []
-        for a, b in g.parts.links:
-            A, B = P(p.coords[a][idx]), P(p.coords[b][idx])
-            out.append(Line(A, B, style=style, name=f"{tag}-{a}{b}"))
-            link_segments.append((a, b, A, B))
+        for body in g.parts.bodies:
+            corners = body_outline([P(p.coords[j][idx]) for j in body])
+            if len(corners) > 2:           # a ternary link: a plate, hatched in the thick position
+                out.append(Plate(corners, outline_style=style, hatch=style is THICK, name=f"{tag}-{''.join(body)}"))
+            else:
+                out.append(Line(corners[0], corners[1], style=style, name=f"{tag}-{''.join(body)}"))
+            ring = corners + corners[:1] if len(corners) > 2 else corners
+            link_segments.extend(("", "", A, B) for A, B in zip(ring, ring[1:]))
         for j in g.parts.extra:            # a point off its link line: the link drawn as a triangle
             spec = next(q for q in g.mech.points if q.name == j)
-            if spec.angle != 0.0:
-                x, y, _, _ = g.mech._resolve_link(spec.link)
+            x, y, _, _ = g.mech._resolve_link(spec.link)
+            if spec.angle != 0.0 and not {x, y} <= plated:
                 S = P(p.coords[j][idx])
                 out += [Line(P(p.coords[x][idx]), S, style=style, name=f"{tag}-{x}{j}"),
                         Line(S, P(p.coords[y][idx]), style=style, name=f"{tag}-{j}{y}")]
@@ -307,7 +336,7 @@ def _scheme_keep_clear(occ: Occupancy, thick_els: list[Element], top_els: list[E
 
 
 def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_els: list[Element], nt,
-                    lay: SchemeLayout) -> tuple[list[Text], list[Element]]:
+                    lay: SchemeLayout, leaders: list) -> tuple[list[Text], list[Element]]:
     """Step 6: the position numbers at the output point, the stroke H beyond them, the numbers at the crank pin."""
     parts, pos = g.parts, g.pos
     guide = next((e for e in symbol_els if isinstance(e, Guide) and e.name == f"guide-{parts.output}"), None)
@@ -322,22 +351,39 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
             free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
             toward = math.degrees(math.atan2(-free[1], free[0]))
             dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
-            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward,
+                                      leaders=leaders)
         else:
-            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side)
+            numbers = _output_numbers(out_items, P, occ, sheet.box, side=out_side, leaders=leaders)
     else:
         pivot = next(x for x, y in parts.links if y == parts.output and x in parts.fixed)
-        numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])))
+        numbers = _output_numbers(out_items, P, occ, sheet.box, side=None, pivot=np.asarray(P(pos.coords[pivot][0])),
+                                  leaders=leaders)
     dims: list[Element] = []
     if guide is not None and pos.H is not None and g.ext is not None:
         end_xy = g.ext_pos.coords[parts.output][0] if g.ext_pos is not None else pos.coords[parts.output][g.ext.same_as]
         text = nt.word("kinematics.stroke", H=nt.number(pos.H * 1000.0, sig=4), u=nt.unit("mm"))   # a dimension: mm
-        dim = _stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free, out_side, lay)
+        dim = _clear_dimension(_stroke_dimension(P(pos.coords[parts.output][0]), P(end_xy), numbers, text, free,
+                                                 out_side, lay), occ, sheet.box)
         dims.append(dim)
         occ.register(dim)
     numbers += _crank_numbers(_numbered(pos, parts, g.drawn, g.ext, g.ext_pos, parts.pin), P(g.c_xy), P, occ,
-                              sheet.box)
+                              sheet.box, leaders)
     return numbers, dims
+
+
+def _clear_dimension(dim: Dimension, occ: Occupancy, box) -> Dimension:
+    """The dimension moved further out (its offset grown in 2 mm steps, up to 60 mm) until its value is free
+    of every line and label drawn; as it was when it nowhere is."""
+    from dataclasses import replace
+
+    from graphmethods.scene.elements import label_bbox
+
+    for extra in np.arange(0.0, 60.0, 2.0):
+        trial = replace(dim, offset_mm=dim.offset_mm + float(extra))
+        if all(occ.is_free(label_bbox(p), within=box) for p in trial.primitives() if isinstance(p, Label)):
+            return trial
+    return dim
 
 
 def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str | None,
@@ -369,7 +415,8 @@ def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str 
     return Dimension(left, right, text, offset_mm=off, size_mm=TEXT_MM, name="dimension-H")
 
 
-def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, lay: SchemeLayout) -> list[Text]:
+def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, lay: SchemeLayout,
+                  leaders: list) -> list[Text]:
     """Step 7: the names of the joints of the thick position (position 0 when all are thin), away from the middle."""
     labels = []
     occ.pad = lay.names_pad_mm
@@ -384,7 +431,7 @@ def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, l
         if j in g.parts.fixed:
             prefer = 180.0 if at[0] <= centroid[0] else 0.0
         labels.append(_place(occ, at, _sub(j), prefer, size_mm=TEXT_MM + 0.3, within=box, name=f"name-{j}",
-                             gaps=lay.names_gaps_mm, hard=hard))
+                             gaps=lay.names_gaps_mm, hard=hard, leaders=leaders, ring=True))
     occ.pad = lay.pad_mm
     return labels
 
@@ -467,15 +514,19 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     hard = _scheme_keep_clear(occ, thick_els, top_els, symbol_els, lay)
     rot, rot_label = _rotation_arrow(P(g.c_xy), s_l.to_mm(g.r), g.mech.sense, occ, link_segments)
     occ.register(rot)
-    numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay)
-    labels = _scheme_names(g, P, occ, sheet.box, hard, lay) + [rot_label(occ)]
+    leaders: list[Element] = []            # from labels that found no free place beside their point
+    numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay, leaders)
+    values = [label_bbox(p) for d in dims for p in d.primitives() if isinstance(p, Label)]
+    thin_els = [q for e in thin_els                  # thin lines broken behind a value that found no clear place
+                for q in (broken_behind([e], values) if isinstance(e, Line) else [e])]
+    labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders) + [rot_label(occ, leaders)]
     facts = _scheme_facts(g.pos, g.ext, nt)
     summary = [Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts), size_mm=TEXT_MM,
                     name="summary")] if facts else []
     legend = lk.speed_text(nt) if lk.n_rpm is not None else ""
     scales = (s_l,)
-    elements = ([sheet.header()] + thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + labels
-                + numbers + summary)
+    elements = ([sheet.header()] + thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + leaders
+                + labels + numbers + summary)
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
 
@@ -570,10 +621,11 @@ def _rotation_arrow(centre, r_mm: float, sense: int, occ: Occupancy, segments):
     assert best is not None                    # the loop runs at least once
     arr = best[1]
 
-    def label(occ_):
+    def label(occ_, leaders):
         mid = math.radians(arr.start_deg + arr.sweep_deg / 2)
         at = (centre[0] + radius * math.cos(mid), centre[1] - radius * math.sin(mid))
-        return _place(occ_, at, "ω_1", math.degrees(mid), size_mm=TEXT_MM + 0.3, name="name-omega-1",
+        return _place(occ_, at, "ω_1", math.degrees(mid), size_mm=TEXT_MM + 0.3, name="name-omega-1", leaders=leaders,
+                      ring=True,
                       gaps=(1.0, 2.2, 3.5))
 
     return arr, label
@@ -587,7 +639,7 @@ def _numbered(pos, parts, drawn, ext, ext_pos, j):
     return items
 
 
-def _crank_numbers(items, centre, P, occ, box) -> list:
+def _crank_numbers(items, centre, P, occ, box, leaders: list) -> list:
     """The position numbers at the crank pin, outside the crank circle."""
     out = []
     c = np.asarray(centre)
@@ -596,11 +648,13 @@ def _crank_numbers(items, centre, P, occ, box) -> list:
         radial = math.degrees(math.atan2(-(a - c)[1], (a - c)[0]))
         dirs = [d for d in _dirs(radial) if abs((_COMPASS[d] - radial + 180.0) % 360.0 - 180.0) <= 70.0]
         out.append(_place(occ, tuple(a), text, radial, size_mm=SMALL_MM, within=box, name=f"number-A-{tag}",
+                          leaders=leaders, ring=True,
                           gaps=(1.0, 2.4, 4.0), dirs=dirs))
     return out
 
 
-def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None) -> list:
+def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None,
+                    leaders: list | None = None) -> list:
     """The position numbers at the output point: for a slider in a row on the free side of its guide
     (``side`` "n" or "s" for a horizontal guide, or the compass ``dirs`` and angle ``prefer`` (deg) of
     the free side of a guide at an angle; points closer than 2 mm share a label, "1, 11"); for a
@@ -620,12 +674,13 @@ def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=No
         text = ", ".join(t for _, _, t in g)
         if side is not None:
             toward = prefer if prefer is not None else (90.0 if side == "n" else 270.0)
-            out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box,
+            out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box, leaders=leaders, ring=True,
                               dirs=dirs or (side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
                               name=f"number-out-{tag}"))
             continue
         prefer = math.degrees(math.atan2(-(o - pivot)[1], (o - pivot)[0]))
         out.append(_place(occ, tuple(o), text, prefer, size_mm=SMALL_MM, within=box, name=f"number-out-{tag}",
+                          leaders=leaders, ring=True,
                           gaps=(1.0, 2.4, 4.0, 6.0)))
     return out
 

@@ -169,16 +169,22 @@ _COMPASS = {"e": 0.0, "ne": 45.0, "n": 90.0, "nw": 135.0, "w": 180.0, "sw": 225.
 
 def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, within=None, name: str,
            gaps=(0.8, 2.2, 4.0), avoid_lines: bool = True, dirs=None, hard: Occupancy | None = None,
-           leaders: list | None = None) -> Text:
+           leaders: list | None = None, ring: bool = False) -> Text:
     """A label beside ``at``, in the free direction nearest ``prefer_deg`` (registered as taken).
 
-    Free of lines and labels if possible; else free of labels and of the ``hard`` lines (crossing
-    a thin line); else the preferred spot.
+    Free of lines and labels if possible; with ``ring`` (and ``leaders`` to collect them) further out in
+    any direction, nearest first, with a leader back to ``at``; else free of labels and of the ``hard``
+    lines (crossing a thin line); else the preferred spot.
     """
     from graphmethods.scene.elements import label_bbox, place_label
 
     dirs = tuple(dirs) if dirs else _dirs(prefer_deg)
-    lab = _first_clear(occ, hard, at, text, dirs, gaps, size_mm, within, leaders, name) if avoid_lines else None
+    lab = (_first_clear(occ, hard, at, text, dirs, gaps, size_mm, within, None if ring else leaders, name)
+           if avoid_lines else None)
+    if lab is None and ring and leaders is not None:
+        lab = _ring_clear(occ, hard, at, text, prefer_deg, gaps[-1], size_mm, within)
+        if lab is not None:
+            _leader(occ, at, lab, leaders, name, start_mm=RING_START_MM)
     for gap in (gaps if lab is None else ()):     # crowded: near the point across a thin line
         cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
         boxes = [label_bbox(c) for c in cands]
@@ -231,17 +237,101 @@ def _first_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, dirs, ga
     return None
 
 
-def _leader_ends(at, lab) -> tuple[tuple[float, float], tuple[float, float]] | None:
-    """The leader from near ``at`` to the nearest point of the label's box (None when it is within 1.5 mm)."""
+#: how far out (mm beyond the last gap) :func:`_ring_clear` looks for a free place, and at which angles (deg)
+RING_MM = (1.5, 3.0, 5.0, 7.5, 10.5, 14.0, 18.0, 23.0, 30.0)
+RING_STEP_DEG = 15
+#: a ring label's leader starts this far from its point (clear of a joint's circle and the box kept round it)
+RING_START_MM = 2.0
+
+
+def _ring_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, prefer_deg: float, gap: float,
+                size_mm: float, within):
+    """The nearest place on rings around ``at`` (every :data:`RING_STEP_DEG`, out to :data:`RING_MM`
+    beyond ``gap``, the angle nearest ``prefer_deg`` first) free of every line and label, whose leader
+    crosses no label; None when there is none (deterministic: a fixed order, the first free wins)."""
+    from graphmethods.scene.elements import label_bbox, place_label
+
+    angles = sorted(range(0, 360, RING_STEP_DEG),
+                    key=lambda a: (abs((a - prefer_deg + 180.0) % 360.0 - 180.0), a))
+    x, y = at
+    for extra in RING_MM:
+        r = gap + extra
+        for ang in angles:
+            c, s = math.cos(math.radians(ang)), math.sin(math.radians(ang))
+            end = (x + r * c, y - r * s)
+            d = "e" if c > 0.38 else "w" if c < -0.38 else ("n" if s > 0 else "s")
+            lab = place_label(end, text, d, gap_mm=0.3, size_mm=size_mm)
+            b = label_bbox(lab)
+            if not occ.is_free(b, within=within) or (hard is not None and not hard.is_free(b)):
+                continue
+            near = np.array([min(max(x, b[0]), b[2]), min(max(y, b[1]), b[3])])
+            dd = near - np.asarray(at, dtype=float)
+            L = float(np.hypot(*dd))
+            if L <= RING_START_MM + 0.5 or not _leader_blocked(occ, at, np.asarray(at) + dd / L * RING_START_MM, near):
+                return lab
+    return None
+
+
+#: a line stops this far (mm) short of a label it would cross
+BREAK_MM = 0.4
+
+
+def broken_behind(lines: list, boxes: list) -> list:
+    """Lines interrupted where they would cross the boxes of labels (mm): a line is broken for an
+    inscription (ГОСТ 2.303, 2.307) when no place clear of it is left. Each line that crosses a box
+    becomes the pieces of it outside the boxes grown by :data:`BREAK_MM` (named ``name``, ``name-1``, ...);
+    the others are returned as they are.
+
+    >>> [(e.start, e.end) for e in broken_behind([Line((0, 0), (10, 0), name="l")], [(4, -1, 6, 1)])]
+    [((0.0, 0.0), (3.6, 0.0)), ((6.4, 0.0), (10.0, 0.0))]
+    """
+    import shapely
+    from shapely.geometry import LineString, box
+
+    if not boxes:
+        return list(lines)
+    cover = shapely.union_all([box(b[0] - BREAK_MM, b[1] - BREAK_MM, b[2] + BREAK_MM, b[3] + BREAK_MM)
+                               for b in boxes])
+    out: list = []
+    for ln in lines:
+        seg = LineString([ln.start, ln.end])
+        if not seg.intersects(cover):
+            out.append(ln)
+            continue
+        parts = [q for q in shapely.get_parts(seg.difference(cover)) if q.length > 1e-6]
+        for k, q in enumerate(parts):
+            (x0, y0), (x1, y1) = q.coords[0], q.coords[-1]
+            out.append(Line((float(x0), float(y0)), (float(x1), float(y1)), style=ln.style,
+                            name=ln.name if k == 0 else f"{ln.name}-{k}"))
+    return out
+
+
+def _leader_blocked(occ: Occupancy, at, p, q) -> bool:
+    """Does a leader p–q to the point ``at`` cross a label or a box kept clear, other than the boxes round
+    ``at`` itself (a joint's, a block's)?"""
+    from graphmethods.sheets.layout import segments_hit_boxes
+
+    b = occ.box_array()
+    if not len(b):
+        return False
+    x, y = at
+    b = b[~((b[:, 0] <= x) & (x <= b[:, 2]) & (b[:, 1] <= y) & (y <= b[:, 3]))]
+    seg = np.array([[p[0], p[1], q[0], q[1]]], dtype=float)
+    return bool(len(b)) and bool(segments_hit_boxes(seg, b).any())
+
+
+def _leader_ends(at, lab, start_mm: float = 0.9) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The leader from ``start_mm`` off ``at`` to the nearest point of the label's box (None when the label
+    is within max(1.5, start_mm + 0.5) mm)."""
     from graphmethods.scene.elements import label_bbox
 
     b = label_bbox(lab)
     near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
     dd = np.asarray(near) - np.asarray(at)
     L = float(np.hypot(*dd))
-    if L <= 1.5:
+    if L <= max(1.5, start_mm + 0.5):
         return None
-    return tuple((np.asarray(at) + dd / L * 0.9).tolist()), near
+    return tuple((np.asarray(at) + dd / L * start_mm).tolist()), near
 
 
 def _leader_clear(occ: Occupancy, at, lab) -> bool:
@@ -250,10 +340,10 @@ def _leader_clear(occ: Occupancy, at, lab) -> bool:
     return ends is None or not occ._line_blocked(*ends)
 
 
-def _leader(occ: Occupancy, at, lab, leaders: list | None, name: str) -> None:
+def _leader(occ: Occupancy, at, lab, leaders: list | None, name: str, *, start_mm: float = 0.9) -> None:
     """A thin leader from near ``at`` to the nearest point of the label's box, collected in ``leaders`` and
     registered (when ``leaders`` collects them and the label is more than 1.5 mm away)."""
-    ends = None if leaders is None else _leader_ends(at, lab)
+    ends = None if leaders is None else _leader_ends(at, lab, start_mm)
     if leaders is not None and ends is not None:
         leaders.append(Line(ends[0], ends[1], style=THIN, name=f"leader-{name}"))
         occ.add_line(ends)

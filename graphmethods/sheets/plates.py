@@ -10,15 +10,32 @@ pairwise: a triad's basic link); :func:`plate` draws one.
 ['plate-BCD-hatch', 'plate-BCD']
 >>> plate([(0.0, 0.0), (10.0, 0.0), (20.0, 0.0)], name="p")       # joints in a line: a bar, not a plate
 []
+
+The kinematic scheme draws a linkage in many positions from its mechanism: :func:`link_bodies` lists each
+link's joints (the joints only: centres of mass are points marked on a link, not joints of it),
+:func:`body_outline` orders a body's corners on paper (joints in line: the one line from end to end, so a
+rocker O₂B extended to C stands on C), and :class:`Plate` is the element of one position (hatched in the
+thick position through :func:`plate`, outlined only in the thin ones).
+
+>>> from graphmethods.problems import builtin
+>>> link_bodies(builtin.case("six-bar-press").mechanism)["3"]
+('B', 'O2', 'C')
+>>> is_plate(((0.0, 0.0), (10.0, 0.0), (20.0, 0.0))), is_plate(((0.0, 0.0), (10.0, 0.0), (5.0, 6.0)))
+(False, True)
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
 
 from graphmethods.scene import Element, Polyline
 from graphmethods.scene.elements import Region
-from graphmethods.scene.primitives import Style
+from graphmethods.scene.primitives import Primitive, Style
 
 #: the plate's outline: a main line, as the links (ГОСТ 2.303)
 OUTLINE = Style(width_mm=0.6)
@@ -59,4 +76,119 @@ def plate(points: Sequence[tuple[float, float]], *, name: str, spacing_mm: float
             Polyline(tuple(pts), style=OUTLINE, closed=True, name=name)]
 
 
-__all__ = ["plate", "triangles"]
+#: corners closer to a line than this share of the body's longest side: the joints are in line
+IN_LINE = 0.02
+
+
+def link_bodies(mech: Any) -> dict[str, tuple[str, ...]]:
+    """Each moving link's joints (textbook number -> joint names, in the mechanism's joint order).
+
+    A link listed by two joints in ``mech.link_joints`` gains the joints on it that other links hang on
+    (a lever's end C, a triad's third inner joint). Mechanisms without a :class:`~graphmethods.
+    kinematics.linkage.Linkage` (the classic ones) have binary links only.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism (``case.mechanism()``).
+
+    Returns
+    -------
+    dict
+        Link number (str) -> its joints; the crank and every link with two joints or more.
+    """
+    lk = getattr(mech, "linkage", None)
+    canon = getattr(mech, "_canon", None)
+    if lk is None or canon is None:
+        return {str(k): tuple(v) for k, v in enumerate(mech.link_joints.values(), start=1)}
+    joints = set(mech.joints)
+    out: dict[str, list[str]] = {}
+    for number, name in canon.items():
+        if name in mech.link_joints:
+            out[number] = list(mech.link_joints[name])
+    for g in lk.groups:
+        if getattr(g, "cls", 2) == 3 and g.links[0] in out:       # a triad's basic link: its three inner joints
+            out[g.links[0]] += [j for j in g.inner if j not in out[g.links[0]]]
+    for p in lk.points:
+        if p.name in joints and p.link in out and p.name not in out[p.link]:
+            out[p.link].append(p.name)
+    order = {j: k for k, j in enumerate(mech.joints)}
+    return {k: tuple(sorted(v, key=lambda j: order.get(j, len(order)))) for k, v in out.items()}
+
+
+def is_plate(corners: Sequence[tuple[float, float]] | np.ndarray) -> bool:
+    """Whether a body's joints (at least three, any unit) span an area: not all on one line."""
+    pts = np.asarray(corners, dtype=float).reshape(-1, 2)
+    if len(pts) < 3:
+        return False
+    d = pts[:, None, :] - pts[None, :, :]
+    span = float(np.hypot(d[..., 0], d[..., 1]).max())
+    if span == 0.0:
+        return False
+    a, b = np.unravel_index(int(np.argmax(np.hypot(d[..., 0], d[..., 1]))), d.shape[:2])
+    u = (pts[b] - pts[a]) / span
+    off = np.abs((pts - pts[a]) @ np.array([-u[1], u[0]]))
+    return bool(off.max() > IN_LINE * span)
+
+
+def body_outline(corners: Sequence[tuple[float, float]]) -> tuple[tuple[float, float], ...]:
+    """The body as it is drawn: for a plate its corners in turn around their centre (a convex polygon
+    through every joint), for joints in line the two ends of the line.
+
+    >>> body_outline(((0, 0), (10, 0), (5, 0)))
+    ((0.0, 0.0), (10.0, 0.0))
+    >>> body_outline(((0, 0), (10, 10), (10, 0)))
+    ((0.0, 0.0), (10.0, 0.0), (10.0, 10.0))
+    """
+    pts = np.asarray(corners, dtype=float).reshape(-1, 2)
+    if not is_plate(pts):
+        if len(pts) < 2:
+            return tuple((float(x), float(y)) for x, y in pts)
+        d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
+        a, b = np.unravel_index(int(np.argmax(d)), d.shape)
+        lo, hi = sorted((int(a), int(b)))
+        return ((float(pts[lo, 0]), float(pts[lo, 1])), (float(pts[hi, 0]), float(pts[hi, 1])))
+    c = pts.mean(axis=0)
+    ang = [math.atan2(float(q[1] - c[1]), float(q[0] - c[0])) for q in pts]
+    order = sorted(range(len(pts)), key=lambda k: (round(ang[k], 9), k))
+    return tuple((float(pts[k, 0]), float(pts[k, 1])) for k in order)
+
+
+@dataclass(frozen=True)
+class Plate(Element):
+    """A ternary (or higher) link in one position of a scheme: :func:`plate` (hatched) or its outline alone.
+
+    Parameters
+    ----------
+    corners : sequence of (float, float), mm
+        The joints, in turn around the plate (:func:`body_outline`).
+    outline_style : Style
+        The outline (a main line for the drawn position, thin or dashed for the others).
+    hatch : bool
+        Hatch the inside (the thick position); the thin positions are outlines only.
+    hatch_spacing_mm : float, mm
+        Distance between hatching lines.
+
+    >>> [type(p).__name__ for p in Plate(((0, 0), (30, 0), (15, 20)), hatch=False).primitives()]
+    ['Path']
+    """
+
+    corners: tuple[tuple[float, float], ...]
+    outline_style: Style = OUTLINE
+    hatch: bool = True
+    hatch_spacing_mm: float = 2.0
+    name: str = "plate"
+
+    def parts(self) -> list[Element]:
+        """What draws it: the hatching and the outline (:func:`plate`), or the outline alone."""
+        if self.hatch:
+            drawn = plate(self.corners, name=self.name, spacing_mm=self.hatch_spacing_mm)
+            if drawn:
+                return [*drawn[:-1], Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
+        return [Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
+
+    def primitives(self) -> tuple[Primitive, ...]:
+        return tuple(p for e in self.parts() for p in e.primitives())
+
+
+__all__ = ["OUTLINE", "Plate", "body_outline", "is_plate", "link_bodies", "plate", "triangles"]
