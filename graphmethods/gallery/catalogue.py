@@ -155,7 +155,25 @@ CATALOGUE: tuple[Figure, ...] = (
        "results.", png=True),
     _F("oscillating_cam_sheet_zh", "cam:oscillating-cam", "cam_sheet.cam_sheet", "zh", {},
        "The oscillating roller follower's cam on its A1 sheet, Chinese notation: the motion diagrams by chords, "
-       "α(φ), the division points, the profile by inversion with the pivot's circle.", png=True),
+       "the rocker's combined diagram (l·dψ/dφ along the arm, the tangents at [α], the zone of the cam centre), α(φ), "
+       "the profile by inversion with the pivot's arc.", png=True),
+    _F("shaper_cam_motion_diagrams_en", "cam:shaper-cam", "cam_figures.cam_motion_diagrams", "en", {},
+       "The shaper cam's motion diagrams on A4: d²s/dφ² with its 8 strips per phase and the pole P₁, ds/dφ and s "
+       "by the method of chords."),
+    _F("oscillating_cam_motion_diagrams_ru", "cam:oscillating-cam", "cam_figures.cam_motion_diagrams", "ru", {},
+       "The rocker's swing: d²ψ/dφ², dψ/dφ and ψ by the method of chords, Russian notation, A4."),
+    _F("shaper_cam_combined_diagram_en", "cam:shaper-cam", "cam_figures.cam_combined_diagram", "en", {},
+       "The combined ds/dφ–s diagram of the shaper cam on A4: the tangents at [α] = 30° and [α]_return = 70°, the "
+       "admissible zone of the cam centre and O on its edge at the designed r₀."),
+    _F("oscillating_cam_combined_diagram_ru", "cam:oscillating-cam", "cam_figures.cam_combined_diagram", "ru", {},
+       "The rocker's combined diagram on A4: the arc of the roller centre about the pivot A, l·dψ/dφ laid along each "
+       "arm position, the tangent lines at [ϑ], the zone of the cam centre and O where the circle of radius a about "
+       "A meets its edge (the designed r₀), Russian notation.", png=True),
+    _F("shaper_cam_pressure_angle_zh", "cam:shaper-cam", "cam_figures.cam_pressure_angle", "zh", {},
+       "The pressure angle α(φ) of the shaper cam over the cycle with ±[α] and −[α]_return, Chinese notation, A4."),
+    _F("oscillating_cam_profile_zh", "cam:oscillating-cam", "cam_sheet.cam_inversion", "zh", {},
+       "The rocker cam's profile by inversion on A4: the pivot's arc, the arm in each turned-back position, the "
+       "pitch curve, the rollers and their envelope, the largest pressure angle, Chinese notation."),
     _F("drive_scheme_en", "drive:three-mass-drive", "drive_scheme.drive_scheme", "en", {},
        "A three-mass drive (motor 0.08 kg·m² at 6ω, intermediate gear 0.5 kg·m² at 2ω, crankshaft 12 kg·m²; shafts "
        "2000 N·m/rad at 6ω and 40 000 N·m/rad at ω) and its scheme reduced to the crankshaft, English notation."),
