@@ -462,9 +462,10 @@ def _tangents(cam: CamDesign, s: np.ndarray, s1: np.ndarray, t: np.ndarray, P: A
 
 
 def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, limits: list[float], title: str,
-              label: str, unit: str, symbol: str, name: str) -> tuple[list[Element], Scale]:
+              label: str, unit: str, symbol: str, name: str) -> tuple[list[Element], list[Scale]]:
     """A quantity over the cycle (values at 0°, 0.25°, … 360°) with level lines at ``limits``, filling the box;
-    its own φ scale ``μ′_φ`` (the motion diagrams' μ_φ needs more width than a graph beside them has)."""
+    its own φ scale ``μ′_φ`` (the motion diagrams' μ_φ needs more width than a graph beside them has). The
+    scales returned: the quantity's, then μ′_φ."""
     els, top = heading(box, title, occ, name)
     phi = np.linspace(0.0, 2 * math.pi, len(values))
     x0, _, x1, y1 = box
@@ -480,10 +481,10 @@ def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, lim
     y_bot = band.y0 - mu_y.to_mm(lo)
     body += [_phi_axis(band, y_bot + 6.5, nt, name), _value_axis(band, nt, label, name)]
     register_ink(occ, *body)
-    return els + body, mu_y
+    return els + body, [mu_y, mu_phi]
 
 
-def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], Scale]:
+def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:
     """The pressure angle α(φ) over the cycle, with ±[α] of the rise as level lines (and [α]_return when it
     is within the curve's range)."""
     p = cam.problem
@@ -495,7 +496,7 @@ def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple
                      label=f"{nt.sym('cam.alpha')}, °", unit="°", symbol="μ_α", name="alpha")
 
 
-def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], Scale]:
+def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:
     """The flat-faced cam's radius of curvature ρ = r_b + s + d²s/dφ² over the cycle, with ρ_min."""
     p = cam.problem
     s, _, s2, _ = p.motion(np.linspace(0.0, 360.0, 1441))

@@ -58,8 +58,8 @@ def a4_figure(cam: CamDesign, nt: Notation, title: str, draw: Draw, *, orientati
     block = TitleBlock(title, problem, ("μ",) * 2, headings=head, size_mm=size)
     els, scales = draw(page.with_(title_block=block).content_box(), FastOccupancy(), nt)
     captions = [s.caption(nt) for s in scales]
-    more = tuple(("", "; ".join(captions[i:i + 2])) for i in range(2, len(captions), 2))    # a row per two more
-    page = page.with_(title_block=replace(block, scales=tuple(captions[:2]), person=more))
+    more = tuple(";  ".join(captions[i:i + 2]) for i in range(2, len(captions), 2))    # a row per two more
+    page = page.with_(title_block=replace(block, scales=tuple(captions[:2]), scale_rows=more))
     return Scene(page, tuple(els), title=title, notation=nt.code, name=name, extra_scales=tuple(scales))
 
 
@@ -117,8 +117,7 @@ def cam_pressure_angle(cam: CamDesign | CamProblem, *, notation: Any = "en",
     flat = cam.problem.contact == "flat"
 
     def draw(box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:
-        els, mu = (rho_graph if flat else alpha_graph)(cam, box, occ, nt)
-        return els, [mu]
+        return (rho_graph if flat else alpha_graph)(cam, box, occ, nt)
     return a4_figure(cam, nt, nt.word("cam.rho_graph" if flat else "cam.alpha_graph"), draw, name=name)
 
 

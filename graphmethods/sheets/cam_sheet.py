@@ -359,7 +359,7 @@ def cam_sheet(cam: CamDesign | CamProblem, *, notation: Any = "en", n_div: int =
     occ.add_box((x0, y0, x0 + 200.0, y0 + TITLE_MM + 1.5))
     motion, m_scales, con = motion_column(cam, bx.motion, occ, nt, n_div=n_div)
     if cam.problem.contact == "flat":
-        mid, mid_scale = rho_graph(cam, bx.combined, occ, nt)
+        mid, mid_scales = rho_graph(cam, bx.combined, occ, nt)
         extra: list[Element] = positions_table(cam, bx.alpha, nt, n_div)
         more: list[Scale] = []
     else:
@@ -367,11 +367,11 @@ def cam_sheet(cam: CamDesign | CamProblem, *, notation: Any = "en", n_div: int =
             mid, mid_scale = rocker_diagram(cam, bx.combined, occ, nt, phi_k_deg=np.degrees(nodes(cam, n_div)[:-1]))
         else:
             mid, mid_scale = combined_diagram(cam, bx.combined, occ, nt)
-        extra, alpha_scale = alpha_graph(cam, bx.alpha, occ, nt)
-        more = [alpha_scale]
+        mid_scales = [mid_scale]
+        extra, more = alpha_graph(cam, bx.alpha, occ, nt)
     prof, mu_l = profile_panel(cam, bx.profile, occ, nt, n_div=n_div)
     rows = results_rows(cam, nt, con)
-    scales = [mu_l, *m_scales, mid_scale, *more]
+    scales = [mu_l, *m_scales, *mid_scales, *more]
     cap = [(nt.word("scales") if k == 0 else "", s.caption(nt)) for k, s in enumerate(scales)]
     table = fitted_table(bx.table[:2], ((nt.word("cam.results"), ""), *rows, *cap), bx.table, align="ll",
                          name="results")
