@@ -30,7 +30,7 @@ from graphmethods.errors import InputError
 from graphmethods.kinematics.cam import CamDesign
 from graphmethods.scene import Axis, Line, Point, Polyline, Region, Scale, Table, Text, Vector, pick_scale
 from graphmethods.scene.elements import Element, make_label
-from graphmethods.scene.notation import Notation, get as get_notation
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.scene.scale import pick_angle_scale
 from graphmethods.sheets.calculus import CHORD, RAY

@@ -35,6 +35,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from graphmethods.kinematics.cam import CamDesign
+from graphmethods.kinematics.cam.design import smallest_admissible
 from graphmethods.kinematics.cam.extrema import maximize
 from graphmethods.kinematics.cam.geometry import psi_0
 from graphmethods.scene import Line, Point, Polyline, Region, Scale, Text, pick_scale
@@ -130,18 +131,10 @@ def boundary_centre(cam: CamDesign) -> Array:
     def delta_of(r0: float) -> float:                # the turn of O that gives |O B0| = r0
         return rk.psi0 - psi_0(r0, p.arm, p.pivot)
 
-    grid = np.linspace(lo_r, hi_r, 66)[1:-1]
-    ok = [r for r in grid if psi_0(r, p.arm, p.pivot) + p.stroke < math.pi
-          and excess(cam, rk, centre_at(rk, delta_of(r))) <= 0.0]
-    hi = ok[0]
-    i = int(np.searchsorted(grid, hi))
-    lo = grid[i - 1] if i > 0 else lo_r
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid in (lo, hi):
-            break
-        inside = excess(cam, rk, centre_at(rk, delta_of(mid))) <= 0.0
-        lo, hi = (lo, mid) if inside else (mid, hi)
+    def inside(r0: float) -> bool:
+        return psi_0(r0, p.arm, p.pivot) + p.stroke < math.pi and excess(cam, rk, centre_at(rk, delta_of(r0))) <= 0.0
+    hi = smallest_admissible(lo_r, hi_r, inside)
+    assert hi is not None                            # the designed centre itself is admissible
     O = centre_at(rk, delta_of(hi))
     assert abs(float(np.hypot(*(O - B0))) - hi) < 1e-9 * max(hi, 1.0)
     return O
@@ -212,18 +205,18 @@ def zone_polygon(cam: CamDesign, rk: Rocker, box: tuple[float, float, float, flo
     p = cam.problem
     lim = _limits(cam)
     far = 4.0 * max(box[2] - box[0], box[3] - box[1])
-    zone = sbox(*box)
+    zone: Any = sbox(*box)
     for ph in p.phases:
         if ph.kind not in lim:
             continue
         x = np.linspace(0.0, 1.0, 121)
         s, s1, _, _ = ph.values(x)
         K, u = rk.K(s, s1), rk.u(s)
-        t = lim[ph.kind]
+        c, sn = math.cos(lim[ph.kind]), math.sin(lim[ph.kind])
         for k in range(len(x)):
-            back = -u[k]
-            left = np.array([math.cos(t) * back[0] - math.sin(t) * back[1], math.sin(t) * back[0] + math.cos(t) * back[1]])
-            right = np.array([math.cos(t) * back[0] + math.sin(t) * back[1], -math.sin(t) * back[0] + math.cos(t) * back[1]])
+            bx, by = -u[k]                                   # the angle's axis, behind K
+            left = np.array([c * bx - sn * by, sn * bx + c * by])
+            right = np.array([c * bx + sn * by, -sn * bx + c * by])
             zone = zone.intersection(Polygon([tuple(K[k]), tuple(K[k] + far * left), tuple(K[k] + far * right)]))
             if zone.is_empty:
                 return None
