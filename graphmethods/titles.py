@@ -20,11 +20,14 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import TypeVar
 
 from graphmethods.errors import InputError
 from graphmethods.units import check_text
 
 LANGUAGES = ("en", "ru", "zh")
+
+K = TypeVar("K")
 
 
 @dataclass(frozen=True)
@@ -148,6 +151,16 @@ class Title:
 
     def __bool__(self) -> bool:
         return bool(self.default)
+
+
+def titles(table: Mapping[K, tuple[str, str, str]]) -> dict[K, Title]:
+    """A table of titles written one row per key, ``key: (en, ru, zh)``, as Titles by key.
+
+    >>> titles({"W3": ("Step resisting moment: flywheel", "Ступенчатый момент сопротивления: маховик",
+    ...                "阶梯形阻抗力矩下的飞轮转动惯量")})["W3"].title_in("ru")
+    'Ступенчатый момент сопротивления: маховик'
+    """
+    return {key: Title.of(dict(zip(LANGUAGES, texts))) for key, texts in table.items()}
 
 
 def text_in(value: object, lang: str | None) -> str:

@@ -150,3 +150,75 @@ def test_forces_sheet_bad_input_is_one_line_exit_2_and_no_file(run, tmp_path, mo
     rc, _, err = run("press", *argv)
     assert rc == 2 and words in err and len(err.strip().splitlines()) == 1
     assert list(tmp_path.iterdir()) == []
+
+
+# ----------------------------------------------------------------------------- issue 26: the sheet as drawn
+
+def _texts(scene):
+    return [c.data.text for c in record(scene).calls if c.kind == "text"]
+
+
+@pytest.mark.parametrize("name", ["press", "shaper", "two-slider", "triad-six-bar"])
+def test_every_plan_has_its_own_panel_and_the_reactions_it_prints_are_the_json_s(name, capsys):
+    """One truth: each group's plan prints the reactions it finds (length × its own μ_F = |R|) and every value
+    equals ``forces --position 3 --json``'s reaction (round-off below 10⁻⁹ of the largest printed as 0)."""
+    import json
+
+    from graphmethods.sheets.force_sheet_plans import plan_sides
+
+    case = builtin.case(name)
+    fa = case_forces(case, m=12)
+    s = force_analysis_sheet(case, position=3, notation="en")
+    assert cli.main(["forces", name, "--position", "3", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    R = {k: math.hypot(*v) for k, v in data["reactions"].items()}             # [R_x, R_y], N
+    plans = s.element("plans")
+    names = [e.name for e in plans.elements]
+    assert names == [f"{kind}-{j}" for j in range(len(fa.plans)) for kind in ("group", "plan")]
+    big = max(abs(r.R[3]) for r in fa.reactions.values())
+    found = [t for e in _walk(plans.elements) if e.name.startswith("found-") for t in [e.text]]
+    assert found
+    for line in found:
+        label, rest = line.split(" = ", 1)
+        mm, mu, value = rest.split(" · ")[0], rest.split(" · ")[1].split(" = ")[0], rest.split(" = ")[-1]
+        value_N = _number(value.split()[0])
+        key = "R_" + label.split("_")[-1].strip("{}")
+        key = key if key in fa.reactions else "R_" + key[2:][::-1]
+        exact = float(abs(fa.reactions[key].R[3]))
+        assert value_N == pytest.approx(exact if exact > 1e-9 * big else 0.0, rel=1e-4, abs=1e-9 * big)
+        assert _number(mm.split()[0]) * _number(mu.split()[0]) == pytest.approx(value_N, rel=2e-3, abs=1e-6 * big)
+        assert value_N == pytest.approx(R[key], rel=1e-4, abs=1e-9 * big)
+    # the crank's plan is a closed polygon of R_21, F_b (⊥ OA, F_b·l_OA = M_b) and R′_01: not one line
+    sides = plan_sides(fa, len(fa.plans) - 1, 3)
+    assert abs(sum(F for _, F, _ in sides)) <= 1e-9 * big
+    drawn = [F for _, F, _ in sides if abs(F) > 1e-9 * big]
+    assert len(drawn) >= 3 and any(abs((a * b.conjugate()).imag) > 1e-6 * abs(a) * abs(b) for a in drawn for b in drawn)
+    mo = fa.motion
+    OA = complex(mo.z[mo.linkage.crank.pin][3]) - complex(mo.z[mo.linkage.crank.centre][3])
+    F_b = {lbl: F for lbl, F, _ in sides}["F_b"]
+    assert abs((OA.conjugate() * F_b).real) <= 1e-9 * abs(OA) * abs(F_b)
+    assert (OA.conjugate() * F_b).imag == pytest.approx(float(fa.M_balance[3]), rel=1e-9)
+
+
+def test_round_off_prints_as_zero_and_the_balancing_graph_is_the_plans_m_b():
+    from graphmethods.sheets.engine.quality import measure
+
+    for name in ("two-slider", "scotch-yoke"):
+        s = force_analysis_sheet(builtin.case(name), position=3, notation="ru")
+        assert measure(s).noise == ()
+    case = builtin.case("shaper")
+    fa = case_forces(case, m=12)
+    s = force_analysis_sheet(case, position=3, notation="en")
+    graph = s.element("balancing")
+    ordinates = [e for e in _walk(graph.elements) if e.name.startswith("ordinate-") and e.name[9:].isdigit()]
+    assert len(ordinates) == 13
+    mark = next(e for e in _walk(graph.elements) if e.name == "mark-value")
+    assert _number(mark.text.split(" = ")[1].split()[0]) == pytest.approx(float(fa.M_balance[3]), rel=1e-6)
+
+
+def test_a_ternary_link_is_drawn_as_a_hatched_plate_on_the_scheme_and_its_group():
+    s = force_analysis_sheet(builtin.case("triad-six-bar"), position=3, notation="zh")
+    plates = [e.name for e in _walk(s.elements) if e.name.startswith("plate-")]
+    assert plates.count("plate-BCD") == 2 and plates.count("plate-BCD-hatch") == 2
+    four_bar = force_analysis_sheet(builtin.case("four-bar"), position=3)
+    assert not any(e.name.startswith("plate-") for e in _walk(four_bar.elements))

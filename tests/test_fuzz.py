@@ -492,7 +492,7 @@ def test_fuzz_long_api(dW, delta, n, J_e, J):
 # ----------------------------------------------------------------------------- issue 31: the new surfaces
 
 def _drawing_problem(name: str) -> str:
-    return {"w1": "W1", "press": "press", "slotted": "slotted-lever"}[name.split("_")[0]]
+    return {"w1": "W1", "press": "press", "slotted": "slotted-lever", "shaper": "shaper-cam"}[name.split("_")[0]]
 
 
 SHIPPED_SVG = sorted((DATA / "drawings").glob("*.svg"))

@@ -40,6 +40,55 @@ def test_the_sheet_holds_the_scheme_the_velocity_plans_the_chosen_acceleration_p
     assert any(abs(L - a_A / mu_a.per_mm) < 1e-6 for L in lengths)
 
 
+def _cells(scene):
+    """Every cell of every table drawn in a scene (an inset's tables included), as plain text."""
+    from graphmethods.scene import Table, markup
+
+    out = []
+
+    def walk(els):
+        for e in els:
+            if isinstance(e, Table):
+                out.extend(markup.plain(c) for r in e.rows for c in r)
+            walk(getattr(e, "elements", ()))
+    walk(scene.elements)
+    return out
+
+
+def test_without_a_slider_the_tables_of_velocities_and_accelerations_fill_the_lower_right_and_say_what_json_says(
+        run):
+    """A four-bar has no slider diagrams: the lower row's right part holds the tables per position, and their
+    numbers are the command line's (``kinematics --json``), rounded as printed."""
+    import json
+
+    s = kinematic_analysis_sheet(builtin.case("four-bar"))
+    names = [e.name for e in s.elements]
+    assert names[-2:] == ["velocity-table", "acceleration-table"]
+    top, bottom = s.element("velocity-table").bbox(), s.element("acceleration-table").bbox()
+    assert top[3] <= bottom[1]                       # one above the other
+    assert max(bottom[2], top[2]) <= s.page.inner_box()[2]
+    rc, text, _ = run("four-bar", "--positions", "12", "--json")
+    out = json.loads(text)
+    rows = out["positions"] if isinstance(out, dict) else out
+    cells = set(_cells(s.element("velocity-table"))) | set(_cells(s.element("acceleration-table")))
+    for k in (1, 5, 9):
+        v_B = float(np.hypot(*rows[k]["points"]["B"]["v"]))
+        a_B = float(np.hypot(*rows[k]["points"]["B"]["a"]))
+        assert f"{v_B:.3f}" in cells and f"{a_B:.3f}" in cells, (k, v_B, a_B)
+
+
+def test_a_normal_acceleration_names_the_length_of_its_own_points():
+    """a^n_BA = ω₂²·l_AB, on a triad too (it printed l_K3, the group's point, for every component)."""
+    from graphmethods.scene import markup
+    from graphmethods.sheets.acceleration import acceleration_plan
+
+    s = acceleration_plan(builtin.case("triad-six-bar"), 2)
+    texts = [markup.plain(e.text) for e in s.elements if hasattr(e, "text")]
+    normals = [t for line in texts for t in line.split(";  ") if t.startswith(("anBA", "anCE"))]
+    assert normals and all(("lAB" in t) or ("lEC" in t) for t in normals), normals
+    assert not any("= ω2²·lK3" in t for t in texts)
+
+
 def test_the_default_positions_are_one_of_the_working_and_one_of_the_return_stroke():
     for name in ("press", "shaper", "slotting-machine", "whitworth"):
         case = builtin.case(name)

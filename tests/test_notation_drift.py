@@ -60,3 +60,28 @@ def test_chinese_text_takes_full_width_punctuation(name: str) -> None:
     texts = _texts(figure(name).build())
     ascii_after_cjk = [t for t in texts if re.search(rf"{CJK}[,:;] ?", t)]
     assert not ascii_after_cjk, ascii_after_cjk
+
+
+@pytest.mark.parametrize("lang", ["ru", "zh"])
+@pytest.mark.parametrize(("problem", "answers"), [("W1", "w1_mistakes.toml"), ("W3", "w3_mistakes.toml"),
+                                                  ("press", "press_wittenbauer_mistakes.toml")])
+@pytest.mark.parametrize("style", ["text", "markdown"])
+def test_check_reports_write_subscripts_and_the_decimal_sign_of_their_language(problem, answers, lang, style) -> None:
+    """A check report in ru/zh writes ω_max as the en report does (never a flat ωmax, Jм, ωср) and its numbers with
+    the language's decimal sign (a comma in ru)."""
+    from graphmethods.sheets.check import check
+
+    report = check(problem, _answers(answers))
+    text = report.to_text(lang) if style == "text" else report.to_markdown(lang)
+    assert not re.search(r"(ω|ψ|J|W|A)(max|min|ср|м|изб|m|F)\b", text), text
+    if lang == "ru":
+        assert not re.search(r"\d\.\d", text), "a decimal point in a Russian report"
+        assert re.search(r"\d,\d", text)
+
+
+def _answers(name: str):
+    import pathlib
+
+    import graphmethods
+
+    return pathlib.Path(graphmethods.__file__).parent / "problems" / "data" / "answers" / name

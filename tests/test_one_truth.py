@@ -76,3 +76,34 @@ def test_the_drawn_M_r_keeps_the_loads_jumps_and_balances_to_the_work() -> None:
     assert left[0] == 0.0 and right[0] > 100.0          # the load switches on: a jump up
     assert left[1] > 100.0 and right[1] == 0.0          # and off: a jump down
     assert M_d.mean() == pytest.approx(study.M_d, rel=1e-4)
+
+
+@pytest.mark.parametrize("name", ["press", "engine", "two-slider", "shaper"])
+def test_the_slides_and_the_json_print_the_a1_sheets_tan_psi_kl_and_J_F(name: str) -> None:
+    """The A1 sheet, the Wittenbauer slides (and so the HTML stepper) and ``study --json``'s ``"sheet"`` give the
+    same tan ψ_max, tan ψ_min, kl and J_F: the slides draw at the sheet's scales (or both c times larger)."""
+    from graphmethods.sheets.dynamic_analysis_sheet import sheet_construction
+
+    study = Study(builtin.case(name), positions=12)
+    c = sheet_construction(study)
+    sheet = " ".join(_texts(dynamic_analysis_sheet(study, page="A1", notation="en")))
+    bu = steps.build(name, "wittenbauer", notation="en")
+    slides = " ".join(str(s.caption) for s in bu.steps)
+    for key in ("tan_psi_max", "tan_psi_min"):
+        printed = _printed(c[key], "en")
+        assert f"= {printed}," in sheet and f"= {printed}," in slides, key
+    kl = _printed(c["kl_mm"], "en")
+    assert f"kl = {kl} mm" in sheet and (f"kl = {kl} mm" in slides or f"kl = {kl} mm there" in slides)
+    assert f"= {_printed(c['J_F'], 'en')} kg·m²" in slides
+    assert c["J_F"] == pytest.approx(_json(name)["J_F_wittenbauer"], rel=1e-9)
+
+
+def test_study_json_carries_the_sheets_construction(capsys) -> None:
+    import json
+
+    from graphmethods.cli import main
+    from graphmethods.sheets.dynamic_analysis_sheet import sheet_construction
+
+    assert main(["study", "press", "--json", "--no-exact"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["sheet"] == pytest.approx(sheet_construction(Study(builtin.case("press"), positions=12)))

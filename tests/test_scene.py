@@ -26,17 +26,18 @@ from graphmethods.scene import (
     Text,
     TitleBlock,
     Vector,
+    axis_ticks,
     format_mm,
     format_value,
     in_language,
     markup,
-    nice_ticks,
     notation,
     pi_ticks,
     pick_angle_scale,
     pick_scale,
 )
 from graphmethods.scene.primitives import Circle, Group, Label, Path, Polygon, walk
+from graphmethods.scene.ticks import nice_ticks
 
 # ----------------------------------------------------------------------------- numbers
 
@@ -251,8 +252,9 @@ def test_axis_ticks_sit_where_the_scale_puts_them():
 
 def test_nice_and_pi_ticks():
     mu = Scale("μ_M", "N·m", 0.5)
-    ticks = nice_ticks(-60, 20, mu, min_gap_mm=8)
+    ticks = axis_ticks(-60, 20, mu, min_gap_mm=8)
     assert ticks[0] == -60 and ticks[-1] == 20 and all(mu.to_mm(b - a) >= 8 for a, b in zip(ticks, ticks[1:]))
+    assert ticks == nice_ticks(-60, 20, 20)         # one rule: the engine's (MaxNLocator's), 160 mm / 8 mm intervals
     values, labels = pi_ticks(2 * math.pi, Scale("μ_φ", "rad", 0.025), min_gap_mm=40)
     assert labels == ("0", "π/2", "π", "3π/2", "2π") and values[-1] == pytest.approx(2 * math.pi)
 

@@ -297,7 +297,8 @@ def test_the_triad_forces_satisfy_the_power_balance_and_the_lever():
 
 def test_every_link_of_the_triad_is_in_equilibrium():
     """The six reactions found together hold each of the four links (forces and moments), to rounding."""
-    from graphmethods.dynamics.forces.base import moment_about, on_link, resultant
+    from graphmethods.dynamics.forces.base import on_link, resultant
+    from graphmethods.dynamics.forces.statics import moment_about
 
     mo, fa = _forces()
     for link in ("2", "3", "4", "5"):

@@ -95,3 +95,14 @@ def add_output(p: argparse.ArgumentParser, *aliases: str, metavar: str, help: st
     """
     old = f" (older name{'s' if len(aliases) > 1 else ''} {', '.join(aliases)} still accepted)" if aliases else ""
     p.add_argument("-o", "--out", *aliases, dest=dest, default=None, metavar=metavar, help=help + old)
+
+
+def add_figure_options(p: argparse.ArgumentParser, what: str, format_help: str | None = None) -> None:
+    """``--format``, ``--lang`` and ``--force`` of a command that draws one ``what`` ("sheet", "figure").
+
+    ``format_help`` replaces the usual help of ``--format`` (the file format of ``-o -``).
+    """
+    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
+                   help=format_help or f"file format of the {what} (default: the file name's suffix; needed with -o -)")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help=f"notation of the {what} (default en)")
+    p.add_argument("--force", action="store_true", help=f"overwrite an existing {what} file")

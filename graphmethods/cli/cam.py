@@ -30,7 +30,7 @@ from graphmethods.units import MAX_POSITIONS, count, json_text
 
 
 def add_parser(sub) -> None:
-    from graphmethods.cli._parser import integer, numbers
+    from graphmethods.cli._parser import add_figure_options, integer, numbers
 
     p = sub.add_parser(
         "cam", help="cam mechanism: base radius from the pressure angle, motion, profile, the A1 cam sheet",
@@ -51,11 +51,8 @@ def add_parser(sub) -> None:
     p.add_argument("--figures", metavar="DIR", default=None,
                    help="also write the A4 figures (motion diagrams, combined diagram, pressure angle, profile by "
                         "inversion) into DIR (created if missing)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
-                   help="file format of the sheet (default: the file name's suffix; needed with -o -) and of the "
-                        "figures (default svg)")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the sheet (default en)")
-    p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
+    add_figure_options(p, "sheet and the figures", format_help="file format of the sheet (default: the file name's "
+                       "suffix; needed with -o -) and of the figures (default svg)")
     p.set_defaults(func=run)
 
 

@@ -19,6 +19,8 @@ from graphmethods.units import check_text, json_text
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import add_figure_options
+
     p = sub.add_parser("drive", help="a drive of several masses reduced to one shaft: J', c', natural frequencies",
                        description="Reduce a chain of masses and elastic shafts (a motor, gears, the machine) to one "
                                    "shaft by the squares of the speed ratios, and find its natural frequencies.",
@@ -34,10 +36,7 @@ def add_parser(sub) -> None:
     p.add_argument("-o", "--out", "--figure", dest="figure", default=None, metavar="FILE.svg|.pdf|.png|.dxf|-",
                    help="also draw the reduced scheme; - writes it to standard output in --format, and nothing else "
                         "(older name --figure still accepted)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
-                   help="file format of the figure (default: the file name's suffix; needed with -o -)")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figure (default en)")
-    p.add_argument("--force", action="store_true", help="overwrite an existing figure file")
+    add_figure_options(p, "figure")
     p.set_defaults(func=run)
 
 

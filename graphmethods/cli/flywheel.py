@@ -51,6 +51,8 @@ def parse_list(text: str, name: str) -> list[float]:
 
 
 def add_parser(sub) -> None:
+    from graphmethods.cli._parser import add_figure_options
+
     p = sub.add_parser(
         "flywheel",
         help="excess-work table, ΔW_max and the flywheel (approximate method)",
@@ -97,10 +99,8 @@ def add_parser(sub) -> None:
     p.add_argument("--figure", default=None, metavar="FILE.svg|.pdf|.png|.dxf|-",
                    help="with --rim or --disc: draw the flywheel(s) to scale, dimensioned, with the table (- for "
                         "standard output in --format)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
-                   help="file format of the figure that goes to standard output (--figure - or --hyperbola -)")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="notation of the figure (default en)")
-    p.add_argument("--force", action="store_true", help="overwrite an existing figure file")
+    add_figure_options(p, "figure", format_help="file format of the figure that goes to standard output "
+                                                "(--figure - or --hyperbola -)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.set_defaults(func=run)
 

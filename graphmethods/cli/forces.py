@@ -31,15 +31,14 @@ from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, number
-    from graphmethods.cli.kinematics import add_speed, builtin_names
+    from graphmethods.cli.kinematics import add_linkage_case, add_speed
 
     p = sub.add_parser(
         "forces", help="force (kinetostatic) analysis in one position: reactions and the balancing moment",
         description="The force analysis of a linkage problem in one position: inertia forces and moments, the "
                     "applied loads, the reaction in every pair group by group, the balancing moment on the crank "
                     "from the force plans, checked by Zhukovsky's lever and the power balance.")
-    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
-                   "linkage: " + builtin_names())
+    add_linkage_case(p)
     where = p.add_mutually_exclusive_group(required=True)
     where.add_argument("--phi-deg", type=number, default=None, metavar="A",
                        help="the crank angle, degrees from +x, counterclockwise (one angle: one force analysis)")

@@ -49,6 +49,12 @@ def builtin_names() -> str:
     return ", ".join(LINKAGES)
 
 
+def add_linkage_case(p) -> None:
+    """The positional CASE of a linkage command: a problem file, ``-`` (standard input) or a built-in name."""
+    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
+                   "linkage: " + builtin_names())
+
+
 def add_speed(p) -> None:
     """``--n`` or ``--omega``: the crank's mean speed, the same two names on every command."""
     from graphmethods.cli._parser import number
@@ -81,8 +87,7 @@ def add_parser(sub) -> None:
         "kinematics", help="positions, velocities and accelerations of a linkage (plans, figures, the A1 sheet)",
         description="Positions 0…M of a linkage (a problem file, or a built-in linkage: " + builtin_names()
                     + ") and its velocities and accelerations at the file's mean crank speed, from the plans.")
-    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
-                   "linkage: " + builtin_names())
+    add_linkage_case(p)
     p.add_argument("--positions", "-m", type=integer, default=12, metavar="M",
                    help="number of equal crank steps per turn (default 12; positions 0…M)")
     p.add_argument("--position", type=integer, default=None, metavar="K",

@@ -19,7 +19,7 @@ from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 def add_parser(sub) -> None:
     from graphmethods.cli._parser import integer, numbers
-    from graphmethods.cli.kinematics import add_speed, builtin_names
+    from graphmethods.cli.kinematics import add_linkage_case, add_speed, builtin_names
 
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
                        description="Solve a linkage problem (a problem file, or a built-in linkage: "
@@ -28,8 +28,7 @@ def add_parser(sub) -> None:
                        "M positions, the exact J_F, and where ω_max and ω_min occur; with --phi-deg, J_e, M_e, the "
                        "powers, ω and ε at those crank angles. With -o/--sheet, also draw the dynamic-analysis sheet "
                        "(M_e, ΔT, J_e turned 90°, the energy–mass diagram, the result).")
-    p.add_argument("case", metavar="CASE", help="problem file (.json; - reads it from standard input) or built-in "
-                   "linkage: " + builtin_names())
+    add_linkage_case(p)
     p.add_argument("--positions", "-m", type=integer, default=12, metavar="M", help="number of positions (default 12)")
     p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
                    help="also give J_e, dJ_e/dφ, M_d, M_r, M_e, ω, ε and the powers N_d = M_d·ω, N_r = M_r·ω of the "
@@ -116,6 +115,10 @@ def run(args) -> int:
     study = Study(case, positions=args.positions)
     data = _sheet_bytes(study, sheet, page=args.page, lang=args.lang, args=args) if sheet is not None else None
     out = study.summary(exact=not args.no_exact)
+    if out.get("flywheel_needed", True):     # the A1 sheet's construction: the numbers it, the slides and
+        from graphmethods.sheets.dynamic_analysis_sheet import sheet_construction  # the stepper print
+
+        out["sheet"] = sheet_construction(study)
     if args.eta is not None:
         from graphmethods.dynamics.power import efficiency_series
         from graphmethods.units import parse_number
@@ -146,7 +149,7 @@ def _print_text(out: dict, stream) -> None:
     rows = out.pop("at_angles", None)
     width = max(map(len, out))
     for key, value in out.items():
-        if key == "power":
+        if key in ("power", "sheet"):
             value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
         elif key == "translating":
             value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "

@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from graphmethods.sheets.worksheets import Worksheet
 
-KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer", "acceleration-plan")
+KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer", "acceleration-plan", "cam")
 
 
 class Progress:
@@ -102,7 +102,7 @@ def add_parser(sub) -> None:
                        "--out class-7")
     p.add_argument("kind", choices=KINDS, help="indicator (W1 style), step-moment (W3 style), velocity-plan "
                    "(slider-crank in one position), wittenbauer (slider-crank press), acceleration-plan "
-                   "(slider-crank or slotted lever in one position)")
+                   "(slider-crank or slotted lever in one position), cam (disc cam: base radius, profile by inversion)")
     p.add_argument("--variants", type=integer, default=1, metavar="N", help="number of variants (default 1)")
     p.add_argument("--seed", type=integer, default=0, metavar="S", help="seed; the same seed gives the same variants")
     p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help="language and notation (default en)")

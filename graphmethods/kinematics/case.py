@@ -217,6 +217,18 @@ _COMMON_TAIL = {
 #: its default (REQUIRED: none) and its meaning
 Spec = tuple[str | tuple[str, ...], object, str]
 
+
+def _link_mass(i: str, link: str) -> dict[str, Spec]:
+    """The keys m<i> (kg) and J_S<i> (kg·m², about the centre of mass S<i>) of link i, ``link`` naming it."""
+    return {f"m{i}": ("nonneg", REQUIRED, f"{link} mass, kg"),
+            f"J_S{i}": ("nonneg", REQUIRED, f"{link} moment of inertia about S{i}, kg·m²")}
+
+
+def _centre(point: str, i: str, link: str) -> dict[str, Spec]:
+    """The key l_<point>S<i>: where link i's centre of mass S<i> lies, measured from ``point`` along it, m."""
+    return {f"l_{point}S{i}": ("nonneg", REQUIRED, f"distance from {point} to the {link}'s centre of mass S{i}, m")}
+
+
 #: the key groups the kinds share (the slotted lever and the shaper: the same crank, slot and rocker)
 _J1_O1: dict[str, Spec] = {
     "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O1, kg·m²"),
@@ -237,12 +249,11 @@ _SLOTTED: dict[str, Spec] = {
 }
 _ROCKER_PLACE: dict[str, Spec] = {
     "theta_O3_deg": ("real", -90.0, "direction of O1->O3 from +x, degrees"),
-    "l_O3S3": ("nonneg", REQUIRED, "distance from O3 to the rocker's centre of mass S3, m"),
+    **_centre("O3", "3", "rocker"),
 }
 _BLOCK_ROCKER_MASS: dict[str, Spec] = {
     "m2": ("nonneg", 0.0, "block mass (at A), kg"),
-    "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
-    "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+    **_link_mass("3", "rocker"),
 }
 _SLOW_OR_FAST_SWING: dict[str, Spec] = {"working_stroke": (("slow", "fast"), "slow", "which swing works")}
 
@@ -251,9 +262,8 @@ SPECS: dict[str, dict[str, Spec]] = {
         "r": ("positive", REQUIRED, "crank O-A, m"),
         "l": ("positive", REQUIRED, "connecting rod A-B, m"),
         "e": ("real", REQUIRED, "offset: the slider's guide is the line y = e, m"),
-        "l_AS2": ("nonneg", REQUIRED, "distance from A to the rod's centre of mass S2, m"),
-        "m2": ("nonneg", REQUIRED, "rod mass, kg"),
-        "J_S2": ("nonneg", REQUIRED, "rod moment of inertia about S2, kg·m²"),
+        **_centre("A", "2", "rod"),
+        **_link_mass("2", "rod"),
         "m3": ("nonneg", REQUIRED, "slider mass, kg"),
         "J1": ("nonneg", REQUIRED, "crank and everything turning with it, about O, kg·m²"),
         "F0": ("nonneg", REQUIRED, "resisting force on the slider during the working stroke, N"),
@@ -268,12 +278,10 @@ SPECS: dict[str, dict[str, Spec]] = {
         "l3": ("positive", REQUIRED, "coupler AB, m"),
         "l4": ("positive", REQUIRED, "rocker O2B, m"),
         "ground_angle_deg": ("real", 0.0, "direction of O1->O2 from +x, degrees"),
-        "l_AS2": ("nonneg", REQUIRED, "distance from A to the coupler's centre of mass S2, m"),
-        "l_O2S3": ("nonneg", REQUIRED, "distance from O2 to the rocker's centre of mass S3, m"),
-        "m2": ("nonneg", REQUIRED, "coupler mass, kg"),
-        "J_S2": ("nonneg", REQUIRED, "coupler moment of inertia about S2, kg·m²"),
-        "m3": ("nonneg", REQUIRED, "rocker mass, kg"),
-        "J_S3": ("nonneg", REQUIRED, "rocker moment of inertia about S3, kg·m²"),
+        **_centre("A", "2", "coupler"),
+        **_centre("O2", "3", "rocker"),
+        **_link_mass("2", "coupler"),
+        **_link_mass("3", "rocker"),
         **_J1_O1,
         **_ROCKER_MOMENT,
         "assembly": ("sign", 1, "+1 or -1: the branch of the linkage"),
@@ -294,10 +302,9 @@ SPECS: dict[str, dict[str, Spec]] = {
         "l_BC": ("positive", REQUIRED, "connecting link BC, m"),
         "y_guide": ("real", REQUIRED, "height of the ram's guide line above O1, m"),
         **_ROCKER_PLACE,
-        "l_BS4": ("nonneg", REQUIRED, "distance from B to the link's centre of mass S4, m"),
+        **_centre("B", "4", "link"),
         **_BLOCK_ROCKER_MASS,
-        "m4": ("nonneg", REQUIRED, "link BC mass, kg"),
-        "J_S4": ("nonneg", REQUIRED, "link BC moment of inertia about S4, kg·m²"),
+        **_link_mass("4", "link BC"),
         "m5": ("nonneg", REQUIRED, "ram mass, kg"),
         **_J1_O1,
         "F0": ("nonneg", REQUIRED, "cutting force on the ram during the working stroke, N"),

@@ -200,15 +200,11 @@ def case(spec):
 
 def cam_problem(spec):
     """The cam problem of a ``"kind": "cam"`` file or a built-in cam name, read and checked
-    (:func:`graphmethods.kinematics.cam.read_cam`).
+    (:func:`graphmethods.kinematics.cam.read_cam`); an :class:`~graphmethods.errors.InputError` naming the
+    built-in cam problems when ``spec`` is neither.
 
     >>> cam_problem("shaper-cam").contact
     'roller'
-
-    Raises
-    ------
-    InputError
-        When ``spec`` is neither a file nor a built-in cam problem (the message names them).
     """
     from graphmethods.kinematics.cam import read_cam
 

@@ -18,28 +18,23 @@ import math
 
 from graphmethods.dynamics.moments import MomentCurve
 from graphmethods.problems.cycle import CycleProblem
-from graphmethods.titles import Title
+from graphmethods.titles import titles
 
 PI = math.pi
 
 # The titles of the worked examples by case id, in the terms of each tradition: ТММ (ru), 机械原理 (zh).
-TITLES = {
-    "W1": Title.of({"en": "Diesel generator: energy indicator diagram",
-                    "ru": "Дизель-генератор: векторная диаграмма избыточных работ",
-                    "zh": "柴油发电机组的能量指示图"}),
-    "W2": Title.of({"en": "Engine crankshaft: excess work from a to h",
-                    "ru": "Коленчатый вал двигателя: избыточные работы от a до h",
-                    "zh": "发动机曲轴自 a 至 h 各区间的盈亏功"}),
-    "W3": Title.of({"en": "Step resisting moment: flywheel",
-                    "ru": "Ступенчатый момент сопротивления: маховик",
-                    "zh": "阶梯形阻抗力矩下的飞轮转动惯量"}),
-    "W4-drawing": Title.of({"en": "Kinetic energy graph (lecture drawing, π ≈ 3)",
-                            "ru": "График кинетической энергии (по чертежу лекции, π ≈ 3)",
-                            "zh": "动能曲线（讲义作图，π ≈ 3）"}),
-    "W4-exact": Title.of({"en": "Kinetic energy graph (exact data)",
-                          "ru": "График кинетической энергии (точные данные)",
-                          "zh": "动能曲线（精确数据）"}),
-}
+TITLES = titles({
+    "W1": ("Diesel generator: energy indicator diagram", "Дизель-генератор: векторная диаграмма избыточных работ",
+           "柴油发电机组的能量指示图"),
+    "W2": ("Engine crankshaft: excess work from a to h", "Коленчатый вал двигателя: избыточные работы от a до h",
+           "发动机曲轴自 a 至 h 各区间的盈亏功"),
+    "W3": ("Step resisting moment: flywheel", "Ступенчатый момент сопротивления: маховик",
+           "阶梯形阻抗力矩下的飞轮转动惯量"),
+    "W4-drawing": ("Kinetic energy graph (lecture drawing, π ≈ 3)",
+                   "График кинетической энергии (по чертежу лекции, π ≈ 3)", "动能曲线（讲义作图，π ≈ 3）"),
+    "W4-exact": ("Kinetic energy graph (exact data)", "График кинетической энергии (точные данные)",
+                 "动能曲线（精确数据）"),
+})
 
 
 def w1() -> CycleProblem:

@@ -45,6 +45,7 @@ PT_PER_MM = 72.0 / 25.4
 _KAPPA = 4.0 * (math.sqrt(2.0) - 1.0) / 3.0      # cubic Bézier control distance of a quarter circle
 
 
+@functools.lru_cache(maxsize=256)
 def _rgb(color: str) -> str:
     c = color.strip().lstrip("#")
     if len(c) == 3:

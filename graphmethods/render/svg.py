@@ -178,16 +178,7 @@ def to_bytes(scene: Scene) -> bytes:
 
 
 def save(scene: Scene, path: str | os.PathLike[str], *, overwrite: bool = False) -> pathlib.Path:
-    """Write ``scene`` as SVG to ``path`` atomically; refuses to replace a file unless ``overwrite``.
-
-    Raises
-    ------
-    OutputExistsError
-        If ``path`` exists and ``overwrite`` is false.
-
-    Returns
-    -------
-    pathlib.Path
-        The path written.
-    """
+    """Write ``scene`` as SVG to ``path`` atomically and return the path, as
+    :func:`graphmethods.render.formats.save` does for every format (an existing file is replaced only with
+    ``overwrite``, else :class:`~graphmethods.errors.OutputExistsError`)."""
     return write_atomic(path, to_bytes(scene), overwrite=overwrite)

@@ -38,7 +38,6 @@ from graphmethods.scene.elements import (
     Vector,
     bbox,
     label_bbox,
-    nice_ticks,
     pi_ticks,
 )
 from graphmethods.scene.notation import NOTATIONS, Notation, get as notation, in_language
@@ -47,10 +46,11 @@ from graphmethods.scene.page import PAPER, Page, TitleBlock
 from graphmethods.scene.primitives import Style
 from graphmethods.scene.scale import Scale, pick_angle_scale, pick_scale
 from graphmethods.scene.scene import Scene
+from graphmethods.scene.ticks import axis_ticks
 
 __all__ = [
     "Axis", "Curve", "Dimension", "Element", "Frame", "Group", "Line", "Point", "Polyline", "Region",
-    "ScaleCaptions", "SignMark", "Table", "Text", "Vector", "bbox", "label_bbox", "nice_ticks", "pi_ticks",
+    "ScaleCaptions", "SignMark", "Table", "Text", "Vector", "bbox", "label_bbox", "axis_ticks", "pi_ticks",
     "NOTATIONS", "Notation", "notation", "in_language", "format_mm", "format_value", "PAPER", "Page", "TitleBlock",
     "Style", "Scale", "pick_scale", "pick_angle_scale", "Scene", "markup",
 ]

@@ -22,6 +22,7 @@ a vector of length value/μ, :class:`Axis` ticks values.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -98,13 +99,20 @@ def _pts(points: ArrayLike) -> tuple[XY, ...]:
     return tuple((float(x), float(y)) for x, y in arr)
 
 
+@functools.lru_cache(maxsize=16384)
+def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float]:
+    """(width, ascent, descent) of a label's runs in em (label placement asks for the same texts again and again)."""
+    w = sum((1.0 if s == 0 else markup.SCRIPT_SCALE) * sum(markup.char_em(c) for c in t) for t, s in runs)
+    descent = DESCENT + (markup.SUB_SHIFT if any(s < 0 for _, s in runs) else 0.0)
+    ascent = ASCENT + (0.1 if any(s > 0 for _, s in runs) else 0.0)
+    return w, ascent, descent
+
+
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers."""
-    w = sum((1.0 if s == 0 else markup.SCRIPT_SCALE) * sum(markup.char_em(c) for c in t) for t, s in lab.runs)
+    w, ascent, descent = _runs_extent(lab.runs)
     w *= lab.size_mm
     x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
-    descent = DESCENT + (markup.SUB_SHIFT if any(s < 0 for _, s in lab.runs) else 0.0)
-    ascent = ASCENT + (0.1 if any(s > 0 for _, s in lab.runs) else 0.0)
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
 
@@ -432,7 +440,18 @@ def _arrowhead(tip: XY, direction: np.ndarray, length: float, width: float) -> P
 
 
 @dataclass(frozen=True)
-class Vector(Element):
+class _Segment(Element):
+    """An element drawn between two points ``start`` and ``end`` (mm), checked finite on construction."""
+
+    start: XY
+    end: XY
+
+    def __post_init__(self) -> None:
+        _checked_points(self, "start", "end")
+
+
+@dataclass(frozen=True)
+class Vector(_Segment):
     """An arrow from ``start`` to ``end`` (its tip). Solid when known, dashed when unknown.
 
     Drawn as a shaft (a :class:`Path` from ``start`` to the base of the head) and a
@@ -447,16 +466,11 @@ class Vector(Element):
     (True, (0.0, -20.0))
     """
 
-    start: XY
-    end: XY
     known: bool = True
     head_length_mm: float = 3.0
     head_width_mm: float = 1.1
     style: Style = VECTOR
     name: str = "vector"
-
-    def __post_init__(self) -> None:
-        _checked_points(self, "start", "end")
 
     @classmethod
     def of(cls, start: Sequence[float], *, value: float, scale: Scale, angle_deg: float = 0.0, **kw: Any) -> Vector:
@@ -544,7 +558,7 @@ class Point(Element):
 
 
 @dataclass(frozen=True)
-class Dimension(Element):
+class Dimension(_Segment):
     """A dimension line between two measured points, with its value written beside it.
 
     The line is drawn ``offset_mm`` away from the measured points along the normal
@@ -559,8 +573,6 @@ class Dimension(Element):
     ((5.0, 50.0), (5.0, 10.0), 40.0)
     """
 
-    start: XY
-    end: XY
     text: str = ""
     offset_mm: float = 0.0
     size_mm: float = 3.5
@@ -568,7 +580,7 @@ class Dimension(Element):
     name: str = "dimension"
 
     def __post_init__(self) -> None:
-        _checked_points(self, "start", "end")
+        super().__post_init__()
         _letter(self)
 
     def _frame(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64],
@@ -630,28 +642,6 @@ class Dimension(Element):
 
 
 # --------------------------------------------------------------------------- axes
-
-def nice_ticks(v_min: float, v_max: float, scale: Scale, *, min_gap_mm: float = 8.0) -> tuple[float, ...]:
-    """Tick values: multiples of a convenient step (1, 2, 2.5, 5 × 10^k) at least ``min_gap_mm`` apart.
-
-    >>> nice_ticks(-60, 20, Scale("μ_M", "N·m", 0.5))
-    (-60.0, -55.0, -50.0, -45.0, -40.0, -35.0, -30.0, -25.0, -20.0, -15.0, -10.0, -5.0, 0.0, 5.0, 10.0, 15.0, 20.0)
-    """
-    need = scale.to_value(min_gap_mm)
-    k = math.floor(math.log10(need))
-    step: float | None = None
-    for e in (k, k + 1):
-        for m in (1.0, 2.0, 2.5, 5.0):
-            c = float(f"{m!r}e{e}")
-            if c >= need * (1 - 1e-9):
-                step = c
-                break
-        if step is not None:
-            break
-    assert step is not None                    # 5 × 10^(k+1) > 10^k ≥ need
-    i0, i1 = math.ceil(v_min / step - 1e-9), math.floor(v_max / step + 1e-9)
-    return tuple(float(round(i * step, 12)) for i in range(i0, i1 + 1))
-
 
 def pi_ticks(period: float, scale: Scale, *, min_gap_mm: float = 8.0) -> tuple[tuple[float, ...], tuple[str, ...]]:
     """Ticks for an angle axis at multiples of π/12, π/6, π/4, π/2 or π, labelled ``"π/2"``, ``"3π/2"``.
@@ -851,6 +841,16 @@ class Table(Element):
         """Column widths in mm (given, or fitted to the widest text plus padding)."""
         if self.col_widths_mm is not None:
             return tuple(float(w) for w in self.col_widths_mm)
+        lettering = MIN_TEXT_MM.get()              # the widths measured depend on it (text_width_mm)
+        memo = self.__dict__.get("_widths_memo")   # measured once per lettering (each cell asks for them)
+        if memo is not None and memo[0] == lettering:
+            cached: tuple[float, ...] = memo[1]
+            return cached
+        widths = self._fitted_widths()
+        object.__setattr__(self, "_widths_memo", (lettering, widths))
+        return widths
+
+    def _fitted_widths(self) -> tuple[float, ...]:
         ncol = len(self.rows[0])
         widths = []
         for j in range(ncol):
@@ -959,6 +959,6 @@ class Group(Element):
 
 __all__ = [
     "Element", "Text", "Line", "Polyline", "Curve", "Frame", "Region", "SignMark", "Vector", "Point", "Dimension",
-    "Axis", "Table", "ScaleCaptions", "Group", "nice_ticks", "pi_ticks", "make_label", "place_label", "label_bbox",
+    "Axis", "Table", "ScaleCaptions", "Group", "pi_ticks", "make_label", "place_label", "label_bbox",
     "bbox", "ASCENT", "DESCENT", "CAP",
 ]

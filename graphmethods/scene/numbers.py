@@ -51,9 +51,10 @@ def format_mm(x: float) -> str:
     ('0.001', '-2', '0')
     """
     x = float(x)
-    if not is_finite(x):
+    s = f"{x:.3f}"
+    if s[-1] in "nf":                       # 'nan', 'inf', '-inf': the only texts not ending in a digit
         raise InputError(f"cannot write the coordinate {x!r} mm: a figure element computed it from non-finite data")
-    s = f"{x:.3f}".rstrip("0").rstrip(".")
+    s = s.rstrip("0").rstrip(".")
     if s in ("-0", ""):
         s = "0"
     return s

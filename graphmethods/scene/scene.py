@@ -21,6 +21,7 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene.elements import Axis, Element, ScaleCaptions, bbox
+from graphmethods.scene.markup import MIN_TEXT_MM
 from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import Group, Primitive, walk
 from graphmethods.scene.scale import Scale
@@ -139,9 +140,16 @@ class Scene:
     def groups(self) -> tuple[Group, ...]:
         """The primitives to draw: the page's group (frame, title block; when drawn), then one group per
         element; ids unique."""
+        lettering = MIN_TEXT_MM.get()            # what text sizes come out depends on it (lettered_size)
+        memo = self.__dict__.get("_groups_memo")  # once per lettering: a class set writes each page twice
+        if memo is not None and memo[0] == lettering:
+            drawn: tuple[Group, ...] = memo[1]
+            return drawn
         page = self.page.primitives()
         prims = ([Group("page", page)] if page else []) + [e.draw() for e in self.elements]
-        return tuple(g for g in _unique(prims, set()) if isinstance(g, Group))     # all groups, as given
+        drawn = tuple(g for g in _unique(prims, set()) if isinstance(g, Group))     # all groups, as given
+        object.__setattr__(self, "_groups_memo", (lettering, drawn))
+        return drawn
 
     def primitives(self) -> tuple[Primitive, ...]:
         """Every primitive, depth first (groups included)."""

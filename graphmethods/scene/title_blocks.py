@@ -19,6 +19,7 @@ True
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -118,16 +119,23 @@ def _text(x: float, y: float, text: str, *, size: float = CAPTION_MM, anchor: st
     return Label(x, y + 0.35 * size, runs, size_mm=size, anchor=anchor)
 
 
+def _cjk(ch: str) -> bool:
+    """Is ``ch`` (its first character) a CJK character or a full-width mark (no spaces around it)?"""
+    return bool(ch) and ("\u3000" <= ch[0] <= "\u9fff" or "\uff00" <= ch[0] <= "\uffef")
+
+
 def _wrapped(x0: float, y0: float, w: float, h: float, text: str, *, size: float = TITLE_MM) -> list[Label]:
     """``text`` centred in the cell, on as many lines as it needs, the largest size ≤ ``size`` that fits."""
     if not text:
         return []
-    words = text.split()
+    # words, and each CJK character (or full-width mark) on its own: Chinese text breaks between characters
+    words = re.findall(r"[\u3000-\u9fff\uff00-\uffef]|[^\s\u3000-\u9fff\uff00-\uffef]+", text)
     s = size
     while True:
         lines, cur = [], ""
         for wd in words:
-            trial = f"{cur} {wd}".strip()
+            sep = "" if (_cjk(wd) or (cur and _cjk(cur[-1]))) else " "
+            trial = f"{cur}{sep}{wd}" if cur else wd
             if cur and markup.text_width_mm(markup.literal(trial), s) > w - 4.0:
                 lines.append(cur)
                 cur = wd

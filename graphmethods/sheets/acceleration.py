@@ -43,6 +43,8 @@ from graphmethods.scene.primitives import DASHED
 from graphmethods.sheets import kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.sheets.styles import CELL
+from graphmethods.sheets.velocity_table import table_rows
+from graphmethods.units import convenient_at_least
 
 SMALL_MM = K.SMALL_MM
 TABLE_MM = K.TABLE_MM
@@ -140,6 +142,19 @@ def _default_position(plans: tuple[AccelerationPlan, ...], linkage) -> int:
     return best
 
 
+_JOINT = re.compile(r"[A-Z][0-9]*")
+
+
+def _length_name(rel: str) -> str:
+    """The length of a relative normal or tangential acceleration ``a_XY`` as the books write it, l_YX.
+
+    >>> _length_name("BA"), _length_name("K3B"), _length_name("A3O3")
+    ('AB', 'BK3', 'O3A3')
+    """
+    joints = _JOINT.findall(rel)
+    return "".join(reversed(joints)) if "".join(joints) == rel and len(joints) == 2 else rel
+
+
 def _check_position(position, m: int) -> int:
     if isinstance(position, bool) or not isinstance(position, (int, np.integer)) or not 0 <= int(position) < m:
         raise InputError(f"position {position!r}: give one of the positions 0…{m - 1}")
@@ -171,7 +186,7 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
                 continue
             rel = c.symbol.split("_", 1)[1]
             if c.kind == "normal":
-                ends = (cr.centre + cr.pin) if s.method == "crank" else rel[len(s.point):] + s.point
+                ends = (cr.centre + cr.pin) if s.method == "crank" else _length_name(rel)
                 w = abs(plan.omega[c.link])
                 if within_roundoff(w, plan.omega_1):        # the link stands still here: no normal component
                     vals.append(nt.zero(symbol(c.symbol), f"ω_{{{c.link}}}"))
@@ -207,7 +222,7 @@ def _eps_texts(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
             if within_roundoff(c.magnitude, a_ref):       # no tangential component: the link's ε is 0
                 out.append((c.link, nt.zero(f"ε_{{{c.link}}}", symbol(c.symbol))))
                 continue
-            out.append((c.link, (f"ε_{{{c.link}}} = {symbol(c.symbol)}/l_{{{rel[len(s.point):] + s.point}}} = "
+            out.append((c.link, (f"ε_{{{c.link}}} = {symbol(c.symbol)}/l_{{{_length_name(rel)}}} = "
                                 f"{nt.number(c.magnitude, sig=4)}/{nt.number(c.factor, sig=4)} = "
                                 f"{nt.number(abs(e), sig=4)} {unit}, {K._sense_word(nt, e)}")))
     return out
@@ -254,12 +269,16 @@ def _equation_blocks(phi: str, eqs: list[tuple[str, str]], *, split_values: bool
 
 
 def _equation_columns(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_bottom: float,
-                      lay: AccelerationPlanLayout) -> tuple[list[list[Block]], float, float]:
+                      lay: AccelerationPlanLayout, width: float = math.inf) -> tuple[list[list[Block]], float, float]:
     """The equations under the plan: one column, or two on a slide (a short page) when every line fits and
-    the table beside the plan does not reach them. Returns the columns, their height and a column's width."""
+    the table beside the plan does not reach them; the known values each on a line of its own when a line of
+    them is wider than ``width`` (mm: the plan's share, the column beside reaching down to them). Returns the
+    columns, their height and a column's width."""
     x0, _, x1, _ = sheet.box
     half = (x1 - x0) / 2 - 4.0
     blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
+    if any(markup.text_width_mm(t, TEXT_MM) + dx > width for b_ in blocks for _, t, dx in b_):
+        blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
     two = getattr(sheet.probe, "size", "") == "SLIDE" and len(blocks) > 2
     if two:
         blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
@@ -281,6 +300,46 @@ def _equation_columns(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_
         columns = [blocks]
         eq_h = sum(len(b_) for b_ in blocks) * lay.equation_mm + 2.0
     return columns, eq_h, half
+
+
+def _equations_beside(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_w: float, right_bottom: float,
+                      lay: AccelerationPlanLayout) -> tuple[float, list[list[Block]]] | None:
+    """The equations in the column beside the plan, under its table and ε, each known value on a line of its
+    own, when the page is tall enough for them there (a panel of an A1 sheet): the split (mm) and the one
+    column; None when they do not fit (they go under the plan)."""
+    x0, _, x1, _ = sheet.box
+    blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
+    widest = max(markup.text_width_mm(t, TEXT_MM) + dx for b_ in blocks for _, t, dx in b_)
+    split = K._plan_split(sheet.box, max(right_w, widest + lay.column_x_mm), lay)
+    n_lines = sum(len(b_) for b_ in blocks)
+    bottom = right_bottom + lay.equations_below_mm + n_lines * lay.equation_mm
+    if split + lay.column_x_mm + widest > x1 + 1e-6 or bottom > sheet.caption_y - lay.caption_room_mm:
+        return None
+    return split, [blocks]
+
+
+def _runs_under(columns: list[list[Block]], top: float, x0: float, split: float, right_bottom: float,
+                lay: AccelerationPlanLayout) -> bool:
+    """Does a line of the equations (the first at ``top``, mm) reach past ``split`` above ``right_bottom``, where
+    the table and ε beside the plan are?"""
+    row = 0
+    for b_ in columns[0]:
+        for _, t, dx in b_:
+            y = top + row * lay.equation_mm
+            if y - TEXT_MM < right_bottom and x0 + dx + markup.text_width_mm(t, TEXT_MM) > split - lay.plan_gap_mm:
+                return True
+            row += 1
+    return False
+
+
+def _plan_need(area, arr: np.ndarray, lay: AccelerationPlanLayout) -> float:
+    """The convenient μ (per mm) a plan of points ``arr`` (n, 2) gets in ``area`` within its margins (inf when
+    the area has no room)."""
+    aw, ah = area[2] - area[0] - 2 * lay.margin_mm, area[3] - area[1] - 2 * lay.margin_mm
+    span = np.ptp(arr, axis=0)
+    if aw <= 0 or ah <= 0 or max(span) <= 0:
+        return math.inf
+    return convenient_at_least(max(float(span[0]) / aw, float(span[1]) / ah))
 
 
 def _equation_texts(columns: list[list[Block]], at, half: float, lay: AccelerationPlanLayout) -> list[Element]:
@@ -399,13 +458,25 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('kinematics.phi_from')}),  "
            f"{pr.speed_text(nt)}")
     right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0])
-    split = K._plan_split(sheet.box, right_w, lay)
     right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
+    arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
+    split = K._plan_split(sheet.box, right_w, lay)
     columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
+    if _runs_under(columns, sheet.caption_y - lay.caption_room_mm - eq_h + lay.equations_below_mm, x0, split,
+                   right_bottom, lay):                                  # a line of values would run under ε
+        split_up = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=split - x0 - lay.plan_gap_mm)
+        if sheet.caption_y - lay.caption_room_mm - split_up[1] - sheet.top >= lay.min_plan_mm:
+            columns, eq_h, half = split_up
     area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm - eq_h)
+    beside = _equations_beside(phi, eqs, sheet, right_w, right_bottom, lay)
+    if beside is not None:              # a tall page: the equations under the table, the plan the whole height ...
+        area_b = (x0, area[1], beside[0] - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm)
+        if _plan_need(area_b, arr, lay) < _plan_need(area, arr, lay):      # ... when the plan is larger so
+            (split, columns), area, eq_h, half = beside, area_b, 0.0, x1 - beside[0]
+        else:
+            beside = None
     if area[3] - area[1] < lay.min_plan_mm:
         raise InputError("the plan and its equations do not fit on this page; give a larger page")
-    arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
     s_a, f = K._fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_a, symbol="μ_a", unit="m/s²", k=k, nt=nt, lay=lay)
     pts = {lb: f.pt(zz.real, zz.imag) for lb, zz in plan.images.items()}
     occ = sheet.occ
@@ -420,10 +491,12 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     leaders: list = []
     names = _place_labels(occ, pts, plan, size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4),
                           hard=hard, leaders=leaders)
-    # under the plan: φ and the equations; beside it: the table and ε
-    text_els = _equation_texts(columns, (x0, area[3] + lay.equations_below_mm), half, lay)
+    # beside the plan: the table and ε; under the plan (or under ε): φ and the equations
     column = _acceleration_column(comps, pts, head, s_a, eps, (split + lay.column_x_mm, sheet.top + lay.column_x_mm),
-                                  (x1, area[3] + eq_h), nt, lay)
+                                  (x1, area[3] + eq_h if beside is None else right_bottom), nt, lay)
+    at = ((x0, area[3] + lay.equations_below_mm) if beside is None
+          else (split + lay.column_x_mm, right_bottom + lay.equations_below_mm))
+    text_els = _equation_texts(columns, at, half, lay)
     scales = (s_a,)
     elements = [sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + column
     elements += sheet.captions(scales, legend=nt.word("acceleration.legend"), reserve=True)
@@ -537,12 +610,13 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     for r in rows:
         body.append((str(int(r[0])), K._num(nt, r[1], 1)) + tuple(K._num(nt, v, 3) for v in r[2:]))
     rows_all = (tuple(head),) + tuple(body)
-    avail = (sheet.caption_y - 10.0) - (sheet.top + 2.0)
-    row_h = min(6.0, avail / len(rows_all))
-    if row_h < 4.0:
+    note = f"{pr.speed_text(nt)};  {nt.word('acceleration.signed')}"
+    lines = [note] if markup.text_width_mm(note, TEXT_MM) <= x1 - x0 else note.split(";  ")    # narrow: two lines
+    avail = (sheet.caption_y - 4.0 - 6.0 * len(lines)) - (sheet.top + 2.0)
+    row_h, size, fits = table_rows(avail, len(rows_all), most=6.0)
+    if not fits:
         raise InputError(f"{len(body)} positions do not fit on this sheet (rows would be {row_h:.1f} mm); "
                          f"give fewer positions or a larger page")
-    size = min(TABLE_MM, row_h * 0.55)
     table = Table((x0, sheet.top + 2.0), rows_all, size_mm=size, row_height_mm=row_h, align="c" * len(head),
                   name="table")
     while table.top_right[0] > x1 and size > 2.0:
@@ -552,6 +626,6 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     if table.top_right[0] > x1:
         raise InputError(f"the table is {table.width_mm:.0f} mm wide but the sheet leaves {x1 - x0:.0f} mm; "
                          f"give a larger page")
-    note = Text((x0, table.bottom_left[1] + 6.0), f"{pr.speed_text(nt)};  {nt.word('acceleration.signed')}",
-                size_mm=TEXT_MM, name="note")
-    return sheet.scene([sheet.header(), table, note], (), name=name)
+    notes = [Text((x0, table.bottom_left[1] + 6.0 * (i + 1)), t, size_mm=TEXT_MM, name="note" + (f"-{i}" if i else ""))
+             for i, t in enumerate(lines)]
+    return sheet.scene([sheet.header(), table, *notes], (), name=name)

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -34,27 +34,27 @@ from numpy.typing import ArrayLike
 
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
-from graphmethods.scene import (
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import (
+    ASCENT,
+    DESCENT,
     Axis,
     Dimension,
+    Element,
     Frame,
     Line,
-    Page,
     Point,
     Polyline,
-    Scale,
-    Scene,
     Table,
     Text,
-    markup,
-    nice_ticks,
-    notation as get_notation,
-    pick_angle_scale,
-    pick_scale,
+    lettered_size,
 )
-from graphmethods.scene.elements import Element, lettered_size
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import MAIN, THIN, Style
+from graphmethods.scene.scale import Scale, pick_angle_scale, pick_scale
+from graphmethods.scene.scene import Scene
+from graphmethods.scene.ticks import axis_ticks
 from graphmethods.sheets.layout import TEXT_MM, TIE_MM, Occupancy, Sheet, clear_tick_labels, problem_title
 from graphmethods.sheets.styles import PROJECTION
 
@@ -225,9 +225,9 @@ class _Band:
                       tick_labels=_number_labels(m, step_mm), label=nt.sym("phi"), size_mm=SMALL_MM,
                       skip_zero_label=self.lo < 0, name=f"axis-phi-{name}")
         room = self.s_y.per_mm * 2.0
-        ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.tick_gap_mm) if y_ticks else ()
+        ticks = axis_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.tick_gap_mm) if y_ticks else ()
         if y_ticks and not any(ticks):      # only 0, which is not written: closer values rather than none
-            ticks = nice_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.close_tick_gap_mm)
+            ticks = axis_ticks(self.lo, self.hi, self.s_y, min_gap_mm=LAYOUT.close_tick_gap_mm)
         ax_y = Axis(self.origin, self.s_y, "y", min_value=self.lo if self.lo < 0 else 0.0,
                     max_value=max(self.hi, room), ticks=ticks, label=y_label, size_mm=SMALL_MM,
                     decimal=nt.decimal, skip_zero_label=True, name=f"axis-{name}")
@@ -328,6 +328,21 @@ def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) ->
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
+def _column_table(rows: Rows, title: str, *, align: str, name: str, title_name: str, right: float, bottom: float,
+                  under: Sequence[Element], floor: float) -> list[Element]:
+    """The right column's table with its title, its bottom at ``bottom``, or lower (down to ``floor``) when its
+    title would cover the notes above it (``under``: on a short strip, a slide)."""
+    table = _table(rows, align=align, name=name, right=right, bottom=bottom)
+    n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
+    title_top = table.at[1] - 2.0 - (n - 1) * TABLE_MM * 1.35 - ASCENT * (TABLE_MM + 0.2)
+    clear = max((t.at[1] + (DESCENT + markup.SUB_SHIFT) * t.size_mm for t in under if isinstance(t, Text)),
+                default=-math.inf)
+    if title_top < clear + 1.5:
+        down = min(clear + 1.5 - title_top, max(0.0, floor - bottom))
+        table = replace(table, at=(table.at[0], table.at[1] + down))
+    return [*_titled_table(table, title, title_name), table]
+
+
 def _fmt(nt: Notation, value: float, sig: int = 3) -> str:
     return nt.number(float(value), sig=sig)
 
@@ -364,11 +379,25 @@ def _slider_subject(subject: Any, nt: Notation) -> tuple[Any, float | None, str]
                      f"linkage with a slider, got {type(subject).__name__}")
 
 
+def _free_values(axis: Axis, occ: Occupancy) -> bool:
+    """Does the axis write a value other than 0 clear of what is drawn, on either side of a y axis?"""
+    sides = (axis, replace(axis, labels_side="right")) if axis.labels_side in ("", "left") else (axis,)
+    return any(any(lab for t, lab in zip(a.ticks, clear_tick_labels(a, occ).tick_labels or ()) if t != 0)
+               for a in sides)
+
+
 def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: int, name: str,
                 pos: str) -> tuple[list[Axis], list[Text]]:
     """A strip's φ and value axes, their tick labels that would cover what is drawn left out, and the
     position numbers that lost their place set beside their ticks (call after registering the strip)."""
     full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
+    if ax_y.ticks and not _free_values(ax_y, occ):      # every value would be crossed: closer
+        for gap in np.linspace(LAYOUT.tick_gap_mm, LAYOUT.close_tick_gap_mm, 5)[1:]:   # ticks, some of them free
+            closer = replace(ax_y, ticks=axis_ticks(band.lo, band.hi, band.s_y, min_gap_mm=float(gap)),
+                             tick_labels=None)
+            if _free_values(closer, occ):
+                ax_y = closer
+                break
     ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True, other_side=True)
     occ.register(ax_phi, ax_y)
     return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
@@ -515,7 +544,7 @@ def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: 
 
 
 def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x1: float, occ: Occupancy,
-                      nt: Notation, *, given: tuple[bool, bool], sym_v: str, sym_a: str) -> list[Element]:
+                      nt: Notation, *, given: tuple[bool, bool], sym_v: str, sym_a: str, floor: float) -> list[Element]:
     """The right column: the formula of each scale beside its graph, then the comparison table."""
     rx, drop, sd, mm = x1 - ks.right_col, LAYOUT.block_drop_mm, ks.sd, nt.unit("mm")
     s_s, s_v, s_a, s_t = ks.s_s, ks.s_v, ks.s_a, ks.s_t
@@ -534,8 +563,9 @@ def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x
                                                       f"H_2 = {nt.number(sd.a.H_mm)} {mm} ({how[1]})"],
                             "formula-a", occ)
     rows = _comparison_rows(nt, sd, sym_v, sym_a)
-    table = _table(rows, align="llrr", name="comparison-table", right=x1, bottom=bands[2].top + ks.strip_mm)
-    return elements + _titled_table(table, nt.word("calculus.comparison"), "comparison-title") + [table]
+    return elements + _column_table(rows, nt.word("calculus.comparison"), align="llrr", name="comparison-table",
+                                    title_name="comparison-title", right=x1, bottom=bands[2].top + ks.strip_mm,
+                                    under=elements, floor=floor)
 
 
 def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = None, analogues: bool = False,
@@ -586,7 +616,8 @@ def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = Non
     b_v, els_v = _v_strip(ks, occ, nt, m, sym_v)
     b_a, els_a = _a_strip(ks, occ, nt, m, sym_a)
     column = _kinematic_column(ks, (b_s, b_v, b_a), sheet.box[2], occ, nt, given=(H1_mm is not None,
-                               H2_mm is not None), sym_v=sym_v, sym_a=sym_a)
+                               H2_mm is not None), sym_v=sym_v, sym_a=sym_a,
+                               floor=sheet.caption_y - TEXT_MM - 1.5)
     scales = ks.all()
     elements = [sheet.header(), *els_s, *els_v, *els_a, *column, *sheet.captions(scales)]
     notes = tuple(n for n in (ks.s_phi.note, ks.s_s.note) if n) + (

@@ -178,10 +178,10 @@ def _phi_axis(band: Band, y: float, nt: Notation, name: str) -> Axis:
 
 
 def _value_axis(band: Band, nt: Notation, label: str, name: str) -> Axis:
-    from graphmethods.scene import nice_ticks
+    from graphmethods.scene import axis_ticks
 
     right = band.x0 + band.mu_phi.to_mm(2 * math.pi) + VALUE_AXIS_MM
-    ticks = nice_ticks(band.lo, band.hi, band.mu_y, min_gap_mm=min(9.0, band.mu_y.to_mm(band.hi - band.lo) / 4.0))
+    ticks = axis_ticks(band.lo, band.hi, band.mu_y, min_gap_mm=min(9.0, band.mu_y.to_mm(band.hi - band.lo) / 4.0))
     labels = tuple(nt.number(t, sig=3) for t in ticks)
     return Axis((right, band.y0), band.mu_y, "y", band.lo, band.hi, ticks=ticks, tick_labels=labels,
                 label=label, labels_side="right", size_mm=TEXT_MM, name=f"{name}-axis-y")
@@ -433,9 +433,9 @@ def combined_diagram(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> 
 
 def _ticks(lo: float, hi: float, mu: Scale, gap_mm: float) -> tuple[float, ...]:
     """Ticks at a convenient step at least ``gap_mm`` apart."""
-    from graphmethods.scene import nice_ticks
+    from graphmethods.scene import axis_ticks
 
-    return nice_ticks(lo, hi, mu, min_gap_mm=gap_mm)
+    return axis_ticks(lo, hi, mu, min_gap_mm=gap_mm)
 
 
 def _tangents(cam: CamDesign, s: np.ndarray, s1: np.ndarray, t: np.ndarray, P: Any,

@@ -27,22 +27,13 @@ from typing import Any
 import numpy as np
 
 from graphmethods.kinematics.cam import CamDesign, CamProblem, design
-from graphmethods.scene import (
-    Group,
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    Text,
-    TitleBlock,
-    notation as get_notation,
-    pick_scale,
-)
-from graphmethods.scene.elements import Element
+from graphmethods.scene import notation as get_notation
+from graphmethods.scene.elements import Element, Group, Line, Point, Polyline, Text
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page, TitleBlock
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Circle, Primitive, Style
+from graphmethods.scene.scale import Scale, pick_scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.cam_diagrams import (
     HEAD_MM,
     TEXT_MM,

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, nice_ticks, notation as get_notation
+from graphmethods.scene import Axis, Frame, Page, Polyline, Scene, Text, axis_ticks, notation as get_notation
 from graphmethods.scene.elements import pi_ticks
 from graphmethods.scene.primitives import MAIN
 from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, suppressed_base
@@ -172,7 +172,7 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
         ax_phi = Axis((px0, f.pt(0.0, level)[1]), s_phi, "x", min_value=0.0, max_value=P, ticks=ticks,
                       tick_labels=labels, label=nt.sym("phi"), size_mm=SMALL_MM, name=f"{key}-axis-phi",
                       labels_side="above" if hi <= 0 else "")
-        yt = tuple(v for v in nice_ticks(lo, hi, s_y, min_gap_mm=7.0) if lo <= v <= hi)
+        yt = tuple(v for v in axis_ticks(lo, hi, s_y, min_gap_mm=7.0) if lo <= v <= hi)
         ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yt, label=label, size_mm=SMALL_MM,
                     decimal=nt.decimal, name=f"{key}-axis-y", skip_zero_label=lo < 0)
         els += [ax_phi, ax_y]

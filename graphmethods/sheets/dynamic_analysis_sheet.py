@@ -14,9 +14,9 @@ from graphmethods.dynamics.study import Study
 from graphmethods.dynamics.wittenbauer import WittenbauerResult
 from graphmethods.errors import InputError
 from graphmethods.scene import Line, Page, Scale, Scene, Table, Text, markup, notation as get_notation, pick_scale
-from graphmethods.scene.elements import Element, make_label
+from graphmethods.scene.elements import Element, Group, label_bbox, make_label
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import MAIN, Label
+from graphmethods.scene.primitives import MAIN, Label, walk
 from graphmethods.sheets.dynamics import (
     SMALL_MM,
     TEXT_MM,
@@ -35,11 +35,12 @@ from graphmethods.sheets.dynamics import (
     turned_inertia_elements,
     value_text,
 )
-from graphmethods.sheets.engine.lettering import lettered_by_page
+from graphmethods.sheets.engine.lettering import lettered, lettered_by_page
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import Occupancy
 from graphmethods.sheets.styles import PROJECTION
 from graphmethods.sheets.wittenbauer import (
+    TABLE_MM,
     DiagramData,
     _place_table,
     _table,
@@ -106,13 +107,8 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     nt = get_notation(notation)
     sheet = SheetFrame(nt=nt, page=None, title=title or nt.word("wittenbauer.dynamic_analysis"),
                        problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
-    content = _sheet_content(study, nt, tangents)
-    lay = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi)
-    for _ in range(3):                                   # k and l where the ordinate axis stands: the ΔT range
-        if lay.J_0 == 0.0 or content.J_0 == lay.J_0:
-            break
-        content = content.with_origin(lay.J_0)
-        lay = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi)
+    content, lay = _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M,
+                                   mu_phi=mu_phi)
     res = lay.result(content)
     occ = sheet.occ
     proj = _projection_lines(content, lay, res)          # the thinnest, under everything
@@ -121,22 +117,148 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
     rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, content.moments, lay.s_M, lay.s_phi),
                                  on_sheet=O1_drawn, J_0=lay.J_0))
-    w = _table(rows, (0, 0)).width_mm
+    w = _table(rows, (0, 0), size_mm=lay.table_mm).width_mm
     x1 = sheet.box[2]
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
-    table = _place_table(occ, rows, cands)
+    table = _place_table(occ, rows, cands, size_mm=lay.table_mm)
     occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
-    ordinates = _ordinates_table(occ, content, nt, x1, table.at[1] + table.height_mm + 14.0, sheet.caption_y)
+    ordinates = _ordinates_table(occ, content, nt, x1, table.at[1] + table.height_mm + 14.0, sheet.caption_y, w)
     heads = _sheet_headings(sheet, content, lay, nt)
     table_head = Text((table.at[0], table.at[1] - 2.0), nt.word("wittenbauer.result"), size_mm=TEXT_MM + 0.8,
                       bold=True, name="heading-result")
     scales = (lay.s_phi, lay.s_M, lay.s_T, lay.s_J)
-    elements = ([sheet.header()] + proj + M_els + T_els + turned + diag + heads + [table_head, table]
-                + ordinates + sheet.captions(scales))
+    others = ([sheet.header()] + M_els + T_els + turned + diag + heads + [table_head, table] + ordinates
+              + sheet.captions(scales))
+    elements = _broken_at_texts(proj, others) + others
     J_0 = lay.J_0
     notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
         f"J_F = {res.J_F:.6g} kg·m² from kl = {res.kl_mm:.6g} mm" + (f" and J_0 = {J_0:g} kg·m²" if J_0 else ""),)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
+
+
+def sheet_scales(study, *, page="A1", tangents: str = "exact") -> tuple[Scale, Scale, float]:
+    """μ_J, μ_T and J_0 of the energy–mass diagram of ``study``'s dynamic-analysis sheet: the scales its
+    construction is drawn and measured at (tan ψ, k, l, kl), the same in every language, which the slides,
+    the HTML stepper and ``study --json`` use so that they print the sheet's numbers.
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> s_J, s_T, J_0 = sheet_scales(Study(builtin.case("press"), positions=12))
+    >>> s_J.per_mm, s_T.per_mm, J_0
+    (0.0005, 2.5, 0.5)
+    """
+    _, lay = _default_placement(study, page=page, tangents=tangents)
+    return lay.s_J, lay.s_T, lay.J_0
+
+
+def sheet_construction(study, *, page="A1", tangents: str = "exact") -> dict[str, float]:
+    """The numbers of the dynamic-analysis sheet's energy–mass construction, as ``study --json`` reports them
+    (``"sheet"``): μ_J (kg·m²/mm), μ_T (J/mm), J_0 (kg·m²), tan ψ_max, tan ψ_min, kl (mm) and J_F (kg·m²).
+
+    Examples
+    --------
+    >>> from graphmethods.problems import builtin
+    >>> c = sheet_construction(Study(builtin.case("press"), positions=12))
+    >>> c["mu_J"], c["mu_T"], round(c["kl_mm"], 1), round(c["J_F"], 2)
+    (0.001, 2.5, 217.6, 13.28)
+    """
+    content, lay = _default_placement(study, page=page, tangents=tangents)
+    res = lay.result(content)
+    return {"mu_J": lay.s_J.per_mm, "mu_T": lay.s_T.per_mm, "J_0": lay.J_0, "tan_psi_max": float(res.tan_psi_max),
+            "tan_psi_min": float(res.tan_psi_min), "kl_mm": float(res.kl_mm), "J_F": float(res.J_F)}
+
+
+def _default_placement(study, *, page, tangents: str) -> tuple[SheetContent, SheetPlacement]:
+    """The content and placement of the sheet with every scale picked (they do not depend on the language)."""
+    study = as_study(study)
+    nt = get_notation("en")
+    with lettered(page if hasattr(page, "size") else str(page).upper()):
+        sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
+                           problem=problem_text(study, nt), title_block=True, default_page=_sheet_page(page))
+        return _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=None, mu_T=None, mu_M=None,
+                               mu_phi=None)
+
+
+def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **scales: object
+                    ) -> tuple[SheetContent, SheetPlacement]:
+    """The content with its ΔT range where the ordinate axis stands, and its placement: the result table
+    lettered at 5 mm when the room its width takes leaves the diagram's scale as at the smallest lettering."""
+    def placed(content: SheetContent, table_mm: float) -> tuple[SheetContent, SheetPlacement]:
+        lay = _sheet_placement(sheet, content, nt, table_mm=table_mm, **scales)  # type: ignore[arg-type]
+        for _ in range(3):                               # k and l where the ordinate axis stands: the ΔT range
+            if lay.J_0 == 0.0 or content.J_0 == lay.J_0:
+                break
+            content = content.with_origin(lay.J_0)
+            lay = _sheet_placement(sheet, content, nt, table_mm=table_mm, **scales)  # type: ignore[arg-type]
+        return content, lay
+
+    small = placed(content, RESULT_SIZES_MM[-1])
+    for size in RESULT_SIZES_MM[:-1]:
+        try:
+            large = placed(content, size)
+        except InputError:
+            continue
+        if (large[1].s_J.per_mm, large[1].J_0) == (small[1].s_J.per_mm, small[1].J_0) and large[1].fits and \
+                sheet.top + large[1].table_h_mm + 10.0 <= _title_block_top(sheet):
+            return large
+    return small
+
+
+def _title_block_top(sheet: SheetFrame) -> float:
+    """The top of the title block (the bottom of the frame when there is none), mm."""
+    clip = sheet.probe.inner_box()
+    if sheet.probe.title_block is None:
+        return clip[3]
+    return float(sheet.probe.title_block.table(clip[2], clip[3]).at[1])
+
+
+#: the lettering of the result table, largest first: 5 mm (values on A1) when the diagram keeps its scale, else
+#: the A4 figure's table lettered up to 3.5 mm
+RESULT_SIZES_MM = (5.0, TABLE_MM)
+
+
+def _broken_at_texts(lines: list[Element], others: list[Element], gap_mm: float = 0.6) -> list[Element]:
+    """Thin projection lines broken where they would run through a text (a draftsman stops a thin line at the
+    text and goes on past it): each line becomes a group of its pieces, under the same name."""
+    boxes = np.array([label_bbox(p) for e in others for p in walk(e.primitives()) if isinstance(p, Label)],
+                     dtype=float).reshape(-1, 4)
+    boxes += np.array([-gap_mm, -gap_mm, gap_mm, gap_mm])
+    out: list[Element] = []
+    for e in lines:
+        if not isinstance(e, Line) or not len(boxes):
+            out.append(e)
+            continue
+        p, q = np.asarray(e.start, dtype=float), np.asarray(e.end, dtype=float)
+        cuts = [iv for iv in (_clip_interval(p, q, b) for b in boxes) if iv is not None]
+        if not cuts:
+            out.append(e)
+            continue
+        keep, t = [], 0.0
+        for a, b in sorted(cuts):
+            if a > t:
+                keep.append((t, a))
+            t = max(t, b)
+        keep.append((t, 1.0))
+        length = float(np.hypot(*(q - p)))
+        pieces = tuple(replace(e, start=tuple(p + (q - p) * a), end=tuple(p + (q - p) * b), name=f"{e.name}-{i}")
+                       for i, (a, b) in enumerate(k for k in keep if (k[1] - k[0]) * length > 0.3))
+        out.append(Group(elements=pieces, name=e.name))
+    return out
+
+
+def _clip_interval(p: np.ndarray, q: np.ndarray, box: np.ndarray) -> tuple[float, float] | None:
+    """The parameters (t0, t1) ⊂ [0, 1] of the part of p→q inside a box (Liang–Barsky), or None."""
+    d = q - p
+    t0, t1 = 0.0, 1.0
+    for dk, lo, hi, pk in ((d[0], box[0], box[2], p[0]), (d[1], box[1], box[3], p[1])):
+        if abs(dk) < 1e-12:
+            if pk < lo or pk > hi:
+                return None
+            continue
+        a, b = (lo - pk) / dk, (hi - pk) / dk
+        t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+    return (t0, t1) if t1 > t0 else None
 
 
 @dataclass(frozen=True)
@@ -210,6 +332,9 @@ class SheetPlacement:
     y_M0: float         # the M graph's φ axis
     y0_T: float         # the level ΔT = 0 (the ΔT graph's φ axis and the diagram's J axis)
     d_top: float        # the diagram's top
+    table_mm: float = TABLE_MM   # the result table's lettering (lettered up to 3.5 mm on A1)
+    table_h_mm: float = 0.0  # and its height (without the O_1 row's variants)
+    fits: bool = True        # the diagram, its J axis's name and the table fit across (else the table moves down)
 
     def result(self, content: SheetContent) -> WittenbauerResult:
         """The construction at these scales, with its ordinate axis at J_0."""
@@ -243,7 +368,8 @@ def _phi_scale(sheet: SheetFrame, content: SheetContent, nt: Notation, mu_phi: o
 
 
 def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, mu_J: object, mu_T: object,
-                     mu_M: object, mu_phi: object, lay: DynamicSheetLayout = LAYOUT) -> SheetPlacement:
+                     mu_M: object, mu_phi: object, table_mm: float = TABLE_MM,
+                     lay: DynamicSheetLayout = LAYOUT) -> SheetPlacement:
     """The scales and the places of the parts: [M graph | turned J_e graph] over [ΔT graph | diagram].
 
     μ_J fits the diagram's content to the width beside the graphs: 0…J_e max, or, for a J_e that
@@ -269,7 +395,8 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     left_end = x_L + L_phi + lay.graphs_gap_mm
     probe_rows = wide_rows(result_rows(content.data.result(1.0, 1.0), nt, extra=_extra_rows(nt, dm, s_M, s_phi),
                                        J_0=1.0 if suppressed_zero(content.J_lo, content.J_to) else 0.0))
-    table_w = _table(probe_rows, (0, 0)).width_mm
+    probe_table = _table(probe_rows, (0, 0), size_mm=table_mm)
+    table_w = probe_table.width_mm
     J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), f"10⁻³ {nt.unit('kg·m²')}"),
                                      SMALL_MM + 0.5) + lay.J_name_extra_mm      # the name a small J_e takes
     room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
@@ -279,7 +406,8 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
     return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=max(x_a_min, (x_a_min + x_a_max) / 2), y_Jt=y_Jt,
                           y_M0=y_Jt + L_phi - lay.M_below_mm - s_M.to_mm(-dm.lo), y0_T=d_top + s_T.to_mm(content.T_hi),
-                          d_top=d_top)
+                          d_top=d_top, table_mm=table_mm, table_h_mm=probe_table.height_mm,
+                          fits=x_a_max >= x_a_min)
 
 
 def _projection_lines(content: SheetContent, lay: SheetPlacement, res: WittenbauerResult) -> list[Element]:
@@ -361,7 +489,7 @@ def _free_heading(occ: Occupancy, at: tuple[float, float], text: str, size: floa
 
 
 def _ordinates_table(occ: Occupancy, content: SheetContent, nt: Notation, right: float, top: float,
-                     bottom: float) -> list[Element]:
+                     bottom: float, width_mm: float = 0.0) -> list[Element]:
     """The course sheet's table of ordinates: per position k, φ, the drawn moment, ΔT and J_e, under the
     result (what the graphs were drawn from), with its heading; nothing when no place is free."""
     data, dm = content.data, content.moments
@@ -374,17 +502,30 @@ def _ordinates_table(occ: Occupancy, content: SheetContent, nt: Notation, right:
     rows = [head] + [(str(k), n(math.degrees(float(data.phi[k] - data.phi[0])), sig=4),
                       n(float(moment[k]), sig=4, reference=M_ref), n(float(data.delta_T[k]), sig=4, reference=T_ref),
                       n(float(data.J_e[k]), sig=4)) for k in range(len(data.phi))]
-    probe = Table((0.0, 0.0), tuple(rows), align="rrrrr", name="ordinates")
     heading = nt.word("wittenbauer.ordinates")
-    w = max(probe.width_mm, markup.text_width_mm(heading, TEXT_MM + 0.8) * 1.1)    # the bold heading fits too
-    h = probe.height_mm
-    for y in np.arange(top, bottom - h, 5.0):
-        box = (right - w, float(y), right, float(y) + h)
-        if occ.is_free((box[0], box[1] - 10.0, box[2], box[3])):
-            occ.add_box((box[0], box[1] - 10.0, box[2], box[3]))
-            return [Text((box[0], box[1] - 2.0), heading, size_mm=TEXT_MM + 0.8, bold=True, name="heading-ordinates"),
-                    Table((box[0], box[1]), tuple(rows), align="rrrrr", name="ordinates")]
+    for size in ORDINATE_SIZES_MM:          # the largest lettering whose table fits the room under the result
+        # as wide as the result (the columns share what the texts leave), rows as tall as the room allows
+        row_mm = min(ORDINATE_ROW_MAX_MM, max(2.0 * size, (bottom - top - 12.0) / len(rows)))
+        probe = Table((0.0, 0.0), tuple(rows), align="rrrrr", size_mm=size, row_height_mm=row_mm, name="ordinates")
+        widths = np.asarray(probe.column_widths(), dtype=float)
+        if width_mm > widths.sum():
+            spread = widths + (width_mm - widths.sum()) / len(widths)
+            probe = replace(probe, col_widths_mm=tuple(float(c) for c in spread))
+        w = max(probe.width_mm, markup.text_width_mm(heading, TEXT_MM + 0.8) * 1.1)    # the bold heading fits too
+        h = probe.height_mm
+        for y in np.arange(top, bottom - h, 5.0):
+            box = (right - w, float(y), right, float(y) + h)
+            if occ.is_free((box[0], box[1] - 10.0, box[2], box[3])):
+                occ.add_box((box[0], box[1] - 10.0, box[2], box[3]))
+                return [Text((box[0], box[1] - 2.0), heading, size_mm=TEXT_MM + 0.8, bold=True,
+                             name="heading-ordinates"), replace(probe, at=(box[0], box[1]))]
     return []
+
+
+#: the lettering of the table of ordinates, largest first (ГОСТ 2.304's series; 5 mm for values on A1)
+ORDINATE_SIZES_MM = (5.0, 3.5)
+#: the tallest row of the table of ordinates, mm
+ORDINATE_ROW_MAX_MM = 12.0
 
 
 def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:

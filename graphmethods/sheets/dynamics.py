@@ -41,24 +41,15 @@ import numpy as np
 
 from graphmethods.dynamics.study import Study
 from graphmethods.errors import InputError
-from graphmethods.scene import (
-    Axis,
-    Frame,
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    Text,
-    markup,
-    nice_ticks,
-    notation as get_notation,
-)
-from graphmethods.scene.elements import Element, label_bbox, make_label
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import Axis, Element, Frame, Line, Point, Polyline, Text, label_bbox, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import format_value
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import AXIS, MAIN, THIN, Label, Path, Polygon, Style
+from graphmethods.scene.scale import Scale
+from graphmethods.scene.scene import Scene
+from graphmethods.scene.ticks import axis_ticks
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame  # SheetFrame re-exported for cycle_panels, motion
 from graphmethods.sheets.layout import TEXT_MM, Box, clear_tick_labels, given_angle_scale, given_scale, problem_title
 from graphmethods.sheets.styles import LEVEL, PART
@@ -171,10 +162,9 @@ def problem_text(study, nt="en") -> str:
 
     Examples
     --------
-    >>> import pathlib
     >>> from graphmethods.dynamics.study import Study
-    >>> from graphmethods.kinematics import read_case
-    >>> st = Study(read_case(pathlib.Path(__file__).parents[1] / "problems" / "data" / "slider_crank_press.json"))
+    >>> from graphmethods.problems.builtin import case
+    >>> st = Study(case("press"))
     >>> problem_text(st, "ru"), problem_text(st, "zh")
     ('дезаксиальный кривошипно-ползунный пресс, m = 12', '偏置曲柄滑块压力机，m = 12')
     """
@@ -207,7 +197,7 @@ def suppressed_base(lo: float, hi: float, scale: Scale, *, zero: bool | None = N
         zero = not (lo > 0 and (hi - lo) < 0.35 * hi)
     if zero or not hi > lo:          # a constant (J_e of masses on the crank only): the axis from 0 shows it
         return 0.0
-    ticks = nice_ticks(lo - (hi - lo), hi, scale, min_gap_mm=8.0)
+    ticks = axis_ticks(lo - (hi - lo), hi, scale, min_gap_mm=8.0)
     below = [t for t in ticks if t <= lo - 0.02 * (hi - lo)]
     return float(below[-1]) if below else (float(ticks[0]) if ticks else 0.0)
 
@@ -277,7 +267,7 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
     ax_phi = Axis((origin[0], x_axis_y), s_phi, "x", min_value=0.0, max_value=period, ticks=tuple(phi_k - phi_k[0]),
                   tick_labels=("",) * (m + 1), label=phi_label or nt.sym("phi"), size_mm=SMALL_MM,
                   name=f"{prefix}axis-phi", labels_side=side)
-    ticks = tuple(t for t in nice_ticks(y_from, y_to, s_Y, min_gap_mm=8.0) if y_from <= t <= y_to)
+    ticks = tuple(t for t in axis_ticks(y_from, y_to, s_Y, min_gap_mm=8.0) if y_from <= t <= y_to)
     ax_Y = Axis(origin, s_Y, "y", min_value=y_from, max_value=y_to, ticks=ticks, label=y_label, size_mm=SMALL_MM,
                 decimal=get_notation(nt).decimal, name=f"{prefix}axis-Y", skip_zero_label=(axis_level == 0 and
                                                                                         y_from < 0))
@@ -548,7 +538,7 @@ def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: flo
     >>> from graphmethods.scene import notation
     >>> t, labels, name = inertia_ticks(0.0517, 0.0552, Scale("μ_J", "kg·m²", 2e-5), notation("en"))
     >>> labels[:3], name
-    (('51.75', '52', '52.25'), 'J_e, 10⁻³ kg·m²')
+    (('52', '52.5', '53'), 'J_e, 10⁻³ kg·m²')
     """
     nt = get_notation(nt)
     top = max(abs(J_from), abs(J_to))
@@ -556,7 +546,7 @@ def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: flo
     f = 10.0 ** -exp
     gap = min_gap_mm
     for _ in range(6):
-        ticks = tuple(t for t in nice_ticks(J_from, J_to, s_J, min_gap_mm=gap) if J_from <= t <= J_to)
+        ticks = tuple(t for t in axis_ticks(J_from, J_to, s_J, min_gap_mm=gap) if J_from <= t <= J_to)
         labels = tuple(nt.number(t * f, sig=6) for t in ticks)
         need = max((markup.text_width_mm(lab, SMALL_MM) for lab in labels), default=0.0) + 4.0
         if need <= gap:

@@ -37,8 +37,8 @@ from graphmethods.scene import (
     Table,
     Text,
     Vector,
+    axis_ticks,
     markup,
-    nice_ticks,
     notation as get_notation,
     pi_ticks,
 )
@@ -233,7 +233,7 @@ def _moment_axes(g: _MomentGraph, ew: Any, nt: Notation, occ: Occupancy,
     ax_phi = Axis(origin, g.s_phi, "x", min_value=0.0, max_value=g.period, ticks=ticks_phi, tick_labels=labels_phi,
                   label=nt.quantity(nt.sym("phi"), "rad"), size_mm=SMALL_MM, name="axis-phi",
                   skip_zero_label=g.M_lo < 0)
-    M_ticks = nice_ticks(g.M_lo, g.M_hi, g.s_M, min_gap_mm=L.M_tick_gap_mm)
+    M_ticks = axis_ticks(g.M_lo, g.M_hi, g.s_M, min_gap_mm=L.M_tick_gap_mm)
     ax_M = Axis(origin, g.s_M, "y", min_value=min(g.M_lo, 0.0) if g.M_lo < 0 else 0.0, max_value=g.M_hi,
                 ticks=M_ticks, label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), size_mm=SMALL_MM,
                 decimal=nt.decimal, name="axis-M")
@@ -621,7 +621,7 @@ def _staircase(ind: _Indicator, ew: Any, nt: Notation, occ: Occupancy,
     lowest levels carried right to the ΔW_max dimension (all registered)."""
     L, y, xs, E = INDICATOR_LAYOUT, ind.y, ind.xs, ind.E
     ax = Axis(ind.origin, ind.s_E, "y", min_value=ind.E_lo if ind.E_lo < 0 else 0.0,
-              max_value=max(ind.E_hi, ind.s_E.per_mm), ticks=nice_ticks(ind.E_lo, ind.E_hi, ind.s_E,
+              max_value=max(ind.E_hi, ind.s_E.per_mm), ticks=axis_ticks(ind.E_lo, ind.E_hi, ind.s_E,
                                                                       min_gap_mm=L.tick_gap_mm),
               label=nt.quantity(nt.sym("E"), work_unit), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     start_line = Line((ind.origin[0], y(0.0)), (ind.x_end + L.start_beyond_mm, y(0.0)), style=DASHED,

@@ -4,31 +4,20 @@ out of :mod:`graphmethods.sheets.energy`, which re-exports it)."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import (
-    Axis,
-    Dimension,
-    Frame,
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    Text,
-    markup,
-    nice_ticks,
-    notation as get_notation,
-    pi_ticks,
-)
-from graphmethods.scene.elements import Element, Group
+from graphmethods.scene import markup, notation as get_notation, pi_ticks
+from graphmethods.scene.elements import Axis, Dimension, Element, Frame, Group, Line, Point, Polyline, Text, label_bbox
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import DASHED, MAIN, THIN
+from graphmethods.scene.page import Page
+from graphmethods.scene.primitives import DASHED, MAIN, THIN, Label
+from graphmethods.scene.scale import Scale
+from graphmethods.scene.scene import Scene
+from graphmethods.scene.ticks import axis_ticks
 from graphmethods.sheets.energy import SMALL_MM, _clear_ticks, _cycle
 from graphmethods.sheets.layout import TEXT_MM, Box, Occupancy, Sheet, angle_deg_text, given_angle_scale, given_scale
 
@@ -136,7 +125,7 @@ def _energy_axes(g: _EnergyGraph, nt: Notation, occ: Occupancy, sym: str,
                   labels_side="above" if -lo > hi else "below")
     room = g.s_E.to_value(L.values_above_mm) if -lo > hi else g.s_E.per_mm   # tick labels above the φ axis
     ax_E = Axis(origin, g.s_E, "y", min_value=lo if lo < 0 else 0.0, max_value=max(hi, room),
-                ticks=nice_ticks(lo, hi, g.s_E, min_gap_mm=L.E_tick_gap_mm), label=nt.quantity(sym, work_unit),
+                ticks=axis_ticks(lo, hi, g.s_E, min_gap_mm=L.E_tick_gap_mm), label=nt.quantity(sym, work_unit),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     curve = Polyline(g.frame.pts(g.phi - g.phi0, g.Y), style=MAIN, name="curve-E")
     ax_phi, ax_E = _clear_ticks(ax_phi, curve), _clear_ticks(ax_E, curve)
@@ -144,8 +133,19 @@ def _energy_axes(g: _EnergyGraph, nt: Notation, occ: Occupancy, sym: str,
     return ax_phi, ax_E, curve
 
 
-def _energy_extremes(g: _EnergyGraph, ew: Any, occ: Occupancy,
-                     dim_text: str) -> tuple[dict[str, tuple[float, float]], list[Line], Dimension, list[Element]]:
+def _projection_end(at: tuple[float, float], axis_y: float, ax_phi: Axis) -> tuple[float, float]:
+    """Where an extreme's projection onto the φ axis stops: at the axis, or short of the tick label it would
+    cross (the line stops at the text, as a draftsman draws it, when the extreme lies on the labels' side)."""
+    end = axis_y
+    for lab in (p for p in replace(ax_phi, label="").primitives() if isinstance(p, Label)):
+        x0, y0, x1, y1 = label_bbox(lab)
+        if x0 - 0.3 <= at[0] <= x1 + 0.3 and min(at[1], axis_y) <= (y0 + y1) / 2 <= max(at[1], axis_y):
+            end = y1 + 0.5 if at[1] > axis_y else y0 - 0.5
+    return (at[0], end)
+
+
+def _energy_extremes(g: _EnergyGraph, ew: Any, occ: Occupancy, dim_text: str, ax_phi: Axis
+                     ) -> tuple[dict[str, tuple[float, float]], list[Line], Dimension, list[Element]]:
     """The extremes: their points, projections to the φ axis, levels to ΔW_max's dimension, open marks."""
     imax, imin = ew.index_E_max, ew.index_E_min
     k_max, k_min = ("T_max", "T_min") if g.kinetic else ("E_max", "E_min")
@@ -155,7 +155,8 @@ def _energy_extremes(g: _EnergyGraph, ew: Any, occ: Occupancy,
     guides = []
     for key, (ph, v) in ext_pts.items():
         at = g.P(ph, v)
-        guides.append(Line(at, (at[0], g.frame.origin[1]), style=DASHED, name=f"projection-{key}"))
+        guides.append(Line(at, _projection_end(at, g.frame.origin[1], ax_phi), style=DASHED,
+                           name=f"projection-{key}"))
         guides.append(Line(at, (x_dim + 2.0, at[1]), style=DASHED, name=f"level-{key}"))
     dim = Dimension((x_dim, g.P(*ext_pts[k_min])[1]), (x_dim, g.P(*ext_pts[k_max])[1]), dim_text,
                     size_mm=TEXT_MM + 0.3, name="dimension-delta-W-max")
@@ -238,7 +239,7 @@ def energy_graph(cycle: Any, *, mu_E: Any = None, mu_phi: Any = None, T0: float 
                       work_unit=work_unit)
     occ = sheet.occ
     ax_phi, ax_E, curve = _energy_axes(g, nt, occ, sym, work_unit)
-    ext_pts, guides, dim, marks = _energy_extremes(g, ew, occ, dim_text)
+    ext_pts, guides, dim, marks = _energy_extremes(g, ew, occ, dim_text, ax_phi)
     points, labels, extra = _energy_labels(g, ew, nt, occ, ext_pts, work_unit)
     scales = (g.s_phi, g.s_E)
     elements = ([sheet.header(), ax_phi, ax_E] + guides + [curve, dim] + points + marks + labels + extra

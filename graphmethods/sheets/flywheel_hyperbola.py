@@ -20,7 +20,7 @@ import numpy as np
 from graphmethods.dynamics.flywheel_formulas import hyperbola
 from graphmethods.dynamics.permissible_delta import delta_range, machine_row
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Line, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
+from graphmethods.scene import Axis, Line, Page, Point, Polyline, Scene, Text, axis_ticks, notation as get_notation
 from graphmethods.scene.primitives import DASHED, MAIN, Style
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
@@ -83,9 +83,9 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
 
     num = nt.number
     els: list[Any] = [sheet.header()]
-    els.append(Axis(origin, s_d, "x", min_value=0.0, max_value=x_hi, ticks=nice_ticks(0.0, x_hi, s_d),
+    els.append(Axis(origin, s_d, "x", min_value=0.0, max_value=x_hi, ticks=axis_ticks(0.0, x_hi, s_d),
                     label="1/[δ]", skip_zero_label=True, decimal=nt.decimal, name="axis-delta"))
-    els.append(Axis(origin, s_J, "y", min_value=J_lo, max_value=J_hi, ticks=nice_ticks(J_lo, J_hi, s_J),
+    els.append(Axis(origin, s_J, "y", min_value=J_lo, max_value=J_hi, ticks=axis_ticks(J_lo, J_hi, s_J),
                     label=nt.quantity(JF, "kg·m²"), decimal=nt.decimal, name="axis-J"))
     els.append(Polyline(tuple(at(float(d), float(j)) for d, j in zip(deltas, J)), style=MAIN, name="hyperbola"))
     if row is not None:

@@ -1,31 +1,41 @@
 """The course project's second sheet: the force (kinetostatic) analysis of one position, on A1 or A2.
 
-Left, the whole height: the linkage in that position with every force
-(:func:`~graphmethods.sheets.forces.force_scheme`); right, above: Zhukovsky's lever with every force
-(:func:`~graphmethods.sheets.forces.zhukovsky_forces`); right, below: the force plan of each group and
-of the crank, every reaction's magnitude (:func:`~graphmethods.sheets.forces.force_plans`); at the top
-right corner the result table: the
-balancing moment from the force plans, from the lever and from the power balance, with their
-differences in per cent. Each part keeps its own scales, written under it and in the title block.
+The linkage in that position with every force (:func:`~graphmethods.sheets.forces.force_scheme`), large;
+Zhukovsky's lever with every force (:func:`~graphmethods.sheets.forces.zhukovsky_forces`); for each Assur
+group, and for the crank, two panels side by side: the group cut from the linkage with its forces and the
+reactions of the links it was cut from (:func:`~graphmethods.sheets.force_sheet_plans.group_panel`), and its
+force plan at its own convenient μ_F filling its panel, with its vector equation and the reactions it finds
+(:func:`~graphmethods.sheets.force_sheet_plans.plan_panel`; the crank's plan closed by the balancing force
+F_b and R′_01); the plan of accelerations of the position, where the inertia forces' a_S and ε come from
+(:func:`~graphmethods.sheets.acceleration.acceleration_plan`, left out when its equations do not fit its
+panel). At the right, above the title block: the balancing moment from the force plans, from the lever and
+from the power balance with their differences in per cent, every reaction's magnitude, the inertia loads,
+and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`). Each
+part keeps its own scales, written under it; the title block names the scheme's.
 
 >>> from graphmethods.problems import builtin
->>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A2")
+>>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A1")
 >>> [e.name for e in s.elements][1:]
-['scheme', 'lever', 'plans', 'result-heading', 'result']
+['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia', 'note-0', 'balancing']
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
+
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scene, Table, Text, notation as get_notation
+from graphmethods.scene import Group, Page, Scene, Table, Text, notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.sheets import forces as SF
+from graphmethods.sheets.acceleration import acceleration_plan
+from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
+from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
 from graphmethods.sheets.layout import Box, Sheet
 
 
@@ -75,7 +85,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     InputError
         A position outside 0…m, a page other than A1/A2, a problem that is not a linkage.
     """
-    from graphmethods.sheets.forces import force_plans, force_scheme, zhukovsky_forces
+    from graphmethods.sheets.forces import force_scheme, zhukovsky_forces
 
     case = _case(subject)
     nt = get_notation(notation)
@@ -84,35 +94,96 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
+    size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
+    note_mm = lettering(pg).label_mm
     rows = _result_rows(fa, i, nt)
-    size = lettering(pg).label_mm
-    table = Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size, name="result")
-    heading_w = text_width_mm(nt.word("forces.sheet_result"), size + 0.8) * 1.08
-    col_w = max(table.width_mm, heading_w) + 4.0
-    boxes = force_sheet_boxes(fa, i, (sheet.box[0], sheet.top, sheet.box[2], sheet.caption_y + 1.0), col_w,
-                              gap_mm=GAP_MM.get(pg.size, 8.0))
+    react_rows, _ = SF._plans_results(fa, i, nt, gravity)
+    inertia_rows = _inertia_rows(fa, i, nt)
+    tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
+              Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
+              Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
+    notes_text = [nt.word("forces.crank_prime")] + ([nt.word("forces.weights")] if gravity else [])
+    block = sheet.probe.title_block
+    inner = pg.inner_box()
+    tb = block.table(inner[2], inner[3]) if block is not None else None
+    col_w = max([t.width_mm for t in tables] + ([tb.width_mm - 5.0] if tb is not None else [])
+                + [text_width_mm(t, note_mm) for t in notes_text]
+                + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
+    gap = GAP_MM.get(pg.size, 8.0)
+    tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)
+    content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
+    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
+    accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
+    if accel is None:                               # the plan of accelerations does not fit: the others take its room
+        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False)
     at_k = i if phi_deg is None else None
     kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
-    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"])), "scheme"),
-             (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"])), "lever"),
-             (force_plans(case, at_k, **kw, page=region_page(pg, boxes["plans"])), "plans")]
+    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
+                           title=nt.word("forces.scheme_short"), layout=_panel_layout(boxes["scheme"])), "scheme"),
+             (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
+                               title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
+    if accel is not None:
+        parts.append((accel, "acceleration"))
+    for j in range(len(fa.plans)):
+        parts += [(group_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"group-{j}"])), f"group-{j}"),
+                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"])), f"plan-{j}")]
     groups = [inset(scene, nm) for scene, nm in parts]
-    tx, ty = boxes["result"][0] + 4.0, boxes["result"][1] + (lettering(pg).heading_mm + 3.0 if "lever" in
-                                                             _left_of(boxes, "result") else 0.0)
-    heading = Text((tx, ty + 4.0), nt.word("forces.sheet_result"), size_mm=size + 0.8, bold=True,
+    plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
+                  name="plans")
+    others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
+    tx, ty = boxes["result"][0] + 2.0, boxes["result"][1]
+    heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
                    name="result-heading")
-    table = Table((tx, ty + 8.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size, name="result")
+    table = Table((tx, ty + 2.5 * size), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size,
+                  name="result")
+    y = table.bottom_left[1] + 2.0 * size
+    reactions = Table((tx, y), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size,
+                      name="reactions")
+    y = reactions.bottom_left[1] + 2.0 * size
+    inertia = Table((tx, y), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size,
+                    name="inertia")
+    y = inertia.bottom_left[1] + 2.0 * size
+    column: list[Any] = [inertia]
+    column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
+               for k, t in enumerate(notes_text)]
+    y += len(notes_text) * 1.8 * note_mm + gap
+    graph_box = (boxes["result"][0], y, boxes["result"][2], boxes["result"][3])
+    if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
+        graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
+        column.append(graph)
+        groups.append((graph, g_scales))
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
-    return Scene(sheet.page(groups[0][1]), (sheet.header(), *(g for g, _ in groups), heading, table),
+    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, heading, table,
+                                            reactions, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _panel_layout(box: Box) -> SF.ForceFigureLayout:
+    """The scheme's or the lever's layout in a panel of the sheet: its largest force about a sixth of the
+    panel's smaller side (30…60 mm), room kept round the drawing for it."""
+    F = min(80.0, max(30.0, (min(box[2] - box[0], box[3] - box[1])) / 4.0))
+    return SF.ForceFigureLayout(largest_force_mm=F, margin_mm=0.6 * F + 6.0)
 
 
 def _left_of(boxes: dict[str, Box], name: str) -> list[str]:
     """The parts whose boxes end left of ``name``'s on its first line (their headings may run into it)."""
     b = boxes[name]
     return [k for k, o in boxes.items() if k != name and o[2] <= b[0] and o[1] <= b[1] < o[3]]
+
+
+def _inertia_rows(fa: Any, i: int, nt: Any) -> list[tuple[str, str, str]]:
+    """The inertia loads of position ``i``: each moving link's |F_i| (N) and M_i (N·m), round-off as 0."""
+    rows = [(nt.word("forces.link"), nt.quantity("|F_{" + nt.word("forces.sub_inertia") + "}|", "N"),
+             nt.quantity("M_{" + nt.word("forces.sub_inertia") + "}", "N·m"))]
+    loads = [f for fs in fa.applied.values() for f in fs if f.label.startswith("F_i")]
+    big_F = max([float(abs(f.F[i])) for f in loads] + [0.0])
+    big_M = big_F * float(np.ptp(np.abs([complex(fa.motion.z[p][i]) for p in fa.motion.points])) or 1.0)
+    for f in loads:
+        F, M = SF.round_off_zero(float(abs(f.F[i])), big_F), SF.round_off_zero(float(f.M[i]), big_M)
+        rows.append((f.label[3:], nt.number(F, sig=5), nt.number(M, sig=5)))
+    return rows
 
 
 def _result_rows(fa: Any, i: int, nt: Any) -> list[tuple[str, str, str]]:
@@ -136,31 +207,90 @@ def _aspect(points: Any) -> float:
     return min(5.0, max(0.2, w / h if h > 0 else 5.0))
 
 
-def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0) -> dict[str, Box]:
-    """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, the force plans and the result
-    table, arranged by the shapes of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
+def _acceleration(case: Any, i: int, m: int, nt: Any, pg: Page, box: Box) -> Scene | None:
+    """The plan of accelerations of position ``i`` in ``box`` (where the inertia forces' a_S and ε come from),
+    or None when it cannot be drawn there or its equations run out of the box."""
+    try:
+        scene = acceleration_plan(case, i, m=m, notation=nt, page=region_page(pg, box), title_block=False)
+    except InputError:
+        return None
+    boxes = [b for b in (e.bbox() for e in scene.elements) if b is not None]
+    inside = all(b[0] >= box[0] - 1.0 and b[1] >= box[1] - 1.0 and b[2] <= box[2] + 1.0 and b[3] <= box[3] + 1.0
+                 for b in boxes)
+    return scene if inside else None
 
-    A tall linkage (a shaper's rocker) takes a column the height of the sheet, as wide as its shape asks, and
-    the lever a column beside it; the force plans, long and flat, share the rest under the result table. A
-    flat linkage (a press) takes a row across the top beside the result table, the lever and the plans share
-    the row below.
+
+def _lever_width(aspect: float, height: float, room: float) -> float:
+    """The width (mm) of the lever's panel ``height`` mm high: its drawing's width at the height it can have,
+    room for its forces either side, and its lines of text (at least 130 mm, at most 45 % of ``room``)."""
+    return min(0.45 * room, max(130.0, aspect * max(height - 100.0, 40.0) + 110.0))
+
+
+def _pairs(fa: Any, i: int, n: int, gap_mm: float) -> Split:
+    """The groups cut from the linkage and their force plans: side by side in columns, each group over its
+    plan, when the drawings are tall; one pair under another, each group beside its plan, when they are flat
+    (a slider-crank's group and its long polygon)."""
+    flat = all(_aspect(c) > 1.3 for c in _pair_clouds(fa, i))
+    if flat:
+        rows = tuple((Split("h", ((f"group-{j}", 0.5), (f"plan-{j}", 0.5)), gap_mm=gap_mm), 1.0) for j in range(n))
+        return Split("v", rows, gap_mm=gap_mm)
+    cols = tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap_mm), 1.0) for j in range(n))
+    return Split("h", cols, gap_mm=gap_mm)
+
+
+def _pair_clouds(fa: Any, i: int) -> list[list[complex]]:
+    """The points of each group's cut drawing (m) and of each force polygon (N): their shapes."""
+    from graphmethods.sheets.force_sheet_plans import group_cloud, plan_sides
+
+    out = []
+    for j in range(len(fa.plans)):
+        out.append(group_cloud(fa, j, i))
+        out.append(list(np.cumsum([0j] + [F for _, F, _ in plan_sides(fa, j, i)])))
+    return out
+
+
+def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
+                      column_bottom: float | None = None, acceleration: bool = True) -> dict[str, Box]:
+    """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
+    (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
+    of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
+
+    The result column (``col_w`` wide) stands at the right, down to ``column_bottom`` (the title block's
+    top). Left of it, a tall linkage (a shaper's rocker) takes a column the height of the sheet, the lever
+    a column beside it, and the force plans one over another in a third; a flat linkage (a press) takes a
+    row across the top with the lever beside it, and the plans share the row below side by side.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import analysed
+    >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
+    >>> sorted(force_sheet_boxes(fa, i, (25.0, 27.0, 826.0, 579.0), 150.0))
+    ['acceleration', 'group-0', 'group-1', 'lever', 'plan-0', 'plan-1', 'result', 'scheme']
     """
     mo = fa.motion
-    scheme = _aspect(complex(mo.z[p][i]) for p in mo.points)
+    scheme = _aspect([complex(mo.z[p][i]) for p in mo.points] + SF._guide_ends(mo, SF._links_of(mo, i)[1]))
     lever = _aspect([0j] + [1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in mo.linkage.ground])
     x0, y0, x1, y1 = box
-    W, H = x1 - x0, y1 - y0
+    out = {"result": (x1 - col_w, y0, x1, y1 if column_bottom is None else column_bottom)}
+    left = (x0, y0, x1 - col_w - gap_mm, y1)
+    W, H = left[2] - left[0], left[3] - left[1]
+    n = len(fa.plans)
     if scheme < 1.2:                                            # a tall linkage: columns
         w_s = min(0.4, max(0.22, scheme * H / W + 0.1))
-        w_l = min(0.3, max(0.2, lever * H / W + 0.08))
-        right = Split("v", (("result", 1.0), ("plans", 6.0)), gap_mm=gap_mm)
-        tree = Split("h", (("scheme", w_s), ("lever", w_l), (right, 1.0 - w_s - w_l)), gap_mm=gap_mm)
+        rest = W * (1.0 - w_s)
+        w_l = _lever_width(lever, 0.42 * H, rest)
+        top = (Split("h", (("lever", w_l), ("acceleration", rest - w_l - gap_mm)), gap_mm=gap_mm) if acceleration
+               else Split("h", (("lever", 1.0),), gap_mm=gap_mm))
+        right = Split("v", ((top, 0.42), (_pairs(fa, i, n, gap_mm), 0.58)), gap_mm=gap_mm)
+        tree = Split("h", (("scheme", w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
-        h_s = min(0.55, max(0.35, (W - col_w) / scheme / H + 0.1))
-        top = Split("h", (("scheme", W - col_w - gap_mm), ("result", col_w)), gap_mm=gap_mm)
-        bottom = Split("h", (("lever", 0.4), ("plans", 0.6)), gap_mm=gap_mm)
+        h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
+        top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)) if acceleration else (("scheme", 1.0),),
+                    gap_mm=gap_mm)
+        w_l = _lever_width(lever, (1.0 - h_s) * H, W)
+        bottom = Split("h", (("lever", w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
         tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
-    return tree.boxes(box)
+    out.update(tree.boxes(left))
+    return out
 
 
 __all__ = ["force_analysis_sheet", "force_sheet_boxes", "sheet_page"]

@@ -273,11 +273,26 @@ def _labels(occ: Occupancy, specs: Sequence[LabelSpec], within: Box) -> list[Ele
 
 # ----------------------------------------------------------------------------- the force plans
 
+#: a value within this share of its neighbours' size is the round-off of its computation: printed as 0
+ROUND_OFF = 1e-9
+
+
+def round_off_zero(value: float, size: float) -> float:
+    """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
+    a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
+
+    >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
+    (0.0, -12.5)
+    """
+    return 0.0 if abs(value) <= ROUND_OFF * abs(size) else value
+
+
 def _plans_results(fa: Any, i: int, nt: Notation, gravity: bool) -> tuple[list[tuple[str, str]], list[str]]:
     """The table of reactions (rows) and the lines of M_b by the three methods beside the force plans."""
     rows = [(nt.word("forces.pair"), nt.quantity("|R|", "N"))]
+    big = max([float(abs(r.R[i])) for r in fa.reactions.values()] + [0.0])
     for key, r in sorted(fa.reactions.items(), key=lambda kv: (len(kv[0]), kv[0])):
-        rows.append((_markup(key), nt.number(float(abs(r.R[i])), sig=5)))
+        rows.append((_markup(key), nt.number(round_off_zero(float(abs(r.R[i])), big), sig=5)))
     Mb = float(fa.M_balance[i])
     M_b = nt.sym("forces.M_b")
     res_lines = [f"{nt.word('forces.Mb_plans', Mb=M_b)} = {nt.number(Mb, sig=6)} {nt.unit('N·m')}"]
@@ -464,7 +479,7 @@ def _lever_texts(fa: Any, i: int, nt: Notation) -> list[str]:
 def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                      gravity: bool = False, mu_l: Any = None, mu_F: Any = None, notation: Any = "en",
                      page: Any = None, title: str | None = None, title_block: bool = True,
-                     name: str = "zhukovsky-forces") -> Scene:
+                     name: str = "zhukovsky-forces", layout: ForceFigureLayout | None = None) -> Scene:
     """Zhukovsky's lever with every force of the force analysis (inertia forces, couples as pairs of
     forces, weights, the load) at the images of their points, and the balancing force F_b at the
     image of the crank pin; M_b = F_b·l_{{OA}} beside the force plans' value.
@@ -481,7 +496,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     """
     from graphmethods.scene import Point
 
-    L = LEVER_LAYOUT
+    L = layout or LEVER_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever
@@ -553,8 +568,9 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
 
     lk = mo.linkage
     segs, blocks = _links_of(mo, i)
-    els: list[Element] = [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
-                          if abs(z[a] - z[b]) > 0]
+    els: list[Element] = plates(segs, z, at)
+    els += [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
+            if abs(z[a] - z[b]) > 0]
     els += _guides(mo, blocks, at)
     els += [FixedPivot(at(z[p]), name=f"pivot-{p}") for p in lk.ground]
     els += [SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}")
@@ -564,6 +580,15 @@ def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -
     for el in els:
         occ.add_primitives(el.primitives())
     return els
+
+
+def plates(segs: Sequence[tuple[str, str]], z: dict[str, complex], at: ToMm) -> list[Element]:
+    """The links with three joints among ``segs`` (a triad's basic link) drawn as hatched plates
+    (:mod:`graphmethods.sheets.plates`)."""
+    from graphmethods.sheets.plates import plate, triangles
+
+    return [el for tri in triangles([(a, b) for a, b in segs if a in z and b in z])
+            for el in plate([at(z[p]) for p in tri], name="plate-" + "".join(tri))]
 
 
 def _strokes(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[tuple[int, complex, complex]]:
@@ -677,7 +702,8 @@ def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_
 
 def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                  gravity: bool = False, mu_l: Any = None, mu_F: Any = None, notation: Any = "en", page: Any = None,
-                 title: str | None = None, title_block: bool = True, name: str = "force-scheme") -> Scene:
+                 title: str | None = None, title_block: bool = True, name: str = "force-scheme",
+                 layout: ForceFigureLayout | None = None) -> Scene:
     """The linkage in one position with every applied force: the inertia forces at the centres of
     mass, the weights (``gravity``), the working load, each drawn to μ_F from its point; the
     inertia and load moments as arcs in their sense; the balancing moment on the crank. The
@@ -691,7 +717,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     ['force-0', 'force-1', 'force-2']
     """
 
-    L = SCHEME_LAYOUT
+    L = layout or SCHEME_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo = fa.motion
@@ -701,6 +727,8 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     z = {p: complex(mo.z[p][i]) for p in mo.points}
     forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i])) for fs in fa.applied.values() for f in fs]
     F_max = max([abs(F) for _, F, _, _ in forces] + [0.0])
+    M_size = F_max * float(max(np.ptp(np.real(list(z.values()))), np.ptp(np.imag(list(z.values())))))
+    forces = [(lbl, F, at_, round_off_zero(M, M_size)) for lbl, F, at_, M in forces]
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
     s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, L.largest_force_mm, what="the largest force")

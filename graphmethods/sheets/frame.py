@@ -58,10 +58,9 @@ class FastOccupancy(Occupancy):
         angles = sorted(range(0, 360, 15), key=lambda a: (min(abs(a - first), 360 - abs(a - first)), a))
         for strict in (True, False):
             for r in _LEADER_RADII:
-                for ang in angles:
-                    found = self.try_leader(at, text, r, ang, size_mm=size_mm, within=within, strict=strict)
-                    if found is not None:
-                        return found
+                found = self.try_leaders(at, text, r, angles, size_mm=size_mm, within=within, strict=strict)
+                if found is not None:
+                    return found
         lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
         self.add_label(lab)
         return lab, None

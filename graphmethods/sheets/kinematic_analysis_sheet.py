@@ -24,7 +24,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Page, Scale, Scene, notation as get_notation
+from graphmethods.scene import Page, Scale, Scene, Table, notation as get_notation
 from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.lettering import lettered_by_page
@@ -42,7 +42,8 @@ class AnalysisSheetLayout:
     gap_mm: float = 8.0                 # between the parts
     upper_share: float = 0.52           # the upper row (scheme, velocity plans) of the height
     scheme_share: float = 0.45          # the scheme of the upper row's width
-    diagrams_share: float = 0.4         # the slider's diagrams of the lower row's width
+    diagrams_share: float = 0.4         # the slider's diagrams (the table of velocities) of the lower row's width
+    table_pad_mm: float = 4.0           # beside the table of velocities
 
 
 ANALYSIS_SHEET_LAYOUT = AnalysisSheetLayout()
@@ -111,7 +112,6 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
         A plan position outside 0…m−1, repeated, more than four; a page other than A1.
     """
     from graphmethods.sheets.acceleration import acceleration_plan
-    from graphmethods.sheets.calculus import kinematic_diagrams
     from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan_grid
 
     case = _case(subject)
@@ -135,23 +135,47 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
                                page=region_page(pg, (split_x + gap / 2, top, x1, split_y)))
     parts = [(s_scheme, "scheme"), (s_vel, "velocity-plans")]
     lower = (split_y + gap, bottom)
-    right = x1
-    try:
-        probe = kinematic_diagrams(case, notation=nt, title_block=False, m=m,
-                                   page=region_page(pg, (x1 - lay.diagrams_share * (x1 - x0), lower[0], x1, lower[1])))
-    except InputError:                  # no slider: the acceleration plans take the whole row
-        probe = None
-    if probe is not None:
-        right = x1 - lay.diagrams_share * (x1 - x0) - gap
+    beside, right = _right_part(case, nt, m, pg, (x0, lower[0], x1, lower[1]), lay)
     w = (right - x0 - gap * (len(ks) - 1)) / len(ks)
     for j, k in enumerate(ks):
         left = x0 + j * (w + gap)
         cell = region_page(pg, (left, lower[0], left + w, lower[1]))
         parts.append((acceleration_plan(case, k, notation=nt, title_block=False, m=m, page=cell),
                       f"acceleration-plan-{k}"))
-    if probe is not None:
-        parts.append((probe, "kinematic-diagrams"))
-    return _assembled(sheet, parts, name)
+    return _assembled(sheet, parts + beside, name)
+
+
+def _right_part(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float],
+                lay: AnalysisSheetLayout) -> tuple[list[tuple[Scene, str]], float]:
+    """The lower row's right part: the slider's kinematic diagrams (their share of the width), or without a
+    slider the tables of velocities and of accelerations per position, one above the other (as wide as they
+    are); and where the acceleration plans end (mm). Nothing when neither can be drawn."""
+    from graphmethods.sheets.acceleration import acceleration_table
+    from graphmethods.sheets.calculus import kinematic_diagrams
+    from graphmethods.sheets.kinematics import velocity_table
+
+    x0, y0, x1, y1 = box
+    left = x1 - lay.diagrams_share * (x1 - x0)
+    try:
+        return ([(kinematic_diagrams(case, notation=nt, title_block=False, m=m,
+                                     page=region_page(pg, (left, y0, x1, y1))), "kinematic-diagrams")],
+                left - lay.gap_mm)
+    except InputError:                  # no slider: the tables in its place
+        pass
+    tables = ((velocity_table, "velocity-table"), (acceleration_table, "acceleration-table"))
+    for n in (2, 1):
+        h = (y1 - y0 - (n - 1) * lay.gap_mm) / n
+        rows = [(y0 + i * (h + lay.gap_mm), y0 + i * (h + lay.gap_mm) + h) for i in range(n)]
+        try:
+            probes = [fn(case, notation=nt, title_block=False, m=m, page=region_page(pg, (left, a, x1, b)))
+                      for (fn, _), (a, b) in zip(tables, rows)]
+        except InputError:              # too wide or too long: one table, or none
+            continue
+        widths = [t.width_mm for p in probes for t in p.elements if isinstance(t, Table)]
+        left = max(left, x1 - max(widths) - 2 * lay.table_pad_mm)
+        return ([(fn(case, notation=nt, title_block=False, m=m, page=region_page(pg, (left, a, x1, b))), nm)
+                 for (fn, nm), (a, b) in zip(tables, rows)], left - lay.gap_mm)
+    return [], x1
 
 
 def _assembled(sheet: Sheet, parts: list[tuple[Scene, str]], name: str) -> Scene:

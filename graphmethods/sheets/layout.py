@@ -108,21 +108,44 @@ def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     """
     seg = np.asarray(seg, dtype=float).reshape(-1, 4)
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
-    px, py = seg[None, :, 0], seg[None, :, 1]
-    dx, dy = seg[None, :, 2] - seg[None, :, 0], seg[None, :, 3] - seg[None, :, 1]
-    x0, y0, x1, y1 = (boxes[:, i, None] for i in range(4))
-    shape = (len(boxes), len(seg))
-    t0, t1 = np.zeros(shape), np.ones(shape)
-    hit = np.ones(shape, dtype=bool)
+    k, n = len(boxes), len(seg)
+    return _pairs_hit(np.tile(seg, (k, 1)), np.repeat(boxes, n, axis=0)).reshape(k, n)
+
+
+def _pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """:func:`segments_hit_boxes` of aligned pairs: does segment ``seg[i]`` pass through box ``boxes[i]``?
+
+    The same arithmetic pair by pair (the same divisions, the same comparisons), on 1-d arrays: the
+    pairs worth testing only, not every segment against every box.
+
+    >>> seg = np.array([[0.0, 10.0, 100.0, 10.0]] * 2)
+    >>> _pairs_hit(seg, np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])).tolist()
+    [True, False]
+    """
+    px, py = seg[:, 0], seg[:, 1]
+    dx, dy = seg[:, 2] - seg[:, 0], seg[:, 3] - seg[:, 1]
+    x0, y0, x1, y1 = boxes[:, 0], boxes[:, 1], boxes[:, 2], boxes[:, 3]
+    t0, t1 = np.zeros(len(seg)), np.ones(len(seg))
+    hit = np.ones(len(seg), dtype=bool)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for pk, qk in ((-dx, px - x0), (dx, x1 - px), (-dy, py - y0), (dy, y1 - py)):
-            pk = np.broadcast_to(pk, shape)
             zero = pk == 0
             hit &= ~(zero & (qk < 0))
             t = qk / np.where(zero, 1.0, pk)
             t0 = np.where(pk < 0, np.maximum(t0, t), t0)
             t1 = np.where(pk > 0, np.minimum(t1, t), t1)
     return hit & (t0 <= t1)
+
+
+def _leader_candidate(at, text: str, r: float, ang: float, size_mm: float
+                      ) -> tuple[Label, tuple[float, float], tuple[float, float]]:
+    """A label ``r`` mm from ``at`` at ``ang`` degrees and its leader's start and end (not yet tested)."""
+    x, y = at
+    a = math.radians(ang)
+    c, s = math.cos(a), math.sin(a)
+    end = (x + r * c, y - r * s)
+    d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
+    return place_label(end, text, d, gap_mm=0.8, size_mm=size_mm), (x + 1.5 * c, y - 1.5 * s), end
 
 
 class Occupancy:
@@ -235,20 +258,32 @@ class Occupancy:
                    & (boxes[:, 2] <= within[2] + TIE_MM) & (boxes[:, 3] <= within[3] + TIE_MM))
         b = self.box_array()
         if len(b) and ok.any():
-            d = self.pad + -TIE_MM                 # as _grown(box, -TIE_MM)
-            g = np.column_stack((boxes[:, 0] - d, boxes[:, 1] - d, boxes[:, 2] + d, boxes[:, 3] + d))
+            d = self.pad + -TIE_MM                 # as _grown(box, -TIE_MM) (x − d is x + (−d) to the bit)
+            g = boxes + np.array((-d, -d, d, d))
             hit = ((g[:, 0, None] < b[None, :, 2]) & (b[None, :, 0] < g[:, 2, None])
                    & (g[:, 1, None] < b[None, :, 3]) & (b[None, :, 1] < g[:, 3, None]))
             ok &= ~hit.any(axis=1)
         if not lines or not ok.any() or not len(self.segment_array()):
             return ok
         d = self.pad + TIE_MM                      # as _grown(box, TIE_MM)
-        g = np.column_stack((boxes[:, 0] - d, boxes[:, 1] - d, boxes[:, 2] + d, boxes[:, 3] + d))
+        g = boxes + np.array((-d, -d, d, d))
         rows = np.flatnonzero(ok)
         gr = g[rows]
-        near = self._near((gr[:, 0].min(), gr[:, 1].min(), gr[:, 2].max(), gr[:, 3].max()))
-        if near.any():
-            ok[rows] = ~segments_hit_boxes(self._seg[near], gr).any(axis=1)
+        near = np.flatnonzero(self._near((gr[:, 0].min(), gr[:, 1].min(), gr[:, 2].max(), gr[:, 3].max())))
+        if len(near):
+            e = _NEAR_MM                           # each box against the segments near it (as _near)
+            lo, hi = self._seg_lo[near], self._seg_hi[near]
+            i, j = np.nonzero((lo[None, :, 0] <= gr[:, 2, None] + e) & (hi[None, :, 0] >= gr[:, 0, None] - e)
+                              & (lo[None, :, 1] <= gr[:, 3, None] + e) & (hi[None, :, 1] >= gr[:, 1, None] - e))
+            if len(i) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
+                segs, grl, blocked = self.segments, gr.tolist(), set()
+                for a, k in zip(i.tolist(), near[j].tolist()):
+                    if a not in blocked and _segment_hits_box(segs[k][0], segs[k][1], grl[a]):
+                        blocked.add(a)
+                ok[rows[sorted(blocked)]] = False
+            else:
+                hit = _pairs_hit(self._seg[near[j]], gr[i])
+                ok[rows[np.unique(i[hit])]] = False
         return ok
 
     def crossings(self, boxes) -> np.ndarray:
@@ -265,12 +300,26 @@ class Occupancy:
         return segments_hit_boxes(seg[near], grown).sum(axis=1).astype(int)
 
     def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
-        """The first label beside ``at`` (directions × gaps) whose box is free; None when none is."""
-        for gap in gaps:
-            for d in directions:
-                lab = place_label(at, text, d, gap_mm=gap, size_mm=size_mm)
+        """The first label beside ``at`` (directions × gaps) whose box is free; None when none is.
+
+        The first direction alone, then the others of a gap in one :meth:`free` call (the same decisions
+        as :meth:`is_free` one by one, in the same order).
+        """
+        directions = tuple(directions)
+        if not directions:
+            return None
+        for k, gap in enumerate(gaps):
+            if k == 0:
+                lab = place_label(at, text, directions[0], gap_mm=gap, size_mm=size_mm)
                 if self.is_free(label_bbox(lab), within=within):
                     return lab
+            rest = directions[1:] if k == 0 else directions
+            if not rest:
+                continue
+            labels = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in rest]
+            hit = np.flatnonzero(self.free([label_bbox(lab) for lab in labels], within=within))
+            if len(hit):
+                return labels[int(hit[0])]
         return None
 
     def place_label(self, at, text: str, directions=("ne", "nw", "se", "sw", "n", "s", "e", "w"), *,
@@ -301,10 +350,9 @@ class Occupancy:
         down = (315, 225, 340, 200, 295, 245, 270)
         for side in ((up, down) if upward else (down, up)):
             for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0):
-                for ang in side:
-                    found = self.try_leader(at, text, r, ang, size_mm=size_mm, within=within)
-                    if found is not None:
-                        return found
+                found = self.try_leaders(at, text, r, side, size_mm=size_mm, within=within)
+                if found is not None:
+                    return found
         lab = place_label(at, text, directions[0], gap_mm=gap_mm, size_mm=size_mm)
         self.add_label(lab)
         return lab, None
@@ -313,23 +361,35 @@ class Occupancy:
                    strict: bool = True) -> tuple[Label, tuple[tuple[float, float], tuple[float, float]]] | None:
         """The label ``r`` mm from ``at`` at ``ang`` degrees, with its leader, registered, when it is free
         (and, ``strict``, its leader crosses no label); else None."""
-        x, y = at
-        a = math.radians(ang)
-        c, s = math.cos(a), math.sin(a)
-        end = (x + r * c, y - r * s)
-        d = "e" if c > 0.3 else "w" if c < -0.3 else ("n" if s > 0 else "s")
-        lab = place_label(end, text, d, gap_mm=0.8, size_mm=size_mm)
-        start = (x + 1.5 * c, y - 1.5 * s)
-        if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end)):
+        lab, start, end = _leader_candidate(at, text, r, ang, size_mm)
+        if self.is_free(label_bbox(lab), within=within) and not (strict and self._line_blocked(start, end, at)):
             self.add_label(lab)
             self.add_line((start, end))
             return lab, (end, start)
         return None
 
-    def _line_blocked(self, p, q) -> bool:
+    def try_leaders(self, at, text: str, r: float, angles, *, size_mm: float, within: Box | None = None,
+                    strict: bool = True) -> tuple[Label, tuple[tuple[float, float], tuple[float, float]]] | None:
+        """:meth:`try_leader` at each of ``angles`` in turn, the first that fits (registered), else None: the
+        same decisions, the ring's free-space tests in one :meth:`free` call."""
+        cands = [_leader_candidate(at, text, r, ang, size_mm) for ang in angles]
+        if not cands:
+            return None
+        ok = self.free([label_bbox(lab) for lab, _, _ in cands], within=within)
+        for (lab, start, end), free in zip(cands, ok.tolist()):
+            if free and not (strict and self._line_blocked(start, end, at)):
+                self.add_label(lab)
+                self.add_line((start, end))
+                return lab, (end, start)
+        return None
+
+    def _line_blocked(self, p, q, anchor=None) -> bool:
         """Does the segment p–q cross or touch a registered label box (within the tie quantum)? (A leader
-        may cross lines.)"""
+        may cross lines; the marks around its own ``anchor`` do not block it: it must reach the point.)"""
         b = self.box_array() + np.array([-TIE_MM, -TIE_MM, TIE_MM, TIE_MM])          # a touch crosses
+        if anchor is not None and len(b):
+            ax, ay = anchor
+            b = b[~((b[:, 0] <= ax) & (ax <= b[:, 2]) & (b[:, 1] <= ay) & (ay <= b[:, 3]))]
         seg = np.array([[p[0], p[1], q[0], q[1]]], dtype=float)
         return bool(len(b)) and bool(segments_hit_boxes(seg, b).any())
 
@@ -531,7 +591,7 @@ def clear_tick_labels(axis: AxisT, occ: Occupancy, *, keep_values: bool = False,
     """The axis with the tick labels that would cover something already registered left out (marks stay).
 
     With ``keep_values`` (a value axis) an axis is never left without values: when every label
-    would cover something, they go on the other side of a y axis (``other_side``), and when that
+    would cover something, they go on the other side of the axis (``other_side``), and when that
     is full too (or not asked for), the labels that cover no text stay (a thin line may run
     through a number).
 
@@ -556,8 +616,10 @@ def clear_tick_labels(axis: AxisT, occ: Occupancy, *, keep_values: bool = False,
 
     out = kept(axis, True)
     if keep_values and shown and not any(out[i] for i in shown):
-        if other_side and axis.direction == "y" and axis.labels_side in ("", "left"):
-            other = replace(axis, labels_side="right")
+        if other_side:
+            flip = {"": "right", "left": "right"} if axis.direction == "y" else \
+                {"": "above", "below": "above", "above": "below"}
+            other = replace(axis, labels_side=flip.get(axis.labels_side, axis.labels_side))
             out = kept(other, True)
             if any(out[i] for i in shown):
                 return replace(other, tick_labels=tuple(out))

@@ -198,6 +198,8 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
         for gap in (gaps[-1] + 2.0, gaps[-1] + 4.0, gaps[-1] + 6.5, gaps[-1] + 9.5, gaps[-1] + 13.0):
             cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
             ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=False)
+            if leaders is not None:
+                ok &= np.array([_leader_clear(occ, at, c) for c in cands], dtype=bool)
             if ok.any():
                 lab = cands[int(np.argmax(ok))]
                 _leader(occ, at, lab, leaders, name)
@@ -214,10 +216,12 @@ def _first_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, dirs, ga
     further out with a leader line back to it (when ``leaders`` collects them); None when there is none."""
     from graphmethods.scene.elements import label_bbox, place_label
 
-    far = (gaps[-1] + 2.5, gaps[-1] + 5.0, gaps[-1] + 8.0) if leaders is not None else ()
+    far = tuple(gaps[-1] + r for r in (2.5, 5.0, 8.0, 12.0, 17.0)) if leaders is not None else ()
     for gap in (*gaps, *far):
         cands = [place_label(at, text, d, gap_mm=gap, size_mm=size_mm) for d in dirs]
         ok = _free_of(occ, hard, [label_bbox(c) for c in cands], within=within, lines=True)
+        if gap > gaps[-1]:                      # a leader must not cross a label placed before
+            ok &= np.array([_leader_clear(occ, at, c) for c in cands], dtype=bool)
         if not ok.any():
             continue
         lab = cands[int(np.argmax(ok))]
@@ -227,21 +231,32 @@ def _first_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, dirs, ga
     return None
 
 
-def _leader(occ: Occupancy, at, lab, leaders: list | None, name: str) -> None:
-    """A thin leader from near ``at`` to the nearest point of the label's box, collected in ``leaders`` and
-    registered (when ``leaders`` collects them and the label is more than 1.5 mm away)."""
+def _leader_ends(at, lab) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The leader from near ``at`` to the nearest point of the label's box (None when it is within 1.5 mm)."""
     from graphmethods.scene.elements import label_bbox
 
-    if leaders is None:
-        return
     b = label_bbox(lab)
     near = (min(max(at[0], b[0]), b[2]), min(max(at[1], b[1]), b[3]))
     dd = np.asarray(near) - np.asarray(at)
     L = float(np.hypot(*dd))
-    if L > 1.5:
-        start = tuple((np.asarray(at) + dd / L * 0.9).tolist())
-        leaders.append(Line(start, near, style=THIN, name=f"leader-{name}"))
-        occ.add_line((start, near))
+    if L <= 1.5:
+        return None
+    return tuple((np.asarray(at) + dd / L * 0.9).tolist()), near
+
+
+def _leader_clear(occ: Occupancy, at, lab) -> bool:
+    """Does the leader a label far from ``at`` would need cross no label already placed?"""
+    ends = _leader_ends(at, lab)
+    return ends is None or not occ._line_blocked(*ends)
+
+
+def _leader(occ: Occupancy, at, lab, leaders: list | None, name: str) -> None:
+    """A thin leader from near ``at`` to the nearest point of the label's box, collected in ``leaders`` and
+    registered (when ``leaders`` collects them and the label is more than 1.5 mm away)."""
+    ends = None if leaders is None else _leader_ends(at, lab)
+    if leaders is not None and ends is not None:
+        leaders.append(Line(ends[0], ends[1], style=THIN, name=f"leader-{name}"))
+        occ.add_line(ends)
 
 
 def _crossings(occ: Occupancy, boxes) -> np.ndarray:
@@ -412,10 +427,17 @@ def _through(P0, d, X, name: str, style: Style) -> Line:
 def _label_lines(occ: Occupancy, lines: list[Line], texts: list[str], *, hard: Occupancy, area) -> list[Text]:
     """Each construction line's label (⊥ AB, ∥ guide) at its far end, across it."""
     out = []
+    within = (area[0], area[1] - 4, area[2] + 4, area[3] + 4)
     for el, text in zip(lines, texts):
         d = np.asarray(el.end) - np.asarray(el.start)
         prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
-        out.append(_place(occ, el.end, text, prefer, size_mm=SMALL_MM, hard=hard,
-                          within=(area[0], area[1] - 4, area[2] + 4, area[3] + 4), name=f"label-{el.name}",
-                          gaps=(0.6, 1.6, 3.0)))
+        for end in (el.end, el.start):          # a free place at either end before crossing a line
+            lab = _first_clear(occ, hard, end, text, _dirs(prefer), (0.6, 1.6, 3.0), SMALL_MM, within, None, "")
+            if lab is not None:
+                occ.add_label(lab)
+                out.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"label-{el.name}"))
+                break
+        else:
+            out.append(_place(occ, el.end, text, prefer, size_mm=SMALL_MM, hard=hard, within=within,
+                              name=f"label-{el.name}", gaps=(0.6, 1.6, 3.0)))
     return out

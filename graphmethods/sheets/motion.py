@@ -21,7 +21,7 @@ import math
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, nice_ticks, notation as get_notation
+from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, axis_ticks, notation as get_notation
 from graphmethods.scene.primitives import MAIN, THIN
 from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
@@ -105,8 +105,8 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     s_y = given_scale(mu_y, mu_sym, uy_cap, hi - lo, py1 - py0, what="the graph")
     origin = (px0, py0 + s_y.to_mm(hi))
     f = Frame(origin, s_x, s_y)
-    xticks = tuple(v for v in nice_ticks(0.0, x_span, s_x, min_gap_mm=12.0) if 0 <= v <= x_span)
-    yticks = tuple(v for v in nice_ticks(lo, hi, s_y, min_gap_mm=8.0) if lo <= v <= hi)
+    xticks = tuple(v for v in axis_ticks(0.0, x_span, s_x, min_gap_mm=12.0) if 0 <= v <= x_span)
+    yticks = tuple(v for v in axis_ticks(lo, hi, s_y, min_gap_mm=8.0) if lo <= v <= hi)
     dec = nt.decimal
     ax_x = Axis(origin, s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks, label=nt.quantity(x_sym, x_unit),
                 size_mm=SMALL_MM, decimal=dec, name="axis-x", skip_zero_label=lo < 0,
@@ -166,7 +166,7 @@ def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | Non
     J_lo, J_hi = float(J.min()), float(J.max())
     span = max(J_hi - J_lo, 1e-9 * max(J_hi, 1e-300))
     s_J = given_scale(None, "μ_J", nt.unit("kg·m²"), span * 1.25, px1 - px0, what="the inertia")
-    ticks = nice_ticks(J_lo - 0.2 * span, J_hi, s_J, min_gap_mm=12.0)
+    ticks = axis_ticks(J_lo - 0.2 * span, J_hi, s_J, min_gap_mm=12.0)
     base = max([t for t in ticks if t <= J_lo] or [J_lo])
     T_hi = max(float(T.max()), 1e-300)
     s_T = given_scale(None, "μ_T", nt.unit("J"), T_hi, py1 - py0, what="the energy")
@@ -177,7 +177,7 @@ def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | Non
                 ticks=tuple(t for t in ticks if base <= t <= J_hi), size_mm=SMALL_MM, decimal=nt.decimal,
                 name="axis-J")
     ax_T = Axis((px0, origin[1]), s_T, "y", min_value=0.0, max_value=T_hi, label=nt.quantity("T", "J"),
-                ticks=tuple(v for v in nice_ticks(0.0, T_hi, s_T, min_gap_mm=8.0) if 0 <= v <= T_hi),
+                ticks=tuple(v for v in axis_ticks(0.0, T_hi, s_T, min_gap_mm=8.0) if 0 <= v <= T_hi),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T", skip_zero_label=True)
     keep = np.unique(np.linspace(0, J.size - 1, min(J.size, 6000)).round().astype(int))
     els = [sheet.header(), ax_J, ax_T, Polyline(f.pts(J[keep], T[keep]), style=MAIN, name="curve-T"),

@@ -288,10 +288,8 @@ def acceleration_plan_steps(linkage: Any, position: int | None = None, *, notati
     ----------
     linkage : Case, Study, Mechanism or Linkage
         As :func:`graphmethods.sheets.acceleration.acceleration_plan` takes it.
-    position : int, optional
-        The position drawn (default: the fullest plan of the working stroke).
-    notation : {'en', 'ru', 'zh'}
-    page : 'slide', 'A4' … 'A1' or Page
+    position, notation, page
+        As :func:`velocity_plan_steps` takes them.
 
     Examples
     --------
@@ -475,8 +473,11 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     from graphmethods.sheets import wittenbauer as W
 
     nt, (pg, box, cap_mm, tb) = step_start(notation, page)
-    figure = W.wittenbauer_diagram(source, mu_J=mu_J, mu_T=mu_T, tangents=tangents, notation=nt, page=pg,
-                                   title_block=tb)
+    figure, c = _sheet_scaled_diagram(source, nt=nt, page=pg, title_block=tb, tangents=tangents) \
+        if mu_J is None and mu_T is None else (None, 1.0)
+    if figure is None:
+        figure = W.wittenbauer_diagram(source, mu_J=mu_J, mu_T=mu_T, tangents=tangents, notation=nt, page=pg,
+                                       title_block=tb)
     data = W.diagram_data(source, tangents=tangents, notation=nt)
     s_T, s_J = _axis_scale(figure, "axis-T"), _axis_scale(figure, "axis-J")
     res = data.result(s_J.per_mm, s_T.per_mm)
@@ -501,12 +502,44 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
         ray["max"],
         ray["min"],
         (nt.word("steps.kl_points"), ["point-k", "point-l", "name-k", "name-l"]),
-        (nt.word("steps.kl", kl=nt.number(float(res.kl_mm))), ["dimension-kl", "label-kl", "leader-kl"]),
+        (nt.word("steps.kl", kl=nt.number(float(res.kl_mm))) if c == 1.0 else
+         nt.word("steps.kl_sheet", kl=nt.number(float(res.kl_mm)), c=nt.number(c),
+                 kl1=nt.number(float(res.kl_mm) * c)), ["dimension-kl", "label-kl", "leader-kl"]),
         (nt.word("steps.J_F", JF=nt.sym("dynamics.J_F"), muT=nt.sym("mu_T"), wm=nt.sym("dynamics.omega_m"),
                  d=nt.sym("dynamics.delta"), J=f"{nt.number(float(res.J_F), sig=4)} {nt.unit('kg·m²')}"),
          lambda n: False),
     ]
     return _build(figure, rules, box, cap_mm, rest=len(rules))
+
+
+def _sheet_scaled_diagram(source, *, nt, page, title_block: bool, tangents: str) -> tuple[Any, float]:
+    """The energy–mass diagram of a study at the A1 dynamic sheet's scales, or at both of them c times larger
+    (c from 1, 2, 2.5, 4, 5 × 10ᵏ, the smallest whose diagram fits the page, both scales still convenient):
+    the rays keep the sheet's slopes, so the slides and the HTML stepper print its tan ψ_max, tan ψ_min and
+    J_F, and kl is the sheet's divided by c. (None, 1) for data without a linkage study."""
+    from graphmethods.dynamics.study import Study
+    from graphmethods.sheets import wittenbauer as W
+    from graphmethods.sheets.dynamic_analysis_sheet import sheet_scales
+    from graphmethods.units import CONVENIENT, convenient_at_least
+
+    if not isinstance(source, Study):
+        return None, 1.0
+    s_J, s_T, J_0 = sheet_scales(source, tangents=tangents)
+
+    def convenient(v: float) -> bool:
+        return abs(convenient_at_least(v * (1 - 1e-12)) / v - 1.0) < 1e-9
+
+    for k in range(7):
+        for m_ in CONVENIENT:
+            c = float(f"{m_!r}e{k}")
+            if not (convenient(c * s_J.per_mm) and convenient(c * s_T.per_mm)):
+                continue
+            try:
+                return W.wittenbauer_diagram(source, mu_J=c * s_J.per_mm, mu_T=c * s_T.per_mm, tangents=tangents,
+                                             notation=nt, page=page, title_block=title_block, J_0=J_0), c
+            except InputError:
+                continue
+    return None, 1.0
 
 
 # split out of this module, imported here so that every name reads as before: construction_steps.py

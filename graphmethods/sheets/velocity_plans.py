@@ -15,6 +15,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Frame, Line, Point, Polyline, Scale, Scene, Table, Text, markup, notation as get_notation
 from graphmethods.scene.elements import Element
+from graphmethods.scene.markup import MIN_TEXT_MM
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -394,11 +395,16 @@ def _velocity_column(plans, k: int, lk: _Linkage, nt) -> tuple[str, list[str], l
     return phi, _equations(plans, k, nt, lk), _omega_texts(plans, k, nt), head
 
 
-def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1: float, nt,
-                    lay: PlanLayout) -> list[Element]:
-    """The column beside the plan at ``at`` (mm): φ and the equations, the table of the vectors' drawn lengths
-    and values, ω of the links, the note of an ill-conditioned position."""
+def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1: float, bottom: float, nt,
+                    lay: PlanLayout, omega_at=None) -> list[Element]:
+    """The column beside the plan at ``at`` (mm), to end above ``bottom`` (mm): φ and the equations, the table
+    of the vectors' drawn lengths and values, ω of the links (under the plan from ``omega_at`` when given: a
+    column too long for the page), the note of an ill-conditioned position."""
     phi, eqs, omega_texts, head = texts
+    if omega_at is not None:
+        under = [Text((omega_at[0], omega_at[1] + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"omega-{num}")
+                 for i, (num, t) in enumerate(zip(_omega_numbers(plans.positions.mechanism), omega_texts))]
+        return under + _velocity_texts(plans, k, (phi, eqs, [], head), vectors, pts, s_v, at, x1, bottom, nt, lay)
     tx, ty = at
     els: list[Element] = [Text((tx, ty + i * lay.line_mm), line, size_mm=TEXT_MM, name=f"equation-{i}")
                           for i, line in enumerate([phi] + eqs)]
@@ -407,19 +413,30 @@ def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1
         L = math.dist(pts[v.start], pts[v.end])
         rows.append((_plan_markup(v.start) + _plan_markup(v.end), _num(nt, L, 2),
                      f"{v.symbol} = {_num(nt, L * s_v.per_mm, 3)}"))
-    table = Table((tx, ty + (len(eqs) + 1) * lay.line_mm + 2.0), tuple(rows), align="crl", size_mm=TABLE_MM,
-                  row_height_mm=lay.row_mm, name="table")
+    numbers = _omega_numbers(plans.positions.mechanism)
+    t_top = ty + (len(eqs) + 1) * lay.line_mm + 2.0
+    below = lay.after_table_mm + (len(omega_texts) + bool(plans.ill_conditioned[k])) * lay.line_mm
+    row = lay.row_mm                    # a long column (a triad's): the table's rows closer, down to 1.7 text heights
+    if t_top + len(rows) * row + below > bottom:
+        row = max(TABLE_MM * 1.7, (bottom - t_top - below) / len(rows))
+    table = Table((tx, t_top), tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")
     if table.top_right[0] > x1 + 1e-6:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
     els.append(table)
     wy = table.bottom_left[1] + lay.after_table_mm
-    numbers = _omega_numbers(plans.positions.mechanism)
     els += [Text((tx, wy + i * lay.line_mm), t, size_mm=TEXT_MM, name=f"omega-{num}")
             for i, (num, t) in enumerate(zip(numbers, omega_texts))]
     if plans.ill_conditioned[k]:
         els.append(Text((tx, wy + len(omega_texts[:len(numbers)]) * lay.line_mm + 1.0),
                         nt.word("kinematics.ill_note"), size_mm=SMALL_MM, name="ill-conditioned"))
     return els
+
+
+def _column_mm(texts, n_rows: int, lay: PlanLayout) -> float:
+    """The least height (mm) of the column beside a plan: its lines, and its table with the rows closest."""
+    phi, eqs, omega_texts, head = texts
+    row = max(TABLE_MM, MIN_TEXT_MM.get()) * 1.7
+    return (len(eqs) + 1 + len(omega_texts)) * lay.line_mm + 2.0 + n_rows * row + lay.after_table_mm
 
 
 def velocity_plan(linkage, position: int | None = None, *, m: int | None = None, omega_1: float | None = None,
@@ -474,6 +491,10 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
     right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in [phi] + eqs + omega_texts])
     split = _plan_split(sheet.box, right_w, lay)
     area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm)
+    omega_at = None
+    if _column_mm(texts, len(vectors) + 1, lay) > area[3] - sheet.top - lay.column_x_mm:   # ω under the plan
+        area = area[:3] + (area[3] - len(omega_texts) * lay.line_mm - lay.after_table_mm,)
+        omega_at = (x0, area[3] + lay.after_table_mm)
     xy = _image_xy(plans, images, k)
     arr = np.array(list(xy.values()))
     s_v, f = _fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_v, symbol="μ_v", unit="m/s", k=k, nt=nt, lay=lay)
@@ -492,7 +513,8 @@ def velocity_plan(linkage, position: int | None = None, *, m: int | None = None,
                          size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4), prefix="",
                          hard=hard, leaders=leaders)
     column = _velocity_texts(plans, k, texts, vectors, pts, s_v, (split + lay.column_x_mm, sheet.top + lay.column_x_mm),
-                             x1, nt, lay)
+                             x1, min(sheet.caption_y, sheet.page((s_v,)).content_box()[3] - 1.0) - lay.caption_room_mm,
+                             nt, lay, omega_at)
     legend = f"{lk.speed_text(nt)};  {nt.word('kinematics.legend')}"
     scales = (s_v,)
     elements = [sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + column

@@ -10,6 +10,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Scene, Table, Text, markup, notation as get_notation
+from graphmethods.scene.markup import MIN_TEXT_MM
 from graphmethods.sheets.layout import TEXT_MM, Sheet
 from graphmethods.sheets.linkage_figures import TABLE_MM, _end_extreme, _Linkage, _num, _plans_of, _pos_label, _rel_name
 
@@ -164,9 +165,8 @@ def velocity_table(linkage, *, m: int | None = None, omega_1: float | None = Non
     if t.ill_conditioned.any():
         notes.append("* " + nt.word("kinematics.ill_note"))
     avail = (sheet.caption_y - 6.0 * len(notes) - 4.0) - (sheet.top + 2.0)
-    row_h = min(7.0, avail / len(rows))
-    size = min(TABLE_MM, row_h * 0.5)
-    if row_h < 4.0:
+    row_h, size, fits = table_rows(avail, len(rows), most=7.0)
+    if not fits:
         raise InputError(f"{len(rows) - 1} positions do not fit on this sheet (rows would be {row_h:.1f} mm); "
                          f"give fewer positions or a larger page")
     probe = Table((0.0, 0.0), rows, align="c" + "r" * (len(rows[0]) - 1), size_mm=size, row_height_mm=row_h)
@@ -179,6 +179,20 @@ def velocity_table(linkage, *, m: int | None = None, omega_1: float | None = Non
     below = table.bottom_left[1] + 6.0
     texts = [Text((at[0], below + i * 6.0), n_, size_mm=TEXT_MM, name=f"note-{i}") for i, n_ in enumerate(notes)]
     return sheet.scene([sheet.header(), table] + texts, (), name=name)
+
+
+def table_rows(avail: float, n: int, *, most: float) -> tuple[float, float, bool]:
+    """The rows of a table of ``n`` rows in ``avail`` mm: (the row height to give, the text size, whether they
+    fit). Rows at most ``most`` mm; text up to :data:`TABLE_MM`, 0.65 of a row; on a course sheet the text is
+    lettered up to 3.5 mm and the rows grow with it, so they are given that much smaller.
+
+    >>> table_rows(70.0, 14, most=7.0)[0]
+    5.0
+    """
+    row = min(most, avail / n)
+    size = min(TABLE_MM, row * 0.65)
+    lettered = max(size, MIN_TEXT_MM.get())
+    return row * size / lettered, size, row >= 4.0 and lettered <= row * 0.65 + 1e-9
 
 
 def velocity_table_markdown(linkage, *, m: int | None = None, omega_1: float | None = None, notation="en") -> str:

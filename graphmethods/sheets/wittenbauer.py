@@ -39,24 +39,14 @@ import numpy as np
 
 from graphmethods.dynamics.wittenbauer import WittenbauerResult, wittenbauer
 from graphmethods.errors import InputError
-from graphmethods.scene import (
-    Axis,
-    Dimension,
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    Table,
-    Text,
-    markup,
-    nice_ticks,
-    notation as get_notation,
-)
-from graphmethods.scene.elements import Element, label_bbox
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import Axis, Dimension, Element, Line, Point, Polyline, Table, Text, label_bbox
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import MAIN, THIN, Label, Style
+from graphmethods.scene.scale import Scale
+from graphmethods.scene.scene import Scene
+from graphmethods.scene.ticks import axis_ticks
 from graphmethods.sheets.dynamics import (
     SMALL_MM,
     TEXT_MM,
@@ -331,7 +321,7 @@ class _DiagramPlace:
         s_J = Scale(nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), res.mu_J)
         s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
         X, Y = np.asarray(res.x_mm, dtype=float), np.asarray(res.y_mm, dtype=float)
-        ticks_T = tuple(t for t in nice_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
+        ticks_T = tuple(t for t in axis_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
         ticks_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=14.0)[0]
         R = lay.psi_radius_mm
         right = float(X[:-1].min()) >= R + lay.psi_room_mm
@@ -366,7 +356,7 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
     occ.add_line((ax_J.start, ax_J.tip))
     ax_T = clear_tick_labels(ax_T, occ, keep_values=True)
     occ.register(ax_T)
-    ax_J = clear_tick_labels(ax_J, occ, keep_values=True)
+    ax_J = clear_tick_labels(ax_J, occ, keep_values=True, other_side=True)
     occ.register(ax_J)
     return ax_T, ax_J
 
@@ -556,23 +546,23 @@ def wide_rows(rows) -> tuple:
     return tuple((a, b) for a, b, _ in rows)
 
 
-def _table(rows, at, name="result") -> Table:
-    probe = Table((0.0, 0.0), rows, header_rows=0, align="l" * len(rows[0]), size_mm=TABLE_MM, padding_mm=1.6)
+def _table(rows, at, name="result", size_mm: float = TABLE_MM) -> Table:
+    probe = Table((0.0, 0.0), rows, header_rows=0, align="l" * len(rows[0]), size_mm=size_mm, padding_mm=1.6)
     widths = tuple(w * 1.05 + 0.5 for w in probe.column_widths())       # room for the estimate's error
-    return Table(at, rows, col_widths_mm=widths, header_rows=0, align="l" * len(rows[0]), size_mm=TABLE_MM,
-                 row_height_mm=5.6, padding_mm=1.6, name=name)
+    return Table(at, rows, col_widths_mm=widths, header_rows=0, align="l" * len(rows[0]), size_mm=size_mm,
+                 row_height_mm=5.6 * size_mm / TABLE_MM, padding_mm=1.6, name=name)
 
 
-def _place_table(occ, rows, candidates, name="result") -> Table:
+def _place_table(occ, rows, candidates, name="result", size_mm: float = TABLE_MM) -> Table:
     """The table at the first candidate top-left corner where it covers nothing (the first otherwise)."""
-    probe = _table(rows, (0.0, 0.0))
+    probe = _table(rows, (0.0, 0.0), size_mm=size_mm)
     w, h = probe.width_mm, probe.height_mm
     for at in candidates:
         if occ.is_free((at[0], at[1], at[0] + w, at[1] + h)):
             break
     else:
         at = candidates[0]
-    table = _table(rows, at, name)
+    table = _table(rows, at, name, size_mm)
     occ.add_box((at[0], at[1], at[0] + w, at[1] + h))
     return table
 
@@ -622,7 +612,8 @@ def inertia_scale(mu_J, nt, J_lo: float, J_hi: float, room_mm: float) -> tuple[S
 # ----------------------------------------------------------------------------- 1. the compact A4 figure
 
 def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact", notation="en", page=None,
-                        title=None, problem=None, title_block: bool = True, name: str = "wittenbauer") -> Scene:
+                        title=None, problem=None, title_block: bool = True, name: str = "wittenbauer",
+                        J_0: float | None = None) -> Scene:
     """The Wittenbauer energy–mass diagram alone, on an A4 landscape sheet, with its result table.
 
     Parameters
@@ -634,6 +625,9 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
         kg·m² per mm (abscissa) and J per mm (ordinate); picked to fill the sheet when not given.
     tangents : {"exact", "textbook"}
         tan ψ with (1 ± δ/2)² or (1 ± δ) (a Study source only; a result keeps its own).
+    J_0 : float, optional
+        Where the J_e axis starts, kg·m² (0 ≤ J_0 ≤ J_e,min): the A1 sheet's, for a drawing of its
+        construction; picked from the data when not given (0, or a suppressed zero).
 
     Returns
     -------
@@ -660,7 +654,11 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
                        default_page=Page("A4", "landscape", frame=True))
     x0, y0, x1, y1 = sheet.box
     J_lo = float(data.J_e.min())
-    J_0 = inertia_origin(J_lo, float(data.J_e.max())) if suppressed_zero(J_lo, float(data.J_e.max())) else 0.0
+    if J_0 is None:
+        J_0 = inertia_origin(J_lo, float(data.J_e.max())) if suppressed_zero(J_lo, float(data.J_e.max())) else 0.0
+    elif not (math.isfinite(J_0) and 0.0 <= J_0 <= J_lo):
+        raise InputError(f"J_0 = {J_0!r} kg·m²: the J_e axis starts at 0 or below J_e,min = {J_lo:g} kg·m²")
+    J_0 = float(J_0)
     J_to, T_hi, T_lo = data.extent(J_0)         # the J axis from J_0, as on the A1 sheet; ΔT to k and l there
     probe_res = data.result(1.0, 1.0)
     table_w = _table(compact_rows(result_rows(probe_res, nt, J_0=J_0)), (0, 0)).width_mm

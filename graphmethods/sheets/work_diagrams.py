@@ -11,26 +11,19 @@ import numpy as np
 
 from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.errors import InputError
-from graphmethods.scene import (
-    Line,
-    Page,
-    Point,
-    Polyline,
-    Scale,
-    Scene,
-    markup,
-    notation as get_notation,
-    pick_angle_scale,
-    pick_scale,
-)
-from graphmethods.scene.elements import Element
+from graphmethods.scene import markup, notation as get_notation
+from graphmethods.scene.elements import Element, Line, Point, Polyline
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import THIN
+from graphmethods.scene.scale import Scale, pick_angle_scale, pick_scale
+from graphmethods.scene.scene import Scene
 from graphmethods.sheets.calculus import (
     LAYOUT,
     RAY,
     RESULT,
     _Band,
+    _column_table,
     _column_width,
     _curve_names,
     _fmt,
@@ -38,8 +31,6 @@ from graphmethods.sheets.calculus import (
     _pole,
     _side_block,
     _strip_axes,
-    _table,
-    _titled_table,
 )
 from graphmethods.sheets.layout import Occupancy, Sheet, problem_title
 from graphmethods.sheets.styles import PROJECTION
@@ -254,10 +245,12 @@ def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: 
     steps, projections, rays = _mean_ordinates(ws, b_M, x, M_d, M_r)
     pole_els = _pole(b_M, ws.H, nt.sym("calculus.P"), "pole", occ)
     occ.register(curve_d, curve_r, *steps, *projections, *rays)
+    ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
+    # the dimension of H first: its extension line at the origin passes where the φ axis letters its 0,
+    # and the axis moves a tick label it would cross beside its tick
+    dim = _h_dimension(b_M, ws.H, ords_M, f"H = {nt.number(ws.H)} {nt.unit('mm')}", "H", occ)
     axes, pos_M = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), m=len(x) - 1,
                               name="M", pos="pos-M")
-    ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
-    dim = _h_dimension(b_M, ws.H, ords_M, f"H = {nt.number(ws.H)} {nt.unit('mm')}", "H", occ)
     names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
                            "M")
     return b_M, [*axes, *steps, *projections, *rays, curve_d, curve_r, *pole_els, *dim, *names_M, *pos_M]
@@ -299,7 +292,7 @@ def _dE_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
 
 
 def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, occ: Occupancy, nt: Notation, *,
-                 given: bool, study: Any, work_unit: str) -> list[Element]:
+                 given: bool, study: Any, work_unit: str, floor: float) -> list[Element]:
     """The right column: the formulas of the scales, the closure, and the accuracy of each construction."""
     rx, drop, wd = x1 - ws.right_col, LAYOUT.block_drop_mm, ws.wd
     wu, mm, phi = nt.unit(work_unit), nt.unit("mm"), nt.sym("phi")
@@ -316,9 +309,9 @@ def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, 
               f"({nt.word('closure')})"
     elements += _side_block(rx, bands[2].top + drop, [f"{nt.sym('dE')} = {A_d} − {A_r};  {ws.s_A.symbol} = "
                                                       f"{nt.number(wd.mu_A)} {wu}/{mm}", closure], "formula-dE", occ)
-    table = _table(_accuracy_rows(nt, wd, work_unit), align="lrrrr", name="accuracy-table", right=x1,
-                   bottom=bands[2].top + ws.strip_mm)
-    return elements + _titled_table(table, _accuracy_title(nt, study), "accuracy-title") + [table]
+    return elements + _column_table(_accuracy_rows(nt, wd, work_unit), _accuracy_title(nt, study), align="lrrrr",
+                                    name="accuracy-table", title_name="accuracy-title", right=x1,
+                                    bottom=bands[2].top + ws.strip_mm, under=elements, floor=floor)
 
 
 def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M: Any = None, mu_phi: Any = None,
@@ -368,7 +361,7 @@ def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M:
     b_A, els_A = _work_strip(ws, occ, nt, x, work_unit)
     b_E, els_E = _dE_strip(ws, occ, nt, x, work_unit)
     column = _work_column(ws, (b_M, b_A, b_E), sheet.box[2], occ, nt, given=H_mm is not None, study=study,
-                          work_unit=work_unit)
+                          work_unit=work_unit, floor=sheet.box[3])
     scales = (ws.s_phi, ws.s_M, ws.s_A)
     elements = [sheet.header(), *els_M, *els_A, *els_E, *column, *sheet.captions(scales)]
     how = "given" if H_mm is not None else "picked: smallest convenient H whose work diagrams fit"

@@ -32,20 +32,18 @@ import numpy as np
 from graphmethods.dynamics.forces import prp, rpp, rpr, rrp, rrr, triad
 from graphmethods.dynamics.forces.base import (
     GROUND,
-    Cx,
-    Fl,
     Force,
     ForcePlan,
     GroupForces,
     Kin,
     Polygon,
     Reaction,
-    moment_about,
     on_link,
     reaction,
     resultant,
 )
 from graphmethods.dynamics.forces.lever import Lever, power_balance, zhukovsky
+from graphmethods.dynamics.forces.statics import Cx, Fl, moment_about
 from graphmethods.errors import InputError
 from graphmethods.units import is_finite
 

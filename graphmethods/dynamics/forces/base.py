@@ -10,6 +10,7 @@ and a couple (the normal force's line of action is moved off the slider's joint 
 h = M/N along the guide).
 
 >>> import numpy as np
+>>> from graphmethods.dynamics.forces.statics import moment_about
 >>> f = Force("G_2", F=np.array([-10j]), at=np.array([0.2 + 0j]), M=np.zeros(1))
 >>> float(moment_about([f], np.array([0j]))[0])         # 0.2 m × (−10 N) about the origin
 -2.0
@@ -21,36 +22,11 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.typing import NDArray
 
+from graphmethods.dynamics.forces.statics import Cx, Fl, cross, moment_about
 from graphmethods.errors import InputError
 
-Cx = NDArray[np.complex128]
-Fl = NDArray[np.float64]
-
 GROUND = "0"
-
-
-def cross(a: Cx | complex, b: Cx | complex) -> Fl:
-    """z-component of a × b for complex plane vectors (Im(conj(a)·b))."""
-    out: Fl = np.imag(np.conj(a) * b)
-    return out
-
-
-def unit(z: Cx) -> Cx:
-    """z/|z| (complex plane vectors)."""
-    out: Cx = z / np.abs(z)
-    return out
-
-
-def solve2(e1: Cx, e2: Cx, rhs: Cx) -> tuple[Fl, Fl]:
-    """Real x, y with ``x·e1 + y·e2 = rhs`` (Cramer's rule, vectorised): the intersection of two
-    directions in a force plan. A parallel pair gives inf/NaN: callers check first."""
-    det = cross(e1, e2)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        x: Fl = cross(rhs, e2) / det
-        y: Fl = cross(e1, rhs) / det
-    return x, y
 
 
 @dataclass(frozen=True, eq=False)
@@ -82,14 +58,6 @@ def resultant(forces: Sequence[Force], n: int) -> Cx:
     total: Cx = np.zeros(n, dtype=complex)
     for f in forces:
         total = total + f.F
-    return total
-
-
-def moment_about(forces: Sequence[Force], X: Cx) -> Fl:
-    """Σ [(at − X) × F + M] over the forces, N·m (n,)."""
-    total: Fl = np.zeros(np.shape(X), dtype=float)
-    for f in forces:
-        total = total + cross(f.at - X, f.F) + f.M
     return total
 
 
@@ -286,38 +254,49 @@ class DyadLoads:
         return Polygon((self.l2,), ((f"R_{outer}", R_outer), *self.known(self.f2)),
                        ((f"R_{self.l3}{self.l2}", None, R_32),))
 
+    def slot_couple(self, at: Cx) -> Fl:
+        """The couple of the slot of link 3 on block 2 pinned at ``at`` (m), N·m: the block's own moments about
+        its pin, reversed (the slot's force R_32 passes through the pin)."""
+        return -moment_about(self.f2, at)
+
+    def block_in_slot(self, a: str, P: str, at: Cx, R_32: Cx, Mc_32: Fl, u: Cx) -> BlockInSlot:
+        """Block 2, pinned at ``P`` (position ``at``, m) to link ``a``, sliding in the slot of link 3 (unit
+        direction ``u``) that pushes it with ``R_32`` (N) and the couple ``Mc_32`` (:meth:`slot_couple`): the
+        reaction at P from the block's polygon, and the steps and the polygon that say so (RPP, RPR).
+
+        >>> import numpy as np
+        >>> f = Force("F", F=np.array([-10j]), at=np.array([0.1 + 0j]), M=np.zeros(1))
+        >>> d = dyad_loads(("2", "3"), Kin(z={}, e={}, n=1), {"2": [f]})
+        >>> at = np.array([0j])
+        >>> b = d.block_in_slot("1", "A", at, np.array([4j]), d.slot_couple(at), np.array([1 + 0j]))
+        >>> float(d.slot_couple(at)[0]), xy(b.reactions[0].R[0]), b.steps[0]     # 10 N at 0.1 m; 10 − 4 N at A
+        (1.0, [0.0, 6.0], 'link 2: ΣM_A = 0 gives the couple of the slot on the block')
+        """
+        R_a2 = -(self.F2 + R_32)
+        ta = f"{a}{self.l2}"
+        return BlockInSlot(
+            reactions=(reaction(a, self.l2, "R", R_a2, at), reaction(self.l3, self.l2, "P", R_32, at, Mc_32, u)),
+            steps=(f"link {self.l2}: ΣM_{P} = 0 gives the couple of the slot on the block",
+                   f"link {self.l2}: ΣF_{self.l2} + R_{self.l3}{self.l2} + R_{ta} = 0"),
+            polygon=Polygon((self.l2,), (*self.known(self.f2), (f"R_{self.l3}{self.l2}", R_32)),
+                            ((f"R_{ta}", None, R_a2),)))
+
+
+@dataclass(frozen=True, eq=False)
+class BlockInSlot:
+    """What :meth:`DyadLoads.block_in_slot` finds: the reactions on the block (R_a2 at P, then R_32 with the
+    slot's couple), the first and the last step of the group's plan, and the block's polygon."""
+
+    reactions: tuple[Reaction, Reaction]
+    steps: tuple[str, str]
+    polygon: Polygon
+
 
 def dyad_loads(links: tuple[str, str], kin: Kin, loads: Mapping[str, Sequence[Force]]) -> DyadLoads:
     """The loads of a dyad's links ``links`` read from ``loads`` (link -> forces, N), summed."""
     l2, l3 = links
     f2, f3 = list(loads.get(l2, ())), list(loads.get(l3, ()))
     return DyadLoads(l2, l3, f2, f3, resultant(f2, kin.n), resultant(f3, kin.n))
-
-
-def tangential(forces: Sequence[Force], P: Cx, C: Cx) -> tuple[Cx, Cx]:
-    """The unit direction u of a link P→C and the tangential part ``R^τ`` at P of the reaction
-    that holds it, from the link's moments about C: ``(P − C) × R^τ + M_C = 0``, R^τ ⟂ PC
-    (positions m, forces N).
-
-    >>> import numpy as np
-    >>> f = Force("F", F=np.array([-10j]), at=np.array([0.5 + 0j]), M=np.zeros(1))   # 10 N down mid-link
-    >>> u, R_t = tangential([f], np.array([0j]), np.array([1 + 0j]))
-    >>> xy(u[0]), xy(R_t[0])              # half the load held at P
-    ([1.0, 0.0], [0.0, 5.0])
-    """
-    u = unit(C - P)
-    t = 1j * u
-    R_t: Cx = -moment_about(forces, C) / cross(P - C, t) * t
-    return u, R_t
-
-
-def tangential_step(link: str, C: str, outer: str, P: str) -> str:
-    """The step :func:`tangential` takes, in words: ``"link 2: ΣM_C = 0 gives R^τ_12 ⟂ AC"``.
-
-    >>> tangential_step("2", "B", "12", "A")
-    'link 2: ΣM_B = 0 gives R^τ_12 ⟂ AB'
-    """
-    return f"link {link}: ΣM_{C} = 0 gives R^τ_{outer} ⟂ {P}{C}"
 
 
 def xy(z: complex) -> list[float]:

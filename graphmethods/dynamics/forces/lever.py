@@ -24,7 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphmethods.dynamics.forces.base import Cx, Fl, Force, cross
+from graphmethods.dynamics.forces.base import Force
+from graphmethods.dynamics.forces.statics import Cx, Fl, cross
 
 #: link -> (a point O of it, its ω, v_O, and d: from O to a second point of the link), each (n,)
 Rigid = Mapping[str, tuple[Cx, Fl, Cx, Cx]]

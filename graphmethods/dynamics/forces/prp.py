@@ -19,17 +19,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from graphmethods.dynamics.forces.base import (
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    dyad_loads,
-    moment_about,
-    reaction,
-    solve2,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, dyad_loads, reaction
+from graphmethods.dynamics.forces.statics import moment_about, solve2
 from graphmethods.kinematics.groups import PRP
 
 

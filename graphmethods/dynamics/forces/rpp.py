@@ -20,48 +20,35 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from graphmethods.dynamics.forces.base import (
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    cross,
-    dyad_loads,
-    moment_about,
-    reaction,
-    solve2,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, dyad_loads, reaction
+from graphmethods.dynamics.forces.statics import cross, moment_about, solve2
 from graphmethods.kinematics.groups import RPP
 
 
 def solve(g: RPP, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
     """Reactions of an RPP group (see the module docstring; parameters as :func:`..rrr.solve`)."""
     d = dyad_loads(g.links, kin, loads)
-    l2, l3, f2, f3 = d.l2, d.l3, d.f2, d.f3
+    l2, l3, f3 = d.l2, d.l3, d.f3
     P, Rz = kin.z[g.P], kin.z[g.R]
     a, gl = carrier(g.P), g.guide.link
     u1, u2 = kin.direction(l2), kin.direction(l3)
     n1, n2 = 1j * u1, 1j * u2
-    Mc_32 = -moment_about(f2, P)                   # couple of the slot on the block, about P
-    F2, F3 = d.F2, d.F3
+    Mc_32 = d.slot_couple(P)
+    F3 = d.F3
     # yoke: ΣF_3 − N1·n1 + N2·n2 = 0  (R_23 = −R_32 = −N1·n1)
     N1, N2 = solve2(-n1, n2, -F3)
     R_32, R_g3 = N1 * n1, N2 * n2
     # yoke about R: M_R(F_3) + (P − R) × (−R_32) − Mc_32 + M_g3 = 0
     M_g3 = -(moment_about(f3, Rz) + cross(P - Rz, -R_32) - Mc_32)
-    R_a2 = -(F2 + R_32)
-    reactions = (reaction(a, l2, "R", R_a2, P), reaction(l3, l2, "P", R_32, P, Mc_32, u1),
-                 reaction(gl, l3, "P", R_g3, Rz, M_g3, u2))
-    ta, tg = f"{a}{l2}", f"{gl}{l3}"
+    block = d.block_in_slot(a, g.P, P, R_32, Mc_32, u1)
+    reactions = (*block.reactions, reaction(gl, l3, "P", R_g3, Rz, M_g3, u2))
+    tg = f"{gl}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
-        steps=(f"link {l2}: ΣM_{g.P} = 0 gives the couple of the slot on the block",
+        first=(),
+        steps=(block.steps[0],
                f"link {l3}: ΣF_{l3} + R_{l2}{l3} + R_{tg} = 0, R_{l2}{l3} ⟂ slot, R_{tg} ⟂ guide",
                f"link {l3}: ΣM_{g.R} = 0 gives the line of R_{tg}",
-               f"link {l2}: ΣF_{l2} + R_{l3}{l2} + R_{ta} = 0"),
-        first=(),
-        polygons=(
-            Polygon((l3,), d.known(f3), ((f"R_{l2}{l3}", n1, -R_32), (f"R_{tg}", n2, R_g3))),
-            Polygon((l2,), (*d.known(f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
+               block.steps[1]),
+        polygons=(Polygon((l3,), d.known(f3), ((f"R_{l2}{l3}", n1, -R_32), (f"R_{tg}", n2, R_g3))), block.polygon))
     return GroupForces(reactions, plan)

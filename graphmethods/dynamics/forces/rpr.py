@@ -21,45 +21,33 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from graphmethods.dynamics.forces.base import (
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    cross,
-    dyad_loads,
-    moment_about,
-    reaction,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, dyad_loads, reaction
+from graphmethods.dynamics.forces.statics import cross, moment_about
 from graphmethods.kinematics.groups import RPR
 
 
 def solve(g: RPR, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
     """Reactions of an RPR group (see the module docstring; parameters as :func:`..rrr.solve`)."""
     d = dyad_loads(g.links, kin, loads)
-    l2, l3, f2, f3, F2, F3 = d.l2, d.l3, d.f2, d.f3, d.F2, d.F3
+    l2, l3, f3, F3 = d.l2, d.l3, d.f3, d.F3
     P, Q = kin.z[g.P], kin.z[g.Q]
     a, b = carrier(g.P), carrier(g.Q)
     u = kin.direction(l3)
     nrm = 1j * u
-    Mc_32 = -moment_about(f2, P)                         # couple of the slot on the block, about P
+    Mc_32 = d.slot_couple(P)
     # link 3 about Q: M_Q(F_3) + (P − Q) × (−N·n) − Mc_32 = 0
     N = (moment_about(f3, Q) - Mc_32) / cross(P - Q, nrm)
     R_32 = N * nrm
     R_b3 = -(F3 - R_32)
-    R_a2 = -(F2 + R_32)
-    reactions = (reaction(a, l2, "R", R_a2, P), reaction(l3, l2, "P", R_32, P, Mc_32, u),
-                 reaction(b, l3, "R", R_b3, Q))
-    ta, tb = f"{a}{l2}", f"{b}{l3}"
+    block = d.block_in_slot(a, g.P, P, R_32, Mc_32, u)
+    reactions = (*block.reactions, reaction(b, l3, "R", R_b3, Q))
+    tb = f"{b}{l3}"
     plan = ForcePlan(
         group=g.name, links=(l2, l3),
-        steps=(f"link {l2}: ΣM_{g.P} = 0 gives the couple of the slot on the block",
+        first=((f"R_{l2}{l3}", -R_32),),
+        steps=(block.steps[0],
                f"link {l3}: ΣM_{g.Q} = 0 gives R_{l2}{l3} ⟂ the slot",
                f"link {l3}: ΣF_{l3} + R_{l2}{l3} + R_{tb} = 0",
-               f"link {l2}: ΣF_{l2} + R_{l3}{l2} + R_{ta} = 0"),
-        first=((f"R_{l2}{l3}", -R_32),),
-        polygons=(
-            Polygon((l3,), (*d.known(f3), (f"R_{l2}{l3}", -R_32)), ((f"R_{tb}", None, R_b3),)),
-            Polygon((l2,), (*d.known(f2), (f"R_{l3}{l2}", R_32)), ((f"R_{ta}", None, R_a2),))))
+               block.steps[1]),
+        polygons=(Polygon((l3,), (*d.known(f3), (f"R_{l2}{l3}", -R_32)), ((f"R_{tb}", None, R_b3),)), block.polygon))
     return GroupForces(reactions, plan)

@@ -20,19 +20,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from graphmethods.dynamics.forces.base import (
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    dyad_loads,
-    moment_about,
-    reaction,
-    solve2,
-    tangential,
-    tangential_step,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, dyad_loads, reaction
+from graphmethods.dynamics.forces.statics import moment_about, solve2, tangential, tangential_step
 from graphmethods.kinematics.groups import RRP
 
 

@@ -21,19 +21,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from graphmethods.dynamics.forces.base import (
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    dyad_loads,
-    on_link,
-    reaction,
-    solve2,
-    tangential,
-    tangential_step,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, dyad_loads, on_link, reaction
+from graphmethods.dynamics.forces.statics import solve2, tangential, tangential_step
 from graphmethods.kinematics.groups import RRR
 
 

@@ -31,36 +31,14 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from graphmethods.dynamics.forces.base import (
-    Cx,
-    Force,
-    ForcePlan,
-    GroupForces,
-    Kin,
-    Polygon,
-    moment_about,
-    on_link,
-    reaction,
-    resultant,
-)
+from graphmethods.dynamics.forces.base import Force, ForcePlan, GroupForces, Kin, Polygon, on_link, reaction, resultant
+from graphmethods.dynamics.forces.statics import Cx, moment_about
 from graphmethods.errors import InputError
 from graphmethods.kinematics.groups import Triad
 
 
 def solve(g: Triad, kin: Kin, loads: Mapping[str, Sequence[Force]], carrier: Callable[[str], str]) -> GroupForces:
-    """Reactions of a triad (see the module docstring).
-
-    Parameters
-    ----------
-    g : Triad
-        The group.
-    kin : Kin
-        Positions of its joints, m.
-    loads : mapping link -> forces
-        Every force on its four links (inertia, weight, load, reactions of later groups), N.
-    carrier : callable
-        The link that carries a known joint (``carrier("A") == "1"``).
-    """
+    """Reactions of a triad (see the module docstring; parameters as :func:`..rrr.solve`, loads on its four links)."""
     n = kin.n
     t, ks = g.links[0], g.links[1:]
     P = [np.broadcast_to(kin.z[p], (n,)) for p in g.outer]

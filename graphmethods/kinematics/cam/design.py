@@ -32,7 +32,7 @@ from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.cam.extrema import maximize
-from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, psi_0, to_cam_frame
+from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, pressure_angle, psi_0, to_cam_frame
 from graphmethods.kinematics.cam.problem import CamProblem, Phase
 
 Array = NDArray[np.float64]
@@ -157,19 +157,24 @@ def _smooth_pieces(phases: tuple[Phase, ...], kinds: tuple[str, ...]) -> Iterato
                 yield ph, lo, hi, hi < 1.0
 
 
-def _phase_max(ph: Phase, lo: float, hi: float, left: bool, g: Objective) -> tuple[float, float]:
+def _phase_max(ph: Phase, lo: float, hi: float, left: bool, g: Objective, stop_above: float | None = None
+               ) -> tuple[float, float]:
     """max over x in [lo, hi] of g(s, s1, s2) on one piece of a phase: (φ in degrees, value)."""
-    x, v = maximize(lambda t: g(*ph.values(t, left=left)[:3]), lo, hi)
+    x, v = maximize(lambda t: g(*ph.values(t, left=left)[:3]), lo, hi, stop_above=stop_above)
     return ph.start_deg + x * ph.angle_deg, v
 
 
-def _max_over(phases: tuple[Phase, ...], kinds: tuple[str, ...], g: Objective) -> tuple[float, float]:
-    """(φ in degrees, value) of the largest g over the phases of these kinds."""
+def _max_over(phases: tuple[Phase, ...], kinds: tuple[str, ...], g: Objective, stop_above: float | None = None
+              ) -> tuple[float, float]:
+    """(φ in degrees, value) of the largest g over the phases of these kinds (with ``stop_above``: any
+    value above it as soon as one is found, see :func:`~graphmethods.kinematics.cam.extrema.maximize`)."""
     best = (0.0, -math.inf)
     for ph, lo, hi, left in _smooth_pieces(phases, kinds):
-        cand = _phase_max(ph, lo, hi, left, g)
+        cand = _phase_max(ph, lo, hi, left, g, stop_above)
         if cand[1] > best[1]:
             best = cand
+        if stop_above is not None and best[1] > stop_above:
+            break
     return best
 
 
@@ -193,11 +198,14 @@ def _design_translating(p: CamProblem) -> float:
     return math.hypot(s0, e)
 
 
-def _alpha_max(p: CamProblem, r0: float, kind: str) -> tuple[float, float]:
-    """(φ, largest |α| in rad) over the phases of this kind at the pitch base radius r₀."""
+def _alpha_max(p: CamProblem, r0: float, kind: str, stop_above: float | None = None) -> tuple[float, float]:
+    """(φ, largest |α| in rad) over the phases of this kind at the pitch base radius r₀ (with ``stop_above``:
+    any |α| above it, as soon as the grid shows one)."""
     def g(s: Array, s1: Array, s2: Array) -> Array:
+        if p.oscillating:                   # α alone (the bisection on r₀ asks for it ~10⁴ times)
+            return np.abs(pressure_angle(r0, s, s1, arm=p.arm, pivot=p.pivot))
         return np.abs(pitch_frame(p.follower_type, r0, s, s1, s2, offset=p.offset, arm=p.arm, pivot=p.pivot).alpha)
-    return _max_over(p.phases, (kind,), g)
+    return _max_over(p.phases, (kind,), g, stop_above)
 
 
 def _design_oscillating(p: CamProblem) -> float:
@@ -211,7 +219,13 @@ def _design_oscillating(p: CamProblem) -> float:
         try:
             if psi_0(r0, p.arm, p.pivot) + swing >= math.pi:
                 return math.inf
-            return max(_alpha_max(p, r0, k)[1] - lim[k] for k in lim if any(ph.kind == k for ph in p.phases))
+            worst = -math.inf               # only its sign counts: a grid value over a limit settles it
+            for k in lim:
+                if any(ph.kind == k for ph in p.phases):
+                    worst = max(worst, _alpha_max(p, r0, k, stop_above=lim[k])[1] - lim[k])
+                    if worst > 0.0:
+                        break
+            return worst
         except InputError:
             return math.inf
     r0 = smallest_admissible(lo_r, hi_r, lambda r: excess(r) <= 0.0)
@@ -268,8 +282,16 @@ def _impacts(p: CamProblem) -> tuple[Impact, ...]:
     return tuple(out)
 
 
+#: the designs made in this process, by problem (frozen, hashable): the gallery, a sheet's figures and a class
+#: set draw one cam several times, and an oscillating follower's bisection on r₀ is the costly part
+_DESIGNS: dict[CamProblem, CamDesign] = {}
+
+
 def design(p: CamProblem) -> CamDesign:
     """Design (or take) the base radius and find the cam's extremes (see the module's docstring).
+
+    Made once per problem in a process (a :class:`CamDesign` is frozen: the same problem gives the same
+    design, shared).
 
     Parameters
     ----------
@@ -283,7 +305,27 @@ def design(p: CamProblem) -> CamDesign:
     ------
     InputError
         A base radius that cannot be designed or used (the message says why and what to give).
+
+    Examples
+    --------
+    >>> from graphmethods.kinematics.cam.problem import EXAMPLE, cam_from_dict
+    >>> design(cam_from_dict(EXAMPLE)) is design(cam_from_dict(EXAMPLE))
+    True
     """
+    try:
+        made = _DESIGNS.get(p)
+    except TypeError:                       # a problem holding something unhashable: designed afresh
+        return design_afresh(p)
+    if made is None:
+        if len(_DESIGNS) >= 64:
+            _DESIGNS.clear()
+        made = _DESIGNS[p] = design_afresh(p)
+    return made
+
+
+def design_afresh(p: CamProblem) -> CamDesign:
+    """:func:`design` without the process's cache (what the bench times); the same parameters, result and
+    errors."""
     rr = p.roller_radius
     designed = p.base_radius is None
     if p.contact == "flat":

@@ -27,7 +27,7 @@ _GOLD = (math.sqrt(5.0) - 1.0) / 2.0
 
 
 def maximize(f: Callable[[Array], Array], lo: float, hi: float, *, n: int = 513, keep: int = 6,
-             iterations: int = 90) -> tuple[float, float]:
+             iterations: int = 90, stop_above: float | None = None) -> tuple[float, float]:
     """The maximum of ``f`` on [lo, hi]: ``(x_max, f(x_max))``.
 
     Parameters
@@ -42,6 +42,9 @@ def maximize(f: Callable[[Array], Array], lo: float, hi: float, *, n: int = 513,
         How many of the grid's best local maxima are refined.
     iterations : int
         Golden-section steps (each shrinks the bracket by 0.618).
+    stop_above : float or None
+        When the grid already has a value above this, that grid point is returned unrefined (a question
+        of "is the maximum above it?" is then answered; the refined maximum is never below a grid value).
 
     Returns
     -------
@@ -56,6 +59,9 @@ def maximize(f: Callable[[Array], Array], lo: float, hi: float, *, n: int = 513,
     """
     x = np.linspace(lo, hi, n)
     v = np.asarray(f(x), dtype=float)
+    if stop_above is not None and bool(np.any(v > stop_above)):
+        k = int(np.argmax(v))
+        return float(x[k]), float(v[k])
     left = np.concatenate(([-np.inf], v[:-1]))
     right = np.concatenate((v[1:], [-np.inf]))
     peaks = np.flatnonzero((v >= left) & (v >= right))

@@ -134,6 +134,44 @@ def pitch_frame(follower_type: str, r0: float, s: Array, s1: Array, s2: Array, *
     return PitchFrame(B, W, V, alpha, kappa)
 
 
+def pressure_angle(r0: float, s: Array, s1: Array, *, arm: float, pivot: float) -> Array:
+    """The signed pressure angle α (rad) of an oscillating follower: :func:`pitch_frame`'s ``alpha`` alone.
+
+    The same operations in the same order as :func:`pitch_frame` (so the same bits), without the
+    second derivatives and the curvature: the base radius's design asks for α some ten thousand times.
+
+    Parameters
+    ----------
+    r0 : float
+        The pitch curve's base radius, m.
+    s, s1 : arrays
+        ψ and dψ/dφ at the cam angles, rad and rad/rad.
+    arm, pivot : float
+        l and a, m.
+
+    Returns
+    -------
+    array
+        α, rad.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> s, s1 = np.array([0.1, 0.3]), np.array([0.2, -0.4])
+    >>> g = pitch_frame("oscillating", 0.05, s, s1, np.zeros(2), arm=0.1, pivot=0.12)
+    >>> bool(np.array_equal(pressure_angle(0.05, s, s1, arm=0.1, pivot=0.12), g.alpha))
+    True
+    """
+    s, s1 = np.asarray(s, dtype=float), np.asarray(s1, dtype=float)
+    th = psi_0(r0, arm, pivot) + s
+    sn, cs = np.sin(th), np.cos(th)
+    a1 = arm * s1
+    W_x = a1 * sn + arm * sn
+    W_y = a1 * cs - (pivot - arm * cs)
+    with np.errstate(divide="ignore"):
+        return np.arctan((cs * W_y + sn * W_x) / (cs * W_x - sn * W_y))
+
+
 def to_cam_frame(points: Array, phi_rad: Array, sense: str) -> Array:
     """Points of the follower's frame at cam angles φ turned back by −φ into the cam's own frame (m).
 

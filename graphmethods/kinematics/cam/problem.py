@@ -1,15 +1,7 @@
 """The cam problem: a follower, a cam's rotation and a table of phases (``"kind": "cam"`` files).
 
-The file format is the contract of ``shared/cases/README.md``, "Cam mechanisms"::
-
-    {"kind": "cam",
-     "follower": {"type": "translating", "contact": "roller", "roller_radius": 0.01, "offset": 0.005},
-     "cam": {"sense": "ccw", "n_rpm": 120},
-     "motion": [{"phase": "rise", "angle_deg": 120, "lift": 0.02, "law": "cycloidal"},
-                {"phase": "dwell", "angle_deg": 60},
-                {"phase": "return", "angle_deg": 120, "lift": 0.02, "law": "harmonic"},
-                {"phase": "dwell", "angle_deg": 60}],
-     "pressure_angle_max_deg": 30, "pressure_angle_return_max_deg": 70}
+The file format is the contract of ``shared/cases/README.md``, "Cam mechanisms"; :data:`EXAMPLE` is its
+example (a translating roller follower, rise–dwell–return–dwell).
 
 An oscillating follower gives ``arm`` (m, pivot to roller centre), ``pivot`` (m, the pivot's
 distance from the cam centre) and each rise's or return's swing ``lift_deg`` (degrees) instead

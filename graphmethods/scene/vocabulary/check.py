@@ -51,6 +51,14 @@ WORDS = {
     "normal_wrong_length": ("ω²·l with the wrong length", "ω²·l с неверной длиной", "ω²·l 用错了杆长"),
     "crank_tangential_forgotten": ("crank's tangential component forgotten", "забыто касательное ускорение кривошипа",
                                    "漏了曲柄的切向加速度"),
+    # a cam profile (graphmethods.sheets.check.cam)
+    "pitch_for_profile": ("roller radius not subtracted (r_0 for r_b)", "не вычтен радиус ролика (r_0 вместо r_b)",
+                          "未减去滚子半径（把 r_0 当作 r_b）"),
+    "offset_wrong_side": ("offset on the wrong side", "смещение в другую сторону", "偏距偏在错误一侧"),
+    "s_from_centre":  ("s measured from the foot of the axis, not from the base circle",
+                       "S отложено от основания оси, а не от основной окружности", "s 从导路垂足量起，而非从基圆量起"),
+    "inversion_same_sense": ("follower turned with the cam (+φ), not against it", "толкатель повёрнут по вращению "
+                             "кулачка (+φ), а не против", "从动件按凸轮转向 (+φ) 转动，而非反转"),
     # the text and Markdown reports (graphmethods.sheets.check.wording): heading, columns, verdicts, lists
     "ok":             ("correct", "верно", "正确"),
     "check_of":       ("Check of {problem} ({title})", "Проверка: {problem} ({title})", "校核：{problem}（{title}）"),
@@ -169,6 +177,18 @@ WORDS = {
         "rad/s：连杆角速度的大小"),
     "tpl_omega_2_sense": ("\"cw\" or \"ccw\"", "\"cw\" (по часовой) или \"ccw\" (против)",
                           "\"cw\"（顺时针）或 \"ccw\"（逆时针）"),
+    "tpl_mu_l": ("m per mm: the length scale of your profile (μ_l)", "м в мм: масштаб длин профиля (μ_l)",
+                 "m/mm：廓线的长度比例尺 (μ_l)"),
+    "tpl_base_radius": ("m: the base radius r_b of the profile", "м: радиус основной шайбы профиля r_b",
+                        "m：实际廓线基圆半径 r_b"),
+    "tpl_pitch_base_radius": ("m: the base radius r_0 of the pitch curve (roller)", "м: радиус центровой окружности "
+                              "r_0 (ролик)", "m：理论廓线基圆半径 r_0（滚子）"),
+    "tpl_s_mm": ("list: s_k in mm at the positions 0, 1, … of the table", "список: S_k в мм в положениях 0, 1, … "
+                 "таблицы", "列表：表中位置 0、1、… 处的 s_k（mm）"),
+    "tpl_alpha_max_rise_deg": ("degrees: the largest pressure angle of the rise", "градусы: наибольший угол давления "
+                               "на подъёме", "度：推程最大压力角"),
+    "tpl_alpha_max_return_deg": ("degrees: the largest pressure angle of the return", "градусы: наибольший угол "
+                                 "давления на опускании", "度：回程最大压力角"),
     "tpl_mu_a": ("(m/s²) per mm: the acceleration scale of your plan (μ_a)",
         "(м/с²) в мм: масштаб плана ускорений (μ_a)",
         "(m/s²)/mm：加速度图比例尺（μ_a）"),

@@ -50,6 +50,12 @@ and the usual mistakes), :mod:`.acceleration` (an acceleration plan), :mod:`.che
 ([('results.J_F', 'wrong')], ['n_as_omega'])
 """
 
+__all__ = [
+    "KEY_KINDS", "MISTAKES", "PROBLEM_IDS", "SCHEMA", "TOL_MM", "TOL_REL", "TOP_LEVEL", "CheckReport",
+    "CycleData", "Item", "LinkageData", "Mistake", "check", "load_problem", "load_toml", "read_answers",
+    "validate_answers",
+]
+
 from graphmethods.sheets.check.checking import check
 from graphmethods.sheets.check.problems import PROBLEM_IDS, CycleData, LinkageData, load_problem
 from graphmethods.sheets.check.report import MISTAKES, TOL_MM, TOL_REL, CheckReport, Item, Mistake
@@ -61,9 +67,3 @@ from graphmethods.sheets.check.typed_answers import (
     read_answers,
     validate_answers,
 )
-
-__all__ = [
-    "KEY_KINDS", "MISTAKES", "PROBLEM_IDS", "SCHEMA", "TOL_MM", "TOL_REL", "TOP_LEVEL", "CheckReport",
-    "CycleData", "Item", "LinkageData", "Mistake", "check", "load_problem", "load_toml", "read_answers",
-    "validate_answers",
-]

@@ -284,6 +284,12 @@ def check_file(path, *, problem: str | None = None) -> Submission:
     named = problem or from_name
     report: CheckReport
     try:
+        from graphmethods.sheets.check import cam
+
+        if named is not None and cam.is_cam_problem(named):      # a cam profile: a drawing or a [cam] answers file
+            report = (cam.check_drawing(named, path) if path.suffix.lower() in DRAWING_SUFFIXES
+                      else cam.check_cam_answers(named, path))
+            return Submission(path, report.student or student, str(named), report=report)
         if path.suffix.lower() in DRAWING_SUFFIXES:
             from graphmethods.sheets.check import cad
 

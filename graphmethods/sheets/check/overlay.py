@@ -80,6 +80,10 @@ def overlay_label(it: Item, report: CheckReport, nt) -> str:
         return nt.word("check.sense_of", omega="ω_{2}")
     if section == "acceleration_plan":
         return ca.item_label(it.key, lambda key, **kw: nt.word("check." + key, **kw))
+    if section == "cam":                     # a cam profile (graphmethods.sheets.check.cam)
+        from graphmethods.sheets.check.cam import item_label
+
+        return item_label(it, nt)
     if name in ("tan_psi_max", "tan_psi_min"):
         return f"{nt.sym('worksheets.tan')} ψ_{{{name[-3:]}}}"
     if name in ("delta_W_max", "M_d"):

@@ -35,9 +35,14 @@ def notation_of(lang: str | Notation | None) -> Notation:
     return get_notation(lang or "en")
 
 
+def decimal(text: str, nt: Notation) -> str:
+    """``text`` with the notation's decimal separator between digits (``62.83`` -> ``62,83`` in ru)."""
+    return text if nt.decimal == "." else re.sub(r"(?<=\d)\.(?=\d)", nt.decimal, text)
+
+
 def word(nt: Notation, key: str, **fill: object) -> str:
-    """A word of the check family as plain text (the markup's characters; fills are taken literally)."""
-    return markup.plain(nt.word("check." + key, **{k: markup.literal(str(v)) for k, v in fill.items()}))
+    """A word of the check family as plain text (subscripts after ``_``; fills are taken literally)."""
+    return markup.typed(nt.word("check." + key, **{k: markup.literal(str(v)) for k, v in fill.items()}))
 
 
 def verdict_text(it: Item, nt: Notation) -> str:
@@ -52,7 +57,7 @@ def verdict_text(it: Item, nt: Notation) -> str:
     if not it.mistakes:
         return base
     sep = "、" if nt.code == "zh" else "; "
-    named = sep.join(markup.plain(nt.word("check." + code, J_e=nt.sym("dynamics.J_e"))) for code in it.mistakes)
+    named = sep.join(markup.typed(nt.word("check." + code, J_e=nt.sym("dynamics.J_e"))) for code in it.mistakes)
     return f"{base}：{named}" if nt.code == "zh" else f"{base}: {named}"
 
 
@@ -63,7 +68,7 @@ def item_label(it: Item, report: CheckReport, nt: Notation) -> str:
     if nt.code == "en":
         return it.label
     try:
-        return markup.plain(overlay_label(it, report, nt))
+        return markup.typed(overlay_label(it, report, nt))
     except (KeyError, IndexError, AssertionError):      # a key the overlay has no word for: the English label
         return it.label
 
@@ -75,8 +80,8 @@ def value_text(v: object, nt: Notation) -> str:
     if isinstance(v, str) and nt.code != "en":
         from graphmethods.sheets.check.overlay import overlay_value
 
-        return markup.plain(overlay_value(v, nt))
-    return _fmt(v)
+        return markup.typed(overlay_value(v, nt))
+    return decimal(_fmt(v), nt)
 
 
 def summary(report: CheckReport, nt: Notation) -> str:
@@ -98,7 +103,7 @@ def summary(report: CheckReport, nt: Notation) -> str:
 
 def _rows(report: CheckReport, nt: Notation) -> list[tuple[str, ...]]:
     return [(item_label(it, report, nt), value_text(it.expected, nt), value_text(it.student, nt),
-             value_text(it.deviation, nt), value_text(it.tolerance, nt), markup.plain(nt.unit(it.unit)) if it.unit
+             value_text(it.deviation, nt), value_text(it.tolerance, nt), markup.typed(nt.unit(it.unit)) if it.unit
              else "", verdict_text(it, nt)) for it in report.items]
 
 
@@ -116,7 +121,7 @@ def _tail(report: CheckReport, nt: Notation) -> list[list[str]]:
     colon, comma = ("：", "、") if nt.code == "zh" else (": ", ", ")
     if report.mistakes:
         out.append([word(nt, "mistakes_found")] + [
-            f"- {markup.plain(nt.word('check.' + m.code, J_e=nt.sym('dynamics.J_e')))}{colon}"
+            f"- {markup.typed(nt.word('check.' + m.code, J_e=nt.sym('dynamics.J_e')))}{colon}"
             f"{comma.join(labels[k] for k in m.items)}" for m in report.mistakes])
     undiag = [i for i in report.wrong if not i.mistakes]
     if undiag:
@@ -136,10 +141,10 @@ def note_text(note: str, nt: Notation) -> str:
         return note
     m = re.search(r"expected (\S+) from those$", note)
     if note.startswith("follows from"):
-        return word(nt, "follows_own", value=m.group(1)) if m else word(nt, "follows_plain")
+        return word(nt, "follows_own", value=decimal(m.group(1), nt)) if m else word(nt, "follows_plain")
     m = re.match(r"read from (.+?): (.*)$", note)
     if m:
-        return word(nt, "read_from", file=m.group(1), values=m.group(2))
+        return word(nt, "read_from", file=m.group(1), values=decimal(m.group(2), nt))
     return note
 
 

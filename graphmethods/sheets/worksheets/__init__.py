@@ -1,6 +1,6 @@
 """Printable worksheets with answer keys: variants from a seed, a student page and a key page each.
 
-Five kinds of worksheet (:data:`KINDS`):
+Six kinds of worksheet (:data:`KINDS`):
 
 ``indicator``      W1 style: measured areas between M_d and M_r (mm², with μ_M, μ_φ) → excess works,
                    energy levels, the energy indicator diagram at a stated μ_E, ΔW_max, ω_m, ω_max,
@@ -16,6 +16,9 @@ Five kinds of worksheet (:data:`KINDS`):
 ``acceleration-plan`` a slider-crank or a slotted lever in one position, its velocities given → the
                    acceleration plan at a stated μ_a, every vector in mm, ε of each link
                    (:mod:`graphmethods.sheets.worksheets.acceleration_plan`).
+``cam``            a disc cam with a translating knife or roller follower → the base radius from [α], the
+                   profile by inversion at a stated μ_l, s at the marked positions, the largest pressure
+                   angles (:mod:`graphmethods.sheets.worksheets.cam`).
 
 Each variant is drawn from its own numpy Generator seeded by (seed, kind, variant number), so a
 variant does not depend on how many were asked for; its numbers are "nice" (areas that close
@@ -94,12 +97,12 @@ from graphmethods.sheets.worksheets.variants import (
 
 # isort: split
 # the acceleration-plan kind has its own module (it draws linkages of several kinds); it registers itself
-from graphmethods.sheets.worksheets import acceleration_plan
+from graphmethods.sheets.worksheets import acceleration_plan, cam
 
 __all__ = [
     "KINDS", "PROBLEM_FORMAT", "RED", "SEGMENTS", "STATEMENTS", "TITLES", "ColorText", "EnergyMassVariant",
     "Grid", "IndicatorVariant", "PlanVariant", "Shapes", "StepMomentVariant", "Variant", "Worksheet",
-    "acceleration_plan", "answers", "arc", "clip_ray", "contents", "dxf_names", "energy_mass_construction",
+    "acceleration_plan", "answers", "cam", "arc", "clip_ray", "contents", "dxf_names", "energy_mass_construction",
     "energy_mass_from_press", "existing_outputs", "extremes", "file_names", "ground", "key_page",
     "markup", "moment_regions", "output_names", "parse_id", "pin", "region_perimeters_mm",
     "register", "slider", "slider_crank_scheme", "staircase", "student_page",

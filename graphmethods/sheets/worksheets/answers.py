@@ -83,6 +83,15 @@ KEYS: dict[str, tuple[tuple[str, tuple[tuple[str, str], ...]], ...]] = {
             ("epsilon_3", "rad/s²: ε of the slotted lever, magnitude (slotted lever)"),
             ("epsilon_3_sense", "\"cw\" or \"ccw\" (slotted lever)"))),
     ),
+    "cam": (
+        ("cam", (
+            ("mu_l", "m per mm: the length scale of your profile (μ_l)"),
+            ("base_radius", "m: the base radius r_b of the profile"),
+            ("pitch_base_radius", "m: the base radius r_0 of the pitch curve (roller)"),
+            ("s_mm", "list: s_k in mm at the positions 0, 1, … of the table"),
+            ("alpha_max_rise_deg", "degrees: the largest pressure angle of the rise"),
+            ("alpha_max_return_deg", "degrees: the largest pressure angle of the return"))),
+    ),
     "wittenbauer": (
         ("energy_mass", (
             ("mu_J", "kg·m² per mm: the inertia scale (μ_J)"),
@@ -98,7 +107,7 @@ KEYS: dict[str, tuple[tuple[str, tuple[tuple[str, str], ...]], ...]] = {
 }
 
 #: keys whose answer is a list (left blank as ``[]``)
-LISTS = frozenset({"arrows_mm", "works_J", "areas_mm2"})
+LISTS = frozenset({"arrows_mm", "works_J", "areas_mm2", "s_mm"})
 
 
 def template(kind: str, *, page: tuple[str, str] = ("A4", "portrait"), problem: str = "",

@@ -16,9 +16,9 @@ from graphmethods.scene import (
     Scene,
     Table,
     Text,
+    axis_ticks,
     in_language,
     markup,
-    nice_ticks,
     notation as get_notation,
 )
 from graphmethods.scene.elements import Element, Line, Point
@@ -272,7 +272,7 @@ def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     sh.add(Grid((X0, top, X1, top + H), anchor=(ax_x, y0), name="grid"))
     v_top, v_bot = s_E.to_value(y0 - top - 6.0), -s_E.to_value(top + H - y0 - 2.0)
     axis = Axis((ax_x, y0), s_E, "y", min_value=v_bot, max_value=v_top,
-                ticks=nice_ticks(v_bot, v_top, s_E, min_gap_mm=10.0), label=nt.quantity(nt.sym("E"), "J"),
+                ticks=axis_ticks(v_bot, v_top, s_E, min_gap_mm=10.0), label=nt.quantity(nt.sym("E"), "J"),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     sh.add(axis)
     occ = Occupancy()
@@ -365,7 +365,7 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
                   tick_labels=tuple(f"{d}{deg}" for d in range(0, 361, grid_deg)), label="φ", size_mm=SMALL_MM,
                   skip_zero_label=True, name="axis-phi")
     m_top = s_M.to_value(y0 - top - 7.0)
-    ax_M = Axis((ax_x, y0), s_M, "y", min_value=0.0, max_value=m_top, ticks=nice_ticks(0.0, m_top, s_M, min_gap_mm=8.0),
+    ax_M = Axis((ax_x, y0), s_M, "y", min_value=0.0, max_value=m_top, ticks=axis_ticks(0.0, m_top, s_M, min_gap_mm=8.0),
                 label=nt.quantity("M", "N·m"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-M")
     sh.add(ax_phi, ax_M)
     if key:
@@ -505,10 +505,10 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     X = origin[0] + np.asarray(v.J_e) / v.mu_J
     Y = origin[1] - np.asarray(v.delta_T) / v.mu_T
     curve_pts = list(zip(X.tolist(), Y.tolist()))
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=x_max, ticks=nice_ticks(0.0, x_max, s_J, min_gap_mm=12.0),
+    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=x_max, ticks=axis_ticks(0.0, x_max, s_J, min_gap_mm=12.0),
                 label=J_e_sym, size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True, name="axis-J")
     ax_T = Axis(origin, s_T, "y", min_value=y_bot, max_value=y_top,
-                ticks=nice_ticks(y_bot, y_top, s_T, min_gap_mm=10.0),
+                ticks=axis_ticks(y_bot, y_top, s_T, min_gap_mm=10.0),
                 label=nt.quantity(dT, "J"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
     ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts), _clear_tick_labels(ax_T, curve_pts)
     sh.add(ax_J, ax_T)

@@ -10,23 +10,19 @@ a value with its unit as a notation writes it. The words, symbols and units them
 from __future__ import annotations
 
 from graphmethods.scene.notation import Notation
-from graphmethods.titles import Title
+from graphmethods.titles import titles
 
 # the title of each kind of worksheet problem (Variant.title)
-TITLES = {
-    "indicator": Title.of({"en": "Energy indicator diagram and flywheel",
-                           "ru": "Векторная диаграмма избыточных работ и маховик",
-                           "zh": "能量指示图与飞轮转动惯量"}),
-    "step-moment": Title.of({"en": "Flywheel for a given resisting moment",
-                             "ru": "Маховик по заданному моменту сопротивления",
-                             "zh": "已知阻抗力矩求飞轮转动惯量"}),
-    "velocity-plan": Title.of({"en": "Velocity plan of a slider-crank mechanism",
-                               "ru": "План скоростей кривошипно-ползунного механизма",
-                               "zh": "曲柄滑块机构的速度多边形"}),
-    "wittenbauer": Title.of({"en": "Flywheel by the energy–mass (Wittenbauer) diagram",
-                             "ru": "Маховик по диаграмме энергомасс (Виттенбауэра)",
-                             "zh": "用能量–质量（维滕鲍尔）图求飞轮转动惯量"}),
-}
+TITLES = titles({
+    "indicator": ("Energy indicator diagram and flywheel", "Векторная диаграмма избыточных работ и маховик",
+                  "能量指示图与飞轮转动惯量"),
+    "step-moment": ("Flywheel for a given resisting moment", "Маховик по заданному моменту сопротивления",
+                    "已知阻抗力矩求飞轮转动惯量"),
+    "velocity-plan": ("Velocity plan of a slider-crank mechanism", "План скоростей кривошипно-ползунного механизма",
+                      "曲柄滑块机构的速度多边形"),
+    "wittenbauer": ("Flywheel by the energy–mass (Wittenbauer) diagram",
+                    "Маховик по диаграмме энергомасс (Виттенбауэра)", "用能量–质量（维滕鲍尔）图求飞轮转动惯量"),
+})
 
 # statements: the given data, then the tasks (one line each); {placeholders} are filled per variant
 STATEMENTS = {

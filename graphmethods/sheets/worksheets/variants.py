@@ -23,8 +23,9 @@ from graphmethods.sheets.worksheets.texts import TITLES
 from graphmethods.titles import Title
 from graphmethods.units import MAX_VARIANTS, json_text, omega_from_n
 
-KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer", "acceleration-plan")
-_KIND_CODE = {"indicator": 1, "step-moment": 2, "velocity-plan": 3, "wittenbauer": 4, "acceleration-plan": 5}
+KINDS = ("indicator", "step-moment", "velocity-plan", "wittenbauer", "acceleration-plan", "cam")
+_KIND_CODE = {"indicator": 1, "step-moment": 2, "velocity-plan": 3, "wittenbauer": 4, "acceleration-plan": 5,
+              "cam": 6}
 PROBLEM_FORMAT = "graphmethods-worksheet-problem"
 
 # ----------------------------------------------------------------------------- variants

@@ -1,0 +1,307 @@
+"""One force plan in its own panel, at its own μ_F: the force sheet's plans as the textbook draws them.
+
+On the A1 force sheet each Assur group's force plan, and the crank's, gets a panel of its own and the
+largest convenient μ_F (1, 2, 2.5, 4, 5 × 10ᵏ N/mm) at which its polygon fills that panel, printed under
+it; above it the group's vector equation (the sides in the order drawn, ``… = 0``). The group plan is
+:func:`graphmethods.sheets.forces._group_plan`'s (known sides solid, unknown dashed with their lines of
+action, each link's own polygon closed by the inner reaction). The crank's plan is the closed triangle
+the course draws: the balancing moment M_b replaced by the balancing force F_b at the crank pin,
+perpendicular to OA (F_b·l_OA = M_b, Zhukovsky's F_b), so that R_21 (+ F_i1) + F_b + R′_01 = 0; R′_01,
+the frame's reaction with F_b in place of M_b, closes it (dashed).
+
+>>> from graphmethods.problems import builtin
+>>> from graphmethods.sheets.forces import analysed
+>>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
+>>> [label for label, _, _ in plan_sides(fa, len(fa.plans) - 1, i)]
+['F_i1', 'R_21', 'F_b', "R'_01"]
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from graphmethods.errors import InputError
+from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
+from graphmethods.scene.notation import Notation
+from graphmethods.sheets import forces as SF
+from graphmethods.sheets.engine.lettering import lettering
+from graphmethods.sheets.layout import Sheet, given_scale
+
+#: a side shorter than this share of the polygon's largest is round-off (a force zero in this position)
+ROUND_OFF = 1e-9
+
+
+def plan_sides(fa: Any, j: int, i: int) -> list[tuple[str, complex, bool]]:
+    """The sides of plan ``j`` in position ``i`` as drawn: (label, force in N, known). A group's: its
+    polygon's known forces, then the unknowns. The crank's: the known forces (F_i1, R_21), the balancing
+    force F_b at the pin (Zhukovsky's, ⊥ OA), and R′_01 closing the triangle."""
+    pl = fa.plans[j]
+    poly = pl.polygons[0]
+    sides = [(lbl, complex(F[i]), True) for lbl, F in poly.known]
+    if not pl.group.startswith("I "):
+        return sides + [(lbl, complex(F[i]), False) for lbl, _, F in poly.closing]
+    F_b = complex(fa.lever.F_balance[i])
+    sides.append(("F_b", F_b, True))
+    total = sum(F for _, F, _ in sides)
+    return sides + [("R'_01", -total, False)]
+
+
+def _label(lbl: str, nt: Notation) -> str:
+    """A side's label in the books' markup (R′_01 primed)."""
+    if lbl.startswith("R'_"):
+        return "R′" + SF._markup("R" + lbl[2:], nt)[1:]
+    return SF._markup(lbl, nt)
+
+
+def _keep_clear(sheet: Sheet, text: Text) -> None:
+    """Labels placed later keep off ``text``."""
+    box = text.bbox()
+    if box is not None:
+        sheet.occ.add_box(box)
+
+
+def plan_equation(fa: Any, j: int, i: int, nt: Notation) -> str:
+    """The vector equation of plan ``j``: its sides (none of round-off size) summed to zero.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import analysed
+    >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
+    >>> plan_equation(fa, 0, i, get_notation("en"))
+    'R^{τ}_{12} + F_{i2} + F_{i3} + F_{c3} + R_{03} + R^{n}_{12} = 0'
+    """
+    sides = plan_sides(fa, j, i)
+    big = max(abs(F) for _, F, _ in sides)
+    return " + ".join(_label(lbl, nt) for lbl, F, _ in sides if abs(F) > ROUND_OFF * big) + " = 0"
+
+
+def _found(fa: Any, j: int, i: int, sides: list[tuple[str, complex, bool]]) -> list[tuple[str, float]]:
+    """The reactions plan ``j`` finds, each with its magnitude (N) as the reactions table prints it: the
+    unknown sides and the inner reactions (none for the crank's R′_01, which no table lists)."""
+    pl = fa.plans[j]
+    big = max([float(abs(r.R[i])) for r in fa.reactions.values()] + [0.0])
+    labels = [lbl for lbl, _, known in sides if not known and not lbl.startswith("R'") and "^" not in lbl]
+    labels += [lbl for inner in pl.polygons[1:] for lbl, _, _ in inner.closing]
+    out = []
+    for lbl in labels:
+        d = lbl.split("_")[-1]
+        key = "R_" + d if "R_" + d in fa.reactions else "R_" + d[::-1]
+        out.append((lbl, SF.round_off_zero(float(abs(fa.reactions[key].R[i])), big)))
+    return out
+
+
+def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
+               phi_deg: float | None = None) -> Scene:
+    """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
+    region of the sheet): its caption, its vector equation, the polygon at the largest convenient μ_F
+    that fills the panel, the scale under it.
+
+    Raises
+    ------
+    InputError
+        Every force of the plan zero in this position.
+    """
+    L = SF.PLANS_LAYOUT
+    nt = get_notation(nt)
+    pl = fa.plans[j]
+    cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ") else nt.word("forces.group", g=pl.group))
+    sheet = Sheet(nt=nt, page=page, title=cap, problem="", title_block=False)
+    sides = plan_sides(fa, j, i)
+    pts = np.cumsum([0j] + [F for _, F, _ in sides])
+    size = lettering(page).label_mm
+    eq = Text((sheet.box[0], sheet.top + size), plan_equation(fa, j, i, nt), size_mm=size, name=f"equation-{j}")
+    _keep_clear(sheet, eq)
+    found = _found(fa, j, i, sides)
+    value_mm = lettering(page).value_mm
+    pitch = 1.8 * value_mm
+    top = sheet.top + 2.0 * size + (len(found) + 0.5) * pitch + L.overhang_mm
+    area = (sheet.box[0] + L.left_mm + L.overhang_mm, top,
+            sheet.box[2] - L.left_mm - L.overhang_mm, sheet.caption_y - L.bottom_mm)
+    pw, ph = area[2] - area[0], area[3] - area[1]
+    if pw <= 10.0 or ph <= 10.0:
+        raise InputError("the force plan's panel is too small; give a larger page")
+    span = max(float(np.ptp(pts.real)) / pw, float(np.ptp(pts.imag)) / ph)
+    if span <= 0:
+        raise InputError("every force is zero in this position; there is no force plan to draw")
+    s_F = given_scale(None, "μ_F", nt.unit("N"), span * pw, pw, what="the force plan")
+    at = SF._cell(pts, (area[0], area[1], pw, ph), s_F)
+    els: list[Element] = [sheet.header(), eq]
+    mu = s_F.caption(nt).split(" = ", 1)[1]
+    for k, (lbl, R) in enumerate(found):
+        line = (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
+                f" = {nt.number(R, sig=5)} {nt.unit('N')}")
+        t = Text((sheet.box[0], sheet.top + size + (k + 1) * pitch), line, size_mm=value_mm, name=f"found-{j}-{k}")
+        _keep_clear(sheet, t)
+        els.append(t)
+    if pl.group.startswith("I "):
+        drawn, wanted = _crank_plan(j, sides, pts, at, nt, sheet, L)
+    else:
+        drawn, wanted = SF._group_plan(j, pl, pts, i, at, nt, sheet.occ, L)
+    els += drawn
+    els += SF._labels(sheet.occ, wanted, L.within(area))
+    return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
+
+
+def _crank_plan(j: int, sides: list[tuple[str, complex, bool]], pts: np.ndarray, at: SF.ToMm, nt: Notation,
+                sheet: Sheet, L: SF.ForceFigureLayout) -> tuple[list[Element], list[SF.LabelSpec]]:
+    """The crank's closed polygon: its sides head to tail, R′_01 dashed."""
+    els: list[Element] = []
+    labels: list[SF.LabelSpec] = []
+    for s, (lbl, _F, known) in enumerate(sides):
+        a, b = at(complex(pts[s])), at(complex(pts[s + 1]))
+        if math.dist(a, b) < L.min_mm:
+            continue
+        v = SF._drawn(sheet.occ, Vector(a, b, known=known, head_length_mm=L.head_mm,
+                                        name=f"{'known' if known else 'closing'}-{j}-{s}"))
+        els.append(v)
+        labels.append((v.mid, _label(lbl, nt), f"label-{j}-{s}"))
+    return els, labels
+
+
+def _side_point(fa: Any, lbl: str, i: int, pin: str, centre: str) -> complex:
+    """Where the force of a plan's side acts (m): a reaction at its joint, an applied force at its point, the
+    balancing force at the crank pin, R′_01 at the crank's centre."""
+    mo = fa.motion
+    if lbl == "F_b":
+        return complex(mo.z[pin][i])
+    if lbl.startswith("R'_"):
+        return complex(mo.z[centre][i])
+    if lbl.startswith("R"):
+        d = lbl.split("_")[-1]
+        r = fa.reactions.get("R_" + d) or fa.reactions["R_" + d[::-1]]
+        return complex(r.at[i])
+    for fs in fa.applied.values():
+        for f in fs:
+            if f.label == lbl:
+                return complex(f.at[i])
+    raise InputError(f"force {lbl!r} has no point of application")         # not reached: every side has one
+
+
+def _group_points(mo: Any, j_links: tuple[str, ...], g: Any) -> set[str]:
+    """The points of the group (or the crank) whose links are ``j_links``: its joints and its links' points."""
+    names = {v for v in vars(g).values() if isinstance(v, str) and v in mo.z}
+    names |= {v for f in ("inner", "outer") for v in getattr(g, f, ()) if v in mo.z}
+    names |= {p.name for p in mo.linkage.points if p.link in j_links}
+    return names
+
+
+def _group_of(fa: Any, j: int) -> Any:
+    """The linkage's group (or crank) of plan ``j`` (the plans run from the last group to the crank)."""
+    lk = fa.motion.linkage
+    return lk.crank if fa.plans[j].group.startswith("I ") else lk.groups[len(fa.plans) - 2 - j]
+
+
+def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
+    """The points (m) of plan ``j``'s group cut from the linkage in position ``i``: its shape."""
+    mo = fa.motion
+    return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
+
+
+def fit_with_arrows(points: list[complex], arrows: list[tuple[complex, complex]], s_F: Scale, area: SF.Box,
+                    nt: Notation, *, pad_mm: float = 14.0) -> tuple[Scale, SF.ToMm]:
+    """The largest convenient μ_l (m per mm) at which ``points`` (m) and the ``arrows`` drawn from their points
+    to μ_F (each (point m, force N)) fit ``area`` with ``pad_mm`` round them for the labels, and the map from a
+    point (m) to the page (mm) centring the whole drawing in ``area``.
+
+    >>> from graphmethods.scene import Scale
+    >>> s_l, at = fit_with_arrows([0j, 0.1 + 0j], [(0.1 + 0j, 100 + 0j)], Scale("μ_F", "N", 10.0),
+    ...                           (0.0, 0.0, 200.0, 100.0), get_notation("en"))
+    >>> s_l.per_mm, at(0j)
+    (0.001, (45.0, 50.0))
+    """
+    from graphmethods.scene.scale import pick_scale
+
+    room = (area[2] - area[0] - 2 * pad_mm, area[3] - area[1] - 2 * pad_mm)
+    z = np.asarray(points, dtype=complex)
+    span = max(float(np.ptp(z.real)) * room[1] / max(room[0], 1e-9), float(np.ptp(z.imag)), 1e-12)
+    first = pick_scale(span, max(room[1], 1e-9), symbol="μ_l", unit=nt.unit("m"))
+    tips = np.asarray([p for p, _ in arrows], dtype=complex)
+    offsets = np.asarray([F / s_F.per_mm for _, F in arrows], dtype=complex)
+    mu = first.per_mm
+    for _ in range(40):                         # up the series 1, 2, 2.5, 4, 5 × 10ᵏ until the arrows fit too
+        xs = np.concatenate([z.real / mu, tips.real / mu + offsets.real])
+        ys = np.concatenate([z.imag / mu, tips.imag / mu + offsets.imag])
+        if np.ptp(xs) <= room[0] + 1e-9 and np.ptp(ys) <= room[1] + 1e-9:
+            break
+        mu = _next_scale(mu)
+    s_l = Scale("μ_l", nt.unit("m"), mu)
+    cx = (area[0] + area[2]) / 2 - (float(xs.min()) + float(xs.max())) / 2
+    cy = (area[1] + area[3]) / 2 + (float(ys.min()) + float(ys.max())) / 2
+
+    def at(w: complex) -> tuple[float, float]:
+        return (cx + w.real / mu, cy - w.imag / mu)
+
+    return s_l, at
+
+
+def _next_scale(per_mm: float) -> float:
+    """The next larger value of the convenient series 1, 2, 2.5, 4, 5 × 10ᵏ after ``per_mm``.
+
+    >>> _next_scale(0.002), _next_scale(0.005), _next_scale(0.0025)
+    (0.0025, 0.01, 0.004)
+    """
+    k = math.floor(math.log10(per_mm) + 1e-9)
+    for m in (1.0, 2.0, 2.5, 4.0, 5.0, 10.0):
+        v = float(f"{m * 10.0 ** k:.12g}")
+        if v > per_mm * (1 + 1e-9):
+            return v
+    return float(f"{10.0 ** (k + 1) * 2:.12g}")
+
+
+def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
+    """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
+    its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
+    cut from (dashed: found on the plan)."""
+    L = SF.ForceFigureLayout(largest_force_mm=0.0, margin_mm=0.0)
+    nt = get_notation(nt)
+    mo = fa.motion
+    pl = fa.plans[j]
+    lk = mo.linkage
+    pts_names = _group_points(mo, tuple(pl.links), _group_of(fa, j))
+    sheet = Sheet(nt=nt, page=page, title=nt.word("forces.cut_group"), problem="", title_block=False)
+    z = {p: complex(mo.z[p][i]) for p in pts_names}
+    sides = plan_sides(fa, j, i)
+    big = max(abs(F) for _, F, _ in sides)
+    where = {lbl: _side_point(fa, lbl, i, lk.crank.pin, lk.crank.centre) for lbl, _, _ in sides}
+    w, h = sheet.box[2] - sheet.box[0], sheet.caption_y - sheet.top
+    F_mm = min(60.0, max(20.0, min(w, h) / 3.5))
+    L = SF.ForceFigureLayout(largest_force_mm=F_mm, margin_mm=0.6 * F_mm + 6.0)
+    area = (sheet.box[0], sheet.top + 4.0, sheet.box[2], sheet.caption_y - L.bottom_mm)
+    s_F = given_scale(None, "μ_F", nt.unit("N"), big, F_mm, what="the largest force")
+    arrows = [(where[lbl], F) for lbl, F, _ in sides]
+    arrows += [(complex(f.at[i]), complex(f.F[i])) for ln in pl.links for f in fa.applied.get(ln, ())]
+    s_l, at = fit_with_arrows(list(z.values()) + list(where.values()), arrows, s_F, area, nt)
+    segs, blocks = SF._links_of(mo, i)
+    segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0]
+    occ = sheet.occ
+    from graphmethods.scene import Line
+    from graphmethods.sheets.kinematic_symbols import PinJoint, SliderBlock
+
+    els: list[Element] = [sheet.header(), *(SF._drawn(occ, e) for e in SF.plates(segs, z, at))]
+    els += [SF._drawn(occ, Line(at(z[a]), at(z[b]), style=SF.LINK, name=f"link-{a}-{b}")) for a, b in segs]
+    els += [SF._drawn(occ, SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)),
+                                       name=f"block-{k}")) for k, (p, u) in enumerate(blocks) if p in z]
+    els += [SF._drawn(occ, PinJoint(at(z[p]), name=f"joint-{p}")) for p in sorted({q for sg in segs for q in sg})]
+    labels: list[SF.LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
+    applied = [(f.label, complex(f.F[i]), complex(f.at[i]), SF.round_off_zero(float(f.M[i]), big))
+               for ln in pl.links for f in fa.applied.get(ln, ())]
+    drawn, wanted = SF._applied(applied, at, s_F, nt, occ, L, lambda w_: SF._directions(w_, z, segs))
+    els += drawn
+    labels += wanted
+    own = {f[0] for f in applied}
+    for k, (lbl, F, _known) in enumerate(sides):
+        if lbl in own or abs(F) <= ROUND_OFF * big:
+            continue
+        a = at(where[lbl])
+        b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
+        if math.dist(a, b) < L.min_mm:
+            continue
+        els.append(SF._drawn(occ, Vector(a, b, known=lbl == "F_b", head_length_mm=L.head_mm, name=f"reaction-{k}")))
+        labels.append((b, _label(lbl, nt), f"label-reaction-{k}"))
+    els += SF._labels(occ, labels, L.within(area))
+    return SF._finish(sheet, els, (s_l, s_F), "", f"group-{j}")
+
+
+__all__ = ["group_panel", "plan_equation", "plan_panel", "plan_sides"]
