@@ -156,14 +156,42 @@ def test_the_chord_integration_error_against_the_exact_displacement(n_div):
     assert con.error_s < bound * h
 
 
-def test_a_uniform_phase_is_refused_by_the_sheet_with_the_reason():
-    from graphmethods.errors import InputError
-
+def _uniform(both: bool = False):
     d = copy.deepcopy(EXAMPLE)
     d["motion"][0]["law"] = "uniform"
+    if both:
+        d["motion"][2]["law"] = "uniform"
     d["base_radius"] = 0.03
-    with pytest.raises(InputError, match="uniform"):
-        cam_sheet(design(cam_from_dict(d)))
+    return design(cam_from_dict(d))
+
+
+@pytest.mark.parametrize("both", [False, True], ids=["uniform-rise", "uniform-rise-and-return"])
+def test_a_uniform_phase_is_drawn_with_impulses_to_infinity_at_its_hard_impacts(both):
+    cam = _uniform(both)
+    hard = [i for i in cam.impacts if i.kind == "hard"]
+    assert len(hard) == (4 if both else 2)
+    sheet = cam_sheet(cam, notation="ru")
+    names = [e.name for g in sheet.elements if hasattr(g, "elements") for e in g.elements]
+    arrows = [n for n in names if n.startswith("m0-impulse-")]
+    assert len(arrows) == len(hard) and sum(n.startswith("m0-infinity-") for n in names) == len(hard)
+    assert not any(n.startswith("m0-ray-") or n == "m0-pole" for n in names)      # d²s/dφ² is not integrated
+    assert any(n == "m1-pole" for n in names)                                     # ds/dφ is, once
+    texts = [e.text for g in sheet.elements if hasattr(g, "elements") for e in g.elements if hasattr(e, "text")]
+    assert any("жёсткие удары" in x for x in texts)
+    motion = next(g for g in sheet.elements if g.name == "motion")
+    for imp, arrow in zip(hard, [e for e in motion.elements if e.name.startswith("m0-impulse-")]):
+        assert (arrow.end[1] < arrow.start[1]) == (imp.jump > 0)       # up (smaller y on paper) where v jumps up
+    q = measure(sheet)
+    assert q.min_text_mm >= 3.5 and q.noise == ()
+
+
+def test_the_uniform_law_s_is_exact_at_the_nodes_by_one_chord_integration():
+    from graphmethods.sheets.cam_diagrams import construction
+
+    cam = _uniform(both=True)
+    con = construction(cam, 8, mu_phi=math.radians(1.5), mu_a=4e-4, room_mm=1e9, fit_v=60.0, fit_s=120.0)
+    assert con.impulses and con.first is None
+    assert con.error_s < 1e-15 * cam.problem.stroke * 1e3
 
 
 @pytest.mark.parametrize("name", list(CAMS))

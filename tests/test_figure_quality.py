@@ -39,7 +39,8 @@ CYCLE_FIGURES = ("moment_diagram", "excess_work_table", "energy_indicator", "ene
 
 CASES = [(p, f) for p in builtin.names() if p not in builtin.CAMS
          for f in (CYCLE_FIGURES if p in builtin.CYCLES else SHEETS + LINKAGE_FIGURES)]
-CASES += [(p, "cam_sheet") for p in builtin.CAMS]
+CAM_FIGURES = ("cam_sheet", "cam_motion_diagrams", "cam_combined_diagram", "cam_pressure_angle", "cam_inversion")
+CASES += [(p, f) for p in builtin.CAMS for f in CAM_FIGURES]
 
 _cache: dict = {}
 
@@ -54,8 +55,12 @@ def subject(name):
 def draw(problem, figure, lang):
     """The scene of a figure, or None when the problem cannot have it (the refusal is tested elsewhere)."""
     try:
-        if figure == "cam_sheet":
-            return sheets.cam_sheet(builtin.cam_problem(problem), notation=lang)
+        if figure in CAM_FIGURES:
+            import importlib
+
+            module = "cam_sheet" if figure in ("cam_sheet", "cam_inversion") else "cam_figures"
+            draw_cam = getattr(importlib.import_module(f"graphmethods.sheets.{module}"), figure)
+            return draw_cam(builtin.cam_problem(problem), notation=lang)
         if figure == "force_analysis_sheet":
             return sheets.force_analysis_sheet(subject(problem), position=3, notation=lang)
         return getattr(sheets, figure)(subject(problem), notation=lang)

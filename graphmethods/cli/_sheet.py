@@ -137,3 +137,39 @@ def check_signature(args) -> None:
              if str(getattr(args, a, "") or "").strip()]
     if given and getattr(args, "sheet", None) is None:
         raise InputError(f"{', '.join(given)}: for the sheet's main inscription; add --sheet FILE")
+
+
+def write_scene_set(scenes: dict, directory, *, stem: str, fmt: str, overwrite: bool) -> list:
+    """Write figures (key -> Scene, or key -> text) into ``directory`` as ``<stem>_<key>.<fmt>`` (text as
+    ``<stem>_<key>``), all or none: refused when a file exists (without ``overwrite``), written into a
+    temporary folder beside it and renamed into place (:func:`graphmethods.render.files.write_set`).
+
+    Raises
+    ------
+    InputError
+        ``directory`` is a file.
+    OutputExistsError
+        A file exists and ``overwrite`` is false (the message lists them).
+    """
+    from graphmethods.render.files import write_set
+
+    out = pathlib.Path(directory)
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--figures {out}: it is a file, not a directory")
+    blobs = {}
+    for key, obj in scenes.items():
+        if isinstance(obj, str):
+            blobs[out / f"{stem}_{key}"] = obj.encode("utf-8")
+        else:
+            from graphmethods.render import formats
+
+            blobs[out / f"{stem}_{key}.{fmt}"] = formats.to_bytes(obj, f".{fmt}")
+    if not overwrite:
+        existing = [str(p) for p in blobs if p.exists()]
+        if existing:
+            more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
+            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, or another "
+                                    f"--figures folder")
+    # the set is written into a temporary folder beside DIR and renamed into place as a whole
+    write_set(out, {p.name: data for p, data in blobs.items()}, overwrite=overwrite, what="--figures folder")
+    return list(blobs)

@@ -12,8 +12,12 @@ plain text by default, one JSON object with ``--json`` (keys of the contract in
     graphmethods cam shaper-cam --json --phi-deg 30,45
 
 ``-o FILE.svg|.pdf|.png|.dxf`` (older name ``--sheet``; ``-`` with ``--format`` for standard output)
-also writes the A1 cam sheet in ``--lang en|ru|zh``; an existing
-file is kept unless ``--force``; on any error nothing is written.
+also writes the A1 cam sheet in ``--lang en|ru|zh``; ``--figures DIR`` the A4 figures of the
+construction (``<case>_motion_diagrams``, ``_combined_diagram``, ``_pressure_angle``, ``_profile``, in
+``--format``, svg by default) as ``kinematics --figures`` does. An existing file is kept unless
+``--force``; on any error nothing is written.
+
+    graphmethods cam shaper-cam --figures out --lang ru
 """
 
 from __future__ import annotations
@@ -44,7 +48,11 @@ def add_parser(sub) -> None:
                    help="also write the A1 cam sheet (motion diagrams by graphical integration, the combined "
                         "ds/dφ–s diagram, the profile by inversion); - writes it to standard output in --format, and "
                         "nothing else (older name --sheet still accepted)")
-    add_figure_options(p, "sheet")
+    p.add_argument("--figures", metavar="DIR", default=None,
+                   help="also write the A4 figures (motion diagrams, combined diagram, pressure angle, profile by "
+                        "inversion) into DIR (created if missing)")
+    add_figure_options(p, "sheet and the figures", format_help="file format of the sheet (default: the file name's "
+                       "suffix; needed with -o -) and of the figures (default svg)")
     p.set_defaults(func=run)
 
 
@@ -125,6 +133,13 @@ def _text(res: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+def _stem(case: str) -> str:
+    """A file stem for the figures: the built-in name, or the problem file's name without its suffix."""
+    import pathlib
+
+    return pathlib.Path(case).stem if case.lower().endswith(".json") else pathlib.Path(case).name
+
+
 def run(args) -> int:
     from graphmethods.cli._sheet import check_sheet_target, refuse_two_on_stdout, report_stream
     from graphmethods.errors import InputError
@@ -134,9 +149,11 @@ def run(args) -> int:
     sheet = None
     if args.sheet is not None:
         sheet = check_sheet_target(args.sheet, args.force, args.format)
-    elif args.force or args.lang != "en" or args.format is not None:
-        raise InputError("--lang, --format and --force apply to the sheet; add -o FILE (older name --sheet), or -o - "
-                         "with --format")
+    elif args.figures is None and (args.force or args.lang != "en" or args.format is not None):
+        raise InputError("--lang, --format and --force apply to the sheet and the figures; add -o FILE (older name "
+                         "--sheet), -o - with --format, or --figures DIR")
+    if args.figures is not None and not str(args.figures).strip():
+        raise InputError("--figures is empty; give a folder (it is created if missing)")
     refuse_two_on_stdout(args.json, sheet)
     angles = _angles(args)
     cam = design(cam_problem(args.case))
@@ -147,8 +164,19 @@ def run(args) -> int:
         from graphmethods.sheets.cam_sheet import cam_sheet
 
         data = scene_bytes(cam_sheet(cam, notation=args.lang), sheet)
+    written: list = []
+    if args.figures is not None:
+        from graphmethods.cli._sheet import write_scene_set
+        from graphmethods.sheets.cam_figures import cam_figures
+
+        stem = _stem(args.case)
+        written = write_scene_set(cam_figures(cam, notation=args.lang), args.figures, stem=stem,
+                                  fmt=args.format or "svg", overwrite=args.force)
+        res["figures"] = [str(w) for w in written]
     out = json_text(res, indent=1) if args.json else _text(res)
     print(out, file=report_stream(sheet))
+    if written and not args.json:
+        print(f"wrote {len(written)} figures into {args.figures} (A4, {args.lang})", file=report_stream(sheet))
     if sheet is not None and data is not None:       # written last: an error above leaves no file behind
         sheet.write(data, overwrite=args.force)
         if not sheet.to_stdout:

@@ -424,35 +424,14 @@ def write_figures(case, m: int, directory, *, stem: str, notation: str = "en", f
     OutputExistsError
         If a file exists and ``overwrite`` is false (the message lists them).
     """
-    import pathlib
-
-    from graphmethods.errors import InputError, OutputExistsError
-    from graphmethods.render.files import write_set
+    from graphmethods.cli._sheet import write_scene_set
+    from graphmethods.errors import InputError
 
     if str(directory).strip() == "":
         raise InputError("--figures is empty; give a folder (it is created if missing)")
     scenes = (figures(case, m, notation=notation, plan_position=plan_position, epsilon_1=epsilon_1)
               if phi_deg is None else angle_figures(case, phi_deg, notation=notation, epsilon_1=epsilon_1))
-    out = pathlib.Path(directory)
-    if out.exists() and not out.is_dir():
-        raise InputError(f"--figures {out}: it is a file, not a directory")
-    blobs = {}
-    for key, obj in scenes.items():
-        if isinstance(obj, str):
-            blobs[out / f"{stem}_{key}"] = obj.encode("utf-8")
-        else:
-            from graphmethods.render import formats
-
-            blobs[out / f"{stem}_{key}.{fmt}"] = formats.to_bytes(obj, f".{fmt}")
-    if not overwrite:
-        existing = [str(p) for p in blobs if p.exists()]
-        if existing:
-            more = f" and {len(existing) - 2} more" if len(existing) > 2 else ""
-            raise OutputExistsError(f"{', '.join(existing[:2])}{more} exist; use --force to overwrite, or another "
-                                    f"--figures folder")
-    # the set is written into a temporary folder beside DIR and renamed into place as a whole
-    write_set(out, {p.name: data for p, data in blobs.items()}, overwrite=overwrite, what="--figures folder")
-    return list(blobs)
+    return write_scene_set(scenes, directory, stem=stem, fmt=fmt, overwrite=overwrite)
 
 
 def _sheet_data(case, args, phi_deg, n_rpm):

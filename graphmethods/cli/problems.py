@@ -16,7 +16,7 @@ def add_parser(sub) -> None:
                        "command takes a problem file: graphmethods study press, graphmethods kinematics shaper, "
                        "graphmethods check W1 ANSWERS.toml.")
     p.add_argument("name", metavar="NAME", nargs="?", default=None,
-                   help="with --file: the built-in linkage problem (or example file, see --examples) to print")
+                   help="with --file: the built-in linkage or cam problem (or example file, see --examples) to print")
     p.add_argument("--file", action="store_true",
                    help="print NAME's problem file as it ships, to redirect and edit (graphmethods problems press "
                         "--file > my_press.json; then graphmethods study my_press.json)")

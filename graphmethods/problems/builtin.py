@@ -160,7 +160,7 @@ def example_files() -> dict[str, pathlib.Path]:
 
 
 def file_text(name: str) -> str:
-    """The problem file of a built-in linkage, or an example student's file (by its file name), as it
+    """The problem file of a built-in linkage or cam, or an example student's file (by its file name), as it
     ships: to redirect, edit and give back.
 
     >>> import json
@@ -177,6 +177,8 @@ def file_path(name: str) -> pathlib.Path:
     examples = example_files()
     if str(name) in examples:
         return examples[str(name)]
+    if _key(name) in CAMS:
+        return DATA / CAMS[_key(name)]
     return case_path(name)
 
 

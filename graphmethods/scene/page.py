@@ -34,7 +34,8 @@ class TitleBlock:
     notation. ``form`` is ``"simple"`` (this table), ``"gost"`` (ГОСТ 2.104 form 1, 185 × 55 mm)
     or ``"gb"`` (GB/T 10609.1, 180 × 56 mm), see :mod:`graphmethods.scene.title_blocks`;
     ``person`` are the student's rows ((heading, text), the simple form) and ``fields`` the
-    standard forms' cells (student, organisation, sheet_no, sheets, designation, ...).
+    standard forms' cells (student, organisation, sheet_no, sheets, designation, ...);
+    ``scale_rows`` more scale captions (markup), one row each below the scales (a narrow page's).
     """
 
     title: str
@@ -45,6 +46,7 @@ class TitleBlock:
     form: str = "simple"
     person: tuple[tuple[str, str], ...] = ()
     fields: tuple[tuple[str, str], ...] = ()
+    scale_rows: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "size_mm", lettered_size(self.size_mm))     # 3.5 mm and up on A1/A2
@@ -55,6 +57,7 @@ class TitleBlock:
             rows.append((self.headings[1], markup.literal(self.problem)))
         if self.scales:
             rows.append((self.headings[2], ";  ".join(self.scales)))
+        rows += [("", s) for s in self.scale_rows]
         rows += [(h, markup.literal(t)) for h, t in self.person]
         return tuple(rows)
 

@@ -28,9 +28,9 @@ import numpy as np
 from graphmethods.dynamics.graphical_calculus import ChordIntegral, integrate_by_chords
 from graphmethods.errors import InputError
 from graphmethods.kinematics.cam import CamDesign
-from graphmethods.scene import Axis, Line, Point, Polyline, Region, Scale, Table, Text, pick_scale
+from graphmethods.scene import Axis, Line, Point, Polyline, Region, Scale, Table, Text, Vector, pick_scale
 from graphmethods.scene.elements import Element, make_label
-from graphmethods.scene.notation import Notation, get as get_notation
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.scene.scale import pick_angle_scale
 from graphmethods.sheets.calculus import CHORD, RAY
@@ -84,9 +84,15 @@ class Construction:
     """The graphical integration's numbers: the two chord integrals and the nodes (rad)."""
 
     nodes: np.ndarray
-    first: ChordIntegral           # d²s/dφ² -> ds/dφ
-    second: ChordIntegral          # ds/dφ (chords) -> s
+    first: ChordIntegral | None    # d²s/dφ² -> ds/dφ; None when a uniform phase makes it infinite (impulses)
+    second: ChordIntegral          # ds/dφ (chords, or the exact steps of the impulses' case) -> s
     error_s: float                 # largest |s_chords − s| at the nodes, m (rad)
+    mu_v: float = 0.0              # the velocity analogue's scale, units per mm
+
+    @property
+    def impulses(self) -> bool:
+        """A uniform phase: d²s/dφ² has impulses (hard impacts), ds/dφ is drawn exactly and integrated once."""
+        return self.first is None
 
 
 def nodes(cam: CamDesign, n_div: int) -> np.ndarray:
@@ -100,12 +106,20 @@ def nodes(cam: CamDesign, n_div: int) -> np.ndarray:
     return np.array(pts)
 
 
+def has_impulses(cam: CamDesign) -> bool:
+    """Whether a phase's law is uniform: its acceleration analogue is infinite (impulses) where it starts and
+    ends, so the diagrams draw ds/dφ exactly and integrate it once (the textbook's way)."""
+    return any(ph.law == "uniform" for ph in cam.problem.phases)
+
+
 def construction(cam: CamDesign, n_div: int, *, mu_phi: float, mu_a: float, room_mm: float, fit_v: float,
                  fit_s: float) -> Construction:
     """Integrate the acceleration analogue twice by chords, with poles no further than ``room_mm``.
 
     The pole distances are round (1, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10^k mm), the smallest for which the
-    integral fits ``fit_v`` / ``fit_s`` mm of its diagram.
+    integral fits ``fit_v`` / ``fit_s`` mm of its diagram. With a uniform phase (:func:`has_impulses`) the
+    velocity analogue is drawn exactly at the largest convenient scale that fits ``fit_v`` (its steps'
+    means are exact) and integrated once.
     """
     p = cam.problem
     x = nodes(cam, n_div)
@@ -120,14 +134,21 @@ def construction(cam: CamDesign, n_div: int, *, mu_phi: float, mu_a: float, room
     def s(t: np.ndarray) -> np.ndarray:
         return p.motion(np.degrees(t))[0]
 
-    first = integrate_by_chords(x, a, mu_x=mu_phi, mu_y=mu_a, fit_mm=fit_v, breaks=breaks, exact=v)
-    second = integrate_by_chords(x, first.values + float(v(x[:1])[0]), mu_x=mu_phi, mu_y=first.mu, fit_mm=fit_s,
-                                 exact=s)
+    first: ChordIntegral | None = None
+    if has_impulses(cam):
+        v_lo, v_hi = _span(v(np.linspace(0.0, 2 * math.pi, 1441)))
+        mu_v = pick_scale(v_hi - v_lo, fit_v * max(v_hi - v_lo, 1e-300) / max(v_hi, -v_lo, 1e-300)).per_mm
+        second = integrate_by_chords(x, v, mu_x=mu_phi, mu_y=mu_v, fit_mm=fit_s, breaks=breaks, exact=s)
+    else:
+        first = integrate_by_chords(x, a, mu_x=mu_phi, mu_y=mu_a, fit_mm=fit_v, breaks=breaks, exact=v)
+        mu_v = first.mu
+        second = integrate_by_chords(x, first.values + float(v(x[:1])[0]), mu_x=mu_phi, mu_y=mu_v, fit_mm=fit_s,
+                                     exact=s)
     s_nodes = second.values + float(s(x[:1])[0])
     err = float(np.abs(s_nodes - s(x)).max())
-    if max(first.H_mm, second.H_mm) > room_mm:
+    if max(first.H_mm if first is not None else 0.0, second.H_mm) > room_mm:
         raise ValueError("pole room")       # the caller picks a coarser μ and tries again
-    return Construction(x, first, second, err)
+    return Construction(x, first, second, err, mu_v)
 
 
 @dataclass(frozen=True)
@@ -160,7 +181,7 @@ def _value_axis(band: Band, nt: Notation, label: str, name: str) -> Axis:
     from graphmethods.scene import axis_ticks
 
     right = band.x0 + band.mu_phi.to_mm(2 * math.pi) + VALUE_AXIS_MM
-    ticks = axis_ticks(band.lo, band.hi, band.mu_y, min_gap_mm=9.0)
+    ticks = axis_ticks(band.lo, band.hi, band.mu_y, min_gap_mm=min(9.0, band.mu_y.to_mm(band.hi - band.lo) / 4.0))
     labels = tuple(nt.number(t, sig=3) for t in ticks)
     return Axis((right, band.y0), band.mu_y, "y", band.lo, band.hi, ticks=ticks, tick_labels=labels,
                 label=label, labels_side="right", size_mm=TEXT_MM, name=f"{name}-axis-y")
@@ -223,14 +244,12 @@ def _motion_scales(cam: CamDesign, box: Box, n_div: int) -> tuple[Scale, Scale, 
     """μ_φ, μ_a and the construction: the acceleration analogue takes at most a third of the column's plot
     height at its convenient scale, the two integrals share what it leaves (their poles at round distances)."""
     p = cam.problem
-    if any(ph.law == "uniform" for ph in p.phases):
-        raise InputError(get_notation("en").word("cam.no_uniform"))
     x0, y0, x1, y1 = box
     mu_phi = pick_angle_scale(2 * math.pi, x1 - x0 - POLE_ROOM_MM - 44.0, symbol="μ_φ")
     s, s1, s2, _ = p.motion(np.linspace(0.0, 360.0, 1441))
     plot = y1 - y0 - 3 * BAND_EXTRA_MM - 2 * BAND_GAP_MM
     unit = "rad" if p.oscillating else "m"
-    lo, hi = _span(s2)
+    lo, hi = _a_span(cam, s1, s2)
     mu_a = pick_scale(hi - lo, plot / 3.0, symbol="μ_a", unit=unit)
     for _ in range(8):
         rest = plot - mu_a.to_mm(hi - lo)
@@ -241,7 +260,7 @@ def _motion_scales(cam: CamDesign, box: Box, n_div: int) -> tuple[Scale, Scale, 
         except ValueError:
             mu_a = pick_scale(mu_a.per_mm * 1.01 * plot, plot, symbol="μ_a", unit=unit)
             continue
-        rest_s = rest - con.first.mu ** -1 * (v_hi - v_lo)
+        rest_s = rest - (v_hi - v_lo) / con.mu_v
         if con.second.H_mm * 1.5 <= POLE_ROOM_MM - 8.0 and rest_s > 0:     # a larger s diagram where it fits
             con = construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
                                fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=rest_s) \
@@ -249,6 +268,16 @@ def _motion_scales(cam: CamDesign, box: Box, n_div: int) -> tuple[Scale, Scale, 
         return mu_phi, mu_a, con
     raise InputError("no pole distance within the sheet's room draws these motion diagrams; the data are too "
                      "uneven for the A1 cam sheet")
+
+
+def _a_span(cam: CamDesign, s1: np.ndarray, s2: np.ndarray) -> tuple[float, float]:
+    """The acceleration analogue's drawn range: its values and, with impulses, room for their arrows (as
+    high as the largest |d²s/dφ²| or |ds/dφ| per radian, each way)."""
+    lo, hi = _span(s2)
+    if has_impulses(cam):
+        reach = max(hi, -lo, float(np.abs(s1).max()))
+        lo, hi = min(lo, -reach), max(hi, reach)
+    return lo, hi
 
 
 def _fits(cam: CamDesign, n_div: int, mu_phi: Scale, mu_a: Scale, rest: float, rest_s: float) -> bool:
@@ -274,19 +303,23 @@ def motion_column(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     s, s1, s2, _ = p.motion(np.degrees(phi))
     unit = "rad" if p.oscillating else "m"
     sym = ("cam.dpsi", "cam.d2psi", "cam.psi") if p.oscillating else ("cam.ds", "cam.d2s", "calculus.s")
-    scales = [mu_phi, mu_a, Scale("μ_v", unit, con.first.mu), Scale("μ_s", unit, con.second.mu)]
-    data = [(s2, scales[1], None, con.first, nt.word("cam.d2s_title"), nt.sym(sym[1])),
-            (s1, scales[2], con.first, con.second, nt.word("cam.ds_title"), nt.sym(sym[0])),
+    scales = [mu_phi, mu_a, Scale("μ_v", unit, con.mu_v), Scale("μ_s", unit, con.second.mu)]
+    imp = con.impulses
+    data = [(s2, scales[1], None, con.first, nt.word("cam.d2s_title_impulses" if imp else "cam.d2s_title"),
+             nt.sym(sym[1])),
+            (s1, scales[2], con.first, con.second, nt.word("cam.ds_title_exact" if imp else "cam.ds_title"),
+             nt.sym(sym[0])),
             (s, scales[3], con.second, None, nt.word("cam.psi_title" if p.oscillating else "cam.s_title"),
              nt.sym(sym[2]))]
     els: list[Element] = []
     top0 = y0
+    spans = [_a_span(cam, s1, s2), _span(s1), _span(s)]
     spare = (y1 - y0 - 3 * BAND_EXTRA_MM - 2 * BAND_GAP_MM
-             - sum(d[1].to_mm(_span(d[0])[1] - _span(d[0])[0]) for d in data)) / 3.0
+             - sum(d[1].to_mm(hi - lo) for d, (lo, hi) in zip(data, spans))) / 3.0
     for i, (vals, mu, chords_of, integ, title, label) in enumerate(data):
         head, top = heading((x0, top0, x1, y1), title, occ, f"m{i}")
         els += head
-        lo, hi = _span(vals)
+        lo, hi = spans[i]
         if chords_of is not None:
             c_lo, c_hi = _span(chords_of.values + float(vals[0]))
             lo, hi = min(lo, c_lo), max(hi, c_hi)
@@ -295,10 +328,32 @@ def motion_column(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
         band = Band((x0, top0, x1, bottom), x0 + POLE_ROOM_MM, zero_y, mu_phi, mu, lo, hi)
         curve = band.pt(phi, vals) if chords_of is None else None
         chords = band.pt(chords_of.x, chords_of.values + float(vals[0])) if chords_of is not None else None
+        if i == 0 and imp:
+            els += impulse_arrows(cam, band, occ, nt)
         els += band_elements(band, occ, nt, label=f"{label}, {nt.unit(unit)}", name=f"m{i}",
                              curve=curve, chords=chords, integral=integ, k=i + 1)
         top0 = bottom + BAND_GAP_MM
     return els, scales, con
+
+
+def impulse_arrows(cam: CamDesign, band: Band, occ: Occupancy, nt: Notation) -> list[Element]:
+    """The impulses of the acceleration analogue at the hard impacts: an arrow from the zero line to the edge
+    of the diagram (up where ds/dφ jumps up) and "∞" at its tip; the heading names the hard impacts."""
+    out: list[Element] = []
+    jumps = [i for i in cam.impacts if i.kind == "hard"]
+    for k, imp in enumerate(jumps):
+        x = band.x0 + band.mu_phi.to_mm(math.radians(imp.phi_deg))
+        tip = band.y0 - band.mu_y.to_mm(band.hi if imp.jump > 0 else band.lo)
+        out.append(Vector((x, band.y0), (x, tip), head_length_mm=3.0, head_width_mm=1.2, style=MAIN,
+                          name=f"m0-impulse-{k}"))
+    register_ink(occ, *out)
+    for k, imp in enumerate(jumps):
+        x = band.x0 + band.mu_phi.to_mm(math.radians(imp.phi_deg))
+        tip = band.y0 - band.mu_y.to_mm(band.hi if imp.jump > 0 else band.lo)
+        lab = occ.place_label((x, tip), "∞", ("e", "w", "ne", "nw", "se", "sw"), size_mm=TEXT_MM, gap_mm=0.8,
+                              within=band.box)
+        out.append(Text((lab.x, lab.y), "∞", size_mm=TEXT_MM, anchor=lab.anchor, name=f"m0-infinity-{k}"))
+    return out
 
 
 def _clip_ray(x0: float, y0: float, dx: float, dy: float, box: tuple[float, float, float, float]
@@ -407,9 +462,10 @@ def _tangents(cam: CamDesign, s: np.ndarray, s1: np.ndarray, t: np.ndarray, P: A
 
 
 def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, limits: list[float], title: str,
-              label: str, unit: str, symbol: str, name: str) -> tuple[list[Element], Scale]:
+              label: str, unit: str, symbol: str, name: str) -> tuple[list[Element], list[Scale]]:
     """A quantity over the cycle (values at 0°, 0.25°, … 360°) with level lines at ``limits``, filling the box;
-    its own φ scale ``μ′_φ`` (the motion diagrams' μ_φ needs more width than a graph beside them has)."""
+    its own φ scale ``μ′_φ`` (the motion diagrams' μ_φ needs more width than a graph beside them has). The
+    scales returned: the quantity's, then μ′_φ."""
     els, top = heading(box, title, occ, name)
     phi = np.linspace(0.0, 2 * math.pi, len(values))
     x0, _, x1, y1 = box
@@ -425,10 +481,10 @@ def phi_graph(box: Box, occ: Occupancy, nt: Notation, *, values: np.ndarray, lim
     y_bot = band.y0 - mu_y.to_mm(lo)
     body += [_phi_axis(band, y_bot + 6.5, nt, name), _value_axis(band, nt, label, name)]
     register_ink(occ, *body)
-    return els + body, mu_y
+    return els + body, [mu_y, mu_phi]
 
 
-def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], Scale]:
+def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:
     """The pressure angle α(φ) over the cycle, with ±[α] of the rise as level lines (and [α]_return when it
     is within the curve's range)."""
     p = cam.problem
@@ -440,7 +496,7 @@ def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple
                      label=f"{nt.sym('cam.alpha')}, °", unit="°", symbol="μ_α", name="alpha")
 
 
-def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], Scale]:
+def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:
     """The flat-faced cam's radius of curvature ρ = r_b + s + d²s/dφ² over the cycle, with ρ_min."""
     p = cam.problem
     s, _, s2, _ = p.motion(np.linspace(0.0, 360.0, 1441))

@@ -48,6 +48,7 @@ from graphmethods.sheets.cam_diagrams import (
     rho_graph,
     segment,
 )
+from graphmethods.sheets.cam_rocker import rocker_diagram
 from graphmethods.sheets.engine import course_page, lettering
 from graphmethods.sheets.frame import FastOccupancy
 from graphmethods.sheets.layout import Box, Occupancy
@@ -126,7 +127,7 @@ class Inversion:
     profile: np.ndarray                # dense profile
     pitch_k: np.ndarray                # pitch points at the division points
     followers: list[np.ndarray]        # each division point's follower axis (translating) or arm (oscillating)
-    pivot_arc: np.ndarray | None       # the circle of the pivot's positions (oscillating)
+    pivot_arc: np.ndarray | None       # the arc of the pivot's positions (oscillating)
     stem: np.ndarray                   # the follower in position 0: its stem or arm
 
     def points(self) -> np.ndarray:
@@ -148,7 +149,8 @@ def inversion(cam: CamDesign, n_div: int) -> Inversion:
     if p.oscillating:
         pivots = _rot(np.column_stack((np.full(phi_k.shape, p.pivot), np.zeros(phi_k.shape))), phi_k, p.sense)
         followers = [np.array([a, b]) for a, b in zip(pivots, st.pitch)]
-        ang = np.linspace(0.0, 2 * math.pi, 181)          # the whole circle the pivot runs on in the inversion
+        span = float(phi_k.max()) + math.radians(10.0)    # the arc the pivot runs on through the division points
+        ang = np.linspace(-math.radians(10.0), span, 1 + int(math.degrees(span + math.radians(10.0)) // 2))
         arc = _rot(np.column_stack((np.full(ang.shape, p.pivot), np.zeros(ang.shape))), ang, p.sense)
         stem = np.array([pivots[0], st.pitch[0]])
     else:
@@ -185,7 +187,8 @@ def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     if not p.oscillating and p.offset and p.contact != "flat":
         els.append(Circles(((cx, cy, mu.to_mm(abs(p.offset))),), THIN, name="offset-circle"))
     if geo.pivot_arc is not None:
-        els.append(Polyline(P(geo.pivot_arc), CENTRES, closed=True, name="pivot-circle"))
+        els.append(Polyline(P(geo.pivot_arc), CENTRES, closed=bool(np.allclose(geo.pivot_arc[0], geo.pivot_arc[-1])),
+                            name="pivot-circle"))
     els += [segment(P(line), PROJECTION, name=f"follower-{i}") for i, line in enumerate(geo.followers)]
     if p.contact == "roller":
         els.append(Polyline(P(geo.pitch), CENTRES, closed=True, name="pitch-curve"))
@@ -314,7 +317,8 @@ def results_rows(cam: CamDesign, nt: Notation, con: Any) -> list[tuple[str, str]
     if cam.face_width_min is not None:
         rows.append((w("cam.row_width"), _m(nt, cam.face_width_min)))
     imp = ", ".join(f"{w('cam.' + i.kind)} {nt.number(i.phi_deg)}°" for i in cam.impacts) or w("cam.none")
-    err = f"{nt.number(con.error_s, sig=2)} {nt.unit('rad' if unit else 'm')}"
+    exact = con.error_s <= 1e-12 * p.stroke          # steps of a uniform law: the chords are exact
+    err = f"{nt.number(0.0 if exact else con.error_s, sig=2)} {nt.unit('rad' if unit else 'm')}"
     rows += [(w("cam.row_impacts"), imp), (w("cam.row_error", n=len(con.nodes)), err)]
     return rows
 
@@ -345,18 +349,20 @@ def cam_sheet(cam: CamDesign | CamProblem, *, notation: Any = "en", n_div: int =
     occ = FastOccupancy()
     occ.add_box((x0, y0, x0 + 200.0, y0 + TITLE_MM + 1.5))
     motion, m_scales, con = motion_column(cam, bx.motion, occ, nt, n_div=n_div)
-    if cam.problem.oscillating or cam.problem.contact == "flat":
-        draw = rho_graph if cam.problem.contact == "flat" else alpha_graph
-        mid, mid_scale = draw(cam, bx.combined, occ, nt)
+    if cam.problem.contact == "flat":
+        mid, mid_scales = rho_graph(cam, bx.combined, occ, nt)
         extra: list[Element] = positions_table(cam, bx.alpha, nt, n_div)
         more: list[Scale] = []
     else:
-        mid, mid_scale = combined_diagram(cam, bx.combined, occ, nt)
-        extra, alpha_scale = alpha_graph(cam, bx.alpha, occ, nt)
-        more = [alpha_scale]
+        if cam.problem.oscillating:
+            mid, mid_scale = rocker_diagram(cam, bx.combined, occ, nt, phi_k_deg=np.degrees(nodes(cam, n_div)[:-1]))
+        else:
+            mid, mid_scale = combined_diagram(cam, bx.combined, occ, nt)
+        mid_scales = [mid_scale]
+        extra, more = alpha_graph(cam, bx.alpha, occ, nt)
     prof, mu_l = profile_panel(cam, bx.profile, occ, nt, n_div=n_div)
     rows = results_rows(cam, nt, con)
-    scales = [mu_l, *m_scales, mid_scale, *more]
+    scales = [mu_l, *m_scales, *mid_scales, *more]
     cap = [(nt.word("scales") if k == 0 else "", s.caption(nt)) for k, s in enumerate(scales)]
     table = fitted_table(bx.table[:2], ((nt.word("cam.results"), ""), *rows, *cap), bx.table, align="ll",
                          name="results")

@@ -228,20 +228,33 @@ def _design_oscillating(p: CamProblem) -> float:
             return worst
         except InputError:
             return math.inf
-    grid = np.linspace(lo_r, hi_r, 66)[1:-1]
-    first_ok = next((r for r in grid if excess(r) <= 0.0), None)     # the grid scanned up to the first fit
-    if first_ok is None:
+    r0 = smallest_admissible(lo_r, hi_r, lambda r: excess(r) <= 0.0)
+    if r0 is None:
         raise InputError(f"no base radius keeps the pressure angles within [α] = {p.alpha_max_deg:g}° / "
                          f"{p.alpha_return_max_deg:g}° with this arm and pivot; give base_radius or change them")
-    hi = first_ok
+    return r0
+
+
+def smallest_admissible(lo_r: float, hi_r: float, admissible: Callable[[float], bool]) -> float | None:
+    """The smallest r in (lo_r, hi_r) with ``admissible(r)`` (true from there up): the first admissible of 64
+    grid points, then bisection to rounding; None when no grid point is admissible.
+
+    >>> round(smallest_admissible(0.0, 1.0, lambda r: r >= 0.3), 12)
+    0.3
+    """
+    grid = np.linspace(lo_r, hi_r, 66)[1:-1]
+    ok = [r for r in grid if admissible(float(r))]
+    if not ok:
+        return None
+    hi = float(ok[0])
     i = int(np.searchsorted(grid, hi))
-    lo = grid[i - 1] if i > 0 else lo_r
+    lo = float(grid[i - 1]) if i > 0 else lo_r
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if mid in (lo, hi):
             break
-        lo, hi = (lo, mid) if excess(mid) <= 0.0 else (mid, hi)
-    return float(hi)
+        lo, hi = (lo, mid) if admissible(mid) else (mid, hi)
+    return hi
 
 
 def _impacts(p: CamProblem) -> tuple[Impact, ...]:

@@ -25,6 +25,10 @@ WORDS = {
     "sheet":        ("Cam mechanism design", "Синтез кулачкового механизма", "凸轮机构设计"),
     "d2s_title":    ("Acceleration analogue and its integration by chords", "Аналог ускорения и его интегрирование "
                      "методом хорд", "类加速度线图及其弦线法图解积分"),
+    "d2s_title_impulses": ("Acceleration analogue: impulses ∞ at the ends of a uniform phase (hard impacts)",
+                           "Аналог ускорения: импульсы ∞ на концах равномерной фазы (жёсткие удары)",
+                           "类加速度线图：等速段两端的 ∞ 脉冲（刚性冲击）"),
+    "ds_title_exact": ("Velocity analogue", "Аналог скорости", "类速度线图"),
     "ds_title":     ("Velocity analogue (integral of the above)", "Аналог скорости (интеграл верхнего графика)",
                      "类速度线图（上图的积分）"),
     "s_title":      ("Displacement of the follower (integral of the above)", "Перемещение толкателя (интеграл "
@@ -34,6 +38,12 @@ WORDS = {
     "combined":     ("Combined ds/dφ–s diagram: tangents at [α], admissible zone of the cam centre",
                      "Совмещённая диаграмма dS/dφ–S: касательные под [ϑ], область центров кулачка",
                      "ds/dφ–s 线图：[α] 切线与凸轮中心许用区"),
+    "combined_rocker": ("Combined diagram of the rocker: l·dψ/dφ along the arm, tangents at [α], zone of the cam "
+                        "centre", "Совмещённая диаграмма коромысла: l·dψ/dφ по коромыслу, касательные под [ϑ], "
+                        "область центров кулачка", "摆动从动件的 l·dψ/dφ 图解：[α] 切线与凸轮中心许用区"),
+    "fig_combined": ("Combined ds/dφ–s diagram", "Совмещённая диаграмма dS/dφ–S", "ds/dφ–s 线图"),
+    "fig_rocker":   ("Combined diagram of the rocker", "Совмещённая диаграмма коромысла", "摆动从动件的许用区图解"),
+    "fig_motion":   ("Motion diagrams of the follower", "Кинематические диаграммы толкателя", "从动件运动线图"),
     "alpha_graph":  ("Pressure angle over the cycle", "Угол давления за цикл", "压力角线图"),
     "rho_graph":    ("Radius of curvature of the profile", "Радиус кривизны профиля", "廓线曲率半径线图"),
     "positions":    ("Division points of the construction", "Точки деления (положения толкателя)",
