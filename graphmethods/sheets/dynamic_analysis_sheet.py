@@ -146,7 +146,7 @@ def sheet_scales(study, *, page="A1", tangents: str = "exact") -> tuple[Scale, S
     >>> from graphmethods.problems import builtin
     >>> s_J, s_T, J_0 = sheet_scales(Study(builtin.case("press"), positions=12))
     >>> s_J.per_mm, s_T.per_mm, J_0
-    (0.0005, 2.5, 0.5)
+    (0.001, 2.5, 0.5)
     """
     _, lay = _default_placement(study, page=page, tangents=tangents)
     return lay.s_J, lay.s_T, lay.J_0
