@@ -51,7 +51,7 @@ from graphmethods.kinematics.cam.geometry import to_cam_frame
 from graphmethods.scene import Page, Scene
 from graphmethods.sheets.check.cad import DrawingReport, _page_for, _page_xy, normalise
 from graphmethods.sheets.check.cam_reader import SAME_CENTRE_MM, Curves, fit_circle, read_curves
-from graphmethods.sheets.check.report import MISTAKES, TOL_MM, Checker, Item, Mistake, rel
+from graphmethods.sheets.check.report import MISTAKES, TOL_MM, Checker, Item, rel
 from graphmethods.titles import Title
 
 #: the usual mistakes of a cam profile (their names in en/ru/zh: the vocabulary's check family)
@@ -281,18 +281,9 @@ class CamReport(DrawingReport):
 
     cam_data: CamData | None = field(default=None, repr=False)
 
-    @property
-    def mistakes(self) -> tuple:
-        """The diagnosed mistakes (:data:`CAM_MISTAKES` besides the others), in the order they first appear."""
-        order: list[str] = []
-        by: dict[str, list[str]] = {}
-        for it in self.items:
-            for code in it.mistakes:
-                by.setdefault(code, []).append(it.key)
-                if code not in order:
-                    order.append(code)
-        names = {**MISTAKES, **CAM_MISTAKES}
-        return tuple(Mistake(c, names[c], tuple(by[c])) for c in order)
+    def mistake_names(self) -> dict[str, str]:
+        """The names of the mistakes a cam check diagnoses: :data:`CAM_MISTAKES` besides the others."""
+        return {**MISTAKES, **CAM_MISTAKES}
 
     def overlay(self, *, notation: Any = "en") -> Scene:
         """The exact profile by inversion at the student's μ_l, with O where the student's is (or the page's

@@ -128,7 +128,12 @@ class CheckReport:
                     order.append(code)
                     by[code] = []
                 by[code].append(it.key)
-        return tuple(Mistake(c, MISTAKES[c], tuple(by[c])) for c in order)
+        names = self.mistake_names()
+        return tuple(Mistake(c, names[c], tuple(by[c])) for c in order)
+
+    def mistake_names(self) -> dict[str, str]:
+        """The names of the mistakes this kind of check diagnoses, by code (:data:`MISTAKES`)."""
+        return MISTAKES
 
     def summary(self) -> str:
         n_w, n_c = len(self.wrong), len(self.carried)
