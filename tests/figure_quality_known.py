@@ -49,6 +49,6 @@ KNOWN: dict[tuple[str, str, str], str] = {
     ('whitworth', 'force_analysis_sheet', 'ru'): '58% empty, 1 crossed',
     ('whitworth', 'force_analysis_sheet', 'zh'): '63% empty',
     ('whitworth', 'kinematic_analysis_sheet', 'en'): '52% empty, 10 crossed',
-    ('scotch-yoke', 'kinematic_analysis_sheet', 'en'): "1 texts over texts: the scheme's position number '1' on the diagrams' tick '−25'",
-    ('scotch-yoke', 'kinematic_analysis_sheet', 'ru'): "1 texts over texts: the scheme's position number '1' on the diagrams' tick '−25'",
+    ('scotch-yoke', 'kinematic_analysis_sheet', 'en'): "1 text over text: scheme number '1' on a tick '−25'",
+    ('scotch-yoke', 'kinematic_analysis_sheet', 'ru'): "1 text over text: scheme number '1' on a tick '−25'",
 }
