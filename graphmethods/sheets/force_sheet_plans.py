@@ -26,12 +26,11 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.layout import Sheet, given_scale
-
-#: a side shorter than this share of the polygon's largest is round-off (a force zero in this position)
-ROUND_OFF = 1e-9
+from graphmethods.units import convenient_at_least
 
 
 def plan_sides(fa: Any, j: int, i: int) -> list[tuple[str, complex, bool]]:
@@ -74,7 +73,7 @@ def plan_equation(fa: Any, j: int, i: int, nt: Notation) -> str:
     """
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
-    return " + ".join(_label(lbl, nt) for lbl, F, _ in sides if abs(F) > ROUND_OFF * big) + " = 0"
+    return " + ".join(_label(lbl, nt) for lbl, F, _ in sides if not within_roundoff(abs(F), big)) + " = 0"
 
 
 def _found(fa: Any, j: int, i: int, sides: list[tuple[str, complex, bool]]) -> list[tuple[str, float]]:
@@ -242,12 +241,7 @@ def _next_scale(per_mm: float) -> float:
     >>> _next_scale(0.002), _next_scale(0.005), _next_scale(0.0025)
     (0.0025, 0.01, 0.004)
     """
-    k = math.floor(math.log10(per_mm) + 1e-9)
-    for m in (1.0, 2.0, 2.5, 4.0, 5.0, 10.0):
-        v = float(f"{m * 10.0 ** k:.12g}")
-        if v > per_mm * (1 + 1e-9):
-            return v
-    return float(f"{10.0 ** (k + 1) * 2:.12g}")
+    return convenient_at_least(per_mm * (1 + 1e-9))
 
 
 def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
@@ -292,7 +286,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     labels += wanted
     own = {f[0] for f in applied}
     for k, (lbl, F, _known) in enumerate(sides):
-        if lbl in own or abs(F) <= ROUND_OFF * big:
+        if lbl in own or within_roundoff(abs(F), big):
             continue
         a = at(where[lbl])
         b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)

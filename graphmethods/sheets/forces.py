@@ -34,6 +34,7 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
@@ -273,10 +274,6 @@ def _labels(occ: Occupancy, specs: Sequence[LabelSpec], within: Box) -> list[Ele
 
 # ----------------------------------------------------------------------------- the force plans
 
-#: a value within this share of its neighbours' size is the round-off of its computation: printed as 0
-ROUND_OFF = 1e-9
-
-
 def round_off_zero(value: float, size: float) -> float:
     """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
     a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
@@ -284,7 +281,7 @@ def round_off_zero(value: float, size: float) -> float:
     >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
     (0.0, -12.5)
     """
-    return 0.0 if abs(value) <= ROUND_OFF * abs(size) else value
+    return 0.0 if within_roundoff(value, size) else value
 
 
 def _plans_results(fa: Any, i: int, nt: Notation, gravity: bool) -> tuple[list[tuple[str, str]], list[str]]:
