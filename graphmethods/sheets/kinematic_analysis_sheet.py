@@ -16,8 +16,9 @@ Each part keeps its own scales, written under it; the title block names the sche
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -30,6 +31,7 @@ from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.lettering import lettered_by_page
 from graphmethods.sheets.force_analysis_sheet import _case, sheet_page as _sheet_page
 from graphmethods.sheets.layout import Sheet
+from graphmethods.sheets.sheet_fill import clashes, filled
 
 #: most acceleration plans one sheet draws (each needs a readable share of the lower row)
 MAX_PLANS = 4
@@ -37,12 +39,20 @@ MAX_PLANS = 4
 
 @dataclass(frozen=True)
 class AnalysisSheetLayout:
-    """The A1 sheet's division into its parts (shares of the content box, mm between the parts)."""
+    """The A1 sheet's divisions into its parts (shares of the content box, mm between the parts).
+
+    Each share is a short list of candidates: the sheet draws its parts for each (row by row) and keeps
+    the division whose drawings fill the most of the sheet (:func:`~graphmethods.sheets.sheet_fill.filled`):
+    a long linkage takes a wide scheme, tall velocity plans a narrow one.
+    """
 
     gap_mm: float = 8.0                 # between the parts
-    upper_share: float = 0.52           # the upper row (scheme, velocity plans) of the height
-    scheme_share: float = 0.45          # the scheme of the upper row's width
-    diagrams_share: float = 0.4         # the slider's diagrams (the table of velocities) of the lower row's width
+    #: the upper row (scheme, velocity plans) of the height
+    upper_shares: tuple[float, ...] = (0.52, 0.58)
+    #: the scheme of the upper row's width
+    scheme_shares: tuple[float, ...] = (0.36, 0.45)
+    #: the slider's diagrams (the table of velocities) of the lower row's width
+    diagrams_shares: tuple[float, ...] = (0.4, 0.5)
     table_pad_mm: float = 4.0           # beside the table of velocities
 
 
@@ -111,9 +121,6 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
     InputError
         A plan position outside 0…m−1, repeated, more than four; a page other than A1.
     """
-    from graphmethods.sheets.acceleration import acceleration_plan
-    from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan_grid
-
     case = _case(subject)
     nt = get_notation(notation)
     lay = ANALYSIS_SHEET_LAYOUT
@@ -126,26 +133,80 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
                   title_block=title_block, default_page=pg)
     x0, _, x1, _ = sheet.box
     top, bottom = sheet.top, sheet.caption_y + 1.0
+    best: tuple[tuple[int, int], list[tuple[Scene, str]]] | None = None
+    for u in lay.upper_shares:
+        split_y = top + u * (bottom - top)
+        upper = _fullest([partial(_upper_row, case, nt, m, pg, (x0, top, x1, split_y), s, lay)
+                          for s in lay.scheme_shares], pg)
+        lower = _fullest([partial(_lower_row, case, nt, m, pg, (x0, split_y + lay.gap_mm, x1, bottom), ks, d, lay)
+                          for d in lay.diagrams_shares], pg)
+        if upper is None or lower is None:
+            continue
+        rank = (upper[0][0] + lower[0][0], int((upper[2] | lower[2]).sum()))
+        if best is None or rank > best[0]:
+            best = (rank, upper[1] + lower[1])
+    if best is None:                    # no division fits: the first one says why
+        _upper_row(case, nt, m, pg, (x0, top, x1, top + lay.upper_shares[0] * (bottom - top)),
+                   lay.scheme_shares[0], lay)
+        _lower_row(case, nt, m, pg, (x0, top + lay.upper_shares[0] * (bottom - top) + lay.gap_mm, x1, bottom), ks,
+                   lay.diagrams_shares[0], lay)
+        raise InputError("the kinematic-analysis sheet's parts do not fit on this page; give a larger page")
+    return _assembled(sheet, best[1], name)
+
+
+def _fullest(candidates: list[Callable[[], list[tuple[Scene, str]]]],
+             pg: Page) -> tuple[tuple[int, int], list[tuple[Scene, str]], np.ndarray] | None:
+    """Of the candidate divisions of one row (each drawing its parts), the parts with the fewest clashing
+    labels (:func:`~graphmethods.sheets.sheet_fill.clashes`) whose ink fills the most cells of the sheet (the
+    first of equals), with its rank (−clashes, cells filled) and the cells it fills; None when none fits."""
+    best: tuple[tuple[int, int], list[tuple[Scene, str]], np.ndarray] | None = None
+    for draw in candidates:
+        try:
+            parts = draw()
+        except InputError:              # too small a share for a part: the other candidates
+            continue
+        used = filled([sc for sc, _ in parts], pg)
+        rank = (-sum(clashes(sc) for sc, _ in parts), int(used.sum()))
+        if best is None or rank > best[0]:
+            best = (rank, parts, used)
+    return best
+
+
+def _upper_row(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], share: float,
+               lay: AnalysisSheetLayout) -> list[tuple[Scene, str]]:
+    """The upper row: the kinematic scheme (``share`` of the width) and the velocity plans beside it."""
+    from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan_grid
+
+    x0, top, x1, split_y = box
+    split_x = x0 + share * (x1 - x0)
     gap = lay.gap_mm
-    split_y = top + lay.upper_share * (bottom - top)
-    split_x = x0 + lay.scheme_share * (x1 - x0)
     s_scheme = kinematic_scheme(case, notation=nt, title_block=False, m=m,
                                 page=region_page(pg, (x0, top, split_x - gap / 2, split_y)))
     s_vel = velocity_plan_grid(case, notation=nt, title_block=False, m=m,
                                page=region_page(pg, (split_x + gap / 2, top, x1, split_y)))
-    parts = [(s_scheme, "scheme"), (s_vel, "velocity-plans")]
-    lower = (split_y + gap, bottom)
-    beside, right = _right_part(case, nt, m, pg, (x0, lower[0], x1, lower[1]), lay)
+    return [(s_scheme, "scheme"), (s_vel, "velocity-plans")]
+
+
+def _lower_row(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], ks: list[int],
+               share: float, lay: AnalysisSheetLayout) -> list[tuple[Scene, str]]:
+    """The lower row: the acceleration plans of positions ``ks`` side by side, and at the right the slider's
+    diagrams (``share`` of the width) or the tables (:func:`_right_part`)."""
+    from graphmethods.sheets.acceleration import acceleration_plan
+
+    x0, y0, x1, y1 = box
+    gap = lay.gap_mm
+    beside, right = _right_part(case, nt, m, pg, box, share, lay)
     w = (right - x0 - gap * (len(ks) - 1)) / len(ks)
+    parts = []
     for j, k in enumerate(ks):
         left = x0 + j * (w + gap)
-        cell = region_page(pg, (left, lower[0], left + w, lower[1]))
+        cell = region_page(pg, (left, y0, left + w, y1))
         parts.append((acceleration_plan(case, k, notation=nt, title_block=False, m=m, page=cell),
                       f"acceleration-plan-{k}"))
-    return _assembled(sheet, parts + beside, name)
+    return parts + beside
 
 
-def _right_part(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float],
+def _right_part(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], share: float,
                 lay: AnalysisSheetLayout) -> tuple[list[tuple[Scene, str]], float]:
     """The lower row's right part: the slider's kinematic diagrams (their share of the width), or without a
     slider the tables of velocities and of accelerations per position, one above the other (as wide as they
@@ -155,7 +216,7 @@ def _right_part(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, f
     from graphmethods.sheets.kinematics import velocity_table
 
     x0, y0, x1, y1 = box
-    left = x1 - lay.diagrams_share * (x1 - x0)
+    left = x1 - share * (x1 - x0)
     try:
         return ([(kinematic_diagrams(case, notation=nt, title_block=False, m=m,
                                      page=region_page(pg, (left, y0, x1, y1))), "kinematic-diagrams")],
