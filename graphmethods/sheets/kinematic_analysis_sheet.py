@@ -142,7 +142,7 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
                           for d in lay.diagrams_shares], pg)
         if upper is None or lower is None:
             continue
-        rank = (upper[0][0] + lower[0][0], int((upper[2] | lower[2]).sum()))
+        rank = (-clashes([sc for sc, _ in upper[1] + lower[1]]), int((upper[2] | lower[2]).sum()))
         if best is None or rank > best[0]:
             best = (rank, upper[1] + lower[1])
     if best is None:                    # no division fits: the first one says why
@@ -166,7 +166,7 @@ def _fullest(candidates: list[Callable[[], list[tuple[Scene, str]]]],
         except InputError:              # too small a share for a part: the other candidates
             continue
         used = filled([sc for sc, _ in parts], pg)
-        rank = (-sum(clashes(sc) for sc, _ in parts), int(used.sum()))
+        rank = (-clashes([sc for sc, _ in parts]), int(used.sum()))
         if best is None or rank > best[0]:
             best = (rank, parts, used)
     return best

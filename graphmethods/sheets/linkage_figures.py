@@ -521,8 +521,9 @@ def _label_lines(occ: Occupancy, lines: list[Line], texts: list[str], *, hard: O
     for el, text in zip(lines, texts):
         d = np.asarray(el.end) - np.asarray(el.start)
         prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
-        for end in (el.end, el.start):          # a free place at either end before crossing a line
-            lab = _first_clear(occ, hard, end, text, _dirs(prefer), (0.6, 1.6, 3.0), SMALL_MM, within, None, "")
+        tries = [(end, gaps) for gaps in ((0.6, 1.6, 3.0), (4.5, 6.5)) for end in (el.end, el.start)]
+        for end, gaps in tries:                 # a free place at either end (near, then farther) before crossing
+            lab = _first_clear(occ, hard, end, text, _dirs(prefer), gaps, SMALL_MM, within, None, "")
             if lab is not None:
                 occ.add_label(lab)
                 out.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"label-{el.name}"))

@@ -62,21 +62,21 @@ def ink_cells(scene: Scene, page: Page) -> np.ndarray:
     return used
 
 
-def clashes(scene: Scene) -> int:
-    """How many of ``scene``'s texts a line crosses or another text covers (the measure's two faults of
-    lettering, :func:`~graphmethods.sheets.engine.quality.measure`): a division that squeezes a part so
-    that its lettering clashes is no division to keep.
+def clashes(scenes: list[Scene]) -> int:
+    """How many texts of the ``scenes`` (parts of one sheet, together) a line crosses or another text covers
+    (the measure's two faults of lettering, :func:`~graphmethods.sheets.engine.quality.measure`): a
+    division that squeezes a part so that its lettering clashes is no division to keep.
 
     >>> from graphmethods.scene import Line, Page, Scene, Text
-    >>> clashes(Scene(Page("A4"), (Text((50, 50), "M", name="t"), Line((40, 49), (90, 49), name="l"))))
+    >>> clashes([Scene(Page("A4"), (Text((50, 50), "M", name="t"),)), Scene(Page("A4"), (Line((40, 49), (90, 49)),))])
     1
     """
-    rec = record(scene)
-    labels = [c.data for c in rec.calls if c.kind == "text"]
+    recs = [record(s) for s in scenes]
+    labels = [c.data for rec in recs for c in rec.calls if c.kind == "text"]
     if not labels:
         return 0
     glyphs = np.array([glyph_box(lab) for lab in labels], dtype=float).reshape(-1, 4)
-    seg = _segments(rec)
+    seg = np.concatenate([_segments(rec) for rec in recs]).reshape(-1, 4)
     hit = np.zeros(len(labels), dtype=bool)
     for chunk in range(0, len(seg), 4000):
         hit |= segments_hit_boxes(seg[chunk:chunk + 4000], glyphs).any(axis=1)
