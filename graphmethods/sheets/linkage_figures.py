@@ -17,7 +17,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Frame, Line, Scale, Text, Vector
+from graphmethods.scene import Element, Frame, Line, Scale, Text, Vector
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.layout import Occupancy
 from graphmethods.units import convenient_at_least
@@ -514,21 +514,27 @@ def _through(P0, d, X, name: str, style: Style) -> Line:
     return Line(tuple(a.tolist()), tuple(b.tolist()), style=style, name=name)
 
 
-def _label_lines(occ: Occupancy, lines: list[Line], texts: list[str], *, hard: Occupancy, area) -> list[Text]:
-    """Each construction line's label (⊥ AB, ∥ guide) at its far end, across it."""
-    out = []
+def _label_lines(occ: Occupancy, lines: list[Line], texts: list[str], *, hard: Occupancy, area) -> list[Element]:
+    """Each construction line's label (⊥ AB, ∥ guide) at its far end, across it (or beside the line; in a
+    crowd further out with a leader line)."""
+    out: list[Element] = []
     within = (area[0], area[1] - 4, area[2] + 4, area[3] + 4)
     for el, text in zip(lines, texts):
         d = np.asarray(el.end) - np.asarray(el.start)
         prefer = math.degrees(math.atan2(-d[1], d[0])) + 90.0
+        a, b = np.asarray(el.start, dtype=float), np.asarray(el.end, dtype=float)
         tries = [(end, gaps) for gaps in ((0.6, 1.6, 3.0), (4.5, 6.5)) for end in (el.end, el.start)]
-        for end, gaps in tries:                 # a free place at either end (near, then farther) before crossing
+        tries += [(tuple((a + t * (b - a)).tolist()), (0.6, 1.6)) for t in (0.8, 0.2, 0.65, 0.35)]
+        for end, gaps in tries:                 # a free place at either end (near, then farther), then beside
+            # the line, before crossing one
             lab = _first_clear(occ, hard, end, text, _dirs(prefer), gaps, SMALL_MM, within, None, "")
             if lab is not None:
                 occ.add_label(lab)
                 out.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"label-{el.name}"))
                 break
-        else:
+        else:                                   # crowded: further out with a leader to the line's end
+            leaders: list[Element] = []
             out.append(_place(occ, el.end, text, prefer, size_mm=SMALL_MM, hard=hard, within=within,
-                              name=f"label-{el.name}", gaps=(0.6, 1.6, 3.0)))
+                              name=f"label-{el.name}", gaps=(0.6, 1.6, 3.0), ring=True, leaders=leaders))
+            out += leaders
     return out
