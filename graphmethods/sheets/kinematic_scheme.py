@@ -109,6 +109,8 @@ class SchemeLayout:
 
 
 SCHEME_LAYOUT = SchemeLayout()
+#: the hatching of a ternary link's plate in the thick position (mm between lines: sparse, as the books hatch)
+PLATE_HATCH_MM = 3.5
 
 
 @dataclass(frozen=True)
@@ -236,7 +238,9 @@ def _scheme_links(g: _SchemeGeometry, f: Frame) -> tuple[list[Element], list[Ele
         for body in g.parts.bodies:
             corners = body_outline([P(p.coords[j][idx]) for j in body])
             if len(corners) > 2:           # a ternary link: a plate, hatched in the thick position
-                out.append(Plate(corners, outline_style=style, hatch=style is THICK, name=f"{tag}-{''.join(body)}"))
+                thick = style is THICK      # one clean body over the thin positions, sparsely hatched
+                out.append(Plate(corners, outline_style=style, hatch=thick, fill="white" if thick else None,
+                                 hatch_spacing_mm=PLATE_HATCH_MM, name=f"{tag}-{''.join(body)}"))
             else:
                 out.append(Line(corners[0], corners[1], style=style, name=f"{tag}-{''.join(body)}"))
             ring = corners + corners[:1] if len(corners) > 2 else corners

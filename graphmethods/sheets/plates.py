@@ -57,9 +57,11 @@ def triangles(segments: Sequence[tuple[str, str]]) -> list[tuple[str, str, str]]
     return out
 
 
-def plate(points: Sequence[tuple[float, float]], *, name: str, spacing_mm: float = 3.0) -> list[Element]:
+def plate(points: Sequence[tuple[float, float]], *, name: str, spacing_mm: float = 3.0,
+          fill: str | None = None) -> list[Element]:
     """A plate through ``points`` (mm, in order round it): its interior hatched at 45° (thin lines
-    ``spacing_mm`` apart) and its outline a main line; none when the points enclose no area.
+    ``spacing_mm`` apart, over ``fill`` when given: "white" hides what lies under the plate) and its outline
+    a main line; none when the points enclose no area.
 
     Parameters
     ----------
@@ -72,7 +74,7 @@ def plate(points: Sequence[tuple[float, float]], *, name: str, spacing_mm: float
     area = 0.5 * abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])))
     if len(pts) < 3 or area < MIN_AREA_MM2:
         return []
-    return [Region(tuple(pts), hatch_angle_deg=45.0, hatch_spacing_mm=spacing_mm, name=f"{name}-hatch"),
+    return [Region(tuple(pts), hatch_angle_deg=45.0, hatch_spacing_mm=spacing_mm, fill=fill, name=f"{name}-hatch"),
             Polyline(tuple(pts), style=OUTLINE, closed=True, name=name)]
 
 
@@ -168,6 +170,9 @@ class Plate(Element):
         Hatch the inside (the thick position); the thin positions are outlines only.
     hatch_spacing_mm : float, mm
         Distance between hatching lines.
+    fill : str, optional
+        Under the hatching ("white" in a scheme's thick position: the plate is one clean body over the thin
+        positions drawn under it).
 
     >>> [type(p).__name__ for p in Plate(((0, 0), (30, 0), (15, 20)), hatch=False).primitives()]
     ['Path']
@@ -177,12 +182,13 @@ class Plate(Element):
     outline_style: Style = OUTLINE
     hatch: bool = True
     hatch_spacing_mm: float = 2.0
+    fill: str | None = None
     name: str = "plate"
 
     def parts(self) -> list[Element]:
         """What draws it: the hatching and the outline (:func:`plate`), or the outline alone."""
         if self.hatch:
-            drawn = plate(self.corners, name=self.name, spacing_mm=self.hatch_spacing_mm)
+            drawn = plate(self.corners, name=self.name, spacing_mm=self.hatch_spacing_mm, fill=self.fill)
             if drawn:
                 return [*drawn[:-1], Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
         return [Polyline(self.corners, style=self.outline_style, closed=True, name=self.name)]
