@@ -142,9 +142,10 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
                           for d in lay.diagrams_shares], pg)
         if upper is None or lower is None:
             continue
-        rank = (-clashes([sc for sc, _ in upper[1] + lower[1]]), int((upper[2] | lower[2]).sum()))
+        parts = upper[1] + lower[1]
+        rank = (-clashes([sc for sc, _ in parts]) - _overflowing(parts), int((upper[2] | lower[2]).sum()))
         if best is None or rank > best[0]:
-            best = (rank, upper[1] + lower[1])
+            best = (rank, parts)
     if best is None:                    # no division fits: the first one says why
         _upper_row(case, nt, m, pg, (x0, top, x1, top + lay.upper_shares[0] * (bottom - top)),
                    lay.scheme_shares[0], lay)
@@ -157,8 +158,9 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
 def _fullest(candidates: list[Callable[[], list[tuple[Scene, str]]]],
              pg: Page) -> tuple[tuple[int, int], list[tuple[Scene, str]], np.ndarray] | None:
     """Of the candidate divisions of one row (each drawing its parts), the parts with the fewest clashing
-    labels (:func:`~graphmethods.sheets.sheet_fill.clashes`) whose ink fills the most cells of the sheet (the
-    first of equals), with its rank (−clashes, cells filled) and the cells it fills; None when none fits."""
+    labels (:func:`~graphmethods.sheets.sheet_fill.clashes`) and parts leaving their region, whose ink fills
+    the most cells of the sheet (the first of equals), with its rank (−faults, cells filled) and the cells it
+    fills; None when none fits."""
     best: tuple[tuple[int, int], list[tuple[Scene, str]], np.ndarray] | None = None
     for draw in candidates:
         try:
@@ -166,10 +168,19 @@ def _fullest(candidates: list[Callable[[], list[tuple[Scene, str]]]],
         except InputError:              # too small a share for a part: the other candidates
             continue
         used = filled([sc for sc, _ in parts], pg)
-        rank = (-clashes([sc for sc, _ in parts]), int(used.sum()))
+        rank = (-clashes([sc for sc, _ in parts]) - _overflowing(parts), int(used.sum()))
         if best is None or rank > best[0]:
             best = (rank, parts, used)
     return best
+
+
+def _overflowing(parts: list[tuple[Scene, str]]) -> int:
+    """How many pairs of the parts overlap (a line of text too long for its region runs into the next part)."""
+    boxes = [box for sc, nm in parts if (box := inset(sc, nm)[0].bbox()) is not None]
+    out = 0
+    for i, A in enumerate(boxes):
+        out += sum(1 for B in boxes[i + 1:] if not (A[2] <= B[0] or B[2] <= A[0] or A[3] <= B[1] or B[3] <= A[1]))
+    return out
 
 
 def _upper_row(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], share: float,
