@@ -54,8 +54,6 @@ NOT_DRAWN = {
 KNOWN: dict[tuple[str, str, str], str] = {
     **{("triad-six-bar", "velocity_table", lang): "the table of a class III six-bar (9 points, 5 links) is wider "
        "than an A4 page" for lang in LANGS},
-    **{("scotch-yoke", "kinematic_analysis_sheet", lang): "the scheme's position number '1' goes out on a ring "
-       "leader onto the slider diagrams' tick '−25'" for lang in ("en", "ru")},
     ("triad-six-bar", "force_analysis_sheet", "zh"): "the acceleration plan's φ line runs into the label nCEc",
 }
 

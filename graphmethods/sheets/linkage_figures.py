@@ -466,7 +466,8 @@ def _plan_labels(occ: Occupancy, pts_mm: dict, pole: str, rays: list[str], *, ma
             d = at - p
             prefer = math.degrees(math.atan2(-d[1], d[0]))
         out.append(_place(occ, tuple(at), text, prefer, size_mm=size_mm, within=within, hard=hard,
-                          name=f"{prefix}name-{id_of(g[0][0])}", gaps=(0.8, 1.8, 3.0, 4.5), leaders=leaders))
+                          name=f"{prefix}name-{id_of(g[0][0])}", gaps=(0.8, 1.8, 3.0, 4.5), leaders=leaders,
+                          ring=leaders is not None))
     return out
 
 
