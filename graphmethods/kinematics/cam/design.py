@@ -237,17 +237,17 @@ def _design_oscillating(p: CamProblem) -> float:
 
 def smallest_admissible(lo_r: float, hi_r: float, admissible: Callable[[float], bool]) -> float | None:
     """The smallest r in (lo_r, hi_r) with ``admissible(r)`` (true from there up): the first admissible of 64
-    grid points, then bisection to rounding; None when no grid point is admissible.
+    grid points (scanned upwards; the points above it are never asked), then bisection to rounding; None when
+    no grid point is admissible.
 
     >>> round(smallest_admissible(0.0, 1.0, lambda r: r >= 0.3), 12)
     0.3
     """
     grid = np.linspace(lo_r, hi_r, 66)[1:-1]
-    ok = [r for r in grid if admissible(float(r))]
-    if not ok:
+    i = next((k for k, r in enumerate(grid.tolist()) if admissible(r)), None)   # the first: those above not asked
+    if i is None:
         return None
-    hi = float(ok[0])
-    i = int(np.searchsorted(grid, hi))
+    hi = float(grid[i])
     lo = float(grid[i - 1]) if i > 0 else lo_r
     for _ in range(200):
         mid = 0.5 * (lo + hi)
