@@ -35,7 +35,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from graphmethods.kinematics.cam import CamDesign
-from graphmethods.kinematics.cam.design import psi_0_rows, smallest_admissible
+from graphmethods.kinematics.cam.design import made_once, psi_0_rows, smallest_admissible
 from graphmethods.kinematics.cam.extrema import maximize_rows
 from graphmethods.kinematics.cam.geometry import psi_0
 from graphmethods.scene import Line, Point, Polyline, Region, Scale, Text, pick_scale
@@ -138,7 +138,7 @@ def zone_boundary_r0(cam: CamDesign) -> float:
 
 
 #: the zone's boundary point of each design drawn in this process (a sheet and its A4 figure draw it twice)
-_CENTRES: dict[CamDesign, tuple[float, float]] = {}
+_CENTRES: dict[CamDesign, tuple[float, ...]] = {}
 
 
 def boundary_centre(cam: CamDesign) -> Array:
@@ -146,16 +146,7 @@ def boundary_centre(cam: CamDesign) -> Array:
 
     Found once per design in a process (a :class:`CamDesign` is frozen; a fresh array is returned each time).
     """
-    try:
-        found = _CENTRES.get(cam)
-    except TypeError:                                # a design holding something unhashable: found afresh
-        return _boundary_centre(cam)
-    if found is None:
-        if len(_CENTRES) >= 64:
-            _CENTRES.clear()
-        O = _boundary_centre(cam)
-        found = _CENTRES[cam] = (float(O[0]), float(O[1]))
-    return np.array(found)
+    return np.array(made_once(_CENTRES, cam, lambda c: tuple(_boundary_centre(c).tolist())))
 
 
 def _boundary_centre(cam: CamDesign) -> Array:

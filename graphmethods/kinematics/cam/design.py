@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -43,6 +44,8 @@ from graphmethods.kinematics.cam.geometry import (
 from graphmethods.kinematics.cam.problem import CamProblem, Phase
 
 Array = NDArray[np.float64]
+K = TypeVar("K")
+V = TypeVar("V")
 #: a function of (s, ds/dφ, d²s/dφ²) over a phase, to be maximised
 Objective = Callable[[Array, Array, Array], Array]
 
@@ -221,7 +224,7 @@ def psi_0_rows(r0: Array, arm: float, pivot: float) -> tuple[Array, NDArray[np.b
 
     >>> psi, ok = psi_0_rows(np.array([0.05, 0.5]), 0.1, 0.12)
     >>> psi.round(6).tolist(), ok.tolist()
-    ([0.421431, 0.0], [True, False])
+    ([0.421442, 0.0], [True, False])
     """
     psi = np.zeros(len(r0))
     ok = np.zeros(len(r0), dtype=bool)
@@ -359,15 +362,26 @@ def design(p: CamProblem) -> CamDesign:
     >>> design(cam_from_dict(EXAMPLE)) is design(cam_from_dict(EXAMPLE))
     True
     """
+    return made_once(_DESIGNS, p, design_afresh)
+
+
+def made_once(cache: dict[K, V], key: K, make: Callable[[K], V]) -> V:
+    """``make(key)``, kept in ``cache`` for the process (at most 64 entries; a key that cannot be hashed is
+    made afresh): the cam's design and the rocker zone's boundary are made once per frozen value.
+
+    >>> made: dict[float, float] = {}
+    >>> made_once(made, 2.0, lambda x: x * x), made
+    (4.0, {2.0: 4.0})
+    """
     try:
-        made = _DESIGNS.get(p)
-    except TypeError:                       # a problem holding something unhashable: designed afresh
-        return design_afresh(p)
-    if made is None:
-        if len(_DESIGNS) >= 64:
-            _DESIGNS.clear()
-        made = _DESIGNS[p] = design_afresh(p)
-    return made
+        found = cache.get(key)
+    except TypeError:                       # something unhashable inside: made afresh
+        return make(key)
+    if found is None:
+        if len(cache) >= 64:
+            cache.clear()
+        found = cache[key] = make(key)
+    return found
 
 
 def design_afresh(p: CamProblem) -> CamDesign:
