@@ -726,7 +726,7 @@ def _cam_oscillating_rows(repeat: int) -> list[Row]:
     """The built-in rocker cam: its designed r₀ and its zone's boundary (k-sections, every candidate at once;
     error: the zone's r₀ against the design's), and the gallery's cam figures built to SVG with the caches
     emptied before each run (each problem's first figure pays its design and zone), a figure on average."""
-    from graphmethods.gallery import catalogue
+    from graphmethods import gallery
     from graphmethods.kinematics.cam import design
     from graphmethods.kinematics.cam.design import _DESIGNS, design_afresh
     from graphmethods.problems.builtin import cam_problem
@@ -741,7 +741,7 @@ def _cam_oscillating_rows(repeat: int) -> list[Row]:
             Row("cam", "rocker cam: the zone's boundary point O", "k-section on δ", None,
                 median_time(lambda: cam_rocker._boundary_centre(cam), repeat=repeat), err,
                 note="error: |O B₀| against the designed r₀ (relative)")]
-    figures = [f for f in catalogue.CATALOGUE if f.problem.startswith("cam:")]
+    figures = [f for f in gallery.CATALOGUE if f.problem.startswith("cam:")]
     svg.to_string(figures[-1].build())                   # the imports warmed
 
     def build() -> None:
