@@ -24,13 +24,13 @@ from typing import Any
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
+from graphmethods.scene import Element, Page, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.engine.lettering import lettering
+from graphmethods.sheets.force_fit import drawn_tip, fit_forces
 from graphmethods.sheets.layout import Sheet, given_scale
-from graphmethods.units import convenient_at_least
 
 
 def plan_sides(fa: Any, j: int, i: int) -> list[tuple[str, complex, bool]]:
@@ -198,57 +198,10 @@ def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
     return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
 
 
-def fit_with_arrows(points: list[complex], arrows: list[tuple[complex, complex]], s_F: Scale, area: SF.Box,
-                    nt: Notation, *, pad_mm: float = 14.0) -> tuple[Scale, SF.ToMm]:
-    """The largest convenient μ_l (m per mm) at which ``points`` (m) and the ``arrows`` drawn from their points
-    to μ_F (each (point m, force N)) fit ``area`` with ``pad_mm`` round them for the labels, and the map from a
-    point (m) to the page (mm) centring the whole drawing in ``area``.
-
-    >>> from graphmethods.scene import Scale
-    >>> s_l, at = fit_with_arrows([0j, 0.1 + 0j], [(0.1 + 0j, 100 + 0j)], Scale("μ_F", "N", 10.0),
-    ...                           (0.0, 0.0, 200.0, 100.0), get_notation("en"))
-    >>> s_l.per_mm, at(0j)
-    (0.001, (45.0, 50.0))
-    """
-    from graphmethods.scene.scale import pick_scale
-
-    room = (area[2] - area[0] - 2 * pad_mm, area[3] - area[1] - 2 * pad_mm)
-    z = np.asarray(points, dtype=complex)
-    span = max(float(np.ptp(z.real)) * room[1] / max(room[0], 1e-9), float(np.ptp(z.imag)), 1e-12)
-    first = pick_scale(span, max(room[1], 1e-9), symbol="μ_l", unit=nt.unit("m"))
-    tips = np.asarray([p for p, _ in arrows], dtype=complex)
-    offsets = np.asarray([F / s_F.per_mm for _, F in arrows], dtype=complex)
-    mu = first.per_mm
-    for _ in range(40):                         # up the series 1, 2, 2.5, 4, 5 × 10ᵏ until the arrows fit too
-        xs = np.concatenate([z.real / mu, tips.real / mu + offsets.real])
-        ys = np.concatenate([z.imag / mu, tips.imag / mu + offsets.imag])
-        if np.ptp(xs) <= room[0] + 1e-9 and np.ptp(ys) <= room[1] + 1e-9:
-            break
-        mu = _next_scale(mu)
-    s_l = Scale("μ_l", nt.unit("m"), mu)
-    cx = (area[0] + area[2]) / 2 - (float(xs.min()) + float(xs.max())) / 2
-    cy = (area[1] + area[3]) / 2 + (float(ys.min()) + float(ys.max())) / 2
-
-    def at(w: complex) -> tuple[float, float]:
-        return (cx + w.real / mu, cy - w.imag / mu)
-
-    return s_l, at
-
-
-def _next_scale(per_mm: float) -> float:
-    """The next larger value of the convenient series 1, 2, 2.5, 4, 5 × 10ᵏ after ``per_mm``.
-
-    >>> _next_scale(0.002), _next_scale(0.005), _next_scale(0.0025)
-    (0.0025, 0.01, 0.004)
-    """
-    return convenient_at_least(per_mm * (1 + 1e-9))
-
-
 def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
     """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
     its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
     cut from (dashed: found on the plan)."""
-    L = SF.ForceFigureLayout(largest_force_mm=0.0, margin_mm=0.0)
     nt = get_notation(nt)
     mo = fa.motion
     pl = fa.plans[j]
@@ -259,14 +212,12 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
     where = {lbl: _side_point(fa, lbl, i, lk.crank.pin, lk.crank.centre) for lbl, _, _ in sides}
-    w, h = sheet.box[2] - sheet.box[0], sheet.caption_y - sheet.top
-    F_mm = min(60.0, max(20.0, min(w, h) / 3.5))
-    L = SF.ForceFigureLayout(largest_force_mm=F_mm, margin_mm=0.6 * F_mm + 6.0)
+    L = SF.SCHEME_LAYOUT
     area = (sheet.box[0], sheet.top + 4.0, sheet.box[2], sheet.caption_y - L.bottom_mm)
-    s_F = given_scale(None, "μ_F", nt.unit("N"), big, F_mm, what="the largest force")
     arrows = [(where[lbl], F) for lbl, F, _ in sides]
     arrows += [(complex(f.at[i]), complex(f.F[i])) for ln in pl.links for f in fa.applied.get(ln, ())]
-    s_l, at = fit_with_arrows(list(z.values()) + list(where.values()), arrows, s_F, area, nt)
+    s_l, s_F, at = fit_forces(list(z.values()) + list(where.values()), arrows, area, nt,
+                              pad_mm=SF.lettering_pad(page))
     segs, blocks = SF._links_of(mo, i)
     segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0]
     occ = sheet.occ
@@ -289,9 +240,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
         if lbl in own or within_roundoff(abs(F), big):
             continue
         a = at(where[lbl])
-        b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
-        if math.dist(a, b) < L.min_mm:
-            continue
+        b, _ = drawn_tip(a, F, s_F)
         els.append(SF._drawn(occ, Vector(a, b, known=lbl == "F_b", head_length_mm=L.head_mm, name=f"reaction-{k}")))
         labels.append((b, _label(lbl, nt), f"label-reaction-{k}"))
     els += SF._labels(occ, labels, L.within(area))

@@ -37,6 +37,7 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
+from graphmethods.sheets.force_fit import drawn_tip
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -247,6 +248,39 @@ def _fit(cloud: np.ndarray, area: Box, L: ForceFigureLayout, mu_l: Any, nt: Nota
         return (cx + z.real / s_l.per_mm, cy - z.imag / s_l.per_mm)
 
     return s_l, at
+
+
+def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.ndarray,
+            arrows: Sequence[tuple[complex, complex]], mu_l: Any, mu_F: Any, nt: Notation, what: str,
+            page: Any) -> tuple[Box, list[Element], Scale, Scale, ToMm]:
+    """The drawing area, the texts, μ_l, μ_F and the map of a drawing of ``cloud`` (m) carrying ``arrows``
+    ((point m, force N)). On a course sheet (A1, A2) with neither scale given, both are chosen together
+    so the drawing and its forces fill the area (:func:`~graphmethods.sheets.force_fit.fit_forces`);
+    otherwise μ_F draws the largest force ``L.largest_force_mm`` long and μ_l fits the drawing with
+    ``L.margin_mm`` round it."""
+    from graphmethods.sheets.engine.lettering import is_course_sheet
+    from graphmethods.sheets.force_fit import fit_forces
+
+    if mu_l is None and mu_F is None and page is not None and is_course_sheet(page):
+        picked: dict[Box, Scale] = {}
+
+        def fit(box: Box) -> tuple[Scale, ToMm]:
+            s_l, picked[box], at = fit_forces(cloud, arrows, box, nt, pad_mm=lettering_pad(page))
+            return s_l, at
+
+        area, column, s_l, at = _arranged(sheet, texts, L, fit)
+        return area, column, s_l, picked[area], at
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), max(abs(F) for _, F in arrows), L.largest_force_mm,
+                      what=f"the largest force on {what}")
+    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, what))
+    return area, column, s_l, s_F, at
+
+
+def lettering_pad(page: Any) -> float:
+    """The room (mm) kept round a drawing for its labels: three label heights of the page's lettering."""
+    from graphmethods.sheets.engine.lettering import lettering
+
+    return 3.0 * lettering(page).label_mm
 
 
 AnElement = TypeVar("AnElement", bound=Element)
@@ -503,10 +537,9 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
     items.append(("F_b", complex(lev.image_pin[i]), complex(lev.F_balance[i])))
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), max(abs(F) for _, _, F in items), L.largest_force_mm,
-                      what="the largest force on the lever")
     cloud = np.array([0j] + list(images.values()) + [z for _, z, _ in items])
-    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the lever"))
+    area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, w, F in items], mu_l, mu_F, nt,
+                                         "the lever", page)
     occ = sheet.occ
     pole = at(0j)
     els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
@@ -515,7 +548,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     vec_labels: list[LabelSpec] = []
     for j, (label, z, F) in enumerate(items):
         a = at(z)
-        b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
+        b, _ = drawn_tip(a, F, s_F)
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
@@ -679,8 +712,8 @@ def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_
     n_f = 0                                    # the forces drawn (one too short to draw is left out)
     for label, F, where, M in forces:
         start = at(where)
-        if abs(F) / s_F.per_mm >= L.min_mm:
-            tip = (start[0] + F.real / s_F.per_mm, start[1] - F.imag / s_F.per_mm)
+        if abs(F) > 0.0:                       # too short to draw to scale: the least arrow, its value in the label
+            tip, _ = drawn_tip(start, F, s_F)
             els.append(_drawn(occ, Vector(start, tip, head_length_mm=L.head_mm, name=f"force-{n_f}")))
             n_f += 1
             labels.append((tip, f"{_markup(label, nt)} = {nt.number(abs(F), sig=4)} {nt.unit('N')}",
@@ -728,9 +761,9 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     forces = [(lbl, F, at_, round_off_zero(M, M_size)) for lbl, F, at_, M in forces]
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, L.largest_force_mm, what="the largest force")
     cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1]))
-    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
+    area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, F, w, _ in forces], mu_l, mu_F, nt,
+                                         "the scheme", page)
     occ = sheet.occ
     els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
     labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
