@@ -265,7 +265,7 @@ def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.
         picked: dict[Box, Scale] = {}
 
         def fit(box: Box) -> tuple[Scale, ToMm]:
-            s_l, picked[box], at = fit_forces(cloud, arrows, box, nt, pad_mm=lettering_pad(page))
+            s_l, picked[box], at = fit_forces(list(cloud), arrows, box, nt, pad_mm=lettering_pad(page))
             return s_l, at
 
         area, column, s_l, at = _arranged(sheet, texts, L, fit)
@@ -495,6 +495,11 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
 
 
 # ----------------------------------------------------------------------------- Zhukovsky's lever
+
+def scheme_texts(fa: Any, i: int, nt: Notation) -> list[str]:
+    """The scheme's lines: what its arrows are, M_b from the force plans."""
+    return [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(float(fa.M_balance[i]), sig=6))]
+
 
 def _lever_texts(fa: Any, i: int, nt: Notation) -> list[str]:
     """The lever's column: the plan turned, the couples, Σ M_p = 0 and F_b, M_b, the force plans' M_b."""
@@ -753,7 +758,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     mo = fa.motion
     sheet = _sheet(case, nt, "scheme", i, phi_deg, page=page, title=title, title_block=title_block)
     Mb = float(fa.M_balance[i])
-    texts = [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(Mb, sig=6))]
+    texts = scheme_texts(fa, i, nt)
     z = {p: complex(mo.z[p][i]) for p in mo.points}
     forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i])) for fs in fa.applied.values() for f in fs]
     F_max = max([abs(F) for _, F, _, _ in forces] + [0.0])
