@@ -103,6 +103,40 @@ def drawn_tip(start: tuple[float, float], F: complex, s_F: Scale) -> tuple[tuple
     return (start[0] + d.real, start[1] - d.imag), abs(F) / s_F.per_mm >= TOO_SHORT_MM
 
 
+def arm_lines(pole: tuple[float, float], a: tuple[float, float], b: tuple[float, float], *, least_mm: float = 3.0,
+              within: Box | None = None) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The arm of the force drawn from ``a`` to ``b`` (mm) about ``pole`` as Zhukovsky's lever draws it: the
+    perpendicular from the pole to the force's line of action, and the line of action produced to its foot
+    when the foot lies off the arrow. None for a force through the pole (an arm under ``least_mm``), or whose
+    foot falls outside ``within`` (mm, the drawing's area).
+
+    >>> arm_lines((0.0, 0.0), (10.0, 5.0), (20.0, 5.0))
+    [((0.0, 0.0), (0.0, 5.0)), ((10.0, 5.0), (0.0, 5.0))]
+    >>> arm_lines((0.0, 0.0), (-5.0, 5.0), (5.0, 5.0))
+    [((0.0, 0.0), (0.0, 5.0))]
+    >>> arm_lines((0.0, 0.0), (10.0, 0.0), (20.0, 0.0))
+    []
+    """
+    P, A, B = (np.asarray(p, dtype=float) for p in (pole, a, b))
+    d = B - A
+    n = float(np.hypot(*d))
+    if n == 0.0:
+        return []
+    e = d / n
+    t = float((P - A) @ e)
+    foot = A + t * e
+    outside = within is not None and not (within[0] <= foot[0] <= within[2] and within[1] <= foot[1] <= within[3])
+    if float(np.hypot(*(foot - P))) < least_mm or outside:
+        return []
+    f = (float(foot[0]) + 0.0, float(foot[1]) + 0.0)
+    out = [((float(P[0]), float(P[1])), f)]
+    if t < 0.0:
+        out.append(((float(A[0]), float(A[1])), f))
+    elif t > n:
+        out.append(((float(B[0]), float(B[1])), f))
+    return out
+
+
 def fit_forces(points: Sequence[complex], arrows: Sequence[tuple[complex, complex]], area: Box, nt: Notation, *,
                pad_mm: float = 12.0, ratio: float = 0.5, least_mm: float = 20.0) -> tuple[Scale, Scale, ToMm]:
     """μ_l, μ_F (both convenient) and the map to the page of a drawing of ``points`` (m) with its ``arrows``
@@ -187,5 +221,5 @@ class PanelContent:
         return max(w, self.text_mm[0]), h + self.text_mm[1] + self.below_mm
 
 
-__all__ = ["LEAST_ARROW_MM", "TOO_SHORT_MM", "PanelContent", "drawn_tip", "fit_forces", "fit_with_arrows",
+__all__ = ["LEAST_ARROW_MM", "TOO_SHORT_MM", "PanelContent", "arm_lines", "drawn_tip", "fit_forces", "fit_with_arrows",
            "next_scale"]

@@ -33,6 +33,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.markup import text_width_mm
+from graphmethods.scene.notation import Notation
 from graphmethods.scene.scale import pick_scale
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import PanelContent
@@ -48,6 +49,24 @@ def _with_tips(points: list[complex], arrows: list[tuple[complex, complex]], rat
     F_max = max([abs(F) for _, F in arrows] + [0.0])
     k = ratio * size / F_max if F_max > 0 else 0.0
     return tuple(points) + tuple(w + k * F for w, F in arrows)
+
+
+def scheme_texts(fa: Any, i: int, nt: Notation) -> list[str]:
+    """The scheme's lines: what its arrows are, M_b from the force plans."""
+    return [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(float(fa.M_balance[i]), sig=6))]
+
+
+def lever_texts(fa: Any, i: int, nt: Notation) -> list[str]:
+    """The lever's column: the plan turned, the couples, Σ M_p = 0 and F_b, M_b, the force plans' M_b."""
+    from graphmethods.sheets import forces as SF
+
+    lev = fa.lever
+    Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
+    d = float(fa.difference_percent(lev.M_balance)[i])
+    return [nt.word("forces.turned"), nt.word("forces.couple"),
+            nt.word("forces.lever_equation", Fb=nt.number(abs(complex(lev.F_balance[i])), sig=5)),
+            nt.word("forces.lever_result", Mb=nt.number(Mb_l, sig=6)),
+            nt.word("forces.lever_plans", Mb=nt.number(Mb, sig=6), d=SF.percent_text(d, nt))]
 
 
 def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", page: Any = "A1") -> PanelContent:
@@ -103,17 +122,17 @@ def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", pag
     if kind == "scheme":
         z = [complex(mo.z[p][i]) for p in mo.points] + SF._guide_ends(mo, SF._links_of(mo, i)[1])
         arrows = [(complex(f.at[i]), complex(f.F[i])) for fs in fa.applied.values() for f in fs]
-        texts = SF.scheme_texts(fa, i, nt)
+        texts = scheme_texts(fa, i, nt)
     else:
         fixed = set(mo.linkage.ground)
         z = [0j] + [1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed]
         lev = fa.lever
         arrows = [(complex(f.image[i]), complex(f.F[i])) for f in lev.forces]
         arrows.append((complex(lev.image_pin[i]), complex(lev.F_balance[i])))
-        texts = SF._lever_texts(fa, i, nt)
+        texts = lever_texts(fa, i, nt)
     width = max(text_width_mm(t, let.label_mm) for t in texts)
     height = head + 2.0 + len(texts) * SF.SCHEME_LAYOUT.text_pitch_mm + SF.SCHEME_LAYOUT.reach_top_mm
     return PanelContent(_with_tips(z, arrows), nt.unit("m"), (width, height), below, pad)
 
 
-__all__ = ["KINDS", "panel_content"]
+__all__ = ["KINDS", "lever_texts", "panel_content", "scheme_texts"]

@@ -35,9 +35,10 @@ from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
-from graphmethods.scene.primitives import THIN, Style
+from graphmethods.scene.primitives import DASHED, THIN, Style
 from graphmethods.scene.scale import pick_scale
-from graphmethods.sheets.force_fit import drawn_tip
+from graphmethods.sheets.force_fit import arm_lines, drawn_tip
+from graphmethods.sheets.force_panels import lever_texts, scheme_texts
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -496,22 +497,6 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
 
 # ----------------------------------------------------------------------------- Zhukovsky's lever
 
-def scheme_texts(fa: Any, i: int, nt: Notation) -> list[str]:
-    """The scheme's lines: what its arrows are, M_b from the force plans."""
-    return [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(float(fa.M_balance[i]), sig=6))]
-
-
-def _lever_texts(fa: Any, i: int, nt: Notation) -> list[str]:
-    """The lever's column: the plan turned, the couples, Σ M_p = 0 and F_b, M_b, the force plans' M_b."""
-    lev = fa.lever
-    Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
-    d = float(fa.difference_percent(lev.M_balance)[i])
-    return [nt.word("forces.turned"), nt.word("forces.couple"),
-            nt.word("forces.lever_equation", Fb=nt.number(abs(complex(lev.F_balance[i])), sig=5)),
-            nt.word("forces.lever_result", Mb=nt.number(Mb_l, sig=6)),
-            nt.word("forces.lever_plans", Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
-
-
 def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                      gravity: bool = False, mu_l: Any = None, mu_F: Any = None, notation: Any = "en",
                      page: Any = None, title: str | None = None, title_block: bool = True,
@@ -537,7 +522,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever
     sheet = _sheet(case, nt, "lever", i, phi_deg, page=page, title=title, title_block=title_block)
-    texts = _lever_texts(fa, i, nt)
+    texts = lever_texts(fa, i, nt)
     fixed = set(mo.linkage.ground)
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
@@ -556,6 +541,8 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         b, _ = drawn_tip(a, F, s_F)
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
+        els += [_drawn(occ, Line(p, q, style=DASHED, name=f"arm-{j}-{k}"))
+                for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area))]
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
              for p, z in images.items()]
