@@ -92,14 +92,16 @@ def _drawn_length(F: complex, s_F: Scale) -> complex:
     return F / s_F.per_mm if n >= TOO_SHORT_MM else F / abs(F) * LEAST_ARROW_MM
 
 
-def drawn_tip(start: tuple[float, float], F: complex, s_F: Scale) -> tuple[tuple[float, float], bool]:
-    """The tip (mm, page) of the arrow of ``F`` (N) drawn from ``start``, and whether it is to scale.
+def drawn_tip(start: tuple[float, float], F: complex, s_F: Scale, *,
+              least: bool = True) -> tuple[tuple[float, float], bool]:
+    """The tip (mm, page) of the arrow of ``F`` (N) drawn from ``start``, and whether it is to scale (with
+    ``least`` false, always: a figure whose every arrow is to scale).
 
     >>> from graphmethods.scene import Scale
     >>> drawn_tip((0.0, 0.0), 100 + 0j, Scale("μ_F", "N", 10.0)), drawn_tip((0.0, 0.0), 1j, Scale("μ_F", "N", 10.0))
     (((10.0, 0.0), True), ((0.0, -7.0), False))
     """
-    d = _drawn_length(F, s_F)
+    d = _drawn_length(F, s_F) if least else F / s_F.per_mm
     return (start[0] + d.real, start[1] - d.imag), abs(F) / s_F.per_mm >= TOO_SHORT_MM
 
 
@@ -221,5 +223,5 @@ class PanelContent:
         return max(w, self.text_mm[0]), h + self.text_mm[1] + self.below_mm
 
 
-__all__ = ["LEAST_ARROW_MM", "TOO_SHORT_MM", "PanelContent", "arm_lines", "drawn_tip", "fit_forces", "fit_with_arrows",
-           "next_scale"]
+__all__ = ["LEAST_ARROW_MM", "TOO_SHORT_MM", "PanelContent", "arm_lines", "drawn_tip", "fit_forces",
+           "fit_with_arrows", "next_scale"]

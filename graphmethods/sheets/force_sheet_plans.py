@@ -232,7 +232,8 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     labels: list[SF.LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     applied = [(f.label, complex(f.F[i]), complex(f.at[i]), SF.round_off_zero(float(f.M[i]), big))
                for ln in pl.links for f in fa.applied.get(ln, ())]
-    drawn, wanted = SF._applied(applied, at, s_F, nt, occ, L, lambda w_: SF._directions(w_, z, segs))
+    drawn, wanted = SF._applied(applied, at, s_F, nt, occ, L, lambda w_: SF._directions(w_, z, segs),
+                                  least=True)
     els += drawn
     labels += wanted
     own = {f[0] for f in applied}

@@ -259,10 +259,9 @@ def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.
     so the drawing and its forces fill the area (:func:`~graphmethods.sheets.force_fit.fit_forces`);
     otherwise μ_F draws the largest force ``L.largest_force_mm`` long and μ_l fits the drawing with
     ``L.margin_mm`` round it."""
-    from graphmethods.sheets.engine.lettering import is_course_sheet
     from graphmethods.sheets.force_fit import fit_forces
 
-    if mu_l is None and mu_F is None and page is not None and is_course_sheet(page):
+    if _on_course(page, mu_l, mu_F):
         picked: dict[Box, Scale] = {}
 
         def fit(box: Box) -> tuple[Scale, ToMm]:
@@ -275,6 +274,14 @@ def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.
                       what=f"the largest force on {what}")
     area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, what))
     return area, column, s_l, s_F, at
+
+
+def _on_course(page: Any, mu_l: Any, mu_F: Any) -> bool:
+    """A force figure drawn into a course sheet (A1, A2) with its scales left to it: its scales are fitted
+    together, a force too short to draw is drawn at the least arrow, the lever's arms are drawn."""
+    from graphmethods.sheets.engine.lettering import is_course_sheet
+
+    return mu_l is None and mu_F is None and page is not None and is_course_sheet(page)
 
 
 def lettering_pad(page: Any) -> float:
@@ -536,13 +543,14 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     els += [_drawn(occ, Line(pole, at(z), style=THIN, name=f"ray-{p}")) for p, z in images.items()
             if abs(z) / s_l.per_mm >= L.min_mm]
     vec_labels: list[LabelSpec] = []
+    course = _on_course(page, mu_l, mu_F)
     for j, (label, z, F) in enumerate(items):
         a = at(z)
-        b, _ = drawn_tip(a, F, s_F)
+        b, _ = drawn_tip(a, F, s_F, least=course)
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
         els += [_drawn(occ, Line(p, q, style=DASHED, name=f"arm-{j}-{k}"))
-                for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area))]
+                for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area) if course else [])]
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
              for p, z in images.items()]
@@ -695,8 +703,10 @@ def _moment_arc(centre: tuple[float, float], radius_mm: float, sweep_deg: float,
 
 def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_F: Scale, nt: Notation,
              occ: Occupancy, L: ForceFigureLayout,
-             around: Callable[[complex], list[float]]) -> tuple[list[Element], list[LabelSpec]]:
-    """Each applied force drawn to μ_F from its point; each moment as an arc in its sense, on the side of its
+             around: Callable[[complex], list[float]], *,
+             least: bool = False) -> tuple[list[Element], list[LabelSpec]]:
+    """Each applied force drawn to μ_F from its point (``least``: one too short to draw at the least arrow,
+    :func:`~graphmethods.sheets.force_fit.drawn_tip`); each moment as an arc in its sense, on the side of its
     point away from the links there (``around``) and its force; their labels."""
 
     els: list[Element] = []
@@ -704,8 +714,8 @@ def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_
     n_f = 0                                    # the forces drawn (one too short to draw is left out)
     for label, F, where, M in forces:
         start = at(where)
-        if abs(F) > 0.0:                       # too short to draw to scale: the least arrow, its value in the label
-            tip, _ = drawn_tip(start, F, s_F)
+        if abs(F) / s_F.per_mm >= (0.0 if least else L.min_mm) and abs(F) > 0.0:
+            tip, _ = drawn_tip(start, F, s_F, least=least)        # too short to draw to scale: the least arrow
             els.append(_drawn(occ, Vector(start, tip, head_length_mm=L.head_mm, name=f"force-{n_f}")))
             n_f += 1
             labels.append((tip, f"{_markup(label, nt)} = {nt.number(abs(F), sig=4)} {nt.unit('N')}",
@@ -768,7 +778,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
         below = [240.0, 270.0, 300.0] if any(abs(w - q) <= 1e-12 for q in pivots) else []
         return _directions(w, z, segs) + below
 
-    drawn, wanted = _applied(forces, at, s_F, nt, occ, L, around)
+    drawn, wanted = _applied(forces, at, s_F, nt, occ, L, around, least=_on_course(page, mu_l, mu_F))
     els += drawn
     labels += wanted
     cr = mo.linkage.crank
