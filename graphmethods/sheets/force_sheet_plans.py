@@ -19,12 +19,13 @@ the frame's reaction with F_b in place of M_b, closes it (dashed).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Element, Page, Scene, Text, Vector, markup, notation as get_notation
+from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.sheets import forces as SF
@@ -109,29 +110,27 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     sheet = Sheet(nt=nt, page=page, title=cap, problem="", title_block=False)
     sides = plan_sides(fa, j, i)
     pts = np.cumsum([0j] + [F for _, F, _ in sides])
-    size = lettering(page).label_mm
-    eq = Text((sheet.box[0], sheet.top + size), plan_equation(fa, j, i, nt), size_mm=size, name=f"equation-{j}")
-    _keep_clear(sheet, eq)
+    let = lettering(page)
     found = _found(fa, j, i, sides)
-    value_mm = lettering(page).value_mm
-    pitch = 1.8 * value_mm
-    top = sheet.top + 2.0 * size + (len(found) + 0.5) * pitch + L.overhang_mm
-    area = (sheet.box[0] + L.left_mm + L.overhang_mm, top,
-            sheet.box[2] - L.left_mm - L.overhang_mm, sheet.caption_y - L.bottom_mm)
-    pw, ph = area[2] - area[0], area[3] - area[1]
-    if pw <= 10.0 or ph <= 10.0:
-        raise InputError("the force plan's panel is too small; give a larger page")
-    span = max(float(np.ptp(pts.real)) / pw, float(np.ptp(pts.imag)) / ph)
-    if span <= 0:
-        raise InputError("every force is zero in this position; there is no force plan to draw")
-    s_F = given_scale(None, "μ_F", nt.unit("N"), span * pw, pw, what="the force plan")
-    at = SF._cell(pts, (area[0], area[1], pw, ph), s_F)
+    equation = plan_equation(fa, j, i, nt)
+    wide = markup.text_width_mm(equation, let.value_mm) <= sheet.box[2] - sheet.box[0]
+    eq_mm = let.value_mm if wide else let.label_mm              # the equation as large as the values when it fits
+    pitch = 1.8 * let.value_mm
+
+    def lines(s_F: Scale) -> list[str]:
+        mu = s_F.caption(nt).split(" = ", 1)[1]
+        return [f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
+                f" = {nt.number(R, sig=5)} {nt.unit('N')}" for lbl, R in found]
+
+    area, x_text, s_F = _plan_area(sheet, pts, L,
+                                   lambda mu: [(equation, eq_mm)] + [(t, let.value_mm) for t in lines(mu)],
+                                   2.0 * eq_mm + (len(found) + 0.5) * pitch)
+    at = SF._cell(pts, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
+    eq = Text((x_text, sheet.top + eq_mm), equation, size_mm=eq_mm, name=f"equation-{j}")
+    _keep_clear(sheet, eq)
     els: list[Element] = [sheet.header(), eq]
-    mu = s_F.caption(nt).split(" = ", 1)[1]
-    for k, (lbl, R) in enumerate(found):
-        line = (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
-                f" = {nt.number(R, sig=5)} {nt.unit('N')}")
-        t = Text((sheet.box[0], sheet.top + size + (k + 1) * pitch), line, size_mm=value_mm, name=f"found-{j}-{k}")
+    for k, line in enumerate(lines(s_F)):
+        t = Text((x_text, sheet.top + eq_mm + (k + 1) * pitch), line, size_mm=let.value_mm, name=f"found-{j}-{k}")
         _keep_clear(sheet, t)
         els.append(t)
     if pl.group.startswith("I "):
@@ -141,6 +140,47 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     els += drawn
     els += SF._labels(sheet.occ, wanted, L.within(area))
     return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
+
+
+def _plan_area(sheet: Sheet, pts: np.ndarray, L: SF.ForceFigureLayout,
+               texts: Callable[[Scale], list[tuple[str, float]]], height_mm: float) -> tuple[SF.Box, float, Scale]:
+    """Where a force plan (vertices ``pts``, N) is drawn in its panel, where its lines of text begin (x, mm) and
+    its μ_F: the lines (``texts(μ_F)``: each text and its size, ``height_mm`` together) above the polygon or
+    in a column beside it, whichever draws the polygon larger (above on a tie).
+
+    Raises
+    ------
+    InputError
+        No room for the polygon, or every force zero.
+    """
+    x0, _, x1, _ = sheet.box
+    m = L.left_mm + L.overhang_mm
+    bottom = sheet.caption_y - L.bottom_mm
+    options: list[tuple[float, int, SF.Box, float, Scale]] = []
+    for n_o in (0, 1):
+        col = 0.0
+        for _ in range(3):                      # the column's width at the μ_F it gives (its lines print μ_F)
+            top = sheet.top + (height_mm if n_o == 0 else 0.0) + L.overhang_mm
+            area = (x0 + m, top, x1 - m - col, bottom)
+            pw, ph = area[2] - area[0], area[3] - area[1]
+            span = max(float(np.ptp(pts.real)) / max(pw, 1e-9), float(np.ptp(pts.imag)) / max(ph, 1e-9))
+            if pw <= 10.0 or ph <= 10.0 or span <= 0:
+                break
+            s_F = given_scale(None, "μ_F", get_notation(sheet.nt).unit("N"), span * pw, pw, what="the force plan")
+            if n_o == 0:
+                options.append((s_F.per_mm, n_o, area, x0, s_F))
+                break
+            col_new = max(markup.text_width_mm(t, mm) for t, mm in texts(s_F)) + 4.0
+            if col_new <= col + 1e-9:
+                options.append((s_F.per_mm, n_o, area, x1 - col + 2.0, s_F))
+                break
+            col = col_new
+    if not options:
+        if np.ptp(np.abs(pts)) == 0:
+            raise InputError("every force is zero in this position; there is no force plan to draw")
+        raise InputError("the force plan's panel is too small; give a larger page")
+    _, _, area, x_text, s_F = min(options, key=lambda o: (o[0], o[1]))
+    return area, x_text, s_F
 
 
 def _crank_plan(j: int, sides: list[tuple[str, complex, bool]], pts: np.ndarray, at: SF.ToMm, nt: Notation,

@@ -35,7 +35,7 @@ from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
-from graphmethods.scene.primitives import DASHED, THIN, Style
+from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
@@ -549,7 +549,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         b, _ = drawn_tip(a, F, s_F, least=course)
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
-        els += [_drawn(occ, Line(p, q, style=DASHED, name=f"arm-{j}-{k}"))
+        els += [_drawn(occ, Line(p, q, style=THIN, name=f"arm-{j}-{k}"))
                 for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area) if course else [])]
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
