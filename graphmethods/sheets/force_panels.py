@@ -82,8 +82,8 @@ def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", pag
     from graphmethods.sheets import forces as SF
     from graphmethods.sheets.force_sheet_plans import (
         _found,
-        _label,
         _side_point,
+        found_line,
         group_cloud,
         plan_equation,
         plan_sides,
@@ -104,11 +104,10 @@ def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", pag
         pts = np.cumsum([0j] + [F for _, F, _ in sides])
         found = _found(fa, j, i, sides)
         mu = pick_scale(float(np.ptp(np.abs(pts))) or 1.0, 100.0, symbol="μ_F", unit=nt.unit("N"))
-        lines = [f"{_label(lbl, nt)} = {nt.number(R / mu.per_mm, sig=4)} {nt.unit('mm')} · {mu.caption(nt)}"
-                 f" = {nt.number(R, sig=5)} {nt.unit('N')}" for lbl, R in found]
-        width = max([text_width_mm(plan_equation(fa, j, i, nt), let.label_mm)]
+        lines = [found_line(lbl, R, mu, nt) for lbl, R in found]
+        width = max([text_width_mm(plan_equation(fa, j, i, nt), let.value_mm)]
                     + [text_width_mm(t, let.value_mm) for t in lines])
-        height = head + 2.0 * let.label_mm + (len(found) + 0.5) * 1.8 * let.value_mm + SF.PLANS_LAYOUT.overhang_mm
+        height = head + 2.0 * let.value_mm + (len(found) + 0.5) * 1.8 * let.value_mm + SF.PLANS_LAYOUT.overhang_mm
         margin = SF.PLANS_LAYOUT.left_mm + SF.PLANS_LAYOUT.overhang_mm
         return PanelContent(tuple(complex(p) for p in pts), nt.unit("N"), (width, height), below, margin)
     if kind == "group":

@@ -92,6 +92,17 @@ def _found(fa: Any, j: int, i: int, sides: list[tuple[str, complex, bool]]) -> l
     return out
 
 
+def found_line(lbl: str, R: float, s_F: Scale, nt: Notation) -> str:
+    """A reaction found on a plan as the book writes it: its side's length times μ_F.
+
+    >>> found_line("R_05", 546.93, Scale("μ_F", "N", 50.0), get_notation("en"))
+    'R_{05} = 10.94 mm · 50 N/mm = 546.93 N'
+    """
+    mu = s_F.caption(nt).split(" = ", 1)[1]
+    return (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
+            f" = {nt.number(R, sig=5)} {nt.unit('N')}")
+
+
 def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
                phi_deg: float | None = None) -> Scene:
     """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
@@ -118,9 +129,7 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     pitch = 1.8 * let.value_mm
 
     def lines(s_F: Scale) -> list[str]:
-        mu = s_F.caption(nt).split(" = ", 1)[1]
-        return [f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
-                f" = {nt.number(R, sig=5)} {nt.unit('N')}" for lbl, R in found]
+        return [found_line(lbl, R, s_F, nt) for lbl, R in found]
 
     area, x_text, s_F = _plan_area(sheet, pts, L,
                                    lambda mu: [(equation, eq_mm)] + [(t, let.value_mm) for t in lines(mu)],
