@@ -285,10 +285,10 @@ def _on_course(page: Any, mu_l: Any, mu_F: Any) -> bool:
 
 
 def lettering_pad(page: Any) -> float:
-    """The room (mm) kept round a drawing for its labels: three label heights of the page's lettering."""
+    """The room (mm) kept round a drawing for its labels: two label heights of the page's lettering."""
     from graphmethods.sheets.engine.lettering import lettering
 
-    return 3.0 * lettering(page).label_mm
+    return 2.0 * lettering(page).label_mm
 
 
 AnElement = TypeVar("AnElement", bound=Element)
