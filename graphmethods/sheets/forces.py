@@ -550,7 +550,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
         els += [_drawn(occ, Line(p, q, style=THIN, name=f"arm-{j}-{k}"))
-                for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area) if course else [])]
+                for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area) if course and label[0] != "M" else [])]
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
              for p, z in images.items()]
