@@ -323,8 +323,8 @@ class Occupancy:
         d = self.pad + TIE_MM                      # a touch crosses
         grown = [(b[0] + -d, b[1] + -d, b[2] + d, b[3] + d) for b in rows]
         segs, index = self.segments, self._indexed()
-        return np.array([sum(_segment_hits_box(segs[k][0], segs[k][1], g) for k in self._near(g, index)) for g in grown],
-                        dtype=int)
+        return np.array([sum(_segment_hits_box(segs[k][0], segs[k][1], g) for k in self._near(g, index))
+                         for g in grown], dtype=int)
 
     def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
         """The first label beside ``at`` (directions × gaps) whose box is free; None when none is.
