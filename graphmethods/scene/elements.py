@@ -73,9 +73,9 @@ def _letter(element: Any) -> None:
 
 
 def _pt(p: Sequence[float] | NDArray[np.float64]) -> XY:
-    if type(p) is tuple and len(p) == 2 and type(p[0]) is float and type(p[1]) is float:    # the common case
-        if math.isfinite(p[0]) and math.isfinite(p[1]):
-            return p
+    if (type(p) is tuple and len(p) == 2 and type(p[0]) is float and type(p[1]) is float    # the common case
+            and math.isfinite(p[0]) and math.isfinite(p[1])):
+        return p
     try:
         x, y = p
         x, y = float(x), float(y)
