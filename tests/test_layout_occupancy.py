@@ -135,3 +135,15 @@ def test_non_finite_ink_is_looked_at_by_every_query():
     occ.add_box((float("-inf"), 0.0, 1.0, 1.0))
     probes = [(2.0, -1.0, 4.0, 1.0), (0.0, 0.2, 0.5, 0.8), (50.0, 50.0, 52.0, 53.0)]
     assert occ.free(probes).tolist() == [plain_is_free(occ, b) for b in probes]
+
+
+def test_lists_cut_by_hand_are_indexed_anew():
+    occ = Occupancy()
+    occ.add_line(((0.0, 10.0), (100.0, 10.0)))
+    occ.add_box((40.0, 20.0, 60.0, 22.0))
+    assert occ.free([(40, 9, 60, 11), (41, 20.5, 45, 21.5)]).tolist() == [False, False]
+    occ.segments.clear()
+    occ.boxes.clear()
+    occ.add_box((0.0, 0.0, 1.0, 1.0))
+    assert occ.free([(40, 9, 60, 11), (41, 20.5, 45, 21.5)]).tolist() == [True, True]
+    assert occ.is_free((0.5, 0.5, 0.8, 0.8)) is False

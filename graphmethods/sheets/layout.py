@@ -212,6 +212,10 @@ class Occupancy:
         idx, ext = self._index, self._seg_ext
         if len(ext) == len(self.segments) and self._boxes_indexed == len(self.boxes):
             return idx
+        if len(ext) > len(self.segments) or self._boxes_indexed > len(self.boxes):     # the lists were cut: anew
+            self._index, self._boxes_indexed, self._seg = InkIndex(), 0, np.empty((0, 4))
+            self._box, self._seg_ext = np.empty((0, 4)), []
+            return self._indexed()
         for k in range(len(ext), len(self.segments)):
             (x0, y0), (x1, y1) = self.segments[k]
             ext.append((min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)))
