@@ -50,6 +50,10 @@ def format_mm(x: float) -> str:
     >>> format_mm(0.0005), format_mm(-2.0), format_mm(1e-9)
     ('0.001', '-2', '0')
     """
+    try:
+        return _MM_TEXT[x]
+    except (KeyError, TypeError):           # not written yet, or not hashable (a 0-d array)
+        pass
     x = float(x)
     s = f"{x:.3f}"
     if s[-1] in "nf":                       # 'nan', 'inf', '-inf': the only texts not ending in a digit
@@ -57,7 +61,16 @@ def format_mm(x: float) -> str:
     s = s.rstrip("0").rstrip(".")
     if s in ("-0", ""):
         s = "0"
+    if len(_MM_TEXT) < _MM_TEXT_MAX:
+        _MM_TEXT[x] = s
     return s
+
+
+#: the coordinates written so far in this process and their text (a figure writes the same ones again and
+#: again: grid lines, axes, the frame). Keyed by the float; a number equal to a key (an int, a numpy float)
+#: converts to that same float, so it gets the same text.
+_MM_TEXT: dict[float, str] = {}
+_MM_TEXT_MAX = 1 << 17
 
 
 def _round_sig(value: float, sig: int) -> tuple[float, int]:
