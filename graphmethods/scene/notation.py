@@ -17,13 +17,13 @@ changes the whole figure.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from graphmethods.errors import InputError
 from graphmethods.scene import vocabulary
-from graphmethods.scene.numbers import format_value
+from graphmethods.scene.numbers import format_column, format_value
 
 _SYMBOLS = {
     #            en               ru                 zh
@@ -155,6 +155,15 @@ class Notation:
         is within the round-off of a computation of size ``reference``
         (:func:`~graphmethods.scene.numbers.within_roundoff`)."""
         return format_value(value, sig=sig, decimal=self.decimal, plus=plus, reference=reference)
+
+    def column(self, values: Iterable[float], *, sig: int = 4, reference: float | None = None) -> list[str]:
+        """A table column written with one number of decimals, this tradition's separator
+        (:func:`~graphmethods.scene.numbers.format_column`).
+
+        >>> get("ru").column([0.0517825, 0.055])
+        ['0,05178', '0,05500']
+        """
+        return format_column(values, sig=sig, decimal=self.decimal, reference=reference)
 
     @property
     def colon(self) -> str:
