@@ -104,3 +104,52 @@ def test_a_column_is_written_with_one_number_of_decimals() -> None:
     assert format_column([0.0, 30.0, 360.0]) == ["0", "30", "360"]
     assert format_column([360.06, 65.58, -10.46, 1e-15], reference=360.0) == ["360.1", "65.6", "−10.5", "0"]
     assert format_column([2.5e-6, 1e-6]) == ["2.5·10⁻⁶", "1·10⁻⁶"]
+
+
+def _svg_texts(path) -> list[str]:
+    import html
+
+    body = path.read_text(encoding="utf-8")
+    return [html.unescape(re.sub(r"<[^>]+>", "", t)) for t in re.findall(r"<text[^>]*>.*?</text>", body)]
+
+
+def test_a_russian_figure_never_lists_numbers_with_a_comma(tmp_path) -> None:
+    """"J₁ = 0,08, u = 6" reads as one number in Russian: lists of numbers are separated by "; " there."""
+    from graphmethods.cli import main
+
+    out = tmp_path / "drive.svg"
+    assert main(["drive", "--J", "0.08,0.5,12", "--u", "6,2,1", "--c", "2000,40000", "--c-u", "6,1", "-o", str(out),
+                 "--lang", "ru"]) == 0
+    texts = _svg_texts(out)
+    assert [t for t in texts if re.search(r"\d,\d+, ", t)] == []
+    assert any("0,08; u = 6" in t.replace("\u2009", "") for t in texts), texts
+
+
+def test_the_flywheel_design_table_says_J_F_and_gives_D_and_B_each_a_row(tmp_path) -> None:
+    from graphmethods.cli import main
+
+    out = tmp_path / "fw.svg"
+    assert main(["flywheel", "--areas=-50,550,-100,125,-500,25,-50", "--n", "600", "--delta", "1/300", "--rim", "0.75",
+                 "--disc", "0.75", "--figure", str(out), "--lang", "ru"]) == 0
+    texts = _svg_texts(out)
+    assert "Jм, кг·м²" in texts and "D, мм" in texts and "B, мм" in texts
+    assert not any(re.fullmatch(r"\d+, \d+", t) for t in texts)        # "750, 111" is gone
+
+
+def test_a_long_problem_name_wraps_inside_an_a4_portrait_frame() -> None:
+    """The engine's name is longer than an A4 portrait frame is wide: the simple title block wraps it (it ran
+    18 mm past the frame's left side on the motion panels)."""
+    from graphmethods.scene import Page
+    from graphmethods.scene.elements import label_bbox
+    from graphmethods.scene.page import TitleBlock
+    from graphmethods.scene.primitives import Label, Path, walk
+
+    long = "одноцилиндровый двухтактный двигатель (сила давления газов по индикаторной диаграмме), m = 12"
+    page = Page("A4", "portrait", frame=True, title_block=TitleBlock("Моменты, энергия и скорость за цикл", long))
+    x0, _, x1, _ = page.inner_box()
+    prims = list(walk(page.primitives()))
+    xs = [x for p in prims if isinstance(p, Path) for x, _ in p.points]
+    xs += [b for p in prims if isinstance(p, Label) for b in label_bbox(p)[0::2]]
+    assert x0 - 1e-9 <= min(xs) and max(xs) <= x1 + 1e-9
+    texts = [p.text for p in prims if isinstance(p, Label)]
+    assert any(t.startswith("одноцилиндровый") for t in texts) and any(t.endswith("m = 12") for t in texts)

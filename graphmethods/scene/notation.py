@@ -171,6 +171,16 @@ class Notation:
         return "：" if self.code == "zh" else ": "
 
     @property
+    def list_separator(self) -> str:
+        """Between the numbers of a list: "; " where the decimal mark is a comma ("0,08; u = 6", never
+        "0,08, u = 6"), full-width "，" in Chinese text, ", " otherwise.
+
+        >>> get("ru").list_separator, get("en").list_separator, get("zh").list_separator
+        ('; ', ', ', '，')
+        """
+        return "，" if self.code == "zh" else ("; " if self.decimal == "," else ", ")
+
+    @property
     def semicolon(self) -> str:
         """The separator of two clauses: full-width "；" in Chinese text, ";  " otherwise."""
         return "；" if self.code == "zh" else ";  "
