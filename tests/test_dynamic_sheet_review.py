@@ -153,3 +153,14 @@ def test_a_long_problem_name_wraps_inside_an_a4_portrait_frame() -> None:
     assert x0 - 1e-9 <= min(xs) and max(xs) <= x1 + 1e-9
     texts = [p.text for p in prims if isinstance(p, Label)]
     assert any(t.startswith("одноцилиндровый") for t in texts) and any(t.endswith("m = 12") for t in texts)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru", "zh"])
+@pytest.mark.parametrize("name", REVIEWED)
+def test_the_a2_dynamic_sheet_meets_the_drafting_standard(name: str, lang: str) -> None:
+    """``study P --page A2``: the figure-quality test measures the A1 sheets; the A2 sheet is held here (the
+    engine's zh sheet had the result table's heading under the turned J_e axis's name)."""
+    from graphmethods.sheets.engine.quality import faults, measure
+
+    study, _ = _sheet(name, "en")
+    assert faults(measure(dynamic_analysis_sheet(study, page="A2", notation=lang))) == []

@@ -122,7 +122,7 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     w = _table(rows, (0, 0), size_mm=lay.table_mm).width_mm
     x1 = sheet.box[2]
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
-    table = _place_table(occ, rows, cands, size_mm=lay.table_mm)
+    table = _place_table(occ, rows, cands, size_mm=lay.table_mm, head_mm=8.0)      # its heading clear too
     occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
     ordinates = _ordinates_table(occ, content, nt, x1, table.at[1] + table.height_mm + 14.0, sheet.caption_y, w)
     heads = _sheet_headings(sheet, content, lay, nt)
