@@ -114,7 +114,7 @@ def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers."""
     w, ascent, descent = _runs_extent(lab.runs)
-    w *= lab.size_mm
+    w *= lab.size_mm * lab.stretch
     x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 

@@ -14,6 +14,7 @@ minus sign and the decimal separator of the notation profile.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 from graphmethods.errors import InputError
 from graphmethods.units import is_finite
@@ -83,6 +84,47 @@ def _round_sig(value: float, sig: int) -> tuple[float, int]:
     if rounded != 0 and math.floor(math.log10(abs(rounded))) > exponent:  # 9.9996 -> 10.00
         decimals = max(0, decimals - 1)
     return rounded, decimals
+
+
+def format_column(values: Iterable[float], *, sig: int = 4, decimal: str = ".",
+                  reference: float | None = None) -> list[str]:
+    """A table column's values, all with the same decimals, as a table prints them: the decimals that
+    ``sig`` significant digits of the column's largest value take, fewer when every value ends in zeros.
+
+    Parameters
+    ----------
+    values : iterable of float
+        The column, in the unit its heading states.
+    sig : int
+        Significant digits of the largest value.
+    decimal : str
+        Decimal separator (``","`` in the Russian profile).
+    reference : float, optional
+        As in :func:`format_value`: a value within the round-off of a computation of that size is 0.
+
+    Examples
+    --------
+    >>> format_column([0.0517825, 0.055, 0.0523])
+    ['0.05178', '0.05500', '0.05230']
+    >>> format_column([0.0, 30.0, 360.0]), format_column([360.06, 65.58, -10.46], decimal=",")
+    (['0', '30', '360'], ['360,1', '65,6', '−10,5'])
+    """
+    vals = [float(v) for v in values]
+    if not all(is_finite(v) for v in vals):
+        raise InputError("cannot write a table column with a value that is not finite")
+    vals = [0.0 if reference is not None and within_roundoff(v, reference) else v for v in vals]
+    top = max((abs(v) for v in vals), default=0.0)
+    if top == 0.0 or top < 1e-4 or top >= 1e12:
+        return [format_value(v, sig=sig, decimal=decimal) for v in vals]
+    decimals = _round_sig(top, sig)[1]
+    while decimals > 0 and all(f"{abs(v):.{decimals}f}".endswith("0") for v in vals):
+        decimals -= 1
+    out = []
+    for v in vals:
+        text = f"{abs(v):.{decimals}f}"
+        zero = float(text) == 0.0
+        out.append("0" if zero else (MINUS if v < 0 else "") + text.replace(".", decimal))
+    return out
 
 
 def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool = False,
