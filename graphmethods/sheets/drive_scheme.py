@@ -102,7 +102,8 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     freq = ", ".join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
     els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}{nt.colon}ω = {freq} {nt.unit('rad/s')}",
                     size_mm=TEXT_MM, name="frequencies"))
-    els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}: J_e = ΣJ' = {num(chain.J_e, sig=5)} "
-                    f"{nt.unit('kg·m²')}, M_e = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}",
+    els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}{nt.colon}{nt.sym('dynamics.J_e')} = ΣJ' = "
+                    f"{num(chain.J_e, sig=5)} {nt.unit('kg·m²')}, {nt.sym('dynamics.M_e')} = ΣM' = "
+                    f"{num(chain.M_e, sig=5)} {nt.unit('N·m')}",
                     size_mm=TEXT_MM, name="rigid"))
     return Scene(sheet.page(()), tuple(els), title=sheet.title, notation=nt.code, name="drive-scheme")

@@ -4,11 +4,12 @@ The notation's own symbols (``M_d``, ``mu_M``, ``T_max``, ``mu_T`` ...) are not 
 
 >>> from graphmethods.scene.notation import get
 >>> get("ru").sym("dynamics.J_e"), get("zh").word("dynamics.lever"), get("ru").unit("rad/s²")
-('J_п', '茹科夫斯基杠杆', 'рад/с²')
+('J_п', '茹可夫斯基杠杆', 'рад/с²')
 """
 
 SYMBOLS = {
     "J_e":       ("J_e",        "J_п",          "J_e"),
+    "M_e":       ("M_e",        "M_п",          "M_e"),
     "dT":        ("ΔT",         "ΔT",           "ΔE"),
     "omega":     ("ω",          "ω",            "ω"),
     "omega_m":   ("ω_m",        "ω_{ср}",       "ω_m"),
@@ -46,7 +47,7 @@ WORDS = {
                         "曲柄角速度（精确解）"),
     "accel_graph":     ("Angular acceleration of the crank (exact motion)",
                         "Угловое ускорение кривошипа (точное решение)", "曲柄角加速度（精确解）"),
-    "lever":           ("Zhukovsky lever", "Рычаг Жуковского", "茹科夫斯基杠杆"),
+    "lever":           ("Zhukovsky lever", "Рычаг Жуковского", "茹可夫斯基杠杆"),
     "position":        ("position", "положение", "位置"),
     "positions":       ("positions", "положений", "个位置"),
     "work_balance":    ("from the work balance", "из баланса работ", "由功平衡"),
