@@ -11,6 +11,7 @@ WORDS = {
     "plans":    ("Acceleration plans", "Планы ускорений", "加速度多边形"),
     "table":    ("Accelerations per position", "Ускорения точек и звеньев по положениям", "各位置的加速度"),
     "value":    ("Acceleration", "Ускорение", "加速度"),
+    "assur_point": ("Assur's point", "особая точка Ассура", "阿苏尔点"),
     "legend":   ("solid: known component, dashed: direction known, found by construction",
                  "сплошные — известные составляющие, штриховые — найденные построением",
                  "实线：已知分量；虚线：作图求得"),
