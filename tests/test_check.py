@@ -14,7 +14,7 @@ from graphmethods.cli import check as cli_check
 from graphmethods.errors import InputError, OutputExistsError
 from graphmethods.render import svg
 from graphmethods.render.recording import record
-from graphmethods.scene.vocabulary import check as vocabulary_check
+from graphmethods.scene import vocabulary
 from graphmethods.sheets import check as ck, worksheets as ws
 from graphmethods.sheets.check.overlay import overlay_label, overlay_value
 
@@ -360,7 +360,7 @@ def red_list(scene):
 
 def test_every_usual_mistake_has_a_name_in_every_notation():
     for code in ck.MISTAKES:
-        names = vocabulary_check.WORDS[code]
+        names = vocabulary.family("check").words[code]
         assert len(names) == 3 and all(names) and len(set(names)) == 3, code
     assert set(NAMES["ru"]) == set(NAMES["zh"]) == set(ck.MISTAKES)
 

@@ -9,6 +9,7 @@ import shutil
 import pytest
 
 from graphmethods import cli
+from graphmethods.scene import vocabulary
 from graphmethods.sheets.check import check
 from graphmethods.sheets.check.classcheck import ClassReport, check_class, class_files, names_from_file_name
 
@@ -68,8 +69,7 @@ def test_the_class_table_agrees_with_each_check(klass, tmp_path, capsys):
     assert f"{len(files)} files: {n_correct} all correct, {n_mistakes} with mistakes, 1 could not be checked" in out
 
 
-MISTAKE_WORDS = {code: words[0] for code, words in __import__("graphmethods.scene.vocabulary.check",
-                                                             fromlist=["WORDS"]).WORDS.items()}
+MISTAKE_WORDS = {code: words[0] for code, words in vocabulary.family("check").words.items()}
 MISTAKE_WORDS["J_e_not_subtracted"] = "not subtracted"
 
 

@@ -151,6 +151,23 @@ def test_four_stroke_period_of_720_degrees():
     assert cyc.excess_work.delta_W_max == pytest.approx(100.0, rel=1e-9)
 
 
+def test_a_period_longer_than_a_machine_cycle_is_refused_fast(capsys):
+    """A mistyped period (1e9°) is refused at once, not integrated over millions of turns."""
+    import time
+
+    from graphmethods.dynamics.moment_cycle import MAX_PERIOD_TURNS
+
+    assert moment_cycle(M_r="100 + 50*sin(phi/2)", period_deg=360 * MAX_PERIOD_TURNS).period == \
+        pytest.approx(2 * math.pi * MAX_PERIOD_TURNS)
+    with pytest.raises(InputError, match="MAX_PERIOD_TURNS"):
+        moment_cycle(M_r="100", period_deg=360 * MAX_PERIOD_TURNS * (1 + 1e-9))
+    cpu = time.process_time()
+    code, out, err = run(capsys, "flywheel", "--M-r", "100+sin(1e15*phi)", "--omega", "10", "--J", "5",
+                         "--period-deg", "1e9")
+    assert code == 2 and out == "" and err.count("\n") == 1 and "MAX_PERIOD_TURNS" in err
+    assert time.process_time() - cpu < 0.5          # refused before any quadrature (CPU time: load-proof)
+
+
 def test_step_formula_plateau_is_reported_by_its_ends():
     cyc = moment_cycle(M_r="60*(phi < pi/4) + 10*(phi >= pi/4)")
     assert cyc.excess_work.delta_W_max == pytest.approx(43.75 * math.pi / 4, rel=1e-9)

@@ -1,4 +1,4 @@
-"""One vocabulary: every word, symbol and Russian unit lives in scene/notation.py and scene/vocabulary/.
+"""One vocabulary: every word, symbol and Russian unit lives in the TOML files of scene/vocabulary/.
 
 The figure modules keep no tables of their own; every key has a text in en, ru and zh with
 the same placeholders; every key a figure asks for by its literal name exists.
@@ -61,7 +61,7 @@ def _tables(path: Path) -> list[str]:
 
 def _figure_modules() -> list[Path]:
     return sorted(p for p in PACKAGE.rglob("*.py")
-                  if "vocabulary" not in p.parts and p.relative_to(PACKAGE).as_posix() != "scene/notation.py")
+                  if "vocabulary" not in p.parts)
 
 
 def test_figure_modules_keep_no_vocabulary_of_their_own() -> None:
@@ -75,7 +75,7 @@ def _placeholders(text: str) -> set[str]:
 
 
 def _all_triples() -> list[tuple[str, tuple[str, str, str]]]:
-    symbols, words, _ = vocabulary.tables(notation._SYMBOLS, notation._WORDS, notation._UNITS_RU)
+    symbols, words, _ = vocabulary.tables()
     return [(f"word {k}", v) for k, v in words.items()] + [(f"symbol {k}", v) for k, v in symbols.items()]
 
 
@@ -90,14 +90,27 @@ def test_every_key_in_three_languages_with_the_same_placeholders(key: str, tripl
     assert en == ru == zh, f"{key}: placeholders differ: en {en}, ru {ru}, zh {zh}"
 
 
-def test_no_unit_translated_two_ways() -> None:
-    _, _, units = vocabulary.tables({}, {}, notation._UNITS_RU)
-    assert units["N·m"] == "Н·м" and units["m/s"] == "м/с"
+def test_one_table_of_russian_units() -> None:
+    _, _, units = vocabulary.tables()
+    assert units["N·m"] == "Н·м" and units["m/s"] == "м/с" and units["rad/s²"] == "рад/с²"
 
 
-def test_a_unit_translated_two_ways_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
-    with pytest.raises(ValueError, match="unit 'm/s'"):
-        vocabulary.tables({}, {}, {"m/s": "м в с"})
+@pytest.mark.parametrize(("text", "message"), [
+    ('[words]\nx = ["en", "ru"]', "give"),                        # a language missing
+    ('[words]\nx = ["en", "", "zh"]', "give"),                    # a language empty
+    ('[symbols]\nx = 3', "give"),                                 # not a text
+    ('[units_ru]\n"m/s" = "м в с"', "units_ru"),                  # Russian units kept outside the one table
+    ('[word]\nx = "x"', "tables are"),                           # a misspelt table
+])
+def test_a_malformed_vocabulary_file_is_refused(text: str, message: str) -> None:
+    with pytest.raises(ValueError, match=message):
+        vocabulary.parse(text, "example")
+
+
+def test_every_file_is_a_family_or_the_core() -> None:
+    files = sorted(p.stem for p in (PACKAGE / "scene" / "vocabulary").glob("*.toml"))
+    assert files == sorted([*vocabulary.families(), vocabulary.CORE])
+    assert not [p.name for p in (PACKAGE / "scene" / "vocabulary").glob("*.py") if p.name != "__init__.py"]
 
 
 def _literal_keys(method: str) -> set[tuple[str, str]]:
@@ -120,7 +133,7 @@ def test_every_literal_key_exists(method: str) -> None:
 
 
 def test_no_text_kept_twice_under_two_keys() -> None:
-    symbols, words, _ = vocabulary.tables(notation._SYMBOLS, notation._WORDS, notation._UNITS_RU)
+    symbols, words, _ = vocabulary.tables()
     for kind, table in (("word", words), ("symbol", symbols)):
         keys_of: dict[tuple[str, str, str], list[str]] = {}
         for key, triple in table.items():

@@ -88,6 +88,10 @@ def integer(text: str) -> int:
     return int(s)
 
 
+#: the metavar of a drawing written to one file, or to standard output (``-``)
+DRAWING_TARGET = "FILE.svg|.pdf|.png|.dxf|-"
+
+
 def add_output(p: argparse.ArgumentParser, *aliases: str, metavar: str, help: str, dest: str = "out") -> None:
     """``-o/--out`` for a command's one output (file or folder), with its older names kept as aliases.
 
@@ -97,12 +101,32 @@ def add_output(p: argparse.ArgumentParser, *aliases: str, metavar: str, help: st
     p.add_argument("-o", "--out", *aliases, dest=dest, default=None, metavar=metavar, help=help + old)
 
 
-def add_figure_options(p: argparse.ArgumentParser, what: str, format_help: str | None = None) -> None:
+def add_figure_options(p: argparse.ArgumentParser, what: str, format_help: str | None = None,
+                       lang_help: str | None = None) -> None:
     """``--format``, ``--lang`` and ``--force`` of a command that draws one ``what`` ("sheet", "figure").
 
-    ``format_help`` replaces the usual help of ``--format`` (the file format of ``-o -``).
+    ``format_help`` and ``lang_help`` replace the usual help of ``--format`` (the file format of
+    ``-o -``) and of ``--lang``.
     """
     p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
                    help=format_help or f"file format of the {what} (default: the file name's suffix; needed with -o -)")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en", help=f"notation of the {what} (default en)")
+    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
+                   help=lang_help or f"notation of the {what} (default en)")
     p.add_argument("--force", action="store_true", help=f"overwrite an existing {what} file")
+
+
+def add_sheet_options(p: argparse.ArgumentParser, what: str, lang_help: str | None = None) -> None:
+    """The options of a command that draws one A1 or A2 course sheet, the same on every such command.
+
+    ``-o/--out`` (older name ``--sheet``; ``-`` for standard output), ``--format``, ``--lang``,
+    ``--page``, ``--force`` and the main inscription's ``--student``, ``--group``, ``--sheet-no``.
+    ``what`` names the sheet in the help of ``-o`` (``"the dynamic-analysis sheet"``); ``lang_help``
+    replaces the usual help of ``--lang``.
+    """
+    from graphmethods.cli._sheet import add_signature_options
+
+    add_output(p, "--sheet", dest="sheet", metavar=DRAWING_TARGET,
+               help=f"also write {what} (scale-true); - writes it to standard output in --format, and nothing else")
+    add_figure_options(p, "sheet", lang_help=lang_help)
+    p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
+    add_signature_options(p)

@@ -79,13 +79,9 @@ def check_target(text: str, force: bool, *, option: str, suffixes: tuple[str, ..
         raise InputError(f"{option} {path}: give a file name ending in {_endings(suffixes)}")
     if fmt is not None and "." + fmt.lower() != path.suffix.lower():
         raise InputError(f"{option} {path}: the name ends in {path.suffix}, --format says {fmt}; give one of them")
-    parent = path.parent if str(path.parent) else pathlib.Path(".")
-    if not parent.is_dir():
-        raise InputError(f"{option} {path}: directory {parent} does not exist; create it first")
-    if path.is_dir():
-        raise InputError(f"{option} {path}: it is a directory; give a file name")
-    if path.exists() and not force:
-        raise OutputExistsError(f"{path} exists; use --force to overwrite it")
+    from graphmethods.render.files import check_target as check_file
+
+    check_file(path, overwrite=force, label=f"{option} {path}", remedy="use --force to overwrite it")
     return Target(path, path.suffix.lower())
 
 

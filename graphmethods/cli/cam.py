@@ -30,7 +30,7 @@ from graphmethods.units import MAX_POSITIONS, count, json_text
 
 
 def add_parser(sub) -> None:
-    from graphmethods.cli._parser import add_figure_options, integer, numbers
+    from graphmethods.cli._parser import DRAWING_TARGET, add_figure_options, add_output, integer, numbers
 
     p = sub.add_parser(
         "cam", help="cam mechanism: base radius from the pressure angle, motion, profile, the A1 cam sheet",
@@ -44,10 +44,9 @@ def add_parser(sub) -> None:
     p.add_argument("--phi-deg", type=numbers, default=None, metavar="A[,B,...]",
                    help="list these cam angles (degrees from the start of the first phase) instead of M positions")
     p.add_argument("--json", action="store_true", help="print one JSON object (the contract's keys)")
-    p.add_argument("-o", "--out", "--sheet", dest="sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
-                   help="also write the A1 cam sheet (motion diagrams by graphical integration, the combined "
-                        "ds/dφ–s diagram, the profile by inversion); - writes it to standard output in --format, and "
-                        "nothing else (older name --sheet still accepted)")
+    add_output(p, "--sheet", dest="sheet", metavar=DRAWING_TARGET,
+               help="also write the A1 cam sheet (motion diagrams by graphical integration, the combined ds/dφ–s "
+                    "diagram, the profile by inversion); - writes it to standard output in --format, and nothing else")
     p.add_argument("--figures", metavar="DIR", default=None,
                    help="also write the A4 figures (motion diagrams, combined diagram, pressure angle, profile by "
                         "inversion) into DIR (created if missing)")

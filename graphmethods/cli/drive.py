@@ -19,7 +19,7 @@ from graphmethods.units import check_text, json_text
 
 
 def add_parser(sub) -> None:
-    from graphmethods.cli._parser import add_figure_options
+    from graphmethods.cli._parser import DRAWING_TARGET, add_figure_options, add_output
 
     p = sub.add_parser("drive", help="a drive of several masses reduced to one shaft: J', c', natural frequencies",
                        description="Reduce a chain of masses and elastic shafts (a motor, gears, the machine) to one "
@@ -33,9 +33,8 @@ def add_parser(sub) -> None:
     p.add_argument("--M", default=None, metavar="M1,M2,...", help="moments on the masses, N·m (+ driving)")
     p.add_argument("--names", default=None, metavar="NAME1,NAME2,...", help="names of the masses")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("-o", "--out", "--figure", dest="figure", default=None, metavar="FILE.svg|.pdf|.png|.dxf|-",
-                   help="also draw the reduced scheme; - writes it to standard output in --format, and nothing else "
-                        "(older name --figure still accepted)")
+    add_output(p, "--figure", dest="figure", metavar=DRAWING_TARGET,
+               help="also draw the reduced scheme; - writes it to standard output in --format, and nothing else")
     add_figure_options(p, "figure")
     p.set_defaults(func=run)
 

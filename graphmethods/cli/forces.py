@@ -30,7 +30,7 @@ from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
 def add_parser(sub) -> None:
-    from graphmethods.cli._parser import integer, number
+    from graphmethods.cli._parser import add_sheet_options, integer, number
     from graphmethods.cli.kinematics import add_linkage_case, add_speed
 
     p = sub.add_parser(
@@ -51,16 +51,8 @@ def add_parser(sub) -> None:
     p.add_argument("--epsilon-1", type=number, default=0.0, metavar="E",
                    help="crank angular acceleration, rad/s², + when the crank speeds up (default 0)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
-                   help="language of the table and the sheet (default en)")
-    p.add_argument("-o", "--out", "--sheet", dest="sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
-                   help="also write the force-analysis sheet of this position (scale-true); - writes it to standard "
-                        "output in --format, and nothing else (older name --sheet still accepted)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
-                   help="file format of the sheet (default: the file name's suffix; needed with -o -)")
-    p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
-    p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
-    _sheet.add_signature_options(p)
+    add_sheet_options(p, "the force-analysis sheet of this position",
+                      lang_help="language of the table and the sheet (default en)")
     p.set_defaults(func=run)
 
 

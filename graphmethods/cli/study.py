@@ -12,13 +12,13 @@ from __future__ import annotations
 
 import sys
 
-from graphmethods.cli._sheet import add_signature_options, check_sheet_target, check_signature, signed
+from graphmethods.cli._sheet import check_sheet_target, check_signature, signed
 from graphmethods.errors import InputError
 from graphmethods.units import MAX_POSITIONS, check_finite, count, json_text
 
 
 def add_parser(sub) -> None:
-    from graphmethods.cli._parser import integer, numbers
+    from graphmethods.cli._parser import add_sheet_options, integer, numbers
     from graphmethods.cli.kinematics import add_linkage_case, add_speed, builtin_names
 
     p = sub.add_parser("study", help="dynamic study of a linkage problem: J_e, M_r, the flywheel three ways",
@@ -44,16 +44,7 @@ def add_parser(sub) -> None:
     p.add_argument("--reserve", default="1", metavar="K", help="with --eta: reserve factor on the motor's power "
                                                                "(default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("-o", "--out", "--sheet", dest="sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
-                   help="also write the dynamic-analysis sheet (scale-true); - writes it to standard output in "
-                        "--format, and nothing else (older name --sheet still accepted)")
-    p.add_argument("--format", choices=("svg", "pdf", "png", "dxf"), default=None,
-                   help="file format of the sheet (default: the file name's suffix; needed with -o -)")
-    p.add_argument("--lang", choices=("en", "ru", "zh"), default="en",
-                   help="notation and language of the sheet (default en)")
-    p.add_argument("--page", type=str.upper, choices=("A1", "A2"), default="A1", help="sheet size (default A1)")
-    p.add_argument("--force", action="store_true", help="overwrite an existing sheet file")
-    add_signature_options(p)
+    add_sheet_options(p, "the dynamic-analysis sheet", lang_help="notation and language of the sheet (default en)")
     p.set_defaults(func=run)
 
 

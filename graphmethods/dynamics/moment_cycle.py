@@ -379,6 +379,12 @@ def _exact_table(table: ew.ExcessWork, f_d: MomentFunction, f_r: MomentFunction,
     return replace(table, phi=phi, E=E, work=np.diff(E))
 
 
+#: The longest period :func:`moment_cycle` accepts, in turns: a machine's cycle repeats within a few turns
+#: of the shaft its moments are reduced to (a four-stroke engine's in two), and the quadrature of ΔE costs
+#: time in proportion to the period, so a longer one (a mistyped 1e9°) is refused, not integrated for seconds
+MAX_PERIOD_TURNS = 100
+
+
 #: Candidate periods for ``period_deg="auto"``: 360°·k/q, q = 1…12, up to four turns (degrees).
 def _candidate_periods(max_turns: int = 4) -> list[float]:
     from fractions import Fraction
@@ -450,6 +456,10 @@ def moment_cycle(M_d: object = None, M_r: object = None, *, period_deg: float | 
     P = math.radians(parse_number(period_deg, name="--period-deg"))
     if not P > 0:
         raise InputError(f"--period-deg {period_deg!r}: the period must be a positive angle (360 for one turn)")
+    if P > 2 * math.pi * MAX_PERIOD_TURNS:
+        raise InputError(f"--period-deg {period_deg!r}: a machine's cycle repeats within {MAX_PERIOD_TURNS} turns "
+                         f"({360 * MAX_PERIOD_TURNS}°, MAX_PERIOD_TURNS) of the shaft its moments are reduced to; "
+                         f"give the period of one cycle (360 for one turn, 720 for a four-stroke engine)")
     d = None if M_d is None else moment_input(M_d, period=P, name="--M-d")
     r = None if M_r is None else moment_input(M_r, period=P, name="--M-r")
     exact = ((d is None or d.function is not None) and (r is None or r.function is not None)

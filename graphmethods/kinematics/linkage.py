@@ -1025,14 +1025,19 @@ class Linkage:
         s: np.ndarray = d * (((mo.z[name] - zs) * u.conjugate()).real)
         return s
 
+    def _output_ends(self, kind: str) -> tuple[Any, Any] | None:
+        """The output's position at the start and at the end of the working stroke, when the output
+        is of ``kind``: the slider's point z ("point") or the rocker's angle θ ("link"); else None."""
+        if self.strokes() is None or self._output()[0] != kind:
+            return None
+        ends = self._ends()
+        start, end = (ends.z if kind == "point" else ends.theta)[self._output()[1]]
+        return start, end
+
     def stroke_H(self) -> float | None:
         """The output slider's stroke H, m (None for a rocker output)."""
-        st_ = self.strokes()
-        if st_ is None or self._output()[0] != "point":
-            return None
-        st = self._ends()
-        zs, ze = st.z[self._output()[1]]
-        return float(abs(ze - zs))
+        ends = self._output_ends("point")
+        return None if ends is None else float(abs(ends[1] - ends[0]))
 
     def _output_psi(self, mo: Motion) -> np.ndarray | None:
         if self.output is None or self.output[0] != "link" or mo.strokes is None:
@@ -1047,12 +1052,8 @@ class Linkage:
 
     def psi_max(self) -> float | None:
         """The output rocker's swing, rad (None for a slider output)."""
-        st_ = self.strokes()
-        if st_ is None or self._output()[0] != "link":
-            return None
-        st = self._ends()
-        th_s, th_e = st.theta[self._output()[1]]
-        return float(abs(_wrap(th_e - th_s)))
+        ends = self._output_ends("link")
+        return None if ends is None else float(abs(_wrap(ends[1] - ends[0])))
 
 
 def _count_positions(m: int | None, low: int) -> int:

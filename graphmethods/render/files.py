@@ -53,8 +53,14 @@ def output_error(what: str, path: str | os.PathLike[str], exc: OSError) -> Outpu
     return OutputError(f"cannot write {what} {path}: {os_reason(exc)}")
 
 
-def check_target(path: str | os.PathLike[str], *, overwrite: bool = False, what: str = "file") -> pathlib.Path:
+def check_target(path: str | os.PathLike[str], *, overwrite: bool = False, what: str = "file",
+                 label: str | None = None, remedy: str = "pass overwrite=True (or --force) to replace it"
+                 ) -> pathlib.Path:
     """Refuse, before any work, a file name that cannot or must not be written.
+
+    An empty name, a missing directory, a directory, or an existing file without ``overwrite``.
+    ``label`` starts the messages (default ``"cannot write PATH"``; the command line names its
+    option: ``"--sheet a.svg"``); ``remedy`` ends the message of an existing file.
 
     >>> check_target("")
     Traceback (most recent call last):
@@ -64,13 +70,14 @@ def check_target(path: str | os.PathLike[str], *, overwrite: bool = False, what:
     if str(path).strip() == "":
         raise InputError(f"the {what} name is empty; give a {what} name")
     target = pathlib.Path(path)
+    lead = label or f"cannot write {target}"
     parent = target.parent if str(target.parent) else pathlib.Path(".")
     if not parent.is_dir():
-        raise InputError(f"cannot write {target}: directory {parent} does not exist; create it first")
+        raise InputError(f"{lead}: directory {parent} does not exist; create it first")
     if target.is_dir():
-        raise InputError(f"cannot write {target}: it is a directory; give a file name")
+        raise InputError(f"{lead}: it is a directory; give a file name")
     if target.exists() and not overwrite:
-        raise OutputExistsError(f"{target} exists; pass overwrite=True (or --force) to replace it")
+        raise OutputExistsError(f"{target} exists; {remedy}")
     return target
 
 

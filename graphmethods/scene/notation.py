@@ -4,7 +4,8 @@
 write the same construction differently: M_d/M_r vs M_д/M_с vs M_ed/M_er, "excess
 work" vs "избыточная работа" vs 盈功/亏功, ΔW_max vs A_изб, "M, N·m" vs "M, Н·м" vs
 "M/(N·m)". A figure asks its profile for every string it draws, so one switch
-changes the whole figure.
+changes the whole figure. The texts themselves are data: the TOML files of
+:mod:`graphmethods.scene.vocabulary` (``notation.toml`` for the keys below).
 
 >>> ru = get("ru")
 >>> ru.sym("M_d"), ru.sym("delta_W_max"), ru.unit("N·m"), ru.quantity("M", "N·m")
@@ -24,72 +25,6 @@ from types import MappingProxyType
 from graphmethods.errors import InputError
 from graphmethods.scene import vocabulary
 from graphmethods.scene.numbers import format_value
-
-_SYMBOLS = {
-    #            en               ru                 zh
-    "M_d":       ("M_d",          "M_д",             "M_{ed}"),
-    "M_r":       ("M_r",          "M_с",             "M_{er}"),
-    "M":         ("M",            "M",               "M"),
-    "phi":       ("φ",            "φ",               "φ"),
-    "f":         ("f",            "f",               "f"),
-    "A":         ("A",            "A",               "W"),
-    "E":         ("E",            "ΔT",              "E"),
-    "dE":        ("ΔE",           "ΔT",              "ΔE"),
-    "T":         ("T",            "T",               "E"),
-    "E_max":     ("E_{max}",      "ΔT_{max}",        "E_{max}"),
-    "E_min":     ("E_{min}",      "ΔT_{min}",        "E_{min}"),
-    "T_max":     ("T_{max}",      "T_{max}",         "E_{max}"),
-    "T_min":     ("T_{min}",      "T_{min}",         "E_{min}"),
-    "T_0":       ("T_0",          "T_0",             "E_0"),
-    "delta_W_max": ("ΔW_{max}",   "A_{изб}",         "ΔW_{max}"),
-    "mu_M":      ("μ_M",          "μ_M",             "μ_M"),
-    "mu_phi":    ("μ_φ",          "μ_φ",             "μ_φ"),
-    "mu_E":      ("μ_E",          "μ_A",             "μ_W"),
-    "mu_T":      ("μ_T",          "μ_T",             "μ_E"),
-}
-
-_WORDS = {
-    "moment_diagram":   ("Equivalent moments and excess work",
-                         "Приведённые моменты и избыточные работы",
-                         "等效力矩与盈亏功"),
-    "excess_work_table": ("Excess-work table",
-                          "Таблица избыточных работ",
-                          "盈亏功计算表"),
-    "energy_indicator": ("Energy indicator diagram",
-                         "Векторная диаграмма избыточных работ",
-                         "能量指示图"),
-    "energy_graph":     ("Fluctuation of energy",
-                         "Приращение кинетической энергии",
-                         "动能变化曲线"),
-    "kinetic_energy_graph": ("Kinetic energy",
-                             "График кинетической энергии",
-                             "动能曲线"),
-    "excess_work":      ("excess work", "избыточная работа", "盈亏功"),
-    "gain":             ("gain", "избыток", "盈功"),
-    "loss":             ("loss", "недостаток", "亏功"),
-    "interval":         ("Interval", "Участок", "区间"),
-    "area":             ("Area", "Площадь", "面积"),
-    "work":             ("Excess work", "Избыточная работа", "盈亏功"),
-    "point":            ("Point", "Точка", "点"),
-    "level":            ("Energy", "Приращение энергии", "能量"),
-    "sum":              ("Sum (closure)", "Сумма (замыкание)", "总和（闭合）"),
-    "closure":          ("closure", "замыкание", "闭合"),
-    "residual":         ("closure residual", "невязка", "闭合误差"),
-    "highest":          ("highest", "наибольшее", "最高点"),
-    "lowest":           ("lowest", "наименьшее", "最低点"),
-    "scales":           ("Scales", "Масштабы", "比例尺"),
-    "problem":          ("Problem", "Задача", "题目"),
-    "figure":           ("Figure", "Рисунок", "图"),
-    "max_label":        ("max", "max", "max"),
-    "min_label":        ("min", "min", "min"),
-    "gain_loss":        ("+ gain, − loss", "+ избыток, − недостаток", "+ 盈功，− 亏功"),
-}
-
-_UNITS_RU = {
-    "N·m": "Н·м", "J": "Дж", "rad": "рад", "mm": "мм", "mm²": "мм²", "kG·m": "кГ·м",
-    "kg·m²": "кг·м²", "s⁻¹": "с⁻¹", "rad/s": "рад/с", "N": "Н", "m": "м", "s": "с", "kg": "кг",
-    "°": "°",
-}
 
 _PROFILES = ("en", "ru", "zh")
 
@@ -124,7 +59,7 @@ class Notation:
         """The words for a concept key such as ``"energy_indicator"`` or ``"kinematics.scheme"``.
 
         Keys of a figure family carry its vocabulary module's name (``"kinematics.plan"``, from
-        :mod:`graphmethods.scene.vocabulary.kinematics`); ``fill`` gives the text's
+        ``scene/vocabulary/kinematics.toml``); ``fill`` gives the text's
         ``{placeholders}`` (:meth:`str.format`); without any the text is returned as written.
 
         >>> get("ru").word("kinematics.plan", k=3)
@@ -177,7 +112,7 @@ class Notation:
 
 def _build(code: str) -> Notation:
     i = _PROFILES.index(code)
-    all_symbols, all_words, units_ru = vocabulary.tables(_SYMBOLS, _WORDS, _UNITS_RU)
+    all_symbols, all_words, units_ru = vocabulary.tables()
     symbols = MappingProxyType({k: v[i] for k, v in all_symbols.items()})
     words = MappingProxyType({k: v[i] for k, v in all_words.items()})
     units = MappingProxyType(dict(units_ru) if code == "ru" else {})

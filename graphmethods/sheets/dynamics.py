@@ -58,7 +58,7 @@ SMALL_MM = 2.8          # tick labels, position numbers
 TWO_PI = 2.0 * math.pi
 
 # ----------------------------------------------------------------------------- words of these figures
-# Every word, symbol and unit is the notation's (scene/vocabulary/dynamics.py: nt.sym("dynamics.J_e")).
+# Every word, symbol and unit is the notation's (scene/vocabulary/dynamics.toml: nt.sym("dynamics.J_e")).
 
 
 def value_text(nt, value: float, u: str, *, sig: int = 4) -> str:

@@ -29,7 +29,7 @@ from graphmethods.sheets.styles import LEVEL, PROJECTION
 
 TURN = PROJECTION
 
-#: (x, y) of a motion graph -> the key of its title in scene/vocabulary/motion.py
+#: (x, y) of a motion graph -> the key of its title in scene/vocabulary/motion.toml
 _TITLES = {("t", "omega"): "motion.speed_t", ("phi", "omega"): "motion.speed_phi",
            ("phi", "epsilon"): "motion.acceleration_phi", ("t", "epsilon"): "motion.acceleration_t"}
 

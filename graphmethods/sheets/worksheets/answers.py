@@ -178,6 +178,6 @@ _COMMENT_KEYS = {**{(k, f"omega_{w}_at"): f"tpl_omega_{w}_at_{k}" for k in ("ind
 
 def comment(key: str, lang: str) -> str:
     """A comment of the answers file in ``lang`` (the vocabulary's check family, plain text)."""
-    from graphmethods.scene.vocabulary.check import WORDS
+    from graphmethods.scene.notation import get
 
-    return WORDS[key][("en", "ru", "zh").index(lang)]
+    return get(lang).word(f"check.{key}")

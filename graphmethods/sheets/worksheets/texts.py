@@ -1,6 +1,6 @@
 """The worksheets' titles and statements (the given data, then the tasks, per kind, in en / ru / zh), and
 a value with its unit as a notation writes it. The words, symbols and units themselves are in
-:mod:`graphmethods.scene.vocabulary.worksheets` (``nt.word("worksheets.key")``).
+``scene/vocabulary/worksheets.toml`` (``nt.word("worksheets.key")``).
 
 >>> from graphmethods.scene.notation import get
 >>> value_unit(43.69, "kg·m²", get("ru"))
