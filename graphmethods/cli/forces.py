@@ -136,12 +136,13 @@ def _text(res: dict[str, Any], lang: str) -> str:
     sep = "，" if lang == "zh" else ", "                     # a Chinese line takes full-width commas
     N, Nm, m_ = nt.unit("N"), nt.unit("N·m"), nt.unit("m")
     i = nt.word("forces.sub_inertia")                      # F_и in ru, F_I in zh: as the drawings write them
+    sense = nt.word(f"kinematics.{res['sense']}") if res["sense"] in ("cw", "ccw") else res["sense"]
     where = (f"{nt.word('dynamics.position')} {res['position']} / {res['m']}{sep}"
              if res["position"] is not None else "")
     weights = nt.word("forces.gravity_yes") if res["gravity"] else nt.word("forces.gravity_no")
     lines = [f"{nt.word('forces.report_title')}{nt.colon}{res['case'] or res['kind']}  ({res['source']})",
              (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°{sep}"
-              f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} {nt.unit('rad/s')} ({res['sense']}){sep}"
+              f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} {nt.unit('rad/s')} ({sense}){sep}"
               f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} {nt.unit('rad/s²')}{sep}"
               f"{res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"),
              f"{nt.word('forces.gravity')}{nt.colon}{weights}", "", nt.word("forces.inertia_loads"),
