@@ -54,7 +54,7 @@ KNOWN: dict[tuple[str, str, str], str] = {
     ('triad-six-bar', 'acceleration_plan', 'en'): "the Assur-point equation over the ε column; nDK3 crossed",
     ('triad-six-bar', 'acceleration_plan', 'ru'): "the Assur-point equation over the ε column; nDK3 crossed",
     ('triad-six-bar', 'acceleration_plan', 'zh'): "the Assur-point equation over the ε column; nDK3 crossed",
-    ('scotch-yoke', 'structure_diagram', 'en'): "link number 3 on the yoke's slot line",
-    ('scotch-yoke', 'structure_diagram', 'ru'): "link number 3 on the yoke's slot line",
-    ('scotch-yoke', 'structure_diagram', 'zh'): "link number 3 on the yoke's slot line",
+    ('scotch-yoke', 'structure_diagram', 'en'): "the yoke (link 3) is not drawn, its number lands on the block",
+    ('scotch-yoke', 'structure_diagram', 'ru'): "the yoke (link 3) is not drawn, its number lands on the block",
+    ('scotch-yoke', 'structure_diagram', 'zh'): "the yoke (link 3) is not drawn, its number lands on the block",
 }

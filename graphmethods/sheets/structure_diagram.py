@@ -225,7 +225,8 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
     boxes = Split("h", tuple(zip(names, shares_for(widths, least=0.18))), gap_mm=6.0).boxes(area)
     margins = (2.6 * let.label_mm + PAD_MM, PAD_MM, PAD_MM, PAD_MM)
     panels = [Panel(boxes[n], x, symbol="μ_l", unit="m", margins_mm=margins) for n, x in zip(names, exts)]
-    common = max((p.scale for p in panels), key=lambda s: s.per_mm)          # one scale for every part
+    sized = [p.scale for p, x in zip(panels, exts) if max(x[2] - x[0], x[3] - x[1]) > 0]   # a lone block: no size
+    common = max(sized or [p.scale for p in panels], key=lambda s: s.per_mm)  # one scale for every part
     panels = [Panel(p.box, p.extent, symbol="μ_l", unit="m", margins_mm=margins, scale_given=common)
               for p in panels]
     els: list[Element] = [sheet.header()]
