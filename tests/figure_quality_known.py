@@ -51,4 +51,10 @@ KNOWN: dict[tuple[str, str, str], str] = {
     ('whitworth', 'kinematic_analysis_sheet', 'en'): '52% empty, 10 crossed',
     ('scotch-yoke', 'kinematic_analysis_sheet', 'en'): "1 text over text: scheme number '1' on a tick '−25'",
     ('scotch-yoke', 'kinematic_analysis_sheet', 'ru'): "1 text over text: scheme number '1' on a tick '−25'",
+    ('triad-six-bar', 'acceleration_plan', 'en'): "the Assur-point equation over the ε column; nDK3 crossed",
+    ('triad-six-bar', 'acceleration_plan', 'ru'): "the Assur-point equation over the ε column; nDK3 crossed",
+    ('triad-six-bar', 'acceleration_plan', 'zh'): "the Assur-point equation over the ε column; nDK3 crossed",
+    ('scotch-yoke', 'structure_diagram', 'en'): "the yoke (link 3) is not drawn, its number lands on the block",
+    ('scotch-yoke', 'structure_diagram', 'ru'): "the yoke (link 3) is not drawn, its number lands on the block",
+    ('scotch-yoke', 'structure_diagram', 'zh'): "the yoke (link 3) is not drawn, its number lands on the block",
 }

@@ -492,7 +492,7 @@ def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple
     if p.alpha_return_max_deg <= float(np.abs(alpha).max()) * 1.2:
         lim.append(-p.alpha_return_max_deg)
     return phi_graph(box, occ, nt, values=alpha, limits=lim, title=nt.word("cam.alpha_graph"),
-                     label=f"{nt.sym('cam.alpha')}, °", unit="°", symbol="μ_α", name="alpha")
+                     label=f"{nt.sym('cam.alpha')}, °", unit="°", symbol=f"μ_{nt.sym('cam.alpha')}", name="alpha")
 
 
 def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:

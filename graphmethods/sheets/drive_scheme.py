@@ -103,8 +103,8 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     freq = sep.join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
     els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}{nt.colon}ω = {freq} {nt.unit('rad/s')}",
                     size_mm=TEXT_MM, name="frequencies"))
-    rigid = (f"J_e = ΣJ' = {num(chain.J_e, sig=5)} {nt.unit('kg·m²')}{sep}"
-             f"M_e = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}")
+    rigid = (f"{nt.sym('dynamics.J_e')} = ΣJ' = {num(chain.J_e, sig=5)} {nt.unit('kg·m²')}{sep}"
+             f"{nt.sym('dynamics.M_e')} = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}")
     els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}{nt.colon}{rigid}",
                     size_mm=TEXT_MM, name="rigid"))
     return Scene(sheet.page(()), tuple(els), title=sheet.title, notation=nt.code, name="drive-scheme")
