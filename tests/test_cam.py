@@ -282,8 +282,9 @@ def test_cli_bad_input_is_one_line_and_exit_2(argv, words, capsys):
 def test_the_bench_rows_of_the_cam():
     from graphmethods import bench
 
-    rows = bench.bench_cam(n=360, repeat=1)
+    rows = bench.bench_cam(n=360, repeat=1, rocker=False)
     profile, r0 = rows[0], rows[1]
     assert profile.error < 1e-12 and r0.error < 1e-9
     assert [r.size for r in rows[3:]] == [11, 19, 35]
     assert rows[3].error > rows[4].error > rows[5].error        # the chords converge as Δφ²
+    assert len(rows) == 6                                         # the rocker's rows: test_cam_speed

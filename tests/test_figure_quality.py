@@ -32,7 +32,8 @@ LANGS = ("en", "ru", "zh")
 #: the A1 sheets (the force sheet at position 3, as the issue measures it) and the A4 figures
 SHEETS = ("kinematic_analysis_sheet", "force_analysis_sheet", "dynamic_analysis_sheet")
 LINKAGE_FIGURES = ("kinematic_scheme", "velocity_plan_grid", "velocity_plan", "velocity_table",
-                   "acceleration_plan_grid", "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph",
+                   "acceleration_plan_grid", "acceleration_plan", "acceleration_table", "structure_diagram",
+                   "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph",
                    "acceleration_graph", "zhukovsky_lever", "wittenbauer_diagram", "kinematic_diagrams",
                    "work_diagrams")
 CYCLE_FIGURES = ("moment_diagram", "excess_work_table", "energy_indicator", "energy_graph", "work_diagrams")
@@ -61,6 +62,10 @@ def draw(problem, figure, lang):
             module = "cam_sheet" if figure in ("cam_sheet", "cam_inversion") else "cam_figures"
             draw_cam = getattr(importlib.import_module(f"graphmethods.sheets.{module}"), figure)
             return draw_cam(builtin.cam_problem(problem), notation=lang)
+        if figure == "structure_diagram":                # the drawn mechanism split into its groups
+            from graphmethods.sheets.structure_diagram import structure_diagram
+
+            return structure_diagram(builtin.case(problem), notation=lang)
         if figure == "force_analysis_sheet":
             return sheets.force_analysis_sheet(subject(problem), position=3, notation=lang)
         return getattr(sheets, figure)(subject(problem), notation=lang)

@@ -106,3 +106,44 @@ def test_a_tie_is_settled_the_same_way_whatever_the_last_bits():
         assert not occ.is_free((x - 1e-8, 1.0, 40.0, 4.0), within=within)            # beyond the quantum: out
     assert occ.is_free((x + 1e-8, 8.0, x + 6.0, 12.0))                             # beyond it: clear of the line
     assert not occ.is_free((40.0, 1.0, 49.4 + 1e-8, 4.0))                          # and into the box
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(st.floats(-1e4, 1e4), st.floats(-1e4, 1e4), st.floats(-1e4, 1e4), st.floats(-1e4, 1e4)),
+                max_size=30),
+       st.lists(st.tuples(st.floats(-1e4, 1e4), st.floats(-1e4, 1e4), st.floats(0, 3e3), st.floats(0, 3e3)),
+                max_size=10),
+       st.lists(st.tuples(st.floats(-1e4, 1e4), st.floats(-1e4, 1e4), st.floats(-2.0, 40.0), st.floats(-2.0, 40.0)),
+                min_size=1, max_size=8))
+def test_the_grid_index_misses_nothing_far_long_or_inverted(segs, boxes, probes):
+    """Long lines across many cells, big boxes, boxes given inverted: the indexed tests decide as the plain one."""
+    occ = Occupancy()
+    for x0, y0, x1, y1 in segs:
+        occ.add_line(((x0, y0), (x1, y1)))
+    for x, y, w, h in boxes:
+        occ.add_box((x, y, x + w, y + h))
+    cand = [(x, y, x + w, y + h) for x, y, w, h in probes]
+    assert occ.free(cand).tolist() == [plain_is_free(occ, b) for b in cand]
+    assert [occ.is_free(b) for b in cand] == [plain_is_free(occ, b) for b in cand]
+    assert occ.crossings(cand).tolist() == plain_crossings(occ, cand)
+
+
+def test_non_finite_ink_is_looked_at_by_every_query():
+    occ = Occupancy()
+    occ.add_line(((float("nan"), 0.0), (5.0, 5.0)))
+    occ.add_line(((0.0, 0.0), (float("inf"), 0.0)))
+    occ.add_box((float("-inf"), 0.0, 1.0, 1.0))
+    probes = [(2.0, -1.0, 4.0, 1.0), (0.0, 0.2, 0.5, 0.8), (50.0, 50.0, 52.0, 53.0)]
+    assert occ.free(probes).tolist() == [plain_is_free(occ, b) for b in probes]
+
+
+def test_lists_cut_by_hand_are_indexed_anew():
+    occ = Occupancy()
+    occ.add_line(((0.0, 10.0), (100.0, 10.0)))
+    occ.add_box((40.0, 20.0, 60.0, 22.0))
+    assert occ.free([(40, 9, 60, 11), (41, 20.5, 45, 21.5)]).tolist() == [False, False]
+    occ.segments.clear()
+    occ.boxes.clear()
+    occ.add_box((0.0, 0.0, 1.0, 1.0))
+    assert occ.free([(40, 9, 60, 11), (41, 20.5, 45, 21.5)]).tolist() == [True, True]
+    assert occ.is_free((0.5, 0.5, 0.8, 0.8)) is False

@@ -46,7 +46,7 @@ def test_the_force_sheet_of_the_shaper_in_russian_is_signed() -> None:
                        student="Иванов И. И.", group="МТ-31", sheet_no="2", sheets="4")
     texts = _texts(scene)
     assert {"Разраб.", "Иванов И. И.", "МТ-31", "Лист 2", "Листов 4"} <= set(texts)
-    assert min(c.data.size_mm for c in record(scene).calls if c.kind == "text" and c.data.text in GOST) >= 2.5
+    assert min(c.data.size_mm for c in record(scene).calls if c.kind == "text" and c.data.text in GOST) >= 3.5
 
 
 def test_the_english_block_holds_the_students_rows() -> None:
@@ -68,3 +68,51 @@ def test_cli_signs_the_sheet_and_refuses_the_options_without_one(tmp_path, capsy
     capsys.readouterr()
     assert main(["study", "press", "--student", "X"]) == 2
     assert "add --sheet" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(("form", "head"), [("gost", "Изм."), ("gb", "更改文件号")])
+def test_a_narrow_columns_head_is_condensed_at_3_5_mm_inside_its_column(form, head) -> None:
+    """ГОСТ 2.304 type A lettering is narrow: "Изм." in ГОСТ 2.104's 7 mm column and "更改文件号" in GB/T
+    10609.1's 16 mm one keep 3.5 mm and are condensed (a horizontal scale), never set smaller."""
+    from graphmethods.scene.elements import label_bbox
+    from graphmethods.scene.primitives import Label, Path, walk
+
+    block = FormBlock.of(form, right=831.0, bottom=584.0, fields={"title": "T", "student": "S"})
+    prims = list(walk([block.draw()]))
+    labels = [p for p in prims if isinstance(p, Label)]
+    assert min(lab.size_mm for lab in labels) >= 3.5
+    lab = next(lab for lab in labels if lab.text == head)
+    assert 0.6 <= lab.stretch < 1.0
+    x0, _, x1, _ = label_bbox(lab)
+    # the column's lines either side of the head: the block's sides and the verticals that span its baseline
+    verticals = [block.box()[0], block.box()[2]] + [
+        p.points[0][0] for p in prims if isinstance(p, Path) and len(p.points) == 2
+        and p.points[0][0] == p.points[1][0]
+        and min(p.points[0][1], p.points[1][1]) <= lab.y <= max(p.points[0][1], p.points[1][1])]
+    left = max(x for x in verticals if x <= lab.x)
+    right = min(x for x in verticals if x >= lab.x)
+    assert left + 0.5 <= x0 and x1 <= right - 0.5
+
+
+def test_every_writer_draws_condensed_lettering() -> None:
+    """SVG (a horizontal scale about the text's start), PDF (the text matrix) and DXF (the TEXT's width
+    factor) all condense the ГОСТ block's "Изм."; the PNG preview sets it smaller to the same width."""
+    import io
+    import re
+    import zlib
+
+    import ezdxf
+
+    from graphmethods.render import dxf, pdf, svg
+
+    scene = Scene(page=standard_page(Page("A1", frame=True), title="T", problem="p", scales=(), nt="ru"))
+    lab = next(c.data for c in record(scene).calls if c.kind == "text" and c.data.text == "Изм.")
+    k = f"{lab.stretch:g}"
+    assert lab.size_mm == 3.5 and lab.stretch < 1.0
+    assert any(f'transform="matrix({k} 0 0 1 ' in line and ">Изм.<" in line
+               for line in svg.to_string(scene).splitlines())
+    streams = re.findall(rb"stream\r?\n(.*?)\r?\nendstream", pdf.to_bytes(scene), re.S)
+    ops = b"".join(zlib.decompress(s) if s[:1] == b"x" else s for s in streams)
+    assert f"{k} 0 0 -1 ".encode() in ops
+    doc = ezdxf.read(io.StringIO(dxf.to_bytes(scene).decode("utf-8")))
+    assert [e.dxf.width for e in doc.modelspace().query("TEXT") if e.dxf.text == "Изм."] == [lab.stretch]

@@ -130,18 +130,24 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
 def _text(res: dict[str, Any], lang: str) -> str:
     """The force analysis as the table ``graphmethods forces`` prints, in the words of ``lang``."""
     from graphmethods.scene.notation import get
+    from graphmethods.scene.numbers import within_roundoff
 
     nt = get(lang)
-    where = (f"{nt.word('dynamics.position')} {res['position']} / {res['m']}, " if res["position"] is not None else "")
+    sep = "，" if lang == "zh" else ", "                     # a Chinese line takes full-width commas
+    N, Nm, m_ = nt.unit("N"), nt.unit("N·m"), nt.unit("m")
+    i = nt.word("forces.sub_inertia")                      # F_и in ru, F_I in zh: as the drawings write them
+    sense = nt.word(f"kinematics.{res['sense']}") if res["sense"] in ("cw", "ccw") else res["sense"]
+    where = (f"{nt.word('dynamics.position')} {res['position']} / {res['m']}{sep}"
+             if res["position"] is not None else "")
     weights = nt.word("forces.gravity_yes") if res["gravity"] else nt.word("forces.gravity_no")
-    lines = [f"{nt.word('forces.report_title')}: {res['case'] or res['kind']}  ({res['source']})",
-             (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°, "
-              f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} rad/s ({res['sense']}), "
-              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} rad/s², "
+    lines = [f"{nt.word('forces.report_title')}{nt.colon}{res['case'] or res['kind']}  ({res['source']})",
+             (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°{sep}"
+              f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} {nt.unit('rad/s')} ({sense}){sep}"
+              f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} {nt.unit('rad/s²')}{sep}"
               f"{res['structure']['formula'] if isinstance(res['structure'], dict) else res['structure']}"),
-             f"{nt.word('forces.gravity')}: {weights}", "", nt.word("forces.inertia_loads"),
-             (f"{nt.word('forces.link'):>6}  {'F_ix [N]':>12}  {'F_iy [N]':>12}  {'|F_i| [N]':>12}  "
-              f"{'M_i [N·m]':>12}  {'h [m]':>10}")]
+             f"{nt.word('forces.gravity')}{nt.colon}{weights}", "", nt.word("forces.inertia_loads"),
+             (f"{nt.word('forces.link'):>6}  {f'F_{i}x [{N}]':>12}  {f'F_{i}y [{N}]':>12}  {f'|F_{i}| [{N}]':>12}  "
+              f"{f'M_{i} [{Nm}]':>12}  {f'h [{m_}]':>10}")]
     for k, d in res["links"].items():
         fx, fy = d["F_i"]
         h = "-" if d["h"] is None else f"{d['h']:.5f}"
@@ -150,8 +156,8 @@ def _text(res: dict[str, Any], lang: str) -> str:
     if not res["loads"]:
         lines.append(f"  {nt.word('forces.no_load')}")
     else:
-        lines.append(f"{nt.word('forces.load'):>8}  {nt.word('forces.link'):>6}  {'x [m]':>10}  {'y [m]':>10}  "
-                     f"{'F_x [N]':>12}  {'F_y [N]':>12}  {'|F| [N]':>12}  {'M [N·m]':>12}")
+        lines.append(f"{nt.word('forces.load'):>8}  {nt.word('forces.link'):>6}  {f'x [{m_}]':>10}  {f'y [{m_}]':>10}  "
+                     f"{f'F_x [{N}]':>12}  {f'F_y [{N}]':>12}  {f'|F| [{N}]':>12}  {f'M [{Nm}]':>12}")
     for d in res["loads"]:
         if "force" in d:
             (x, y), (fx, fy) = d["at"], d["force"]
@@ -161,16 +167,20 @@ def _text(res: dict[str, Any], lang: str) -> str:
             lines.append(f"{d['label']:>8}  {d['link']:>6}  {'-':>10}  {'-':>10}  {'-':>12}  {'-':>12}  {'-':>12}  "
                          f"{d['moment']:12.4f}")
     lines += ["", nt.word("forces.reactions"),
-              f"{nt.word('forces.pair'):>8}  {'R_x [N]':>12}  {'R_y [N]':>12}  {'|R| [N]':>12}"]
+              f"{nt.word('forces.pair'):>8}  {f'R_x [{N}]':>12}  {f'R_y [{N}]':>12}  {f'|R| [{N}]':>12}"]
     for k, (rx, ry) in res["reactions"].items():
         lines.append(f"{k:>8}  {rx:12.3f}  {ry:12.3f}  {math.hypot(rx, ry):12.3f}")
     diff = nt.word("forces.diff")
+
+    def percent(p: float) -> str:                          # round-off of the two methods' agreement reads 0
+        return "0" if within_roundoff(p, 100.0) else f"{p:.2e}"
+
     lines += ["", nt.word("forces.balancing"),
-              f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} N·m",
-              (f"  {nt.word('forces.from_lever'):<28} {res['M_balance_lever']:14.6f} N·m   {diff} "
-               f"{res['difference_lever_percent']:.2e} %"),
-              (f"  {nt.word('forces.from_power'):<28} {res['M_balance_power']:14.6f} N·m   {diff} "
-               f"{res['difference_power_percent']:.2e} %")]
+              f"  {nt.word('forces.from_plans'):<28} {res['M_balance']:14.6f} {Nm}",
+              (f"  {nt.word('forces.from_lever'):<28} {res['M_balance_lever']:14.6f} {Nm}   {diff} "
+               f"{percent(res['difference_lever_percent'])} %"),
+              (f"  {nt.word('forces.from_power'):<28} {res['M_balance_power']:14.6f} {Nm}   {diff} "
+               f"{percent(res['difference_power_percent'])} %")]
     return "\n".join(lines)
 
 

@@ -329,6 +329,8 @@ class DxfRenderer:
         cjk = any(_CJK.search(t) for t, _ in runs)
         style = STYLE_CJK if cjk else (STYLE_BOLD if label.bold else STYLE_SANS)
         size = label.size_mm
+        if label.stretch != 1.0:                  # condensed lettering: the TEXT's width factor
+            attrs = dict(attrs, width=_num(label.stretch))
         if len(runs) == 1 and runs[0][1] == 0:
             text, _ = runs[0]
             align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
@@ -337,7 +339,7 @@ class DxfRenderer:
             e.set_placement(self._xy(label.x, label.y), align=align)
             self._keep(e)
             return
-        widths = [text_width_mm(t, size * (1.0 if s == 0 else SCRIPT_SCALE)) for t, s in runs]
+        widths = [text_width_mm(t, size * (1.0 if s == 0 else SCRIPT_SCALE)) * label.stretch for t, s in runs]
         x = label.x - {"start": 0.0, "middle": sum(widths) / 2.0, "end": sum(widths)}[label.anchor]
         for (chunk, shift), w in zip(runs, widths):
             h = size * (1.0 if shift == 0 else SCRIPT_SCALE)

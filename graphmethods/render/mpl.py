@@ -22,6 +22,7 @@ import io
 import os
 import pathlib
 from collections.abc import Sequence
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from graphmethods.render.base import draw
@@ -196,6 +197,10 @@ class MplRenderer:
         self._labels.items.append((x, y, text, _font(size_mm * PT_PER_MM, tuple(family), weight), color, ha))
 
     def text(self, label: Label) -> None:
+        if label.stretch != 1.0:
+            # matplotlib's text has no horizontal scale: the PNG preview sets condensed lettering smaller
+            # to the same width (SVG, PDF and DXF condense it at its height)
+            label = replace(label, size_mm=label.size_mm * label.stretch, stretch=1.0)
         for chunk, _ in label.runs:
             check_drawable(chunk, label.bold)
         family = families(label.text)

@@ -213,14 +213,14 @@ class PdfRenderer:
         for chunk, shift in label.runs:
             size = label.size_mm * (1.0 if shift == 0 else SCRIPT_SCALE)
             width_em, shows = self.fonts.run(chunk, label.bold)
-            laid.append((size, width_em * size, shows, shift))
+            laid.append((size, width_em * size * label.stretch, shows, shift))
         total = sum(w for _, w, _, _ in laid)
         x = label.x - {"start": 0.0, "middle": total / 2.0, "end": total}[label.anchor]
         self._set("rg", _rgb(label.color))
         parts = ["BT"]
         for size, width, shows, shift in laid:
             dy = baseline_shift_mm(shift, label.size_mm)
-            parts.append(f"1 0 0 -1 {fmt(x)} {fmt(label.y + dy)} Tm")
+            parts.append(f"{fmt(label.stretch)} 0 0 -1 {fmt(x)} {fmt(label.y + dy)} Tm")   # stretch: condensed
             parts += [f"/{name} {fmt(size)} Tf {array} TJ" for name, array in shows]
             x += width
         parts.append("ET")

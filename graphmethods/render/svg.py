@@ -24,6 +24,7 @@ import xml.etree.ElementTree as ET
 
 from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
+from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm
 from graphmethods.scene.numbers import format_mm as fmt
 from graphmethods.scene.primitives import XY, Label, Style
@@ -134,14 +135,22 @@ class SvgRenderer:
 
     def text(self, label: Label) -> None:
         size = label.size_mm
-        attrs = {"x": fmt(label.x), "y": fmt(label.y), "font-size": fmt(size),
+        x, anchor = label.x, label.anchor
+        if label.stretch != 1.0:
+            # condensed lettering, scaled across about its start: the start is placed here, as the PDF and
+            # DXF writers place it (librsvg anchors a scaled text's middle/end by its unscaled width)
+            x, anchor = label_bbox(label)[0], "start"
+            transform = f"matrix({fmt(label.stretch)} 0 0 1 {fmt(x * (1.0 - label.stretch))} 0)"
+        attrs = {"x": fmt(x), "y": fmt(label.y), "font-size": fmt(size),
                  "xml:space": "preserve"}          # keep the space after a subscript ("f₁ = …")
-        if label.anchor != "start":
-            attrs["text-anchor"] = label.anchor
+        if anchor != "start":
+            attrs["text-anchor"] = anchor
         if label.bold:
             attrs["font-weight"] = "bold"
         if label.color != "#000000":
             attrs["fill"] = label.color
+        if label.stretch != 1.0:
+            attrs["transform"] = transform
         runs = label.runs
         if len(runs) == 1 and runs[0][1] == 0:
             self._add(_tag("text", attrs, clean_text(runs[0][0]).translate(_CDATA)))

@@ -73,6 +73,9 @@ def _letter(element: Any) -> None:
 
 
 def _pt(p: Sequence[float] | NDArray[np.float64]) -> XY:
+    if (type(p) is tuple and len(p) == 2 and type(p[0]) is float and type(p[1]) is float    # the common case
+            and math.isfinite(p[0]) and math.isfinite(p[1])):
+        return p
     try:
         x, y = p
         x, y = float(x), float(y)
@@ -111,7 +114,7 @@ def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers."""
     w, ascent, descent = _runs_extent(lab.runs)
-    w *= lab.size_mm
+    w *= lab.size_mm * lab.stretch
     x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
@@ -161,6 +164,10 @@ class Element:
 
 # --------------------------------------------------------------------------- text
 
+#: how far (em) the baseline lies below the point a label is aligned at, by vertical alignment
+_VALIGN_SHIFT = {"baseline": 0.0, "middle": CAP / 2, "top": ASCENT, "bottom": -DESCENT}
+
+
 def make_label(at: Sequence[float], text: str, *, size_mm: float = 3.5, anchor: str = "start", valign: str = "baseline",
                bold: bool = False, markup_: bool = True, color: str = "#000000") -> Label:
     """A :class:`Label` placed by its anchor and vertical alignment (baseline, middle, top, bottom)."""
@@ -168,7 +175,7 @@ def make_label(at: Sequence[float], text: str, *, size_mm: float = 3.5, anchor: 
         raise InputError(f"text anchor {anchor!r}: use 'start', 'middle' or 'end'")
     x, y = _pt(at)
     size_mm = lettered_size(size_mm)
-    shift = {"baseline": 0.0, "middle": CAP / 2, "top": ASCENT, "bottom": -DESCENT}
+    shift = _VALIGN_SHIFT
     if valign not in shift:
         raise InputError(f"text valign {valign!r}: use one of {', '.join(shift)}")
     runs = markup.parse(text) if markup_ else (((text, 0),) if text else ())

@@ -140,6 +140,23 @@ def typed(text: str) -> str:
     return "".join(("_" if shift < 0 else "^" if shift > 0 else "") + t for t, shift in parse(text))
 
 
+_CJK = "\u3000-\u303f\u4e00-\u9fff\uff08\uff09"
+_FULL_WIDTH = {",": "，", ":": "：", ";": "；"}
+_ASCII_BY_CJK = re.compile(rf"(?<=[{_CJK}]) ?([,:;]) *|(?<![{_CJK}]) ?([,:;]) *(?=[{_CJK}])")
+
+
+def full_width_punctuation(text: str) -> str:
+    """Chinese typography: an ASCII comma, colon or semicolon next to Chinese text becomes full-width
+    (its spaces go: a full-width sign carries its own), so a zh figure never mixes "位置: 3" with "位置：3".
+
+    >>> full_width_punctuation("ω = 1.2 rad/s, 逆时针"), full_width_punctuation("O_{1}: 在图纸之外")
+    ('ω = 1.2 rad/s，逆时针', 'O_{1}：在图纸之外')
+    >>> full_width_punctuation("φ = 30°, ω = 2")
+    'φ = 30°, ω = 2'
+    """
+    return _ASCII_BY_CJK.sub(lambda mt: _FULL_WIDTH[mt.group(1) or mt.group(2)], text)
+
+
 def lowered_digits(name: str) -> str:
     """A point or link name as the books write it, its digits lowered: ``"S2"`` -> ``"S_{2}"``,
     ``"O3A"`` -> ``"O_{3}A"``, ``"s4"`` -> ``"s_{4}"`` (one notation on every sheet).

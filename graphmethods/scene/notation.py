@@ -18,13 +18,13 @@ changes the whole figure. The texts themselves are data: the TOML files of
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from graphmethods.errors import InputError
 from graphmethods.scene import vocabulary
-from graphmethods.scene.numbers import format_value
+from graphmethods.scene.numbers import format_column, format_value
 
 _PROFILES = ("en", "ru", "zh")
 
@@ -91,10 +91,29 @@ class Notation:
         (:func:`~graphmethods.scene.numbers.within_roundoff`)."""
         return format_value(value, sig=sig, decimal=self.decimal, plus=plus, reference=reference)
 
+    def column(self, values: Iterable[float], *, sig: int = 4, reference: float | None = None) -> list[str]:
+        """A table column written with one number of decimals, this tradition's separator
+        (:func:`~graphmethods.scene.numbers.format_column`).
+
+        >>> get("ru").column([0.0517825, 0.055])
+        ['0,05178', '0,05500']
+        """
+        return format_column(values, sig=sig, decimal=self.decimal, reference=reference)
+
     @property
     def colon(self) -> str:
         """The colon after a caption: full-width "：" in Chinese text, ": " otherwise."""
         return "：" if self.code == "zh" else ": "
+
+    @property
+    def list_separator(self) -> str:
+        """Between the numbers of a list: "; " where the decimal mark is a comma ("0,08; u = 6", never
+        "0,08, u = 6"), full-width "，" in Chinese text, ", " otherwise.
+
+        >>> get("ru").list_separator, get("en").list_separator, get("zh").list_separator
+        ('; ', ', ', '，')
+        """
+        return "，" if self.code == "zh" else ("; " if self.decimal == "," else ", ")
 
     @property
     def semicolon(self) -> str:

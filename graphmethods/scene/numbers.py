@@ -14,6 +14,7 @@ minus sign and the decimal separator of the notation profile.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 from graphmethods.errors import InputError
 from graphmethods.units import is_finite
@@ -50,6 +51,10 @@ def format_mm(x: float) -> str:
     >>> format_mm(0.0005), format_mm(-2.0), format_mm(1e-9)
     ('0.001', '-2', '0')
     """
+    try:
+        return _MM_TEXT[x]
+    except (KeyError, TypeError):           # not written yet, or not hashable (a 0-d array)
+        pass
     x = float(x)
     s = f"{x:.3f}"
     if s[-1] in "nf":                       # 'nan', 'inf', '-inf': the only texts not ending in a digit
@@ -57,7 +62,16 @@ def format_mm(x: float) -> str:
     s = s.rstrip("0").rstrip(".")
     if s in ("-0", ""):
         s = "0"
+    if len(_MM_TEXT) < _MM_TEXT_MAX:
+        _MM_TEXT[x] = s
     return s
+
+
+#: the coordinates written so far in this process and their text (a figure writes the same ones again and
+#: again: grid lines, axes, the frame). Keyed by the float; a number equal to a key (an int, a numpy float)
+#: converts to that same float, so it gets the same text.
+_MM_TEXT: dict[float, str] = {}
+_MM_TEXT_MAX = 1 << 17
 
 
 def _round_sig(value: float, sig: int) -> tuple[float, int]:
@@ -70,6 +84,47 @@ def _round_sig(value: float, sig: int) -> tuple[float, int]:
     if rounded != 0 and math.floor(math.log10(abs(rounded))) > exponent:  # 9.9996 -> 10.00
         decimals = max(0, decimals - 1)
     return rounded, decimals
+
+
+def format_column(values: Iterable[float], *, sig: int = 4, decimal: str = ".",
+                  reference: float | None = None) -> list[str]:
+    """A table column's values, all with the same decimals, as a table prints them: the decimals that
+    ``sig`` significant digits of the column's largest value take, fewer when every value ends in zeros.
+
+    Parameters
+    ----------
+    values : iterable of float
+        The column, in the unit its heading states.
+    sig : int
+        Significant digits of the largest value.
+    decimal : str
+        Decimal separator (``","`` in the Russian profile).
+    reference : float, optional
+        As in :func:`format_value`: a value within the round-off of a computation of that size is 0.
+
+    Examples
+    --------
+    >>> format_column([0.0517825, 0.055, 0.0523])
+    ['0.05178', '0.05500', '0.05230']
+    >>> format_column([0.0, 30.0, 360.0]), format_column([360.06, 65.58, -10.46], decimal=",")
+    (['0', '30', '360'], ['360,1', '65,6', '−10,5'])
+    """
+    vals = [float(v) for v in values]
+    if not all(is_finite(v) for v in vals):
+        raise InputError("cannot write a table column with a value that is not finite")
+    vals = [0.0 if reference is not None and within_roundoff(v, reference) else v for v in vals]
+    top = max((abs(v) for v in vals), default=0.0)
+    if top == 0.0 or top < 1e-4 or top >= 1e12:
+        return [format_value(v, sig=sig, decimal=decimal) for v in vals]
+    decimals = _round_sig(top, sig)[1]
+    while decimals > 0 and all(f"{abs(v):.{decimals}f}".endswith("0") for v in vals):
+        decimals -= 1
+    out = []
+    for v in vals:
+        text = f"{abs(v):.{decimals}f}"
+        zero = float(text) == 0.0
+        out.append("0" if zero else (MINUS if v < 0 else "") + text.replace(".", decimal))
+    return out
 
 
 def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool = False,

@@ -61,19 +61,44 @@ class TitleBlock:
         rows += [(h, markup.literal(t)) for h, t in self.person]
         return tuple(rows)
 
-    def table(self, right: float, bottom: float) -> Table | FormBlock:
-        """The block whose bottom-right corner is at (right, bottom): a table, or a standard form."""
+    def table(self, right: float, bottom: float, max_width_mm: float | None = None) -> Table | FormBlock:
+        """The block whose bottom-right corner is at (right, bottom): a table, or a standard form.
+
+        ``max_width_mm``: the frame's width; a text too long for it (a problem's long name on an A4
+        portrait page) goes on as many rows as it needs, its heading on the first.
+        """
         if self.form != "simple":
             return FormBlock.of(self.form, right=right, bottom=bottom,
                                 fields={"title": markup.plain(self.title), **dict(self.fields)})
-        probe = Table((0.0, 0.0), self.rows(), header_rows=0, align="ll", size_mm=self.size_mm, row_height_mm=7.0,
-                      bold_rows=(0,), name="title-block")
+        rows = self.rows()
+        bold: tuple[int, ...] = (0,)
+        probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=self.size_mm, row_height_mm=7.0,
+                      bold_rows=bold, name="title-block")
+        if max_width_mm is not None and probe.width_mm > max_width_mm:
+            rows, bold = self._wrapped(rows, max_width_mm - probe.column_widths()[0] - 2.0 * self.size_mm)
+            probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=self.size_mm, row_height_mm=7.0,
+                          bold_rows=bold, name="title-block")
         w, h = probe.width_mm, probe.height_mm
-        w0 = max(w, 120.0)
+        w0 = max(w, min(120.0, max_width_mm if max_width_mm is not None else 120.0))
         widths = probe.column_widths()
         widths = (widths[0], widths[1] + (w0 - w))
-        return Table((right - w0, bottom - h), self.rows(), col_widths_mm=widths, header_rows=0, align="ll",
-                     size_mm=self.size_mm, row_height_mm=7.0, bold_rows=(0,), name="title-block")
+        return Table((right - w0, bottom - h), rows, col_widths_mm=widths, header_rows=0, align="ll",
+                     size_mm=self.size_mm, row_height_mm=7.0, bold_rows=bold, name="title-block")
+
+    def _wrapped(self, rows: tuple[tuple[str, str], ...], width_mm: float
+                 ) -> tuple[tuple[tuple[str, str], ...], tuple[int, ...]]:
+        """The rows with each text broken into lines of ``width_mm`` (the title's lines all bold)."""
+        # scene.steps draws on this module: imported here
+        from graphmethods.scene.steps import wrap
+
+        out: list[tuple[str, str]] = []
+        bold: list[int] = []
+        for i, (head, text) in enumerate(rows):
+            for k, line in enumerate(wrap(text, self.size_mm, width_mm)):
+                if i == 0:
+                    bold.append(len(out))
+                out.append((head if k == 0 else "", line))
+        return tuple(out), tuple(bold)
 
 
 @dataclass(frozen=True)
@@ -139,7 +164,7 @@ class Page:
         x0, y0, x1, y1 = self.inner_box()
         pad = padding_mm + (5.0 if self.frame else 0.0)
         if self.title_block is not None:
-            y1 -= self.title_block.table(x1, y1).height_mm + 2.0
+            y1 -= self.title_block.table(x1, y1, max_width_mm=x1 - x0).height_mm + 2.0
         return (x0 + pad, y0 + pad, x1 - pad, y1 - pad)
 
     def primitives(self) -> tuple[Primitive, ...]:
@@ -148,5 +173,5 @@ class Page:
         if self.frame:
             prims.append(Path(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), FRAME, closed=True))
         if self.title_block is not None:
-            prims.append(self.title_block.table(x1, y1).draw())
+            prims.append(self.title_block.table(x1, y1, max_width_mm=x1 - x0).draw())
         return tuple(prims)

@@ -101,7 +101,9 @@ class Label:
     """Text on one line, its baseline at ``y``; ``anchor`` is where ``x`` is: start, middle or end.
 
     ``runs`` are ``(text, shift)`` pairs (see :mod:`graphmethods.scene.markup`); the text
-    is plain characters, never interpreted by a backend.
+    is plain characters, never interpreted by a backend. ``stretch`` is the horizontal scale of the
+    lettering (1: the font as it is; 0.8: condensed to 80 % of its width at the same height, as ГОСТ 2.304
+    type A narrow lettering sets a heading in a narrow column); the text is condensed towards ``x``.
     """
 
     x: float
@@ -111,6 +113,7 @@ class Label:
     anchor: str = "start"
     bold: bool = False
     color: str = "#000000"
+    stretch: float = 1.0
 
     @property
     def text(self) -> str:

@@ -21,9 +21,9 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene.elements import Axis, Element, ScaleCaptions, bbox
-from graphmethods.scene.markup import MIN_TEXT_MM
+from graphmethods.scene.markup import MIN_TEXT_MM, full_width_punctuation
 from graphmethods.scene.page import Page
-from graphmethods.scene.primitives import Group, Primitive, walk
+from graphmethods.scene.primitives import Group, Label, Primitive, walk
 from graphmethods.scene.scale import Scale
 
 _ID_BAD = re.compile(r"[^A-Za-z0-9_.-]+")
@@ -39,6 +39,16 @@ def make_id(name: str) -> str:
     if not s or not (s[0].isalpha() or s[0] == "_"):
         s = "g-" + s if s else "g"
     return s
+
+
+def _chinese_punctuation(prim: Any) -> Any:
+    """A primitive with its labels' ASCII ``,:;`` next to Chinese text made full-width (one typography on
+    every zh figure, whatever recipe joined the words)."""
+    if isinstance(prim, Group):
+        return replace(prim, children=tuple(_chinese_punctuation(c) for c in prim.children))
+    if isinstance(prim, Label) and any(c in t for t, _ in prim.runs for c in ",:;"):
+        return replace(prim, runs=tuple((full_width_punctuation(t), sh) for t, sh in prim.runs))
+    return prim
 
 
 def _unique(prims: Iterable[Primitive], used: set[str]) -> tuple[Primitive, ...]:
@@ -148,6 +158,8 @@ class Scene:
         page = self.page.primitives()
         prims = ([Group("page", page)] if page else []) + [e.draw() for e in self.elements]
         drawn = tuple(g for g in _unique(prims, set()) if isinstance(g, Group))     # all groups, as given
+        if self.notation == "zh":
+            drawn = tuple(_chinese_punctuation(g) for g in drawn)
         object.__setattr__(self, "_groups_memo", (lettering, drawn))
         return drawn
 

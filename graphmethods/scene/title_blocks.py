@@ -8,7 +8,8 @@
 
 :class:`FormBlock` has the interface :class:`~graphmethods.scene.page.Page` asks of a title block's
 table: ``width_mm``, ``height_mm`` and ``draw()``. Lines are 0.5 mm (outline and main dividers) and
-0.18 mm (thin), as both standards draw them; every text is 3.5 mm or larger, the title up to 7 mm.
+0.18 mm (thin), as both standards draw them; every text is 3.5 mm or larger (a column head wider than
+its column condensed at that height), the title up to 7 mm.
 
 >>> b = FormBlock.of("gost", right=831.0, bottom=584.0, fields={"title": "Динамический анализ"})
 >>> b.width_mm, b.height_mm, b.box()
@@ -31,6 +32,11 @@ THICK = Style(width_mm=0.5)
 THIN = Style(width_mm=0.18)
 CAPTION_MM = 3.5          # the smallest lettering of an A1/A2 sheet (ГОСТ 2.304, GB/T 14691)
 TITLE_MM = 7.0
+#: the narrowest condensed lettering of a column head: 60 % of the font's width (ГОСТ 2.304 type A is
+#: narrow, d = h/14; a condensed sans at 0.6 still reads as letters)
+CONDENSED_MIN = 0.6
+#: a column head leaves this much of its column free (0.8 mm each side: the condensed text clear of the lines)
+HEAD_MARGIN_MM = 1.6
 
 #: the language whose course sheets carry each standard form
 STANDARD_OF = {"gost": "ru", "gb": "zh"}
@@ -110,13 +116,24 @@ def _rect(x0: float, y0: float, x1: float, y1: float, style: Style) -> Path:
 
 def _text(x: float, y: float, text: str, *, size: float = CAPTION_MM, anchor: str = "start",
           width: float | None = None) -> Label:
-    """A text with its middle at height ``y``, shrunk to ``width`` when it is wider (a long name)."""
+    """A text with its middle at height ``y``, condensed to ``width`` when it is wider.
+
+    A column head wider than its column ("Изм." in ГОСТ 2.104's 7 mm column, "更改文件号" in GB/T 10609.1's
+    16 mm one) keeps its height and is condensed, as ГОСТ 2.304's narrow type A lettering sets it, to at
+    most :data:`CONDENSED_MIN` of its width; a text longer still (a long name) is also set smaller.
+
+    >>> lab = _text(3.5, 0.0, "Изм.", anchor="middle", width=6.4)
+    >>> lab.size_mm, 0.6 < lab.stretch < 1.0
+    (3.5, True)
+    """
+    stretch = 1.0
     if width is not None and text:
         need = markup.text_width_mm(markup.literal(text), size)
         if need > width:
-            size = max(2.5, size * width / need)
+            stretch = max(CONDENSED_MIN, width / need)
+            size = size * min(1.0, width / (need * stretch))
     runs = tuple(markup.parse(markup.literal(text)))
-    return Label(x, y + 0.35 * size, runs, size_mm=size, anchor=anchor)
+    return Label(x, y + 0.35 * size, runs, size_mm=size, anchor=anchor, stretch=round(stretch, 3))
 
 
 def _cjk(ch: str) -> bool:
@@ -167,7 +184,7 @@ def _gost(b: FormBlock, x0: float, y0: float) -> list[Primitive]:
         out.append(_line(x, y0, x, y0 + (30.0 if i == 1 else 55.0), THICK))
     out.append(_line(xl, y0, xl, y0 + 55.0, THICK))
     for i, key in enumerate(("change", "sheet", "doc", "sign", "date")):
-        out.append(_text((xs[i] + xs[i + 1]) / 2, y0 + 27.5, W[key], anchor="middle", width=cols[i] - 0.6))
+        out.append(_text((xs[i] + xs[i + 1]) / 2, y0 + 27.5, W[key], anchor="middle", width=cols[i] - HEAD_MARGIN_MM))
     people = (("drawn", f.get("student", "")), ("checked", f.get("checker", "")), ("tech", ""), ("norm", ""),
               ("approved", ""))
     for r, (key, who) in enumerate(people):
@@ -220,7 +237,7 @@ def _gb(b: FormBlock, x0: float, y0: float) -> list[Primitive]:
         out.append(_line(x, y0, x, y0 + 56.0, THIN))
     out.append(_line(xl, y0, xl, y0 + 56.0, THICK))
     for i, key in enumerate(("change", "count", "zone", "doc", "sign", "date")):
-        out.append(_text((xs[i] + xs[i + 1]) / 2, y0 + 24.5, W[key], anchor="middle", width=cols[i] - 0.6))
+        out.append(_text((xs[i] + xs[i + 1]) / 2, y0 + 24.5, W[key], anchor="middle", width=cols[i] - HEAD_MARGIN_MM))
     rows = (("drawn", f.get("student", ""), "norm"), ("checked", f.get("checker", ""), ""), ("tech", "", ""),
             ("approved", "", ""))
     for r, (key, who, right) in enumerate(rows):

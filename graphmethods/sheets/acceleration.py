@@ -36,7 +36,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
-from graphmethods.scene import Line, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
+from graphmethods.scene import Line, Page, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.elements import Element
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import DASHED
@@ -172,6 +172,7 @@ def _equations(plan: AccelerationPlan, linkage, nt) -> list[tuple[str, str]]:
 
     for s in plan.steps:
         eq = " = ".join(" + ".join(symbol(t.strip()) for t in side.split(" + ")) for side in s.equation.split(" = "))
+        eq = eq.replace("Assur's point", nt.word("acceleration.assur_point"))     # the record's words, translated
         if s.method == "similarity" and len(s.on) == 2:
             x, y = s.on
             lx, ly = image(plan.labels[x]), image(plan.labels[y])
@@ -461,7 +462,7 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
     split = K._plan_split(sheet.box, right_w, lay)
-    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay)
+    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=x1 - x0)
     if _runs_under(columns, sheet.caption_y - lay.caption_room_mm - eq_h + lay.equations_below_mm, x0, split,
                    right_bottom, lay):                                  # a line of values would run under ε
         split_up = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=split - x0 - lay.plan_gap_mm)
@@ -475,10 +476,17 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
             (split, columns), area, eq_h, half = beside, area_b, 0.0, x1 - beside[0]
         else:
             beside = None
+<<<<<<< HEAD
     if beside is None:                  # a wide, low plan: the whole width under the table and ε, when larger so
         area_u = (x0, right_bottom + lay.plan_gap_mm, x1, area[3])
         if area_u[3] - area_u[1] >= lay.min_plan_mm and _plan_need(area_u, arr, lay) < _plan_need(area, arr, lay):
             area = area_u
+=======
+    if area[3] - area[1] < lay.min_plan_mm and page is None:     # a triad's many equations: the A4 page upright
+        return acceleration_plan(linkage, position, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a,
+                                 notation=notation, page=Page("A4", "portrait", frame=True), title=title,
+                                 problem=problem, title_block=title_block, name=name)
+>>>>>>> main
     if area[3] - area[1] < lay.min_plan_mm:
         raise InputError("the plan and its equations do not fit on this page; give a larger page")
     s_a, f = K._fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_a, symbol="μ_a", unit="m/s²", k=k, nt=nt, lay=lay)

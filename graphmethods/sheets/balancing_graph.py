@@ -66,6 +66,8 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
         raise InputError("the balancing-moment graph has no room on this page; give a larger page")
     lo, hi = ticks[0], ticks[-1]
     s_M = _scale(hi - lo, y1 - y0, nt)
+    y1 = y0 + (hi - lo) / s_M.per_mm                # the graph as tall as its scale draws it, under its heading,
+    sheet.caption_y = y1 + 5.5 * size               # its numbers and scale line right under it
     dx = (x1 - x0) / (n - 1)
 
     def at(k: float, v: float) -> tuple[float, float]:
@@ -73,7 +75,7 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
 
     zero = at(0, 0.0)[1]
     els: list[Element] = [sheet.header(),
-                          Line((x0, y1), (x0, y0 - size), name="axis-M"),
+                          Line((x0, y1), (x0, y0 - 0.5 * size), name="axis-M"),
                           Line((x0, zero), (x1 + 2.0, zero), name="axis-phi"),
                           Text((x0 + 1.5, y0 - size), f"{M_b}, {nt.unit('N·m')}", size_mm=size, name="axis-M-label")]
     for t in ticks:

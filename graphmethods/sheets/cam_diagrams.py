@@ -262,9 +262,7 @@ def _motion_scales(cam: CamDesign, box: Box, n_div: int) -> tuple[Scale, Scale, 
             continue
         rest_s = rest - (v_hi - v_lo) / con.mu_v
         if con.second.H_mm * 1.5 <= POLE_ROOM_MM - 8.0 and rest_s > 0:     # a larger s diagram where it fits
-            con = construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
-                               fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=rest_s) \
-                if _fits(cam, n_div, mu_phi, mu_a, rest, rest_s) else con
+            con = _larger_s(cam, n_div, mu_phi, mu_a, rest, rest_s) or con
         return mu_phi, mu_a, con
     raise InputError("no pole distance within the sheet's room draws these motion diagrams; the data are too "
                      "uneven for the A1 cam sheet")
@@ -280,16 +278,17 @@ def _a_span(cam: CamDesign, s1: np.ndarray, s2: np.ndarray) -> tuple[float, floa
     return lo, hi
 
 
-def _fits(cam: CamDesign, n_div: int, mu_phi: Scale, mu_a: Scale, rest: float, rest_s: float) -> bool:
-    """Whether the displacement diagram drawn to fill ``rest_s`` keeps its pole within the room."""
+def _larger_s(cam: CamDesign, n_div: int, mu_phi: Scale, mu_a: Scale, rest: float, rest_s: float
+              ) -> Construction | None:
+    """The construction with the displacement diagram drawn to fill ``rest_s``, or None where its pole would
+    leave the room."""
     s1 = cam.problem.motion(np.linspace(0.0, 360.0, 1441))[1]
     v_lo, v_hi = _span(s1)
     try:
-        construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
-                     fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=rest_s)
+        return construction(cam, n_div, mu_phi=mu_phi.per_mm, mu_a=mu_a.per_mm, room_mm=POLE_ROOM_MM - 8.0,
+                            fit_v=0.5 * rest * max(v_hi, -v_lo) / max(v_hi - v_lo, 1e-300), fit_s=rest_s)
     except ValueError:
-        return False
-    return True
+        return None
 
 
 def motion_column(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_div: int
@@ -493,7 +492,7 @@ def alpha_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple
     if p.alpha_return_max_deg <= float(np.abs(alpha).max()) * 1.2:
         lim.append(-p.alpha_return_max_deg)
     return phi_graph(box, occ, nt, values=alpha, limits=lim, title=nt.word("cam.alpha_graph"),
-                     label=f"{nt.sym('cam.alpha')}, °", unit="°", symbol="μ_α", name="alpha")
+                     label=f"{nt.sym('cam.alpha')}, °", unit="°", symbol=f"μ_{nt.sym('cam.alpha')}", name="alpha")
 
 
 def rho_graph(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation) -> tuple[list[Element], list[Scale]]:

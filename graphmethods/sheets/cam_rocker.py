@@ -35,8 +35,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from graphmethods.kinematics.cam import CamDesign
-from graphmethods.kinematics.cam.design import smallest_admissible
-from graphmethods.kinematics.cam.extrema import maximize
+from graphmethods.kinematics.cam.design import made_once, psi_0_rows, smallest_admissible
+from graphmethods.kinematics.cam.extrema import maximize_rows
 from graphmethods.kinematics.cam.geometry import psi_0
 from graphmethods.scene import Line, Point, Polyline, Region, Scale, Text, pick_scale
 from graphmethods.scene.elements import Element
@@ -84,18 +84,33 @@ def rocker(cam: CamDesign) -> Rocker:
 
 def pressure_angle(rk: Rocker, O: Array, psi: Array, dpsi: Array) -> Array:
     """|α| (rad) at the rocker's positions for a cam centre O: the angle at K between K–O and B's velocity;
-    π where O is in front of K (no admissible angle)."""
-    d = rk.K(psi, dpsi) - O
-    u = rk.u(psi)
-    dot = d[:, 0] * u[:, 0] + d[:, 1] * u[:, 1]
-    cross = np.abs(d[:, 0] * u[:, 1] - d[:, 1] * u[:, 0])
+    π where O is in front of K (no admissible angle).
+
+    ``O`` is one point (2,) or one per row of ``psi`` and ``dpsi`` (shape (rows, 1, 2)). The operations of
+    :meth:`Rocker.K` and :meth:`Rocker.u` in their order (the same bits), the arm's cosine and sine taken once.
+    """
+    th = rk.psi0 + np.asarray(psi, dtype=float)
+    cs, sn = np.cos(th), np.sin(th)
+    A_x, A_y = float(rk.A[0]), float(rk.A[1])
+    grow = 1.0 + np.asarray(dpsi, dtype=float)
+    d_x = (A_x + grow * ((A_x - rk.arm * cs) - A_x)) - O[..., 0]
+    d_y = (A_y + grow * (rk.arm * sn - A_y)) - O[..., 1]
+    dot = d_x * sn + d_y * cs
+    cross = np.abs(d_x * cs - d_y * sn)
     return np.where(dot > 0.0, np.arctan2(cross, dot), math.pi)
 
 
-def excess(cam: CamDesign, rk: Rocker, O: Array) -> float:
-    """max over the rises and returns of (|α| − its limit), rad, exact per smooth piece of each phase."""
+def excess(cam: CamDesign, rk: Rocker, O: Array, *, settle: bool = False) -> Array:
+    """max over the rises and returns of (|α| − its limit), rad, exact per smooth piece of each phase, for each
+    cam centre of ``O`` (shape (rows, 2)).
+
+    With ``settle`` only the sign is asked: a positive value is returned as soon as a grid shows |α| over its
+    limit (:func:`~graphmethods.kinematics.cam.extrema.maximize_rows`'s ``stop_above``), unrefined; a value
+    ≤ 0 is exact as without it.
+    """
     lim = _limits(cam)
-    worst = -math.inf
+    O = np.asarray(O, dtype=float)[:, None, :]
+    worst = np.full(len(O), -math.inf)
     for ph in cam.problem.phases:
         if ph.kind not in lim:
             continue
@@ -105,7 +120,8 @@ def excess(cam: CamDesign, rk: Rocker, O: Array) -> float:
             def g(x: Array, ph: Any = ph, left: bool = left) -> Array:
                 s, s1, _, _ = ph.values(x, left=left)
                 return pressure_angle(rk, O, s, s1)
-            worst = max(worst, maximize(g, lo, hi)[1] - lim[ph.kind])
+            top = maximize_rows(g, lo, hi, len(O), stop_above=lim[ph.kind] if settle else None)[1]
+            worst = np.maximum(worst, top - lim[ph.kind])
     return worst
 
 
@@ -121,8 +137,20 @@ def zone_boundary_r0(cam: CamDesign) -> float:
     return float(np.hypot(*(boundary_centre(cam) - rocker(cam).B(np.zeros(1))[0])))
 
 
+#: the zone's boundary point of each design drawn in this process (a sheet and its A4 figure draw it twice)
+_CENTRES: dict[CamDesign, tuple[float, ...]] = {}
+
+
 def boundary_centre(cam: CamDesign) -> Array:
-    """The cam centre on the circle of radius a about A where the admissible zone begins, nearest B₀ (m)."""
+    """The cam centre on the circle of radius a about A where the admissible zone begins, nearest B₀ (m).
+
+    Found once per design in a process (a :class:`CamDesign` is frozen; a fresh array is returned each time).
+    """
+    return np.array(made_once(_CENTRES, cam, lambda c: tuple(_boundary_centre(c).tolist())))
+
+
+def _boundary_centre(cam: CamDesign) -> Array:
+    """:func:`boundary_centre` without the process's cache: a k-section on δ (see the module's docstring)."""
     p = cam.problem
     rk = rocker(cam)
     B0 = rk.B(np.zeros(1))[0]
@@ -131,8 +159,11 @@ def boundary_centre(cam: CamDesign) -> Array:
     def delta_of(r0: float) -> float:                # the turn of O that gives |O B0| = r0
         return rk.psi0 - psi_0(r0, p.arm, p.pivot)
 
-    def inside(r0: float) -> bool:
-        return psi_0(r0, p.arm, p.pivot) + p.stroke < math.pi and excess(cam, rk, centre_at(rk, delta_of(r0))) <= 0.0
+    def inside(r0: Array) -> NDArray[np.bool_]:      # only the sign of the excess counts
+        psi0, ok = psi_0_rows(r0, p.arm, p.pivot)
+        ok &= psi0 + p.stroke < math.pi
+        O = np.array([centre_at(rk, rk.psi0 - q) for q in psi0.tolist()])
+        return ok & (excess(cam, rk, O, settle=True) <= 0.0)
     hi = smallest_admissible(lo_r, hi_r, inside)
     assert hi is not None                            # the designed centre itself is admissible
     O = centre_at(rk, delta_of(hi))

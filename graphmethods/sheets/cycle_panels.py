@@ -103,8 +103,10 @@ def linkage_panels(study, *, notation="en", title: str | None = None, samples: i
     guides = [float(ph2[k] + (ph2[k + 1] - ph2[k]) * D[k] / (D[k] - D[k + 1]))
               for k in range(D.size - 1) if D[k] * D[k + 1] < 0 or (D[k] == 0 and k > 0)]
     n = nt.number
-    legend = (f"J_F = {n(ex.J_F, sig=4)} {nt.unit('kg·m²')}; ω_{{max}} = {n(mo.omega_max, sig=4)}, "
-              f"ω_{{min}} = {n(mo.omega_min, sig=4)} {nt.unit('rad/s')}; δ = {n(mo.delta, sig=3)}")
+    # the symbols of the dynamic sheet (J_м in Russian); "158,1; ω_min" where a comma is the decimal mark
+    legend = (f"{nt.sym('dynamics.J_F')} = {n(ex.J_F, sig=4)} {nt.unit('kg·m²')}; "
+              f"{nt.sym('dynamics.omega_max')} = {n(mo.omega_max, sig=4)}{nt.list_separator}"
+              f"{nt.sym('dynamics.omega_min')} = {n(mo.omega_min, sig=4)} {nt.unit('rad/s')}; δ = {n(mo.delta, sig=3)}")
     data = PanelData(period=P, phi_M=ph2, M_d=Md2, M_r=Mr2, phi=phi, delta_E=np.asarray(mo.delta_E, dtype=float),
                      omega=np.asarray(mo.omega, dtype=float), guides=tuple(guides), moment_unit="N·m",
                      work_unit="J", legend=legend)

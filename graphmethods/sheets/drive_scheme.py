@@ -64,7 +64,7 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     h = 10.0 + 22.0 * (J / J.max()) ** 0.25
     left, right = x0 + 25.0, x0 + 0.52 * (x1 - x0)
     xs = [left + (right - left) * i / max(n - 1, 1) for i in range(n)]
-    num = nt.number
+    num, sep = nt.number, nt.list_separator
     els: list[Any] = [sheet.header()]
     rows_y = ((sheet.top + 38.0, "given"), (sheet.top + 105.0, "reduced"))
     for y, key in rows_y:
@@ -77,13 +77,13 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
             els.append(_spring(xs[j] + 2.5, xs[j + 1] - 2.5, y, f"{key}-shaft-{j + 1}"))
             mid = (xs[j] + xs[j + 1]) / 2
             text = (f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {nt.unit('N·m/rad')}" if reduced else
-                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}, "
+                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}{sep}"
                     f"u = {num(float(chain.u_shafts[j]), sig=4)}")
             els.append(Text((mid, y - 6.0), text, size_mm=TEXT_MM, anchor="middle", name=f"{key}-label-c-{j + 1}"))
         for i in range(n):
             els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
             text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)}" if reduced else
-                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)}, u = {num(float(chain.u[i]), sig=4)}")
+                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)}{sep}u = {num(float(chain.u[i]), sig=4)}")
             els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), text, size_mm=TEXT_MM, anchor="middle",
                             name=f"{key}-label-J-{i + 1}"))
             if not reduced:
@@ -91,18 +91,20 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
                                 anchor="middle", name=f"label-name-{i + 1}"))
         els.append(Line((left - 12.0, y), (left - 2.5, y), style=THIN, name=f"{key}-axis-in"))
     # the table: per mass J', per shaft c'; the frequencies and the rigid drive under it
-    rows: list[tuple[str, ...]] = [("", "J, " + nt.unit("kg·m²"), "u", "J', " + nt.unit("kg·m²"),
-                                    "c, " + nt.unit("N·m/rad"), "c'")]
+    rows: list[tuple[str, ...]] = [("", nt.quantity("J", "kg·m²"), "u", nt.quantity("J'", "kg·m²"),
+                                    nt.quantity("c", "N·m/rad"), nt.quantity("c'", "N·m/rad"))]
     for i in range(n):
         c_txt = (num(float(chain.c_given[i]), sig=5), num(float(chain.c[i]), sig=5)) if i < n - 1 else ("", "")
-        rows.append((f"{i + 1} {chain.names[i]}", num(float(chain.J_given[i]), sig=5), num(float(chain.u[i]), sig=4),
+        name = chain.names[i] if chain.names[i] != str(i + 1) else ""      # unnamed: its number once
+        rows.append((f"{i + 1} {name}".strip(), num(float(chain.J_given[i]), sig=5), num(float(chain.u[i]), sig=4),
                      num(float(J[i]), sig=5), *c_txt))
     els.append(Table((x0 + 0.6 * (x1 - x0), sheet.top + 8.0), tuple(rows), align="lrrrrr", size_mm=2.8,
                      name="table"))
-    freq = ", ".join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
+    freq = sep.join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
     els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}{nt.colon}ω = {freq} {nt.unit('rad/s')}",
                     size_mm=TEXT_MM, name="frequencies"))
-    els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}: J_e = ΣJ' = {num(chain.J_e, sig=5)} "
-                    f"{nt.unit('kg·m²')}, M_e = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}",
+    rigid = (f"{nt.sym('dynamics.J_e')} = ΣJ' = {num(chain.J_e, sig=5)} {nt.unit('kg·m²')}{sep}"
+             f"{nt.sym('dynamics.M_e')} = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}")
+    els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}{nt.colon}{rigid}",
                     size_mm=TEXT_MM, name="rigid"))
     return Scene(sheet.page(()), tuple(els), title=sheet.title, notation=nt.code, name="drive-scheme")

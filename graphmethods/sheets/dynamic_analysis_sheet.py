@@ -112,15 +112,17 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     res = lay.result(content)
     occ = sheet.occ
     proj = _projection_lines(content, lay, res)          # the thinnest, under everything
-    occ.register(*proj)
+    # the graphs' labels and tick values are placed before the projection lines are known to the occupancy:
+    # the lines are broken at every text (_broken_at_texts), so a value is never dropped for one of them
     diag, turned, M_els, T_els = _sheet_graphs(sheet, content, lay, res, nt)
+    occ.register(*proj)
     O1_drawn = any(e.name == "D-point-O1" for e in diag)    # else its coordinates are in the table
     rows = wide_rows(result_rows(res, nt, extra=_extra_rows(nt, content.moments, lay.s_M, lay.s_phi),
                                  on_sheet=O1_drawn, J_0=lay.J_0))
     w = _table(rows, (0, 0), size_mm=lay.table_mm).width_mm
     x1 = sheet.box[2]
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 60.0, 5.0)]
-    table = _place_table(occ, rows, cands, size_mm=lay.table_mm)
+    table = _place_table(occ, rows, cands, size_mm=lay.table_mm, head_mm=8.0)      # its heading clear too
     occ.add_box((table.at[0], table.at[1] - 8.0, table.at[0] + w, table.at[1]))
     ordinates = _ordinates_table(occ, content, nt, x1, table.at[1] + table.height_mm + 14.0, sheet.caption_y, w)
     heads = _sheet_headings(sheet, content, lay, nt)
@@ -494,14 +496,16 @@ def _ordinates_table(occ: Occupancy, content: SheetContent, nt: Notation, right:
     result (what the graphs were drawn from), with its heading; nothing when no place is free."""
     data, dm = content.data, content.moments
     key = "M_d" if dm.constant_key == "M_r" else "M_r"
-    n = nt.number
     head = ("k", nt.quantity("φ", "°"), nt.quantity(nt.sym(key), "N·m"), nt.quantity(nt.sym("dynamics.dT"), "J"),
             nt.quantity(nt.sym("dynamics.J_e"), "kg·m²"))
     moment = dm.dots[1]
     M_ref, T_ref = float(np.abs(moment).max()), float(np.abs(data.delta_T).max())     # round-off is written 0
-    rows = [head] + [(str(k), n(math.degrees(float(data.phi[k] - data.phi[0])), sig=4),
-                      n(float(moment[k]), sig=4, reference=M_ref), n(float(data.delta_T[k]), sig=4, reference=T_ref),
-                      n(float(data.J_e[k]), sig=4)) for k in range(len(data.phi))]
+    # each column with one number of decimals, as a table is printed (0,05500 under 0,05178, not 0,055)
+    columns = (nt.column(np.degrees(np.asarray(data.phi, dtype=float) - float(data.phi[0])), sig=4),
+               nt.column(np.asarray(moment, dtype=float), sig=4, reference=M_ref),
+               nt.column(np.asarray(data.delta_T, dtype=float), sig=4, reference=T_ref),
+               nt.column(np.asarray(data.J_e, dtype=float), sig=4))
+    rows = [head] + [(str(k), *(col[k] for col in columns)) for k in range(len(data.phi))]
     heading = nt.word("wittenbauer.ordinates")
     for size in ORDINATE_SIZES_MM:          # the largest lettering whose table fits the room under the result
         # as wide as the result (the columns share what the texts leave), rows as tall as the room allows

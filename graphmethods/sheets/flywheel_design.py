@@ -219,7 +219,7 @@ def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, 
 
 
 def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
-    """The table: J, m, mD², D and B, ρ and the rim speed of each flywheel."""
+    """The table: J_F, m, mD², D, B, ρ and the rim speed of each flywheel."""
     num = nt.number
     head = ("",) + tuple(nt.word("flywheel.rim_short" if hasattr(p, "H") else "flywheel.disc_short") for p in parts)
     rows: list[tuple[str, ...]] = [head]
@@ -227,10 +227,12 @@ def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     def row(label: str, f: Any) -> None:
         rows.append((label,) + tuple(f(p) for p in parts))
 
-    row(nt.quantity("J", "kg·m²"), lambda p: num(p.J, sig=5))
+    row(nt.quantity(nt.sym("dynamics.J_F"), "kg·m²"), lambda p: num(p.J))      # J_F as the hyperbola prints it
     row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=4))
     row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=4))
-    row(nt.quantity("D, B", "mm"), lambda p: f"{num(p.D * 1000, sig=4)}, {num(p.B * 1000, sig=3)}")
+    # D and B each on its row: "750, 111" reads as one number with a decimal comma in Russian
+    row(nt.quantity("D", "mm"), lambda p: num(p.D * 1000, sig=4))
+    row(nt.quantity("B", "mm"), lambda p: num(p.B * 1000, sig=3))
     row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=4))
     row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=3))
     row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=3))

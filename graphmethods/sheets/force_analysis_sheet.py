@@ -102,7 +102,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
               Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
               Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
-    notes_text = [nt.word("forces.crank_prime")] + ([nt.word("forces.weights")] if gravity else [])
+    notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
+                  + ([nt.word("forces.weights")] if gravity else []))
     block = sheet.probe.title_block
     inner = pg.inner_box()
     tb = block.table(inner[2], inner[3]) if block is not None else None

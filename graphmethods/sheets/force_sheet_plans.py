@@ -19,6 +19,7 @@ the frame's reaction with F_b in place of M_b, closes it (dashed).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -29,8 +30,8 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.engine.lettering import lettering
+from graphmethods.sheets.force_fit import drawn_tip, fit_forces
 from graphmethods.sheets.layout import Sheet, given_scale
-from graphmethods.units import convenient_at_least
 
 
 def plan_sides(fa: Any, j: int, i: int) -> list[tuple[str, complex, bool]]:
@@ -91,6 +92,17 @@ def _found(fa: Any, j: int, i: int, sides: list[tuple[str, complex, bool]]) -> l
     return out
 
 
+def found_line(lbl: str, R: float, s_F: Scale, nt: Notation) -> str:
+    """A reaction found on a plan as the book writes it: its side's length times μ_F.
+
+    >>> found_line("R_05", 546.93, Scale("μ_F", "N", 50.0), get_notation("en"))
+    'R_{05} = 10.94 mm · 50 N/mm = 546.93 N'
+    """
+    mu = s_F.caption(nt).split(" = ", 1)[1]
+    return (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
+            f" = {nt.number(R, sig=5)} {nt.unit('N')}")
+
+
 def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
                phi_deg: float | None = None) -> Scene:
     """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
@@ -109,29 +121,25 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     sheet = Sheet(nt=nt, page=page, title=cap, problem="", title_block=False)
     sides = plan_sides(fa, j, i)
     pts = np.cumsum([0j] + [F for _, F, _ in sides])
-    size = lettering(page).label_mm
-    eq = Text((sheet.box[0], sheet.top + size), plan_equation(fa, j, i, nt), size_mm=size, name=f"equation-{j}")
-    _keep_clear(sheet, eq)
+    let = lettering(page)
     found = _found(fa, j, i, sides)
-    value_mm = lettering(page).value_mm
-    pitch = 1.8 * value_mm
-    top = sheet.top + 2.0 * size + (len(found) + 0.5) * pitch + L.overhang_mm
-    area = (sheet.box[0] + L.left_mm + L.overhang_mm, top,
-            sheet.box[2] - L.left_mm - L.overhang_mm, sheet.caption_y - L.bottom_mm)
-    pw, ph = area[2] - area[0], area[3] - area[1]
-    if pw <= 10.0 or ph <= 10.0:
-        raise InputError("the force plan's panel is too small; give a larger page")
-    span = max(float(np.ptp(pts.real)) / pw, float(np.ptp(pts.imag)) / ph)
-    if span <= 0:
-        raise InputError("every force is zero in this position; there is no force plan to draw")
-    s_F = given_scale(None, "μ_F", nt.unit("N"), span * pw, pw, what="the force plan")
-    at = SF._cell(pts, (area[0], area[1], pw, ph), s_F)
+    equation = plan_equation(fa, j, i, nt)
+    wide = markup.text_width_mm(equation, let.value_mm) <= sheet.box[2] - sheet.box[0]
+    eq_mm = let.value_mm if wide else let.label_mm              # the equation as large as the values when it fits
+    pitch = 1.8 * let.value_mm
+
+    def lines(s_F: Scale) -> list[str]:
+        return [found_line(lbl, R, s_F, nt) for lbl, R in found]
+
+    area, x_text, s_F = _plan_area(sheet, pts, L,
+                                   lambda mu: [(equation, eq_mm)] + [(t, let.value_mm) for t in lines(mu)],
+                                   2.0 * eq_mm + (len(found) + 0.5) * pitch)
+    at = SF._cell(pts, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
+    eq = Text((x_text, sheet.top + eq_mm), equation, size_mm=eq_mm, name=f"equation-{j}")
+    _keep_clear(sheet, eq)
     els: list[Element] = [sheet.header(), eq]
-    mu = s_F.caption(nt).split(" = ", 1)[1]
-    for k, (lbl, R) in enumerate(found):
-        line = (f"{_label(lbl, nt)} = {nt.number(R / s_F.per_mm, sig=4)} {nt.unit('mm')} · {mu}"
-                f" = {nt.number(R, sig=5)} {nt.unit('N')}")
-        t = Text((sheet.box[0], sheet.top + size + (k + 1) * pitch), line, size_mm=value_mm, name=f"found-{j}-{k}")
+    for k, line in enumerate(lines(s_F)):
+        t = Text((x_text, sheet.top + eq_mm + (k + 1) * pitch), line, size_mm=let.value_mm, name=f"found-{j}-{k}")
         _keep_clear(sheet, t)
         els.append(t)
     if pl.group.startswith("I "):
@@ -141,6 +149,47 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     els += drawn
     els += SF._labels(sheet.occ, wanted, L.within(area))
     return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
+
+
+def _plan_area(sheet: Sheet, pts: np.ndarray, L: SF.ForceFigureLayout,
+               texts: Callable[[Scale], list[tuple[str, float]]], height_mm: float) -> tuple[SF.Box, float, Scale]:
+    """Where a force plan (vertices ``pts``, N) is drawn in its panel, where its lines of text begin (x, mm) and
+    its μ_F: the lines (``texts(μ_F)``: each text and its size, ``height_mm`` together) above the polygon or
+    in a column beside it, whichever draws the polygon larger (above on a tie).
+
+    Raises
+    ------
+    InputError
+        No room for the polygon, or every force zero.
+    """
+    x0, _, x1, _ = sheet.box
+    m = L.left_mm + L.overhang_mm
+    bottom = sheet.caption_y - L.bottom_mm
+    options: list[tuple[float, int, SF.Box, float, Scale]] = []
+    for n_o in (0, 1):
+        col = 0.0
+        for _ in range(3):                      # the column's width at the μ_F it gives (its lines print μ_F)
+            top = sheet.top + (height_mm if n_o == 0 else 0.0) + L.overhang_mm
+            area = (x0 + m, top, x1 - m - col, bottom)
+            pw, ph = area[2] - area[0], area[3] - area[1]
+            span = max(float(np.ptp(pts.real)) / max(pw, 1e-9), float(np.ptp(pts.imag)) / max(ph, 1e-9))
+            if pw <= 10.0 or ph <= 10.0 or span <= 0:
+                break
+            s_F = given_scale(None, "μ_F", get_notation(sheet.nt).unit("N"), span * pw, pw, what="the force plan")
+            if n_o == 0:
+                options.append((s_F.per_mm, n_o, area, x0, s_F))
+                break
+            col_new = max(markup.text_width_mm(t, mm) for t, mm in texts(s_F)) + 4.0
+            if col_new <= col + 1e-9:
+                options.append((s_F.per_mm, n_o, area, x1 - col + 2.0, s_F))
+                break
+            col = col_new
+    if not options:
+        if np.ptp(np.abs(pts)) == 0:
+            raise InputError("every force is zero in this position; there is no force plan to draw")
+        raise InputError("the force plan's panel is too small; give a larger page")
+    _, _, area, x_text, s_F = min(options, key=lambda o: (o[0], o[1]))
+    return area, x_text, s_F
 
 
 def _crank_plan(j: int, sides: list[tuple[str, complex, bool]], pts: np.ndarray, at: SF.ToMm, nt: Notation,
@@ -198,57 +247,10 @@ def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
     return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
 
 
-def fit_with_arrows(points: list[complex], arrows: list[tuple[complex, complex]], s_F: Scale, area: SF.Box,
-                    nt: Notation, *, pad_mm: float = 14.0) -> tuple[Scale, SF.ToMm]:
-    """The largest convenient μ_l (m per mm) at which ``points`` (m) and the ``arrows`` drawn from their points
-    to μ_F (each (point m, force N)) fit ``area`` with ``pad_mm`` round them for the labels, and the map from a
-    point (m) to the page (mm) centring the whole drawing in ``area``.
-
-    >>> from graphmethods.scene import Scale
-    >>> s_l, at = fit_with_arrows([0j, 0.1 + 0j], [(0.1 + 0j, 100 + 0j)], Scale("μ_F", "N", 10.0),
-    ...                           (0.0, 0.0, 200.0, 100.0), get_notation("en"))
-    >>> s_l.per_mm, at(0j)
-    (0.001, (45.0, 50.0))
-    """
-    from graphmethods.scene.scale import pick_scale
-
-    room = (area[2] - area[0] - 2 * pad_mm, area[3] - area[1] - 2 * pad_mm)
-    z = np.asarray(points, dtype=complex)
-    span = max(float(np.ptp(z.real)) * room[1] / max(room[0], 1e-9), float(np.ptp(z.imag)), 1e-12)
-    first = pick_scale(span, max(room[1], 1e-9), symbol="μ_l", unit=nt.unit("m"))
-    tips = np.asarray([p for p, _ in arrows], dtype=complex)
-    offsets = np.asarray([F / s_F.per_mm for _, F in arrows], dtype=complex)
-    mu = first.per_mm
-    for _ in range(40):                         # up the series 1, 2, 2.5, 4, 5 × 10ᵏ until the arrows fit too
-        xs = np.concatenate([z.real / mu, tips.real / mu + offsets.real])
-        ys = np.concatenate([z.imag / mu, tips.imag / mu + offsets.imag])
-        if np.ptp(xs) <= room[0] + 1e-9 and np.ptp(ys) <= room[1] + 1e-9:
-            break
-        mu = _next_scale(mu)
-    s_l = Scale("μ_l", nt.unit("m"), mu)
-    cx = (area[0] + area[2]) / 2 - (float(xs.min()) + float(xs.max())) / 2
-    cy = (area[1] + area[3]) / 2 + (float(ys.min()) + float(ys.max())) / 2
-
-    def at(w: complex) -> tuple[float, float]:
-        return (cx + w.real / mu, cy - w.imag / mu)
-
-    return s_l, at
-
-
-def _next_scale(per_mm: float) -> float:
-    """The next larger value of the convenient series 1, 2, 2.5, 4, 5 × 10ᵏ after ``per_mm``.
-
-    >>> _next_scale(0.002), _next_scale(0.005), _next_scale(0.0025)
-    (0.0025, 0.01, 0.004)
-    """
-    return convenient_at_least(per_mm * (1 + 1e-9))
-
-
 def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
     """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
     its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
     cut from (dashed: found on the plan)."""
-    L = SF.ForceFigureLayout(largest_force_mm=0.0, margin_mm=0.0)
     nt = get_notation(nt)
     mo = fa.motion
     pl = fa.plans[j]
@@ -259,14 +261,12 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
     where = {lbl: _side_point(fa, lbl, i, lk.crank.pin, lk.crank.centre) for lbl, _, _ in sides}
-    w, h = sheet.box[2] - sheet.box[0], sheet.caption_y - sheet.top
-    F_mm = min(60.0, max(20.0, min(w, h) / 3.5))
-    L = SF.ForceFigureLayout(largest_force_mm=F_mm, margin_mm=0.6 * F_mm + 6.0)
+    L = SF.SCHEME_LAYOUT
     area = (sheet.box[0], sheet.top + 4.0, sheet.box[2], sheet.caption_y - L.bottom_mm)
-    s_F = given_scale(None, "μ_F", nt.unit("N"), big, F_mm, what="the largest force")
     arrows = [(where[lbl], F) for lbl, F, _ in sides]
     arrows += [(complex(f.at[i]), complex(f.F[i])) for ln in pl.links for f in fa.applied.get(ln, ())]
-    s_l, at = fit_with_arrows(list(z.values()) + list(where.values()), arrows, s_F, area, nt)
+    s_l, s_F, at = fit_forces(list(z.values()) + list(where.values()), arrows, area, nt,
+                              pad_mm=SF.lettering_pad(page))
     segs, blocks = SF._links_of(mo, i)
     segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0]
     occ = sheet.occ
@@ -281,7 +281,8 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     labels: list[SF.LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     applied = [(f.label, complex(f.F[i]), complex(f.at[i]), SF.round_off_zero(float(f.M[i]), big))
                for ln in pl.links for f in fa.applied.get(ln, ())]
-    drawn, wanted = SF._applied(applied, at, s_F, nt, occ, L, lambda w_: SF._directions(w_, z, segs))
+    drawn, wanted = SF._applied(applied, at, s_F, nt, occ, L, lambda w_: SF._directions(w_, z, segs),
+                                  least=True)
     els += drawn
     labels += wanted
     own = {f[0] for f in applied}
@@ -289,9 +290,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
         if lbl in own or within_roundoff(abs(F), big):
             continue
         a = at(where[lbl])
-        b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
-        if math.dist(a, b) < L.min_mm:
-            continue
+        b, _ = drawn_tip(a, F, s_F)
         els.append(SF._drawn(occ, Vector(a, b, known=lbl == "F_b", head_length_mm=L.head_mm, name=f"reaction-{k}")))
         labels.append((b, _label(lbl, nt), f"label-reaction-{k}"))
     els += SF._labels(occ, labels, L.within(area))

@@ -37,6 +37,8 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
+from graphmethods.sheets.force_fit import arm_lines, drawn_tip
+from graphmethods.sheets.force_panels import lever_texts, scheme_texts
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -247,6 +249,46 @@ def _fit(cloud: np.ndarray, area: Box, L: ForceFigureLayout, mu_l: Any, nt: Nota
         return (cx + z.real / s_l.per_mm, cy - z.imag / s_l.per_mm)
 
     return s_l, at
+
+
+def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.ndarray,
+            arrows: Sequence[tuple[complex, complex]], mu_l: Any, mu_F: Any, nt: Notation, what: str,
+            page: Any) -> tuple[Box, list[Element], Scale, Scale, ToMm]:
+    """The drawing area, the texts, μ_l, μ_F and the map of a drawing of ``cloud`` (m) carrying ``arrows``
+    ((point m, force N)). On a course sheet (A1, A2) with neither scale given, both are chosen together
+    so the drawing and its forces fill the area (:func:`~graphmethods.sheets.force_fit.fit_forces`);
+    otherwise μ_F draws the largest force ``L.largest_force_mm`` long and μ_l fits the drawing with
+    ``L.margin_mm`` round it."""
+    from graphmethods.sheets.force_fit import fit_forces
+
+    if _on_course(page, mu_l, mu_F):
+        picked: dict[Box, Scale] = {}
+
+        def fit(box: Box) -> tuple[Scale, ToMm]:
+            s_l, picked[box], at = fit_forces(list(cloud), arrows, box, nt, pad_mm=lettering_pad(page))
+            return s_l, at
+
+        area, column, s_l, at = _arranged(sheet, texts, L, fit)
+        return area, column, s_l, picked[area], at
+    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), max(abs(F) for _, F in arrows), L.largest_force_mm,
+                      what=f"the largest force on {what}")
+    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, what))
+    return area, column, s_l, s_F, at
+
+
+def _on_course(page: Any, mu_l: Any, mu_F: Any) -> bool:
+    """A force figure drawn into a course sheet (A1, A2) with its scales left to it: its scales are fitted
+    together, a force too short to draw is drawn at the least arrow, the lever's arms are drawn."""
+    from graphmethods.sheets.engine.lettering import is_course_sheet
+
+    return mu_l is None and mu_F is None and page is not None and is_course_sheet(page)
+
+
+def lettering_pad(page: Any) -> float:
+    """The room (mm) kept round a drawing for its labels: two label heights of the page's lettering."""
+    from graphmethods.sheets.engine.lettering import lettering
+
+    return 2.0 * lettering(page).label_mm
 
 
 AnElement = TypeVar("AnElement", bound=Element)
@@ -462,17 +504,6 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
 
 # ----------------------------------------------------------------------------- Zhukovsky's lever
 
-def _lever_texts(fa: Any, i: int, nt: Notation) -> list[str]:
-    """The lever's column: the plan turned, the couples, Σ M_p = 0 and F_b, M_b, the force plans' M_b."""
-    lev = fa.lever
-    Mb_l, Mb = float(lev.M_balance[i]), float(fa.M_balance[i])
-    d = float(fa.difference_percent(lev.M_balance)[i])
-    return [nt.word("forces.turned"), nt.word("forces.couple"),
-            nt.word("forces.lever_equation", Fb=nt.number(abs(complex(lev.F_balance[i])), sig=5)),
-            nt.word("forces.lever_result", Mb=nt.number(Mb_l, sig=6)),
-            nt.word("forces.lever_plans", Mb=nt.number(Mb, sig=6), d=percent_text(d, nt))]
-
-
 def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                      gravity: bool = False, mu_l: Any = None, mu_F: Any = None, notation: Any = "en",
                      page: Any = None, title: str | None = None, title_block: bool = True,
@@ -498,26 +529,28 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever
     sheet = _sheet(case, nt, "lever", i, phi_deg, page=page, title=title, title_block=title_block)
-    texts = _lever_texts(fa, i, nt)
+    texts = lever_texts(fa, i, nt)
     fixed = set(mo.linkage.ground)
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
     items.append(("F_b", complex(lev.image_pin[i]), complex(lev.F_balance[i])))
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), max(abs(F) for _, _, F in items), L.largest_force_mm,
-                      what="the largest force on the lever")
     cloud = np.array([0j] + list(images.values()) + [z for _, z, _ in items])
-    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the lever"))
+    area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, w, F in items], mu_l, mu_F, nt,
+                                         "the lever", page)
     occ = sheet.occ
     pole = at(0j)
     els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
     els += [_drawn(occ, Line(pole, at(z), style=THIN, name=f"ray-{p}")) for p, z in images.items()
             if abs(z) / s_l.per_mm >= L.min_mm]
     vec_labels: list[LabelSpec] = []
+    course = _on_course(page, mu_l, mu_F)
     for j, (label, z, F) in enumerate(items):
         a = at(z)
-        b = (a[0] + F.real / s_F.per_mm, a[1] - F.imag / s_F.per_mm)
+        b, _ = drawn_tip(a, F, s_F, least=course)
         els.append(_drawn(occ, Vector(a, b, known=True, head_length_mm=L.head_mm,
                                       name="F_b" if label == "F_b" else f"force-{j}")))
+        els += [_drawn(occ, Line(p, q, style=THIN, name=f"arm-{j}-{k}"))
+                for k, (p, q) in enumerate(arm_lines(pole, a, b, within=area) if course and label[0] != "M" else [])]
         vec_labels.append((b, _markup(label, nt), f"label-force-{j}"))
     names = [(at(z), markup.lowered_digits(p.lower() if len(p) == 1 else p[0].lower() + p[1:]), f"image-{p}")
              for p, z in images.items()]
@@ -670,8 +703,10 @@ def _moment_arc(centre: tuple[float, float], radius_mm: float, sweep_deg: float,
 
 def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_F: Scale, nt: Notation,
              occ: Occupancy, L: ForceFigureLayout,
-             around: Callable[[complex], list[float]]) -> tuple[list[Element], list[LabelSpec]]:
-    """Each applied force drawn to μ_F from its point; each moment as an arc in its sense, on the side of its
+             around: Callable[[complex], list[float]], *,
+             least: bool = False) -> tuple[list[Element], list[LabelSpec]]:
+    """Each applied force drawn to μ_F from its point (``least``: one too short to draw at the least arrow,
+    :func:`~graphmethods.sheets.force_fit.drawn_tip`); each moment as an arc in its sense, on the side of its
     point away from the links there (``around``) and its force; their labels."""
 
     els: list[Element] = []
@@ -679,8 +714,8 @@ def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_
     n_f = 0                                    # the forces drawn (one too short to draw is left out)
     for label, F, where, M in forces:
         start = at(where)
-        if abs(F) / s_F.per_mm >= L.min_mm:
-            tip = (start[0] + F.real / s_F.per_mm, start[1] - F.imag / s_F.per_mm)
+        if abs(F) / s_F.per_mm >= (0.0 if least else L.min_mm) and abs(F) > 0.0:
+            tip, _ = drawn_tip(start, F, s_F, least=least)        # too short to draw to scale: the least arrow
             els.append(_drawn(occ, Vector(start, tip, head_length_mm=L.head_mm, name=f"force-{n_f}")))
             n_f += 1
             labels.append((tip, f"{_markup(label, nt)} = {nt.number(abs(F), sig=4)} {nt.unit('N')}",
@@ -720,7 +755,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     mo = fa.motion
     sheet = _sheet(case, nt, "scheme", i, phi_deg, page=page, title=title, title_block=title_block)
     Mb = float(fa.M_balance[i])
-    texts = [nt.word("forces.inertia"), nt.word("forces.scheme_balance", Mb=nt.number(Mb, sig=6))]
+    texts = scheme_texts(fa, i, nt)
     z = {p: complex(mo.z[p][i]) for p in mo.points}
     forces = [(f.label, complex(f.F[i]), complex(f.at[i]), float(f.M[i])) for fs in fa.applied.values() for f in fs]
     F_max = max([abs(F) for _, F, _, _ in forces] + [0.0])
@@ -728,9 +763,9 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     forces = [(lbl, F, at_, round_off_zero(M, M_size)) for lbl, F, at_, M in forces]
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
-    s_F = given_scale(mu_F, "μ_F", nt.unit("N"), F_max, L.largest_force_mm, what="the largest force")
     cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1]))
-    area, column, s_l, at = _arranged(sheet, texts, L, lambda box: _fit(cloud, box, L, mu_l, nt, "the scheme"))
+    area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, F, w, _ in forces], mu_l, mu_F, nt,
+                                         "the scheme", page)
     occ = sheet.occ
     els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
     labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
@@ -743,7 +778,7 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
         below = [240.0, 270.0, 300.0] if any(abs(w - q) <= 1e-12 for q in pivots) else []
         return _directions(w, z, segs) + below
 
-    drawn, wanted = _applied(forces, at, s_F, nt, occ, L, around)
+    drawn, wanted = _applied(forces, at, s_F, nt, occ, L, around, least=_on_course(page, mu_l, mu_F))
     els += drawn
     labels += wanted
     cr = mo.linkage.crank

@@ -28,6 +28,7 @@ from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
 from graphmethods.scene.title_blocks import form_for
+from graphmethods.sheets.ink_index import InkIndex, union_box
 from graphmethods.titles import text_in
 
 Box = tuple[float, float, float, float]
@@ -79,7 +80,7 @@ TIE_MM = 1e-9
 #: cannot touch it; the decision itself is the exact clipping arithmetic of :func:`_segment_hits_box`
 _NEAR_MM = 1e-6
 #: up to this many segments near a box are tested one by one (same decisions, less overhead)
-_FEW = 24
+_FEW = 48
 
 
 def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
@@ -151,9 +152,9 @@ def _leader_candidate(at, text: str, r: float, ang: float, size_mm: float
 class Occupancy:
     """What is drawn already (line segments and boxes), to place labels where nothing is.
 
-    The free-space tests run over numpy arrays of everything registered (kept in step with the
-    lists ``segments`` and ``boxes``), with a bounding-box prefilter; the decisions are those of
-    the plain clipping test :func:`_segment_hits_box`, segment by segment.
+    The free-space tests look only at the items a grid index (:class:`~graphmethods.sheets.ink_index.
+    InkIndex`) files near a box, with a bounding-box prefilter; the decisions are those of the plain
+    clipping test :func:`_segment_hits_box` over every registered segment, to the bit.
     """
 
     def __init__(self, *, pad_mm: float = 0.6):
@@ -161,9 +162,10 @@ class Occupancy:
         self.segments: list[tuple] = []
         self.boxes: list[Box] = []
         self._seg = np.empty((0, 4))
-        self._seg_lo = np.empty((0, 2))
-        self._seg_hi = np.empty((0, 2))
         self._box = np.empty((0, 4))
+        self._index = InkIndex()
+        self._seg_ext: list[tuple[float, float, float, float]] = []     # x_lo, y_lo, x_hi, y_hi of each segment
+        self._boxes_indexed = 0
 
     def add_line(self, points) -> None:
         pts = [tuple(map(float, p)) for p in points]
@@ -196,8 +198,6 @@ class Occupancy:
         if len(self._seg) != len(self.segments):
             new = np.asarray(self.segments[len(self._seg):], dtype=float).reshape(-1, 4)
             self._seg = np.vstack((self._seg, new))
-            self._seg_lo = np.vstack((self._seg_lo, np.minimum(new[:, :2], new[:, 2:])))
-            self._seg_hi = np.vstack((self._seg_hi, np.maximum(new[:, :2], new[:, 2:])))
         return self._seg
 
     def box_array(self) -> np.ndarray:
@@ -207,14 +207,44 @@ class Occupancy:
             self._box = np.vstack((self._box, new))
         return self._box
 
-    def _near(self, g: Box) -> np.ndarray:
-        """Which segments' extents come within ``_NEAR_MM`` of the box ``g``."""
-        seg = self.segment_array()
-        if not len(seg):
-            return np.zeros(0, dtype=bool)
-        lo, hi = self._seg_lo, self._seg_hi
-        e = _NEAR_MM
-        return ((lo[:, 0] <= g[2] + e) & (hi[:, 0] >= g[0] - e) & (lo[:, 1] <= g[3] + e) & (hi[:, 1] >= g[1] - e))
+    def _indexed(self) -> InkIndex:
+        """The grid index, with every segment and box registered so far filed in it."""
+        idx, ext = self._index, self._seg_ext
+        if len(ext) == len(self.segments) and self._boxes_indexed == len(self.boxes):
+            return idx
+        if len(ext) > len(self.segments) or self._boxes_indexed > len(self.boxes):     # the lists were cut: anew
+            self._index, self._boxes_indexed, self._seg = InkIndex(), 0, np.empty((0, 4))
+            self._box, self._seg_ext = np.empty((0, 4)), []
+            return self._indexed()
+        for k in range(len(ext), len(self.segments)):
+            (x0, y0), (x1, y1) = self.segments[k]
+            ext.append((min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)))
+            idx.add_segment(k, x0, y0, x1, y1)
+        for k in range(self._boxes_indexed, len(self.boxes)):
+            idx.add_box(k, self.boxes[k])
+        self._boxes_indexed = len(self.boxes)
+        return idx
+
+    def _box_taken(self, g: Box, idx: InkIndex) -> bool:
+        """Does a registered box overlap ``g`` (already grown by the padding less the tie quantum)?"""
+        boxes = self.boxes
+        for k in idx.boxes_near(g):
+            b = boxes[k]
+            if g[0] < b[2] and b[0] < g[2] and g[1] < b[3] and b[1] < g[3]:
+                return True
+        return False
+
+    def _near(self, g: Box, idx: InkIndex) -> list[int]:
+        """The segments whose extents come within ``_NEAR_MM`` of the box ``g``, in registration order."""
+        e, ext = _NEAR_MM, self._seg_ext
+        x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
+        out = []
+        for k in idx.segments_near(g):
+            lo_x, lo_y, hi_x, hi_y = ext[k]
+            if lo_x <= x1 and hi_x >= x0 and lo_y <= y1 and hi_y >= y0:
+                out.append(k)
+        out.sort()
+        return out
 
     def _grown(self, box: Box, tie: float) -> Box:
         """The box grown by the padding and ``tie`` (±:data:`TIE_MM`)."""
@@ -226,78 +256,79 @@ class Occupancy:
         if within is not None and not (box[0] >= within[0] - TIE_MM and box[1] >= within[1] - TIE_MM
                                        and box[2] <= within[2] + TIE_MM and box[3] <= within[3] + TIE_MM):
             return False
-        g = self._grown(box, -TIE_MM)          # boxes: a touch within the tie quantum is clear
-        b = self.box_array()
-        if len(b) and bool(np.any((g[0] < b[:, 2]) & (b[:, 0] < g[2]) & (g[1] < b[:, 3]) & (b[:, 1] < g[3]))):
+        index = self._indexed()
+        if self._box_taken(self._grown(box, -TIE_MM), index):      # boxes: a touch within the tie quantum is clear
             return False
         if not lines:
             return True
         g = self._grown(box, TIE_MM)           # lines: a touch within it crosses
-        idx = np.flatnonzero(self._near(g))
+        idx = self._near(g, index)
         if len(idx) <= _FEW:           # a few near segments: the scalar test is quicker than numpy's set-up
             segs = self.segments
-            return not any(_segment_hits_box(segs[i][0], segs[i][1], g) for i in idx.tolist())
-        return not bool(segments_hit_boxes(self._seg[idx], np.asarray(g)).any())
+            return not any(_segment_hits_box(segs[i][0], segs[i][1], g) for i in idx)
+        return not bool(segments_hit_boxes(self.segment_array()[idx], np.asarray(g)).any())
 
     def free(self, boxes, *, within: Box | None = None, lines: bool = True) -> np.ndarray:
         """:meth:`is_free` of many candidate boxes at once (a bool per box, the same decisions).
 
-        The boxes are tested together against everything registered (one numpy pass for the boxes,
-        one clipping pass for the segments near any of them), so a label's candidates, all directions
-        at one gap, cost one call.
+        The segments near each box are tested one by one when they are few, else in one clipping pass
+        over numpy arrays, so a label's candidates, all directions at one gap, cost one call.
 
         >>> occ = Occupancy()
         >>> occ.add_line(((0, 10), (100, 10)))
         >>> occ.free([(40, 9, 60, 11), (40, 20, 60, 22)]).tolist()
         [False, True]
         """
-        boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
-        ok = np.ones(len(boxes), dtype=bool)
+        rows = np.asarray(boxes, dtype=float).reshape(-1, 4).tolist()
+        ok = [True] * len(rows)
         if within is not None:
-            ok &= ((boxes[:, 0] >= within[0] - TIE_MM) & (boxes[:, 1] >= within[1] - TIE_MM)
-                   & (boxes[:, 2] <= within[2] + TIE_MM) & (boxes[:, 3] <= within[3] + TIE_MM))
-        b = self.box_array()
-        if len(b) and ok.any():
-            d = self.pad + -TIE_MM                 # as _grown(box, -TIE_MM) (x − d is x + (−d) to the bit)
-            g = boxes + np.array((-d, -d, d, d))
-            hit = ((g[:, 0, None] < b[None, :, 2]) & (b[None, :, 0] < g[:, 2, None])
-                   & (g[:, 1, None] < b[None, :, 3]) & (b[None, :, 1] < g[:, 3, None]))
-            ok &= ~hit.any(axis=1)
-        if not lines or not ok.any() or not len(self.segment_array()):
-            return ok
+            w0, w1, w2, w3 = within[0] - TIE_MM, within[1] - TIE_MM, within[2] + TIE_MM, within[3] + TIE_MM
+            ok = [b[0] >= w0 and b[1] >= w1 and b[2] <= w2 and b[3] <= w3 for b in rows]
+        live = [a for a in range(len(rows)) if ok[a]]
+        if not live:
+            return np.array(ok, dtype=bool)
+        index = self._indexed()
+        d = self.pad + -TIE_MM                     # as _grown(box, -TIE_MM) (x − d is x + (−d) to the bit)
+        grown = {a: (rows[a][0] + -d, rows[a][1] + -d, rows[a][2] + d, rows[a][3] + d) for a in live}
+        taken = [self.boxes[k] for k in index.boxes_near(union_box(grown.values()))]
+        if taken:
+            for a, g in grown.items():
+                if any(g[0] < b[2] and b[0] < g[2] and g[1] < b[3] and b[1] < g[3] for b in taken):
+                    ok[a] = False
+            live = [a for a in live if ok[a]]
+        if not lines or not live or not self.segments:
+            return np.array(ok, dtype=bool)
         d = self.pad + TIE_MM                      # as _grown(box, TIE_MM)
-        g = boxes + np.array((-d, -d, d, d))
-        rows = np.flatnonzero(ok)
-        gr = g[rows]
-        near = np.flatnonzero(self._near((gr[:, 0].min(), gr[:, 1].min(), gr[:, 2].max(), gr[:, 3].max())))
-        if len(near):
-            e = _NEAR_MM                           # each box against the segments near it (as _near)
-            lo, hi = self._seg_lo[near], self._seg_hi[near]
-            i, j = np.nonzero((lo[None, :, 0] <= gr[:, 2, None] + e) & (hi[None, :, 0] >= gr[:, 0, None] - e)
-                              & (lo[None, :, 1] <= gr[:, 3, None] + e) & (hi[None, :, 1] >= gr[:, 1, None] - e))
-            if len(i) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
-                segs, grl, blocked = self.segments, gr.tolist(), set()
-                for a, k in zip(i.tolist(), near[j].tolist()):
-                    if a not in blocked and _segment_hits_box(segs[k][0], segs[k][1], grl[a]):
-                        blocked.add(a)
-                ok[rows[sorted(blocked)]] = False
-            else:
-                hit = _pairs_hit(self._seg[near[j]], gr[i])
-                ok[rows[np.unique(i[hit])]] = False
-        return ok
+        grown = {a: (rows[a][0] + -d, rows[a][1] + -d, rows[a][2] + d, rows[a][3] + d) for a in live}
+        e, ext = _NEAR_MM, self._seg_ext
+        near = self._near(union_box(grown.values()), index)
+        pairs: list[tuple[int, int]] = []
+        for a, g in grown.items():              # each box against the segments near it (as _near)
+            x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
+            pairs.extend((a, k) for k in near
+                         if ext[k][0] <= x1 and ext[k][2] >= x0 and ext[k][1] <= y1 and ext[k][3] >= y0)
+        if len(pairs) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
+            segs = self.segments
+            for a, k in pairs:
+                if ok[a] and _segment_hits_box(segs[k][0], segs[k][1], grown[a]):
+                    ok[a] = False
+        else:
+            i = np.array([a for a, _ in pairs])
+            hit = _pairs_hit(self.segment_array()[[k for _, k in pairs]], np.array([grown[a] for a, _ in pairs]))
+            for a in np.unique(i[hit]).tolist():
+                ok[a] = False
+        return np.array(ok, dtype=bool)
 
     def crossings(self, boxes) -> np.ndarray:
         """How many registered segments pass through each box grown by the padding (an int per box)."""
-        boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
-        seg = self.segment_array()
-        if not len(seg) or not len(boxes):
-            return np.zeros(len(boxes), dtype=int)
-        grown = boxes + (np.array([-1.0, -1.0, 1.0, 1.0]) * (self.pad + TIE_MM))     # a touch crosses
-        u = (grown[:, 0].min(), grown[:, 1].min(), grown[:, 2].max(), grown[:, 3].max())
-        near = self._near(u)
-        if not near.any():
-            return np.zeros(len(boxes), dtype=int)
-        return segments_hit_boxes(seg[near], grown).sum(axis=1).astype(int)
+        rows = np.asarray(boxes, dtype=float).reshape(-1, 4).tolist()
+        if not self.segments or not rows:
+            return np.zeros(len(rows), dtype=int)
+        d = self.pad + TIE_MM                      # a touch crosses
+        grown = [(b[0] + -d, b[1] + -d, b[2] + d, b[3] + d) for b in rows]
+        segs, index = self.segments, self._indexed()
+        return np.array([sum(_segment_hits_box(segs[k][0], segs[k][1], g) for k in self._near(g, index))
+                         for g in grown], dtype=int)
 
     def first_free(self, at, text, directions, gaps, size_mm, within) -> Label | None:
         """The first label beside ``at`` (directions × gaps) whose box is free; None when none is.

@@ -28,6 +28,7 @@ import numpy as np
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Page, Scene, notation as get_notation
 from graphmethods.scene.elements import Group as ElementGroup, Line, Polyline, Text
+from graphmethods.scene.markup import lowered_digits
 from graphmethods.scene.primitives import MAIN, Circle, Style
 from graphmethods.sheets.engine import Ink, Panel, Split, extent_of, lettering, shares_for
 from graphmethods.sheets.frame import SheetFrame
@@ -176,8 +177,8 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
         ink.add_primitives(el.primitives())
     texts: list[Element] = []
     for j in dict.fromkeys([*part.fixed, *part.outer, *part.inner]):
-        lab, leader = ink.place(to(z[j]), j, size_mm=size_mm, within=panel.box)
-        texts.append(Text((lab.x, lab.y), j, size_mm=size_mm, name=f"name-{j}"))
+        lab, leader = ink.place(to(z[j]), lowered_digits(j), size_mm=size_mm, within=panel.box)
+        texts.append(Text((lab.x, lab.y), lowered_digits(j), size_mm=size_mm, anchor=lab.anchor, name=f"name-{j}"))
         if leader is not None:
             texts.append(Line(leader[0], leader[1], name=f"leader-{j}"))
     for k, js in part.links.items():
@@ -187,7 +188,7 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
         else:
             lab, _ = ink.place(to(z[js[0]]), k, size_mm=size_mm, directions=("n", "ne", "nw", "s"), gap_mm=3.0,
                                within=panel.box, leader=False)
-        texts.append(Text((lab.x, lab.y), k, size_mm=size_mm, bold=True, name=f"number-{k}"))
+        texts.append(Text((lab.x, lab.y), k, size_mm=size_mm, bold=True, anchor=lab.anchor, name=f"number-{k}"))
     return els + texts
 
 
@@ -224,7 +225,8 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
     boxes = Split("h", tuple(zip(names, shares_for(widths, least=0.18))), gap_mm=6.0).boxes(area)
     margins = (2.6 * let.label_mm + PAD_MM, PAD_MM, PAD_MM, PAD_MM)
     panels = [Panel(boxes[n], x, symbol="μ_l", unit="m", margins_mm=margins) for n, x in zip(names, exts)]
-    common = max((p.scale for p in panels), key=lambda s: s.per_mm)          # one scale for every part
+    sized = [p.scale for p, x in zip(panels, exts) if max(x[2] - x[0], x[3] - x[1]) > 0]   # a lone block: no size
+    common = max(sized or [p.scale for p in panels], key=lambda s: s.per_mm)  # one scale for every part
     panels = [Panel(p.box, p.extent, symbol="μ_l", unit="m", margins_mm=margins, scale_given=common)
               for p in panels]
     els: list[Element] = [sheet.header()]

@@ -553,12 +553,13 @@ def _table(rows, at, name="result", size_mm: float = TABLE_MM) -> Table:
                  row_height_mm=5.6 * size_mm / TABLE_MM, padding_mm=1.6, name=name)
 
 
-def _place_table(occ, rows, candidates, name="result", size_mm: float = TABLE_MM) -> Table:
-    """The table at the first candidate top-left corner where it covers nothing (the first otherwise)."""
+def _place_table(occ, rows, candidates, name="result", size_mm: float = TABLE_MM, head_mm: float = 0.0) -> Table:
+    """The table at the first candidate top-left corner where it, and ``head_mm`` above it (its heading's room),
+    covers nothing (the first otherwise)."""
     probe = _table(rows, (0.0, 0.0), size_mm=size_mm)
     w, h = probe.width_mm, probe.height_mm
     for at in candidates:
-        if occ.is_free((at[0], at[1], at[0] + w, at[1] + h)):
+        if occ.is_free((at[0], at[1] - head_mm, at[0] + w, at[1] + h)):
             break
     else:
         at = candidates[0]

@@ -26,16 +26,26 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
-from graphmethods.kinematics.cam.extrema import maximize
-from graphmethods.kinematics.cam.geometry import PitchFrame, pitch_frame, pressure_angle, psi_0, to_cam_frame
+from graphmethods.kinematics.cam.extrema import maximize, maximize_rows
+from graphmethods.kinematics.cam.geometry import (
+    PitchFrame,
+    pitch_frame,
+    pressure_angle,
+    pressure_angle_at,
+    psi_0,
+    to_cam_frame,
+)
 from graphmethods.kinematics.cam.problem import CamProblem, Phase
 
 Array = NDArray[np.float64]
+K = TypeVar("K")
+V = TypeVar("V")
 #: a function of (s, ds/dφ, d²s/dφ²) over a phase, to be maximised
 Objective = Callable[[Array, Array, Array], Array]
 
@@ -202,58 +212,98 @@ def _alpha_max(p: CamProblem, r0: float, kind: str, stop_above: float | None = N
     """(φ, largest |α| in rad) over the phases of this kind at the pitch base radius r₀ (with ``stop_above``:
     any |α| above it, as soon as the grid shows one)."""
     def g(s: Array, s1: Array, s2: Array) -> Array:
-        if p.oscillating:                   # α alone (the bisection on r₀ asks for it ~10⁴ times)
+        if p.oscillating:                   # α alone, the bits of the k-section's admissible()
             return np.abs(pressure_angle(r0, s, s1, arm=p.arm, pivot=p.pivot))
         return np.abs(pitch_frame(p.follower_type, r0, s, s1, s2, offset=p.offset, arm=p.arm, pivot=p.pivot).alpha)
     return _max_over(p.phases, (kind,), g, stop_above)
 
 
+def psi_0_rows(r0: Array, arm: float, pivot: float) -> tuple[Array, NDArray[np.bool_]]:
+    """ψ₀ of each base radius r₀ (rad, :func:`~graphmethods.kinematics.cam.geometry.psi_0` one by one, so the
+    same bits) and whether the arm reaches it (where not, ψ₀ is 0).
+
+    >>> psi, ok = psi_0_rows(np.array([0.05, 0.5]), 0.1, 0.12)
+    >>> psi.round(6).tolist(), ok.tolist()
+    ([0.421442, 0.0], [True, False])
+    """
+    psi = np.zeros(len(r0))
+    ok = np.zeros(len(r0), dtype=bool)
+    for i, r in enumerate(np.asarray(r0, dtype=float).tolist()):
+        try:
+            psi[i], ok[i] = psi_0(r, arm, pivot), True
+        except InputError:
+            pass
+    return psi, ok
+
+
 def _design_oscillating(p: CamProblem) -> float:
-    """r₀ of an oscillating knife or roller follower: the smallest with |α| within the limits (bisection)."""
+    """r₀ of an oscillating knife or roller follower: the smallest with |α| within the limits (k-section on r₀,
+    every candidate at once)."""
     assert p.alpha_max_deg is not None
     lim = {"rise": math.radians(p.alpha_max_deg), "return": math.radians(p.alpha_return_max_deg)}
     lo_r, hi_r = abs(p.pivot - p.arm), p.pivot + p.arm
-    swing = p.stroke
 
-    def excess(r0: float) -> float:
-        try:
-            if psi_0(r0, p.arm, p.pivot) + swing >= math.pi:
-                return math.inf
-            worst = -math.inf               # only its sign counts: a grid value over a limit settles it
-            for k in lim:
-                if any(ph.kind == k for ph in p.phases):
-                    worst = max(worst, _alpha_max(p, r0, k, stop_above=lim[k])[1] - lim[k])
-                    if worst > 0.0:
-                        break
-            return worst
-        except InputError:
-            return math.inf
-    r0 = smallest_admissible(lo_r, hi_r, lambda r: excess(r) <= 0.0)
+    def admissible(r0: Array) -> NDArray[np.bool_]:
+        psi0, ok = psi_0_rows(r0, p.arm, p.pivot)
+        ok &= psi0 + p.stroke < math.pi
+        col = psi0[:, None]
+        worst = np.full(len(r0), -math.inf)     # only its sign counts: a grid value over a limit settles it
+        for ph, lo, hi, left in _smooth_pieces(p.phases, tuple(lim)):
+            def g(x: Array, ph: Phase = ph, left: bool = left) -> Array:
+                s, s1 = ph.values(x, left=left)[:2]
+                return np.abs(pressure_angle_at(col, s, s1, arm=p.arm, pivot=p.pivot))
+            worst = np.maximum(worst, maximize_rows(g, lo, hi, len(r0), stop_above=lim[ph.kind])[1] - lim[ph.kind])
+        return ok & (worst <= 0.0)
+    r0 = smallest_admissible(lo_r, hi_r, admissible)
     if r0 is None:
         raise InputError(f"no base radius keeps the pressure angles within [α] = {p.alpha_max_deg:g}° / "
                          f"{p.alpha_return_max_deg:g}° with this arm and pivot; give base_radius or change them")
     return r0
 
 
-def smallest_admissible(lo_r: float, hi_r: float, admissible: Callable[[float], bool]) -> float | None:
+def smallest_admissible(lo_r: float, hi_r: float, admissible: Callable[[Array], NDArray[np.bool_]], *,
+                        per_round: int = 64) -> float | None:
     """The smallest r in (lo_r, hi_r) with ``admissible(r)`` (true from there up): the first admissible of 64
-    grid points, then bisection to rounding; None when no grid point is admissible.
+    grid points, then k-section to rounding (``per_round`` points of the bracket asked at once, the bracket
+    shrinking to the gap between the last inadmissible and the first admissible of them); None when no grid
+    point is admissible.
 
+    Parameters
+    ----------
+    lo_r, hi_r : float
+        The open interval searched.
+    admissible : callable
+        Vectorised: an array of r to an array of booleans.
+    per_round : int
+        Points asked at once in each round (≥ 1; 1 is a bisection).
+
+    Returns
+    -------
+    float or None
+        The smallest admissible float (two neighbouring floats bracket the change), or None.
+
+    Examples
+    --------
     >>> round(smallest_admissible(0.0, 1.0, lambda r: r >= 0.3), 12)
     0.3
+    >>> smallest_admissible(0.0, 1.0, lambda r: r >= 0.3) == smallest_admissible(0.0, 1.0, lambda r: r >= 0.3,
+    ...                                                                             per_round=1)
+    True
     """
     grid = np.linspace(lo_r, hi_r, 66)[1:-1]
-    ok = [r for r in grid if admissible(float(r))]
-    if not ok:
+    ok = np.asarray(admissible(grid), dtype=bool)
+    if not ok.any():
         return None
-    hi = float(ok[0])
-    i = int(np.searchsorted(grid, hi))
-    lo = float(grid[i - 1]) if i > 0 else lo_r
+    i = int(np.argmax(ok))
+    lo, hi = (float(grid[i - 1]) if i > 0 else lo_r), float(grid[i])
     for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid in (lo, hi):
+        mids = np.unique(np.linspace(lo, hi, per_round + 2)[1:-1])
+        mids = mids[(mids > lo) & (mids < hi)]
+        if not mids.size:                   # lo and hi neighbouring floats
             break
-        lo, hi = (lo, mid) if admissible(mid) else (mid, hi)
+        ok = np.asarray(admissible(mids), dtype=bool)
+        j = int(np.argmax(ok)) if ok.any() else len(mids)
+        lo, hi = (float(mids[j - 1]) if j > 0 else lo), (float(mids[j]) if j < len(mids) else hi)
     return hi
 
 
@@ -312,15 +362,26 @@ def design(p: CamProblem) -> CamDesign:
     >>> design(cam_from_dict(EXAMPLE)) is design(cam_from_dict(EXAMPLE))
     True
     """
+    return made_once(_DESIGNS, p, design_afresh)
+
+
+def made_once(cache: dict[K, V], key: K, make: Callable[[K], V]) -> V:
+    """``make(key)``, kept in ``cache`` for the process (at most 64 entries; a key that cannot be hashed is
+    made afresh): the cam's design and the rocker zone's boundary are made once per frozen value.
+
+    >>> made: dict[float, float] = {}
+    >>> made_once(made, 2.0, lambda x: x * x), made
+    (4.0, {2.0: 4.0})
+    """
     try:
-        made = _DESIGNS.get(p)
-    except TypeError:                       # a problem holding something unhashable: designed afresh
-        return design_afresh(p)
-    if made is None:
-        if len(_DESIGNS) >= 64:
-            _DESIGNS.clear()
-        made = _DESIGNS[p] = design_afresh(p)
-    return made
+        found = cache.get(key)
+    except TypeError:                       # something unhashable inside: made afresh
+        return make(key)
+    if found is None:
+        if len(cache) >= 64:
+            cache.clear()
+        found = cache[key] = make(key)
+    return found
 
 
 def design_afresh(p: CamProblem) -> CamDesign:

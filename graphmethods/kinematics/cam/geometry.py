@@ -162,8 +162,22 @@ def pressure_angle(r0: float, s: Array, s1: Array, *, arm: float, pivot: float) 
     >>> bool(np.array_equal(pressure_angle(0.05, s, s1, arm=0.1, pivot=0.12), g.alpha))
     True
     """
+    return pressure_angle_at(psi_0(r0, arm, pivot), s, s1, arm=arm, pivot=pivot)
+
+
+def pressure_angle_at(psi0: float | Array, s: Array, s1: Array, *, arm: float, pivot: float) -> Array:
+    """:func:`pressure_angle` at the arm's starting angle ψ₀ (rad) instead of r₀: a column of ψ₀ (one per row
+    of ``s`` and ``s1``) gives many base radii at once, the same bits as one at a time.
+
+    >>> import numpy as np
+    >>> s, s1 = np.array([[0.1, 0.3]]), np.array([[0.2, -0.4]])
+    >>> both = pressure_angle_at(np.array([[psi_0(0.05, 0.1, 0.12)], [psi_0(0.06, 0.1, 0.12)]]), s, s1, arm=0.1,
+    ...                          pivot=0.12)
+    >>> bool(np.array_equal(both[1], pressure_angle(0.06, s[0], s1[0], arm=0.1, pivot=0.12)))
+    True
+    """
     s, s1 = np.asarray(s, dtype=float), np.asarray(s1, dtype=float)
-    th = psi_0(r0, arm, pivot) + s
+    th = psi0 + s
     sn, cs = np.sin(th), np.cos(th)
     a1 = arm * s1
     W_x = a1 * sn + arm * sn

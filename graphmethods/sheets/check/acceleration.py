@@ -354,9 +354,12 @@ def _find(plan: AccelerationPlan, c: Component) -> complex | None:
 
 
 def _symbol_markup(symbol: str) -> str:
-    """A vector's symbol as overlay markup whose plain text is the symbol without ``_`` (``a^τ_BA`` → a^τBA)."""
+    """A vector's symbol as overlay markup, drawn as the plans draw it: ``a^τ_BA`` → ``a^{τ}_{BA}`` (τ raised,
+    BA lowered; plain text aτBA)."""
     head, _, sub = symbol.partition("_")
-    return f"{markup.literal(head)}_{{{sub}}}" if sub else markup.literal(head)
+    base, _, mark = head.partition("^")
+    text = markup.literal(base) + (f"^{{{mark}}}" if mark else "")
+    return f"{text}_{{{sub}}}" if sub else text
 
 
 def item_label(key: str, words: Any) -> str:

@@ -6,8 +6,9 @@ label_bbox`):
 
 - ``empty_share``: the share of the 20 mm cells inside the frame that no ink touches (a course sheet
   should be filled: at most 50 % empty on A1/A2);
-- ``min_text_mm``: the smallest font size of a text (sub- and superscripts are drawn smaller and exempt; the
-  title block's form letters its column heads at 2.5 mm: ``title_block_min_mm``, held to 2.5);
+- ``min_text_mm``: the smallest font size of a text, the title block's included (sub- and superscripts are
+  drawn smaller and exempt; a condensed text, :attr:`~graphmethods.scene.primitives.Label.stretch`, is
+  measured at its height and its condensed width);
 - ``crossed``: the labels a line, an arrow, a hatch line or a circle passes through (through the glyphs:
   the band from the baseline to the capitals' height, 0.1 mm in from the ends);
 - ``overlaps``: pairs of texts set one on another (by more than 0.3 mm both ways);
@@ -48,8 +49,6 @@ CELL_MM = 20.0
 EMPTY_MAX = 0.5
 #: two texts overlap when they share more than this both across and down (mm)
 OVERLAP_MM = 0.3
-#: the smallest lettering of a title block's form (ГОСТ 2.104, GB/T 10609.1: its column heads)
-INSCRIPTION_MIN_MM = 2.5
 #: a power of ten this much smaller than its neighbours is round-off printed as working
 NOISE_RATIO = 1e-9
 
@@ -65,9 +64,6 @@ class Quality:
     overlaps: tuple[str, ...]
     noise: tuple[str, ...]
     n_texts: int
-    #: the smallest text of the main inscription (title block): its form (ГОСТ 2.104, GB/T 10609.1) letters
-    #: its column heads at 2.5 mm, so it is held to 2.5 mm, not to the drawing field's 3.5
-    title_block_min_mm: float = math.inf
 
 
 def _segments(rec: RecordingRenderer, *, skip_groups: Sequence[str] = ()) -> np.ndarray:
@@ -167,15 +163,12 @@ def measure(scene: Scene) -> Quality:
         oy = np.minimum(boxes[:, None, 3], boxes[None, :, 3]) - np.maximum(boxes[:, None, 1], boxes[None, :, 1])
         for a, b in zip(*np.nonzero(np.triu((ox > OVERLAP_MM) & (oy > OVERLAP_MM), k=1))):
             overlaps.append(f"{labels[a].text!r} on {labels[b].text!r}")
-    inscription = [c.data for c in rec.calls if c.kind == "text" and "title-block" in c.groups]
-    sizes = [lab.size_mm for lab in labels if any(s == 0 and t.strip() for t, s in lab.runs)
-             and not any(lab is m for m in inscription)]
-    block = [lab.size_mm for lab in inscription]
+    sizes = [lab.size_mm for lab in labels if any(s == 0 and t.strip() for t, s in lab.runs)]
     noise = [t for t in (_noise(lab) for lab in labels) if t]
 
     empty = _empty_share(rec, scene.page.inner_box(), frame_free, boxes) if scene.page.frame else 0.0
     return Quality(scene.page.size, empty, min(sizes) if sizes else math.inf, tuple(crossed), tuple(overlaps),
-                   tuple(noise), len(labels), min(block) if block else math.inf)
+                   tuple(noise), len(labels))
 
 
 def faults(q: Quality) -> list[str]:
@@ -187,8 +180,6 @@ def faults(q: Quality) -> list[str]:
                    f"(at most {EMPTY_MAX:.0%} on {q.page_size})")
     if q.min_text_mm < let.minimum_mm - 1e-9:
         out.append(f"text at {q.min_text_mm:.2f} mm, below {let.minimum_mm} mm on {q.page_size}")
-    if q.title_block_min_mm < INSCRIPTION_MIN_MM - 1e-9:
-        out.append(f"text at {q.title_block_min_mm:.2f} mm in the title block, below {INSCRIPTION_MIN_MM} mm")
     if q.crossed:
         out.append(f"{len(q.crossed)} labels crossed by ink: {', '.join(q.crossed[:8])}")
     if q.overlaps:
