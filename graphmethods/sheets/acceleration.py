@@ -476,17 +476,14 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
             (split, columns), area, eq_h, half = beside, area_b, 0.0, x1 - beside[0]
         else:
             beside = None
-<<<<<<< HEAD
     if beside is None:                  # a wide, low plan: the whole width under the table and ε, when larger so
         area_u = (x0, right_bottom + lay.plan_gap_mm, x1, area[3])
         if area_u[3] - area_u[1] >= lay.min_plan_mm and _plan_need(area_u, arr, lay) < _plan_need(area, arr, lay):
             area = area_u
-=======
     if area[3] - area[1] < lay.min_plan_mm and page is None:     # a triad's many equations: the A4 page upright
         return acceleration_plan(linkage, position, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a,
                                  notation=notation, page=Page("A4", "portrait", frame=True), title=title,
                                  problem=problem, title_block=title_block, name=name)
->>>>>>> main
     if area[3] - area[1] < lay.min_plan_mm:
         raise InputError("the plan and its equations do not fit on this page; give a larger page")
     s_a, f = K._fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_a, symbol="μ_a", unit="m/s²", k=k, nt=nt, lay=lay)
