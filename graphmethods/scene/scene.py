@@ -102,6 +102,8 @@ class Scene:
             if not isinstance(e, Element):
                 raise InputError(f"scene {self.name}: {e!r} is not a figure element")
         object.__setattr__(self, "elements", els)
+        if self.notation == "zh":          # the title as drawn: one typography (see _chinese_punctuation)
+            object.__setattr__(self, "title", full_width_punctuation(self.title))
 
     def add(self, *elements: Element) -> Scene:
         """A new scene with ``elements`` appended."""
