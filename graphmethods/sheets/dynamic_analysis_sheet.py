@@ -273,7 +273,8 @@ class DynamicSheetLayout:
     under_turned_mm: float = 22.0         # under the turned graph's φ axis: arrow, name, gap
     min_diagram_mm: float = 40.0          # the least height of the diagram
     graphs_share: float = 0.36            # the longest φ axis, as a share of the sheet's width
-    M_below_mm: float = 10.0              # the M graph's φ axis above the level of the turned graph's end
+    M_below_mm: float = 4.0               # the M graph's φ axis above the level of the turned graph's end (its
+    #                                       numbers clear of the ΔT graph's heading)
     M_top_mm: float = 16.0                # the M graph's top below the top of the drawing
     graphs_gap_mm: float = 12.0           # right of the φ graphs
     diagram_gap_mm: float = 40.0          # between the φ graphs and the diagram's ordinate axis
@@ -465,17 +466,32 @@ def _sheet_headings(sheet: SheetFrame, content: SheetContent, lay: SheetPlacemen
     occ = sheet.occ
     heads: list[Element] = []
     M_hi, dT_hi = content.moments.hi, max(float(content.dT_fine.max()), 0.0)
-    for key, text, at in (("M", f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}, {nt.sym('M_r')}(φ)",
+    for key, text, at in (("M", f"{nt.word('dynamics.moment_graph')} {nt.sym('M_d')}(φ), {nt.sym('M_r')}(φ)",
                            (lay.x_L + 10.0, lay.y_M0 - lay.s_M.to_mm(M_hi) - 8.0)),
                           ("T", f"{nt.word('dynamics.delta_T_graph')} {nt.sym('dynamics.dT')}(φ)",
                            (lay.x_L + 10.0, lay.y0_T - lay.s_T.to_mm(dT_hi) - 12.0)),
-                          ("J", f"{nt.word('wittenbauer.inertia_turned')} {nt.sym('dynamics.J_e')}(φ)",
+                          ("J", turned_heading(nt),
                            (lay.x_a + 10.0, lay.y_Jt - 9.0)),
                           ("D", nt.word("wittenbauer.wittenbauer"), (lay.x_a + 12.0, lay.d_top - 6.0))):
         lab = _free_heading(occ, at, text, size, sheet.box)
         occ.add_box(bold_bbox(lab))
         heads.append(Text((lab.x, lab.y), text, size_mm=size, bold=True, name=f"heading-{key}"))
     return heads
+
+
+def turned_heading(nt: Notation) -> str:
+    """The heading of the turned J_e graph: the quantity's name and symbol, then how it is turned
+    ("Reduced moment of inertia J_e(φ), turned 90°": never the symbol after "turned 90°").
+
+    >>> from graphmethods.scene import notation
+    >>> turned_heading(notation("en")), turned_heading(notation("ru"))
+    ('Reduced moment of inertia J_e(φ), turned 90°', 'Приведённый момент инерции J_п(φ) (повёрнут на 90°)')
+    """
+    name, turned = nt.word("dynamics.inertia_graph"), nt.word("wittenbauer.inertia_turned")
+    J = f"{nt.sym('dynamics.J_e')}(φ)"
+    if turned.startswith(name):
+        return f"{name} {J}{turned[len(name):]}"
+    return f"{turned} {J}"
 
 
 def _free_heading(occ: Occupancy, at: tuple[float, float], text: str, size: float,

@@ -530,15 +530,38 @@ def axis_break(at: tuple[float, float], name: str) -> Polyline:
     return Polyline(((x - 1.5, y), (x - 0.75, y - 1.5), (x + 0.75, y + 1.5), (x + 1.5, y)), style=THIN, name=name)
 
 
-def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: float = 12.0
+def same_decimals(values, nt) -> tuple[str, ...]:
+    """Tick values written with one number of decimals, the fewest that write each of them exactly (to six
+    significant digits), in the notation's decimal mark and minus.
+
+    >>> from graphmethods.scene import notation
+    >>> same_decimals([0.25, 0.5, 1.0], notation("ru")), same_decimals([-50.0, 0.0, 50.0], notation("en"))
+    (('0,25', '0,50', '1,00'), ('−50', '0', '50'))
+    """
+    nt = get_notation(nt)
+    texts = [nt.number(float(v), sig=6) for v in values]
+    decimals = max((len(t.split(nt.decimal)[1]) for t in texts if nt.decimal in t and "·" not in t), default=0)
+    return tuple(nt.number(float(v), sig=6) if "·" in t else
+                 f"{float(v) + 0.0:.{decimals}f}".replace(".", nt.decimal).replace("-", "−") for v, t in zip(values, texts))
+
+
+#: the least distance between the J_e axis's ticks (mm): the turned J_e graph and the energy–mass diagram under
+#: it, which share μ_J, take the same ticks
+J_TICK_GAP_MM = 14.0
+
+
+def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: float = J_TICK_GAP_MM
                   ) -> tuple[tuple[float, ...], tuple[str, ...], str]:
     """The J_e axis's ticks (kg·m²), their labels and the axis's name, readable: a small J_e is written in
-    10⁻³ kg·m² (no "0.05225" five-digit jam), and the ticks stand at least a label's width apart.
+    10⁻³ kg·m² (no "0.05225" five-digit jam), the ticks stand at least a label's width apart, and every
+    value has the same number of decimals (0.169, 0.170, 0.171; never 0.17 among them).
 
     >>> from graphmethods.scene import notation
     >>> t, labels, name = inertia_ticks(0.0517, 0.0552, Scale("μ_J", "kg·m²", 2e-5), notation("en"))
     >>> labels[:3], name
-    (('52', '52.5', '53'), 'J_e, 10⁻³ kg·m²')
+    (('52.0', '52.5', '53.0'), 'J_e, 10⁻³ kg·m²')
+    >>> inertia_ticks(0.168, 0.171, Scale("μ_J", "kg·m²", 4e-5), notation("ru"))[1]
+    ('0,168', '0,169', '0,170', '0,171')
     """
     nt = get_notation(nt)
     top = max(abs(J_from), abs(J_to))
@@ -547,7 +570,7 @@ def inertia_ticks(J_from: float, J_to: float, s_J: Scale, nt, *, min_gap_mm: flo
     gap = min_gap_mm
     for _ in range(6):
         ticks = tuple(t for t in axis_ticks(J_from, J_to, s_J, min_gap_mm=gap) if J_from <= t <= J_to)
-        labels = tuple(nt.number(t * f, sig=6) for t in ticks)
+        labels = same_decimals([t * f for t in ticks], nt)
         need = max((markup.text_width_mm(lab, SMALL_MM) for lab in labels), default=0.0) + 4.0
         if need <= gap:
             break
@@ -569,7 +592,7 @@ def turned_inertia_elements(*, origin, s_J: Scale, s_phi: Scale, m: int, phi: np
     """
     ox, oy = origin
     period = float(phi_k[-1] - phi_k[0])
-    ticks_J, labels_J, name_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=12.0)
+    ticks_J, labels_J, name_J = inertia_ticks(J_from, J_to, s_J, nt)
     ax_J = Axis((ox - s_J.to_mm(J_from), oy), s_J, "x", min_value=J_from, max_value=J_to, ticks=ticks_J,
                 tick_labels=labels_J, label=name_J, size_mm=SMALL_MM,
                 decimal=get_notation(nt).decimal, labels_side="above", skip_zero_label=True, name=f"{prefix}axis-J")

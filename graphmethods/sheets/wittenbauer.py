@@ -322,7 +322,7 @@ class _DiagramPlace:
         s_T = Scale(nt.sym("mu_T"), nt.unit("J"), res.mu_T)
         X, Y = np.asarray(res.x_mm, dtype=float), np.asarray(res.y_mm, dtype=float)
         ticks_T = tuple(t for t in axis_ticks(T_lo, T_hi, s_T, min_gap_mm=8.0) if T_lo <= t <= T_hi)
-        ticks_J = inertia_ticks(J_from, J_to, s_J, nt, min_gap_mm=14.0)[0]
+        ticks_J = inertia_ticks(J_from, J_to, s_J, nt)[0]
         R = lay.psi_radius_mm
         right = float(X[:-1].min()) >= R + lay.psi_room_mm
         tick_w = max((markup.text_width_mm(nt.number(t), SMALL_MM) for t in ticks_T), default=0.0)
@@ -348,7 +348,7 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
                 label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal,
                 skip_zero_label=True, name=f"{d.prefix}axis-T")
     below = float(np.mean(d.Y[:-1] < 0)) > 0.5
-    _, labels_J, name_J = inertia_ticks(d.J_from, d.J_to, s_J, nt, min_gap_mm=14.0)
+    _, labels_J, name_J = inertia_ticks(d.J_from, d.J_to, s_J, nt)
     ax_J = Axis((ox - s_J.to_mm(d.J_from), oy), s_J, "x", min_value=d.J_from, max_value=d.J_to, ticks=d.ticks_J,
                 tick_labels=labels_J, label=name_J, size_mm=SMALL_MM, decimal=nt.decimal,
                 labels_side="above" if below else "below", skip_zero_label=True, name=f"{d.prefix}axis-J")
@@ -358,7 +358,28 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[A
     occ.register(ax_T)
     ax_J = clear_tick_labels(ax_J, occ, keep_values=True, other_side=True)
     occ.register(ax_J)
+    band = tick_label_band(ax_J)
+    if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
+        occ.add_box(band)
     return ax_T, ax_J
+
+
+def tick_label_band(axis: Axis) -> Box | None:
+    """The row (a horizontal axis) or column (a vertical one) that ``axis``'s tick values take, from its
+    first tick to its last, whether each value is written or was left out; None without ticks. Nothing else
+    is placed there: a number in it reads as one of the axis's values.
+
+    >>> from graphmethods.scene import Scale
+    >>> ax = Axis((10.0, 50.0), Scale("μ", "J", 1.0), "x", max_value=30.0, ticks=(0.0, 10.0, 20.0, 30.0))
+    >>> [round(v, 1) for v in tick_label_band(ax)]
+    [9.0, 52.3, 41.9, 55.3]
+    """
+    written = None if axis.tick_labels is None else tuple(lab or "0" for lab in axis.tick_labels)
+    probe = replace(axis, label="", skip_zero_label=False, tick_labels=written)
+    boxes = np.array([label_bbox(p) for p in probe.primitives() if isinstance(p, Label)], dtype=float)
+    if not len(boxes):
+        return None
+    return (float(boxes[:, 0].min()), float(boxes[:, 1].min()), float(boxes[:, 2].max()), float(boxes[:, 3].max()))
 
 
 def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
