@@ -391,10 +391,12 @@ def _acceleration_column(comps, pts: dict, head, s_a: Scale, eps: list[tuple[str
     """Beside the plan at ``at`` (mm): every component's drawn length and value, then ε of the links; the
     table must end left of and above ``limit`` (mm)."""
     rows = [head]
-    for c in comps:
-        L = math.dist(pts[c.start], pts[c.end])
-        rows.append((image(c.start) + image(c.end), K._num(nt, L, 2),
-                     f"{symbol(c.symbol)} = {K._num(nt, L * s_a.per_mm, 3)}"))
+    lengths = [math.dist(pts[c.start], pts[c.end]) for c in comps]
+    # the values with one number of decimals, four digits of the largest (1234 m/s², not 1233.701); 0 for a
+    # length within the round-off of the plan's construction
+    values = nt.column([L * s_a.per_mm for L in lengths], sig=4, reference=max(lengths, default=0.0) * s_a.per_mm)
+    for c, L, v in zip(comps, lengths, values):
+        rows.append((image(c.start) + image(c.end), K._num(nt, L, 2), f"{symbol(c.symbol)} = {v}"))
     tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")]
     below = lay.after_table_mm + len(eps) * lay.line_mm                             # ε of the links under it
     if tables[0].bottom_left[1] + below > limit[1] + 2 * lay.line_mm:   # a long table (a triad's): rows closer
@@ -615,9 +617,10 @@ def acceleration_table(linkage, *, m: int | None = None, omega_1: float | None =
     head = [nt.word("kinematics.position"), nt.quantity("φ", "°")]
     for c in cols[2:]:
         head.append(nt.quantity(c, "rad/s²" if c.startswith("ε") else "m/s²"))
-    body = []
-    for r in rows:
-        body.append((str(int(r[0])), K._num(nt, r[1], 1)) + tuple(K._num(nt, v, 3) for v in r[2:]))
+    data = np.asarray(rows, dtype=float).reshape(len(rows), -1)
+    # each column with one number of decimals, four digits of its largest value (as the table of velocities)
+    written = [nt.column(data[:, j], sig=4, reference=float(np.abs(data[:, j]).max())) for j in range(1, data.shape[1])]
+    body = [(str(int(r[0])), *(col[i] for col in written)) for i, r in enumerate(rows)]
     rows_all = (tuple(head),) + tuple(body)
     note = f"{pr.speed_text(nt)};  {nt.word('acceleration.signed')}"
     lines = [note] if markup.text_width_mm(note, TEXT_MM) <= x1 - x0 else note.split(";  ")    # narrow: two lines

@@ -541,8 +541,10 @@ def same_decimals(values, nt) -> tuple[str, ...]:
     nt = get_notation(nt)
     texts = [nt.number(float(v), sig=6) for v in values]
     decimals = max((len(t.split(nt.decimal)[1]) for t in texts if nt.decimal in t and "·" not in t), default=0)
-    return tuple(nt.number(float(v), sig=6) if "·" in t else
-                 f"{float(v) + 0.0:.{decimals}f}".replace(".", nt.decimal).replace("-", "−") for v, t in zip(values, texts))
+    def fixed(v: float) -> str:
+        return f"{float(v) + 0.0:.{decimals}f}".replace(".", nt.decimal).replace("-", "−")
+
+    return tuple(t if "·" in t else fixed(v) for v, t in zip(values, texts))
 
 
 #: the least distance between the J_e axis's ticks (mm): the turned J_e graph and the energy–mass diagram under

@@ -8,6 +8,7 @@ output point, the extreme positions marked, the stroke dimensioned. See :func:`k
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, cast
 
@@ -15,7 +16,7 @@ import numpy as np
 
 from graphmethods.errors import AssemblyError, InputError
 from graphmethods.scene import Frame, Line, Point, Polyline, Scale, Scene, Text, notation as get_notation
-from graphmethods.scene.elements import Dimension, Element, label_bbox
+from graphmethods.scene.elements import Dimension, Element, Group, label_bbox
 from graphmethods.scene.primitives import THIN, Label
 from graphmethods.sheets.kinematic_symbols import FixedPivot, Guide, PinJoint, RotationArrow, SliderBlock
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
@@ -104,6 +105,9 @@ class SchemeLayout:
     names_pad_mm: float = 1.4           # names keep clear of the numbers ("B 3" must not read as B₃)
     pad_mm: float = 0.6                 # the occupancy's padding otherwise
     names_gaps_mm: tuple[float, ...] = (2.2, 3.4, 4.8, 6.5, 8.5)
+    #: a name goes at most this far beyond its last gap (with a leader); where nothing is free that near, it
+    #: stands beside its point and the thin lines under it are broken (O₁ of the six-bar press was named 40 mm off)
+    names_ring_mm: float = 7.5
     stroke_offset_mm: float = 4.0       # the dimension H beyond the numbers
     summary_above_mm: float = 6.5       # the line of facts above the captions
 
@@ -325,9 +329,11 @@ def _scheme_joints(g: _SchemeGeometry, P, lay: SchemeLayout) -> tuple[list[Eleme
 
 def _scheme_keep_clear(occ: Occupancy, thick_els: list[Element], top_els: list[Element], symbol_els: list[Element],
                        lay: SchemeLayout) -> Occupancy:
-    """What a label must never cover (thick links, blocks: returned), and the joints and blocks kept free."""
+    """What a label must never cover (thick links, blocks, supports and guides: returned), and the joints and
+    blocks kept free."""
     hard = Occupancy(pad_mm=lay.hard_pad_mm)
-    hard.register(*thick_els, *[e for e in top_els if isinstance(e, SliderBlock)])
+    hard.register(*thick_els, *[e for e in top_els if isinstance(e, SliderBlock)],
+                  *[e for e in symbol_els if isinstance(e, (FixedPivot, Guide))])     # supports, hatched guides
     c = lay.joint_clear_mm
     for e in top_els + symbol_els:
         if isinstance(e, (PinJoint, FixedPivot)):
@@ -435,7 +441,8 @@ def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, l
         if j in g.parts.fixed:
             prefer = 180.0 if at[0] <= centroid[0] else 0.0
         labels.append(_place(occ, at, _sub(j), prefer, size_mm=TEXT_MM + 0.3, within=box, name=f"name-{j}",
-                             gaps=lay.names_gaps_mm, hard=hard, leaders=leaders, ring=True))
+                             gaps=lay.names_gaps_mm, hard=hard, leaders=leaders, ring=True,
+                             ring_mm=lay.names_ring_mm))
     occ.pad = lay.pad_mm
     return labels
 
@@ -516,14 +523,14 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     top_els, marks = _scheme_joints(g, P, lay)
     occ.register(*top_els, *marks)
     hard = _scheme_keep_clear(occ, thick_els, top_els, symbol_els, lay)
-    rot, rot_label = _rotation_arrow(P(g.c_xy), s_l.to_mm(g.r), g.mech.sense, occ, link_segments)
+    rot, rot_label = _rotation_arrow(P(g.c_xy), s_l.to_mm(g.r), g.mech.sense, occ, link_segments,
+                                     [e for e in symbol_els if isinstance(e, FixedPivot)])
     occ.register(rot)
     leaders: list[Element] = []            # from labels that found no free place beside their point
     numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay, leaders)
-    values = [label_bbox(p) for d in dims for p in d.primitives() if isinstance(p, Label)]
-    thin_els = [q for e in thin_els                  # thin lines broken behind a value that found no clear place
-                for q in (broken_behind([e], values) if isinstance(e, Line) else [e])]
     labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders) + [rot_label(occ, leaders)]
+    values = [label_bbox(p) for e in dims + labels for p in e.primitives() if isinstance(p, Label)]
+    thin_els = _broken_lines(thin_els, values)
     facts = _scheme_facts(g.pos, g.ext, nt)
     summary = [Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts), size_mm=TEXT_MM,
                     name="summary")] if facts else []
@@ -533,6 +540,16 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
                 + labels + numbers + summary)
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
+
+
+def _broken_lines(els: list[Element], boxes: list) -> list[Element]:
+    """The thin lines and paths broken behind the boxes of values and names that found no clear place (ГОСТ
+    2.303): a line that is broken becomes a group of its pieces under its own name (one link, one element)."""
+    out: list[Element] = []
+    for e in els:
+        pieces = broken_behind([e], boxes) if isinstance(e, (Line, Polyline)) else [e]
+        out.append(pieces[0] if len(pieces) == 1 and pieces[0] is e else Group(elements=tuple(pieces), name=e.name))
+    return out
 
 
 def _thick_dir(pos, parts, j, thick):
@@ -606,20 +623,28 @@ def _ground_direction(at, segments) -> float:
     return float(best % 360.0)
 
 
-def _rotation_arrow(centre, r_mm: float, sense: int, occ: Occupancy, segments):
-    """The ω₁ arc arrow inside the crank circle where it crosses fewest lines, and a labeller for it."""
-    from shapely import intersects, linestrings
+#: what running through a support costs the ω₁ arrow, in crossed lines (it never does while another place is left)
+SUPPORT_PENALTY = 1000
+
+
+def _rotation_arrow(centre, r_mm: float, sense: int, occ: Occupancy, segments, grounds: Sequence[FixedPivot] = ()):
+    """The ω₁ arc arrow inside the crank circle where it crosses fewest lines, never through a pivot's support
+    (``grounds``: its legs and hatching), and a labeller for it."""
+    from shapely import Polygon, intersects, linestrings
 
     radius = float(min(max(0.45 * r_mm, 5.0), 9.0))
     sweep = 70.0 * sense
     lines = linestrings(np.array([[A, B] for _, _, A, B in segments], dtype=float)) if segments else None
+    supports = [Polygon(gr.outline()) for gr in grounds]
     best: tuple[int, RotationArrow] | None = None
     for mid in np.arange(135.0, 135.0 + 360.0, 15.0):
         arr = RotationArrow(centre, radius, float(mid - sweep / 2), sweep, name="omega-1")
-        if lines is None:
+        if lines is None and not supports:
             best = (0, arr)
             break
-        hits = int(intersects(linestrings(np.array(arr.arc_points())), lines).sum())
+        arc = linestrings(np.array(arr.arc_points()))
+        hits = (int(intersects(arc, lines).sum()) if lines is not None else 0) + \
+            SUPPORT_PENALTY * sum(bool(intersects(arc, sp)) for sp in supports)
         if best is None or hits < best[0]:
             best = (hits, arr)
     assert best is not None                    # the loop runs at least once

@@ -130,6 +130,19 @@ class FixedPivot(Element):
         g = c + d * self.height_mm
         return _t(g - n * self.ground_mm / 2), _t(g + n * self.ground_mm / 2)
 
+    def outline(self) -> tuple[XY, ...]:
+        """The support's outline (page mm): from the joint to the ground line and round its hatched strip.
+        Nothing else is drawn inside it (the ω₁ arrow keeps out).
+
+        >>> [tuple(round(v, 1) for v in p) for p in FixedPivot((0.0, 0.0)).outline()]
+        [(0.0, 0.0), (5.5, 5.0), (5.5, 7.2), (-5.5, 7.2), (-5.5, 5.0)]
+        """
+        c, d, n = self._frame()
+        g = c + d * self.height_mm
+        h = g + d * self.hatch_mm
+        half = n * self.ground_mm / 2
+        return (_t(c), _t(g - half), _t(h - half), _t(h + half), _t(g + half))
+
     def hatch_region(self) -> Region:
         """The hatched strip behind the ground line."""
         c, d, n = self._frame()

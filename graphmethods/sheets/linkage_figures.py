@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Any
 
@@ -17,7 +17,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
-from graphmethods.scene import Element, Frame, Line, Scale, Text, Vector
+from graphmethods.scene import Element, Frame, Line, Polyline, Scale, Text, Vector
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.sheets.layout import Occupancy
 from graphmethods.units import convenient_at_least
@@ -169,12 +169,13 @@ _COMPASS = {"e": 0.0, "ne": 45.0, "n": 90.0, "nw": 135.0, "w": 180.0, "sw": 225.
 
 def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, within=None, name: str,
            gaps=(0.8, 2.2, 4.0), avoid_lines: bool = True, dirs=None, hard: Occupancy | None = None,
-           leaders: list | None = None, ring: bool = False) -> Text:
+           leaders: list | None = None, ring: bool = False, ring_mm: float = math.inf) -> Text:
     """A label beside ``at``, in the free direction nearest ``prefer_deg`` (registered as taken).
 
     Free of lines and labels if possible; with ``ring`` (and ``leaders`` to collect them) further out in
-    any direction, nearest first, with a leader back to ``at``; else free of labels and of the ``hard``
-    lines (crossing a thin line); else the preferred spot.
+    any direction, nearest first, at most ``ring_mm`` beyond the last gap, with a leader back to ``at``;
+    else free of labels and of the ``hard`` lines (crossing a thin line, which the caller breaks behind
+    it: :func:`broken_behind`); else the preferred spot.
     """
     from graphmethods.scene.elements import label_bbox, place_label
 
@@ -182,7 +183,7 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
     lab = (_first_clear(occ, hard, at, text, dirs, gaps, size_mm, within, None if ring else leaders, name)
            if avoid_lines else None)
     if lab is None and ring and leaders is not None:
-        lab = _ring_clear(occ, hard, at, text, prefer_deg, gaps[-1], size_mm, within)
+        lab = _ring_clear(occ, hard, at, text, prefer_deg, gaps[-1], size_mm, within, ring_mm)
         if lab is not None:
             _leader(occ, at, lab, leaders, name, start_mm=RING_START_MM)
     for gap in (gaps if lab is None else ()):     # crowded: near the point across a thin line
@@ -245,16 +246,17 @@ RING_START_MM = 2.0
 
 
 def _ring_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, prefer_deg: float, gap: float,
-                size_mm: float, within):
+                size_mm: float, within, reach_mm: float = math.inf):
     """The nearest place on rings around ``at`` (every :data:`RING_STEP_DEG`, out to :data:`RING_MM`
-    beyond ``gap``, the angle nearest ``prefer_deg`` first) free of every line and label, whose leader
-    crosses no label; None when there is none (deterministic: a fixed order, the first free wins)."""
+    beyond ``gap`` but no further than ``reach_mm``, the angle nearest ``prefer_deg`` first) free of every
+    line and label, whose leader crosses no label; None when there is none (deterministic: a fixed order,
+    the first free wins)."""
     from graphmethods.scene.elements import label_bbox, place_label
 
     angles = sorted(range(0, 360, RING_STEP_DEG),
                     key=lambda a: (abs((a - prefer_deg + 180.0) % 360.0 - 180.0), a))
     x, y = at
-    for extra in RING_MM:
+    for extra in (e for e in RING_MM if e <= reach_mm):
         r = gap + extra
         for ang in angles:
             c, s = math.cos(math.radians(ang)), math.sin(math.radians(ang))
@@ -284,6 +286,11 @@ def broken_behind(lines: list, boxes: list) -> list:
 
     >>> [(e.start, e.end) for e in broken_behind([Line((0, 0), (10, 0), name="l")], [(4, -1, 6, 1)])]
     [((0.0, 0.0), (3.6, 0.0)), ((6.4, 0.0), (10.0, 0.0))]
+
+    A polyline (a crank circle, a dotted path) is broken the same way into open polylines:
+
+    >>> [e.points for e in broken_behind([Polyline(((0, 0), (10, 0), (10, 10)), name="p")], [(4, -1, 6, 1)])]
+    [((0.0, 0.0), (3.6, 0.0)), ((6.4, 0.0), (10.0, 0.0), (10.0, 10.0))]
     """
     import shapely
     from shapely.geometry import LineString, box
@@ -294,15 +301,22 @@ def broken_behind(lines: list, boxes: list) -> list:
                                for b in boxes])
     out: list = []
     for ln in lines:
-        seg = LineString([ln.start, ln.end])
+        if isinstance(ln, Polyline):
+            pts = list(ln.points) + (list(ln.points[:1]) if ln.closed else [])
+            seg = LineString(pts)
+        else:
+            seg = LineString([ln.start, ln.end])
         if not seg.intersects(cover):
             out.append(ln)
             continue
-        parts = [q for q in shapely.get_parts(seg.difference(cover)) if q.length > 1e-6]
+        parts = [q for q in shapely.get_parts(shapely.line_merge(seg.difference(cover))) if q.length > 1e-6]
         for k, q in enumerate(parts):
+            nm = ln.name if k == 0 else f"{ln.name}-{k}"
+            if isinstance(ln, Polyline):
+                out.append(replace(ln, points=tuple((float(x), float(y)) for x, y in q.coords), closed=False, name=nm))
+                continue
             (x0, y0), (x1, y1) = q.coords[0], q.coords[-1]
-            out.append(Line((float(x0), float(y0)), (float(x1), float(y1)), style=ln.style,
-                            name=ln.name if k == 0 else f"{ln.name}-{k}"))
+            out.append(Line((float(x0), float(y0)), (float(x1), float(y1)), style=ln.style, name=nm))
     return out
 
 

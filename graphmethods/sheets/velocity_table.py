@@ -12,7 +12,7 @@ from graphmethods.errors import InputError
 from graphmethods.scene import Scene, Table, Text, markup, notation as get_notation
 from graphmethods.scene.markup import MIN_TEXT_MM
 from graphmethods.sheets.layout import TEXT_MM, Sheet
-from graphmethods.sheets.linkage_figures import TABLE_MM, _end_extreme, _Linkage, _num, _plans_of, _pos_label, _rel_name
+from graphmethods.sheets.linkage_figures import TABLE_MM, _end_extreme, _Linkage, _plans_of, _pos_label, _rel_name
 
 # ----------------------------------------------------------------------------- 3. the table of velocities
 
@@ -130,11 +130,12 @@ def _table_cells(t: VelocityTable, nt, *, markup_: bool = True) -> list[list[str
         s = sym if markup_ else markup.plain(sym) if "{" not in sym else sym.replace("{", "").replace("}", "")
         head.append(nt.quantity(s, u))
     rows = [head]
+    # each column with one number of decimals, four digits of its largest value (30, not 30.00; 2293 rad/s²,
+    # not 2293.489)
+    cols = [nt.column(t.values[:, j], sig=4, reference=float(np.abs(t.values[:, j]).max()))
+            for j in range(len(t.units) - 1)]
     for i, lab in enumerate(t.labels):
-        row = [lab + (" *" if t.ill_conditioned[i] else "")]
-        for j, u in enumerate(t.units[1:]):
-            row.append(_num(nt, t.values[i, j], 2 if u == "°" else 3))
-        rows.append(row)
+        rows.append([lab + (" *" if t.ill_conditioned[i] else "")] + [col[i] for col in cols])
     return rows
 
 
