@@ -537,12 +537,14 @@ def same_decimals(values, nt) -> tuple[str, ...]:
     >>> from graphmethods.scene import notation
     >>> same_decimals([0.25, 0.5, 1.0], notation("ru")), same_decimals([-50.0, 0.0, 50.0], notation("en"))
     (('0,25', '0,50', '1,00'), ('−50', '0', '50'))
+    >>> same_decimals([0.0, 0.5, 1.0], notation("en"))
+    ('0', '0.5', '1.0')
     """
     nt = get_notation(nt)
     texts = [nt.number(float(v), sig=6) for v in values]
     decimals = max((len(t.split(nt.decimal)[1]) for t in texts if nt.decimal in t and "·" not in t), default=0)
-    def fixed(v: float) -> str:
-        return f"{float(v) + 0.0:.{decimals}f}".replace(".", nt.decimal).replace("-", "−")
+    def fixed(v: float) -> str:                 # the origin is written 0, as the books write it
+        return "0" if v == 0.0 else f"{float(v):.{decimals}f}".replace(".", nt.decimal).replace("-", "−")
 
     return tuple(t if "·" in t else fixed(v) for v, t in zip(values, texts))
 
