@@ -226,6 +226,10 @@ class MarkSpec:
     up: bool = True
 
 
+#: a curve's name keeps this far (mm) beside an axis's name (above and below it, 1.5 mm)
+AXIS_NAME_CLEAR_MM = 6.0
+
+
 def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.ndarray, curves, nt, occ,
                        y_from: float, y_to: float, axis_level: float, y_label: str, dots=None, marks=(),
                        levels=(), prefix: str = "", within=None, labels_side: str | None = None,
@@ -283,11 +287,11 @@ def phi_graph_elements(*, origin, s_phi: Scale, s_Y: Scale, m: int, phi_k: np.nd
     occ.add_line((ax_Y.start, ax_Y.tip))
     ax_phi, ax_Y = clear_tick_labels(ax_phi, occ), clear_tick_labels(ax_Y, occ)
     occ.register(ax_phi, ax_Y)
-    for ax in (ax_phi, ax_Y):        # keep curve names well clear of the axis names
-        name = [p for p in ax.primitives() if isinstance(p, Label)][-1:]
-        if name and ax.label:
+    for ax in (ax_phi, ax_Y):        # keep curve names well clear of the axis names: a name on the same line
+        name = [p for p in ax.primitives() if isinstance(p, Label)][-1:]     # 3 mm on reads as one text
+        if name and ax.label:            # ("M, N·m  M_d")
             b = label_bbox(name[0])
-            occ.add_box((b[0] - 1.5, b[1] - 1.5, b[2] + 1.5, b[3] + 1.5))
+            occ.add_box((b[0] - AXIS_NAME_CLEAR_MM, b[1] - 1.5, b[2] + AXIS_NAME_CLEAR_MM, b[3] + 1.5))
     els: list[Element] = [ax_phi, ax_Y, *lvl, *lines]
     els += _position_numbers(ax_phi, phi_k, m, spacing, occ, side, prefix)
     if dots is not None:
