@@ -10,8 +10,16 @@ from hypothesis import given, settings, strategies as st
 from graphmethods.problems import builtin
 from graphmethods.render.recording import record
 from graphmethods.scene.elements import label_bbox
-from graphmethods.sheets.engine.quality import (CELL_MM, OVERLAP_MM, boxes_crossed, cell_grid, glyph_box, ink_cells,
-                                                 measure, segments_marked)
+from graphmethods.sheets.engine.quality import (
+    CELL_MM,
+    OVERLAP_MM,
+    boxes_crossed,
+    cell_grid,
+    glyph_box,
+    ink_cells,
+    measure,
+    segments_marked,
+)
 from graphmethods.sheets.layout import segments_hit_boxes
 from graphmethods.sheets.sheet_fill import PartInk, clashes, filled
 

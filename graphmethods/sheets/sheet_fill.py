@@ -46,6 +46,9 @@ class PartInk:
         Which of its texts its own lines cross.
     overlaps : int
         How many pairs of its texts overlap.
+    inked, inner : ndarray (m, 4), (x0, y0, x1, y1)
+        Its segments that count for the cells (the frame and title block left out), and the frame's inside
+        holding the grid of cells.
     """
 
     segments: np.ndarray
@@ -55,6 +58,8 @@ class PartInk:
     bbox: Box | None
     crossed: np.ndarray
     overlaps: int
+    inked: np.ndarray
+    inner: Box
 
     @classmethod
     def of(cls, scene: Scene, page: Page) -> PartInk:
@@ -64,13 +69,31 @@ class PartInk:
         glyphs = np.array([glyph_box(lab) for lab in labels], dtype=float).reshape(-1, 4)
         boxes = np.array([label_bbox(lab) for lab in labels], dtype=float).reshape(-1, 4)
         seg, in_page = segments_marked(rec, ("page",))
-        cells = ink_cells(seg[~in_page], boxes, page.inner_box())
+        inked = seg[~in_page]
+        cells = ink_cells(inked, boxes, page.inner_box())
         ext = [boxes, glyphs] + [np.array([[c.data[0] - c.data[2], c.data[1] - c.data[2], c.data[0] + c.data[2],
                                     c.data[1] + c.data[2]]]) for c in rec.calls if c.kind == "circle"]
         pts = np.concatenate([seg[:, :2], seg[:, 2:]] + [e[:, :2] for e in ext] + [e[:, 2:] for e in ext])
         bbox = None if not len(pts) else (float(pts[:, 0].min()), float(pts[:, 1].min()),
                                          float(pts[:, 0].max()), float(pts[:, 1].max()))
-        return cls(seg, glyphs, boxes, cells, bbox, boxes_crossed(seg, glyphs), _overlapping(glyphs, boxes))
+        return cls(seg, glyphs, boxes, cells, bbox, boxes_crossed(seg, glyphs), _overlapping(glyphs, boxes),
+                   inked, page.inner_box())
+
+    def stretched(self, src: Box, dst: Box) -> np.ndarray:
+        """The cells (of the same grid) this ink would touch, were the part drawn in the region ``dst`` as it is
+        in ``src`` (its lines and texts stretched from one region onto the other): a prediction, to rank
+        divisions of a sheet before drawing them.
+
+        >>> from graphmethods.scene import Line, Page, Scene
+        >>> page = Page("A1", "landscape", frame=True)
+        >>> ink = PartInk.of(Scene(page, (Line((100, 100), (180, 100), name="l"),)), page)
+        >>> int(ink.stretched((100, 90, 180, 110), (100, 90, 260, 110)).sum())
+        9
+        """
+        kx, ky = (dst[2] - dst[0]) / (src[2] - src[0]), (dst[3] - dst[1]) / (src[3] - src[1])
+        k = np.array([kx, ky, kx, ky])
+        o_src, o_dst = np.array([src[0], src[1]] * 2), np.array([dst[0], dst[1]] * 2)
+        return ink_cells(o_dst + (self.inked - o_src) * k, o_dst + (self.boxes - o_src) * k, self.inner)
 
 
 def filled(parts: list[PartInk]) -> np.ndarray:
