@@ -117,3 +117,19 @@ def test_clashes_of_a_sheets_parts_as_every_pair(press_sheet):
     assert clashes(inks) == expect == 0
     moved = [PartInk.of(Scene(bare, (g,)), press_sheet.page) for g in press_sheet.elements[1:3]]
     assert clashes(moved + moved[:1]) > 0           # a part set twice: every label on its own twin
+
+
+@pytest.mark.parametrize("problem, lang", [("press", "en"), ("engine", "ru")])
+def test_the_kinematic_sheet_judges_its_division_by_the_measures_count(problem, lang, monkeypatch):
+    """The empty share the sheet's search checks (its parts, title and title block) is the measure's of the
+    sheet it draws; the engine in ru is the sheet nearest the bound, kept by drawing more divisions."""
+    import importlib
+
+    kas = importlib.import_module("graphmethods.sheets.kinematic_analysis_sheet")
+    seen: list[float] = []
+    judged = kas._empty_share
+    monkeypatch.setattr(kas, "_empty_share", lambda sheet, row: seen.append(judged(sheet, row)) or seen[-1])
+    scene = kas.kinematic_analysis_sheet(builtin.case(problem), notation=lang)
+    q = measure(scene)
+    assert seen and seen[-1] == q.empty_share <= 0.5
+    assert not q.crossed and not q.overlaps
