@@ -147,7 +147,14 @@ def clashes(parts: list[PartInk]) -> int:
 
 def overflowing(parts: list[PartInk]) -> int:
     """How many pairs of the parts' ink boxes overlap (a line of text too long for its region runs into the
-    next part)."""
+    next part).
+
+    >>> from graphmethods.scene import Line, Page, Scene
+    >>> pg = Page("A4")
+    >>> a, b = (PartInk.of(Scene(pg, (Line((x, 50), (x + 40, 50)),)), pg) for x in (10, 40))
+    >>> overflowing([a, b])
+    1
+    """
     boxes = [p.bbox for p in parts if p.bbox is not None]
     out = 0
     for i, A in enumerate(boxes):

@@ -15,7 +15,10 @@ label_bbox`):
 - ``noise``: numbers printed as a power of ten more than 10⁹ times smaller than the numbers beside them
   (round-off printed as working: ``4,47·10⁻¹⁵²``).
 
-:func:`faults` turns a measure into the list of what breaks the standard for the page's format.
+:func:`faults` turns a measure into the list of what breaks the standard for the page's format. Its count of
+inked cells, :func:`ink_cells`, is public: the sheets that choose between layouts count by it
+(:mod:`graphmethods.sheets.sheet_fill`); it and the crossing test :func:`boxes_crossed` look only at the
+segments near each cell or label, with the decisions of testing every pair.
 
 >>> from graphmethods.scene import Page, Scene, Text, Line
 >>> page = Page("A4", "landscape", frame=True)
