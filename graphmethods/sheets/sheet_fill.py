@@ -151,7 +151,7 @@ def overflowing(parts: list[PartInk]) -> int:
 
     >>> from graphmethods.scene import Line, Page, Scene
     >>> pg = Page("A4")
-    >>> a, b = (PartInk.of(Scene(pg, (Line((x, 50), (x + 40, 50)),)), pg) for x in (10, 40))
+    >>> a, b = (PartInk.of(Scene(pg, (Line((x, 40), (x + 40, 60)),)), pg) for x in (10, 40))
     >>> overflowing([a, b])
     1
     """
