@@ -33,6 +33,11 @@ AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 OUTLINE = Style(width_mm=0.5)
 #: the reduction scales of a machine drawing (ГОСТ 2.302, GB/T 14690), 1 : k
 DRAWING_SCALES = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 50.0, 75.0, 100.0)
+#: significant digits of each kind of flywheel quantity, one rule for the figures (this drawing's table, the
+#: J_F–[δ] hyperbola) and the text of ``graphmethods flywheel`` alike: inertias, masses and lengths in mm 4,
+#: works and angular speeds 6 (ω_max and ω_min differ in the fourth digit at δ = 1/300), speeds 3
+DIGITS = {"J": 4, "mass": 4, "mm": 4, "density": 4, "W": 6, "omega": 6, "speed": 3, "delta": 6, "inverse": 4,
+          "angle": 4, "moment": 6}
 #: the normal linear sizes (ГОСТ 6636 Ra 20), mm: the bore is rounded up to one
 NORMAL_MM = (20, 22, 25, 28, 32, 36, 40, 45, 50, 56, 63, 71, 80, 90, 100, 110, 125, 140, 160, 180, 200, 220, 250,
              280, 320, 360, 400)
@@ -227,13 +232,13 @@ def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     def row(label: str, f: Any) -> None:
         rows.append((label,) + tuple(f(p) for p in parts))
 
-    row(nt.quantity(nt.sym("dynamics.J_F"), "kg·m²"), lambda p: num(p.J))      # J_F as the hyperbola prints it
-    row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=4))
-    row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=4))
+    row(nt.quantity(nt.sym("dynamics.J_F"), "kg·m²"), lambda p: num(p.J, sig=DIGITS["J"]))   # as the hyperbola
+    row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=DIGITS["mass"]))
+    row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=DIGITS["J"]))
     # D and B each on its row: "750, 111" reads as one number with a decimal comma in Russian
-    row(nt.quantity("D", "mm"), lambda p: num(p.D * 1000, sig=4))
-    row(nt.quantity("B", "mm"), lambda p: num(p.B * 1000, sig=3))
-    row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=4))
-    row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=3))
-    row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=3))
+    row(nt.quantity("D", "mm"), lambda p: num(p.D * 1000, sig=DIGITS["mm"]))
+    row(nt.quantity("B", "mm"), lambda p: num(p.B * 1000, sig=DIGITS["mm"]))
+    row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=DIGITS["density"]))
+    row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=DIGITS["speed"]))
+    row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=DIGITS["speed"]))
     return tuple(rows)

@@ -486,11 +486,11 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     J, T = nt.sym("dynamics.J_e"), nt.sym("dynamics.dT")
 
     ray = {}
+    tans = dict(zip(("max", "min"), nt.column((float(res.tan_psi_max), float(res.tan_psi_min)))))  # the table's digits
     for key in ("max", "min"):
         idx = res.index_omega_max if key == "max" else res.index_omega_min
         psi = nt.sym(f"dynamics.psi_{key}")
-        tan = res.tan_psi_max if key == "max" else res.tan_psi_min
-        ray[key] = (nt.word(f"steps.ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4),
+        ray[key] = (nt.word(f"steps.ray_{key}", psi=psi, tan=tans[key],
                             w=nt.sym(f"dynamics.omega_{key}"), i=", ".join(str(int(i)) for i in idx)),
                     _starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
                            f"label-omega-{key}", f"leader-omega-{key}"))

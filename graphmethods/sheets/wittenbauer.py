@@ -501,8 +501,11 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
     O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}" if on_sheet else nt.word("wittenbauer.O1_off")
     tg = "tg" if nt.code == "ru" else "tan"
     psi_max, psi_min = nt.sym("dynamics.psi_max"), nt.sym("dynamics.psi_min")
-    tg_max = f"{tg} {psi_max} = {n(res.tan_psi_max)}, {psi_max} = {n(math.degrees(res.psi_max))}°"
-    tg_min = f"{tg} {psi_min} = {n(res.tan_psi_min)}, {psi_min} = {n(math.degrees(res.psi_min))}°"
+    # one digits rule for a pair of one kind: both tangents, both angles with the same decimals (7,120° by 6,946°)
+    tan_max, tan_min = nt.column((res.tan_psi_max, res.tan_psi_min))
+    deg_max, deg_min = nt.column((math.degrees(res.psi_max), math.degrees(res.psi_min)))
+    tg_max = f"{tg} {psi_max} = {tan_max}, {psi_max} = {deg_max}°"
+    tg_min = f"{tg} {psi_min} = {tan_min}, {psi_min} = {deg_min}°"
     J_F = f"{nt.sym('dynamics.J_F')} = {nt.sym('mu_T')}·kl/({nt.sym('dynamics.omega_m')}²{nt.sym('dynamics.delta')})"
     J_F_num = f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)})"
     origin_rows = []
