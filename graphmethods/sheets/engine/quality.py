@@ -40,7 +40,7 @@ from graphmethods.scene.elements import CAP, label_bbox
 from graphmethods.scene.primitives import Label
 from graphmethods.scene.scene import Scene
 from graphmethods.sheets.engine.labels import circle_points
-from graphmethods.sheets.engine.lettering import is_course_sheet, lettering
+from graphmethods.sheets.engine.lettering import is_course_sheet, is_slide, lettering
 from graphmethods.sheets.layout import segments_hit_boxes
 
 #: the cell of the empty-space measure (mm)
@@ -166,7 +166,8 @@ def measure(scene: Scene) -> Quality:
     sizes = [lab.size_mm for lab in labels if any(s == 0 and t.strip() for t, s in lab.runs)]
     noise = [t for t in (_noise(lab) for lab in labels) if t]
 
-    empty = _empty_share(rec, scene.page.inner_box(), frame_free, boxes) if scene.page.frame else 0.0
+    judged = scene.page.frame or is_slide(scene.page)      # a framed sheet's frame, or a slide inside its margins
+    empty = _empty_share(rec, scene.page.inner_box(), frame_free, boxes) if judged else 0.0
     return Quality(scene.page.size, empty, min(sizes) if sizes else math.inf, tuple(crossed), tuple(overlaps),
                    tuple(noise), len(labels))
 
