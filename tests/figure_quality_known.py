@@ -43,3 +43,7 @@ KNOWN: dict[tuple[str, str, str], str] = {
     ('scotch-yoke', 'structure_diagram', 'ru'): "the yoke (link 3) is not drawn, its number lands on the block",
     ('scotch-yoke', 'structure_diagram', 'zh'): "the yoke (link 3) is not drawn, its number lands on the block",
 }
+
+#: the dynamics figures and the lecture build-ups (tests/test_figure_quality_dynamics.py), the same way
+KNOWN_DYNAMICS: dict[tuple[str, str, str], str] = {
+}
