@@ -57,7 +57,7 @@ CASES += [(p, f"steps:{f}", lang) for f in OTHER_STEPS for p in FOUR + ("press",
           if lang == "en" or p == "shaper"]
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _flywheels(problem: str):
     from graphmethods.dynamics.flywheel import disc_flywheel, flywheel, rim_flywheel
 
@@ -68,7 +68,7 @@ def _flywheels(problem: str):
     return p, fw, rim, disc_flywheel(fw.J_F, D=D, n_rpm=p.n_rpm)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _run(problem: str):
     """One turn of the problem's own machine from its mean speed (``graphmethods motion P --turns 1``)."""
     from graphmethods.dynamics.regimes import ConstantDrive, run

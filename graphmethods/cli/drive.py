@@ -84,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json_text(out, indent=1), file=stream)
         return 0
-    print("\n".join(report_lines(chain, args.lang, out.get("figure"))), file=stream)
+    print("\n".join(report_lines(chain, args.lang, None if path is None or path.to_stdout else str(path))), file=stream)
     return 0
 
 

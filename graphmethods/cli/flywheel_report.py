@@ -85,7 +85,9 @@ def moment_lines(out: dict[str, Any], nt: Notation) -> list[str]:
         head, _, rest = str(text).partition(" (balances ")
         try:
             other = _t(nt.sym("M_r" if rest.startswith("M_r") else "M_d"))
-            return f"{value(nt, float(head), 'moment')} ({nt.word('flywheel.report_balances', M=other)})" if rest else text
+            if not rest:
+                return text
+            return f"{value(nt, float(head), 'moment')} ({nt.word('flywheel.report_balances', M=other)})"
         except ValueError:
             return text
 

@@ -207,16 +207,80 @@ def run(args: argparse.Namespace) -> int:
                "epsilon": res.epsilon.tolist(), "summary": summary}
         print(json.dumps(out))
         return 0
-    steady: dict | None = summary.pop("steady", None)  # type: ignore[assignment]
-    width = max(map(len, summary))
-    for key, value in summary.items():
-        print(f"{key.ljust(width)}  {value:.9g}" if isinstance(value, float) else f"{key.ljust(width)}  {value}")
-    if steady is not None:
-        print("steady state:")
-        for key, value in steady.items():
-            shown = f"{value:.9g}" if isinstance(value, float) else f"{value}"
-            print(f"  {key.ljust(width)}  {shown}")
+    print("\n".join(report_lines(summary, args.lang, motor=args.motor, M_d=m.M_d)))
     return 0
+
+
+_SYMBOL = {"omega": ("ω", "rad/s"), "epsilon": ("ε", "rad/s²"), "phi": ("φ", "°"), "t": ("t", "s"),
+           "J": ("J", "kg·m²"), "delta": ("δ", ""), "tol": ("tol", ""), "rtol": ("rtol", ""), "turns": ("N", "")}
+_INNER = {"omega": "ω", "epsilon": "ε", "m": "m"}
+
+
+def _label(key: str, nt) -> tuple[str, int]:
+    """A summary key as the text names it in ``nt``'s language, and the significant digits of its value:
+    ``omega_max_run`` -> "ω_max_run, рад/с" (6 digits, ω's rule), ``error_estimate_omega`` -> words (3)."""
+    from graphmethods.scene import markup
+
+    words = {"steps": "motion.steps", "periods": "motion.periods", "motor_ratio": "motion.motor_ratio",
+             "energy_residual": "motion.energy_residual"}
+    if key in words:
+        return nt.word(words[key]), 6
+    errors = {"error_estimate_omega": "motion.error_omega", "error_extremes_omega": "motion.error_extremes",
+              "omega_remaining": "motion.error_remaining"}
+    if key in errors:
+        return nt.quantity(nt.word(errors[key]), "rad/s"), 3
+    if key == "J_F":
+        return nt.quantity(markup.typed(nt.sym("dynamics.J_F")), "kg·m²"), 4
+    if key == "J_rotor_reduced":
+        return nt.quantity("J_rotor·u²", "kg·m²"), 4
+    parts = key.removesuffix("_deg").replace("omega0", "omega_0").replace("phi0", "phi_0").replace("t0", "t_0")
+    head, *rest = parts.split("_")
+    sym, unit = _SYMBOL.get(head, (head, ""))
+    sub = "_".join(_INNER.get(r, r) for r in rest)
+    return nt.quantity(f"{sym}_{sub}" if sub else sym, unit), 6
+
+
+def report_lines(summary: dict, lang: str, *, motor: str | None = None, M_d: float | None = None) -> list[str]:
+    """The summary of a run as text in ``lang``: each value named by its symbol and unit in that language,
+    written with its decimal sign (the JSON keys are the English identifiers the README lists).
+
+    >>> print("\\n".join(report_lines({"case": "W4", "omega_max_run": 11.80126716, "ended_by": "turns"}, "ru")))
+    задача                          W4
+    ω_max_run, рад/с                11,8013
+    окончание                       заданное число оборотов
+    """
+    from graphmethods.scene import markup
+    from graphmethods.scene.notation import get
+
+    nt = get(lang)
+    steady = summary.get("steady")
+    rows: list[tuple[str, str]] = []
+    Md = markup.typed(nt.sym("M_d"))
+    for key, value in summary.items():
+        if key == "steady":
+            continue
+        if key == "case":
+            rows.append((nt.word("motion.problem"), str(value)))
+        elif key == "drive":
+            text = (nt.word("motion.drive_motor", spec=motor) if motor else
+                    nt.word("motion.drive_constant", Md=Md, M=nt.number(M_d, sig=6), u=nt.unit("N·m"))
+                    if M_d is not None else nt.word("motion.drive_curve", Md=Md))
+            rows.append((nt.word("motion.drive"), text))
+        elif key == "ended_by":
+            rows.append((nt.word("motion.ended_by"), nt.word(f"motion.ended_{value}")
+                         if f"motion.ended_{value}" in nt.words else str(value)))
+        else:
+            label, sig = _label(key, nt)
+            rows.append((label, nt.number(float(value), sig=sig) if isinstance(value, (int, float)) else str(value)))
+    width = max(30, max(len(k) for k, _ in rows))
+    lines = [f"{k.ljust(width)}  {v}" for k, v in rows]
+    if isinstance(steady, dict):
+        lines.append(nt.word("motion.steady"))
+        for key, value in steady.items():
+            label, sig = _label(key, nt)
+            shown = nt.number(float(value), sig=sig) if isinstance(value, (int, float)) else str(value)
+            lines.append(f"  {label.ljust(width)}{shown}")
+    return lines
 
 
 def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:

@@ -247,7 +247,7 @@ def _width_dimension(a: tuple[float, float], b: tuple[float, float], value: str,
     if text_width_mm(value, TEXT_MM) + 1.0 <= abs(b[0] - a[0]):
         return [Dimension(a, b, value, offset_mm=offset_mm, size_mm=TEXT_MM, name=name)]
     dim = Dimension(a, b, "", offset_mm=offset_mm, size_mm=TEXT_MM, name=name)
-    (_, y0), (x1, _) = dim.line_start, dim.line_end
+    y0 = dim.line_start[1]
     return [dim, Text((max(a[0], b[0]) + 2.0, y0 - 1.0), value, size_mm=TEXT_MM, name=f"{name}-value")]
 
 

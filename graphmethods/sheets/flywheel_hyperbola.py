@@ -112,12 +112,14 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
         if leader is not None:
             els.append(Line(leader[0], leader[1], style=Style(width_mm=0.18), name="chosen-leader"))
     notes_y = sheet.caption_y - 16.0
-    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula", JF=JF, wm=wm, Je=Je, dW=nt.sym("delta_W_max")) + ";  " +
+    dW = nt.sym("delta_W_max")
+    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula", JF=JF, wm=wm, Je=Je, dW=dW) + ";  " +
                     nt.word("flywheel.hyperbola_data", W=num(float(delta_W_max), sig=DIGITS["W"]),
                             w=num(float(omega_m), sig=DIGITS["omega"]), J=num(float(J_e), sig=DIGITS["J"]), wm=wm,
-                            Je=Je, dW=nt.sym("delta_W_max")),
+                            Je=Je, dW=dW),
                     size_mm=TEXT_MM, name="formula"))
-    rng = nt.word("flywheel.hyperbola_range", a=num(1 / hi, sig=DIGITS["inverse"]), b=num(1 / lo, sig=DIGITS["inverse"]))
+    rng = nt.word("flywheel.hyperbola_range", a=num(1 / hi, sig=DIGITS["inverse"]),
+                  b=num(1 / lo, sig=DIGITS["inverse"]))
     els.append(Text((x0 + 4.0, notes_y + 5.0), rng,
                     size_mm=SMALL_MM, name="range-note"))
     els += sheet.captions((s_d, s_J))

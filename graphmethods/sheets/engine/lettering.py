@@ -131,4 +131,5 @@ def lettered_by_page(default: str = "A1") -> Callable[[F], F]:
     return wrap
 
 
-__all__ = ["LETTERING", "SERIES_MM", "Lettering", "is_course_sheet", "is_slide", "lettered", "lettered_by_page", "lettering"]
+__all__ = ["LETTERING", "SERIES_MM", "Lettering", "is_course_sheet", "is_slide", "lettered", "lettered_by_page",
+           "lettering"]
