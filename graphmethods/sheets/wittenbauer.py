@@ -666,14 +666,21 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     J_to, T_hi, T_lo = data.extent(J_0)         # the J axis from J_0, as on the A1 sheet; ΔT to k and l there
     probe_res = data.result(1.0, 1.0)
     table_w = _table(compact_rows(result_rows(probe_res, nt, J_0=J_0)), (0, 0)).width_mm
-    ax_x = x0 + 22.0
     py0, py1 = sheet.top + 10.0, sheet.caption_y - 9.0
-    avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
-    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to - J_0, avail_X - (20.0 if J_0 else 0.0),
-                      what="the J_e axis")
     s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
-    res = data.result(s_J.per_mm, s_T.per_mm)
-    res = offset_origin(res, J_0) if J_0 > 0.0 else res
+    left = 22.0
+    for _ in range(2):                          # the ψ marks left of the ordinate axis need their room there
+        ax_x = x0 + left
+        avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
+        s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to - J_0,
+                          avail_X - (20.0 if J_0 else 0.0), what="the J_e axis")
+        res = data.result(s_J.per_mm, s_T.per_mm)
+        res = offset_origin(res, J_0) if J_0 > 0.0 else res
+        place = _DiagramPlace.of(res, (0.0, 0.0), nt, J_to=J_to, T_hi=T_hi, T_lo=T_lo, J_from=J_0, prefix="")
+        need = 0.0 if place.right else place.R + 8.0 - (20.0 if J_0 else 0.0)
+        if need <= left:
+            break
+        left = need
     ax_x += 20.0 if J_0 else 0.0                # room for the step down to J_0 (the broken axis)
     origin = (ax_x, py0 + s_T.to_mm(T_hi))
     page_probe = sheet.probe
