@@ -108,14 +108,18 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     xticks = tuple(v for v in axis_ticks(0.0, x_span, s_x, min_gap_mm=12.0) if 0 <= v <= x_span)
     yticks = tuple(v for v in axis_ticks(lo, hi, s_y, min_gap_mm=8.0) if lo <= v <= hi)
     dec = nt.decimal
-    ax_x = Axis(origin, s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks, label=nt.quantity(x_sym, x_unit),
-                size_mm=SMALL_MM, decimal=dec, name="axis-x", skip_zero_label=lo < 0,
-                labels_side="below")
+    # values on both sides of 0 (ε): the abscissa at the graph's foot, where the curve's jumps do not strike its
+    # values out, and a thin line at 0
+    foot = f.pt(0.0, lo)[1] if lo < 0 else origin[1]
+    ax_x = Axis((origin[0], foot), s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks,
+                label=nt.quantity(x_sym, x_unit), size_mm=SMALL_MM, decimal=dec, name="axis-x", labels_side="below")
     ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yticks, label=nt.quantity(y_sym, y_unit),
-                size_mm=SMALL_MM, decimal=dec, name="axis-y", skip_zero_label=lo < 0)
+                size_mm=SMALL_MM, decimal=dec, name="axis-y", skip_zero_label=False)
     # at most ~6000 points: a polyline of a long run is thinned evenly (ends kept)
     keep = np.unique(np.linspace(0, xv.size - 1, min(xv.size, 6000)).round().astype(int))
     els = [sheet.header(), ax_x, ax_y, Polyline(f.pts(xv[keep], yv[keep]), style=MAIN, name=f"curve-{y}")]
+    if lo < 0:
+        els.insert(1, Polyline((origin, f.pt(x_span, 0.0)), style=THIN, name="zero-line"))
     notes = [s_x.note, s_y.note]
     if x == "phi":               # the crank turns, thin dashed verticals
         for k in range(1, int(x_span / (2 * math.pi)) + 1):
