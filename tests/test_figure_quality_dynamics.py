@@ -218,3 +218,35 @@ def test_the_stepper_prints_the_a1_sheets_tan_psi_and_kl():
         assert f" = {on_sheet.group(1)}, ψ" in page
     kl = re.search(r"kl = ([\d.]+) mm", sheet)
     assert kl is not None and f"kl = {kl.group(1)} mm there" in page
+
+
+def test_the_drive_scheme_fills_its_a4():
+    """The drive scheme filled a third of its A4 (32 mm discs, 2.8 mm text): the chain now spans half the
+    page's width and each scheme its half of the height, lettered at 3.5 mm."""
+    from graphmethods.gallery.catalogue import problem as catalogue_problem
+    from graphmethods.render.recording import record
+    from graphmethods.sheets.drive_scheme import drive_scheme
+
+    scene = drive_scheme(catalogue_problem("drive:three-mass-drive"), notation="ru")
+    x0, y0, x1, y1 = scene.page.inner_box()
+    discs = [c.data for c in record(scene).calls if c.kind == "path" and any("disc" in g for g in c.groups)]
+    xs = [p[0] for d in discs for p in d[0]]
+    ys = [p[1] for d in discs for p in d[0]]
+    assert (max(xs) - min(xs)) > 0.4 * (x1 - x0) and (max(ys) - min(ys)) > 0.5 * (y1 - y0)
+    labels = [e for e in scene.elements if "-label-" in e.name]
+    assert labels and all(e.size_mm == 3.5 for e in labels)
+
+
+def test_drive_and_motion_text_speak_their_language(capsys):
+    """``drive`` and ``motion`` printed English keys with decimal points in every language."""
+    from graphmethods.cli import main
+
+    assert main(["drive", "--J", "0.08,0.5,12", "--u", "6,2,1", "--c", "2000,40000", "--c-u", "6,1", "--M",
+                 "30,0,-160", "--lang", "ru"]) == 0
+    out = capsys.readouterr().out
+    assert "J', кг·м²" in out and "2,88; 2; 12" in out and "96,87; 273,8" in out and "J_п = ΣJ'" in out
+    assert main(["motion", "W4", "--turns", "1", "--lang", "ru"]) == 0
+    out = capsys.readouterr().out
+    assert "ω_max_run, рад/с" in out and "11,8013" in out and "ended_by" not in out
+    assert main(["motion", "W4", "--turns", "1", "--lang", "zh"]) == 0
+    assert "ω_max_run/(rad/s)" in capsys.readouterr().out

@@ -211,11 +211,6 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-_SYMBOL = {"omega": ("ω", "rad/s"), "epsilon": ("ε", "rad/s²"), "phi": ("φ", "°"), "t": ("t", "s"),
-           "J": ("J", "kg·m²"), "delta": ("δ", ""), "tol": ("tol", ""), "rtol": ("rtol", ""), "turns": ("N", "")}
-_INNER = {"omega": "ω", "epsilon": "ε", "m": "m"}
-
-
 def _label(key: str, nt) -> tuple[str, int]:
     """A summary key as the text names it in ``nt``'s language, and the significant digits of its value:
     ``omega_max_run`` -> "ω_max_run, рад/с" (6 digits, ω's rule), ``error_estimate_omega`` -> words (3)."""
@@ -233,11 +228,9 @@ def _label(key: str, nt) -> tuple[str, int]:
         return nt.quantity(markup.typed(nt.sym("dynamics.J_F")), "kg·m²"), 4
     if key == "J_rotor_reduced":
         return nt.quantity("J_rotor·u²", "kg·m²"), 4
-    parts = key.removesuffix("_deg").replace("omega0", "omega_0").replace("phi0", "phi_0").replace("t0", "t_0")
-    head, *rest = parts.split("_")
-    sym, unit = _SYMBOL.get(head, (head, ""))
-    sub = "_".join(_INNER.get(r, r) for r in rest)
-    return nt.quantity(f"{sym}_{sub}" if sub else sym, unit), 6
+    from graphmethods.cli._report import label
+
+    return label(key.replace("omega0", "omega_0").replace("phi0", "phi_0").replace("t0", "t_0"), nt), 6
 
 
 def report_lines(summary: dict, lang: str, *, motor: str | None = None, M_d: float | None = None) -> list[str]:
