@@ -250,3 +250,16 @@ def test_drive_and_motion_text_speak_their_language(capsys):
     assert "ω_max_run, рад/с" in out and "11,8013" in out and "ended_by" not in out
     assert main(["motion", "W4", "--turns", "1", "--lang", "zh"]) == 0
     assert "ω_max_run/(rad/s)" in capsys.readouterr().out
+
+
+def test_a_steady_runs_energy_mass_loop_gets_a_suppressed_T_axis():
+    """One steady turn of the press: T between 6 600 and 7 200 J drawn on a 0…7 200 J axis was a sliver at the
+    top; the T axis now starts at a round value below the loop, as the J axis does."""
+    _, res = _run("press")
+    from graphmethods.sheets.motion import energy_mass_curve
+
+    scene = energy_mass_curve(res, notation="en")
+    ax = scene.element("axis-T")
+    assert ax.min_value > 0.5 * float(res.T.min())
+    ys = [p[1] for p in scene.element("curve-T").points]
+    assert max(ys) - min(ys) > 40.0                     # mm: the loop fills the graph's height
