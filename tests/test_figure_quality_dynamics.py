@@ -191,16 +191,18 @@ def test_forces_header_names_the_problem_in_its_language(capsys):
 
 
 def test_psi_max_and_psi_min_print_with_one_digits_rule():
-    """ψ_max was printed 7,12° beside ψ_min 6,946° (trailing zero stripped): a pair of one kind takes the same
-    decimals, on the Wittenbauer table and on the slides."""
+    """ψ_max was printed 11,3° beside ψ_min 11,03° on the engine's A2 dynamic sheet (the trailing zero stripped):
+    a pair of one kind takes the same decimals, on the Wittenbauer table, the sheets and the slides."""
     from graphmethods.dynamics.study import Study
-    from graphmethods.sheets.wittenbauer import diagram_data, result_rows
+    from graphmethods.sheets import dynamic_analysis_sheet
 
-    res = diagram_data(Study(builtin.case("shaper"), positions=12), tangents="exact", notation="ru").result(0.04, 10.0)
-    rows = {r[0]: r[1] for r in result_rows(res, "ru")}
-    tg = [v for v in rows.values() if v.startswith("tg ψ_")]
-    decimals = [len(m.split(",")[1]) for v in tg for m in re.findall(r"\d+,\d+", v)]
-    assert len(tg) == 2 and len(set(decimals[0::2])) == 1 and len(set(decimals[1::2])) == 1, tg
+    text = " ".join(_texts(dynamic_analysis_sheet(Study(builtin.case("engine"), positions=12), notation="ru",
+                                                 page="A2")))
+    angles = re.findall(r"ψ(?:max|min) = (\d+,\d+)°", text)
+    tans = re.findall(r"tg ψ(?:max|min) = (\d+,\d+)", text)
+    assert len(angles) == 2 and len(tans) == 2, text[:400]
+    assert len({len(a.split(",")[1]) for a in angles}) == 1 and len({len(t.split(",")[1]) for t in tans}) == 1
+    assert "11,30°" in text
 
 
 def test_the_stepper_prints_the_a1_sheets_tan_psi_and_kl():
