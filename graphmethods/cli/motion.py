@@ -201,7 +201,8 @@ def run(args: argparse.Namespace) -> int:
     summary.update(res.summary())
     if args.figures is not None:
         summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name, cycle=m.problem,
-                                                             case=None if m.problem is not None else args.case)]
+                                                             case=None if m.problem is not None else args.case,
+                                                             title=_title(m, args))]
     if args.json:
         out = {"t": res.t.tolist(), "phi": res.phi.tolist(), "omega": res.omega.tolist(),
                "epsilon": res.epsilon.tolist(), "summary": summary}
@@ -276,7 +277,21 @@ def report_lines(summary: dict, lang: str, *, motor: str | None = None, M_d: flo
     return lines
 
 
-def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
+def _title(m, args) -> str:
+    """The problem's name on the figures' title block, in ``--lang`` (the press's "дезаксиальный
+    кривошипно-ползунный пресс", not "press"); a cycle problem or a file without a title keeps its name."""
+    if m.problem is not None:
+        return m.name
+    try:
+        from graphmethods.problems.builtin import case
+        from graphmethods.problems.reference_cases import title_of
+
+        return title_of(case(args.case)).title_in(args.lang) or m.name
+    except InputError:                    # a name is only a caption: the problem's own name then
+        return m.name
+
+
+def _write_figures(res, args, *, problem: str, cycle=None, case=None, title: str | None = None) -> list:
     """Build the figures (ω(t), ω(φ), ε(φ); and for a cycle problem or a linkage ``case`` with n and [δ]
     the three-panel figure of its steady cycle), then write them (an existing file is kept unless --force)."""
     import pathlib
@@ -289,7 +304,7 @@ def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
     out = pathlib.Path(args.figures)
     if out.exists() and not out.is_dir():
         raise InputError(f"--figures {out}: it is a file; give a directory")
-    scenes = motion_figures(res, notation=args.lang, problem=problem)
+    scenes = motion_figures(res, notation=args.lang, problem=title or problem)
     if cycle is not None:                 # a cycle problem: also M_d/M_r, ΔE and ω on one φ axis
         from graphmethods.sheets.cycle_panels import cycle_panels
 
