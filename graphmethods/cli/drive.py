@@ -118,10 +118,10 @@ def report_lines(chain, lang: str, figure: str | None = None) -> list[str]:
             (nt.quantity(sym(nt.sym("dynamics.J_e")) + " = ΣJ'", "kg·m²"), nt.number(chain.J_e, sig=5)),
             (nt.quantity(sym(nt.sym("dynamics.M_e")) + " = ΣM'", "N·m"), nt.number(chain.M_e, sig=5)),
             (nt.quantity(f"{nt.word('drive.freq')} ω", "rad/s"), nums(chain.natural_frequencies, 4)),
-            (nt.quantity(f"{nt.word('drive.freq_hz')} f", "Hz"),
+            (nt.quantity(f"{nt.word('drive.freq')} f", "Hz"),
              nums([w / (2 * math.pi) for w in chain.natural_frequencies], 4))]
     width = max(30, max(len(k) for k, _ in rows))
     lines = [f"{k.ljust(width)} {v}" for k, v in rows]
     if figure is not None:
-        lines.append(nt.word("drive.wrote", f=figure))
+        lines.append(nt.word("flywheel.report_wrote", f=figure))
     return lines

@@ -1,7 +1,7 @@
 """The text output of ``graphmethods flywheel`` in ``--lang en|ru|zh``: the figures' words, symbols and digits.
 
 One truth: a number the text prints is the number the flywheel figures print, with the same significant
-digits (:data:`graphmethods.sheets.flywheel_design.DIGITS`), the language's decimal sign and symbols
+digits (:data:`graphmethods.scene.numbers.FLYWHEEL_DIGITS`), the language's decimal sign and symbols
 (J_м, ω_ср, A_изб in Russian), and its units.
 
 >>> from graphmethods.dynamics import excess_work as ew
@@ -21,7 +21,7 @@ from typing import Any
 
 from graphmethods.scene import markup
 from graphmethods.scene.notation import Notation, get
-from graphmethods.sheets.flywheel_design import DIGITS
+from graphmethods.scene.numbers import FLYWHEEL_DIGITS as DIGITS
 
 
 def _t(text: str) -> str:

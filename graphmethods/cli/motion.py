@@ -254,7 +254,7 @@ def report_lines(summary: dict, lang: str, *, motor: str | None = None, M_d: flo
         if key == "steady":
             continue
         if key == "case":
-            rows.append((nt.word("motion.problem"), str(value)))
+            rows.append((nt.word("check.col_problem"), str(value)))
         elif key == "drive":
             text = (nt.word("motion.drive_motor", spec=motor) if motor else
                     nt.word("motion.drive_constant", Md=Md, M=nt.number(M_d, sig=6), u=nt.unit("N·m"))

@@ -140,9 +140,81 @@ class PanelData:
     legend: str
 
 
+def _panel_scales(data: PanelData, nt, room_mm: float, gap: float) -> list[tuple[Scale, float, float]]:
+    """Each panel's convenient scale, lowest and highest value (M, ΔE, ω; ω from its suppressed base).
+
+    A convenient scale leaves a panel up to 2.5 times lower than its third of ``room_mm``: the room the others
+    leave is offered to each in turn, so the panels fill the page from the title to the legend."""
+    Md2, Mr2, E, w = data.M_d, data.M_r, data.delta_E, data.omega
+    mu, wu, uw = data.moment_unit, data.work_unit, f"({nt.unit('rad/s')})"
+    M_lo, M_hi = float(min(Md2.min(), Mr2.min(), 0.0)), float(max(Md2.max(), Mr2.max(), 0.0))
+    E_lo, E_hi = float(min(E.min(), 0.0)), float(max(E.max(), 0.0))
+    w_lo, w_hi = float(w.min()), float(w.max())
+
+    def scales_for(hs: list[float]) -> list[tuple[Scale, float, float]]:
+        s_M = given_scale(None, nt.sym("mu_M"), nt.unit(mu), M_hi - M_lo, hs[0], what="the moments")
+        s_E = given_scale(None, "μ_E", nt.unit(wu), max(E_hi - E_lo, 1e-12), hs[1], what="the energy")
+        w_base = suppressed_base(w_lo, w_hi, given_scale(None, nt.sym("dynamics.mu_omega"), uw,
+                                                         max(w_hi - w_lo, 1e-12) * 1.4, hs[2], what="ω"), zero=None)
+        s_w = given_scale(None, nt.sym("dynamics.mu_omega"), uw, max(w_hi - w_base, 1e-12), hs[2], what="ω")
+        return [(s_M, M_lo, M_hi), (s_E, E_lo, E_hi), (s_w, w_base, w_hi)]
+
+    h = (room_mm - 2 * gap) / 3.0
+    picked = scales_for([h, h, h])
+    for i in range(3):
+        used = [sc.to_mm(hi - lo) for sc, lo, hi in picked]
+        trial = list(used)
+        trial[i] += room_mm - sum(used) - 2 * gap
+        again = scales_for(trial)
+        if again[i][0].to_mm(again[i][2] - again[i][1]) > used[i] + 1e-9:
+            picked[i] = again[i]
+    return picked
+
+
+def _curve_names(els: list, fM: Frame, data: PanelData, nt) -> list:
+    """M_d and M_r named at a curve's peak, a constant's at the period's end, each where no line is."""
+    ink = Ink()
+    ink.add_primitives([p for e in els[1:] for p in e.primitives()])
+    out: list = []
+    for key, vals in (("M_r", data.M_r), ("M_d", data.M_d)):
+        if float(np.ptp(vals)) > 1e-9 * max(1.0, float(np.abs(vals).max())):
+            k_top = int(np.argmax(np.abs(vals)))
+            at = fM.pt(float(data.phi_M[k_top]), float(vals[k_top]))
+            dirs: tuple[str, ...] = ("ne", "nw", "e", "w", "se", "sw") if vals[k_top] >= 0 else ("se", "sw", "e", "w")
+        else:
+            at = fM.pt(data.period, float(vals[-1]))
+            dirs = ("e", "ne", "se", "n", "s")
+        lab, leader = ink.place(at, nt.sym(key), size_mm=TEXT_MM, directions=dirs, gap_mm=1.5)
+        out.append(Text((lab.x, lab.y), nt.sym(key), size_mm=TEXT_MM, anchor=lab.anchor, name=f"name-{key}"))
+        if leader is not None:
+            out.append(Polyline(leader, style=GUIDE, name=f"leader-{key}"))
+    return out
+
+
+def _guides(data: PanelData, fM: Frame, axis_y: dict) -> list:
+    """Verticals through the boundaries of the excess-work table (the crossings), through every panel, broken
+    where a panel's φ axis writes its values (a guide through "π/2" struck it out) and between the panels."""
+    band = SMALL_MM * 1.6
+    pieces: list[tuple[float, float]] = []          # each panel's height, less the band of its φ values
+    for y_hi, y_lo, y_axis, above, inside in axis_y.values():
+        if inside:
+            pieces.append((y_hi, y_lo))
+        elif above:
+            pieces += [(y_hi, y_axis - band), (y_axis, y_lo)]
+        else:
+            pieces += [(y_hi, y_axis), (y_axis + band, y_lo)]
+    out: list = []
+    for k, b in enumerate(data.guides):
+        if 1e-9 < b < data.period - 1e-9:
+            xa = fM.pt(b, 0.0)[0]
+            out += [Polyline(((xa, u), (xa, v)), style=GUIDE, name=f"guide-{k}" + (f"-{j}" if j else ""))
+                    for j, (u, v) in enumerate(pieces) if v - u > 0.5]
+    return out
+
+
 def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Scene:
     """Lay out and draw :class:`PanelData` on A4 portrait (the three panels, captions, legend)."""
-    P, ph2, Md2, Mr2, phi, E, w = data.period, data.phi_M, data.M_d, data.M_r, data.phi, data.delta_E, data.omega
+    P, ph2, phi = data.period, data.phi_M, data.phi
     title = title or nt.word("motion.cycle_panels")
     mu, wu = data.moment_unit, data.work_unit
     sheet = SheetFrame(nt=nt, page=None, title=title, problem=problem, title_block=True,
@@ -151,51 +223,17 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
     px0, px1 = x0 + 24.0, x1 - 22.0
     top, bottom = sheet.top + 8.0, sheet.caption_y - 22.0     # the legend and the captions under the ω panel
     gap = 14.0
-    h = (bottom - top - 2 * gap) / 3.0
     s_phi = given_angle_scale(None, nt.sym("mu_phi"), P, px1 - px0)
-    M_hi = float(max(Md2.max(), Mr2.max(), 0.0))
-    M_lo = float(min(Md2.min(), Mr2.min(), 0.0))
-    E_lo, E_hi = float(min(E.min(), 0.0)), float(max(E.max(), 0.0))
-    uw = f"({nt.unit('rad/s')})"
-    w_lo, w_hi = float(w.min()), float(w.max())
-
-    def scales_for(hs: list[float]) -> list[tuple[Scale, float]]:
-        """Each panel's convenient scale for its height, and its lowest value (ω's suppressed base)."""
-        s_M = given_scale(None, nt.sym("mu_M"), nt.unit(mu), M_hi - M_lo, hs[0], what="the moments")
-        s_E = given_scale(None, "μ_E", nt.unit(wu), max(E_hi - E_lo, 1e-12), hs[1], what="the energy")
-        w_base = suppressed_base(w_lo, w_hi, given_scale(None, nt.sym("dynamics.mu_omega"), uw,
-                                                         max(w_hi - w_lo, 1e-12) * 1.4, hs[2], what="ω"), zero=None)
-        s_w = given_scale(None, nt.sym("dynamics.mu_omega"), uw, max(w_hi - w_base, 1e-12), hs[2], what="ω")
-        return [(s_M, M_lo), (s_E, E_lo), (s_w, w_base)]
-
-    tops = (M_hi, E_hi, w_hi)
-    hs = [h, h, h]
-    picked = scales_for(hs)
-    # a convenient scale leaves a panel up to 2.5 times lower than its share: the room the others leave is
-    # offered to each in turn, so the panels fill the page from the title to the legend
-    for i in range(3):
-        used = [sc.to_mm(tops[k] - lo) for k, (sc, lo) in enumerate(picked)]
-        spare = (bottom - top) - sum(used) - 2 * gap
-        trial = list(used)
-        trial[i] += spare
-        again = scales_for(trial)
-        if again[i][0].to_mm(tops[i] - again[i][1]) > used[i] + 1e-9:
-            hs = trial
-            picked = [again[i] if k == i else picked[k] for k in range(3)]
-    (s_M, _), (s_E, _), (s_w, w_base) = picked
+    picked = _panel_scales(data, nt, bottom - top, gap)
     ticks, labels = pi_ticks(P, s_phi, min_gap_mm=14.0)
     els = [sheet.header()]
-    panels = [("M", s_M, M_lo, M_hi, nt.quantity(nt.sym("M"), mu)),
-              ("E", s_E, E_lo, E_hi, nt.quantity("ΔE", wu)),
-              ("omega", s_w, w_base, w_hi, nt.quantity(nt.sym("dynamics.omega"), "rad/s"))]
-    frames = {}
-    # the panels at their convenient scales are lower than their share: the room left goes into the gaps, so
-    # the three fill the page from the title to the legend
-    spare = (bottom - top) - sum(s_y.to_mm(hi - lo) for _, s_y, lo, hi, _ in panels) - 2 * gap
-    gap += max(spare, 0.0) / 2.0
-    axis_y = {}
+    names = (("M", nt.quantity(nt.sym("M"), mu)), ("E", nt.quantity("ΔE", wu)),
+             ("omega", nt.quantity(nt.sym("dynamics.omega"), "rad/s")))
+    # the room the convenient scales leave goes into the gaps: the three fill the page to the legend
+    gap += max((bottom - top) - sum(s_y.to_mm(hi - lo) for s_y, lo, hi in picked) - 2 * gap, 0.0) / 2.0
+    frames, axis_y = {}, {}
     y_top = top
-    for key, s_y, lo, hi, label in panels:
+    for (key, label), (s_y, lo, hi) in zip(names, picked):
         origin = (px0, y_top + s_y.to_mm(hi))          # the page point of φ = 0 and the value 0
         f = Frame(origin, s_phi, s_y)
         level = lo if lo > 0 else 0.0                  # the φ axis at 0, or at the suppressed base
@@ -213,49 +251,17 @@ def panels_scene(data: PanelData, *, nt, title: str | None, problem: str) -> Sce
         axis_y[key] = (f.pt(0.0, hi)[1], f.pt(0.0, lo)[1], f.pt(0.0, level)[1], hi <= 0, inside)
         y_top += s_y.to_mm(hi - lo) + gap
     fM, fE, fw = frames["M"], frames["E"], frames["omega"]
-    els.append(Polyline(fM.pts(ph2, Mr2), style=MAIN, name="curve-M_r"))
-    els.append(Polyline(fM.pts(ph2, Md2), style=DASHED, name="curve-M_d"))
-    # a curve is named at its peak, a constant at the period's end (an engine's M_r, a machine's M_d), each
-    # where no line is (the curves, the axes)
-    ink = Ink()
-    ink.add_primitives([p for e in els[1:] for p in e.primitives()])
-    for key, vals in (("M_r", Mr2), ("M_d", Md2)):
-        if float(np.ptp(vals)) > 1e-9 * max(1.0, float(np.abs(vals).max())):
-            k_top = int(np.argmax(np.abs(vals)))
-            at = fM.pt(float(ph2[k_top]), float(vals[k_top]))
-            dirs: tuple[str, ...] = ("ne", "nw", "e", "w", "se", "sw") if vals[k_top] >= 0 else ("se", "sw", "e", "w")
-        else:
-            at = fM.pt(P, float(vals[-1]))
-            dirs = ("e", "ne", "se", "n", "s")
-        lab, leader = ink.place(at, nt.sym(key), size_mm=TEXT_MM, directions=dirs, gap_mm=1.5)
-        els.append(Text((lab.x, lab.y), nt.sym(key), size_mm=TEXT_MM, anchor=lab.anchor, name=f"name-{key}"))
-        if leader is not None:
-            els.append(Polyline(leader, style=GUIDE, name=f"leader-{key}"))
-    els.append(Polyline(fE.pts(phi, E), style=MAIN, name="curve-delta_E"))
-    els.append(Polyline(fw.pts(phi, w), style=MAIN, name="curve-omega"))
-    # verticals through the boundaries of the excess-work table (the crossings), through all panels, broken
-    # where each panel's φ axis writes its tick values (a guide through "π/2" strikes it out)
-    band = SMALL_MM * 1.6
-    pieces: list[tuple[float, float]] = []          # each panel's height, less the band of its φ values
-    for y_hi, y_lo, y_axis, above, inside in axis_y.values():
-        if inside:
-            pieces.append((y_hi, y_lo))
-        elif above:
-            pieces += [(y_hi, y_axis - band), (y_axis, y_lo)]
-        else:
-            pieces += [(y_hi, y_axis), (y_axis + band, y_lo)]
-    for k, b in enumerate(data.guides):
-        if 1e-9 < b < P - 1e-9:
-            xa = fM.pt(b, 0.0)[0]
-            els += [Polyline(((xa, u), (xa, v)), style=GUIDE, name=f"guide-{k}" + (f"-{j}" if j else ""))
-                    for j, (u, v) in enumerate(pieces) if v - u > 0.5]
-    legend = data.legend
-    scales = (s_phi, s_M, s_E, s_w)
+    els.append(Polyline(fM.pts(ph2, data.M_r), style=MAIN, name="curve-M_r"))
+    els.append(Polyline(fM.pts(ph2, data.M_d), style=DASHED, name="curve-M_d"))
+    els += _curve_names(els, fM, data, nt)
+    els.append(Polyline(fE.pts(phi, data.delta_E), style=MAIN, name="curve-delta_E"))
+    els.append(Polyline(fw.pts(phi, data.omega), style=MAIN, name="curve-omega"))
+    els += _guides(data, fM, axis_y)
+    scales = (s_phi,) + tuple(sc for sc, _, _ in picked)
     els += sheet.captions(scales[:2], legend="")
     els.append(Text((x0, sheet.caption_y - 6.0), "   ".join(s.caption(nt) for s in scales[2:]), size_mm=TEXT_MM,
                     name="scale-captions-2"))
-    els.append(Text((x0, sheet.caption_y - 12.0), legend, size_mm=TEXT_MM, name="legend"))
+    els.append(Text((x0, sheet.caption_y - 12.0), data.legend, size_mm=TEXT_MM, name="legend"))
     # the title block's line holds the three value scales (all four are captioned under the figure)
-    short = scales[1:]
-    return Scene(sheet.page(short), tuple(els), title=sheet.title, notation=nt.code, name="cycle-panels",
+    return Scene(sheet.page(scales[1:]), tuple(els), title=sheet.title, notation=nt.code, name="cycle-panels",
                  notes=tuple(s.note for s in scales))

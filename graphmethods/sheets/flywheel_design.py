@@ -26,6 +26,7 @@ from graphmethods.scene import Line, Page, Scale, Scene, Text, notation as get_n
 from graphmethods.scene.elements import Dimension, Element, Region, Table
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import FLYWHEEL_DIGITS
 from graphmethods.scene.primitives import Style
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM
@@ -34,11 +35,9 @@ AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 OUTLINE = Style(width_mm=0.5)
 #: the reduction scales of a machine drawing (ГОСТ 2.302, GB/T 14690), 1 : k
 DRAWING_SCALES = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 50.0, 75.0, 100.0)
-#: significant digits of each kind of flywheel quantity, one rule for the figures (this drawing's table, the
-#: J_F–[δ] hyperbola) and the text of ``graphmethods flywheel`` alike: inertias, masses and lengths in mm 4,
-#: works and angular speeds 6 (ω_max and ω_min differ in the fourth digit at δ = 1/300), speeds 3
-DIGITS = {"J": 4, "mass": 4, "mm": 4, "density": 4, "W": 6, "omega": 6, "speed": 3, "delta": 6, "inverse": 4,
-          "angle": 4, "moment": 6}
+#: significant digits of each kind of quantity (:data:`graphmethods.scene.numbers.FLYWHEEL_DIGITS`), one rule
+#: for this drawing's table, the hyperbola and the text of ``graphmethods flywheel``
+DIGITS = FLYWHEEL_DIGITS
 #: the normal linear sizes (ГОСТ 6636 Ra 20), mm: the bore is rounded up to one
 NORMAL_MM = (20, 22, 25, 28, 32, 36, 40, 45, 50, 56, 63, 71, 80, 90, 100, 110, 125, 140, 160, 180, 200, 220, 250,
              280, 320, 360, 400)
