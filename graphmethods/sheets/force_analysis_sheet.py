@@ -36,6 +36,7 @@ from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
 from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
+from graphmethods.sheets.force_working import inertia_working
 from graphmethods.sheets.layout import Box, Sheet
 
 
@@ -104,11 +105,15 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
               Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
+    working = [(t, False) for t in inertia_working(case, fa, i, nt)]
+    working = [(nt.word("forces.inertia_loads"), True)] + working if working else []
+    work_mm = size if max([text_width_mm(t, size) for t, _ in working] + [0.0]) <= 190.0 else note_mm
     block = sheet.probe.title_block
     inner = pg.inner_box()
     tb = block.table(inner[2], inner[3]) if block is not None else None
     col_w = max([t.width_mm for t in tables] + ([tb.width_mm - 5.0] if tb is not None else [])
                 + [text_width_mm(t, note_mm) for t in notes_text]
+                + [text_width_mm(t, work_mm) for t, _ in working]
                 + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
     tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)
@@ -148,6 +153,10 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
                for k, t in enumerate(notes_text)]
     y += len(notes_text) * 1.8 * note_mm + gap
+    for k, (t, head_) in enumerate(working):
+        y += (2.2 if head_ and k else 1.8) * work_mm
+        column.append(Text((tx, y), t, size_mm=work_mm, bold=head_, name=f"working-{k}"))
+    y += gap
     graph_box = (boxes["result"][0], y, boxes["result"][2], boxes["result"][3])
     if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
         graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
