@@ -157,7 +157,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
         y += (2.2 if head_ and k else 1.8) * work_mm
         column.append(Text((tx, y), t, size_mm=work_mm, bold=head_, name=f"working-{k}"))
     y += gap
-    graph_box = (boxes["result"][0], y, boxes["result"][2], boxes["result"][3])
+    graph_box = boxes.get("balancing", (boxes["result"][0], y, boxes["result"][2], boxes["result"][3]))
     if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
         graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
         column.append(graph)
@@ -240,9 +240,10 @@ def _pairs(fa: Any, i: int, n: int, gap_mm: float) -> Split:
     """The groups cut from the linkage and their force plans: side by side in columns, each group over its
     plan, when the drawings are tall; one pair under another, each group beside its plan, when they are flat
     (a slider-crank's group and its long polygon)."""
-    flat = all(_aspect(c) > 1.3 for c in _pair_clouds(fa, i))
-    if flat:
-        rows = tuple((Split("h", ((f"group-{j}", 0.5), (f"plan-{j}", 0.5)), gap_mm=gap_mm), 1.0) for j in range(n))
+    clouds = _pair_clouds(fa, i)
+    plans = [_aspect(c) for c in clouds[1::2]]
+    if sum(a > 2.0 for a in plans) * 2 > len(plans) or all(_aspect(c) > 1.3 for c in clouds):
+        rows = tuple((Split("h", ((f"group-{j}", 0.4), (f"plan-{j}", 0.6)), gap_mm=gap_mm), 1.0) for j in range(n))
         return Split("v", rows, gap_mm=gap_mm)
     cols = tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap_mm), 1.0) for j in range(n))
     return Split("h", cols, gap_mm=gap_mm)
@@ -291,7 +292,8 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
         top = (Split("h", (("lever", w_l), ("acceleration", rest - w_l - gap_mm)), gap_mm=gap_mm) if acceleration
                else Split("h", (("lever", 1.0),), gap_mm=gap_mm))
         right = Split("v", ((top, 0.42), (_pairs(fa, i, n, gap_mm), 0.58)), gap_mm=gap_mm)
-        tree = Split("h", (("scheme", w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
+        left_col = Split("v", (("scheme", 0.62), ("balancing", 0.38)), gap_mm=gap_mm)
+        tree = Split("h", ((left_col, w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
         h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
         top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)) if acceleration else (("scheme", 1.0),),
