@@ -10,13 +10,16 @@ F_b and R′_01); the plan of accelerations of the position, where the inertia f
 (:func:`~graphmethods.sheets.acceleration.acceleration_plan`, left out when its equations do not fit its
 panel). At the right, above the title block: the balancing moment from the force plans, from the lever and
 from the power balance with their differences in per cent, every reaction's magnitude, the inertia loads,
-and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`). Each
-part keeps its own scales, written under it; the title block names the scheme's.
+the inertia loads worked out (F_и = m·a_S = …, M_и = J_S·ε = …, h = M_и/F_и, :mod:`~graphmethods.sheets.force_working`)
+and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`; under a tall
+linkage, in its column). Each group's plan writes above its polygon the moment equations that give its R^τ with
+the numbers, then its vector equation. Each part keeps its own scales, written under it; the title block names
+the scheme's.
 
 >>> from graphmethods.problems import builtin
 >>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A1")
 >>> [e.name for e in s.elements][1:]
-['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia', 'note-0', 'balancing']
+['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia', 'note-0', 'working-0', 'working-1', 'working-2', 'working-3', 'working-4', 'balancing']
 """
 
 from __future__ import annotations

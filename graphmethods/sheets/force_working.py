@@ -20,7 +20,7 @@ prismatic pair the sheet does not draw).
 >>> inertia_working(case, fa, i, "en")[0]
 'F_{i3} = m_{3}·a_{S3} = 20·0.6006 = 12.012 N'
 >>> moment_working(fa, i, 0, "en")[1]
-'R^{τ}_{34}·0.13506 − 0.15109 − 0.036824 = 0, R^{τ}_{34} = 1.3914 N'
+'R^{τ}_{34}·0.135 − 0.11034 − 0.036824 = 0, R^{τ}_{34} = 1.0901 N'
 """
 
 from __future__ import annotations
