@@ -52,6 +52,10 @@ def _case(subject: Any) -> Any:
     return case
 
 
+#: the least room (mm) for M_b(φ) under the result column's text; with less, it goes among the drawings
+GRAPH_MM = 90.0
+
+
 def sheet_page(page: str | Page, what: str) -> Page:
     """A1 or A2 landscape with a frame (a left binding margin of 20 mm), or the Page given."""
     if isinstance(page, Page):
@@ -121,10 +125,14 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     gap = GAP_MM.get(pg.size, 8.0)
     tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
-    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
+    free = tb_top - gap - content[1] - _result_column(0.0, 0.0, tables, notes_text, working, nt,
+                                                      sizes=(size, note_mm, work_mm, gap))[1]
+    graph_below = phi_deg is not None or free >= GRAPH_MM      # M_b(φ) under the column's text, or in the drawings'
+    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, graph=not graph_below)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
     if accel is None:                               # the plan of accelerations does not fit: the others take its room
-        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False)
+        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False,
+                                  graph=not graph_below)
     at_k = i if phi_deg is None else None
     kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
     parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
@@ -140,26 +148,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    tx, ty = boxes["result"][0] + 2.0, boxes["result"][1]
-    heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
-                   name="result-heading")
-    table = Table((tx, ty + 2.5 * size), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size,
-                  name="result")
-    y = table.bottom_left[1] + 2.0 * size
-    reactions = Table((tx, y), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size,
-                      name="reactions")
-    y = reactions.bottom_left[1] + 2.0 * size
-    inertia = Table((tx, y), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size,
-                    name="inertia")
-    y = inertia.bottom_left[1] + 2.0 * size
-    column: list[Any] = [inertia]
-    column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
-               for k, t in enumerate(notes_text)]
-    y += len(notes_text) * 1.8 * note_mm + gap
-    for k, (t, head_) in enumerate(working):
-        y += (2.2 if head_ and k else 1.8) * work_mm
-        column.append(Text((tx, y), t, size_mm=work_mm, bold=head_, name=f"working-{k}"))
-    y += gap
+    column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
+                               sizes=(size, note_mm, work_mm, gap))
     graph_box = boxes.get("balancing", (boxes["result"][0], y, boxes["result"][2], boxes["result"][3]))
     if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
         graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
@@ -168,9 +158,31 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
-    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, heading, table,
-                                            reactions, *column),
+    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: list[str],
+                   working: list[tuple[str, bool]], nt: Any, *, sizes: tuple[float, float, float, float]
+                   ) -> tuple[list[Any], float]:
+    """The result column from (tx, ty): its heading, the balancing moment's, the reactions' and the inertia
+    loads' tables, the notes and the inertia loads worked out; and the y (mm) under its last line."""
+    size, note_mm, work_mm, gap = sizes
+    names = ("result", "reactions", "inertia")
+    column: list[Any] = [Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
+                              name="result-heading")]
+    y = ty + 2.5 * size
+    for t, nm in zip(tables, names):
+        table = Table((tx, y), t.rows, align=t.align, size_mm=size, row_height_mm=2.0 * size, name=nm)
+        column.append(table)
+        y = table.bottom_left[1] + 2.0 * size
+    column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
+               for k, t in enumerate(notes_text)]
+    y += len(notes_text) * 1.8 * note_mm + gap
+    for k, (t, head_) in enumerate(working):
+        y += (2.2 if head_ and k else 1.8) * work_mm
+        column.append(Text((tx, y), t, size_mm=work_mm, bold=head_, name=f"working-{k}"))
+    return column, y + gap
 
 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:
@@ -264,7 +276,8 @@ def _pair_clouds(fa: Any, i: int) -> list[list[complex]]:
 
 
 def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
-                      column_bottom: float | None = None, acceleration: bool = True) -> dict[str, Box]:
+                      column_bottom: float | None = None, acceleration: bool = True,
+                      graph: bool = False) -> dict[str, Box]:
     """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
     (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
     of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
@@ -302,7 +315,8 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
         top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)) if acceleration else (("scheme", 1.0),),
                     gap_mm=gap_mm)
         w_l = _lever_width(lever, (1.0 - h_s) * H, W)
-        bottom = Split("h", (("lever", w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
+        lever_col = Split("v", (("lever", 0.6), ("balancing", 0.4)), gap_mm=gap_mm) if graph else "lever"
+        bottom = Split("h", ((lever_col, w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
         tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
     out.update(tree.boxes(left))
     return out
