@@ -28,8 +28,6 @@ from __future__ import annotations
 import re
 from typing import Any
 
-import numpy as np
-
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.sheets import forces as SF
@@ -134,7 +132,7 @@ def moment_working(fa: Any, i: int, j: int, nt: Notation | str = "en") -> list[s
         big = max([abs(tau * l_AP)] + [abs(v) for _, v in terms])
         if big == 0.0 or abs(tau * l_AP + sum(v for _, v in terms)) > CLOSES * big:
             continue                                        # a couple the sheet does not draw: no line
-        terms = [(s, v) for s, v in terms if not SF.round_off_zero(abs(v), big) == 0.0]
+        terms = [(s, v) for s, v in terms if SF.round_off_zero(abs(v), big) != 0.0]
         a_name = next((p for p in mo.points if abs(complex(mo.z[p][i]) - A) < 1e-12 * (1 + abs(A))), "A")
         arm = f"l_{{{a_name}{P_name}}}"
         R_sym = SF._markup(label, nt)
@@ -142,6 +140,27 @@ def moment_working(fa: Any, i: int, j: int, nt: Notation | str = "en") -> list[s
         numbers = (f"{R_sym}·{nt.number(l_AP, sig=5)}" + "".join(_term(v, nt) for _, v in terms)
                    + f" = 0, {R_sym} = {nt.number(SF.round_off_zero(tau, big / l_AP), sig=5)} {nt.unit('N')}")
         out += [symbols, numbers]
+    return out
+
+
+def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation | str = "en") -> list[str]:
+    """The lengths (mm) the known forces of a plan are drawn at, as the course writes them before drawing:
+    ``F_{c3}/μ_F = 5000/20 = 250 mm`` (none for a force of round-off size; the sides as
+    :func:`~graphmethods.sheets.force_sheet_plans.plan_sides` gives them).
+
+    >>> from graphmethods.scene import Scale
+    >>> drawn_lengths([("F_c3", 5000 + 0j, True), ("R_03", 1e3j, False)], Scale("μ_F", "N", 20.0))
+    ['F_{c3}/μ_F = 5000/20 = 250 mm']
+    """
+    nt = get_notation(nt)
+    big = max([abs(F) for _, F, _ in sides] + [0.0])
+    out = []
+    for lbl, F, known in sides:
+        if not known or SF.round_off_zero(abs(F), big) == 0.0 or "'" in lbl:
+            continue
+        name = SF._markup(lbl, nt)
+        out.append(f"{name}/μ_F = {nt.number(abs(F), sig=5)}/{nt.number(s_F.per_mm, sig=4)}"
+                   f" = {nt.number(abs(F) / s_F.per_mm, sig=4)} {nt.unit('mm')}")
     return out
 
 
@@ -168,4 +187,4 @@ def working_lines(case: Any, fa: Any, i: int, nt: Notation | str = "en") -> list
     return out
 
 
-__all__ = ["inertia_working", "moment_working", "working_lines"]
+__all__ = ["drawn_lengths", "inertia_working", "moment_working", "working_lines"]
