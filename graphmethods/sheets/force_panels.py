@@ -37,7 +37,7 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.scale import pick_scale
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import PanelContent
-from graphmethods.sheets.force_working import moment_working
+from graphmethods.sheets.force_working import lever_working, moment_working
 
 KINDS = ("scheme", "lever", "group", "plan")
 
@@ -132,7 +132,7 @@ def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", pag
         lev = fa.lever
         arrows = [(complex(f.image[i]), complex(f.F[i])) for f in lev.forces]
         arrows.append((complex(lev.image_pin[i]), complex(lev.F_balance[i])))
-        texts = lever_texts(fa, i, nt)
+        texts = lever_texts(fa, i, nt) + lever_working(fa, i, nt)
     width = max(text_width_mm(t, let.label_mm) for t in texts)
     height = head + 2.0 + len(texts) * SF.SCHEME_LAYOUT.text_pitch_mm + SF.SCHEME_LAYOUT.reach_top_mm
     return PanelContent(_with_tips(z, arrows), nt.unit("m"), (width, height), below, pad)

@@ -143,6 +143,38 @@ def moment_working(fa: Any, i: int, j: int, nt: Notation | str = "en") -> list[s
     return out
 
 
+def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int = 3) -> list[str]:
+    """Zhukovsky's lever's moment equation about the pole p with numbers: each force's magnitude times its
+    arm on the plan of analogues (m), signed by its sense against F_b's, ``per_line`` terms to a line (F_b's
+    value is the lever's next line, :func:`~graphmethods.sheets.force_panels.lever_texts`).
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import analysed
+    >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
+    >>> lever_working(fa, i, "en")[-1]
+    '     − 288.18·0.0991 − 5000·0.0991 = 0'
+    """
+    nt = get_notation(nt)
+    lev = fa.lever
+    F_b = complex(lev.F_balance[i])
+    pin = complex(lev.image_pin[i])
+    big = max([abs(float(f.moment[i])) for f in lev.forces] + [abs(F_b) * abs(pin)])
+    s_b = 1.0 if (pin.conjugate() * F_b).imag >= 0 else -1.0     # F_b's moment taken positive
+    terms = []
+    for f in lev.forces:
+        F, M = abs(complex(f.F[i])), float(f.moment[i])
+        if F > 0.0 and SF.round_off_zero(abs(M), big) != 0.0:
+            terms.append((s_b * M < 0, f"{nt.number(F, sig=5)}·{nt.number(abs(M) / F, sig=4)}"))
+    h_b = abs((pin.conjugate() * F_b).imag) / abs(F_b) if abs(F_b) > 0 else abs(pin)
+    fb = SF._markup("F_b", nt)
+    head = f"Σ M_p = 0:  {fb}·{nt.number(h_b, sig=4)}"
+    parts = [f" {'−' if neg else '+'} {t}" for neg, t in terms]
+    lines = [head + "".join(parts[:per_line])]
+    lines += ["    " + "".join(parts[k:k + per_line]) for k in range(per_line, len(parts), per_line)]
+    lines[-1] += " = 0"
+    return lines
+
+
 def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation | str = "en") -> list[str]:
     """The lengths (mm) the known forces of a plan are drawn at, as the course writes them before drawing:
     ``F_{c3}/μ_F = 5000/20 = 250 mm`` (none for a force of round-off size; the sides as
@@ -187,4 +219,4 @@ def working_lines(case: Any, fa: Any, i: int, nt: Notation | str = "en") -> list
     return out
 
 
-__all__ = ["drawn_lengths", "inertia_working", "moment_working", "working_lines"]
+__all__ = ["drawn_lengths", "lever_working", "inertia_working", "moment_working", "working_lines"]
