@@ -87,7 +87,8 @@ def test_the_sheet_writes_its_working_and_each_plan_its_moment_equations():
     texts = [e.text for e in _walk(s.elements) if e.name.startswith("working-")]
     fa, i = analysed(case, position=3, phi_deg=None, m=12)
     assert texts[1:] == inertia_working(case, fa, i, "ru")
-    moments = [e.text for e in _walk(s.element("plans").elements) if e.name.startswith("moment-") and hasattr(e, "text")]
+    moments = [e.text for e in _walk(s.element("plans").elements)
+               if e.name.startswith("moment-") and hasattr(e, "text")]
     assert moments == [t for j in range(len(fa.plans)) for t in moment_working(fa, i, j, "ru")]
     assert [t for t, head in working_lines(case, fa, i, "ru") if not head][:len(texts) - 1] == texts[1:]
 

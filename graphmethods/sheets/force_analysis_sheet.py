@@ -18,8 +18,10 @@ the scheme's.
 
 >>> from graphmethods.problems import builtin
 >>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A1")
->>> [e.name for e in s.elements][1:]
-['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia', 'note-0', 'working-0', 'working-1', 'working-2', 'working-3', 'working-4', 'balancing']
+>>> [e.name for e in s.elements][1:9]
+['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia']
+>>> [e.name for e in s.elements][-3:]
+['working-3', 'working-4', 'balancing']
 """
 
 from __future__ import annotations
@@ -172,16 +174,16 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
     column: list[Any] = [Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
                               name="result-heading")]
     y = ty + 2.5 * size
-    for t, nm in zip(tables, names):
-        table = Table((tx, y), t.rows, align=t.align, size_mm=size, row_height_mm=2.0 * size, name=nm)
+    for tab, nm in zip(tables, names):
+        table = Table((tx, y), tab.rows, align=tab.align, size_mm=size, row_height_mm=2.0 * size, name=nm)
         column.append(table)
         y = table.bottom_left[1] + 2.0 * size
-    column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
-               for k, t in enumerate(notes_text)]
+    column += [Text((tx, y + k * 1.8 * note_mm), note, size_mm=note_mm, name=f"note-{k}")
+               for k, note in enumerate(notes_text)]
     y += len(notes_text) * 1.8 * note_mm + gap
-    for k, (t, head_) in enumerate(working):
+    for k, (line, head_) in enumerate(working):
         y += (2.2 if head_ and k else 1.8) * work_mm
-        column.append(Text((tx, y), t, size_mm=work_mm, bold=head_, name=f"working-{k}"))
+        column.append(Text((tx, y), line, size_mm=work_mm, bold=head_, name=f"working-{k}"))
     return column, y + gap
 
 
