@@ -137,7 +137,7 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
 
     moments = moment_working(fa, i, j, nt)                      # R^τ from the moments, before the plan
     m_pitch = 1.8 * let.label_mm
-    n_known = len(drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt))
+    n_known = len(drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0))
     m_h = (len(moments) + n_known) * m_pitch
     area, x_text, s_F = _plan_area(sheet, pts, L,
                                    lambda mu: ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]

@@ -175,10 +175,11 @@ def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int =
     return lines
 
 
-def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation | str = "en") -> list[str]:
+def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation | str = "en", *,
+                  least_mm: float = 1.0) -> list[str]:
     """The lengths (mm) the known forces of a plan are drawn at, as the course writes them before drawing:
-    ``F_{c3}/μ_F = 5000/20 = 250 mm`` (none for a force of round-off size; the sides as
-    :func:`~graphmethods.sheets.force_sheet_plans.plan_sides` gives them).
+    ``F_{c3}/μ_F = 5000/20 = 250 mm`` (none for a force of round-off size or shorter than ``least_mm``, too
+    short to lay off; the sides as :func:`~graphmethods.sheets.force_sheet_plans.plan_sides` gives them).
 
     >>> from graphmethods.scene import Scale
     >>> drawn_lengths([("F_c3", 5000 + 0j, True), ("R_03", 1e3j, False)], Scale("μ_F", "N", 20.0))
@@ -188,7 +189,7 @@ def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation
     big = max([abs(F) for _, F, _ in sides] + [0.0])
     out = []
     for lbl, F, known in sides:
-        if not known or SF.round_off_zero(abs(F), big) == 0.0 or "'" in lbl:
+        if not known or SF.round_off_zero(abs(F), big) == 0.0 or "'" in lbl or abs(F) / s_F.per_mm < least_mm:
             continue
         name = SF._markup(lbl, nt)
         out.append(f"{name}/μ_F = {nt.number(abs(F), sig=5)}/{nt.number(s_F.per_mm, sig=4)}"
