@@ -132,6 +132,11 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     graph_below = phi_deg is not None or free >= GRAPH_MM      # M_b(φ) under the column's text, or in the drawings'
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, graph=not graph_below)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
+    if accel is None and phi_deg is None and graph_below and "balancing" in boxes:
+        # beside a tall linkage the plan of accelerations may take the lever's room, the lever the graph's
+        wide = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, lever_under=True)
+        accel = _acceleration(case, i, m, nt, pg, wide["acceleration"])
+        boxes = wide if accel is not None else boxes
     if accel is None:                               # the plan of accelerations does not fit: the others take its room
         boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False,
                                   graph=not graph_below)
@@ -279,7 +284,7 @@ def _pair_clouds(fa: Any, i: int) -> list[list[complex]]:
 
 def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
                       column_bottom: float | None = None, acceleration: bool = True,
-                      graph: bool = False) -> dict[str, Box]:
+                      graph: bool = False, lever_under: bool = False) -> dict[str, Box]:
     """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
     (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
     of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
@@ -287,7 +292,10 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
     The result column (``col_w`` wide) stands at the right, down to ``column_bottom`` (the title block's
     top). Left of it, a tall linkage (a shaper's rocker) takes a column the height of the sheet, the lever
     a column beside it, and the force plans one over another in a third; a flat linkage (a press) takes a
-    row across the top with the lever beside it, and the plans share the row below side by side.
+    row across the top with the lever beside it, and the plans share the row below side by side. ``graph``:
+    M_b(φ) gets a box among the drawings (``balancing``; a tall linkage's column always has it);
+    ``lever_under``: beside a tall linkage the plan of accelerations takes the whole upper row and the lever
+    goes under the linkage (when the plan does not fit beside the lever).
 
     >>> from graphmethods.problems import builtin
     >>> from graphmethods.sheets.forces import analysed
@@ -309,8 +317,11 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
         w_l = _lever_width(lever, 0.42 * H, rest)
         top = (Split("h", (("lever", w_l), ("acceleration", rest - w_l - gap_mm)), gap_mm=gap_mm) if acceleration
                else Split("h", (("lever", 1.0),), gap_mm=gap_mm))
+        under = "balancing"
+        if lever_under:                                         # the lever under the linkage, M_b(φ) in the column
+            top, under = Split("h", (("acceleration", 1.0),), gap_mm=gap_mm), "lever"
         right = Split("v", ((top, 0.42), (_pairs(fa, i, n, gap_mm), 0.58)), gap_mm=gap_mm)
-        left_col = Split("v", (("scheme", 0.62), ("balancing", 0.38)), gap_mm=gap_mm)
+        left_col = Split("v", (("scheme", 0.62), (under, 0.38)), gap_mm=gap_mm)
         tree = Split("h", ((left_col, w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
         h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
