@@ -13,15 +13,10 @@ from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet, force
 from graphmethods.sheets.force_working import inertia_working, moment_working, working_lines
 from graphmethods.sheets.forces import analysed
 
-
-def _walk(elements):
-    for e in elements:
-        yield e
-        yield from _walk(getattr(e, "elements", ()) or ())
-
-
-def _number(text: str) -> float:
-    return float(text.replace("−", "-").replace(",", ".").replace(" ", ""))
+try:
+    from test_force_analysis_sheet import _number, _walk
+except ImportError:                                     # run from the repository root as a package
+    from tests.test_force_analysis_sheet import _number, _walk
 
 
 def _json(name, capsys):
