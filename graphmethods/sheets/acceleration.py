@@ -265,7 +265,8 @@ def _equation_texts(columns: list[list[Block]], at, half: float, lay: Accelerati
         for b_ in col:
             names = [nm for nm, _, _ in b_]
             for i, (nm, line, dx) in enumerate(b_):
-                t = Text((cx + dx, ey + row * lay.equation_mm), line, size_mm=TEXT_MM, name=nm)
+                t = Text((cx + dx, ey + row * lay.equation_mm), line, size_mm=TEXT_MM,
+                         name=nm if names.count(nm) == 1 else f"{nm}-line-{i - names.index(nm)}")
                 row += 1
                 if names.count(nm) == 1:
                     out.append(t)

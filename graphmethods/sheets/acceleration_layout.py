@@ -55,13 +55,13 @@ def wrap(text: str, width: float, size_mm: float = TEXT_MM) -> list[tuple[str, f
     """
     if markup.text_width_mm(text, size_mm) <= width:
         return [(text, 0.0)]
-    commas = text.split(", ")
+    commas = [c.strip() for c in text.split(", ")]
     by_comma = [p + ("," if j < len(commas) - 1 else "") for j, p in enumerate(commas)]
     if all(markup.text_width_mm(p, size_mm) <= width - 6.0 for p in by_comma):      # after the commas alone
         return _fill(by_comma, width, 6.0, size_mm)
     pieces: list[str] = []
     for i, side in enumerate(text.split(" = ")):
-        parts = side.split(", ")
+        parts = [p.strip() for p in side.split(", ")]
         for j, p in enumerate(parts):
             pieces.append(("= " if i and not j else "") + p + ("," if j < len(parts) - 1 else ""))
     eq_dx = markup.text_width_mm(text.split(" = ")[0] + " ", size_mm) if " = " in text else 6.0
