@@ -36,7 +36,4 @@ KNOWN: dict[tuple[str, str, str], str] = {
     ('whitworth', 'force_analysis_sheet', 'en'): '61% empty',
     ('whitworth', 'force_analysis_sheet', 'ru'): '58% empty, 1 crossed',
     ('whitworth', 'force_analysis_sheet', 'zh'): '63% empty',
-    ('scotch-yoke', 'structure_diagram', 'en'): "the yoke (link 3) is not drawn, its number lands on the block",
-    ('scotch-yoke', 'structure_diagram', 'ru'): "the yoke (link 3) is not drawn, its number lands on the block",
-    ('scotch-yoke', 'structure_diagram', 'zh'): "the yoke (link 3) is not drawn, its number lands on the block",
 }

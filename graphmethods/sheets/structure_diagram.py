@@ -72,6 +72,9 @@ class Part:
         Its sliders: a block at the joint, along the direction of that link.
     guides : list of (joint, link)
         Its prismatic pairs with the frame: a hatched guide through the joint.
+    yokes : list of (joint, link, angle)
+        A slotted link translating on the frame's guide (a Scotch yoke, link ``link``): the block at ``joint``
+        slides in its slot, at ``angle`` (rad, from +x) on the drawing.
     """
 
     formula: str
@@ -84,6 +87,7 @@ class Part:
     inner: list[str] = field(default_factory=list)
     blocks: list[tuple[str, str]] = field(default_factory=list)
     guides: list[tuple[str, str]] = field(default_factory=list)
+    yokes: list[tuple[str, str, float]] = field(default_factory=list)
 
 
 def _add(seq: list[str], x: str) -> None:
@@ -115,6 +119,8 @@ def structure_parts(lk: Any) -> list[Part]:
                 _add(part.inner, j)
             else:
                 _add(part.fixed if j in lk.ground else part.outer, j)
+        if g.kind == "RPP" and getattr(getattr(g, "guide", None), "link", None) == "0":  # a yoke on the frame
+            part.yokes.append((g.P, g.links[1], float(g.guide.angle + g.slot_angle)))
         parts.append(part)
     for p in lk.points:                                # a lever's end that drives a later group is a joint
         if p.name in driving:
@@ -146,6 +152,50 @@ def _link_ink(pts: list[complex], name: str, to: Any) -> Element:
     return Line(xy[far[0]], xy[far[1]], MAIN, name=name)
 
 
+#: a yoke as drawn in the structure diagram (mm): the slot's half length and half width, the rod's length
+YOKE_SLOT_MM = (12.0, 2.6)
+YOKE_ROD_MM = 26.0
+
+
+def _room(c: np.ndarray, d: np.ndarray, box: tuple[float, float, float, float]) -> float:
+    """How far (mm) from ``c`` along the unit ``d`` the box reaches."""
+    ts = [(lim - c[i]) / d[i] for i, lims in ((0, (box[0], box[2])), (1, (box[1], box[3]))) for lim in lims
+          if abs(d[i]) > 1e-9]
+    return min([t for t in ts if t > 0] or [0.0])
+
+
+def _yoke(pin: complex, u: complex, slot_angle: float, z: dict[str, complex], to: Any, k: str,
+          box: tuple[float, float, float, float]) -> tuple[list[Element], tuple[float, float]]:
+    """A yoke (a slotted crosshead, link ``k``) as the textbooks draw it: its slot through the block's ``pin``
+    at ``slot_angle`` (rad) as two parallel bars closed at the ends, a rod from the slot along the guide
+    (direction ``u``, away from the other joints) and the yoke's block on the frame's hatched guide at the
+    rod's far part. Returns the elements and the middle of the rod (mm)."""
+    c = np.asarray(to(pin))
+    sd = np.array([math.cos(slot_angle), -math.sin(slot_angle)])       # on paper (y down)
+    nd = np.array([-sd[1], sd[0]])
+    half, w = YOKE_SLOT_MM
+    ud = np.array([u.real, -u.imag]) / max(abs(u), 1e-12)
+    others = [np.asarray(to(q)) - c for q in z.values() if abs(q - pin) > 1e-12]
+    if others and sum(float(o @ ud) for o in others) > 0:                 # the rod away from the crank ...
+        ud = -ud
+    if _room(c, ud, box) < _room(c, -ud, box) and _room(c, ud, box) < YOKE_ROD_MM + 12.0:   # ... or where there
+        ud = -ud                                                                          # is more room
+    rod_mm = max(12.0, min(YOKE_ROD_MM, (_room(c, ud, box) - YOKE_SLOT_MM[1] - 9.5) / 0.62))
+    off = nd if float(nd @ ud) >= 0 else -nd                             # the slot's side the rod leaves from
+    corners = [c - sd * half - nd * w, c + sd * half - nd * w, c + sd * half + nd * w, c - sd * half + nd * w]
+    slot = Polyline(tuple(tuple(float(v) for v in q) for q in corners), MAIN, closed=True, name=f"yoke-{k}-slot")
+    start = c + off * w
+    end = start + ud * rod_mm
+    rod = Line(tuple(start.tolist()), tuple(end.tolist()), MAIN, name=f"yoke-{k}-rod")
+    bc = start + ud * (rod_mm * 0.62)
+    ang = math.degrees(math.atan2(-ud[1], ud[0]))
+    guide = Guide(tuple((bc - ud * 9.0).tolist()), tuple((bc + ud * 9.0).tolist()), name=f"guide-{k}")
+    block = SliderBlock(tuple(bc.tolist()), angle_deg=ang, length_mm=7.0, height_mm=4.0, pin=False,
+                        name=f"yoke-{k}-block")
+    mid = start + ud * (rod_mm * 0.25)
+    return [slot, rod, guide, block], (float(mid[0]), float(mid[1]))
+
+
 def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], panel: Panel, ink: Ink,
                    size_mm: float) -> list[Element]:
     """One part drawn in its panel: links, guides, blocks, pins, outer pairs, names and link numbers."""
@@ -156,16 +206,25 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
     for k, js in part.links.items():
         if len(js) >= 2 and max(abs(z[a] - z[b]) for a in js for b in js) > 0:
             els.append(_link_ink([z[j] for j in js], f"link-{k}", to))
+    yoke_links = {k for _, k, _ in part.yokes}
     for j, k in part.guides:
+        if k in yoke_links:                                             # drawn with the yoke's rod
+            continue
         u = e[k]
         ang = math.degrees(math.atan2(u.imag, u.real))
         d = 9.0 * np.array([math.cos(math.radians(ang)), -math.sin(math.radians(ang))])
         c = np.asarray(to(z[j]))
         els.append(Guide(tuple(c - d), tuple(c + d), name=f"guide-{j}"))
+    slotted = {j: ang for j, _, ang in part.yokes}
+    rods = {k: _yoke(z[j], e[k], ang, z, to, k, panel.box) for j, k, ang in part.yokes}
     for j, k in part.blocks:
-        u = e[k]
-        els.append(SliderBlock(to(z[j]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), length_mm=7.0,
-                               height_mm=4.0, name=f"block-{j}"))
+        if (j, k) in part.guides and k in rods:                        # the yoke's own block on the frame's guide
+            continue
+        ang = slotted.get(j, math.atan2(e[k].imag, e[k].real))
+        els.append(SliderBlock(to(z[j]), angle_deg=math.degrees(ang), length_mm=7.0, height_mm=4.0,
+                               name=f"block-{j}"))
+    for els_k, _ in rods.values():
+        els[:0] = els_k
     centre = sum(z[j] for js in part.links.values() for j in js) / max(1, sum(len(js) for js in part.links.values()))
     for j in part.fixed:
         down = z[j] - centre
@@ -182,7 +241,10 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
         if leader is not None:
             texts.append(Line(leader[0], leader[1], name=f"leader-{j}"))
     for k, js in part.links.items():
-        if len(js) >= 2:
+        if k in rods:                                                   # a yoke's number by its rod
+            lab, _ = ink.place(rods[k][1], k, size_mm=size_mm, directions=("n", "s", "ne", "se"), gap_mm=1.5,
+                               within=panel.box, leader=False)
+        elif len(js) >= 2:
             m = sum(z[j] for j in js) / len(js)
             lab, _ = ink.place(to(m), k, size_mm=size_mm, within=panel.box, leader=False)
         else:
