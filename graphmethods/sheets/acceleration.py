@@ -254,13 +254,11 @@ ACCELERATION_PLAN_LAYOUT = AccelerationPlanLayout()
 Block = AL.Block
 
 
-def _equation_texts(columns: list[list[Block]], at, half: float, lay: AccelerationPlanLayout) -> list[Element]:
-    """The equations' Text elements, the columns ``half + 8`` mm apart from ``at`` (mm); the lines of one text
-    broken (:func:`~graphmethods.sheets.acceleration_layout.wrap`) are one group of its name."""
-    x0, ey = at
+def _equation_texts(columns: list[list[Block]], origins, lay: AccelerationPlanLayout) -> list[Element]:
+    """The equations' Text elements, each column from its origin (mm); the lines of one text broken
+    (:func:`~graphmethods.sheets.acceleration_layout.wrap`) are one group of its name."""
     out: list[Element] = []
-    for c_, col in enumerate(columns):
-        cx = x0 + c_ * (half + lay.equation_columns_gap_mm)
+    for col, (cx, ey) in zip(columns, origins):
         row = 0
         for b_ in col:
             names = [nm for nm, _, _ in b_]
@@ -383,8 +381,9 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     comps = plan.components
     head = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
             nt.quantity(nt.word("acceleration.value"), "m/s²"))
-    probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00", f"{symbol(c.symbol)} = 000,000")
-                                              for c in comps), size_mm=TABLE_MM, row_height_mm=lay.row_mm)
+    probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00",        # the values as printed
+                                               f"{symbol(c.symbol)} = {K._num(nt, c.magnitude, 3)}") for c in comps),
+                  size_mm=TABLE_MM, row_height_mm=lay.row_mm)
     phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('kinematics.phi_from')}),  "
            f"{pr.speed_text(nt)}")
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
@@ -416,7 +415,7 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     column = _acceleration_column(comps, pts, head, s_a, eps if best.eps_in_column else [],
                                   (split + lay.column_x_mm, sheet.top + lay.column_x_mm), (x1, best.column_bottom),
                                   nt, lay)
-    text_els = _equation_texts(best.columns, best.text_at, best.half, lay)
+    text_els = _equation_texts(best.columns, best.origins, lay)
     scales = (s_a,)
     boxes = [b for b in (t.bbox() for t in cons_labels + names if isinstance(t, Text)) if b is not None]
     cons, leaders, cons_labels = (_broken_for_labels(x, boxes) for x in (cons, leaders, cons_labels))

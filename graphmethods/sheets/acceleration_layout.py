@@ -27,7 +27,9 @@ before anything is drawn, so the choice is deterministic.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -39,6 +41,8 @@ from graphmethods.units import convenient_at_least
 Line_ = tuple[str, str, float]
 Block = list[Line_]
 Box = tuple[float, float, float, float]
+#: the plan's area may reach this near (mm) the column of its table, when that gives it a larger scale
+CLOSE_GAP_MM = 0.5
 
 
 def _width(t: str) -> float:
@@ -120,10 +124,8 @@ class Arrangement:
         Where the column of the table begins (the table at ``split`` + the column's inset).
     columns : list of list of Block
         The text under or beside the plan, in one column or two.
-    text_at : (float, float)
-        The first line's baseline start; a second column ``half`` + the gap to its right.
-    half : float
-        A column's width when there are two.
+    origins : list of (float, float)
+        Where each column's first line begins (its baseline's start).
     eps_in_column : bool
         ε of the links under the table (else at the end of the text).
     column_bottom : float
@@ -136,8 +138,7 @@ class Arrangement:
     area: Box
     split: float
     columns: list[list[Block]]
-    text_at: tuple[float, float]
-    half: float
+    origins: list[tuple[float, float]]
     eps_in_column: bool
     column_bottom: float
     need: float
@@ -207,51 +208,122 @@ def _two_columns(blocks: list[Block]) -> list[list[Block]]:
     return [blocks]
 
 
-def _candidates(parts: Parts, lay, split_of) -> list[Arrangement]:
-    """Every arrangement that fits, in the order of preference when two give the plan the same scale."""
-    x0, _, x1, _ = parts.box
-    out: list[Arrangement] = []
+@dataclass(frozen=True)
+class _Try:
+    """One way of setting the text (ε in the column or not, values split or not) against one column."""
+
+    parts: Parts
+    lay: Any
+    blocks: Callable[[float], list[Block]]      # the text broken to a width (mm)
+    split: float
+    col_w: float
+    col_bottom: float
+    eps_in_column: bool
+    gap: float                                   # between the plan's area and the split (mm)
+
+    def make(self, kind: str, area: Box, columns: list[list[Block]], origins, split: float | None = None):
+        return Arrangement(kind, area, self.split if split is None else split, columns, origins, self.eps_in_column,
+                           self.col_bottom, plan_need(area, self.parts.arr, self.lay.margin_mm))
+
+
+def _under(t: _Try) -> list[Arrangement]:
+    """The text under the plan: the full width (clear of the column) or the plan's own."""
+    lay, x0, x1 = t.lay, t.parts.box[0], t.parts.box[2]
+    right = t.split - t.gap
+    out = []
+    for width in (x1 - x0, right - x0):
+        col = t.blocks(width)
+        area = (x0, t.parts.top - lay.above_mm, right, t.parts.bottom - _height(col, lay))
+        at = (x0, area[3] + lay.equations_below_mm)
+        if area[3] - area[1] >= lay.min_plan_mm and _clear_of(col, at, right, t.col_bottom, lay):
+            out.append(t.make("under", area, [col], [at]))
+    return out
+
+
+def _two(t: _Try) -> list[Arrangement]:
+    """The text in two columns under the plan, below the column (a slide, a triad's many equations)."""
+    lay, x0, x1 = t.lay, t.parts.box[0], t.parts.box[2]
+    if not (t.parts.slide or len(t.parts.eqs) > 4):
+        return []
+    half = (x1 - x0) / 2 - 4.0
+    cols = _two_columns(t.blocks(half))
+    area = (x0, t.parts.top - lay.above_mm, t.split - t.gap,
+            t.parts.bottom - max(_height(c, lay) for c in cols))
+    if area[3] - area[1] < lay.min_plan_mm or area[3] < t.col_bottom:
+        return []
+    y = area[3] + lay.equations_below_mm
+    return [t.make("two", area, cols, [(x0, y), (x0 + half + lay.equation_columns_gap_mm, y)])]
+
+
+def _flow(t: _Try) -> list[Arrangement]:
+    """The text run in two columns: under the plan in its width, then on under the table (a triad's many
+    equations on an upright page), as little under the plan as the room under the table allows."""
+    lay, x0, x1 = t.lay, t.parts.box[0], t.parts.box[2]
+    wa, xb = t.split - t.gap - x0, t.split + lay.column_x_mm
+    wb, top_b = x1 - xb, t.col_bottom + lay.equations_below_mm
+    in_a, in_b = t.blocks(wa), t.blocks(wb)
+    if wb < 40.0:
+        return []
+    for cut in range(1, len(in_a)):
+        col_b = in_b[cut:]
+        if top_b + _height(col_b, lay) - 2.0 > t.parts.bottom or any(dx + _width(s) > wb for b in col_b
+                                                                      for _, s, dx in b):
+            continue
+        col_a = in_a[:cut]
+        area = (x0, t.parts.top - lay.above_mm, t.split - t.gap, t.parts.bottom - _height(col_a, lay))
+        if area[3] - area[1] < lay.min_plan_mm:
+            return []
+        return [t.make("flow", area, [col_a, col_b], [(x0, area[3] + lay.equations_below_mm), (xb, top_b)])]
+    return []
+
+
+def _beside(t: _Try, split_of) -> list[Arrangement]:
+    """The text in the column under the table, the plan the whole height."""
+    lay, x0, x1 = t.lay, t.parts.box[0], t.parts.box[2]
+    col = t.blocks(x1 - split_of(t.col_w) - lay.column_x_mm)
+    widest = max(dx + _width(s) for b in col for _, s, dx in b)
+    split_b = split_of(max(t.col_w, widest + lay.column_x_mm))
+    top_b = t.col_bottom + lay.equations_below_mm
+    if split_b + lay.column_x_mm + max(widest, t.col_w) > x1 + 1e-6 or \
+            top_b + _height(col, lay) - 2.0 > t.parts.bottom:
+        return []
+    area = (x0, t.parts.top - lay.above_mm, split_b - lay.plan_gap_mm, t.parts.bottom)
+    return [t.make("beside", area, [col], [(split_b + lay.column_x_mm, top_b)], split=split_b)]
+
+
+def _wide(t: _Try) -> list[Arrangement]:
+    """The plan under the column, the whole width; the text under it."""
+    lay, x0, x1 = t.lay, t.parts.box[0], t.parts.box[2]
+    col = t.blocks(x1 - x0)
+    area = (x0, t.col_bottom + lay.plan_gap_mm, x1, t.parts.bottom - _height(col, lay))
+    if area[3] - area[1] < lay.min_plan_mm:
+        return []
+    return [t.make("wide", area, [col], [(x0, area[3] + lay.equations_below_mm)])]
+
+
+def _tries(parts: Parts, lay, split_of, gap: float) -> list[_Try]:
+    out = []
     for eps_in_column in (True, False):
         col_w, col_bottom = _column(parts, lay, eps_in_column)
         split = split_of(col_w)
-        if split + lay.column_x_mm + col_w > x1 + 1e-6 or col_bottom > parts.bottom:
+        if split + lay.column_x_mm + col_w > parts.box[2] + 1e-6 or col_bottom > parts.bottom:
             continue
         for split_values in (False, True):
             def blocks(width: float, sv: bool = split_values, ec: bool = eps_in_column) -> list[Block]:
                 return text_blocks(parts.phi, parts.eqs, parts.eps, split_values=sv, eps_in_text=not ec, width=width)
 
-            for width in (x1 - x0, split - lay.plan_gap_mm - x0):          # under the plan: full width, or its own
-                col = blocks(width)
-                h = _height(col, lay)
-                area = (x0, parts.top - lay.above_mm, split - lay.plan_gap_mm, parts.bottom - h)
-                at = (x0, area[3] + lay.equations_below_mm)
-                if area[3] - area[1] >= lay.min_plan_mm and _clear_of(col, at, split - lay.plan_gap_mm, col_bottom,
-                                                                       lay):
-                    out.append(Arrangement("under", area, split, [col], at, x1 - x0, eps_in_column, col_bottom,
-                                           plan_need(area, parts.arr, lay.margin_mm)))
-            if parts.slide or len(parts.eqs) > 4:       # a slide, or a triad's many equations: two columns
-                half = (x1 - x0) / 2 - 4.0
-                cols = _two_columns(blocks(half))
-                h = max(_height(c, lay) for c in cols)
-                area = (x0, parts.top - lay.above_mm, split - lay.plan_gap_mm, parts.bottom - h)
-                if area[3] - area[1] >= lay.min_plan_mm and area[3] >= col_bottom:
-                    out.append(Arrangement("two", area, split, cols, (x0, area[3] + lay.equations_below_mm), half,
-                                           eps_in_column, col_bottom, plan_need(area, parts.arr, lay.margin_mm)))
-            room = x1 - split_of(max(col_w, 0.0)) - lay.column_x_mm            # beside: under the table
-            col = blocks(room)
-            widest = max(dx + _width(t) for b in col for _, t, dx in b)
-            split_b = split_of(max(col_w, widest + lay.column_x_mm))
-            top_b = col_bottom + lay.equations_below_mm
-            if split_b + lay.column_x_mm + max(widest, col_w) <= x1 + 1e-6 and \
-                    top_b + _height(col, lay) - 2.0 <= parts.bottom:
-                area = (x0, parts.top - lay.above_mm, split_b - lay.plan_gap_mm, parts.bottom)
-                out.append(Arrangement("beside", area, split_b, [col], (split_b + lay.column_x_mm, top_b), room,
-                                       eps_in_column, col_bottom, plan_need(area, parts.arr, lay.margin_mm)))
-            col = blocks(x1 - x0)                                         # wide: the plan under the column
-            area = (x0, col_bottom + lay.plan_gap_mm, x1, parts.bottom - _height(col, lay))
-            if area[3] - area[1] >= lay.min_plan_mm:
-                out.append(Arrangement("wide", area, split, [col], (x0, area[3] + lay.equations_below_mm), x1 - x0,
-                                       eps_in_column, col_bottom, plan_need(area, parts.arr, lay.margin_mm)))
+            out.append(_Try(parts, lay, blocks, split, col_w, col_bottom, eps_in_column, gap))
+    return out
+
+
+def _candidates(parts: Parts, lay, split_of) -> list[Arrangement]:
+    """Every arrangement that fits, in the order of preference when two give the plan the same scale; last,
+    the plan's area reaching nearer the table (only taken when that gives a larger scale)."""
+    out: list[Arrangement] = []
+    for t in _tries(parts, lay, split_of, lay.plan_gap_mm):
+        out += _under(t) + _two(t) + _flow(t) + _beside(t, split_of) + _wide(t)
+    for t in _tries(parts, lay, split_of, CLOSE_GAP_MM):
+        out += _under(t) + _two(t) + _flow(t)
     return out
 
 

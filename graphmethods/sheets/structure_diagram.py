@@ -183,7 +183,7 @@ def _yoke(pin: complex, u: complex, slot_angle: float, z: dict[str, complex], to
     rod_mm = max(12.0, min(YOKE_ROD_MM, (_room(c, ud, box) - YOKE_SLOT_MM[1] - 9.5) / 0.62))
     off = nd if float(nd @ ud) >= 0 else -nd                             # the slot's side the rod leaves from
     corners = [c - sd * half - nd * w, c + sd * half - nd * w, c + sd * half + nd * w, c - sd * half + nd * w]
-    slot = Polyline(tuple(tuple(float(v) for v in q) for q in corners), MAIN, closed=True, name=f"yoke-{k}-slot")
+    slot = Polyline(tuple((float(q[0]), float(q[1])) for q in corners), MAIN, closed=True, name=f"yoke-{k}-slot")
     start = c + off * w
     end = start + ud * rod_mm
     rod = Line(tuple(start.tolist()), tuple(end.tolist()), MAIN, name=f"yoke-{k}-rod")
