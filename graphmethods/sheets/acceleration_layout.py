@@ -321,7 +321,9 @@ def _candidates(parts: Parts, lay, split_of) -> list[Arrangement]:
     the plan's area reaching nearer the table (only taken when that gives a larger scale)."""
     out: list[Arrangement] = []
     for t in _tries(parts, lay, split_of, lay.plan_gap_mm):
-        out += _under(t) + _two(t) + _flow(t) + _beside(t, split_of) + _wide(t)
+        out += _under(t) + _two(t) + _beside(t, split_of) + _wide(t)
+    for t in _tries(parts, lay, split_of, lay.plan_gap_mm):
+        out += _flow(t)
     for t in _tries(parts, lay, split_of, CLOSE_GAP_MM):
         out += _under(t) + _two(t) + _flow(t)
     return out
