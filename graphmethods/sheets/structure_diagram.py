@@ -33,6 +33,7 @@ from graphmethods.scene.primitives import MAIN, Circle, Style
 from graphmethods.sheets.engine import Ink, Panel, Split, extent_of, lettering, shares_for
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.kinematic_symbols import JOINT, FixedPivot, Guide, PinJoint, SliderBlock
+from graphmethods.units import convenient_at_least
 
 ROMAN = {1: "I", 2: "II", 3: "III"}
 #: room around a part's drawing for its joints' names and symbols, mm
@@ -254,6 +255,32 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
     return els + texts
 
 
+def _shares(exts: list, area: tuple[float, float, float, float], margins: tuple[float, float, float, float], *,
+            gap_mm: float, least: float = 0.18) -> tuple[float, ...]:
+    """The parts' shares of the row that give them the largest common convenient scale: the smallest μ_l at
+    which every part fits the height and all of them, each as wide as its drawing plus its margins (at least
+    ``least`` of the row), fit the width; the room left shared in proportion to those widths.
+
+    >>> _shares([(0, 0, 1, 0.5), (0, 0, 3, 0.5)], (0, 0, 212, 100), (10, 5, 10, 5), gap_mm=2.0)
+    (0.277778, 0.722222)
+    """
+    width = area[2] - area[0] - gap_mm * (len(exts) - 1)
+    height = area[3] - area[1] - margins[0] - margins[2]
+    side, floor = margins[1] + margins[3], least * width
+    w = [max(x[2] - x[0], 0.0) for x in exts]
+    h = [max(x[3] - x[1], 0.0) for x in exts]
+    if height <= 0 or width <= 0 or max(w + h) <= 0:
+        return shares_for([1.0] * len(exts), least=least)
+    mu = convenient_at_least(max(max(h) / height, 1e-12))
+    for _ in range(60):                                  # up the convenient series until the row holds them
+        if sum(max(wi / mu + side, floor) for wi in w) <= width:
+            break
+        mu = convenient_at_least(mu * 1.000001)
+    needs = [max(wi / mu + side, floor) for wi in w]
+    total = sum(needs)
+    return tuple(round(n / total, 6) for n in needs)
+
+
 def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = None, title: str | None = None,
                       phi: float | None = None) -> Scene:
     """The structure diagram of a linkage (see the module docstring).
@@ -282,10 +309,9 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
     foot = 3 * let.value_mm * 1.6
     area = (x0, sheet.top + 2.0, x1, sheet.caption_y - let.label_mm * 2.0 - foot)
     exts = [extent_of([(z[j].real, z[j].imag) for js in p.links.values() for j in js]) for p in parts]
-    widths = [max(x[2] - x[0], 0.25 * max(x[3] - x[1], 1e-9)) for x in exts]
     names = [f"part-{p.formula}" for p in parts]
-    boxes = Split("h", tuple(zip(names, shares_for(widths, least=0.18))), gap_mm=6.0).boxes(area)
     margins = (2.6 * let.label_mm + PAD_MM, PAD_MM, PAD_MM, PAD_MM)
+    boxes = Split("h", tuple(zip(names, _shares(exts, area, margins, gap_mm=6.0))), gap_mm=6.0).boxes(area)
     panels = [Panel(boxes[n], x, symbol="μ_l", unit="m", margins_mm=margins) for n, x in zip(names, exts)]
     sized = [p.scale for p, x in zip(panels, exts) if max(x[2] - x[0], x[3] - x[1]) > 0]   # a lone block: no size
     common = max(sized or [p.scale for p in panels], key=lambda s: s.per_mm)  # one scale for every part
