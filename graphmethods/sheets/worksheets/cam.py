@@ -425,10 +425,7 @@ def page(v: CamVariant, nt: Any, key: bool) -> Scene:
     sh.y = top + H + CAPTION_ROOM
     heads, vals, lines = _answers(v, nt)
     answers_and_solution(sh, heads, vals, lines)
-    scene = sh.scene((s_l, s_c))
-    # the footer at the A4 standard's smallest lettering (2.5 mm; the shared footer writes 2.3 mm)
-    return replace(scene, elements=tuple(replace(e, size_mm=2.5) if isinstance(e, Text) and e.name.startswith("footer")
-                                         else e for e in scene.elements))
+    return sh.scene((s_l, s_c))
 
 
 # registered with the other kinds (graphmethods.sheets.worksheets imports this module at its end)
