@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.scene import Page, markup
-from graphmethods.scene.elements import Element, make_label
+from graphmethods.scene.elements import Element, lettered_size, make_label
 from graphmethods.scene.primitives import THIN, Circle, Path, Polygon, Primitive, Style
 
 # ----------------------------------------------------------------------------- drawing elements
@@ -114,6 +114,9 @@ class ColorText(Element):
     color: str = "#000000"
     markup: bool = True
     name: str = "text"
+
+    def __post_init__(self):                # lettered as the sheet being drawn asks (3.5 mm and up on A1/A2)
+        object.__setattr__(self, "size_mm", lettered_size(self.size_mm))
 
     def primitives(self):
         return (make_label(self.at, self.text, size_mm=self.size_mm, anchor=self.anchor, valign=self.valign,

@@ -555,6 +555,9 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
                 ticks=ticks_T,
                 label=nt.quantity(dT, "J"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
     ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts), _clear_tick_labels(ax_T, curve_pts)
+    for k_mm, tan_psi in ((r.k_mm, r.tan_psi_max), (r.l_mm, r.tan_psi_min)):   # the key's rays from k and l
+        ray = [(origin[0], origin[1] - k_mm), (X1, origin[1] - k_mm - tan_psi * (X1 - origin[0]))]
+        ax_J = _clear_tick_labels(ax_J, ray)
     sh.add(ax_J, ax_T)
     if key:
         sh.add(*energy_mass_construction(r, origin=origin, box=box, axes=(ax_J, ax_T), nt=nt))
