@@ -43,3 +43,8 @@ KNOWN: dict[tuple[str, str, str], str] = {
     ('scotch-yoke', 'structure_diagram', 'ru'): "the yoke (link 3) is not drawn, its number lands on the block",
     ('scotch-yoke', 'structure_diagram', 'zh'): "the yoke (link 3) is not drawn, its number lands on the block",
 }
+
+#: the worksheet family (tests/test_figure_quality_worksheets.py): (subject, page, language) -> what fails;
+#: subject "KIND:SEED:N" with page "student" or "key", or "PROBLEM ANSWERS-FILE" with page "overlay"
+KNOWN_WORKSHEETS: dict[tuple[str, str, str], str] = {
+}
