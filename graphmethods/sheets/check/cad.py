@@ -778,6 +778,16 @@ def _heading_clear_of(student: StudentDrawing, elements, page) -> list[Element]:
     return _letters_clear_of(student, out, blocks)
 
 
+def _register(occ, prims) -> None:
+    """Register primitives in an occupancy, circles (point marks, rollers) by their boxes too."""
+    from graphmethods.scene.primitives import Circle, walk
+
+    occ.add_primitives(prims)
+    for p in walk(prims):
+        if isinstance(p, Circle):
+            occ.add_box((p.cx - p.r, p.cy - p.r, p.cx + p.r, p.cy + p.r))
+
+
 def _letters_clear_of(student: StudentDrawing, elements: list[Element], blocks: tuple[str, ...]) -> list[Element]:
     """The check's letters and values that the student's lines cross, each moved to the nearest free place
     within 12 mm, its leader with it (the check placed them against its own construction only); the others
@@ -787,10 +797,10 @@ def _letters_clear_of(student: StudentDrawing, elements: list[Element], blocks: 
 
     texts = [k for k, e in enumerate(elements) if isinstance(e, (Text, ColorText)) and e.name not in blocks]
     occ = Occupancy(pad_mm=0.3)
-    occ.add_primitives(student.primitives())
+    _register(occ, student.primitives())
     for k, e in enumerate(elements):
         if k not in texts:
-            occ.add_primitives(e.primitives())
+            _register(occ, e.primitives())
     boxes = {k: bbox(elements[k].primitives()) for k in texts}
     stuck = [k for k in texts if boxes[k] is not None and not occ.free([boxes[k]])[0]]
     for k in texts:

@@ -110,14 +110,39 @@ def overlay_value(v, nt) -> str:
 
 def _wrong_line(it: Item, report: CheckReport, nt) -> str:
     """One line of the overlay's red list: label, the student's value, the expected one, the unit, and why."""
+    text = nt.word("check.item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
+                   expected=overlay_value(it.expected, nt), unit=nt.unit(it.unit), why=_why(it, nt))
+    return re.sub(" {2,}", " ", text)
+
+
+def _why(it: Item, nt) -> str:
+    """Why an item is wrong, in words: its mistakes, or wrong, or carried over."""
     if it.mistakes:
         sep = "、" if get_notation(nt).code == "zh" else ", "
-        why = sep.join(nt.word("check." + code, J_e=nt.sym("dynamics.J_e")) for code in it.mistakes)
-    else:
-        why = nt.word("check.carried" if it.verdict == "carried" else "check.wrong")
-    text = nt.word("check.item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
-                   expected=overlay_value(it.expected, nt), unit=nt.unit(it.unit), why=why)
-    return re.sub(" {2,}", " ", text)
+        return sep.join(nt.word("check." + code, J_e=nt.sym("dynamics.J_e")) for code in it.mistakes)
+    return nt.word("check.carried" if it.verdict == "carried" else "check.wrong")
+
+
+def _wrong_lines(report: CheckReport, nt, *, run: int = 3) -> list[str]:
+    """The red list's lines: one per wrong item, except that ``run`` or more items in a row of one list (keys
+    ``x[1]``, ``x[2]`` …) wrong for the same reason share one line, first … last and how many (a profile's
+    positions all off by one mistake would fill the page)."""
+    wrong = [it for it in report.items if it.verdict != "ok"]
+    out, k = [], 0
+    while k < len(wrong):
+        it, base = wrong[k], wrong[k].key.split("[")[0]
+        j = k
+        while (j + 1 < len(wrong) and "[" in it.key and wrong[j + 1].key.split("[")[0] == base
+               and wrong[j + 1].verdict == it.verdict and wrong[j + 1].mistakes == it.mistakes):
+            j += 1
+        if j - k + 1 >= run:
+            first, last, n = overlay_label(it, report, nt), overlay_label(wrong[j], report, nt), j - k + 1
+            out.append(f"{first} … {last}（{n}）——{_why(it, nt)}" if get_notation(nt).code == "zh"
+                       else f"{first} … {last} ({n}) — {_why(it, nt)}")
+        else:
+            out += [_wrong_line(w, report, nt) for w in wrong[k:j + 1]]
+        k = j + 1
+    return out
 
 
 def overlay(report: CheckReport, notation) -> Scene:
@@ -163,10 +188,8 @@ def _overlay_head(report: CheckReport, nt: Notation) -> tuple[str, list[Element]
     els.append(Text((114.0, H - 7.0), f"100 {nt.unit('mm')}", size_mm=small, name="ruler-text"))
     # wrong items listed, right-aligned at the right margin (a line too long for the page is broken)
     y += 3.4 + small - 2.6
-    for it in report.items:
-        if it.verdict == "ok":
-            continue
-        for line in wrap(_wrong_line(it, report, nt), W - 24.0, small):
+    for text in _wrong_lines(report, nt):
+        for line in wrap(text, W - 24.0, small):
             els.append(ColorText((W - 12.0, y), line, size_mm=small, anchor="end", color=RED, name="wrong-list"))
             y += 3.8 * small / 2.6
     return title, els, y
