@@ -24,7 +24,7 @@ they are covered with ``check``. A page that still fails is listed in
 """
 
 from dataclasses import replace
-from functools import lru_cache
+from functools import cache
 
 import pytest
 
@@ -51,13 +51,13 @@ OVERLAYS = [("W1", "w1_mistakes.toml"), ("W1", "w1_correct.toml"), ("W3", "w3_mi
             ("shaper-cam", "shaper_cam_small.svg"), ("shaper-cam", "shaper_cam_mistakes.dxf")]
 
 
-@lru_cache(maxsize=None)
+@cache
 def worksheet_page(kind: str, number: int, page: str, lang: str):
     v = worksheets.variant(kind, seed=SEED, number=number)
     return (worksheets.key_page if page == "key" else worksheets.student_page)(v, notation=lang)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _report(problem: str, answers: str):
     from graphmethods.sheets.check import cad, cam, check
 

@@ -447,7 +447,8 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             lab, leader = occ.place_label_with_leader(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM,
                                                       gap_mm=2.0)
             if leader is not None:
-                els.append(Line(*leader, style=Style(stroke=RED, width_mm=0.18), name=f"{name}-student-{k}-leader"))
+                els.append(Line(leader[0], leader[1], style=Style(stroke=RED, width_mm=0.18),
+                                name=f"{name}-student-{k}-leader"))
             els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor,
                                     color=RED, name=f"{name}-student-{k}"))
     return els

@@ -804,24 +804,28 @@ def _letters_clear_of(student: StudentDrawing, elements: list[Element], blocks: 
     boxes = {k: bbox(elements[k].primitives()) for k in texts}
     stuck = [k for k in texts if boxes[k] is not None and not occ.free([boxes[k]])[0]]
     for k in texts:
-        if k not in stuck and boxes[k] is not None:
-            occ.add_box(boxes[k])
+        box = boxes[k]
+        if k not in stuck and box is not None:
+            occ.add_box(box)
     out = list(elements)
     shifts = sorted(((float(dx), float(dy)) for dx in np.arange(-12.0, 12.5, 1.0) for dy in np.arange(-12.0, 12.5, 1.0)
                      if 0 < dx * dx + dy * dy <= 144.0), key=lambda d: (d[0] ** 2 + d[1] ** 2, d))
     leaders = {e.name[:-len("-leader")]: k for k, e in enumerate(elements) if e.name.endswith("-leader")}
     for k in stuck:
-        x0, y0, x1, y1 = boxes[k]  # type: ignore[misc]
+        box = boxes[k]
+        if box is None:
+            continue
+        x0, y0, x1, y1 = box
         hit = np.flatnonzero(occ.free([(x0 + dx, y0 + dy, x1 + dx, y1 + dy) for dx, dy in shifts]))
         if len(hit) == 0:
             continue
         dx, dy = shifts[int(hit[0])]
         e = out[k]
-        out[k] = replace(e, at=(e.at[0] + dx, e.at[1] + dy))  # type: ignore[attr-defined]
+        out[k] = replace(e, at=(e.at[0] + dx, e.at[1] + dy))  # type: ignore[attr-defined,type-var]
         occ.add_box((x0 + dx, y0 + dy, x1 + dx, y1 + dy))
         if e.name in leaders:                       # its leader follows it (from the label to what it names)
             ln = out[leaders[e.name]]
-            out[leaders[e.name]] = replace(ln, start=(ln.start[0] + dx, ln.start[1] + dy))  # type: ignore[attr-defined]
+            out[leaders[e.name]] = replace(ln, start=(ln.start[0] + dx, ln.start[1] + dy))  # type: ignore[attr-defined,type-var]
     return out
 
 

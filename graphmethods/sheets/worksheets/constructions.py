@@ -67,7 +67,8 @@ def staircase(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, 
             lab, leader = occ.place_label_with_leader(vec.mid, t, ("e", "w", "ne", "se", "nw", "sw"), size_mm=SMALL_MM,
                                                       gap_mm=3.0)
             if leader is not None:                  # where the staircase is dense: further off, with a leader
-                texts.append(Line(*leader, style=Style(stroke=RED, width_mm=0.18), name=f"{name}-student-{k + 1}-leader"))
+                texts.append(Line(leader[0], leader[1], style=Style(stroke=RED, width_mm=0.18),
+                                  name=f"{name}-student-{k + 1}-leader"))
             texts.append(ColorText((lab.x, lab.y), t, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                                    name=f"{name}-student-{k + 1}"))
     return els + vecs + texts

@@ -193,6 +193,7 @@ class Sheet:
                       for b in (label_bbox(p),))
         for k in grids:
             g = self.els[k]
+            assert isinstance(g, Grid)
             x0, y0, x1, y1 = g.box
             inside = tuple(b for b in boxes if b[0] < x1 and x0 < b[2] and b[1] < y1 and y0 < b[3])
             self.els[k] = replace(g, holes=g.holes + inside)
