@@ -56,7 +56,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.render.dxf import CadDrawing, CadText
-from graphmethods.scene import Page, Scene, Text
+from graphmethods.scene import Page, Scene
 from graphmethods.scene.elements import CAP, Element
 from graphmethods.scene.primitives import Group, Label, Path, Polygon, Style
 from graphmethods.sheets.check.checking import check
@@ -65,7 +65,7 @@ from graphmethods.sheets.check.problems import CycleData, LinkageData, load_prob
 from graphmethods.sheets.check.report import TOL_MM, Checker, CheckReport, Item
 from graphmethods.sheets.check.svg_reader import read_svg
 from graphmethods.sheets.check.typed_answers import validate_answers
-from graphmethods.sheets.worksheets.elements import RED, ColorText
+from graphmethods.sheets.worksheets.elements import RED
 from graphmethods.sheets.worksheets.variants import SEGMENTS
 from graphmethods.units import input_file
 
@@ -732,101 +732,13 @@ def overlay_on_drawing(report: CheckReport, *, notation="en") -> Scene:
     and the list of wrong items) in red over the student's own drawing."""
     if not isinstance(report, DrawingReport) or report.drawing is None:
         raise InputError("an overlay over a drawing needs the report of check_drawing")
+    from graphmethods.sheets.check.overlay_placement import heading_clear_of
+
     over = report.overlay(notation=notation)
     student = StudentDrawing(report.drawing, report.page.height_mm, report.shift)
     els: list[Element] = [student]
-    els += [InRed(e, name=f"check-{e.name}") for e in _heading_clear_of(student, over.elements, report.page)]
+    els += [InRed(e, name=f"check-{e.name}") for e in heading_clear_of(student, over.elements, report.page)]
     return Scene(report.page, tuple(els), title=over.title, notation=over.notation, name="overlay-on-drawing")
-
-
-def _heading_clear_of(student: StudentDrawing, elements, page) -> list[Element]:
-    """The overlay's elements with its heading (title and how to print) and its list of wrong items each
-    moved, as a block, to the nearest place free of the student's drawing (their frame, title and lines) and
-    of the check's construction, searched down the page and sideways; a block with no free place stays."""
-    from graphmethods.scene.elements import bbox
-    from graphmethods.sheets.layout import Occupancy
-
-    occ = Occupancy(pad_mm=0.8)
-    occ.add_primitives(student.primitives())
-    blocks = ("overlay-title", "overlay-howto", "wrong-list")
-    for e in elements:                              # and of the check's own construction
-        if e.name not in blocks:
-            occ.add_primitives(e.primitives())
-    W, H = page.width_mm, page.height_mm
-    moves: dict[str, tuple[float, float]] = {}
-    for names in (("overlay-title", "overlay-howto"), ("wrong-list",)):
-        block = [e for e in elements if e.name in names]
-        box = bbox([p for e in block for p in e.primitives()]) if block else None
-        if box is None:
-            continue
-        x0, y0, x1, y1 = box
-        right = names == ("wrong-list",)
-        shifts = sorted(((dx, dy) for dy in np.arange(0.0, H - 20.0 - y1, 2.0)
-                         for dx in np.arange(0.0, W - (x1 - x0), 4.0) * (-1.0 if right else 1.0)
-                         if 8.0 <= x0 + dx and x1 + dx <= W - 8.0), key=lambda d: (abs(d[0]) + d[1], d[1]))
-        if not shifts:
-            continue
-        free = occ.free([(x0 + dx, y0 + dy, x1 + dx, y1 + dy) for dx, dy in shifts])
-        hit = np.flatnonzero(free)
-        if len(hit) == 0:
-            continue
-        dx, dy = shifts[int(hit[0])]
-        occ.add_box((x0 + dx, y0 + dy, x1 + dx, y1 + dy))
-        moves.update({n: (float(dx), float(dy)) for n in names})
-    out = [replace(e, at=(e.at[0] + moves[e.name][0], e.at[1] + moves[e.name][1])) if e.name in moves else e
-           for e in elements]
-    return _letters_clear_of(student, out, blocks)
-
-
-def _register(occ, prims) -> None:
-    """Register primitives in an occupancy, circles (point marks, rollers) by their boxes too."""
-    from graphmethods.scene.primitives import Circle, walk
-
-    occ.add_primitives(prims)
-    for p in walk(prims):
-        if isinstance(p, Circle):
-            occ.add_box((p.cx - p.r, p.cy - p.r, p.cx + p.r, p.cy + p.r))
-
-
-def _letters_clear_of(student: StudentDrawing, elements: list[Element], blocks: tuple[str, ...]) -> list[Element]:
-    """The check's letters and values that the student's lines cross, each moved to the nearest free place
-    within 12 mm, its leader with it (the check placed them against its own construction only); the others
-    stay."""
-    from graphmethods.scene.elements import bbox
-    from graphmethods.sheets.layout import Occupancy
-
-    texts = [k for k, e in enumerate(elements) if isinstance(e, (Text, ColorText)) and e.name not in blocks]
-    occ = Occupancy(pad_mm=0.3)
-    _register(occ, student.primitives())
-    for k, e in enumerate(elements):
-        if k not in texts:
-            _register(occ, e.primitives())
-    boxes = {k: bbox(elements[k].primitives()) for k in texts}
-    stuck = [k for k in texts if boxes[k] is not None and not occ.free([boxes[k]])[0]]
-    for k in texts:
-        box = boxes[k]
-        if k not in stuck and box is not None:
-            occ.add_box(box)
-    out = list(elements)
-    shifts = sorted(((float(dx), float(dy)) for dx in np.arange(-12.0, 12.5, 1.0) for dy in np.arange(-12.0, 12.5, 1.0)
-                     if 0 < dx * dx + dy * dy <= 144.0), key=lambda d: (d[0] ** 2 + d[1] ** 2, d))
-    leaders = {e.name[:-len("-leader")]: k for k, e in enumerate(elements) if e.name.endswith("-leader")}
-    for k in stuck:
-        box = boxes[k]
-        if box is None:
-            continue
-        x0, y0, x1, y1 = box
-        hit = np.flatnonzero(occ.free([(x0 + dx, y0 + dy, x1 + dx, y1 + dy) for dx, dy in shifts]))
-        if len(hit) == 0:
-            continue
-        dx, dy = shifts[int(hit[0])]
-        e = out[k]
-        out[k] = replace(e, at=(e.at[0] + dx, e.at[1] + dy))  # type: ignore[attr-defined,type-var]
-        occ.add_box((x0 + dx, y0 + dy, x1 + dx, y1 + dy))
-        if e.name in leaders:                       # its leader follows it (from the label to what it names)
-            ln = out[leaders[e.name]]
-            out[leaders[e.name]] = replace(ln, start=(ln.start[0] + dx, ln.start[1] + dy))  # type: ignore[attr-defined,type-var]
-    return out
 
 
 def overlay_dxf(report: CheckReport, *, notation="en") -> bytes:
