@@ -22,7 +22,7 @@ from graphmethods.scene import (
     markup,
     notation as get_notation,
 )
-from graphmethods.scene.elements import Element, Line, Point, label_bbox
+from graphmethods.scene.elements import Element, Line, Point, Region, label_bbox
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import THIN, Label, walk
 from graphmethods.sheets.worksheets.constructions import (
@@ -187,8 +187,8 @@ class Sheet:
         grids = [k for k, e in enumerate(self.els) if isinstance(e, Grid)]
         if not grids:
             return
-        boxes = tuple((b[0] - 0.4, b[1] - 0.3, b[2] + 0.4, b[3] + 0.3)
-                      for e in self.els if not isinstance(e, Grid)
+        boxes = tuple((b[0] - 0.4, b[1] - 0.3, b[2] + 0.4, b[3] + 0.3)   # tables stand off the paper, hatches
+                      for e in self.els if not isinstance(e, (Grid, Table, Region))        # have no words
                       for p in walk(e.primitives()) if isinstance(p, Label) and p.text.strip()
                       for b in (label_bbox(p),))
         for k in grids:
