@@ -147,36 +147,3 @@ def test_lists_cut_by_hand_are_indexed_anew():
     occ.add_box((0.0, 0.0, 1.0, 1.0))
     assert occ.free([(40, 9, 60, 11), (41, 20.5, 45, 21.5)]).tolist() == [True, True]
     assert occ.is_free((0.5, 0.5, 0.8, 0.8)) is False
-
-
-short = st.tuples(st.floats(-50.0, 50.0), st.floats(-50.0, 50.0), st.floats(-3.0, 3.0), st.floats(-3.0, 3.0))
-
-
-@settings(max_examples=150, deadline=None)
-@given(st.lists(st.one_of(short.map(lambda t: ((t[0], t[1]), (t[0] + t[2], t[1] + t[3]))),
-                          st.tuples(point, point),
-                          st.sampled_from([((1e13, 0.0), (1e13, 1.0)), ((float("nan"), 0.0), (1.0, 1.0)),
-                                           ((0.0, float("inf")), (0.0, float("inf"))), ((0.0, 8.0), (0.0, 8.0))])),
-                max_size=60))
-def test_segments_filed_in_bulk_are_filed_as_one_by_one(segs):
-    """``InkIndex.add_segments`` (short segments' cells found for all at once) files every segment under the
-    cells ``add_segment`` files it under."""
-    from graphmethods.sheets.ink_index import InkIndex
-
-    bulk, single = InkIndex(), InkIndex()
-    bulk.add_segments(3, segs)
-    for k, ((x0, y0), (x1, y1)) in enumerate(segs, 3):
-        single.add_segment(k, x0, y0, x1, y1)
-    as_sets = {cell: set(ks) for cell, ks in single._seg_cells.items()}
-    assert {cell: set(ks) for cell, ks in bulk._seg_cells.items()} == as_sets
-    assert sorted(bulk._seg_all) == sorted(single._seg_all) and bulk._seg_always == single._seg_always
-
-
-@settings(max_examples=60, deadline=None)
-@given(st.lists(short, min_size=40, max_size=120), st.lists(box, min_size=8, max_size=16))
-def test_many_candidates_against_many_segments_decide_as_the_plain_test(segs, probes):
-    """Enough boxes and near segments that ``free`` pairs them over numpy arrays: the same decisions."""
-    occ = Occupancy()
-    for x, y, dx, dy in segs:
-        occ.add_line(((x / 2 + 20, y / 2 + 20), (x / 2 + 20 + dx, y / 2 + 20 + dy)))
-    assert occ.free(probes).tolist() == [plain_is_free(occ, b) for b in probes]

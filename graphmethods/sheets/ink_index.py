@@ -20,9 +20,7 @@ candidates only, so the answers are those of testing every item, to the bit.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
-
-import numpy as np
+from collections.abc import Iterable
 
 #: the grid's cell (mm): about a label's size, so a candidate box looks at one to four cells
 CELL_MM = 8.0
@@ -32,9 +30,6 @@ MARGIN_MM = 1e-3
 #: an item covering more cells than this (a panel kept clear, a title band, a line across the sheet) is
 #: kept in a list tested always; a query covering more looks at everything
 _BIG_CELLS = 512
-#: coordinates (mm) within which :meth:`InkIndex.add_segments` files segments in bulk (cell numbers exact as
-#: machine integers); others, non-finite ones included, are filed one by one
-_PLAIN_MM = 1e12
 
 
 class InkIndex:
@@ -78,30 +73,6 @@ class InkIndex:
                 xa, xb = xb, xa
             for q in range(floor((xa - m) / c), floor((xb + m) / c) + 1):
                 cells.setdefault((q, r), []).append(k)
-
-    def add_segments(self, first: int, segments: Sequence[tuple[tuple[float, float], tuple[float, float]]]) -> None:
-        """File segments numbered ``first``, ``first + 1``, ... (``((x0, y0), (x1, y1))`` each, page mm): as
-        :meth:`add_segment` one by one (the same cells), the cells of the many that fit in one cell found
-        for all at once."""
-        n = len(segments)
-        if n < 16:
-            for k, ((x0, y0), (x1, y1)) in enumerate(segments, first):
-                self.add_segment(k, x0, y0, x1, y1)
-            return
-        xy = np.asarray(segments, dtype=float).reshape(n, 4)
-        lo, hi = np.minimum(xy[:, :2], xy[:, 2:]), np.maximum(xy[:, :2], xy[:, 2:])
-        c, m = self.cell, MARGIN_MM
-        with np.errstate(invalid="ignore", over="ignore"):
-            cell_lo, cell_hi = np.floor((lo - m) / c), np.floor((hi + m) / c)    # the arithmetic of add_segment
-            one = np.all(cell_lo == cell_hi, axis=1) & np.all(np.abs(xy) < _PLAIN_MM, axis=1)   # one cell
-        cells = self._seg_cells
-        fast = np.flatnonzero(one).tolist()
-        for i, (q, r) in zip(fast, cell_lo[one].astype(int).tolist()):
-            cells.setdefault((q, r), []).append(first + i)
-        self._seg_all.extend(first + i for i in fast)
-        for i in np.flatnonzero(~one).tolist():
-            (x0, y0), (x1, y1) = segments[i]
-            self.add_segment(first + i, x0, y0, x1, y1)
 
     def add_box(self, k: int, box: tuple[float, float, float, float]) -> None:
         """File box number ``k`` (page mm) under the cells it covers."""

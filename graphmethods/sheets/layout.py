@@ -165,7 +165,6 @@ class Occupancy:
         self._box = np.empty((0, 4))
         self._index = InkIndex()
         self._seg_ext: list[tuple[float, float, float, float]] = []     # x_lo, y_lo, x_hi, y_hi of each segment
-        self._ext = np.empty((0, 4))            # the same as an array (filled when first compared in bulk)
         self._boxes_indexed = 0
 
     def add_line(self, points) -> None:
@@ -215,12 +214,12 @@ class Occupancy:
             return idx
         if len(ext) > len(self.segments) or self._boxes_indexed > len(self.boxes):     # the lists were cut: anew
             self._index, self._boxes_indexed, self._seg = InkIndex(), 0, np.empty((0, 4))
-            self._box, self._seg_ext, self._ext = np.empty((0, 4)), [], np.empty((0, 4))
+            self._box, self._seg_ext = np.empty((0, 4)), []
             return self._indexed()
-        first = len(ext)
-        for (x0, y0), (x1, y1) in self.segments[first:]:
+        for k in range(len(ext), len(self.segments)):
+            (x0, y0), (x1, y1) = self.segments[k]
             ext.append((min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)))
-        idx.add_segments(first, self.segments[first:])
+            idx.add_segment(k, x0, y0, x1, y1)
         for k in range(self._boxes_indexed, len(self.boxes)):
             idx.add_box(k, self.boxes[k])
         self._boxes_indexed = len(self.boxes)
@@ -301,8 +300,13 @@ class Occupancy:
             return np.array(ok, dtype=bool)
         d = self.pad + TIE_MM                      # as _grown(box, TIE_MM)
         grown = {a: (rows[a][0] + -d, rows[a][1] + -d, rows[a][2] + d, rows[a][3] + d) for a in live}
+        e, ext = _NEAR_MM, self._seg_ext
         near = self._near(union_box(grown.values()), index)
-        pairs = self._near_pairs(grown, near)
+        pairs: list[tuple[int, int]] = []
+        for a, g in grown.items():              # each box against the segments near it (as _near)
+            x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
+            pairs.extend((a, k) for k in near
+                         if ext[k][0] <= x1 and ext[k][2] >= x0 and ext[k][1] <= y1 and ext[k][3] >= y0)
         if len(pairs) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
             segs = self.segments
             for a, k in pairs:
@@ -314,30 +318,6 @@ class Occupancy:
             for a in np.unique(i[hit]).tolist():
                 ok[a] = False
         return np.array(ok, dtype=bool)
-
-    def _near_pairs(self, grown: dict[int, Box], near: list[int]) -> list[tuple[int, int]]:
-        """The pairs (box, segment) of the boxes ``grown`` and the segments ``near`` whose extent comes within
-        ``_NEAR_MM`` of the box (as :meth:`_near`), box by box, each box's in the order of ``near``; many
-        pairs are compared over numpy arrays (the same comparisons of the same floats)."""
-        e = _NEAR_MM
-        if len(near) * len(grown) <= 4 * _FEW:
-            ext = self._seg_ext
-            pairs: list[tuple[int, int]] = []
-            for a, g in grown.items():
-                x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
-                pairs.extend((a, k) for k in near
-                             if ext[k][0] <= x1 and ext[k][2] >= x0 and ext[k][1] <= y1 and ext[k][3] >= y0)
-            return pairs
-        if len(self._ext) != len(self._seg_ext):
-            self._ext = np.vstack((self._ext, np.asarray(self._seg_ext[len(self._ext):], dtype=float)))
-        k = np.asarray(near)
-        lo_x, lo_y, hi_x, hi_y = self._ext[k].T
-        gb = np.asarray(list(grown.values()))
-        gx0, gy0 = (gb[:, 0] - e)[:, None], (gb[:, 1] - e)[:, None]
-        gx1, gy1 = (gb[:, 2] + e)[:, None], (gb[:, 3] + e)[:, None]
-        rows, cols = np.nonzero((lo_x <= gx1) & (hi_x >= gx0) & (lo_y <= gy1) & (hi_y >= gy0))
-        boxes = np.asarray(list(grown))
-        return list(zip(boxes[rows].tolist(), k[cols].tolist()))
 
     def crossings(self, boxes) -> np.ndarray:
         """How many registered segments pass through each box grown by the padding (an int per box)."""
