@@ -150,14 +150,22 @@ def test_no_figure_function_over_80_lines():
 
 
 def test_a_flywheel_without_figures_loads_no_figure_layer():
-    """`graphmethods flywheel` that writes no file is numbers only: no scene, render or sheets (start-up time)."""
-    code = ("import sys\nfrom graphmethods.cli import main\n"
-            "main(['flywheel', '--areas', '-50', '550', '-100', '125', '-500', '25', '-50', '--n', '600',"
-            " '--delta', '1/300'])\n"
-            "print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('graphmethods.')"
-            " and m.split('.')[1] in ('scene', 'render', 'sheets')}), file=sys.stderr)")
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert proc.stderr.strip() == "[]" and "J_F" in proc.stdout
+    """`graphmethods flywheel --json` that writes no file is numbers only: no scene, render or sheets (start-up
+    time). Its text report speaks --lang with the figures' symbols and digits: the notation of scene, and still
+    neither render nor sheets."""
+    def layers(*extra: str) -> tuple[str, str]:
+        code = ("import sys\nfrom graphmethods.cli import main\n"
+                "main(['flywheel', '--areas', '-50', '550', '-100', '125', '-500', '25', '-50', '--n', '600',"
+                f" '--delta', '1/300'{''.join(f', {e!r}' for e in extra)}])\n"
+                "print(sorted({m.split('.')[1] for m in sys.modules if m.startswith('graphmethods.')"
+                " and m.split('.')[1] in ('scene', 'render', 'sheets')}), file=sys.stderr)")
+        proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+        return proc.stderr.strip(), proc.stdout
+
+    err, out = layers("--json")
+    assert err == "[]" and "J_F" in out
+    err, out = layers()
+    assert err == "['scene']" and "J_F = 43.69" in out
 
 
 def test_the_sheets_package_imports_its_modules_when_asked():

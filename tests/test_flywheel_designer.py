@@ -161,7 +161,7 @@ def test_old_unit_flywheel_moment(capsys, design):
     assert d["QD2_kgf_m2"] == pytest.approx(weight_N / 9.80665 * d["D"] ** 2)
     assert d["GD2_N_m2"] == pytest.approx(weight_N * d["D"] ** 2)
     code, out, _ = run(capsys, "flywheel", *W1, "--delta", "1/300", *design)
-    assert "QD2_kgf_m2" in out and "mD2" in out
+    assert "QD² = " in out and "mD² = " in out and "GD² = " in out     # the text names them as the figure does
 
 
 def test_chi_and_tan_mu_small():

@@ -95,8 +95,9 @@ def test_the_finished_figure_is_what_the_figure_function_draws(case, figure):
 
         pr = SA._Problem(obj, m=None, omega_1=None, epsilon_1=0.0)
         direct = SA.acceleration_plan(obj, SA._default_position(pr.plans(), pr.linkage), page=page, title_block=tb)
-    elif figure == "energy-indicator":
-        direct = energy_indicator(obj, page=page, title_block=tb)
+    elif figure == "energy-indicator":                 # on a slide its vectors spread wider than on paper
+        direct = energy_indicator(obj, page=page, title_block=tb,
+                                  step_mm=S.slide_step_mm(len(obj.excess_work.work), page))
     elif figure == "kinematic-diagrams":
         direct = C.kinematic_diagrams(obj, page=page, title_block=tb)
     elif figure == "work-diagrams":

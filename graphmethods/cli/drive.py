@@ -84,11 +84,44 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json_text(out, indent=1), file=stream)
         return 0
-    width = max(map(len, out))
-    for key, value in out.items():
-        if isinstance(value, list):
-            value = ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in value)
-        elif isinstance(value, float):
-            value = f"{value:.6g}"
-        print(f"{key.ljust(width)}  {value}", file=stream)
+    print("\n".join(report_lines(chain, args.lang, None if path is None or path.to_stdout else str(path))), file=stream)
     return 0
+
+
+def report_lines(chain, lang: str, figure: str | None = None) -> list[str]:
+    """The reduced chain as text in ``lang``: the figure's symbols (J', c', J_п in Russian), units and digits
+    (J and c to 5 significant digits, u and the frequencies to 4, as its table and notes print them).
+
+    >>> from graphmethods.dynamics.multimass import Mass, Shaft, reduce_chain
+    >>> d = reduce_chain([Mass("1", 0.08, 6.0, 30.0), Mass("2", 12.0)], [Shaft("1", 2000.0, 6.0)])
+    >>> print("\\n".join(report_lines(d, "ru")[:2]))
+    массы                          1; 2
+    J', кг·м²                      2,88; 12
+    """
+    import math
+
+    from graphmethods.scene import markup
+    from graphmethods.scene.notation import get
+
+    nt = get(lang)
+    sep = nt.list_separator
+
+    def nums(values, sig: int) -> str:
+        return sep.join(nt.number(float(v), sig=sig) for v in values)
+
+    sym = markup.typed
+    rows = [(nt.word("drive.masses"), sep.join(chain.names)),
+            (nt.quantity("J'", "kg·m²"), nums(chain.J, 5)),
+            (nt.word("drive.shafts"), sep.join(chain.shaft_names)),
+            (nt.quantity("c'", "N·m/rad"), nums(chain.c, 5)),
+            (nt.quantity("M'", "N·m"), nums(chain.M, 5)),
+            (nt.quantity(sym(nt.sym("dynamics.J_e")) + " = ΣJ'", "kg·m²"), nt.number(chain.J_e, sig=5)),
+            (nt.quantity(sym(nt.sym("dynamics.M_e")) + " = ΣM'", "N·m"), nt.number(chain.M_e, sig=5)),
+            (nt.quantity(f"{nt.word('drive.freq')} ω", "rad/s"), nums(chain.natural_frequencies, 4)),
+            (nt.quantity(f"{nt.word('drive.freq')} f", "Hz"),
+             nums([w / (2 * math.pi) for w in chain.natural_frequencies], 4))]
+    width = max(30, max(len(k) for k, _ in rows))
+    lines = [f"{k.ljust(width)} {v}" for k, v in rows]
+    if figure is not None:
+        lines.append(nt.word("flywheel.report_wrote", f=figure))
+    return lines

@@ -313,34 +313,10 @@ def _solve(args: argparse.Namespace, cycle: Any, mc: Any, machine: Any) -> tuple
 
 def _print_report(args: argparse.Namespace, out: dict[str, Any], cycle: Any, mc: Any, machine: Any, *,
                   omega_m: float, J_e: float) -> None:
-    """The results as text: the excess-work table, ω_m, [δ] and J_F (or δ), the flywheel's sizes, files written."""
+    """The results as text in ``--lang``: the excess-work table, ω_m, [δ] and J_F (or δ), the flywheel's sizes,
+    files written; every number as the figures print it (:mod:`graphmethods.cli.flywheel_report`)."""
+    from graphmethods.cli.flywheel_report import report_lines
+
     check_finite(out)
-    print("Excess-work table")
-    print(cycle.to_text())
-    if mc is not None:
-        print("\n".join(flywheel_moments.text_lines(out)))
-    print(f"ω_m = {omega_m:.6g} rad/s (n = {out['n_rpm']:.6g} rev/min)")
-    if "omega_at_boundaries" in out:
-        print("ω at the boundaries, rad/s: " + ", ".join(f"{lab} {w:.6g}" for lab, w in
-                                                         zip(cycle.labels, out["omega_at_boundaries"])))
-    if args.delta is not None:
-        if machine is not None:
-            print(f"[δ] from the table: {machine.name(args.lang)} {machine.range_text()}, the {args.machine_end} end "
-                  f"1/{1 / out['delta']:.4g}")
-        print(f"[δ] = {out['delta']:.6g}; ω_max = {out['omega_max']:.6g}, ω_min = {out['omega_min']:.6g} rad/s")
-        print(f"required total inertia ΔW_max/(ω_m²[δ]) = {out['J_total']:.6g} kg·m²")
-        print(f"J_F = {out['J_F']:.6g} kg·m²" + (f" (after subtracting J_e = {J_e:.6g})" if J_e else ""))
-        if not out["flywheel_needed"]:
-            print("no flywheel is needed: the mechanism's own inertia already keeps δ within [δ]")
-    else:
-        print(f"δ = ΔW_max/(ω_m² J) = {out['delta']:.6g} (1/{1 / out['delta']:.4g}) with J = {out['J']:.6g} kg·m²"
-              if out["delta"] > 0 else "δ = 0: no fluctuation")
-    for key in ("rim", "disc"):
-        if key in out:
-            d = out[key]
-            print(f"{key} flywheel ({d['material']}): " + ", ".join(
-                f"{k} {v:.4g}" for k, v in d.items() if isinstance(v, float)) + (
-                "" if d["speed_ok"] else "  -- the rim speed is OVER the limit: a smaller D, steel, or a faster shaft"))
-    for key in ("figure", "hyperbola"):
-        if key in out:
-            print(f"wrote {out[key]}")
+    print("\n".join(report_lines(out, cycle, lang=args.lang, omega_m=omega_m, J_e=J_e, mc=mc, machine=machine,
+                                 machine_end=args.machine_end)))

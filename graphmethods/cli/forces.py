@@ -127,8 +127,9 @@ def result(case, *, phi_deg: float | None = None, position: int | None = None, m
     }
 
 
-def _text(res: dict[str, Any], lang: str) -> str:
-    """The force analysis as the table ``graphmethods forces`` prints, in the words of ``lang``."""
+def _text(res: dict[str, Any], lang: str, title: str | None = None) -> str:
+    """The force analysis as the table ``graphmethods forces`` prints, in the words of ``lang``; ``title`` is
+    the problem's title in that language (the sheet's), else the problem's name."""
     from graphmethods.scene.notation import get
     from graphmethods.scene.numbers import within_roundoff
 
@@ -140,7 +141,7 @@ def _text(res: dict[str, Any], lang: str) -> str:
     where = (f"{nt.word('dynamics.position')} {res['position']} / {res['m']}{sep}"
              if res["position"] is not None else "")
     weights = nt.word("forces.gravity_yes") if res["gravity"] else nt.word("forces.gravity_no")
-    lines = [f"{nt.word('forces.report_title')}{nt.colon}{res['case'] or res['kind']}  ({res['source']})",
+    lines = [f"{nt.word('forces.report_title')}{nt.colon}{title or res['case'] or res['kind']}  ({res['source']})",
              (f"{where}{nt.word('forces.crank_angle')} = {res['phi_deg']:.4f}°{sep}"
               f"{nt.word('forces.omega_1')} = {res['omega_1']:.6g} {nt.unit('rad/s')} ({sense}){sep}"
               f"{nt.word('forces.epsilon_1')} = {res['epsilon_1']:g} {nt.unit('rad/s²')}{sep}"
@@ -220,7 +221,9 @@ def run(args) -> int:
         print(json_text(res, indent=1), file=out)
     else:
         check_finite({k: v for k, v in res.items() if k != "pairs"})
-        print(_text(res, args.lang), file=out)
+        from graphmethods.problems.reference_cases import title_of
+
+        print(_text(res, args.lang, title_of(case).title_in(args.lang)), file=out)
     if data is not None and sheet is not None:     # written last: an error above leaves no file behind
         import sys
 

@@ -201,25 +201,97 @@ def run(args: argparse.Namespace) -> int:
     summary.update(res.summary())
     if args.figures is not None:
         summary["figures"] = [str(f) for f in _write_figures(res, args, problem=m.name, cycle=m.problem,
-                                                             case=None if m.problem is not None else args.case)]
+                                                             case=None if m.problem is not None else args.case,
+                                                             title=_title(m, args))]
     if args.json:
         out = {"t": res.t.tolist(), "phi": res.phi.tolist(), "omega": res.omega.tolist(),
                "epsilon": res.epsilon.tolist(), "summary": summary}
         print(json.dumps(out))
         return 0
-    steady: dict | None = summary.pop("steady", None)  # type: ignore[assignment]
-    width = max(map(len, summary))
-    for key, value in summary.items():
-        print(f"{key.ljust(width)}  {value:.9g}" if isinstance(value, float) else f"{key.ljust(width)}  {value}")
-    if steady is not None:
-        print("steady state:")
-        for key, value in steady.items():
-            shown = f"{value:.9g}" if isinstance(value, float) else f"{value}"
-            print(f"  {key.ljust(width)}  {shown}")
+    print("\n".join(report_lines(summary, args.lang, motor=args.motor, M_d=m.M_d)))
     return 0
 
 
-def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
+def _label(key: str, nt) -> tuple[str, int]:
+    """A summary key as the text names it in ``nt``'s language, and the significant digits of its value:
+    ``omega_max_run`` -> "ω_max_run, рад/с" (6 digits, ω's rule), ``error_estimate_omega`` -> words (3)."""
+    from graphmethods.scene import markup
+
+    words = {"steps": "motion.steps", "periods": "motion.periods", "motor_ratio": "motion.motor_ratio",
+             "energy_residual": "motion.energy_residual"}
+    if key in words:
+        return nt.word(words[key]), 6
+    errors = {"error_estimate_omega": "motion.error_omega", "error_extremes_omega": "motion.error_extremes",
+              "omega_remaining": "motion.error_remaining"}
+    if key in errors:
+        return nt.quantity(nt.word(errors[key]), "rad/s"), 3
+    if key == "J_F":
+        return nt.quantity(markup.typed(nt.sym("dynamics.J_F")), "kg·m²"), 4
+    if key == "J_rotor_reduced":
+        return nt.quantity("J_rotor·u²", "kg·m²"), 4
+    from graphmethods.cli._report import label
+
+    return label(key.replace("omega0", "omega_0").replace("phi0", "phi_0").replace("t0", "t_0"), nt), 6
+
+
+def report_lines(summary: dict, lang: str, *, motor: str | None = None, M_d: float | None = None) -> list[str]:
+    """The summary of a run as text in ``lang``: each value named by its symbol and unit in that language,
+    written with its decimal sign (the JSON keys are the English identifiers the README lists).
+
+    >>> print("\\n".join(report_lines({"case": "W4", "omega_max_run": 11.80126716, "ended_by": "turns"}, "ru")))
+    задача                          W4
+    ω_max_run, рад/с                11,8013
+    окончание                       заданное число оборотов
+    """
+    from graphmethods.scene import markup
+    from graphmethods.scene.notation import get
+
+    nt = get(lang)
+    steady = summary.get("steady")
+    rows: list[tuple[str, str]] = []
+    Md = markup.typed(nt.sym("M_d"))
+    for key, value in summary.items():
+        if key == "steady":
+            continue
+        if key == "case":
+            rows.append((nt.word("check.col_problem"), str(value)))
+        elif key == "drive":
+            text = (nt.word("motion.drive_motor", spec=motor) if motor else
+                    nt.word("motion.drive_constant", Md=Md, M=nt.number(M_d, sig=6), u=nt.unit("N·m"))
+                    if M_d is not None else nt.word("motion.drive_curve", Md=Md))
+            rows.append((nt.word("motion.drive"), text))
+        elif key == "ended_by":
+            rows.append((nt.word("motion.ended_by"), nt.word(f"motion.ended_{value}")
+                         if f"motion.ended_{value}" in nt.words else str(value)))
+        else:
+            label, sig = _label(key, nt)
+            rows.append((label, nt.number(float(value), sig=sig) if isinstance(value, (int, float)) else str(value)))
+    width = max(30, max(len(k) for k, _ in rows))
+    lines = [f"{k.ljust(width)}  {v}" for k, v in rows]
+    if isinstance(steady, dict):
+        lines.append(nt.word("motion.steady"))
+        for key, value in steady.items():
+            label, sig = _label(key, nt)
+            shown = nt.number(float(value), sig=sig) if isinstance(value, (int, float)) else str(value)
+            lines.append(f"  {label.ljust(width)}{shown}")
+    return lines
+
+
+def _title(m, args) -> str:
+    """The problem's name on the figures' title block, in ``--lang`` (the press's "дезаксиальный
+    кривошипно-ползунный пресс", not "press"); a cycle problem or a file without a title keeps its name."""
+    if m.problem is not None:
+        return m.name
+    try:
+        from graphmethods.problems.builtin import case
+        from graphmethods.problems.reference_cases import title_of
+
+        return title_of(case(args.case)).title_in(args.lang) or m.name
+    except InputError:                    # a name is only a caption: the problem's own name then
+        return m.name
+
+
+def _write_figures(res, args, *, problem: str, cycle=None, case=None, title: str | None = None) -> list:
     """Build the figures (ω(t), ω(φ), ε(φ); and for a cycle problem or a linkage ``case`` with n and [δ]
     the three-panel figure of its steady cycle), then write them (an existing file is kept unless --force)."""
     import pathlib
@@ -232,7 +304,7 @@ def _write_figures(res, args, *, problem: str, cycle=None, case=None) -> list:
     out = pathlib.Path(args.figures)
     if out.exists() and not out.is_dir():
         raise InputError(f"--figures {out}: it is a file; give a directory")
-    scenes = motion_figures(res, notation=args.lang, problem=problem)
+    scenes = motion_figures(res, notation=args.lang, problem=title or problem)
     if cycle is not None:                 # a cycle problem: also M_d/M_r, ΔE and ω on one φ axis
         from graphmethods.sheets.cycle_panels import cycle_panels
 

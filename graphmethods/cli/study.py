@@ -129,26 +129,34 @@ def run(args) -> int:
     if args.json:
         print(json_text(out, indent=1), file=stream)
     else:
-        _print_text(out, stream)
+        _print_text(out, stream, args.lang)
     if sheet is not None and not sheet.to_stdout:
         print(f"wrote {sheet} ({args.page}, {args.lang})", file=sys.stderr if args.json else sys.stdout)
     return 0
 
 
-def _print_text(out: dict, stream) -> None:
-    """The study as ``key  value`` lines, then the table at the given angles."""
+def _print_text(out: dict, stream, lang: str = "en") -> None:
+    """The study as ``quantity  value`` lines in ``lang`` (each key by its symbol and unit in the language, the
+    values with its decimal sign; the JSON keys are the English names), then the table at the given angles."""
+    from graphmethods.cli._report import label, value_text
+    from graphmethods.scene.notation import get
+
+    nt = get(lang)
     rows = out.pop("at_angles", None)
-    width = max(map(len, out))
+    lines: list[tuple[str, str]] = []
     for key, value in out.items():
-        if key in ("power", "sheet"):
-            value = "; ".join(f"{k} {v:.6g}" if isinstance(v, float) else f"{k} {v}" for k, v in value.items())
-        elif key == "translating":
+        if key == "translating":
             value = (f"point {value['point']}: m_e " + ", ".join(f"{x:.5g}" for x in value["m_e"]) + " kg; F_e "
                      + ", ".join(f"{x:.5g}" for x in value["F_e"]) + " N at positions "
                      + ", ".join(map(str, value["positions"])) + " (dead centres: "
                      + ", ".join(map(str, value["dead_centre_positions"])) + ")")
-        elif isinstance(value, float):
-            value = f"{value:.6g}"
-        print(f"{key.ljust(width)}  {value}", file=stream)
+            lines.append((key, value))
+        elif key in ("power", "sheet") or not isinstance(value, str):
+            lines.append((key if key in ("power", "sheet") else label(key, nt), value_text(value, nt)))
+        else:
+            lines.append((key, value))
+    width = max(len(k) for k, _ in lines)
+    for k, v in lines:
+        print(f"{k.ljust(width)}  {v}", file=stream)
     if rows:
         print("\n".join(_angle_table(rows)), file=stream)

@@ -23,9 +23,10 @@ from graphmethods.scene import Line, Page, Polyline, Scene, Text, notation as ge
 from graphmethods.scene.elements import Table
 from graphmethods.scene.primitives import MAIN, THIN, Style
 from graphmethods.sheets.frame import SheetFrame
-from graphmethods.sheets.layout import TEXT_MM
 
 THICK = Style(width_mm=0.5)
+#: the scheme's lettering: A4's value size (ГОСТ 2.304 series), read at arm's length
+LABEL_MM = 3.5
 
 
 
@@ -61,17 +62,26 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     x0, _, x1, _ = sheet.box
     n = len(chain.names)
     J = np.asarray(chain.J, dtype=float)
-    h = 10.0 + 22.0 * (J / J.max()) ** 0.25
-    left, right = x0 + 25.0, x0 + 0.52 * (x1 - x0)
+    # the two schemes share the page's height above the notes, each in its half; the chain spans the width the
+    # table leaves (it filled a third of the page with 32 mm discs)
+    row = (sheet.caption_y - 24.0 - sheet.top) / 2.0
+    h_max = min(0.55 * row, 48.0)
+
+    def heights(values: np.ndarray) -> np.ndarray:
+        return h_max * (0.35 + 0.65 * (values / values.max()) ** 0.25)
+
+    h = heights(J)
+    left, right = x0 + 28.0, x0 + 0.52 * (x1 - x0)
     xs = [left + (right - left) * i / max(n - 1, 1) for i in range(n)]
     num, sep = nt.number, nt.list_separator
+    size = LABEL_MM
     els: list[Any] = [sheet.header()]
-    rows_y = ((sheet.top + 38.0, "given"), (sheet.top + 105.0, "reduced"))
+    rows_y = ((sheet.top + 0.55 * row, "given"), (sheet.top + row + 0.55 * row, "reduced"))
     for y, key in rows_y:
         reduced = key == "reduced"
         Jr = J if reduced else np.asarray(chain.J_given, dtype=float)
-        hh = h if reduced else 10.0 + 22.0 * (Jr / Jr.max()) ** 0.25
-        els.append(Text((x0, y - 30.0), nt.word(f"drive.{key}"), size_mm=TEXT_MM + 0.5, bold=True,
+        hh = h if reduced else heights(Jr)
+        els.append(Text((x0, y - h_max / 2 - 9.0), nt.word(f"drive.{key}"), size_mm=size + 0.5, bold=True,
                         name=f"heading-{key}"))
         for j in range(n - 1):
             els.append(_spring(xs[j] + 2.5, xs[j + 1] - 2.5, y, f"{key}-shaft-{j + 1}"))
@@ -79,16 +89,16 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
             text = (f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {nt.unit('N·m/rad')}" if reduced else
                     f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}{sep}"
                     f"u = {num(float(chain.u_shafts[j]), sig=4)}")
-            els.append(Text((mid, y - 6.0), text, size_mm=TEXT_MM, anchor="middle", name=f"{key}-label-c-{j + 1}"))
+            els.append(Text((mid, y - 6.0), text, size_mm=size, anchor="middle", name=f"{key}-label-c-{j + 1}"))
         for i in range(n):
             els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
             text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)}" if reduced else
                     f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)}{sep}u = {num(float(chain.u[i]), sig=4)}")
-            els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), text, size_mm=TEXT_MM, anchor="middle",
+            els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), text, size_mm=size, anchor="middle",
                             name=f"{key}-label-J-{i + 1}"))
             if not reduced:
-                els.append(Text((xs[i], y + float(hh[i]) / 2 + 11.0), chain.names[i], size_mm=TEXT_MM - 0.4,
-                                anchor="middle", name=f"label-name-{i + 1}"))
+                els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0 + 1.5 * size), chain.names[i],
+                                size_mm=size - 0.4, anchor="middle", name=f"label-name-{i + 1}"))
         els.append(Line((left - 12.0, y), (left - 2.5, y), style=THIN, name=f"{key}-axis-in"))
     # the table: per mass J', per shaft c'; the frequencies and the rigid drive under it
     rows: list[tuple[str, ...]] = [("", nt.quantity("J", "kg·m²"), "u", nt.quantity("J'", "kg·m²"),
@@ -98,13 +108,14 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
         name = chain.names[i] if chain.names[i] != str(i + 1) else ""      # unnamed: its number once
         rows.append((f"{i + 1} {name}".strip(), num(float(chain.J_given[i]), sig=5), num(float(chain.u[i]), sig=4),
                      num(float(J[i]), sig=5), *c_txt))
-    els.append(Table((x0 + 0.6 * (x1 - x0), sheet.top + 8.0), tuple(rows), align="lrrrrr", size_mm=2.8,
-                     name="table"))
+    table = Table((0.0, 0.0), tuple(rows), align="lrrrrr", size_mm=size, name="table")
+    tx = max(right + 10.0, x1 - table.width_mm - 4.0)
+    els.append(Table((tx, sheet.top + 8.0), tuple(rows), align="lrrrrr", size_mm=size, name="table"))
     freq = sep.join(f"{num(float(w), sig=4)}" for w in chain.natural_frequencies)
-    els.append(Text((x0, sheet.caption_y - 14.0), f"{nt.word('drive.freq')}{nt.colon}ω = {freq} {nt.unit('rad/s')}",
-                    size_mm=TEXT_MM, name="frequencies"))
+    els.append(Text((x0, sheet.caption_y - 16.0), f"{nt.word('drive.freq')}{nt.colon}ω = {freq} {nt.unit('rad/s')}",
+                    size_mm=size, name="frequencies"))
     rigid = (f"{nt.sym('dynamics.J_e')} = ΣJ' = {num(chain.J_e, sig=5)} {nt.unit('kg·m²')}{sep}"
              f"{nt.sym('dynamics.M_e')} = ΣM' = {num(chain.M_e, sig=5)} {nt.unit('N·m')}")
-    els.append(Text((x0, sheet.caption_y - 8.0), f"{nt.word('drive.rigid')}{nt.colon}{rigid}",
-                    size_mm=TEXT_MM, name="rigid"))
+    els.append(Text((x0, sheet.caption_y - 9.0), f"{nt.word('drive.rigid')}{nt.colon}{rigid}",
+                    size_mm=size, name="rigid"))
     return Scene(sheet.page(()), tuple(els), title=sheet.title, notation=nt.code, name="drive-scheme")

@@ -18,13 +18,15 @@ standards draw them.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Line, Page, Scale, Scene, Text, notation as get_notation
 from graphmethods.scene.elements import Dimension, Element, Region, Table
+from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import FLYWHEEL_DIGITS
 from graphmethods.scene.primitives import Style
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM
@@ -33,6 +35,9 @@ AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 OUTLINE = Style(width_mm=0.5)
 #: the reduction scales of a machine drawing (ГОСТ 2.302, GB/T 14690), 1 : k
 DRAWING_SCALES = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 50.0, 75.0, 100.0)
+#: significant digits of each kind of quantity (:data:`graphmethods.scene.numbers.FLYWHEEL_DIGITS`), one rule
+#: for this drawing's table, the hyperbola and the text of ``graphmethods flywheel``
+DIGITS = FLYWHEEL_DIGITS
 #: the normal linear sizes (ГОСТ 6636 Ra 20), mm: the bore is rounded up to one
 NORMAL_MM = (20, 22, 25, 28, 32, 36, 40, 45, 50, 56, 63, 71, 80, 90, 100, 110, 125, 140, 160, 180, 200, 220, 250,
              280, 320, 360, 400)
@@ -82,9 +87,26 @@ def _width(p: Any) -> float:
     return max(p.B, Hub.of(p.D, p.B).L)
 
 
+def layout_for(parts: list[Any], lay: FlywheelDesignLayout = LAYOUT) -> FlywheelDesignLayout:
+    """The layout with its dimension lines spaced for the widest ⌀ value (a four-digit ⌀1103 is wider than the
+    12 mm step: the next line out struck it through).
+
+    >>> from graphmethods.dynamics.flywheel import rim_flywheel
+    >>> layout_for([rim_flywheel(60.69, n_rpm=120.0, D=1.2)]).dim_step_mm > LAYOUT.dim_step_mm
+    True
+    """
+    widest = max(text_width_mm(f"⌀{_outer_D(p) * 1000:.0f}", TEXT_MM) for p in parts)
+    return replace(lay, dim_step_mm=max(lay.dim_step_mm, widest + 3.0), value_mm=max(lay.value_mm, widest + 1.5))
+
+
 def _dims_width(lay: FlywheelDesignLayout) -> float:
     """The width two ⌀ dimensions take on each side of a section, mm."""
     return 2 * (lay.dim_first_mm + lay.dim_step_mm + lay.value_mm)
+
+
+def _span(p: Any, k: float) -> float:
+    """The width of a section on paper at 1 : k, mm: the rim's or the web's, or the hub's when it is wider."""
+    return max(_width(p), Hub.of(p.D, p.B).L) * 1000.0 / k
 
 
 def drawing_scale(parts: list[Any], room_w: float, room_h: float, lay: FlywheelDesignLayout = LAYOUT) -> float:
@@ -96,7 +118,7 @@ def drawing_scale(parts: list[Any], room_w: float, room_h: float, lay: FlywheelD
     """
     dims_w = _dims_width(lay)
     for k in DRAWING_SCALES:
-        w = sum(_width(p) * 1000.0 / k + dims_w for p in parts) + lay.gap_mm * (len(parts) - 1)
+        w = sum(_span(p, k) + dims_w for p in parts) + lay.gap_mm * (len(parts) - 1)
         h = max(_outer_D(p) for p in parts) * 1000.0 / k + 2 * lay.width_dims_mm
         if w <= room_w and h <= room_h:
             return k
@@ -127,22 +149,22 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     sheet = SheetFrame(nt=nt, page=page, title=title or default_title, problem=problem,
                        title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
-    lay = LAYOUT
+    parts = [p for p in (rim, disc) if p is not None]
+    lay = layout_for(parts)
     top = sheet.top + lay.top_mm
     bottom = sheet.caption_y - lay.bottom_mm
-    parts = [p for p in (rim, disc) if p is not None]
     room_w = x1 - x0 - lay.table_mm - lay.gap_mm
     k = 1000.0 * float(mu_l) if mu_l is not None else drawing_scale(parts, room_w, bottom - top, lay)
     s_l = Scale("μ_l", nt.unit("m"), k / 1000.0, note=f"1 : {k:g}, the largest drawing scale that fits")
     cy = (top + bottom) / 2                                    # the axis of rotation (horizontal on paper)
     els: list[Any] = [sheet.header()]
-    widths = [_width(p) * 1000.0 / k + _dims_width(lay) for p in parts]
+    widths = [_span(p, k) + _dims_width(lay) for p in parts]
     spare = (room_w - sum(widths) - lay.gap_mm * (len(parts) - 1)) / (len(parts) + 1)
     x = x0 + max(spare, 0.0)
     for p, w in zip(parts, widths):
         centre = x + w / 2
         kind = "rim" if hasattr(p, "H") else "disc"
-        els += _section(p, kind, s_l, nt, centre, cy, top, name=kind)
+        els += _section(p, kind, s_l, nt, centre, cy, top, name=kind, lay=lay)
         x += w + lay.gap_mm + max(spare, 0.0)
     els.append(Text((x0 + 2.0, sheet.top + 4.0), nt.word("flywheel.scale", k=f"{k:g}"), size_mm=TEXT_MM,
                     name="scale-note"))
@@ -173,10 +195,9 @@ def _diameter(name: str, x: float, cy: float, r: float, side: int, level: int, l
 
 
 def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, top: float, *,
-             name: str) -> list[Element]:
+             name: str, lay: FlywheelDesignLayout = LAYOUT) -> list[Element]:
     """One flywheel's axial section centred at ``xc`` on the axis ``cy``: the rim or the web, the hub, the
     bore (empty), spokes unhatched; ⌀ dimensions left (outer) and right (hub, bore), widths above and below."""
-    lay = LAYOUT
     hub = Hub.of(p.D, p.B)
     mm = s_l.to_mm
     b, L = mm(p.B), mm(hub.L)
@@ -206,16 +227,27 @@ def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, 
     reach = max(b, L) / 2 + 4.0
     els.append(Line((xc - reach, cy), (xc + reach, cy), style=AXIS, name=f"{name}-axis"))
     right = max(xr, hr)
-    els += [_diameter(f"dim-{name}-D1", xl, cy, r_out, -1, 1, lay, _outer_D(p))]
+    left = min(xl, hl)                     # a hub wider than the rim: the ⌀ lines start left of it (and of the axis)
+    els += [_diameter(f"dim-{name}-D1", left, cy, r_out, -1, 1, lay, _outer_D(p))]
     if kind == "rim":
-        els.append(_diameter(f"dim-{name}-D2", xl, cy, r_in, -1, 0, lay, p.D2))
+        els.append(_diameter(f"dim-{name}-D2", left, cy, r_in, -1, 0, lay, p.D2))
     els += [_diameter(f"dim-{name}-hub", right, cy, r_hub, 1, 1, lay, hub.d_hub),
             _diameter(f"dim-{name}-bore", right, cy, r_bore, 1, 0, lay, hub.d)]
-    els.append(Dimension((xl, cy - r_out), (xr, cy - r_out), f"{p.B * 1000:.0f}", offset_mm=-7.0, size_mm=TEXT_MM,
-                         name=f"dim-{name}-B"))
-    els.append(Dimension((hl, cy + r_hub), (hr, cy + r_hub), f"{hub.L * 1000:.0f}",
-                         offset_mm=(cy + r_out - (cy + r_hub)) + 7.0, size_mm=TEXT_MM, name=f"dim-{name}-L"))
+    els += _width_dimension((xl, cy - r_out), (xr, cy - r_out), f"{p.B * 1000:.0f}", -7.0, f"dim-{name}-B")
+    els += _width_dimension((hl, cy + r_hub), (hr, cy + r_hub), f"{hub.L * 1000:.0f}", (r_out - r_hub) + 7.0,
+                            f"dim-{name}-L")
     return els
+
+
+def _width_dimension(a: tuple[float, float], b: tuple[float, float], value: str, offset_mm: float,
+                     name: str) -> list[Element]:
+    """A width dimension; a value wider than the width between its extension lines (a 38 mm disc at 1 : 15 is
+    2.5 mm) is written beside the line, right of the right extension line, as drawings do."""
+    if text_width_mm(value, TEXT_MM) + 1.0 <= abs(b[0] - a[0]):
+        return [Dimension(a, b, value, offset_mm=offset_mm, size_mm=TEXT_MM, name=name)]
+    dim = Dimension(a, b, "", offset_mm=offset_mm, size_mm=TEXT_MM, name=name)
+    y0 = dim.line_start[1]
+    return [dim, Text((max(a[0], b[0]) + 2.0, y0 - 1.0), value, size_mm=TEXT_MM, name=f"{name}-value")]
 
 
 def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
@@ -227,13 +259,13 @@ def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     def row(label: str, f: Any) -> None:
         rows.append((label,) + tuple(f(p) for p in parts))
 
-    row(nt.quantity(nt.sym("dynamics.J_F"), "kg·m²"), lambda p: num(p.J))      # J_F as the hyperbola prints it
-    row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=4))
-    row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=4))
+    row(nt.quantity(nt.sym("dynamics.J_F"), "kg·m²"), lambda p: num(p.J, sig=DIGITS["J"]))   # as the hyperbola
+    row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=DIGITS["mass"]))
+    row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=DIGITS["J"]))
     # D and B each on its row: "750, 111" reads as one number with a decimal comma in Russian
-    row(nt.quantity("D", "mm"), lambda p: num(p.D * 1000, sig=4))
-    row(nt.quantity("B", "mm"), lambda p: num(p.B * 1000, sig=3))
-    row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=4))
-    row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=3))
-    row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=3))
+    row(nt.quantity("D", "mm"), lambda p: num(p.D * 1000, sig=DIGITS["mm"]))
+    row(nt.quantity("B", "mm"), lambda p: num(p.B * 1000, sig=DIGITS["mm"]))
+    row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=DIGITS["density"]))
+    row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=DIGITS["speed"]))
+    row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=DIGITS["speed"]))
     return tuple(rows)

@@ -22,6 +22,8 @@ from graphmethods.dynamics.permissible_delta import delta_range, machine_row
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Line, Page, Point, Polyline, Scene, Text, axis_ticks, notation as get_notation
 from graphmethods.scene.primitives import DASHED, MAIN, Style
+from graphmethods.sheets.engine.labels import Ink
+from graphmethods.sheets.flywheel_design import DIGITS
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 
@@ -97,15 +99,27 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
         p = at(float(delta), J_c)
         els.append(Line(at(float(delta), 0.0), p, style=DASHED, name="chosen-delta-line"))
         els.append(Line((origin[0], p[1]), p, style=DASHED, name="chosen-J-line"))
-        els.append(Point(p, f"{nt.word('flywheel.chosen')}{nt.colon}[δ] = 1/{num(1 / float(delta), sig=4)}, {JF} = "
-                            f"{num(J_c, sig=4)} {kgm2}", label_dir="nw", radius_mm=0.9, size_mm=TEXT_MM,
-                         name="chosen"))
+        chosen = (f"{nt.word('flywheel.chosen')}{nt.colon}[δ] = 1/{num(1 / float(delta), sig=DIGITS['inverse'])}"
+                  f"{nt.list_separator}{JF} = {num(J_c, sig=DIGITS['J'])} {kgm2}")
+        # the value where no line is, inside the frame: above the rising line to its left, or below it to its
+        # right (near the origin, where the axes' values are, "nw" ran off the frame)
+        ink = Ink()
+        ink.add_primitives([q for e in els[1:] for q in e.primitives()])
+        lab, leader = ink.place(p, chosen, size_mm=TEXT_MM, directions=("nw", "se", "e", "ne", "n"), gap_mm=1.5,
+                                within=(x0 + 2.0, sheet.top, x1 - 2.0, origin[1] - 1.0))
+        els.append(Point(p, radius_mm=0.9, name="chosen"))
+        els.append(Text((lab.x, lab.y), chosen, size_mm=TEXT_MM, anchor=lab.anchor, name="chosen-label"))
+        if leader is not None:
+            els.append(Line(leader[0], leader[1], style=Style(width_mm=0.18), name="chosen-leader"))
     notes_y = sheet.caption_y - 16.0
-    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula", JF=JF, wm=wm, Je=Je) + ";  " +
-                    nt.word("flywheel.hyperbola_data", W=num(float(delta_W_max), sig=5), w=num(float(omega_m), sig=5),
-                            J=num(float(J_e), sig=4), wm=wm, Je=Je),
+    dW = nt.sym("delta_W_max")
+    els.append(Text((x0 + 4.0, notes_y), nt.word("flywheel.hyperbola_formula", JF=JF, wm=wm, Je=Je, dW=dW) + ";  " +
+                    nt.word("flywheel.hyperbola_data", W=num(float(delta_W_max), sig=DIGITS["W"]),
+                            w=num(float(omega_m), sig=DIGITS["omega"]), J=num(float(J_e), sig=DIGITS["J"]), wm=wm,
+                            Je=Je, dW=dW),
                     size_mm=TEXT_MM, name="formula"))
-    rng = nt.word("flywheel.hyperbola_range", a=num(1 / hi, sig=4), b=num(1 / lo, sig=4))
+    rng = nt.word("flywheel.hyperbola_range", a=num(1 / hi, sig=DIGITS["inverse"]),
+                  b=num(1 / lo, sig=DIGITS["inverse"]))
     els.append(Text((x0 + 4.0, notes_y + 5.0), rng,
                     size_mm=SMALL_MM, name="range-note"))
     els += sheet.captions((s_d, s_J))

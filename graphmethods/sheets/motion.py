@@ -23,7 +23,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Axis, Frame, Page, Point, Polyline, Scene, Text, axis_ticks, notation as get_notation
 from graphmethods.scene.primitives import MAIN, THIN
-from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame
+from graphmethods.sheets.dynamics import SMALL_MM, SheetFrame, suppressed_base
 from graphmethods.sheets.layout import TEXT_MM, given_scale
 from graphmethods.sheets.styles import LEVEL, PROJECTION
 
@@ -108,14 +108,18 @@ def motion_graph(res, *, x: str = "t", y: str = "omega", notation="en", problem:
     xticks = tuple(v for v in axis_ticks(0.0, x_span, s_x, min_gap_mm=12.0) if 0 <= v <= x_span)
     yticks = tuple(v for v in axis_ticks(lo, hi, s_y, min_gap_mm=8.0) if lo <= v <= hi)
     dec = nt.decimal
-    ax_x = Axis(origin, s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks, label=nt.quantity(x_sym, x_unit),
-                size_mm=SMALL_MM, decimal=dec, name="axis-x", skip_zero_label=lo < 0,
-                labels_side="below")
+    # values on both sides of 0 (ε): the abscissa at the graph's foot, where the curve's jumps do not strike its
+    # values out, and a thin line at 0
+    foot = f.pt(0.0, lo)[1] if lo < 0 else origin[1]
+    ax_x = Axis((origin[0], foot), s_x, "x", min_value=0.0, max_value=x_span, ticks=xticks,
+                label=nt.quantity(x_sym, x_unit), size_mm=SMALL_MM, decimal=dec, name="axis-x", labels_side="below")
     ax_y = Axis(origin, s_y, "y", min_value=lo, max_value=hi, ticks=yticks, label=nt.quantity(y_sym, y_unit),
-                size_mm=SMALL_MM, decimal=dec, name="axis-y", skip_zero_label=lo < 0)
+                size_mm=SMALL_MM, decimal=dec, name="axis-y", skip_zero_label=False)
     # at most ~6000 points: a polyline of a long run is thinned evenly (ends kept)
     keep = np.unique(np.linspace(0, xv.size - 1, min(xv.size, 6000)).round().astype(int))
     els = [sheet.header(), ax_x, ax_y, Polyline(f.pts(xv[keep], yv[keep]), style=MAIN, name=f"curve-{y}")]
+    if lo < 0:
+        els.insert(1, Polyline((origin, f.pt(x_span, 0.0)), style=THIN, name="zero-line"))
     notes = [s_x.note, s_y.note]
     if x == "phi":               # the crank turns, thin dashed verticals
         for k in range(1, int(x_span / (2 * math.pi)) + 1):
@@ -169,16 +173,24 @@ def energy_mass_curve(res, *, notation="en", problem: str = "", title: str | Non
     ticks = axis_ticks(J_lo - 0.2 * span, J_hi, s_J, min_gap_mm=12.0)
     base = max([t for t in ticks if t <= J_lo] or [J_lo])
     T_hi = max(float(T.max()), 1e-300)
-    s_T = given_scale(None, "μ_T", nt.unit("J"), T_hi, py1 - py0, what="the energy")
+    T_lo = float(T.min())
+    # a steady run's loop sits far above T = 0: the T axis starts at a round value below it (a suppressed zero,
+    # as the J axis), else the loop is a sliver at the top of a 0…T_max axis
+    T_base = 0.0
+    if T_lo > 0.0 and T_hi - T_lo < 0.35 * T_hi:
+        probe = given_scale(None, "μ_T", nt.unit("J"), (T_hi - T_lo) * 1.25, py1 - py0, what="the energy")
+        T_base = suppressed_base(T_lo, T_hi, probe)
+    s_T = given_scale(None, "μ_T", nt.unit("J"), T_hi - T_base, py1 - py0, what="the energy")
     origin = (px0 - s_J.to_mm(base), py0 + s_T.to_mm(T_hi))
     f = Frame(origin, s_J, s_T)
-    # the J axis from its (suppressed) base; the T axis stands at J = base (its origin: T = 0 there)
-    ax_J = Axis(origin, s_J, "x", min_value=base, max_value=J_hi, label=nt.quantity("J", "kg·m²"),
+    foot = f.pt(base, T_base)[1]
+    # the J axis from its (suppressed) base at T = T_base; the T axis stands at J = base
+    ax_J = Axis((origin[0], foot), s_J, "x", min_value=base, max_value=J_hi, label=nt.quantity("J", "kg·m²"),
                 ticks=tuple(t for t in ticks if base <= t <= J_hi), size_mm=SMALL_MM, decimal=nt.decimal,
                 name="axis-J")
-    ax_T = Axis((px0, origin[1]), s_T, "y", min_value=0.0, max_value=T_hi, label=nt.quantity("T", "J"),
-                ticks=tuple(v for v in axis_ticks(0.0, T_hi, s_T, min_gap_mm=8.0) if 0 <= v <= T_hi),
-                size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T", skip_zero_label=True)
+    ax_T = Axis((px0, f.pt(base, 0.0)[1]), s_T, "y", min_value=T_base, max_value=T_hi, label=nt.quantity("T", "J"),
+                ticks=tuple(v for v in axis_ticks(T_base, T_hi, s_T, min_gap_mm=8.0) if T_base <= v <= T_hi),
+                size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T", skip_zero_label=T_base == 0.0)
     keep = np.unique(np.linspace(0, J.size - 1, min(J.size, 6000)).round().astype(int))
     els = [sheet.header(), ax_J, ax_T, Polyline(f.pts(J[keep], T[keep]), style=MAIN, name="curve-T"),
            Point(f.pt(J[0], T[0]), radius_mm=1.1, filled=False, name="mark-start"),

@@ -423,6 +423,26 @@ def _acceleration_intersection_rules(tx: _AccelerationText, j: int, st_: Any) ->
 
 # ----------------------------------------------------------------------------- energy indicator
 
+def slide_step_mm(n: int, page: Page) -> float | None:
+    """The step between the energy indicator's ``n`` vectors on a slide (None on paper: the figure's own).
+
+    A slide is wide: the vectors spread over it (22 mm apart, the A4 figure's most, filled a third of it for a
+    cycle of three intervals), up to three times that.
+
+    >>> from graphmethods.sheets.projector import SLIDE_PAGE
+    >>> slide_step_mm(3, SLIDE_PAGE) > 22.0, slide_step_mm(3, Page("A4", "landscape"))
+    (True, None)
+    """
+    from graphmethods.sheets import energy as E_
+
+    if str(page.size).upper() != "SLIDE":
+        return None
+    L = E_.INDICATOR_LAYOUT
+    x0, _, x1, _ = page.inner_box()
+    room = x1 - L.right_room_mm - (x0 + L.axis_mm + L.first_mm)
+    return max(L.step_min_mm, min(3.0 * L.step_max_mm, room / max(n - 1, 1)))
+
+
 def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, work_unit: str = "J") -> BuildUp:
     """The energy indicator diagram, step by step: the axis, one vector per interval, the closure,
     the extremes and ΔW_max.
@@ -435,8 +455,13 @@ def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, wor
     from graphmethods.sheets import energy as E_
 
     nt, (pg, box, cap_mm, tb) = step_start(notation, page)
-    figure = E_.energy_indicator(cycle, mu_E=mu_E, notation=nt, page=pg, title_block=tb, work_unit=work_unit)
     ew, _ = E_._cycle(cycle, nt)
+    step_mm = slide_step_mm(len(ew.work), pg)
+    try:
+        figure = E_.energy_indicator(cycle, mu_E=mu_E, notation=nt, page=pg, title_block=tb, work_unit=work_unit,
+                                     step_mm=step_mm)
+    except InputError:                          # the sheet's own frame is narrower than estimated: its own step
+        figure = E_.energy_indicator(cycle, mu_E=mu_E, notation=nt, page=pg, title_block=tb, work_unit=work_unit)
     s_E = _axis_scale(figure, "axis-E")
     u = nt.unit(work_unit)
     lab = ew.labels
@@ -486,11 +511,11 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
     J, T = nt.sym("dynamics.J_e"), nt.sym("dynamics.dT")
 
     ray = {}
+    tans = dict(zip(("max", "min"), nt.column((float(res.tan_psi_max), float(res.tan_psi_min)))))  # the table's digits
     for key in ("max", "min"):
         idx = res.index_omega_max if key == "max" else res.index_omega_min
         psi = nt.sym(f"dynamics.psi_{key}")
-        tan = res.tan_psi_max if key == "max" else res.tan_psi_min
-        ray[key] = (nt.word(f"steps.ray_{key}", psi=psi, tan=nt.number(float(tan), sig=4),
+        ray[key] = (nt.word(f"steps.ray_{key}", psi=psi, tan=tans[key],
                             w=nt.sym(f"dynamics.omega_{key}"), i=", ".join(str(int(i)) for i in idx)),
                     _starts(f"ray-{key}", f"psi-{key}-", f"label-psi-{key}", f"leader-psi-{key}", f"tangency-{key}-",
                            f"label-omega-{key}", f"leader-omega-{key}"))

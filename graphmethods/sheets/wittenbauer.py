@@ -502,8 +502,11 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
     O1 = f"({n(res.O1_mm[0])}; {n(res.O1_mm[1])}) {mm}" if on_sheet else nt.word("wittenbauer.O1_off")
     tg = "tg" if nt.code == "ru" else "tan"
     psi_max, psi_min = nt.sym("dynamics.psi_max"), nt.sym("dynamics.psi_min")
-    tg_max = f"{tg} {psi_max} = {n(res.tan_psi_max)}, {psi_max} = {n(math.degrees(res.psi_max))}°"
-    tg_min = f"{tg} {psi_min} = {n(res.tan_psi_min)}, {psi_min} = {n(math.degrees(res.psi_min))}°"
+    # one digits rule for a pair of one kind: both tangents, both angles with the same decimals (7,120° by 6,946°)
+    tan_max, tan_min = nt.column((res.tan_psi_max, res.tan_psi_min))
+    deg_max, deg_min = nt.column((math.degrees(res.psi_max), math.degrees(res.psi_min)))
+    tg_max = f"{tg} {psi_max} = {tan_max}, {psi_max} = {deg_max}°"
+    tg_min = f"{tg} {psi_min} = {tan_min}, {psi_min} = {deg_min}°"
     J_F = f"{nt.sym('dynamics.J_F')} = {nt.sym('mu_T')}·kl/({nt.sym('dynamics.omega_m')}²{nt.sym('dynamics.delta')})"
     J_F_num = f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)})"
     origin_rows = []
@@ -664,14 +667,21 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     J_to, T_hi, T_lo = data.extent(J_0)         # the J axis from J_0, as on the A1 sheet; ΔT to k and l there
     probe_res = data.result(1.0, 1.0)
     table_w = _table(compact_rows(result_rows(probe_res, nt, J_0=J_0)), (0, 0)).width_mm
-    ax_x = x0 + 22.0
     py0, py1 = sheet.top + 10.0, sheet.caption_y - 9.0
-    avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
-    s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to - J_0, avail_X - (20.0 if J_0 else 0.0),
-                      what="the J_e axis")
     s_T = given_scale(mu_T, nt.sym("mu_T"), nt.unit("J"), T_hi - T_lo, py1 - py0, what="the ΔT axis")
-    res = data.result(s_J.per_mm, s_T.per_mm)
-    res = offset_origin(res, J_0) if J_0 > 0.0 else res
+    left = 22.0
+    for _ in range(2):                          # the ψ marks left of the ordinate axis need their room there
+        ax_x = x0 + left
+        avail_X = x1 - table_w - 8.0 - 12.0 - ax_x
+        s_J = given_scale(mu_J, nt.sym("dynamics.mu_J"), nt.unit("kg·m²"), J_to - J_0,
+                          avail_X - (20.0 if J_0 else 0.0), what="the J_e axis")
+        res = data.result(s_J.per_mm, s_T.per_mm)
+        res = offset_origin(res, J_0) if J_0 > 0.0 else res
+        place = _DiagramPlace.of(res, (0.0, 0.0), nt, J_to=J_to, T_hi=T_hi, T_lo=T_lo, J_from=J_0, prefix="")
+        need = 0.0 if place.right else place.R + 8.0 - (20.0 if J_0 else 0.0)
+        if need <= left:
+            break
+        left = need
     ax_x += 20.0 if J_0 else 0.0                # room for the step down to J_0 (the broken axis)
     origin = (ax_x, py0 + s_T.to_mm(T_hi))
     page_probe = sheet.probe

@@ -86,6 +86,16 @@ def is_course_sheet(page: Any) -> bool:
     return str(getattr(page, "size", page)).upper() in ("A0", "A1", "A2")
 
 
+def is_slide(page: Any) -> bool:
+    """A 16:9 slide (``graphmethods steps``' PDF slides, SVG frames and the HTML stepper): lettered as an A1
+    sheet (read from the back of a room) and judged for empty space inside its margins.
+
+    >>> is_slide("slide"), is_slide("A4")
+    (True, False)
+    """
+    return str(getattr(page, "size", page)).upper() == "SLIDE"
+
+
 @contextmanager
 def lettered(page: Any) -> Iterator[Lettering]:
     """Build figures lettered for ``page``'s format: every text made inside is at least its minimum size.
@@ -121,4 +131,5 @@ def lettered_by_page(default: str = "A1") -> Callable[[F], F]:
     return wrap
 
 
-__all__ = ["LETTERING", "SERIES_MM", "Lettering", "is_course_sheet", "lettered", "lettered_by_page", "lettering"]
+__all__ = ["LETTERING", "SERIES_MM", "Lettering", "is_course_sheet", "is_slide", "lettered", "lettered_by_page",
+           "lettering"]

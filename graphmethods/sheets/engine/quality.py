@@ -5,7 +5,7 @@ measures, with the texts' real extents (the font's advance widths, :func:`~graph
 label_bbox`):
 
 - ``empty_share``: the share of the 20 mm cells inside the frame that no ink touches (a course sheet
-  should be filled: at most 50 % empty on A1/A2);
+  should be filled: at most 50 % empty on A1/A2; a 16:9 slide, framed or not, inside its margins alike);
 - ``min_text_mm``: the smallest font size of a text, the title block's included (sub- and superscripts are
   drawn smaller and exempt; a condensed text, :attr:`~graphmethods.scene.primitives.Label.stretch`, is
   measured at its height and its condensed width);
@@ -40,7 +40,7 @@ from graphmethods.scene.elements import CAP, label_bbox
 from graphmethods.scene.primitives import Label
 from graphmethods.scene.scene import Scene
 from graphmethods.sheets.engine.labels import circle_points
-from graphmethods.sheets.engine.lettering import is_course_sheet, lettering
+from graphmethods.sheets.engine.lettering import is_course_sheet, is_slide, lettering
 from graphmethods.sheets.layout import segments_hit_boxes
 
 #: the cell of the empty-space measure (mm)
@@ -166,7 +166,8 @@ def measure(scene: Scene) -> Quality:
     sizes = [lab.size_mm for lab in labels if any(s == 0 and t.strip() for t, s in lab.runs)]
     noise = [t for t in (_noise(lab) for lab in labels) if t]
 
-    empty = _empty_share(rec, scene.page.inner_box(), frame_free, boxes) if scene.page.frame else 0.0
+    judged = scene.page.frame or is_slide(scene.page)      # a framed sheet's frame, or a slide inside its margins
+    empty = _empty_share(rec, scene.page.inner_box(), frame_free, boxes) if judged else 0.0
     return Quality(scene.page.size, empty, min(sizes) if sizes else math.inf, tuple(crossed), tuple(overlaps),
                    tuple(noise), len(labels))
 
@@ -175,7 +176,7 @@ def faults(q: Quality) -> list[str]:
     """What breaks the standard on a measured sheet, one line each (empty: none)."""
     out: list[str] = []
     let = lettering(q.page_size)
-    if is_course_sheet(q.page_size) and q.empty_share > EMPTY_MAX:
+    if (is_course_sheet(q.page_size) or is_slide(q.page_size)) and q.empty_share > EMPTY_MAX:
         out.append(f"{q.empty_share:.0%} of the {CELL_MM:g} mm cells inside the frame are empty "
                    f"(at most {EMPTY_MAX:.0%} on {q.page_size})")
     if q.min_text_mm < let.minimum_mm - 1e-9:
