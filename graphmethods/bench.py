@@ -761,6 +761,33 @@ def _cam_oscillating_rows(repeat: int) -> list[Row]:
     return rows
 
 
+#: the kinematic A1 sheet's build target: one of the gallery's kinematic-analysis sheets (the division search
+#: and every part drawn, then SVG), in a warm process, CPU s
+KINEMATIC_SHEET_TARGET = 0.35
+
+
+def _kinematic_sheet_rows(repeat: int) -> list[Row]:
+    """The gallery's kinematic-analysis A1 sheets built to SVG in a warm process: a sheet on average (CPU, the
+    median of the runs), and the slowest of them."""
+    from graphmethods import gallery
+    from graphmethods.render import svg
+
+    figures = [f for f in gallery.CATALOGUE if f.figure.endswith("kinematic_analysis_sheet")]
+    svg.to_string(figures[0].build())                    # the imports warmed
+    cpu: dict[str, list[float]] = {f.name: [] for f in figures}
+    for _ in range(max(1, repeat // 2)):
+        for f in figures:
+            c0 = time.process_time()
+            svg.to_string(f.build())
+            cpu[f.name].append(time.process_time() - c0)
+    each = {n: statistics.median(v) for n, v in cpu.items()}
+    t = sum(each.values()) / len(each)
+    worst = max(each, key=lambda n: each[n])
+    return [Row("sheet", f"kinematic A1 sheet, the gallery's {len(each)}", "division search + parts + SVG, a sheet "
+                "(CPU)", len(each), t, None, note=f"CPU time; slowest {worst} {each[worst]:.2f} s",
+                target=f"≤ {KINEMATIC_SHEET_TARGET:g} s a sheet", holds=t <= KINEMATIC_SHEET_TARGET)]
+
+
 # --------------------------------------------------------------------- a whole sheet
 def bench_sheet(*, repeat=5) -> list[Row]:
     """The 12-position study of the press with its A1 dynamic-analysis sheet, as SVG, in-process."""
@@ -778,7 +805,7 @@ def bench_sheet(*, repeat=5) -> list[Row]:
     t = median_time(build, repeat=repeat)
     text, study = build()
     return [Row("sheet", "press, 12 positions", "study + A1 sheet to SVG", 12, t, None,
-                note=f"{len(text) // 1024} KB; computed: {', '.join(study.computed)}")]
+                note=f"{len(text) // 1024} KB; computed: {', '.join(study.computed)}")] + _kinematic_sheet_rows(repeat)
 
 
 # --------------------------------------------------------------------- the gallery

@@ -10,13 +10,18 @@ F_b and R′_01); the plan of accelerations of the position, where the inertia f
 (:func:`~graphmethods.sheets.acceleration.acceleration_plan`, left out when its equations do not fit its
 panel). At the right, above the title block: the balancing moment from the force plans, from the lever and
 from the power balance with their differences in per cent, every reaction's magnitude, the inertia loads,
-and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`). Each
-part keeps its own scales, written under it; the title block names the scheme's.
+the inertia loads worked out (F_и = m·a_S = …, M_и = J_S·ε = …, h = M_и/F_и, :mod:`~graphmethods.sheets.force_working`)
+and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`; under a tall
+linkage, in its column). Each group's plan writes above its polygon the moment equations that give its R^τ with
+the numbers, then its vector equation. Each part keeps its own scales, written under it; the title block names
+the scheme's.
 
 >>> from graphmethods.problems import builtin
 >>> s = force_analysis_sheet(builtin.case("press"), position=3, page="A1")
->>> [e.name for e in s.elements][1:]
-['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia', 'note-0', 'balancing']
+>>> [e.name for e in s.elements][1:9]
+['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia']
+>>> [e.name for e in s.elements][-3:]
+['working-3', 'working-4', 'balancing']
 """
 
 from __future__ import annotations
@@ -36,6 +41,7 @@ from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
 from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
+from graphmethods.sheets.force_working import inertia_working
 from graphmethods.sheets.layout import Box, Sheet
 
 
@@ -46,6 +52,10 @@ def _case(subject: Any) -> Any:
         raise InputError(f"expected a linkage problem (graphmethods.kinematics.read_case or a built-in name's "
                          f"case), got {type(subject).__name__}")
     return case
+
+
+#: the least room (mm) for M_b(φ) under the result column's text; with less, it goes among the drawings
+GRAPH_MM = 90.0
 
 
 def sheet_page(page: str | Page, what: str) -> Page:
@@ -104,19 +114,32 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
               Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
+    working = [(t, False) for t in inertia_working(case, fa, i, nt)]
+    working = [(nt.word("forces.inertia_loads"), True)] + working if working else []
+    work_mm = size if max([text_width_mm(t, size) for t, _ in working] + [0.0]) <= 190.0 else note_mm
     block = sheet.probe.title_block
     inner = pg.inner_box()
     tb = block.table(inner[2], inner[3]) if block is not None else None
     col_w = max([t.width_mm for t in tables] + ([tb.width_mm - 5.0] if tb is not None else [])
                 + [text_width_mm(t, note_mm) for t in notes_text]
+                + [text_width_mm(t, work_mm) for t, _ in working]
                 + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
     tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
-    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap)
+    free = tb_top - gap - content[1] - _result_column(0.0, 0.0, tables, notes_text, working, nt,
+                                                      sizes=(size, note_mm, work_mm, gap))[1]
+    graph_below = phi_deg is not None or free >= GRAPH_MM      # M_b(φ) under the column's text, or in the drawings'
+    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, graph=not graph_below)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
+    if accel is None and phi_deg is None and graph_below and "balancing" in boxes:
+        # beside a tall linkage the plan of accelerations may take the lever's room, the lever the graph's
+        wide = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, lever_under=True)
+        accel = _acceleration(case, i, m, nt, pg, wide["acceleration"])
+        boxes = wide if accel is not None else boxes
     if accel is None:                               # the plan of accelerations does not fit: the others take its room
-        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False)
+        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False,
+                                  graph=not graph_below)
     at_k = i if phi_deg is None else None
     kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
     parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
@@ -132,23 +155,9 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    tx, ty = boxes["result"][0] + 2.0, boxes["result"][1]
-    heading = Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
-                   name="result-heading")
-    table = Table((tx, ty + 2.5 * size), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size,
-                  name="result")
-    y = table.bottom_left[1] + 2.0 * size
-    reactions = Table((tx, y), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size,
-                      name="reactions")
-    y = reactions.bottom_left[1] + 2.0 * size
-    inertia = Table((tx, y), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size,
-                    name="inertia")
-    y = inertia.bottom_left[1] + 2.0 * size
-    column: list[Any] = [inertia]
-    column += [Text((tx, y + k * 1.8 * note_mm), t, size_mm=note_mm, name=f"note-{k}")
-               for k, t in enumerate(notes_text)]
-    y += len(notes_text) * 1.8 * note_mm + gap
-    graph_box = (boxes["result"][0], y, boxes["result"][2], boxes["result"][3])
+    column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
+                               sizes=(size, note_mm, work_mm, gap))
+    graph_box = boxes.get("balancing", (boxes["result"][0], y, boxes["result"][2], boxes["result"][3]))
     if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
         graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
         column.append(graph)
@@ -156,9 +165,31 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
-    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, heading, table,
-                                            reactions, *column),
+    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: list[str],
+                   working: list[tuple[str, bool]], nt: Any, *, sizes: tuple[float, float, float, float]
+                   ) -> tuple[list[Any], float]:
+    """The result column from (tx, ty): its heading, the balancing moment's, the reactions' and the inertia
+    loads' tables, the notes and the inertia loads worked out; and the y (mm) under its last line."""
+    size, note_mm, work_mm, gap = sizes
+    names = ("result", "reactions", "inertia")
+    column: list[Any] = [Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
+                              name="result-heading")]
+    y = ty + 2.5 * size
+    for tab, nm in zip(tables, names):
+        table = Table((tx, y), tab.rows, align=tab.align, size_mm=size, row_height_mm=2.0 * size, name=nm)
+        column.append(table)
+        y = table.bottom_left[1] + 2.0 * size
+    column += [Text((tx, y + k * 1.8 * note_mm), note, size_mm=note_mm, name=f"note-{k}")
+               for k, note in enumerate(notes_text)]
+    y += len(notes_text) * 1.8 * note_mm + gap
+    for k, (line, head_) in enumerate(working):
+        y += (2.2 if head_ and k else 1.8) * work_mm
+        column.append(Text((tx, y), line, size_mm=work_mm, bold=head_, name=f"working-{k}"))
+    return column, y + gap
 
 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:
@@ -231,9 +262,10 @@ def _pairs(fa: Any, i: int, n: int, gap_mm: float) -> Split:
     """The groups cut from the linkage and their force plans: side by side in columns, each group over its
     plan, when the drawings are tall; one pair under another, each group beside its plan, when they are flat
     (a slider-crank's group and its long polygon)."""
-    flat = all(_aspect(c) > 1.3 for c in _pair_clouds(fa, i))
-    if flat:
-        rows = tuple((Split("h", ((f"group-{j}", 0.5), (f"plan-{j}", 0.5)), gap_mm=gap_mm), 1.0) for j in range(n))
+    clouds = _pair_clouds(fa, i)
+    plans = [_aspect(c) for c in clouds[1::2]]
+    if sum(a > 2.0 for a in plans) * 2 > len(plans) or all(_aspect(c) > 1.3 for c in clouds):
+        rows = tuple((Split("h", ((f"group-{j}", 0.4), (f"plan-{j}", 0.6)), gap_mm=gap_mm), 1.0) for j in range(n))
         return Split("v", rows, gap_mm=gap_mm)
     cols = tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap_mm), 1.0) for j in range(n))
     return Split("h", cols, gap_mm=gap_mm)
@@ -251,7 +283,8 @@ def _pair_clouds(fa: Any, i: int) -> list[list[complex]]:
 
 
 def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
-                      column_bottom: float | None = None, acceleration: bool = True) -> dict[str, Box]:
+                      column_bottom: float | None = None, acceleration: bool = True,
+                      graph: bool = False, lever_under: bool = False) -> dict[str, Box]:
     """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
     (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
     of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
@@ -259,7 +292,10 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
     The result column (``col_w`` wide) stands at the right, down to ``column_bottom`` (the title block's
     top). Left of it, a tall linkage (a shaper's rocker) takes a column the height of the sheet, the lever
     a column beside it, and the force plans one over another in a third; a flat linkage (a press) takes a
-    row across the top with the lever beside it, and the plans share the row below side by side.
+    row across the top with the lever beside it, and the plans share the row below side by side. ``graph``:
+    M_b(φ) gets a box among the drawings (``balancing``; a tall linkage's column always has it);
+    ``lever_under``: beside a tall linkage the plan of accelerations takes the whole upper row and the lever
+    goes under the linkage (when the plan does not fit beside the lever).
 
     >>> from graphmethods.problems import builtin
     >>> from graphmethods.sheets.forces import analysed
@@ -281,14 +317,19 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
         w_l = _lever_width(lever, 0.42 * H, rest)
         top = (Split("h", (("lever", w_l), ("acceleration", rest - w_l - gap_mm)), gap_mm=gap_mm) if acceleration
                else Split("h", (("lever", 1.0),), gap_mm=gap_mm))
+        under = "balancing"
+        if lever_under:                                         # the lever under the linkage, M_b(φ) in the column
+            top, under = Split("h", (("acceleration", 1.0),), gap_mm=gap_mm), "lever"
         right = Split("v", ((top, 0.42), (_pairs(fa, i, n, gap_mm), 0.58)), gap_mm=gap_mm)
-        tree = Split("h", (("scheme", w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
+        left_col = Split("v", (("scheme", 0.62), (under, 0.38)), gap_mm=gap_mm)
+        tree = Split("h", ((left_col, w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
         h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
         top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)) if acceleration else (("scheme", 1.0),),
                     gap_mm=gap_mm)
         w_l = _lever_width(lever, (1.0 - h_s) * H, W)
-        bottom = Split("h", (("lever", w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
+        lever_col = Split("v", (("lever", 0.6), ("balancing", 0.4)), gap_mm=gap_mm) if graph else "lever"
+        bottom = Split("h", ((lever_col, w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
         tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
     out.update(tree.boxes(left))
     return out

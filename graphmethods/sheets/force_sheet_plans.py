@@ -31,6 +31,7 @@ from graphmethods.scene.numbers import within_roundoff
 from graphmethods.sheets import forces as SF
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import drawn_tip, fit_forces
+from graphmethods.sheets.force_working import drawn_lengths, moment_working
 from graphmethods.sheets.layout import Sheet, given_scale
 
 
@@ -131,15 +132,30 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     def lines(s_F: Scale) -> list[str]:
         return [found_line(lbl, R, s_F, nt) for lbl, R in found]
 
+    def lengths(s_F: Scale) -> list[str]:                       # the known forces' lengths at μ_F
+        return drawn_lengths(sides, s_F, nt)
+
+    moments = moment_working(fa, i, j, nt)                      # R^τ from the moments, before the plan
+    m_pitch = 1.8 * let.label_mm
+    n_known = len(drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0))
+    m_h = (len(moments) + n_known) * m_pitch
     area, x_text, s_F = _plan_area(sheet, pts, L,
-                                   lambda mu: [(equation, eq_mm)] + [(t, let.value_mm) for t in lines(mu)],
-                                   2.0 * eq_mm + (len(found) + 0.5) * pitch)
+                                   lambda mu: ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]
+                                               + [(t, let.value_mm) for t in lines(mu)]),
+                                   m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
     at = SF._cell(pts, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
-    eq = Text((x_text, sheet.top + eq_mm), equation, size_mm=eq_mm, name=f"equation-{j}")
+    els: list[Element] = [sheet.header()]
+    for k, line in enumerate(moments + lengths(s_F)):
+        kind = "moment" if k < len(moments) else "length"
+        t = Text((x_text, sheet.top + let.label_mm + k * m_pitch), line, size_mm=let.label_mm, name=f"{kind}-{j}-{k}")
+        _keep_clear(sheet, t)
+        els.append(t)
+    top = sheet.top + m_h
+    eq = Text((x_text, top + eq_mm), equation, size_mm=eq_mm, name=f"equation-{j}")
     _keep_clear(sheet, eq)
-    els: list[Element] = [sheet.header(), eq]
+    els.append(eq)
     for k, line in enumerate(lines(s_F)):
-        t = Text((x_text, sheet.top + eq_mm + (k + 1) * pitch), line, size_mm=let.value_mm, name=f"found-{j}-{k}")
+        t = Text((x_text, top + eq_mm + (k + 1) * pitch), line, size_mm=let.value_mm, name=f"found-{j}-{k}")
         _keep_clear(sheet, t)
         els.append(t)
     if pl.group.startswith("I "):

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from functools import partial
+from functools import cached_property, partial
 from typing import Any
 
 import numpy as np
@@ -29,9 +29,10 @@ from graphmethods.scene import Page, Scale, Scene, Table, notation as get_notati
 from graphmethods.scene.elements import Group
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.lettering import lettered_by_page
+from graphmethods.sheets.engine.quality import EMPTY_MAX
 from graphmethods.sheets.force_analysis_sheet import _case, sheet_page as _sheet_page
 from graphmethods.sheets.layout import Sheet
-from graphmethods.sheets.sheet_fill import clashes, filled
+from graphmethods.sheets.sheet_fill import PartInk, clashes, filled, overflowing
 
 #: most acceleration plans one sheet draws (each needs a readable share of the lower row)
 MAX_PLANS = 4
@@ -41,9 +42,10 @@ MAX_PLANS = 4
 class AnalysisSheetLayout:
     """The A1 sheet's divisions into its parts (shares of the content box, mm between the parts).
 
-    Each share is a short list of candidates: the sheet draws its parts for each (row by row) and keeps
-    the division whose drawings fill the most of the sheet (:func:`~graphmethods.sheets.sheet_fill.filled`):
-    a long linkage takes a wide scheme, tall velocity plans a narrow one.
+    Each share is a short list of candidates: the sheet keeps the division whose drawings fill the most of the
+    sheet with no label clashing (:func:`~graphmethods.sheets.sheet_fill.filled`): a long linkage takes a wide
+    scheme, tall velocity plans a narrow one. It draws the ``probe`` division and the one its parts predict
+    fullest, and every division only when neither will do (:func:`_chosen`).
     """
 
     gap_mm: float = 8.0                 # between the parts
@@ -54,6 +56,12 @@ class AnalysisSheetLayout:
     #: the slider's diagrams (the table of velocities) of the lower row's width
     diagrams_shares: tuple[float, ...] = (0.4, 0.5)
     table_pad_mm: float = 4.0           # beside the table of velocities
+    #: the division always drawn, the one most often kept: its parts predict the others' ink
+    probe: tuple[float, float, float] = (0.52, 0.36, 0.5)
+
+    def divisions(self) -> list[tuple[float, float, float]]:
+        """Every division (upper share, scheme share, right part's share), in the order ties are settled."""
+        return [(u, s, d) for u in self.upper_shares for s in self.scheme_shares for d in self.diagrams_shares]
 
 
 ANALYSIS_SHEET_LAYOUT = AnalysisSheetLayout()
@@ -133,120 +141,193 @@ def kinematic_analysis_sheet(subject: Any, *, m: int = 12, plan_positions: Seque
                   title_block=title_block, default_page=pg)
     x0, _, x1, _ = sheet.box
     top, bottom = sheet.top, sheet.caption_y + 1.0
-    best: tuple[tuple[int, int], list[tuple[Scene, str]]] | None = None
-    for u in lay.upper_shares:
-        split_y = top + u * (bottom - top)
-        upper = _fullest([partial(_upper_row, case, nt, m, pg, (x0, top, x1, split_y), s, lay)
-                          for s in lay.scheme_shares], pg)
-        lower = _fullest([partial(_lower_row, case, nt, m, pg, (x0, split_y + lay.gap_mm, x1, bottom), ks, d, lay)
-                          for d in lay.diagrams_shares], pg)
-        if upper is None or lower is None:
-            continue
-        parts = upper[1] + lower[1]
-        rank = (-clashes([sc for sc, _ in parts]) - _overflowing(parts), int((upper[2] | lower[2]).sum()))
-        if best is None or rank > best[0]:
-            best = (rank, parts)
+    parts = _Parts(case, nt, m, pg, ks, lay)
+
+    def regions(dv: Division) -> list[Region]:
+        split_y = top + dv[0] * (bottom - top)
+        return (_upper_regions((x0, top, x1, split_y), dv[1], lay)
+                + _lower_regions(parts, (x0, split_y + lay.gap_mm, x1, bottom), dv[2]))
+
+    best = _chosen(parts, sheet, regions)
     if best is None:                    # no division fits: the first one says why
-        _upper_row(case, nt, m, pg, (x0, top, x1, top + lay.upper_shares[0] * (bottom - top)),
-                   lay.scheme_shares[0], lay)
-        _lower_row(case, nt, m, pg, (x0, top + lay.upper_shares[0] * (bottom - top) + lay.gap_mm, x1, bottom), ks,
-                   lay.diagrams_shares[0], lay)
+        for fn, nm, box in regions(lay.divisions()[0]):
+            parts.draw(fn, nm, box)
         raise InputError("the kinematic-analysis sheet's parts do not fit on this page; give a larger page")
-    return _assembled(sheet, best[1], name)
+    return _assembled(sheet, [(p.scene, p.name) for p in best], name)
 
 
-def _fullest(candidates: list[Callable[[], list[tuple[Scene, str]]]],
-             pg: Page) -> tuple[tuple[int, int], list[tuple[Scene, str]], np.ndarray] | None:
-    """Of the candidate divisions of one row (each drawing its parts), the parts with the fewest clashing
-    labels (:func:`~graphmethods.sheets.sheet_fill.clashes`) and parts leaving their region, whose ink fills
-    the most cells of the sheet (the first of equals), with its rank (−faults, cells filled) and the cells it
-    fills; None when none fits."""
-    best: tuple[tuple[int, int], list[tuple[Scene, str]], np.ndarray] | None = None
-    for draw in candidates:
-        try:
-            parts = draw()
-        except InputError:              # too small a share for a part: the other candidates
-            continue
-        used = filled([sc for sc, _ in parts], pg)
-        rank = (-clashes([sc for sc, _ in parts]) - _overflowing(parts), int(used.sum()))
-        if best is None or rank > best[0]:
-            best = (rank, parts, used)
+#: a division of the sheet: the upper row's share of the height, the scheme's of its width, the right part's of
+#: the lower row's width
+Division = tuple[float, float, float]
+#: a part to draw: its figure function, its name on the sheet and its region (mm)
+Region = tuple[Callable[..., Scene], str, tuple[float, float, float, float]]
+
+
+def _chosen(parts: _Parts, sheet: Sheet, regions: Callable[[Division], list[Region]]) -> list[Part] | None:
+    """The parts of the division kept. The probe division is drawn; the others are ranked by the cells their
+    ink would fill, predicted from the probe's parts stretched onto their regions
+    (:meth:`~graphmethods.sheets.sheet_fill.PartInk.stretched`), and drawn in that order (the parts drawn
+    already are not drawn again): the best guess when it is predicted fuller than the probe, and more while
+    every division drawn clashes or leaves the sheet more than half empty (:data:`EMPTY_MAX`, the
+    figure-quality measure's bound). Of those drawn, the one with the fewest clashes filling the most is kept;
+    None when no division fits."""
+    lay = parts.lay
+    probe = _drawn(parts, regions(lay.probe))
+    guesses: list[tuple[int, int, Division]] = []
+    if probe is not None:
+        by_name = {p.name: p for p in probe}
+        seen: dict[tuple[str, tuple[float, float, float, float]], np.ndarray] = {}
+
+        def cells(fn: Callable[..., Scene], nm: str, box: tuple[float, float, float, float]) -> np.ndarray:
+            if (nm, box) not in seen:
+                p = by_name.get(nm)
+                seen[nm, box] = (p.ink.stretched(p.scene.page.inner_box(), box) if p is not None
+                                 else parts.draw(fn, nm, box).ink.cells)
+            return seen[nm, box]
+
+        for j, dv in enumerate(lay.divisions()):
+            try:
+                guesses.append((-int(np.logical_or.reduce([cells(*r) for r in regions(dv)]).sum()), j, dv))
+            except InputError:          # a part that does not fit: not a candidate
+                continue
+        guesses.sort()
+    order = [lay.probe] + [dv for _, _, dv in guesses if dv != lay.probe]
+    fuller = sum(1 for g in guesses if g[2] != lay.probe and -g[0] > _rank(probe)[1]) if probe is not None else 0
+    best = None
+    for n in range(1, len(order) + 1):     # all of them drawn: the best of every division
+        best = _best(parts, [regions(dv) for dv in order[:n]])
+        if (best is not None and _rank(best)[0] == 0 and n > min(fuller, 1)
+                and _empty_share(sheet, best) <= EMPTY_MAX):
+            break
     return best
 
 
-def _overflowing(parts: list[tuple[Scene, str]]) -> int:
-    """How many pairs of the parts overlap (a line of text too long for its region runs into the next part)."""
-    boxes = [box for sc, nm in parts if (box := inset(sc, nm)[0].bbox()) is not None]
-    out = 0
-    for i, A in enumerate(boxes):
-        out += sum(1 for B in boxes[i + 1:] if not (A[2] <= B[0] or B[2] <= A[0] or A[3] <= B[1] or B[3] <= A[1]))
-    return out
+def _drawn(parts: _Parts, regions: list[Region]) -> list[Part] | None:
+    """The parts drawn in their regions; None when one does not fit its region."""
+    try:
+        return [parts.draw(fn, nm, box) for fn, nm, box in regions]
+    except InputError:
+        return None
 
 
-def _upper_row(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], share: float,
-               lay: AnalysisSheetLayout) -> list[tuple[Scene, str]]:
+def _best(parts: _Parts, divisions: list[list[Region]]) -> list[Part] | None:
+    """Of some divisions (their regions), the parts with the fewest clashing labels and parts leaving their
+    regions, whose ink fills the most cells (the first of equals); None when none fits."""
+    best: tuple[tuple[int, int], list[Part]] | None = None
+    for regions in divisions:
+        row = _drawn(parts, regions)
+        if row is not None and (best is None or _rank(row) > best[0]):
+            best = (_rank(row), row)
+    return None if best is None else best[1]
+
+
+def _empty_share(sheet: Sheet, row: list[Part]) -> float:
+    """The share of the sheet's cells no ink touches, with the title and title block: the figure-quality
+    measure of the sheet these parts make (:func:`~graphmethods.sheets.engine.quality.measure`)."""
+    head = PartInk.of(Scene(sheet.page(row[0].scene.scales()), (sheet.header(),)), row[0].page)
+    return float(1.0 - filled([p.ink for p in row] + [head]).mean())
+
+
+@dataclass
+class Part:
+    """One part of the sheet as drawn in its region: the drawing, its name on the sheet, and its ink on the
+    sheet ``page`` (recorded when first asked)."""
+
+    scene: Scene
+    name: str
+    page: Page
+
+    @cached_property
+    def ink(self) -> PartInk:
+        return PartInk.of(self.scene, self.page)
+
+
+class _Parts:
+    """The sheet's parts, each drawn once per region it is offered (several divisions offer the same one)."""
+
+    def __init__(self, case: Any, nt: Any, m: int, pg: Page, ks: list[int], lay: AnalysisSheetLayout) -> None:
+        self.case, self.nt, self.m, self.pg, self.ks, self.lay = case, nt, m, pg, ks, lay
+        self._drawn: dict[tuple[str, tuple[float, ...]], Part | InputError] = {}
+        #: whether the slider's diagrams could be drawn (None: not yet tried)
+        self.slider: bool | None = None
+
+    def draw(self, fn: Callable[..., Scene], name: str, box: tuple[float, float, float, float], **kw: Any) -> Part:
+        """``fn`` (a figure function) drawn in ``box`` of the sheet as the part ``name`` (InputError when the
+        region is too small for it, raised again each time it is asked)."""
+        key = (name, tuple(float(v) for v in box))
+        if key not in self._drawn:
+            try:
+                sc = fn(self.case, notation=self.nt, title_block=False, m=self.m, page=region_page(self.pg, box), **kw)
+                self._drawn[key] = Part(sc, name, self.pg)
+            except InputError as e:
+                self._drawn[key] = e
+        got = self._drawn[key]
+        if isinstance(got, InputError):
+            raise got
+        return got
+
+
+def _rank(row: list[Part]) -> tuple[int, int]:
+    """A division's rank: (−clashing labels − parts overlapping, cells its ink fills); larger is better."""
+    inks = [p.ink for p in row]
+    return -clashes(inks) - overflowing(inks), int(filled(inks).sum())
+
+
+def _upper_regions(box: tuple[float, float, float, float], share: float, lay: AnalysisSheetLayout) -> list[Region]:
     """The upper row: the kinematic scheme (``share`` of the width) and the velocity plans beside it."""
     from graphmethods.sheets.kinematics import kinematic_scheme, velocity_plan_grid
 
     x0, top, x1, split_y = box
     split_x = x0 + share * (x1 - x0)
     gap = lay.gap_mm
-    s_scheme = kinematic_scheme(case, notation=nt, title_block=False, m=m,
-                                page=region_page(pg, (x0, top, split_x - gap / 2, split_y)))
-    s_vel = velocity_plan_grid(case, notation=nt, title_block=False, m=m,
-                               page=region_page(pg, (split_x + gap / 2, top, x1, split_y)))
-    return [(s_scheme, "scheme"), (s_vel, "velocity-plans")]
+    return [(kinematic_scheme, "scheme", (x0, top, split_x - gap / 2, split_y)),
+            (velocity_plan_grid, "velocity-plans", (split_x + gap / 2, top, x1, split_y))]
 
 
-def _lower_row(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], ks: list[int],
-               share: float, lay: AnalysisSheetLayout) -> list[tuple[Scene, str]]:
-    """The lower row: the acceleration plans of positions ``ks`` side by side, and at the right the slider's
-    diagrams (``share`` of the width) or the tables (:func:`_right_part`)."""
+def _lower_regions(parts: _Parts, box: tuple[float, float, float, float], share: float) -> list[Region]:
+    """The lower row: the acceleration plans of the chosen positions side by side, and at the right the
+    slider's diagrams (``share`` of the width) or the tables (:func:`_right_part`)."""
     from graphmethods.sheets.acceleration import acceleration_plan
 
     x0, y0, x1, y1 = box
-    gap = lay.gap_mm
-    beside, right = _right_part(case, nt, m, pg, box, share, lay)
+    gap, ks = parts.lay.gap_mm, parts.ks
+    beside, right = _right_part(parts, box, share)
     w = (right - x0 - gap * (len(ks) - 1)) / len(ks)
-    parts = []
-    for j, k in enumerate(ks):
-        left = x0 + j * (w + gap)
-        cell = region_page(pg, (left, y0, left + w, y1))
-        parts.append((acceleration_plan(case, k, notation=nt, title_block=False, m=m, page=cell),
-                      f"acceleration-plan-{k}"))
-    return parts + beside
+    return [(partial(acceleration_plan, position=k), f"acceleration-plan-{k}",
+             (x0 + j * (w + gap), y0, x0 + j * (w + gap) + w, y1)) for j, k in enumerate(ks)] + beside
 
 
-def _right_part(case: Any, nt: Any, m: int, pg: Page, box: tuple[float, float, float, float], share: float,
-                lay: AnalysisSheetLayout) -> tuple[list[tuple[Scene, str]], float]:
+def _right_part(parts: _Parts, box: tuple[float, float, float, float], share: float) -> tuple[list[Region], float]:
     """The lower row's right part: the slider's kinematic diagrams (their share of the width), or without a
     slider the tables of velocities and of accelerations per position, one above the other (as wide as they
-    are); and where the acceleration plans end (mm). Nothing when neither can be drawn."""
+    are, drawn to be measured); and where the acceleration plans end (mm). Nothing when neither can be drawn."""
     from graphmethods.sheets.acceleration import acceleration_table
     from graphmethods.sheets.calculus import kinematic_diagrams
     from graphmethods.sheets.kinematics import velocity_table
 
     x0, y0, x1, y1 = box
+    gap = parts.lay.gap_mm
     left = x1 - share * (x1 - x0)
-    try:
-        return ([(kinematic_diagrams(case, notation=nt, title_block=False, m=m,
-                                     page=region_page(pg, (left, y0, x1, y1))), "kinematic-diagrams")],
-                left - lay.gap_mm)
-    except InputError:                  # no slider: the tables in its place
-        pass
+    if parts.slider is not False:
+        diagrams: Region = (kinematic_diagrams, "kinematic-diagrams", (left, y0, x1, y1))
+        try:
+            if parts.slider is None:    # the first region offered tells whether the linkage has one slider
+                parts.draw(*diagrams)
+            parts.slider = True
+            return [diagrams], left - gap
+        except InputError:              # no slider: the tables in its place
+            parts.slider = False
     tables = ((velocity_table, "velocity-table"), (acceleration_table, "acceleration-table"))
     for n in (2, 1):
-        h = (y1 - y0 - (n - 1) * lay.gap_mm) / n
-        rows = [(y0 + i * (h + lay.gap_mm), y0 + i * (h + lay.gap_mm) + h) for i in range(n)]
+        h = (y1 - y0 - (n - 1) * gap) / n
+        rows = [(y0 + i * (h + gap), y0 + i * (h + gap) + h) for i in range(n)]
         try:
-            probes = [fn(case, notation=nt, title_block=False, m=m, page=region_page(pg, (left, a, x1, b)))
-                      for (fn, _), (a, b) in zip(tables, rows)]
+            probes = [parts.draw(fn, nm, (left, a, x1, b)) for (fn, nm), (a, b) in zip(tables, rows)]
         except InputError:              # too wide or too long: one table, or none
             continue
-        widths = [t.width_mm for p in probes for t in p.elements if isinstance(t, Table)]
-        left = max(left, x1 - max(widths) - 2 * lay.table_pad_mm)
-        return ([(fn(case, notation=nt, title_block=False, m=m, page=region_page(pg, (left, a, x1, b))), nm)
-                 for (fn, nm), (a, b) in zip(tables, rows)], left - lay.gap_mm)
+        widths = [t.width_mm for p in probes for t in p.scene.elements if isinstance(t, Table)]
+        left = max(left, x1 - max(widths) - 2 * parts.lay.table_pad_mm)
+        return [(fn, nm, (left, a, x1, b)) for (fn, nm), (a, b) in zip(tables, rows)], left - gap
     return [], x1
 
 

@@ -113,17 +113,17 @@ def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     seg = np.asarray(seg, dtype=float).reshape(-1, 4)
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
     k, n = len(boxes), len(seg)
-    return _pairs_hit(np.tile(seg, (k, 1)), np.repeat(boxes, n, axis=0)).reshape(k, n)
+    return pairs_hit(np.tile(seg, (k, 1)), np.repeat(boxes, n, axis=0)).reshape(k, n)
 
 
-def _pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+def pairs_hit(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     """:func:`segments_hit_boxes` of aligned pairs: does segment ``seg[i]`` pass through box ``boxes[i]``?
 
     The same arithmetic pair by pair (the same divisions, the same comparisons), on 1-d arrays: the
     pairs worth testing only, not every segment against every box.
 
     >>> seg = np.array([[0.0, 10.0, 100.0, 10.0]] * 2)
-    >>> _pairs_hit(seg, np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])).tolist()
+    >>> pairs_hit(seg, np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])).tolist()
     [True, False]
     """
     px, py = seg[:, 0], seg[:, 1]
@@ -320,7 +320,7 @@ class Occupancy:
                     ok[a] = False
         else:
             i = np.array([a for a, _ in pairs])
-            hit = _pairs_hit(self.segment_array()[[k for _, k in pairs]], np.array([grown[a] for a, _ in pairs]))
+            hit = pairs_hit(self.segment_array()[[k for _, k in pairs]], np.array([grown[a] for a, _ in pairs]))
             for a in np.unique(i[hit]).tolist():
                 ok[a] = False
         return np.array(ok, dtype=bool)

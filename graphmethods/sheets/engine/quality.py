@@ -15,7 +15,10 @@ label_bbox`):
 - ``noise``: numbers printed as a power of ten more than 10⁹ times smaller than the numbers beside them
   (round-off printed as working: ``4,47·10⁻¹⁵²``).
 
-:func:`faults` turns a measure into the list of what breaks the standard for the page's format.
+:func:`faults` turns a measure into the list of what breaks the standard for the page's format. Its count of
+inked cells, :func:`ink_cells`, is public: the sheets that choose between layouts count by it
+(:mod:`graphmethods.sheets.sheet_fill`); it and the crossing test :func:`boxes_crossed` look only at the
+segments near each cell or label, with the decisions of testing every pair.
 
 >>> from graphmethods.scene import Page, Scene, Text, Line
 >>> page = Page("A4", "landscape", frame=True)
@@ -39,9 +42,8 @@ from graphmethods.scene import markup
 from graphmethods.scene.elements import CAP, label_bbox
 from graphmethods.scene.primitives import Label
 from graphmethods.scene.scene import Scene
-from graphmethods.sheets.engine.labels import circle_points
 from graphmethods.sheets.engine.lettering import is_course_sheet, is_slide, lettering
-from graphmethods.sheets.layout import segments_hit_boxes
+from graphmethods.sheets.layout import pairs_hit, segments_hit_boxes
 
 #: the cell of the empty-space measure (mm)
 CELL_MM = 20.0
@@ -49,6 +51,12 @@ CELL_MM = 20.0
 EMPTY_MAX = 0.5
 #: two texts overlap when they share more than this both across and down (mm)
 OVERLAP_MM = 0.3
+#: how far (mm) beyond its extent an item is filed in the buckets of :func:`boxes_crossed`: far above the
+#: rounding of page coordinates and the prefilter's slack, so no pair that can touch is missed
+_BUCKET_SLACK_MM = 1e-3
+#: a circle's 16-gon (:func:`~graphmethods.sheets.engine.labels.circle_points`, the same arithmetic)
+_COS16 = np.array([math.cos(2 * math.pi * k / 16) for k in range(17)])
+_SIN16 = np.array([math.sin(2 * math.pi * k / 16) for k in range(17)])
 #: a power of ten this much smaller than its neighbours is round-off printed as working
 NOISE_RATIO = 1e-9
 
@@ -66,11 +74,19 @@ class Quality:
     n_texts: int
 
 
-def _segments(rec: RecordingRenderer, *, skip_groups: Sequence[str] = ()) -> np.ndarray:
-    rows: list[tuple[float, float, float, float]] = []
+def segments_marked(rec: RecordingRenderer, groups: Sequence[str] = ()) -> tuple[np.ndarray, np.ndarray]:
+    """The line segments of a recorded drawing (paths, polygons, circles as 16-gons, in the order drawn) as an
+    (n, 4) array of ``x0, y0, x1, y1`` (mm), and which of them are drawn inside any of the ``groups``
+    (``"page"``: the frame and title block).
+
+    >>> from graphmethods.scene import Line, Page, Scene
+    >>> seg, marked = segments_marked(record(Scene(Page("A4"), (Line((0, 0), (10, 0), name="l"),))), ("l",))
+    >>> seg.tolist(), marked.tolist()
+    ([[0.0, 0.0, 10.0, 0.0]], [True])
+    """
+    runs: list[np.ndarray] = []
+    marks: list[bool] = []
     for c in rec.calls:
-        if any(g in skip_groups for g in c.groups):
-            continue
         if c.kind == "path":
             pts, closed = c.data
             pts = list(pts) + ([pts[0]] if closed and pts else [])
@@ -78,11 +94,126 @@ def _segments(rec: RecordingRenderer, *, skip_groups: Sequence[str] = ()) -> np.
             pts = list(c.data) + [c.data[0]] if c.data else []
         elif c.kind == "circle":
             cx, cy, r = c.data
-            pts = circle_points(cx, cy, r, n=16)
+            runs.append(np.column_stack((cx + r * _COS16, cy + r * _SIN16)))
+            marks.append(any(g in groups for g in c.groups))
+            continue
         else:
             continue
-        rows.extend((a[0], a[1], b[0], b[1]) for a, b in zip(pts, pts[1:]))
-    return np.asarray(rows, dtype=float).reshape(-1, 4)
+        if len(pts) > 1:
+            runs.append(np.asarray(pts, dtype=float).reshape(-1, 2))
+            marks.append(any(g in groups for g in c.groups))
+    if not runs:
+        return np.empty((0, 4)), np.empty(0, dtype=bool)
+    n = np.array([len(r) for r in runs])
+    flat = np.concatenate(runs)
+    keep = np.ones(len(flat), dtype=bool)
+    keep[np.cumsum(n) - 1] = False              # the last point of a run starts no segment
+    first = np.flatnonzero(keep)
+    return np.column_stack((flat[first], flat[first + 1])), np.repeat(np.array(marks), n - 1)
+
+
+def _spans(lo: np.ndarray, hi: np.ndarray, grid_mm: float) -> tuple[np.ndarray, np.ndarray]:
+    """The first and last bucket (of ``grid_mm``) each interval ``[lo, hi]`` reaches, widened by
+    :data:`_BUCKET_SLACK_MM` so no rounding loses a bucket."""
+    return (np.floor((lo - _BUCKET_SLACK_MM) / grid_mm).astype(np.int64),
+            np.floor((hi + _BUCKET_SLACK_MM) / grid_mm).astype(np.int64))
+
+
+def _buckets(ext: np.ndarray, grid_mm: float) -> tuple[np.ndarray, np.ndarray]:
+    """Each item of the extents ``ext`` (n × 4: x_lo, y_lo, x_hi, y_hi) under every bucket its extent
+    reaches: (item numbers, bucket keys)."""
+    q0, q1 = _spans(ext[:, 0], ext[:, 2], grid_mm)
+    r0, r1 = _spans(ext[:, 1], ext[:, 3], grid_mm)
+    nq, nr = q1 - q0 + 1, r1 - r0 + 1
+    n = nq * nr
+    item = np.repeat(np.arange(len(ext)), n)
+    local = np.arange(int(n.sum())) - np.repeat(np.cumsum(n) - n, n)
+    q = np.repeat(q0, n) + local % np.repeat(nq, n)
+    r = np.repeat(r0, n) + local // np.repeat(nq, n)
+    return item, (q << 32) + r
+
+
+def _near_pairs(seg: np.ndarray, boxes: np.ndarray, grid_mm: float) -> tuple[np.ndarray, np.ndarray]:
+    """The pairs (segment, box) whose extents come within :data:`_BUCKET_SLACK_MM` of each other, found
+    through buckets of ``grid_mm`` (a superset of the pairs that can touch; a pair sharing several buckets
+    comes as often)."""
+    e = _BUCKET_SLACK_MM
+    s_ext = np.column_stack((np.minimum(seg[:, 0], seg[:, 2]), np.minimum(seg[:, 1], seg[:, 3]),
+                             np.maximum(seg[:, 0], seg[:, 2]), np.maximum(seg[:, 1], seg[:, 3])))
+    s_item, s_key = _buckets(s_ext, grid_mm)
+    b_item, b_key = _buckets(boxes, grid_mm)
+    order = np.argsort(s_key, kind="stable")
+    s_item, s_key = s_item[order], s_key[order]
+    lo, hi = np.searchsorted(s_key, b_key, "left"), np.searchsorted(s_key, b_key, "right")
+    n = hi - lo
+    bi = np.repeat(b_item, n)
+    si = s_item[np.arange(int(n.sum())) - np.repeat(np.cumsum(n) - n, n) + np.repeat(lo, n)]
+    a, b = s_ext[si], boxes[bi]
+    near = (a[:, 0] <= b[:, 2] + e) & (a[:, 2] >= b[:, 0] - e) & (a[:, 1] <= b[:, 3] + e) & (a[:, 3] >= b[:, 1] - e)
+    return si[near], bi[near]
+
+
+def boxes_crossed(seg: np.ndarray, boxes: np.ndarray, *, grid_mm: float = 10.0) -> np.ndarray:
+    """Which ``boxes`` (k × 4, mm) a segment of ``seg`` (n × 4, mm) passes through or touches: a bool per box.
+
+    The decisions of :func:`~graphmethods.sheets.layout.segments_hit_boxes` (``.any(axis=1)``), to the bit:
+    the same clipping arithmetic, applied only to the pairs whose extents meet (found through a grid of
+    ``grid_mm`` buckets), so a sheet's thousands of segments against its hundreds of labels cost
+    milliseconds.
+
+    >>> seg = np.array([[0.0, 10.0, 100.0, 10.0], [0.0, 0.0, 0.0, 5.0]])
+    >>> boxes_crossed(seg, np.array([[40.0, 8.0, 60.0, 12.0], [40.0, 12.0, 60.0, 14.0]])).tolist()
+    [True, False]
+    """
+    seg = np.asarray(seg, dtype=float).reshape(-1, 4)
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    out = np.zeros(len(boxes), dtype=bool)
+    if not len(seg) or not len(boxes):
+        return out
+    if not (np.isfinite(seg).all() and np.isfinite(boxes).all()):      # no buckets for these: every pair
+        for chunk in range(0, len(seg), 4000):
+            out |= segments_hit_boxes(seg[chunk:chunk + 4000], boxes).any(axis=1)
+        return out
+    si, bi = _near_pairs(seg, boxes, grid_mm)
+    out[bi[pairs_hit(seg[si], boxes[bi])]] = True
+    return out
+
+
+def cell_grid(inner: tuple[float, float, float, float]) -> tuple[float, float, int, int]:
+    """The measure's grid of :data:`CELL_MM` cells centred in the box ``inner`` (a page's frame, mm): its
+    origin (mm) and the cells across and down.
+
+    >>> cell_grid((0.0, 0.0, 50.0, 30.0))
+    (5.0, 5.0, 2, 1)
+    """
+    x0, y0, x1, y1 = inner
+    nx, ny = int((x1 - x0) // CELL_MM), int((y1 - y0) // CELL_MM)
+    return x0 + ((x1 - x0) - nx * CELL_MM) / 2, y0 + ((y1 - y0) - ny * CELL_MM) / 2, nx, ny
+
+
+def ink_cells(seg: np.ndarray, boxes: np.ndarray, inner: tuple[float, float, float, float]) -> np.ndarray:
+    """Which cells of the grid in ``inner`` (:func:`cell_grid`; bool array, cells across × down) some ink
+    touches: a segment of ``seg`` (n × 4, mm) passing through or touching the cell, or a text box of
+    ``boxes`` (k × 4, mm) overlapping it. The one count of filled cells: :func:`measure`'s empty share is
+    ``1 − ink_cells(…).mean()`` and the sheets choose their divisions by it
+    (:mod:`graphmethods.sheets.sheet_fill`).
+
+    >>> seg = np.array([[100.0, 100.0, 180.0, 100.0]])
+    >>> int(ink_cells(seg, np.empty((0, 4)), (20.0, 10.0, 831.0, 584.0)).sum())
+    5
+    """
+    ox, oy, nx, ny = cell_grid(inner)
+    if nx < 1 or ny < 1:
+        return np.zeros((max(nx, 0), max(ny, 0)), dtype=bool)
+    i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
+    cells = np.column_stack((ox + i.ravel() * CELL_MM, oy + j.ravel() * CELL_MM,
+                             ox + (i.ravel() + 1) * CELL_MM, oy + (j.ravel() + 1) * CELL_MM))
+    used = boxes_crossed(seg, cells, grid_mm=CELL_MM)
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    if len(boxes):
+        used |= ((cells[:, None, 0] < boxes[None, :, 2]) & (boxes[None, :, 0] < cells[:, None, 2])
+                 & (cells[:, None, 1] < boxes[None, :, 3]) & (boxes[None, :, 1] < cells[:, None, 3])).any(axis=1)
+    return used.reshape(nx, ny)
 
 
 def glyph_box(lab: Label) -> tuple[float, float, float, float]:
@@ -123,39 +254,16 @@ def _noise(lab: Label) -> str | None:
     return lab.text if min(powers) < NOISE_RATIO * ref else None
 
 
-def _empty_share(rec: RecordingRenderer, inner: tuple[float, float, float, float], seg: np.ndarray,
-                 boxes: np.ndarray) -> float:
-    x0, y0, x1, y1 = inner
-    nx, ny = int((x1 - x0) // CELL_MM), int((y1 - y0) // CELL_MM)
-    if nx < 1 or ny < 1:
-        return 0.0
-    ox, oy = x0 + ((x1 - x0) - nx * CELL_MM) / 2, y0 + ((y1 - y0) - ny * CELL_MM) / 2
-    i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
-    cells = np.column_stack((ox + i.ravel() * CELL_MM, oy + j.ravel() * CELL_MM,
-                             ox + (i.ravel() + 1) * CELL_MM, oy + (j.ravel() + 1) * CELL_MM))
-    used = np.zeros(len(cells), dtype=bool)
-    for chunk in range(0, len(seg), 4000):
-        used |= segments_hit_boxes(seg[chunk:chunk + 4000], cells).any(axis=1)
-    if len(boxes):
-        used |= ((cells[:, None, 0] < boxes[None, :, 2]) & (boxes[None, :, 0] < cells[:, None, 2])
-                 & (cells[:, None, 1] < boxes[None, :, 3]) & (boxes[None, :, 1] < cells[:, None, 3])).any(axis=1)
-    return float(1.0 - used.mean())
-
-
 def measure(scene: Scene) -> Quality:
     """The quality of a scene as drawn (see the module docstring)."""
     rec = record(scene)
     labels = [c.data for c in rec.calls if c.kind == "text"]
-    seg_all = _segments(rec)
-    frame_free = _segments(rec, skip_groups=("page",))
+    seg_all, in_page = segments_marked(rec, ("page",))
 
     glyphs = np.array([glyph_box(lab) for lab in labels], dtype=float).reshape(-1, 4)
     crossed: list[str] = []
     if len(labels) and len(seg_all):
-        hit = np.zeros(len(labels), dtype=bool)
-        for chunk in range(0, len(seg_all), 4000):
-            hit |= segments_hit_boxes(seg_all[chunk:chunk + 4000], glyphs).any(axis=1)
-        crossed = [labels[k].text for k in np.flatnonzero(hit)]
+        crossed = [labels[k].text for k in np.flatnonzero(boxes_crossed(seg_all, glyphs))]
     boxes = np.array([label_bbox(lab) for lab in labels], dtype=float).reshape(-1, 4)
     overlaps: list[str] = []
     if len(labels) > 1:
@@ -166,8 +274,10 @@ def measure(scene: Scene) -> Quality:
     sizes = [lab.size_mm for lab in labels if any(s == 0 and t.strip() for t, s in lab.runs)]
     noise = [t for t in (_noise(lab) for lab in labels) if t]
 
-    judged = scene.page.frame or is_slide(scene.page)      # a framed sheet's frame, or a slide inside its margins
-    empty = _empty_share(rec, scene.page.inner_box(), frame_free, boxes) if judged else 0.0
+    empty = 0.0
+    if scene.page.frame or is_slide(scene.page):            # a framed sheet's frame, or a slide inside its margins
+        used = ink_cells(seg_all[~in_page], boxes, scene.page.inner_box())
+        empty = float(1.0 - used.mean()) if used.size else 0.0
     return Quality(scene.page.size, empty, min(sizes) if sizes else math.inf, tuple(crossed), tuple(overlaps),
                    tuple(noise), len(labels))
 
@@ -190,4 +300,5 @@ def faults(q: Quality) -> list[str]:
     return out
 
 
-__all__ = ["CELL_MM", "EMPTY_MAX", "Quality", "faults", "glyph_box", "measure"]
+__all__ = ["CELL_MM", "EMPTY_MAX", "Quality", "boxes_crossed", "cell_grid", "faults", "glyph_box", "ink_cells",
+           "measure", "segments_marked"]
