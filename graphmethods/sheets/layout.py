@@ -344,7 +344,7 @@ class Occupancy:
                 if ok[i] and _segment_hits_box(segs[j][0], segs[j][1], grown[i]):
                     ok[i] = False
         else:
-            for i in np.unique(a[_pairs_hit(self.segment_array()[k], gb[rows])]).tolist():
+            for i in np.unique(a[pairs_hit(self.segment_array()[k], gb[rows])]).tolist():
                 ok[i] = False
         return np.array(ok, dtype=bool)
 
