@@ -122,3 +122,8 @@ KNOWN_DYNAMICS: dict[tuple[str, str, str], str] = {
     ('engine', 'steps:kinematic-diagrams', 'en'): 'text 2.60 mm; 2 text over text',
     ('press', 'steps:kinematic-diagrams', 'en'): 'text 2.60 mm; 2 text over text',
 }
+
+#: the worksheet family (tests/test_figure_quality_worksheets.py): (subject, page, language) -> what fails;
+#: subject "KIND:SEED:N" with page "student" or "key", or "PROBLEM ANSWERS-FILE" with page "overlay"
+KNOWN_WORKSHEETS: dict[tuple[str, str, str], str] = {
+}
