@@ -3,6 +3,7 @@ independently: the positions of the joints written out by hand and differentiate
 
 import json
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -86,7 +87,9 @@ def test_the_key_draws_the_plan_at_mu_a_and_the_student_page_does_not(v):
     student = record(ws.student_page(v))
     with pytest.raises(InputError):
         student.vector_length_mm("key-a_B")
-    assert ws.key_page(v).element("grid") == ws.student_page(v).element("grid")
+    # the paper's lines line up (each page clears them behind its own lettering: the holes differ)
+    assert (replace(ws.key_page(v).element("grid"), holes=())
+            == replace(ws.student_page(v).element("grid"), holes=()))
 
 
 def test_a_problem_file_round_trips_and_is_checked(tmp_path):

@@ -166,3 +166,39 @@ def test_a_flywheel_without_figures_loads_no_figure_layer():
     assert err == "[]" and "J_F" in out
     err, out = layers()
     assert err == "['scene']" and "J_F = 43.69" in out
+
+
+def test_the_sheets_package_imports_its_modules_when_asked():
+    """`import graphmethods.sheets` loads no sheet module; a function is imported when first asked for, and one
+    named as its module (cam_sheet, dynamic_analysis_sheet, ...) stays the function whichever is imported first."""
+    code = (
+        "import sys, importlib\n"
+        "import graphmethods.sheets as s\n"
+        "print(sorted(m for m in sys.modules if m.startswith('graphmethods.sheets.')))\n"
+        "import graphmethods.sheets.dynamic_analysis_sheet, graphmethods.sheets.cam_sheet\n"
+        "from graphmethods.sheets import cam_sheet, kinematic_scheme\n"
+        "from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet as d\n"
+        "fs = [s.cam_sheet, cam_sheet, kinematic_scheme, s.dynamic_analysis_sheet, d, s.energy_indicator]\n"
+        "print(all(callable(f) and not isinstance(f, type(sys)) for f in fs), d is s.dynamic_analysis_sheet)\n"
+        "print(s.layout.__name__, set(s.__all__) <= set(dir(s)))\n"
+        "try:\n    s.no_such_figure\nexcept AttributeError:\n    print('missing')\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split("\n")
+    assert out[:4] == ["[]", "True True", "graphmethods.sheets.layout True", "missing"]
+
+
+def test_a_notation_reads_a_family_of_words_when_first_asked():
+    """The vocabulary's core is read at import, a family's file when one of its keys is first asked for; the
+    mapping reads every family when iterated, in the order of `vocabulary.tables()`."""
+    code = (
+        "from graphmethods.scene import vocabulary\n"
+        "from graphmethods.scene.notation import get\n"
+        "before = vocabulary.family.cache_info().currsize\n"
+        "word = get('ru').word('kinematics.plan', k=3)\n"
+        "print(before, vocabulary.family.cache_info().currsize, word)\n"
+        "symbols, words, _ = vocabulary.tables()\n"
+        "en = {k: v[0] for k, v in symbols.items()}\n"
+        "print(list(get('zh').words) == list(words), dict(get('en').symbols) == en)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split("\n")
+    assert out[:2] == ["1 2 План скоростей, положение 3", "True True"]

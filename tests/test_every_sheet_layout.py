@@ -54,7 +54,6 @@ NOT_DRAWN = {
 KNOWN: dict[tuple[str, str, str], str] = {
     **{("triad-six-bar", "velocity_table", lang): "the table of a class III six-bar (9 points, 5 links) is wider "
        "than an A4 page" for lang in LANGS},
-    ("triad-six-bar", "force_analysis_sheet", "zh"): "the acceleration plan's φ line runs into the label nCEc",
 }
 
 CASES = [(p, f) for p in builtin.names() if p not in builtin.CAMS

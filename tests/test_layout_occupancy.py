@@ -147,3 +147,23 @@ def test_lists_cut_by_hand_are_indexed_anew():
     occ.add_box((0.0, 0.0, 1.0, 1.0))
     assert occ.free([(40, 9, 60, 11), (41, 20.5, 45, 21.5)]).tolist() == [True, True]
     assert occ.is_free((0.5, 0.5, 0.8, 0.8)) is False
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.lists(point, min_size=1, max_size=8), max_size=16), st.lists(box, max_size=6),
+       st.lists(box, min_size=1, max_size=12), st.sampled_from([0.0, 0.6]), st.sampled_from([0, 48]))
+def test_free_over_numpy_arrays_decides_as_the_plain_test(lines, boxes, probes, pad, few):
+    """Many boxes against many near segments (``free`` compares them over numpy arrays): the same decisions."""
+    occ = Occupancy(pad_mm=pad)
+    for pts in lines:
+        occ.add_line(pts)
+    for b in boxes:
+        occ.add_box(b)
+    many, was_few = layout._MANY_PAIRS, layout._FEW
+    try:
+        layout._MANY_PAIRS, layout._FEW = 0, few
+        assert occ.free(probes).tolist() == [plain_is_free(occ, b) for b in probes]
+        assert occ.free(probes, within=(2.0, 2.0, 38.0, 38.0)).tolist() == \
+            [plain_is_free(occ, b, within=(2.0, 2.0, 38.0, 38.0)) for b in probes]
+    finally:
+        layout._MANY_PAIRS, layout._FEW = many, was_few

@@ -18,7 +18,7 @@ changes the whole figure. The texts themselves are data: the TOML files of
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
@@ -129,13 +129,55 @@ class Notation:
         return f"{symbol} = 0 ({self.word('numbers.zero_here', q=because)})"
 
 
+class _Texts(Mapping[str, str]):
+    """One language's words (or symbols): the core's keys at once, a family's ``"family.key"`` read from its
+    file the first time one of its keys is asked for (:func:`vocabulary.family` parses each file once per
+    process, for the three languages). Iterating reads every family (in the order of
+    :func:`vocabulary.tables`: the core's, then the families' sorted by name)."""
+
+    def __init__(self, i: int, table: str) -> None:
+        self._i, self._table = i, table
+        self._found: dict[str, str] = {}
+        self._read: set[str] = set()
+        self._complete = False
+        self._read_family(vocabulary.CORE)
+
+    def _read_family(self, name: str) -> None:
+        triples: dict[str, tuple[str, str, str]] = getattr(vocabulary.family(name), self._table)
+        prefix = "" if name == vocabulary.CORE else f"{name}."
+        self._found.update((prefix + key, triple[self._i]) for key, triple in triples.items())
+        self._read.add(name)
+
+    def __getitem__(self, key: str) -> str:
+        try:
+            return self._found[key]
+        except KeyError:
+            name = key.partition(".")[0]
+            if name in self._read or name not in vocabulary.family_names():
+                raise
+        self._read_family(name)
+        return self._found[key]
+
+    def _every(self) -> dict[str, str]:
+        if not self._complete:
+            self._found.clear()
+            self._read.clear()
+            for name in (vocabulary.CORE, *vocabulary.family_names()):
+                self._read_family(name)
+            self._complete = True
+        return self._found
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._every())
+
+    def __len__(self) -> int:
+        return len(self._every())
+
+
 def _build(code: str) -> Notation:
     i = _PROFILES.index(code)
-    all_symbols, all_words, units_ru = vocabulary.tables()
-    symbols = MappingProxyType({k: v[i] for k, v in all_symbols.items()})
-    words = MappingProxyType({k: v[i] for k, v in all_words.items()})
-    units = MappingProxyType(dict(units_ru) if code == "ru" else {})
-    return Notation(code, symbols, words, units, decimal="," if code == "ru" else ".",
+    units = MappingProxyType(dict(vocabulary.family(vocabulary.CORE).units_ru) if code == "ru" else {})
+    return Notation(code, _Texts(i, "symbols"), _Texts(i, "words"), units, decimal="," if code == "ru" else ".",
                     quantity_style="slash" if code == "zh" else "comma")
 
 

@@ -37,14 +37,13 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan, Component, acceleration_plans
 from graphmethods.scene import Line, Page, Point, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
-from graphmethods.scene.elements import Element
+from graphmethods.scene.elements import Element, Group as ElementGroup
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import DASHED
-from graphmethods.sheets import kinematics as K
+from graphmethods.sheets import acceleration_layout as AL, kinematics as K
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet
 from graphmethods.sheets.styles import CELL
 from graphmethods.sheets.velocity_table import table_rows
-from graphmethods.units import convenient_at_least
 
 SMALL_MM = K.SMALL_MM
 TABLE_MM = K.TABLE_MM
@@ -252,108 +251,27 @@ class AccelerationPlanLayout(K.PlanLayout):
 
 ACCELERATION_PLAN_LAYOUT = AccelerationPlanLayout()
 
-Block = list[tuple[str, str, float]]
+Block = AL.Block
 
 
-def _equation_blocks(phi: str, eqs: list[tuple[str, str]], *, split_values: bool,
-                     lay: AccelerationPlanLayout) -> list[Block]:
-    """(name, text, indent) of φ and of each equation with its known values under it (each value on a line of
-    its own when ``split_values``)."""
-    dx = lay.values_indent_mm
-    if split_values:
-        return [[("equation-phi", phi, 0.0)]] + [
-            [(f"equation-{j}", a, 0.0)] + [(f"values-{j}" + (f"-{i}" if i else ""), t, dx)
-                                           for i, t in enumerate(b.split(";  ") if b else [])]
-            for j, (a, b) in enumerate(eqs)]
-    return [[("equation-phi", phi, 0.0)]] + [[(f"equation-{j}", a, 0.0)] + ([(f"values-{j}", b, dx)] if b else [])
-                                             for j, (a, b) in enumerate(eqs)]
-
-
-def _equation_columns(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_bottom: float,
-                      lay: AccelerationPlanLayout, width: float = math.inf) -> tuple[list[list[Block]], float, float]:
-    """The equations under the plan: one column, or two on a slide (a short page) when every line fits and
-    the table beside the plan does not reach them; the known values each on a line of its own when a line of
-    them is wider than ``width`` (mm: the plan's share, the column beside reaching down to them). Returns the
-    columns, their height and a column's width."""
-    x0, _, x1, _ = sheet.box
-    half = (x1 - x0) / 2 - 4.0
-    blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
-    if any(markup.text_width_mm(t, TEXT_MM) + dx > width for b_ in blocks for _, t, dx in b_):
-        blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
-    two = getattr(sheet.probe, "size", "") == "SLIDE" and len(blocks) > 2
-    if two:
-        blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
-        two = all(markup.text_width_mm(t, TEXT_MM) + dx <= half for b_ in blocks for _, t, dx in b_)
-        if not two:
-            blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
-    n_lines = sum(len(b_) for b_ in blocks)
-    cut, count = len(blocks), 0
-    if two:
-        for i, b_ in enumerate(blocks):
-            count += len(b_)
-            if count >= n_lines / 2:
-                cut = i + 1
-                break
-    columns = [blocks[:cut], blocks[cut:]] if two else [blocks]
-    eq_h = max(sum(len(b_) for b_ in col) for col in columns) * lay.equation_mm + 2.0
-    if two and sheet.caption_y - lay.caption_room_mm - eq_h < right_bottom:     # the table would reach them
-        blocks = _equation_blocks(phi, eqs, split_values=False, lay=lay)
-        columns = [blocks]
-        eq_h = sum(len(b_) for b_ in blocks) * lay.equation_mm + 2.0
-    return columns, eq_h, half
-
-
-def _equations_beside(phi: str, eqs: list[tuple[str, str]], sheet: Sheet, right_w: float, right_bottom: float,
-                      lay: AccelerationPlanLayout) -> tuple[float, list[list[Block]]] | None:
-    """The equations in the column beside the plan, under its table and ε, each known value on a line of its
-    own, when the page is tall enough for them there (a panel of an A1 sheet): the split (mm) and the one
-    column; None when they do not fit (they go under the plan)."""
-    x0, _, x1, _ = sheet.box
-    blocks = _equation_blocks(phi, eqs, split_values=True, lay=lay)
-    widest = max(markup.text_width_mm(t, TEXT_MM) + dx for b_ in blocks for _, t, dx in b_)
-    split = K._plan_split(sheet.box, max(right_w, widest + lay.column_x_mm), lay)
-    n_lines = sum(len(b_) for b_ in blocks)
-    bottom = right_bottom + lay.equations_below_mm + n_lines * lay.equation_mm
-    if split + lay.column_x_mm + widest > x1 + 1e-6 or bottom > sheet.caption_y - lay.caption_room_mm:
-        return None
-    return split, [blocks]
-
-
-def _runs_under(columns: list[list[Block]], top: float, x0: float, split: float, right_bottom: float,
-                lay: AccelerationPlanLayout) -> bool:
-    """Does a line of the equations (the first at ``top``, mm) reach past ``split`` above ``right_bottom``, where
-    the table and ε beside the plan are?"""
-    row = 0
-    for b_ in columns[0]:
-        for _, t, dx in b_:
-            y = top + row * lay.equation_mm
-            if y - TEXT_MM < right_bottom and x0 + dx + markup.text_width_mm(t, TEXT_MM) > split - lay.plan_gap_mm:
-                return True
-            row += 1
-    return False
-
-
-def _plan_need(area, arr: np.ndarray, lay: AccelerationPlanLayout) -> float:
-    """The convenient μ (per mm) a plan of points ``arr`` (n, 2) gets in ``area`` within its margins (inf when
-    the area has no room)."""
-    aw, ah = area[2] - area[0] - 2 * lay.margin_mm, area[3] - area[1] - 2 * lay.margin_mm
-    span = np.ptp(arr, axis=0)
-    if aw <= 0 or ah <= 0 or max(span) <= 0:
-        return math.inf
-    return convenient_at_least(max(float(span[0]) / aw, float(span[1]) / ah))
-
-
-def _equation_texts(columns: list[list[Block]], at, half: float, lay: AccelerationPlanLayout) -> list[Element]:
-    """The equations' Text elements, the columns ``half + 8`` mm apart from ``at`` (mm)."""
-    x0, ey = at
+def _equation_texts(columns: list[list[Block]], origins, lay: AccelerationPlanLayout) -> list[Element]:
+    """The equations' Text elements, each column from its origin (mm); the lines of one text broken
+    (:func:`~graphmethods.sheets.acceleration_layout.wrap`) are one group of its name."""
     out: list[Element] = []
-    for c_, col in enumerate(columns):
-        cx = x0 + c_ * (half + lay.equation_columns_gap_mm)
+    for col, (cx, ey) in zip(columns, origins):
         row = 0
         for b_ in col:
-            for nm, line, dx in b_:
-                out.append(Text((cx + dx, ey + row * lay.equation_mm), line, size_mm=TEXT_MM, name=nm))
+            names = [nm for nm, _, _ in b_]
+            for i, (nm, line, dx) in enumerate(b_):
+                t = Text((cx + dx, ey + row * lay.equation_mm), line, size_mm=TEXT_MM,
+                         name=nm if names.count(nm) == 1 else f"{nm}-line-{i - names.index(nm)}")
                 row += 1
+                if names.count(nm) == 1:
+                    out.append(t)
+                elif names.index(nm) == i:
+                    out.append(ElementGroup((t,), name=nm))
+                else:
+                    out[-1] = ElementGroup(out[-1].elements + (t,), name=nm)     # type: ignore[attr-defined]
     return out
 
 
@@ -371,6 +289,15 @@ def _acceleration_lines(plan: AccelerationPlan, pts: dict, nt) -> tuple[list[Lin
             text = ln.label.replace("⟂", "⊥").replace("guide", guide).replace("slot", guide)
             texts.append(" ".join(K._sub(w) for w in text.split(" ")))
     return lines, texts
+
+
+def _broken_for_labels(elements: list, boxes: list) -> list:
+    """The construction lines and leaders among ``elements`` broken where they would cross a label's box
+    (mm; a crowded plan: a line is interrupted for an inscription, ГОСТ 2.303), the rest as they are, in
+    order."""
+    from graphmethods.sheets.linkage_figures import broken_behind
+
+    return [q for e in elements for q in (broken_behind([e], boxes) if isinstance(e, Line) else [e])]
 
 
 def _component_vectors(pts: dict, comps, *, prefix: str, head_mm: float, width_mm: float) -> list[Element]:
@@ -456,38 +383,22 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     comps = plan.components
     head = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
             nt.quantity(nt.word("acceleration.value"), "m/s²"))
-    probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00", f"{symbol(c.symbol)} = 000,000")
-                                              for c in comps), size_mm=TABLE_MM, row_height_mm=lay.row_mm)
+    probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00",        # the values as printed
+                                               f"{symbol(c.symbol)} = {K._num(nt, c.magnitude, 3)}") for c in comps),
+                  size_mm=TABLE_MM, row_height_mm=lay.row_mm)
     phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('kinematics.phi_from')}),  "
            f"{pr.speed_text(nt)}")
-    right_w = max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for _, t in eps] + [60.0])
-    right_bottom = sheet.top + lay.column_x_mm + probe.height_mm + lay.after_table_mm + lay.line_mm * len(eps)
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
-    split = K._plan_split(sheet.box, right_w, lay)
-    columns, eq_h, half = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=x1 - x0)
-    if _runs_under(columns, sheet.caption_y - lay.caption_room_mm - eq_h + lay.equations_below_mm, x0, split,
-                   right_bottom, lay):                                  # a line of values would run under ε
-        split_up = _equation_columns(phi, eqs, sheet, right_bottom, lay, width=split - x0 - lay.plan_gap_mm)
-        if sheet.caption_y - lay.caption_room_mm - split_up[1] - sheet.top >= lay.min_plan_mm:
-            columns, eq_h, half = split_up
-    area = (x0, sheet.top - lay.above_mm, split - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm - eq_h)
-    beside = _equations_beside(phi, eqs, sheet, right_w, right_bottom, lay)
-    if beside is not None:              # a tall page: the equations under the table, the plan the whole height ...
-        area_b = (x0, area[1], beside[0] - lay.plan_gap_mm, sheet.caption_y - lay.caption_room_mm)
-        if _plan_need(area_b, arr, lay) < _plan_need(area, arr, lay):      # ... when the plan is larger so
-            (split, columns), area, eq_h, half = beside, area_b, 0.0, x1 - beside[0]
-        else:
-            beside = None
-    if beside is None:                  # a wide, low plan: the whole width under the table and ε, when larger so
-        area_u = (x0, right_bottom + lay.plan_gap_mm, x1, area[3])
-        if area_u[3] - area_u[1] >= lay.min_plan_mm and _plan_need(area_u, arr, lay) < _plan_need(area, arr, lay):
-            area = area_u
-    if area[3] - area[1] < lay.min_plan_mm and page is None:     # a triad's many equations: the A4 page upright
+    parts = AL.Parts(sheet.box, sheet.top, sheet.caption_y - lay.caption_room_mm, probe.width_mm, probe.height_mm,
+                     phi, eqs, eps, arr, slide=getattr(sheet.probe, "size", "") == "SLIDE")
+    best = AL.arrange(parts, lay, lambda w: K._plan_split(sheet.box, w, lay))
+    if best is None and page is None:                   # a triad's many equations: the A4 page upright
         return acceleration_plan(linkage, position, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a,
                                  notation=notation, page=Page("A4", "portrait", frame=True), title=title,
                                  problem=problem, title_block=title_block, name=name)
-    if area[3] - area[1] < lay.min_plan_mm:
+    if best is None:
         raise InputError("the plan and its equations do not fit on this page; give a larger page")
+    area, split = best.area, best.split
     s_a, f = K._fit_plan(area, arr.min(axis=0), arr.max(axis=0), mu_a, symbol="μ_a", unit="m/s²", k=k, nt=nt, lay=lay)
     pts = {lb: f.pt(zz.real, zz.imag) for lb, zz in plan.images.items()}
     occ = sheet.occ
@@ -503,12 +414,13 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     names = _place_labels(occ, pts, plan, size_mm=TEXT_MM + 0.3, within=(area[0], area[1] - 4, area[2], area[3] + 4),
                           hard=hard, leaders=leaders)
     # beside the plan: the table and ε; under the plan (or under ε): φ and the equations
-    column = _acceleration_column(comps, pts, head, s_a, eps, (split + lay.column_x_mm, sheet.top + lay.column_x_mm),
-                                  (x1, area[3] + eq_h if beside is None else right_bottom), nt, lay)
-    at = ((x0, area[3] + lay.equations_below_mm) if beside is None
-          else (split + lay.column_x_mm, right_bottom + lay.equations_below_mm))
-    text_els = _equation_texts(columns, at, half, lay)
+    column = _acceleration_column(comps, pts, head, s_a, eps if best.eps_in_column else [],
+                                  (split + lay.column_x_mm, sheet.top + lay.column_x_mm), (x1, best.column_bottom),
+                                  nt, lay)
+    text_els = _equation_texts(best.columns, best.origins, lay)
     scales = (s_a,)
+    boxes = [b for b in (t.bbox() for t in cons_labels + names if isinstance(t, Text)) if b is not None]
+    cons, leaders, cons_labels = (_broken_for_labels(x, boxes) for x in (cons, leaders, cons_labels))
     elements = [sheet.header()] + cons + vecs + [pole] + leaders + cons_labels + names + text_els + column
     elements += sheet.captions(scales, legend=nt.word("acceleration.legend"), reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_a.note,) if s_a.note else ())

@@ -33,6 +33,7 @@ from graphmethods.scene.primitives import MAIN, Circle, Style
 from graphmethods.sheets.engine import Ink, Panel, Split, extent_of, lettering, shares_for
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.kinematic_symbols import JOINT, FixedPivot, Guide, PinJoint, SliderBlock
+from graphmethods.units import convenient_at_least
 
 ROMAN = {1: "I", 2: "II", 3: "III"}
 #: room around a part's drawing for its joints' names and symbols, mm
@@ -72,6 +73,9 @@ class Part:
         Its sliders: a block at the joint, along the direction of that link.
     guides : list of (joint, link)
         Its prismatic pairs with the frame: a hatched guide through the joint.
+    yokes : list of (joint, link, angle)
+        A slotted link translating on the frame's guide (a Scotch yoke, link ``link``): the block at ``joint``
+        slides in its slot, at ``angle`` (rad, from +x) on the drawing.
     """
 
     formula: str
@@ -84,6 +88,7 @@ class Part:
     inner: list[str] = field(default_factory=list)
     blocks: list[tuple[str, str]] = field(default_factory=list)
     guides: list[tuple[str, str]] = field(default_factory=list)
+    yokes: list[tuple[str, str, float]] = field(default_factory=list)
 
 
 def _add(seq: list[str], x: str) -> None:
@@ -115,6 +120,8 @@ def structure_parts(lk: Any) -> list[Part]:
                 _add(part.inner, j)
             else:
                 _add(part.fixed if j in lk.ground else part.outer, j)
+        if g.kind == "RPP" and getattr(getattr(g, "guide", None), "link", None) == "0":  # a yoke on the frame
+            part.yokes.append((g.P, g.links[1], float(g.guide.angle + g.slot_angle)))
         parts.append(part)
     for p in lk.points:                                # a lever's end that drives a later group is a joint
         if p.name in driving:
@@ -146,6 +153,50 @@ def _link_ink(pts: list[complex], name: str, to: Any) -> Element:
     return Line(xy[far[0]], xy[far[1]], MAIN, name=name)
 
 
+#: a yoke as drawn in the structure diagram (mm): the slot's half length and half width, the rod's length
+YOKE_SLOT_MM = (12.0, 2.6)
+YOKE_ROD_MM = 26.0
+
+
+def _room(c: np.ndarray, d: np.ndarray, box: tuple[float, float, float, float]) -> float:
+    """How far (mm) from ``c`` along the unit ``d`` the box reaches."""
+    ts = [(lim - c[i]) / d[i] for i, lims in ((0, (box[0], box[2])), (1, (box[1], box[3]))) for lim in lims
+          if abs(d[i]) > 1e-9]
+    return min([t for t in ts if t > 0] or [0.0])
+
+
+def _yoke(pin: complex, u: complex, slot_angle: float, z: dict[str, complex], to: Any, k: str,
+          box: tuple[float, float, float, float]) -> tuple[list[Element], tuple[float, float]]:
+    """A yoke (a slotted crosshead, link ``k``) as the textbooks draw it: its slot through the block's ``pin``
+    at ``slot_angle`` (rad) as two parallel bars closed at the ends, a rod from the slot along the guide
+    (direction ``u``, away from the other joints) and the yoke's block on the frame's hatched guide at the
+    rod's far part. Returns the elements and the middle of the rod (mm)."""
+    c = np.asarray(to(pin))
+    sd = np.array([math.cos(slot_angle), -math.sin(slot_angle)])       # on paper (y down)
+    nd = np.array([-sd[1], sd[0]])
+    half, w = YOKE_SLOT_MM
+    ud = np.array([u.real, -u.imag]) / max(abs(u), 1e-12)
+    others = [np.asarray(to(q)) - c for q in z.values() if abs(q - pin) > 1e-12]
+    if others and sum(float(o @ ud) for o in others) > 0:                 # the rod away from the crank ...
+        ud = -ud
+    if _room(c, ud, box) < _room(c, -ud, box) and _room(c, ud, box) < YOKE_ROD_MM + 12.0:   # ... or where there
+        ud = -ud                                                                          # is more room
+    rod_mm = max(12.0, min(YOKE_ROD_MM, (_room(c, ud, box) - YOKE_SLOT_MM[1] - 9.5) / 0.62))
+    off = nd if float(nd @ ud) >= 0 else -nd                             # the slot's side the rod leaves from
+    corners = [c - sd * half - nd * w, c + sd * half - nd * w, c + sd * half + nd * w, c - sd * half + nd * w]
+    slot = Polyline(tuple((float(q[0]), float(q[1])) for q in corners), MAIN, closed=True, name=f"yoke-{k}-slot")
+    start = c + off * w
+    end = start + ud * rod_mm
+    rod = Line(tuple(start.tolist()), tuple(end.tolist()), MAIN, name=f"yoke-{k}-rod")
+    bc = start + ud * (rod_mm * 0.62)
+    ang = math.degrees(math.atan2(-ud[1], ud[0]))
+    guide = Guide(tuple((bc - ud * 9.0).tolist()), tuple((bc + ud * 9.0).tolist()), name=f"guide-{k}")
+    block = SliderBlock(tuple(bc.tolist()), angle_deg=ang, length_mm=7.0, height_mm=4.0, pin=False,
+                        name=f"yoke-{k}-block")
+    mid = start + ud * (rod_mm * 0.25)
+    return [slot, rod, guide, block], (float(mid[0]), float(mid[1]))
+
+
 def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], panel: Panel, ink: Ink,
                    size_mm: float) -> list[Element]:
     """One part drawn in its panel: links, guides, blocks, pins, outer pairs, names and link numbers."""
@@ -156,16 +207,25 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
     for k, js in part.links.items():
         if len(js) >= 2 and max(abs(z[a] - z[b]) for a in js for b in js) > 0:
             els.append(_link_ink([z[j] for j in js], f"link-{k}", to))
+    yoke_links = {k for _, k, _ in part.yokes}
     for j, k in part.guides:
+        if k in yoke_links:                                             # drawn with the yoke's rod
+            continue
         u = e[k]
         ang = math.degrees(math.atan2(u.imag, u.real))
         d = 9.0 * np.array([math.cos(math.radians(ang)), -math.sin(math.radians(ang))])
         c = np.asarray(to(z[j]))
         els.append(Guide(tuple(c - d), tuple(c + d), name=f"guide-{j}"))
+    slotted = {j: ang for j, _, ang in part.yokes}
+    rods = {k: _yoke(z[j], e[k], ang, z, to, k, panel.box) for j, k, ang in part.yokes}
     for j, k in part.blocks:
-        u = e[k]
-        els.append(SliderBlock(to(z[j]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), length_mm=7.0,
-                               height_mm=4.0, name=f"block-{j}"))
+        if (j, k) in part.guides and k in rods:                        # the yoke's own block on the frame's guide
+            continue
+        ang = slotted.get(j, math.atan2(e[k].imag, e[k].real))
+        els.append(SliderBlock(to(z[j]), angle_deg=math.degrees(ang), length_mm=7.0, height_mm=4.0,
+                               name=f"block-{j}"))
+    for els_k, _ in rods.values():
+        els[:0] = els_k
     centre = sum(z[j] for js in part.links.values() for j in js) / max(1, sum(len(js) for js in part.links.values()))
     for j in part.fixed:
         down = z[j] - centre
@@ -182,7 +242,10 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
         if leader is not None:
             texts.append(Line(leader[0], leader[1], name=f"leader-{j}"))
     for k, js in part.links.items():
-        if len(js) >= 2:
+        if k in rods:                                                   # a yoke's number by its rod
+            lab, _ = ink.place(rods[k][1], k, size_mm=size_mm, directions=("n", "s", "ne", "se"), gap_mm=1.5,
+                               within=panel.box, leader=False)
+        elif len(js) >= 2:
             m = sum(z[j] for j in js) / len(js)
             lab, _ = ink.place(to(m), k, size_mm=size_mm, within=panel.box, leader=False)
         else:
@@ -190,6 +253,32 @@ def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], pan
                                within=panel.box, leader=False)
         texts.append(Text((lab.x, lab.y), k, size_mm=size_mm, bold=True, anchor=lab.anchor, name=f"number-{k}"))
     return els + texts
+
+
+def _shares(exts: list, area: tuple[float, float, float, float], margins: tuple[float, float, float, float], *,
+            gap_mm: float, least: float = 0.18) -> tuple[float, ...]:
+    """The parts' shares of the row that give them the largest common convenient scale: the smallest μ_l at
+    which every part fits the height and all of them, each as wide as its drawing plus its margins (at least
+    ``least`` of the row), fit the width; the room left shared in proportion to those widths.
+
+    >>> _shares([(0, 0, 1, 0.5), (0, 0, 3, 0.5)], (0, 0, 212, 100), (10, 5, 10, 5), gap_mm=2.0)
+    (0.277778, 0.722222)
+    """
+    width = area[2] - area[0] - gap_mm * (len(exts) - 1)
+    height = area[3] - area[1] - margins[0] - margins[2]
+    side, floor = margins[1] + margins[3], least * width
+    w = [max(x[2] - x[0], 0.0) for x in exts]
+    h = [max(x[3] - x[1], 0.0) for x in exts]
+    if height <= 0 or width <= 0 or max(w + h) <= 0:
+        return shares_for([1.0] * len(exts), least=least)
+    mu = convenient_at_least(max(max(h) / height, 1e-12))
+    for _ in range(60):                                  # up the convenient series until the row holds them
+        if sum(max(wi / mu + side, floor) for wi in w) <= width:
+            break
+        mu = convenient_at_least(mu * 1.000001)
+    needs = [max(wi / mu + side, floor) for wi in w]
+    total = sum(needs)
+    return tuple(round(n / total, 6) for n in needs)
 
 
 def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = None, title: str | None = None,
@@ -220,10 +309,9 @@ def structure_diagram(case: Any, *, notation: str = "en", page: Page | None = No
     foot = 3 * let.value_mm * 1.6
     area = (x0, sheet.top + 2.0, x1, sheet.caption_y - let.label_mm * 2.0 - foot)
     exts = [extent_of([(z[j].real, z[j].imag) for js in p.links.values() for j in js]) for p in parts]
-    widths = [max(x[2] - x[0], 0.25 * max(x[3] - x[1], 1e-9)) for x in exts]
     names = [f"part-{p.formula}" for p in parts]
-    boxes = Split("h", tuple(zip(names, shares_for(widths, least=0.18))), gap_mm=6.0).boxes(area)
     margins = (2.6 * let.label_mm + PAD_MM, PAD_MM, PAD_MM, PAD_MM)
+    boxes = Split("h", tuple(zip(names, _shares(exts, area, margins, gap_mm=6.0))), gap_mm=6.0).boxes(area)
     panels = [Panel(boxes[n], x, symbol="μ_l", unit="m", margins_mm=margins) for n, x in zip(names, exts)]
     sized = [p.scale for p, x in zip(panels, exts) if max(x[2] - x[0], x[3] - x[1]) > 0]   # a lone block: no size
     common = max(sized or [p.scale for p in panels], key=lambda s: s.per_mm)  # one scale for every part

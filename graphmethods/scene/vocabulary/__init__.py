@@ -95,8 +95,14 @@ def parse(text: str, name: str) -> Family:
 
 def families() -> list[str]:
     """The names of the figure families' files, sorted (``["acceleration", "calculus", ...]``; not the core)."""
+    return list(family_names())
+
+
+@cache
+def family_names() -> tuple[str, ...]:
+    """:func:`families`, listed once per process."""
     names = (entry.name for entry in resources.files(__name__).iterdir())
-    return sorted(n.removesuffix(".toml") for n in names if n.endswith(".toml") and n != f"{CORE}.toml")
+    return tuple(sorted(n.removesuffix(".toml") for n in names if n.endswith(".toml") and n != f"{CORE}.toml"))
 
 
 @cache

@@ -443,7 +443,12 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
         if k in wrong:
             mid = ((pts[c.start][0] + pts[c.end][0]) / 2, (pts[c.start][1] + pts[c.end][1]) / 2)
             txt = f"{_symbol_markup(c.symbol)} = {nt.number(wrong[k])} {nt.unit('mm')}?"
-            lab = occ.place_label(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM, gap_mm=2.0)
+            # the student's value beside the vector, or further off with a leader where the plan is dense
+            lab, leader = occ.place_label_with_leader(mid, txt, ("e", "w", "ne", "nw", "se", "sw"), size_mm=SMALL_MM,
+                                                      gap_mm=2.0)
+            if leader is not None:
+                els.append(Line(leader[0], leader[1], style=Style(stroke=RED, width_mm=0.18),
+                                name=f"{name}-student-{k}-leader"))
             els.append(ColorText((lab.x, lab.y), txt, size_mm=SMALL_MM, anchor=lab.anchor,
                                     color=RED, name=f"{name}-student-{k}"))
     return els

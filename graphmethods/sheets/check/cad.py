@@ -732,9 +732,12 @@ def overlay_on_drawing(report: CheckReport, *, notation="en") -> Scene:
     and the list of wrong items) in red over the student's own drawing."""
     if not isinstance(report, DrawingReport) or report.drawing is None:
         raise InputError("an overlay over a drawing needs the report of check_drawing")
+    from graphmethods.sheets.check.overlay_placement import heading_clear_of
+
     over = report.overlay(notation=notation)
-    els: list[Element] = [StudentDrawing(report.drawing, report.page.height_mm, report.shift)]
-    els += [InRed(e, name=f"check-{e.name}") for e in over.elements]
+    student = StudentDrawing(report.drawing, report.page.height_mm, report.shift)
+    els: list[Element] = [student]
+    els += [InRed(e, name=f"check-{e.name}") for e in heading_clear_of(student, over.elements, report.page)]
     return Scene(report.page, tuple(els), title=over.title, notation=over.notation, name="overlay-on-drawing")
 
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Scale, Scene, Text, markup, notation as get_notation
-from graphmethods.scene.elements import Element, Line
+from graphmethods.scene.elements import Element, Line, lettered_size
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import Circle, Path, Style
 from graphmethods.sheets.check import acceleration as ca
@@ -110,31 +110,59 @@ def overlay_value(v, nt) -> str:
 
 def _wrong_line(it: Item, report: CheckReport, nt) -> str:
     """One line of the overlay's red list: label, the student's value, the expected one, the unit, and why."""
+    text = nt.word("check.item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
+                   expected=overlay_value(it.expected, nt), unit=nt.unit(it.unit), why=_why(it, nt))
+    return re.sub(" {2,}", " ", text)
+
+
+def _why(it: Item, nt) -> str:
+    """Why an item is wrong, in words: its mistakes, or wrong, or carried over."""
     if it.mistakes:
         sep = "、" if get_notation(nt).code == "zh" else ", "
-        why = sep.join(nt.word("check." + code, J_e=nt.sym("dynamics.J_e")) for code in it.mistakes)
-    else:
-        why = nt.word("check.carried" if it.verdict == "carried" else "check.wrong")
-    text = nt.word("check.item", label=overlay_label(it, report, nt), student=overlay_value(it.student, nt),
-                   expected=overlay_value(it.expected, nt), unit=nt.unit(it.unit), why=why)
-    return re.sub(" {2,}", " ", text)
+        return sep.join(nt.word("check." + code, J_e=nt.sym("dynamics.J_e")) for code in it.mistakes)
+    return nt.word("check.carried" if it.verdict == "carried" else "check.wrong")
+
+
+def _wrong_lines(report: CheckReport, nt, *, run: int = 3) -> list[str]:
+    """The red list's lines: one per wrong item, except that ``run`` or more items in a row of one list (keys
+    ``x[1]``, ``x[2]`` …) wrong for the same reason share one line, first … last and how many (a profile's
+    positions all off by one mistake would fill the page)."""
+    wrong = [it for it in report.items if it.verdict != "ok"]
+    out, k = [], 0
+    while k < len(wrong):
+        it, base = wrong[k], wrong[k].key.split("[")[0]
+        j = k
+        while (j + 1 < len(wrong) and "[" in it.key and wrong[j + 1].key.split("[")[0] == base
+               and wrong[j + 1].verdict == it.verdict and wrong[j + 1].mistakes == it.mistakes):
+            j += 1
+        if j - k + 1 >= run:
+            first, last, n = overlay_label(it, report, nt), overlay_label(wrong[j], report, nt), j - k + 1
+            out.append(f"{first} … {last}（{n}）——{_why(it, nt)}" if get_notation(nt).code == "zh"
+                       else f"{first} … {last} ({n}) — {_why(it, nt)}")
+        else:
+            out += [_wrong_line(w, report, nt) for w in wrong[k:j + 1]]
+        k = j + 1
+    return out
 
 
 def overlay(report: CheckReport, notation) -> Scene:
     """The overlay of a check (see :meth:`CheckReport.overlay`): the heading, how to print it and the list
     of wrong items at the top, then each checked construction at the student's scales, placed where the
     answers' ``origin_mm`` says or else left to right in rows (:class:`_Slots`)."""
+    from graphmethods.sheets.engine.lettering import lettered
+
     nt = get_notation(notation)
     W, H = report.page.width_mm, report.page.height_mm
-    title, els, y = _overlay_head(report, nt)
-    place = _Placer(report.answers, _Slots(W, H, top=max(y, 24.0) + 4.0))
-    data = report.data
-    if isinstance(data, CycleData):
-        els += _moment_section(report, data, nt, place) + _indicator_section(report, data, nt, place)
-    elif isinstance(data, LinkageData):
-        els += (_velocity_section(report, data, nt, place) + _acceleration_section(report, data, nt, place)
-                + _energy_mass_section(report, data, nt, place))
-    return Scene(report.page, tuple(els), title=title, notation=nt.code, name="overlay")
+    with lettered(report.page):                     # A1/A2 films letter at 3.5 mm and up, as the sheet they cover
+        title, els, y = _overlay_head(report, nt)
+        place = _Placer(report.answers, _Slots(W, H, top=max(y, 24.0) + 4.0))
+        data = report.data
+        if isinstance(data, CycleData):
+            els += _moment_section(report, data, nt, place) + _indicator_section(report, data, nt, place)
+        elif isinstance(data, LinkageData):
+            els += (_velocity_section(report, data, nt, place) + _acceleration_section(report, data, nt, place)
+                    + _energy_mass_section(report, data, nt, place))
+        return Scene(report.page, tuple(els), title=title, notation=nt.code, name="overlay")
 
 
 def _overlay_head(report: CheckReport, nt: Notation) -> tuple[str, list[Element], float]:
@@ -145,26 +173,25 @@ def _overlay_head(report: CheckReport, nt: Notation) -> tuple[str, list[Element]
     rest = f"{report.problem} — {Title.of(report.title).title_in(nt.code)}" + (
         f" — {report.student}" if report.student else "")
     title = nt.word("check.heading", overlay=nt.word("check.overlay"), rest=markup.literal(rest))
-    y = 12.0
-    for line in wrap(title, (W - 24.0) / 1.15, 3.2):          # bold runs wider than the estimate
-        els.append(Text((12.0, y), line, size_mm=3.2, bold=True, name="overlay-title"))
-        y += 4.5
+    big, small = lettered_size(3.2), lettered_size(2.6)     # the page's lettering (3.5 mm and up on A1/A2)
+    y = 12.0 + big - 3.2
+    for line in wrap(title, (W - 24.0) / 1.15, big):          # bold runs wider than the estimate
+        els.append(Text((12.0, y), line, size_mm=big, bold=True, name="overlay-title"))
+        y += 4.5 * big / 3.2
     y += 0.5
-    for line in wrap(nt.word("check.howto", bar=f"100 {nt.unit('mm')}"), W - 24.0, 2.6):
-        els.append(Text((12.0, y), line, size_mm=2.6, name="overlay-howto"))
-        y += 3.6
+    for line in wrap(nt.word("check.howto", bar=f"100 {nt.unit('mm')}"), W - 24.0, small):
+        els.append(Text((12.0, y), line, size_mm=small, name="overlay-howto"))
+        y += 3.6 * small / 2.6
     els.append(Line((12.0, H - 8.0), (112.0, H - 8.0), style=Style(width_mm=0.35), name="ruler"))
     for x in (12.0, 62.0, 112.0):
         els.append(Line((x, H - 10.0), (x, H - 6.0), style=Style(width_mm=0.35), name="ruler-tick"))
-    els.append(Text((114.0, H - 7.0), f"100 {nt.unit('mm')}", size_mm=2.6, name="ruler-text"))
+    els.append(Text((114.0, H - 7.0), f"100 {nt.unit('mm')}", size_mm=small, name="ruler-text"))
     # wrong items listed, right-aligned at the right margin (a line too long for the page is broken)
-    y += 3.4
-    for it in report.items:
-        if it.verdict == "ok":
-            continue
-        for line in wrap(_wrong_line(it, report, nt), W - 24.0, 2.6):
-            els.append(ColorText((W - 12.0, y), line, size_mm=2.6, anchor="end", color=RED, name="wrong-list"))
-            y += 3.8
+    y += 3.4 + small - 2.6
+    for text in _wrong_lines(report, nt):
+        for line in wrap(text, W - 24.0, small):
+            els.append(ColorText((W - 12.0, y), line, size_mm=small, anchor="end", color=RED, name="wrong-list"))
+            y += 3.8 * small / 2.6
     return title, els, y
 
 
@@ -183,6 +210,12 @@ class _Placer:
             return (float(given[0]), float(given[1]))
         x, y0 = self.slots.take(*size)
         return (x + offset[0], y0 + offset[1])
+
+
+def _keep_off_cross(occ, at: tuple[float, float]) -> None:
+    """Register a registration cross (its arms and the box of its circle) so that letters keep off it."""
+    occ.add_primitives(_cross(at, "cross").primitives())
+    occ.add_box((at[0] - 2.2, at[1] - 2.2, at[0] + 2.2, at[1] + 2.2))
 
 
 def _cross(at: tuple[float, float], name: str) -> Shapes:
@@ -209,10 +242,12 @@ def _moment_section(report: CheckReport, data: CycleData, nt: Notation, place: _
     hi, lo = float(M_all.max()) / mu_M, float(M_all.min()) / mu_M
     o = place.origin("moment_diagram", (w_mm + 20.0, hi - lo + 16.0), (8.0, hi + 8.0))
     frame = Frame(o, Scale("μ_φ", "rad", mu_phi), Scale("μ_M", "N·m", mu_M))
+    occ = Occupancy()
+    _keep_off_cross(occ, o)
     return [Line((o[0], o[1]), (o[0] + w_mm, o[1]), style=Style(width_mm=0.25), name="md-axis-phi"),
             Line((o[0], o[1] - hi), (o[0], o[1] - lo), style=Style(width_mm=0.25), name="md-axis-M"),
             *moment_regions(frame, c, wrong=_wrong_index(report, "moment_diagram.areas_mm2"), nt=nt,
-                            occ=Occupancy(), name="md"),
+                            occ=occ, name="md"),
             _cross(o, "md-origin")]
 
 
@@ -229,12 +264,14 @@ def _indicator_section(report: CheckReport, data: CycleData, nt: Notation, place
     E = np.asarray(c.E, dtype=float)
     hi, lo = max(E.max(), 0.0) / mu_E, min(E.min(), 0.0) / mu_E
     o = place.origin("energy_indicator", (step * c.work.size + 40.0, hi - lo + 16.0), (6.0, hi + 8.0))
+    cross = _cross(o, "ei-origin")
     occ = Occupancy()
+    _keep_off_cross(occ, o)                         # the letters keep off the registration cross
     wrong = _wrong_index(report, "energy_indicator.arrows_mm")
     return [*staircase(o[0], o[1], c.work, mu_E=mu_E, step_mm=step, labels=c.labels, nt=nt, occ=occ, wrong=wrong,
                        name="ei"),
             *extremes(o[0], o[1], c.work, mu_E=mu_E, step_mm=step, nt=nt, occ=occ, name="ei-ext"),
-            _cross(o, "ei-origin")]
+            cross]
 
 
 def _velocity_section(report: CheckReport, data: LinkageData, nt: Notation, place: _Placer) -> list[Element]:

@@ -28,8 +28,8 @@ from graphmethods.errors import InputError
 from graphmethods.kinematics.acceleration_plan import AccelerationPlan
 from graphmethods.kinematics.linkage import Linkage
 from graphmethods.scene import Scale, Scene, Text
-from graphmethods.scene.elements import Element, Line, Point
-from graphmethods.scene.primitives import THIN, Polygon
+from graphmethods.scene.elements import Element, Line, Point, label_bbox
+from graphmethods.scene.primitives import THIN, Label, Polygon
 from graphmethods.sheets.check import acceleration as ca
 from graphmethods.sheets.worksheets.classset import register
 from graphmethods.sheets.worksheets.elements import TEXT_MM, THICK, X0, X1, Grid, Shapes, arc, ground, pin, slider
@@ -219,8 +219,29 @@ def _scheme(v: AccelerationPlanVariant, origin: tuple[float, float], nt: Any) ->
         text = name[0] + (f"_{{{name[1:]}}}" if len(name) > 1 else "")
         lab = occ.place_label(P(z[name]), text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), size_mm=TEXT_MM,
                               gap_mm=2.2)
+        occ.add_label(lab)
         els.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM, anchor=lab.anchor, name=f"scheme-name-{name}"))
+    # the crank's sense named at the head of its arc
+    w = v.plan.phi + math.radians(70.0)
+    tip = (P(z[O])[0] + 8.0 * math.cos(w), P(z[O])[1] - 8.0 * math.sin(w))
+    lab = occ.place_label(tip, "ω_{1}", ("n", "nw", "ne", "w", "e", "sw", "se", "s"), size_mm=TEXT_MM, gap_mm=1.5)
+    els.append(Text((lab.x, lab.y), "ω_{1}", size_mm=TEXT_MM, anchor=lab.anchor, name="scheme-omega-name"))
     return els
+
+
+def _mu_l_caption(scheme: list[Element], text: str, top: float, bottom: float) -> Text:
+    """The scheme's μ_l, at its top right, or its bottom right or left when the mechanism is there."""
+    from graphmethods.sheets.layout import Occupancy
+
+    occ = Occupancy(pad_mm=0.8)
+    for e in scheme:
+        occ.add_primitives(e.primitives())
+    tries = ((X1, top + 2.0, "end"), (X1, bottom, "end"), (X0, bottom, "start"), (X1, bottom + 5.0, "end"))
+    for x, y, anchor in tries:
+        cand = Text((x, y), text, size_mm=TEXT_MM, anchor=anchor, name="caption-mu-l")
+        if all(occ.is_free(label_bbox(p), within=None) for p in cand.primitives() if isinstance(p, Label)):
+            return cand
+    return cand
 
 
 def _box(points: list[tuple[float, float]]) -> tuple[float, float, float, float]:
@@ -282,9 +303,10 @@ def page(v: AccelerationPlanVariant, nt: Any, key: bool) -> Scene:
     x0, y0, _, y1 = _box(pts)
     top = sh.y + 4.0
     origin = (X0 + 12.0 - x0, top + 6.0 - y0)
-    sh.add(*_scheme(v, origin, nt))
-    sh.add(Text((X1, top + 2.0), s_l.caption(nt), size_mm=TEXT_MM, anchor="end", name="caption-mu-l"))
-    sh.y = origin[1] + y1 + 10.0
+    scheme = _scheme(v, origin, nt)
+    caption = _mu_l_caption(scheme, s_l.caption(nt), top, origin[1] + y1 + 5.0)
+    sh.add(*scheme, caption)
+    sh.y = max(origin[1] + y1 + 10.0, caption.at[1] + 5.0)
     # the plan's box
     top, H = sh.drawing_box()
     imgs = [(z_.real / v.mu_a, -z_.imag / v.mu_a) for z_ in v.plan.images.values()]

@@ -30,7 +30,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.kinematics.cam import CamDesign, CamProblem, cam_from_dict, design
 from graphmethods.kinematics.cam.geometry import to_cam_frame
-from graphmethods.scene import Point, Polyline, Scale, Scene, Text
+from graphmethods.scene import Axis, Point, Polyline, Scale, Scene, Text, axis_ticks
 from graphmethods.scene.elements import Element, Line, make_label
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.primitives import MAIN, THIN, Style
@@ -391,6 +391,17 @@ def _answers(v: CamVariant, nt: Notation) -> tuple[list[str], list[str], list[st
 _STUDENT_KEEPS = ("c-axis-", "c-zero", "c-follower-line")
 
 
+def _finer_ticks(e: Element, nt: Notation) -> Element:
+    """An axis of the combined diagram with its ticks as close as their values can be read (the A4 figure's
+    22 mm apart leave the worksheet's narrower diagram with 0 alone), every tick labelled, in mm as the
+    table of s_k is; other elements as they are."""
+    if not (isinstance(e, Axis) and e.name in ("c-axis-ds", "c-axis-s")):
+        return e
+    ticks = axis_ticks(e.min_value, e.max_value, e.scale, min_gap_mm=10.0)
+    return replace(e, ticks=ticks, tick_labels=tuple(nt.number(t * 1000.0, sig=3) for t in ticks),
+                   label=nt.quantity(e.label, "mm"))
+
+
 def page(v: CamVariant, nt: Any, key: bool) -> Scene:
     """The student's page (``key`` false) or the answer key of a variant."""
     from graphmethods.sheets.cam_diagrams import combined_diagram
@@ -409,7 +420,7 @@ def page(v: CamVariant, nt: Any, key: bool) -> Scene:
         sh.add(Text((X0, y), line, size_mm=TEXT_MM, bold=True, name=f"c-heading-{k}"))
     comb, s_c = combined_diagram(cam, (X0, y - 4.0, split - 3.0, top + H), Occupancy(), nt)
     # the A1 heading (ours is above) and r₀ written at O (it is in the answers) left out; O named clear of ink
-    comb = [e for e in comb if not e.name.startswith(("c-title-", "c-O-name", "c-O-leader"))]
+    comb = [_finer_ticks(e, nt) for e in comb if not e.name.startswith(("c-title-", "c-O-name", "c-O-leader"))]
     if not key:
         comb = [e for e in comb if e.name.startswith(_STUDENT_KEEPS)]
     sh.add(*comb)
@@ -425,10 +436,7 @@ def page(v: CamVariant, nt: Any, key: bool) -> Scene:
     sh.y = top + H + CAPTION_ROOM
     heads, vals, lines = _answers(v, nt)
     answers_and_solution(sh, heads, vals, lines)
-    scene = sh.scene((s_l, s_c))
-    # the footer at the A4 standard's smallest lettering (2.5 mm; the shared footer writes 2.3 mm)
-    return replace(scene, elements=tuple(replace(e, size_mm=2.5) if isinstance(e, Text) and e.name.startswith("footer")
-                                         else e for e in scene.elements))
+    return sh.scene((s_l, s_c))
 
 
 # registered with the other kinds (graphmethods.sheets.worksheets imports this module at its end)

@@ -64,7 +64,11 @@ def staircase(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, 
         texts.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=f"{name}-value-{k + 1}"))
         if k in wrong:
             t = f"{nt.number(wrong[k])} {nt.unit('mm')}?"
-            lab = occ.place_label(vec.mid, t, ("e", "w", "ne", "se", "nw", "sw"), size_mm=SMALL_MM, gap_mm=3.0)
+            lab, leader = occ.place_label_with_leader(vec.mid, t, ("e", "w", "ne", "se", "nw", "sw"), size_mm=SMALL_MM,
+                                                      gap_mm=3.0)
+            if leader is not None:                  # where the staircase is dense: further off, with a leader
+                texts.append(Line(leader[0], leader[1], style=Style(stroke=RED, width_mm=0.18),
+                                  name=f"{name}-student-{k + 1}-leader"))
             texts.append(ColorText((lab.x, lab.y), t, size_mm=SMALL_MM, anchor=lab.anchor, color=RED,
                                    name=f"{name}-student-{k + 1}"))
     return els + vecs + texts
@@ -118,7 +122,8 @@ def energy_mass_construction(res, *, origin, box, axes=(), nt="en", prefix: str 
     ox, oy = origin
     T_hi = min(max(float(T.max()), res.k_mm * res.mu_T, 0.0), (oy - box[1] - 6.0) * res.mu_T)
     T_lo = max(min(float(T.min()), res.l_mm * res.mu_T, 0.0), -(box[3] - oy - 2.0) * res.mu_T)
-    els = diagram_elements(res, origin=origin, nt=nt, occ=occ, clip=box, J_to=float(J.max()), T_hi=T_hi,
+    # the rays stop at the ordinate axis (k and l are on it): left of it they would cross its tick values
+    els = diagram_elements(res, origin=origin, nt=nt, occ=occ, clip=(ox, *box[1:]), J_to=float(J.max()), T_hi=T_hi,
                            T_lo=T_lo, within=box, prefix=prefix)
     return [e for e in els if e.name not in (f"{prefix}axis-J", f"{prefix}axis-T")]
 
@@ -286,9 +291,19 @@ def slider_crank_scheme(O, *, r: float, l: float, e: float, l_AS2: float, phi_de
     if phi_lab is None:
         phi_lab = make_label((pO[0] + 11.5, pO[1] - 2.0), "φ", size_mm=TEXT_MM, valign="middle")
     occ.add_label(phi_lab)
-    w = math.radians(phi_deg + 60.0)
-    om_lab = make_label((pO[0] + 15.0 * math.cos(w), pO[1] - 15.0 * math.sin(w)), "ω_{1}", size_mm=TEXT_MM,
-                        anchor="start" if math.cos(w) >= 0 else "end", valign="middle")
+    om_lab = None
+    for turn in (60.0, 38.0, 75.0, 25.0, 90.0):     # beside the arc of ω₁, clear of its arrowhead
+        w = math.radians(phi_deg + turn)
+        at = (pO[0] + 14.0 * math.cos(w), pO[1] - 14.0 * math.sin(w))
+        d = ("n" if math.sin(w) > 0.4 else "s" if math.sin(w) < -0.4 else "") + (
+            "e" if math.cos(w) > 0.4 else "w" if math.cos(w) < -0.4 else "")
+        om_lab = occ.first_free(at, "ω_{1}", (d or "n",), (1.0, 2.5), TEXT_MM, None)
+        if om_lab is not None:
+            break
+    if om_lab is None:
+        w = math.radians(phi_deg + 60.0)
+        om_lab = make_label((pO[0] + 15.0 * math.cos(w), pO[1] - 15.0 * math.sin(w)), "ω_{1}", size_mm=TEXT_MM,
+                            anchor="start" if math.cos(w) >= 0 else "end", valign="middle")
     texts = [Text((phi_lab.x, phi_lab.y), "φ", size_mm=TEXT_MM, anchor=phi_lab.anchor, name=f"{name}-phi"),
              Text((om_lab.x, om_lab.y), "ω_{1}", size_mm=TEXT_MM, anchor=om_lab.anchor, name=f"{name}-omega-name")]
     for t in texts:

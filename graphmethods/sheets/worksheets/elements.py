@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from graphmethods.scene import Page, markup
-from graphmethods.scene.elements import Element, make_label
+from graphmethods.scene.elements import Element, lettered_size, make_label
 from graphmethods.scene.primitives import THIN, Circle, Path, Polygon, Primitive, Style
 
 # ----------------------------------------------------------------------------- drawing elements
@@ -31,18 +31,41 @@ class Grid(Element):
     """Graph paper: thin lines every ``step_mm``, darker every ``major_every``-th line, through ``anchor``.
 
     Drawn as a few zig-zag paths (the joins run along the border, which is drawn anyway), so a
-    page of graph paper costs a handful of primitives.
+    page of graph paper costs a handful of primitives. ``holes`` are boxes ``(x0, y0, x1, y1)`` (mm) the
+    paper leaves blank, as a printed figure clears the paper behind its lettering: a line that meets one
+    is drawn in pieces around it (:meth:`Sheet.scene <graphmethods.sheets.worksheets.pages.Sheet.scene>`
+    gives the boxes of the page's texts), so no tick value or letter sits on a grid line.
 
     >>> g = Grid((10, 10, 60, 40), anchor=(20, 30))
     >>> len(g.primitives()), g.xs()[:3]
     (5, (10.0, 15.0, 20.0))
+    >>> holed = Grid((10, 10, 60, 40), anchor=(20, 30), holes=((18, 18, 22, 22),))
+    >>> len(holed.primitives())            # the lines x = 20 and y = 20 in two pieces each
+    9
     """
 
     box: tuple
     anchor: tuple | None = None
     step_mm: float = 5.0
     major_every: int = 2
+    holes: tuple = ()
     name: str = "grid"
+
+    def _pieces(self, v: float, lo: float, hi: float, vertical: bool) -> list[tuple[float, float]]:
+        """The parts of the line at ``v`` (x of a vertical line, y of a horizontal one) from ``lo`` to ``hi``
+        outside the holes."""
+        cuts = sorted((h[1], h[3]) if vertical else (h[0], h[2]) for h in self.holes
+                      if ((h[0] < v < h[2]) if vertical else (h[1] < v < h[3])))
+        out, a = [], lo
+        for c0, c1 in cuts:
+            if c0 > a:
+                out.append((a, min(c0, hi)))
+            a = max(a, c1)
+            if a >= hi:
+                break
+        if a < hi:
+            out.append((a, hi))
+        return [(p, q) for p, q in out if q - p > 1e-6]
 
     def _ks(self, lo, hi, a):
         s = self.step_mm
@@ -62,14 +85,18 @@ class Grid(Element):
             ys = [ay + k * self.step_mm for k in self._ks(y0, y1, ay) if (k % self.major_every == 0) == major]
             style = GRID_MAJOR if major else GRID_MINOR
             for vals, vertical in ((xs, True), (ys, False)):
-                if not vals:
-                    continue
-                pts = []
-                for i, v in enumerate(vals):
-                    a, b = (y0, y1) if vertical else (x0, x1)
-                    ends = (a, b) if i % 2 == 0 else (b, a)
-                    pts += [(v, e) for e in ends] if vertical else [(e, v) for e in ends]
-                prims.append(Path(tuple(pts), style))
+                a, b = (y0, y1) if vertical else (x0, x1)
+                pts: list[tuple[float, float]] = []
+                for v in vals:
+                    pieces = self._pieces(v, a, b, vertical)
+                    if pieces == [(a, b)]:                  # a whole line: on the zig-zag
+                        ends = (a, b) if len(pts) % 4 == 0 else (b, a)
+                        pts += [(v, e) for e in ends] if vertical else [(e, v) for e in ends]
+                        continue
+                    for p, q in pieces:                     # a line with holes: its pieces one by one
+                        prims.append(Path(((v, p), (v, q)) if vertical else ((p, v), (q, v)), style))
+                if pts:
+                    prims.append(Path(tuple(pts), style))
         prims.append(Path(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), GRID_MAJOR, closed=True))
         return tuple(prims)
 
@@ -87,6 +114,9 @@ class ColorText(Element):
     color: str = "#000000"
     markup: bool = True
     name: str = "text"
+
+    def __post_init__(self):                # lettered as the sheet being drawn asks (3.5 mm and up on A1/A2)
+        object.__setattr__(self, "size_mm", lettered_size(self.size_mm))
 
     def primitives(self):
         return (make_label(self.at, self.text, size_mm=self.size_mm, anchor=self.anchor, valign=self.valign,

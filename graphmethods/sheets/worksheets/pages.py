@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 
@@ -21,9 +22,9 @@ from graphmethods.scene import (
     markup,
     notation as get_notation,
 )
-from graphmethods.scene.elements import Element, Line, Point
+from graphmethods.scene.elements import Element, Line, Point, Region, label_bbox
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import THIN
+from graphmethods.scene.primitives import THIN, Label, walk
 from graphmethods.sheets.worksheets.constructions import (
     energy_mass_construction,
     extremes,
@@ -58,6 +59,7 @@ from graphmethods.sheets.worksheets.variants import (
 
 BOTTOM = 233.0          # the answers and the solution (or the student's calculations) start here
 CAPTION_ROOM = 9.0      # the scale captions under a drawing area
+FOOTER_MM = 2.5         # the footer at the A4 standard's smallest lettering (ГОСТ 2.304, GB/T 14691)
 
 
 def _clean(values, ref: float | None = None) -> np.ndarray:
@@ -174,13 +176,31 @@ class Sheet:
         nt = self.nt
         text = (f"graphmethods worksheet {self.v.kind} --seed {self.v.seed} · {nt.word('worksheets.variant')} "
                 f"{self.v.number}")
-        self.add(Text((X0, 284.0), markup.literal(text), size_mm=2.3, name="footer"))
+        self.add(Text((X0, 284.0), markup.literal(text), size_mm=FOOTER_MM, name="footer"))
         if self.key:
-            self.add(Text((X1, 284.0), markup.literal(nt.word("worksheets.check", id=self.v.id)), size_mm=2.3,
-                          anchor="end", name="footer-check"))
+            self.add(Text((X1, 284.0), markup.literal(nt.word("worksheets.check", id=self.v.id)),
+                          size_mm=FOOTER_MM, anchor="end", name="footer-check"))
+
+    def _clear_paper(self) -> None:
+        """The graph paper cleared behind every text on it (:attr:`Grid.holes`): tick values, letters and
+        lengths stand on white, not on a grid line."""
+        grids = [k for k, e in enumerate(self.els) if isinstance(e, Grid)]
+        if not grids:
+            return
+        boxes = tuple((b[0] - 0.4, b[1] - 0.3, b[2] + 0.4, b[3] + 0.3)   # tables stand off the paper, hatches
+                      for e in self.els if not isinstance(e, (Grid, Table, Region))        # have no words
+                      for p in walk(e.primitives()) if isinstance(p, Label) and p.text.strip()
+                      for b in (label_bbox(p),))
+        for k in grids:
+            g = self.els[k]
+            assert isinstance(g, Grid)
+            x0, y0, x1, y1 = g.box
+            inside = tuple(b for b in boxes if b[0] < x1 and x0 < b[2] and b[1] < y1 and y0 < b[3])
+            self.els[k] = replace(g, holes=g.holes + inside)
 
     def scene(self, scales=()) -> Scene:
         self.footer()
+        self._clear_paper()
         kind = "key" if self.key else "student"
         if self.y > 281.0:
             raise InputError(f"{self.v.id}: the {kind} page runs {self.y - 281.0:.0f} mm past its frame")
@@ -239,6 +259,24 @@ def _clear_tick_labels(axis: Axis, points) -> Axis:
     occ.add_line(points)
     return clear_tick_labels(axis, occ)
 
+def data_ticks(lo: float, hi: float, scale: Scale, *, room: tuple[float, float], min_gap_mm: float
+               ) -> tuple[float, ...]:
+    """The ticks of an axis that holds data in [``lo``, ``hi``]: the nice-number rule's ticks
+    (:func:`~graphmethods.scene.axis_ticks`, at least ``min_gap_mm`` apart) over the ``room`` the page
+    gives, clipped to the data: from the last tick at or below ``lo`` to the first at or above ``hi``
+    (every one labelled), so an axis ends one tick past its data, not at the edge of the paper.
+
+    >>> data_ticks(-1750.0, 600.0, Scale("μ_E", "J", 40.0), room=(-3000.0, 1400.0), min_gap_mm=10.0)
+    (-2000.0, -1500.0, -1000.0, -500.0, 0.0, 500.0, 1000.0)
+    """
+    ticks = axis_ticks(room[0], room[1], scale, min_gap_mm=min_gap_mm)
+    eps = 1e-9 * max(abs(lo), abs(hi), 1e-300)
+    below = [t for t in ticks if t <= lo + eps]
+    above = [t for t in ticks if t >= hi - eps]
+    a, b = (below[-1] if below else ticks[0]), (above[0] if above else ticks[-1])
+    return tuple(t for t in ticks if a <= t <= b)
+
+
 def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     from graphmethods.sheets.layout import Occupancy
 
@@ -271,8 +309,9 @@ def _indicator_page(v: IndicatorVariant, nt, key: bool) -> Scene:
     y0 = top + 5.0 * round((y0 - top) / 5.0)              # the origin on a grid line
     sh.add(Grid((X0, top, X1, top + H), anchor=(ax_x, y0), name="grid"))
     v_top, v_bot = s_E.to_value(y0 - top - 6.0), -s_E.to_value(top + H - y0 - 2.0)
-    axis = Axis((ax_x, y0), s_E, "y", min_value=v_bot, max_value=v_top,
-                ticks=axis_ticks(v_bot, v_top, s_E, min_gap_mm=10.0), label=nt.quantity(nt.sym("E"), "J"),
+    ticks = data_ticks(E_lo, E_hi, s_E, room=(v_bot, v_top), min_gap_mm=10.0)
+    axis = Axis((ax_x, y0), s_E, "y", min_value=min(ticks[0], E_lo), max_value=max(ticks[-1], E_hi),
+                ticks=ticks, label=nt.quantity(nt.sym("E"), "J"),
                 size_mm=SMALL_MM, decimal=nt.decimal, name="axis-E")
     sh.add(axis)
     occ = Occupancy()
@@ -364,8 +403,8 @@ def _step_page(v: StepMomentVariant, nt, key: bool) -> Scene:
     ax_phi = Axis((ax_x, y0), s_phi, "x", min_value=0.0, max_value=2 * math.pi, ticks=ticks,
                   tick_labels=tuple(f"{d}{deg}" for d in range(0, 361, grid_deg)), label="φ", size_mm=SMALL_MM,
                   skip_zero_label=True, name="axis-phi")
-    m_top = s_M.to_value(y0 - top - 7.0)
-    ax_M = Axis((ax_x, y0), s_M, "y", min_value=0.0, max_value=m_top, ticks=axis_ticks(0.0, m_top, s_M, min_gap_mm=8.0),
+    ticks_M = data_ticks(0.0, M_hi, s_M, room=(0.0, s_M.to_value(y0 - top - 7.0)), min_gap_mm=8.0)
+    ax_M = Axis((ax_x, y0), s_M, "y", min_value=0.0, max_value=max(ticks_M[-1], M_hi), ticks=ticks_M,
                 label=nt.quantity("M", "N·m"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-M")
     sh.add(ax_phi, ax_M)
     if key:
@@ -505,12 +544,21 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     X = origin[0] + np.asarray(v.J_e) / v.mu_J
     Y = origin[1] - np.asarray(v.delta_T) / v.mu_T
     curve_pts = list(zip(X.tolist(), Y.tolist()))
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=x_max, ticks=axis_ticks(0.0, x_max, s_J, min_gap_mm=12.0),
+    # the axes to their data: J_e from 0 to its largest value, ΔT over the curve and the points k and l
+    J_hi = float(max(v.J_e))
+    T_lo = min(float(min(v.delta_T)), r.l_mm * v.mu_T, 0.0)
+    T_hi = max(float(max(v.delta_T)), r.k_mm * v.mu_T, 0.0)
+    ticks_J = data_ticks(0.0, J_hi, s_J, room=(0.0, x_max), min_gap_mm=12.0)
+    ticks_T = data_ticks(T_lo, T_hi, s_T, room=(y_bot, y_top), min_gap_mm=10.0)
+    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=max(ticks_J[-1], J_hi), ticks=ticks_J,
                 label=J_e_sym, size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True, name="axis-J")
-    ax_T = Axis(origin, s_T, "y", min_value=y_bot, max_value=y_top,
-                ticks=axis_ticks(y_bot, y_top, s_T, min_gap_mm=10.0),
+    ax_T = Axis(origin, s_T, "y", min_value=max(min(ticks_T[0], T_lo), y_bot), max_value=max(ticks_T[-1], T_hi),
+                ticks=ticks_T,
                 label=nt.quantity(dT, "J"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
     ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts), _clear_tick_labels(ax_T, curve_pts)
+    for k_mm, tan_psi in ((r.k_mm, r.tan_psi_max), (r.l_mm, r.tan_psi_min)):   # the key's rays from k and l
+        ray = [(origin[0], origin[1] - k_mm), (X1, origin[1] - k_mm - tan_psi * (X1 - origin[0]))]
+        ax_J = _clear_tick_labels(ax_J, ray)
     sh.add(ax_J, ax_T)
     if key:
         sh.add(*energy_mass_construction(r, origin=origin, box=box, axes=(ax_J, ax_T), nt=nt))
@@ -550,12 +598,15 @@ def student_page(v: Variant, *, notation="en") -> Scene:
 
 
 def key_page(v: Variant, *, notation="en") -> Scene:
-    """The answer key of a variant: the student's page with the construction drawn and the answers filled in.
+    """The answer key of a variant: the student's page with the construction drawn and the answers filled in
+    (the paper's lines where the student's are; each page clears them behind its own lettering).
 
+    >>> from dataclasses import replace
     >>> from graphmethods.sheets.worksheets import variant
     >>> v = variant("indicator", seed=7, number=1)
     >>> k = key_page(v)
-    >>> k.element("grid") == student_page(v).element("grid"), k.element("vector-ab").length_mm
+    >>> lines = lambda page: replace(page.element("grid"), holes=())
+    >>> lines(k) == lines(student_page(v)), k.element("vector-ab").length_mm
     (True, 43.75)
     """
     return PAGES[v.kind](v, notation, True)
