@@ -9,7 +9,7 @@ and ω with it. Drawn for a cycle problem given by moment curves (W3, W4), from
 >>> from graphmethods.problems import w3
 >>> s = cycle_panels(w3())
 >>> [c.caption("en") for c in s.scales()]
-['μ_φ = 0.05236 rad/mm (3°/mm)', 'μ_M = 2 N·m/mm', 'μ_E = 1 J/mm', 'μ_ω = 0.02 (rad/s)/mm']
+['μ_φ = 0.05236 rad/mm (3°/mm)', 'μ_M = 1 N·m/mm', 'μ_E = 0.5 J/mm', 'μ_ω = 0.02 (rad/s)/mm']
 """
 
 from __future__ import annotations

@@ -35,9 +35,9 @@ from graphmethods.scene import notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.scale import pick_scale
+from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import PanelContent
-from graphmethods.sheets.force_working import lever_working, moment_working
 
 KINDS = ("scheme", "lever", "group", "plan")
 
@@ -106,7 +106,7 @@ def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", pag
         found = _found(fa, j, i, sides)
         mu = pick_scale(float(np.ptp(np.abs(pts))) or 1.0, 100.0, symbol="μ_F", unit=nt.unit("N"))
         lines = [found_line(lbl, R, mu, nt) for lbl, R in found]
-        moments = moment_working(fa, i, j, nt)
+        moments = FW.moment_working(fa, i, j, nt)
         width = max([text_width_mm(plan_equation(fa, j, i, nt), let.value_mm)]
                     + [text_width_mm(t, let.value_mm) for t in lines]
                     + [text_width_mm(t, let.label_mm) for t in moments])
@@ -132,7 +132,7 @@ def panel_content(fa: Any, i: int, kind: str, j: int = 0, *, nt: Any = "en", pag
         lev = fa.lever
         arrows = [(complex(f.image[i]), complex(f.F[i])) for f in lev.forces]
         arrows.append((complex(lev.image_pin[i]), complex(lev.F_balance[i])))
-        texts = lever_texts(fa, i, nt) + lever_working(fa, i, nt)
+        texts = lever_texts(fa, i, nt) + FW.lever_working(fa, i, nt)
     width = max(text_width_mm(t, let.label_mm) for t in texts)
     height = head + 2.0 + len(texts) * SF.SCHEME_LAYOUT.text_pitch_mm + SF.SCHEME_LAYOUT.reach_top_mm
     return PanelContent(_with_tips(z, arrows), nt.unit("m"), (width, height), below, pad)

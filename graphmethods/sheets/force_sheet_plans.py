@@ -28,10 +28,12 @@ from graphmethods.errors import InputError
 from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
-from graphmethods.sheets import forces as SF
+from graphmethods.sheets import (
+    force_working as FW,  # a module: force_working imports forces back
+    forces as SF,
+)
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import drawn_tip, fit_forces
-from graphmethods.sheets.force_working import drawn_lengths, moment_working
 from graphmethods.sheets.layout import Sheet, given_scale
 
 
@@ -133,11 +135,11 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
         return [found_line(lbl, R, s_F, nt) for lbl, R in found]
 
     def lengths(s_F: Scale) -> list[str]:                       # the known forces' lengths at μ_F
-        return drawn_lengths(sides, s_F, nt)
+        return FW.drawn_lengths(sides, s_F, nt)
 
-    moments = moment_working(fa, i, j, nt)                      # R^τ from the moments, before the plan
+    moments = FW.moment_working(fa, i, j, nt)                      # R^τ from the moments, before the plan
     m_pitch = 1.8 * let.label_mm
-    n_known = len(drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0))
+    n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0))
     m_h = (len(moments) + n_known) * m_pitch
     area, x_text, s_F = _plan_area(sheet, pts, L,
                                    lambda mu: ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]

@@ -152,7 +152,7 @@ def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int =
     >>> from graphmethods.sheets.forces import analysed
     >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
     >>> lever_working(fa, i, "en")[-1]
-    '     − 288.18·0.0991 − 5000·0.0991 = 0'
+    '     + 288.18·0.0991 − 5000·0.0991 = 0'
     """
     nt = get_notation(nt)
     lev = fa.lever

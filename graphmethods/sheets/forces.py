@@ -37,9 +37,9 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
+from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
-from graphmethods.sheets.force_working import lever_working
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -530,7 +530,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever
     sheet = _sheet(case, nt, "lever", i, phi_deg, page=page, title=title, title_block=title_block)
-    texts = lever_texts(fa, i, nt) + (lever_working(fa, i, nt) if _on_course(page, mu_l, mu_F) else [])
+    texts = lever_texts(fa, i, nt) + (FW.lever_working(fa, i, nt) if _on_course(page, mu_l, mu_F) else [])
     fixed = set(mo.linkage.ground)
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
