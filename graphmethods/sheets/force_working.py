@@ -130,7 +130,10 @@ def moment_working(fa: Any, i: int, j: int, nt: Notation | str = "en") -> list[s
             if M != 0.0:
                 terms.append((SF._markup(lbl.replace("F_", "M_", 1), nt), M))
         big = max([abs(tau * l_AP)] + [abs(v) for _, v in terms])
-        if big == 0.0 or abs(tau * l_AP + sum(v for _, v in terms)) > CLOSES * big:
+        size = l_AP * max(abs(complex(r.R[i])) for r in fa.reactions.values())   # the position's moments
+        if SF.round_off_zero(big, size) == 0.0:
+            continue                                        # every term round-off: R^τ is 0, nothing to write
+        if abs(tau * l_AP + sum(v for _, v in terms)) > CLOSES * big:
             continue                                        # a couple the sheet does not draw: no line
         terms = [(s, v) for s, v in terms if SF.round_off_zero(abs(v), big) != 0.0]
         a_name = next((p for p in mo.points if abs(complex(mo.z[p][i]) - A) < 1e-12 * (1 + abs(A))), "A")
