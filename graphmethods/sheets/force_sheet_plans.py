@@ -135,16 +135,23 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
         return [found_line(lbl, R, s_F, nt) for lbl, R in found]
 
     def lengths(s_F: Scale) -> list[str]:                       # the known forces' lengths at μ_F
-        return FW.drawn_lengths(sides, s_F, nt)
+        return FW.drawn_lengths(sides, s_F, nt) if working else []
 
-    moments = FW.moment_working(fa, i, j, nt)                      # R^τ from the moments, before the plan
     m_pitch = 1.8 * let.label_mm
-    n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0))
-    m_h = (len(moments) + n_known) * m_pitch
-    area, x_text, s_F = _plan_area(sheet, pts, L,
-                                   lambda mu: ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]
-                                               + [(t, let.value_mm) for t in lines(mu)]),
-                                   m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
+    for working in (True, False):                               # the working when the panel has room for it
+        moments = FW.moment_working(fa, i, j, nt) if working else []    # R^τ from the moments, before the plan
+        n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0)) if working else 0
+        m_h = (len(moments) + n_known) * m_pitch
+
+        def texts(mu: Scale, moments: list[str] = moments) -> list[tuple[str, float]]:
+            return ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]
+                    + [(t, let.value_mm) for t in lines(mu)])
+        try:
+            area, x_text, s_F = _plan_area(sheet, pts, L, texts, m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
+            break
+        except InputError:
+            if not working:
+                raise
     at = SF._cell(pts, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
     els: list[Element] = [sheet.header()]
     for k, line in enumerate(moments + lengths(s_F)):

@@ -477,8 +477,7 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     sheet = _sheet(case, nt, "plans", i, phi_deg, page=page, title=title, title_block=title_block)
-    # the table beside the plans sets the column, the polygons share what is left
-    rows, res_lines = _plans_results(fa, i, nt, gravity)
+    rows, res_lines = _plans_results(fa, i, nt, gravity)   # the table beside the plans sets the column
     probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=L.row_mm)
     split, area = _split(sheet, max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in res_lines]), L)
     paths = [_polygon(pl.polygons[0], i) for pl in fa.plans]
@@ -530,14 +529,20 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever
     sheet = _sheet(case, nt, "lever", i, phi_deg, page=page, title=title, title_block=title_block)
-    texts = lever_texts(fa, i, nt) + (FW.lever_working(fa, i, nt) if _on_course(page, mu_l, mu_F) else [])
+    texts, working = lever_texts(fa, i, nt), (FW.lever_working(fa, i, nt) if _on_course(page, mu_l, mu_F) else [])
     fixed = set(mo.linkage.ground)
     images = {p: 1j * complex(mo.v_[p][i]) / mo.omega_1 for p in mo.points if p not in fixed}
     items = [(f.label, complex(f.image[i]), complex(f.F[i])) for f in lev.forces if abs(f.F[i]) > 0]
     items.append(("F_b", complex(lev.image_pin[i]), complex(lev.F_balance[i])))
     cloud = np.array([0j] + list(images.values()) + [z for _, z, _ in items])
-    area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, w, F in items], mu_l, mu_F, nt,
-                                         "the lever", page)
+    try:                                                # the moment equation when the panel has room for it
+        area, column, s_l, s_F, at = _scaled(sheet, texts + working, L, cloud, [(w, F) for _, w, F in items],
+                                             mu_l, mu_F, nt, "the lever", page)
+    except InputError:
+        if not working:
+            raise
+        area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, w, F in items], mu_l, mu_F,
+                                             nt, "the lever", page)
     occ = sheet.occ
     pole = at(0j)
     els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
