@@ -896,6 +896,8 @@ class Table(Element):
         W, H = sum(widths), self.height_mm
         prims: list[Primitive] = [Path(((x0, y0), (x0 + W, y0), (x0 + W, y0 + H), (x0, y0 + H)), AXIS, closed=True)]
         for i in range(1, len(self.rows)):
+            if i < self.header_rows:        # a heading of two rows reads as one cell ("Acceleration," over "m/s²")
+                continue
             y = y0 + i * self.row_height_mm
             prims.append(Path(((x0, y), (x0 + W, y)), AXIS if i == self.header_rows else THIN))
         x = x0
@@ -909,7 +911,7 @@ class Table(Element):
                 if not text:
                     continue
                 bx0, by0, bx1, by1 = self.cell_box(i, j)
-                a = align[j]
+                a = "c" if i < self.header_rows and self.header_rows > 1 else align[j]
                 x = {"l": bx0 + self.padding_mm, "c": (bx0 + bx1) / 2, "r": bx1 - self.padding_mm}[a]
                 anchor = {"l": "start", "c": "middle", "r": "end"}[a]
                 prims.append(make_label((x, (by0 + by1) / 2), text, size_mm=self.size_mm, anchor=anchor,

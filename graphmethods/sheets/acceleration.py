@@ -313,23 +313,42 @@ def _component_vectors(pts: dict, comps, *, prefix: str, head_mm: float, width_m
     return vecs
 
 
-def _acceleration_column(comps, pts: dict, head, s_a: Scale, eps: list[tuple[str, str]], at, limit, nt,
-                         lay: AccelerationPlanLayout) -> list[Element]:
+def _table_heads(head: tuple[str, ...]) -> list[tuple[tuple[str, ...], ...]]:
+    """The table's headings on one row, and (when a heading has a unit after a comma) on two, each unit under
+    its word, as a narrow table sets them ("Acceleration," over "m/s²"): the plan takes the one that draws it
+    larger, so that one plan has one μ_a in every language whose text fits.
+
+    >>> _table_heads(("Vector", "Length, mm"))
+    [(('Vector', 'Length, mm'),), (('Vector', 'Length,'), ('', 'mm'))]
+    >>> len(_table_heads(("矢量", "长度/mm")))
+    1
+    """
+    split = [h.split(", ", 1) for h in head]
+    if all(len(p) == 1 for p in split):
+        return [(head,)]
+    return [(head,), (tuple(p[0] + ("," if len(p) == 2 else "") for p in split),
+                      tuple(p[1] if len(p) == 2 else "" for p in split))]
+
+
+def _acceleration_column(comps, pts: dict, head: tuple[tuple[str, ...], ...], s_a: Scale,
+                         eps: list[tuple[str, str]], at, limit, nt, lay: AccelerationPlanLayout) -> list[Element]:
     """Beside the plan at ``at`` (mm): every component's drawn length and value, then ε of the links; the
-    table must end left of and above ``limit`` (mm)."""
-    rows = [head]
+    table (under the heading rows ``head``) must end left of and above ``limit`` (mm)."""
+    rows = list(head)
     lengths = [math.dist(pts[c.start], pts[c.end]) for c in comps]
     # the values with one number of decimals, four digits of the largest (1234 m/s², not 1233.701); 0 for a
     # length within the round-off of the plan's construction
     values = nt.column([L * s_a.per_mm for L in lengths], sig=4, reference=max(lengths, default=0.0) * s_a.per_mm)
     for c, L, v in zip(comps, lengths, values):
         rows.append((image(c.start) + image(c.end), K._num(nt, L, 2), f"{symbol(c.symbol)} = {v}"))
-    tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table")]
+    tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=lay.row_mm, name="table",
+                    header_rows=len(head))]
     below = lay.after_table_mm + len(eps) * lay.line_mm                             # ε of the links under it
     if tables[0].bottom_left[1] + below > limit[1] + 2 * lay.line_mm:   # a long table (a triad's): rows closer
         room = limit[1] - at[1] - below
         row = max(TABLE_MM * 1.7, room / (len(rows) + 0.5))
-        tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")]
+        tables = [Table(at, tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table",
+                        header_rows=len(head))]
     if max(t.top_right[0] for t in tables) > limit[0] + 1e-6 or max(t.bottom_left[1] for t in tables) > limit[1]:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
     wy = max(t.bottom_left[1] for t in tables) + lay.after_table_mm
@@ -381,17 +400,21 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     eqs = _equations(plan, pr.linkage, nt)
     eps = _eps_texts(plan, pr.linkage, nt)
     comps = plan.components
-    head = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
-            nt.quantity(nt.word("acceleration.value"), "m/s²"))
-    probe = Table((0.0, 0.0), (head,) + tuple((image(c.start) + image(c.end), "000,00",        # the values as printed
-                                               f"{symbol(c.symbol)} = {K._num(nt, c.magnitude, 3)}") for c in comps),
-                  size_mm=TABLE_MM, row_height_mm=lay.row_mm)
+    one_line = (nt.word("kinematics.vector"), nt.word("kinematics.length"),
+                nt.quantity(nt.word("acceleration.value"), "m/s²"))
     phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('kinematics.phi_from')}),  "
            f"{pr.speed_text(nt)}")
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
-    parts = AL.Parts(sheet.box, sheet.top, sheet.caption_y - lay.caption_room_mm, probe.width_mm, probe.height_mm,
-                     phi, eqs, eps, arr, slide=getattr(sheet.probe, "size", "") == "SLIDE")
-    best = AL.arrange(parts, lay, lambda w: K._plan_split(sheet.box, w, lay))
+    best, head = None, (one_line,)
+    for heads in _table_heads(one_line):     # the headings on one line, or each unit under its word when narrower
+        probe = Table((0.0, 0.0), heads + tuple((image(c.start) + image(c.end), "000,00",     # the values as printed
+                                                 f"{symbol(c.symbol)} = {K._num(nt, c.magnitude, 3)}") for c in comps),
+                      size_mm=TABLE_MM, row_height_mm=lay.row_mm, header_rows=len(heads))
+        parts = AL.Parts(sheet.box, sheet.top, sheet.caption_y - lay.caption_room_mm, probe.width_mm,
+                         probe.height_mm, phi, eqs, eps, arr, slide=getattr(sheet.probe, "size", "") == "SLIDE")
+        a = AL.arrange(parts, lay, lambda w: K._plan_split(sheet.box, w, lay))
+        if a is not None and (best is None or a.need < best.need * (1 - 1e-9)):
+            best, head = a, heads
     if best is None and page is None:                   # a triad's many equations: the A4 page upright
         return acceleration_plan(linkage, position, m=m, omega_1=omega_1, epsilon_1=epsilon_1, mu_a=mu_a,
                                  notation=notation, page=Page("A4", "portrait", frame=True), title=title,

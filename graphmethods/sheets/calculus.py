@@ -47,6 +47,7 @@ from graphmethods.scene.elements import (
     Polyline,
     Table,
     Text,
+    label_bbox,
     lettered_size,
 )
 from graphmethods.scene.notation import Notation
@@ -135,16 +136,6 @@ def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.
     xs = np.concatenate(([lo], X[inside], [hi]))
     ys = np.concatenate(([np.interp(lo, X, Y)], Y[inside], [np.interp(hi, X, Y)]))
     return xs, ys
-
-
-def _broken_behind(rays: list[Line], axis: Axis) -> list[Line]:
-    """The rays of a pole interrupted where they would cross the value axis's tick labels (a line is broken
-    for an inscription, ГОСТ 2.303): :func:`~graphmethods.sheets.linkage_figures.broken_behind`."""
-    from graphmethods.scene.elements import label_bbox
-    from graphmethods.scene.primitives import Label
-    from graphmethods.sheets.linkage_figures import broken_behind
-
-    return broken_behind(rays, [label_bbox(p) for p in axis.primitives() if isinstance(p, Label)])
 
 
 def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:
@@ -396,10 +387,19 @@ def _free_values(axis: Axis, occ: Occupancy) -> bool:
                for a in sides)
 
 
-def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: int, name: str,
-                pos: str) -> tuple[list[Axis], list[Text]]:
+def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: int, name: str, pos: str,
+                rays: Sequence[Line] = (), projections: Sequence[Line] = ()
+                ) -> tuple[list[Axis], list[Text], list[Line], list[Line]]:
     """A strip's φ and value axes, their tick labels that would cover what is drawn left out, and the
-    position numbers that lost their place set beside their ticks (call after registering the strip)."""
+    position numbers that lost their place set beside their ticks (call after registering the strip).
+
+    ``rays`` (a pole's) and ``projections`` (thin lines from the value axis to the points) are not
+    registered yet: they give way to the numbers (a thin line is broken for an inscription, ГОСТ 2.303),
+    the rays to the values of the value axis, the projections to every number. They come back broken,
+    and registered. The values are set clear of the curve and the chords (the rays pass behind them), and
+    a position number clear of every line but the projections."""
+    from graphmethods.sheets.linkage_figures import broken_behind
+
     full_phi, ax_y = band.axes(nt=nt, y_label=y_label, m=m, name=name)
     if ax_y.ticks and not _free_values(ax_y, occ):      # every value would be crossed: closer
         for gap in np.linspace(LAYOUT.tick_gap_mm, LAYOUT.close_tick_gap_mm, 5)[1:]:   # ticks, some of them free
@@ -410,7 +410,28 @@ def _strip_axes(band: _Band, occ: Occupancy, *, nt: Notation, y_label: str, m: i
                 break
     ax_phi, ax_y = clear_tick_labels(full_phi, occ), clear_tick_labels(ax_y, occ, keep_values=True, other_side=True)
     occ.register(ax_phi, ax_y)
-    return [ax_phi, ax_y], _lost_positions(full_phi, ax_phi, occ, pos)
+    values = _label_boxes(ax_y)
+    rays = broken_behind(list(rays), values)
+    occ.register(*rays)
+    lost = _lost_positions(full_phi, ax_phi, occ, pos)
+    projections = broken_behind(list(projections), values + _label_boxes(ax_phi) + [label_bbox(_label_of(t))
+                                                                                      for t in lost])
+    occ.register(*projections)
+    return [ax_phi, ax_y], lost, rays, projections
+
+
+def _label_boxes(axis: Axis) -> list:
+    """The boxes (mm) of an axis's tick labels and name as drawn."""
+    from graphmethods.scene.primitives import Label
+
+    return [label_bbox(p) for p in axis.primitives() if isinstance(p, Label)]
+
+
+def _label_of(t: Text) -> Any:
+    """The label primitive of a one-line text (its box as drawn)."""
+    from graphmethods.scene.primitives import Label
+
+    return next(p for p in t.primitives() if isinstance(p, Label))
 
 
 @dataclass(frozen=True)
@@ -485,7 +506,8 @@ def _s_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_s: 
     chords_s = [Line(pts_s[k], pts_s[k + 1], style=CHORD, name=f"chord-s-{k + 1}") for k in range(m)]
     dots_s = [Point(q, radius_mm=0.55, name=f"dot-s-{k}") for k, q in enumerate(pts_s)]
     occ.register(curve_s, *ordinates_s, *chords_s)
-    axes, pos_s = _strip_axes(b_s, occ, nt=nt, y_label=nt.quantity(sym_s, nt.unit("m")), m=m, name="s", pos="pos-s")
+    axes, pos_s, _, _ = _strip_axes(b_s, occ, nt=nt, y_label=nt.quantity(sym_s, nt.unit("m")), m=m, name="s",
+                                    pos="pos-s")
     return b_s, [*axes, *ordinates_s, *chords_s, curve_s, *dots_s, *pos_s]
 
 
@@ -520,11 +542,10 @@ def _v_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_v: 
     dots_v = [Point(p, radius_mm=0.55, name=f"dot-v-{k + 1}") for k, p in enumerate(points_v)]
     curve_v = Polyline(b_v.pts(Xs, Ys), style=RESULT, name="curve-v")
     chords_v = _chords_of_points(b_v, v_pts_x, v_pts_y)
+    occ.register(curve_v, *chords_v)
+    axes, pos_v, rays_v, proj_v = _strip_axes(b_v, occ, nt=nt, y_label=nt.quantity(sym_v, nt.unit(ks.sd.units[0])),
+                                              m=m, name="v", pos="pos-v", rays=rays_v, projections=proj_v)
     pole_els_v = _pole(b_v, v.H_mm, f"{nt.sym('calculus.P')}_1", "pole-v", occ)
-    occ.register(curve_v, *rays_v, *proj_v, *chords_v)
-    axes, pos_v = _strip_axes(b_v, occ, nt=nt, y_label=nt.quantity(sym_v, nt.unit(ks.sd.units[0])), m=m, name="v",
-                              pos="pos-v")
-    rays_v = _broken_behind(rays_v, axes[1])
     dim_v = _h_dimension(b_v, v.H_mm, ords, f"H_1 = {nt.number(v.H_mm)} {nt.unit('mm')}", "H1", occ)
     return b_v, [*axes, *rays_v, *proj_v, *chords_v, curve_v, *dots_v, *pole_els_v, *dim_v, *pos_v]
 
@@ -546,11 +567,10 @@ def _a_strip(ks: _KinematicScales, occ: Occupancy, nt: Notation, m: int, sym_a: 
               enumerate(zip(targets_a, points_a)) if k > 0]
     dots_a = [Point(p, radius_mm=0.55, name=f"dot-a-{k}") for k, p in enumerate(points_a)]
     curve_a = Polyline(b_a.pts(Xa, Ya), style=RESULT, name="curve-a")
+    occ.register(curve_a)
+    axes, pos_a, rays_a, proj_a = _strip_axes(b_a, occ, nt=nt, y_label=nt.quantity(sym_a, nt.unit(ks.sd.units[1])),
+                                              m=m, name="a", pos="pos-a", rays=rays_a, projections=proj_a)
     pole_els_a = _pole(b_a, a.H_mm, f"{nt.sym('calculus.P')}_2", "pole-a", occ)
-    occ.register(curve_a, *rays_a, *proj_a)
-    axes, pos_a = _strip_axes(b_a, occ, nt=nt, y_label=nt.quantity(sym_a, nt.unit(ks.sd.units[1])), m=m, name="a",
-                              pos="pos-a")
-    rays_a = _broken_behind(rays_a, axes[1])
     dim_a = _h_dimension(b_a, a.H_mm, ords_a, f"H_2 = {nt.number(a.H_mm)} {nt.unit('mm')}", "H2", occ)
     return b_a, [*axes, *rays_a, *proj_a, curve_a, *dots_a, *pole_els_a, *dim_a, *pos_a]
 
@@ -562,7 +582,8 @@ def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x
     s_s, s_v, s_a, s_t = ks.s_s, ks.s_v, ks.s_a, ks.s_t
     tname = nt.sym("calculus.mu_t") if s_t is not None else nt.sym("mu_phi")
     how = [nt.word("calculus.given") if g else nt.word("calculus.picked") for g in given]
-    first = [s_s.caption(nt), ks.s_phi.caption(nt)] + ([s_t.caption(nt) + f" = {nt.sym('mu_phi')}/ω_1"]
+    t_of_phi = f" = {nt.sym('mu_phi')}/ω_1 = "
+    first = [s_s.caption(nt), ks.s_phi.caption(nt)] + ([s_t.caption(nt).replace(" = ", t_of_phi, 1)]
                                                        if s_t is not None else [])
     elements: list[Element] = []
     elements += _side_block(rx, bands[0].top + drop, first, "formula-s", occ)
@@ -631,7 +652,7 @@ def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = Non
                                H2_mm is not None), sym_v=sym_v, sym_a=sym_a,
                                floor=sheet.caption_y - TEXT_MM - 1.5)
     scales = ks.all()
-    elements = [sheet.header(), *els_s, *els_v, *els_a, *column, *sheet.captions(scales)]
+    elements = [sheet.header(), *els_s, *els_v, *els_a, *column]   # every scale stated once: in the column
     notes = tuple(n for n in (ks.s_phi.note, ks.s_s.note) if n) + (
         f"H1 = {ks.sd.v.H_mm:g} mm ({'given' if H1_mm is not None else 'picked: largest convenient H that fits'})",
         f"H2 = {ks.sd.a.H_mm:g} mm ({'given' if H2_mm is not None else 'picked: largest convenient H that fits'})")

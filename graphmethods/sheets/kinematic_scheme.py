@@ -359,7 +359,7 @@ def _scheme_numbers(g: _SchemeGeometry, P, occ: Occupancy, sheet: Sheet, symbol_
         ug = (ge - gs) / float(np.hypot(*(ge - gs)))
         if abs(ug[1]) > 1e-9:
             free = -guide.side * np.array([ug[1], -ug[0]])    # away from the hatched surface
-            toward = math.degrees(math.atan2(-free[1], free[0]))
+            toward = _free_normal_deg(guide)
             dirs = tuple(d for d in _dirs(toward) if abs((_COMPASS[d] - toward + 180.0) % 360.0 - 180.0) <= 50.0)
             numbers = _output_numbers(out_items, P, occ, sheet.box, side=dirs[0], dirs=dirs, prefer=toward,
                                       leaders=leaders)
@@ -425,9 +425,18 @@ def _stroke_dimension(a, b, numbers: list[Text], text: str, free, out_side: str 
     return Dimension(left, right, text, offset_mm=off, size_mm=TEXT_MM, name="dimension-H")
 
 
+def _free_normal_deg(guide: Guide) -> float:
+    """The direction (deg on paper, counterclockwise from right) away from a guide's hatched surface."""
+    gs, ge = np.asarray(guide.start, float), np.asarray(guide.end, float)
+    ug = (ge - gs) / float(np.hypot(*(ge - gs)))
+    free = -guide.side * np.array([ug[1], -ug[0]])
+    return math.degrees(math.atan2(-free[1], free[0]))
+
+
 def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, lay: SchemeLayout,
-                  leaders: list) -> list[Text]:
-    """Step 7: the names of the joints of the thick position (position 0 when all are thin), away from the middle."""
+                  leaders: list, guides: dict | None = None) -> list[Text]:
+    """Step 7: the names of the joints of the thick position (position 0 when all are thin), away from the middle;
+    a slider's on the free side of its guide (``guides``: the Guide of each slider joint)."""
     labels = []
     occ.pad = lay.names_pad_mm
     ref = g.thick if g.thick is not None else 0
@@ -440,9 +449,13 @@ def _scheme_names(g: _SchemeGeometry, P, occ: Occupancy, box, hard: Occupancy, l
         prefer = math.degrees(math.atan2(-away[1], away[0])) if np.hypot(*away) > 1e-9 else 90.0
         if j in g.parts.fixed:
             prefer = 180.0 if at[0] <= centroid[0] else 0.0
+        arc = 180.0
+        guide = (guides or {}).get(f"guide-{j}")
+        if guide is not None:                   # never across the guide's hatching
+            prefer, arc = _free_normal_deg(guide), 90.0
         labels.append(_place(occ, at, _sub(j), prefer, size_mm=TEXT_MM + 0.3, within=box, name=f"name-{j}",
                              gaps=lay.names_gaps_mm, hard=hard, leaders=leaders, ring=True,
-                             ring_mm=lay.names_ring_mm))
+                             ring_mm=lay.names_ring_mm, ring_arc_deg=arc))
     occ.pad = lay.pad_mm
     return labels
 
@@ -528,7 +541,9 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     occ.register(rot)
     leaders: list[Element] = []            # from labels that found no free place beside their point
     numbers, dims = _scheme_numbers(g, P, occ, sheet, symbol_els, nt, lay, leaders)
-    labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders) + [rot_label(occ, leaders)]
+    hard.register(*leaders)                 # a name set across thin lines (broken behind it) never on a leader
+    guides = {e.name: e for e in symbol_els if isinstance(e, Guide)}
+    labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders, guides) + [rot_label(occ, leaders)]
     values = [label_bbox(p) for e in dims + labels for p in e.primitives() if isinstance(p, Label)]
     thin_els = _broken_lines(thin_els, values)
     facts = _scheme_facts(g.pos, g.ext, nt)
@@ -682,6 +697,11 @@ def _crank_numbers(items, centre, P, occ, box, leaders: list) -> list:
     return out
 
 
+#: a slider's position number goes at most this far (deg) from the normal of its guide on the free side:
+#: never across the guide's hatching (a leader through the hatching reads as a number of the frame)
+SLIDER_NUMBER_ARC_DEG = 75.0
+
+
 def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=None, prefer=None,
                     leaders: list | None = None) -> list:
     """The position numbers at the output point: for a slider in a row on the free side of its guide
@@ -705,7 +725,7 @@ def _output_numbers(items, P, occ, box, *, side: str | None, pivot=None, dirs=No
             toward = prefer if prefer is not None else (90.0 if side == "n" else 270.0)
             out.append(_place(occ, tuple(o), text, toward, size_mm=SMALL_MM, within=box, leaders=leaders, ring=True,
                               dirs=dirs or (side, side + "e", side + "w"), gaps=(1.5, 3.1, 4.7, 6.3),
-                              name=f"number-out-{tag}"))
+                              name=f"number-out-{tag}", ring_arc_deg=SLIDER_NUMBER_ARC_DEG))
             continue
         prefer = math.degrees(math.atan2(-(o - pivot)[1], (o - pivot)[0]))
         out.append(_place(occ, tuple(o), text, prefer, size_mm=SMALL_MM, within=box, name=f"number-out-{tag}",

@@ -483,9 +483,10 @@ class Occupancy:
 COURSE_SHEETS = ("A1", "A2")
 
 
-def course_title_block(tb: TitleBlock, nt) -> TitleBlock:
+def course_title_block(tb: TitleBlock, nt, *, scale: str = "") -> TitleBlock:
     """The main inscription of an A1/A2 course sheet: ГОСТ 2.104 form 1 (ru), GB/T 10609.1 (zh), or the
-    simple block with the student's rows held free (en), all of a fixed height.
+    simple block with the student's rows held free (en), all of a fixed height. ``scale`` fills the
+    standard forms' Масштаб / 比例 cell (:func:`main_scale`).
 
     >>> from graphmethods.scene import TitleBlock
     >>> course_title_block(TitleBlock("Dynamic analysis", "press"), "ru").form
@@ -496,7 +497,31 @@ def course_title_block(tb: TitleBlock, nt) -> TitleBlock:
     if form == "simple":
         rows = tuple((nt.word(k), "") for k in ("title_block.student", "worksheets.group", "title_block.sheet"))
         return replace(tb, person=rows)
-    return replace(tb, form=form, fields=(("designation", tb.problem),))
+    return replace(tb, form=form, fields=(("designation", tb.problem),) + ((("scale", scale),) if scale else ()))
+
+
+def main_scale(scales, nt) -> str:
+    """The scale of a course sheet for its main inscription (ГОСТ 2.104 graph 6, GB/T 10609.1 比例).
+
+    A sheet of several images states the scale of its main one there, the others at their images
+    (ГОСТ 2.109, GB/T 14690): the main image is the first drawn to a length scale μ_l among
+    ``scales`` (the sheet's first part's), written as ГОСТ 2.302 / GB/T 14690 write it, 1 : (1000 μ_l)
+    for μ_l in m/mm (every convenient μ_l, 1, 2, 2.5, 4, 5 × 10ᵏ, is a scale of those series). A sheet
+    that draws no length to scale (diagrams only, each at its own μ) gets a dash.
+
+    >>> from graphmethods.scene import Scale
+    >>> main_scale([Scale("μ_l", "м", 0.0025)], "ru"), main_scale([Scale("μ_l", "m", 0.0005)], "zh")
+    ('1:2,5', '2:1')
+    >>> main_scale([Scale("μ_M", "N·m", 5.0)], "ru")
+    '—'
+    """
+    nt = get_notation(nt)
+    length = next((s for s in scales if markup.plain(s.symbol) == markup.plain("μ_l")
+                   and s.unit == nt.unit("m")), None)
+    if length is None:
+        return "—"
+    r = float(length.per_mm) * 1000.0          # mm of the part per mm of paper
+    return f"1:{nt.number(round(r, 6))}" if r >= 1.0 - 1e-9 else f"{nt.number(round(1.0 / r, 6))}:1"
 
 
 def sign_sheet(scene: Scene, *, student: str = "", group: str = "", sheet_no: str = "", sheets: str = "") -> Scene:
@@ -525,7 +550,7 @@ def sign_sheet(scene: Scene, *, student: str = "", group: str = "", sheet_no: st
 
 
 def standard_page(page: Page | None, *, title: str, problem, scales: tuple[str, ...], nt,
-                  title_block: bool = True) -> Page:
+                  title_block: bool = True, scale: str = "") -> Page:
     """The page of a sheet: A4 landscape with a frame and a title block unless ``page`` is given.
 
     A given page is used as it is, with the title block added when it has none and
@@ -536,7 +561,7 @@ def standard_page(page: Page | None, *, title: str, problem, scales: tuple[str, 
     tb = TitleBlock(title, text_in(problem, nt.code), scales,
                     headings=(nt.word("figure"), nt.word("problem"), nt.word("scales")))
     if page is not None and page.size in COURSE_SHEETS:
-        tb = course_title_block(tb, nt)
+        tb = course_title_block(tb, nt, scale=scale)
     if page is None:
         return Page("A4", "landscape", frame=True, title_block=tb if title_block else None)
     if page.title_block is None and title_block:
@@ -613,7 +638,7 @@ class Sheet:
     def page(self, scales):
         return standard_page(self._page_arg, title=self.title, problem=self.problem,
                              scales=tuple(s.caption(self.nt) for s in scales), nt=self.nt,
-                             title_block=self.title_block)
+                             title_block=self.title_block, scale=main_scale(scales, self.nt))
 
     def header(self):
         from graphmethods.scene import Text

@@ -169,11 +169,14 @@ _COMPASS = {"e": 0.0, "ne": 45.0, "n": 90.0, "nw": 135.0, "w": 180.0, "sw": 225.
 
 def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, within=None, name: str,
            gaps=(0.8, 2.2, 4.0), avoid_lines: bool = True, dirs=None, hard: Occupancy | None = None,
-           leaders: list | None = None, ring: bool = False, ring_mm: float = math.inf) -> Text:
+           leaders: list | None = None, ring: bool = False, ring_mm: float = math.inf,
+           ring_arc_deg: float = 180.0) -> Text:
     """A label beside ``at``, in the free direction nearest ``prefer_deg`` (registered as taken).
 
     Free of lines and labels if possible; with ``ring`` (and ``leaders`` to collect them) further out in
-    any direction, nearest first, at most ``ring_mm`` beyond the last gap, with a leader back to ``at``;
+    any direction within ``ring_arc_deg`` of ``prefer_deg`` (a slider's numbers: on the free side of its
+    guide, never across the hatching), nearest first, at most ``ring_mm`` beyond the last gap, with a
+    leader back to ``at``;
     else free of labels and of the ``hard`` lines (crossing a thin line, which the caller breaks behind
     it: :func:`broken_behind`); else the preferred spot.
     """
@@ -183,7 +186,7 @@ def _place(occ: Occupancy, at, text: str, prefer_deg: float, *, size_mm: float, 
     lab = (_first_clear(occ, hard, at, text, dirs, gaps, size_mm, within, None if ring else leaders, name)
            if avoid_lines else None)
     if lab is None and ring and leaders is not None:
-        lab = _ring_clear(occ, hard, at, text, prefer_deg, gaps[-1], size_mm, within, ring_mm)
+        lab = _ring_clear(occ, hard, at, text, prefer_deg, gaps[-1], size_mm, within, ring_mm, arc_deg=ring_arc_deg)
         if lab is not None:
             _leader(occ, at, lab, leaders, name, start_mm=RING_START_MM)
     for gap in (gaps if lab is None else ()):     # crowded: near the point across a thin line
@@ -246,15 +249,17 @@ RING_START_MM = 2.0
 
 
 def _ring_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, prefer_deg: float, gap: float,
-                size_mm: float, within, reach_mm: float = math.inf):
-    """The nearest place on rings around ``at`` (every :data:`RING_STEP_DEG`, out to :data:`RING_MM`
-    beyond ``gap`` but no further than ``reach_mm``, the angle nearest ``prefer_deg`` first) free of every
-    line and label, whose leader crosses no label; None when there is none (deterministic: a fixed order,
-    the first free wins)."""
+                size_mm: float, within, reach_mm: float = math.inf, *, arc_deg: float = 180.0):
+    """The nearest place on rings around ``at`` (every :data:`RING_STEP_DEG` within ``arc_deg`` of
+    ``prefer_deg``, out to :data:`RING_MM` beyond ``gap`` but no further than ``reach_mm``, the angle
+    nearest ``prefer_deg`` first) free of every line and label, whose leader crosses no label; None when
+    there is none (deterministic: a fixed order, the first free wins)."""
     from graphmethods.scene.elements import label_bbox, place_label
 
-    angles = sorted(range(0, 360, RING_STEP_DEG),
-                    key=lambda a: (abs((a - prefer_deg + 180.0) % 360.0 - 180.0), a))
+    def off(a: float) -> float:
+        return abs((a - prefer_deg + 180.0) % 360.0 - 180.0)
+
+    angles = sorted((a for a in range(0, 360, RING_STEP_DEG) if off(a) <= arc_deg + 1e-9), key=lambda a: (off(a), a))
     x, y = at
     for extra in (e for e in RING_MM if e <= reach_mm):
         r = gap + extra

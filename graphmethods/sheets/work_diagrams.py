@@ -249,8 +249,8 @@ def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: 
     # the dimension of H first: its extension line at the origin passes where the φ axis letters its 0,
     # and the axis moves a tick label it would cross beside its tick
     dim = _h_dimension(b_M, ws.H, ords_M, f"H = {nt.number(ws.H)} {nt.unit('mm')}", "H", occ)
-    axes, pos_M = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)), m=len(x) - 1,
-                              name="M", pos="pos-M")
+    axes, pos_M, _, _ = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)),
+                                    m=len(x) - 1, name="M", pos="pos-M")
     names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
                            "M")
     return b_M, [*axes, *steps, *projections, *rays, curve_d, curve_r, *pole_els, *dim, *names_M, *pos_M]
@@ -268,8 +268,8 @@ def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     dots_A = [Point(p, radius_mm=0.5, name=f"dot-A_r-{k}") for k, p in enumerate(chords_r.points)]
     dots_A += [Point(chords_d.points[-1], radius_mm=0.5, name="dot-A_d-end")]
     occ.register(chords_d, chords_r)
-    axes, pos_A = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)), m=len(x) - 1,
-                              name="A", pos="pos-A")
+    axes, pos_A, _, _ = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)),
+                                    m=len(x) - 1, name="A", pos="pos-A")
     names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]),
                                  (chords_r, nt.sym("calculus.A_r"), b_A.origin[1])), "A")
     return b_A, [*axes, chords_d, chords_r, *dots_A, *names_A, *pos_A]
@@ -286,8 +286,8 @@ def _dE_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
                    for k, (xk, ek) in enumerate(zip(x, dE)) if abs(s_A.to_mm(float(ek))) > 0.05]
     dots_E = [Point(p, radius_mm=0.5, name=f"dot-dE-{k}") for k, p in enumerate(curve_E.points)]
     occ.register(curve_E, *ordinates_E)
-    axes, pos_E = _strip_axes(b_E, occ, nt=nt, y_label=nt.quantity(nt.sym("dE"), nt.unit(work_unit)), m=len(x) - 1,
-                              name="dE", pos="pos-E")
+    axes, pos_E, _, _ = _strip_axes(b_E, occ, nt=nt, y_label=nt.quantity(nt.sym("dE"), nt.unit(work_unit)),
+                                    m=len(x) - 1, name="dE", pos="pos-E")
     return b_E, [*axes, *ordinates_E, curve_E, *dots_E, *pos_E]
 
 
