@@ -210,7 +210,7 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
 def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(), J_to: float, T_hi: float,
                      T_lo: float, within=None, prefix: str = "", y_top_mm: float | None = None,
                      label_step: int | None = None, register_only=(), own_frame: bool = False,
-                     J_from: float = 0.0) -> list:
+                     J_from: float = 0.0, page_axes: tuple[Axis, Axis] | None = None) -> list:
     """The energy–mass diagram at ``origin`` (page point of J_e = J_from, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
 
     Parameters
@@ -225,6 +225,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         Reach of the abscissa (kg·m²) and range of the ordinate axis (J).
     y_top_mm : float, optional
         The rays stop where they rise this high above the abscissa (room kept above the diagram).
+    page_axes : (Axis, Axis), optional
+        The ΔT and J_e axes the page draws (a worksheet's grid): used instead of the diagram's own, the
+        position numbers kept out of the J_e axis's row of values wherever the page wrote them.
     own_frame : bool
         Clip the rays to the diagram's own frame instead of ``clip``: from the ordinate axis
         (or just as far left of it as the marks of ψ need) to just past the curve, between the
@@ -254,7 +257,14 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     if J_from > 0.0:
         psi_els.append(axis_break((d.origin[0] + 5.0, d.origin[1]), f"{prefix}axis-J-break"))
     occ.register(curve, *rays, dim, *psi_els, *register_only)
-    ax_T, ax_J = _diagram_axes(d, occ, nt)
+    if page_axes is None:
+        ax_T, ax_J = _diagram_axes(d, occ, nt)
+    else:                               # the page's own ΔT and J_e axes (a worksheet's): numbers keep off their values
+        ax_T, ax_J = page_axes
+        occ.register(ax_T, ax_J)
+        band = tick_label_band(ax_J)
+        if band is not None:
+            occ.add_box(band)
     els: list[Element] = [ax_T, ax_J] + psi_els + [curve] + rays + [dim]
     els += _diagram_points(res, d, occ, within)
     els += _psi_labels(res, d, occ, nt, within)

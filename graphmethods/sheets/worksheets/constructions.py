@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from graphmethods.scene import Scale, Text, Vector, notation as get_notation
-from graphmethods.scene.elements import Element, Line, Point, Region, make_label
+from graphmethods.scene.elements import Axis, Element, Line, Point, Region, make_label
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.sheets.worksheets.elements import RED, SMALL_MM, TEXT_MM, THICK, ColorText, arc, ground, pin, slider
 from graphmethods.sheets.worksheets.variants import SEGMENTS
@@ -109,14 +109,21 @@ def extremes(first_x: float, y0: float, works, *, mu_E: float, step_mm: float, n
 def energy_mass_construction(res, *, origin, box, axes=(), nt="en", prefix: str = "key-") -> list[Element]:
     """The energy–mass diagram of a construction ``res`` (its curve, rays, k, l, kl, ψ, position numbers)
     at ``origin`` (page point of J_e = 0, ΔT = 0), inside ``box``, drawn by
-    :func:`graphmethods.sheets.wittenbauer.diagram_elements` over the given ``axes`` (which it keeps
-    its labels off; its own axes are left out, the page's are drawn instead)."""
+    :func:`graphmethods.sheets.wittenbauer.diagram_elements` over the page's ``axes`` (J_e, ΔT: it keeps its
+    labels off them and out of the J_e axis's row of values, and breaks its rays behind their values)."""
+    from graphmethods.scene.elements import label_bbox
+    from graphmethods.scene.primitives import Label
     from graphmethods.sheets.dynamics import FastOccupancy
+    from graphmethods.sheets.linkage_figures import broken_behind
     from graphmethods.sheets.wittenbauer import diagram_elements
 
     occ = FastOccupancy()
+    J_axis = next((a for a in axes if isinstance(a, Axis) and a.direction == "x"), None)
+    T_axis = next((a for a in axes if isinstance(a, Axis) and a.direction == "y"), None)
+    page_axes = (T_axis, J_axis) if J_axis is not None and T_axis is not None else None
     for a in axes:
-        occ.add_primitives(a.primitives())
+        if page_axes is None or not isinstance(a, Axis):     # plain lines (an overlay's): kept clear of
+            occ.add_primitives(a.primitives())
     J = np.asarray(res.x_mm) * res.mu_J
     T = np.asarray(res.y_mm) * res.mu_T
     ox, oy = origin
@@ -124,8 +131,13 @@ def energy_mass_construction(res, *, origin, box, axes=(), nt="en", prefix: str 
     T_lo = max(min(float(T.min()), res.l_mm * res.mu_T, 0.0), -(box[3] - oy - 2.0) * res.mu_T)
     # the rays stop at the ordinate axis (k and l are on it): left of it they would cross its tick values
     els = diagram_elements(res, origin=origin, nt=nt, occ=occ, clip=(ox, *box[1:]), J_to=float(J.max()), T_hi=T_hi,
-                           T_lo=T_lo, within=box, prefix=prefix)
-    return [e for e in els if e.name not in (f"{prefix}axis-J", f"{prefix}axis-T")]
+                           T_lo=T_lo, within=box, prefix=prefix, page_axes=page_axes)
+    # a ray is broken for the axes' values it passes (ГОСТ 2.303): the axis keeps every value under the key's rays
+    values = [label_bbox(p) for a in axes for p in a.primitives() if isinstance(p, Label)]
+    rays = [e for e in els if e.name.startswith(f"{prefix}ray-")]
+    kept = [e for e in els if e.name not in (f"{prefix}axis-J", f"{prefix}axis-T") and e not in rays
+            and all(e is not a for a in page_axes or ())]
+    return kept + broken_behind(rays, values)
 
 
 def velocity_plan(pole, vectors: dict, *, mu_v: float, link_dir, nt="en", wrong: dict | None = None, occ=None,

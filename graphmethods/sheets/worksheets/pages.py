@@ -251,13 +251,22 @@ def _flywheel_heads(nt) -> list[str]:
     return [nt.quantity(nt.sym("dynamics.omega_m"), rs), nt.quantity("ω_{max}", rs), nt.quantity("ω_{min}", rs)]
 
 
-def _clear_tick_labels(axis: Axis, points) -> Axis:
-    """The axis with the tick labels that a polyline (page points) runs through left out."""
+def _clear_tick_labels(axis: Axis, points, *, other_side: bool = False) -> Axis:
+    """The axis with the tick labels that a polyline (page points) runs through left out; with ``other_side``
+    (an abscissa the curve runs under) its values above it when that keeps more of them."""
     from graphmethods.sheets.layout import Occupancy, clear_tick_labels
 
     occ = Occupancy(pad_mm=0.4)
     occ.add_line(points)
-    return clear_tick_labels(axis, occ)
+    below = clear_tick_labels(axis, occ)
+    if not other_side:
+        return below
+    above = clear_tick_labels(replace(axis, labels_side="above"), occ)
+
+    def kept(a: Axis) -> int:
+        return sum(1 for t in a.tick_labels or () if t)
+
+    return above if kept(above) > kept(below) else below
 
 def data_ticks(lo: float, hi: float, scale: Scale, *, room: tuple[float, float], min_gap_mm: float
                ) -> tuple[float, ...]:
@@ -555,10 +564,8 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     ax_T = Axis(origin, s_T, "y", min_value=max(min(ticks_T[0], T_lo), y_bot), max_value=max(ticks_T[-1], T_hi),
                 ticks=ticks_T,
                 label=nt.quantity(dT, "J"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
-    ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts), _clear_tick_labels(ax_T, curve_pts)
-    for k_mm, tan_psi in ((r.k_mm, r.tan_psi_max), (r.l_mm, r.tan_psi_min)):   # the key's rays from k and l
-        ray = [(origin[0], origin[1] - k_mm), (X1, origin[1] - k_mm - tan_psi * (X1 - origin[0]))]
-        ax_J = _clear_tick_labels(ax_J, ray)
+    # the key's rays from k and l give way to the values (broken behind them): the same axes on both pages
+    ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts, other_side=True), _clear_tick_labels(ax_T, curve_pts)
     sh.add(ax_J, ax_T)
     if key:
         sh.add(*energy_mass_construction(r, origin=origin, box=box, axes=(ax_J, ax_T), nt=nt))
