@@ -42,6 +42,7 @@ from graphmethods.sheets.linkage_figures import (
     _through,
 )
 from graphmethods.sheets.styles import CELL
+from graphmethods.units import convenient_at_least
 
 # ----------------------------------------------------------------------------- 2a. the grid of plans
 
@@ -72,13 +73,17 @@ class _Grid:
     cw: float
     ch: float
     need: float                         # physical units per mm the largest plan needs in its cell
+    shares: tuple[tuple[float, float], ...] = ()    # each cell's (x, width) in its row when not all alike
 
     def cell(self, idx: int, lay: PlanGridLayout) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The frame of cell ``idx`` and the box inside it that the plan fills (mm)."""
         r, c = divmod(idx, self.columns)
         bx0, by0 = self.area[0] + c * self.cw, self.area[1] + r * self.ch
+        cw = self.cw
+        if self.shares:
+            bx0, cw = self.shares[idx]
         e = lay.inset_mm
-        box = (bx0 + e, by0 + e, bx0 + self.cw - e, by0 + self.ch - e)
+        box = (bx0 + e, by0 + e, bx0 + cw - e, by0 + self.ch - e)
         inner = (box[0] + lay.pad_x_mm - e, box[1] + lay.head_mm + lay.pad_y_mm - e, box[2] - lay.pad_x_mm + e,
                  box[3] - lay.pad_y_mm + e)
         return box, inner
@@ -100,6 +105,7 @@ def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: P
             return math.inf, cw, ch
         return float(max((spans[fit, 0] / iw).max(), (spans[fit, 1] / ih).max())), cw, ch
 
+    auto = columns is None
     if columns is None:
         columns = min((need_for(c)[0], c) for c in range(1, n + 1))[1]
     elif isinstance(columns, bool) or not isinstance(columns, int) or not 1 <= columns <= n:
@@ -108,7 +114,57 @@ def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: P
     if not math.isfinite(need) or need <= 0:
         raise InputError(f"{n} plans in {columns} columns do not fit on this sheet; give other columns or a "
                          f"larger page")
-    return _Grid(area, columns, cw, ch, need)
+    grid = _Grid(area, columns, cw, ch, need)
+    if auto:                            # cells as wide as their plans, when that draws every plan larger
+        fitted = _fitted_grid(area, spans, fit, lay)
+        if fitted is not None and convenient_at_least(fitted.need) < convenient_at_least(need) * (1 - 1e-9):
+            return fitted
+    return grid
+
+
+#: a cell is never narrower than this (its heading, a short plan's labels), mm
+MIN_CELL_MM = 24.0
+
+
+def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout) -> _Grid | None:
+    """The plans in rows of cells as wide as each plan at the common scale (the positions in order, the rows
+    alike in height), the slack of a row shared among its cells: a plan fills its cell as a draftsman sizes
+    it, where equal cells would have to take the widest plan's width. The rows kept are those that give the
+    largest convenient scale; None when no rows do better than infinity."""
+    W, H = area[2] - area[0], area[3] - area[1]
+    n = len(spans)
+    sx, sy = spans[:, 0], np.where(fit, spans[:, 1], 0.0)     # every plan drawn gets its width
+    best: _Grid | None = None
+    for cols in range(1, n + 1):
+        rows = math.ceil(n / cols)
+        ch = H / rows
+        ih = ch - lay.head_mm - 2 * lay.pad_y_mm
+        if ih <= 5:
+            continue
+        need = float(sy.max() / ih)
+        for r in range(rows):
+            row = sx[r * cols:(r + 1) * cols]
+            room = W - len(row) * 2 * lay.pad_x_mm
+            if room <= 5:
+                need = math.inf
+                break
+            need = max(need, float(row.sum() / room))
+        if not math.isfinite(need) or need <= 0:
+            continue
+        mu = convenient_at_least(need)
+        shares: list[tuple[float, float]] = []
+        for r in range(rows):
+            row = sx[r * cols:(r + 1) * cols]
+            widths = np.maximum(row / mu + 2 * lay.pad_x_mm, MIN_CELL_MM)
+            if widths.sum() > W + 1e-9:
+                break
+            widths = widths + (W - widths.sum()) / len(widths)
+            x = area[0] + np.concatenate(([0.0], np.cumsum(widths)[:-1]))
+            shares += list(zip(x.tolist(), widths.tolist()))
+        else:
+            if best is None or mu < convenient_at_least(best.need) * (1 - 1e-9):
+                best = _Grid(area, cols, W / cols, ch, need, tuple(shares))
+    return best
 
 
 def _grid_cell(box, heading: str, prefix: str, style: Style, occ: Occupancy, lay: PlanGridLayout) -> list[Element]:
