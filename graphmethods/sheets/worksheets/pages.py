@@ -268,6 +268,25 @@ def _clear_tick_labels(axis: Axis, points, *, other_side: bool = False) -> Axis:
 
     return above if kept(above) > kept(below) else below
 
+def _inertia_axis(origin, s_J: Scale, J_hi: float, x_max: float, J_e_sym: str, nt: Notation, curve_pts) -> Axis:
+    """The energy–mass diagram's J_e axis with a value at every tick: the nice-number rule's ticks at least
+    12 mm apart, or further apart when the curve runs through a value on both sides of the axis (the values
+    above the axis where the curve runs under it)."""
+    best: tuple[int, Axis] | None = None
+    for gap in (12.0, 16.0, 20.0, 25.0):
+        ticks = data_ticks(0.0, J_hi, s_J, room=(0.0, x_max), min_gap_mm=gap)
+        ax = Axis(origin, s_J, "x", min_value=0.0, max_value=max(ticks[-1], J_hi), ticks=ticks, label=J_e_sym,
+                  size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True, name="axis-J")
+        ax = _clear_tick_labels(ax, curve_pts, other_side=True)
+        lost = sum(1 for t, lab in zip(ax.ticks, ax.tick_labels or ()) if t != 0 and not lab)
+        if best is None or lost < best[0]:
+            best = (lost, ax)
+        if not lost:
+            break
+    assert best is not None
+    return best[1]
+
+
 def data_ticks(lo: float, hi: float, scale: Scale, *, room: tuple[float, float], min_gap_mm: float
                ) -> tuple[float, ...]:
     """The ticks of an axis that holds data in [``lo``, ``hi``]: the nice-number rule's ticks
@@ -557,15 +576,13 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     J_hi = float(max(v.J_e))
     T_lo = min(float(min(v.delta_T)), r.l_mm * v.mu_T, 0.0)
     T_hi = max(float(max(v.delta_T)), r.k_mm * v.mu_T, 0.0)
-    ticks_J = data_ticks(0.0, J_hi, s_J, room=(0.0, x_max), min_gap_mm=12.0)
     ticks_T = data_ticks(T_lo, T_hi, s_T, room=(y_bot, y_top), min_gap_mm=10.0)
-    ax_J = Axis(origin, s_J, "x", min_value=0.0, max_value=max(ticks_J[-1], J_hi), ticks=ticks_J,
-                label=J_e_sym, size_mm=SMALL_MM, decimal=nt.decimal, skip_zero_label=True, name="axis-J")
+    ax_J = _inertia_axis(origin, s_J, J_hi, x_max, J_e_sym, nt, curve_pts)
     ax_T = Axis(origin, s_T, "y", min_value=max(min(ticks_T[0], T_lo), y_bot), max_value=max(ticks_T[-1], T_hi),
                 ticks=ticks_T,
                 label=nt.quantity(dT, "J"), size_mm=SMALL_MM, decimal=nt.decimal, name="axis-T")
     # the key's rays from k and l give way to the values (broken behind them): the same axes on both pages
-    ax_J, ax_T = _clear_tick_labels(ax_J, curve_pts, other_side=True), _clear_tick_labels(ax_T, curve_pts)
+    ax_T = _clear_tick_labels(ax_T, curve_pts)
     sh.add(ax_J, ax_T)
     if key:
         sh.add(*energy_mass_construction(r, origin=origin, box=box, axes=(ax_J, ax_T), nt=nt))
