@@ -89,9 +89,21 @@ class _Grid:
         return box, inner
 
 
-def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: PlanGridLayout) -> _Grid:
+def _shared_label_mm(xy: dict) -> float:
+    """The width (mm) of a plan's longest label of coincident images ("p, k₃, d, b" at a dead point)."""
+    groups: dict[tuple[float, float], list[str]] = {}
+    scale = max((abs(float(c)) for v in xy.values() for c in v), default=1.0) or 1.0
+    for name, v in xy.items():
+        key = (round(float(v[0]) / scale, 9), round(float(v[1]) / scale, 9))
+        groups.setdefault(key, []).append(name)
+    return max(markup.text_width_mm(", ".join(_plan_markup(n) for n in g), SMALL_MM + 0.2) for g in groups.values())
+
+
+def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: PlanGridLayout,
+               label_mm: np.ndarray | None = None) -> _Grid:
     """The grid of n plans whose extents are ``spans`` (n, 2): the columns given, or those giving the largest
-    common scale; only the plans ``fit`` (bool, n) have to fit their cells."""
+    common scale; only the plans ``fit`` (bool, n) have to fit their cells (``label_mm``: each plan's widest
+    label, which a cell sized to its plan must hold too)."""
     x0, _, x1, _ = sheet.box
     area = (x0, sheet.top, x1, sheet.caption_y - lay.caption_room_mm)
     W, H = area[2] - area[0], area[3] - area[1]
@@ -116,17 +128,18 @@ def _plan_grid(sheet: Sheet, spans: np.ndarray, fit: np.ndarray, columns, lay: P
                          f"larger page")
     grid = _Grid(area, columns, cw, ch, need)
     if auto:                            # cells as wide as their plans, when that draws every plan larger
-        fitted = _fitted_grid(area, spans, fit, lay)
+        fitted = _fitted_grid(area, spans, fit, lay, np.zeros(n) if label_mm is None else label_mm)
         if fitted is not None and convenient_at_least(fitted.need) < convenient_at_least(need) * (1 - 1e-9):
             return fitted
     return grid
 
 
-#: a cell is never narrower than this (its heading, a short plan's labels), mm
+#: a cell is never narrower than this, nor than half an equal cell (its heading, a short plan's labels: a
+#: dead point's "p, k₃, d, b, c, s₃, s₄, s₅"), mm
 MIN_CELL_MM = 24.0
 
 
-def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout) -> _Grid | None:
+def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout, label_mm: np.ndarray) -> _Grid | None:
     """The plans in rows of cells as wide as each plan at the common scale (the positions in order, the rows
     alike in height), the slack of a row shared among its cells: a plan fills its cell as a draftsman sizes
     it, where equal cells would have to take the widest plan's width. The rows kept are those that give the
@@ -154,8 +167,8 @@ def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout) 
         mu = convenient_at_least(need)
         shares: list[tuple[float, float]] = []
         for r in range(rows):
-            row = sx[r * cols:(r + 1) * cols]
-            widths = np.maximum(row / mu + 2 * lay.pad_x_mm, MIN_CELL_MM)
+            row, labels = sx[r * cols:(r + 1) * cols], label_mm[r * cols:(r + 1) * cols]
+            widths = np.maximum(np.maximum(row / mu, labels) + 2 * lay.pad_x_mm, max(MIN_CELL_MM, W / cols / 2))
             if widths.sum() > W + 1e-9:
                 break
             widths = widths + (W - widths.sum()) / len(widths)
@@ -219,7 +232,8 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
         xy = np.array(list(_image_xy(plans, images, k).values()))
         spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
     ill = np.asarray(plans.ill_conditioned)[drawn]
-    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, lay)
+    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, lay,
+                      label_mm=np.array([_shared_label_mm(_image_xy(plans, images, k)) for k in drawn]))
     s_v = _pick_mu_v(mu_v, grid.need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
     cells: list[Element] = []
