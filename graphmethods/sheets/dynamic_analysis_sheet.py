@@ -129,8 +129,8 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     table_head = Text((table.at[0], table.at[1] - 2.0), nt.word("wittenbauer.result"), size_mm=TEXT_MM + 0.8,
                       bold=True, name="heading-result")
     scales = (lay.s_phi, lay.s_M, lay.s_T, lay.s_J)
-    others = ([sheet.header()] + M_els + T_els + turned + diag + heads + [table_head, table] + ordinates
-              + sheet.captions(scales))
+    # every scale is stated once, in the result table (μ_M, μ_φ, μ_J, μ_T beside their names): no captions line
+    others = [sheet.header()] + M_els + T_els + turned + diag + heads + [table_head, table] + ordinates
     elements = _broken_at_texts(proj, others) + others
     J_0 = lay.J_0
     notes = tuple(s.note or f"given: {s.caption()}" for s in scales) + (
