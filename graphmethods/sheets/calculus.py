@@ -633,7 +633,7 @@ def kinematic_diagrams(subject: Any, *, m: int = 12, omega_1: float | None = Non
     >>> from graphmethods.kinematics import SliderCrank
     >>> s = kinematic_diagrams(SliderCrank(r=0.1, l=0.4), m=12, notation="ru")
     >>> s.title, [sc.symbol for sc in s.scales()]
-    ('Кинематические диаграммы ползуна', ['μ_φ', 'μ_S', 'μ_V', 'μ_a'])
+    ('Кинематические диаграммы ползуна', ['μ_φ', 'μ_S', 'μ_v', 'μ_a'])
     """
     nt = get_notation(notation)
     mech, omega_case, prob = _slider_subject(subject, nt)
