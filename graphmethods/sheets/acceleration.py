@@ -405,7 +405,8 @@ def acceleration_plan(linkage, position: int | None = None, *, m: int | None = N
     phi = (f"φ = {nt.number(math.degrees(plan.phi_from_start), sig=5)}° ({nt.word('kinematics.phi_from')}),  "
            f"{pr.speed_text(nt)}")
     arr = np.array([[zz.real, zz.imag] for zz in plan.images.values()])
-    best, head = None, (one_line,)
+    best: AL.Arrangement | None = None
+    head: tuple[tuple[str, ...], ...] = (one_line,)
     for heads in _table_heads(one_line):     # the headings on one line, or each unit under its word when narrower
         probe = Table((0.0, 0.0), heads + tuple((image(c.start) + image(c.end), "000,00",     # the values as printed
                                                  f"{symbol(c.symbol)} = {K._num(nt, c.magnitude, 3)}") for c in comps),
