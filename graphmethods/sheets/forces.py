@@ -262,7 +262,7 @@ def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.
     ``L.margin_mm`` round it."""
     from graphmethods.sheets.force_fit import fit_forces
 
-    if _on_course(page, mu_l, mu_F):
+    if _on_course(page, mu_l, mu_F) or _fills_slide(page, mu_l, mu_F):
         picked: dict[Box, Scale] = {}
 
         def fit(box: Box) -> tuple[Scale, ToMm]:
@@ -283,6 +283,15 @@ def _on_course(page: Any, mu_l: Any, mu_F: Any) -> bool:
     from graphmethods.sheets.engine.lettering import is_course_sheet
 
     return mu_l is None and mu_F is None and page is not None and is_course_sheet(page)
+
+
+def _fills_slide(page: Any, mu_l: Any, mu_F: Any) -> bool:
+    """A force figure drawn on a slide with its scales left to it: μ_l and μ_F fitted together to fill the
+    slide, as on a course sheet (the lever drawn at a fixed 28 mm largest force filled a third of a slide);
+    nothing else of the course sheet's (its working, arms, least arrows) is drawn."""
+    from graphmethods.sheets.engine.lettering import is_slide
+
+    return mu_l is None and mu_F is None and page is not None and is_slide(page)
 
 
 def lettering_pad(page: Any) -> float:

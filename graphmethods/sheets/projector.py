@@ -77,7 +77,9 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
         with slide_lettered(page):
             return make(page)
 
-    reference = build_on(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+    # the slide at 1 : 1 in the figure's own lettering (its error, if any, is the answer): its smallest text
+    # says how much enlargement the projector needs, its μ how large the construction is drawn
+    reference = make(SLIDE_PAGE)
     drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
 
     def holds(bu: BuildUp, z: float) -> bool:
@@ -109,7 +111,9 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
             best, hi = found, mid - 1
         else:
             lo = mid + 1
-    return _on_slide(best if best is not None else reference)
+    if best is None:                                    # too dense to enlarge: at 1 : 1, lettered
+        best = build_on(SLIDE_PAGE) if lettered else reference
+    return _on_slide(best)
 
 
 @contextmanager
