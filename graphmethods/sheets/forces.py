@@ -460,6 +460,20 @@ def _group_plan(j: int, pl: Any, pts: np.ndarray, i: int, at: ToMm, nt: Notation
     return els, labels
 
 
+def _plan_caption(cap: str, cell: tuple[float, float, float], drawn: Sequence[Element], L: ForceFigureLayout,
+                  name: str) -> Text:
+    """A plan's caption above its cell (left, top, width): at the left, else at the right, else higher, the first
+    that no line of the plan crosses (a reaction's line of action runs ``L.overhang_mm`` beyond the cell: the
+    engine's group RRP (2, 3) was struck through by R₀₃'s)."""
+    left, top, width = cell
+    ink = Occupancy(pad_mm=0.3)
+    ink.register(*drawn)
+    spots = ((left, top - L.caption_rise_mm, "start"), (left + width, top - L.caption_rise_mm, "end"),
+             (left, top - L.caption_rise_mm - L.overhang_mm, "start"))
+    texts = [Text((x, y), cap, size_mm=TEXT_MM, anchor=a, name=name) for x, y, a in spots]
+    return next((t for t in texts if ink.is_free(t.bbox(), lines=True)), texts[0])
+
+
 def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                 gravity: bool = False, mu_F: Any = None, notation: Any = "en", page: Any = None,
                 title: str | None = None, title_block: bool = True, name: str = "force-plans") -> Scene:
@@ -498,8 +512,8 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
         top = area[1] + (j // cols) * (ph + L.row_gap_mm)
         cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
                else nt.word("forces.group", g=pl.group))
-        els.append(Text((left, top - L.caption_rise_mm), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
         drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, top, pw, ph), s_F), nt, sheet.occ, L)
+        els.append(_plan_caption(cap, (left, top, pw), drawn, L, f"caption-{j}"))
         els += drawn
         labels += wanted
     els += _labels(sheet.occ, labels, L.within(area))
