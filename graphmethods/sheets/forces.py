@@ -25,7 +25,7 @@ import cmath
 import math
 import re
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, TypeVar
 
 import numpy as np
@@ -37,6 +37,7 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
+from graphmethods.scene.steps import wrap
 from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
@@ -140,6 +141,9 @@ class ForceFigureLayout:
     reach_mm: float = 4.0           # labels may leave the drawing area by this much
     reach_top_mm: float = 4.0       # ... and upward by this much
     text_pitch_mm: float = 6.0      # line pitch of the text column
+    text_mm: float = TEXT_MM        # the text column's size
+    column_share: float | None = None   # the column's texts wrapped to this share of the width (None: as they are)
+    paragraph_mm: float = 0.0       # more between two wrapped statements than between their lines
     head_mm: float = 2.5            # arrowheads
     min_mm: float = 0.3             # a shorter vector is not drawn
     largest_force_mm: float = 30.0  # the largest force's length (lever, scheme)
@@ -202,9 +206,14 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
     InputError
         When the drawing fits neither (a given scale too small): the error of the column beside it.
     """
-    split, beside = _split(sheet, max(markup.text_width_mm(t, TEXT_MM) for t in texts), L)
     x0, _, x1, _ = sheet.box
-    above = (x0 + L.left_mm, sheet.top + 2.0 + len(texts) * L.text_pitch_mm + L.reach_top_mm, x1 - L.left_mm,
+    names = [f"text-{k}" for k in range(len(texts))]
+    if L.column_share is not None:                      # a slide's statements wrapped into a column
+        pairs = [(nm, line) for nm, t in zip(names, texts) for line in wrap(t, L.text_mm, L.column_share * (x1 - x0))]
+        names, texts = [nm for nm, _ in pairs], [line for _, line in pairs]
+    split, beside = _split(sheet, max(markup.text_width_mm(t, L.text_mm) for t in texts), L)
+    tall = _column(texts, 0.0, 0.0, L, names=names)[-1].at[1] + L.text_pitch_mm   # n pitches (and paragraphs)
+    above = (x0 + L.left_mm, sheet.top + 2.0 + tall + L.reach_top_mm, x1 - L.left_mm,
              sheet.caption_y - L.bottom_mm)
     options: list[tuple[float, int, Box, tuple[float, float], Scale, ToMm]] = []
     error: InputError | None = None
@@ -221,13 +230,21 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
     if not options:
         raise error or InputError("the figure's texts leave no room for its drawing on this page; give a larger page")
     _, _, area, (tx, ty), s_l, at = min(options, key=lambda o: (o[0], o[1]))
-    return area, _column(texts, tx, ty, L), s_l, at
+    return area, _column(texts, tx, ty, L, names=names), s_l, at
 
 
-def _column(texts: Sequence[str], x: float, y: float, L: ForceFigureLayout, prefix: str = "text") -> list[Element]:
-    """Lines of text one under the other from (x, y), named ``prefix-0``, ``prefix-1``, …"""
-    return [Text((x, y + t_i * L.text_pitch_mm), t, size_mm=TEXT_MM, name=f"{prefix}-{t_i}")
-            for t_i, t in enumerate(texts)]
+def _column(texts: Sequence[str], x: float, y: float, L: ForceFigureLayout, prefix: str = "text",
+            names: Sequence[str] | None = None) -> list[Element]:
+    """Lines of text one under the other from (x, y), named ``prefix-0``, ``prefix-1``, … (or ``names``: the
+    lines of one wrapped statement share its name)."""
+    if names is None:
+        return [Text((x, y + t_i * L.text_pitch_mm), t, size_mm=L.text_mm, name=f"{prefix}-{t_i}")
+                for t_i, t in enumerate(texts)]
+    out: list[Element] = []
+    for t_i, t in enumerate(texts):                     # wrapped statements: a paragraph's gap between two
+        y += 0.0 if t_i == 0 else L.text_pitch_mm + (L.paragraph_mm if names[t_i] != names[t_i - 1] else 0.0)
+        out.append(Text((x, y), t, size_mm=L.text_mm, name=names[t_i]))
+    return out
 
 
 def _finish(sheet: Sheet, els: list[Element], scales: tuple[Scale, ...], legend: str, name: str) -> Scene:
@@ -292,6 +309,24 @@ def _fills_slide(page: Any, mu_l: Any, mu_F: Any) -> bool:
     from graphmethods.sheets.engine.lettering import is_slide
 
     return mu_l is None and mu_F is None and page is not None and is_slide(page)
+
+
+def slide_column(L: ForceFigureLayout, page: Any) -> ForceFigureLayout:
+    """``L`` with its text column lettered as a slide's values (5 mm once the slide's design page is enlarged):
+    the lever's statements at 3.2 mm filled two of a slide's eight rows and left its lower right empty.
+
+    >>> from graphmethods.sheets.projector import design_slide
+    >>> round(slide_column(LEVER_LAYOUT, design_slide(1.25)).text_mm, 3)
+    4.0
+    """
+    from graphmethods.sheets.engine.lettering import lettering
+
+    size = lettering("SLIDE").value_mm / float(getattr(page, "enlarged", 1.0))
+    return replace(L, text_mm=size, text_pitch_mm=1.5 * size, paragraph_mm=1.0 * size, column_share=SLIDE_COLUMN_SHARE)
+
+
+#: the share of a slide's width its lever statements are wrapped to (the lever keeps the rest)
+SLIDE_COLUMN_SHARE = 0.4
 
 
 def lettering_pad(page: Any) -> float:
@@ -547,7 +582,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     """
     from graphmethods.scene import Point
 
-    L = layout or LEVER_LAYOUT
+    L = slide_column(layout or LEVER_LAYOUT, page) if _fills_slide(page, mu_l, mu_F) else layout or LEVER_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever
