@@ -144,6 +144,7 @@ class ForceFigureLayout:
     text_mm: float = TEXT_MM        # the text column's size
     column_share: float | None = None   # the column's texts wrapped to this share of the width (None: as they are)
     paragraph_mm: float = 0.0       # more between two wrapped statements than between their lines
+    fitted: bool = False            # μ_l and μ_F fitted together to fill the area (a course sheet's always are)
     head_mm: float = 2.5            # arrowheads
     min_mm: float = 0.3             # a shorter vector is not drawn
     largest_force_mm: float = 30.0  # the largest force's length (lever, scheme)
@@ -279,7 +280,7 @@ def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.
     ``L.margin_mm`` round it."""
     from graphmethods.sheets.force_fit import fit_forces
 
-    if _on_course(page, mu_l, mu_F) or _fills_slide(page, mu_l, mu_F):
+    if _on_course(page, mu_l, mu_F) or (L.fitted and mu_l is None and mu_F is None):
         picked: dict[Box, Scale] = {}
 
         def fit(box: Box) -> tuple[Scale, ToMm]:
@@ -303,9 +304,9 @@ def _on_course(page: Any, mu_l: Any, mu_F: Any) -> bool:
 
 
 def _fills_slide(page: Any, mu_l: Any, mu_F: Any) -> bool:
-    """A force figure drawn on a slide with its scales left to it: μ_l and μ_F fitted together to fill the
-    slide, as on a course sheet (the lever drawn at a fixed 28 mm largest force filled a third of a slide);
-    nothing else of the course sheet's (its working, arms, least arrows) is drawn."""
+    """A force figure drawn on a slide with its scales left to it: the lever takes :func:`slide_column`, its μ_l
+    and μ_F fitted together to fill the slide, as on a course sheet (drawn at a fixed 28 mm largest force it
+    filled a third of a slide); nothing else of the course sheet's (its working, arms, least arrows) is drawn."""
     from graphmethods.sheets.engine.lettering import is_slide
 
     return mu_l is None and mu_F is None and page is not None and is_slide(page)
@@ -322,7 +323,7 @@ def slide_column(L: ForceFigureLayout, page: Any) -> ForceFigureLayout:
     from graphmethods.sheets.engine.lettering import lettering
 
     size = lettering("SLIDE").value_mm / float(getattr(page, "enlarged", 1.0))
-    return replace(L, text_mm=size, text_pitch_mm=1.5 * size, paragraph_mm=1.0 * size, column_share=SLIDE_COLUMN_SHARE)
+    return replace(L, text_mm=size, text_pitch_mm=1.5 * size, paragraph_mm=1.0 * size, column_share=SLIDE_COLUMN_SHARE, fitted=True)
 
 
 #: the share of a slide's width its lever statements are wrapped to (the lever keeps the rest)
