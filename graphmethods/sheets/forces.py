@@ -25,7 +25,7 @@ import cmath
 import math
 import re
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any, TypeVar
 
 import numpy as np
@@ -37,10 +37,10 @@ from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
-from graphmethods.scene.steps import wrap
 from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
+from graphmethods.sheets.force_slides import column_texts as _column, fills_slide, plan_caption, slide_column, wrapped
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -141,10 +141,10 @@ class ForceFigureLayout:
     reach_mm: float = 4.0           # labels may leave the drawing area by this much
     reach_top_mm: float = 4.0       # ... and upward by this much
     text_pitch_mm: float = 6.0      # line pitch of the text column
-    text_mm: float = TEXT_MM        # the text column's size
-    column_share: float | None = None   # the column's texts wrapped to this share of the width (None: as they are)
-    paragraph_mm: float = 0.0       # more between two wrapped statements than between their lines
-    fitted: bool = False            # μ_l and μ_F fitted together to fill the area (a course sheet's always are)
+    text_mm: float = TEXT_MM        # the text column's size, and on a slide (force_slides.slide_column) its
+    column_share: float | None = None   # statements wrapped to this share of the width, this much more between
+    paragraph_mm: float = 0.0       # two of them, and the scales fitted together as on a course sheet
+    fitted: bool = False
     head_mm: float = 2.5            # arrowheads
     min_mm: float = 0.3             # a shorter vector is not drawn
     largest_force_mm: float = 30.0  # the largest force's length (lever, scheme)
@@ -208,14 +208,10 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
         When the drawing fits neither (a given scale too small): the error of the column beside it.
     """
     x0, _, x1, _ = sheet.box
-    names = [f"text-{k}" for k in range(len(texts))]
-    if L.column_share is not None:                      # a slide's statements wrapped into a column
-        pairs = [(nm, line) for nm, t in zip(names, texts) for line in wrap(t, L.text_mm, L.column_share * (x1 - x0))]
-        names, texts = [nm for nm, _ in pairs], [line for _, line in pairs]
+    names, texts = wrapped(texts, L, x1 - x0)
     split, beside = _split(sheet, max(markup.text_width_mm(t, L.text_mm) for t in texts), L)
-    tall = _column(texts, 0.0, 0.0, L, names=names)[-1].at[1] + L.text_pitch_mm   # n pitches (and paragraphs)
-    above = (x0 + L.left_mm, sheet.top + 2.0 + tall + L.reach_top_mm, x1 - L.left_mm,
-             sheet.caption_y - L.bottom_mm)
+    tall = _column(texts, 0.0, 0.0, L, names=names)[-1].at[1] + L.text_pitch_mm + L.reach_top_mm   # n pitches
+    above = (x0 + L.left_mm, sheet.top + 2.0 + tall, x1 - L.left_mm, sheet.caption_y - L.bottom_mm)
     options: list[tuple[float, int, Box, tuple[float, float], Scale, ToMm]] = []
     error: InputError | None = None
     for n_o, (area, corner) in enumerate(((beside, (split + 2.0, sheet.top + 2.0)),
@@ -231,21 +227,7 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
     if not options:
         raise error or InputError("the figure's texts leave no room for its drawing on this page; give a larger page")
     _, _, area, (tx, ty), s_l, at = min(options, key=lambda o: (o[0], o[1]))
-    return area, _column(texts, tx, ty, L, names=names), s_l, at
-
-
-def _column(texts: Sequence[str], x: float, y: float, L: ForceFigureLayout, prefix: str = "text",
-            names: Sequence[str] | None = None) -> list[Element]:
-    """Lines of text one under the other from (x, y), named ``prefix-0``, ``prefix-1``, … (or ``names``: the
-    lines of one wrapped statement share its name)."""
-    if names is None:
-        return [Text((x, y + t_i * L.text_pitch_mm), t, size_mm=L.text_mm, name=f"{prefix}-{t_i}")
-                for t_i, t in enumerate(texts)]
-    out: list[Element] = []
-    for t_i, t in enumerate(texts):                     # wrapped statements: a paragraph's gap between two
-        y += 0.0 if t_i == 0 else L.text_pitch_mm + (L.paragraph_mm if names[t_i] != names[t_i - 1] else 0.0)
-        out.append(Text((x, y), t, size_mm=L.text_mm, name=names[t_i]))
-    return out
+    return area, list[Element](_column(texts, tx, ty, L, names=names)), s_l, at
 
 
 def _finish(sheet: Sheet, els: list[Element], scales: tuple[Scale, ...], legend: str, name: str) -> Scene:
@@ -301,33 +283,6 @@ def _on_course(page: Any, mu_l: Any, mu_F: Any) -> bool:
     from graphmethods.sheets.engine.lettering import is_course_sheet
 
     return mu_l is None and mu_F is None and page is not None and is_course_sheet(page)
-
-
-def _fills_slide(page: Any, mu_l: Any, mu_F: Any) -> bool:
-    """A force figure drawn on a slide with its scales left to it: the lever takes :func:`slide_column`, its μ_l
-    and μ_F fitted together to fill the slide, as on a course sheet (drawn at a fixed 28 mm largest force it
-    filled a third of a slide); nothing else of the course sheet's (its working, arms, least arrows) is drawn."""
-    from graphmethods.sheets.engine.lettering import is_slide
-
-    return mu_l is None and mu_F is None and page is not None and is_slide(page)
-
-
-def slide_column(L: ForceFigureLayout, page: Any) -> ForceFigureLayout:
-    """``L`` with its text column lettered as a slide's values (5 mm once the slide's design page is enlarged):
-    the lever's statements at 3.2 mm filled two of a slide's eight rows and left its lower right empty.
-
-    >>> from graphmethods.sheets.projector import design_slide
-    >>> round(slide_column(LEVER_LAYOUT, design_slide(1.25)).text_mm, 3)
-    4.0
-    """
-    from graphmethods.sheets.engine.lettering import lettering
-
-    size = lettering("SLIDE").value_mm / float(getattr(page, "enlarged", 1.0))
-    return replace(L, text_mm=size, text_pitch_mm=1.5 * size, paragraph_mm=1.0 * size, column_share=SLIDE_COLUMN_SHARE, fitted=True)
-
-
-#: the share of a slide's width its lever statements are wrapped to (the lever keeps the rest)
-SLIDE_COLUMN_SHARE = 0.4
 
 
 def lettering_pad(page: Any) -> float:
@@ -496,20 +451,6 @@ def _group_plan(j: int, pl: Any, pts: np.ndarray, i: int, at: ToMm, nt: Notation
     return els, labels
 
 
-def _plan_caption(cap: str, cell: tuple[float, float, float], drawn: Sequence[Element], L: ForceFigureLayout,
-                  name: str) -> Text:
-    """A plan's caption above its cell (left, top, width): at the left, else at the right, else higher, the first
-    that no line of the plan crosses (a reaction's line of action runs ``L.overhang_mm`` beyond the cell: the
-    engine's group RRP (2, 3) was struck through by R₀₃'s)."""
-    left, top, width = cell
-    ink = Occupancy(pad_mm=0.3)
-    ink.register(*drawn)
-    spots = ((left, top - L.caption_rise_mm, "start"), (left + width, top - L.caption_rise_mm, "end"),
-             (left, top - L.caption_rise_mm - L.overhang_mm, "start"))
-    texts = [Text((x, y), cap, size_mm=TEXT_MM, anchor=a, name=name) for x, y, a in spots]
-    return next((t for t in texts if ink.is_free(t.bbox(), lines=True)), texts[0])
-
-
 def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None = None, m: int = 12,
                 gravity: bool = False, mu_F: Any = None, notation: Any = "en", page: Any = None,
                 title: str | None = None, title_block: bool = True, name: str = "force-plans") -> Scene:
@@ -549,7 +490,7 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
         cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
                else nt.word("forces.group", g=pl.group))
         drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, top, pw, ph), s_F), nt, sheet.occ, L)
-        els.append(_plan_caption(cap, (left, top, pw), drawn, L, f"caption-{j}"))
+        els.append(plan_caption(cap, (left, top, pw), drawn, L, f"caption-{j}"))
         els += drawn
         labels += wanted
     els += _labels(sheet.occ, labels, L.within(area))
@@ -583,7 +524,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     """
     from graphmethods.scene import Point
 
-    L = slide_column(layout or LEVER_LAYOUT, page) if _fills_slide(page, mu_l, mu_F) else layout or LEVER_LAYOUT
+    L = slide_column(layout or LEVER_LAYOUT, page) if fills_slide(page, mu_l, mu_F) else layout or LEVER_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever

@@ -516,7 +516,7 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     facts = _scheme_facts(g.pos, g.ext, nt)
     column = slide_facts(facts + _link_lengths(g, nt), sheet, page)   # a slide's column right of the drawing
     s_l, f = _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay,
-                           right=min((e.bbox()[0] for e in column), default=None))
+                           right=min((e.at[0] - SLIDE_FACTS_GAP_MM for e in column), default=None))
 
     def P(xy) -> tuple[float, float]:
         return f.pt(xy[0], xy[1])
@@ -553,9 +553,9 @@ SLIDE_FACTS_SHARE, SLIDE_FACTS_GAP_MM = 0.28, 8.0
 
 
 def slide_facts(facts: Sequence[str], sheet: Sheet, page: Any) -> list[Text]:
-    """On a slide, the scheme's facts (extreme positions, θ, K, the swing, the lengths) as a column at the right, lettered
-    as the slide's values (5 mm once enlarged) and wrapped to :data:`SLIDE_FACTS_SHARE` of the width, one
-    paragraph each, all named ``summary``; elsewhere none (the sheet writes them in a line over its captions).
+    """On a slide, the scheme's facts (extreme positions, θ, K, the swing, the lengths) as a column at the right,
+    lettered as the slide's values (5 mm once enlarged) and wrapped to :data:`SLIDE_FACTS_SHARE` of the width,
+    one paragraph each, all named ``summary``; elsewhere none (the sheet writes them in a line over its captions).
     A tall linkage (the shaper, a two-slider) filled a third of a slide's width with its facts in one 3 mm line
     under it."""
     from graphmethods.scene.markup import text_width_mm
