@@ -374,8 +374,16 @@ def _lever_names(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[s
         if point is not None and text == "p":
             continue
         q = _at(p_page, np.zeros(2)) if point is None else _at(p_page, img[point])
-        lab = occ.place_label(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=within)
+        lab = occ.first_free(q, text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), (1.0, 3.0, 5.5), TEXT_MM + 0.5,
+                             within)
+        leader = None
+        if lab is None:                         # nothing free beside it (a slide's 5 mm names): off, with a leader
+            lab, leader = occ.place_label_with_leader(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=within)
+        else:
+            occ.add_label(lab)
         labels.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"name-{text}"))
+        if leader is not None:
+            labels.append(Line(leader[0], leader[1], style=THIN, name=f"name-{text}-leader"))
     lab, leader = occ.place_label_with_leader(force.mid, F_text, ("n", "s", "ne", "se", "nw", "sw", "e", "w"),
                                               size_mm=TEXT_MM, gap_mm=1.5, within=within)
     labels.append(Text((lab.x, lab.y), F_text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-F"))
