@@ -215,3 +215,26 @@ def test_plan_grid_cells_as_wide_as_their_plans():
         assert sx / 0.01 <= inner[2] - inner[0] + 1e-6 and sy / 0.01 <= inner[3] - inner[1] + 1e-6
     equal = _plan_grid(_Region(), spans, np.ones(12, dtype=bool), 4, PLAN_GRID_LAYOUT)
     assert not equal.shares and equal.need > 0.011
+
+
+# ----------------------------------------------------------------------------- found afresh
+
+def test_dynamic_sheet_states_each_scale_once():
+    """The dynamic sheet wrote μ_φ, μ_M, μ_T, μ_J in its result table and again on a captions line."""
+    from graphmethods.dynamics.study import Study
+    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
+
+    scene = dynamic_analysis_sheet(Study(builtin.case("shaper"), positions=12), notation="ru")
+    texts = _element_texts(scene)
+    assert not [e for e in scene.elements if e.name == "scale-captions"]
+    for s in scene.scales():
+        symbol = markup.plain(s.symbol)
+        assert len([t for t in texts if t.startswith(symbol + " = ")]) == 1, symbol
+
+
+def test_russian_slider_diagrams_write_v_as_the_plans_do():
+    """The Russian kinematic sheet wrote V_C and μ_V in the slider's diagrams, v and μ_v in its plans and tables."""
+    scene = kinematic_diagrams(builtin.case("shaper"), notation="ru", title_block=False)
+    texts = _element_texts(scene)
+    assert any(t.startswith("μv = μS/(μt·H1)") for t in texts) and any(t.startswith("vC, м/с") for t in texts)
+    assert not [t for t in texts if "μV" in t or re.search(r"\bVC\b", t)]
