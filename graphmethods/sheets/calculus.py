@@ -507,7 +507,7 @@ def _kinematic_scales(mech: Any, sheet: Sheet, nt: Notation, *, m: int, omega_1:
             raise InputError(f"{key} = {H:g} mm leaves no room for the pole left of its diagram "
                              f"({L.pole_room_mm:g} mm); give a smaller {key}_mm or none")
     u_v, u_a = sd.units
-    s_v = Scale(nt.sym("calculus.mu_v"), _scale_unit(nt, u_v), sd.v.mu)
+    s_v = Scale(nt.sym("dynamics.mu_v"), _scale_unit(nt, u_v), sd.v.mu)
     s_a = Scale(nt.sym("calculus.mu_a"), _scale_unit(nt, u_a), sd.a.mu)
     s_t = Scale(nt.sym("calculus.mu_t"), nt.unit("s"), sd.mu_t) if sd.mu_t is not None else None
     return _KinematicScales(s_phi, s_s, s_v, s_a, s_t, sd, motion, gx0, top, band_h, right_col)

@@ -554,4 +554,4 @@ def _extra_rows(nt, dm, s_M: Scale, s_phi: Scale) -> tuple:
     k = dm.constant_key
     return ((nt.word(f"wittenbauer.{k}"), f"{nt.sym(k)} = {value_text(nt, dm.constant, 'N·m')}"),
             (nt.word("wittenbauer.scale_M"), f"{nt.sym('mu_M')} = {n(s_M.per_mm)} {nt.unit('N·m')}/{mm}"),
-            (nt.word("wittenbauer.scale_phi"), f"{nt.sym('mu_phi')} = {n(s_phi.per_mm)} {nt.unit('rad')}/{mm}"))
+            (nt.word("wittenbauer.scale_phi"), s_phi.caption(nt)))      # as captioned: rad/mm (°/mm)

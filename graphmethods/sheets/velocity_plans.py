@@ -219,7 +219,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     >>> from graphmethods.kinematics import SliderCrank
     >>> s = velocity_plan_grid(SliderCrank(r=0.1, l=0.4, points={"S2": ("AB", 0.13)}), omega_1=10.0)
     >>> s.scales()[0].caption(), s.element("plan-3-vector-pa").known
-    ('μ_v = 0.04 (m/s)/mm', True)
+    ('μ_v = 0.025 (m/s)/mm', True)
     """
     lk, plans, pos, drawn = _plans_of(linkage, m=m, omega_1=omega_1)
     nt = get_notation(notation)

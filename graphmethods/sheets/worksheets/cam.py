@@ -358,7 +358,7 @@ def _positions_table(sh: Sheet, v: CamVariant, nt: Notation) -> None:
     s = v.answers()["s_mm"]
     ks = ["k"] + [str(k) for k in range(len(v.positions_deg))]
     phis = [nt.quantity("φ_{k}", "°")] + [nt.number(a) for a in v.positions_deg]
-    full = [nt.quantity(f"{nt.sym('cam.s')}_{{k}}", "mm")] + [nt.number(x, sig=3) for x in s]
+    full = [nt.quantity(f"{nt.sym('calculus.s')}_{{k}}", "mm")] + [nt.number(x, sig=3) for x in s]
     shown = full if sh.key else [full[0]] + [""] * len(s)
     sh.table((ks, phis, shown), value_rows=(2,), name="positions", width_rows=(ks, phis, full), size=2.8,
              row_mm=5.6, value_row_mm=7.0)
@@ -375,7 +375,7 @@ def _answers(v: CamVariant, nt: Notation) -> tuple[list[str], list[str], list[st
     heads += [f"{al}_{{max}}, {nt.word('camcheck.rise')}, °", f"{al}_{{max}}, {nt.word('camcheck.return')}, °"]
     vals += [nt.number(a["alpha_max_rise_deg"], sig=3), nt.number(a["alpha_max_return_deg"], sig=3)]
     s0 = math.sqrt(cam.pitch_base_radius ** 2 - p.offset ** 2)
-    r0, s_, ds = nt.sym("cam.r_0"), nt.sym("cam.s"), nt.sym("cam.ds")     # S and dS/dφ in Russian, as the diagram
+    r0, s_, ds = nt.sym("cam.r_0"), nt.sym("calculus.s"), nt.sym("cam.ds")     # S and dS/dφ in Russian, as the diagram
     lines = [f"{s_}_{{0}} = max(|{ds} − e|/tan[{al}] − {s_}) = {nt.number(s0 * 1000, sig=4)} {nt.unit('mm')}; "
              f"{r0} = √({s_}_{{0}}² + e²) = {nt.number(cam.pitch_base_radius * 1000, sig=4)} {nt.unit('mm')}"]
     if v.contact == "roller":
