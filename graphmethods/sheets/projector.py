@@ -11,6 +11,8 @@ from collections.abc import Callable
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
+from graphmethods.scene.markup import MIN_TEXT_MM
+from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.scene.steps import PROJECTOR_TEXT, BuildUp, DesignPage, enlarge
 
 #: the gap between the figure's page and the caption box, mm
@@ -43,7 +45,7 @@ def smallest_text_mm(bu: BuildUp) -> float:
     return min(sizes + [bu.caption_mm])
 
 
-def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
+def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) -> BuildUp:
     """Steps on a 16:9 slide with text sized for a projector.
 
     The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
@@ -61,7 +63,16 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
         Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
     """
     bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
-    reference = make(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+    def made(page: Page) -> BuildUp:
+        if not lettered:
+            return make(page)
+        token = MIN_TEXT_MM.set(lettering("slide").minimum_mm / float(getattr(page, "enlarged", 1.0)))
+        try:
+            return make(page)
+        finally:
+            MIN_TEXT_MM.reset(token)
+
+    reference = made(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
     drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
 
     def holds(bu: BuildUp, z: float) -> bool:
@@ -75,7 +86,7 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
 
     def attempt(z: float) -> BuildUp | None:
         try:
-            bu = make(design_slide(z))
+            bu = made(design_slide(z))
         except InputError:
             return None
         return bu if holds(bu, z) else None

@@ -426,8 +426,8 @@ def _acceleration_intersection_rules(tx: _AccelerationText, j: int, st_: Any) ->
 def slide_step_mm(n: int, page: Page) -> float | None:
     """The step between the energy indicator's ``n`` vectors on a slide (None on paper: the figure's own).
 
-    A slide is wide: the vectors spread over it (22 mm apart, the A4 figure's most, filled a third of it for a
-    cycle of three intervals), up to three times that.
+    A slide is wide: the vectors spread over its whole width (22 mm apart, the A4 figure's most, filled a third
+    of it for a cycle of three intervals; three times that still left half its cells empty).
 
     >>> from graphmethods.sheets.projector import SLIDE_PAGE
     >>> slide_step_mm(3, SLIDE_PAGE) > 22.0, slide_step_mm(3, Page("A4", "landscape"))
@@ -440,7 +440,7 @@ def slide_step_mm(n: int, page: Page) -> float | None:
     L = E_.INDICATOR_LAYOUT
     x0, _, x1, _ = page.inner_box()
     room = x1 - L.right_room_mm - (x0 + L.axis_mm + L.first_mm)
-    return max(L.step_min_mm, min(3.0 * L.step_max_mm, room / max(n - 1, 1)))
+    return max(L.step_min_mm, room / max(n - 1, 1))
 
 
 def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, work_unit: str = "J") -> BuildUp:
@@ -733,5 +733,5 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             def make(pg):
                 return fn(obj, notation=notation, page=pg)
     if isinstance(page, str) and page.strip().lower() == "slide":
-        return for_projector(make)
+        return for_projector(make, lettered=needs != "linkage")
     return make(page)
