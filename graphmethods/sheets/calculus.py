@@ -330,11 +330,16 @@ def _wrap(text: str, width_mm: float, size_mm: float) -> list[str]:
     return lines + ([cur.rstrip()] if cur.strip() else [])
 
 
+def _title_pitch() -> float:
+    """The line pitch of a table's wrapped title, mm: wider when the sheet letters it up (a slide, A1)."""
+    return max(TABLE_MM * 1.35, lettered_size(TABLE_MM + 0.2) * 1.25)
+
+
 def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) -> list:
     """A table with its title above it, wrapped to the table's width."""
     lines = _wrap(title, table.width_mm, TABLE_MM + 0.2)
     n = len(lines)
-    return [Text((table.at[0], table.at[1] - 2.0 - (n - 1 - k) * TABLE_MM * 1.35), t, size_mm=TABLE_MM + 0.2,
+    return [Text((table.at[0], table.at[1] - 2.0 - (n - 1 - k) * _title_pitch()), t, size_mm=TABLE_MM + 0.2,
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
@@ -344,7 +349,7 @@ def _column_table(rows: Rows, title: str, *, align: str, name: str, title_name: 
     title would cover the notes above it (``under``: on a short strip, a slide)."""
     table = _table(rows, align=align, name=name, right=right, bottom=bottom)
     n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
-    title_top = table.at[1] - 2.0 - (n - 1) * TABLE_MM * 1.35 - ASCENT * (TABLE_MM + 0.2)
+    title_top = table.at[1] - 2.0 - (n - 1) * _title_pitch() - ASCENT * lettered_size(TABLE_MM + 0.2)
     clear = max((t.at[1] + (DESCENT + markup.SUB_SHIFT) * t.size_mm for t in under if isinstance(t, Text)),
                 default=-math.inf)
     if title_top < clear + 1.5:
@@ -650,8 +655,11 @@ def _curve_names(occ: Occupancy, pairs: Iterable[tuple[Polyline, str, float]], b
         on_axis = abs(pts[-1][1] - axis_y) < 1.0          # a curve ending on the φ axis: name it along its way
         spots = along + end if on_axis else end + along
         lab = None
-        for at, dirs in spots:
-            lab = occ.first_free(at, text, dirs, (1.5, 3.0), TEXT_MM + 0.3, None)
+        for gaps in ((1.5, 3.0), (4.5, 6.5)):           # close to the curve, else a little further off
+            for at, dirs in spots:
+                lab = occ.first_free(at, text, dirs, gaps, TEXT_MM + 0.3, None)
+                if lab is not None:
+                    break
             if lab is not None:
                 break
         if lab is None:
