@@ -330,32 +330,36 @@ def _wrap(text: str, width_mm: float, size_mm: float) -> list[str]:
     return lines + ([cur.rstrip()] if cur.strip() else [])
 
 
-def _title_pitch() -> float:
-    """The line pitch of a table's wrapped title, mm: wider when the sheet letters it up (a slide, A1)."""
-    return max(TABLE_MM * 1.35, lettered_size(TABLE_MM + 0.2) * 1.25)
+def _title_pitch(lettered: bool = False) -> float:
+    """The line pitch of a table's wrapped title, mm; ``lettered``: as the page letters its text (a slide: a title
+    set at 3.5 mm with a subscript needs more than the paper figure's 3.9 mm)."""
+    return max(TABLE_MM * 1.35, lettered_size(TABLE_MM + 0.2) * 1.25) if lettered else TABLE_MM * 1.35
 
 
-def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) -> list:
+def _titled_table(table: Table, title: str, name: str, *, bold: bool = False, lettered: bool = False) -> list:
     """A table with its title above it, wrapped to the table's width."""
     lines = _wrap(title, table.width_mm, TABLE_MM + 0.2)
     n = len(lines)
-    return [Text((table.at[0], table.at[1] - 2.0 - (n - 1 - k) * _title_pitch()), t, size_mm=TABLE_MM + 0.2,
+    pitch = _title_pitch(lettered)
+    return [Text((table.at[0], table.at[1] - 2.0 - (n - 1 - k) * pitch), t, size_mm=TABLE_MM + 0.2,
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
 def _column_table(rows: Rows, title: str, *, align: str, name: str, title_name: str, right: float, bottom: float,
-                  under: Sequence[Element], floor: float) -> list[Element]:
+                  under: Sequence[Element], floor: float, lettered: bool = False) -> list[Element]:
     """The right column's table with its title, its bottom at ``bottom``, or lower (down to ``floor``) when its
-    title would cover the notes above it (``under``: on a short strip, a slide)."""
+    title would cover the notes above it (``under``: on a short strip, a slide); ``lettered``: the title's lines
+    spaced for the page's lettering (:func:`_title_pitch`)."""
     table = _table(rows, align=align, name=name, right=right, bottom=bottom)
     n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
-    title_top = table.at[1] - 2.0 - (n - 1) * _title_pitch() - ASCENT * lettered_size(TABLE_MM + 0.2)
+    title_top = (table.at[1] - 2.0 - (n - 1) * _title_pitch(lettered)
+                 - ASCENT * (lettered_size(TABLE_MM + 0.2) if lettered else TABLE_MM + 0.2))
     clear = max((t.at[1] + (DESCENT + markup.SUB_SHIFT) * t.size_mm for t in under if isinstance(t, Text)),
                 default=-math.inf)
     if title_top < clear + 1.5:
         down = min(clear + 1.5 - title_top, max(0.0, floor - bottom))
         table = replace(table, at=(table.at[0], table.at[1] + down))
-    return [*_titled_table(table, title, title_name), table]
+    return [*_titled_table(table, title, title_name, lettered=lettered), table]
 
 
 def _fmt(nt: Notation, value: float, sig: int = 3) -> str:

@@ -351,7 +351,7 @@ def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, 
     rows = _accuracy_rows(nt, wd, work_unit, across=ws.across)
     return elements + _column_table(rows, _accuracy_title(nt, study), align="l" + "r" * (len(rows[0]) - 1),
                                     name="accuracy-table", title_name="accuracy-title", right=x1,
-                                    bottom=bands[2].top + ws.strip_mm, under=elements, floor=floor)
+                                    bottom=bands[2].top + ws.strip_mm, under=elements, floor=floor, lettered=ws.across)
 
 
 def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M: Any = None, mu_phi: Any = None,
