@@ -11,10 +11,10 @@ from collections.abc import Callable
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
-from graphmethods.scene.markup import MIN_TEXT_MM
-from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.scene.elements import Text
+from graphmethods.scene.markup import MIN_TEXT_MM
 from graphmethods.scene.steps import PROJECTOR_TEXT, BuildUp, DesignPage, enlarge, enlarge_note
+from graphmethods.sheets.engine.lettering import lettering
 
 #: the gap between the figure's page and the caption box, mm
 CAPTION_GAP_MM = 1.5
@@ -62,6 +62,19 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
     ----------
     make : callable
         Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
+    lettered : bool
+        Build every page tried with the slide's lettering (:func:`~graphmethods.sheets.engine.lettering.
+        lettering`, 3.5 mm): the figure's texts are made at least 3.5/z mm on the design page 1/z of the
+        slide, so none is below 3.5 mm when drawn z : 1, whatever z the layout allows (the dynamics build-ups;
+        their paper lettering of 2.6…2.8 mm drawn 1.0…1.2 : 1 was 2.6…3.4 mm on the slide). False (the
+        default) keeps the behaviour of before: the figure lettered as for paper, only enlarged.
+
+    Examples
+    --------
+    >>> from graphmethods.sheets.steps import energy_indicator_steps, resolve_case
+    >>> bu = for_projector(lambda pg: energy_indicator_steps(resolve_case("W3"), page=pg), lettered=True)
+    >>> smallest_text_mm(bu) * bu.enlarged >= 3.5
+    True
     """
     bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
     def made(page: Page) -> BuildUp:

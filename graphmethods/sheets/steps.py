@@ -601,6 +601,9 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "inversion": (_inversion_steps, "cam"),
 }
 
+#: the build-ups whose slides are lettered for the slide (:func:`~graphmethods.sheets.projector.for_projector`)
+LETTERED = ("energy-indicator", "work-diagrams", "wittenbauer")
+
 #: the figures drawn in one position (``--position K``)
 POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
 
@@ -733,5 +736,5 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             def make(pg):
                 return fn(obj, notation=notation, page=pg)
     if isinstance(page, str) and page.strip().lower() == "slide":
-        return for_projector(make, lettered=needs != "linkage")
+        return for_projector(make, lettered=key in LETTERED)
     return make(page)

@@ -337,15 +337,16 @@ def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, 
     A_hi = float(np.concatenate((wd.A_d.values, wd.A_r.values, [0.0])).max())
     elements: list[Element] = []
     elements += _side_block(rx, bands[0].top + drop, [ws.s_M.caption(nt), ws.s_phi.caption(nt)], "formula-M", occ)
-    elements += _side_block(rx, bands[1].top + drop, [f"{ws.s_A.symbol} = {ws.s_M.symbol}·{nt.sym('mu_phi')}·H = "
-                                                      f"{nt.number(wd.mu_A)} {wu}/{mm}",
-                                                      f"H = {nt.number(ws.H)} {mm} ({picked})"], "formula-A", occ)
+    block_A = _side_block(rx, bands[1].top + drop, [f"{ws.s_A.symbol} = {ws.s_M.symbol}·{nt.sym('mu_phi')}·H = "
+                                                    f"{nt.number(wd.mu_A)} {wu}/{mm}",
+                                                    f"H = {nt.number(ws.H)} {mm} ({picked})"], "formula-A", occ)
+    elements += block_A
     closure = f"{A_d}({phi}_{{T}}) − {A_r}({phi}_{{T}}) = " \
               f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {wu} " \
               f"({nt.word('closure')})"
     # on a slide the table (a column per construction) is taller than a strip: the ΔE block follows the A block and
     # the table has the rest of the column under them
-    y_dE = bands[2].top + drop if not ws.across else elements[-1].at[1] + LAYOUT.block_drop_mm + 2 * TEXT_MM
+    y_dE = bands[2].top + drop if not ws.across else block_A[-1].at[1] + LAYOUT.block_drop_mm + 2 * TEXT_MM
     elements += _side_block(rx, y_dE, [f"{nt.sym('dE')} = {A_d} − {A_r};  {ws.s_A.symbol} = "
                                                       f"{nt.number(wd.mu_A)} {wu}/{mm}", closure], "formula-dE", occ)
     rows = _accuracy_rows(nt, wd, work_unit, across=ws.across)
