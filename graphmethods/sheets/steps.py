@@ -521,7 +521,7 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
                            f"label-omega-{key}", f"leader-omega-{key}"))
     rules = [
         (nt.word("steps.axes_JT", J=J, T=T, muJ=s_J.caption(nt), muT=s_T.caption(nt)),
-         ["title", "axis-T", "axis-J", "scale-captions"]),
+         ["title", "axis-T", "axis-J", "axis-J-break", "scale-captions"]),      # the break: J from J_0
         (nt.word("steps.points", m=res.m - 1, J=J, T=T), _starts("vertex-", "pos-", "leader-pos-")),
         (nt.word("steps.curve", J=J, T=T), ["curve"]),
         ray["max"],
