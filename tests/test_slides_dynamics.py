@@ -124,3 +124,21 @@ def test_the_slides_print_the_a1_sheets_and_the_studys_numbers(case, capsys):
     assert f"= {float(js['J_F_wittenbauer']):.4g} kg·m²" in caps
     energy = " ".join(steps.build(case, "energy-indicator", notation="en").captions())
     assert f"= {float(js['delta_W_max']):.4g} J" in energy
+
+
+@pytest.mark.parametrize("case, lang", [("two-slider", "zh"), ("press", "en")])
+def test_a_curves_name_is_not_set_among_the_position_numbers(case, lang):
+    """The two-slider's M_r was named between the φ axis's 6 and 7 ("6 M_r 7"): the row of the position numbers
+    is kept for them."""
+    from graphmethods.scene.elements import label_bbox
+    from graphmethods.sheets.wittenbauer import tick_label_band
+
+    fig = steps.build(case, "work-diagrams", notation=lang).figure
+    for strip in ("M", "A"):
+        x0, y0, x1, y1 = tick_label_band(fig.element(f"axis-phi-{strip}").element)
+        names = [e for e in fig.elements if e.name.startswith(f"name-{strip}-")]
+        assert names
+        for e in names:
+            for lab in e.element.primitives():
+                b = label_bbox(lab)
+                assert not (b[0] < x1 and x0 < b[2] and b[1] < y1 and y0 < b[3]), (strip, lab.text)

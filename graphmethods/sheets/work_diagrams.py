@@ -277,10 +277,21 @@ def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: 
                               name="M", pos="pos-M")
     axes[1] = _labelled_ticks_only(axes[1])
     occ.register(*rays)
+    _keep_values_row(axes[0], occ)
     names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
                            "M")
     rays = _broken_behind(rays, axes[1])
     return b_M, [*axes, *steps, *projections, *rays, curve_d, curve_r, *pole_els, *dim, *names_M, *pos_M]
+
+
+def _keep_values_row(axis: Any, occ: Occupancy) -> None:
+    """Keep the row of the φ axis's position numbers free: a curve's name set between two of them ("6 M_r 7")
+    reads as one of them (:func:`~graphmethods.sheets.wittenbauer.tick_label_band`)."""
+    from graphmethods.sheets.wittenbauer import tick_label_band
+
+    band = tick_label_band(axis)
+    if band is not None:
+        occ.add_box(band)
 
 
 def _labelled_ticks_only(axis: Any) -> Any:
@@ -306,6 +317,7 @@ def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     occ.register(chords_d, chords_r)
     axes, pos_A = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)), m=len(x) - 1,
                               name="A", pos="pos-A")
+    _keep_values_row(axes[0], occ)
     names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]),
                                  (chords_r, nt.sym("calculus.A_r"), b_A.origin[1])), "A")
     return b_A, [*axes, chords_d, chords_r, *dots_A, *names_A, *pos_A]
