@@ -142,3 +142,20 @@ def test_a_curves_name_is_not_set_among_the_position_numbers(case, lang):
             for lab in e.element.primitives():
                 b = label_bbox(lab)
                 assert not (b[0] < x1 and x0 < b[2] and b[1] < y1 and y0 < b[3]), (strip, lab.text)
+
+
+@pytest.mark.parametrize("case", ["two-slider", "press", "scotch-yoke"])
+def test_the_wittenbauer_slides_write_every_value(case):
+    """The two-slider's J_e axis wrote one value of five (0.166: the curve covered the others): on a slide the
+    ticks are spaced wider until every one besides the origin has its value."""
+    fig = steps.build(case, "wittenbauer", notation="en").figure
+    for name in ("axis-J", "axis-T"):
+        ax = fig.element(name).element
+        labels = ax.tick_labels or ()
+        off = [lab for t, lab in zip(ax.ticks, labels) if t != 0 and abs(t - ax.min_value) > 1e-12]
+        assert len(off) >= 2 and all(off), (name, ax.ticks, labels)
+
+
+def test_a_wittenbauer_slides_rays_stop_below_its_title():
+    bu = steps.build("whitworth", "wittenbauer", notation="ru")
+    assert measure(bu.slide(len(bu))).crossed == ()
