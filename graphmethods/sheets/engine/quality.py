@@ -191,6 +191,28 @@ def cell_grid(inner: tuple[float, float, float, float]) -> tuple[float, float, i
     return x0 + ((x1 - x0) - nx * CELL_MM) / 2, y0 + ((y1 - y0) - ny * CELL_MM) / 2, nx, ny
 
 
+def _within_one_cell(seg: np.ndarray, ox: float, oy: float, nx: int, ny: int) -> tuple[np.ndarray, np.ndarray]:
+    """The segments (n × 4, mm) that lie inside one cell of the grid (origin ``ox, oy``, ``nx × ny`` cells of
+    :data:`CELL_MM`) more than :data:`_BUCKET_SLACK_MM` from its edges, and those cells' numbers (``i·ny + j``).
+
+    Such a segment touches its cell and no other (the clipping test cannot say otherwise: every end is inside
+    the one, and the others are farther than the buckets' slack), so :func:`ink_cells` marks it without a test;
+    most of a drawing's segments (arrowheads, hatching, circles, curves) are this short.
+
+    >>> inside, cell = _within_one_cell(np.array([[1.0, 1.0, 5.0, 3.0], [1.0, 1.0, 25.0, 3.0]]), 0.0, 0.0, 3, 2)
+    >>> inside.tolist(), cell.tolist()
+    ([True, False], [0])
+    """
+    e = _BUCKET_SLACK_MM
+    with np.errstate(invalid="ignore"):
+        i0 = np.floor((np.minimum(seg[:, 0], seg[:, 2]) - e - ox) / CELL_MM)
+        i1 = np.floor((np.maximum(seg[:, 0], seg[:, 2]) + e - ox) / CELL_MM)
+        j0 = np.floor((np.minimum(seg[:, 1], seg[:, 3]) - e - oy) / CELL_MM)
+        j1 = np.floor((np.maximum(seg[:, 1], seg[:, 3]) + e - oy) / CELL_MM)
+        inside = (i0 == i1) & (j0 == j1) & (i0 >= 0) & (i0 < nx) & (j0 >= 0) & (j0 < ny)
+    return inside, (i0[inside] * ny + j0[inside]).astype(np.int64)
+
+
 def ink_cells(seg: np.ndarray, boxes: np.ndarray, inner: tuple[float, float, float, float]) -> np.ndarray:
     """Which cells of the grid in ``inner`` (:func:`cell_grid`; bool array, cells across × down) some ink
     touches: a segment of ``seg`` (n × 4, mm) passing through or touching the cell, or a text box of
@@ -208,7 +230,11 @@ def ink_cells(seg: np.ndarray, boxes: np.ndarray, inner: tuple[float, float, flo
     i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
     cells = np.column_stack((ox + i.ravel() * CELL_MM, oy + j.ravel() * CELL_MM,
                              ox + (i.ravel() + 1) * CELL_MM, oy + (j.ravel() + 1) * CELL_MM))
-    used = boxes_crossed(seg, cells, grid_mm=CELL_MM)
+    seg = np.asarray(seg, dtype=float).reshape(-1, 4)
+    inside, cell = _within_one_cell(seg, ox, oy, nx, ny)
+    used = np.zeros(nx * ny, dtype=bool)
+    used[cell] = True
+    used |= boxes_crossed(seg[~inside], cells, grid_mm=CELL_MM)
     boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
     if len(boxes):
         used |= ((cells[:, None, 0] < boxes[None, :, 2]) & (boxes[None, :, 0] < cells[:, None, 2])
