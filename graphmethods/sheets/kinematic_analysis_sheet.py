@@ -202,7 +202,8 @@ PREDICTION_MARGIN = 0.01
 def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], list[Region]]
                ) -> list[tuple[int, int, Division]]:
     """Every division that fits, with the cells its parts are predicted to fill (the probe's parts stretched
-    onto their regions; a part the probe has not, drawn), best first: (−cells, its place, division)."""
+    onto their regions; a part in the probe's own region or one the probe has not, as drawn), best first:
+    (−cells, its place, division)."""
     by_name = {p.name: p for p in probe}
     seen: dict[tuple[str, tuple[float, float, float, float]], np.ndarray] = {}
 
@@ -210,7 +211,7 @@ def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], l
         if (nm, box) not in seen:
             p = by_name.get(nm)
             seen[nm, box] = (p.ink.stretched(p.scene.page.inner_box(), box) if p is not None
-                             else parts.draw(fn, nm, box).ink.cells)
+                             and not parts.drawn(nm, box) else parts.draw(fn, nm, box).ink.cells)
         return seen[nm, box]
 
     guesses: list[tuple[int, int, Division]] = []
@@ -259,6 +260,10 @@ class _Parts:
         self._drawn: dict[tuple[str, tuple[float, ...]], Part | InputError] = {}
         #: whether the slider's diagrams could be drawn (None: not yet tried)
         self.slider: bool | None = None
+
+    def drawn(self, name: str, box: tuple[float, float, float, float]) -> bool:
+        """Has the part ``name`` been drawn (or refused) in ``box``?"""
+        return (name, tuple(float(v) for v in box)) in self._drawn
 
     def draw(self, fn: Callable[..., Scene], name: str, box: tuple[float, float, float, float], **kw: Any) -> Part:
         """``fn`` (a figure function) drawn in ``box`` of the sheet as the part ``name`` (InputError when the
