@@ -194,8 +194,8 @@ def _chosen(parts: _Parts, sheet: Sheet, regions: Callable[[Division], list[Regi
 
 #: a division is drawn beside the probe only when predicted to fill more of the sheet's cells than the probe
 #: by more than this share of them (1 %, about 11 cells on A1): the stretched prediction is no surer (a part
-#: drawn in another region picks another scale from the series and places its labels anew); divisions
-#: predicted within it have, on the built-in linkages, filled no more than the probe
+#: drawn in another region picks another scale from the series and places its labels anew); on the 33
+#: built-in sheets no division drawn for a smaller predicted gain (1–9 cells) filled more than the probe
 PREDICTION_MARGIN = 0.01
 
 
