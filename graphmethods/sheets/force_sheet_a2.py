@@ -40,7 +40,7 @@ from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettering
-from graphmethods.sheets.engine.quality import faults, measure
+from graphmethods.sheets.engine.quality import EMPTY_MAX, faults, measure
 from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
 from graphmethods.sheets.force_working import inertia_working
 from graphmethods.sheets.layout import Box, Sheet
@@ -88,19 +88,24 @@ def force_sheet_a2(case: Any, fa: Any, i: int, *, sheet: Sheet, pg: Page, nt: An
             tail.append(inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing"))
         except InputError:                                  # no room after all: the column without it
             pass
-    best: tuple[int, Scene] | None = None
+    best: tuple[tuple[int, float], Scene] | None = None
     error: InputError | None = None
-    for tree in arrangements(fa, i, left, gap):
+    heads = headings(fa, nt, pg)
+    trees = arrangements(fa, i, left, gap, accelerations=phi_deg is None, least=heads)
+    trees.sort(key=lambda t: not headings_fit(t.boxes(left), heads))     # a heading wider than its box: last
+    for tree in trees:
         try:
             parts = draw_parts(case, fa, i, tree.boxes(left), pg, nt, phi_deg=phi_deg, m=m, gravity=gravity)
         except InputError as e:
             error = error or e
             continue
         scene = _assemble(sheet, parts, col_els, tail, name)
-        n = len(faults(measure(scene)))
-        if best is None or n < best[0]:
-            best = (n, scene)
-        if n == 0:
+        q = measure(scene)
+        found = faults(q)
+        score = (len(found) - (q.empty_share > EMPTY_MAX), q.empty_share)     # the lettering first, then the fill
+        if best is None or score < best[0]:
+            best = (score, scene)
+        if not found:
             break
     if best is None:
         raise error or InputError("the force sheet has no room for its parts on A2; draw it on A1")
@@ -115,7 +120,8 @@ def _assemble(sheet: Sheet, parts: list[tuple[Scene, str]], col_els: list[Elemen
                   name="plans")
     scales = tuple(s for _, part_scales in groups + tail for s in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
-    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], plans, *col_els,
+    others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
+    return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *col_els,
                                             *(g for g, _ in tail)),
                  title=sheet.title, notation=sheet.nt.code, name=name, extra_scales=scales, notes=notes)
 
@@ -190,6 +196,28 @@ def result_column(case: Any, fa: Any, i: int, nt: Any, pg: Page, gravity: bool) 
     return Column(tables, tuple(notes), tuple(working))  # type: ignore[arg-type]
 
 
+def headings(fa: Any, nt: Any, pg: Page) -> dict[str, float]:
+    """The least width (mm) of each part, by its name: its heading (bold, at the page's title size), and for the
+    scheme and the lever their line under the drawing (two scales, 10 mm apart, and the legend)."""
+    let = lettering(pg)
+    out = {"scheme": nt.word("forces.scheme_short"), "lever": nt.word("forces.lever_short")}
+    for j, pl in enumerate(fa.plans):
+        out[f"group-{j}"] = nt.word("forces.cut_group")
+        out[f"plan-{j}"] = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
+                            else nt.word("forces.group", g=pl.group))
+    least = {k: text_width_mm(t, let.title_mm) * 1.08 + 2.0 for k, t in out.items()}
+    scales = text_width_mm(f"μ_l = 0.001 {nt.unit('m')}/{nt.unit('mm')}  μ_F = 100 {nt.unit('N')}/{nt.unit('mm')}",
+                           let.label_mm) + 20.0
+    for k in ("scheme", "lever"):
+        least[k] = max(least[k], scales + text_width_mm(nt.word(f"forces.{k}_legend"), let.label_mm))
+    return least
+
+
+def headings_fit(boxes: dict[str, Box], heads: dict[str, float]) -> bool:
+    """Is every part's box as wide as its heading?"""
+    return all(b[2] - b[0] >= heads.get(k, 0.0) for k, b in boxes.items())
+
+
 def _pairs(n: int, gap: float, how: str) -> Split:
     """The groups cut from the linkage and their plans: ``"columns"``, each group over its plan, side by side;
     ``"rows"``, each group beside its plan, one pair under another."""
@@ -200,15 +228,19 @@ def _pairs(n: int, gap: float, how: str) -> Split:
                             for j in range(n)), gap_mm=gap)
 
 
-def arrangements(fa: Any, i: int, box: Box, gap: float) -> list[Split]:
+def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool = True,
+                 least: dict[str, float] | None = None) -> list[Split]:
     """The arrangements of the drawings in ``box`` (mm), the likeliest first: by the linkage's shape (a tall
-    linkage in a column at the left, a flat one in a row across the top with the lever beside it)."""
+    linkage in a column at the left, a flat one in a row across the top with the lever beside it); the last,
+    with ``accelerations``, have the plan of accelerations between the scheme and the lever, each of those as wide
+    as it ``least`` needs (mm, :func:`headings`)."""
     from graphmethods.sheets.force_analysis_sheet import _aspect
 
     mo = fa.motion
     scheme = _aspect([complex(mo.z[p][i]) for p in mo.points] + SF._guide_ends(mo, SF._links_of(mo, i)[1]))
     n = len(fa.plans)
     W, H = box[2] - box[0], box[3] - box[1]
+    least = least or {}
     out = []
     if scheme < 1.2:                                        # a tall linkage: the scheme in a column at the left
         w_s = min(0.4, max(0.22, scheme * H / W + 0.06))
@@ -217,10 +249,16 @@ def arrangements(fa: Any, i: int, box: Box, gap: float) -> list[Split]:
                                    (_pairs(n, gap, how), 1.0 - w_s)), gap_mm=gap))
         out.append(Split("h", (("scheme", w_s), (Split("v", (("lever", 0.4), (_pairs(n, gap, "columns"), 0.6)),
                                                         gap_mm=gap), 1.0 - w_s)), gap_mm=gap))
-    for h_s in (0.42, 0.36):                                # a flat one (or a tall one's last resort): rows
+    for h_s in (0.42, 0.5, 0.36):                            # a flat one (or a tall one's last resort): rows
         for how in ("columns", "rows"):
             top = Split("h", (("scheme", 0.6), ("lever", 0.4)), gap_mm=gap)
             out.append(Split("v", ((top, h_s), (_pairs(n, gap, how), 1.0 - h_s)), gap_mm=gap))
+    if accelerations:                                       # a sparse sheet: the plan of accelerations fills it
+        w_s, w_l = max(least.get("scheme", 0.0), 0.35 * W), max(least.get("lever", 0.0), 0.35 * W)
+        for how in ("rows", "columns"):
+            top = Split("h", (("scheme", w_s), ("acceleration", W - w_s)), gap_mm=gap)
+            bottom = Split("h", (("lever", w_l), (_pairs(n, gap, how), W - w_l)), gap_mm=gap)
+            out.append(Split("v", ((top, 0.45), (bottom, 0.55)), gap_mm=gap))
     return out
 
 
@@ -250,6 +288,13 @@ def draw_parts(case: Any, fa: Any, i: int, boxes: dict[str, Box], pg: Page, nt: 
              (SF.zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
                                   title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])),
               "lever")]
+    if "acceleration" in boxes:
+        from graphmethods.sheets.force_analysis_sheet import _acceleration
+
+        accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"])
+        if accel is None:
+            raise InputError("the plan of accelerations does not fit its box")
+        parts.append((accel, "acceleration"))
     for j in range(len(fa.plans)):
         g_box, p_box = boxes[f"group-{j}"], boxes[f"plan-{j}"]
         plan = plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, p_box))
