@@ -218,11 +218,11 @@ def headings_fit(boxes: dict[str, Box], heads: dict[str, float]) -> bool:
     return all(b[2] - b[0] >= heads.get(k, 0.0) for k, b in boxes.items())
 
 
-def _pairs(n: int, gap: float, how: str) -> Split:
+def _pairs(n: int, gap: float, how: str, group: float = 0.4) -> Split:
     """The groups cut from the linkage and their plans: ``"columns"``, each group over its plan, side by side;
-    ``"rows"``, each group beside its plan, one pair under another."""
+    ``"rows"``, each group beside its plan (``group`` of the width), one pair under another."""
     if how == "rows":
-        return Split("v", tuple((Split("h", ((f"group-{j}", 0.4), (f"plan-{j}", 0.6)), gap_mm=gap), 1.0)
+        return Split("v", tuple((Split("h", ((f"group-{j}", group), (f"plan-{j}", 1.0 - group)), gap_mm=gap), 1.0)
                                 for j in range(n)), gap_mm=gap)
     return Split("h", tuple((Split("v", ((f"group-{j}", 0.45), (f"plan-{j}", 0.55)), gap_mm=gap), 1.0)
                             for j in range(n)), gap_mm=gap)
@@ -231,9 +231,9 @@ def _pairs(n: int, gap: float, how: str) -> Split:
 def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool = True,
                  least: dict[str, float] | None = None) -> list[Split]:
     """The arrangements of the drawings in ``box`` (mm), the likeliest first: by the linkage's shape (a tall
-    linkage in a column at the left, a flat one in a row across the top with the lever beside it); the last,
-    with ``accelerations``, have the plan of accelerations between the scheme and the lever, each of those as wide
-    as it ``least`` needs (mm, :func:`headings`)."""
+    linkage in a column at the left over the lever, a flat one in a row across the top with the lever beside
+    it); the last, with ``accelerations``, have the plan of accelerations beside the scheme and the lever under
+    it. Columns are at least as wide as their parts' ``least`` (mm, :func:`headings`)."""
     from graphmethods.sheets.force_analysis_sheet import _aspect
 
     mo = fa.motion
@@ -241,23 +241,27 @@ def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool =
     n = len(fa.plans)
     W, H = box[2] - box[0], box[3] - box[1]
     least = least or {}
+    g_mm = max([v for k, v in least.items() if k.startswith("group")] + [0.0])
+
+    def group(width: float) -> float:                       # the group's share of a row: its heading's width
+        return min(0.6, max(0.4, (g_mm + gap / 2) / width))
+
     out = []
     if scheme < 1.2:                                        # a tall linkage: the scheme in a column at the left
-        w_s = min(0.4, max(0.22, scheme * H / W + 0.06))
-        for how in ("columns", "rows"):
+        w_s = max(W * min(0.4, max(0.22, scheme * H / W + 0.06)), least.get("scheme", 0.0), least.get("lever", 0.0))
+        rest = W - w_s - gap
+        for how in ("rows", "columns"):
             out.append(Split("h", ((Split("v", (("scheme", 0.62), ("lever", 0.38)), gap_mm=gap), w_s),
-                                   (_pairs(n, gap, how), 1.0 - w_s)), gap_mm=gap))
-        out.append(Split("h", (("scheme", w_s), (Split("v", (("lever", 0.4), (_pairs(n, gap, "columns"), 0.6)),
-                                                        gap_mm=gap), 1.0 - w_s)), gap_mm=gap))
+                                   (_pairs(n, gap, how, group(rest)), rest)), gap_mm=gap))
     for h_s in (0.42, 0.5, 0.36):                            # a flat one (or a tall one's last resort): rows
         for how in ("columns", "rows"):
             top = Split("h", (("scheme", 0.6), ("lever", 0.4)), gap_mm=gap)
-            out.append(Split("v", ((top, h_s), (_pairs(n, gap, how), 1.0 - h_s)), gap_mm=gap))
+            out.append(Split("v", ((top, h_s), (_pairs(n, gap, how, group(W)), 1.0 - h_s)), gap_mm=gap))
     if accelerations:                                       # a sparse sheet: the plan of accelerations fills it
         w_s, w_l = max(least.get("scheme", 0.0), 0.35 * W), max(least.get("lever", 0.0), 0.35 * W)
         for how in ("rows", "columns"):
             top = Split("h", (("scheme", w_s), ("acceleration", W - w_s)), gap_mm=gap)
-            bottom = Split("h", (("lever", w_l), (_pairs(n, gap, how), W - w_l)), gap_mm=gap)
+            bottom = Split("h", (("lever", w_l), (_pairs(n, gap, how, group(W - w_l)), W - w_l)), gap_mm=gap)
             out.append(Split("v", ((top, 0.45), (bottom, 0.55)), gap_mm=gap))
     return out
 
