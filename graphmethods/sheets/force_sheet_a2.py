@@ -29,6 +29,7 @@ False
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -47,6 +48,9 @@ from graphmethods.sheets.layout import Box, Sheet
 
 #: the least height (mm) of M_b(φ) under the result column's text; with less it is left out
 GRAPH_MM = 60.0
+#: an arrangement that meets the standard and leaves at most this share of the sheet empty is taken at once;
+#: with more, the others are drawn too and the fullest taken
+AIM = 0.45
 #: a part's ink may leave its box by this much (mm) before it counts as running into its neighbour
 SLACK_MM = 1.0
 
@@ -63,8 +67,8 @@ class Column:
 
 def force_sheet_a2(case: Any, fa: Any, i: int, *, sheet: Sheet, pg: Page, nt: Any, phi_deg: float | None, m: int,
                    gravity: bool, name: str) -> Scene:
-    """The A2 force sheet of position ``i`` (see the module docstring): the first arrangement that meets the
-    drafting standard, or the one with the fewest faults.
+    """The A2 force sheet of position ``i`` (see the module docstring), its arrangement chosen by
+    :func:`fullest`.
 
     Raises
     ------
@@ -88,24 +92,44 @@ def force_sheet_a2(case: Any, fa: Any, i: int, *, sheet: Sheet, pg: Page, nt: An
             tail.append(inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing"))
         except InputError:                                  # no room after all: the column without it
             pass
-    best: tuple[tuple[int, float], Scene] | None = None
-    error: InputError | None = None
     heads = headings(fa, nt, pg)
     trees = arrangements(fa, i, left, gap, accelerations=phi_deg is None, least=heads)
     trees.sort(key=lambda t: not headings_fit(t.boxes(left), heads))     # a heading wider than its box: last
-    for tree in trees:
+
+    def draw(boxes: dict[str, Box]) -> Scene:
+        parts = draw_parts(case, fa, i, boxes, pg, nt, phi_deg=phi_deg, m=m, gravity=gravity)
+        return _assemble(sheet, parts, col_els, tail, name)
+
+    return fullest([t.boxes(left) for t in trees], draw)
+
+
+def fullest(arrangements: list[dict[str, Box]], draw: Callable[[dict[str, Box]], Scene]) -> Scene:
+    """The sheet ``draw`` makes of the first of the ``arrangements`` (each part's box) that meets the standard
+    with at most :data:`AIM` of it empty, else of the one that meets it fullest, else of the one with the
+    fewest faults of lettering and then the least empty; one with the plan of accelerations only when none
+    without it meets the standard.
+
+    Raises
+    ------
+    InputError
+        No arrangement has room for every part (the first part's refusal).
+    """
+    best: tuple[tuple[int, float], Scene] | None = None
+    error: InputError | None = None
+    for boxes in arrangements:
+        if "acceleration" in boxes and best is not None and best[0][0] == 0 and best[0][1] <= EMPTY_MAX:
+            break
         try:
-            parts = draw_parts(case, fa, i, tree.boxes(left), pg, nt, phi_deg=phi_deg, m=m, gravity=gravity)
+            scene = draw(boxes)
         except InputError as e:
             error = error or e
             continue
-        scene = _assemble(sheet, parts, col_els, tail, name)
         q = measure(scene)
         found = faults(q)
         score = (len(found) - (q.empty_share > EMPTY_MAX), q.empty_share)     # the lettering first, then the fill
         if best is None or score < best[0]:
             best = (score, scene)
-        if not found:
+        if not found and q.empty_share <= AIM:
             break
     if best is None:
         raise error or InputError("the force sheet has no room for its parts on A2; draw it on A1")
@@ -215,7 +239,7 @@ def headings(fa: Any, nt: Any, pg: Page) -> dict[str, float]:
 
 def headings_fit(boxes: dict[str, Box], heads: dict[str, float]) -> bool:
     """Is every part's box as wide as its heading?"""
-    return all(b[2] - b[0] >= heads.get(k, 0.0) for k, b in boxes.items())
+    return all(b[2] - b[0] >= heads.get(k, 0.0) - 0.5 for k, b in boxes.items())
 
 
 def _pairs(n: int, gap: float, how: str, group: float = 0.4) -> Split:
@@ -257,11 +281,16 @@ def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool =
         for how in ("columns", "rows"):
             top = Split("h", (("scheme", 0.6), ("lever", 0.4)), gap_mm=gap)
             out.append(Split("v", ((top, h_s), (_pairs(n, gap, how, group(W)), 1.0 - h_s)), gap_mm=gap))
+    if scheme > 2.0:                                        # a long one: wider and lower, the lever narrower
+        w_l = max(least.get("lever", 0.0), 0.3 * W)
+        for how in ("columns", "rows"):
+            top = Split("h", (("scheme", W - w_l - gap), ("lever", w_l)), gap_mm=gap)
+            out.append(Split("v", ((top, 0.36), (_pairs(n, gap, how, group(W)), 0.64)), gap_mm=gap))
     if accelerations:                                       # a sparse sheet: the plan of accelerations fills it
         w_s, w_l = max(least.get("scheme", 0.0), 0.35 * W), max(least.get("lever", 0.0), 0.35 * W)
         for how in ("rows", "columns"):
-            top = Split("h", (("scheme", w_s), ("acceleration", W - w_s)), gap_mm=gap)
-            bottom = Split("h", (("lever", w_l), (_pairs(n, gap, how, group(W - w_l)), W - w_l)), gap_mm=gap)
+            top = Split("h", (("scheme", w_s), ("acceleration", W - w_s - gap)), gap_mm=gap)
+            bottom = Split("h", (("lever", w_l), (_pairs(n, gap, how, group(W - w_l)), W - w_l - gap)), gap_mm=gap)
             out.append(Split("v", ((top, 0.45), (bottom, 0.55)), gap_mm=gap))
     return out
 
@@ -309,5 +338,5 @@ def draw_parts(case: Any, fa: Any, i: int, boxes: dict[str, Box], pg: Page, nt: 
     return parts
 
 
-__all__ = ["Column", "arrangements", "column_elements", "column_width", "draw_parts", "force_sheet_a2",
+__all__ = ["Column", "arrangements", "column_elements", "column_width", "draw_parts", "force_sheet_a2", "fullest",
            "result_column"]
