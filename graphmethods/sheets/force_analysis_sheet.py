@@ -83,6 +83,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     gravity : bool
         Add the weights (g = 9.81 m/s² along −y).
     page : {"A1", "A2"} or Page
+        On A2 the sheet is composed by :func:`~graphmethods.sheets.force_sheet_a2.force_sheet_a2`.
     notation : {"en", "ru", "zh"}
 
     Returns

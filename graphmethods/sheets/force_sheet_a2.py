@@ -7,16 +7,19 @@ plan and the crank's plan closed by the balancing force
 (:func:`~graphmethods.sheets.force_sheet_plans.group_panel`, :func:`~graphmethods.sheets.force_sheet_plans.
 plan_panel`), and at the right the balancing moment three ways, the reactions and the inertia loads; the
 inertia loads worked out and M_b(φ) over the cycle where the column has room for them. The plan of
-accelerations belongs to the kinematic sheet and is left out.
+accelerations belongs to the kinematic sheet and is left out, unless no arrangement without it fills half
+the sheet (a sparse linkage: the Scotch yoke's T).
 
 The parts are the A1 sheet's, drawn by the same recipes into the boxes of an arrangement (:class:`~graphmethods.
-sheets.engine.compose.Split`): a flat linkage (a press) in a row across the top with the lever beside it and the
-groups with their plans in the row below; a tall one (a shaper's rocker) in a column at the left. Several
-arrangements are tried in order (the groups over their plans or beside them, the lever beside or under the
-linkage); a part whose lettering runs out of its box is drawn again without its working (the moment equations
-and the lengths laid off; its equation and the reactions it finds stay), and the first arrangement that meets
-the drafting standard (:func:`~graphmethods.sheets.engine.quality.faults`: no label crossed, no text over text,
-at most half the sheet empty) is the sheet; when none does, the one with the fewest faults.
+sheets.engine.compose.Split`): a tall linkage (a shaper's rocker) in a column at the left over the lever, the
+groups beside their plans in rows at its right; a flat one (a press) in a row across the top with the lever
+beside it, the groups with their plans in the row below. Each part's box is at least as wide as its heading
+(and the scheme's and the lever's as their line of scales), and a plan whose lettering runs out of its box is
+drawn again without its working (the moment equations and the lengths laid off; its equation and the
+reactions it finds stay). :func:`fullest` draws the arrangements in turn and measures each sheet
+(:func:`~graphmethods.sheets.engine.quality.faults`: no label crossed, no text over text, at most half the sheet
+empty): the first that meets the standard with at most :data:`AIM` empty is the sheet, else the fullest that
+meets it.
 
 >>> from graphmethods.problems import builtin
 >>> from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
