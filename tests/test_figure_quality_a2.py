@@ -81,6 +81,10 @@ def test_the_a2_force_sheet_holds_the_scheme_lever_and_plans_and_prints_the_json
         key = "R_" + row[0].replace("R_{", "").replace("}", "")
         R = out["reactions"][key]
         assert float(row[1]) == pytest.approx((R[0] ** 2 + R[1] ** 2) ** 0.5, rel=1e-4, abs=1e-6)
+    for link, F, M in s.element("inertia").rows[1:]:     # the inertia loads, as --json gives them
+        F_i = out["links"][link]["F_i"]
+        assert float(F.replace("−", "-")) == pytest.approx((F_i[0] ** 2 + F_i[1] ** 2) ** 0.5, rel=1e-4, abs=1e-6)
+        assert float(M.replace("−", "-")) == pytest.approx(out["links"][link]["M_i"], rel=1e-4, abs=1e-6)
 
 
 def test_the_a2_force_sheet_is_deterministic_and_takes_phi_deg():
