@@ -96,3 +96,29 @@ def test_the_a2_force_sheet_is_deterministic_and_takes_phi_deg():
     assert s.page.size == "A2" and "φ = 100°" in s.title
     q = measure(s)                  # at an angle between positions M_b(φ) is not drawn: the column's foot stays empty
     assert q.crossed == () and q.overlaps == () and q.min_text_mm >= 3.5
+
+
+def test_fullest_draws_the_plan_of_accelerations_only_when_no_other_arrangement_meets_the_standard():
+    from graphmethods.scene import Line, Page, Scene
+    from graphmethods.sheets.force_sheet_a2 import fullest
+
+    page = Page("A2", "landscape", margins_mm=(10.0, 10.0, 10.0, 20.0), frame=True)
+    x0, y0, x1, y1 = page.inner_box()
+
+    def filled(share):                              # horizontal lines 10 mm apart over the top ``share`` of the frame
+        n = int(share * (y1 - y0) / 10.0)
+        return Scene(page, tuple(Line((x0 + 1, y0 + 5 + 10 * k), (x1 - 1, y0 + 5 + 10 * k), name=f"l{k}")
+                                 for k in range(n)), name=f"fill-{share}")
+
+    drawn = []
+
+    def draw(boxes):
+        drawn.append(sorted(boxes))
+        return filled(boxes["share"][0])
+
+    half = {"share": (0.6, 0, 0, 0)}                # meets the standard (40 % empty), above the aim
+    sparse = {"share": (0.2, 0, 0, 0)}
+    accel = {"share": (0.95, 0, 0, 0), "acceleration": (0, 0, 0, 0)}
+    assert fullest([half, accel], draw).name == "fill-0.6" and drawn == [["share"]]
+    assert fullest([sparse, accel], draw).name == "fill-0.95"
+    assert fullest([sparse, {"share": (0.3, 0, 0, 0)}], draw).name == "fill-0.3"    # none meets it: the fullest
