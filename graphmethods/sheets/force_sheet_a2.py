@@ -53,7 +53,7 @@ from graphmethods.sheets.layout import Box, Sheet
 GRAPH_MM = 60.0
 #: an arrangement that meets the standard and leaves at most this share of the sheet empty is taken at once;
 #: with more, the others are drawn too and the fullest taken
-AIM = 0.45
+AIM = 0.42
 #: a part's ink may leave its box by this much (mm) before it counts as running into its neighbour
 SLACK_MM = 1.0
 
@@ -261,7 +261,7 @@ def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool =
     linkage in a column at the left over the lever, a flat one in a row across the top with the lever beside
     it); the last, with ``accelerations``, have the plan of accelerations beside the scheme and the lever under
     it. Columns are at least as wide as their parts' ``least`` (mm, :func:`headings`)."""
-    from graphmethods.sheets.force_analysis_sheet import _aspect
+    from graphmethods.sheets.force_analysis_sheet import _aspect, _pairs as a1_pairs
 
     mo = fa.motion
     scheme = _aspect([complex(mo.z[p][i]) for p in mo.points] + SF._guide_ends(mo, SF._links_of(mo, i)[1]))
@@ -273,6 +273,7 @@ def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool =
     def group(width: float) -> float:                       # the group's share of a row: its heading's width
         return min(0.6, max(0.4, (g_mm + gap / 2) / width))
 
+    hows = ("rows", "columns") if a1_pairs(fa, i, n, gap).direction == "v" else ("columns", "rows")  # the A1 rule
     out = []
     if scheme < 1.2:                                        # a tall linkage: the scheme in a column at the left
         w_s = max(W * min(0.4, max(0.22, scheme * H / W + 0.06)), least.get("scheme", 0.0), least.get("lever", 0.0))
@@ -281,12 +282,12 @@ def arrangements(fa: Any, i: int, box: Box, gap: float, *, accelerations: bool =
             out.append(Split("h", ((Split("v", (("scheme", 0.62), ("lever", 0.38)), gap_mm=gap), w_s),
                                    (_pairs(n, gap, how, group(rest)), rest)), gap_mm=gap))
     for h_s in (0.42, 0.5, 0.36):                            # a flat one (or a tall one's last resort): rows
-        for how in ("columns", "rows"):
+        for how in hows:
             top = Split("h", (("scheme", 0.6), ("lever", 0.4)), gap_mm=gap)
             out.append(Split("v", ((top, h_s), (_pairs(n, gap, how, group(W)), 1.0 - h_s)), gap_mm=gap))
     if scheme > 2.0:                                        # a long one: wider and lower, the lever narrower
         w_l = max(least.get("lever", 0.0), 0.3 * W)
-        for how in ("columns", "rows"):
+        for how in hows:
             top = Split("h", (("scheme", W - w_l - gap), ("lever", w_l)), gap_mm=gap)
             out.append(Split("v", ((top, 0.36), (_pairs(n, gap, how, group(W)), 0.64)), gap_mm=gap))
     if accelerations:                                       # a sparse sheet: the plan of accelerations fills it
