@@ -44,7 +44,7 @@ from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettering
-from graphmethods.sheets.engine.quality import EMPTY_MAX, faults, measure
+from graphmethods.sheets.engine.quality import faults, measure
 from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
 from graphmethods.sheets.force_working import inertia_working
 from graphmethods.sheets.layout import Box, Sheet
@@ -109,18 +109,18 @@ def force_sheet_a2(case: Any, fa: Any, i: int, *, sheet: Sheet, pg: Page, nt: An
 def fullest(arrangements: list[dict[str, Box]], draw: Callable[[dict[str, Box]], Scene]) -> Scene:
     """The sheet ``draw`` makes of the first of the ``arrangements`` (each part's box) that meets the standard
     with at most :data:`AIM` of it empty, else of the one that meets it fullest, else of the one with the
-    fewest faults of lettering and then the least empty; one with the plan of accelerations only when none
-    without it meets the standard.
+    fewest labels crossed or overprinted and then the least empty; one with the plan of accelerations only when
+    none without it meets the standard.
 
     Raises
     ------
     InputError
         No arrangement has room for every part (the first part's refusal).
     """
-    best: tuple[tuple[int, float], Scene] | None = None
+    best: tuple[tuple[bool, int, float], Scene] | None = None     # (faulty, labels clashing, empty share), sheet
     error: InputError | None = None
     for boxes in arrangements:
-        if "acceleration" in boxes and best is not None and best[0][0] == 0 and best[0][1] <= EMPTY_MAX:
+        if "acceleration" in boxes and best is not None and not best[0][0]:
             break
         try:
             scene = draw(boxes)
@@ -129,7 +129,7 @@ def fullest(arrangements: list[dict[str, Box]], draw: Callable[[dict[str, Box]],
             continue
         q = measure(scene)
         found = faults(q)
-        score = (len(found) - (q.empty_share > EMPTY_MAX), q.empty_share)     # the lettering first, then the fill
+        score = (bool(found), len(q.crossed) + len(q.overlaps), q.empty_share)
         if best is None or score < best[0]:
             best = (score, scene)
         if not found and q.empty_share <= AIM:
