@@ -7,7 +7,8 @@ does the same for any one figure; :func:`layout_faults` says what leaves the sli
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
@@ -46,7 +47,7 @@ def smallest_text_mm(bu: BuildUp) -> float:
     return min(sizes + [bu.caption_mm])
 
 
-def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) -> BuildUp:
+def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False, uncrossed: bool = False) -> BuildUp:
     """Steps on a 16:9 slide with text sized for a projector.
 
     The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
@@ -58,16 +59,21 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
     still fits. The scales and millimetres written stay those of the drawing at 1 : 1; a note on
     the slide says so.
 
+    A dense figure (a shaper's plans, its lever) holds its layout only at 1.0…1.2 : 1, so its paper
+    lettering (2.8 mm line labels, 3.2 mm equations) came out at 2.8…3.4 mm on the slide. With
+    ``lettered`` the figure is built on each design page lettered for the slide
+    (:func:`slide_lettered`: at least 3.5/z mm, so 3.5 mm and up once drawn z : 1), and its label
+    placement and layout work with those sizes: no slide text is below the slide's minimum, whatever z.
+
     Parameters
     ----------
     make : callable
         Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
     lettered : bool
-        Build every page tried with the slide's lettering (:func:`~graphmethods.sheets.engine.lettering.
-        lettering`, 3.5 mm): the figure's texts are made at least 3.5/z mm on the design page 1/z of the
-        slide, so none is below 3.5 mm when drawn z : 1, whatever z the layout allows (the dynamics build-ups;
-        their paper lettering of 2.6…2.8 mm drawn 1.0…1.2 : 1 was 2.6…3.4 mm on the slide). False (the
-        default) keeps the behaviour of before: the figure lettered as for paper, only enlarged.
+        Build every design page :func:`slide_lettered` (default: the figure's own sizes).
+    uncrossed : bool
+        Take no enlargement whose figure has a label crossed by its own ink (:func:`crossed_labels`; the six-bar
+        press's Wittenbauer slide at 1.6 : 1 set its position number 1 on the curve). Default: not checked.
 
     Examples
     --------
@@ -77,16 +83,16 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
     True
     """
     bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
-    def made(page: Page) -> BuildUp:
+
+    def build_on(page: Page) -> BuildUp:
         if not lettered:
             return make(page)
-        token = MIN_TEXT_MM.set(lettering("slide").minimum_mm / float(getattr(page, "enlarged", 1.0)))
-        try:
+        with slide_lettered(page):
             return make(page)
-        finally:
-            MIN_TEXT_MM.reset(token)
 
-    reference = made(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+    # the slide at 1 : 1 in the figure's own lettering (its error, if any, is the answer): its smallest text
+    # says how much enlargement the projector needs, its μ how large the construction is drawn
+    reference = make(SLIDE_PAGE)
     drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
 
     def holds(bu: BuildUp, z: float) -> bool:
@@ -98,12 +104,14 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
         free = note_free(bu.figure)
         if not free(enlarge_note(bu.figure, z, SLIDE_NOTE_MM / z, free)):
             return False
+        if uncrossed and crossed_labels(bu.figure):
+            return False
         return all(z / sc.per_mm >= KEEP_SIZE / drawn[sc.symbol, sc.unit] for sc in bu.figure.scales()
                    if (sc.symbol, sc.unit) in drawn and sc.unit not in ("rad", "°"))
 
     def attempt(z: float) -> BuildUp | None:
         try:
-            bu = made(design_slide(z))
+            bu = build_on(design_slide(z))
         except InputError:
             return None
         return bu if holds(bu, z) else None
@@ -121,7 +129,29 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
             best, hi = found, mid - 1
         else:
             lo = mid + 1
-    return _on_slide(best if best is not None else reference)
+    if best is None:                                    # too dense to enlarge: at 1 : 1, lettered
+        best = build_on(SLIDE_PAGE) if lettered else reference
+    return _on_slide(best)
+
+
+@contextmanager
+def slide_lettered(page: Page) -> Iterator[float]:
+    """Build figures lettered for a slide laid out on ``page`` (the slide or a :class:`DesignPage` of it,
+    drawn z : 1): every text made inside is at least the slide's minimum divided by z, mm (yielded).
+
+    >>> from graphmethods.scene import Text
+    >>> with slide_lettered(design_slide(1.4)) as least:
+    ...     t = Text((0, 0), "B", size_mm=2.0)
+    >>> round(least, 3), round(t.size_mm * 1.4, 3)
+    (2.5, 3.5)
+    """
+
+    least = lettering("SLIDE").minimum_mm / float(getattr(page, "enlarged", 1.0))
+    token = MIN_TEXT_MM.set(max(MIN_TEXT_MM.get(), least))
+    try:
+        yield least
+    finally:
+        MIN_TEXT_MM.reset(token)
 
 
 def layout_faults(bu: BuildUp) -> list[str]:
@@ -182,6 +212,14 @@ def projector_figure(make: Callable[[Page], Scene]) -> Scene:
         return BuildUp(fig, (Step("", tuple(range(len(fig.elements)))),), (x0, y1, x1, y1), caption_mm=1e3)
 
     return for_projector(as_steps).figure
+
+
+def crossed_labels(fig: Scene) -> tuple[str, ...]:
+    """The texts of ``fig`` a line, an arrow or a circle of it passes through (the figure-quality measure's
+    test, :func:`~graphmethods.sheets.engine.quality.measure`)."""
+    from graphmethods.sheets.engine.quality import measure
+
+    return measure(fig).crossed
 
 
 def note_free(fig: Scene) -> Callable[[Text], bool]:

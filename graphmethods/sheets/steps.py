@@ -601,8 +601,14 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "inversion": (_inversion_steps, "cam"),
 }
 
-#: the build-ups whose slides are lettered for the slide (:func:`~graphmethods.sheets.projector.for_projector`)
-LETTERED = ("energy-indicator", "work-diagrams", "wittenbauer")
+#: the build-ups whose slides are built lettered for the slide (3.5 mm and up once enlarged:
+#: :func:`~graphmethods.sheets.projector.slide_lettered`): every one (the dynamics build-ups' paper lettering of
+#: 2.6…2.8 mm was drawn 1.0…1.2 : 1, 2.6…3.4 mm on the slide)
+SLIDE_LETTERED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load",
+                  "kinematic-scheme", "kinematic-diagrams", "energy-indicator", "work-diagrams", "wittenbauer")
+
+#: the dynamics build-ups: their slides take no enlargement that sets a label on a line
+DYNAMICS = ("energy-indicator", "work-diagrams", "wittenbauer")
 
 #: the figures drawn in one position (``--position K``)
 POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
@@ -736,5 +742,5 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             def make(pg):
                 return fn(obj, notation=notation, page=pg)
     if isinstance(page, str) and page.strip().lower() == "slide":
-        return for_projector(make, lettered=key in LETTERED)
+        return for_projector(make, lettered=key in SLIDE_LETTERED, uncrossed=key in DYNAMICS)
     return make(page)
