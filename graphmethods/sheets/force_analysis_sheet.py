@@ -40,7 +40,8 @@ from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
-from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
+from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
+from graphmethods.sheets.force_tables import inertia_rows, reaction_rows
 from graphmethods.sheets.force_working import inertia_working
 from graphmethods.sheets.layout import Box, Sheet
 
@@ -107,11 +108,11 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
     note_mm = lettering(pg).label_mm
     rows = _result_rows(fa, i, nt)
-    react_rows, _ = SF._plans_results(fa, i, nt, gravity)
-    inertia_rows = _inertia_rows(fa, i, nt)
     tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
+              Table((0.0, 0.0), tuple(reaction_rows(fa, i, nt)), align="crrr", size_mm=size,
+                    row_height_mm=2.0 * size),
+              Table((0.0, 0.0), tuple(inertia_rows(fa, i, nt)), align="crrrrr", size_mm=size,
+                    row_height_mm=2.0 * size))
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
     working = [(t, False) for t in inertia_working(case, fa, i, nt)]
@@ -149,8 +150,11 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     if accel is not None:
         parts.append((accel, "acceleration"))
     for j in range(len(fa.plans)):
-        parts += [(group_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"group-{j}"])), f"group-{j}"),
-                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"])), f"plan-{j}")]
+        g_page = region_page(pg, boxes[f"group-{j}"])
+        beside = moments_fit(fa, i, j, nt, g_page)             # the moment equations beside the group cut
+        parts += [(group_panel(case, fa, i, j, nt=nt, page=g_page, moments=beside), f"group-{j}"),
+                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"]), moments=not beside),
+                   f"plan-{j}")]
     groups = [inset(scene, nm) for scene, nm in parts]
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")

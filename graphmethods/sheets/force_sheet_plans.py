@@ -107,10 +107,11 @@ def found_line(lbl: str, R: float, s_F: Scale, nt: Notation) -> str:
 
 
 def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
-               phi_deg: float | None = None) -> Scene:
+               phi_deg: float | None = None, moments: bool = True) -> Scene:
     """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
     region of the sheet): its caption, its vector equation, the polygon at the largest convenient μ_F
-    that fills the panel, the scale under it.
+    that fills the panel, the scale under it. ``moments``: the group's moment equations above the vector
+    equation (false where the group's cut drawing writes them beside it, :func:`group_panel`).
 
     Raises
     ------
@@ -138,8 +139,9 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
         return FW.drawn_lengths(sides, s_F, nt) if working else []
 
     m_pitch = 1.8 * let.label_mm
+    moments_here = moments
     for working in (True, False):                               # the working when the panel has room for it
-        moments = FW.moment_working(fa, i, j, nt) if working else []    # R^τ from the moments, before the plan
+        moments = FW.moment_working(fa, i, j, nt) if working and moments_here else []   # R^τ, before the plan
         n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0)) if working else 0
         m_h = (len(moments) + n_known) * m_pitch
 
@@ -272,16 +274,36 @@ def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
     return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
 
 
-def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
+def moments_fit(fa: Any, i: int, j: int, nt: Any, page: Page) -> bool:
+    """Whether group ``j``'s moment equations (:func:`~graphmethods.sheets.force_working.moment_working`) fit
+    across ``page`` (the group's panel) at its lettering, leaving the drawing at least 60 % of the height."""
+    lines = FW.moment_working(fa, i, j, nt)
+    if not lines:
+        return False
+    box = page.inner_box()
+    let = lettering(page)
+    return (max(markup.text_width_mm(t, let.label_mm) for t in lines) <= box[2] - box[0] - 2.0
+            and len(lines) * 1.8 * let.label_mm <= 0.4 * (box[3] - box[1]))
+
+
+def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page, moments: bool = False) -> Scene:
     """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
     its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
-    cut from (dashed: found on the plan)."""
+    cut from (dashed: found on the plan). ``moments``: the group's moment equations with their numbers
+    written under the heading, beside the drawing they are taken from (:func:`moments_fit`)."""
     nt = get_notation(nt)
     mo = fa.motion
     pl = fa.plans[j]
     lk = mo.linkage
     pts_names = _group_points(mo, tuple(pl.links), _group_of(fa, j))
     sheet = Sheet(nt=nt, page=page, title=nt.word("forces.cut_group"), problem="", title_block=False)
+    let = lettering(page)
+    texts: list[Element] = [Text((sheet.box[0], sheet.top + let.label_mm + k * 1.8 * let.label_mm), line,
+                                 size_mm=let.label_mm, name=f"moment-{j}-{k}")
+                            for k, line in enumerate(FW.moment_working(fa, i, j, nt) if moments else [])]
+    for t in texts:
+        _keep_clear(sheet, t)
+    sheet.top += len(texts) * 1.8 * let.label_mm
     z = {p: complex(mo.z[p][i]) for p in pts_names}
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
@@ -298,7 +320,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     from graphmethods.scene import Line
     from graphmethods.sheets.kinematic_symbols import PinJoint, SliderBlock
 
-    els: list[Element] = [sheet.header(), *(SF._drawn(occ, e) for e in SF.plates(segs, z, at))]
+    els: list[Element] = [sheet.header(), *texts, *(SF._drawn(occ, e) for e in SF.plates(segs, z, at))]
     els += [SF._drawn(occ, Line(at(z[a]), at(z[b]), style=SF.LINK, name=f"link-{a}-{b}")) for a, b in segs]
     els += [SF._drawn(occ, SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)),
                                        name=f"block-{k}")) for k, (p, u) in enumerate(blocks) if p in z]
@@ -322,4 +344,4 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     return SF._finish(sheet, els, (s_l, s_F), "", f"group-{j}")
 
 
-__all__ = ["group_panel", "plan_equation", "plan_panel", "plan_sides"]
+__all__ = ["group_panel", "moments_fit", "plan_equation", "plan_panel", "plan_sides"]
