@@ -41,7 +41,7 @@ from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
 from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
-from graphmethods.sheets.force_tables import inertia_rows, reaction_rows
+from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, reaction_rows
 from graphmethods.sheets.force_working import inertia_working
 from graphmethods.sheets.layout import Box, Sheet
 
@@ -161,6 +161,11 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
     column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
                                sizes=(size, note_mm, work_mm, gap))
+    cycle = None if phi_deg is not None else _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y),
+                                                          boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM))
+    if cycle is not None:                           # M_b at every position under the working, where it has room
+        column.append(cycle)
+        y = cycle.bottom_left[1] + gap
     graph_box = boxes.get("balancing", (boxes["result"][0], y, boxes["result"][2], boxes["result"][3]))
     if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
         graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
@@ -194,6 +199,15 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
         y += (2.2 if head_ and k else 1.8) * work_mm
         column.append(Text((tx, y), line, size_mm=work_mm, bold=head_, name=f"working-{k}"))
     return column, y + gap
+
+
+def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float) -> Table | None:
+    """The table of M_b at every position (:func:`~graphmethods.sheets.force_tables.cycle_rows`) from ``at``
+    (mm), its heading above it; None when it would run below ``bottom`` (mm)."""
+    rows = cycle_rows(fa, nt)
+    table = Table((at[0], at[1] + 1.5 * size), tuple(rows), align="rrrr", size_mm=0.8 * size,
+                  row_height_mm=1.6 * size, name="cycle")
+    return table if table.bottom_left[1] <= bottom else None
 
 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:

@@ -16,7 +16,7 @@ Round-off beside the table's largest value prints as 0.
 ('R_{01}', '−4628.1', '518.75', '4657')
 >>> inertia_rows(fa, i, "en")[2]
 ('2', '−83.757', '532.53', '539.08', '−30.191', '0.056006')
->>> cycle_rows(fa, "en")[4]
+>>> cycle_rows(fa, "en")[5]
 ('3', '90', '460.36', '460.36')
 """
 
@@ -64,12 +64,12 @@ def inertia_rows(fa: Any, i: int, nt: Any = "en") -> list[tuple[str, ...]]:
 
 def cycle_rows(fa: Any, nt: Any = "en") -> list[tuple[str, ...]]:
     """The balancing moment at positions 0…m: position, φ (°, from position 0), M_b from the force plans
-    and from the lever (N·m)."""
+    and from the lever (N·m); two heading rows (the quantity, then the method)."""
     nt = get_notation(nt)
     M_b = nt.sym("forces.M_b")
     unit = nt.quantity(M_b, "N·m")
-    rows: list[tuple[str, ...]] = [(nt.word("dynamics.position"), nt.quantity("φ", "°"),
-                                    f"{unit}: {nt.word('forces.by_plans')}", f"{unit}: {nt.word('forces.by_lever')}")]
+    rows: list[tuple[str, ...]] = [(nt.word("dynamics.position"), nt.quantity("φ", "°"), unit, unit),
+                                   ("", "", nt.word("forces.by_plans"), nt.word("forces.by_lever"))]
     M, L = np.asarray(fa.M_balance, dtype=float), np.asarray(fa.M_balance_lever, dtype=float)
     big = float(np.abs(M).max()) if len(M) else 0.0
     phi = np.degrees(np.asarray(fa.motion.phi_from_start, dtype=float))
