@@ -130,7 +130,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
     free = tb_top - gap - content[1] - _result_column(0.0, 0.0, tables, notes_text, working, nt,
                                                       sizes=(size, note_mm, work_mm, gap))[1]
-    graph_below = phi_deg is not None or free >= GRAPH_MM      # M_b(φ) under the column's text, or in the drawings'
+    graph_below = phi_deg is not None or free >= 3.0 * GRAPH_MM  # M_b(φ) under the column's text, or in the drawings'
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, graph=not graph_below)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
     if accel is None and phi_deg is None and graph_below and "balancing" in boxes:
@@ -161,8 +161,10 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
     column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
                                sizes=(size, note_mm, work_mm, gap))
+    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
     cycle = None if phi_deg is not None else _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y),
-                                                          boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM))
+                                                          boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM),
+                                                          inks)
     if cycle is not None:                           # M_b at every position under the working, where it has room
         column.append(cycle)
         y = cycle.bottom_left[1] + gap
@@ -201,13 +203,22 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
     return column, y + gap
 
 
-def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float) -> Table | None:
+def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float,
+                 inks: list[Box]) -> Table | None:
     """The table of M_b at every position (:func:`~graphmethods.sheets.force_tables.cycle_rows`) from ``at``
-    (mm), its heading above it; None when it would run below ``bottom`` (mm)."""
-    rows = cycle_rows(fa, nt)
-    table = Table((at[0], at[1] + 1.5 * size), tuple(rows), align="rrrr", size_mm=0.8 * size,
-                  row_height_mm=1.6 * size, name="cycle")
-    return table if table.bottom_left[1] <= bottom else None
+    (mm) or as little under it as keeps it off the drawings' ink (``inks``, mm); None when it would run below
+    ``bottom`` (mm)."""
+    rows = tuple(cycle_rows(fa, nt))
+    y = at[1]
+    while True:
+        table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=0.8 * size, row_height_mm=1.6 * size,
+                      name="cycle")
+        box = table.bbox()
+        if table.bottom_left[1] > bottom or box is None:
+            return None
+        if not any(min(box[2], b[2]) > max(box[0], b[0]) and min(box[3], b[3]) > max(box[1], b[1]) for b in inks):
+            return table
+        y += 5.0
 
 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:
