@@ -211,7 +211,7 @@ def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom:
     rows = tuple(cycle_rows(fa, nt))
     y = at[1]
     while True:
-        table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=0.8 * size, row_height_mm=1.6 * size,
+        table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=size, row_height_mm=1.8 * size,
                       name="cycle")
         box = table.bbox()
         if table.bottom_left[1] > bottom or box is None:
