@@ -21,7 +21,7 @@ the scheme's.
 >>> [e.name for e in s.elements][1:9]
 ['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia']
 >>> [e.name for e in s.elements][-3:]
-['working-3', 'working-4', 'balancing']
+['working-4', 'cycle', 'balancing']
 """
 
 from __future__ import annotations
@@ -107,12 +107,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
                   default_page=pg)
     size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
     note_mm = lettering(pg).label_mm
-    rows = _result_rows(fa, i, nt)
-    tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(reaction_rows(fa, i, nt)), align="crrr", size_mm=size,
-                    row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(inertia_rows(fa, i, nt)), align="crrrrr", size_mm=size,
-                    row_height_mm=2.0 * size))
+    tables = _tables(fa, i, nt, size, wide=pg.size == "A1")
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
     working = [(t, False) for t in inertia_working(case, fa, i, nt)]
@@ -153,7 +148,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
         g_page = region_page(pg, boxes[f"group-{j}"])
         beside = moments_fit(fa, i, j, nt, g_page)             # the moment equations beside the group cut
         parts += [(group_panel(case, fa, i, j, nt=nt, page=g_page, moments=beside), f"group-{j}"),
-                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"]), moments=not beside),
+                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"]), with_moments=not beside),
                    f"plan-{j}")]
     groups = [inset(scene, nm) for scene, nm in parts]
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
@@ -162,9 +157,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
                                sizes=(size, note_mm, work_mm, gap))
     inks = [b for g, _ in groups if (b := g.bbox()) is not None]
-    cycle = None if phi_deg is not None else _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y),
-                                                          boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM),
-                                                          inks)
+    floor = boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM)
+    cycle = None if phi_deg is not None else _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y), floor, inks)
     if cycle is not None:                           # M_b at every position under the working, where it has room
         column.append(cycle)
         y = cycle.bottom_left[1] + gap
@@ -201,6 +195,17 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
         y += (2.2 if head_ and k else 1.8) * work_mm
         column.append(Text((tx, y), line, size_mm=work_mm, bold=head_, name=f"working-{k}"))
     return column, y + gap
+
+
+def _tables(fa: Any, i: int, nt: Any, size: float, *, wide: bool) -> tuple[Table, ...]:
+    """The result column's tables at ``size`` mm: M_b three ways, the reactions and the inertia loads; ``wide``
+    (A1): the reactions' and the loads' components as ``forces`` prints them, else (A2) their magnitudes."""
+    if wide:
+        react, inertia = reaction_rows(fa, i, nt), inertia_rows(fa, i, nt)
+    else:
+        react, inertia = SF._plans_results(fa, i, nt, False)[0], _inertia_rows(fa, i, nt)
+    return tuple(Table((0.0, 0.0), tuple(rows), align=align[:len(rows[0])], size_mm=size, row_height_mm=2.0 * size)
+                 for rows, align in ((_result_rows(fa, i, nt), "lrr"), (react, "crrr"), (inertia, "crrrrr")))
 
 
 def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float,

@@ -107,10 +107,10 @@ def found_line(lbl: str, R: float, s_F: Scale, nt: Notation) -> str:
 
 
 def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
-               phi_deg: float | None = None, moments: bool = True) -> Scene:
+               phi_deg: float | None = None, with_moments: bool = True) -> Scene:
     """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
     region of the sheet): its caption, its vector equation, the polygon at the largest convenient μ_F
-    that fills the panel, the scale under it. ``moments``: the group's moment equations above the vector
+    that fills the panel, the scale under it. ``with_moments``: the group's moment equations above the vector
     equation (false where the group's cut drawing writes them beside it, :func:`group_panel`).
 
     Raises
@@ -139,7 +139,7 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
         return FW.drawn_lengths(sides, s_F, nt) if working else []
 
     m_pitch = 1.8 * let.label_mm
-    moments_here = moments
+    moments_here = with_moments
     for working in (True, False):                               # the working when the panel has room for it
         moments = FW.moment_working(fa, i, j, nt) if working and moments_here else []   # R^τ, before the plan
         n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0)) if working else 0
@@ -298,9 +298,9 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     pts_names = _group_points(mo, tuple(pl.links), _group_of(fa, j))
     sheet = Sheet(nt=nt, page=page, title=nt.word("forces.cut_group"), problem="", title_block=False)
     let = lettering(page)
-    texts: list[Element] = [Text((sheet.box[0], sheet.top + let.label_mm + k * 1.8 * let.label_mm), line,
-                                 size_mm=let.label_mm, name=f"moment-{j}-{k}")
-                            for k, line in enumerate(FW.moment_working(fa, i, j, nt) if moments else [])]
+    texts: list[Text] = [Text((sheet.box[0], sheet.top + let.label_mm + k * 1.8 * let.label_mm), line,
+                              size_mm=let.label_mm, name=f"moment-{j}-{k}")
+                         for k, line in enumerate(FW.moment_working(fa, i, j, nt) if moments else [])]
     for t in texts:
         _keep_clear(sheet, t)
     sheet.top += len(texts) * 1.8 * let.label_mm
