@@ -58,15 +58,14 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
     M_b = nt.sym("forces.M_b")
     sheet = Sheet(nt=nt, page=page, title=nt.word("forces.mb_graph", Mb=M_b), problem="", title_block=False)
     size = lettering(page).label_mm
-    y0, y1 = sheet.top + 2.0 * size, sheet.caption_y - 5.5 * size
-    if y1 - y0 < 30.0:
-        raise InputError("the balancing-moment graph has no room on this page; give a larger page")
-    ticks, s_M = _axis(float(M.min()), float(M.max()), y1 - y0, nt)
+    ticks = nice_ticks(min(float(M.min()), 0.0), max(float(M.max()), 0.0), 6)
     label_w = max(len(nt.number(t, sig=6)) for t in ticks) * 0.62 * size + 3.0
     x0, x1 = sheet.box[0] + label_w + 2.0, sheet.box[2] - 4.0
-    if x1 - x0 < 30.0:
+    y0, y1 = sheet.top + 2.0 * size, sheet.caption_y - 5.5 * size
+    if x1 - x0 < 30.0 or y1 - y0 < 30.0:
         raise InputError("the balancing-moment graph has no room on this page; give a larger page")
     lo, hi = ticks[0], ticks[-1]
+    s_M = _scale(hi - lo, y1 - y0, nt)
     y1 = y0 + (hi - lo) / s_M.per_mm                # the graph as tall as its scale draws it, under its heading,
     sheet.caption_y = y1 + 5.5 * size               # its numbers and scale line right under it
     dx = (x1 - x0) / (n - 1)
@@ -101,26 +100,6 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
             Text((sheet.box[0], y1 + 3.4 * size), value, size_mm=size, name="mark-value")]
     els += sheet.captions((s_M,), legend="")
     return sheet.scene(els, (s_M,), name=name)
-
-
-def _axis(lo: float, hi: float, room_mm: float, nt: Any) -> tuple[tuple[float, ...], Scale]:
-    """The M_b axis: nice ticks over [min(lo, 0), max(hi, 0)] (4 to 10 of them) and the convenient μ_M, chosen
-    so that the data are drawn tallest within ``room_mm``, the axis no longer than it needs on a tie.
-
-    >>> ticks, s = _axis(-80.0, 841.0, 150.0, get_notation("en"))
-    >>> ticks[0], ticks[-1], s.per_mm
-    (-100.0, 900.0, 10.0)
-    """
-    best: tuple[tuple[float, float], tuple[float, ...], Scale] | None = None
-    lo, hi = min(lo, 0.0), max(hi, 0.0)
-    for n in range(4, 11):
-        ticks = nice_ticks(lo, hi, n)
-        s_M = _scale(ticks[-1] - ticks[0], room_mm, nt)
-        score = (round((hi - lo) / s_M.per_mm, 6), -(ticks[-1] - ticks[0]))     # the data tallest, the axis shortest
-        if best is None or score > best[0]:
-            best = (score, ticks, s_M)
-    assert best is not None
-    return best[1], best[2]
 
 
 def _scale(span: float, span_mm: float, nt: Any) -> Scale:
