@@ -119,3 +119,39 @@ def test_the_force_sheet_is_deterministic():
     a = to_string(force_analysis_sheet(case, position=3, notation="zh"))
     b = to_string(force_analysis_sheet(case, position=3, notation="zh"))
     assert a == b
+
+
+@pytest.mark.parametrize("name, lang", [("shaper", "en"), ("press", "ru"), ("triad-six-bar", "zh")])
+def test_the_sheet_s_tables_print_the_json_s_reactions_and_inertia_loads(name, lang, capsys):
+    """One truth: the reactions' table (R_x, R_y, |R|) and the inertia loads' (F_иx, F_иy, |F_и|, M_и, h) hold
+    ``forces --json``'s numbers, round-off printed as 0."""
+    data = _json(name, capsys)
+    s = force_analysis_sheet(builtin.case(name), position=3, notation=lang)
+    reactions = s.element("reactions").rows
+    assert len(reactions) - 1 == len(data["reactions"])
+    big = max(abs(complex(*v)) for v in data["reactions"].values())
+    for row in reactions[1:]:
+        key = "R_" + row[0].split("{")[1].rstrip("}")
+        Rx, Ry = data["reactions"][key]
+        for printed, exact in zip(row[1:], (Rx, Ry, abs(complex(Rx, Ry)))):
+            assert _number(printed) == pytest.approx(exact, rel=1e-4, abs=1e-9 * big)
+    loads = s.element("inertia").rows
+    assert [r[0] for r in loads[1:]] == list(data["links"])
+    for row in loads[1:]:
+        link = data["links"][row[0]]
+        Fx, Fy = link["F_i"]
+        for printed, exact in zip(row[1:5], (Fx, Fy, abs(complex(Fx, Fy)), link["M_i"])):
+            assert _number(printed) == pytest.approx(exact, rel=1e-4, abs=1e-6)
+        assert _number(row[5]) == pytest.approx(link["h"] or 0.0, rel=1e-4, abs=1e-9)
+
+
+def test_the_cycle_table_prints_each_position_s_balancing_moment(capsys):
+    """The M_b table's row k is ``forces --position k --json``'s M_balance (from the plans) and the lever's."""
+    s = force_analysis_sheet(builtin.case("shaper"), position=3, notation="en")
+    rows = s.element("cycle").rows
+    assert [r[0] for r in rows[2:]] == [str(k) for k in range(13)]
+    for k in (0, 3, 8):
+        assert cli.main(["forces", "shaper", "--position", str(k), "--json"]) == 0
+        data = json.loads(capsys.readouterr().out)
+        assert _number(rows[2 + k][2]) == pytest.approx(data["M_balance"], rel=1e-4, abs=1e-6)
+        assert _number(rows[2 + k][3]) == pytest.approx(data["M_balance_lever"], rel=1e-4, abs=1e-6)
