@@ -10,7 +10,7 @@ import pytest
 from graphmethods import cli
 from graphmethods.problems import builtin
 from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet, force_sheet_boxes, sheet_page
-from graphmethods.sheets.force_working import inertia_working, moment_working, working_lines
+from graphmethods.sheets.force_working import inertia_working, moment_working, power_working, working_lines
 from graphmethods.sheets.forces import analysed
 
 try:
@@ -79,13 +79,14 @@ def test_each_moment_equation_closes_and_finds_the_json_s_reaction(name, capsys)
 def test_the_sheet_writes_its_working_and_each_plan_its_moment_equations():
     case = builtin.case("shaper")
     s = force_analysis_sheet(case, position=3, notation="ru")
-    texts = [e.text for e in _walk(s.elements) if e.name.startswith("working-")]
+    texts = [e.text for e in _walk(s.elements) if e.name.startswith("working-") and not e.bold]
     fa, i = analysed(case, position=3, phi_deg=None, m=12)
-    assert texts[1:] == inertia_working(case, fa, i, "ru")
+    loads = inertia_working(case, fa, i, "ru")
+    assert texts == loads + power_working(fa, i, "ru")
     moments = [e.text for e in _walk(s.element("plans").elements)
                if e.name.startswith("moment-") and hasattr(e, "text")]
     assert moments == [t for j in range(len(fa.plans)) for t in moment_working(fa, i, j, "ru")]
-    assert [t for t, head in working_lines(case, fa, i, "ru") if not head][:len(texts) - 1] == texts[1:]
+    assert [t for t, head in working_lines(case, fa, i, "ru") if not head][:len(texts)] == texts
 
 
 def _overlap(a, b):
@@ -155,3 +156,17 @@ def test_the_cycle_table_prints_each_position_s_balancing_moment(capsys):
         data = json.loads(capsys.readouterr().out)
         assert _number(rows[2 + k][2]) == pytest.approx(data["M_balance"], rel=1e-4, abs=1e-6)
         assert _number(rows[2 + k][3]) == pytest.approx(data["M_balance_lever"], rel=1e-4, abs=1e-6)
+
+
+@pytest.mark.parametrize("name", ["press", "shaper", "four-bar", "scotch-yoke"])
+def test_the_power_working_sums_to_the_json_s_balancing_moment(name, capsys):
+    """M_b by the power balance: the printed powers sum to −M_b·ω₁ (to their digits) and M_b is the json's."""
+    data = _json(name, capsys)
+    fa, i = analysed(builtin.case(name), position=3, phi_deg=None, m=12)
+    lines = power_working(fa, i, "en")
+    powers = [_number(t.split(" = ")[-1].split()[0]) for t in lines[1:-1]]
+    total = _number(lines[-1].split("−(")[1].split(")")[0])
+    w1 = _number(lines[-1].split(")/")[1].split()[0])
+    assert sum(powers) == pytest.approx(total, rel=1e-3)
+    assert _number(lines[-1].split(" = ")[-1].split()[0]) == pytest.approx(data["M_balance_power"], rel=1e-5)
+    assert -total / w1 == pytest.approx(data["M_balance_power"], rel=1e-3)

@@ -42,7 +42,7 @@ from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
 from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
 from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, reaction_rows
-from graphmethods.sheets.force_working import inertia_working
+from graphmethods.sheets.force_working import inertia_working, power_working
 from graphmethods.sheets.layout import Box, Sheet
 
 
@@ -110,8 +110,10 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     tables = _tables(fa, i, nt, size, wide=pg.size == "A1")
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
-    working = [(t, False) for t in inertia_working(case, fa, i, nt)]
-    working = [(nt.word("forces.inertia_loads"), True)] + working if working else []
+    loads = inertia_working(case, fa, i, nt)             # the inertia loads and M_b by the power balance worked out
+    working = (([(nt.word("forces.inertia_loads"), True)] + [(t, False) for t in loads] if loads else [])
+               + [(nt.word("forces.Mb_power", Mb=nt.sym("forces.M_b")), True)]
+               + [(t, False) for t in power_working(fa, i, nt)])
     work_mm = size if max([text_width_mm(t, size) for t, _ in working] + [0.0]) <= 190.0 else note_mm
     block = sheet.probe.title_block
     inner = pg.inner_box()
@@ -154,24 +156,44 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
-                               sizes=(size, note_mm, work_mm, gap))
-    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
-    floor = boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM)
-    cycle = None if phi_deg is not None else _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y), floor, inks)
-    if cycle is not None:                           # M_b at every position under the working, where it has room
-        column.append(cycle)
-        y = cycle.bottom_left[1] + gap
-    graph_box = boxes.get("balancing", (boxes["result"][0], y, boxes["result"][2], boxes["result"][3]))
-    if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
-        graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
-        column.append(graph)
-        groups.append((graph, g_scales))
+    for w_mm in dict.fromkeys((work_mm, note_mm)):  # the working smaller when that makes room for the M_b table
+        column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
+                                   sizes=(size, note_mm, w_mm, gap))
+        if phi_deg is not None or _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y), _floor(boxes),
+                                               [b for g, _ in groups if (b := g.bbox()) is not None]) is not None:
+            break
+    if phi_deg is None:                             # M_b over the cycle: its table and its graph
+        column += _cycle_parts(fa, i, nt, pg, boxes, y, groups, size=size, gap=gap)
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
     return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _floor(boxes: dict[str, Box]) -> float:
+    """How far down (mm) the M_b table may run in the result column: to its bottom, or the graph's room above it."""
+    return boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM)
+
+
+def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], y: float, groups: list[Any], *,
+                 size: float, gap: float) -> list[Any]:
+    """M_b over the cycle: its table under the result column's text (``y``, mm) where it has room, and the graph
+    (in its box among the drawings, or under the table; appended to ``groups`` with its scales)."""
+    res = boxes["result"]
+    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    out: list[Any] = []
+    cycle = _cycle_table(fa, nt, size, (res[0] + 2.0, y), _floor(boxes), inks)
+    graph_box = boxes.get("balancing", (res[0], y, res[2], res[3]))
+    if cycle is not None:
+        out.append(cycle)
+        if "balancing" not in boxes:
+            graph_box = (res[0], cycle.bottom_left[1] + gap, res[2], res[3])
+    if graph_box[3] - graph_box[1] > 60.0:
+        graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
+        out.append(graph)
+        groups.append((graph, g_scales))
+    return out
 
 
 def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: list[str],
@@ -200,10 +222,8 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
 def _tables(fa: Any, i: int, nt: Any, size: float, *, wide: bool) -> tuple[Table, ...]:
     """The result column's tables at ``size`` mm: M_b three ways, the reactions and the inertia loads; ``wide``
     (A1): the reactions' and the loads' components as ``forces`` prints them, else (A2) their magnitudes."""
-    if wide:
-        react, inertia = reaction_rows(fa, i, nt), inertia_rows(fa, i, nt)
-    else:
-        react, inertia = SF._plans_results(fa, i, nt, False)[0], _inertia_rows(fa, i, nt)
+    react: list[tuple[str, ...]] = list(reaction_rows(fa, i, nt) if wide else SF._plans_results(fa, i, nt, False)[0])
+    inertia: list[tuple[str, ...]] = list(inertia_rows(fa, i, nt) if wide else _inertia_rows(fa, i, nt))
     return tuple(Table((0.0, 0.0), tuple(rows), align=align[:len(rows[0])], size_mm=size, row_height_mm=2.0 * size)
                  for rows, align in ((_result_rows(fa, i, nt), "lrr"), (react, "crrr"), (inertia, "crrrrr")))
 
@@ -214,16 +234,19 @@ def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom:
     (mm) or as little under it as keeps it off the drawings' ink (``inks``, mm); None when it would run below
     ``bottom`` (mm)."""
     rows = tuple(cycle_rows(fa, nt))
-    y = at[1]
-    while True:
-        table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=size, row_height_mm=1.8 * size,
-                      name="cycle")
-        box = table.bbox()
-        if table.bottom_left[1] > bottom or box is None:
-            return None
-        if not any(min(box[2], b[2]) > max(box[0], b[0]) and min(box[3], b[3]) > max(box[1], b[1]) for b in inks):
-            return table
-        y += 5.0
+    for mm in (size, 0.8 * size, 0.7 * size):                   # at the values' size where it has room
+        y = at[1]
+        while True:
+            table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=mm, row_height_mm=1.8 * mm,
+                          name="cycle")
+            box = table.bbox()
+            if table.bottom_left[1] > bottom or box is None:
+                break
+            if not any(min(box[2], b[2]) > max(box[0], b[0]) and min(box[3], b[3]) > max(box[1], b[1])
+                       for b in inks):
+                return table
+            y += 5.0
+    return None
 
 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:

@@ -125,6 +125,10 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     sheet = Sheet(nt=nt, page=page, title=cap, problem="", title_block=False)
     sides = plan_sides(fa, j, i)
     pts = np.cumsum([0j] + [F for _, F, _ in sides])
+    inner = ([] if pl.group.startswith("I ") else      # each link's own polygon's sides: inside the panel too
+             [z for poly in pl.polygons[1:] for _, z0, z1 in (SF._inner_sides(pl.polygons[0], poly, pts, i) or [])
+              for z in (z0, z1)])
+    fit = np.concatenate([pts, np.asarray(inner, dtype=complex)])
     let = lettering(page)
     found = _found(fa, j, i, sides)
     equation = plan_equation(fa, j, i, nt)
@@ -149,12 +153,12 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
             return ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]
                     + [(t, let.value_mm) for t in lines(mu)])
         try:
-            area, x_text, s_F = _plan_area(sheet, pts, L, texts, m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
+            area, x_text, s_F = _plan_area(sheet, fit, L, texts, m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
             break
         except InputError:
             if not working:
                 raise
-    at = SF._cell(pts, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
+    at = SF._cell(fit, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
     els: list[Element] = [sheet.header()]
     for k, line in enumerate(moments + lengths(s_F)):
         kind = "moment" if k < len(moments) else "length"
