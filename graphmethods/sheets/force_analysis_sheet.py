@@ -41,9 +41,10 @@ from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
 from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
-from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, reaction_rows
+from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, load_rows, reaction_rows
 from graphmethods.sheets.force_working import inertia_working, power_working
 from graphmethods.sheets.layout import Box, Sheet
+from graphmethods.sheets.sheet_fill import PartInk
 
 
 def _case(subject: Any) -> Any:
@@ -156,12 +157,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    for w_mm in dict.fromkeys((work_mm, note_mm)):  # the working smaller when that makes room for the M_b table
-        column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
-                                   sizes=(size, note_mm, w_mm, gap))
-        if phi_deg is not None or _cycle_table(fa, nt, size, (boxes["result"][0] + 2.0, y), _floor(boxes),
-                                               [b for g, _ in groups if (b := g.bbox()) is not None]) is not None:
-            break
+    column, y = _best_column(fa, nt, pg, boxes, groups, tables, notes_text, working, cycle=phi_deg is None,
+                             sizes=(size, note_mm, work_mm, gap))
     if phi_deg is None:                             # M_b over the cycle: its table and its graph
         column += _cycle_parts(fa, i, nt, pg, boxes, y, groups, size=size, gap=gap)
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
@@ -169,6 +166,26 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
     return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], groups: list[Any], tables: tuple[Table, ...],
+                 notes_text: list[str], working: list[tuple[str, bool]], *, cycle: bool,
+                 sizes: tuple[float, float, float, float]) -> tuple[list[Any], float]:
+    """The result column (:func:`_result_column`) that, with the M_b table under it where that has room
+    (``cycle``), inks the most cells of the sheet (:class:`~graphmethods.sheets.sheet_fill.PartInk`): with
+    or without the external loads' table (the fourth), the working at the values' size or at 3.5 mm."""
+    size, note_mm, work_mm, gap = sizes
+    x, top = boxes["result"][0] + 2.0, boxes["result"][1]
+    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    best: tuple[int, list[Any], float] | None = None
+    for tabs, w_mm in dict.fromkeys((t, w) for w in (work_mm, note_mm) for t in (tables, tables[:3])):
+        column, y = _result_column(x, top, tabs, notes_text, working, nt, sizes=(size, note_mm, w_mm, gap))
+        table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), inks) if cycle else None
+        cells = int(PartInk.of(Scene(pg, tuple(column + ([table] if table is not None else []))), pg).cells.sum())
+        if best is None or cells > best[0]:
+            best = (cells, column, y)
+    assert best is not None
+    return best[1], best[2]
 
 
 def _floor(boxes: dict[str, Box]) -> float:
@@ -202,7 +219,7 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
     """The result column from (tx, ty): its heading, the balancing moment's, the reactions' and the inertia
     loads' tables, the notes and the inertia loads worked out; and the y (mm) under its last line."""
     size, note_mm, work_mm, gap = sizes
-    names = ("result", "reactions", "inertia")
+    names = ("result", "reactions", "inertia", "loads")
     column: list[Any] = [Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
                               name="result-heading")]
     y = ty + 2.5 * size
@@ -220,12 +237,14 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
 
 
 def _tables(fa: Any, i: int, nt: Any, size: float, *, wide: bool) -> tuple[Table, ...]:
-    """The result column's tables at ``size`` mm: M_b three ways, the reactions and the inertia loads; ``wide``
-    (A1): the reactions' and the loads' components as ``forces`` prints them, else (A2) their magnitudes."""
+    """The result column's tables at ``size`` mm: M_b three ways, the reactions, the inertia loads and (A1) the
+    external loads; ``wide`` (A1): the components as ``forces`` prints them, else (A2) the magnitudes."""
     react: list[tuple[str, ...]] = list(reaction_rows(fa, i, nt) if wide else SF._plans_results(fa, i, nt, False)[0])
     inertia: list[tuple[str, ...]] = list(inertia_rows(fa, i, nt) if wide else _inertia_rows(fa, i, nt))
+    loads = load_rows(fa, i, nt) if wide else []
     return tuple(Table((0.0, 0.0), tuple(rows), align=align[:len(rows[0])], size_mm=size, row_height_mm=2.0 * size)
-                 for rows, align in ((_result_rows(fa, i, nt), "lrr"), (react, "crrr"), (inertia, "crrrrr")))
+                 for rows, align in ((_result_rows(fa, i, nt), "lrr"), (react, "crrr"), (inertia, "crrrrr"),
+                                     (loads, "cc" + "r" * 6)) if rows)
 
 
 def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float,

@@ -4,6 +4,7 @@
   link i on link j as the command line names it;
 - :func:`inertia_rows`: every link's inertia force (components and magnitude, N), its inertia moment (N·m)
   and the arm h = |M_и|/|F_и| (m) at which the force alone stands for both;
+- :func:`load_rows`: the external loads (the working load, weights) with their points, as given;
 - :func:`cycle_rows`: the balancing moment at every position of the cycle from the force plans and from
   Zhukovsky's lever (the ordinates of M_b(φ), :mod:`~graphmethods.sheets.balancing_graph`).
 
@@ -62,6 +63,40 @@ def inertia_rows(fa: Any, i: int, nt: Any = "en") -> list[tuple[str, ...]]:
     return rows
 
 
+def load_rows(fa: Any, i: int, nt: Any = "en") -> list[tuple[str, ...]]:
+    """The external loads of position ``i`` (the working load, weights; no inertia load): load, link, its
+    point x, y (m), F_x, F_y, |F| (N), a couple M (N·m), "—" where a load has none (a column no load has
+    left out); [] when there is none.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import analysed
+    >>> fa, i = analysed(builtin.case("four-bar"), position=3, phi_deg=None, m=12)
+    >>> load_rows(fa, i, "en")[1]
+    ('M_{c3}', '3', '−40')
+    """
+    nt = get_notation(nt)
+    rows: list[tuple[str, ...]] = []
+    n = nt.number
+    for k, forces in fa.applied.items():
+        for f in forces:
+            if f.label.startswith("F_i"):
+                continue
+            F, M = complex(f.F[i]), float(f.M[i])
+            if F != 0:
+                at = complex(f.at[i])
+                rows.append((_markup(f.label), k, n(at.real, sig=5), n(at.imag, sig=5), n(F.real, sig=5),
+                             n(F.imag, sig=5), n(abs(F), sig=5), "—"))
+            if M != 0:
+                rows.append((_markup(f.label), k, "—", "—", "—", "—", "—", n(M, sig=5)))
+    if not rows:
+        return []
+    table = [(nt.word("forces.load"), nt.word("forces.link"), nt.quantity("x", "m"), nt.quantity("y", "m"),
+              nt.quantity("F_x", "N"), nt.quantity("F_y", "N"), nt.quantity("|F|", "N"),
+              nt.quantity("M", "N·m"))] + rows
+    keep = [c for c in range(8) if c < 2 or any(r[c] != "—" for r in rows)]     # no column of dashes only
+    return [tuple(r[c] for c in keep) for r in table]
+
+
 def cycle_rows(fa: Any, nt: Any = "en") -> list[tuple[str, ...]]:
     """The balancing moment at positions 0…m: position, φ (°, from position 0), M_b from the force plans
     and from the lever (N·m); two heading rows (the quantity, then the method)."""
@@ -80,4 +115,4 @@ def cycle_rows(fa: Any, nt: Any = "en") -> list[tuple[str, ...]]:
     return rows
 
 
-__all__ = ["cycle_rows", "inertia_rows", "reaction_rows"]
+__all__ = ["cycle_rows", "inertia_rows", "load_rows", "reaction_rows"]
