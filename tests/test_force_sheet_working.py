@@ -3,6 +3,7 @@ composition: the numbers are ``forces --json``'s, the parts' boxes lie apart ins
 drawing stays in its box, and the sheet is deterministic."""
 
 import json
+import math
 import re
 
 import pytest
@@ -170,3 +171,25 @@ def test_the_power_working_sums_to_the_json_s_balancing_moment(name, capsys):
     assert sum(powers) == pytest.approx(total, rel=1e-3)
     assert _number(lines[-1].split(" = ")[-1].split()[0]) == pytest.approx(data["M_balance_power"], rel=1e-5)
     assert -total / w1 == pytest.approx(data["M_balance_power"], rel=1e-3)
+
+
+@pytest.mark.parametrize("name", ["shaper", "four-bar", "whitworth"])
+def test_the_loads_table_prints_the_json_s_external_loads(name, capsys):
+    """One truth: each external load's row holds ``forces --json``'s point, force and couple."""
+    from graphmethods.sheets.force_tables import load_rows
+
+    data = _json(name, capsys)
+    fa, i = analysed(builtin.case(name), position=3, phi_deg=None, m=12)
+    rows = load_rows(fa, i, "en")
+    assert len(rows) - 1 == len(data["loads"])
+    head = rows[0]
+    for row, load in zip(rows[1:], data["loads"]):
+        cells = dict(zip(head, row))
+        assert row[0].replace("{", "").replace("}", "") == load["label"] and row[1] == str(load["link"])
+        if "force" in load:
+            (x, y), (Fx, Fy) = load["at"], load["force"]
+            exact_values = (("x, m", x), ("y, m", y), ("F_x, N", Fx), ("F_y, N", Fy), ("|F|, N", math.hypot(Fx, Fy)))
+            for key, exact in exact_values:
+                assert _number(cells[key]) == pytest.approx(exact, rel=1e-4, abs=1e-9)
+        else:
+            assert _number(cells["M, N·m"]) == pytest.approx(load["moment"], rel=1e-4)

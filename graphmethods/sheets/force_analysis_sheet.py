@@ -21,7 +21,7 @@ the scheme's.
 >>> [e.name for e in s.elements][1:9]
 ['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia']
 >>> [e.name for e in s.elements][-3:]
-['working-4', 'cycle', 'balancing']
+['working-11', 'cycle', 'balancing']
 """
 
 from __future__ import annotations
