@@ -112,9 +112,10 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
     loads = inertia_working(case, fa, i, nt)             # the inertia loads and M_b by the power balance worked out
-    working = (([(nt.word("forces.inertia_loads"), True)] + [(t, False) for t in loads] if loads else [])
-               + [(nt.word("forces.Mb_power", Mb=nt.sym("forces.M_b")), True)]
-               + [(t, False) for t in power_working(fa, i, nt)])
+    working = ([(nt.word("forces.inertia_loads"), True)] + [(t, False) for t in loads] if loads else [])
+    n_loads = len(working)                          # the power balance's working only where the column has room
+    working += ([(nt.word("forces.Mb_power", Mb=nt.sym("forces.M_b")), True)]
+                + [(t, False) for t in power_working(fa, i, nt)])
     work_mm = size if max([text_width_mm(t, size) for t, _ in working] + [0.0]) <= 190.0 else note_mm
     block = sheet.probe.title_block
     inner = pg.inner_box()
@@ -157,8 +158,8 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    column, y = _best_column(fa, nt, pg, boxes, groups, tables, notes_text, working, cycle=phi_deg is None,
-                             sizes=(size, note_mm, work_mm, gap))
+    column, y = _best_column(fa, nt, pg, boxes, groups, tables, notes_text, (working, working[:n_loads]),
+                             cycle=phi_deg is None, sizes=(size, note_mm, work_mm, gap))
     if phi_deg is None:                             # M_b over the cycle: its table and its graph
         column += _cycle_parts(fa, i, nt, pg, boxes, y, groups, size=size, gap=gap)
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
@@ -169,21 +170,27 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
 
 
 def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], groups: list[Any], tables: tuple[Table, ...],
-                 notes_text: list[str], working: list[tuple[str, bool]], *, cycle: bool,
+                 notes_text: list[str], workings: tuple[list[tuple[str, bool]], ...], *, cycle: bool,
                  sizes: tuple[float, float, float, float]) -> tuple[list[Any], float]:
-    """The result column (:func:`_result_column`) that, with the M_b table under it where that has room
-    (``cycle``), inks the most cells of the sheet (:class:`~graphmethods.sheets.sheet_fill.PartInk`): with
-    or without the external loads' table (the fourth), the working at the values' size or at 3.5 mm."""
+    """The result column (:func:`_result_column`) that ends above the column's bottom and, with the M_b table
+    under it where that has room (``cycle``), inks the most cells of the sheet
+    (:class:`~graphmethods.sheets.sheet_fill.PartInk`): with or without the external loads' table (the
+    fourth), the working at the values' size or at 3.5 mm; the fullest of ``workings`` that fits, the
+    shortest column when none ends above the bottom."""
     size, note_mm, work_mm, gap = sizes
     x, top = boxes["result"][0] + 2.0, boxes["result"][1]
     inks = [b for g, _ in groups if (b := g.bbox()) is not None]
-    best: tuple[int, list[Any], float] | None = None
-    for tabs, w_mm in dict.fromkeys((t, w) for w in (work_mm, note_mm) for t in (tables, tables[:3])):
-        column, y = _result_column(x, top, tabs, notes_text, working, nt, sizes=(size, note_mm, w_mm, gap))
-        table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), inks) if cycle else None
+    best: tuple[tuple[bool, int, float], list[Any], float] | None = None
+    variants = [(k, wk, t, w) for k, wk in enumerate(workings) for w in dict.fromkeys((work_mm, note_mm))
+                for t in dict.fromkeys((tables, tables[:3]))]
+    for k, work, tabs, w_mm in variants:
+        column, y = _result_column(x, top, tabs, notes_text, work, nt, sizes=(size, note_mm, w_mm, gap))
+        inside = y - gap <= boxes["result"][3]
+        table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), inks) if cycle and inside else None
         cells = int(PartInk.of(Scene(pg, tuple(column + ([table] if table is not None else []))), pg).cells.sum())
-        if best is None or cells > best[0]:
-            best = (cells, column, y)
+        score = (inside, -k if inside else 0, float(cells) if inside else -y)
+        if best is None or score > best[0]:
+            best = (score, column, y)
     assert best is not None
     return best[1], best[2]
 
