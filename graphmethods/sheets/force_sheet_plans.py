@@ -178,8 +178,25 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     else:
         drawn, wanted = SF._group_plan(j, pl, pts, i, at, nt, sheet.occ, L)
     els += drawn
-    els += SF._labels(sheet.occ, wanted, L.within(area))
+    els += SF._labels(sheet.occ, _merged(wanted), L.within(area))
     return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
+
+
+def _merged(wanted: list[SF.LabelSpec]) -> list[SF.LabelSpec]:
+    """The labels of sides drawn on one segment (a link's own polygon's R_34 and R_54 when its inertia force
+    is too small to part them) written once, "R_34, R_54", at their common anchor (mm).
+
+    >>> _merged([((0.0, 0.0), "R_{34}", "a"), ((0.5, 0.0), "R_{54}", "b"), ((9.0, 0.0), "F", "c")])
+    [((0.0, 0.0), 'R_{34}, R_{54}', 'a'), ((9.0, 0.0), 'F', 'c')]
+    """
+    out: list[SF.LabelSpec] = []
+    for anchor, text, name in wanted:
+        k = next((k for k, (a, _, _) in enumerate(out) if math.dist(a, anchor) < 2.0), None)
+        if k is None:
+            out.append((anchor, text, name))
+        else:
+            out[k] = (out[k][0], f"{out[k][1]}, {text}", out[k][2])
+    return out
 
 
 def _plan_area(sheet: Sheet, pts: np.ndarray, L: SF.ForceFigureLayout,
