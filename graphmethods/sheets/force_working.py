@@ -180,7 +180,8 @@ def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int =
 
 def power_working(fa: Any, i: int, nt: Notation | str = "en") -> list[str]:
     """The balancing moment from the power balance worked out, ``M_b·ω_1 + ΣF·v·cos α + ΣM·ω = 0``: each
-    force's power (its magnitude, its point's speed, the angle between them), each couple's (M·ω, signed),
+    force's power (its magnitude, its point's speed, the angle α between them: the pressure angle, ϑ in ru),
+    each couple's (M·ω, signed),
     then M_b = −ΣP/ω_1 (the result table's third value; the terms of round-off size left out).
 
     >>> from graphmethods.problems import builtin
@@ -218,7 +219,7 @@ def power_working(fa: Any, i: int, nt: Notation | str = "en") -> list[str]:
     terms = [(t, P) for t, P in terms if SF.round_off_zero(abs(P), big) != 0.0]
     M_b = nt.sym("forces.M_b")
     total = sum(P for _, P in terms)
-    return ([f"{M_b}·ω_{{1}} + ΣF·v·cos α + ΣM·ω = 0"] + [f"{t}{n(P, sig=5)} {W}" for t, P in terms]
+    return ([f"{M_b}·ω_{{1}} + ΣF·v·cos {nt.sym('cam.alpha')} + ΣM·ω = 0"] + [f"{t}{n(P, sig=5)} {W}" for t, P in terms]
             + [f"{M_b} = −ΣP/ω_{{1}} = −({n(total, sig=5)})/{n(w1, sig=5)}"
                f" = {n(float(fa.M_balance_power[i]), sig=6)} {nt.unit('N·m')}"])
 
