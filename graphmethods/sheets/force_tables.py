@@ -84,8 +84,10 @@ def load_rows(fa: Any, i: int, nt: Any = "en") -> list[tuple[str, ...]]:
             F, M = complex(f.F[i]), float(f.M[i])
             if F != 0:
                 at = complex(f.at[i])
-                rows.append((_markup(f.label), k, n(at.real, sig=5), n(at.imag, sig=5), n(F.real, sig=5),
-                             n(F.imag, sig=5), n(abs(F), sig=5), "—"))
+                xy = [round_off_zero(v, abs(at)) for v in (at.real, at.imag)]       # a point on an axis: 0
+                Fx, Fy = (round_off_zero(v, abs(F)) for v in (F.real, F.imag))
+                rows.append((_markup(f.label), k, n(xy[0], sig=5), n(xy[1], sig=5), n(Fx, sig=5), n(Fy, sig=5),
+                             n(abs(F), sig=5), "—"))
             if M != 0:
                 rows.append((_markup(f.label), k, "—", "—", "—", "—", "—", n(M, sig=5)))
     if not rows:
