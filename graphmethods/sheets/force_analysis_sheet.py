@@ -113,7 +113,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
         return force_sheet_a2(case, fa, i, sheet=sheet, pg=pg, nt=nt, phi_deg=phi_deg, m=m, gravity=gravity, name=name)
     size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
     note_mm = lettering(pg).label_mm
-    tables = _tables(fa, i, nt, size, wide=pg.size == "A1")
+    tables = _tables(fa, i, nt, size)
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
     loads = inertia_working(case, fa, i, nt)             # the inertia loads and M_b by the power balance worked out
@@ -248,12 +248,10 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
     return column, y + gap
 
 
-def _tables(fa: Any, i: int, nt: Any, size: float, *, wide: bool) -> tuple[Table, ...]:
-    """The result column's tables at ``size`` mm: M_b three ways, the reactions, the inertia loads and (A1) the
-    external loads; ``wide`` (A1): the components as ``forces`` prints them, else (A2) the magnitudes."""
-    react: list[tuple[str, ...]] = list(reaction_rows(fa, i, nt) if wide else SF._plans_results(fa, i, nt, False)[0])
-    inertia: list[tuple[str, ...]] = list(inertia_rows(fa, i, nt) if wide else _inertia_rows(fa, i, nt))
-    loads = load_rows(fa, i, nt) if wide else []
+def _tables(fa: Any, i: int, nt: Any, size: float) -> tuple[Table, ...]:
+    """The A1 result column's tables at ``size`` mm: M_b three ways, the reactions, the inertia loads and the
+    external loads, with the components as ``forces`` prints them."""
+    react, inertia, loads = reaction_rows(fa, i, nt), inertia_rows(fa, i, nt), load_rows(fa, i, nt)
     return tuple(Table((0.0, 0.0), tuple(rows), align=align[:len(rows[0])], size_mm=size, row_height_mm=2.0 * size)
                  for rows, align in ((_result_rows(fa, i, nt), "lrr"), (react, "crrr"), (inertia, "crrrrr"),
                                      (loads, "cc" + "r" * 6)) if rows)
