@@ -220,10 +220,15 @@ class Occupancy:
             self._index, self._boxes_indexed, self._seg = InkIndex(), 0, np.empty((0, 4))
             self._box, self._seg_ext, self._ext = np.empty((0, 4)), [], np.empty((0, 4))
             return self._indexed()
-        for k in range(len(ext), len(self.segments)):
-            (x0, y0), (x1, y1) = self.segments[k]
-            ext.append((min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)))
-            idx.add_segment(k, x0, y0, x1, y1)
+        first = len(ext)
+        if first < len(self.segments):
+            new = self.segment_array()[first:]
+            x0, y0, x1, y1 = new.T
+            # as min() and max() of two floats (NaN aside, which no free test reaches: the index files it always)
+            lo_x, hi_x = np.where(x1 < x0, x1, x0), np.where(x1 > x0, x1, x0)
+            lo_y, hi_y = np.where(y1 < y0, y1, y0), np.where(y1 > y0, y1, y0)
+            ext.extend(map(tuple, np.column_stack((lo_x, lo_y, hi_x, hi_y)).tolist()))
+            idx.add_segments(first, new)
         for k in range(self._boxes_indexed, len(self.boxes)):
             idx.add_box(k, self.boxes[k])
         self._boxes_indexed = len(self.boxes)
