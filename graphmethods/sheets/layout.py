@@ -251,10 +251,11 @@ class Occupancy:
         x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
         found = idx.segments_near(g)
         if len(found) > _MANY_NEAR:             # many: the same comparisons over the extents' array
-            k = np.fromiter(found, dtype=np.intp, count=len(found))
-            k.sort()
-            lo_x, lo_y, hi_x, hi_y = self._ext_array()[k].T
-            return k[(lo_x <= x1) & (hi_x >= x0) & (lo_y <= y1) & (hi_y >= y0)].tolist()
+            ks = np.fromiter(found, dtype=np.intp, count=len(found))
+            ks.sort()
+            lo_x, lo_y, hi_x, hi_y = self._ext_array()[ks].T
+            near: list[int] = ks[(lo_x <= x1) & (hi_x >= x0) & (lo_y <= y1) & (hi_y >= y0)].tolist()
+            return near
         out = []
         for k in found:
             lo_x, lo_y, hi_x, hi_y = ext[k]

@@ -312,12 +312,19 @@ class Kinds(dict):
     """A table by worksheet kind whose own-module kinds (:data:`OWN_MODULES`) are registered on first use."""
 
     def __missing__(self, kind: Any) -> Any:
-        if kind in OWN_MODULES and load_kind(kind):
-            return self[kind]
+        if kind in OWN_MODULES:
+            load_kind(kind)
+            if dict.__contains__(self, kind):
+                return dict.__getitem__(self, kind)
         raise KeyError(kind)
 
     def __contains__(self, kind: object) -> bool:
-        return dict.__contains__(self, kind) or (kind in OWN_MODULES and load_kind(str(kind)))
+        if dict.__contains__(self, kind):
+            return True
+        if kind in OWN_MODULES:
+            load_kind(str(kind))
+            return dict.__contains__(self, kind)
+        return False
 
 
 def load_kind(kind: str) -> bool:
@@ -334,8 +341,8 @@ def load_kind(kind: str) -> bool:
     return dict.__contains__(CLASSES, kind)
 
 
-CLASSES: dict[str, type[Variant]] = Kinds({"indicator": IndicatorVariant, "step-moment": StepMomentVariant,
-                                            "velocity-plan": PlanVariant, "wittenbauer": EnergyMassVariant})
+CLASSES: dict[str, Any] = Kinds({"indicator": IndicatorVariant, "step-moment": StepMomentVariant,
+                                  "velocity-plan": PlanVariant, "wittenbauer": EnergyMassVariant})
 
 
 def variant_from_dict(d: dict, *, source: str = "<dict>") -> Variant:
