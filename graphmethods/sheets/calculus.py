@@ -343,14 +343,33 @@ def _column_table(rows: Rows, title: str, *, align: str, name: str, title_name: 
     """The right column's table with its title, its bottom at ``bottom``, or lower (down to ``floor``) when its
     title would cover the notes above it (``under``: on a short strip, a slide)."""
     table = _table(rows, align=align, name=name, right=right, bottom=bottom)
-    n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
-    title_top = table.at[1] - 2.0 - (n - 1) * TABLE_MM * 1.35 - ASCENT * (TABLE_MM + 0.2)
-    clear = max((t.at[1] + (DESCENT + markup.SUB_SHIFT) * t.size_mm for t in under if isinstance(t, Text)),
-                default=-math.inf)
+    title_top = _table_title_top(table, title)
+    clear = _text_bottom(under)
     if title_top < clear + 1.5:
         down = min(clear + 1.5 - title_top, max(0.0, floor - bottom))
         table = replace(table, at=(table.at[0], table.at[1] + down))
     return [*_titled_table(table, title, title_name), table]
+
+
+def _table_title_top(table: Table, title: str) -> float:
+    """The top of a column table's title (wrapped to the table's width), mm."""
+    n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
+    return table.at[1] - 2.0 - (n - 1) * TABLE_MM * 1.35 - ASCENT * (TABLE_MM + 0.2)
+
+
+def _text_bottom(texts: Sequence[Element]) -> float:
+    """The lowest descender (a subscript's included) of the texts among ``texts``, mm."""
+    return max((t.at[1] + (DESCENT + markup.SUB_SHIFT) * t.size_mm for t in texts if isinstance(t, Text)),
+               default=-math.inf)
+
+
+def _table_shortfall(rows: Rows, title: str, *, align: str, right: float, bottom: float, under: Sequence[Element],
+                     floor: float) -> float:
+    """How far (mm) the texts ``under`` must rise for :func:`_column_table`'s table and title to clear them
+    (0 when moving the table down to ``floor`` is enough): on a slide, lettered large, the a diagram's
+    formulas stood under the comparison table's title."""
+    table = _table(rows, align=align, name="probe", right=right, bottom=bottom)
+    return max(0.0, _text_bottom(under) + 1.5 - _table_title_top(table, title) - max(0.0, floor - bottom))
 
 
 def _fmt(nt: Notation, value: float, sig: int = 3) -> str:
@@ -570,12 +589,18 @@ def _kinematic_column(ks: _KinematicScales, bands: tuple[_Band, _Band, _Band], x
                                                       f"{nt.number(sd.v.mu)} {s_v.unit}/{mm}",
                                                       f"H_1 = {nt.number(sd.v.H_mm)} {mm} ({how[0]})"],
                             "formula-v", occ)
-    elements += _side_block(rx, bands[2].top + drop, [f"{s_a.symbol} = {s_v.symbol}/({tname}·H_2) = "
-                                                      f"{nt.number(sd.a.mu)} {s_a.unit}/{mm}",
-                                                      f"H_2 = {nt.number(sd.a.H_mm)} {mm} ({how[1]})"],
-                            "formula-a", occ)
-    rows = _comparison_rows(nt, sd, sym_v, sym_a)
-    return elements + _column_table(rows, nt.word("calculus.comparison"), align="llrr", name="comparison-table",
+    a_lines = [f"{s_a.symbol} = {s_v.symbol}/({tname}·H_2) = {nt.number(sd.a.mu)} {s_a.unit}/{mm}",
+               f"H_2 = {nt.number(sd.a.H_mm)} {mm} ({how[1]})"]
+    rows, heading = _comparison_rows(nt, sd, sym_v, sym_a), nt.word("calculus.comparison")
+    at_a = bands[2].top + drop
+    probe = [Text((rx, at_a + k * (TEXT_MM * 1.45)), t, size_mm=TEXT_MM if k == 0 else SMALL_MM + 0.2)
+             for k, t in enumerate(a_lines)]
+    lift = _table_shortfall(rows, heading, align="llrr", right=x1, bottom=bands[2].top + ks.strip_mm,
+                            under=probe, floor=floor)
+    if lift > 0.0:                                  # the a formulas rise into the gap above their strip
+        at_a -= min(lift, max(0.0, at_a - _text_bottom(elements) - 1.5 - ASCENT * TEXT_MM))
+    elements += _side_block(rx, at_a, a_lines, "formula-a", occ)
+    return elements + _column_table(rows, heading, align="llrr", name="comparison-table",
                                     title_name="comparison-title", right=x1, bottom=bands[2].top + ks.strip_mm,
                                     under=elements, floor=floor)
 

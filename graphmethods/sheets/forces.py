@@ -40,6 +40,7 @@ from graphmethods.scene.scale import pick_scale
 from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
+from graphmethods.sheets.force_slides import column_texts as _column, fills_slide, plan_caption, slide_column, wrapped
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -140,6 +141,10 @@ class ForceFigureLayout:
     reach_mm: float = 4.0           # labels may leave the drawing area by this much
     reach_top_mm: float = 4.0       # ... and upward by this much
     text_pitch_mm: float = 6.0      # line pitch of the text column
+    text_mm: float = TEXT_MM        # the text column's size, and on a slide (force_slides.slide_column) its
+    column_share: float | None = None   # statements wrapped to this share of the width, this much more between
+    paragraph_mm: float = 0.0       # two of them, and the scales fitted together as on a course sheet
+    fitted: bool = False
     head_mm: float = 2.5            # arrowheads
     min_mm: float = 0.3             # a shorter vector is not drawn
     largest_force_mm: float = 30.0  # the largest force's length (lever, scheme)
@@ -202,10 +207,11 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
     InputError
         When the drawing fits neither (a given scale too small): the error of the column beside it.
     """
-    split, beside = _split(sheet, max(markup.text_width_mm(t, TEXT_MM) for t in texts), L)
     x0, _, x1, _ = sheet.box
-    above = (x0 + L.left_mm, sheet.top + 2.0 + len(texts) * L.text_pitch_mm + L.reach_top_mm, x1 - L.left_mm,
-             sheet.caption_y - L.bottom_mm)
+    names, texts = wrapped(texts, L, x1 - x0)
+    split, beside = _split(sheet, max(markup.text_width_mm(t, L.text_mm) for t in texts), L)
+    tall = _column(texts, 0.0, 0.0, L, names=names)[-1].at[1] + L.text_pitch_mm + L.reach_top_mm   # n pitches
+    above = (x0 + L.left_mm, sheet.top + 2.0 + tall, x1 - L.left_mm, sheet.caption_y - L.bottom_mm)
     options: list[tuple[float, int, Box, tuple[float, float], Scale, ToMm]] = []
     error: InputError | None = None
     for n_o, (area, corner) in enumerate(((beside, (split + 2.0, sheet.top + 2.0)),
@@ -221,13 +227,7 @@ def _arranged(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout,
     if not options:
         raise error or InputError("the figure's texts leave no room for its drawing on this page; give a larger page")
     _, _, area, (tx, ty), s_l, at = min(options, key=lambda o: (o[0], o[1]))
-    return area, _column(texts, tx, ty, L), s_l, at
-
-
-def _column(texts: Sequence[str], x: float, y: float, L: ForceFigureLayout, prefix: str = "text") -> list[Element]:
-    """Lines of text one under the other from (x, y), named ``prefix-0``, ``prefix-1``, …"""
-    return [Text((x, y + t_i * L.text_pitch_mm), t, size_mm=TEXT_MM, name=f"{prefix}-{t_i}")
-            for t_i, t in enumerate(texts)]
+    return area, list[Element](_column(texts, tx, ty, L, names=names)), s_l, at
 
 
 def _finish(sheet: Sheet, els: list[Element], scales: tuple[Scale, ...], legend: str, name: str) -> Scene:
@@ -262,7 +262,7 @@ def _scaled(sheet: Sheet, texts: Sequence[str], L: ForceFigureLayout, cloud: np.
     ``L.margin_mm`` round it."""
     from graphmethods.sheets.force_fit import fit_forces
 
-    if _on_course(page, mu_l, mu_F):
+    if _on_course(page, mu_l, mu_F) or (L.fitted and mu_l is None and mu_F is None):
         picked: dict[Box, Scale] = {}
 
         def fit(box: Box) -> tuple[Scale, ToMm]:
@@ -489,8 +489,8 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
         top = area[1] + (j // cols) * (ph + L.row_gap_mm)
         cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
                else nt.word("forces.group", g=pl.group))
-        els.append(Text((left, top - L.caption_rise_mm), cap, size_mm=TEXT_MM, name=f"caption-{j}"))
         drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, top, pw, ph), s_F), nt, sheet.occ, L)
+        els.append(plan_caption(cap, (left, top, pw), drawn, L, f"caption-{j}"))
         els += drawn
         labels += wanted
     els += _labels(sheet.occ, labels, L.within(area))
@@ -524,7 +524,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
     """
     from graphmethods.scene import Point
 
-    L = layout or LEVER_LAYOUT
+    L = slide_column(layout or LEVER_LAYOUT, page) if fills_slide(page, mu_l, mu_F) else layout or LEVER_LAYOUT
     nt = get_notation(notation)
     fa, i = analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
     mo, lev = fa.motion, fa.lever

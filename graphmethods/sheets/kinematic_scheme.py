@@ -177,9 +177,12 @@ def _vertical_pads(g: _SchemeGeometry, lay: SchemeLayout) -> tuple[float, float]
     return lay.pad_top_mm, lay.pad_bottom_mm
 
 
-def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: SchemeLayout) -> tuple[Scale, Frame]:
-    """Step 2: μ_l (given, checked, or picked to fill the sheet) and the frame centring the drawing."""
+def _scheme_scale(g: _SchemeGeometry, sheet: Sheet, mu_l, unit_l: str, lay: SchemeLayout,
+                  right: float | None = None) -> tuple[Scale, Frame]:
+    """Step 2: μ_l (given, checked, or picked to fill the sheet left of ``right``) and the frame centring the
+    drawing."""
     x0, _, x1, _ = sheet.box
+    x1 = x1 if right is None else right
 
     def coords(p, names, idx=None):
         return [p.coords[j] if idx is None else p.coords[j][idx] for j in names]
@@ -510,12 +513,16 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     g = _scheme_geometry(lk.positions, thick, trajectories)
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.scheme", m=len(g.drawn)),
                   problem=lk.problem if problem is None else problem, title_block=title_block)
-    s_l, f = _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay)
+    facts = _scheme_facts(g.pos, g.ext, nt)
+    column = slide_facts(facts + _link_lengths(g, nt), sheet, page)   # a slide's column right of the drawing
+    s_l, f = _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay,
+                           right=min((e.at[0] - SLIDE_FACTS_GAP_MM for e in column), default=None))
 
     def P(xy) -> tuple[float, float]:
         return f.pt(xy[0], xy[1])
 
     occ = sheet.occ
+    occ.register(*column)
     thin_els, thick_els, link_segments = _scheme_links(g, f)
     occ.register(*thin_els, *thick_els)
     symbol_els = _scheme_grounds(g, P, link_segments, lay)
@@ -531,15 +538,59 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders) + [rot_label(occ, leaders)]
     values = [label_bbox(p) for e in dims + labels for p in e.primitives() if isinstance(p, Label)]
     thin_els = _broken_lines(thin_els, values)
-    facts = _scheme_facts(g.pos, g.ext, nt)
-    summary = [Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts), size_mm=TEXT_MM,
-                    name="summary")] if facts else []
+    summary = column or ([Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts),
+                               size_mm=TEXT_MM, name="summary")] if facts else [])
     legend = lk.speed_text(nt) if lk.n_rpm is not None else ""
     scales = (s_l,)
     elements = ([sheet.header()] + thin_els + symbol_els + dims + thick_els + top_els + marks + [rot] + leaders
                 + labels + numbers + summary)
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
+
+
+#: a slide's facts column: its share of the width, and the gap left of it, mm
+SLIDE_FACTS_SHARE, SLIDE_FACTS_GAP_MM = 0.28, 8.0
+
+
+def slide_facts(facts: Sequence[str], sheet: Sheet, page: Any) -> list[Text]:
+    """On a slide, the scheme's facts (extreme positions, θ, K, the swing, the lengths) as a column at the right,
+    lettered as the slide's values (5 mm once enlarged) and wrapped to :data:`SLIDE_FACTS_SHARE` of the width,
+    one paragraph each, all named ``summary``; elsewhere none (the sheet writes them in a line over its captions).
+    A tall linkage (the shaper, a two-slider) filled a third of a slide's width with its facts in one 3 mm line
+    under it."""
+    from graphmethods.scene.markup import text_width_mm
+    from graphmethods.scene.steps import wrap
+    from graphmethods.sheets.engine.lettering import is_slide, lettering
+
+    if page is None or not is_slide(page) or not facts:
+        return []
+    size = lettering("SLIDE").value_mm / float(getattr(page, "enlarged", 1.0))
+    x0, _, x1, _ = sheet.box
+    width = SLIDE_FACTS_SHARE * (x1 - x0)
+    left = x1 - max(text_width_mm(line, size) for f in facts for line in wrap(f, size, width))
+    paragraphs = [wrap(f, size, width) for f in facts]
+    lines = sum(len(p) for p in paragraphs)
+    # the paragraphs spread down the drawing's height (from the title to over the captions), a line to two lines
+    # apart
+    room = sheet.caption_y - SCHEME_LAYOUT.caption_room_mm - (sheet.top + 2.0 + size)
+    extra = min(4.0 * size, max(2.5 * size, (room - 1.5 * size * (lines - len(paragraphs)))
+                                / max(len(paragraphs) - 1, 1)))
+    out: list[Text] = []
+    y = sheet.top + 2.0 + size
+    for p in paragraphs:
+        for line in p:
+            out.append(Text((left, y), line, size_mm=size, name="summary"))
+            y += 1.5 * size
+        y += extra - 1.5 * size                         # the next paragraph starts ``extra`` under this one's last line
+    return out
+
+
+def _link_lengths(g: _SchemeGeometry, nt) -> list[str]:
+    """The lengths the scheme is drawn from, one per link between two joints (l_{O1A} = 0.11 m), in the
+    notation's numbers."""
+    c = g.pos.coords
+    return [f"l_{{{name}}} = {nt.number(float(np.hypot(*(c[a][0] - c[b][0]))), sig=4)} {nt.unit('m')}"
+            for name, (a, b) in g.mech.link_joints.items()]
 
 
 def _broken_lines(els: list[Element], boxes: list) -> list[Element]:

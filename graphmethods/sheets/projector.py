@@ -7,7 +7,8 @@ does the same for any one figure; :func:`layout_faults` says what leaves the sli
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
@@ -43,7 +44,7 @@ def smallest_text_mm(bu: BuildUp) -> float:
     return min(sizes + [bu.caption_mm])
 
 
-def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
+def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) -> BuildUp:
     """Steps on a 16:9 slide with text sized for a projector.
 
     The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
@@ -55,13 +56,30 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
     still fits. The scales and millimetres written stay those of the drawing at 1 : 1; a note on
     the slide says so.
 
+    A dense figure (a shaper's plans, its lever) holds its layout only at 1.0…1.2 : 1, so its paper
+    lettering (2.8 mm line labels, 3.2 mm equations) came out at 2.8…3.4 mm on the slide. With
+    ``lettered`` the figure is built on each design page lettered for the slide
+    (:func:`slide_lettered`: at least 3.5/z mm, so 3.5 mm and up once drawn z : 1), and its label
+    placement and layout work with those sizes: no slide text is below the slide's minimum, whatever z.
+
     Parameters
     ----------
     make : callable
         Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
+    lettered : bool
+        Build every design page :func:`slide_lettered` (default: the figure's own sizes).
     """
     bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
-    reference = make(SLIDE_PAGE)               # the slide at 1 : 1 (its error, if any, is the answer)
+
+    def build_on(page: Page) -> BuildUp:
+        if not lettered:
+            return make(page)
+        with slide_lettered(page):
+            return make(page)
+
+    # the slide at 1 : 1 in the figure's own lettering (its error, if any, is the answer): its smallest text
+    # says how much enlargement the projector needs, its μ how large the construction is drawn
+    reference = make(SLIDE_PAGE)
     drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
 
     def holds(bu: BuildUp, z: float) -> bool:
@@ -75,7 +93,7 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
 
     def attempt(z: float) -> BuildUp | None:
         try:
-            bu = make(design_slide(z))
+            bu = build_on(design_slide(z))
         except InputError:
             return None
         return bu if holds(bu, z) else None
@@ -93,7 +111,31 @@ def for_projector(make: Callable[[Page], BuildUp]) -> BuildUp:
             best, hi = found, mid - 1
         else:
             lo = mid + 1
-    return _on_slide(best if best is not None else reference)
+    if best is None:                                    # too dense to enlarge: at 1 : 1, lettered
+        best = build_on(SLIDE_PAGE) if lettered else reference
+    return _on_slide(best)
+
+
+@contextmanager
+def slide_lettered(page: Page) -> Iterator[float]:
+    """Build figures lettered for a slide laid out on ``page`` (the slide or a :class:`DesignPage` of it,
+    drawn z : 1): every text made inside is at least the slide's minimum divided by z, mm (yielded).
+
+    >>> from graphmethods.scene import Text
+    >>> with slide_lettered(design_slide(1.4)) as least:
+    ...     t = Text((0, 0), "B", size_mm=2.0)
+    >>> round(least, 3), round(t.size_mm * 1.4, 3)
+    (2.5, 3.5)
+    """
+    from graphmethods.scene.markup import MIN_TEXT_MM
+    from graphmethods.sheets.engine.lettering import lettering
+
+    least = lettering("SLIDE").minimum_mm / float(getattr(page, "enlarged", 1.0))
+    token = MIN_TEXT_MM.set(max(MIN_TEXT_MM.get(), least))
+    try:
+        yield least
+    finally:
+        MIN_TEXT_MM.reset(token)
 
 
 def layout_faults(bu: BuildUp) -> list[str]:

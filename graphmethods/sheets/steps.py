@@ -601,6 +601,11 @@ FIGURES: dict[str, tuple[Callable, str]] = {
     "inversion": (_inversion_steps, "cam"),
 }
 
+#: the build-ups whose slides are built lettered for the slide (3.5 mm and up once enlarged:
+#: :func:`~graphmethods.sheets.projector.slide_lettered`); the others keep their figure's sizes
+SLIDE_LETTERED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load",
+                  "kinematic-scheme", "kinematic-diagrams")
+
 #: the figures drawn in one position (``--position K``)
 POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
 
@@ -733,5 +738,5 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             def make(pg):
                 return fn(obj, notation=notation, page=pg)
     if isinstance(page, str) and page.strip().lower() == "slide":
-        return for_projector(make)
+        return for_projector(make, lettered=key in SLIDE_LETTERED)
     return make(page)

@@ -141,7 +141,8 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     rows_probe = ((nt.word("dynamics.plan_turned"),
                    f"{nt.sym('dynamics.omega_1')} = {value_text(nt, g.omega_1, 'rad/s')}"),
                   (nt.word("dynamics.by_lever"), f"= {nb(g.F_abs)}·00.00·{nb(1.0e-4)}/{nb(g.omega_1)}"))
-    table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=TEXT_MM).width_mm
+    text_mm, row_mm = result_lettering(page, lay)
+    table_w = Table((0.0, 0.0), rows_probe, header_rows=0, align="ll", size_mm=text_mm).width_mm
     box = (x0 + lay.left_mm, sheet.top + lay.top_mm, x1 - table_w - lay.table_gap_mm, sheet.caption_y - lay.bottom_mm)
     s_v = _lever_scale(g, mu_v, box, f_len, nt)
     img, tip, foot, lo, hi = g.on_paper(s_v, f_len)
@@ -158,9 +159,9 @@ def zhukovsky_lever(study, *, position: int | None = None, mu_v=None, mu_F=None,
     # the result, worked out on the drawing, beside the power method's value
     M_lever = g.F_abs * h_mm * s_v.per_mm / g.omega_1
     rows = _lever_rows(g, nt, F_text, h_mm, s_v, M_lever)
-    probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM, row_height_mm=lay.row_mm)
-    table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=TEXT_MM,
-                  row_height_mm=lay.row_mm, name="result")
+    probe = Table((0.0, 0.0), rows, header_rows=0, align="ll", size_mm=text_mm, row_height_mm=row_mm)
+    table = Table((x1 - probe.width_mm, sheet.top + 4.0), rows, header_rows=0, align="ll", size_mm=text_mm,
+                  row_height_mm=row_mm, name="result")
     occ.add_box((table.at[0], table.at[1], table.at[0] + table.width_mm, table.at[1] + table.height_mm))
     els += [table]
     scales = (s_v, s_F)
@@ -184,6 +185,22 @@ class ZhukovskyLayout:
 
 
 LEVER = ZhukovskyLayout()
+
+
+def result_lettering(page: object, lay: ZhukovskyLayout = LEVER) -> tuple[float, float]:
+    """The result table's text size and row height, mm: the sheet's, or on a slide its values' (5 mm once the
+    slide's design page is enlarged; at 3.2 mm the table filled a tenth of a slide and left half of it empty).
+
+    >>> from graphmethods.sheets.projector import design_slide
+    >>> result_lettering(None), result_lettering(design_slide(1.25))
+    ((3.2, 7.0), (4.0, 8.75))
+    """
+    from graphmethods.sheets.engine.lettering import is_slide, lettering
+
+    if page is None or not is_slide(page):
+        return TEXT_MM, lay.row_mm
+    size = lettering("SLIDE").value_mm / float(getattr(page, "enlarged", 1.0))
+    return size, lay.row_mm * size / TEXT_MM
 
 
 def _lever_position(study: Study, position: int | None) -> int:
@@ -357,8 +374,16 @@ def _lever_names(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[s
         if point is not None and text == "p":
             continue
         q = _at(p_page, np.zeros(2)) if point is None else _at(p_page, img[point])
-        lab = occ.place_label(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=within)
+        lab = occ.first_free(q, text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), (1.0, 3.0, 5.5), TEXT_MM + 0.5,
+                             within)
+        leader = None
+        if lab is None:                         # nothing free beside it (a slide's 5 mm names): off, with a leader
+            lab, leader = occ.place_label_with_leader(q, text, size_mm=TEXT_MM + 0.5, gap_mm=1.0, within=within)
+        else:
+            occ.add_label(lab)
         labels.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"name-{text}"))
+        if leader is not None:
+            labels.append(Line(leader[0], leader[1], style=THIN, name=f"name-{text}-leader"))
     lab, leader = occ.place_label_with_leader(force.mid, F_text, ("n", "s", "ne", "se", "nw", "sw", "e", "w"),
                                               size_mm=TEXT_MM, gap_mm=1.5, within=within)
     labels.append(Text((lab.x, lab.y), F_text, size_mm=TEXT_MM, anchor=lab.anchor, name="label-F"))
