@@ -85,3 +85,7 @@ KNOWN_DYNAMICS: dict[tuple[str, str, str], str] = {
 #: subject "KIND:SEED:N" with page "student" or "key", or "PROBLEM ANSWERS-FILE" with page "overlay"
 KNOWN_WORKSHEETS: dict[tuple[str, str, str], str] = {
 }
+
+#: the A2 sheets (tests/test_figure_quality_a2.py): (problem, sheet, language) -> what fails
+KNOWN_A2: dict[tuple[str, str, str], str] = {
+}

@@ -83,6 +83,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     gravity : bool
         Add the weights (g = 9.81 m/s² along −y).
     page : {"A1", "A2"} or Page
+        On A2 the sheet is composed by :func:`~graphmethods.sheets.force_sheet_a2.force_sheet_a2`.
     notation : {"en", "ru", "zh"}
 
     Returns
@@ -104,6 +105,10 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
+    if pg.size == "A2":                             # half of A1: its own composition, without the plan of accelerations
+        from graphmethods.sheets.force_sheet_a2 import force_sheet_a2
+
+        return force_sheet_a2(case, fa, i, sheet=sheet, pg=pg, nt=nt, phi_deg=phi_deg, m=m, gravity=gravity, name=name)
     size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
     note_mm = lettering(pg).label_mm
     rows = _result_rows(fa, i, nt)

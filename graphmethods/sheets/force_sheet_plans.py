@@ -107,10 +107,11 @@ def found_line(lbl: str, R: float, s_F: Scale, nt: Notation) -> str:
 
 
 def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
-               phi_deg: float | None = None) -> Scene:
+               phi_deg: float | None = None, working: bool = True) -> Scene:
     """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
     region of the sheet): its caption, its vector equation, the polygon at the largest convenient μ_F
-    that fills the panel, the scale under it.
+    that fills the panel, the scale under it; with ``working`` (when the panel has room), the moment
+    equations and the lengths laid off above them.
 
     Raises
     ------
@@ -138,7 +139,8 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
         return FW.drawn_lengths(sides, s_F, nt) if working else []
 
     m_pitch = 1.8 * let.label_mm
-    for working in (True, False):                               # the working when the panel has room for it
+    tries = (True, False) if working else (False,)
+    for working in tries:                                       # the working when the panel has room for it
         moments = FW.moment_working(fa, i, j, nt) if working else []    # R^τ from the moments, before the plan
         n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0)) if working else 0
         m_h = (len(moments) + n_known) * m_pitch
