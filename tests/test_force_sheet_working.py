@@ -3,6 +3,7 @@ composition: the numbers are ``forces --json``'s, the parts' boxes lie apart ins
 drawing stays in its box, and the sheet is deterministic."""
 
 import json
+import math
 import re
 
 import pytest
@@ -10,7 +11,7 @@ import pytest
 from graphmethods import cli
 from graphmethods.problems import builtin
 from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet, force_sheet_boxes, sheet_page
-from graphmethods.sheets.force_working import inertia_working, moment_working, working_lines
+from graphmethods.sheets.force_working import inertia_working, moment_working, power_working, working_lines
 from graphmethods.sheets.forces import analysed
 
 try:
@@ -79,13 +80,14 @@ def test_each_moment_equation_closes_and_finds_the_json_s_reaction(name, capsys)
 def test_the_sheet_writes_its_working_and_each_plan_its_moment_equations():
     case = builtin.case("shaper")
     s = force_analysis_sheet(case, position=3, notation="ru")
-    texts = [e.text for e in _walk(s.elements) if e.name.startswith("working-")]
+    texts = [e.text for e in _walk(s.elements) if e.name.startswith("working-") and not e.bold]
     fa, i = analysed(case, position=3, phi_deg=None, m=12)
-    assert texts[1:] == inertia_working(case, fa, i, "ru")
+    loads = inertia_working(case, fa, i, "ru")
+    assert texts == loads + power_working(fa, i, "ru")
     moments = [e.text for e in _walk(s.element("plans").elements)
                if e.name.startswith("moment-") and hasattr(e, "text")]
     assert moments == [t for j in range(len(fa.plans)) for t in moment_working(fa, i, j, "ru")]
-    assert [t for t, head in working_lines(case, fa, i, "ru") if not head][:len(texts) - 1] == texts[1:]
+    assert [t for t, head in working_lines(case, fa, i, "ru") if not head][:len(texts)] == texts
 
 
 def _overlap(a, b):
@@ -119,3 +121,75 @@ def test_the_force_sheet_is_deterministic():
     a = to_string(force_analysis_sheet(case, position=3, notation="zh"))
     b = to_string(force_analysis_sheet(case, position=3, notation="zh"))
     assert a == b
+
+
+@pytest.mark.parametrize("name, lang", [("shaper", "en"), ("press", "ru"), ("triad-six-bar", "zh")])
+def test_the_sheet_s_tables_print_the_json_s_reactions_and_inertia_loads(name, lang, capsys):
+    """One truth: the reactions' table (R_x, R_y, |R|) and the inertia loads' (F_иx, F_иy, |F_и|, M_и, h) hold
+    ``forces --json``'s numbers, round-off printed as 0."""
+    data = _json(name, capsys)
+    s = force_analysis_sheet(builtin.case(name), position=3, notation=lang)
+    reactions = s.element("reactions").rows
+    assert len(reactions) - 1 == len(data["reactions"])
+    big = max(abs(complex(*v)) for v in data["reactions"].values())
+    for row in reactions[1:]:
+        key = "R_" + row[0].split("{")[1].rstrip("}")
+        Rx, Ry = data["reactions"][key]
+        for printed, exact in zip(row[1:], (Rx, Ry, abs(complex(Rx, Ry)))):
+            assert _number(printed) == pytest.approx(exact, rel=1e-4, abs=1e-9 * big)
+    loads = s.element("inertia").rows
+    assert [r[0] for r in loads[1:]] == list(data["links"])
+    for row in loads[1:]:
+        link = data["links"][row[0]]
+        Fx, Fy = link["F_i"]
+        for printed, exact in zip(row[1:5], (Fx, Fy, abs(complex(Fx, Fy)), link["M_i"])):
+            assert _number(printed) == pytest.approx(exact, rel=1e-4, abs=1e-6)
+        assert _number(row[5]) == pytest.approx(link["h"] or 0.0, rel=1e-4, abs=1e-9)
+
+
+def test_the_cycle_table_prints_each_position_s_balancing_moment(capsys):
+    """The M_b table's row k is ``forces --position k --json``'s M_balance (from the plans) and the lever's."""
+    s = force_analysis_sheet(builtin.case("shaper"), position=3, notation="en")
+    rows = s.element("cycle").rows
+    assert [r[0] for r in rows[2:]] == [str(k) for k in range(13)]
+    for k in (0, 3, 8):
+        assert cli.main(["forces", "shaper", "--position", str(k), "--json"]) == 0
+        data = json.loads(capsys.readouterr().out)
+        assert _number(rows[2 + k][2]) == pytest.approx(data["M_balance"], rel=1e-4, abs=1e-6)
+        assert _number(rows[2 + k][3]) == pytest.approx(data["M_balance_lever"], rel=1e-4, abs=1e-6)
+
+
+@pytest.mark.parametrize("name", ["press", "shaper", "four-bar", "scotch-yoke"])
+def test_the_power_working_sums_to_the_json_s_balancing_moment(name, capsys):
+    """M_b by the power balance: the printed powers sum to −M_b·ω₁ (to their digits) and M_b is the json's."""
+    data = _json(name, capsys)
+    fa, i = analysed(builtin.case(name), position=3, phi_deg=None, m=12)
+    lines = power_working(fa, i, "en")
+    powers = [_number(t.split(" = ")[-1].split()[0]) for t in lines[1:-1]]
+    total = _number(lines[-1].split("−(")[1].split(")")[0])
+    w1 = _number(lines[-1].split(")/")[1].split()[0])
+    assert sum(powers) == pytest.approx(total, rel=1e-3)
+    assert _number(lines[-1].split(" = ")[-1].split()[0]) == pytest.approx(data["M_balance_power"], rel=1e-5)
+    assert -total / w1 == pytest.approx(data["M_balance_power"], rel=1e-3)
+
+
+@pytest.mark.parametrize("name", ["shaper", "four-bar", "whitworth"])
+def test_the_loads_table_prints_the_json_s_external_loads(name, capsys):
+    """One truth: each external load's row holds ``forces --json``'s point, force and couple."""
+    from graphmethods.sheets.force_tables import load_rows
+
+    data = _json(name, capsys)
+    fa, i = analysed(builtin.case(name), position=3, phi_deg=None, m=12)
+    rows = load_rows(fa, i, "en")
+    assert len(rows) - 1 == len(data["loads"])
+    head = rows[0]
+    for row, load in zip(rows[1:], data["loads"]):
+        cells = dict(zip(head, row))
+        assert row[0].replace("{", "").replace("}", "") == load["label"] and row[1] == str(load["link"])
+        if "force" in load:
+            (x, y), (Fx, Fy) = load["at"], load["force"]
+            exact_values = (("x, m", x), ("y, m", y), ("F_x, N", Fx), ("F_y, N", Fy), ("|F|, N", math.hypot(Fx, Fy)))
+            for key, exact in exact_values:
+                assert _number(cells[key]) == pytest.approx(exact, rel=1e-4, abs=1e-9)
+        else:
+            assert _number(cells["M, N·m"]) == pytest.approx(load["moment"], rel=1e-4)

@@ -133,3 +133,29 @@ def test_the_kinematic_sheet_judges_its_division_by_the_measures_count(problem, 
     q = measure(scene)
     assert seen and seen[-1] == q.empty_share <= 0.5
     assert not q.crossed and not q.overlaps
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(*[st.sampled_from([0.0, 25.5, 45.5, 830.0, 1e6, -1e6, np.inf, -np.inf, np.nan])
+                            | st.floats(-50, 900) for _ in range(4)]), max_size=12),
+       st.lists(st.tuples(*[st.sampled_from([25.5, 65.5, np.inf, np.nan]) | st.floats(-50, 900)
+                            for _ in range(4)]), max_size=6))
+def test_ink_cells_count_odd_ink_as_every_pair(segs, boxes):
+    """Ink far off the sheet, infinite or not a number (no grid files it), and boxes given either way round
+    are counted as testing every pair counts them."""
+    seg = np.array(segs, dtype=float).reshape(-1, 4)
+    b = np.array(boxes, dtype=float).reshape(-1, 4)
+    with np.errstate(all="ignore"):
+        assert (ink_cells(seg, b, INNER) == _every_pair_cells(seg, b, INNER)).all()
+
+
+def test_short_ink_inside_a_cell_marks_that_cell_alone():
+    ox, oy, nx, ny = cell_grid(INNER)
+    x, y = ox + 3 * CELL_MM, oy + 5 * CELL_MM              # cell (3, 5)'s corner
+    seg = np.array([[x + 1.0, y + 1.0, x + 19.0, y + 19.0], [x + 0.0005, y + 4.0, x + 5.0, y + 4.0]])
+    got = ink_cells(seg[:1], np.array([[x + 2.0, y + 2.0, x + 8.0, y + 5.0]]), INNER)
+    assert got.sum() == 1 and got[3, 5]
+    near_edge = ink_cells(seg[1:], np.empty((0, 4)), INNER)    # 0.5 µm from the edge: tested, still one cell
+    assert near_edge.sum() == 1 and near_edge[3, 5]
+    on_edge = ink_cells(np.array([[x, y + 4.0, x + 5.0, y + 4.0]]), np.empty((0, 4)), INNER)
+    assert on_edge.sum() == 2 and on_edge[2, 5] and on_edge[3, 5]

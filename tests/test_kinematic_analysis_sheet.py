@@ -158,3 +158,28 @@ def test_kinematics_sheet_bad_input_is_one_line_exit_2_and_no_file(run, tmp_path
     rc, _, err = run("press", *argv)
     assert rc == 2 and words in err and len(err.strip().splitlines()) == 1
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("problem, lang, draws", [("press", "ru", 1), ("press", "en", 2)])
+def test_the_division_search_draws_a_second_division_only_when_predicted_clearly_fuller(problem, lang, draws,
+                                                                                       monkeypatch):
+    """The press in ru: no division is predicted fuller than the probe by more than 1 % of the cells, so each
+    part is drawn once; in en one is (by 19 cells: a taller upper row, a wider scheme), drawn, and kept (it
+    fills 4 cells more)."""
+    import importlib
+
+    kas = importlib.import_module("graphmethods.sheets.kinematic_analysis_sheet")
+    drawn: list[str] = []
+    original = kas._Parts.draw
+
+    def counted(self, fn, name, box, **kw):
+        if not self.drawn(name, box):
+            drawn.append(name)
+        return original(self, fn, name, box, **kw)
+
+    monkeypatch.setattr(kas._Parts, "draw", counted)
+    s = kinematic_analysis_sheet(builtin.case(problem), notation=lang)
+    assert [drawn.count(n) for n in ("scheme", "velocity-plans", "acceleration-plan-1", "kinematic-diagrams")] == [
+        draws] * 4
+    assert [e.name for e in s.elements][1:] == ["scheme", "velocity-plans", "acceleration-plan-1",
+                                               "acceleration-plan-9", "kinematic-diagrams"]

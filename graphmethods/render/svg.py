@@ -26,7 +26,7 @@ from graphmethods.render.base import draw
 from graphmethods.render.files import write_atomic
 from graphmethods.scene.elements import label_bbox
 from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm
-from graphmethods.scene.numbers import format_mm as fmt
+from graphmethods.scene.numbers import format_mm as fmt, format_points
 from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
 
@@ -123,12 +123,11 @@ class SvgRenderer:
         return attrs
 
     def path(self, points: tuple[XY, ...], style: Style, closed: bool) -> None:
-        pts = " ".join(f"{fmt(x)},{fmt(y)}" for x, y in points)
+        pts = format_points(points)
         self._add(_tag("polygon" if closed else "polyline", self._stroke({"points": pts}, style, filled=False)))
 
     def polygon(self, points: tuple[XY, ...], style: Style) -> None:
-        pts = " ".join(f"{fmt(x)},{fmt(y)}" for x, y in points)
-        self._add(_tag("polygon", self._stroke({"points": pts}, style, filled=True)))
+        self._add(_tag("polygon", self._stroke({"points": format_points(points)}, style, filled=True)))
 
     def circle(self, cx: float, cy: float, r: float, style: Style) -> None:
         self._add(_tag("circle", self._stroke({"cx": fmt(cx), "cy": fmt(cy), "r": fmt(r)}, style, filled=True)))

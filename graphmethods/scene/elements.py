@@ -359,7 +359,15 @@ class Region(Element):
         return shapely.make_valid(SPolygon(self.outline)).buffer(0)
 
     def hatch_segments(self) -> list[tuple[XY, XY]]:
-        """The hatching as explicit segments ``((x0, y0), (x1, y1))`` in mm, clipped to the region."""
+        """The hatching as explicit segments ``((x0, y0), (x1, y1))`` in mm, clipped to the region (found once
+        per region: a figure registers a region's ink for label placement, then draws it)."""
+        found = self.__dict__.get("_hatch")
+        if found is None:
+            found = tuple(self._hatch_segments())
+            object.__setattr__(self, "_hatch", found)
+        return list(found)
+
+    def _hatch_segments(self) -> list[tuple[XY, XY]]:
         import shapely
         from shapely.geometry import box
 

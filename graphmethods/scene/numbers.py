@@ -14,7 +14,7 @@ minus sign and the decimal separator of the notation profile.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 from graphmethods.errors import InputError
 from graphmethods.units import is_finite
@@ -70,6 +70,20 @@ def format_mm(x: float) -> str:
     if len(_MM_TEXT) < _MM_TEXT_MAX:
         _MM_TEXT[x] = s
     return s
+
+
+def format_points(points: Sequence[tuple[float, float]]) -> str:
+    """Points as text, ``x,y`` pairs spaced, each number by :func:`format_mm` (an SVG ``points`` attribute;
+    the numbers written before are taken from its memo directly).
+
+    >>> format_points(((0.0, 1.5), (2.0004, -0.0001)))
+    '0,1.5 2,0'
+    """
+    get = _MM_TEXT.get
+    try:
+        return " ".join([f"{get(x) or format_mm(x)},{get(y) or format_mm(y)}" for x, y in points])
+    except TypeError:                       # a number that cannot be hashed (a 0-d array): format_mm alone
+        return " ".join(f"{format_mm(x)},{format_mm(y)}" for x, y in points)
 
 
 #: the coordinates written so far in this process and their text (a figure writes the same ones again and

@@ -371,7 +371,36 @@ class Enlarged(Element):
         return tuple(_enlarge_prim(p, self.factor) for p in self.element.primitives())
 
 
-def enlarge(bu: BuildUp, page: Page, *, note_mm: float) -> BuildUp:
+def enlarge_note(fig: Scene, z: float, note_mm: float, free: Callable[[Text], bool] | None = None) -> Text:
+    """The note an enlarged figure carries at the top right of its design page ("drawn 1.3 : 1 for the
+    projector; …"), or the ratio alone ("1.3 : 1") beside a long title or where ``free`` (a test of the note
+    against the figure's ink, given by the caller: a ray may run to the page's top) refuses the long one.
+
+    >>> from graphmethods.scene import Page
+    >>> fig = Scene(DesignPage("slide", enlarged=2.0, frame=False), (), notation="en")
+    >>> enlarge_note(fig, 2.0, 2.5).text, enlarge_note(fig, 2.0, 2.5, free=lambda t: False).text
+    ('drawn 2 : 1 for the projector; μ and mm as at 1 : 1', '2 : 1')
+    """
+    from graphmethods.scene.notation import get as get_notation
+
+    design = fig.page
+    x0, y0, x1, _ = design.inner_box()
+    nt = get_notation(fig.notation)
+    title = next((e for e in fig.elements if e.name == "title"), None)
+    right = title.bbox() if title is not None else None
+    # the title is bold: 12 % wider than the estimate of regular text
+    room = x1 - (right[0] + 1.12 * (right[2] - right[0]) if right is not None else x0) - 3.0
+    words = nt.word("steps.enlarged", z=nt.number(z))
+    ratio = f"{nt.number(z)} : 1"
+    note = Text((x1, y0 + note_mm), ratio, size_mm=note_mm, anchor="end", name="enlarged")
+    if markup.text_width_mm(words, note_mm) <= room:
+        long = replace(note, text=words)
+        if free is None or free(long):
+            return long
+    return note
+
+
+def enlarge(bu: BuildUp, page: Page, *, note_mm: float, free: Callable[[Text], bool] | None = None) -> BuildUp:
     """``bu``, laid out on a :class:`DesignPage`, drawn on ``page`` (its full size) ``z`` : 1
     (z = the design page's ``enlarged``): every element and the caption box enlarged; the scales
     stay those of the drawing at 1 : 1 (every μ and every millimetre the figure and its captions
@@ -385,25 +414,16 @@ def enlarge(bu: BuildUp, page: Page, *, note_mm: float) -> BuildUp:
         The page drawn on; its margins hold the figure and the caption band.
     note_mm : float
         Size of the note at 1 : 1, mm.
+    free : callable, optional
+        Whether the long note is clear of the figure's ink (:func:`enlarge_note`).
     """
-    from graphmethods.scene.notation import get as get_notation
-
     design = bu.figure.page
     z = float(getattr(design, "enlarged", 1.0))
     fig = bu.figure
     els = tuple(Enlarged(e, z) for e in fig.elements)
     steps = bu.steps
     if z != 1.0:
-        x1, y0 = design.inner_box()[2], design.inner_box()[1]
-        nt = get_notation(fig.notation)
-        title = next((e for e in fig.elements if e.name == "title"), None)
-        right = title.bbox() if title is not None else None
-        # the title is bold: 12 % wider than the estimate of regular text
-        free = x1 - (right[0] + 1.12 * (right[2] - right[0]) if right is not None else design.inner_box()[0]) - 3.0
-        words = nt.word("steps.enlarged", z=nt.number(z))
-        if markup.text_width_mm(words, note_mm) > free:         # beside a long title: the ratio alone
-            words = f"{nt.number(z)} : 1"
-        els += (Enlarged(Text((x1, y0 + note_mm), words, size_mm=note_mm, anchor="end", name="enlarged"), z),)
+        els += (Enlarged(enlarge_note(fig, z, note_mm, free), z),)
         steps = (Step(steps[0].caption, steps[0].elements + (len(fig.elements),)),) + steps[1:]
     x0, cy0, cx1, cy1 = bu.caption_box
     scene = replace(fig, page=page, elements=els, extra_scales=fig.scales(),

@@ -3,7 +3,7 @@
 On the force sheet, beside the result table: the course finds M_b by the force plans (and checks it by
 Zhukovsky's lever) in every position; the graph joins the ordinates M_b(φ_k) by chords, as drawn by hand,
 and marks the position the sheet analyses (its ordinate a main line), its value written under the graph (the
-result table's). The φ axis runs from
+result table's), on a dotted grid of its positions and M_b ticks (read off as on graph paper). The φ axis runs from
 position 0 to m (its tick marks numbered by position), the M_b axis has nice ticks
 (:func:`~graphmethods.sheets.engine.axes.nice_ticks`), every one labelled, and includes 0.
 
@@ -24,7 +24,7 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Element, Line, Page, Point, Polyline, Scale, Text, notation as get_notation
-from graphmethods.scene.primitives import THIN
+from graphmethods.scene.primitives import DOTTED, THIN
 from graphmethods.sheets.engine.axes import nice_ticks
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.forces import round_off_zero
@@ -78,8 +78,12 @@ def balancing_graph(fa: Any, i: int, *, notation: Any = "en", page: Page, name: 
                           Line((x0, y1), (x0, y0 - 0.5 * size), name="axis-M"),
                           Line((x0, zero), (x1 + 2.0, zero), name="axis-phi"),
                           Text((x0 + 1.5, y0 - size), f"{M_b}, {nt.unit('N·m')}", size_mm=size, name="axis-M-label")]
+    for k in range(1, n):                          # the grid: a dotted line at every position and every tick
+        els.append(Line(at(k, lo), at(k, hi), style=DOTTED, name=f"grid-phi-{k}"))
     for t in ticks:
         y = at(0, t)[1]
+        if t != 0.0:
+            els.append(Line((x0, y), (at(n - 1, t)[0], y), style=DOTTED, name=f"grid-M-{t:g}"))
         els += [Line((x0 - 1.5, y), (x0, y), name=f"tick-M-{t:g}"),
                 Text((x0 - 2.5, y + 0.35 * size), nt.number(t, sig=6), size_mm=size, anchor="end",
                      name=f"tick-label-M-{t:g}")]

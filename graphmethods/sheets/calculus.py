@@ -138,6 +138,14 @@ def _clip_curve(X: np.ndarray, Y: np.ndarray, lo: float, hi: float) -> tuple[np.
     return xs, ys
 
 
+def _broken_behind(rays: list[Line], axis: Axis) -> list[Line]:
+    """The rays of a pole interrupted where they would cross the value axis's tick labels (a line is broken
+    for an inscription, ГОСТ 2.303): :func:`~graphmethods.sheets.linkage_figures.broken_behind`."""
+    from graphmethods.sheets.linkage_figures import broken_behind
+
+    return broken_behind(rays, _label_boxes(axis))
+
+
 def _lost_positions(full: Axis, kept: Axis, occ: Occupancy, name: str) -> list:
     """The position numbers a φ axis had to leave out, set beside their ticks where there is room
     (above the axis where a curve runs below it, and the other way round)."""
@@ -321,31 +329,41 @@ def _wrap(text: str, width_mm: float, size_mm: float) -> list[str]:
     return lines + ([cur.rstrip()] if cur.strip() else [])
 
 
-def _titled_table(table: Table, title: str, name: str, *, bold: bool = False) -> list:
+def _title_pitch(lettered: bool = False) -> float:
+    """The line pitch of a table's wrapped title, mm; ``lettered``: as the page letters its text (a slide: a title
+    set at 3.5 mm with a subscript needs more than the paper figure's 3.9 mm)."""
+    return max(TABLE_MM * 1.35, lettered_size(TABLE_MM + 0.2) * 1.25) if lettered else TABLE_MM * 1.35
+
+
+def _titled_table(table: Table, title: str, name: str, *, bold: bool = False, lettered: bool = False) -> list:
     """A table with its title above it, wrapped to the table's width."""
     lines = _wrap(title, table.width_mm, TABLE_MM + 0.2)
     n = len(lines)
-    return [Text((table.at[0], table.at[1] - 2.0 - (n - 1 - k) * TABLE_MM * 1.35), t, size_mm=TABLE_MM + 0.2,
+    pitch = _title_pitch(lettered)
+    return [Text((table.at[0], table.at[1] - 2.0 - (n - 1 - k) * pitch), t, size_mm=TABLE_MM + 0.2,
                  bold=bold, name=f"{name}-{k + 1}") for k, t in enumerate(lines)]
 
 
 def _column_table(rows: Rows, title: str, *, align: str, name: str, title_name: str, right: float, bottom: float,
-                  under: Sequence[Element], floor: float) -> list[Element]:
+                  under: Sequence[Element], floor: float, lettered: bool = False) -> list[Element]:
     """The right column's table with its title, its bottom at ``bottom``, or lower (down to ``floor``) when its
-    title would cover the notes above it (``under``: on a short strip, a slide)."""
+    title would cover the notes above it (``under``: on a short strip, a slide); ``lettered``: the title's lines
+    spaced for the page's lettering (:func:`_title_pitch`)."""
     table = _table(rows, align=align, name=name, right=right, bottom=bottom)
-    title_top = _table_title_top(table, title)
+    title_top = _table_title_top(table, title, lettered)
     clear = _text_bottom(under)
     if title_top < clear + 1.5:
         down = min(clear + 1.5 - title_top, max(0.0, floor - bottom))
         table = replace(table, at=(table.at[0], table.at[1] + down))
-    return [*_titled_table(table, title, title_name), table]
+    return [*_titled_table(table, title, title_name, lettered=lettered), table]
 
 
-def _table_title_top(table: Table, title: str) -> float:
-    """The top of a column table's title (wrapped to the table's width), mm."""
+def _table_title_top(table: Table, title: str, lettered: bool = False) -> float:
+    """The top of a column table's title (wrapped to the table's width), mm; ``lettered``: its lines spaced for
+    the page's lettering (:func:`_title_pitch`)."""
     n = len(_wrap(title, table.width_mm, TABLE_MM + 0.2))
-    return table.at[1] - 2.0 - (n - 1) * TABLE_MM * 1.35 - ASCENT * (TABLE_MM + 0.2)
+    return (table.at[1] - 2.0 - (n - 1) * _title_pitch(lettered)
+            - ASCENT * (lettered_size(TABLE_MM + 0.2) if lettered else TABLE_MM + 0.2))
 
 
 def _text_bottom(texts: Sequence[Element]) -> float:
@@ -696,8 +714,11 @@ def _curve_names(occ: Occupancy, pairs: Iterable[tuple[Polyline, str, float]], b
         on_axis = abs(pts[-1][1] - axis_y) < 1.0          # a curve ending on the φ axis: name it along its way
         spots = along + end if on_axis else end + along
         lab = None
-        for at, dirs in spots:
-            lab = occ.first_free(at, text, dirs, (1.5, 3.0), TEXT_MM + 0.3, None)
+        for gaps in ((1.5, 3.0), (4.5, 6.5)):           # close to the curve, else a little further off
+            for at, dirs in spots:
+                lab = occ.first_free(at, text, dirs, gaps, TEXT_MM + 0.3, None)
+                if lab is not None:
+                    break
             if lab is not None:
                 break
         if lab is None:

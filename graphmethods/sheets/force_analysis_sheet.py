@@ -21,7 +21,7 @@ the scheme's.
 >>> [e.name for e in s.elements][1:9]
 ['scheme', 'lever', 'acceleration', 'plans', 'result-heading', 'result', 'reactions', 'inertia']
 >>> [e.name for e in s.elements][-3:]
-['working-3', 'working-4', 'balancing']
+['working-11', 'cycle', 'balancing']
 """
 
 from __future__ import annotations
@@ -40,9 +40,11 @@ from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
-from graphmethods.sheets.force_sheet_plans import group_panel, plan_panel
-from graphmethods.sheets.force_working import inertia_working
+from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
+from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, load_rows, reaction_rows
+from graphmethods.sheets.force_working import inertia_working, power_working
 from graphmethods.sheets.layout import Box, Sheet
+from graphmethods.sheets.sheet_fill import PartInk
 
 
 def _case(subject: Any) -> Any:
@@ -83,6 +85,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     gravity : bool
         Add the weights (g = 9.81 m/s² along −y).
     page : {"A1", "A2"} or Page
+        On A2 the sheet is composed by :func:`~graphmethods.sheets.force_sheet_a2.force_sheet_a2`.
     notation : {"en", "ru", "zh"}
 
     Returns
@@ -104,18 +107,20 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     pg = sheet_page(page, "force-analysis")
     sheet = Sheet(nt=nt, page=None, title=title or head, problem=title_of(case), title_block=title_block,
                   default_page=pg)
+    if pg.size == "A2":                             # half of A1: its own composition, without the plan of accelerations
+        from graphmethods.sheets.force_sheet_a2 import force_sheet_a2
+
+        return force_sheet_a2(case, fa, i, sheet=sheet, pg=pg, nt=nt, phi_deg=phi_deg, m=m, gravity=gravity, name=name)
     size = lettering(pg).value_mm                  # the tables' values (ГОСТ 2.304: 5 mm on A1/A2)
     note_mm = lettering(pg).label_mm
-    rows = _result_rows(fa, i, nt)
-    react_rows, _ = SF._plans_results(fa, i, nt, gravity)
-    inertia_rows = _inertia_rows(fa, i, nt)
-    tables = (Table((0.0, 0.0), tuple(rows), align="lrr", size_mm=size, row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(react_rows), align="cr", size_mm=size, row_height_mm=2.0 * size),
-              Table((0.0, 0.0), tuple(inertia_rows), align="crr", size_mm=size, row_height_mm=2.0 * size))
+    tables = _tables(fa, i, nt, size)
     notes_text = ([nt.word("forces.crank_prime", R="R′_{01}", Fb=nt.sym("forces.F_b"), Mb=nt.sym("forces.M_b"))]
                   + ([nt.word("forces.weights")] if gravity else []))
-    working = [(t, False) for t in inertia_working(case, fa, i, nt)]
-    working = [(nt.word("forces.inertia_loads"), True)] + working if working else []
+    loads = inertia_working(case, fa, i, nt)             # the inertia loads and M_b by the power balance worked out
+    working = ([(nt.word("forces.inertia_loads"), True)] + [(t, False) for t in loads] if loads else [])
+    n_loads = len(working)                          # the power balance's working only where the column has room
+    working += ([(nt.word("forces.Mb_power", Mb=nt.sym("forces.M_b")), True)]
+                + [(t, False) for t in power_working(fa, i, nt)])
     work_mm = size if max([text_width_mm(t, size) for t, _ in working] + [0.0]) <= 190.0 else note_mm
     block = sheet.probe.title_block
     inner = pg.inner_box()
@@ -129,7 +134,7 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
     free = tb_top - gap - content[1] - _result_column(0.0, 0.0, tables, notes_text, working, nt,
                                                       sizes=(size, note_mm, work_mm, gap))[1]
-    graph_below = phi_deg is not None or free >= GRAPH_MM      # M_b(φ) under the column's text, or in the drawings'
+    graph_below = phi_deg is not None or free >= 3.0 * GRAPH_MM  # M_b(φ) under the column's text, or in the drawings'
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, graph=not graph_below)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
     if accel is None and phi_deg is None and graph_below and "balancing" in boxes:
@@ -149,24 +154,75 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     if accel is not None:
         parts.append((accel, "acceleration"))
     for j in range(len(fa.plans)):
-        parts += [(group_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"group-{j}"])), f"group-{j}"),
-                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"])), f"plan-{j}")]
+        g_page = region_page(pg, boxes[f"group-{j}"])
+        beside = moments_fit(fa, i, j, nt, g_page)             # the moment equations beside the group cut
+        parts += [(group_panel(case, fa, i, j, nt=nt, page=g_page, moments=beside), f"group-{j}"),
+                  (plan_panel(case, fa, i, j, nt=nt, page=region_page(pg, boxes[f"plan-{j}"]), with_moments=not beside),
+                   f"plan-{j}")]
     groups = [inset(scene, nm) for scene, nm in parts]
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    column, y = _result_column(boxes["result"][0] + 2.0, boxes["result"][1], tables, notes_text, working, nt,
-                               sizes=(size, note_mm, work_mm, gap))
-    graph_box = boxes.get("balancing", (boxes["result"][0], y, boxes["result"][2], boxes["result"][3]))
-    if phi_deg is None and graph_box[3] - graph_box[1] > 60.0:
-        graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
-        column.append(graph)
-        groups.append((graph, g_scales))
+    column, y = _best_column(fa, nt, pg, boxes, groups, tables, notes_text, (working, working[:n_loads]),
+                             cycle=phi_deg is None, sizes=(size, note_mm, work_mm, gap))
+    if phi_deg is None:                             # M_b over the cycle: its table and its graph
+        column += _cycle_parts(fa, i, nt, pg, boxes, y, groups, size=size, gap=gap)
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
     return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *column),
                  title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+
+
+def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], groups: list[Any], tables: tuple[Table, ...],
+                 notes_text: list[str], workings: tuple[list[tuple[str, bool]], ...], *, cycle: bool,
+                 sizes: tuple[float, float, float, float]) -> tuple[list[Any], float]:
+    """The result column (:func:`_result_column`) that ends above the column's bottom and, with the M_b table
+    under it where that has room (``cycle``), inks the most cells of the sheet
+    (:class:`~graphmethods.sheets.sheet_fill.PartInk`): with or without the external loads' table (the
+    fourth), the working at the values' size or at 3.5 mm; the fullest of ``workings`` that fits, the
+    shortest column when none ends above the bottom."""
+    size, note_mm, work_mm, gap = sizes
+    x, top = boxes["result"][0] + 2.0, boxes["result"][1]
+    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    best: tuple[tuple[bool, int, float], list[Any], float] | None = None
+    variants = [(k, wk, t, w) for k, wk in enumerate(workings) for w in dict.fromkeys((work_mm, note_mm))
+                for t in dict.fromkeys((tables, tables[:3]))]
+    for k, work, tabs, w_mm in variants:
+        column, y = _result_column(x, top, tabs, notes_text, work, nt, sizes=(size, note_mm, w_mm, gap))
+        inside = y - gap <= boxes["result"][3]
+        table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), inks) if cycle and inside else None
+        cells = int(PartInk.of(Scene(pg, tuple(column + ([table] if table is not None else []))), pg).cells.sum())
+        score = (inside, -k if inside else 0, float(cells) if inside else -y)
+        if best is None or score > best[0]:
+            best = (score, column, y)
+    assert best is not None
+    return best[1], best[2]
+
+
+def _floor(boxes: dict[str, Box]) -> float:
+    """How far down (mm) the M_b table may run in the result column: to its bottom, or the graph's room above it."""
+    return boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM)
+
+
+def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], y: float, groups: list[Any], *,
+                 size: float, gap: float) -> list[Any]:
+    """M_b over the cycle: its table under the result column's text (``y``, mm) where it has room, and the graph
+    (in its box among the drawings, or under the table; appended to ``groups`` with its scales)."""
+    res = boxes["result"]
+    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    out: list[Any] = []
+    cycle = _cycle_table(fa, nt, size, (res[0] + 2.0, y), _floor(boxes), inks)
+    graph_box = boxes.get("balancing", (res[0], y, res[2], res[3]))
+    if cycle is not None:
+        out.append(cycle)
+        if "balancing" not in boxes:
+            graph_box = (res[0], cycle.bottom_left[1] + gap, res[2], res[3])
+    if graph_box[3] - graph_box[1] > 60.0:
+        graph, g_scales = inset(balancing_graph(fa, i, notation=nt, page=region_page(pg, graph_box)), "balancing")
+        out.append(graph)
+        groups.append((graph, g_scales))
+    return out
 
 
 def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: list[str],
@@ -175,7 +231,7 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
     """The result column from (tx, ty): its heading, the balancing moment's, the reactions' and the inertia
     loads' tables, the notes and the inertia loads worked out; and the y (mm) under its last line."""
     size, note_mm, work_mm, gap = sizes
-    names = ("result", "reactions", "inertia")
+    names = ("result", "reactions", "inertia", "loads")
     column: list[Any] = [Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
                               name="result-heading")]
     y = ty + 2.5 * size
@@ -190,6 +246,36 @@ def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: 
         y += (2.2 if head_ and k else 1.8) * work_mm
         column.append(Text((tx, y), line, size_mm=work_mm, bold=head_, name=f"working-{k}"))
     return column, y + gap
+
+
+def _tables(fa: Any, i: int, nt: Any, size: float) -> tuple[Table, ...]:
+    """The A1 result column's tables at ``size`` mm: M_b three ways, the reactions, the inertia loads and the
+    external loads, with the components as ``forces`` prints them."""
+    react, inertia, loads = reaction_rows(fa, i, nt), inertia_rows(fa, i, nt), load_rows(fa, i, nt)
+    return tuple(Table((0.0, 0.0), tuple(rows), align=align[:len(rows[0])], size_mm=size, row_height_mm=2.0 * size)
+                 for rows, align in ((_result_rows(fa, i, nt), "lrr"), (react, "crrr"), (inertia, "crrrrr"),
+                                     (loads, "cc" + "r" * 6)) if rows)
+
+
+def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float,
+                 inks: list[Box]) -> Table | None:
+    """The table of M_b at every position (:func:`~graphmethods.sheets.force_tables.cycle_rows`) from ``at``
+    (mm) or as little under it as keeps it off the drawings' ink (``inks``, mm); None when it would run below
+    ``bottom`` (mm)."""
+    rows = tuple(cycle_rows(fa, nt))
+    for mm in (size, 0.8 * size, 0.7 * size):                   # at the values' size where it has room
+        y = at[1]
+        while True:
+            table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=mm, row_height_mm=1.8 * mm,
+                          name="cycle")
+            box = table.bbox()
+            if table.bottom_left[1] > bottom or box is None:
+                break
+            if not any(min(box[2], b[2]) > max(box[0], b[0]) and min(box[3], b[3]) > max(box[1], b[1])
+                       for b in inks):
+                return table
+            y += 5.0
+    return None
 
 
 def _panel_layout(box: Box) -> SF.ForceFigureLayout:

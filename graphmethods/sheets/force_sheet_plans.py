@@ -107,10 +107,12 @@ def found_line(lbl: str, R: float, s_F: Scale, nt: Notation) -> str:
 
 
 def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page,
-               phi_deg: float | None = None) -> Scene:
+               phi_deg: float | None = None, working: bool = True, with_moments: bool = True) -> Scene:
     """Plan ``j`` (0: the last group solved first; the last: the crank's) of position ``i`` on ``page`` (a
     region of the sheet): its caption, its vector equation, the polygon at the largest convenient μ_F
-    that fills the panel, the scale under it.
+    that fills the panel, the scale under it; with ``working`` (when the panel has room), the moment
+    equations and the lengths laid off above them. ``with_moments`` false: no moment equations here, where
+    the group's cut drawing writes them beside it (:func:`group_panel`).
 
     Raises
     ------
@@ -124,6 +126,10 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     sheet = Sheet(nt=nt, page=page, title=cap, problem="", title_block=False)
     sides = plan_sides(fa, j, i)
     pts = np.cumsum([0j] + [F for _, F, _ in sides])
+    inner = ([] if pl.group.startswith("I ") else      # each link's own polygon's sides: inside the panel too
+             [z for poly in pl.polygons[1:] for _, z0, z1 in (SF._inner_sides(pl.polygons[0], poly, pts, i) or [])
+              for z in (z0, z1)])
+    fit = np.concatenate([pts, np.asarray(inner, dtype=complex)])
     let = lettering(page)
     found = _found(fa, j, i, sides)
     equation = plan_equation(fa, j, i, nt)
@@ -138,8 +144,9 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
         return FW.drawn_lengths(sides, s_F, nt) if working else []
 
     m_pitch = 1.8 * let.label_mm
-    for working in (True, False):                               # the working when the panel has room for it
-        moments = FW.moment_working(fa, i, j, nt) if working else []    # R^τ from the moments, before the plan
+    tries = (True, False) if working else (False,)
+    for working in tries:                                       # the working when the panel has room for it
+        moments = FW.moment_working(fa, i, j, nt) if working and with_moments else []   # R^τ, before the plan
         n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0)) if working else 0
         m_h = (len(moments) + n_known) * m_pitch
 
@@ -147,12 +154,12 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
             return ([(t, let.label_mm) for t in moments + lengths(mu)] + [(equation, eq_mm)]
                     + [(t, let.value_mm) for t in lines(mu)])
         try:
-            area, x_text, s_F = _plan_area(sheet, pts, L, texts, m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
+            area, x_text, s_F = _plan_area(sheet, fit, L, texts, m_h + 2.0 * eq_mm + (len(found) + 0.5) * pitch)
             break
         except InputError:
             if not working:
                 raise
-    at = SF._cell(pts, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
+    at = SF._cell(fit, (area[0], area[1], area[2] - area[0], area[3] - area[1]), s_F)
     els: list[Element] = [sheet.header()]
     for k, line in enumerate(moments + lengths(s_F)):
         kind = "moment" if k < len(moments) else "length"
@@ -172,8 +179,25 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     else:
         drawn, wanted = SF._group_plan(j, pl, pts, i, at, nt, sheet.occ, L)
     els += drawn
-    els += SF._labels(sheet.occ, wanted, L.within(area))
+    els += SF._labels(sheet.occ, _merged(wanted), L.within(area))
     return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
+
+
+def _merged(wanted: list[SF.LabelSpec]) -> list[SF.LabelSpec]:
+    """The labels of sides drawn on one segment (a link's own polygon's R_34 and R_54 when its inertia force
+    is too small to part them) written once, "R_34, R_54", at their common anchor (mm).
+
+    >>> _merged([((0.0, 0.0), "R_{34}", "a"), ((0.5, 0.0), "R_{54}", "b"), ((9.0, 0.0), "F", "c")])
+    [((0.0, 0.0), 'R_{34}, R_{54}', 'a'), ((9.0, 0.0), 'F', 'c')]
+    """
+    out: list[SF.LabelSpec] = []
+    for anchor, text, name in wanted:
+        k = next((k for k, (a, _, _) in enumerate(out) if math.dist(a, anchor) < 2.0), None)
+        if k is None:
+            out.append((anchor, text, name))
+        else:
+            out[k] = (out[k][0], f"{out[k][1]}, {text}", out[k][2])
+    return out
 
 
 def _plan_area(sheet: Sheet, pts: np.ndarray, L: SF.ForceFigureLayout,
@@ -272,16 +296,36 @@ def group_cloud(fa: Any, j: int, i: int) -> list[complex]:
     return [complex(mo.z[p][i]) for p in sorted(_group_points(mo, tuple(fa.plans[j].links), _group_of(fa, j)))]
 
 
-def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page) -> Scene:
+def moments_fit(fa: Any, i: int, j: int, nt: Any, page: Page) -> bool:
+    """Whether group ``j``'s moment equations (:func:`~graphmethods.sheets.force_working.moment_working`) fit
+    across ``page`` (the group's panel) at its lettering, leaving the drawing at least 60 % of the height."""
+    lines = FW.moment_working(fa, i, j, nt)
+    if not lines:
+        return False
+    box = page.inner_box()
+    let = lettering(page)
+    return (max(markup.text_width_mm(t, let.label_mm) for t in lines) <= box[2] - box[0] - 2.0
+            and len(lines) * 1.8 * let.label_mm <= 0.4 * (box[3] - box[1]))
+
+
+def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page, moments: bool = False) -> Scene:
     """The group of plan ``j`` (or the crank) cut from the linkage, to μ_l, with every force of its plan at
     its point to μ_F: the applied forces and moments with their values, the reactions of the links it was
-    cut from (dashed: found on the plan)."""
+    cut from (dashed: found on the plan). ``moments``: the group's moment equations with their numbers
+    written under the heading, beside the drawing they are taken from (:func:`moments_fit`)."""
     nt = get_notation(nt)
     mo = fa.motion
     pl = fa.plans[j]
     lk = mo.linkage
     pts_names = _group_points(mo, tuple(pl.links), _group_of(fa, j))
     sheet = Sheet(nt=nt, page=page, title=nt.word("forces.cut_group"), problem="", title_block=False)
+    let = lettering(page)
+    texts: list[Text] = [Text((sheet.box[0], sheet.top + let.label_mm + k * 1.8 * let.label_mm), line,
+                              size_mm=let.label_mm, name=f"moment-{j}-{k}")
+                         for k, line in enumerate(FW.moment_working(fa, i, j, nt) if moments else [])]
+    for t in texts:
+        _keep_clear(sheet, t)
+    sheet.top += len(texts) * 1.8 * let.label_mm
     z = {p: complex(mo.z[p][i]) for p in pts_names}
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
@@ -298,7 +342,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     from graphmethods.scene import Line
     from graphmethods.sheets.kinematic_symbols import PinJoint, SliderBlock
 
-    els: list[Element] = [sheet.header(), *(SF._drawn(occ, e) for e in SF.plates(segs, z, at))]
+    els: list[Element] = [sheet.header(), *texts, *(SF._drawn(occ, e) for e in SF.plates(segs, z, at))]
     els += [SF._drawn(occ, Line(at(z[a]), at(z[b]), style=SF.LINK, name=f"link-{a}-{b}")) for a, b in segs]
     els += [SF._drawn(occ, SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)),
                                        name=f"block-{k}")) for k, (p, u) in enumerate(blocks) if p in z]
@@ -322,4 +366,4 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     return SF._finish(sheet, els, (s_l, s_F), "", f"group-{j}")
 
 
-__all__ = ["group_panel", "plan_equation", "plan_panel", "plan_sides"]
+__all__ = ["group_panel", "moments_fit", "plan_equation", "plan_panel", "plan_sides"]

@@ -178,6 +178,52 @@ def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int =
     return lines
 
 
+def power_working(fa: Any, i: int, nt: Notation | str = "en") -> list[str]:
+    """The balancing moment from the power balance worked out, ``M_b·ω_1 + ΣF·v·cos α + ΣM·ω = 0``: each
+    force's power (its magnitude, its point's speed, the angle α between them: the pressure angle, ϑ in ru),
+    each couple's (M·ω, signed),
+    then M_b = −ΣP/ω_1 (the result table's third value; the terms of round-off size left out).
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.sheets.forces import analysed
+    >>> fa, i = analysed(builtin.case("press"), position=3, phi_deg=None, m=12)
+    >>> power_working(fa, i, "en")[-1]
+    'M_b = −ΣP/ω_{1} = −(−14463)/31.416 = 460.361 N·m'
+    """
+    import numpy as np
+
+    nt = get_notation(nt)
+    mo = fa.motion
+    w1 = mo.linkage.sense * mo.omega_1
+    n = nt.number
+    W = nt.unit("W")
+    terms: list[tuple[str, float]] = []
+    for f in fa.lever.forces:                              # a force's point moves at v = −i·image·ω₁
+        F = complex(f.F[i])
+        if f.label.startswith("M") or F == 0:
+            continue
+        v = -1j * complex(f.image[i]) * mo.omega_1
+        P = (v.conjugate() * F).real
+        alpha = float(np.degrees(np.angle(F / v))) if v != 0 else 90.0
+        terms.append((f"P({SF._markup(f.label, nt)}) = {n(abs(F), sig=5)}·{n(abs(v), sig=4)}·cos "
+                      f"{n(abs(alpha), sig=4)}° = ", P))
+    for k, fs in fa.applied.items():
+        w = float(mo.omega[k][i])
+        for f in fs:
+            M = float(f.M[i])
+            if M != 0.0 and w != 0.0:
+                name = SF._markup(f.label.replace("F_", "M_", 1) if f.label.startswith("F_") else f.label, nt)
+                w_text = n(w, sig=4) if w > 0 else f"({n(w, sig=4)})"
+                terms.append((f"P({name}) = {n(M, sig=5)}·{w_text} = ", M * w))
+    big = max([abs(P) for _, P in terms] + [0.0])
+    terms = [(t, P) for t, P in terms if SF.round_off_zero(abs(P), big) != 0.0]
+    M_b = nt.sym("forces.M_b")
+    total = sum(P for _, P in terms)
+    return ([f"{M_b}·ω_{{1}} + ΣF·v·cos {nt.sym('cam.alpha')} + ΣM·ω = 0"] + [f"{t}{n(P, sig=5)} {W}" for t, P in terms]
+            + [f"{M_b} = −ΣP/ω_{{1}} = −({n(total, sig=5)})/{n(w1, sig=5)}"
+               f" = {n(float(fa.M_balance_power[i]), sig=6)} {nt.unit('N·m')}"])
+
+
 def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation | str = "en", *,
                   least_mm: float = 1.0) -> list[str]:
     """The lengths (mm) the known forces of a plan are drawn at, as the course writes them before drawing:
@@ -201,21 +247,23 @@ def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation
 
 
 def working_lines(case: Any, fa: Any, i: int, nt: Notation | str = "en") -> list[tuple[str, bool]]:
-    """The sheet's working, in order: (text, heading?): the inertia loads, then each group's moment equations
-    under the group's name (the groups with none left out).
+    """The sheet's working, in order: (text, heading?): the inertia loads, M_b from the power balance, then
+    each group's moment equations under the group's name (the groups with none left out).
 
     >>> from graphmethods.problems import builtin
     >>> from graphmethods.sheets.forces import analysed
     >>> case = builtin.case("press")
     >>> fa, i = analysed(case, position=3, phi_deg=None, m=12)
     >>> [t for t, heading in working_lines(case, fa, i, "en") if heading]
-    ['Inertia loads', 'group RRP (2, 3)']
+    ['Inertia loads', 'M_b from the power balance', 'group RRP (2, 3)']
     """
     nt = get_notation(nt)
     out: list[tuple[str, bool]] = []
     loads = inertia_working(case, fa, i, nt)
     if loads:
         out += [(nt.word("forces.inertia_loads"), True)] + [(t, False) for t in loads]
+    power = power_working(fa, i, nt)
+    out += [(nt.word("forces.Mb_power", Mb=nt.sym("forces.M_b")), True)] + [(t, False) for t in power]
     for j, pl in enumerate(fa.plans):
         lines = moment_working(fa, i, j, nt)
         if lines:
@@ -223,4 +271,4 @@ def working_lines(case: Any, fa: Any, i: int, nt: Notation | str = "en") -> list
     return out
 
 
-__all__ = ["drawn_lengths", "lever_working", "inertia_working", "moment_working", "working_lines"]
+__all__ = ["drawn_lengths", "inertia_working", "lever_working", "moment_working", "power_working", "working_lines"]

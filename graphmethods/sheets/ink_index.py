@@ -22,6 +22,8 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 
+import numpy as np
+
 #: the grid's cell (mm): about a label's size, so a candidate box looks at one to four cells
 CELL_MM = 8.0
 #: how far (mm) beyond its path an item is filed: far above the rounding of page coordinates (1e-13 mm),
@@ -73,6 +75,44 @@ class InkIndex:
                 xa, xb = xb, xa
             for q in range(floor((xa - m) / c), floor((xb + m) / c) + 1):
                 cells.setdefault((q, r), []).append(k)
+
+    def add_segments(self, first: int, seg: np.ndarray) -> None:
+        """File segments ``first``, ``first`` + 1, … (the rows ``x0, y0, x1, y1`` of ``seg``, page mm) as
+        :meth:`add_segment` does one by one: the many that lie within one cell are filed together (the same
+        cell by the same arithmetic), the others one by one.
+
+        >>> idx = InkIndex()
+        >>> idx.add_segments(0, np.array([[0.0, 10.0, 100.0, 10.0], [50.0, 50.0, 52.0, 52.0]]))
+        >>> sorted(idx.segments_near((40.0, 8.0, 60.0, 12.0))), sorted(idx.segments_near((50.0, 50.0, 51.0, 51.0)))
+        ([0], [1])
+        """
+        seg = np.asarray(seg, dtype=float).reshape(-1, 4)
+        if len(seg) < 16:                       # a few: one by one is quicker than numpy's set-up
+            for k, (x0, y0, x1, y1) in enumerate(seg.tolist(), first):
+                self.add_segment(k, x0, y0, x1, y1)
+            return
+        c, m = self.cell, MARGIN_MM
+        with np.errstate(invalid="ignore", over="ignore"):
+            xl, xh = np.minimum(seg[:, 0], seg[:, 2]), np.maximum(seg[:, 0], seg[:, 2])
+            yl, yh = np.minimum(seg[:, 1], seg[:, 3]), np.maximum(seg[:, 1], seg[:, 3])
+            q0, q1 = np.floor((xl - m) / c), np.floor((xh + m) / c)
+            r0, r1 = np.floor((yl - m) / c), np.floor((yh + m) / c)
+            one = (q0 == q1) & (r0 == r1) & np.isfinite(q0) & np.isfinite(r0)
+        # one cell: its box's cell, as add_segment files it (NaN corners never compare equal: one by one)
+        ks = np.flatnonzero(one)
+        self._seg_all.extend((ks + first).tolist())
+        if ks.size:
+            q, r = q0[ks].astype(np.int64), r0[ks].astype(np.int64)
+            order = np.lexsort((ks, r, q))
+            q, r, kk = q[order], r[order], ks[order] + first
+            cut = np.flatnonzero((np.diff(q) != 0) | (np.diff(r) != 0)) + 1
+            cells = self._seg_cells
+            starts = [0, *cut.tolist()]
+            for i, j, qq, rr in zip(starts, [*starts[1:], len(kk)], q[starts].tolist(), r[starts].tolist()):
+                cells.setdefault((qq, rr), []).extend(kk[i:j].tolist())
+        rest = np.flatnonzero(~one)
+        for k, (x0, y0, x1, y1) in zip((rest + first).tolist(), seg[rest].tolist()):
+            self.add_segment(k, x0, y0, x1, y1)
 
     def add_box(self, k: int, box: tuple[float, float, float, float]) -> None:
         """File box number ``k`` (page mm) under the cells it covers."""

@@ -167,39 +167,60 @@ def _chosen(parts: _Parts, sheet: Sheet, regions: Callable[[Division], list[Regi
     """The parts of the division kept. The probe division is drawn; the others are ranked by the cells their
     ink would fill, predicted from the probe's parts stretched onto their regions
     (:meth:`~graphmethods.sheets.sheet_fill.PartInk.stretched`), and drawn in that order (the parts drawn
-    already are not drawn again): the best guess when it is predicted fuller than the probe, and more while
-    every division drawn clashes or leaves the sheet more than half empty (:data:`EMPTY_MAX`, the
-    figure-quality measure's bound). Of those drawn, the one with the fewest clashes filling the most is kept;
-    None when no division fits."""
+    already are not drawn again): the best guess when it is predicted fuller than the probe by more than the
+    prediction's uncertainty (:data:`PREDICTION_MARGIN`), and more while every division drawn clashes or leaves
+    the sheet more than half empty (:data:`EMPTY_MAX`, the figure-quality measure's bound). Of those drawn, the
+    one with the fewest clashes filling the most is kept (the first of equals); None when no division fits."""
     lay = parts.lay
     probe = _drawn(parts, regions(lay.probe))
     guesses: list[tuple[int, int, Division]] = []
     if probe is not None:
-        by_name = {p.name: p for p in probe}
-        seen: dict[tuple[str, tuple[float, float, float, float]], np.ndarray] = {}
-
-        def cells(fn: Callable[..., Scene], nm: str, box: tuple[float, float, float, float]) -> np.ndarray:
-            if (nm, box) not in seen:
-                p = by_name.get(nm)
-                seen[nm, box] = (p.ink.stretched(p.scene.page.inner_box(), box) if p is not None
-                                 else parts.draw(fn, nm, box).ink.cells)
-            return seen[nm, box]
-
-        for j, dv in enumerate(lay.divisions()):
-            try:
-                guesses.append((-int(np.logical_or.reduce([cells(*r) for r in regions(dv)]).sum()), j, dv))
-            except InputError:          # a part that does not fit: not a candidate
-                continue
-        guesses.sort()
+        guesses = _predicted(parts, probe, regions)
     order = [lay.probe] + [dv for _, _, dv in guesses if dv != lay.probe]
-    fuller = sum(1 for g in guesses if g[2] != lay.probe and -g[0] > _rank(probe)[1]) if probe is not None else 0
-    best = None
-    for n in range(1, len(order) + 1):     # all of them drawn: the best of every division
-        best = _best(parts, [regions(dv) for dv in order[:n]])
-        if (best is not None and _rank(best)[0] == 0 and n > min(fuller, 1)
-                and _empty_share(sheet, best) <= EMPTY_MAX):
+    best: tuple[tuple[int, int], list[Part]] | None = None if probe is None else (_rank(probe), probe)
+    fuller = 0 if best is None else sum(1 for g in guesses if g[2] != lay.probe and -g[0] > best[0][1]
+                                        + PREDICTION_MARGIN * best[1][0].ink.cells.size)
+    for n, dv in enumerate(order, start=1):     # all of them drawn: the best of every division
+        row = _drawn(parts, regions(dv)) if n > 1 else None          # the probe's rank is known
+        if row is not None:
+            rank = _rank(row)
+            if best is None or rank > best[0]:
+                best = (rank, row)
+        if (best is not None and best[0][0] == 0 and n > min(fuller, 1)
+                and _empty_share(sheet, best[1]) <= EMPTY_MAX):
             break
-    return best
+    return None if best is None else best[1]
+
+
+#: a division is drawn beside the probe only when predicted to fill more of the sheet's cells than the probe
+#: by more than this share of them (1 %, about 11 cells on A1): the stretched prediction is no surer (a part
+#: drawn in another region picks another scale from the series and places its labels anew); on the 33
+#: built-in sheets no division drawn for a smaller predicted gain (1–9 cells) filled more than the probe
+PREDICTION_MARGIN = 0.01
+
+
+def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], list[Region]]
+               ) -> list[tuple[int, int, Division]]:
+    """Every division that fits, with the cells its parts are predicted to fill (the probe's parts stretched
+    onto their regions; a part in the probe's own region or one the probe has not, as drawn), best first:
+    (−cells, its place, division)."""
+    by_name = {p.name: p for p in probe}
+    seen: dict[tuple[str, tuple[float, float, float, float]], np.ndarray] = {}
+
+    def cells(fn: Callable[..., Scene], nm: str, box: tuple[float, float, float, float]) -> np.ndarray:
+        if (nm, box) not in seen:
+            p = by_name.get(nm)
+            seen[nm, box] = (p.ink.stretched(p.scene.page.inner_box(), box) if p is not None
+                             and not parts.drawn(nm, box) else parts.draw(fn, nm, box).ink.cells)
+        return seen[nm, box]
+
+    guesses: list[tuple[int, int, Division]] = []
+    for j, dv in enumerate(parts.lay.divisions()):
+        try:
+            guesses.append((-int(np.logical_or.reduce([cells(*r) for r in regions(dv)]).sum()), j, dv))
+        except InputError:          # a part that does not fit: not a candidate
+            continue
+    return sorted(guesses)
 
 
 def _drawn(parts: _Parts, regions: list[Region]) -> list[Part] | None:
@@ -208,17 +229,6 @@ def _drawn(parts: _Parts, regions: list[Region]) -> list[Part] | None:
         return [parts.draw(fn, nm, box) for fn, nm, box in regions]
     except InputError:
         return None
-
-
-def _best(parts: _Parts, divisions: list[list[Region]]) -> list[Part] | None:
-    """Of some divisions (their regions), the parts with the fewest clashing labels and parts leaving their
-    regions, whose ink fills the most cells (the first of equals); None when none fits."""
-    best: tuple[tuple[int, int], list[Part]] | None = None
-    for regions in divisions:
-        row = _drawn(parts, regions)
-        if row is not None and (best is None or _rank(row) > best[0]):
-            best = (_rank(row), row)
-    return None if best is None else best[1]
 
 
 def _empty_share(sheet: Sheet, row: list[Part]) -> float:
@@ -250,6 +260,10 @@ class _Parts:
         self._drawn: dict[tuple[str, tuple[float, ...]], Part | InputError] = {}
         #: whether the slider's diagrams could be drawn (None: not yet tried)
         self.slider: bool | None = None
+
+    def drawn(self, name: str, box: tuple[float, float, float, float]) -> bool:
+        """Has the part ``name`` been drawn (or refused) in ``box``?"""
+        return (name, tuple(float(v) for v in box)) in self._drawn
 
     def draw(self, fn: Callable[..., Scene], name: str, box: tuple[float, float, float, float], **kw: Any) -> Part:
         """``fn`` (a figure function) drawn in ``box`` of the sheet as the part ``name`` (InputError when the

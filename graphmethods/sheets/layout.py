@@ -84,6 +84,8 @@ _FEW = 48
 #: above this many (box, near segment) pairs :meth:`Occupancy.free` compares the extents over numpy arrays
 #: (timed: a plain loop is quicker below about a thousand; 85 % of the gallery's pairs are in calls above)
 _MANY_PAIRS = 1024
+#: above this many segments filed near a box :meth:`Occupancy._near` compares their extents over numpy arrays
+_MANY_NEAR = 96
 
 
 def segments_hit_boxes(seg: np.ndarray, boxes: np.ndarray) -> np.ndarray:
@@ -220,10 +222,15 @@ class Occupancy:
             self._index, self._boxes_indexed, self._seg = InkIndex(), 0, np.empty((0, 4))
             self._box, self._seg_ext, self._ext = np.empty((0, 4)), [], np.empty((0, 4))
             return self._indexed()
-        for k in range(len(ext), len(self.segments)):
-            (x0, y0), (x1, y1) = self.segments[k]
-            ext.append((min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)))
-            idx.add_segment(k, x0, y0, x1, y1)
+        first = len(ext)
+        if first < len(self.segments):
+            new = self.segment_array()[first:]
+            x0, y0, x1, y1 = new.T
+            # as min() and max() of two floats (NaN aside, which no free test reaches: the index files it always)
+            lo_x, hi_x = np.where(x1 < x0, x1, x0), np.where(x1 > x0, x1, x0)
+            lo_y, hi_y = np.where(y1 < y0, y1, y0), np.where(y1 > y0, y1, y0)
+            ext.extend(map(tuple, np.column_stack((lo_x, lo_y, hi_x, hi_y)).tolist()))
+            idx.add_segments(first, new)
         for k in range(self._boxes_indexed, len(self.boxes)):
             idx.add_box(k, self.boxes[k])
         self._boxes_indexed = len(self.boxes)
@@ -242,13 +249,26 @@ class Occupancy:
         """The segments whose extents come within ``_NEAR_MM`` of the box ``g``, in registration order."""
         e, ext = _NEAR_MM, self._seg_ext
         x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
+        found = idx.segments_near(g)
+        if len(found) > _MANY_NEAR:             # many: the same comparisons over the extents' array
+            ks = np.fromiter(found, dtype=np.intp, count=len(found))
+            ks.sort()
+            lo_x, lo_y, hi_x, hi_y = self._ext_array()[ks].T
+            near: list[int] = ks[(lo_x <= x1) & (hi_x >= x0) & (lo_y <= y1) & (hi_y >= y0)].tolist()
+            return near
         out = []
-        for k in idx.segments_near(g):
+        for k in found:
             lo_x, lo_y, hi_x, hi_y = ext[k]
             if lo_x <= x1 and hi_x >= x0 and lo_y <= y1 and hi_y >= y0:
                 out.append(k)
         out.sort()
         return out
+
+    def _ext_array(self) -> np.ndarray:
+        """The segments' extents (``_seg_ext``) as an (n, 4) array, kept up to date."""
+        if len(self._ext) != len(self._seg_ext):
+            self._ext = np.vstack((self._ext, np.asarray(self._seg_ext[len(self._ext):], dtype=float).reshape(-1, 4)))
+        return self._ext
 
     def _grown(self, box: Box, tie: float) -> Box:
         """The box grown by the padding and ``tie`` (±:data:`TIE_MM`)."""
@@ -329,10 +349,8 @@ class Occupancy:
         """The line test of :meth:`free` for many boxes against many near segments, over numpy arrays: the
         same prefilter (:meth:`_near`'s comparisons) and clipping, pair by pair, as the loop it replaces."""
         e = _NEAR_MM
-        if len(self._ext) != len(self._seg_ext):
-            self._ext = np.vstack((self._ext, np.asarray(self._seg_ext[len(self._ext):], dtype=float)))
         k = np.asarray(near)
-        lo_x, lo_y, hi_x, hi_y = self._ext[k].T
+        lo_x, lo_y, hi_x, hi_y = self._ext_array()[k].T
         gb = np.asarray(list(grown.values()))
         gx0, gy0 = (gb[:, 0] - e)[:, None], (gb[:, 1] - e)[:, None]
         gx1, gy1 = (gb[:, 2] + e)[:, None], (gb[:, 3] + e)[:, None]

@@ -283,6 +283,23 @@ def _ring_clear(occ: Occupancy, hard: Occupancy | None, at, text: str, prefer_de
 BREAK_MM = 0.4
 
 
+#: the last boxes :func:`broken_behind` was given and their union (grown by :data:`BREAK_MM`): a figure breaks
+#: its lines one by one behind the same boxes
+_LAST_COVER: list[Any] = [None, None]
+
+
+def _cover(boxes: list) -> Any:
+    """The union of the ``boxes`` (mm) grown by :data:`BREAK_MM`, as a shapely geometry (the last one kept)."""
+    import shapely
+    from shapely.geometry import box
+
+    key = tuple(tuple(float(v) for v in b) for b in boxes)
+    if _LAST_COVER[0] != key:
+        _LAST_COVER[:] = [key, shapely.union_all([box(b[0] - BREAK_MM, b[1] - BREAK_MM, b[2] + BREAK_MM,
+                                                      b[3] + BREAK_MM) for b in key])]
+    return _LAST_COVER[1]
+
+
 def broken_behind(lines: list, boxes: list) -> list:
     """Lines interrupted where they would cross the boxes of labels (mm): a line is broken for an
     inscription (ГОСТ 2.303, 2.307) when no place clear of it is left. Each line that crosses a box
@@ -298,12 +315,11 @@ def broken_behind(lines: list, boxes: list) -> list:
     [((0.0, 0.0), (3.6, 0.0)), ((6.4, 0.0), (10.0, 0.0), (10.0, 10.0))]
     """
     import shapely
-    from shapely.geometry import LineString, box
+    from shapely.geometry import LineString
 
     if not boxes:
         return list(lines)
-    cover = shapely.union_all([box(b[0] - BREAK_MM, b[1] - BREAK_MM, b[2] + BREAK_MM, b[3] + BREAK_MM)
-                               for b in boxes])
+    cover = _cover(boxes)
     out: list = []
     for ln in lines:
         if isinstance(ln, Polyline):

@@ -12,7 +12,10 @@ from contextlib import contextmanager
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
-from graphmethods.scene.steps import PROJECTOR_TEXT, BuildUp, DesignPage, enlarge
+from graphmethods.scene.elements import Text
+from graphmethods.scene.markup import MIN_TEXT_MM
+from graphmethods.scene.steps import PROJECTOR_TEXT, BuildUp, DesignPage, enlarge, enlarge_note
+from graphmethods.sheets.engine.lettering import lettering
 
 #: the gap between the figure's page and the caption box, mm
 CAPTION_GAP_MM = 1.5
@@ -44,7 +47,7 @@ def smallest_text_mm(bu: BuildUp) -> float:
     return min(sizes + [bu.caption_mm])
 
 
-def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) -> BuildUp:
+def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False, uncrossed: bool = False) -> BuildUp:
     """Steps on a 16:9 slide with text sized for a projector.
 
     The figure functions size their text for paper (2.5…3.5 mm), which on a 338.7 mm slide is
@@ -68,6 +71,16 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
         Builds the steps on a given page (``lambda page: velocity_plan_steps(case, page=page)``).
     lettered : bool
         Build every design page :func:`slide_lettered` (default: the figure's own sizes).
+    uncrossed : bool
+        Take no enlargement whose figure has a label crossed by its own ink (:func:`crossed_labels`; the six-bar
+        press's Wittenbauer slide at 1.6 : 1 set its position number 1 on the curve). Default: not checked.
+
+    Examples
+    --------
+    >>> from graphmethods.sheets.steps import energy_indicator_steps, resolve_case
+    >>> bu = for_projector(lambda pg: energy_indicator_steps(resolve_case("W3"), page=pg), lettered=True)
+    >>> smallest_text_mm(bu) * bu.enlarged >= 3.5
+    True
     """
     bound = PROJECTOR_TEXT * SLIDE_PAGE.height_mm
 
@@ -83,10 +96,15 @@ def for_projector(make: Callable[[Page], BuildUp], *, lettered: bool = False) ->
     drawn = {(sc.symbol, sc.unit): sc.per_mm for sc in reference.figure.scales()}
 
     def holds(bu: BuildUp, z: float) -> bool:
-        """No overlap, nothing out of the page, and the construction drawn on the slide at least
-        :data:`KEEP_SIZE` as large as at 1 : 1 (a figure that keeps fixed margins for its labels
-        would otherwise shrink its drawing to make room)."""
+        """No overlap, nothing out of the page, the note "drawn z : 1" clear of the figure's ink, and the
+        construction drawn on the slide at least :data:`KEEP_SIZE` as large as at 1 : 1 (a figure that
+        keeps fixed margins for its labels would otherwise shrink its drawing to make room)."""
         if layout_faults(bu):
+            return False
+        free = note_free(bu.figure)
+        if not free(enlarge_note(bu.figure, z, SLIDE_NOTE_MM / z, free)):
+            return False
+        if uncrossed and crossed_labels(bu.figure):
             return False
         return all(z / sc.per_mm >= KEEP_SIZE / drawn[sc.symbol, sc.unit] for sc in bu.figure.scales()
                    if (sc.symbol, sc.unit) in drawn and sc.unit not in ("rad", "°"))
@@ -127,8 +145,6 @@ def slide_lettered(page: Page) -> Iterator[float]:
     >>> round(least, 3), round(t.size_mm * 1.4, 3)
     (2.5, 3.5)
     """
-    from graphmethods.scene.markup import MIN_TEXT_MM
-    from graphmethods.sheets.engine.lettering import lettering
 
     least = lettering("SLIDE").minimum_mm / float(getattr(page, "enlarged", 1.0))
     token = MIN_TEXT_MM.set(max(MIN_TEXT_MM.get(), least))
@@ -198,11 +214,44 @@ def projector_figure(make: Callable[[Page], Scene]) -> Scene:
     return for_projector(as_steps).figure
 
 
+def crossed_labels(fig: Scene) -> tuple[str, ...]:
+    """The texts of ``fig`` a line, an arrow or a circle of it passes through (the figure-quality measure's
+    test, :func:`~graphmethods.sheets.engine.quality.measure`)."""
+    from graphmethods.sheets.engine.quality import measure
+
+    return measure(fig).crossed
+
+
+def note_free(fig: Scene) -> Callable[[Text], bool]:
+    """A test of a text against the figure's ink: whether no line, arrow or circle of ``fig`` crosses its
+    glyphs (as the figure-quality measure judges a label crossed; the note "drawn z : 1" is added after the
+    figure's own labels were placed, and a ray may run up to the page's top).
+
+    >>> from graphmethods.scene import Line, Page, Scene, Text
+    >>> free = note_free(Scene(Page("A4"), (Line((0, 10), (100, 10), name="l"),)))
+    >>> free(Text((10, 11), "crossed", size_mm=3.5)), free(Text((10, 30), "clear", size_mm=3.5))
+    (False, True)
+    """
+    import numpy as np
+
+    from graphmethods.render.recording import record
+    from graphmethods.scene.primitives import Label
+    from graphmethods.sheets.engine.quality import boxes_crossed, glyph_box, segments_marked
+
+    seg, _ = segments_marked(record(fig))
+
+    def free(text: Text) -> bool:
+        boxes = np.array([glyph_box(p) for p in text.primitives() if isinstance(p, Label)], dtype=float)
+        return not len(seg) or not bool(boxes_crossed(seg, boxes.reshape(-1, 4)).any())
+
+    return free
+
+
 def _on_slide(bu: BuildUp) -> BuildUp:
     """The steps drawn on the whole slide: enlarged from their design page (z = 1: as they are),
-    the caption band inside the slide's margins."""
+    the caption band inside the slide's margins, the note "drawn z : 1" clear of the figure's ink."""
     z = float(getattr(bu.figure.page, "enlarged", 1.0))
-    return enlarge(bu, SLIDE_PAGE, note_mm=SLIDE_NOTE_MM / z)
+    return enlarge(bu, SLIDE_PAGE, note_mm=SLIDE_NOTE_MM / z, free=note_free(bu.figure) if z != 1.0 else None)
 
 
 #: an enlarged slide draws the construction at least this fraction of its size at 1 : 1

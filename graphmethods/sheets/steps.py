@@ -426,8 +426,8 @@ def _acceleration_intersection_rules(tx: _AccelerationText, j: int, st_: Any) ->
 def slide_step_mm(n: int, page: Page) -> float | None:
     """The step between the energy indicator's ``n`` vectors on a slide (None on paper: the figure's own).
 
-    A slide is wide: the vectors spread over it (22 mm apart, the A4 figure's most, filled a third of it for a
-    cycle of three intervals), up to three times that.
+    A slide is wide: the vectors spread over its whole width (22 mm apart, the A4 figure's most, filled a third
+    of it for a cycle of three intervals; three times that still left half its cells empty).
 
     >>> from graphmethods.sheets.projector import SLIDE_PAGE
     >>> slide_step_mm(3, SLIDE_PAGE) > 22.0, slide_step_mm(3, Page("A4", "landscape"))
@@ -440,7 +440,7 @@ def slide_step_mm(n: int, page: Page) -> float | None:
     L = E_.INDICATOR_LAYOUT
     x0, _, x1, _ = page.inner_box()
     room = x1 - L.right_room_mm - (x0 + L.axis_mm + L.first_mm)
-    return max(L.step_min_mm, min(3.0 * L.step_max_mm, room / max(n - 1, 1)))
+    return max(L.step_min_mm, room / max(n - 1, 1))
 
 
 def energy_indicator_steps(cycle, *, notation="en", page="slide", mu_E=None, work_unit: str = "J") -> BuildUp:
@@ -521,7 +521,7 @@ def wittenbauer_steps(source, *, notation="en", page="slide", mu_J=None, mu_T=No
                            f"label-omega-{key}", f"leader-omega-{key}"))
     rules = [
         (nt.word("steps.axes_JT", J=J, T=T, muJ=s_J.caption(nt), muT=s_T.caption(nt)),
-         ["title", "axis-T", "axis-J", "scale-captions"]),
+         ["title", "axis-T", "axis-J", "axis-J-break", "scale-captions"]),      # the break: J from J_0
         (nt.word("steps.points", m=res.m - 1, J=J, T=T), _starts("vertex-", "pos-", "leader-pos-")),
         (nt.word("steps.curve", J=J, T=T), ["curve"]),
         ray["max"],
@@ -602,9 +602,13 @@ FIGURES: dict[str, tuple[Callable, str]] = {
 }
 
 #: the build-ups whose slides are built lettered for the slide (3.5 mm and up once enlarged:
-#: :func:`~graphmethods.sheets.projector.slide_lettered`); the others keep their figure's sizes
+#: :func:`~graphmethods.sheets.projector.slide_lettered`): every one (the dynamics build-ups' paper lettering of
+#: 2.6…2.8 mm was drawn 1.0…1.2 : 1, 2.6…3.4 mm on the slide)
 SLIDE_LETTERED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load",
-                  "kinematic-scheme", "kinematic-diagrams")
+                  "kinematic-scheme", "kinematic-diagrams", "energy-indicator", "work-diagrams", "wittenbauer")
+
+#: the dynamics build-ups: their slides take no enlargement that sets a label on a line
+DYNAMICS = ("energy-indicator", "work-diagrams", "wittenbauer")
 
 #: the figures drawn in one position (``--position K``)
 POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
@@ -738,5 +742,5 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             def make(pg):
                 return fn(obj, notation=notation, page=pg)
     if isinstance(page, str) and page.strip().lower() == "slide":
-        return for_projector(make, lettered=key in SLIDE_LETTERED)
+        return for_projector(make, lettered=key in SLIDE_LETTERED, uncrossed=key in DYNAMICS)
     return make(page)

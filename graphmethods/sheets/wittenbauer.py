@@ -49,6 +49,7 @@ from graphmethods.scene.scale import Scale
 from graphmethods.scene.scene import Scene
 from graphmethods.scene.ticks import axis_ticks
 from graphmethods.sheets.dynamics import (
+    J_TICK_GAP_MM,
     SMALL_MM,
     TEXT_MM,
     as_study,
@@ -58,6 +59,7 @@ from graphmethods.sheets.dynamics import (
     problem_text,
     value_text,
 )
+from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, clear_tick_labels
 
@@ -210,7 +212,8 @@ def _compass(dx: float, dy_up: float) -> tuple[str, ...]:
 def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(), J_to: float, T_hi: float,
                      T_lo: float, within=None, prefix: str = "", y_top_mm: float | None = None,
                      label_step: int | None = None, register_only=(), own_frame: bool = False,
-                     J_from: float = 0.0, page_axes: tuple[Axis, Axis] | None = None) -> list:
+                     J_from: float = 0.0, every_value: bool = False,
+                     page_axes: tuple[Axis, Axis] | None = None) -> list:
     """The energy–mass diagram at ``origin`` (page point of J_e = J_from, ΔT = 0): axes, curve, rays, k, l, kl, ψ.
 
     Parameters
@@ -235,6 +238,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
     J_from : float
         Where the abscissa starts (kg·m²): 0, or a suppressed zero near J_e,min (marked by a zigzag);
         ``res`` is then the construction with its ordinate axis there (:func:`offset_origin`).
+    every_value : bool
+        Every tick with its value (a slide): where the curve or a ray would cover values, the ticks are spaced
+        wider (up to 4 times) until none is covered.
 
     Returns
     -------
@@ -258,7 +264,7 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         psi_els.append(axis_break((d.origin[0] + 5.0, d.origin[1]), f"{prefix}axis-J-break"))
     occ.register(curve, *rays, dim, *psi_els, *register_only)
     if page_axes is None:
-        ax_T, ax_J = _diagram_axes(d, occ, nt)
+        ax_T, ax_J = _diagram_axes(d, occ, nt, every_value=every_value)
     else:                               # the page's own ΔT and J_e axes (a worksheet's): numbers keep off their values
         ax_T, ax_J = page_axes
         occ.register(ax_T, ax_J)
@@ -351,28 +357,72 @@ class _DiagramPlace:
                 oy - self.s_T.to_mm(self.T_lo) + lay.frame_mm)
 
 
-def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation) -> tuple[Axis, Axis]:
-    """The ΔT and J_e axes through the origin (J_e from ``J_from``), their tick labels kept off what is drawn."""
+def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
+                  every_value: bool = False) -> tuple[Axis, Axis]:
+    """The ΔT and J_e axes through the origin (J_e from ``J_from``), their tick labels kept off what is drawn;
+    ``every_value``: no tick left without its value (:func:`diagram_elements`)."""
     ox, oy = d.origin
     s_T, s_J, T_lo, T_hi = d.s_T, d.s_J, d.T_lo, d.T_hi
-    ax_T = Axis(d.origin, s_T, "y", min_value=T_lo, max_value=max(T_hi, T_lo + s_T.per_mm), ticks=d.ticks_T,
-                label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal,
-                skip_zero_label=True, name=f"{d.prefix}axis-T")
+
+    def axis_T(ticks: tuple[float, ...]) -> Axis:
+        return Axis(d.origin, s_T, "y", min_value=T_lo, max_value=max(T_hi, T_lo + s_T.per_mm), ticks=ticks,
+                    label=nt.quantity(nt.sym("dynamics.dT"), "J"), size_mm=SMALL_MM, decimal=nt.decimal,
+                    skip_zero_label=True, name=f"{d.prefix}axis-T")
+
     below = float(np.mean(d.Y[:-1] < 0)) > 0.5
-    _, labels_J, name_J = inertia_ticks(d.J_from, d.J_to, s_J, nt)
-    ax_J = Axis((ox - s_J.to_mm(d.J_from), oy), s_J, "x", min_value=d.J_from, max_value=d.J_to, ticks=d.ticks_J,
-                tick_labels=labels_J, label=name_J, size_mm=SMALL_MM, decimal=nt.decimal,
-                labels_side="above" if below else "below", skip_zero_label=True, name=f"{d.prefix}axis-J")
+
+    def axis_J(k: float) -> Axis:
+        ticks, labels_J, name_J = inertia_ticks(d.J_from, d.J_to, s_J, nt, min_gap_mm=J_TICK_GAP_MM * k)
+        return Axis((ox - s_J.to_mm(d.J_from), oy), s_J, "x", min_value=d.J_from, max_value=d.J_to,
+                    ticks=d.ticks_J if k == 1 else ticks, tick_labels=labels_J, label=name_J, size_mm=SMALL_MM,
+                    decimal=nt.decimal, labels_side="above" if below else "below", skip_zero_label=True,
+                    name=f"{d.prefix}axis-J")
+
+    ax_T, ax_J = axis_T(d.ticks_T), axis_J(1)
     occ.add_line((ax_T.start, ax_T.tip))
     occ.add_line((ax_J.start, ax_J.tip))
     ax_T = clear_tick_labels(ax_T, occ, keep_values=True)
+    if every_value:
+        step = d.ticks_T[1] - d.ticks_T[0] if len(d.ticks_T) > 1 else 1.0       # every k-th tick, 0 among them
+        ax_T = _every_value(ax_T, lambda k: clear_tick_labels(axis_T(tuple(
+            t for t in d.ticks_T if round(t / step) % k == 0)), occ, keep_values=True))
     occ.register(ax_T)
     ax_J = clear_tick_labels(ax_J, occ, keep_values=True, other_side=True)
+    if every_value:
+        ax_J = _every_value(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True))
     occ.register(ax_J)
     band = tick_label_band(ax_J)
     if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
         occ.add_box(band)
     return ax_T, ax_J
+
+
+def _off_origin(axis: Axis) -> list[tuple[float, str]]:
+    """The ticks of ``axis`` besides its origin (0 or a suppressed zero), with their values as written."""
+    labels = axis.tick_labels or ("",) * len(axis.ticks)
+    return [(t, lab) for t, lab in zip(axis.ticks, labels) if t != 0 and abs(t - axis.min_value) > 1e-12]
+
+
+def _every_value(axis: Axis, wider: Any) -> Axis:
+    """``axis`` if every tick besides the origin has its value written; else the first of ``wider(k)`` (the ticks
+    k = 2, 3, 4 times as far apart) that writes all of at least two, its origin labelled as ``axis`` labels it;
+    else ``axis`` (a tick without its value rather than ticks irregularly spaced)."""
+    def origin_as_given(alt: Axis) -> Axis:
+        labels = list(alt.tick_labels or ("",) * len(alt.ticks))
+        given = dict(zip(axis.ticks, axis.tick_labels or ()))
+        for i, t in enumerate(alt.ticks):
+            if t == 0 or abs(t - alt.min_value) <= 1e-12:
+                labels[i] = given.get(t, "")
+        return replace(alt, tick_labels=tuple(labels))
+
+    if all(lab for _, lab in _off_origin(axis)):
+        return axis
+    for k in (2, 3, 4):
+        alt = wider(k)
+        written = _off_origin(alt)
+        if len(written) >= 2 and all(lab for _, lab in written):
+            return origin_as_given(alt)
+    return axis                 # a tick left unwritten rather than ticks irregularly spaced
 
 
 def tick_label_band(axis: Axis) -> Box | None:
@@ -722,8 +772,10 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     # the title block of the final page can be wider than the probe's: keep the rays off its whole row
     if tb is not None:
         avoid = ((x0 - 10.0, tb.at[1], clip[2], clip[3]),)
+    if is_slide(page_probe):                    # a slide's rays stop below its title (whitworth ru crossed it)
+        avoid += (sheet.header().bbox(),)
     els = diagram_elements(res, origin=origin, nt=nt, occ=sheet.occ, clip=clip, avoid=avoid, J_to=J_to,
-                           T_hi=T_hi, T_lo=T_lo, within=sheet.box, J_from=J_0)
+                           T_hi=T_hi, T_lo=T_lo, within=sheet.box, J_from=J_0, every_value=is_slide(sheet.probe))
     on_sheet = O1_on_sheet(res, origin, clip)
     rows = compact_rows(result_rows(res, nt, on_sheet=on_sheet, J_0=J_0))
     w = _table(rows, (0, 0)).width_mm

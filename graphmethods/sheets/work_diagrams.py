@@ -4,7 +4,7 @@ pole and its rays (split out of :mod:`graphmethods.sheets.calculus`, which re-ex
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -23,16 +23,19 @@ from graphmethods.sheets.calculus import (
     RAY,
     RESULT,
     _Band,
+    _broken_behind,
     _column_table,
     _column_width,
     _curve_names,
+    _fan_side,
     _fmt,
     _h_dimension,
     _pole,
     _side_block,
     _strip_axes,
 )
-from graphmethods.sheets.layout import Occupancy, Sheet, problem_title
+from graphmethods.sheets.engine.lettering import is_slide
+from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, problem_title
 from graphmethods.sheets.styles import PROJECTION
 
 # ----------------------------------------------------------------------------- 2. work diagrams
@@ -68,7 +71,16 @@ def _moment_subject(subject: Any, m: int, nt: Notation) -> tuple[Any, Any, np.nd
     return M_d, M_r, phi, None, prob
 
 
-def _accuracy_rows(nt: Notation, wd: gc.WorkDiagrams, work_unit: str) -> list[tuple[str, ...]]:
+def _accuracy_rows(nt: Notation, wd: gc.WorkDiagrams, work_unit: str, *,
+                   across: bool = False) -> list[tuple[str, ...]]:
+    """The accuracy table: a row per construction (A_d, A_r, ΔE) and its differences from the exact integral
+    in columns; ``across``: a column per construction (a slide's right column is narrow: the long headings go
+    down its first column, 110 mm wide where the rows make 165 mm and leave the diagrams half the slide)."""
+    rows = _accuracy_by_construction(nt, wd, work_unit)
+    return [tuple(col) for col in zip(*rows)] if across else rows
+
+
+def _accuracy_by_construction(nt: Notation, wd: gc.WorkDiagrams, work_unit: str) -> list[tuple[str, ...]]:
     wu, mm = nt.unit(work_unit), nt.unit("mm")
     noise = 1e-9 * (float(np.abs(np.concatenate((wd.A_d.values, wd.A_r.values))).max()) or 1.0)
 
@@ -112,6 +124,7 @@ class _WorkScales:
     M_lo: float
     M_hi: float
     period: float
+    across: bool = False            # the accuracy table a column per construction (a slide)
 
 
 def _work_angle_scale(mu_phi: Any, nt: Notation, period: float, width: float) -> Scale:
@@ -193,20 +206,26 @@ def _work_scales(M_d: Any, M_r: Any, phi: np.ndarray, study: Any, sheet: Sheet, 
                              f"{s_M.to_mm(M_hi - M_lo):.1f} mm but the strip leaves {band_h:.1f} mm; give a larger "
                              f"μ_M or none")
     probe_wd = _construction(M_d, M_r, phi, study, mu_phi=1.0, mu_M=1.0, H_mm=1.0)
-    right_col = _column_width(_accuracy_rows(nt, probe_wd, work_unit),
-                              f"{nt.sym('calculus.A_d')}(φ_T) − {nt.sym('calculus.A_r')}(φ_T) = −1234 J "
-                              f"({nt.word('closure')})")
+    across = is_slide(sheet.probe)
+    closure = f"{nt.sym('calculus.A_d')}(φ_T) − {nt.sym('calculus.A_r')}(φ_T) = −1234 J ({nt.word('closure')})"
+    right_col = _column_width(_accuracy_rows(nt, probe_wd, work_unit, across=across), closure)
     A_span = max(float(np.ptp(np.concatenate((probe_wd.A_d.values, probe_wd.A_r.values, [0.0])))), 1e-300)
-    s_phi, s_M, H, room = _pick_pole((x0, x1), right_col, period, band_h, s_M, nt=nt, A_span=A_span,
-                                     mu_M_given=mu_M is not None, mu_phi=mu_phi, H_mm=H_mm)
-    wd = _construction(M_d, M_r, phi, study, mu_phi=s_phi.per_mm, mu_M=s_M.per_mm, H_mm=H)
+    for _ in range(3):          # the table's millimetres are written at the scales picked: wider, the graphs narrower
+        s_phi, s_M_, H, room = _pick_pole((x0, x1), right_col, period, band_h, s_M, nt=nt, A_span=A_span,
+                                          mu_M_given=mu_M is not None, mu_phi=mu_phi, H_mm=H_mm)
+        wd = _construction(M_d, M_r, phi, study, mu_phi=s_phi.per_mm, mu_M=s_M_.per_mm, H_mm=H)
+        drawn = _column_width(_accuracy_rows(nt, wd, work_unit, across=across), closure)
+        if drawn <= right_col + 1e-9:
+            break
+        right_col = drawn
+    s_M = s_M_
     s_A = Scale(nt.sym("calculus.mu_A"), nt.unit(work_unit), wd.mu_A)
     A_vals = np.concatenate((wd.A_d.values, wd.A_r.values, [0.0]))
     if s_A.to_mm(float(np.ptp(A_vals))) > band_h + 1e-9:
         raise InputError(f"at H = {H:g} mm the work diagrams need {s_A.to_mm(float(np.ptp(A_vals))):.1f} mm but the "
                          f"strip leaves {band_h:.1f} mm; give a larger H_mm or none to have one picked")
     return _WorkScales(s_phi, s_M, s_A, H, wd, x0 + room + L.graph_gap_mm, top, band_h, right_col, M_lo, M_hi,
-                       period)
+                       period, across)
 
 
 def _mean_ordinates(ws: _WorkScales, b_M: _Band, x: np.ndarray, M_d: Any, M_r: Any
@@ -238,22 +257,50 @@ def _mean_ordinates(ws: _WorkScales, b_M: _Band, x: np.ndarray, M_d: Any, M_r: A
 def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: Any, x: np.ndarray,
                   phi0: float, moment_unit: str) -> tuple[_Band, list[Element]]:
     """Strip 1: the moment diagram with the mean ordinates, their projections, the rays to the pole P."""
+    ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
+    # the strip's room left for the dimension of H (:data:`LAYOUT` ``dim_room_mm``) on the side it goes: above the
+    # diagram when the fan of rays is narrower above (the engine's moments, mostly negative)
     b_M = _Band(x0=ws.gx0, top=ws.top, height=ws.strip_mm, s_phi=ws.s_phi, s_y=ws.s_M, lo=ws.M_lo, hi=ws.M_hi,
-                period=ws.period, align="top")
+                period=ws.period, align="top" if _fan_side(ords_M) else "bottom")
     curve_d = Polyline(b_M.pts(np.asarray(M_d.phi) - phi0, M_d.M), style=RESULT, name="curve-M_d")
     curve_r = Polyline(b_M.pts(np.asarray(M_r.phi) - phi0, M_r.M), style=RESULT, name="curve-M_r")
     steps, projections, rays = _mean_ordinates(ws, b_M, x, M_d, M_r)
     pole_els = _pole(b_M, ws.H, nt.sym("calculus.P"), "pole", occ)
-    occ.register(curve_d, curve_r, *steps, *projections, *rays)
-    ords_M = np.concatenate((np.asarray(ws.wd.A_r.mean_ordinate), np.asarray(ws.wd.A_d.mean_ordinate))) / ws.s_M.per_mm
+    occ.register(curve_d, curve_r, *steps, *projections)
     # the dimension of H first: its extension line at the origin passes where the φ axis letters its 0,
     # and the axis moves a tick label it would cross beside its tick
     dim = _h_dimension(b_M, ws.H, ords_M, f"H = {nt.number(ws.H)} {nt.unit('mm')}", "H", occ)
+    # the M values are written before the fan of rays, which is broken behind them (ГОСТ 2.303): the fan covers the
+    # left of the axis, and values cleared for it left ticks unlabelled; a value that covers other ink goes, with
+    # its tick
     axes, pos_M, _, _ = _strip_axes(b_M, occ, nt=nt, y_label=nt.quantity(nt.sym("M"), nt.unit(moment_unit)),
                                     m=len(x) - 1, name="M", pos="pos-M")
+    axes[1] = _labelled_ticks_only(axes[1])
+    occ.register(*rays)
+    _keep_values_row(axes[0], occ)
     names_M = _curve_names(occ, ((curve_d, nt.sym("M_d"), b_M.origin[1]), (curve_r, nt.sym("M_r"), b_M.origin[1])),
                            "M")
+    rays = _broken_behind(rays, axes[1])
     return b_M, [*axes, *steps, *projections, *rays, curve_d, curve_r, *pole_els, *dim, *names_M, *pos_M]
+
+
+def _keep_values_row(axis: Any, occ: Occupancy) -> None:
+    """Keep the row of the φ axis's position numbers free: a curve's name set between two of them ("6 M_r 7")
+    reads as one of them (:func:`~graphmethods.sheets.wittenbauer.tick_label_band`)."""
+    from graphmethods.sheets.wittenbauer import tick_label_band
+
+    band = tick_label_band(axis)
+    if band is not None:
+        occ.add_box(band)
+
+
+def _labelled_ticks_only(axis: Any) -> Any:
+    """A value axis without the ticks whose values were left out (0 stays, unwritten as the axes write it)."""
+    labels = axis.tick_labels
+    if labels is None or all(lab or t == 0 for t, lab in zip(axis.ticks, labels)):
+        return axis
+    keep = [k for k, (t, lab) in enumerate(zip(axis.ticks, labels)) if lab or t == 0]
+    return replace(axis, ticks=tuple(axis.ticks[k] for k in keep), tick_labels=tuple(labels[k] for k in keep))
 
 
 def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
@@ -270,6 +317,7 @@ def _work_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, x: np.ndarray,
     occ.register(chords_d, chords_r)
     axes, pos_A, _, _ = _strip_axes(b_A, occ, nt=nt, y_label=nt.quantity(nt.sym("A"), nt.unit(work_unit)),
                                     m=len(x) - 1, name="A", pos="pos-A")
+    _keep_values_row(axes[0], occ)
     names_A = _curve_names(occ, ((chords_d, nt.sym("calculus.A_d"), b_A.origin[1]),
                                  (chords_r, nt.sym("calculus.A_r"), b_A.origin[1])), "A")
     return b_A, [*axes, chords_d, chords_r, *dots_A, *names_A, *pos_A]
@@ -301,17 +349,22 @@ def _work_column(ws: _WorkScales, bands: tuple[_Band, _Band, _Band], x1: float, 
     A_hi = float(np.concatenate((wd.A_d.values, wd.A_r.values, [0.0])).max())
     elements: list[Element] = []
     elements += _side_block(rx, bands[0].top + drop, [ws.s_M.caption(nt), ws.s_phi.caption(nt)], "formula-M", occ)
-    elements += _side_block(rx, bands[1].top + drop, [f"{ws.s_A.symbol} = {ws.s_M.symbol}·{nt.sym('mu_phi')}·H = "
-                                                      f"{nt.number(wd.mu_A)} {wu}/{mm}",
-                                                      f"H = {nt.number(ws.H)} {mm} ({picked})"], "formula-A", occ)
+    block_A = _side_block(rx, bands[1].top + drop, [f"{ws.s_A.symbol} = {ws.s_M.symbol}·{nt.sym('mu_phi')}·H = "
+                                                    f"{nt.number(wd.mu_A)} {wu}/{mm}",
+                                                    f"H = {nt.number(ws.H)} {mm} ({picked})"], "formula-A", occ)
+    elements += block_A
     closure = f"{A_d}({phi}_{{T}}) − {A_r}({phi}_{{T}}) = " \
               f"{nt.number(wd.closure if abs(wd.closure) > 1e-9 * max(1.0, A_hi) else 0.0)} {wu} " \
               f"({nt.word('closure')})"
-    elements += _side_block(rx, bands[2].top + drop, [f"{nt.sym('dE')} = {A_d} − {A_r};  {ws.s_A.symbol} = "
+    # on a slide the table (a column per construction) is taller than a strip: the ΔE block follows the A block and
+    # the table has the rest of the column under them
+    y_dE = bands[2].top + drop if not ws.across else block_A[-1].at[1] + LAYOUT.block_drop_mm + 2 * TEXT_MM
+    elements += _side_block(rx, y_dE, [f"{nt.sym('dE')} = {A_d} − {A_r};  {ws.s_A.symbol} = "
                                                       f"{nt.number(wd.mu_A)} {wu}/{mm}", closure], "formula-dE", occ)
-    return elements + _column_table(_accuracy_rows(nt, wd, work_unit), _accuracy_title(nt, study), align="lrrrr",
+    rows = _accuracy_rows(nt, wd, work_unit, across=ws.across)
+    return elements + _column_table(rows, _accuracy_title(nt, study), align="l" + "r" * (len(rows[0]) - 1),
                                     name="accuracy-table", title_name="accuracy-title", right=x1,
-                                    bottom=bands[2].top + ws.strip_mm, under=elements, floor=floor)
+                                    bottom=bands[2].top + ws.strip_mm, under=elements, floor=floor, lettered=ws.across)
 
 
 def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M: Any = None, mu_phi: Any = None,

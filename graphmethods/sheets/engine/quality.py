@@ -34,6 +34,7 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -84,8 +85,10 @@ def segments_marked(rec: RecordingRenderer, groups: Sequence[str] = ()) -> tuple
     >>> seg.tolist(), marked.tolist()
     ([[0.0, 0.0, 10.0, 0.0]], [True])
     """
-    runs: list[np.ndarray] = []
+    pts_all: list[tuple[float, float]] = []     # every run's points, one after another
+    lens: list[int] = []
     marks: list[bool] = []
+    circles: list[tuple[int, float, float, float]] = []      # (where its 17 points go, cx, cy, r)
     for c in rec.calls:
         if c.kind == "path":
             pts, closed = c.data
@@ -93,19 +96,20 @@ def segments_marked(rec: RecordingRenderer, groups: Sequence[str] = ()) -> tuple
         elif c.kind == "polygon":
             pts = list(c.data) + [c.data[0]] if c.data else []
         elif c.kind == "circle":
-            cx, cy, r = c.data
-            runs.append(np.column_stack((cx + r * _COS16, cy + r * _SIN16)))
-            marks.append(any(g in groups for g in c.groups))
-            continue
+            circles.append((len(pts_all), *c.data))
+            pts = [(0.0, 0.0)] * len(_COS16)
         else:
             continue
         if len(pts) > 1:
-            runs.append(np.asarray(pts, dtype=float).reshape(-1, 2))
+            pts_all.extend(pts)
+            lens.append(len(pts))
             marks.append(any(g in groups for g in c.groups))
-    if not runs:
+    if not lens:
         return np.empty((0, 4)), np.empty(0, dtype=bool)
-    n = np.array([len(r) for r in runs])
-    flat = np.concatenate(runs)
+    n = np.array(lens)
+    flat = np.array(pts_all, dtype=float).reshape(-1, 2)
+    for at, cx, cy, r in circles:               # a circle as its 16-gon
+        flat[at:at + len(_COS16)] = np.column_stack((cx + r * _COS16, cy + r * _SIN16))
     keep = np.ones(len(flat), dtype=bool)
     keep[np.cumsum(n) - 1] = False              # the last point of a run starts no segment
     first = np.flatnonzero(keep)
@@ -191,6 +195,57 @@ def cell_grid(inner: tuple[float, float, float, float]) -> tuple[float, float, i
     return x0 + ((x1 - x0) - nx * CELL_MM) / 2, y0 + ((y1 - y0) - ny * CELL_MM) / 2, nx, ny
 
 
+def _extents(ext: np.ndarray) -> np.ndarray:
+    """The extents (x_lo, y_lo, x_hi, y_hi) of segments or boxes given as rows ``x0, y0, x1, y1`` (mm)."""
+    return np.column_stack((np.minimum(ext[:, 0], ext[:, 2]), np.minimum(ext[:, 1], ext[:, 3]),
+                            np.maximum(ext[:, 0], ext[:, 2]), np.maximum(ext[:, 1], ext[:, 3])))
+
+
+def _within_one_cell(seg: np.ndarray, ox: float, oy: float, nx: int, ny: int) -> tuple[np.ndarray, np.ndarray]:
+    """The segments (or boxes; n × 4, mm) that lie inside one cell of the grid (origin ``ox, oy``, ``nx × ny``
+    cells of :data:`CELL_MM`) more than :data:`_BUCKET_SLACK_MM` from its edges, and those cells' numbers
+    (``i·ny + j``).
+
+    Such a segment touches its cell and no other (the clipping test cannot say otherwise: every end is inside
+    the one, and the others are farther than the buckets' slack), and such a box overlaps its cell alone, so
+    :func:`ink_cells` marks them without a test; most of a drawing's segments (arrowheads, hatching, circles,
+    curves) and texts are this small.
+
+    >>> inside, cell = _within_one_cell(np.array([[1.0, 1.0, 5.0, 3.0], [1.0, 1.0, 25.0, 3.0]]), 0.0, 0.0, 3, 2)
+    >>> inside.tolist(), cell.tolist()
+    ([True, False], [0])
+    """
+    e = _BUCKET_SLACK_MM
+    with np.errstate(invalid="ignore"):
+        i0 = np.floor((np.minimum(seg[:, 0], seg[:, 2]) - e - ox) / CELL_MM)
+        i1 = np.floor((np.maximum(seg[:, 0], seg[:, 2]) + e - ox) / CELL_MM)
+        j0 = np.floor((np.minimum(seg[:, 1], seg[:, 3]) - e - oy) / CELL_MM)
+        j1 = np.floor((np.maximum(seg[:, 1], seg[:, 3]) + e - oy) / CELL_MM)
+        inside = (i0 == i1) & (j0 == j1) & (i0 >= 0) & (i0 < nx) & (j0 >= 0) & (j0 < ny)
+    return inside, (i0[inside] * ny + j0[inside]).astype(np.int64)
+
+
+def _grid_pairs(ext: np.ndarray, ox: float, oy: float, nx: int, ny: int) -> tuple[np.ndarray, np.ndarray]:
+    """The pairs (item, cell number ``i·ny + j``) of finite extents ``ext`` (n × 4: x_lo, y_lo, x_hi, y_hi, mm)
+    and the cells of the grid (as in :func:`_within_one_cell`) that come within :data:`_BUCKET_SLACK_MM` of
+    them: every cell an item can touch, and few more.
+
+    >>> _grid_pairs(np.array([[15.0, 5.0, 25.0, 5.0]]), 0.0, 0.0, 3, 2)[1].tolist()
+    [0, 2]
+    """
+    e = _BUCKET_SLACK_MM
+    i0 = np.clip(np.floor((ext[:, 0] - e - ox) / CELL_MM), 0, nx).astype(np.int64)
+    i1 = np.clip(np.floor((ext[:, 2] + e - ox) / CELL_MM), -1, nx - 1).astype(np.int64)
+    j0 = np.clip(np.floor((ext[:, 1] - e - oy) / CELL_MM), 0, ny).astype(np.int64)
+    j1 = np.clip(np.floor((ext[:, 3] + e - oy) / CELL_MM), -1, ny - 1).astype(np.int64)
+    nq, nr = np.maximum(i1 - i0 + 1, 0), np.maximum(j1 - j0 + 1, 0)
+    n = nq * nr
+    item = np.repeat(np.arange(len(ext)), n)
+    local = np.arange(int(n.sum())) - np.repeat(np.cumsum(n) - n, n)
+    span = np.repeat(nq, n)             # ≥ 1 wherever a pair is
+    return item, (np.repeat(i0, n) + local % span) * ny + np.repeat(j0, n) + local // span
+
+
 def ink_cells(seg: np.ndarray, boxes: np.ndarray, inner: tuple[float, float, float, float]) -> np.ndarray:
     """Which cells of the grid in ``inner`` (:func:`cell_grid`; bool array, cells across × down) some ink
     touches: a segment of ``seg`` (n × 4, mm) passing through or touching the cell, or a text box of
@@ -205,15 +260,41 @@ def ink_cells(seg: np.ndarray, boxes: np.ndarray, inner: tuple[float, float, flo
     ox, oy, nx, ny = cell_grid(inner)
     if nx < 1 or ny < 1:
         return np.zeros((max(nx, 0), max(ny, 0)), dtype=bool)
+    cells = _cells(ox, oy, nx, ny)
+    used = np.zeros(nx * ny, dtype=bool)
+    seg = np.asarray(seg, dtype=float).reshape(-1, 4)
+    finite = np.isfinite(seg).all(axis=1)
+    if not finite.all():                        # no grid for these: every cell
+        used |= boxes_crossed(seg[~finite], cells, grid_mm=CELL_MM)
+        seg = seg[finite]
+    inside, cell = _within_one_cell(seg, ox, oy, nx, ny)
+    used[cell] = True
+    seg = seg[~inside]
+    si, ci = _grid_pairs(_extents(seg), ox, oy, nx, ny)        # the cells near each longer segment
+    used[ci[pairs_hit(seg[si], cells[ci])]] = True
+    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    finite = np.isfinite(boxes).all(axis=1)
+    inside, cell = _within_one_cell(boxes, ox, oy, nx, ny)      # a box inside one cell overlaps it alone
+    used[cell] = True
+    rest, odd = boxes[~inside & finite], boxes[~finite]
+    bi, ci = _grid_pairs(_extents(rest), ox, oy, nx, ny)
+    c, b = cells[ci], rest[bi]
+    used[ci[(c[:, 0] < b[:, 2]) & (b[:, 0] < c[:, 2]) & (c[:, 1] < b[:, 3]) & (b[:, 1] < c[:, 3])]] = True
+    if len(odd):
+        used |= ((cells[:, None, 0] < odd[None, :, 2]) & (odd[None, :, 0] < cells[:, None, 2])
+                 & (cells[:, None, 1] < odd[None, :, 3]) & (odd[None, :, 1] < cells[:, None, 3])).any(axis=1)
+    return used.reshape(nx, ny)
+
+
+@lru_cache(maxsize=8)
+def _cells(ox: float, oy: float, nx: int, ny: int) -> np.ndarray:
+    """The cells of a grid (:func:`cell_grid`) as boxes (nx·ny × 4, mm), cell ``(i, j)`` in row ``i·ny + j``
+    (read only: shared by every count on that grid)."""
     i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
     cells = np.column_stack((ox + i.ravel() * CELL_MM, oy + j.ravel() * CELL_MM,
                              ox + (i.ravel() + 1) * CELL_MM, oy + (j.ravel() + 1) * CELL_MM))
-    used = boxes_crossed(seg, cells, grid_mm=CELL_MM)
-    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
-    if len(boxes):
-        used |= ((cells[:, None, 0] < boxes[None, :, 2]) & (boxes[None, :, 0] < cells[:, None, 2])
-                 & (cells[:, None, 1] < boxes[None, :, 3]) & (boxes[None, :, 1] < cells[:, None, 3])).any(axis=1)
-    return used.reshape(nx, ny)
+    cells.flags.writeable = False
+    return cells
 
 
 def glyph_box(lab: Label) -> tuple[float, float, float, float]:

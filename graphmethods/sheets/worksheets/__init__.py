@@ -42,7 +42,13 @@ blank answers file), :mod:`.classset` (a class set and its files' contents) and
 (one PDF of the students' pages then the keys, an SVG per page, a problem file per variant, which
 ``graphmethods check`` reads); :func:`graphmethods.cli.worksheet.write_worksheet` writes them,
 atomically and never over existing files unless asked.
+
+The kinds with modules of their own (``acceleration-plan``, ``cam``) are imported when first asked for, so a
+class set of one kind loads only its own.
 """
+
+import importlib
+from typing import TYPE_CHECKING, Any
 
 from graphmethods.scene import markup
 from graphmethods.sheets.worksheets import answers
@@ -95,9 +101,17 @@ from graphmethods.sheets.worksheets.variants import (
     variants,
 )
 
-# isort: split
-# the acceleration-plan kind has its own module (it draws linkages of several kinds); it registers itself
-from graphmethods.sheets.worksheets import acceleration_plan, cam
+# the acceleration-plan and cam kinds have modules of their own (they draw linkages of several kinds, cams), each
+# registering its kind when imported: on first use of the kind (variants.OWN_MODULES), or of the name here
+if TYPE_CHECKING:
+    from graphmethods.sheets.worksheets import acceleration_plan, cam
+
+
+def __getattr__(name: str) -> Any:
+    """``acceleration_plan`` and ``cam``: the kind's module, imported when first asked for."""
+    if name in ("acceleration_plan", "cam"):
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
     "KINDS", "PROBLEM_FORMAT", "RED", "SEGMENTS", "STATEMENTS", "TITLES", "ColorText", "EnergyMassVariant",

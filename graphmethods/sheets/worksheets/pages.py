@@ -50,6 +50,7 @@ from graphmethods.sheets.worksheets.texts import STATEMENTS, value_unit
 from graphmethods.sheets.worksheets.variants import (
     EnergyMassVariant,
     IndicatorVariant,
+    Kinds,
     PlanVariant,
     StepMomentVariant,
     Variant,
@@ -604,8 +605,8 @@ def _em_page(v: EnergyMassVariant, nt, key: bool) -> Scene:
     return sh.scene((s_J, s_T))
 
 
-PAGES: dict[str, Callable[..., Scene]] = {"indicator": _indicator_page, "step-moment": _step_page,
-                                          "velocity-plan": _plan_page, "wittenbauer": _em_page}
+PAGES: dict[str, Callable[..., Scene]] = Kinds({"indicator": _indicator_page, "step-moment": _step_page,
+                                               "velocity-plan": _plan_page, "wittenbauer": _em_page})
 
 
 def student_page(v: Variant, *, notation="en") -> Scene:

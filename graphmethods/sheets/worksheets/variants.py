@@ -303,8 +303,46 @@ class EnergyMassVariant(_FlywheelVariant):
                 "omega_min_at": list(r.index_omega_min)}
 
 
-CLASSES = {"indicator": IndicatorVariant, "step-moment": StepMomentVariant, "velocity-plan": PlanVariant,
-            "wittenbauer": EnergyMassVariant}
+#: the kinds kept in a module of their own (under :mod:`graphmethods.sheets.worksheets`), which registers the
+#: kind when imported: imported when the kind is first asked for, so a class set of one kind loads no other
+OWN_MODULES = {"acceleration-plan": "acceleration_plan", "cam": "cam"}
+
+
+class Kinds(dict):
+    """A table by worksheet kind whose own-module kinds (:data:`OWN_MODULES`) are registered on first use."""
+
+    def __missing__(self, kind: Any) -> Any:
+        if kind in OWN_MODULES:
+            load_kind(kind)
+            if dict.__contains__(self, kind):
+                return dict.__getitem__(self, kind)
+        raise KeyError(kind)
+
+    def __contains__(self, kind: object) -> bool:
+        if dict.__contains__(self, kind):
+            return True
+        if kind in OWN_MODULES:
+            load_kind(str(kind))
+            return dict.__contains__(self, kind)
+        return False
+
+
+def load_kind(kind: str) -> bool:
+    """Import the module of a kind kept in a module of its own (it registers itself); True when one was.
+
+    >>> load_kind("cam") and "cam" in CLASSES
+    True
+    """
+    home = OWN_MODULES.get(kind)
+    if home is None:
+        return False
+    import importlib
+    importlib.import_module(f"graphmethods.sheets.worksheets.{home}")
+    return dict.__contains__(CLASSES, kind)
+
+
+CLASSES: dict[str, Any] = Kinds({"indicator": IndicatorVariant, "step-moment": StepMomentVariant,
+                                  "velocity-plan": PlanVariant, "wittenbauer": EnergyMassVariant})
 
 
 def variant_from_dict(d: dict, *, source: str = "<dict>") -> Variant:
@@ -520,8 +558,8 @@ def energy_mass_from_press(press: dict, *, seed: int = 0, number: int = 1, posit
                              delta=str(data["delta"]), mu_J=mu_J, mu_T=mu_T)
 
 
-GENERATORS: dict[str, Callable] = {"indicator": _gen_indicator, "step-moment": _gen_step_moment,
-                                    "velocity-plan": _gen_plan, "wittenbauer": _gen_press}
+GENERATORS: dict[str, Callable] = Kinds({"indicator": _gen_indicator, "step-moment": _gen_step_moment,
+                                           "velocity-plan": _gen_plan, "wittenbauer": _gen_press})
 
 
 def _key(params: dict) -> str:
