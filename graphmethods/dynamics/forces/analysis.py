@@ -211,6 +211,18 @@ def _rigid_refs(lk: Any) -> dict[str, tuple[str, str | None]]:
 ROUNDOFF = 1e-9
 
 
+def _kinematic_scales(motion: Any) -> tuple[Fl, Fl]:
+    """The size of the accelerations in each position: the largest |a| of a point (m/s²), and that over the
+    crank's length l_OA (rad/s²); an inertia force or moment below :data:`ROUNDOFF` of m or J times them is
+    the round-off of a zero acceleration (a slider at its dead centre, a link at its extreme swing)."""
+    lk = motion.linkage
+    a_max = np.max([np.abs(np.asarray(a, dtype=complex)) for a in motion.a_.values()], axis=0)
+    l_OA = np.abs(np.asarray(motion.z[lk.crank.pin]) - np.asarray(motion.z[lk.crank.centre]))
+    eps: Fl = a_max / np.where(l_OA > 0, l_OA, 1.0)
+    out: Fl = np.asarray(a_max, dtype=float)
+    return out, eps
+
+
 def _balance_roundoff(M_b: Fl, lever: Lever, M_power: Fl, reactions: Mapping[str, Reaction],
                       l_OA: Fl) -> tuple[Fl, Lever, Fl]:
     """M_b from the plans, the lever (with its F_b) and the power balance, each 0 where it is within the
@@ -269,6 +281,7 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
     links = set(lk.links)
     applied: dict[str, list[Force]] = {k: [] for k in lk.links}
     inertia = []
+    a_scale, eps_scale = _kinematic_scales(motion)
     for ms in masses:
         if ms.link not in links:
             raise InputError(f"a mass on link {ms.link!r}: the moving links are {', '.join(lk.links)}")
@@ -280,6 +293,8 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
         S: Cx = np.asarray(motion.z[ms.at], dtype=complex)
         F: Cx = np.asarray(-ms.m * np.asarray(motion.a_[ms.at]), dtype=complex)
         M: Fl = np.asarray(-ms.J * np.asarray(motion.epsilon[ms.link]), dtype=float)
+        F = np.where(np.abs(F) <= ROUNDOFF * ms.m * a_scale, 0j, F)       # a dead centre's a_S of round-off: 0
+        M = np.where(np.abs(M) <= ROUNDOFF * ms.J * eps_scale, 0.0, M)
         inertia.append(_inertia(ms.link, ms.at, S, F, M))
         if ms.m or ms.J:
             applied[ms.link].append(Force(f"F_i{ms.link}", F, S, M))
