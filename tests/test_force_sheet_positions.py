@@ -68,3 +68,14 @@ def test_a_dead_centre_prints_M_b_as_zero():
     res = cli_forces.result(builtin.case("shaper"), position=0)
     assert (res["M_balance"], res["M_balance_lever"], res["M_balance_power"]) == (0.0, 0.0, 0.0)
     assert _sheet_M_b(_sheet("shaper", 0)) == 0.0
+
+
+@pytest.mark.parametrize("name, i", [("engine", 6), ("scotch-yoke", 0), ("two-slider", 9), ("shaper", 0)])
+def test_the_force_build_up_prints_no_round_off(name, i):
+    """The slides' force build-up: R_03 was 5.4·10⁻¹⁴ N at the engine's dead centre, "the table's 0" now."""
+    from graphmethods.sheets import construction_steps as C
+
+    for build in (C.force_plans_steps, C.zhukovsky_forces_steps):
+        steps = build(builtin.case(name), i)
+        captions = [str(getattr(s, "caption", s)) for s in getattr(steps, "steps", steps)]
+        assert captions and not [c for c in captions if re.search("10⁻[¹²³⁴⁵⁶⁷⁸⁹]", c)]
