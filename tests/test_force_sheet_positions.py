@@ -23,7 +23,7 @@ def _walk(elements):
         yield from _walk(getattr(e, "elements", ()) or ())
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _sheet(name, i, lang="en"):
     return force_analysis_sheet(builtin.case(name), position=i, page="A1", notation=lang)
 
