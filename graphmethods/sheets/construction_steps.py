@@ -154,8 +154,10 @@ def force_plans_steps(case, position: int | None = None, *, notation="en", page=
     groups = {g.name: g for g in fa.motion.linkage.groups}
     newton = nt.unit("N")
 
-    def size(F) -> str:
-        return f"{nt.number(float(abs(F[i])), sig=5)} {newton}"
+    big = max([float(abs(r.R[i])) for r in fa.reactions.values()] + [0.0])
+
+    def size(F) -> str:                                  # the reactions table's value: round-off is 0
+        return f"{nt.number(SF.round_off_zero(float(abs(F[i])), big), sig=5)} {newton}"
 
     rules: list = [(nt.word("steps.f_scale", mu=figure.scales()[0].caption(nt)), ["title", "scale-captions", "legend"])]
     solved: set[str] = set()
@@ -232,6 +234,8 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
                     lambda n: n in ("title", "pole", "label-pole", "text-0", "scale-captions", "legend")
                     or n.startswith(("ray-", "image-")))]
     couple_said = False
+    big = max([abs(complex(f.F[i])) * abs(complex(lev.image_pin[i])) for f in items]     # a force times the lever's
+              + [abs(float(f.moment[i])) for f in items] + [0.0])                      # size: its moments' scale
     j = 0
     while j < len(items):
         lbl = items[j].label
@@ -239,8 +243,7 @@ def zhukovsky_forces_steps(case, position: int | None = None, *, notation="en", 
         while j + len(idx) < len(items) and items[j + len(idx)].label == lbl:
             idx.append(j + len(idx))
         moment = sum(float(items[t].moment[i]) for t in idx)
-        if abs(moment) < 1e-9 * max(abs(float(lev.M_balance[i])), 1e-300):
-            moment = 0.0                  # a force through p (or along its own image's ray): rounding only
+        moment = SF.round_off_zero(moment, big)   # a force through p (or along its own image's ray): rounding only
         couple = len(idx) > 1
         text = "steps.z_couple" if couple else "steps.z_force"
         wanted = {f"force-{t}" for t in idx} | {f"label-force-{t}" for t in idx}

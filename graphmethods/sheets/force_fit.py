@@ -27,6 +27,7 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Scale
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.scale import pick_scale
 from graphmethods.units import convenient_at_least
 
@@ -62,7 +63,10 @@ def fit_with_arrows(points: list[complex], arrows: list[tuple[complex, complex]]
     """
     room = (max(area[2] - area[0] - 2 * pad_mm, 1e-9), max(area[3] - area[1] - 2 * pad_mm, 1e-9))
     z = np.asarray(points, dtype=complex)
-    span = max(float(np.ptp(z.real)) * room[1] / room[0], float(np.ptp(z.imag)), 1e-12)
+    span = max(float(np.ptp(z.real)) * room[1] / room[0], float(np.ptp(z.imag)))
+    size = float(np.max(np.abs(z), initial=0.0))
+    if within_roundoff(span, size):         # the points coincide (a group folded at a dead centre): a drawing
+        span = max(0.01 * size, 1e-12)      # of 1 % of their distance from O, never μ_l = 10⁻¹⁴ m/mm
     first = pick_scale(span, room[1], symbol="μ_l", unit=nt.unit("m"))
     tips = np.asarray([p for p, _ in arrows], dtype=complex).reshape(-1)
     offsets = np.asarray([_drawn_length(F, s_F) for _, F in arrows], dtype=complex).reshape(-1)

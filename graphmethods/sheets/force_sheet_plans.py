@@ -77,7 +77,8 @@ def plan_equation(fa: Any, j: int, i: int, nt: Notation) -> str:
     """
     sides = plan_sides(fa, j, i)
     big = max(abs(F) for _, F, _ in sides)
-    return " + ".join(_label(lbl, nt) for lbl, F, _ in sides if not within_roundoff(abs(F), big)) + " = 0"
+    kept = [lbl for lbl, F, _ in sides if big == 0.0 or not within_roundoff(abs(F), big)]   # all 0: all written
+    return " + ".join(_label(lbl, nt) for lbl in kept) + " = 0"
 
 
 def _found(fa: Any, j: int, i: int, sides: list[tuple[str, complex, bool]]) -> list[tuple[str, float]]:
@@ -133,6 +134,8 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     let = lettering(page)
     found = _found(fa, j, i, sides)
     equation = plan_equation(fa, j, i, nt)
+    if not np.any(np.abs(fit)):                                 # every force 0 (a group at rest): no polygon
+        return _zero_plan(sheet, j, equation, found, nt, let.value_mm)
     wide = markup.text_width_mm(equation, let.value_mm) <= sheet.box[2] - sheet.box[0]
     eq_mm = let.value_mm if wide else let.label_mm              # the equation as large as the values when it fits
     pitch = 1.8 * let.value_mm
@@ -181,6 +184,20 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     els += drawn
     els += SF._labels(sheet.occ, _merged(wanted), L.within(area))
     return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
+
+
+def _zero_plan(sheet: Sheet, j: int, equation: str, found: list[tuple[str, float]], nt: Notation,
+               size_mm: float) -> Scene:
+    """Plan ``j`` whose polygon's forces are all zero in this position: its equation and each reaction it finds
+    with its value (N, ``size_mm`` high), no polygon and no μ_F (a plan of round-off would draw 10⁻¹³ N at
+    10⁻¹⁵ N/mm)."""
+    pitch = 1.8 * size_mm
+    x, top = sheet.box[0] + SF.PLANS_LAYOUT.left_mm, sheet.top
+    els: list[Element] = [sheet.header(), Text((x, top + size_mm), equation, size_mm=size_mm, name=f"equation-{j}")]
+    for k, (lbl, R) in enumerate(found):
+        line = f"{_label(lbl, nt)} = {nt.number(R, sig=5)} {nt.unit('N')}"
+        els.append(Text((x, top + size_mm + (k + 1) * pitch), line, size_mm=size_mm, name=f"found-{j}-{k}"))
+    return SF._finish(sheet, els, (), "", f"plan-{j}")
 
 
 def _merged(wanted: list[SF.LabelSpec]) -> list[SF.LabelSpec]:

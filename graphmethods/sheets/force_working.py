@@ -161,12 +161,13 @@ def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int =
     lev = fa.lever
     F_b = complex(lev.F_balance[i])
     pin = complex(lev.image_pin[i])
-    big = max([abs(float(f.moment[i])) for f in lev.forces] + [abs(F_b) * abs(pin)])
+    F_big = max([abs(complex(f.F[i])) for f in lev.forces] + [abs(F_b)])
+    big = max([abs(float(f.moment[i])) for f in lev.forces] + [F_big * abs(pin)])   # a force times the lever's size
     s_b = 1.0 if (pin.conjugate() * F_b).imag >= 0 else -1.0     # F_b's moment taken positive
     terms = []
     for f in lev.forces:
         F, M = abs(complex(f.F[i])), float(f.moment[i])
-        if F > 0.0 and SF.round_off_zero(abs(M), big) != 0.0:
+        if SF.round_off_zero(F, F_big) != 0.0 and SF.round_off_zero(abs(M), big) != 0.0:
             terms.append((s_b * M < 0, f"{nt.number(F, sig=5)}·{nt.number(abs(M) / F, sig=4)}"))
     h_b = abs((pin.conjugate() * F_b).imag) / abs(F_b) if abs(F_b) > 0 else abs(pin)
     fb = SF._markup("F_b", nt)
@@ -198,13 +199,15 @@ def power_working(fa: Any, i: int, nt: Notation | str = "en") -> list[str]:
     n = nt.number
     W = nt.unit("W")
     terms: list[tuple[str, float]] = []
+    scale = 0.0                                            # the powers' own size: |F|·|v|, |M|·|ω_1|
     for f in fa.lever.forces:                              # a force's point moves at v = −i·image·ω₁
         F = complex(f.F[i])
         if f.label.startswith("M") or F == 0:
             continue
         v = -1j * complex(f.image[i]) * mo.omega_1
         P = (v.conjugate() * F).real
-        alpha = float(np.degrees(np.angle(F / v))) if v != 0 else 90.0
+        scale = max(scale, abs(F) * abs(v))
+        alpha = SF.round_off_zero(float(np.degrees(np.angle(F / v))), 180.0) if v != 0 else 90.0
         terms.append((f"P({SF._markup(f.label, nt)}) = {n(abs(F), sig=5)}·{n(abs(v), sig=4)}·cos "
                       f"{n(abs(alpha), sig=4)}° = ", P))
     for k, fs in fa.applied.items():
@@ -215,8 +218,8 @@ def power_working(fa: Any, i: int, nt: Notation | str = "en") -> list[str]:
                 name = SF._markup(f.label.replace("F_", "M_", 1) if f.label.startswith("F_") else f.label, nt)
                 w_text = n(w, sig=4) if w > 0 else f"({n(w, sig=4)})"
                 terms.append((f"P({name}) = {n(M, sig=5)}·{w_text} = ", M * w))
-    big = max([abs(P) for _, P in terms] + [0.0])
-    terms = [(t, P) for t, P in terms if SF.round_off_zero(abs(P), big) != 0.0]
+                scale = max(scale, abs(M) * max(abs(w), abs(w1)))
+    terms = [(t, P) for t, P in terms if SF.round_off_zero(abs(P), scale) != 0.0]
     M_b = nt.sym("forces.M_b")
     total = sum(P for _, P in terms)
     return ([f"{M_b}·ω_{{1}} + ΣF·v·cos {nt.sym('cam.alpha')} + ΣM·ω = 0"] + [f"{t}{n(P, sig=5)} {W}" for t, P in terms]

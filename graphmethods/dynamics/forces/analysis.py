@@ -23,7 +23,7 @@ give M_b again (:mod:`.lever`). Vectorised over the positions of a :class:`Motio
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 from typing import Any
 
@@ -206,6 +206,50 @@ def _rigid_refs(lk: Any) -> dict[str, tuple[str, str | None]]:
     return refs
 
 
+#: a balancing moment below this share of its computation's scale is that computation's round-off (as
+#: :data:`graphmethods.scene.numbers.ROUNDOFF`, which this layer may not import)
+ROUNDOFF = 1e-9
+
+
+def _kinematic_scales(motion: Any) -> tuple[Fl, Fl]:
+    """The size of the accelerations in each position: the largest |a| of a point (m/s²), and that over the
+    crank's length l_OA (rad/s²); an inertia force or moment below :data:`ROUNDOFF` of m or J times them is
+    the round-off of a zero acceleration (a slider at its dead centre, a link at its extreme swing)."""
+    lk = motion.linkage
+    a_max = np.max([np.abs(np.asarray(a, dtype=complex)) for a in motion.a_.values()], axis=0)
+    l_OA = np.abs(np.asarray(motion.z[lk.crank.pin]) - np.asarray(motion.z[lk.crank.centre]))
+    eps: Fl = a_max / np.where(l_OA > 0, l_OA, 1.0)
+    out: Fl = np.asarray(a_max, dtype=float)
+    return out, eps
+
+
+def _balance_roundoff(M_b: Fl, lever: Lever, M_power: Fl, reactions: Mapping[str, Reaction],
+                      l_OA: Fl) -> tuple[Fl, Lever, Fl]:
+    """M_b from the plans, the lever (with its F_b) and the power balance, each 0 where it is within the
+    round-off of its computation: below :data:`ROUNDOFF` times the larger of the position's largest
+    reaction times the crank's length l_OA (m) and the largest |M_b| of the cycle. At a dead centre M_b is
+    0, and is written 0, never 3.2·10⁻¹⁵ N·m.
+
+    >>> from graphmethods.dynamics.forces.lever import Lever
+    >>> lev = Lever((), np.zeros(2, complex), np.array([4e-15j, 300j]), np.array([-5e-16, 30.0]))
+    >>> R = {"R_01": reaction("0", "1", "R", np.array([700.0, 700.0j]), np.zeros(2, complex))}
+    >>> M_b, lev, M_p = _balance_roundoff(np.array([3e-15, 30.0]), lev, np.array([-5e-16, 30.0]), R, np.full(2, 0.1))
+    >>> M_b.tolist(), lev.M_balance.tolist(), lev.F_balance.tolist(), M_p.tolist()
+    ([0.0, 30.0], [0.0, 30.0], [0j, 300j], [0.0, 30.0])
+    """
+    R_max = np.max([np.abs(r.R) for r in reactions.values()], axis=0) if reactions else np.zeros_like(l_OA)
+    M_max = max(float(np.max(np.abs(M), initial=0.0)) for M in (M_b, lever.M_balance, M_power))
+    scale = np.maximum(R_max * l_OA, M_max)
+
+    def zeroed(M: Fl) -> Fl:
+        out: Fl = np.where(np.abs(M) <= ROUNDOFF * scale, 0.0, M)
+        return out
+
+    M_l = zeroed(lever.M_balance)
+    lever = replace(lever, M_balance=M_l, F_balance=np.where(M_l == 0.0, 0j, lever.F_balance))
+    return zeroed(M_b), lever, zeroed(M_power)
+
+
 def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[str, Force]] = (),
                   gravity: float = 0.0) -> ForceAnalysis:
     """The force analysis of a solved linkage (see the module docstring).
@@ -237,6 +281,7 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
     links = set(lk.links)
     applied: dict[str, list[Force]] = {k: [] for k in lk.links}
     inertia = []
+    a_scale, eps_scale = _kinematic_scales(motion)
     for ms in masses:
         if ms.link not in links:
             raise InputError(f"a mass on link {ms.link!r}: the moving links are {', '.join(lk.links)}")
@@ -248,6 +293,8 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
         S: Cx = np.asarray(motion.z[ms.at], dtype=complex)
         F: Cx = np.asarray(-ms.m * np.asarray(motion.a_[ms.at]), dtype=complex)
         M: Fl = np.asarray(-ms.J * np.asarray(motion.epsilon[ms.link]), dtype=float)
+        F = np.where(np.abs(F) <= ROUNDOFF * ms.m * a_scale, 0j, F)       # a dead centre's a_S of round-off: 0
+        M = np.where(np.abs(M) <= ROUNDOFF * ms.J * eps_scale, 0.0, M)
         inertia.append(_inertia(ms.link, ms.at, S, F, M))
         if ms.m or ms.J:
             applied[ms.link].append(Force(f"F_i{ms.link}", F, S, M))
@@ -316,6 +363,7 @@ def kinetostatics(motion: Any, *, masses: Sequence[Mass], loads: Sequence[tuple[
     moving = {k: v for k, v in frozen_applied.items() if v}
     lever = zhukovsky(rigid, moving, centre=O, pin=kin.z[cr.pin], omega_1=motion.omega_1, sense=lk.sense)
     M_power = power_balance(rigid, moving, omega_1=motion.omega_1, sense=lk.sense)
+    M_b, lever, M_power = _balance_roundoff(M_b, lever, M_power, reactions, np.abs(kin.z[cr.pin] - O))
     return ForceAnalysis(motion=motion, inertia=tuple(inertia), applied=MappingProxyType(frozen_applied),
                          reactions=MappingProxyType(reactions), plans=tuple(plans), M_balance=M_b, lever=lever,
                          M_balance_power=M_power, gravity=float(gravity))
