@@ -61,7 +61,7 @@ from graphmethods.sheets.dynamics import (
 )
 from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
-from graphmethods.sheets.layout import Box, clear_tick_labels
+from graphmethods.sheets.layout import Box, clear_tick_labels, tick_label_band
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -423,24 +423,6 @@ def _every_value(axis: Axis, wider: Any) -> Axis:
         if len(written) >= 2 and all(lab for _, lab in written):
             return origin_as_given(alt)
     return axis                 # a tick left unwritten rather than ticks irregularly spaced
-
-
-def tick_label_band(axis: Axis) -> Box | None:
-    """The row (a horizontal axis) or column (a vertical one) that ``axis``'s tick values take, from its
-    first tick to its last, whether each value is written or was left out; None without ticks. Nothing else
-    is placed there: a number in it reads as one of the axis's values.
-
-    >>> from graphmethods.scene import Scale
-    >>> ax = Axis((10.0, 50.0), Scale("μ", "J", 1.0), "x", max_value=30.0, ticks=(0.0, 10.0, 20.0, 30.0))
-    >>> [round(v, 1) for v in tick_label_band(ax)]
-    [9.0, 52.3, 41.9, 55.3]
-    """
-    written = None if axis.tick_labels is None else tuple(lab or "0" for lab in axis.tick_labels)
-    probe = replace(axis, label="", skip_zero_label=False, tick_labels=written)
-    boxes = np.array([label_bbox(p) for p in probe.primitives() if isinstance(p, Label)], dtype=float)
-    if not len(boxes):
-        return None
-    return (float(boxes[:, 0].min()), float(boxes[:, 1].min()), float(boxes[:, 2].max()), float(boxes[:, 3].max()))
 
 
 def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
