@@ -1,7 +1,7 @@
 """graphmethods.sheets: whole textbook figures, one function per figure, problem -> Scene.
 
 - excess work (:mod:`~graphmethods.sheets.energy`): :func:`moment_diagram`, :func:`excess_work_table`,
-  :func:`energy_indicator`, :func:`energy_graph`;
+  :func:`energy_indicator`; the kinetic-energy graph :func:`energy_graph` (:mod:`~graphmethods.sheets.energy_graph`);
 - linkages (:mod:`~graphmethods.sheets.kinematics`): :func:`kinematic_scheme`, :func:`velocity_plan_grid`,
   :func:`velocity_plan`, :func:`velocity_table`;
 - accelerations (:mod:`~graphmethods.sheets.acceleration`): :func:`acceleration_plan`,
@@ -51,7 +51,8 @@ if TYPE_CHECKING:                      # the names for mypy and the reader; at r
         speed_graph,
         zhukovsky_lever,
     )
-    from graphmethods.sheets.energy import energy_graph, energy_indicator, excess_work_table, moment_diagram
+    from graphmethods.sheets.energy import energy_indicator, excess_work_table, moment_diagram
+    from graphmethods.sheets.energy_graph import energy_graph
     from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
     from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
     from graphmethods.sheets.kinematic_scheme import kinematic_scheme
@@ -65,7 +66,7 @@ _HOME = {
     "acceleration_table": "acceleration", "kinematic_diagrams": "calculus", "work_diagrams": "calculus",
     "cam_sheet": "cam_sheet", "acceleration_graph": "dynamics", "delta_T_graph": "dynamics",
     "inertia_graph": "dynamics", "moment_graph": "dynamics", "speed_graph": "dynamics",
-    "zhukovsky_lever": "dynamics", "energy_graph": "energy", "energy_indicator": "energy",
+    "zhukovsky_lever": "dynamics", "energy_graph": "energy_graph", "energy_indicator": "energy",
     "excess_work_table": "energy", "moment_diagram": "energy", "force_analysis_sheet": "force_analysis_sheet",
     "kinematic_analysis_sheet": "kinematic_analysis_sheet", "kinematic_scheme": "kinematic_scheme",
     "velocity_plan": "velocity_plans", "velocity_plan_grid": "velocity_plans", "velocity_table": "velocity_table",
