@@ -17,7 +17,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 from graphmethods.errors import InputError
-from graphmethods.units import is_finite
+from graphmethods.units import ROUNDOFF, is_finite
 
 MINUS = "\u2212"
 #: significant digits of each kind of flywheel quantity, one rule for its figures (the design's table, the
@@ -25,7 +25,6 @@ MINUS = "\u2212"
 #: and angular speeds 6 (ω_max and ω_min differ in the fourth digit at δ = 1/300), speeds 3
 FLYWHEEL_DIGITS = {"J": 4, "mass": 4, "mm": 4, "density": 4, "W": 6, "omega": 6, "speed": 3, "delta": 6,
                    "inverse": 4, "angle": 4, "moment": 6}
-ROUNDOFF = 1e-9     # a value below this share of its computation's scale is that computation's round-off
 
 
 def within_roundoff(value: float, reference: float) -> bool:
