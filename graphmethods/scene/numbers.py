@@ -37,6 +37,30 @@ def within_roundoff(value: float, reference: float) -> bool:
     return abs(float(value)) <= ROUNDOFF * abs(float(reference))
 
 
+def round_off_zero(value: float, size: float) -> float:
+    """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
+    a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
+
+    Parameters
+    ----------
+    value : float
+        A computed value, in any unit (N, N·m, m/s², ...).
+    size : float
+        The largest value of its kind in the same computation, in the same unit.
+
+    Returns
+    -------
+    float
+        ``value``, or 0.0 when :func:`within_roundoff` of ``size``.
+
+    Examples
+    --------
+    >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
+    (0.0, -12.5)
+    """
+    return 0.0 if within_roundoff(value, size) else value
+
+
 def format_mm(x: float) -> str:
     """Format a paper coordinate in mm: 3 decimals, trailing zeros stripped, -0 as 0.
 
