@@ -1,11 +1,13 @@
 """The step-by-step builds of the graphical calculus, the Zhukovsky lever, the force plans and the kinematic
-scheme (split out of :mod:`graphmethods.sheets.steps`, which re-exports them)."""
+scheme (split out of :mod:`graphmethods.sheets.steps`, which lists them; built from the pieces of
+:mod:`graphmethods.sheets.step_rules`)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from graphmethods.scene.steps import BuildUp
+from graphmethods.sheets import step_rules as S
 
 # ----------------------------------------------------------------------------- graphical calculus
 
@@ -312,7 +314,3 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
     ]
     kept = S._kept(rules, figure)
     return S._build(figure, kept, box, cap_mm, rest=len(kept))
-
-
-# the helpers of steps.py, read at call time; imported last, as steps.py re-exports this module
-from graphmethods.sheets import steps as S  # noqa: E402
