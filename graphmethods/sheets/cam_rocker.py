@@ -41,13 +41,11 @@ from graphmethods.kinematics.cam.geometry import psi_0
 from graphmethods.scene import Line, Point, Polyline, Region, Scale, Text, pick_scale
 from graphmethods.scene.elements import Element
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
+from graphmethods.scene.primitives import DASHED, MAIN, THIN
 from graphmethods.sheets.layout import Box, Occupancy
-from graphmethods.sheets.styles import LEVEL, PROJECTION
+from graphmethods.sheets.styles import CENTRE_LINE as CENTRES, LEVEL, PROJECTION
 
 Array = NDArray[np.float64]
-#: the dash-dot of a circle of centres (the roller centre's arc, the cam centre's locus)
-CENTRES = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 
 
 def _limits(cam: CamDesign) -> dict[str, float]:

@@ -12,7 +12,8 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.sheets.check.problems import CycleData, LinkageData
-from graphmethods.sheets.check.report import TOL_MM, TOL_REL, Checker, levels_accepted, rel
+from graphmethods.sheets.check.report import Checker, levels_accepted, rel
+from graphmethods.sheets.check.tolerances import TOL_MM, TOL_REL
 from graphmethods.sheets.worksheets.constructions import region_perimeters_mm
 from graphmethods.sheets.worksheets.variants import SEGMENTS
 from graphmethods.units import omega_from_n

@@ -13,14 +13,12 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
 from graphmethods.sheets.check import acceleration as ca
+from graphmethods.sheets.check.tolerances import TOL_REL
 from graphmethods.titles import Title
 from graphmethods.units import json_text
 
 if TYPE_CHECKING:
     from graphmethods.sheets.check.problems import CycleData, LinkageData
-
-TOL_MM = 0.5
-TOL_REL = 1e-3
 
 #: the usual mistakes: code -> what the student did
 MISTAKES = {
