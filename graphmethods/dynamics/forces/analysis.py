@@ -31,7 +31,6 @@ import numpy as np
 
 from graphmethods.dynamics.forces import prp, rpp, rpr, rrp, rrr, triad
 from graphmethods.dynamics.forces.base import (
-    GROUND,
     Force,
     ForcePlan,
     GroupForces,
@@ -45,6 +44,7 @@ from graphmethods.dynamics.forces.base import (
 from graphmethods.dynamics.forces.lever import Lever, power_balance, zhukovsky
 from graphmethods.dynamics.forces.statics import Cx, Fl, moment_about
 from graphmethods.errors import InputError
+from graphmethods.kinematics.structure import GROUND
 from graphmethods.units import ROUNDOFF, is_finite
 
 #: standard gravity, m/s² (acts along −y of the file's frame)
