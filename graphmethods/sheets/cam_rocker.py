@@ -76,6 +76,26 @@ class Rocker:
 
 
 def rocker(cam: CamDesign) -> Rocker:
+    """The rocker of a designed oscillating cam: its pivot A = (a, 0), arm l and ψ₀ at the designed base radius.
+
+    Parameters
+    ----------
+    cam : CamDesign
+        A designed cam with an oscillating follower (a, l in m).
+
+    Returns
+    -------
+    Rocker
+        Pivot (m), arm (m) and the arm's angle ψ₀ from the line of centres (rad) at the lowest position.
+
+    Examples
+    --------
+    >>> from graphmethods.kinematics.cam import design
+    >>> from graphmethods.problems.builtin import cam_problem
+    >>> rk = rocker(design(cam_problem("oscillating-cam")))
+    >>> rk.A.tolist(), round(rk.psi0, 4)
+    ([0.15, 0.0], 0.1803)
+    """
     p = cam.problem
     return Rocker(np.array([p.pivot, 0.0]), p.arm, psi_0(cam.pitch_base_radius, p.arm, p.pivot))
 

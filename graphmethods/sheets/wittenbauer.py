@@ -540,6 +540,23 @@ def _position_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupanc
 
 
 def O1_on_sheet(res: WittenbauerResult, origin, clip) -> bool:
+    """Whether the rays' intersection O₁ falls inside the drawing's clip box.
+
+    Parameters
+    ----------
+    res : WittenbauerResult
+        The diagram's construction (``O1_mm``: O₁ from the origin, mm, y up).
+    origin : (float, float), mm
+        The diagram's origin on the page (y down).
+    clip : (float, float, float, float), mm
+        Left, top, right, bottom of the region the diagram may draw in.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> O1_on_sheet(SimpleNamespace(O1_mm=(-30.0, 40.0)), (50.0, 150.0), (10.0, 20.0, 200.0, 280.0))
+    True
+    """
     x, y = origin[0] + res.O1_mm[0], origin[1] - res.O1_mm[1]
     return clip[0] <= x <= clip[2] and clip[1] <= y <= clip[3]
 

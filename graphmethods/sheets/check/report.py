@@ -303,6 +303,20 @@ class Checker:
 
 
 def rel(tol_abs: float, value: float) -> float:
+    """The tolerance of a value read off a drawing: the drafting one plus :data:`TOL_REL` of the value.
+
+    Parameters
+    ----------
+    tol_abs : float
+        The absolute tolerance, in the value's unit (mm on paper, or that times a scale).
+    value : float
+        The expected value, same unit.
+
+    Examples
+    --------
+    >>> rel(0.5, 120.0)
+    0.62
+    """
     return tol_abs + TOL_REL * abs(value)
 
 
