@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -788,17 +788,5 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
 
 
-# split out of this module (dynamic_analysis_sheet.py, which imports this one), so that every name reads as
-# before: taken from there when asked for (either module may be imported first)
-if TYPE_CHECKING:
-    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-
-
-def __getattr__(name: str) -> Any:
-    if name == "dynamic_analysis_sheet":
-        from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-        return dynamic_analysis_sheet
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-__all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
+__all__ = ["wittenbauer_diagram", "diagram_elements", "diagram_data", "DiagramData",
            "ray_span", "result_rows"]
