@@ -37,6 +37,24 @@ def step_page(page="slide") -> tuple[Page, tuple[float, float, float, float], fl
     projector); ``"A4"`` … ``"A1"`` are landscape sheets with a frame and a title block. A
     :class:`~graphmethods.scene.Page` is used with its bottom margin grown by the caption band.
 
+    Parameters
+    ----------
+    page : Page or str
+        ``"slide"``, ``"A4"``, ``"A3"``, ``"A2"``, ``"A1"`` or a page.
+
+    Returns
+    -------
+    (Page, (float, float, float, float), float, bool)
+        The figure's page, the caption box (left, top, right, bottom, mm), the caption size (mm) and whether
+        the figure gets a title block.
+
+    Raises
+    ------
+    InputError
+        For another page name.
+
+    Examples
+    --------
     >>> page, box, size, tb = step_page("slide")
     >>> (page.width_mm, page.height_mm), box, size, tb
     ((338.7, 190.5), (8.0, 168.0, 330.7, 186.5), 6.5, False)
@@ -67,6 +85,15 @@ def step_start(notation: str | Notation = "en", page: str | Page = "slide") -> t
     """What every step figure starts from: its notation and :func:`step_page`'s page, caption box (mm),
     caption size (mm) and title-block flag.
 
+    Parameters
+    ----------
+    notation : Notation or str
+        ``"en"``, ``"ru"``, ``"zh"`` or a profile.
+    page : Page or str
+        ``"slide"``, ``"A4"`` … ``"A1"``, or a page (see :func:`step_page`).
+
+    Examples
+    --------
     >>> nt, (page, box, size, tb) = step_start("ru", "A3")
     >>> nt.code, page.size, size, tb
     ('ru', 'A3', 5.0, True)
