@@ -6,8 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from graphmethods.dynamics.reduction import _fraction_at, _stroke_fraction
 from graphmethods.dynamics.study import LOAD_WINDOW_MARGIN, Study
