@@ -94,24 +94,24 @@ def segments_marked(rec: RecordingRenderer, groups: Sequence[str] = ()) -> tuple
         kind = c.kind
         if kind == "path":
             pts, closed = c.data
-            n = len(pts)
-            if closed and n:
+            k = len(pts)
+            if closed and k:
                 pts = (*pts, pts[0])
-                n += 1
+                k += 1
         elif kind == "polygon":
             pts = c.data
-            n = len(pts)
-            if n:
+            k = len(pts)
+            if k:
                 pts = (*pts, pts[0])
-                n += 1
+                k += 1
         elif kind == "circle":
             circles.append((len(pts_all), *c.data))
-            pts, n = ring, len(ring)
+            pts, k = ring, len(ring)
         else:
             continue
-        if n > 1:
+        if k > 1:
             pts_all.extend(pts)
-            lens.append(n)
+            lens.append(k)
             marks.append(bool(groups) and any(g in groups for g in c.groups))
     if not lens:
         return np.empty((0, 4)), np.empty(0, dtype=bool)
