@@ -180,13 +180,17 @@ def _chosen(parts: _Parts, sheet: Sheet, regions: Callable[[Division], list[Regi
     best: tuple[tuple[int, int], list[Part]] | None = None if probe is None else (_rank(probe), probe)
     fuller = 0 if best is None else sum(1 for g in guesses if g[2] != lay.probe and -g[0] > best[0][1]
                                         + PREDICTION_MARGIN * best[1][0].ink.cells.size)
+    # the plans' scales step with the upper row's height, which a stretched prediction cannot see: the best
+    # guess of each upper share is drawn (else a language whose title block is taller keeps other scales)
+    upper = {dv[0]: n for n, dv in reversed(list(enumerate(order, start=1)))}
+    last = max(upper.values(), default=1)
     for n, dv in enumerate(order, start=1):     # all of them drawn: the best of every division
         row = _drawn(parts, regions(dv)) if n > 1 else None          # the probe's rank is known
         if row is not None:
             rank = _rank(row)
             if best is None or rank > best[0]:
                 best = (rank, row)
-        if (best is not None and best[0][0] == 0 and n > min(fuller, 1)
+        if (best is not None and best[0][0] == 0 and n > min(fuller, 1) and n >= last
                 and _empty_share(sheet, best[1]) <= EMPTY_MAX):
             break
     return None if best is None else best[1]
