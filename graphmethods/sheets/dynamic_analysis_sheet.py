@@ -47,6 +47,7 @@ from graphmethods.sheets.wittenbauer import (
     bold_bbox,
     diagram_data,
     diagram_elements,
+    inertia_origin,
     inertia_scale,
     offset_origin,
     result_rows,
@@ -107,6 +108,8 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     nt = get_notation(notation)
     sheet = SheetFrame(nt=nt, page=None, title=title or nt.word("wittenbauer.dynamic_analysis"),
                        problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
+    if mu_J is None and mu_T is None and mu_M is None and mu_phi is None:
+        mu_phi, mu_M, mu_T, mu_J = common_scales(study, page=page, tangents=tangents, title_block=title_block)
     content, lay = _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M,
                                    mu_phi=mu_phi)
     res = lay.result(content)
@@ -172,14 +175,45 @@ def sheet_construction(study, *, page="A1", tangents: str = "exact") -> dict[str
 
 
 def _default_placement(study, *, page, tangents: str) -> tuple[SheetContent, SheetPlacement]:
-    """The content and placement of the sheet with every scale picked (they do not depend on the language)."""
+    """The content and placement of the sheet with every scale picked (:func:`common_scales`: the same in every
+    language)."""
     study = as_study(study)
-    nt = get_notation("en")
+    mu_phi, mu_M, mu_T, mu_J = common_scales(study, page=page, tangents=tangents)
+    return _placement_in(study, "en", page=page, tangents=tangents, title_block=True, mu_J=mu_J, mu_T=mu_T,
+                         mu_M=mu_M, mu_phi=mu_phi)
+
+
+def _placement_in(study, code: str, *, page, tangents: str, title_block: bool, **scales: object
+                  ) -> tuple[SheetContent, SheetPlacement]:
+    """The content and placement of the sheet in language ``code`` with the ``scales`` given (None: picked)."""
+    nt = get_notation(code)
     with lettered(page if hasattr(page, "size") else str(page).upper()):
         sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
-                           problem=problem_text(study, nt), title_block=True, default_page=_sheet_page(page))
-        return _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=None, mu_T=None, mu_M=None,
-                               mu_phi=None)
+                           problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
+        return _placed_content(sheet, _sheet_content(study, nt, tangents), nt, **scales)
+
+
+#: the languages of a sheet: its scales are the same in all of them
+SHEET_LANGUAGES = ("en", "ru", "zh")
+
+
+def common_scales(study, *, page="A1", tangents: str = "exact", title_block: bool = True
+                  ) -> tuple[float, float, float, float]:
+    """μ_φ (rad/mm), μ_M (N·m/mm), μ_T (J/mm) and μ_J (kg·m²/mm) of the dynamic-analysis sheet in every language:
+    each the largest of those the sheet picks in en, ru and zh. A sheet's room differs with its language (the
+    ГОСТ and GB title blocks, the width of the result table), and one problem is drawn to one set of scales
+    unless its text truly does not fit; each room grows as the other scales grow, so the largest of each fits
+    every language.
+
+    >>> from graphmethods.problems import builtin
+    >>> common_scales(Study(builtin.case("press"), positions=12))[2:]
+    (2.5, 0.001)
+    """
+    study = as_study(study)
+    lays = [_placement_in(study, code, page=page, tangents=tangents, title_block=title_block, mu_J=None, mu_T=None,
+                          mu_M=None, mu_phi=None)[1] for code in SHEET_LANGUAGES]
+    return (max(lay.s_phi.per_mm for lay in lays), max(lay.s_M.per_mm for lay in lays),
+            max(lay.s_T.per_mm for lay in lays), max(lay.s_J.per_mm for lay in lays))
 
 
 def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **scales: object
@@ -187,6 +221,8 @@ def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **sc
     """The content with its ΔT range where the ordinate axis stands, and its placement: the result table
     lettered at 5 mm when the room its width takes leaves the diagram's scale as at the smallest lettering."""
     def placed(content: SheetContent, table_mm: float) -> tuple[SheetContent, SheetPlacement]:
+        if suppressed_zero(content.J_lo, content.J_to):     # the origin the placement takes, whatever its scales
+            content = content.with_origin(inertia_origin(content.J_lo, content.J_to))
         lay = _sheet_placement(sheet, content, nt, table_mm=table_mm, **scales)  # type: ignore[arg-type]
         for _ in range(3):                               # k and l where the ordinate axis stands: the ΔT range
             if lay.J_0 == 0.0 or content.J_0 == lay.J_0:
@@ -195,15 +231,21 @@ def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **sc
             lay = _sheet_placement(sheet, content, nt, table_mm=table_mm, **scales)  # type: ignore[arg-type]
         return content, lay
 
-    small = placed(content, RESULT_SIZES_MM[-1])
+    try:
+        small: tuple[SheetContent, SheetPlacement] | InputError = placed(content, RESULT_SIZES_MM[-1])
+    except InputError as e:             # given scales that need the room beside the title block a wide table leaves
+        small = e
     for size in RESULT_SIZES_MM[:-1]:
         try:
             large = placed(content, size)
         except InputError:
             continue
-        if (large[1].s_J.per_mm, large[1].J_0) == (small[1].s_J.per_mm, small[1].J_0) and large[1].fits and \
-                sheet.top + large[1].table_h_mm + 10.0 <= _title_block_top(sheet):
+        same = isinstance(small, InputError) or \
+            (large[1].s_J.per_mm, large[1].J_0) == (small[1].s_J.per_mm, small[1].J_0)
+        if same and large[1].fits and sheet.top + large[1].table_h_mm + 10.0 <= _title_block_top(sheet):
             return large
+    if isinstance(small, InputError):
+        raise small
     return small
 
 
@@ -213,6 +255,12 @@ def _title_block_top(sheet: SheetFrame) -> float:
     if sheet.probe.title_block is None:
         return clip[3]
     return float(sheet.probe.title_block.table(clip[2], clip[3]).at[1])
+
+
+def _title_block_left(sheet: SheetFrame) -> float:
+    """The left edge of the title block, mm."""
+    clip = sheet.probe.inner_box()
+    return float(sheet.probe.title_block.table(clip[2], clip[3]).at[0])
 
 
 #: the lettering of the result table, largest first: 5 mm (values on A1) when the diagram keeps its scale, else
@@ -372,16 +420,22 @@ def _phi_scale(sheet: SheetFrame, content: SheetContent, nt: Notation, mu_phi: o
 
 def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, mu_J: object, mu_T: object,
                      mu_M: object, mu_phi: object, table_mm: float = TABLE_MM,
-                     lay: DynamicSheetLayout = LAYOUT) -> SheetPlacement:
+                     lay: DynamicSheetLayout = LAYOUT, beside_title_block: bool = True) -> SheetPlacement:
     """The scales and the places of the parts: [M graph | turned J_e graph] over [ΔT graph | diagram].
 
     μ_J fits the diagram's content to the width beside the graphs: 0…J_e max, or, for a J_e that
     varies little about a large mean, J_0…J_e max from a round J_0 below J_e min (a suppressed
     zero); the rays keep their true slopes and are clipped to the diagram's own frame.
+
+    The graphs and the diagram run down beside the title block (``beside_title_block``) when they end left of
+    it, as they do when the result table above the block is at least as wide: then their room, and so every
+    scale, is the same in every language (the ГОСТ and GB blocks are 13 mm taller than the English one);
+    else down to its top.
     """
     x0, _, x1, _ = sheet.box
     y_Jt = sheet.top + lay.turned_axis_mm
-    d_bottom = sheet.caption_y - lay.diagram_bottom_mm
+    bottom = sheet.probe.inner_box()[3] - (sheet.box[1] - sheet.probe.inner_box()[1]) - 1.0
+    d_bottom = (bottom if beside_title_block else sheet.caption_y) - lay.diagram_bottom_mm
 
     def diagram_room(L_phi: float) -> float:
         return d_bottom - (y_Jt + L_phi + lay.under_turned_mm)
@@ -400,6 +454,10 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
                                        J_0=1.0 if suppressed_zero(content.J_lo, content.J_to) else 0.0))
     probe_table = _table(probe_rows, (0, 0), size_mm=table_mm)
     table_w = probe_table.width_mm
+    if beside_title_block and sheet.probe.title_block is not None and \
+            x1 - table_w - lay.table_gap_mm > _title_block_left(sheet) - lay.J_name_extra_mm:
+        return _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi,
+                                table_mm=table_mm, lay=lay, beside_title_block=False)
     J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), f"10⁻³ {nt.unit('kg·m²')}"),
                                      SMALL_MM + 0.5) + lay.J_name_extra_mm      # the name a small J_e takes
     room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
