@@ -92,8 +92,9 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
             els.append(Text((mid, y - 6.0), text, size_mm=size, anchor="middle", name=f"{key}-label-c-{j + 1}"))
         for i in range(n):
             els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
-            text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)} {nt.unit('kg·m²')}" if reduced else
-                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)} {nt.unit('kg·m²')}{sep}u = {num(float(chain.u[i]), sig=4)}")
+            kgm2 = nt.unit("kg·m²")
+            text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)} {kgm2}" if reduced else
+                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)} {kgm2}{sep}u = {num(float(chain.u[i]), sig=4)}")
             els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), text, size_mm=size, anchor="middle",
                             name=f"{key}-label-J-{i + 1}"))
             if not reduced and chain.names[i] != str(i + 1):       # a name; an unnamed disc's number is J's index
