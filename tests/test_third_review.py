@@ -98,3 +98,44 @@ def test_kinematic_sheet_on_A2_is_one_clear_line_and_exit_2(capsys, tmp_path):
     lines = [x for x in err.splitlines() if x.strip()]
     assert len(lines) == 1 and "A1 only" in lines[0] and "Traceback" not in err
     assert not target.exists() and out == ""
+
+
+# ----------------------------------------------------------------------------- 4. the dynamic sheet: one set of scales
+
+@pytest.mark.parametrize("problem", ["shaper", "engine", "press"])
+def test_dynamic_sheet_scales_are_one_in_every_language_and_the_json(problem):
+    """The shaper's dynamic sheet drew μ_M = 4, μ_φ = 1.5°/mm in en and 5, 2°/mm in ru and zh (their title
+    blocks are 13 mm taller); the engine's μ_J was 1·10⁻⁵ in en, 2·10⁻⁵ in ru (a wider result table). Each scale
+    is now the largest the three languages pick, and study --json's sheet numbers are the sheet's."""
+    from graphmethods.dynamics.study import Study
+    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet, sheet_construction
+
+    study = Study(builtin.case(problem), positions=12)
+    scales = {lang: tuple(s.per_mm for s in dynamic_analysis_sheet(study, notation=lang).scales()[:4])
+              for lang in LANGS}
+    assert scales["en"] == scales["ru"] == scales["zh"], scales
+    c = sheet_construction(study)
+    assert (c["mu_T"], c["mu_J"]) == scales["en"][2:]
+
+
+# ----------------------------------------------------------------------------- 5. the drive scheme's labels
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_drive_scheme_labels_carry_units_and_no_stray_index(lang):
+    """The drive scheme wrote c₁ = 2000 without its unit beside c'₁ = 72000 N·m/rad, J₁ = 0.08 without
+    kg·m², and an unnamed disc's number ("1") under J₁ = …, which already says 1."""
+    from graphmethods.dynamics.multimass import Mass, Shaft, reduce_chain
+    from graphmethods.scene import notation
+    from graphmethods.sheets.drive_scheme import drive_scheme
+
+    nt = notation(lang)
+    chain = reduce_chain([Mass("1", 0.08, 6.0), Mass("2", 0.5, 2.0), Mass("3", 12.0, 1.0)],
+                         [Shaft("1", 2000.0, 6.0), Shaft("2", 40000.0, 1.0)])
+    scene = drive_scheme(chain, notation=lang)
+    labels = {e.name: markup.plain(e.text) for e in scene.elements if hasattr(e, "text")}
+    for name, text in labels.items():
+        if "-label-c-" in name:
+            assert nt.unit("N·m/rad") in text, text
+        if "-label-J-" in name:
+            assert nt.unit("kg·m²") in text, text
+    assert not [n for n in labels if n.startswith("label-name-")]

@@ -186,11 +186,30 @@ def _default_placement(study, *, page, tangents: str) -> tuple[SheetContent, She
 def _placement_in(study, code: str, *, page, tangents: str, title_block: bool, **scales: object
                   ) -> tuple[SheetContent, SheetPlacement]:
     """The content and placement of the sheet in language ``code`` with the ``scales`` given (None: picked)."""
-    nt = get_notation(code)
-    with lettered(page if hasattr(page, "size") else str(page).upper()):
-        sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
-                           problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
-        return _placed_content(sheet, _sheet_content(study, nt, tangents), nt, **scales)
+    return _Placer(study, code, page=page, tangents=tangents, title_block=title_block).placed(**scales)
+
+
+class _Placer:
+    """The sheet's frame and content in one language, placed at any scales asked (the content computed once)."""
+
+    def __init__(self, study, code: str, *, page, tangents: str, title_block: bool) -> None:
+        self.nt = nt = get_notation(code)
+        self.page = page if hasattr(page, "size") else str(page).upper()
+        with lettered(self.page):
+            self.sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
+                                    problem=problem_text(study, nt), title_block=title_block,
+                                    default_page=_sheet_page(page))
+        self.content = _sheet_content(study, nt, tangents)
+
+    def placed(self, **scales: object) -> tuple[SheetContent, SheetPlacement]:
+        with lettered(self.page):
+            return _placed_content(self.sheet, self.content, self.nt, **scales)
+
+    def fits(self, mu_phi: float, mu_M: float, mu_T: float, mu_J: float) -> bool:
+        try:
+            return self.placed(mu_phi=mu_phi, mu_M=mu_M, mu_T=mu_T, mu_J=mu_J)[1].fits
+        except InputError:
+            return False
 
 
 #: the languages of a sheet: its scales are the same in all of them
@@ -199,21 +218,34 @@ SHEET_LANGUAGES = ("en", "ru", "zh")
 
 def common_scales(study, *, page="A1", tangents: str = "exact", title_block: bool = True
                   ) -> tuple[float, float, float, float]:
-    """μ_φ (rad/mm), μ_M (N·m/mm), μ_T (J/mm) and μ_J (kg·m²/mm) of the dynamic-analysis sheet in every language:
-    each the largest of those the sheet picks in en, ru and zh. A sheet's room differs with its language (the
-    ГОСТ and GB title blocks, the width of the result table), and one problem is drawn to one set of scales
-    unless its text truly does not fit; each room grows as the other scales grow, so the largest of each fits
-    every language.
+    """μ_φ (rad/mm), μ_M (N·m/mm), μ_T (J/mm) and μ_J (kg·m²/mm) of the dynamic-analysis sheet in every language.
+
+    A sheet's room differs with its language (the ГОСТ and GB title blocks, the width of the result table), and
+    one problem is drawn to one set of scales unless its text truly does not fit: of the sets the sheet picks in
+    en, ru and zh, the one that fits every language and draws largest (the least product of the scales; the
+    first of equals); when none fits all, each scale the largest of the three (each room grows as the other
+    scales grow, so that set fits).
 
     >>> from graphmethods.problems import builtin
     >>> common_scales(Study(builtin.case("press"), positions=12))[2:]
     (2.5, 0.001)
     """
     study = as_study(study)
-    lays = [_placement_in(study, code, page=page, tangents=tangents, title_block=title_block, mu_J=None, mu_T=None,
-                          mu_M=None, mu_phi=None)[1] for code in SHEET_LANGUAGES]
-    return (max(lay.s_phi.per_mm for lay in lays), max(lay.s_M.per_mm for lay in lays),
-            max(lay.s_T.per_mm for lay in lays), max(lay.s_J.per_mm for lay in lays))
+    placers = [_Placer(study, code, page=page, tangents=tangents, title_block=title_block)
+               for code in SHEET_LANGUAGES]
+    picked: list[tuple[float, float, float, float]] = []
+    for placer in placers:
+        lay = placer.placed(mu_J=None, mu_T=None, mu_M=None, mu_phi=None)[1]
+        sc = (lay.s_phi.per_mm, lay.s_M.per_mm, lay.s_T.per_mm, lay.s_J.per_mm)
+        if sc not in picked:
+            picked.append(sc)
+    if len(picked) == 1:
+        return picked[0]
+    for sc in sorted(picked, key=lambda v: float(np.sum(np.log(v)))):
+        if all(placer.fits(*sc) for placer in placers):
+            return sc
+    return (max(v[0] for v in picked), max(v[1] for v in picked), max(v[2] for v in picked),
+            max(v[3] for v in picked))
 
 
 def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **scales: object
