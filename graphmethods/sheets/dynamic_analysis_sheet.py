@@ -459,10 +459,9 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     varies little about a large mean, J_0…J_e max from a round J_0 below J_e min (a suppressed
     zero); the rays keep their true slopes and are clipped to the diagram's own frame.
 
-    The graphs and the diagram run down beside the title block (``beside_title_block``) when they end left of
-    it, as they do when the result table above the block is at least as wide: then their room, and so every
-    scale, is the same in every language (the ГОСТ and GB blocks are 13 mm taller than the English one);
-    else down to its top.
+    The graphs and the diagram run down beside the title block (``beside_title_block``) when the diagram and
+    its J axis's name end left of it (the result table stands over the block): then their room is the same in
+    every language (the ГОСТ and GB blocks are 13 mm taller than the English one); else down to its top.
     """
     x0, _, x1, _ = sheet.box
     y_Jt = sheet.top + lay.turned_axis_mm
@@ -486,10 +485,6 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
                                        J_0=1.0 if suppressed_zero(content.J_lo, content.J_to) else 0.0))
     probe_table = _table(probe_rows, (0, 0), size_mm=table_mm)
     table_w = probe_table.width_mm
-    if beside_title_block and sheet.probe.title_block is not None and \
-            x1 - table_w - lay.table_gap_mm > _title_block_left(sheet) - lay.J_name_extra_mm:
-        return _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi,
-                                table_mm=table_mm, lay=lay, beside_title_block=False)
     J_label_w = markup.text_width_mm(nt.quantity(nt.sym("dynamics.J_e"), f"10⁻³ {nt.unit('kg·m²')}"),
                                      SMALL_MM + 0.5) + lay.J_name_extra_mm      # the name a small J_e takes
     room_J = x1 - table_w - lay.table_gap_mm - J_label_w - (left_end + lay.diagram_gap_mm)
@@ -497,7 +492,12 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
     x_a_min = left_end + lay.diagram_gap_mm
     x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
-    return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=max(x_a_min, (x_a_min + x_a_max) / 2), y_Jt=y_Jt,
+    x_a = max(x_a_min, (x_a_min + x_a_max) / 2)
+    if beside_title_block and sheet.probe.title_block is not None and \
+            x_a + s_J.to_mm(content.J_to - J_0) + J_label_w > _title_block_left(sheet):
+        return _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi,
+                                table_mm=table_mm, lay=lay, beside_title_block=False)
+    return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=x_a, y_Jt=y_Jt,
                           y_M0=y_Jt + L_phi - lay.M_below_mm - s_M.to_mm(-dm.lo), y0_T=d_top + s_T.to_mm(content.T_hi),
                           d_top=d_top, table_mm=table_mm, table_h_mm=probe_table.height_mm,
                           fits=x_a_max >= x_a_min)
