@@ -222,9 +222,9 @@ def common_scales(study, *, page="A1", tangents: str = "exact", title_block: boo
 
     A sheet's room differs with its language (the ГОСТ and GB title blocks, the width of the result table), and
     one problem is drawn to one set of scales unless its text truly does not fit: of the sets the sheet picks in
-    en, ru and zh, the one that fits every language and draws largest (the least product of the scales; the
-    first of equals); when none fits all, each scale the largest of the three (each room grows as the other
-    scales grow, so that set fits).
+    en, ru and zh, the one that fits every language, picked by the most languages and, of those, drawing largest
+    (the least product of the scales); when none fits all, each scale the largest of the three (each room grows
+    as the other scales grow, so that set fits).
 
     >>> from graphmethods.problems import builtin
     >>> common_scales(Study(builtin.case("press"), positions=12))[2:]
@@ -233,15 +233,14 @@ def common_scales(study, *, page="A1", tangents: str = "exact", title_block: boo
     study = as_study(study)
     placers = [_Placer(study, code, page=page, tangents=tangents, title_block=title_block)
                for code in SHEET_LANGUAGES]
-    picked: list[tuple[float, float, float, float]] = []
+    chosen: list[tuple[float, float, float, float]] = []
     for placer in placers:
         lay = placer.placed(mu_J=None, mu_T=None, mu_M=None, mu_phi=None)[1]
-        sc = (lay.s_phi.per_mm, lay.s_M.per_mm, lay.s_T.per_mm, lay.s_J.per_mm)
-        if sc not in picked:
-            picked.append(sc)
+        chosen.append((lay.s_phi.per_mm, lay.s_M.per_mm, lay.s_T.per_mm, lay.s_J.per_mm))
+    picked = list(dict.fromkeys(chosen))
     if len(picked) == 1:
         return picked[0]
-    for sc in sorted(picked, key=lambda v: float(np.sum(np.log(v)))):
+    for sc in sorted(picked, key=lambda v: (-chosen.count(v), float(np.sum(np.log(v))))):
         if all(placer.fits(*sc) for placer in placers):
             return sc
     return (max(v[0] for v in picked), max(v[1] for v in picked), max(v[2] for v in picked),
@@ -460,8 +459,8 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     zero); the rays keep their true slopes and are clipped to the diagram's own frame.
 
     The graphs and the diagram run down beside the title block (``beside_title_block``) when the diagram and
-    its J axis's name end left of it (the result table stands over the block): then their room is the same in
-    every language (the ГОСТ and GB blocks are 13 mm taller than the English one); else down to its top.
+    its J axis's name end left of it (the result table stands over the block) and that draws some ordinates
+    (M, ΔT, J_e) larger; else down to its top.
     """
     x0, _, x1, _ = sheet.box
     y_Jt = sheet.top + lay.turned_axis_mm
@@ -493,10 +492,18 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     x_a_min = left_end + lay.diagram_gap_mm
     x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
     x_a = max(x_a_min, (x_a_min + x_a_max) / 2)
-    if beside_title_block and sheet.probe.title_block is not None and \
-            x_a + s_J.to_mm(content.J_to - J_0) + J_label_w > _title_block_left(sheet):
-        return _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi,
-                                table_mm=table_mm, lay=lay, beside_title_block=False)
+    if beside_title_block and sheet.probe.title_block is not None:
+        over = x_a + s_J.to_mm(content.J_to - J_0) + J_label_w > _title_block_left(sheet)
+        try:
+            above = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi,
+                                     table_mm=table_mm, lay=lay, beside_title_block=False)
+        except InputError:      # given scales that need the room beside the block
+            if over:
+                raise
+        else:                   # beside the block only when it draws some ordinates larger, not the φ axes alone
+            if over or (above.s_M.per_mm, above.s_T.per_mm, above.s_J.per_mm) == (s_M.per_mm, s_T.per_mm,
+                                                                                    s_J.per_mm):
+                return above
     return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=x_a, y_Jt=y_Jt,
                           y_M0=y_Jt + L_phi - lay.M_below_mm - s_M.to_mm(-dm.lo), y0_T=d_top + s_T.to_mm(content.T_hi),
                           d_top=d_top, table_mm=table_mm, table_h_mm=probe_table.height_mm,

@@ -467,10 +467,11 @@ def _diagram_points(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy
     for key, pt in (("k", d.k_pt), ("l", d.l_pt)):
         els.append(Point(pt, radius_mm=0.7, name=f"{d.prefix}point-{key}"))
         occ.add_box((pt[0] - 0.9, pt[1] - 0.9, pt[0] + 0.9, pt[1] + 0.9))
-    for key, pt in (("k", d.k_pt), ("l", d.l_pt)):
-        lab = occ.place_label(pt, key, ("w", "nw", "sw", "ne", "se") if d.right else ("e", "ne", "se", "nw", "sw"),
-                              size_mm=TEXT_MM + 0.5, gap_mm=1.5, within=within)
-        els.append(Text((lab.x, lab.y), key, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{d.prefix}name-{key}"))
+    for key, pt in (("k", d.k_pt), ("l", d.l_pt)):        # a leader when the ray, arc and axis leave no room beside
+        lab, leader = occ.place_label_with_leader(pt, key, ("w", "nw", "sw", "ne", "se") if d.right else
+                                                  ("e", "ne", "se", "nw", "sw"), size_mm=TEXT_MM + 0.5, gap_mm=1.5,
+                                                  within=within)
+        _with_leader(els, lab, leader, key, TEXT_MM + 0.5, f"{d.prefix}name-{key}", f"{d.prefix}leader-{key}")
     return els
 
 
