@@ -289,8 +289,10 @@ def _title_block_top(sheet: SheetFrame) -> float:
 
 
 def _title_block_left(sheet: SheetFrame) -> float:
-    """The left edge of the title block, mm."""
+    """The left edge of the title block (the right of the frame when there is none), mm."""
     clip = sheet.probe.inner_box()
+    if sheet.probe.title_block is None:
+        return clip[2]
     return float(sheet.probe.title_block.table(clip[2], clip[3]).at[0])
 
 
