@@ -16,6 +16,7 @@ Each part keeps its own scales, written under it; the title block names the sche
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property, partial
@@ -180,17 +181,13 @@ def _chosen(parts: _Parts, sheet: Sheet, regions: Callable[[Division], list[Regi
     best: tuple[tuple[int, int], list[Part]] | None = None if probe is None else (_rank(probe), probe)
     fuller = 0 if best is None else sum(1 for g in guesses if g[2] != lay.probe and -g[0] > best[0][1]
                                         + PREDICTION_MARGIN * best[1][0].ink.cells.size)
-    # the plans' scales step with the upper row's height, which a stretched prediction cannot see: the best
-    # guess of each upper share is drawn (else a language whose title block is taller keeps other scales)
-    upper = {dv[0]: n for n, dv in reversed(list(enumerate(order, start=1)))}
-    last = max(upper.values(), default=1)
     for n, dv in enumerate(order, start=1):     # all of them drawn: the best of every division
         row = _drawn(parts, regions(dv)) if n > 1 else None          # the probe's rank is known
         if row is not None:
             rank = _rank(row)
             if best is None or rank > best[0]:
                 best = (rank, row)
-        if (best is not None and best[0][0] == 0 and n > min(fuller, 1) and n >= last
+        if (best is not None and best[0][0] == 0 and n > min(fuller, 1)
                 and _empty_share(sheet, best[1]) <= EMPTY_MAX):
             break
     return None if best is None else best[1]
@@ -215,7 +212,8 @@ def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], l
         if (nm, box) not in seen:
             p = by_name.get(nm)
             seen[nm, box] = (p.ink.stretched(p.scene.page.inner_box(), box) if p is not None
-                             and not parts.drawn(nm, box) else parts.draw(fn, nm, box).ink.cells)
+                             and not parts.drawn(nm, box) and not _rescaled(parts, p, box)
+                             else parts.draw(fn, nm, box).ink.cells)
         return seen[nm, box]
 
     guesses: list[tuple[int, int, Division]] = []
@@ -225,6 +223,18 @@ def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], l
         except InputError:          # a part that does not fit: not a candidate
             continue
     return sorted(guesses)
+
+
+def _rescaled(parts: _Parts, probe: Part, box: tuple[float, float, float, float]) -> bool:
+    """Would the velocity plans drawn in ``box`` take another μ_v than the probe's? A stretched prediction cannot
+    see the step (the six-bar press's plans at 0.01 in a taller row, 0.02 in the probe's): such a part is drawn."""
+    if probe.name != "velocity-plans":
+        return False
+    from graphmethods.sheets.velocity_plans import velocity_grid_scale
+
+    mu = velocity_grid_scale(parts.case, m=parts.m, notation=parts.nt, page=region_page(parts.pg, box),
+                             title_block=False)
+    return not math.isclose(mu, probe.scene.scales()[0].per_mm)
 
 
 def _drawn(parts: _Parts, regions: list[Region]) -> list[Part] | None:

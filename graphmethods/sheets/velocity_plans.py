@@ -237,13 +237,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     images, vectors = _plan_layout(plans)
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plans"),
                   problem=lk.problem if problem is None else problem, title_block=title_block)
-    spans = []
-    for k in drawn:
-        xy = np.array(list(_image_xy(plans, images, k).values()))
-        spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
-    ill = np.asarray(plans.ill_conditioned)[drawn]
-    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, lay,
-                      label_mm=np.array([_shared_label_mm(_image_xy(plans, images, k)) for k in drawn]))
+    grid, ill = _grid_of(sheet, plans, images, drawn, columns)
     s_v = _pick_mu_v(mu_v, grid.need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
     cells: list[Element] = []
@@ -275,6 +269,35 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     scales = (s_v,)
     elements = [sheet.header()] + cells + drawn_els + label_els + sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
+
+
+def _grid_of(sheet: Sheet, plans, images, drawn: list[int], columns: int | None) -> tuple[_Grid, np.ndarray]:
+    """The grid of the plans of positions ``drawn`` on ``sheet`` and which of them are ill-conditioned."""
+    spans = []
+    for k in drawn:
+        xy = np.array(list(_image_xy(plans, images, k).values()))
+        spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
+    ill = np.asarray(plans.ill_conditioned)[drawn]
+    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, PLAN_GRID_LAYOUT,
+                      label_mm=np.array([_shared_label_mm(_image_xy(plans, images, k)) for k in drawn]))
+    return grid, ill
+
+
+def velocity_grid_scale(linkage, *, m: int | None = None, notation="en", page=None, title_block: bool = True
+                        ) -> float:
+    """μ_v, (m/s)/mm, that :func:`velocity_plan_grid` picks on ``page``, without drawing it: a sheet that stretches
+    a drawn grid onto another region to predict its ink asks it, since the grid's scale steps with its room.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.scene import Page
+    >>> velocity_grid_scale(builtin.case("shaper"), page=Page("A1", "landscape", frame=True))
+    0.005
+    """
+    lk, plans, _, drawn = _plans_of(linkage, m=m, omega_1=None)
+    nt = get_notation(notation)
+    sheet = Sheet(nt=nt, page=page, title=nt.word("kinematics.plans"), problem=lk.problem, title_block=title_block)
+    grid, _ = _grid_of(sheet, plans, _plan_layout(plans)[0], drawn, None)
+    return _pick_mu_v(None, grid.need, what="the largest plan in its cell", nt=nt).per_mm
 
 
 def _off_scale_values(xy_k: dict, vectors, inner, prefix: str, nt, lay: PlanGridLayout) -> list[Element]:
