@@ -22,7 +22,8 @@ from typing import Any, TypeVar
 import numpy as np
 
 from graphmethods.scene import Element, Line
-from graphmethods.scene.primitives import Style
+from graphmethods.scene.primitives import Circle, Style, walk
+from graphmethods.sheets.engine.labels import circle_points
 from graphmethods.sheets.layout import Occupancy
 
 #: the links of the linkage: a main line (ГОСТ 2.303: 0.5–1.4 mm), heavier than the forces' shafts
@@ -33,8 +34,13 @@ AnElement = TypeVar("AnElement", bound=Element)
 
 
 def _drawn(occ: Occupancy, el: AnElement) -> AnElement:
-    """``el``, its lines kept clear by the labels placed later."""
-    occ.add_primitives(el.primitives())
+    """``el``, its lines and its circles (a joint, a pivot: as the polygon the figure-quality test measures) kept
+    clear by the labels placed later."""
+    prims = el.primitives()
+    occ.add_primitives(prims)
+    for p in walk(prims):
+        if isinstance(p, Circle):
+            occ.add_line(circle_points(p.cx, p.cy, p.r))
     return el
 
 
@@ -69,24 +75,49 @@ def _links_of(mo: Any, i: int) -> tuple[list[tuple[str, str]], list[tuple[str, c
     return segs, blocks
 
 
-def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -> list[Element]:
-    """The links, the fixed pivots, the sliders' blocks and the joints, kept clear by the labels."""
+def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy,
+             box: tuple[float, float, float, float] = (-1e4, -1e4, 1e4, 1e4)) -> list[Element]:
+    """The links, the fixed pivots, the sliders' blocks and the joints, kept clear by the labels; a yoke on the
+    frame as its slotted crosshead with its rod and hatched guide (:func:`_yokes`), within ``box`` (mm) where it
+    has room."""
     from graphmethods.sheets.kinematic_symbols import FixedPivot, PinJoint, SliderBlock
 
     lk = mo.linkage
     segs, blocks = _links_of(mo, i)
+    yokes, slotted = _yokes(mo, i, z, at, box)
     els: list[Element] = plates(segs, z, at)
     els += [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
-            if abs(z[a] - z[b]) > 0]
-    els += _guides(mo, blocks, at)
+            if abs(z[a] - z[b]) > 0 and (a, b) not in slotted]
+    els += _guides(mo, blocks, at) + yokes
     els += [FixedPivot(at(z[p]), name=f"pivot-{p}") for p in lk.ground]
     els += [SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}")
             for j, (p, u) in enumerate(blocks)]
-    joints = {q for s in segs for q in s} - set(lk.ground)
+    joints = {q for s in segs for q in s} - set(lk.ground) - {b for _, b in slotted}
     els += [PinJoint(at(z[p]), name=f"joint-{p}") for p in sorted(joints)]
-    for el in els:
-        occ.add_primitives(el.primitives())
-    return els
+    return [_drawn(occ, el) for el in els]
+
+
+def _yokes(mo: Any, i: int, z: dict[str, complex], at: ToMm, box: tuple[float, float, float, float]
+           ) -> tuple[list[Element], set[tuple[str, str]]]:
+    """Each yoke that translates on the frame (an RPP group's slotted link, a Scotch yoke) drawn as the books draw
+    it (:func:`graphmethods.sheets.yoke.yoke`): its slot as long as the block's travel in it over the cycle
+    (to μ_l) and the block's length more, centred on that travel, its rod along the frame's guide; and the
+    segments (block's pin, the yoke's point) it draws in place of a bare line."""
+    from graphmethods.sheets.yoke import yoke
+
+    out: list[Element] = []
+    slotted: set[tuple[str, str]] = set()
+    for g, centre, d in _slots(mo, i):
+        c = np.asarray(at(centre))
+        half = math.dist(at(centre), at(centre + d)) + 6.0              # the block (10 mm long) inside
+        u = complex(np.broadcast_to(mo._state.e[g.links[1]], (mo.n,))[i])
+        others = [np.asarray(at(q)) - c for p, q in z.items() if p not in (g.P, g.R)]
+        els, _ = yoke(c, float(np.angle(d)) if abs(d) else float(g.guide.angle + g.slot_angle),
+                      np.array([u.real, -u.imag]) / max(abs(u), 1e-12), others, box, name=g.links[1],
+                      slot_mm=(half, 3.0))
+        out += els
+        slotted.add((g.P, g.R))
+    return out, slotted
 
 
 def plates(segs: Sequence[tuple[str, str]], z: dict[str, complex], at: ToMm) -> list[Element]:
@@ -112,9 +143,26 @@ def _strokes(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[tuple[int, 
     return out
 
 
-def _guide_ends(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[complex]:
-    """The ends of the frame's guides (m): the scheme is scaled to hold them."""
-    return [z for _, a, b in _strokes(mo, blocks) for z in (a, b)]
+def _guide_ends(mo: Any, blocks: Sequence[tuple[str, complex]], i: int | None = None) -> list[complex]:
+    """The ends of the frame's guides (m), and in position ``i`` (when given) of the yokes' slots: the scheme is
+    scaled to hold them."""
+    ends = [z for _, a, b in _strokes(mo, blocks) for z in (a, b)]
+    return ends if i is None else ends + [z for _, c, d in _slots(mo, i) for z in (c - d, c + d)]
+
+
+def _slots(mo: Any, i: int) -> list[tuple[Any, complex, complex]]:
+    """Each yoke that translates on the frame (an RPP group's slotted link, a Scotch yoke) in position ``i``: its
+    group, the middle of its block's travel in the slot over the cycle (m, complex) and the half travel along the
+    slot (m, complex)."""
+    out = []
+    for g in mo.linkage.groups:
+        if g.kind != "RPP" or getattr(g.guide, "link", None) != "0":
+            continue
+        s = cmath.exp(1j * float(g.guide.angle + g.slot_angle))          # along the slot
+        travel = ((np.asarray(mo.z[g.P], dtype=complex) - np.asarray(mo.z[g.R], dtype=complex)) * s.conjugate()).real
+        lo, hi = float(travel.min()), float(travel.max())
+        out.append((g, complex(mo.z[g.R][i]) + s * (lo + hi) / 2, s * (hi - lo) / 2))
+    return out
 
 
 def _guides(mo: Any, blocks: Sequence[tuple[str, complex]], at: ToMm) -> list[Element]:

@@ -301,9 +301,26 @@ def lettering_pad(page: Any) -> float:
     return 2.0 * lettering(page).label_mm
 
 
+#: where a label goes when nothing beside its point is free, with a leader: the rings of
+#: :meth:`~graphmethods.sheets.layout.Occupancy.place_label_with_leader` (above the point, then below), then,
+#: where a dense figure (a lever's images, a plan's lines of action) leaves them taken, farther out every 15°
+_UP, _DOWN = (45, 135, 20, 160, 65, 115, 90, 0, 180), (315, 225, 340, 200, 295, 245, 270)
+LEADER_RINGS = (tuple((r, side) for side in (_UP, _DOWN) for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0))
+                + tuple((r, tuple(range(0, 360, 15))) for r in (10.0, 14.0, 18.0, 24.0, 32.0, 40.0, 56.0, 64.0)))
+
+
 def _label(occ: Occupancy, where: tuple[float, float], text: str, name: str, *, within: Box) -> list[Element]:
-    """A label beside its point, or further off with a leader line when nothing beside it is free."""
-    lab, leader = occ.place_label_with_leader(where, text, size_mm=SMALL_MM, within=within)
+    """A label beside its point, or further off with a leader line (:data:`LEADER_RINGS`) when nothing beside it
+    is free; set over the ink, beside the point, only when no ring has room."""
+    lab = occ.first_free(where, text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), (1.2, 3.2), SMALL_MM, within)
+    leader = None
+    if lab is None:
+        found = next((f for r, angles in LEADER_RINGS
+                      if (f := occ.try_leaders(where, text, r, angles, size_mm=SMALL_MM, within=within)) is not None),
+                     None)
+        lab, leader = found if found is not None else (occ.place_label(where, text, ("ne",), size_mm=SMALL_MM), None)
+    else:
+        occ.add_label(lab)
     out: list[Element] = [Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=name)]
     if leader is not None:
         out.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{name}"))
@@ -440,7 +457,8 @@ def _group_plan(j: int, pl: Any, pts: np.ndarray, i: int, at: ToMm, nt: Notation
             A, B = np.array(a), np.array(b)
             far = tuple((B + L.overhang_mm * e).tolist()) if math.dist(a, b) >= L.min_mm else \
                 tuple((A + L.overhang_mm * e).tolist())
-            els.append(Line(tuple((A - L.overhang_mm * e).tolist()), far, style=THIN, name=f"direction-{j}-{s}"))
+            els.append(_drawn(occ, Line(tuple((A - L.overhang_mm * e).tolist()), far, style=THIN,
+                                        name=f"direction-{j}-{s}")))
     for t, inner in enumerate(pl.polygons[1:]):
         for (lbl, _F), z0, z1 in _inner_sides(poly, inner, pts, i):
             a, b = at(z0), at(z1)
@@ -545,7 +563,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
                                              nt, "the lever", page)
     occ = sheet.occ
     pole = at(0j)
-    els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
+    els: list[Element] = [sheet.header(), _drawn(occ, Point(pole, radius_mm=0.7, name="pole"))]
     els += [_drawn(occ, Line(pole, at(z), style=THIN, name=f"ray-{p}")) for p, z in images.items()
             if abs(z) / s_l.per_mm >= L.min_mm]
     vec_labels: list[LabelSpec] = []
@@ -629,11 +647,11 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     forces = [(lbl, F, at_, round_off_zero(M, M_size)) for lbl, F, at_, M in forces]
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
-    cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1]))
+    cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1], i))
     area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, F, w, _ in forces], mu_l, mu_F, nt,
                                          "the scheme", page)
     occ = sheet.occ
-    els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
+    els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ, area)]
     labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     segs, _blocks = _links_of(mo, i)
 
