@@ -102,12 +102,15 @@ def _yokes(mo: Any, i: int, z: dict[str, complex], at: ToMm, box: tuple[float, f
     """Each yoke that translates on the frame (an RPP group's slotted link, a Scotch yoke) drawn as the books draw
     it (:func:`graphmethods.sheets.yoke.yoke`): its slot as long as the block's travel in it over the cycle
     (to μ_l) and the block's length more, centred on that travel, its rod along the frame's guide; and the
-    segments (block's pin, the yoke's point) it draws in place of a bare line."""
+    segments (block's pin, the yoke's point) it draws in place of a bare line. Only the yokes whose points are
+    among ``z`` (the points drawn, m)."""
     from graphmethods.sheets.yoke import yoke
 
     out: list[Element] = []
     slotted: set[tuple[str, str]] = set()
     for g, centre, d in _slots(mo, i):
+        if g.P not in z or g.R not in z:                                # not in this drawing (a group cut out)
+            continue
         c = np.asarray(at(centre))
         half = math.dist(at(centre), at(centre + d)) + 6.0              # the block (10 mm long) inside
         u = complex(np.broadcast_to(mo._state.e[g.links[1]], (mo.n,))[i])

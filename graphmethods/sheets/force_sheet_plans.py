@@ -34,6 +34,7 @@ from graphmethods.sheets import (
 )
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import drawn_tip, fit_forces
+from graphmethods.sheets.force_linkage import _slots, _yokes
 from graphmethods.sheets.layout import Sheet, given_scale
 
 
@@ -351,10 +352,12 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     area = (sheet.box[0], sheet.top + 4.0, sheet.box[2], sheet.caption_y - L.bottom_mm)
     arrows = [(where[lbl], F) for lbl, F, _ in sides]
     arrows += [(complex(f.at[i]), complex(f.F[i])) for ln in pl.links for f in fa.applied.get(ln, ())]
-    s_l, s_F, at = fit_forces(list(z.values()) + list(where.values()), arrows, area, nt,
+    slots = [z_ for g, c, d in _slots(mo, i) if g.P in z and g.R in z for z_ in (c - d, c + d)]   # a yoke's slot
+    s_l, s_F, at = fit_forces(list(z.values()) + list(where.values()) + slots, arrows, area, nt,
                               pad_mm=SF.lettering_pad(page))
     segs, blocks = SF._links_of(mo, i)
-    segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0]
+    yokes, slotted = _yokes(mo, i, z, at, area)
+    segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0 and (a, b) not in slotted]
     occ = sheet.occ
     from graphmethods.scene import Line
     from graphmethods.sheets.kinematic_symbols import PinJoint, SliderBlock
@@ -363,6 +366,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     els += [SF._drawn(occ, Line(at(z[a]), at(z[b]), style=SF.LINK, name=f"link-{a}-{b}")) for a, b in segs]
     els += [SF._drawn(occ, SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)),
                                        name=f"block-{k}")) for k, (p, u) in enumerate(blocks) if p in z]
+    els += [SF._drawn(occ, e) for e in yokes]
     els += [SF._drawn(occ, PinJoint(at(z[p]), name=f"joint-{p}")) for p in sorted({q for sg in segs for q in sg})]
     labels: list[SF.LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     applied = [(f.label, complex(f.F[i]), complex(f.at[i]), SF.round_off_zero(float(f.M[i]), big))
