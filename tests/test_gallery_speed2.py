@@ -5,10 +5,16 @@ import dataclasses
 import inspect
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
+from graphmethods.render import svg
+from graphmethods.render.recording import Call
 from graphmethods.scene import primitives as P
+from graphmethods.scene.elements import label_bbox
+from graphmethods.scene.markup import SCRIPT_SCALE, baseline_shift_mm
+from graphmethods.scene.numbers import format_mm as fmt, format_points
 
-PRIMITIVES = (P.Style, P.Path, P.Polygon, P.Circle, P.Label, P.Group)
+PRIMITIVES = (P.Style, P.Path, P.Polygon, P.Circle, P.Label, P.Group, Call)
 
 
 @pytest.mark.parametrize("cls", PRIMITIVES, ids=lambda c: c.__name__)
@@ -29,3 +35,70 @@ def test_a_primitive_is_still_frozen_compared_and_hashed_by_its_fields():
         a.x = 5.0  # type: ignore[misc]
     assert repr(P.Group("g", ())) == "Group(name='g', children=())"
     assert P.Path(((0.0, 0.0), (1.0, 0.0))).style is P.THIN and P.Polygon(()).style is P.SOLID_FILL
+
+
+# ------------------------------------------------------------------ the SVG writer's text, as _tag wrote it
+def _old_text(label):
+    """SvgRenderer.text as it was: a dict of attributes through _tag."""
+    size, x, anchor = label.size_mm, label.x, label.anchor
+    if label.stretch != 1.0:
+        x, anchor = label_bbox(label)[0], "start"
+        transform = f"matrix({fmt(label.stretch)} 0 0 1 {fmt(x * (1.0 - label.stretch))} 0)"
+    attrs = {"x": fmt(x), "y": fmt(label.y), "font-size": fmt(size), "xml:space": "preserve"}
+    if anchor != "start":
+        attrs["text-anchor"] = anchor
+    if label.bold:
+        attrs["font-weight"] = "bold"
+    if label.color != "#000000":
+        attrs["fill"] = label.color
+    if label.stretch != 1.0:
+        attrs["transform"] = transform
+    runs = label.runs
+    if len(runs) == 1 and runs[0][1] == 0:
+        return svg._tag("text", attrs, svg.clean_text(runs[0][0]).translate(svg._CDATA))
+    spans, offset = [], 0.0
+    for chunk, shift in runs:
+        target = baseline_shift_mm(shift, size)
+        span = {}
+        if abs(target - offset) > 1e-12:
+            span["dy"] = fmt(target - offset)
+            offset = target
+        if shift:
+            span["font-size"] = fmt(size * SCRIPT_SCALE)
+        spans.append(svg._tag("tspan", span, svg.clean_text(chunk).translate(svg._CDATA)))
+    return svg._tag("text", attrs, "".join(spans))
+
+
+def _written(draw):
+    r = svg.SvgRenderer()
+    r.begin(100.0, 100.0, title="", name="t")
+    draw(r)
+    return r._out[-1].strip()
+
+
+coord = st.floats(-500.0, 500.0, allow_nan=False)
+texts = st.text(alphabet="aM_<&>\"'\x01 ψ₁", max_size=6)
+runs = st.lists(st.tuples(texts, st.sampled_from((0, -1, 1))), max_size=4).map(tuple)
+colours = st.sampled_from(("#000000", "#ff0000", 'a"b<'))
+styles = st.builds(P.Style, st.sampled_from((None, "#000000", "#a<b")), st.sampled_from((0.0, 0.18, 0.35)),
+                   st.sampled_from((None, (), (2.0, 1.0), (0.5, 1.25, 3.0))), st.sampled_from((None, "#ffffff", "")))
+
+
+@settings(max_examples=300, deadline=None)
+@given(coord, coord, runs, st.sampled_from((2.5, 3.5, 7.0)), st.sampled_from(("start", "middle", "end")),
+       st.booleans(), colours, st.sampled_from((1.0, 0.8)))
+def test_a_label_is_written_as_the_attribute_dict_wrote_it(x, y, r, size, anchor, bold, colour, stretch):
+    label = P.Label(x, y, r, size, anchor, bold, colour, stretch)
+    assert _written(lambda w: w.text(label)) == _old_text(label)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.tuples(coord, coord), min_size=1, max_size=5).map(tuple), styles, st.booleans(), coord)
+def test_paths_polygons_and_circles_are_written_as_the_attribute_dict_wrote_them(points, style, closed, r):
+    old = svg.SvgRenderer._stroke
+    pts = format_points(points)
+    assert _written(lambda w: w.path(points, style, closed)) == svg._tag(
+        "polygon" if closed else "polyline", old({"points": pts}, style, False))
+    assert _written(lambda w: w.polygon(points, style)) == svg._tag("polygon", old({"points": pts}, style, True))
+    assert _written(lambda w: w.circle(points[0][0], points[0][1], abs(r), style)) == svg._tag(
+        "circle", old({"cx": fmt(points[0][0]), "cy": fmt(points[0][1]), "r": fmt(abs(r))}, style, True))
