@@ -174,7 +174,13 @@ class Occupancy:
         self._boxes_indexed = 0
 
     def add_line(self, points) -> None:
-        pts = [tuple(map(float, p)) for p in points]
+        if isinstance(points, (list, tuple, np.ndarray)) and len(points) > 8:   # many: as float() of each, at once
+            try:
+                pts = list(map(tuple, np.asarray(points, dtype=float).reshape(len(points), 2).tolist()))
+            except ValueError:
+                pts = [tuple(map(float, p)) for p in points]
+        else:
+            pts = [tuple(map(float, p)) for p in points]
         self.segments.extend(zip(pts, pts[1:]))
 
     def add_box(self, box: Box) -> None:
