@@ -102,3 +102,43 @@ def test_paths_polygons_and_circles_are_written_as_the_attribute_dict_wrote_them
     assert _written(lambda w: w.polygon(points, style)) == svg._tag("polygon", old({"points": pts}, style, True))
     assert _written(lambda w: w.circle(points[0][0], points[0][1], abs(r), style)) == svg._tag(
         "circle", old({"cx": fmt(points[0][0]), "cy": fmt(points[0][1]), "r": fmt(abs(r))}, style, True))
+
+
+# ------------------------------------------------------------------ Occupancy's segments as an array
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.lists(st.tuples(coord, coord), min_size=0, max_size=14), max_size=8), st.integers(0, 8))
+def test_the_segment_array_holds_the_segments_added_as_their_list_does(lines, asked_after):
+    import numpy as np
+
+    from graphmethods.sheets.layout import Occupancy
+
+    occ = Occupancy()
+    for i, pts in enumerate(lines):
+        occ.add_line(np.array(pts).reshape(-1, 2) if i % 2 else pts)
+        if i == asked_after:
+            occ.segment_array()                  # asked for part way: the rest appended later
+    assert np.array_equal(occ.segment_array(), np.asarray(occ.segments, dtype=float).reshape(-1, 4))
+    assert all(type(c) is float for s in occ.segments for p in s for c in p)
+    if occ.segments:                             # the list edited by hand: read from it
+        occ.segments.append(((1.5, 2.5), (3.5, 4.5)))
+        assert occ.segment_array()[-1].tolist() == [1.5, 2.5, 3.5, 4.5] and occ._flat is None
+
+
+def test_slider_diagrams_from_shared_references_are_those_computed_alone():
+    import numpy as np
+
+    from graphmethods.dynamics import graphical_calculus as gc
+    from graphmethods.problems import builtin
+
+    for name in ("press", "shaper"):
+        case = builtin.case(name)
+        mech, w = case.mechanism, float(case.omega_m)
+        refs = gc.slider_references(mech, 12, omega_1=w)
+        for mu in (1.0, 0.004):
+            a = gc.slider_diagrams(mech, 12, mu_phi=mu, mu_s=mu, omega_1=w, references=refs)
+            b = gc.slider_diagrams(mech, 12, mu_phi=mu, mu_s=mu, omega_1=w)
+            for f in ("phi", "s", "v_plans", "a_plans", "v_exact", "a_exact"):
+                assert np.array_equal(getattr(a, f), getattr(b, f)), f
+            assert np.array_equal(a.v.values, b.v.values) and np.array_equal(a.a.values, b.a.values)
+        other = gc.slider_diagrams(mech, 8, mu_phi=1.0, mu_s=1.0, omega_1=w, references=refs)    # not its refs
+        assert len(other.phi) == len(gc.slider_diagrams(mech, 8, mu_phi=1.0, mu_s=1.0, omega_1=w).phi)
