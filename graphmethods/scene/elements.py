@@ -111,11 +111,15 @@ def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float
     return w, ascent, descent
 
 
+_NO_ANCHOR: dict[str, float] = {}          # an anchor other than start, middle, end: a KeyError, as before
+
+
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers."""
     w, ascent, descent = _runs_extent(lab.runs)
     w *= lab.size_mm * lab.stretch
-    x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
+    a = lab.anchor
+    x0 = lab.x - (0.0 if a == "start" else w / 2 if a == "middle" else w if a == "end" else _NO_ANCHOR[a])
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
 
