@@ -351,10 +351,11 @@ class Occupancy:
         if len(near) * len(grown) > _MANY_PAIRS:
             return self._free_of_many(ok, grown, near)
         pairs: list[tuple[int, int]] = []
+        near_ext = [(k, ext[k]) for k in near]
         for a, g in grown.items():              # each box against the segments near it (as _near)
             x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
-            pairs.extend((a, k) for k in near
-                         if ext[k][0] <= x1 and ext[k][2] >= x0 and ext[k][1] <= y1 and ext[k][3] >= y0)
+            pairs.extend((a, k) for k, (lo_x, lo_y, hi_x, hi_y) in near_ext
+                         if lo_x <= x1 and hi_x >= x0 and lo_y <= y1 and hi_y >= y0)
         if len(pairs) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
             segs = self.segments
             for a, k in pairs:
