@@ -115,7 +115,7 @@ def _pts(points: ArrayLike) -> tuple[XY, ...]:
     if not np.isfinite(arr).all():
         i = int(np.flatnonzero(~np.isfinite(arr).all(axis=1))[0])
         raise InputError(f"point {i} of a polyline is not finite ({arr[i].tolist()}); fix the data it comes from")
-    return tuple((float(x), float(y)) for x, y in arr)
+    return tuple(map(tuple, arr.tolist()))         # Python floats, as float() of each gives
 
 
 @functools.lru_cache(maxsize=16384)
@@ -125,6 +125,9 @@ def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float
     descent = DESCENT + (markup.SUB_SHIFT if any(s < 0 for _, s in runs) else 0.0)
     ascent = ASCENT + (0.1 if any(s > 0 for _, s in runs) else 0.0)
     return w, ascent, descent
+
+
+_NO_ANCHOR: dict[str, float] = {}          # an anchor other than start, middle, end: a KeyError, as before
 
 
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
@@ -147,7 +150,8 @@ def label_bbox(lab: Label) -> tuple[float, float, float, float]:
     """
     w, ascent, descent = _runs_extent(lab.runs)
     w *= lab.size_mm * lab.stretch
-    x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
+    a = lab.anchor
+    x0 = lab.x - (0.0 if a == "start" else w / 2 if a == "middle" else w if a == "end" else _NO_ANCHOR[a])
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
 
@@ -254,12 +258,13 @@ def make_label(at: Sequence[float], text: str, *, size_mm: float = 3.5, anchor: 
     if anchor not in ("start", "middle", "end"):
         raise InputError(f"text anchor {anchor!r}: use 'start', 'middle' or 'end'")
     x, y = _pt(at)
-    size_mm = lettered_size(size_mm)
-    shift = _VALIGN_SHIFT
-    if valign not in shift:
-        raise InputError(f"text valign {valign!r}: use one of {', '.join(shift)}")
+    size_mm = max(float(size_mm), MIN_TEXT_MM.get())      # lettered_size
+    try:
+        shift = _VALIGN_SHIFT[valign]
+    except (KeyError, TypeError):
+        raise InputError(f"text valign {valign!r}: use one of {', '.join(_VALIGN_SHIFT)}") from None
     runs = markup.parse(text) if markup_ else (((text, 0),) if text else ())
-    return Label(x, y + shift[valign] * size_mm, runs, size_mm, anchor, bold, color)
+    return Label(x, y + shift * size_mm, runs, size_mm, anchor, bold, color)
 
 
 @dataclass(frozen=True)
@@ -605,6 +610,9 @@ class Vector(_Segment):
 
 _DIRS = {"n": (0, -1), "ne": (1, -1), "e": (1, 0), "se": (1, 1), "s": (0, 1), "sw": (-1, 1), "w": (-1, 0),
          "nw": (-1, -1)}
+#: per direction: its (dx, dy), their length, and the anchor and vertical alignment a label beside a point takes
+_PLACES = {d: (dx, dy, math.hypot(dx, dy), {1: "start", 0: "middle", -1: "end"}[dx],
+               {1: "top", 0: "middle", -1: "bottom"}[dy]) for d, (dx, dy) in _DIRS.items()}
 
 
 def place_label(at: Sequence[float], text: str, direction: str, *, gap_mm: float = 1.2, size_mm: float = 3.5,
@@ -636,14 +644,12 @@ def place_label(at: Sequence[float], text: str, direction: str, *, gap_mm: float
     >>> round(lab.x, 3), round(lab.y, 3), lab.anchor
     (10.849, 18.311, 'start')
     """
-    if direction not in _DIRS:
-        raise InputError(f"label direction {direction!r}: use one of {', '.join(_DIRS)}")
-    dx, dy = _DIRS[direction]
+    try:
+        dx, dy, norm, anchor, valign = _PLACES[direction]
+    except (KeyError, TypeError):
+        raise InputError(f"label direction {direction!r}: use one of {', '.join(_DIRS)}") from None
     x, y = _pt(at)
-    norm = math.hypot(dx, dy)
     x, y = x + gap_mm * dx / norm, y + gap_mm * dy / norm
-    anchor = {1: "start", 0: "middle", -1: "end"}[dx]
-    valign = {1: "top", 0: "middle", -1: "bottom"}[dy]
     return make_label((x, y), text, size_mm=size_mm, anchor=anchor, valign=valign, bold=bold, markup_=markup_)
 
 
