@@ -62,6 +62,7 @@ from graphmethods.sheets.dynamics import (
 from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, clear_tick_labels, tick_label_band
+from graphmethods.sheets.tick_values import every_value as every_tick_written
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -239,8 +240,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         Where the abscissa starts (kg·m²): 0, or a suppressed zero near J_e,min (marked by a zigzag);
         ``res`` is then the construction with its ordinate axis there (:func:`offset_origin`).
     every_value : bool
-        Every tick with its value (a slide): where the curve or a ray would cover values, the ticks are spaced
-        wider (up to 4 times) until none is covered.
+        Every tick with its value (a slide): where the curve or a ray would cover values, the values go on the
+        other side of the J_e axis, or the ticks are spaced wider, or the covered ticks at an end of the range
+        are left out (:func:`graphmethods.sheets.tick_values.every_value`).
 
     Returns
     -------
@@ -384,45 +386,20 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
     ax_T = clear_tick_labels(ax_T, occ, keep_values=True)
     if every_value:
         step = d.ticks_T[1] - d.ticks_T[0] if len(d.ticks_T) > 1 else 1.0       # every k-th tick, 0 among them
-        ax_T = _every_value(ax_T, lambda k: clear_tick_labels(axis_T(tuple(
+        ax_T = every_tick_written(ax_T, lambda k: clear_tick_labels(axis_T(tuple(
             t for t in d.ticks_T if round(t / step) % k == 0)), occ, keep_values=True))
     occ.register(ax_T)
     ax_J = clear_tick_labels(ax_J, occ, keep_values=True, other_side=True)
     if every_value:
-        ax_J = _every_value(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True))
+        flip = "below" if ax_J.labels_side == "above" else "above"
+        ax_J = every_tick_written(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True),
+                           other_side=lambda: clear_tick_labels(replace(axis_J(1), labels_side=flip), occ,
+                                                                keep_values=True))
     occ.register(ax_J)
     band = tick_label_band(ax_J)
     if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
         occ.add_box(band)
     return ax_T, ax_J
-
-
-def _off_origin(axis: Axis) -> list[tuple[float, str]]:
-    """The ticks of ``axis`` besides its origin (0 or a suppressed zero), with their values as written."""
-    labels = axis.tick_labels or ("",) * len(axis.ticks)
-    return [(t, lab) for t, lab in zip(axis.ticks, labels) if t != 0 and abs(t - axis.min_value) > 1e-12]
-
-
-def _every_value(axis: Axis, wider: Any) -> Axis:
-    """``axis`` if every tick besides the origin has its value written; else the first of ``wider(k)`` (the ticks
-    k = 2, 3, 4 times as far apart) that writes all of at least two, its origin labelled as ``axis`` labels it;
-    else ``axis`` (a tick without its value rather than ticks irregularly spaced)."""
-    def origin_as_given(alt: Axis) -> Axis:
-        labels = list(alt.tick_labels or ("",) * len(alt.ticks))
-        given = dict(zip(axis.ticks, axis.tick_labels or ()))
-        for i, t in enumerate(alt.ticks):
-            if t == 0 or abs(t - alt.min_value) <= 1e-12:
-                labels[i] = given.get(t, "")
-        return replace(alt, tick_labels=tuple(labels))
-
-    if all(lab for _, lab in _off_origin(axis)):
-        return axis
-    for k in (2, 3, 4):
-        alt = wider(k)
-        written = _off_origin(alt)
-        if len(written) >= 2 and all(lab for _, lab in written):
-            return origin_as_given(alt)
-    return axis                 # a tick left unwritten rather than ticks irregularly spaced
 
 
 def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
