@@ -19,7 +19,6 @@ KNOWN: dict[tuple[str, str, str], str] = {
 
 #: the dynamics figures and the lecture build-ups (tests/test_figure_quality_dynamics.py), the same way
 KNOWN_DYNAMICS: dict[tuple[str, str, str], str] = {
-    ('two-slider', 'steps:kinematic-scheme', 'en'): '55% empty',
 }
 
 #: the worksheet family (tests/test_figure_quality_worksheets.py): (subject, page, language) -> what fails;
