@@ -393,8 +393,7 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
     if every_value:
         flip = "below" if ax_J.labels_side == "above" else "above"
         ax_J = every_tick_written(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True),
-                           other_side=lambda: clear_tick_labels(replace(axis_J(1), labels_side=flip), occ,
-                                                                keep_values=True))
+                           other_side=lambda: clear_tick_labels(replace(axis_J(1), labels_side=flip), occ))
     occ.register(ax_J)
     band = tick_label_band(ax_J)
     if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
