@@ -532,14 +532,14 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.scheme", m=len(g.drawn)),
                   problem=lk.problem if problem is None else problem, title_block=title_block)
     facts = _scheme_facts(g.pos, g.ext, nt)
-    column: list[Element] = list(slide_facts(facts + _link_lengths(g, nt), sheet, page,   # a slide's column right
-                                             caption_room_mm=lay.caption_room_mm))          # of the drawing
+    facts_column = slide_facts(facts + _link_lengths(g, nt), sheet, page,        # a slide's column right of the
+                               caption_room_mm=lay.caption_room_mm)               # drawing
     table, (s_l, f) = positions_table(
-        g.pos if positions else None, nt, sheet, page, min((e.at[0] - SLIDE_FACTS_GAP_MM for e in column),
+        g.pos if positions else None, nt, sheet, page, min((e.at[0] - SLIDE_FACTS_GAP_MM for e in facts_column),
                                                          default=None),
         caption_room_mm=lay.caption_room_mm, scale_at=lambda right: _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay,
                                                                                   right=right))
-    column += table
+    column: list[Element] = [*facts_column, *table]
 
     def P(xy) -> tuple[float, float]:
         return f.pt(xy[0], xy[1])

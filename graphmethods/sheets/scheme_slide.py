@@ -108,8 +108,8 @@ def positions_table(pos: Any, nt: Any, sheet: Any, page: Any, right: float | Non
     from graphmethods.sheets.engine.lettering import is_slide
 
     plain = scale_at(right)
-    rows = _rows(pos, nt) if pos is not None and right is not None and page is not None and is_slide(page) else None
-    if rows is None:
+    rows = _rows(pos, nt) if pos is not None and page is not None and is_slide(page) else None
+    if rows is None or right is None:
         return [], plain
     size = _value_mm(page)
     row_h = min(1.6 * size, (sheet.caption_y - caption_room_mm - sheet.top - 2.0) / len(rows))
