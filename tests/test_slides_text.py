@@ -32,3 +32,12 @@ def test_the_lever_slides_orphan_no_bracket_or_unit(lang):
     texts = [c.data.text for c in record(bu.slide(len(bu))).calls if c.kind == "text"]
     orphans = [t for t in texts if t.strip() and (t.strip()[0] in CLOSING or t.strip() in ("%)", "%", ")"))]
     assert orphans == []
+
+
+@pytest.mark.parametrize("lang", ["en", "ru", "zh"])
+def test_the_load_levers_caption_writes_the_tables_law(lang):
+    """One symbol per quantity: the zh step wrote M_er = F·h·μ_v/ω_1 where its table wrote F_r·h (ru: F_пс)."""
+    bu = steps.build("shaper", "zhukovsky-load", notation=lang)
+    table = next(e for e in bu.figure.elements if e.name == "result")
+    law = next(r[1] for r in getattr(table, "element", table).rows if "·h·" in r[1] and "=" in r[1])
+    assert law.split("=", 1)[1].strip() in bu.captions()[-1]

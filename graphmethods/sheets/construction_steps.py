@@ -88,6 +88,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
         The position (default: the one with the largest M_r).
     """
     from graphmethods.sheets import dynamics as D
+    from graphmethods.sheets.zhukovsky_lever import lever_law
 
     nt, (pg, box, cap_mm, tb) = S.step_start(notation, page)
     figure = D.zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
@@ -97,7 +98,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
          lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
         (nt.word("steps.load", F=S._text_of(figure, "label-F")), S._leader_of(["force-F", "label-F"])),
         (nt.word("steps.arm", h=S._text_of(figure, "label-h")), S._leader_of(["dimension-h", "label-h"])),
-        (nt.word("steps.balance", Mr=nt.sym("M_r")), lambda n: False),
+        (nt.word("steps.balance", Mr=nt.sym("M_r"), law=lever_law(nt)), lambda n: False),
     ]
     return S._build(figure, rules, box, cap_mm, rest=len(rules))
 
