@@ -736,6 +736,8 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
                            T_hi=T_hi, T_lo=T_lo, within=sheet.box, J_from=J_0, every_value=is_slide(sheet.probe))
     on_sheet = O1_on_sheet(res, origin, clip)
     rows = compact_rows(result_rows(res, nt, on_sheet=on_sheet, J_0=J_0))
+    if is_slide(sheet.probe):           # a slide's captions under the diagram state μ_J and μ_T: not twice
+        rows = tuple(r for r in rows if not r[0].startswith((nt.sym("dynamics.mu_J"), nt.sym("mu_T"))))
     w = _table(rows, (0, 0)).width_mm
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 40.0, 4.0)]
     cands += [(x, sheet.top) for x in np.arange(x1 - w, x0, -6.0)]
