@@ -307,8 +307,9 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
          lambda n: pos_of(others)(n) or mark_of(moving)(n) or (n.startswith("number-out-")
                                                                 and not n.endswith("-extreme"))),
         (nt.word("steps.paths"), lambda n: n.startswith("path-")),
-        (nt.word("steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
-         or n in ("dimension-H", "summary")),
+        (nt.word("steps.extremes_table" if any(e.name == "positions-table" for e in figure.elements)
+                 else "steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
+         or n in ("dimension-H", "summary", "positions-table")),
         (nt.word("steps.thick"), lambda n: False),
     ]
     kept = S._kept(rules, figure)
