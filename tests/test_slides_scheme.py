@@ -57,3 +57,11 @@ def test_every_tall_linkages_scheme_slide_meets_the_slide_standard(problem, lang
 def test_the_slotting_machines_stroke_keeps_clear_of_a_table():
     bu = steps.build("slotting-machine", "kinematic-scheme", notation="zh")
     assert _table(bu) is None          # with it, "H = 400 mm" ran into the table
+
+
+def test_the_positions_table_enters_with_the_stroke():
+    bu = steps.build("two-slider", "kinematic-scheme", notation="en")
+    k = next(i for i, c in enumerate(bu.captions(), start=1) if "stroke" in c)
+    assert "displacement" in bu.captions()[k - 1]
+    names = {e.name for e in bu.figure.elements}
+    assert "positions-table" in names
