@@ -62,6 +62,7 @@ from graphmethods.sheets.dynamics import (
 from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, clear_tick_labels, tick_label_band
+from graphmethods.sheets.linkage_figures import broken_behind
 from graphmethods.sheets.tick_values import every_value as every_tick_written
 
 RAY = Style(width_mm=0.35)
@@ -241,8 +242,9 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         ``res`` is then the construction with its ordinate axis there (:func:`offset_origin`).
     every_value : bool
         Every tick with its value (a slide): where the curve or a ray would cover values, the values go on the
-        other side of the J_e axis, or the ticks are spaced wider, or the covered ticks at an end of the range
-        are left out (:func:`graphmethods.sheets.tick_values.every_value`).
+        other side of the J_e axis, or the ticks are spaced wider, or a J_e value that only a ray covers is
+        written and the ray broken behind it, or the covered ticks at an end of the range are left out
+        (:func:`graphmethods.sheets.tick_values.every_value`).
 
     Returns
     -------
@@ -266,7 +268,14 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         psi_els.append(axis_break((d.origin[0] + 5.0, d.origin[1]), f"{prefix}axis-J-break"))
     occ.register(curve, *rays, dim, *psi_els, *register_only)
     if page_axes is None:
-        ax_T, ax_J = _diagram_axes(d, occ, nt, every_value=every_value)
+        unrayed = None
+        if every_value:                 # what a value may not cross; a thin ray is broken behind it (ГОСТ 2.303)
+            unrayed = FastOccupancy()
+            unrayed.register(curve, dim, *psi_els, *register_only)
+        ax_T, ax_J = _diagram_axes(d, occ, nt, every_value=every_value, unrayed=unrayed)
+        if every_value:
+            rays = broken_behind(rays, [label_bbox(p) for p in replace(ax_J, label="").primitives()
+                                        if isinstance(p, Label)])
     else:                               # the page's own ΔT and J_e axes (a worksheet's): numbers keep off their values
         ax_T, ax_J = page_axes
         occ.register(ax_T, ax_J)
@@ -359,10 +368,11 @@ class _DiagramPlace:
                 oy - self.s_T.to_mm(self.T_lo) + lay.frame_mm)
 
 
-def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
-                  every_value: bool = False) -> tuple[Axis, Axis]:
+def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *, every_value: bool = False,
+                  unrayed: FastOccupancy | None = None) -> tuple[Axis, Axis]:
     """The ΔT and J_e axes through the origin (J_e from ``J_from``), their tick labels kept off what is drawn;
-    ``every_value``: no tick left without its value (:func:`diagram_elements`)."""
+    ``every_value``: no tick left without its value (:func:`diagram_elements`), the J_e values written over a ray
+    (``unrayed``: what is drawn but the rays) when nothing else writes them all (the scotch yoke's 0.25)."""
     ox, oy = d.origin
     s_T, s_J, T_lo, T_hi = d.s_T, d.s_J, d.T_lo, d.T_hi
 
@@ -394,11 +404,24 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
         flip = "below" if ax_J.labels_side == "above" else "above"
         ax_J = every_tick_written(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True),
                            other_side=lambda: clear_tick_labels(replace(axis_J(1), labels_side=flip), occ))
+        if unrayed is not None:
+            ax_J = every_tick_written(ax_J, lambda k: ax_J, other_side=lambda: _over_rays(axis_J(1), unrayed, occ))
     occ.register(ax_J)
     band = tick_label_band(ax_J)
     if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
         occ.add_box(band)
     return ax_T, ax_J
+
+
+def _over_rays(axis: Axis, unrayed: FastOccupancy, occ: FastOccupancy) -> Axis:
+    """``axis`` with the values that cover nothing but a ray (``unrayed``) and no text (``occ``) written."""
+    ax = clear_tick_labels(axis, unrayed)
+    texts = [p for p in replace(ax, label="").primitives() if isinstance(p, Label)]
+    shown = [i for i, lab in enumerate(ax.tick_labels or ()) if lab and not (ax.skip_zero_label and ax.ticks[i] == 0)]
+    labels = list(ax.tick_labels or ())
+    for i, lab in zip(shown, texts):
+        labels[i] = labels[i] if occ.is_free(label_bbox(lab), lines=False) else ""
+    return replace(ax, tick_labels=tuple(labels))
 
 
 def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
