@@ -6,6 +6,8 @@ of the axis (the press's J_e value 0.6 lay under the curve above the axis and fr
 ticks 2, 3 or 4 times as far apart; (4) with the unwritten ticks at the ends of its range left out, so the ticks
 still run at one step and every tick drawn has its value (the two-slider's ΔT tick −150 fell where the ray at
 ψ_min meets the axis, at the point l); else as it was (a tick without its value rather than irregular ticks).
+The Wittenbauer slides then try, for their J_e axis, :func:`over_rays`: the values that only a thin ray covers
+written, the ray broken behind them.
 
 >>> from graphmethods.scene import Scale
 >>> from graphmethods.scene.elements import Axis
@@ -20,7 +22,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
-from graphmethods.scene.elements import Axis
+from graphmethods.scene.elements import Axis, label_bbox
+from graphmethods.scene.primitives import Label
+from graphmethods.sheets.layout import Occupancy, clear_tick_labels
 
 
 def off_origin(axis: Axis) -> list[tuple[float, str]]:
@@ -97,3 +101,24 @@ def every_value(axis: Axis, wider: Callable[[int], Axis], *, other_side: Callabl
             return origin_as_given(alt)
     cut = trimmed(axis)
     return cut if _all_written(cut) else axis
+
+
+def over_rays(axis: Axis, unrayed: Occupancy, occ: Occupancy) -> Axis:
+    """``axis`` with the values written that cover nothing of ``unrayed`` (what is drawn but the thin rays, which
+    are then broken behind them) and no text of ``occ`` (the scotch yoke's J_e value 0.25 lay under the ray at
+    ψ_max above the axis and under the curve below it).
+
+    >>> from graphmethods.scene import Scale
+    >>> occ, unrayed = Occupancy(), Occupancy()
+    >>> occ.add_line(((0.0, 97.0), (40.0, 97.0)))                   # a ray under the values
+    >>> ax = Axis((10.0, 95.0), Scale("μ", "J", 1.0), "x", max_value=30.0, ticks=(0.0, 10.0, 20.0))
+    >>> over_rays(ax, unrayed, occ).tick_labels
+    ('0', '10', '20')
+    """
+    ax = clear_tick_labels(axis, unrayed)
+    texts = [p for p in replace(ax, label="").primitives() if isinstance(p, Label)]
+    shown = [i for i, lab in enumerate(ax.tick_labels or ()) if lab and not (ax.skip_zero_label and ax.ticks[i] == 0)]
+    labels = list(ax.tick_labels or ())
+    for i, lab in zip(shown, texts):
+        labels[i] = labels[i] if occ.is_free(label_bbox(lab), lines=False) else ""
+    return replace(ax, tick_labels=tuple(labels))

@@ -63,7 +63,7 @@ from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, clear_tick_labels, tick_label_band
 from graphmethods.sheets.linkage_figures import broken_behind
-from graphmethods.sheets.tick_values import every_value as every_tick_written
+from graphmethods.sheets.tick_values import every_value as every_tick_written, over_rays
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -405,23 +405,12 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *, every_v
         ax_J = every_tick_written(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True),
                            other_side=lambda: clear_tick_labels(replace(axis_J(1), labels_side=flip), occ))
         if unrayed is not None:
-            ax_J = every_tick_written(ax_J, lambda k: ax_J, other_side=lambda: _over_rays(axis_J(1), unrayed, occ))
+            ax_J = every_tick_written(ax_J, lambda k: ax_J, other_side=lambda: over_rays(axis_J(1), unrayed, occ))
     occ.register(ax_J)
     band = tick_label_band(ax_J)
     if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
         occ.add_box(band)
     return ax_T, ax_J
-
-
-def _over_rays(axis: Axis, unrayed: FastOccupancy, occ: FastOccupancy) -> Axis:
-    """``axis`` with the values that cover nothing but a ray (``unrayed``) and no text (``occ``) written."""
-    ax = clear_tick_labels(axis, unrayed)
-    texts = [p for p in replace(ax, label="").primitives() if isinstance(p, Label)]
-    shown = [i for i, lab in enumerate(ax.tick_labels or ()) if lab and not (ax.skip_zero_label and ax.ticks[i] == 0)]
-    labels = list(ax.tick_labels or ())
-    for i, lab in zip(shown, texts):
-        labels[i] = labels[i] if occ.is_free(label_bbox(lab), lines=False) else ""
-    return replace(ax, tick_labels=tuple(labels))
 
 
 def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
