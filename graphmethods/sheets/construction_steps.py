@@ -89,7 +89,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
     position : int, optional
         The position (default: the one with the largest M_r).
     """
-    from graphmethods.sheets.zhukovsky_lever import zhukovsky_lever
+    from graphmethods.sheets.zhukovsky_lever import lever_law, zhukovsky_lever
 
     nt, (pg, box, cap_mm, tb) = S.step_start(notation, page)
     figure = zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
@@ -99,7 +99,7 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
          lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
         (nt.word("steps.load", F=S._text_of(figure, "label-F")), S._leader_of(["force-F", "label-F"])),
         (nt.word("steps.arm", h=S._text_of(figure, "label-h")), S._leader_of(["dimension-h", "label-h"])),
-        (nt.word("steps.balance", Mr=nt.sym("M_r")), lambda n: False),
+        (nt.word("steps.balance", Mr=nt.sym("M_r"), law=lever_law(nt)), lambda n: False),
     ]
     return S._build(figure, rules, box, cap_mm, rest=len(rules))
 
@@ -308,8 +308,9 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
          lambda n: pos_of(others)(n) or mark_of(moving)(n) or (n.startswith("number-out-")
                                                                 and not n.endswith("-extreme"))),
         (nt.word("steps.paths"), lambda n: n.startswith("path-")),
-        (nt.word("steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
-         or n in ("dimension-H", "summary")),
+        (nt.word("steps.extremes_table" if any(e.name == "positions-table" for e in figure.elements)
+                 else "steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
+         or n in ("dimension-H", "summary", "positions-table")),
         (nt.word("steps.thick"), lambda n: False),
     ]
     kept = S._kept(rules, figure)
