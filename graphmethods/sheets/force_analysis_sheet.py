@@ -26,7 +26,7 @@ the scheme's.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -41,6 +41,7 @@ from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
+from graphmethods.sheets.engine.quality import ink_cells
 from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
 from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, load_rows, reaction_rows
 from graphmethods.sheets.force_working import inertia_working, power_working
@@ -177,6 +178,8 @@ class _Parts:
     workings: tuple[list[tuple[str, bool]], ...]
     sizes: tuple[float, float, float, float]
     name: str
+    #: the result column's ink by variant, recorded once for every arrangement (the column is the same in each)
+    inks: dict[tuple[int, float, int], PartInk] = field(default_factory=dict, compare=False, repr=False)
 
 
 def _wide_share(p: _Parts, left: Box) -> float:
@@ -235,10 +238,11 @@ def _composed(p: _Parts, sheet: Sheet, fit: tuple[Box, float, float], *, graph_b
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    column, y = _best_column(fa, nt, pg, boxes, groups, p.tables, p.notes_text, p.workings,
-                             cycle=phi_deg is None, sizes=p.sizes)
+    drawn = [b for g, _ in groups if (b := g.bbox()) is not None]          # the drawings' ink boxes, mm
+    column, y = _best_column(fa, nt, pg, boxes, drawn, p.tables, p.notes_text, p.workings,
+                             cycle=phi_deg is None, sizes=p.sizes, inks=p.inks)
     if phi_deg is None:                             # M_b over the cycle: its table and its graph
-        column += _cycle_parts(fa, i, nt, pg, boxes, y, groups, size=p.sizes[0], gap=gap)
+        column += _cycle_parts(fa, i, nt, pg, boxes, (y, drawn), groups, size=p.sizes[0], gap=gap)
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
@@ -246,28 +250,41 @@ def _composed(p: _Parts, sheet: Sheet, fit: tuple[Box, float, float], *, graph_b
                  title=sheet.title, notation=nt.code, name=p.name, extra_scales=scales, notes=notes)
 
 
-def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], groups: list[Any], tables: tuple[Table, ...],
+def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], drawn: list[Box], tables: tuple[Table, ...],
                  notes_text: list[str], workings: tuple[list[tuple[str, bool]], ...], *, cycle: bool,
-                 sizes: tuple[float, float, float, float]) -> tuple[list[Any], float]:
+                 sizes: tuple[float, float, float, float],
+                 inks: dict[tuple[int, float, int], PartInk] | None = None) -> tuple[list[Any], float]:
     """The result column (:func:`_result_column`) that ends above the column's bottom and, with the M_b table
-    under it where that has room (``cycle``), inks the most cells of the sheet
+    under it where that has room (``cycle``; kept off the ``drawn`` boxes), inks the most cells of the sheet
     (:class:`~graphmethods.sheets.sheet_fill.PartInk`): with or without the external loads' table (the
     fourth), the working at the values' size or at 3.5 mm; the fullest of ``workings`` that fits, the
-    shortest column when none ends above the bottom."""
+    shortest column when none ends above the bottom. ``inks``: each variant's ink, kept for the next call
+    with the same column (another arrangement of the drawings); the M_b table's cells are those its box
+    covers (its rules are at most 2 size apart)."""
     size, note_mm, work_mm, gap = sizes
     x, top = boxes["result"][0] + 2.0, boxes["result"][1]
-    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    inks = {} if inks is None else inks
     best: tuple[tuple[bool, int, float], list[Any], float] | None = None
     variants = [(k, wk, t, w) for k, wk in enumerate(workings) for w in dict.fromkeys((work_mm, note_mm))
                 for t in dict.fromkeys((tables, tables[:3]))]
+    width = boxes["result"][2] - x - 2.0
     for k, work, tabs, w_mm in variants:
-        column, y = _result_column(x, top, tabs, notes_text, work, nt, sizes=(size, note_mm, w_mm, gap),
-                                   width=boxes["result"][2] - x - 2.0)
+        column, y = _result_column(x, top, tabs, notes_text, work, nt, sizes=(size, note_mm, w_mm, gap), width=width)
         inside = y - gap <= boxes["result"][3]
-        table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), inks,
-                                                 width=boxes["result"][2] - x - 2.0) if cycle and inside else None
-        cells = int(PartInk.of(Scene(pg, tuple(column + ([table] if table is not None else []))), pg).cells.sum())
-        score = (inside, -k if inside else 0, float(cells) if inside else -y)
+        if best is not None and best[0][:2] > (inside, -k if inside else 0):
+            continue                                # a fuller working already fits: this one cannot win
+        if not inside:
+            score: tuple[bool, int, float] = (False, 0, -y)
+        else:
+            key = (k, w_mm, len(tabs))
+            if key not in inks:
+                inks[key] = PartInk.of(Scene(pg, tuple(column)), pg)
+            cells = inks[key].cells
+            table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), drawn, width=width) if cycle else None
+            box = table.bbox() if table is not None else None
+            if box is not None:
+                cells = cells | ink_cells(np.empty((0, 4)), np.array([box]), pg.inner_box())
+            score = (True, -k, float(cells.sum()))
         if best is None or score > best[0]:
             best = (score, column, y)
     assert best is not None
@@ -279,12 +296,13 @@ def _floor(boxes: dict[str, Box]) -> float:
     return boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM)
 
 
-def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], y: float, groups: list[Any], *,
-                 size: float, gap: float) -> list[Any]:
-    """M_b over the cycle: its table under the result column's text (``y``, mm) where it has room, and the graph
-    (in its box among the drawings, or under the table; appended to ``groups`` with its scales)."""
+def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], at: tuple[float, list[Box]],
+                 groups: list[Any], *, size: float, gap: float) -> list[Any]:
+    """M_b over the cycle: its table under the result column's text (``at``: its y, mm, and the drawings' ink
+    boxes it keeps off) where it has room, and the graph (in its box among the drawings, or under the table;
+    appended to ``groups`` with its scales)."""
     res = boxes["result"]
-    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    y, inks = at
     out: list[Any] = []
     cycle = _cycle_table(fa, nt, size, (res[0] + 2.0, y), _floor(boxes), inks, width=res[2] - res[0] - 4.0)
     graph_box = boxes.get("balancing", (res[0], y, res[2], res[3]))
