@@ -11,9 +11,10 @@ F_b and R′_01); the plan of accelerations of the position, where the inertia f
 panel). At the right, above the title block: the balancing moment from the force plans, from the lever and
 from the power balance with their differences in per cent, every reaction's magnitude, the inertia loads,
 the inertia loads worked out (F_и = m·a_S = …, M_и = J_S·ε = …, h = M_и/F_и, :mod:`~graphmethods.sheets.force_working`)
-and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`; under a tall
-linkage, in its column). Each group's plan writes above its polygon the moment equations that give its R^τ with
-the numbers, then its vector equation. Each part keeps its own scales, written under it; the title block names
+and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`; across under
+the drawings of a dyad and the crank, under a larger tall linkage in its column, or under a flat one's
+lever). Each group's plan writes above its polygon the moment equations that give its R^τ with the numbers,
+then its vector equation. Each part keeps its own scales, written under it; the title block names
 the scheme's.
 
 >>> from graphmethods.problems import builtin
@@ -140,22 +141,23 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     fit = (content, col_w, tb_top - gap)
     if phi_deg is not None:                         # one crank angle: no cycle to draw
         return _composed(parts_in, sheet, fit, graph_below=True)
-    # M_b(φ) among the drawings (under a tall linkage, beside a flat one's lever); where that leaves much of the
-    # sheet empty, or a label crossed, M_b(φ) in a wide box across under the drawings is tried too and the
-    # better kept: the fewer labels crossed or overprinted, then the fuller
-    scene = _composed(parts_in, sheet, fit, graph_below=graph_below)
+    # a dyad and the crank (three moving links, two force plans) leave room for M_b(φ) in a wide box across
+    # under the drawings; more links keep it among them (under a tall linkage, beside a flat one's lever) and
+    # give their force plans the room. Where that leaves much of the sheet empty, or a label crossed, the other
+    # arrangement is tried too and the better kept: the fewer labels crossed or overprinted, then the fuller
+    wide_first = sum(len(plan.links) for plan in fa.plans) <= 3
+    scene = _composed(parts_in, sheet, fit, graph_below=graph_below, wide_graph=wide_first)
     score = _score(scene, pg)
     if score[0] or score[1] > FILL_AIM:
-        wide = _composed(parts_in, sheet, fit, graph_below=graph_below, wide_graph=True)
-        wide_score = _score(wide, pg)
-        scene = wide if wide_score < score else scene
+        other = _composed(parts_in, sheet, fit, graph_below=graph_below, wide_graph=not wide_first)
+        scene = other if _score(other, pg) < score else scene
     return scene
 
 
 #: the least and the most of the drawings' height M_b(φ) takes in a wide box across under them
 WIDE_GRAPH = (0.2, 0.34)
 
-#: the empty share of 20 mm cells (issue 26: at most 50 %) above which the sheet tries M_b(φ) in a wide box
+#: the empty share of 20 mm cells (issue 26: at most 50 %) above which the sheet tries its other arrangement
 FILL_AIM = 0.47
 
 
