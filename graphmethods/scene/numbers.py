@@ -17,7 +17,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 from graphmethods.errors import InputError
-from graphmethods.units import is_finite
+from graphmethods.units import ROUNDOFF, is_finite
 
 MINUS = "\u2212"
 #: significant digits of each kind of flywheel quantity, one rule for its figures (the design's table, the
@@ -25,7 +25,6 @@ MINUS = "\u2212"
 #: and angular speeds 6 (ω_max and ω_min differ in the fourth digit at δ = 1/300), speeds 3
 FLYWHEEL_DIGITS = {"J": 4, "mass": 4, "mm": 4, "density": 4, "W": 6, "omega": 6, "speed": 3, "delta": 6,
                    "inverse": 4, "angle": 4, "moment": 6}
-ROUNDOFF = 1e-9     # a value below this share of its computation's scale is that computation's round-off
 
 
 def within_roundoff(value: float, reference: float) -> bool:
@@ -36,6 +35,30 @@ def within_roundoff(value: float, reference: float) -> bool:
     (True, False, True)
     """
     return abs(float(value)) <= ROUNDOFF * abs(float(reference))
+
+
+def round_off_zero(value: float, size: float) -> float:
+    """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
+    a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
+
+    Parameters
+    ----------
+    value : float
+        A computed value, in any unit (N, N·m, m/s², ...).
+    size : float
+        The largest value of its kind in the same computation, in the same unit.
+
+    Returns
+    -------
+    float
+        ``value``, or 0.0 when :func:`within_roundoff` of ``size``.
+
+    Examples
+    --------
+    >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
+    (0.0, -12.5)
+    """
+    return 0.0 if within_roundoff(value, size) else value
 
 
 def format_mm(x: float) -> str:
@@ -193,3 +216,25 @@ def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool =
     if value < 0:
         return MINUS + text
     return ("+" + text) if plus else text
+
+
+#: the smallest scale written as a plain decimal (six decimals: 0.000002); a smaller one keeps its power of ten
+SCALE_PLAIN_MIN = 1e-6
+
+
+def format_scale(per_mm: float, *, sig: int = 4, decimal: str = ".") -> str:
+    """A drawing scale (units per mm) as a draftsman writes it: a plain decimal, ``0.00002`` and never
+    ``2·10⁻⁵`` (ru, zh and en course books write μ_J = 0,00002 кг·м²/мм); the one rule of every μ on a figure,
+    a sheet and in the text of the command line. Below :data:`SCALE_PLAIN_MIN` (no convenient scale of a
+    course drawing) and otherwise as :func:`format_value`.
+
+    >>> format_scale(2e-5), format_scale(2.5e-5, decimal=","), format_scale(0.02618), format_scale(2e-7)
+    ('0.00002', '0,000025', '0.02618', '2·10⁻⁷')
+    """
+    mag = abs(float(per_mm))
+    if not SCALE_PLAIN_MIN <= mag < 1e-4 or not is_finite(mag):
+        return format_value(per_mm, sig=sig, decimal=decimal)
+    exponent = math.floor(math.log10(mag))
+    decimals = max(0, sig - 1 - exponent)
+    text = f"{round(mag, decimals):.{decimals}f}".rstrip("0").rstrip(".").replace(".", decimal)
+    return (MINUS + text) if per_mm < 0 else text

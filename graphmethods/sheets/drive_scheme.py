@@ -87,16 +87,17 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
             els.append(_spring(xs[j] + 2.5, xs[j + 1] - 2.5, y, f"{key}-shaft-{j + 1}"))
             mid = (xs[j] + xs[j + 1]) / 2
             text = (f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {nt.unit('N·m/rad')}" if reduced else
-                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}{sep}"
+                    f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)} {nt.unit('N·m/rad')}{sep}"
                     f"u = {num(float(chain.u_shafts[j]), sig=4)}")
             els.append(Text((mid, y - 6.0), text, size_mm=size, anchor="middle", name=f"{key}-label-c-{j + 1}"))
         for i in range(n):
             els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
-            text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)}" if reduced else
-                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)}{sep}u = {num(float(chain.u[i]), sig=4)}")
+            kgm2 = nt.unit("kg·m²")
+            text = (f"J'_{{{i + 1}}} = {num(float(J[i]), sig=4)} {kgm2}" if reduced else
+                    f"J_{{{i + 1}}} = {num(float(Jr[i]), sig=4)} {kgm2}{sep}u = {num(float(chain.u[i]), sig=4)}")
             els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), text, size_mm=size, anchor="middle",
                             name=f"{key}-label-J-{i + 1}"))
-            if not reduced:
+            if not reduced and chain.names[i] != str(i + 1):       # a name; an unnamed disc's number is J's index
                 els.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0 + 1.5 * size), chain.names[i],
                                 size_mm=size - 0.4, anchor="middle", name=f"label-name-{i + 1}"))
         els.append(Line((left - 12.0, y), (left - 2.5, y), style=THIN, name=f"{key}-axis-in"))
