@@ -3,18 +3,6 @@ fails (empty cells, smallest text, labels crossed, text over text, noise). Each 
 xfail(strict=True) in tests/test_figure_quality.py; remove an entry when it passes."""
 
 KNOWN: dict[tuple[str, str, str], str] = {
-    ('engine', 'force_analysis_sheet', 'en'): '51% empty',
-    ('engine', 'force_analysis_sheet', 'zh'): '54% empty',
-    ('four-bar', 'force_analysis_sheet', 'zh'): '55% empty',
-    ('press', 'force_analysis_sheet', 'en'): '54% empty',
-    ('press', 'force_analysis_sheet', 'zh'): '56% empty',
-    ('scotch-yoke', 'force_analysis_sheet', 'en'): '59% empty',
-    ('scotch-yoke', 'force_analysis_sheet', 'ru'): '54% empty',
-    ('scotch-yoke', 'force_analysis_sheet', 'zh'): '60% empty',
-    ('slotted-lever', 'force_analysis_sheet', 'en'): '51% empty',
-    ('slotted-lever', 'force_analysis_sheet', 'zh'): '54% empty',
-    ('slotting-machine', 'force_analysis_sheet', 'zh'): '52% empty',
-    ('two-slider', 'force_analysis_sheet', 'zh'): '51% empty',
 }
 
 #: the dynamics figures and the lecture build-ups (tests/test_figure_quality_dynamics.py), the same way
