@@ -39,8 +39,13 @@ KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     ("cli", "force-sheet-position-6"): "press, position 6, A1, ru: 52% empty",
     ("cli", "force-sheet-angle"): "engine, φ = 100°, A1: 63% empty",
     ("whitworth", "force_plans", "en"): "1 label crossed by ink: F_i4",
+    ("cli", "force-sheet-gravity"): "press, position 3 with the weights (--gravity), A1: 53% empty",
+    ("cli", "force-sheet-24-positions"): "press, position 5 of 24, A1, zh: 57% empty",
     # the kinematic A1 sheet (lane review3): one plan position only
     ("cli", "kinematic-sheet-plan-position-0"): "two-slider, --plan-positions 0: 53% empty",
+    ("cli", "kinematic-sheet-8-positions"): "press, 8 positions: 50.x% empty (just over the half)",
+    # the dynamic A1 sheet (lane review3)
+    ("cli", "dynamic-sheet-8-positions"): "press, 8 positions, zh: 50.x% empty (just over the half)",
     # build-ups (lane slides3)
     ("scotch-yoke", "steps:zhukovsky-lever@slide", "en"): "51% empty",
     ("triad-six-bar", "steps:velocity-plan@slide", "en"): "the legend 'ω1 = … solid: known vector, dashed: found "

@@ -89,6 +89,12 @@ COMMANDS = [
     ("force-sheet-position-9", "forces shaper --position 9 -o f.svg --lang zh"),
     ("force-sheet-angle", "forces engine --phi-deg 100 -o f.svg --lang en"),
     ("force-sheet-a2-position-9", "forces six-bar-press --position 9 -o f.svg --page A2 --lang ru"),
+    ("force-sheet-gravity", "forces press --position 3 --gravity -o f.svg --lang en"),
+    ("force-sheet-24-positions", "forces press --position 5 --positions 24 -o f.svg --lang zh"),
+    ("kinematic-sheet-8-positions", "kinematics press --sheet k.svg --positions 8 --lang en"),
+    ("kinematics-figures-24-positions", "kinematics press --figures k --positions 24 --lang zh"),
+    ("dynamic-sheet-8-positions", "study press -o d.svg --positions 8 --lang zh"),
+    ("dynamic-sheet-36-positions", "study engine -o d.svg --positions 36 --lang en"),
 ]
 
 

@@ -435,8 +435,11 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             continue
         done.add(key)
         text = _image_markup(lb)
-        lab = occ.place_label(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=SMALL_MM + 0.3,
-                              gap_mm=0.8)
+        # beside its point, or (no place there free of the construction's lines) further off with a leader
+        lab, leader = occ.place_label_with_leader(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"),
+                                                  size_mm=SMALL_MM + 0.3, gap_mm=0.8)
+        if leader is not None:
+            els.append(Line(leader[0], leader[1], style=thin, name=f"{name}-name-{lb}-leader"))
         els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM + 0.3, anchor=lab.anchor, name=f"{name}-name-{lb}"))
     for c in vectors(plan):
         k = key_of(c.symbol)
