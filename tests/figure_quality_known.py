@@ -44,6 +44,7 @@ KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     # the kinematic A1 sheet (lane review3): one plan position only
     ("cli", "kinematic-sheet-plan-position-0"): "two-slider, --plan-positions 0: 53% empty",
     ("cli", "kinematic-sheet-8-positions"): "press, 8 positions: 50.x% empty (just over the half)",
+    ("drawn-six-bar-triad", "kinematic_analysis_sheet", "ru"): "1 label crossed by ink: S3",
     # the dynamic A1 sheet (lane review3)
     ("cli", "dynamic-sheet-8-positions"): "press, 8 positions, zh: 50.x% empty (just over the half)",
     # build-ups (lane slides3)
