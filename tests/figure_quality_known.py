@@ -39,6 +39,7 @@ KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     ("cli", "force-sheet-position-6"): "press, position 6, A1, ru: 52% empty",
     ("cli", "force-sheet-angle"): "engine, φ = 100°, A1: 63% empty",
     ("whitworth", "force_plans", "en"): "1 label crossed by ink: F_i4",
+    ("gallery", "four_bar_force_analysis_en"): "four-bar, position 2, A1: 54% empty",
     ("cli", "force-sheet-gravity"): "press, position 3 with the weights (--gravity), A1: 53% empty",
     ("cli", "force-sheet-24-positions"): "press, position 5 of 24, A1, zh: 57% empty",
     # the kinematic A1 sheet (lane review3): one plan position only
