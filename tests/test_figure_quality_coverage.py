@@ -419,3 +419,28 @@ def test_the_same_drawing_twice_is_byte_identical(kind, suffix):
     first = formats.to_bytes(kind_scene(kind), suffix)
     again = formats.to_bytes(KINDS[kind](), suffix)
     assert first == again
+
+
+@pytest.mark.parametrize("problem, drawing", [("press", "press_plan_mistakes.dxf"), ("W1", "w1_mistakes.dxf"),
+                                              ("shaper-cam", "shaper_cam_mistakes.dxf")])
+def test_the_check_over_a_students_dxf_reads_back_audited_on_its_layer_and_is_deterministic(problem, drawing):
+    """``check P DRAWING.dxf -o film.dxf`` writes the student's DXF with the check added on the layer CHECK (not
+    through the scene's renderer, so not drawn by the test of the kinds above): ezdxf's audit finds no error,
+    the student's layers stay, the check's texts are lettered for the page (sub- and superscripts at 0.7),
+    and the same check gives the same bytes."""
+    ezdxf = pytest.importorskip("ezdxf")
+    from graphmethods.scene.elements import CAP
+    from graphmethods.sheets.check import cad, cam
+    from graphmethods.sheets.engine.lettering import lettering
+
+    path = builtin.DATA / "drawings" / drawing
+    report = cam.check_drawing(problem, path) if cam.is_cam_problem(problem) else cad.check_drawing(problem, path)
+    data = cad.overlay_dxf(report, notation="ru")
+    assert data == cad.overlay_dxf(report, notation="ru")
+    doc = ezdxf.read(io.StringIO(data.decode("utf-8")))
+    assert not doc.audit().has_errors
+    own = ezdxf.readfile(path)
+    assert {layer.dxf.name for layer in own.layers} | {"CHECK"} <= {layer.dxf.name for layer in doc.layers}
+    heights = [float(e.dxf.height) for e in doc.modelspace() if e.dxftype() == "TEXT" and e.dxf.layer == "CHECK"]
+    least = lettering(report.page).minimum_mm
+    assert heights and min(heights) >= 0.7 * least * CAP - 1e-3
