@@ -63,6 +63,10 @@ COMMANDS = [
                          "--disc 2 --figure f.svg --hyperbola h.svg --lang ru"),
     ("flywheel-levels", "flywheel --levels 0 -50 500 400 525 25 50 0 --n 120 --delta 1/30 --rim --figure f.svg "
                         "--hyperbola h.svg --lang zh"),
+    ("flywheel-J-e", "flywheel --areas=-50,550,-100,125,-500,25,-50 --n 600 --delta 1/300 --J-e 5 --rim 0.75 "
+                     "--H-over-B 0.8 --figure f.svg --hyperbola h.svg --lang ru"),
+    ("flywheel-small-bore", "flywheel --areas=-50,550,-100,125,-500,25,-50 --n 600 --delta 1/300 --rim 0.5 "
+                            "--material steel --disc 0.5 --figure f.svg --lang zh"),
     ("drive-named", "drive --J 0.08,0.5,12 --u 6,2,1 --c 2000,40000 --c-u 6,1 --M 30,0,-160 "
                     "--names motor,gear,crank -o d.svg --lang zh"),
     ("drive-five-masses", "drive --J 0.02,0.08,0.5,3,12 --u 24,6,2,1.5,1 --c 900,2000,40000,60000 --c-u 24,6,2,1 "
