@@ -384,7 +384,9 @@ def item_label(key: str, words: Any) -> str:
 
 #: how far off (mm) a point's letter goes on a leader when no place beside the point is free: within the reach
 #: in which the reader of a drawing made in CAD looks for it (:data:`graphmethods.sheets.check.cad.LABEL_REACH_MM`)
-NAME_LEADER_MM = (5.0, 6.5, 8.0)
+NAME_LEADER_MM = (4.0, 5.0, 6.5, 8.0)
+#: the directions a leader tries (degrees, counterclockwise from +x): the diagonals first, then every 22.5°
+LEADER_ANGLES = (135.0, 45.0, 225.0, 315.0, 90.0, 270.0, 180.0, 0.0, *(22.5 + 45.0 * k for k in range(8)))
 
 
 def _image_name(occ: Any, P: Any, text: str, leader_mm: tuple[float, ...]) -> tuple[Any, Any]:
@@ -399,7 +401,7 @@ def _image_name(occ: Any, P: Any, text: str, leader_mm: tuple[float, ...]) -> tu
         occ.add_label(lab)
         return lab, None
     for r in leader_mm:
-        found = occ.try_leaders(P, text, r, (135, 45, 225, 315, 90, 270, 180, 0), size_mm=size)
+        found = occ.try_leaders(P, text, r, LEADER_ANGLES, size_mm=size)
         if found is not None:
             return found
     lab = place_label(P, text, directions[0], gap_mm=gap, size_mm=size)
