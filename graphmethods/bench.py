@@ -775,7 +775,7 @@ def _kinematic_sheet_rows(repeat: int) -> list[Row]:
     figures = [f for f in gallery.CATALOGUE if f.figure.endswith("kinematic_analysis_sheet")]
     svg.to_string(figures[0].build())                    # the imports warmed
     cpu: dict[str, list[float]] = {f.name: [] for f in figures}
-    for _ in range(max(1, repeat // 2)):
+    for _ in range(max(3, repeat // 2)):          # 3 rounds at least: a median, not a mean of two
         for f in figures:
             c0 = time.process_time()
             svg.to_string(f.build())
@@ -1138,7 +1138,8 @@ def _fresh_press_flywheel(repeat: int) -> list[Row]:
         return [Row("fixed costs", "press read afresh", "exact J_F", None, median_time(fresh, repeat=repeat), None,
                     note="the scipy reference needs pip install 'graphmethods[bench]'")]
     J = fresh()
-    pair = paired(fresh, reference, repeat=max(repeat, 3))
+    # 9 pairs at least (0.7 s): the ratio of one pair spreads by ±20 % on a shared machine, their median holds
+    pair = paired(fresh, reference, repeat=max(repeat, 9))
     limit = FIXED_TARGETS["fresh_flywheel"]
     return [Row("fixed costs", "press read afresh", "exact J_F (file read, linkage built, dead centres found) / "
                 "the scipy solver", None, pair.a, abs(J - J_ref) / abs(J_ref),

@@ -39,6 +39,7 @@ def test_the_result_table_prints_study_jsons_numbers(name: str, lang: str, capsy
     import json
 
     from graphmethods.cli import main
+    from graphmethods.scene.numbers import format_scale
 
     _, scene = _sheet(name, lang)
     assert main(["study", name, "--json", "--no-exact"]) == 0
@@ -50,8 +51,8 @@ def test_the_result_table_prints_study_jsons_numbers(name: str, lang: str, capsy
     expected = {
         "[δ]": f"= {n(js['delta'])}",
         "ω_m": f"= {n(js['omega_m'])} {nt.unit('rad/s')}",
-        "μ_J": f"= {n(sheet['mu_J'])} {nt.unit('kg·m²')}/",
-        "μ_T": f"= {n(sheet['mu_T'])} {nt.unit('J')}/",
+        "μ_J": f"= {format_scale(sheet['mu_J'], decimal=nt.decimal)} {nt.unit('kg·m²')}/",   # a scale: a plain decimal
+        "μ_T": f"= {format_scale(sheet['mu_T'], decimal=nt.decimal)} {nt.unit('J')}/",
         "tan ψ_max": f"= {n(sheet['tan_psi_max'])},",
         "tan ψ_min": f"= {n(sheet['tan_psi_min'])},",
         "kl": f"kl = {n(sheet['kl_mm'])} {nt.unit('mm')}",
@@ -122,7 +123,7 @@ def test_a_russian_figure_never_lists_numbers_with_a_comma(tmp_path) -> None:
                  "--lang", "ru"]) == 0
     texts = _svg_texts(out)
     assert [t for t in texts if re.search(r"\d,\d+, ", t)] == []
-    assert any("0,08; u = 6" in t.replace("\u2009", "") for t in texts), texts
+    assert any("0,08 кг·м²; u = 6" in t.replace("\u2009", "") for t in texts), texts
 
 
 def test_the_flywheel_design_table_says_J_F_and_gives_D_and_B_each_a_row(tmp_path) -> None:

@@ -196,8 +196,9 @@ def test_psi_max_and_psi_min_print_with_one_digits_rule():
     from graphmethods.dynamics.study import Study
     from graphmethods.sheets import dynamic_analysis_sheet
 
+    # the scales that draw ψ_max = 11.30° (the sheet now picks one set for every language: review3)
     text = " ".join(_texts(dynamic_analysis_sheet(Study(builtin.case("engine"), positions=12), notation="ru",
-                                                 page="A2")))
+                                                 page="A2", mu_J=4e-5, mu_T=2.5, mu_phi=0.05235987755982989)))
     angles = re.findall(r"ψ(?:max|min) = (\d+,\d+)°", text)
     tans = re.findall(r"tg ψ(?:max|min) = (\d+,\d+)", text)
     assert len(angles) == 2 and len(tans) == 2, text[:400]

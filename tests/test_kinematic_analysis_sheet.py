@@ -160,7 +160,7 @@ def test_kinematics_sheet_bad_input_is_one_line_exit_2_and_no_file(run, tmp_path
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("problem, lang, draws", [("press", "ru", 1), ("shaper", "en", 2)])
+@pytest.mark.parametrize("problem, lang, draws", [("press", "ru", (1, 1, 1)), ("shaper", "en", (2, 3, 2))])
 def test_the_division_search_draws_a_second_division_only_when_predicted_clearly_fuller(problem, lang, draws,
                                                                                        monkeypatch):
     """The press in ru: no division is predicted fuller than the probe by more than 1 % of the cells, so each
@@ -179,7 +179,9 @@ def test_the_division_search_draws_a_second_division_only_when_predicted_clearly
 
     monkeypatch.setattr(kas._Parts, "draw", counted)
     s = kinematic_analysis_sheet(builtin.case(problem), notation=lang)
-    assert [drawn.count(n) for n in ("scheme", "velocity-plans", "kinematic-diagrams")] == [draws] * 3
+    # a velocity grid whose μ_v would differ from the probe's is drawn for the prediction, not stretched (review3:
+    # the six-bar press's plans at 0.01 in en, 0.02 in ru and zh): the shaper's once more
+    assert tuple(drawn.count(n) for n in ("scheme", "velocity-plans", "kinematic-diagrams")) == draws
     names = [e.name for e in s.elements][1:]
     assert names[:2] == ["scheme", "velocity-plans"] and names[-1] == "kinematic-diagrams"
     assert all(n.startswith("acceleration-plan-") for n in names[2:-1]) and len(names) == 5

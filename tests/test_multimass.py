@@ -63,9 +63,9 @@ def test_drive_scheme_writes_the_reduced_values():
 
     d = reduce_chain(MASSES, SHAFTS)
     s = drive_scheme(d, notation="en")
-    assert s.element("reduced-label-J-1").text == "J'_{1} = 2.88"
+    assert s.element("reduced-label-J-1").text == "J'_{1} = 2.88 kg·m²"        # every label with its unit
     assert s.element("reduced-label-c-1").text.startswith("c'_{1} = 72000")
-    assert s.element("given-label-J-1").text == "J_{1} = 0.08, u = 6"
+    assert s.element("given-label-J-1").text == "J_{1} = 0.08 kg·m², u = 6"
 
 
 def test_drive_on_the_command_line(capsys, tmp_path):

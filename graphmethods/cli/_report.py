@@ -14,6 +14,7 @@ from typing import Any
 
 from graphmethods.scene import markup
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import format_scale
 
 #: the first word of a key -> its symbol (markup, or a notation key in braces) and unit
 SYMBOLS = {"omega": ("ω", "rad/s"), "epsilon": ("ε", "rad/s²"), "phi": ("φ", "°"), "t": ("t", "s"),
@@ -55,16 +56,25 @@ def label(key: str, nt: Notation) -> str:
     return nt.quantity(f"{sym}_{rest}" if rest else sym, u)
 
 
-def value_text(value: Any, nt: Notation, sig: int = 6) -> str:
-    """A value in the language: numbers with its decimal sign, lists joined by its list separator."""
+def value_text(value: Any, nt: Notation, sig: int = 6, *, key: str = "") -> str:
+    """A value in the language: numbers with its decimal sign, lists joined by its list separator; a drawing
+    scale (``key`` ``mu_J``, ``mu_T``: its unit is per mm) as the sheet writes it
+    (:func:`~graphmethods.scene.numbers.format_scale`: 0.00002, never 2·10⁻⁵).
+
+    >>> from graphmethods.scene.notation import get
+    >>> value_text({"mu_J": 2e-5, "J_0": 2e-5}, get("en"))
+    'μ_J, kg·m²/mm 0.00002;  J_0, kg·m² 2·10⁻⁵'
+    """
     if isinstance(value, bool) or value is None:
         return str(value)
+    if key in WHOLE and WHOLE[key][1].endswith("/mm") and isinstance(value, (int, float)):
+        return format_scale(float(value), sig=sig, decimal=nt.decimal)
     if isinstance(value, (int, float)):
         return nt.number(float(value), sig=sig)
     if isinstance(value, (list, tuple)):
         return nt.list_separator.join(value_text(v, nt, sig) for v in value)
     if isinstance(value, dict):
-        return nt.semicolon.join(f"{label(k, nt)} {value_text(v, nt, sig)}" for k, v in value.items())
+        return nt.semicolon.join(f"{label(k, nt)} {value_text(v, nt, sig, key=k)}" for k, v in value.items())
     return str(value)
 
 

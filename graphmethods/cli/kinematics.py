@@ -112,14 +112,26 @@ def add_parser(sub) -> None:
     p.add_argument("--sheet", metavar="FILE.svg|.pdf|.png|.dxf|-", default=None,
                    help="also write the kinematic-analysis sheet (scheme, velocity plans, acceleration plans, the "
                         "slider's diagrams; scale-true); - writes it to standard output in --format, and nothing else")
-    p.add_argument("--page", type=str.upper, choices=("A1",), default="A1",
-                   help="sheet size: A1 (the sheet's four parts need it)")
+    p.add_argument("--page", type=_a1_only, default="A1", metavar="{A1}",
+                   help="sheet size: A1 only (the sheet's four parts need it)")
     p.add_argument("--plan-positions", default=None, metavar="K[,L,...]",
                    help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
                         "and a return-stroke position)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     _sheet.add_signature_options(p)
     p.set_defaults(func=run)
+
+
+def _a1_only(page: str) -> str:
+    """``--page``: A1, the one page the kinematic-analysis sheet is drawn on; any other refused with the reason
+    (argparse writes it as one line, exit 2)."""
+    import argparse
+
+    if page.upper() != "A1":
+        raise argparse.ArgumentTypeError(f"{page!r}: the kinematic-analysis sheet is drawn on A1 only (its four "
+                                         f"parts, scheme, velocity plans, acceleration plans and the slider's "
+                                         f"diagrams, need it)")
+    return "A1"
 
 
 def _clean(x: float) -> float:

@@ -152,7 +152,7 @@ def _print_text(out: dict, stream, lang: str = "en") -> None:
                      + ", ".join(map(str, value["dead_centre_positions"])) + ")")
             lines.append((key, value))
         elif key in ("power", "sheet") or not isinstance(value, str):
-            lines.append((key if key in ("power", "sheet") else label(key, nt), value_text(value, nt)))
+            lines.append((key if key in ("power", "sheet") else label(key, nt), value_text(value, nt, key=key)))
         else:
             lines.append((key, value))
     width = max(len(k) for k, _ in lines)

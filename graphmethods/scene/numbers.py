@@ -193,3 +193,25 @@ def format_value(value: float, *, sig: int = 4, decimal: str = ".", plus: bool =
     if value < 0:
         return MINUS + text
     return ("+" + text) if plus else text
+
+
+#: the smallest scale written as a plain decimal (six decimals: 0.000002); a smaller one keeps its power of ten
+SCALE_PLAIN_MIN = 1e-6
+
+
+def format_scale(per_mm: float, *, sig: int = 4, decimal: str = ".") -> str:
+    """A drawing scale (units per mm) as a draftsman writes it: a plain decimal, ``0.00002`` and never
+    ``2·10⁻⁵`` (ru, zh and en course books write μ_J = 0,00002 кг·м²/мм); the one rule of every μ on a figure,
+    a sheet and in the text of the command line. Below :data:`SCALE_PLAIN_MIN` (no convenient scale of a
+    course drawing) and otherwise as :func:`format_value`.
+
+    >>> format_scale(2e-5), format_scale(2.5e-5, decimal=","), format_scale(0.02618), format_scale(2e-7)
+    ('0.00002', '0,000025', '0.02618', '2·10⁻⁷')
+    """
+    mag = abs(float(per_mm))
+    if not SCALE_PLAIN_MIN <= mag < 1e-4 or not is_finite(mag):
+        return format_value(per_mm, sig=sig, decimal=decimal)
+    exponent = math.floor(math.log10(mag))
+    decimals = max(0, sig - 1 - exponent)
+    text = f"{round(mag, decimals):.{decimals}f}".rstrip("0").rstrip(".").replace(".", decimal)
+    return (MINUS + text) if per_mm < 0 else text

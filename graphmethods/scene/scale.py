@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from graphmethods.errors import InputError
-from graphmethods.scene.numbers import format_value
+from graphmethods.scene.numbers import format_scale, format_value
 from graphmethods.units import CONVENIENT, convenient_at_least, is_finite
 
 if TYPE_CHECKING:
@@ -108,11 +108,11 @@ class Scale:
         from graphmethods.scene.notation import get as _get_notation
 
         nt = _get_notation(notation)
-        number = format_value(self.per_mm, sig=4, decimal=nt.decimal)
+        number = format_scale(self.per_mm, sig=4, decimal=nt.decimal)
         text = f"{self.symbol} = {number} {nt.unit(self.unit)}/{nt.unit('mm')}"
         if self.alt_unit:
             sep = "" if self.alt_unit == "°" else " "
-            alt = format_value(self.alt_per_mm, sig=4, decimal=nt.decimal)
+            alt = format_scale(self.alt_per_mm, sig=4, decimal=nt.decimal)
             text += f" ({alt}{sep}{nt.unit(self.alt_unit)}/{nt.unit('mm')})"
         return text
 

@@ -89,13 +89,15 @@ def _row_texts(chain: Any, nt: Any, key: str) -> tuple[list[str], list[str], lis
     """The texts of a scheme's shafts, discs and (the given drive) the masses' names."""
     num, sep = nt.number, nt.list_separator
     n = len(chain.names)
+    cu, kgm2 = nt.unit("N·m/rad"), nt.unit("kg·m²")
     if key == "reduced":
-        return ([f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {nt.unit('N·m/rad')}" for j in range(n - 1)],
-                [f"J'_{{{i + 1}}} = {num(float(chain.J[i]), sig=4)}" for i in range(n)], [])
-    return ([f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)}{sep}u = {num(float(chain.u_shafts[j]), sig=4)}"
-             for j in range(n - 1)],
-            [f"J_{{{i + 1}}} = {num(float(chain.J_given[i]), sig=4)}{sep}u = {num(float(chain.u[i]), sig=4)}"
-             for i in range(n)], list(chain.names))
+        return ([f"c'_{{{j + 1}}} = {num(float(chain.c[j]), sig=4)} {cu}" for j in range(n - 1)],
+                [f"J'_{{{i + 1}}} = {num(float(chain.J[i]), sig=4)} {kgm2}" for i in range(n)], [])
+    return ([f"c_{{{j + 1}}} = {num(float(chain.c_given[j]), sig=4)} {cu}{sep}"
+             f"u = {num(float(chain.u_shafts[j]), sig=4)}" for j in range(n - 1)],
+            [f"J_{{{i + 1}}} = {num(float(chain.J_given[i]), sig=4)} {kgm2}{sep}u = {num(float(chain.u[i]), sig=4)}"
+             for i in range(n)],
+            [name if name != str(i + 1) else "" for i, name in enumerate(chain.names)])   # unnamed: no name
 
 
 def _count(texts: list[list[str]], xs: list[float], size: float) -> int:
@@ -113,7 +115,7 @@ def _row(chain: Any, nt: Any, key: str, texts: tuple[list[str], list[str], list[
     values = np.asarray(chain.J if reduced else chain.J_given, dtype=float)
     hh = h_max * (0.35 + 0.65 * (values / values.max()) ** 0.25)
     n = len(xs)
-    els: list[Any] = [Text((xs[0] - 28.0, y - h_max / 2 - 9.0 - up), nt.word(f"drive.{key}"), size_mm=size + 0.5,
+    els: list[Any] = [Text((xs[0] - 24.0, y - h_max / 2 - 9.0 - up), nt.word(f"drive.{key}"), size_mm=size + 0.5,
                            bold=True, name=f"heading-{key}")]
     c_labels = []
     for j in range(n - 1):
@@ -125,12 +127,16 @@ def _row(chain: Any, nt: Any, key: str, texts: tuple[list[str], list[str], list[
         els.append(_disc(xs[i], y, float(hh[i]), f"{key}-disc-{i + 1}", THICK))
         J_labels.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0), texts[1][i], size_mm=size, anchor="middle",
                              name=f"{key}-label-J-{i + 1}"))
-        if not reduced:
-            name_labels.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0 + 1.5 * size), texts[2][i],
+        if not reduced and any(texts[2]):
+            name_labels.append(Text((xs[i], y + float(hh[i]) / 2 + 6.0 + 1.5 * size), texts[2][i] or " ",
                                     size_mm=size - 0.4, anchor="middle", name=f"label-name-{i + 1}"))
     els += _shaft_labels(c_labels, xs, [y - float(h) / 2 for h in hh], size)
     step = (2.6 if name_labels else 1.4) * size
     widest = [max((a, b), key=_width) for a, b in zip(J_labels, name_labels)] if name_labels else J_labels
+    if max(_levels([_extent(t) for t in widest]), default=0):        # staggered: from one line under the discs
+        base = y + float(max(hh)) / 2 + 6.0
+        J_labels = [replace(t, at=(t.at[0], base)) for t in J_labels]
+        name_labels = [replace(t, at=(t.at[0], base + 1.5 * size)) for t in name_labels]
     els += _stagger(J_labels, step, by=widest) + _stagger(name_labels, step, by=widest)
     els.append(Line((xs[0] - 12.0, y), (xs[0] - 2.5, y), style=THIN, name=f"{key}-axis-in"))
     return els
@@ -174,7 +180,7 @@ def drive_scheme(chain: Any, *, notation: str = "en", page: Page | None = None, 
     tx = x1 - table.width_mm - 4.0
     texts = {key: _row_texts(chain, nt, key) for key in ("given", "reduced")}
     last = max(_width(Text((0.0, 0.0), t[k][-1], size_mm=size)) for t in texts.values() for k in (1, 2) if t[k])
-    left, right = x0 + 28.0, min(x0 + 0.52 * (x1 - x0), tx - 6.0 - last / 2)       # the last labels clear the table
+    left, right = x0 + 24.0, min(x0 + 0.52 * (x1 - x0), tx - 3.0 - last / 2)       # the last labels clear the table
     xs = [left + (right - left) * i / max(n - 1, 1) for i in range(n)]
     # the labels' levels (a long chain staggers them) take their height from the discs: a scheme, not to scale
     level = {key: (_count([t[0]], [(xs[j] + xs[j + 1]) / 2 for j in range(n - 1)], size),

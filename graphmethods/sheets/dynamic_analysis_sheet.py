@@ -47,6 +47,7 @@ from graphmethods.sheets.wittenbauer import (
     bold_bbox,
     diagram_data,
     diagram_elements,
+    inertia_origin,
     inertia_scale,
     offset_origin,
     result_rows,
@@ -107,6 +108,8 @@ def dynamic_analysis_sheet(study, *, page="A1", mu_J=None, mu_T=None, mu_M=None,
     nt = get_notation(notation)
     sheet = SheetFrame(nt=nt, page=None, title=title or nt.word("wittenbauer.dynamic_analysis"),
                        problem=problem_text(study, nt), title_block=title_block, default_page=_sheet_page(page))
+    if mu_J is None and mu_T is None and mu_M is None and mu_phi is None:
+        mu_phi, mu_M, mu_T, mu_J = common_scales(study, page=page, tangents=tangents, title_block=title_block)
     content, lay = _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M,
                                    mu_phi=mu_phi)
     res = lay.result(content)
@@ -172,14 +175,76 @@ def sheet_construction(study, *, page="A1", tangents: str = "exact") -> dict[str
 
 
 def _default_placement(study, *, page, tangents: str) -> tuple[SheetContent, SheetPlacement]:
-    """The content and placement of the sheet with every scale picked (they do not depend on the language)."""
+    """The content and placement of the sheet with every scale picked (:func:`common_scales`: the same in every
+    language)."""
     study = as_study(study)
-    nt = get_notation("en")
-    with lettered(page if hasattr(page, "size") else str(page).upper()):
-        sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
-                           problem=problem_text(study, nt), title_block=True, default_page=_sheet_page(page))
-        return _placed_content(sheet, _sheet_content(study, nt, tangents), nt, mu_J=None, mu_T=None, mu_M=None,
-                               mu_phi=None)
+    mu_phi, mu_M, mu_T, mu_J = common_scales(study, page=page, tangents=tangents)
+    return _placement_in(study, "en", page=page, tangents=tangents, title_block=True, mu_J=mu_J, mu_T=mu_T,
+                         mu_M=mu_M, mu_phi=mu_phi)
+
+
+def _placement_in(study, code: str, *, page, tangents: str, title_block: bool, **scales: object
+                  ) -> tuple[SheetContent, SheetPlacement]:
+    """The content and placement of the sheet in language ``code`` with the ``scales`` given (None: picked)."""
+    return _Placer(study, code, page=page, tangents=tangents, title_block=title_block).placed(**scales)
+
+
+class _Placer:
+    """The sheet's frame and content in one language, placed at any scales asked (the content computed once)."""
+
+    def __init__(self, study, code: str, *, page, tangents: str, title_block: bool) -> None:
+        self.nt = nt = get_notation(code)
+        self.page = page if hasattr(page, "size") else str(page).upper()
+        with lettered(self.page):
+            self.sheet = SheetFrame(nt=nt, page=None, title=nt.word("wittenbauer.dynamic_analysis"),
+                                    problem=problem_text(study, nt), title_block=title_block,
+                                    default_page=_sheet_page(page))
+        self.content = _sheet_content(study, nt, tangents)
+
+    def placed(self, **scales: object) -> tuple[SheetContent, SheetPlacement]:
+        with lettered(self.page):
+            return _placed_content(self.sheet, self.content, self.nt, **scales)
+
+    def fits(self, mu_phi: float, mu_M: float, mu_T: float, mu_J: float) -> bool:
+        try:
+            return self.placed(mu_phi=mu_phi, mu_M=mu_M, mu_T=mu_T, mu_J=mu_J)[1].fits
+        except InputError:
+            return False
+
+
+#: the languages of a sheet: its scales are the same in all of them
+SHEET_LANGUAGES = ("en", "ru", "zh")
+
+
+def common_scales(study, *, page="A1", tangents: str = "exact", title_block: bool = True
+                  ) -> tuple[float, float, float, float]:
+    """μ_φ (rad/mm), μ_M (N·m/mm), μ_T (J/mm) and μ_J (kg·m²/mm) of the dynamic-analysis sheet in every language.
+
+    A sheet's room differs with its language (the ГОСТ and GB title blocks, the width of the result table), and
+    one problem is drawn to one set of scales unless its text truly does not fit: of the sets the sheet picks in
+    en, ru and zh, the one that fits every language, picked by the most languages and, of those, drawing largest
+    (the least product of the scales); when none fits all, each scale the largest of the three (each room grows
+    as the other scales grow, so that set fits).
+
+    >>> from graphmethods.problems import builtin
+    >>> common_scales(Study(builtin.case("press"), positions=12))[2:]
+    (2.5, 0.001)
+    """
+    study = as_study(study)
+    placers = [_Placer(study, code, page=page, tangents=tangents, title_block=title_block)
+               for code in SHEET_LANGUAGES]
+    chosen: list[tuple[float, float, float, float]] = []
+    for placer in placers:
+        lay = placer.placed(mu_J=None, mu_T=None, mu_M=None, mu_phi=None)[1]
+        chosen.append((lay.s_phi.per_mm, lay.s_M.per_mm, lay.s_T.per_mm, lay.s_J.per_mm))
+    picked = list(dict.fromkeys(chosen))
+    if len(picked) == 1:
+        return picked[0]
+    for sc in sorted(picked, key=lambda v: (-chosen.count(v), float(np.sum(np.log(v))))):
+        if all(placer.fits(*sc) for placer in placers):
+            return sc
+    return (max(v[0] for v in picked), max(v[1] for v in picked), max(v[2] for v in picked),
+            max(v[3] for v in picked))
 
 
 def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **scales: object
@@ -187,6 +252,8 @@ def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **sc
     """The content with its ΔT range where the ordinate axis stands, and its placement: the result table
     lettered at 5 mm when the room its width takes leaves the diagram's scale as at the smallest lettering."""
     def placed(content: SheetContent, table_mm: float) -> tuple[SheetContent, SheetPlacement]:
+        if suppressed_zero(content.J_lo, content.J_to):     # the origin the placement takes, whatever its scales
+            content = content.with_origin(inertia_origin(content.J_lo, content.J_to))
         lay = _sheet_placement(sheet, content, nt, table_mm=table_mm, **scales)  # type: ignore[arg-type]
         for _ in range(3):                               # k and l where the ordinate axis stands: the ΔT range
             if lay.J_0 == 0.0 or content.J_0 == lay.J_0:
@@ -195,15 +262,21 @@ def _placed_content(sheet: SheetFrame, content: SheetContent, nt: Notation, **sc
             lay = _sheet_placement(sheet, content, nt, table_mm=table_mm, **scales)  # type: ignore[arg-type]
         return content, lay
 
-    small = placed(content, RESULT_SIZES_MM[-1])
+    try:
+        small: tuple[SheetContent, SheetPlacement] | InputError = placed(content, RESULT_SIZES_MM[-1])
+    except InputError as e:             # given scales that need the room beside the title block a wide table leaves
+        small = e
     for size in RESULT_SIZES_MM[:-1]:
         try:
             large = placed(content, size)
         except InputError:
             continue
-        if (large[1].s_J.per_mm, large[1].J_0) == (small[1].s_J.per_mm, small[1].J_0) and large[1].fits and \
-                sheet.top + large[1].table_h_mm + 10.0 <= _title_block_top(sheet):
+        same = isinstance(small, InputError) or \
+            (large[1].s_J.per_mm, large[1].J_0) == (small[1].s_J.per_mm, small[1].J_0)
+        if same and large[1].fits and sheet.top + large[1].table_h_mm + 10.0 <= _title_block_top(sheet):
             return large
+    if isinstance(small, InputError):
+        raise small
     return small
 
 
@@ -213,6 +286,14 @@ def _title_block_top(sheet: SheetFrame) -> float:
     if sheet.probe.title_block is None:
         return clip[3]
     return float(sheet.probe.title_block.table(clip[2], clip[3]).at[1])
+
+
+def _title_block_left(sheet: SheetFrame) -> float:
+    """The left edge of the title block (the right of the frame when there is none), mm."""
+    clip = sheet.probe.inner_box()
+    if sheet.probe.title_block is None:
+        return clip[2]
+    return float(sheet.probe.title_block.table(clip[2], clip[3]).at[0])
 
 
 #: the lettering of the result table, largest first: 5 mm (values on A1) when the diagram keeps its scale, else
@@ -372,16 +453,21 @@ def _phi_scale(sheet: SheetFrame, content: SheetContent, nt: Notation, mu_phi: o
 
 def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, mu_J: object, mu_T: object,
                      mu_M: object, mu_phi: object, table_mm: float = TABLE_MM,
-                     lay: DynamicSheetLayout = LAYOUT) -> SheetPlacement:
+                     lay: DynamicSheetLayout = LAYOUT, beside_title_block: bool = True) -> SheetPlacement:
     """The scales and the places of the parts: [M graph | turned J_e graph] over [ΔT graph | diagram].
 
     μ_J fits the diagram's content to the width beside the graphs: 0…J_e max, or, for a J_e that
     varies little about a large mean, J_0…J_e max from a round J_0 below J_e min (a suppressed
     zero); the rays keep their true slopes and are clipped to the diagram's own frame.
+
+    The graphs and the diagram run down beside the title block (``beside_title_block``) when the diagram and
+    its J axis's name end left of it (the result table stands over the block) and that draws some ordinates
+    (M, ΔT, J_e) larger; else down to its top.
     """
     x0, _, x1, _ = sheet.box
     y_Jt = sheet.top + lay.turned_axis_mm
-    d_bottom = sheet.caption_y - lay.diagram_bottom_mm
+    bottom = sheet.probe.inner_box()[3] - (sheet.box[1] - sheet.probe.inner_box()[1]) - 1.0
+    d_bottom = (bottom if beside_title_block else sheet.caption_y) - lay.diagram_bottom_mm
 
     def diagram_room(L_phi: float) -> float:
         return d_bottom - (y_Jt + L_phi + lay.under_turned_mm)
@@ -407,7 +493,20 @@ def _sheet_placement(sheet: SheetFrame, content: SheetContent, nt: Notation, *, 
     # the ordinate axis: the width the scale's rounding leaves over is shared on both sides of the diagram
     x_a_min = left_end + lay.diagram_gap_mm
     x_a_max = x1 - table_w - lay.table_gap_mm - J_label_w - s_J.to_mm(content.J_to - J_0)
-    return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=max(x_a_min, (x_a_min + x_a_max) / 2), y_Jt=y_Jt,
+    x_a = max(x_a_min, (x_a_min + x_a_max) / 2)
+    if beside_title_block and sheet.probe.title_block is not None:
+        over = x_a + s_J.to_mm(content.J_to - J_0) + J_label_w > _title_block_left(sheet)
+        try:
+            above = _sheet_placement(sheet, content, nt, mu_J=mu_J, mu_T=mu_T, mu_M=mu_M, mu_phi=mu_phi,
+                                     table_mm=table_mm, lay=lay, beside_title_block=False)
+        except InputError:      # given scales that need the room beside the block
+            if over:
+                raise
+        else:                   # beside the block only when it draws some ordinates larger, not the φ axes alone
+            if over or (above.s_M.per_mm, above.s_T.per_mm, above.s_J.per_mm) == (s_M.per_mm, s_T.per_mm,
+                                                                                    s_J.per_mm):
+                return above
+    return SheetPlacement(s_phi, s_M, s_T, s_J, J_0, x_L=x_L, x_a=x_a, y_Jt=y_Jt,
                           y_M0=y_Jt + L_phi - lay.M_below_mm - s_M.to_mm(-dm.lo), y0_T=d_top + s_T.to_mm(content.T_hi),
                           d_top=d_top, table_mm=table_mm, table_h_mm=probe_table.height_mm,
                           fits=x_a_max >= x_a_min)

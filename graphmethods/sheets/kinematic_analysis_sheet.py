@@ -16,6 +16,7 @@ Each part keeps its own scales, written under it; the title block names the sche
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property, partial
@@ -211,7 +212,8 @@ def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], l
         if (nm, box) not in seen:
             p = by_name.get(nm)
             seen[nm, box] = (p.ink.stretched(p.scene.page.inner_box(), box) if p is not None
-                             and not parts.drawn(nm, box) else parts.draw(fn, nm, box).ink.cells)
+                             and not parts.drawn(nm, box) and not _rescaled(parts, p, box)
+                             else parts.draw(fn, nm, box).ink.cells)
         return seen[nm, box]
 
     guesses: list[tuple[int, int, Division]] = []
@@ -221,6 +223,18 @@ def _predicted(parts: _Parts, probe: list[Part], regions: Callable[[Division], l
         except InputError:          # a part that does not fit: not a candidate
             continue
     return sorted(guesses)
+
+
+def _rescaled(parts: _Parts, probe: Part, box: tuple[float, float, float, float]) -> bool:
+    """Would the velocity plans drawn in ``box`` take another μ_v than the probe's? A stretched prediction cannot
+    see the step (the six-bar press's plans at 0.01 in a taller row, 0.02 in the probe's): such a part is drawn."""
+    if probe.name != "velocity-plans":
+        return False
+    from graphmethods.sheets.velocity_plans import velocity_grid_scale
+
+    mu = velocity_grid_scale(parts.case, m=parts.m, notation=parts.nt, page=region_page(parts.pg, box),
+                             title_block=False)
+    return not math.isclose(mu, probe.scene.scales()[0].per_mm)
 
 
 def _drawn(parts: _Parts, regions: list[Region]) -> list[Part] | None:

@@ -144,14 +144,19 @@ class FixedPivot(Element):
         return (_t(c), _t(g - half), _t(h - half), _t(h + half), _t(g + half))
 
     def hatch_region(self) -> Region:
-        """The hatched strip behind the ground line."""
-        c, d, n = self._frame()
-        g = c + d * self.height_mm
-        h = g + d * self.hatch_mm
-        half = n * self.ground_mm / 2
-        outline = (_t(g - half), _t(g + half), _t(h + half), _t(h - half))
-        return Region(outline, hatch_angle_deg=self.direction_deg + 135.0, hatch_spacing_mm=1.3,
-                      name=f"{self.name}-hatch")
+        """The hatched strip behind the ground line (built once per support: its region clips its hatching
+        once, however often the support is drawn, registered or measured)."""
+        found: Region | None = self.__dict__.get("_hatch_region")
+        if found is None:
+            c, d, n = self._frame()
+            g = c + d * self.height_mm
+            h = g + d * self.hatch_mm
+            half = n * self.ground_mm / 2
+            outline = (_t(g - half), _t(g + half), _t(h + half), _t(h - half))
+            found = Region(outline, hatch_angle_deg=self.direction_deg + 135.0, hatch_spacing_mm=1.3,
+                           name=f"{self.name}-hatch")
+            object.__setattr__(self, "_hatch_region", found)
+        return found
 
     def primitives(self):
         c, d, n = self._frame()
@@ -207,16 +212,26 @@ class Guide(Element):
         p, q, _, n = self._frame()
         return _t(p + n * self.offset_mm), _t(q + n * self.offset_mm)
 
+    def _hatch_region(self) -> Region:
+        """The hatched strip behind the surface, built once per guide (its hatching clipped once)."""
+        found: Region | None = self.__dict__.get("_hatch")
+        if found is None:
+            p, q, u, n = self._frame()
+            a, b = p + n * self.offset_mm, q + n * self.offset_mm
+            c, d = a + n * self.hatch_mm, b + n * self.hatch_mm
+            angle = math.degrees(math.atan2(-u[1], u[0])) + 45.0
+            found = Region((_t(a), _t(b), _t(d), _t(c)), hatch_angle_deg=angle, hatch_spacing_mm=1.3,
+                           name=f"{self.name}-hatch")
+            object.__setattr__(self, "_hatch", found)
+        return found
+
     def primitives(self):
         p, q, u, n = self._frame()
         a, b = p + n * self.offset_mm, q + n * self.offset_mm
-        c, d = a + n * self.hatch_mm, b + n * self.hatch_mm
-        angle = math.degrees(math.atan2(-u[1], u[0])) + 45.0
         prims = []
         if self.axis:
             prims.append(Path((_t(p), _t(q)), CHAIN))
-        prims.extend(Region((_t(a), _t(b), _t(d), _t(c)), hatch_angle_deg=angle, hatch_spacing_mm=1.3,
-                            name=f"{self.name}-hatch").primitives())
+        prims.extend(self._hatch_region().primitives())
         prims.append(Path((_t(a), _t(b)), GROUND))
         return tuple(prims)
 

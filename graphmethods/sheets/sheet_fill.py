@@ -66,8 +66,9 @@ class PartInk:
         """The ink of ``scene`` (a part drawn on a region of ``page``) on ``page``'s grid of cells."""
         rec = record(scene)
         labels = [c.data for c in rec.calls if c.kind == "text"]
-        glyphs = np.array([glyph_box(lab) for lab in labels], dtype=float).reshape(-1, 4)
-        boxes = np.array([label_bbox(lab) for lab in labels], dtype=float).reshape(-1, 4)
+        whole = [label_bbox(lab) for lab in labels]
+        glyphs = np.array([glyph_box(lab, b) for lab, b in zip(labels, whole)], dtype=float).reshape(-1, 4)
+        boxes = np.array(whole, dtype=float).reshape(-1, 4)
         seg, in_page = segments_marked(rec, ("page",))
         inked = seg[~in_page]
         cells = ink_cells(inked, boxes, page.inner_box())

@@ -74,16 +74,19 @@ class _Grid:
     ch: float
     need: float                         # physical units per mm the largest plan needs in its cell
     shares: tuple[tuple[float, float], ...] = ()    # each cell's (x, width) in its row when not all alike
+    rows: tuple[tuple[float, float], ...] = ()      # each row's (y, height) when not all alike
 
     def cell(self, idx: int, lay: PlanGridLayout) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The frame of cell ``idx`` and the box inside it that the plan fills (mm)."""
         r, c = divmod(idx, self.columns)
         bx0, by0 = self.area[0] + c * self.cw, self.area[1] + r * self.ch
-        cw = self.cw
+        cw, ch = self.cw, self.ch
         if self.shares:
             bx0, cw = self.shares[idx]
+        if self.rows:
+            by0, ch = self.rows[r]
         e = lay.inset_mm
-        box = (bx0 + e, by0 + e, bx0 + cw - e, by0 + self.ch - e)
+        box = (bx0 + e, by0 + e, bx0 + cw - e, by0 + ch - e)
         inner = (box[0] + lay.pad_x_mm - e, box[1] + lay.head_mm + lay.pad_y_mm - e, box[2] - lay.pad_x_mm + e,
                  box[3] - lay.pad_y_mm + e)
         return box, inner
@@ -140,21 +143,22 @@ MIN_CELL_MM = 24.0
 
 
 def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout, label_mm: np.ndarray) -> _Grid | None:
-    """The plans in rows of cells as wide as each plan at the common scale (the positions in order, the rows
-    alike in height), the slack of a row shared among its cells: a plan fills its cell as a draftsman sizes
-    it, where equal cells would have to take the widest plan's width. The rows kept are those that give the
-    largest convenient scale; None when no rows do better than infinity."""
+    """The plans in rows of cells as wide as each plan at the common scale (the positions in order), each row
+    as tall as its tallest plan, the slack of a row shared among its cells and the height's slack among the
+    rows: a plan fills its cell as a draftsman sizes it, where equal cells would have to take the widest and
+    the tallest plan's size. The rows kept are those that give the largest convenient scale; None when no rows
+    do better than infinity."""
     W, H = area[2] - area[0], area[3] - area[1]
     n = len(spans)
     sx, sy = spans[:, 0], np.where(fit, spans[:, 1], 0.0)     # every plan drawn gets its width
     best: _Grid | None = None
     for cols in range(1, n + 1):
         rows = math.ceil(n / cols)
-        ch = H / rows
-        ih = ch - lay.head_mm - 2 * lay.pad_y_mm
-        if ih <= 5:
+        tall = np.array([sy[r * cols:(r + 1) * cols].max() for r in range(rows)])
+        frame_h = lay.head_mm + 2 * lay.pad_y_mm
+        if H - rows * frame_h <= 5 * rows:
             continue
-        need = float(sy.max() / ih)
+        need = float(tall.sum() / (H - rows * frame_h))
         for r in range(rows):
             row = sx[r * cols:(r + 1) * cols]
             room = W - len(row) * 2 * lay.pad_x_mm
@@ -165,6 +169,11 @@ def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout, 
         if not math.isfinite(need) or need <= 0:
             continue
         mu = convenient_at_least(need)
+        heights = np.maximum(tall / mu + frame_h, max(MIN_CELL_MM, H / rows / 2))
+        if heights.sum() > H + 1e-9:
+            continue
+        heights = heights + (H - heights.sum()) / rows
+        ys = area[1] + np.concatenate(([0.0], np.cumsum(heights)[:-1]))
         shares: list[tuple[float, float]] = []
         for r in range(rows):
             row, labels = sx[r * cols:(r + 1) * cols], label_mm[r * cols:(r + 1) * cols]
@@ -176,7 +185,8 @@ def _fitted_grid(area, spans: np.ndarray, fit: np.ndarray, lay: PlanGridLayout, 
             shares += list(zip(x.tolist(), widths.tolist()))
         else:
             if best is None or mu < convenient_at_least(best.need) * (1 - 1e-9):
-                best = _Grid(area, cols, W / cols, ch, need, tuple(shares))
+                best = _Grid(area, cols, W / cols, H / rows, need, tuple(shares),
+                             tuple(zip(ys.tolist(), heights.tolist())))
     return best
 
 
@@ -227,13 +237,7 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     images, vectors = _plan_layout(plans)
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.plans"),
                   problem=lk.problem if problem is None else problem, title_block=title_block)
-    spans = []
-    for k in drawn:
-        xy = np.array(list(_image_xy(plans, images, k).values()))
-        spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
-    ill = np.asarray(plans.ill_conditioned)[drawn]
-    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, lay,
-                      label_mm=np.array([_shared_label_mm(_image_xy(plans, images, k)) for k in drawn]))
+    grid, ill = _grid_of(sheet, plans, images, drawn, columns)
     s_v = _pick_mu_v(mu_v, grid.need, what="the largest plan in its cell", nt=nt)
     occ = sheet.occ
     cells: list[Element] = []
@@ -265,6 +269,35 @@ def velocity_plan_grid(linkage, *, m: int | None = None, omega_1: float | None =
     scales = (s_v,)
     elements = [sheet.header()] + cells + drawn_els + label_els + sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_v.note,) if s_v.note else ())
+
+
+def _grid_of(sheet: Sheet, plans, images, drawn: list[int], columns: int | None) -> tuple[_Grid, np.ndarray]:
+    """The grid of the plans of positions ``drawn`` on ``sheet`` and which of them are ill-conditioned."""
+    spans = []
+    for k in drawn:
+        xy = np.array(list(_image_xy(plans, images, k).values()))
+        spans.append((np.ptp(xy[:, 0]), np.ptp(xy[:, 1])))
+    ill = np.asarray(plans.ill_conditioned)[drawn]
+    grid = _plan_grid(sheet, np.array(spans), ~ill if (~ill).any() else np.ones_like(ill), columns, PLAN_GRID_LAYOUT,
+                      label_mm=np.array([_shared_label_mm(_image_xy(plans, images, k)) for k in drawn]))
+    return grid, ill
+
+
+def velocity_grid_scale(linkage, *, m: int | None = None, notation="en", page=None, title_block: bool = True
+                        ) -> float:
+    """μ_v, (m/s)/mm, that :func:`velocity_plan_grid` picks on ``page``, without drawing it: a sheet that stretches
+    a drawn grid onto another region to predict its ink asks it, since the grid's scale steps with its room.
+
+    >>> from graphmethods.problems import builtin
+    >>> from graphmethods.scene import Page
+    >>> velocity_grid_scale(builtin.case("shaper"), page=Page("A1", "landscape", frame=True))
+    0.005
+    """
+    lk, plans, _, drawn = _plans_of(linkage, m=m, omega_1=None)
+    nt = get_notation(notation)
+    sheet = Sheet(nt=nt, page=page, title=nt.word("kinematics.plans"), problem=lk.problem, title_block=title_block)
+    grid, _ = _grid_of(sheet, plans, _plan_layout(plans)[0], drawn, None)
+    return _pick_mu_v(None, grid.need, what="the largest plan in its cell", nt=nt).per_mm
 
 
 def _off_scale_values(xy_k: dict, vectors, inner, prefix: str, nt, lay: PlanGridLayout) -> list[Element]:

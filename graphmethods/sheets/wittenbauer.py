@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -43,6 +44,7 @@ from graphmethods.errors import InputError
 from graphmethods.scene import markup, notation as get_notation
 from graphmethods.scene.elements import Axis, Dimension, Element, Line, Point, Polyline, Table, Text, label_bbox
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import format_scale
 from graphmethods.scene.page import Page
 from graphmethods.scene.primitives import MAIN, THIN, Label, Style
 from graphmethods.scene.scale import Scale
@@ -465,10 +467,11 @@ def _diagram_points(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupancy
     for key, pt in (("k", d.k_pt), ("l", d.l_pt)):
         els.append(Point(pt, radius_mm=0.7, name=f"{d.prefix}point-{key}"))
         occ.add_box((pt[0] - 0.9, pt[1] - 0.9, pt[0] + 0.9, pt[1] + 0.9))
-    for key, pt in (("k", d.k_pt), ("l", d.l_pt)):
-        lab = occ.place_label(pt, key, ("w", "nw", "sw", "ne", "se") if d.right else ("e", "ne", "se", "nw", "sw"),
-                              size_mm=TEXT_MM + 0.5, gap_mm=1.5, within=within)
-        els.append(Text((lab.x, lab.y), key, size_mm=TEXT_MM + 0.5, anchor=lab.anchor, name=f"{d.prefix}name-{key}"))
+    for key, pt in (("k", d.k_pt), ("l", d.l_pt)):        # a leader when the ray, arc and axis leave no room beside
+        lab, leader = occ.place_label_with_leader(pt, key, ("w", "nw", "sw", "ne", "se") if d.right else
+                                                  ("e", "ne", "se", "nw", "sw"), size_mm=TEXT_MM + 0.5, gap_mm=1.5,
+                                                  within=within)
+        _with_leader(els, lab, leader, key, TEXT_MM + 0.5, f"{d.prefix}name-{key}", f"{d.prefix}leader-{key}")
     return els
 
 
@@ -553,6 +556,7 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
     """
     nt = get_notation(nt)
     n = nt.number
+    sc = partial(format_scale, decimal=nt.decimal)      # a scale as a draftsman writes it: 0.00002, not 2·10⁻⁵
     mm = nt.unit("mm")
     pos = " ".join(str(i) for i in res.index_omega_max)
     neg = " ".join(str(i) for i in res.index_omega_min)
@@ -571,7 +575,7 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
     tg_max = f"{tg} {psi_max} = {tan_max}, {psi_max} = {deg_max}°"
     tg_min = f"{tg} {psi_min} = {tan_min}, {psi_min} = {deg_min}°"
     J_F = f"{nt.sym('dynamics.J_F')} = {nt.sym('mu_T')}·kl/({nt.sym('dynamics.omega_m')}²{nt.sym('dynamics.delta')})"
-    J_F_num = f"= {n(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)})"
+    J_F_num = f"= {sc(res.mu_T)}·{n(res.kl_mm)}/({n(res.omega_m)}²·{n(res.delta)})"
     origin_rows = []
     if J_0 > 0.0:
         J_F += f" − {nt.sym('dynamics.J_0')}"
@@ -584,8 +588,8 @@ def result_rows(res: WittenbauerResult, nt, *, extra=(), on_sheet: bool = False,
         (nt.word("wittenbauer.omega_m"), f"{nt.sym('dynamics.omega_m')} = {value_text(nt, res.omega_m, 'rad/s')}",
          None),
         *((a, b, None) for a, b in extra),
-        (nt.word("wittenbauer.scale_J"), f"{nt.sym('dynamics.mu_J')} = {n(res.mu_J)} {nt.unit('kg·m²')}/{mm}", None),
-        (nt.word("wittenbauer.scale_T"), f"{nt.sym('mu_T')} = {n(res.mu_T)} {nt.unit('J')}/{mm}", None),
+        (nt.word("wittenbauer.scale_J"), f"{nt.sym('dynamics.mu_J')} = {sc(res.mu_J)} {nt.unit('kg·m²')}/{mm}", None),
+        (nt.word("wittenbauer.scale_T"), f"{nt.sym('mu_T')} = {sc(res.mu_T)} {nt.unit('J')}/{mm}", None),
         (nt.word("wittenbauer.tan_max"), tg_max, None),
         (nt.word("wittenbauer.tan_min"), tg_min, None),
         (nt.word("wittenbauer.tangents"), tan_form, f"{nt.word('wittenbauer.tangents')}: {tan_form}"),

@@ -89,21 +89,30 @@ def segments_marked(rec: RecordingRenderer, groups: Sequence[str] = ()) -> tuple
     lens: list[int] = []
     marks: list[bool] = []
     circles: list[tuple[int, float, float, float]] = []      # (where its 17 points go, cx, cy, r)
+    ring = [(0.0, 0.0)] * len(_COS16)
     for c in rec.calls:
-        if c.kind == "path":
+        kind = c.kind
+        if kind == "path":
             pts, closed = c.data
-            pts = list(pts) + ([pts[0]] if closed and pts else [])
-        elif c.kind == "polygon":
-            pts = list(c.data) + [c.data[0]] if c.data else []
-        elif c.kind == "circle":
+            k = len(pts)
+            if closed and k:
+                pts = (*pts, pts[0])
+                k += 1
+        elif kind == "polygon":
+            pts = c.data
+            k = len(pts)
+            if k:
+                pts = (*pts, pts[0])
+                k += 1
+        elif kind == "circle":
             circles.append((len(pts_all), *c.data))
-            pts = [(0.0, 0.0)] * len(_COS16)
+            pts, k = ring, len(ring)
         else:
             continue
-        if len(pts) > 1:
+        if k > 1:
             pts_all.extend(pts)
-            lens.append(len(pts))
-            marks.append(any(g in groups for g in c.groups))
+            lens.append(k)
+            marks.append(bool(groups) and any(g in groups for g in c.groups))
     if not lens:
         return np.empty((0, 4)), np.empty(0, dtype=bool)
     n = np.array(lens)
@@ -297,10 +306,11 @@ def _cells(ox: float, oy: float, nx: int, ny: int) -> np.ndarray:
     return cells
 
 
-def glyph_box(lab: Label) -> tuple[float, float, float, float]:
+def glyph_box(lab: Label, box: tuple[float, float, float, float] | None = None) -> tuple[float, float, float, float]:
     """The box of a label's glyphs that a line must not cross: capitals' height over the baseline (a lowered
-    subscript's depth under it), 0.1 mm in from either end."""
-    x0, _, x1, _ = label_bbox(lab)
+    subscript's depth under it), 0.1 mm in from either end (``box``: the label's :func:`label_bbox`, when the
+    caller has it already)."""
+    x0, _, x1, _ = label_bbox(lab) if box is None else box
     sub = any(s < 0 for _, s in lab.runs)
     y0 = lab.y - CAP * lab.size_mm
     y1 = lab.y + (markup.SUB_SHIFT * lab.size_mm * 0.8 if sub else 0.0)
