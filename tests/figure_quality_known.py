@@ -44,10 +44,8 @@ KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     ("cli", "force-sheet-24-positions"): "press, position 5 of 24, A1, zh: 57% empty",
     # the kinematic A1 sheet (lane review3): one plan position only
     ("cli", "kinematic-sheet-plan-position-0"): "two-slider, --plan-positions 0: 53% empty",
-    ("cli", "kinematic-sheet-8-positions"): "press, 8 positions: 50.3% empty",
     ("drawn-six-bar-triad", "kinematic_analysis_sheet", "ru"): "1 label crossed by ink: S3",
     # the dynamic A1 sheet (lane review3)
-    ("cli", "dynamic-sheet-8-positions"): "press, 8 positions, zh: 50.4% empty",
     # build-ups (lane slides3)
     ("scotch-yoke", "steps:zhukovsky-lever@slide", "en"): "51% empty",
     ("triad-six-bar", "steps:velocity-plan@slide", "en"): "the legend 'ω1 = … solid: known vector, dashed: found "
