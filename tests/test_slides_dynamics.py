@@ -90,7 +90,7 @@ def test_the_work_diagrams_get_the_slides_width(case):
 
 def test_the_work_diagrams_on_paper_keep_one_row_per_construction():
     from graphmethods import problems
-    from graphmethods.sheets.calculus import work_diagrams
+    from graphmethods.sheets.work_diagrams import work_diagrams
 
     table = work_diagrams(problems.w3(), notation="en").element("accuracy-table")
     assert len(table.rows[0]) == 5 and len(table.rows) == 4

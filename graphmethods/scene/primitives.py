@@ -133,7 +133,23 @@ Primitive = Path | Polygon | Circle | Label | Group
 
 
 def walk(prims: Iterable[Primitive]) -> Iterator[Primitive]:
-    """Yield every primitive in ``prims`` depth-first, groups included, in drawing order."""
+    """Yield every primitive in ``prims`` depth-first, groups included, in drawing order.
+
+    Parameters
+    ----------
+    prims : iterable of Primitive
+        Primitives, some of them groups.
+
+    Yields
+    ------
+    Primitive
+        Each group before its children.
+
+    Examples
+    --------
+    >>> [type(p).__name__ for p in walk([Group("g", (Circle(0.0, 0.0, 1.0),)), Circle(1.0, 1.0, 1.0)])]
+    ['Group', 'Circle', 'Circle']
+    """
     for p in prims:
         yield p
         if isinstance(p, Group):

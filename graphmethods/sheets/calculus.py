@@ -727,7 +727,3 @@ def _curve_names(occ: Occupancy, pairs: Iterable[tuple[Polyline, str, float]], b
         out.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
                         name=f"name-{band}-{markup.plain(text)}"))
     return out
-
-
-# split out of this module, imported here so that every name reads as before: work_diagrams.py
-from graphmethods.sheets.work_diagrams import work_diagrams  # noqa: E402, F401

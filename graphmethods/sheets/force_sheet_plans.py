@@ -28,10 +28,7 @@ from graphmethods.errors import InputError
 from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
-from graphmethods.sheets import (
-    force_working as FW,  # a module: force_working imports forces back
-    forces as SF,
-)
+from graphmethods.sheets import force_working as FW, forces as SF
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import drawn_tip, fit_forces
 from graphmethods.sheets.layout import Sheet, given_scale

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import cmath
 import math
-import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any, TypeVar
@@ -34,13 +33,14 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.numbers import within_roundoff
+from graphmethods.scene.numbers import round_off_zero
 from graphmethods.scene.primitives import THIN, Style
 from graphmethods.scene.scale import pick_scale
-from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
+from graphmethods.sheets import force_working as FW
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
 from graphmethods.sheets.force_slides import column_texts as _column, fills_slide, plan_caption, slide_column, wrapped
+from graphmethods.sheets.force_symbols import force_symbol as _markup  # moved down: force_working uses it too
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
@@ -66,28 +66,6 @@ def percent_text(d: float, nt: Notation) -> str:
     decimals (round-off, some 1e-14 %, prints 0.000 on every machine), the notation's decimal mark."""
     text = f"{abs(d):.3f}"
     return text.replace(".", nt.decimal)
-
-
-def _markup(label: str, nt: Notation | str | None = None) -> str:
-    """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}`` (ru ``F_{и2}``, zh ``F_{I2}``), ``F_b`` → ``F_{b}``
-    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``: the inertia and balancing subscripts as the books write them.
-
-    >>> _markup("F_i2"), _markup("M_i3", "ru"), _markup("F_i2", "zh"), _markup("F_b", "ru")
-    ('F_{i2}', 'M_{и3}', 'F_{I2}', 'F_{ур}')
-    """
-    label = label.split("@")[0]
-    m = re.fullmatch(r"([A-Za-z]+)(\^[^_]+)?_(.+)", label)
-    if not m:
-        return label
-    sup = "^{" + m.group(2)[1:] + "}" if m.group(2) else ""
-    sub = m.group(3)
-    if m.group(1) in ("F", "M") and not sup:
-        words = get_notation(nt)
-        if sub[:1] == "i" and (len(sub) == 1 or (sub[1:].isdigit() and sub[1:].isascii())):
-            sub = words.word("forces.sub_inertia") + sub[1:]
-        elif sub == "b":
-            sub = words.word("forces.sub_balance")
-    return f"{m.group(1)}{sup}_{{{sub}}}"
 
 
 def _inner_sides(poly, inner, pts: np.ndarray, i: int) -> list:
@@ -316,16 +294,6 @@ def _labels(occ: Occupancy, specs: Sequence[LabelSpec], within: Box) -> list[Ele
 
 
 # ----------------------------------------------------------------------------- the force plans
-
-def round_off_zero(value: float, size: float) -> float:
-    """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
-    a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
-
-    >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
-    (0.0, -12.5)
-    """
-    return 0.0 if within_roundoff(value, size) else value
-
 
 def _plans_results(fa: Any, i: int, nt: Notation, gravity: bool) -> tuple[list[tuple[str, str]], list[str]]:
     """The table of reactions (rows) and the lines of M_b by the three methods beside the force plans."""

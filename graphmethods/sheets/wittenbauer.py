@@ -35,7 +35,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from functools import partial
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -543,6 +543,23 @@ def _position_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupanc
 
 
 def O1_on_sheet(res: WittenbauerResult, origin, clip) -> bool:
+    """Whether the rays' intersection O₁ falls inside the drawing's clip box.
+
+    Parameters
+    ----------
+    res : WittenbauerResult
+        The diagram's construction (``O1_mm``: O₁ from the origin, mm, y up).
+    origin : (float, float), mm
+        The diagram's origin on the page (y down).
+    clip : (float, float, float, float), mm
+        Left, top, right, bottom of the region the diagram may draw in.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> O1_on_sheet(SimpleNamespace(O1_mm=(-30.0, 40.0)), (50.0, 150.0), (10.0, 20.0, 200.0, 280.0))
+    True
+    """
     x, y = origin[0] + res.O1_mm[0], origin[1] - res.O1_mm[1]
     return clip[0] <= x <= clip[2] and clip[1] <= y <= clip[3]
 
@@ -775,17 +792,5 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
 
 
-# split out of this module (dynamic_analysis_sheet.py, which imports this one), so that every name reads as
-# before: taken from there when asked for (either module may be imported first)
-if TYPE_CHECKING:
-    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-
-
-def __getattr__(name: str) -> Any:
-    if name == "dynamic_analysis_sheet":
-        from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-        return dynamic_analysis_sheet
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-__all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
+__all__ = ["wittenbauer_diagram", "diagram_elements", "diagram_data", "DiagramData",
            "ray_span", "result_rows"]

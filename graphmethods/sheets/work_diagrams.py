@@ -1,5 +1,5 @@
 """The work diagrams by graphical integration: M_d, M_r(φ) over the works A_d, A_r(φ) over ΔE(φ), with the
-pole and its rays (split out of :mod:`graphmethods.sheets.calculus`, which re-exports them)."""
+pole and its rays (split out of :mod:`graphmethods.sheets.calculus`, whose common parts it uses)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """The Zhukovsky lever of a study's position: the velocity plan turned 90° as a lever, the load at the
 images of its points, the balancing force and moment (split out of :mod:`graphmethods.sheets.dynamics`,
-which re-exports it: ``dynamics.zhukovsky_lever`` reads as before)."""
+whose common parts it uses; ``sheets.zhukovsky_lever`` is this function)."""
 
 from __future__ import annotations
 
