@@ -25,14 +25,8 @@ KNOWN_A2: dict[tuple[str, str, str], str] = {
 #: the drawings of tests/test_figure_quality_coverage.py: ("cli", case) for a command line's drawings,
 #: (problem, figure, language) for a figure of the API, (problem, "steps:FIGURE@PAGE", language) for a build-up
 KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
-    # force sheets (lane forcefill/forcepos2): other positions than 3 and an angle between positions
-    ("cli", "force-sheet-position-0"): "press, position 0, A1: 58% empty",
-    ("cli", "force-sheet-position-6"): "press, position 6, A1, ru: 52% empty",
+    # the force sheet at an angle between positions
     ("cli", "force-sheet-angle"): "engine, φ = 100°, A1: 63% empty",
-    ("whitworth", "force_plans", "en"): "1 label crossed by ink: F_i4",
-    ("gallery", "four_bar_force_analysis_en"): "four-bar, position 2, A1: 54% empty",
-    ("cli", "force-sheet-gravity"): "press, position 3 with the weights (--gravity), A1: 53% empty",
-    ("cli", "force-sheet-24-positions"): "press, position 5 of 24, A1, zh: 57% empty",
     # the kinematic A1 sheet (lane review3): one plan position only
     ("cli", "kinematic-sheet-plan-position-0"): "two-slider, --plan-positions 0: 53% empty",
     ("drawn-six-bar-triad", "kinematic_analysis_sheet", "ru"): "1 label crossed by ink: S3",
@@ -41,7 +35,6 @@ KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     ("triad-six-bar", "steps:velocity-plan@slide", "en"): "the legend 'ω1 = … solid: known vector, dashed: found "
                                                           "by construction' crossed and under p s5, 39.85, v_S5",
     ("triad-six-bar", "steps:force-plans@slide", "en"): "51% empty; 2 labels crossed: M_b from the force plans …",
-    ("slotted-lever", "steps:kinematic-scheme@slide", "en"): "52% empty",
     ("shaper-cam", "steps:inversion@slide", "en"): "66% empty",
     ("shaper-cam", "steps:inversion@slide", "ru"): "65% empty",
     ("shaper-cam", "steps:inversion@slide", "zh"): "70% empty",
