@@ -32,9 +32,6 @@ KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     ("drawn-six-bar-triad", "kinematic_analysis_sheet", "ru"): "1 label crossed by ink: S3",
     # build-ups (lane slides3)
     ("scotch-yoke", "steps:zhukovsky-lever@slide", "en"): "51% empty",
-    ("triad-six-bar", "steps:velocity-plan@slide", "en"): "the legend 'ω1 = … solid: known vector, dashed: found "
-                                                          "by construction' crossed and under p s5, 39.85, v_S5",
-    ("triad-six-bar", "steps:force-plans@slide", "en"): "51% empty; 2 labels crossed: M_b from the force plans …",
     ("shaper-cam", "steps:inversion@slide", "en"): "66% empty",
     ("shaper-cam", "steps:inversion@slide", "ru"): "65% empty",
     ("shaper-cam", "steps:inversion@slide", "zh"): "70% empty",

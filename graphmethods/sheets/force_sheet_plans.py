@@ -125,10 +125,7 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     sheet = Sheet(nt=nt, page=page, title=cap, problem="", title_block=False)
     sides = plan_sides(fa, j, i)
     pts = np.cumsum([0j] + [F for _, F, _ in sides])
-    inner = ([] if pl.group.startswith("I ") else      # each link's own polygon's sides: inside the panel too
-             [z for poly in pl.polygons[1:] for _, z0, z1 in (SF._inner_sides(pl.polygons[0], poly, pts, i) or [])
-              for z in (z0, z1)])
-    fit = np.concatenate([pts, np.asarray(inner, dtype=complex)])
+    fit = SF.plan_extent(pl, pts, i)                   # each link's own polygon's sides: inside the panel too
     let = lettering(page)
     found = _found(fa, j, i, sides)
     equation = plan_equation(fa, j, i, nt)

@@ -341,6 +341,16 @@ def _polygon(poly: Any, i: int) -> np.ndarray:
     return np.array(pts)
 
 
+def plan_extent(pl: Any, pts: np.ndarray, i: int) -> np.ndarray:
+    """The points (N, complex) a group's force plan is fitted to: its polygon's vertices ``pts`` and the ends of
+    each link's own polygon's sides (:func:`_inner_sides`: the six-bar triad's R_32 ran 100 mm beyond the
+    polygon, across the slide's results column, when only the vertices were fitted)."""
+    inner = ([] if pl.group.startswith("I ") else
+             [z for poly in pl.polygons[1:] for _, z0, z1 in (_inner_sides(pl.polygons[0], poly, pts, i) or [])
+              for z in (z0, z1)])
+    return np.concatenate([pts, np.asarray(inner, dtype=complex)])
+
+
 def _plans_scale(paths: Sequence[np.ndarray], pw: float, ph: float, mu_F: Any, nt: Notation) -> Scale:
     """One μ_F for every polygon, each in its ``pw`` × ``ph`` mm cell."""
     need = max(max(float(np.ptp(p.real)) / pw, float(np.ptp(p.imag)) / ph) for p in paths)
@@ -467,15 +477,16 @@ def force_plans(case: Any, position: int | None = None, *, phi_deg: float | None
     probe = Table((0.0, 0.0), tuple(rows), align="cr", size_mm=TABLE_MM, row_height_mm=L.row_mm)
     split, area = _split(sheet, max([probe.width_mm] + [markup.text_width_mm(t, TEXT_MM) for t in res_lines]), L)
     paths = [_polygon(pl.polygons[0], i) for pl in fa.plans]
-    cols, pw, ph, s_F = _grid(paths, area, L, mu_F, nt)
+    extents = [plan_extent(pl, pts, i) for pl, pts in zip(fa.plans, paths)]
+    cols, pw, ph, s_F = _grid(extents, area, L, mu_F, nt)
     els: list[Element] = [sheet.header()]
     labels: list[LabelSpec] = []
-    for j, (pl, pts) in enumerate(zip(fa.plans, paths)):
+    for j, (pl, pts, ext) in enumerate(zip(fa.plans, paths, extents)):
         left = area[0] + (j % cols) * (pw + L.plan_gap_mm)
         top = area[1] + (j // cols) * (ph + L.row_gap_mm)
         cap = (nt.word("forces.crank", g=pl.links[0]) if pl.group.startswith("I ")
                else nt.word("forces.group", g=pl.group))
-        drawn, wanted = _group_plan(j, pl, pts, i, _cell(pts, (left, top, pw, ph), s_F), nt, sheet.occ, L)
+        drawn, wanted = _group_plan(j, pl, pts, i, _cell(ext, (left, top, pw, ph), s_F), nt, sheet.occ, L)
         els.append(plan_caption(cap, (left, top, pw), drawn, L, f"caption-{j}"))
         els += drawn
         labels += wanted

@@ -503,6 +503,10 @@ SLIDE_LETTERED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsk
 #: the dynamics build-ups: their slides take no enlargement that sets a label on a line
 DYNAMICS = ("energy-indicator", "work-diagrams", "wittenbauer")
 
+#: the build-ups whose slides take no enlargement that sets a label on a line or over other text (the measure's
+#: rendered glyphs, not the layout's estimated boxes): the dynamics ones and the plans
+UNCROSSED = DYNAMICS + ("velocity-plan", "force-plans")
+
 #: the figures drawn in one position (``--position K``)
 POSITIONED = ("velocity-plan", "acceleration-plan", "force-plans", "zhukovsky-lever", "zhukovsky-load")
 
@@ -635,5 +639,5 @@ def build(case, figure: str, *, position: int | None = None, notation="en", page
             def make(pg):
                 return fn(obj, notation=notation, page=pg)
     if isinstance(page, str) and page.strip().lower() == "slide":
-        return for_projector(make, lettered=key in SLIDE_LETTERED, uncrossed=key in DYNAMICS)
+        return for_projector(make, lettered=key in SLIDE_LETTERED, uncrossed=key in UNCROSSED)
     return make(page)

@@ -519,10 +519,12 @@ def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1
     numbers = _omega_numbers(plans.positions.mechanism)
     t_top = ty + (len(eqs) + 1) * lay.line_mm + 2.0
     below = lay.after_table_mm + (len(omega_texts) + bool(plans.ill_conditioned[k])) * lay.line_mm
-    row = lay.row_mm                    # a long column (a triad's): the table's rows closer, down to 1.7 text heights
-    if t_top + len(rows) * row + below > bottom:
-        row = max(TABLE_MM * 1.7, (bottom - t_top - below) / len(rows))
-    table = Table((tx, t_top), tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row, name="table")
+    # a table lettered up (a slide's) grows its rows with its text: the rows are fitted as drawn, given unscaled
+    grow = max(TABLE_MM, MIN_TEXT_MM.get()) / TABLE_MM
+    row = lay.row_mm * grow             # a long column (a triad's): the table's rows closer, down to 1.4 text heights
+    if t_top + len(rows) * row + below > bottom:  # (a triad's 15 rows on a slide lettered at 3.5 mm: 1.42)
+        row = max(TABLE_MM * grow * 1.4, (bottom - t_top - below) / len(rows))
+    table = Table((tx, t_top), tuple(rows), align="crl", size_mm=TABLE_MM, row_height_mm=row / grow, name="table")
     if table.top_right[0] > x1 + 1e-6:
         raise InputError("the table of vectors does not fit beside the plan; give a larger page")
     els.append(table)
