@@ -21,3 +21,20 @@ def test_the_sheet_at_an_angle_draws_the_plan_of_accelerations_there():
     texts = _texts(plan)
     assert any(t.startswith("Acceleration plan") and "100" in t for t in texts)
     assert not any("position 0" in t and t.startswith("Acceleration plan") for t in texts)
+
+
+def test_a_thin_plate_of_the_scheme_is_broken_behind_a_label_like_a_thin_line():
+    """A ternary link's outline in a thin position (issue 26: S₃ of the drawn six-bar crossed) is broken for
+    an inscription (ГОСТ 2.303) as the thin links are; a plate the label does not touch is kept whole."""
+    from graphmethods.scene import Group
+    from graphmethods.scene.primitives import THIN
+    from graphmethods.sheets.kinematic_scheme import _broken_lines
+    from graphmethods.sheets.plates import Plate
+
+    crossed = Plate(((0.0, 0.0), (10.0, 0.0), (5.0, 8.0)), outline_style=THIN, hatch=False, name="position-1-BCD")
+    away = Plate(((50.0, 0.0), (60.0, 0.0), (55.0, 8.0)), outline_style=THIN, hatch=False, name="position-2-BCD")
+    out = _broken_lines([crossed, away], [(4.0, -1.0, 6.0, 1.0)])
+    assert isinstance(out[0], Group) and out[0].name == "position-1-BCD"
+    (outline,) = out[0].elements                    # the closed outline opened where the label stands
+    assert outline.points[0] == (6.4, 0.0) and outline.points[-1] == (3.6, 0.0) and len(outline.points) == 5
+    assert out[1] is away
