@@ -38,3 +38,15 @@ def test_a_thin_plate_of_the_scheme_is_broken_behind_a_label_like_a_thin_line():
     (outline,) = out[0].elements                    # the closed outline opened where the label stands
     assert outline.points[0] == (6.4, 0.0) and outline.points[-1] == (3.6, 0.0) and len(outline.points) == 5
     assert out[1] is away
+
+
+def test_too_many_plan_positions_are_refused_with_the_number_the_sheet_has_room_for(tmp_path, capsys):
+    """issue 26: ``kinematics press --sheet --plan-positions 1,4,8,10`` was refused "do not fit on this page"
+    though the help allows 1 to 4: the message says how many plans that linkage's sheet has room for."""
+    from graphmethods import cli
+
+    target = tmp_path / "k.svg"
+    assert cli.main(["kinematics", "press", "--sheet", str(target), "--plan-positions", "1,4,8,10"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "room for 3 acceleration plans" in err[0] and "not 4" in err[0]
+    assert not target.exists()
