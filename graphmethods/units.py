@@ -72,6 +72,9 @@ MAX_JSON_DEPTH = 100
 #: Largest file a reader takes (problem, answers, CSV, SVG, DXF), bytes: a drawing of a course sheet is a
 #: few MB; checked before reading.
 MAX_INPUT_BYTES = 64 * 1024 * 1024
+#: A computed value below this share of its computation's scale is that computation's round-off: it is zero,
+#: stored as 0 by the core (an inertia load at a dead centre) and written 0 on paper, never 4.8·10⁻³⁰.
+ROUNDOFF = 1e-9
 
 
 def _shown(value: object) -> str:

@@ -177,7 +177,7 @@ def test_the_sheets_package_imports_its_modules_when_asked():
         "print(sorted(m for m in sys.modules if m.startswith('graphmethods.sheets.')))\n"
         "import graphmethods.sheets.dynamic_analysis_sheet, graphmethods.sheets.cam_sheet\n"
         "from graphmethods.sheets import cam_sheet, kinematic_scheme\n"
-        "from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet as d\n"
+        "from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet as d\n"
         "fs = [s.cam_sheet, cam_sheet, kinematic_scheme, s.dynamic_analysis_sheet, d, s.energy_indicator]\n"
         "print(all(callable(f) and not isinstance(f, type(sys)) for f in fs), d is s.dynamic_analysis_sheet)\n"
         "print(s.layout.__name__, set(s.__all__) <= set(dir(s)))\n"

@@ -75,7 +75,8 @@ def test_engine_moment_graph_draws_the_gas_moment_against_a_constant_resistance(
 
 
 def test_engine_dynamic_analysis_sheet_and_energy_mass_diagram():
-    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, wittenbauer_diagram
+    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
+    from graphmethods.sheets.wittenbauer import wittenbauer_diagram
 
     st = Study(case("engine"))
     sheet = dynamic_analysis_sheet(st, page="A2")

@@ -219,12 +219,13 @@ def test_the_four_bar_and_the_shaper_written_as_linkages_give_their_studies():
 def test_an_indicator_diagram_draws_its_moment_figures_and_the_lever_refuses_it(tmp_path, capsys):
     from graphmethods import cli
     from graphmethods.sheets import dynamics as sd
+    from graphmethods.sheets.zhukovsky_lever import zhukovsky_lever
     case = read_case(DATA / "single_cylinder_engine.json")
     study = Study(case, positions=12)
     sd.moment_graph(study)                       # the gas moment as M_d, the constant resistance as M_r
     sd.inertia_graph(study)                      # J_e does not depend on the load
     with pytest.raises(InputError, match="indicator diagram"):
-        sd.zhukovsky_lever(study)                # one working-stroke force only (left for later)
+        zhukovsky_lever(study)                # one working-stroke force only (left for later)
     out = tmp_path / "sheet.svg"
     rc = cli.main(["study", str(DATA / "single_cylinder_engine.json"), "--no-exact", "--sheet", str(out)])
     captured = capsys.readouterr()

@@ -19,7 +19,7 @@ from graphmethods.problems import builtin
 from graphmethods.render.recording import record
 from graphmethods.scene.notation import get as notation
 from graphmethods.sheets import steps
-from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
+from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
 
 LINKAGES = sorted(builtin.LINKAGES)
 

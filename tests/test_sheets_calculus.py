@@ -18,6 +18,7 @@ from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import markup
 from graphmethods.sheets import calculus
+from graphmethods.sheets.work_diagrams import work_diagrams
 
 SVG = "{http://www.w3.org/2000/svg}"
 PROFILES = ("en", "ru", "zh")
@@ -35,12 +36,12 @@ def all_figures():
     out = []
     for nt in PROFILES:
         out.append((f"kinematic-{nt}", calculus.kinematic_diagrams(case, notation=nt)))
-        out.append((f"work-{nt}", calculus.work_diagrams(Study(case), notation=nt)))
+        out.append((f"work-{nt}", work_diagrams(Study(case), notation=nt)))
     out += [("kinematic-m6", calculus.kinematic_diagrams(case, m=6)),
             ("kinematic-m24-analogues", calculus.kinematic_diagrams(case, m=24, analogues=True, notation="ru")),
-            ("work-m6", calculus.work_diagrams(case, m=6, notation="zh")),
-            ("work-w3", calculus.work_diagrams(problems.w3())),
-            ("work-w4", calculus.work_diagrams(problems.w4_exact(), m=8, notation="ru", moment_unit="kG·m",
+            ("work-m6", work_diagrams(case, m=6, notation="zh")),
+            ("work-w3", work_diagrams(problems.w3())),
+            ("work-w4", work_diagrams(problems.w4_exact(), m=8, notation="ru", moment_unit="kG·m",
                                                work_unit="kG·m"))]
     return out
 
@@ -101,8 +102,8 @@ def test_construction_lines_thin_results_thick(fid, scene):
 def test_the_same_input_gives_the_same_svg(press):
     a = svg.to_bytes(calculus.kinematic_diagrams(press, notation="zh"))
     assert a == svg.to_bytes(calculus.kinematic_diagrams(press, notation="zh"))
-    b = svg.to_bytes(calculus.work_diagrams(Study(press), notation="ru"))
-    assert b == svg.to_bytes(calculus.work_diagrams(Study(press), notation="ru"))
+    b = svg.to_bytes(work_diagrams(Study(press), notation="ru"))
+    assert b == svg.to_bytes(work_diagrams(Study(press), notation="ru"))
 
 
 # ----------------------------------------------------------------------------- kinematic diagrams: geometry
@@ -205,7 +206,7 @@ def test_the_shaper_ram_is_differentiated_too():
 
 def test_work_diagrams_chords_parallel_to_rays_and_drawn_to_scale(press):
     st = Study(press)
-    scene = calculus.work_diagrams(st)
+    scene = work_diagrams(st)
     mu_phi, mu_M, mu_A = (s.per_mm for s in scene.scales())
     origin_M = np.asarray(scene.element("axis-M").origin)
     pole = np.asarray(scene.element("pole-point").at)
@@ -243,7 +244,7 @@ def test_work_diagrams_chords_parallel_to_rays_and_drawn_to_scale(press):
 
 
 def test_work_diagrams_mean_ordinates_have_the_area_of_their_interval():
-    scene = calculus.work_diagrams(problems.w4_exact(), m=8)
+    scene = work_diagrams(problems.w4_exact(), m=8)
     mu_phi, mu_M, _ = (s.per_mm for s in scene.scales())
     M_r = problems.w4_exact().excess_work.M_r
     phi = np.linspace(0, 2 * math.pi, 9)
@@ -255,20 +256,20 @@ def test_work_diagrams_mean_ordinates_have_the_area_of_their_interval():
 
 
 def test_work_diagrams_pick_or_take_H_and_say_which(press):
-    picked = calculus.work_diagrams(problems.w3())
+    picked = work_diagrams(problems.w3())
     assert picked.notes[-1].startswith("H = ") and "picked" in picked.notes[-1]
-    given = calculus.work_diagrams(problems.w3(), H_mm=40, notation="ru")
+    given = work_diagrams(problems.w3(), H_mm=40, notation="ru")
     assert "H = 40 мм (задано)" in record(given).texts()
     o = given.element("axis-M").origin
     assert o[0] - given.element("pole-point").at[0] == pytest.approx(40.0)
     with pytest.raises(InputError, match="give a larger H_mm"):
-        calculus.work_diagrams(problems.w3(), H_mm=2)
+        work_diagrams(problems.w3(), H_mm=2)
     with pytest.raises(InputError, match="larger μ_M"):
-        calculus.work_diagrams(problems.w3(), mu_M=0.1)
+        work_diagrams(problems.w3(), mu_M=0.1)
 
 
 def test_work_diagrams_accuracy_table_says_exact_at_ends_error_inside():
-    scene = calculus.work_diagrams(problems.w3(), m=12)
+    scene = work_diagrams(problems.w3(), m=12)
     rows = scene.element("accuracy-table").rows
     body = {r[0]: r for r in rows[1:]}
     assert body["A_r"][1] == "0 J" and body["A_d"][1] == "0 J" and body["ΔE"][1] == "0 J"
@@ -278,10 +279,10 @@ def test_work_diagrams_accuracy_table_says_exact_at_ends_error_inside():
 
 def test_work_diagrams_of_a_pair_of_curves_and_refusals():
     M_r = MomentCurve.points([0, math.pi, 2 * math.pi], [0.0, 40.0, 0.0])
-    scene = calculus.work_diagrams((MomentCurve.constant(20.0), M_r), m=4)
+    scene = work_diagrams((MomentCurve.constant(20.0), M_r), m=4)
     assert scene.element("chords-A_r").points[-1] == pytest.approx(scene.element("chords-A_d").points[-1])
     with pytest.raises(InputError, match="areas or works fix no curves"):
-        calculus.work_diagrams(problems.w1())
+        work_diagrams(problems.w1())
     with pytest.raises(InputError, match="linkage problem"):
         calculus.kinematic_diagrams(problems.w3())
     four_bar = FourBar(l1=0.5, l2=0.1, l3=0.45, l4=0.3)
@@ -292,7 +293,7 @@ def test_work_diagrams_of_a_pair_of_curves_and_refusals():
 # ----------------------------------------------------------------------------- notation
 
 def test_one_switch_changes_the_whole_figure(press):
-    texts = {nt: " ".join(record(calculus.work_diagrams(Study(press), notation=nt)).texts()) for nt in PROFILES}
+    texts = {nt: " ".join(record(work_diagrams(Study(press), notation=nt)).texts()) for nt in PROFILES}
     assert "Work diagrams" in texts["en"] and "Ar" in texts["en"] and "ΔE" in texts["en"]
     assert "Диаграммы работ" in texts["ru"] and "Aс" in texts["ru"] and "ΔT" in texts["ru"] and "Дж" in texts["ru"]
     assert "功线图" in texts["zh"] and "Wr" in texts["zh"] and "Mer" in texts["zh"]
@@ -315,7 +316,7 @@ def test_small_curve_helper_passes_through_its_points_and_closes():
 
 def test_a_strip_too_low_for_values_7_mm_apart_gets_closer_values_not_none():
     # W4-exact's ΔE swings ±5π J (ΔE = 20φ − ∫M_r, M_r a triangle 0 … 40 … 0 N·m) and μ_A = μ_M μ_φ H
-    scene = calculus.work_diagrams(problems.w4_exact())
+    scene = work_diagrams(problems.w4_exact())
     mu_phi, mu_M, mu_A = (s.per_mm for s in scene.scales())
     H = float(scene.notes[-1].split()[2])
     assert mu_A == pytest.approx(mu_M * mu_phi * H, rel=1e-12)

@@ -22,6 +22,8 @@ from graphmethods.render.recording import record
 from graphmethods.scene import markup
 from graphmethods.scene.primitives import Label
 from graphmethods.sheets import dynamics as dyn
+from graphmethods.sheets.speed_graphs import acceleration_graph, speed_graph
+from graphmethods.sheets.zhukovsky_lever import zhukovsky_lever
 
 SVG = "{http://www.w3.org/2000/svg}"
 PROFILES = ("en", "ru", "zh")
@@ -32,9 +34,9 @@ FIGURES = {
     "moment": (dyn.moment_graph, {}),
     "delta-T": (dyn.delta_T_graph, {}),
     "kinetic": (dyn.delta_T_graph, {"kinetic": True}),
-    "speed": (dyn.speed_graph, {}),
-    "acceleration": (dyn.acceleration_graph, {}),
-    "lever": (dyn.zhukovsky_lever, {}),
+    "speed": (speed_graph, {}),
+    "acceleration": (acceleration_graph, {}),
+    "lever": (zhukovsky_lever, {}),
 }
 
 
@@ -89,7 +91,7 @@ def test_nothing_leaves_the_frame_and_no_two_labels_overlap(scenes):
 
 def test_one_switch_changes_every_word(study):
     def words(nt):
-        s = dyn.speed_graph(study, notation=nt)
+        s = speed_graph(study, notation=nt)
         return " ".join(p.text for p in s.primitives() if isinstance(p, Label))
     en, ru, zh = (words(nt) for nt in PROFILES)
     assert "Angular velocity" in en and "rad/s" in en
@@ -98,7 +100,7 @@ def test_one_switch_changes_every_word(study):
 
 
 def test_deterministic_svg(study):
-    assert svg.to_bytes(dyn.zhukovsky_lever(study, notation="zh")) == svg.to_bytes(dyn.zhukovsky_lever(study,
+    assert svg.to_bytes(zhukovsky_lever(study, notation="zh")) == svg.to_bytes(zhukovsky_lever(study,
                                                                                                           notation="zh"))
 
 
@@ -155,7 +157,7 @@ def test_delta_T_graph_points_are_the_diagram_ordinates_and_extremes_are_marked(
 
 
 def test_speed_graph_marks_the_exact_extremes_and_the_mean(study):
-    scene = dyn.speed_graph(study)
+    scene = speed_graph(study)
     rec = record(scene)
     ex = study.exact
     ax_w, ax_phi = scene.element("axis-Y"), scene.element("axis-phi")
@@ -172,7 +174,7 @@ def test_speed_graph_marks_the_exact_extremes_and_the_mean(study):
 
 
 def test_acceleration_graph_marks_the_largest_eps_and_chi(study):
-    scene = dyn.acceleration_graph(study, notation="ru")
+    scene = acceleration_graph(study, notation="ru")
     mo = study.exact.motion
     c = centre(record(scene), "mark-eps_max")
     assert read_value(scene.element("axis-Y"), c) == pytest.approx(mo.epsilon_max, abs=1e-6)
@@ -207,7 +209,7 @@ def lever_moment_on_paper(scene, omega_1):
 @pytest.mark.parametrize("name", ["slider_crank_press", "four_bar_rocker", "slotted_lever", "shaper"])
 def test_lever_moment_on_the_drawing_equals_the_power_method(name):
     s = Study(case(name), positions=12)
-    scene = dyn.zhukovsky_lever(s)
+    scene = zhukovsky_lever(s)
     k = int(scene.title.rsplit(" ", 1)[1])
     M, h = lever_moment_on_paper(scene, s.plans.omega_1)
     assert M == pytest.approx(s.M_r[k], rel=1e-6)
@@ -220,7 +222,7 @@ def test_lever_moment_on_the_drawing_equals_the_power_method(name):
        nt=st.sampled_from(PROFILES))
 def test_lever_at_any_loaded_position_and_scale(k, mu_v, nt):
     s = _press_study()
-    scene = dyn.zhukovsky_lever(s, position=k, mu_v=mu_v, notation=nt)
+    scene = zhukovsky_lever(s, position=k, mu_v=mu_v, notation=nt)
     M, _ = lever_moment_on_paper(scene, s.plans.omega_1)
     assert M == pytest.approx(s.M_r[k], rel=1e-6)
 
@@ -236,11 +238,11 @@ def _press_study():
 
 def test_lever_refuses_an_unloaded_position_and_a_scale_that_does_not_fit(study):
     with pytest.raises(InputError, match="carries no load.*choose a loaded position: 1, 2, 3, 4, 5"):
-        dyn.zhukovsky_lever(study, position=8)
+        zhukovsky_lever(study, position=8)
     with pytest.raises(InputError, match="position 13"):
-        dyn.zhukovsky_lever(study, position=13)
+        zhukovsky_lever(study, position=13)
     with pytest.raises(InputError, match="needs .* but the sheet leaves"):
-        dyn.zhukovsky_lever(study, position=3, mu_v=0.001)
+        zhukovsky_lever(study, position=3, mu_v=0.001)
 
 
 def test_figures_accept_a_problem_file_and_refuse_other_things():

@@ -22,7 +22,8 @@ from graphmethods.kinematics import read_case
 from graphmethods.render import svg
 from graphmethods.render.recording import record
 from graphmethods.scene import Page, markup
-from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet, ray_span, wittenbauer_diagram
+from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
+from graphmethods.sheets.wittenbauer import ray_span, wittenbauer_diagram
 
 SVG = "{http://www.w3.org/2000/svg}"
 PROFILES = ("en", "ru", "zh")

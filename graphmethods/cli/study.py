@@ -4,7 +4,7 @@ CASE is a problem file or a built-in problem's name (``graphmethods study press`
 ``graphmethods problems``).
 
 ``--sheet FILE.svg|.pdf`` also writes the A1 (or A2) dynamic-analysis sheet: the flywheel by
-the Wittenbauer method, drawn to scale (:func:`graphmethods.sheets.wittenbauer.dynamic_analysis_sheet`).
+the Wittenbauer method, drawn to scale (:func:`graphmethods.sheets.dynamic_analysis_sheet.dynamic_analysis_sheet`).
 An existing file is kept unless ``--force``; on any error nothing is written.
 """
 
@@ -50,7 +50,7 @@ def add_parser(sub) -> None:
 
 def _sheet_bytes(study, target, *, page: str, lang: str, args=None) -> bytes:
     from graphmethods.errors import NoFlywheelNeeded
-    from graphmethods.sheets.wittenbauer import dynamic_analysis_sheet
+    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
 
     try:
         scene = dynamic_analysis_sheet(study, page=page, notation=lang)

@@ -709,10 +709,60 @@ def _pole_distance_fit(slope_mm_range: float, band_mm: float, room_mm: float | N
     return convenient_at_most(limit, POLE_SERIES)
 
 
+@dataclass(frozen=True, eq=False)
+class SliderReferences:
+    """What :func:`slider_diagrams` takes from the linkage whatever the scales: the slider, its positions and
+    the velocities and accelerations of the plans and the closed form at them (see :func:`slider_references`)."""
+
+    mechanism: Any
+    m: int
+    omega_1: float | None
+    point: str
+    guide: FloatArray
+    pos: Positions
+    v_plans: FloatArray
+    a_plans: FloatArray
+    v_exact: FloatArray
+    a_exact: FloatArray
+
+
+def slider_references(mechanism: LinkageMechanism, m: int = 12, *, omega_1: float | None = None) -> SliderReferences:
+    """The scale-free part of :func:`slider_diagrams` (positions, plans, the closed form at the positions), so
+    that diagrams of one slider at several scales compute it once (pass it as ``references``).
+
+    >>> from graphmethods.kinematics import SliderCrank
+    >>> sc = SliderCrank(r=0.1, l=0.4)
+    >>> refs = slider_references(sc, 12, omega_1=10.0)
+    >>> a = slider_diagrams(sc, 12, mu_phi=np.pi / 120, mu_s=0.004, omega_1=10.0, references=refs)
+    >>> b = slider_diagrams(sc, 12, mu_phi=np.pi / 120, mu_s=0.004, omega_1=10.0)
+    >>> bool(np.array_equal(a.a_plans, b.a_plans) and np.array_equal(a.v.values, b.v.values))
+    True
+    """
+    if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 3:
+        raise InputError(f"the number of positions m must be an integer ≥ 3, got {m!r}")
+    m = int(m)
+    if omega_1 is not None:
+        omega_1 = _positive(omega_1, "omega_1")
+    point, guide = _slider_point(mechanism)
+    pos = mechanism.positions(m=m)
+    if pos.s is None or pos.stroke_direction is None:
+        raise InputError(f"{mechanism.kind}: no working stroke, so no slider displacement s")
+    t = 1.0 if omega_1 is None else 1.0 / omega_1           # x-units per rad
+    phi = np.asarray(pos.phi_from_start, dtype=float)
+    plans = mechanism.velocity_plans(pos, omega_1=1.0 if omega_1 is None else omega_1)
+    d = float(np.dot(pos.stroke_direction, guide))
+    v_plans = d * plans.v_along_guide(point)
+    a_plans = d * _plan_accelerations(mechanism, pos, point, guide, 1.0 if omega_1 is None else omega_1)
+    motion = slider_motion(mechanism, (phi * t) / t)
+    return SliderReferences(mechanism, m, omega_1, point, guide, pos, v_plans, a_plans, motion.ds / t,
+                            motion.d2s / (t * t))
+
+
 def slider_diagrams(mechanism: LinkageMechanism, m: int = 12, *, mu_phi: float, mu_s: float,
                     omega_1: float | None = None, H1_mm: float | None = None, H2_mm: float | None = None,
                     band_v_mm: float = 60.0,
-                    band_a_mm: float = 60.0, pole_room_mm: float | None = None) -> SliderDiagrams:
+                    band_a_mm: float = 60.0, pole_room_mm: float | None = None,
+                    references: SliderReferences | None = None) -> SliderDiagrams:
     """The slider's s(φ) at m positions, v by differentiating s, a by differentiating v (chords).
 
     Parameters
@@ -750,10 +800,11 @@ def slider_diagrams(mechanism: LinkageMechanism, m: int = 12, *, mu_phi: float, 
     mu_phi, mu_s = _positive(mu_phi, "mu_phi"), _positive(mu_s, "mu_s")
     if omega_1 is not None:
         omega_1 = _positive(omega_1, "omega_1")
-    point, guide = _slider_point(mechanism)
-    pos = mechanism.positions(m=m)
-    if pos.s is None or pos.stroke_direction is None:
-        raise InputError(f"{mechanism.kind}: no working stroke, so no slider displacement s")
+    if references is None or not (references.mechanism is mechanism and references.m == m
+                                  and references.omega_1 == omega_1):
+        references = slider_references(mechanism, m, omega_1=omega_1)
+    refs = references
+    point, pos = refs.point, refs.pos
     phi = np.asarray(pos.phi_from_start, dtype=float)
     s = np.asarray(pos.s, dtype=float)
     t = 1.0 if omega_1 is None else 1.0 / omega_1           # x-units per rad
@@ -779,13 +830,9 @@ def slider_diagrams(mechanism: LinkageMechanism, m: int = 12, *, mu_phi: float, 
         H2_mm = _pole_distance_fit(float(max(sl.max(), 0) - min(sl.min(), 0)), band_a_mm, pole_room_mm)
     a = differentiate_by_chords(v.x, v.values, mu_x=mu_x, mu_Y=v.mu, H_mm=H2_mm, period=T, exact=exact_a,
                                 x_origin=0.0)
-    plans = mechanism.velocity_plans(pos, omega_1=1.0 if omega_1 is None else omega_1)
-    d = float(np.dot(pos.stroke_direction, guide))
-    v_plans = d * plans.v_along_guide(point)
-    a_plans = d * _plan_accelerations(mechanism, pos, point, guide, 1.0 if omega_1 is None else omega_1)
     return SliderDiagrams(point=point, omega_1=omega_1, phi=_frozen(phi), s=_frozen(s), mu_phi=mu_phi, mu_s=mu_s,
-                          v=v, a=a, v_plans=_frozen(v_plans), v_exact=_frozen(exact_v(phi * t)),
-                          a_exact=_frozen(exact_a(phi * t)), a_plans=_frozen(a_plans))
+                          v=v, a=a, v_plans=_frozen(refs.v_plans), v_exact=_frozen(refs.v_exact),
+                          a_exact=_frozen(refs.a_exact), a_plans=_frozen(refs.a_plans))
 
 
 def _plan_accelerations(mechanism: LinkageMechanism, pos: Positions, point: str, guide: FloatArray,

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 from graphmethods.errors import InputError
 
+#: the frame's link number (the fixed link of every mechanism)
 GROUND = "0"
 
 

@@ -13,10 +13,16 @@ problem file that ships with the package (``graphmethods kinematics``, ``graphme
 
 from __future__ import annotations
 
+import os
 import pathlib
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from graphmethods.errors import InputError
+
+if TYPE_CHECKING:
+    from graphmethods.kinematics.cam.problem import CamProblem
+    from graphmethods.kinematics.case import Case
 
 DATA = pathlib.Path(__file__).parent / "data"
 
@@ -188,7 +194,7 @@ def read_text_file(path: pathlib.Path) -> str:
     return read_text(path)
 
 
-def case(spec):
+def case(spec: str | os.PathLike[str]) -> Case:
     """The linkage problem of a file, a built-in name or ``-`` (standard input), read and validated
     (:func:`graphmethods.kinematics.read_case`)."""
     from graphmethods.kinematics import read_case
@@ -198,7 +204,7 @@ def case(spec):
     return read_case(case_path(spec))
 
 
-def cam_problem(spec):
+def cam_problem(spec: str | os.PathLike[str]) -> CamProblem:
     """The cam problem of a ``"kind": "cam"`` file or a built-in cam name, read and checked
     (:func:`graphmethods.kinematics.cam.read_cam`); an :class:`~graphmethods.errors.InputError` naming the
     built-in cam problems when ``spec`` is neither.
@@ -211,7 +217,7 @@ def cam_problem(spec):
     p = pathlib.Path(str(spec))
     if p.is_file():
         return read_cam(p)
-    key = _key(spec)
+    key = _key(str(spec))
     if key in CAMS:
         return read_cam(DATA / CAMS[key])
     if p.exists():

@@ -18,14 +18,18 @@ from graphmethods.scene.primitives import XY, Label, Style
 from graphmethods.scene.scene import Scene
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Call:
-    """One call a backend received: its kind, the ids of the groups around it, and its data."""
+    """One call a backend received: its kind, the ids of the groups around it, and its data (``__init__``
+    written out as the primitives' are: a sheet's fill records thousands)."""
 
     kind: str
     groups: tuple[str, ...]
     data: Any = None
     style: Style | None = None
+
+    def __init__(self, kind: str, groups: tuple[str, ...], data: Any = None, style: Style | None = None) -> None:
+        self.__dict__.update(kind=kind, groups=groups, data=data, style=style)
 
 
 class RecordingRenderer:

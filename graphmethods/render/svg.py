@@ -73,6 +73,35 @@ def _tag(name: str, attrs: dict[str, str], text: str | None = None) -> str:
     return head + " />" if not text else f"{head}>{text}</{name}>"
 
 
+def _style_attrs(style: Style, filled: bool) -> tuple[str, str]:
+    """A style as the text of its attributes ``(' fill="…"', ' stroke="…" stroke-dasharray="…" stroke-width="…"')``:
+    the parts before and after a primitive's own attributes in name order (``points``, ``r`` fall between),
+    made once per style (a figure draws thousands of primitives in a few styles).
+
+    >>> _style_attrs(Style(width_mm=0.18, dash=(2.0, 1.0)), False)
+    (' fill="none"', ' stroke="#000000" stroke-dasharray="2 1" stroke-width="0.18"')
+    """
+    try:
+        return _STYLE_TEXT[(style, filled)]
+    except KeyError:
+        pass
+    except TypeError:                       # a style that cannot be hashed (a list of dashes): not kept
+        return _style_text(style, filled)
+    found = _style_text(style, filled)
+    if len(_STYLE_TEXT) < 4096:             # a process's styles are few; a bound all the same
+        _STYLE_TEXT[(style, filled)] = found
+    return found
+
+
+def _style_text(style: Style, filled: bool) -> tuple[str, str]:
+    attrs = SvgRenderer._stroke({}, style, filled)
+    fill = f' fill="{attrs.pop("fill").translate(_ATTRIB)}"'
+    return fill, "".join(f' {k}="{attrs[k].translate(_ATTRIB)}"' for k in sorted(attrs))
+
+
+_STYLE_TEXT: dict[tuple[Style, bool], tuple[str, str]] = {}
+
+
 class SvgRenderer:
     """A :class:`~graphmethods.render.base.Renderer` that writes the SVG document's text directly.
 
@@ -114,6 +143,7 @@ class SvgRenderer:
 
     @staticmethod
     def _stroke(attrs: dict[str, str], style: Style, filled: bool) -> dict[str, str]:
+        """The style's attributes added to ``attrs`` (the plain form of :func:`_style_attrs`, for the tests)."""
         attrs["fill"] = style.fill if (filled and style.fill) else "none"
         if style.stroke and style.width_mm > 0:
             attrs["stroke"] = style.stroke
@@ -123,49 +153,51 @@ class SvgRenderer:
         return attrs
 
     def path(self, points: tuple[XY, ...], style: Style, closed: bool) -> None:
-        pts = format_points(points)
-        self._add(_tag("polygon" if closed else "polyline", self._stroke({"points": pts}, style, filled=False)))
+        fill, stroke = _style_attrs(style, False)
+        self._add(f'<{"polygon" if closed else "polyline"}{fill} points="{format_points(points)}"{stroke} />')
 
     def polygon(self, points: tuple[XY, ...], style: Style) -> None:
-        self._add(_tag("polygon", self._stroke({"points": format_points(points)}, style, filled=True)))
+        fill, stroke = _style_attrs(style, True)
+        self._add(f'<polygon{fill} points="{format_points(points)}"{stroke} />')
 
     def circle(self, cx: float, cy: float, r: float, style: Style) -> None:
-        self._add(_tag("circle", self._stroke({"cx": fmt(cx), "cy": fmt(cy), "r": fmt(r)}, style, filled=True)))
+        fill, stroke = _style_attrs(style, True)
+        self._add(f'<circle cx="{fmt(cx)}" cy="{fmt(cy)}"{fill} r="{fmt(r)}"{stroke} />')
 
     def text(self, label: Label) -> None:
         size = label.size_mm
         x, anchor = label.x, label.anchor
+        transform = ""
         if label.stretch != 1.0:
             # condensed lettering, scaled across about its start: the start is placed here, as the PDF and
             # DXF writers place it (librsvg anchors a scaled text's middle/end by its unscaled width)
             x, anchor = label_bbox(label)[0], "start"
-            transform = f"matrix({fmt(label.stretch)} 0 0 1 {fmt(x * (1.0 - label.stretch))} 0)"
-        attrs = {"x": fmt(x), "y": fmt(label.y), "font-size": fmt(size),
-                 "xml:space": "preserve"}          # keep the space after a subscript ("f₁ = …")
-        if anchor != "start":
-            attrs["text-anchor"] = anchor
-        if label.bold:
-            attrs["font-weight"] = "bold"
-        if label.color != "#000000":
-            attrs["fill"] = label.color
-        if label.stretch != 1.0:
-            attrs["transform"] = transform
+            transform = f' transform="matrix({fmt(label.stretch)} 0 0 1 {fmt(x * (1.0 - label.stretch))} 0)"'
+        # the attributes in name order, as _tag writes them: fill, font-size, font-weight, text-anchor,
+        # transform, x, xml:space, y (numbers from format_mm need no escaping)
+        head = ("<text" + (f' fill="{label.color.translate(_ATTRIB)}"' if label.color != "#000000" else "")
+                + f' font-size="{fmt(size)}"' + (' font-weight="bold"' if label.bold else "")
+                + (f' text-anchor="{anchor.translate(_ATTRIB)}"' if anchor != "start" else "") + transform
+                + f' x="{fmt(x)}" xml:space="preserve" y="{fmt(label.y)}"')   # keep the space after a subscript
         runs = label.runs
         if len(runs) == 1 and runs[0][1] == 0:
-            self._add(_tag("text", attrs, clean_text(runs[0][0]).translate(_CDATA)))
+            text = clean_text(runs[0][0]).translate(_CDATA)
+            self._add(f"{head}>{text}</text>" if text else head + " />")
             return
         spans = []
         offset = 0.0  # current baseline shift, mm (down positive)
         for chunk, shift in runs:
             target = baseline_shift_mm(shift, size)
-            span: dict[str, str] = {}
+            span = "<tspan"
             if abs(target - offset) > 1e-12:
-                span["dy"] = fmt(target - offset)
+                span += f' dy="{fmt(target - offset)}"'
                 offset = target
             if shift:
-                span["font-size"] = fmt(size * SCRIPT_SCALE)
-            spans.append(_tag("tspan", span, clean_text(chunk).translate(_CDATA)))
-        self._add(_tag("text", attrs, "".join(spans)))
+                span += f' font-size="{fmt(size * SCRIPT_SCALE)}"'
+            text = clean_text(chunk).translate(_CDATA)
+            spans.append(f"{span}>{text}</tspan>" if text else span + " />")
+        joined = "".join(spans)
+        self._add(f"{head}>{joined}</text>" if joined else head + " />")
 
     def end(self) -> str:
         while self._open:

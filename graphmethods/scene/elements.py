@@ -62,7 +62,23 @@ if TYPE_CHECKING:
 ASCENT, DESCENT, CAP = 0.76, 0.24, 0.73
 
 def lettered_size(size_mm: float) -> float:
-    """A font size raised to the smallest the sheet being drawn allows (:data:`MIN_TEXT_MM`)."""
+    """A font size raised to the smallest the sheet being drawn allows (:data:`MIN_TEXT_MM`).
+
+    Parameters
+    ----------
+    size_mm : float, mm
+        The size a figure asks for.
+
+    Returns
+    -------
+    float, mm
+        ``size_mm``, or the sheet's smallest lettering when that is larger (outside a sheet: unchanged).
+
+    Examples
+    --------
+    >>> lettered_size(2.0)
+    2.0
+    """
     return max(float(size_mm), MIN_TEXT_MM.get())
 
 
@@ -99,7 +115,7 @@ def _pts(points: ArrayLike) -> tuple[XY, ...]:
     if not np.isfinite(arr).all():
         i = int(np.flatnonzero(~np.isfinite(arr).all(axis=1))[0])
         raise InputError(f"point {i} of a polyline is not finite ({arr[i].tolist()}); fix the data it comes from")
-    return tuple((float(x), float(y)) for x, y in arr)
+    return tuple(map(tuple, arr.tolist()))         # Python floats, as float() of each gives
 
 
 @functools.lru_cache(maxsize=16384)
@@ -111,16 +127,53 @@ def _runs_extent(runs: tuple[tuple[str, int], ...]) -> tuple[float, float, float
     return w, ascent, descent
 
 
+_NO_ANCHOR: dict[str, float] = {}          # an anchor other than start, middle, end: a KeyError, as before
+
+
 def label_bbox(lab: Label) -> tuple[float, float, float, float]:
-    """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers."""
+    """Estimated box ``(x0, y0, x1, y1)`` in mm that a :class:`Label` covers.
+
+    Parameters
+    ----------
+    lab : Label
+        A placed label (its anchor, size, stretch and markup runs count).
+
+    Returns
+    -------
+    tuple of float, mm
+        Left, top, right, bottom on the page (y down), from the font's estimated advance widths.
+
+    Examples
+    --------
+    >>> tuple(round(v, 2) for v in label_bbox(make_label((10.0, 20.0), "v_B", size_mm=5.0)))
+    (10.0, 16.2, 15.36, 22.3)
+    """
     w, ascent, descent = _runs_extent(lab.runs)
     w *= lab.size_mm * lab.stretch
-    x0 = lab.x - {"start": 0.0, "middle": w / 2, "end": w}[lab.anchor]
+    a = lab.anchor
+    x0 = lab.x - (0.0 if a == "start" else w / 2 if a == "middle" else w if a == "end" else _NO_ANCHOR[a])
     return (x0, lab.y - ascent * lab.size_mm, x0 + w, lab.y + descent * lab.size_mm)
 
 
 def bbox(prims: Iterable[Primitive]) -> tuple[float, float, float, float] | None:
-    """Box ``(x0, y0, x1, y1)`` in mm around primitives (labels estimated); None when empty."""
+    """Box ``(x0, y0, x1, y1)`` in mm around primitives (labels estimated); None when empty.
+
+    Parameters
+    ----------
+    prims : iterable of Primitive
+        Paths, polygons, circles, labels and groups of them.
+
+    Returns
+    -------
+    tuple of float, mm, or None
+        Left, top, right, bottom around every primitive; None when there is none.
+
+    Examples
+    --------
+    >>> from graphmethods.scene.primitives import Circle, Path
+    >>> bbox([Circle(0.0, 0.0, 2.0), Path(((1.0, 1.0), (5.0, 3.0)))]), bbox([])
+    ((-2.0, -2.0, 5.0, 3.0), None)
+    """
     xs0, ys0, xs1, ys1 = [], [], [], []
     for p in walk(prims):
         if isinstance(p, (Path, Polygon)) and p.points:
@@ -170,16 +223,48 @@ _VALIGN_SHIFT = {"baseline": 0.0, "middle": CAP / 2, "top": ASCENT, "bottom": -D
 
 def make_label(at: Sequence[float], text: str, *, size_mm: float = 3.5, anchor: str = "start", valign: str = "baseline",
                bold: bool = False, markup_: bool = True, color: str = "#000000") -> Label:
-    """A :class:`Label` placed by its anchor and vertical alignment (baseline, middle, top, bottom)."""
+    """A :class:`Label` placed by its anchor and vertical alignment (baseline, middle, top, bottom).
+
+    Parameters
+    ----------
+    at : (float, float), mm
+        The anchor point on the page.
+    text : str
+        The text, in markup (``v_B``, ``ω^2``) unless ``markup_=False``.
+    size_mm : float, mm
+        Font size, raised to the sheet's smallest lettering (:func:`lettered_size`).
+    anchor : {"start", "middle", "end"}
+        Which end of the text stands at ``at``.
+    valign : {"baseline", "middle", "top", "bottom"}
+        Which height of the text stands at ``at``.
+    bold, markup_, color
+        Weight, whether ``text`` is markup, colour.
+
+    Returns
+    -------
+    Label
+
+    Raises
+    ------
+    InputError
+        For an unknown anchor or alignment.
+
+    Examples
+    --------
+    >>> lab = make_label((10.0, 20.0), "v_B", size_mm=5.0)
+    >>> lab.x, lab.y, lab.anchor, lab.runs
+    (10.0, 20.0, 'start', (('v', 0), ('B', -1)))
+    """
     if anchor not in ("start", "middle", "end"):
         raise InputError(f"text anchor {anchor!r}: use 'start', 'middle' or 'end'")
     x, y = _pt(at)
-    size_mm = lettered_size(size_mm)
-    shift = _VALIGN_SHIFT
-    if valign not in shift:
-        raise InputError(f"text valign {valign!r}: use one of {', '.join(shift)}")
+    size_mm = max(float(size_mm), MIN_TEXT_MM.get())      # lettered_size
+    try:
+        shift = _VALIGN_SHIFT[valign]
+    except (KeyError, TypeError):
+        raise InputError(f"text valign {valign!r}: use one of {', '.join(_VALIGN_SHIFT)}") from None
     runs = markup.parse(text) if markup_ else (((text, 0),) if text else ())
-    return Label(x, y + shift[valign] * size_mm, runs, size_mm, anchor, bold, color)
+    return Label(x, y + shift * size_mm, runs, size_mm, anchor, bold, color)
 
 
 @dataclass(frozen=True)
@@ -525,19 +610,46 @@ class Vector(_Segment):
 
 _DIRS = {"n": (0, -1), "ne": (1, -1), "e": (1, 0), "se": (1, 1), "s": (0, 1), "sw": (-1, 1), "w": (-1, 0),
          "nw": (-1, -1)}
+#: per direction: its (dx, dy), their length, and the anchor and vertical alignment a label beside a point takes
+_PLACES = {d: (dx, dy, math.hypot(dx, dy), {1: "start", 0: "middle", -1: "end"}[dx],
+               {1: "top", 0: "middle", -1: "bottom"}[dy]) for d, (dx, dy) in _DIRS.items()}
 
 
 def place_label(at: Sequence[float], text: str, direction: str, *, gap_mm: float = 1.2, size_mm: float = 3.5,
                 bold: bool = False, markup_: bool = True) -> Label:
-    """A label beside the point ``at`` in compass ``direction`` (n, ne, e, ... nw), ``gap_mm`` away."""
-    if direction not in _DIRS:
-        raise InputError(f"label direction {direction!r}: use one of {', '.join(_DIRS)}")
-    dx, dy = _DIRS[direction]
+    """A label beside the point ``at`` in compass ``direction`` (n, ne, e, ... nw), ``gap_mm`` away.
+
+    Parameters
+    ----------
+    at : (float, float), mm
+        The point the label names.
+    text : str
+        The text (markup unless ``markup_=False``).
+    direction : str
+        Compass direction from the point: ``"n"``, ``"ne"``, ``"e"``, ``"se"``, ``"s"``, ``"sw"``, ``"w"``,
+        ``"nw"`` (page y down: ``"n"`` is above).
+    gap_mm : float, mm
+        Distance from the point to the label's nearest corner or side.
+    size_mm, bold, markup_
+        As :func:`make_label` takes them.
+
+    Returns
+    -------
+    Label
+        Anchored and aligned so that it grows away from the point.
+
+    Examples
+    --------
+    >>> lab = place_label((10.0, 20.0), "B", "ne")
+    >>> round(lab.x, 3), round(lab.y, 3), lab.anchor
+    (10.849, 18.311, 'start')
+    """
+    try:
+        dx, dy, norm, anchor, valign = _PLACES[direction]
+    except (KeyError, TypeError):
+        raise InputError(f"label direction {direction!r}: use one of {', '.join(_DIRS)}") from None
     x, y = _pt(at)
-    norm = math.hypot(dx, dy)
     x, y = x + gap_mm * dx / norm, y + gap_mm * dy / norm
-    anchor = {1: "start", 0: "middle", -1: "end"}[dx]
-    valign = {1: "top", 0: "middle", -1: "bottom"}[dy]
     return make_label((x, y), text, size_mm=size_mm, anchor=anchor, valign=valign, bold=bold, markup_=markup_)
 
 

@@ -168,19 +168,57 @@ def lowered_digits(name: str) -> str:
 
 
 def is_cjk(ch: str) -> bool:
-    """True for a Chinese/Japanese/Korean ideograph, kana, or full-width punctuation."""
+    """True for a Chinese/Japanese/Korean ideograph, kana, or full-width punctuation.
+
+    Parameters
+    ----------
+    ch : str
+        One character.
+
+    Examples
+    --------
+    >>> is_cjk("速"), is_cjk("，"), is_cjk("v")
+    (True, True, False)
+    """
     o = ord(ch)
     return (0x2E80 <= o <= 0x9FFF) or (0xAC00 <= o <= 0xD7AF) or (0xF900 <= o <= 0xFAFF) or (0xFF00 <= o <= 0xFFEF) \
         or (0x3000 <= o <= 0x303F) or (0x20000 <= o <= 0x2FFFF)
 
 
 def has_cjk(text: str) -> bool:
-    """True when the text needs a CJK font."""
+    """True when the text needs a CJK font.
+
+    Parameters
+    ----------
+    text : str
+        Any text.
+
+    Examples
+    --------
+    >>> has_cjk("速度 v_B"), has_cjk("v_B")
+    (True, False)
+    """
     return any(is_cjk(ch) for ch in text)
 
 
 def char_em(ch: str) -> float:
-    """Estimated advance width of one character in em (DejaVu Sans; CJK full width)."""
+    """Estimated advance width of one character in em (DejaVu Sans; CJK full width).
+
+    Parameters
+    ----------
+    ch : str
+        One character.
+
+    Returns
+    -------
+    float, em
+        Its advance: the font's for ASCII, Greek and Cyrillic, 1 for a CJK character.
+
+    Examples
+    --------
+    >>> round(char_em("M"), 3), char_em("速")
+    (0.863, 1.0)
+    """
     o = ord(ch)
     if 32 <= o <= 126:
         return _ASCII_EM[o - 32]
@@ -210,7 +248,17 @@ def text_width_mm(text: str, size_mm: float, *, markup: bool = True) -> float:
     text : str
         The text (markup unless ``markup=False``).
     size_mm : float, mm
-        Font size (em height).
+        Font size (em height), raised to the sheet's smallest lettering.
+
+    Returns
+    -------
+    float, mm
+        The text's width: sub- and superscripts at their reduced size.
+
+    Examples
+    --------
+    >>> round(text_width_mm("v_B", 5.0), 3)
+    5.361
     """
     return _width_em(text, markup) * max(size_mm, MIN_TEXT_MM.get())
 

@@ -187,10 +187,25 @@ NOTATIONS = MappingProxyType({code: _build(code) for code in _PROFILES})
 def get(notation: Notation | str | None = None) -> Notation:
     """The profile for ``"en"``, ``"ru"`` or ``"zh"`` (``None`` means ``"en"``; a Notation passes through).
 
+    Parameters
+    ----------
+    notation : Notation, str or None
+        A language code (any case), a profile, or None for English.
+
+    Returns
+    -------
+    Notation
+        The language's symbols, words, units and decimal sign.
+
     Raises
     ------
     InputError
         For an unknown code.
+
+    Examples
+    --------
+    >>> get("RU").code, get(None).code, get(get("zh")).code, get("ru").decimal
+    ('ru', 'en', 'zh', ',')
     """
     if notation is None:
         return NOTATIONS["en"]

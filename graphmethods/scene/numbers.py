@@ -17,7 +17,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 from graphmethods.errors import InputError
-from graphmethods.units import is_finite
+from graphmethods.units import ROUNDOFF, is_finite
 
 MINUS = "\u2212"
 #: significant digits of each kind of flywheel quantity, one rule for its figures (the design's table, the
@@ -25,7 +25,6 @@ MINUS = "\u2212"
 #: and angular speeds 6 (ω_max and ω_min differ in the fourth digit at δ = 1/300), speeds 3
 FLYWHEEL_DIGITS = {"J": 4, "mass": 4, "mm": 4, "density": 4, "W": 6, "omega": 6, "speed": 3, "delta": 6,
                    "inverse": 4, "angle": 4, "moment": 6}
-ROUNDOFF = 1e-9     # a value below this share of its computation's scale is that computation's round-off
 
 
 def within_roundoff(value: float, reference: float) -> bool:
@@ -36,6 +35,30 @@ def within_roundoff(value: float, reference: float) -> bool:
     (True, False, True)
     """
     return abs(float(value)) <= ROUNDOFF * abs(float(reference))
+
+
+def round_off_zero(value: float, size: float) -> float:
+    """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
+    a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
+
+    Parameters
+    ----------
+    value : float
+        A computed value, in any unit (N, N·m, m/s², ...).
+    size : float
+        The largest value of its kind in the same computation, in the same unit.
+
+    Returns
+    -------
+    float
+        ``value``, or 0.0 when :func:`within_roundoff` of ``size``.
+
+    Examples
+    --------
+    >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
+    (0.0, -12.5)
+    """
+    return 0.0 if within_roundoff(value, size) else value
 
 
 def format_mm(x: float) -> str:

@@ -20,6 +20,11 @@ from typing import Any
 
 XY = tuple[float, float]
 
+# The primitives are frozen dataclasses (compared, hashed and printed by their fields) whose ``__init__`` is
+# written out: a figure makes hundreds of thousands of them (the gallery about 200 000), and the generated
+# frozen ``__init__`` sets each field through ``object.__setattr__`` (3-4 µs a Label against about 1 µs filling
+# the instance's dict at once). ``tests/test_primitives_init.py`` holds each written ``__init__`` to its fields.
+
 #: line widths in mm, as drawing standards grade them
 WIDTH_THIN = 0.18      # construction, hatching, dimension and level lines
 WIDTH_AXIS = 0.25      # axes, table grid
@@ -27,7 +32,7 @@ WIDTH_VECTOR = 0.35    # vectors
 WIDTH_MAIN = 0.5       # the curves a figure is about
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Style:
     """How a primitive is stroked and filled.
 
@@ -48,6 +53,10 @@ class Style:
     dash: tuple[float, ...] | None = None
     fill: str | None = None
 
+    def __init__(self, stroke: str | None = "#000000", width_mm: float = WIDTH_AXIS,
+                 dash: tuple[float, ...] | None = None, fill: str | None = None) -> None:
+        self.__dict__.update(stroke=stroke, width_mm=width_mm, dash=dash, fill=fill)
+
     def with_(self, **changes: Any) -> Style:
         """A copy with some fields changed."""
         from dataclasses import replace
@@ -64,7 +73,7 @@ DOTTED = Style(width_mm=WIDTH_THIN, dash=(0.5, 1.0))
 SOLID_FILL = Style(stroke=None, width_mm=0.0, fill="#000000")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Path:
     """A polyline through ``points`` (closed back to the first when ``closed``)."""
 
@@ -72,21 +81,27 @@ class Path:
     style: Style = THIN
     closed: bool = False
 
+    def __init__(self, points: tuple[XY, ...], style: Style = THIN, closed: bool = False) -> None:
+        self.__dict__.update(points=points, style=style, closed=closed)
+
     def length_mm(self) -> float:
         """Drawn length in mm (including the closing segment)."""
         pts = list(self.points) + ([self.points[0]] if self.closed and self.points else [])
         return sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Polygon:
     """A closed polygon, filled with ``style.fill`` and outlined with ``style.stroke``."""
 
     points: tuple[XY, ...]
     style: Style = SOLID_FILL
 
+    def __init__(self, points: tuple[XY, ...], style: Style = SOLID_FILL) -> None:
+        self.__dict__.update(points=points, style=style)
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, init=False)
 class Circle:
     """A circle of radius ``r`` mm centred at ``(cx, cy)``."""
 
@@ -95,8 +110,11 @@ class Circle:
     r: float
     style: Style = THIN
 
+    def __init__(self, cx: float, cy: float, r: float, style: Style = THIN) -> None:
+        self.__dict__.update(cx=cx, cy=cy, r=r, style=style)
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, init=False)
 class Label:
     """Text on one line, its baseline at ``y``; ``anchor`` is where ``x`` is: start, middle or end.
 
@@ -115,25 +133,49 @@ class Label:
     color: str = "#000000"
     stretch: float = 1.0
 
+    def __init__(self, x: float, y: float, runs: tuple[tuple[str, int], ...], size_mm: float = 3.5,
+                 anchor: str = "start", bold: bool = False, color: str = "#000000", stretch: float = 1.0) -> None:
+        self.__dict__.update(x=x, y=y, runs=runs, size_mm=size_mm, anchor=anchor, bold=bold, color=color,
+                             stretch=stretch)
+
     @property
     def text(self) -> str:
         """The characters of all runs."""
         return "".join(t for t, _ in self.runs)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Group:
     """A named container; ``name`` becomes the group's id in SVG output."""
 
     name: str
     children: tuple[Primitive, ...]
 
+    def __init__(self, name: str, children: tuple[Primitive, ...]) -> None:
+        self.__dict__.update(name=name, children=children)
+
 
 Primitive = Path | Polygon | Circle | Label | Group
 
 
 def walk(prims: Iterable[Primitive]) -> Iterator[Primitive]:
-    """Yield every primitive in ``prims`` depth-first, groups included, in drawing order."""
+    """Yield every primitive in ``prims`` depth-first, groups included, in drawing order.
+
+    Parameters
+    ----------
+    prims : iterable of Primitive
+        Primitives, some of them groups.
+
+    Yields
+    ------
+    Primitive
+        Each group before its children.
+
+    Examples
+    --------
+    >>> [type(p).__name__ for p in walk([Group("g", (Circle(0.0, 0.0, 1.0),)), Circle(1.0, 1.0, 1.0)])]
+    ['Group', 'Circle', 'Circle']
+    """
     for p in prims:
         yield p
         if isinstance(p, Group):

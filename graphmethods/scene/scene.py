@@ -35,6 +35,20 @@ def make_id(name: str) -> str:
     >>> make_id("vector a→b"), make_id("1st"), make_id("")
     ('vector-a-b', 'g-1st', 'g')
     """
+    try:
+        return _IDS[name]
+    except (KeyError, TypeError):
+        pass
+    made = _make_id(name)
+    if type(name) is str and len(_IDS) < 1 << 15:      # the same few hundred names again and again
+        _IDS[name] = made
+    return made
+
+
+_IDS: dict[str, str] = {}
+
+
+def _make_id(name: str) -> str:
     s = _ID_BAD.sub("-", str(name)).strip("-")
     if not s or not (s[0].isalpha() or s[0] == "_"):
         s = "g-" + s if s else "g"
@@ -45,7 +59,7 @@ def _chinese_punctuation(prim: Any) -> Any:
     """A primitive with its labels' ASCII ``,:;`` next to Chinese text made full-width (one typography on
     every zh figure, whatever recipe joined the words)."""
     if isinstance(prim, Group):
-        return replace(prim, children=tuple(_chinese_punctuation(c) for c in prim.children))
+        return Group(prim.name, tuple(_chinese_punctuation(c) for c in prim.children))
     if isinstance(prim, Label) and any(c in t for t, _ in prim.runs for c in ",:;"):
         return replace(prim, runs=tuple((full_width_punctuation(t), sh) for t, sh in prim.runs))
     return prim

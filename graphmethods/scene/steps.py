@@ -23,6 +23,8 @@ function that builds the figure and lists its rules.
 
 from __future__ import annotations
 
+import functools
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
@@ -269,15 +271,63 @@ def _words(text: str) -> list[str]:
     return [w for w in out if w]
 
 
+#: what never starts a line: closing brackets and the punctuation after a word, and a per cent sign
+CLOSING = ")]}»”,.;:!?%"
+#: a number as the figures write it (1.5, 0,000, −150, 4.8·10⁻³)
+_NUMBER = re.compile(r"^[−+-]?\(?\d[\d.,]*(·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?$")
+
+
+@functools.cache
+def _units() -> frozenset[str]:
+    """Every unit the notations write (en and ru), and the degree and per cent signs."""
+    from graphmethods.scene import vocabulary
+
+    ru = vocabulary.family(vocabulary.CORE).units_ru
+    return frozenset(ru) | frozenset(ru.values()) | {"°", "%"}
+
+
+def _glued(words: list[str]) -> list[str]:
+    """The words of a line with what must not begin a line joined to the word before it: a word that starts with a
+    closing bracket or punctuation ("%)"), and a unit after its number ("538,423 Н·м;"). The ru Zhukovsky slide
+    wrapped "(расхождение 0,000 %)" leaving "%)" alone on a line."""
+    out: list[str] = []
+    for w in words:
+        unit = w.rstrip(CLOSING) or w
+        if out and (w[0] in CLOSING or (unit in _units() and _NUMBER.match(out[-1].rsplit(" ", 1)[-1]))):
+            out[-1] = f"{out[-1]} {w}"
+        else:
+            out.append(w)
+    return _short_brackets(out)
+
+
+def _short_brackets(words: list[str]) -> list[str]:
+    """A bracketed remark of at most :data:`SHORT_REMARK` words kept on one line ("(расхождение 0,000 %)")."""
+    out: list[str] = []
+    i = 0
+    while i < len(words):
+        w = words[i]
+        ends = [j for j in range(i, min(i + SHORT_REMARK, len(words))) if words[j].rstrip(CLOSING[1:]).endswith(")")]
+        end = ends[0] if ends and w.startswith("(") else None
+        out.append(" ".join(words[i:end + 1]) if end is not None else w)
+        i = i + 1 if end is None else end + 1
+    return out
+
+
+#: the words of a bracketed remark that wrapping keeps together
+SHORT_REMARK = 3
+
+
 def wrap(text: str, size_mm: float, width_mm: float) -> list[str]:
     """``text`` (markup) broken at spaces into lines no wider than ``width_mm`` at ``size_mm``
-    (a word wider than the width gets a line of its own).
+    (a word wider than the width gets a line of its own); a closing bracket or a unit never begins a line.
 
     >>> wrap("Through a, draw the direction of v_{BA} ⊥ AB", 5.0, 60.0)
     ['Through a, draw the', 'direction of v_{BA} ⊥ AB']
+    >>> wrap("по планам сил: 538,423 Н·м (расхождение 0,000 %)", 5.0, 130.0)     # not "…0,000" and "%)"
+    ['по планам сил: 538,423 Н·м', '(расхождение 0,000 %)']
     """
     lines: list[str] = []
-    for word in _words(text):
+    for word in _glued(_words(text)):
         if lines and markup.text_width_mm(f"{lines[-1]} {word}", size_mm) <= width_mm:
             lines[-1] = f"{lines[-1]} {word}"
         else:

@@ -1,16 +1,18 @@
 """graphmethods.sheets: whole textbook figures, one function per figure, problem -> Scene.
 
 - excess work (:mod:`~graphmethods.sheets.energy`): :func:`moment_diagram`, :func:`excess_work_table`,
-  :func:`energy_indicator`, :func:`energy_graph`;
+  :func:`energy_indicator`; the kinetic-energy graph :func:`energy_graph` (:mod:`~graphmethods.sheets.energy_graph`);
 - linkages (:mod:`~graphmethods.sheets.kinematics`): :func:`kinematic_scheme`, :func:`velocity_plan_grid`,
   :func:`velocity_plan`, :func:`velocity_table`;
 - accelerations (:mod:`~graphmethods.sheets.acceleration`): :func:`acceleration_plan`,
   :func:`acceleration_plan_grid`, :func:`acceleration_table`;
 - the reduced model (:mod:`~graphmethods.sheets.dynamics`): :func:`inertia_graph`, :func:`moment_graph`,
-  :func:`delta_T_graph`, :func:`speed_graph`, :func:`acceleration_graph`, :func:`zhukovsky_lever`;
+  :func:`delta_T_graph`; :func:`speed_graph`, :func:`acceleration_graph`
+  (:mod:`~graphmethods.sheets.speed_graphs`); :func:`zhukovsky_lever` (:mod:`~graphmethods.sheets.zhukovsky_lever`);
 - the flywheel (:mod:`~graphmethods.sheets.wittenbauer`): :func:`wittenbauer_diagram`,
   :func:`dynamic_analysis_sheet`;
-- graphical calculus (:mod:`~graphmethods.sheets.calculus`): :func:`kinematic_diagrams`, :func:`work_diagrams`;
+- graphical calculus (:mod:`~graphmethods.sheets.calculus`): :func:`kinematic_diagrams`; :func:`work_diagrams`
+  (:mod:`~graphmethods.sheets.work_diagrams`);
 - the course project's A1 sheets: :func:`kinematic_analysis_sheet` (the first,
   :mod:`~graphmethods.sheets.kinematic_analysis_sheet`) and :func:`force_analysis_sheet` (the second,
   :mod:`~graphmethods.sheets.force_analysis_sheet`); the cam sheet :func:`cam_sheet`
@@ -40,32 +42,29 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:                      # the names for mypy and the reader; at run time they load when asked
     from graphmethods.sheets.acceleration import acceleration_plan, acceleration_plan_grid, acceleration_table
-    from graphmethods.sheets.calculus import kinematic_diagrams, work_diagrams
+    from graphmethods.sheets.calculus import kinematic_diagrams
     from graphmethods.sheets.cam_sheet import cam_sheet
     from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-    from graphmethods.sheets.dynamics import (
-        acceleration_graph,
-        delta_T_graph,
-        inertia_graph,
-        moment_graph,
-        speed_graph,
-        zhukovsky_lever,
-    )
-    from graphmethods.sheets.energy import energy_graph, energy_indicator, excess_work_table, moment_diagram
+    from graphmethods.sheets.dynamics import delta_T_graph, inertia_graph, moment_graph
+    from graphmethods.sheets.energy import energy_indicator, excess_work_table, moment_diagram
+    from graphmethods.sheets.energy_graph import energy_graph
     from graphmethods.sheets.force_analysis_sheet import force_analysis_sheet
     from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
     from graphmethods.sheets.kinematic_scheme import kinematic_scheme
+    from graphmethods.sheets.speed_graphs import acceleration_graph, speed_graph
     from graphmethods.sheets.velocity_plans import velocity_plan, velocity_plan_grid
     from graphmethods.sheets.velocity_table import velocity_table
     from graphmethods.sheets.wittenbauer import wittenbauer_diagram
+    from graphmethods.sheets.work_diagrams import work_diagrams
+    from graphmethods.sheets.zhukovsky_lever import zhukovsky_lever
 
 #: each public function's module (under this package)
 _HOME = {
     "acceleration_plan": "acceleration", "acceleration_plan_grid": "acceleration",
-    "acceleration_table": "acceleration", "kinematic_diagrams": "calculus", "work_diagrams": "calculus",
-    "cam_sheet": "cam_sheet", "acceleration_graph": "dynamics", "delta_T_graph": "dynamics",
-    "inertia_graph": "dynamics", "moment_graph": "dynamics", "speed_graph": "dynamics",
-    "zhukovsky_lever": "dynamics", "energy_graph": "energy", "energy_indicator": "energy",
+    "acceleration_table": "acceleration", "kinematic_diagrams": "calculus", "work_diagrams": "work_diagrams",
+    "cam_sheet": "cam_sheet", "acceleration_graph": "speed_graphs", "delta_T_graph": "dynamics",
+    "inertia_graph": "dynamics", "moment_graph": "dynamics", "speed_graph": "speed_graphs",
+    "zhukovsky_lever": "zhukovsky_lever", "energy_graph": "energy_graph", "energy_indicator": "energy",
     "excess_work_table": "energy", "moment_diagram": "energy", "force_analysis_sheet": "force_analysis_sheet",
     "kinematic_analysis_sheet": "kinematic_analysis_sheet", "kinematic_scheme": "kinematic_scheme",
     "velocity_plan": "velocity_plans", "velocity_plan_grid": "velocity_plans", "velocity_table": "velocity_table",

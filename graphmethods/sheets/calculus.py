@@ -497,7 +497,8 @@ def _kinematic_scales(mech: Any, sheet: Sheet, nt: Notation, *, m: int, omega_1:
     L = LAYOUT
     x0, _, x1, _ = sheet.box
     motion = gc.slider_motion(mech, np.linspace(0.0, TWO_PI, 721))
-    probe = gc.slider_diagrams(mech, m, mu_phi=1.0, mu_s=1.0, omega_1=omega_1, H1_mm=1.0, H2_mm=1.0)
+    refs = gc.slider_references(mech, m, omega_1=omega_1)       # the kinematics once, for the probe and the sheet
+    probe = gc.slider_diagrams(mech, m, mu_phi=1.0, mu_s=1.0, omega_1=omega_1, H1_mm=1.0, H2_mm=1.0, references=refs)
     right_col = _column_width(_comparison_rows(nt, probe, "v_B", "a_B"), "μ_a = μ_v/(μ_t·H_2) = 0.0001234 (m/s²)/mm")
     gx0 = x0 + L.pole_room_mm + L.graph_gap_mm
     gx1 = x1 - right_col - L.column_gap_mm
@@ -519,7 +520,7 @@ def _kinematic_scales(mech: Any, sheet: Sheet, nt: Notation, *, m: int, omega_1:
                              f"the strip leaves {band_h:.1f} mm; give a larger μ_s or none")
     sd = gc.slider_diagrams(mech, m, mu_phi=s_phi.per_mm, mu_s=s_s.per_mm, omega_1=omega_1, H1_mm=H1_mm,
                             H2_mm=H2_mm, band_v_mm=band_h - L.dim_room_mm, band_a_mm=band_h - L.dim_room_mm,
-                            pole_room_mm=L.pole_room_mm)
+                            pole_room_mm=L.pole_room_mm, references=refs)
     for H, key, given in ((sd.v.H_mm, "H1", H1_mm), (sd.a.H_mm, "H2", H2_mm)):
         if given is not None and H > L.pole_room_mm + 1e-9:
             raise InputError(f"{key} = {H:g} mm leaves no room for the pole left of its diagram "
@@ -727,7 +728,3 @@ def _curve_names(occ: Occupancy, pairs: Iterable[tuple[Polyline, str, float]], b
         out.append(Text((lab.x, lab.y), text, size_mm=TEXT_MM + 0.3, anchor=lab.anchor,
                         name=f"name-{band}-{markup.plain(text)}"))
     return out
-
-
-# split out of this module, imported here so that every name reads as before: work_diagrams.py
-from graphmethods.sheets.work_diagrams import work_diagrams  # noqa: E402, F401

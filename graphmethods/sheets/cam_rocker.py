@@ -41,13 +41,11 @@ from graphmethods.kinematics.cam.geometry import psi_0
 from graphmethods.scene import Line, Point, Polyline, Region, Scale, Text, pick_scale
 from graphmethods.scene.elements import Element
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
+from graphmethods.scene.primitives import DASHED, MAIN, THIN
 from graphmethods.sheets.layout import Box, Occupancy
-from graphmethods.sheets.styles import LEVEL, PROJECTION
+from graphmethods.sheets.styles import CENTRE_LINE as CENTRES, LEVEL, PROJECTION
 
 Array = NDArray[np.float64]
-#: the dash-dot of a circle of centres (the roller centre's arc, the cam centre's locus)
-CENTRES = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 
 
 def _limits(cam: CamDesign) -> dict[str, float]:
@@ -78,6 +76,26 @@ class Rocker:
 
 
 def rocker(cam: CamDesign) -> Rocker:
+    """The rocker of a designed oscillating cam: its pivot A = (a, 0), arm l and ψ₀ at the designed base radius.
+
+    Parameters
+    ----------
+    cam : CamDesign
+        A designed cam with an oscillating follower (a, l in m).
+
+    Returns
+    -------
+    Rocker
+        Pivot (m), arm (m) and the arm's angle ψ₀ from the line of centres (rad) at the lowest position.
+
+    Examples
+    --------
+    >>> from graphmethods.kinematics.cam import design
+    >>> from graphmethods.problems.builtin import cam_problem
+    >>> rk = rocker(design(cam_problem("oscillating-cam")))
+    >>> rk.A.tolist(), round(rk.psi0, 4)
+    ([0.15, 0.0], 0.1803)
+    """
     p = cam.problem
     return Rocker(np.array([p.pivot, 0.0]), p.arm, psi_0(cam.pitch_base_radius, p.arm, p.pivot))
 

@@ -52,11 +52,9 @@ from graphmethods.sheets.cam_rocker import rocker_diagram
 from graphmethods.sheets.engine import course_page, lettering
 from graphmethods.sheets.frame import FastOccupancy
 from graphmethods.sheets.layout import Box, Occupancy
-from graphmethods.sheets.styles import PROJECTION
+from graphmethods.sheets.styles import CENTRE_LINE as CENTRES, PROJECTION
 
 TITLE_MM = lettering("A1").title_mm
-#: the dash-dot of a circle of centres (the pitch curve's base circle)
-CENTRES = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,7 @@ from typing import Any
 from graphmethods.kinematics.cam import CamDesign, CamProblem, design
 from graphmethods.scene.steps import BuildUp, Rule
 from graphmethods.sheets.cam_sheet import cam_inversion
-from graphmethods.sheets.steps import _build, _kept, step_start
+from graphmethods.sheets.step_rules import _build, _kept, step_start
 
 
 def inversion_steps(cam: CamDesign | CamProblem, *, notation: Any = "en", page: Any = "slide") -> BuildUp:

@@ -1,11 +1,13 @@
 """The step-by-step builds of the graphical calculus, the Zhukovsky lever, the force plans and the kinematic
-scheme (split out of :mod:`graphmethods.sheets.steps`, which re-exports them)."""
+scheme (split out of :mod:`graphmethods.sheets.steps`, which lists them; built from the pieces of
+:mod:`graphmethods.sheets.step_rules`)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from graphmethods.scene.steps import BuildUp
+from graphmethods.sheets import step_rules as S
 
 # ----------------------------------------------------------------------------- graphical calculus
 
@@ -50,12 +52,12 @@ def integration_steps(subject, *, notation="en", page="slide", m: int = 12) -> B
     Parameters
     ----------
     subject : Study, Case, cycle problem with moment curves, or (M_d, M_r)
-        As :func:`graphmethods.sheets.calculus.work_diagrams` takes it.
+        As :func:`graphmethods.sheets.work_diagrams.work_diagrams` takes it.
     """
-    from graphmethods.sheets import calculus as C
+    from graphmethods.sheets.work_diagrams import work_diagrams
 
     nt, (pg, box, cap_mm, tb) = S.step_start(notation, page)
-    figure = C.work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
+    figure = work_diagrams(subject, m=m, notation=nt, page=pg, title_block=tb)
     P = S._text_of(figure, "pole-label")
 
     rules = [
@@ -83,21 +85,21 @@ def zhukovsky_steps(study, position: int | None = None, *, notation="en", page="
     Parameters
     ----------
     study : Study or Case
-        As :func:`graphmethods.sheets.dynamics.zhukovsky_lever` takes it.
+        As :func:`graphmethods.sheets.zhukovsky_lever.zhukovsky_lever` takes it.
     position : int, optional
         The position (default: the one with the largest M_r).
     """
-    from graphmethods.sheets import dynamics as D
+    from graphmethods.sheets.zhukovsky_lever import lever_law, zhukovsky_lever
 
     nt, (pg, box, cap_mm, tb) = S.step_start(notation, page)
-    figure = D.zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
+    figure = zhukovsky_lever(study, position=position, notation=nt, page=pg, title_block=tb)
     mu_v = next((sc for sc in figure.scales() if "v" in sc.symbol), figure.scales()[0])
     rules = [
         (nt.word("steps.lever", mu=mu_v.caption(nt)),
          lambda n: n in ("title", "pole", "scale-captions") or n.startswith(("lever-", "image-", "name-"))),
         (nt.word("steps.load", F=S._text_of(figure, "label-F")), S._leader_of(["force-F", "label-F"])),
         (nt.word("steps.arm", h=S._text_of(figure, "label-h")), S._leader_of(["dimension-h", "label-h"])),
-        (nt.word("steps.balance", Mr=nt.sym("M_r")), lambda n: False),
+        (nt.word("steps.balance", Mr=nt.sym("M_r"), law=lever_law(nt)), lambda n: False),
     ]
     return S._build(figure, rules, box, cap_mm, rest=len(rules))
 
@@ -306,13 +308,10 @@ def scheme_steps(linkage, *, notation="en", page="slide", m: int = 12) -> BuildU
          lambda n: pos_of(others)(n) or mark_of(moving)(n) or (n.startswith("number-out-")
                                                                 and not n.endswith("-extreme"))),
         (nt.word("steps.paths"), lambda n: n.startswith("path-")),
-        (nt.word("steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
-         or n in ("dimension-H", "summary")),
+        (nt.word("steps.extremes_table" if any(e.name == "positions-table" for e in figure.elements)
+                 else "steps.extremes_s"), lambda n: n.startswith("extreme-") or n.endswith("-extreme")
+         or n in ("dimension-H", "summary", "positions-table")),
         (nt.word("steps.thick"), lambda n: False),
     ]
     kept = S._kept(rules, figure)
     return S._build(figure, kept, box, cap_mm, rest=len(kept))
-
-
-# the helpers of steps.py, read at call time; imported last, as steps.py re-exports this module
-from graphmethods.sheets import steps as S  # noqa: E402

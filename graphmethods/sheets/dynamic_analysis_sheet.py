@@ -1,6 +1,6 @@
 """The A1 / A2 dynamic-analysis sheet of a course project: M_d, M_r(φ) over ΔT(φ), J_e turned 90° over
 the energy–mass diagram, the result and the ordinates (split out of :mod:`graphmethods.sheets.wittenbauer`,
-which re-exports it)."""
+whose diagram it draws; ``sheets.dynamic_analysis_sheet`` is this function)."""
 
 from __future__ import annotations
 

@@ -779,13 +779,9 @@ def delta_T_graph(study, *, mu_T=None, mu_phi=None, kinetic: bool = False, notat
                         zero=None if kinetic else True)
 
 
-# split out of this module, imported here so that every name reads as before: speed_graphs.py, zhukovsky_lever.py
-from graphmethods.sheets.speed_graphs import acceleration_graph, speed_graph  # noqa: E402
-from graphmethods.sheets.zhukovsky_lever import LeverLoad, lever_load, zhukovsky_lever  # noqa: E402
-
 __all__ = [
-    "inertia_graph", "moment_graph", "delta_T_graph", "speed_graph", "acceleration_graph", "zhukovsky_lever",
+    "inertia_graph", "moment_graph", "delta_T_graph",
     "phi_graph_elements", "turned_inertia_elements", "axis_break", "DownAxis", "FastOccupancy", "SheetFrame",
     "CurveSpec",
-    "MarkSpec", "LeverLoad", "lever_load", "value_text", "phi_graph",
+    "MarkSpec", "value_text", "phi_graph",
 ]

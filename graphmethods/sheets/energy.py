@@ -738,7 +738,3 @@ def energy_indicator(cycle: Any, *, mu_E: Any = None, step_mm: float | None = No
                 + [closure] + sheet.captions(scales, legend=nt.word("gain_loss")))
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,
                  notes=(ind.s_E.note,))
-
-
-# split out of this module, imported here so that every name reads as before: energy_graph.py
-from graphmethods.sheets.energy_graph import ENERGY_GRAPH_LAYOUT, EnergyGraphLayout, energy_graph  # noqa: E402, F401

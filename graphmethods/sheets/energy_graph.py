@@ -1,5 +1,5 @@
 """The kinetic-energy graph T(φ) of a cycle problem, from the excess work and a given starting level (split
-out of :mod:`graphmethods.sheets.energy`, which re-exports it)."""
+out of :mod:`graphmethods.sheets.energy`, whose common parts it uses; ``sheets.energy_graph`` is this function)."""
 
 from __future__ import annotations
 

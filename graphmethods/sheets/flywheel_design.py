@@ -30,8 +30,9 @@ from graphmethods.scene.numbers import FLYWHEEL_DIGITS
 from graphmethods.scene.primitives import Style
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM
+from graphmethods.sheets.styles import CENTRE_LINE
 
-AXIS = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
+AXIS = CENTRE_LINE
 OUTLINE = Style(width_mm=0.5)
 #: the reduction scales of a machine drawing (ГОСТ 2.302, GB/T 14690), 1 : k
 DRAWING_SCALES = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 50.0, 75.0, 100.0)

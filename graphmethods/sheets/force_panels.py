@@ -35,7 +35,7 @@ from graphmethods.scene import notation as get_notation
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.scale import pick_scale
-from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
+from graphmethods.sheets import force_working as FW
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import PanelContent
 

@@ -28,12 +28,10 @@ from graphmethods.errors import InputError
 from graphmethods.scene import Element, Page, Scale, Scene, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import within_roundoff
-from graphmethods.sheets import (
-    force_working as FW,  # a module: force_working imports forces back
-    forces as SF,
-)
+from graphmethods.sheets import force_working as FW, forces as SF
 from graphmethods.sheets.engine.lettering import lettering
 from graphmethods.sheets.force_fit import drawn_tip, fit_forces
+from graphmethods.sheets.force_linkage import _slots, _yokes
 from graphmethods.sheets.layout import Sheet, given_scale
 
 
@@ -149,7 +147,8 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     m_pitch = 1.8 * let.label_mm
     tries = (True, False) if working else (False,)
     for working in tries:                                       # the working when the panel has room for it
-        moments = FW.moment_working(fa, i, j, nt) if working and with_moments else []   # R^τ, before the plan
+        moments = [part for line in (FW.moment_working(fa, i, j, nt) if working and with_moments else [])  # R^τ
+                   for part in _broken(line, let.label_mm, sheet.box[2] - sheet.box[0])]
         n_known = len(FW.drawn_lengths(sides, Scale("μ_F", "N", 1.0), nt, least_mm=0.0)) if working else 0
         m_h = (len(moments) + n_known) * m_pitch
 
@@ -186,6 +185,21 @@ def plan_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Page
     return SF._finish(sheet, els, (s_F,), "", f"plan-{j}")
 
 
+def _broken(line: str, size_mm: float, width_mm: float) -> list[str]:
+    """A moment equation as one line, or broken after its last ", " into two when it is wider than ``width_mm``
+    at ``size_mm`` (the equation, then the reaction it gives).
+
+    >>> _broken("R·0.4 + 0.7 − 1469.2 = 0, R = 3682.1 N", 3.5, 200.0)
+    ['R·0.4 + 0.7 − 1469.2 = 0, R = 3682.1 N']
+    >>> _broken("R·0.4 + 0.7 − 1469.2 = 0, R = 3682.1 N", 3.5, 50.0)
+    ['R·0.4 + 0.7 − 1469.2 = 0,', '    R = 3682.1 N']
+    """
+    head, sep, tail = line.rpartition(", ")
+    if not sep or markup.text_width_mm(line, size_mm) <= width_mm:
+        return [line]
+    return [head + ",", "    " + tail]
+
+
 def _zero_plan(sheet: Sheet, j: int, equation: str, found: list[tuple[str, float]], nt: Notation,
                size_mm: float) -> Scene:
     """Plan ``j`` whose polygon's forces are all zero in this position: its equation and each reaction it finds
@@ -220,8 +234,9 @@ def _merged(wanted: list[SF.LabelSpec]) -> list[SF.LabelSpec]:
 def _plan_area(sheet: Sheet, pts: np.ndarray, L: SF.ForceFigureLayout,
                texts: Callable[[Scale], list[tuple[str, float]]], height_mm: float) -> tuple[SF.Box, float, Scale]:
     """Where a force plan (vertices ``pts``, N) is drawn in its panel, where its lines of text begin (x, mm) and
-    its μ_F: the lines (``texts(μ_F)``: each text and its size, ``height_mm`` together) above the polygon or
-    in a column beside it, whichever draws the polygon larger (above on a tie).
+    its μ_F: the lines (``texts(μ_F)``: each text and its size, ``height_mm`` together) above the polygon (where
+    the panel is as wide as they are) or in a column beside it, whichever draws the polygon larger (above on a
+    tie).
 
     Raises
     ------
@@ -242,8 +257,9 @@ def _plan_area(sheet: Sheet, pts: np.ndarray, L: SF.ForceFigureLayout,
             if pw <= 10.0 or ph <= 10.0 or span <= 0:
                 break
             s_F = given_scale(None, "μ_F", get_notation(sheet.nt).unit("N"), span * pw, pw, what="the force plan")
-            if n_o == 0:
-                options.append((s_F.per_mm, n_o, area, x0, s_F))
+            if n_o == 0:                        # the lines above the polygon: as wide as the panel at most
+                if max(markup.text_width_mm(t, mm) for t, mm in texts(s_F)) <= x1 - x0:
+                    options.append((s_F.per_mm, n_o, area, x0, s_F))
                 break
             col_new = max(markup.text_width_mm(t, mm) for t, mm in texts(s_F)) + 4.0
             if col_new <= col + 1e-9:
@@ -351,10 +367,12 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     area = (sheet.box[0], sheet.top + 4.0, sheet.box[2], sheet.caption_y - L.bottom_mm)
     arrows = [(where[lbl], F) for lbl, F, _ in sides]
     arrows += [(complex(f.at[i]), complex(f.F[i])) for ln in pl.links for f in fa.applied.get(ln, ())]
-    s_l, s_F, at = fit_forces(list(z.values()) + list(where.values()), arrows, area, nt,
+    slots = [z_ for g, c, d in _slots(mo, i) if g.P in z and g.R in z for z_ in (c - d, c + d)]   # a yoke's slot
+    s_l, s_F, at = fit_forces(list(z.values()) + list(where.values()) + slots, arrows, area, nt,
                               pad_mm=SF.lettering_pad(page))
     segs, blocks = SF._links_of(mo, i)
-    segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0]
+    yokes, slotted = _yokes(mo, i, z, at, area)
+    segs = [(a, b) for a, b in segs if a in z and b in z and abs(z[a] - z[b]) > 0 and (a, b) not in slotted]
     occ = sheet.occ
     from graphmethods.scene import Line
     from graphmethods.sheets.kinematic_symbols import PinJoint, SliderBlock
@@ -363,6 +381,7 @@ def group_panel(case: Any, fa: Any, i: int, j: int, *, nt: Any = "en", page: Pag
     els += [SF._drawn(occ, Line(at(z[a]), at(z[b]), style=SF.LINK, name=f"link-{a}-{b}")) for a, b in segs]
     els += [SF._drawn(occ, SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)),
                                        name=f"block-{k}")) for k, (p, u) in enumerate(blocks) if p in z]
+    els += [SF._drawn(occ, e) for e in yokes]
     els += [SF._drawn(occ, PinJoint(at(z[p]), name=f"joint-{p}")) for p in sorted({q for sg in segs for q in sg})]
     labels: list[SF.LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     applied = [(f.label, complex(f.F[i]), complex(f.at[i]), SF.round_off_zero(float(f.M[i]), big))

@@ -28,7 +28,8 @@ from typing import Any
 import numpy as np
 
 from graphmethods.scene import notation as get_notation
-from graphmethods.sheets.forces import _markup, round_off_zero
+from graphmethods.scene.numbers import round_off_zero
+from graphmethods.sheets.force_symbols import force_symbol as _markup
 
 
 def reaction_rows(fa: Any, i: int, nt: Any = "en") -> list[tuple[str, ...]]:

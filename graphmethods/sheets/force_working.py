@@ -30,7 +30,8 @@ from typing import Any
 
 from graphmethods.scene import notation as get_notation
 from graphmethods.scene.notation import Notation
-from graphmethods.sheets import forces as SF
+from graphmethods.scene.numbers import round_off_zero
+from graphmethods.sheets.force_symbols import force_symbol
 
 #: a moment equation is printed only when its terms sum to zero within this share of the largest
 CLOSES = 1e-6
@@ -58,8 +59,8 @@ def inertia_working(case: Any, fa: Any, i: int, nt: Notation | str = "en") -> li
         if (link_number(case, mass.link, mass.point), mass.point) != (it.link, it.at):
             continue                                         # not the same mass: nothing printed for it
         k = it.link
-        F = SF.round_off_zero(float(abs(it.F_i[i])), big_F)
-        M = SF.round_off_zero(float(it.M_i[i]), big_M)
+        F = round_off_zero(float(abs(it.F_i[i])), big_F)
+        M = round_off_zero(float(it.M_i[i]), big_M)
         if F > 0.0 and mass.m > 0.0:
             a = float(abs(mo.a_[it.at][i]))
             out.append(f"F_{{{si}{k}}} = m_{_sub(k)}·a_{_sub(it.at)} = {n(mass.m, sig=5)}·{n(a, sig=4)}"
@@ -126,22 +127,22 @@ def moment_working(fa: Any, i: int, j: int, nt: Notation | str = "en") -> list[s
         for lbl, F, at, M in _on_link(fa, k, i, tuple(pl.links), key):
             mF = ((at - P).conjugate() * F).imag
             if F != 0 and abs(mF) > 0.0:
-                terms.append((f"M_{_sub(P_name)}({SF._markup(lbl, nt)})", mF))
+                terms.append((f"M_{_sub(P_name)}({force_symbol(lbl, nt)})", mF))
             if M != 0.0:
-                terms.append((SF._markup(lbl.replace("F_", "M_", 1), nt), M))
+                terms.append((force_symbol(lbl.replace("F_", "M_", 1), nt), M))
         big = max([abs(tau * l_AP)] + [abs(v) for _, v in terms])
         size = l_AP * max(abs(complex(r.R[i])) for r in fa.reactions.values())   # the position's moments
-        if SF.round_off_zero(big, size) == 0.0:
+        if round_off_zero(big, size) == 0.0:
             continue                                        # every term round-off: R^τ is 0, nothing to write
         if abs(tau * l_AP + sum(v for _, v in terms)) > CLOSES * big:
             continue                                        # a couple the sheet does not draw: no line
-        terms = [(s, v) for s, v in terms if SF.round_off_zero(abs(v), big) != 0.0]
+        terms = [(s, v) for s, v in terms if round_off_zero(abs(v), big) != 0.0]
         a_name = next((p for p in mo.points if abs(complex(mo.z[p][i]) - A) < 1e-12 * (1 + abs(A))), "A")
         arm = f"l_{{{a_name}{P_name}}}"
-        R_sym = SF._markup(label, nt)
+        R_sym = force_symbol(label, nt)
         symbols = f"ΣM_{_sub(P_name)}({k}) = 0:  {R_sym}·{arm}" + "".join(f" + {s}" for s, _ in terms) + " = 0"
         numbers = (f"{R_sym}·{nt.number(l_AP, sig=5)}" + "".join(_term(v, nt) for _, v in terms)
-                   + f" = 0, {R_sym} = {nt.number(SF.round_off_zero(tau, big / l_AP), sig=5)} {nt.unit('N')}")
+                   + f" = 0, {R_sym} = {nt.number(round_off_zero(tau, big / l_AP), sig=5)} {nt.unit('N')}")
         out += [symbols, numbers]
     return out
 
@@ -167,10 +168,10 @@ def lever_working(fa: Any, i: int, nt: Notation | str = "en", *, per_line: int =
     terms = []
     for f in lev.forces:
         F, M = abs(complex(f.F[i])), float(f.moment[i])
-        if SF.round_off_zero(F, F_big) != 0.0 and SF.round_off_zero(abs(M), big) != 0.0:
+        if round_off_zero(F, F_big) != 0.0 and round_off_zero(abs(M), big) != 0.0:
             terms.append((s_b * M < 0, f"{nt.number(F, sig=5)}·{nt.number(abs(M) / F, sig=4)}"))
     h_b = abs((pin.conjugate() * F_b).imag) / abs(F_b) if abs(F_b) > 0 else abs(pin)
-    fb = SF._markup("F_b", nt)
+    fb = force_symbol("F_b", nt)
     head = f"Σ M_p = 0:  {fb}·{nt.number(h_b, sig=4)}"
     parts = [f" {'−' if neg else '+'} {t}" for neg, t in terms]
     lines = [head + "".join(parts[:per_line])]
@@ -207,19 +208,19 @@ def power_working(fa: Any, i: int, nt: Notation | str = "en") -> list[str]:
         v = -1j * complex(f.image[i]) * mo.omega_1
         P = (v.conjugate() * F).real
         scale = max(scale, abs(F) * abs(v))
-        alpha = SF.round_off_zero(float(np.degrees(np.angle(F / v))), 180.0) if v != 0 else 90.0
-        terms.append((f"P({SF._markup(f.label, nt)}) = {n(abs(F), sig=5)}·{n(abs(v), sig=4)}·cos "
+        alpha = round_off_zero(float(np.degrees(np.angle(F / v))), 180.0) if v != 0 else 90.0
+        terms.append((f"P({force_symbol(f.label, nt)}) = {n(abs(F), sig=5)}·{n(abs(v), sig=4)}·cos "
                       f"{n(abs(alpha), sig=4)}° = ", P))
     for k, fs in fa.applied.items():
         w = float(mo.omega[k][i])
         for f in fs:
             M = float(f.M[i])
             if M != 0.0 and w != 0.0:
-                name = SF._markup(f.label.replace("F_", "M_", 1) if f.label.startswith("F_") else f.label, nt)
+                name = force_symbol(f.label.replace("F_", "M_", 1) if f.label.startswith("F_") else f.label, nt)
                 w_text = n(w, sig=4) if w > 0 else f"({n(w, sig=4)})"
                 terms.append((f"P({name}) = {n(M, sig=5)}·{w_text} = ", M * w))
                 scale = max(scale, abs(M) * max(abs(w), abs(w1)))
-    terms = [(t, P) for t, P in terms if SF.round_off_zero(abs(P), scale) != 0.0]
+    terms = [(t, P) for t, P in terms if round_off_zero(abs(P), scale) != 0.0]
     M_b = nt.sym("forces.M_b")
     total = sum(P for _, P in terms)
     return ([f"{M_b}·ω_{{1}} + ΣF·v·cos {nt.sym('cam.alpha')} + ΣM·ω = 0"] + [f"{t}{n(P, sig=5)} {W}" for t, P in terms]
@@ -241,9 +242,9 @@ def drawn_lengths(sides: list[tuple[str, complex, bool]], s_F: Any, nt: Notation
     big = max([abs(F) for _, F, _ in sides] + [0.0])
     out = []
     for lbl, F, known in sides:
-        if not known or SF.round_off_zero(abs(F), big) == 0.0 or "'" in lbl or abs(F) / s_F.per_mm < least_mm:
+        if not known or round_off_zero(abs(F), big) == 0.0 or "'" in lbl or abs(F) / s_F.per_mm < least_mm:
             continue
-        name = SF._markup(lbl, nt)
+        name = force_symbol(lbl, nt)
         out.append(f"{name}/μ_F = {nt.number(abs(F), sig=5)}/{nt.number(s_F.per_mm, sig=4)}"
                    f" = {nt.number(abs(F) / s_F.per_mm, sig=4)} {nt.unit('mm')}")
     return out

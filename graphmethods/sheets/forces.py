@@ -23,10 +23,9 @@ from __future__ import annotations
 
 import cmath
 import math
-import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any, TypeVar
+from typing import Any
 
 import numpy as np
 
@@ -34,19 +33,30 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Element, Line, Page, Scale, Scene, Table, Text, Vector, markup, notation as get_notation
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.numbers import within_roundoff
-from graphmethods.scene.primitives import THIN, Style
+from graphmethods.scene.numbers import round_off_zero
+from graphmethods.scene.primitives import THIN
 from graphmethods.scene.scale import pick_scale
-from graphmethods.sheets import force_working as FW  # a module: force_working imports forces back
+from graphmethods.sheets import force_working as FW
 from graphmethods.sheets.force_fit import arm_lines, drawn_tip
+from graphmethods.sheets.force_linkage import (  # noqa: F401  (LINK, plates: used by force_sheet_plans through here)
+    LINK,
+    ToMm,
+    _directions,
+    _drawn,
+    _guide_ends,
+    _linkage,
+    _links_of,
+    _moment_arc,
+    clear_direction,
+    plates,
+)
 from graphmethods.sheets.force_panels import lever_texts, scheme_texts
 from graphmethods.sheets.force_slides import column_texts as _column, fills_slide, plan_caption, slide_column, wrapped
+from graphmethods.sheets.force_symbols import force_symbol as _markup  # moved down: force_working uses it too
 from graphmethods.sheets.layout import TEXT_MM, Occupancy, Sheet, given_scale
 
 SMALL_MM = 2.8
 TABLE_MM = 3.2
-#: the links of the linkage: a main line (ГОСТ 2.303: 0.5–1.4 mm), heavier than the forces' shafts
-LINK = Style(width_mm=0.6)
 
 def analysed(case, *, position: int | None, phi_deg: float | None, m: int, gravity: bool = False):
     """The force analysis a force figure draws and the index of its position in it: position
@@ -66,28 +76,6 @@ def percent_text(d: float, nt: Notation) -> str:
     decimals (round-off, some 1e-14 %, prints 0.000 on every machine), the notation's decimal mark."""
     text = f"{abs(d):.3f}"
     return text.replace(".", nt.decimal)
-
-
-def _markup(label: str, nt: Notation | str | None = None) -> str:
-    """``R^τ_12`` → ``R^{τ}_{12}``, ``F_i2`` → ``F_{i2}`` (ru ``F_{и2}``, zh ``F_{I2}``), ``F_b`` → ``F_{b}``
-    (ru ``F_{ур}``), ``R_01@…`` → ``R_{01}``: the inertia and balancing subscripts as the books write them.
-
-    >>> _markup("F_i2"), _markup("M_i3", "ru"), _markup("F_i2", "zh"), _markup("F_b", "ru")
-    ('F_{i2}', 'M_{и3}', 'F_{I2}', 'F_{ур}')
-    """
-    label = label.split("@")[0]
-    m = re.fullmatch(r"([A-Za-z]+)(\^[^_]+)?_(.+)", label)
-    if not m:
-        return label
-    sup = "^{" + m.group(2)[1:] + "}" if m.group(2) else ""
-    sub = m.group(3)
-    if m.group(1) in ("F", "M") and not sup:
-        words = get_notation(nt)
-        if sub[:1] == "i" and (len(sub) == 1 or (sub[1:].isdigit() and sub[1:].isascii())):
-            sub = words.word("forces.sub_inertia") + sub[1:]
-        elif sub == "b":
-            sub = words.word("forces.sub_balance")
-    return f"{m.group(1)}{sup}_{{{sub}}}"
 
 
 def _inner_sides(poly, inner, pts: np.ndarray, i: int) -> list:
@@ -121,7 +109,6 @@ def _inner_sides(poly, inner, pts: np.ndarray, i: int) -> list:
 
 
 Box = tuple[float, float, float, float]
-ToMm = Callable[[complex], tuple[float, float]]
 #: a label to place: the point it belongs to (mm), its text, its element name
 LabelSpec = tuple[tuple[float, float], str, str]
 
@@ -292,18 +279,26 @@ def lettering_pad(page: Any) -> float:
     return 2.0 * lettering(page).label_mm
 
 
-AnElement = TypeVar("AnElement", bound=Element)
-
-
-def _drawn(occ: Occupancy, el: AnElement) -> AnElement:
-    """``el``, its lines kept clear by the labels placed later."""
-    occ.add_primitives(el.primitives())
-    return el
+#: where a label goes when nothing beside its point is free, with a leader: the rings of
+#: :meth:`~graphmethods.sheets.layout.Occupancy.place_label_with_leader` (above the point, then below), then,
+#: where a dense figure (a lever's images, a plan's lines of action) leaves them taken, farther out every 15°
+_UP, _DOWN = (45, 135, 20, 160, 65, 115, 90, 0, 180), (315, 225, 340, 200, 295, 245, 270)
+LEADER_RINGS = (tuple((r, side) for side in (_UP, _DOWN) for r in (8.0, 12.0, 16.0, 21.0, 28.0, 36.0, 48.0))
+                + tuple((r, tuple(range(0, 360, 15))) for r in (10.0, 14.0, 18.0, 24.0, 32.0, 40.0, 56.0, 64.0)))
 
 
 def _label(occ: Occupancy, where: tuple[float, float], text: str, name: str, *, within: Box) -> list[Element]:
-    """A label beside its point, or further off with a leader line when nothing beside it is free."""
-    lab, leader = occ.place_label_with_leader(where, text, size_mm=SMALL_MM, within=within)
+    """A label beside its point, or further off with a leader line (:data:`LEADER_RINGS`) when nothing beside it
+    is free; set over the ink, beside the point, only when no ring has room."""
+    lab = occ.first_free(where, text, ("ne", "nw", "se", "sw", "n", "s", "e", "w"), (1.2, 3.2), SMALL_MM, within)
+    leader = None
+    if lab is None:
+        found = next((f for r, angles in LEADER_RINGS
+                      if (f := occ.try_leaders(where, text, r, angles, size_mm=SMALL_MM, within=within)) is not None),
+                     None)
+        lab, leader = found if found is not None else (occ.place_label(where, text, ("ne",), size_mm=SMALL_MM), None)
+    else:
+        occ.add_label(lab)
     out: list[Element] = [Text((lab.x, lab.y), text, size_mm=SMALL_MM, anchor=lab.anchor, name=name)]
     if leader is not None:
         out.append(Line(leader[0], leader[1], style=THIN, name=f"leader-{name}"))
@@ -316,16 +311,6 @@ def _labels(occ: Occupancy, specs: Sequence[LabelSpec], within: Box) -> list[Ele
 
 
 # ----------------------------------------------------------------------------- the force plans
-
-def round_off_zero(value: float, size: float) -> float:
-    """``value``, or 0 when it is round-off beside ``size`` (the largest of its kind in this position):
-    a reaction of 2.7·10⁻²⁹ N beside forces of 10³ N is a zero the solver did not hit exactly.
-
-    >>> round_off_zero(2.67e-29, 3452.4), round_off_zero(-12.5, 3452.4)
-    (0.0, -12.5)
-    """
-    return 0.0 if within_roundoff(value, size) else value
-
 
 def _plans_results(fa: Any, i: int, nt: Notation, gravity: bool) -> tuple[list[tuple[str, str]], list[str]]:
     """The table of reactions (rows) and the lines of M_b by the three methods beside the force plans."""
@@ -440,7 +425,8 @@ def _group_plan(j: int, pl: Any, pts: np.ndarray, i: int, at: ToMm, nt: Notation
             A, B = np.array(a), np.array(b)
             far = tuple((B + L.overhang_mm * e).tolist()) if math.dist(a, b) >= L.min_mm else \
                 tuple((A + L.overhang_mm * e).tolist())
-            els.append(Line(tuple((A - L.overhang_mm * e).tolist()), far, style=THIN, name=f"direction-{j}-{s}"))
+            els.append(_drawn(occ, Line(tuple((A - L.overhang_mm * e).tolist()), far, style=THIN,
+                                        name=f"direction-{j}-{s}")))
     for t, inner in enumerate(pl.polygons[1:]):
         for (lbl, _F), z0, z1 in _inner_sides(poly, inner, pts, i):
             a, b = at(z0), at(z1)
@@ -545,7 +531,7 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
                                              nt, "the lever", page)
     occ = sheet.occ
     pole = at(0j)
-    els: list[Element] = [sheet.header(), Point(pole, radius_mm=0.7, name="pole")]
+    els: list[Element] = [sheet.header(), _drawn(occ, Point(pole, radius_mm=0.7, name="pole"))]
     els += [_drawn(occ, Line(pole, at(z), style=THIN, name=f"ray-{p}")) for p, z in images.items()
             if abs(z) / s_l.per_mm >= L.min_mm]
     vec_labels: list[LabelSpec] = []
@@ -566,146 +552,6 @@ def zhukovsky_forces(case: Any, position: int | None = None, *, phi_deg: float |
 
 
 # ----------------------------------------------------------------------------- the forces on the linkage
-
-def _links_of(mo: Any, i: int) -> tuple[list[tuple[str, str]], list[tuple[str, complex]]]:
-    """The linkage drawn in position ``i``: its links as segments between two points, and its sliders'
-    blocks (the point, the guide's direction)."""
-    lk = mo.linkage
-
-    def guide(link: str) -> complex:
-        return complex(np.broadcast_to(mo._state.e[link], (mo.n,))[i])
-
-    segs: list[tuple[str, str]] = [(lk.crank.centre, lk.crank.pin)]
-    blocks: list[tuple[str, complex]] = []
-    for g in lk.groups:
-        if g.kind == "RRR":
-            segs += [(g.P, g.C), (g.Q, g.C)]
-        elif g.kind == "RRP":
-            segs.append((g.P, g.C))
-            blocks.append((g.C, guide(g.links[1])))
-        elif g.kind == "RPR":
-            segs.append((g.Q, g.P))
-            blocks.append((g.P, guide(g.links[1])))
-        elif g.kind == "PRP":
-            blocks += [(g.C, guide(ln)) for ln in g.links]
-        elif g.kind == "triad":                   # the basic link as a triangle, the three binary links
-            B1, B2, B3 = g.inner
-            segs += [(B1, B2), (B2, B3), (B1, B3), *zip(g.outer, g.inner)]
-        else:
-            segs.append((g.P, g.R))
-            blocks.append((g.P, guide(g.links[0])))
-    segs += [(p.origin, p.name) for p in lk.points]
-    return segs, blocks
-
-
-def _linkage(mo: Any, i: int, z: dict[str, complex], at: ToMm, occ: Occupancy) -> list[Element]:
-    """The links, the fixed pivots, the sliders' blocks and the joints, kept clear by the labels."""
-    from graphmethods.sheets.kinematic_symbols import FixedPivot, PinJoint, SliderBlock
-
-    lk = mo.linkage
-    segs, blocks = _links_of(mo, i)
-    els: list[Element] = plates(segs, z, at)
-    els += [_drawn(occ, Line(at(z[a]), at(z[b]), style=LINK, name=f"link-{a}-{b}")) for a, b in segs
-            if abs(z[a] - z[b]) > 0]
-    els += _guides(mo, blocks, at)
-    els += [FixedPivot(at(z[p]), name=f"pivot-{p}") for p in lk.ground]
-    els += [SliderBlock(at(z[p]), angle_deg=math.degrees(math.atan2(u.imag, u.real)), name=f"block-{j}")
-            for j, (p, u) in enumerate(blocks)]
-    joints = {q for s in segs for q in s} - set(lk.ground)
-    els += [PinJoint(at(z[p]), name=f"joint-{p}") for p in sorted(joints)]
-    for el in els:
-        occ.add_primitives(el.primitives())
-    return els
-
-
-def plates(segs: Sequence[tuple[str, str]], z: dict[str, complex], at: ToMm) -> list[Element]:
-    """The links with three joints among ``segs`` (a triad's basic link) drawn as hatched plates
-    (:mod:`graphmethods.sheets.plates`)."""
-    from graphmethods.sheets.plates import plate, triangles
-
-    return [el for tri in triangles([(a, b) for a, b in segs if a in z and b in z])
-            for el in plate([at(z[p]) for p in tri], name="plate-" + "".join(tri))]
-
-
-def _strokes(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[tuple[int, complex, complex]]:
-    """The blocks that slide on the frame (along one fixed line in every position): each one's index and the
-    two ends of its stroke (m, complex)."""
-    out = []
-    for j, (p, u) in enumerate(blocks):
-        zs = np.asarray(mo.z[p], dtype=complex).reshape(-1)
-        if abs(u) == 0 or np.ptp(((zs - zs[0]) * u.conjugate()).imag) > 1e-9 * (1.0 + float(np.ptp(np.abs(zs)))):
-            continue                                # a guide on a moving link, or not along a fixed line
-        e = u / abs(u)
-        s = ((zs - zs[0]) * e.conjugate()).real
-        out.append((j, complex(zs[0] + s.min() * e), complex(zs[0] + s.max() * e)))
-    return out
-
-
-def _guide_ends(mo: Any, blocks: Sequence[tuple[str, complex]]) -> list[complex]:
-    """The ends of the frame's guides (m): the scheme is scaled to hold them."""
-    return [z for _, a, b in _strokes(mo, blocks) for z in (a, b)]
-
-
-def _guides(mo: Any, blocks: Sequence[tuple[str, complex]], at: ToMm) -> list[Element]:
-    """The hatched guide of each block that slides on the frame (its guide's direction the same in every
-    position), along the block's whole stroke and a block's length beyond either end."""
-    from graphmethods.sheets.kinematic_symbols import Guide
-
-    out: list[Element] = []
-    for j, za, zb in _strokes(mo, blocks):
-        a, b = at(za), at(zb)
-        d = math.dist(a, b)
-        if d == 0:
-            continue
-        e = ((b[0] - a[0]) / d, (b[1] - a[1]) / d)
-        reach = 8.0                                 # mm beyond the stroke: the block's half length and more
-        out.append(Guide((a[0] - reach * e[0], a[1] - reach * e[1]), (b[0] + reach * e[0], b[1] + reach * e[1]),
-                         side=-1 if e[0] >= 0 else 1, name=f"guide-{j}"))
-    return out
-
-
-def _directions(w: complex, z: dict[str, complex], segs: Sequence[tuple[str, str]]) -> list[float]:
-    """The directions (degrees, counterclockwise from +x) in which the links leave the point ``w`` (m): toward
-    both ends of a link through it, toward the other end of a link ending at it.
-
-    >>> _directions(0j, {"A": -1 + 0j, "B": 1 + 0j, "C": 1j}, [("A", "B"), ("C", "A")])
-    [180.0, 0.0]
-    """
-    out: list[float] = []
-    for a, b in segs:
-        za, zb = z[a], z[b]
-        d = zb - za
-        if abs(d) == 0:
-            continue
-        t = ((w - za) * d.conjugate()).real / abs(d) ** 2
-        if -1e-9 <= t <= 1 + 1e-9 and abs(w - (za + t * d)) <= 1e-9 * abs(d):     # w on the link
-            out += [math.degrees(cmath.phase(e - w)) for e in (za, zb) if abs(e - w) > 1e-9 * abs(d)]
-    return out
-
-
-def clear_direction(avoid: Sequence[float]) -> float:
-    """The direction (degrees, a multiple of 15°, straight up first) farthest from every direction of ``avoid``:
-    where an arc about a joint keeps off its links and forces.
-
-    >>> clear_direction([0.0, 180.0]), clear_direction([90.0]), clear_direction([])
-    (90.0, 270.0, 90.0)
-    """
-    best, best_gap = 90.0, -1.0
-    for mid in range(90, 450, 15):
-        gap = min((abs((mid - a + 180.0) % 360.0 - 180.0) for a in avoid), default=180.0)
-        if gap > best_gap + 1e-9:
-            best, best_gap = float(mid % 360), gap
-    return best
-
-
-def _moment_arc(centre: tuple[float, float], radius_mm: float, sweep_deg: float, avoid: Sequence[float],
-                **kw: Any) -> Element:
-    """A moment's arc of ``sweep_deg`` (signed: its sense) about ``centre``, its middle away from ``avoid``."""
-    from graphmethods.sheets.kinematic_symbols import RotationArrow
-
-    return RotationArrow(centre, radius_mm=radius_mm, start_deg=clear_direction(avoid) - sweep_deg / 2,
-                         sweep_deg=sweep_deg, **kw)
-
 
 def _applied(forces: Sequence[tuple[str, complex, complex, float]], at: ToMm, s_F: Scale, nt: Notation,
              occ: Occupancy, L: ForceFigureLayout,
@@ -769,11 +615,11 @@ def force_scheme(case: Any, position: int | None = None, *, phi_deg: float | Non
     forces = [(lbl, F, at_, round_off_zero(M, M_size)) for lbl, F, at_, M in forces]
     if F_max == 0.0:
         raise InputError("no force acts in this position; there is nothing to draw")
-    cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1]))
+    cloud = np.array(list(z.values()) + _guide_ends(mo, _links_of(mo, i)[1], i))
     area, column, s_l, s_F, at = _scaled(sheet, texts, L, cloud, [(w, F) for _, F, w, _ in forces], mu_l, mu_F, nt,
                                          "the scheme", page)
     occ = sheet.occ
-    els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ)]
+    els: list[Element] = [sheet.header(), *_linkage(mo, i, z, at, occ, area)]
     labels: list[LabelSpec] = [(at(z[p]), markup.lowered_digits(p), f"point-{p}") for p in sorted(z)]
     segs, _blocks = _links_of(mo, i)
 

@@ -38,6 +38,7 @@ from graphmethods.sheets.linkage_figures import (
     broken_behind,
 )
 from graphmethods.sheets.plates import Plate, body_outline, link_bodies
+from graphmethods.sheets.scheme_slide import SLIDE_FACTS_GAP_MM, overlaps, positions_table, slide_facts
 from graphmethods.units import convenient_at_least
 
 # ----------------------------------------------------------------------------- 1. the kinematic scheme
@@ -478,7 +479,7 @@ def _scheme_facts(pos, ext: _Extreme | None, nt) -> list[str]:
 
 def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | None = 0, trajectories: bool = True,
                      notation="en", page=None, title=None, problem=None, title_block: bool = True,
-                     name: str = "kinematic-scheme") -> Scene:
+                     name: str = "kinematic-scheme", positions: bool = True) -> Scene:
     """The linkage in its m positions on one drawing to the length scale μ_l (план механизма).
 
     Position ``thick`` (0 by default, as textbooks draw it) has thick links, every other position
@@ -507,6 +508,10 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     title, problem : str, optional
         Title (markup) and the problem's name in the title block (default: the problem file's name, in
         the notation's language when the file gives it in several).
+    positions : bool
+        On a slide, the table of the output's positions beside a linkage that leaves the room
+        (:func:`graphmethods.sheets.scheme_slide.positions_table`); none when a value of the drawing would
+        run into it.
 
     Raises
     ------
@@ -527,9 +532,14 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     sheet = Sheet(nt=nt, page=page, title=title or nt.word("kinematics.scheme", m=len(g.drawn)),
                   problem=lk.problem if problem is None else problem, title_block=title_block)
     facts = _scheme_facts(g.pos, g.ext, nt)
-    column = slide_facts(facts + _link_lengths(g, nt), sheet, page)   # a slide's column right of the drawing
-    s_l, f = _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay,
-                           right=min((e.at[0] - SLIDE_FACTS_GAP_MM for e in column), default=None))
+    facts_column = slide_facts(facts + _link_lengths(g, nt), sheet, page,        # a slide's column right of the
+                               caption_room_mm=lay.caption_room_mm)               # drawing
+    table, (s_l, f) = positions_table(
+        g.pos if positions else None, nt, sheet, page, min((e.at[0] - SLIDE_FACTS_GAP_MM for e in facts_column),
+                                                         default=None),
+        caption_room_mm=lay.caption_room_mm, scale_at=lambda right: _scheme_scale(g, sheet, mu_l, nt.unit("m"), lay,
+                                                                                  right=right))
+    column: list[Element] = [*facts_column, *table]
 
     def P(xy) -> tuple[float, float]:
         return f.pt(xy[0], xy[1])
@@ -552,6 +562,10 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
     guides = {e.name: e for e in symbol_els if isinstance(e, Guide)}
     labels = _scheme_names(g, P, occ, sheet.box, hard, lay, leaders, guides) + [rot_label(occ, leaders)]
     values = [label_bbox(p) for e in dims + labels for p in e.primitives() if isinstance(p, Label)]
+    if table and any(overlaps(table[0], e) for e in dims + labels + numbers):       # the stroke's value ran into it
+        return kinematic_scheme(linkage, m=m, mu_l=mu_l, thick=thick, trajectories=trajectories, notation=notation,
+                                page=page, title=title, problem=problem, title_block=title_block, name=name,
+                                positions=False)
     thin_els = _broken_lines(thin_els, values)
     summary = column or ([Text((sheet.box[0], sheet.caption_y - lay.summary_above_mm), ";   ".join(facts),
                                size_mm=TEXT_MM, name="summary")] if facts else [])
@@ -561,43 +575,6 @@ def kinematic_scheme(linkage, *, m: int | None = None, mu_l=None, thick: int | N
                 + labels + numbers + summary)
     elements += sheet.captions(scales, legend=legend, reserve=True)
     return sheet.scene(elements, scales, name=name, notes=(s_l.note,) if s_l.note else ())
-
-
-#: a slide's facts column: its share of the width, and the gap left of it, mm
-SLIDE_FACTS_SHARE, SLIDE_FACTS_GAP_MM = 0.28, 8.0
-
-
-def slide_facts(facts: Sequence[str], sheet: Sheet, page: Any) -> list[Text]:
-    """On a slide, the scheme's facts (extreme positions, θ, K, the swing, the lengths) as a column at the right,
-    lettered as the slide's values (5 mm once enlarged) and wrapped to :data:`SLIDE_FACTS_SHARE` of the width,
-    one paragraph each, all named ``summary``; elsewhere none (the sheet writes them in a line over its captions).
-    A tall linkage (the shaper, a two-slider) filled a third of a slide's width with its facts in one 3 mm line
-    under it."""
-    from graphmethods.scene.markup import text_width_mm
-    from graphmethods.scene.steps import wrap
-    from graphmethods.sheets.engine.lettering import is_slide, lettering
-
-    if page is None or not is_slide(page) or not facts:
-        return []
-    size = lettering("SLIDE").value_mm / float(getattr(page, "enlarged", 1.0))
-    x0, _, x1, _ = sheet.box
-    width = SLIDE_FACTS_SHARE * (x1 - x0)
-    left = x1 - max(text_width_mm(line, size) for f in facts for line in wrap(f, size, width))
-    paragraphs = [wrap(f, size, width) for f in facts]
-    lines = sum(len(p) for p in paragraphs)
-    # the paragraphs spread down the drawing's height (from the title to over the captions), a line to two lines
-    # apart
-    room = sheet.caption_y - SCHEME_LAYOUT.caption_room_mm - (sheet.top + 2.0 + size)
-    extra = min(4.0 * size, max(2.5 * size, (room - 1.5 * size * (lines - len(paragraphs)))
-                                / max(len(paragraphs) - 1, 1)))
-    out: list[Text] = []
-    y = sheet.top + 2.0 + size
-    for p in paragraphs:
-        for line in p:
-            out.append(Text((left, y), line, size_mm=size, name="summary"))
-            y += 1.5 * size
-        y += extra - 1.5 * size                         # the next paragraph starts ``extra`` under this one's last line
-    return out
 
 
 def _link_lengths(g: _SchemeGeometry, nt) -> list[str]:

@@ -166,6 +166,8 @@ class Occupancy:
     def __init__(self, *, pad_mm: float = 0.6):
         self.pad = pad_mm
         self.segments: list[tuple] = []
+        self._flat: list[float] | None = []      # the segments' numbers in order (x0, y0, x1, y1, ...), kept by
+        #                                          add_line for segment_array (None once the list is edited by hand)
         self.boxes: list[Box] = []
         self._seg = np.empty((0, 4))
         self._box = np.empty((0, 4))
@@ -175,8 +177,23 @@ class Occupancy:
         self._boxes_indexed = 0
 
     def add_line(self, points) -> None:
+        flat = self._flat
+        if isinstance(points, (list, tuple, np.ndarray)) and len(points) > 8:   # many: as float() of each, at once
+            try:
+                a = np.asarray(points, dtype=float).reshape(len(points), 2)
+            except ValueError:
+                a = None
+            if a is not None:
+                pts = list(map(tuple, a.tolist()))
+                self.segments.extend(zip(pts, pts[1:]))
+                if flat is not None:
+                    flat.extend(np.concatenate((a[:-1], a[1:]), axis=1).ravel().tolist())
+                return
         pts = [tuple(map(float, p)) for p in points]
         self.segments.extend(zip(pts, pts[1:]))
+        if flat is not None:
+            for p, q in zip(pts, pts[1:]):
+                flat += (p[0], p[1], q[0], q[1])
 
     def add_box(self, box: Box) -> None:
         x0, y0, x1, y1 = map(float, box)
@@ -202,8 +219,13 @@ class Occupancy:
 
     def segment_array(self) -> np.ndarray:
         """The registered segments as an (n, 4) array of ``x0, y0, x1, y1`` (mm), kept up to date."""
-        if len(self._seg) != len(self.segments):
-            new = np.asarray(self.segments[len(self._seg):], dtype=float).reshape(-1, 4)
+        n, have, flat = len(self.segments), len(self._seg), self._flat
+        if have != n:
+            if flat is not None and len(flat) == 4 * n and have < n:
+                new = np.array(flat[4 * have:]).reshape(-1, 4)
+            else:                               # the list edited by hand: read from it (and from now on)
+                self._flat = None
+                new = np.asarray(self.segments[have:], dtype=float).reshape(-1, 4)
             self._seg = np.vstack((self._seg, new))
         return self._seg
 
@@ -330,10 +352,11 @@ class Occupancy:
         if len(near) * len(grown) > _MANY_PAIRS:
             return self._free_of_many(ok, grown, near)
         pairs: list[tuple[int, int]] = []
+        near_ext = [(k, ext[k]) for k in near]
         for a, g in grown.items():              # each box against the segments near it (as _near)
             x0, y0, x1, y1 = g[0] - e, g[1] - e, g[2] + e, g[3] + e
-            pairs.extend((a, k) for k in near
-                         if ext[k][0] <= x1 and ext[k][2] >= x0 and ext[k][1] <= y1 and ext[k][3] >= y0)
+            pairs.extend((a, k) for k, (lo_x, lo_y, hi_x, hi_y) in near_ext
+                         if lo_x <= x1 and hi_x >= x0 and lo_y <= y1 and hi_y >= y0)
         if len(pairs) <= _FEW:         # a few pairs: the scalar test is quicker than numpy's set-up
             segs = self.segments
             for a, k in pairs:

@@ -223,26 +223,41 @@ def crossed_labels(fig: Scene) -> tuple[str, ...]:
 
 
 def note_free(fig: Scene) -> Callable[[Text], bool]:
-    """A test of a text against the figure's ink: whether no line, arrow or circle of ``fig`` crosses its
+    """A test of a text against the figure's ink and text: whether no line, arrow or circle of ``fig`` crosses its
     glyphs (as the figure-quality measure judges a label crossed; the note "drawn z : 1" is added after the
-    figure's own labels were placed, and a ray may run up to the page's top).
+    figure's own labels were placed, and a ray may run up to the page's top) and no text of ``fig`` lies under
+    them (the six-bar press's stroke "H = 270,8 мм" stood under the ru note at the top of its scheme's slide).
 
     >>> from graphmethods.scene import Line, Page, Scene, Text
-    >>> free = note_free(Scene(Page("A4"), (Line((0, 10), (100, 10), name="l"),)))
+    >>> free = note_free(Scene(Page("A4"), (Line((0, 10), (100, 10), name="l"), Text((10, 50), "H", name="h"))))
     >>> free(Text((10, 11), "crossed", size_mm=3.5)), free(Text((10, 30), "clear", size_mm=3.5))
     (False, True)
+    >>> free(Text((8, 50), "over H", size_mm=3.5))
+    False
     """
     import numpy as np
 
     from graphmethods.render.recording import record
+    from graphmethods.scene.elements import label_bbox
     from graphmethods.scene.primitives import Label
-    from graphmethods.sheets.engine.quality import boxes_crossed, glyph_box, segments_marked
+    from graphmethods.sheets.engine.quality import OVERLAP_MM, boxes_crossed, glyph_box, segments_marked
 
-    seg, _ = segments_marked(record(fig))
+    rec = record(fig)
+    seg, _ = segments_marked(rec)
+    labels = [c.data for c in rec.calls if c.kind == "text"]
+    # as the measure judges text over text: across by the glyphs, up and down by the whole line
+    gx = np.array([glyph_box(lab) for lab in labels], dtype=float).reshape(-1, 4)
+    ly = np.array([label_bbox(lab) for lab in labels], dtype=float).reshape(-1, 4)
 
     def free(text: Text) -> bool:
-        boxes = np.array([glyph_box(p) for p in text.primitives() if isinstance(p, Label)], dtype=float)
-        return not len(seg) or not bool(boxes_crossed(seg, boxes.reshape(-1, 4)).any())
+        own = [p for p in text.primitives() if isinstance(p, Label)]
+        boxes = np.array([glyph_box(p) for p in own], dtype=float).reshape(-1, 4)
+        lines = np.array([label_bbox(p) for p in own], dtype=float).reshape(-1, 4)
+        if len(seg) and bool(boxes_crossed(seg, boxes).any()):
+            return False
+        ox = np.minimum(boxes[:, None, 2], gx[None, :, 2]) - np.maximum(boxes[:, None, 0], gx[None, :, 0])
+        oy = np.minimum(lines[:, None, 3], ly[None, :, 3]) - np.maximum(lines[:, None, 1], ly[None, :, 1])
+        return not bool(((ox > OVERLAP_MM) & (oy > OVERLAP_MM)).any())
 
     return free
 

@@ -1,5 +1,5 @@
 """The speed ω(φ) and the angular acceleration ε(φ) of the exact steady motion against the crank angle
-(split out of :mod:`graphmethods.sheets.dynamics`, which re-exports them)."""
+(split out of :mod:`graphmethods.sheets.dynamics`, whose graph builder they use)."""
 
 from __future__ import annotations
 

@@ -35,17 +35,16 @@ True
 from __future__ import annotations
 
 import pathlib
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from graphmethods.errors import InputError
-from graphmethods.scene import Axis, Page, Scale, Scene, markup, notation as get_notation
-from graphmethods.scene.markup import text_width_mm
+from graphmethods.scene import Page, Scene
 from graphmethods.scene.notation import Notation
-from graphmethods.scene.steps import LINE_PITCH, BuildUp, Rule, partition, wrap
+from graphmethods.scene.steps import BuildUp, Rule
 from graphmethods.sheets.projector import (  # noqa: F401  (re-exported: the steps' slides live here too)
     CAPTION_GAP_MM,
     KEEP_SIZE,
@@ -59,124 +58,18 @@ from graphmethods.sheets.projector import (  # noqa: F401  (re-exported: the ste
     projector_figure,
     smallest_text_mm,
 )
-
-#: the caption band under the figure, mm, and the caption size, by page kind
-SLIDE_BAND_MM, SLIDE_CAPTION_MM = 20.0, 6.5
-SHEET_BAND_MM, SHEET_CAPTION_MM = 14.0, 5.0
-
-
-# ----------------------------------------------------------------------------- pages
-
-def step_page(page="slide") -> tuple[Page, tuple[float, float, float, float], float, bool]:
-    """The page a step figure is built on, the caption box under it, the caption size and whether the
-    figure gets a title block.
-
-    ``"slide"`` is a 16:9 slide (338.7 × 190.5 mm, no frame, no title block, 6.5 mm captions for a
-    projector); ``"A4"`` … ``"A1"`` are landscape sheets with a frame and a title block. A
-    :class:`~graphmethods.scene.Page` is used with its bottom margin grown by the caption band.
-
-    >>> page, box, size, tb = step_page("slide")
-    >>> (page.width_mm, page.height_mm), box, size, tb
-    ((338.7, 190.5), (8.0, 168.0, 330.7, 186.5), 6.5, False)
-    """
-    if isinstance(page, Page):
-        base = page
-    else:
-        name = str(page).strip()
-        if name.lower() == "slide":
-            base = SLIDE_PAGE
-        elif name.upper() in ("A4", "A3", "A2", "A1"):
-            base = Page(name.upper(), "landscape", frame=True)
-        else:
-            raise InputError(f"page {page!r}: use slide, A4, A3, A2 or A1")
-    slide = base.size == "SLIDE"
-    z = float(getattr(base, "enlarged", 1.0))          # a design page: everything 1/z of the slide's
-    band = (SLIDE_BAND_MM if slide else SHEET_BAND_MM) / z
-    t, r, b, left = base.margins_mm
-    page_ = base.with_(margins_mm=(t, r, b + band, left))
-    # the caption box starts a little below the figure's page: the descenders of the figure's last
-    # line (its scale captions, 1 mm above the page's inner box) stay out of it
-    box = (left, base.height_mm - b - band + CAPTION_GAP_MM / z, base.width_mm - r, base.height_mm - b)
-    return page_, box, (SLIDE_CAPTION_MM if slide else SHEET_CAPTION_MM) / z, not slide
-
-
-def step_start(notation: str | Notation = "en", page: str | Page = "slide") -> tuple[
-        Notation, tuple[Page, tuple[float, float, float, float], float, bool]]:
-    """What every step figure starts from: its notation and :func:`step_page`'s page, caption box (mm),
-    caption size (mm) and title-block flag.
-
-    >>> nt, (page, box, size, tb) = step_start("ru", "A3")
-    >>> nt.code, page.size, size, tb
-    ('ru', 'A3', 5.0, True)
-    """
-    return get_notation(notation), step_page(page)
-
-
-
-
-def _fit(caption_mm: float, box, captions) -> float:
-    """The caption size: the given one, or smaller until every caption, broken into lines at
-    spaces, fits the box (as many lines as its height holds)."""
-    from graphmethods.scene.elements import ASCENT, DESCENT
-
-    width, height = box[2] - box[0] - 4.0, box[3] - box[1]
-    size = caption_mm
-    while size > 0.4 * caption_mm:
-        # n lines take (n − 1) pitches plus one line's height with a superscript and a subscript
-        tall = (ASCENT + 0.1 + DESCENT + markup.SUB_SHIFT) * size
-        rows = max(1, int((height - tall) // (LINE_PITCH * size)) + 1)
-        if all(len(wrap(f"{len(captions)}. {c}", size, width)) <= rows
-               and all(text_width_mm(line, size) <= width for line in wrap(f"{len(captions)}. {c}", size, width))
-               for c in captions):
-            return size
-        size *= 0.95
-    return size
-
-
-def _build(figure, rules, box, caption_mm, rest) -> BuildUp:
-    caps = [c for c, _ in rules]
-    return partition(figure, rules, caption_box=box, caption_mm=_fit(caption_mm, box, caps), rest=rest)
-
-
-def _axis_scale(figure, name: str) -> Scale:
-    """The scale of the figure's axis called ``name``."""
-    axis = figure.element(name)
-    if not isinstance(axis, Axis):
-        raise InputError(f"{figure.name}: {name} is not an axis")
-    return axis.scale
-
-
-def _text_of(figure, name: str) -> str:
-    """The text of the figure's element called ``name`` (empty when there is none)."""
-    return next((str(getattr(e, "text", "")) for e in figure.elements if e.name == name), "")
-
-
-def _starts(*prefixes: str) -> Callable[[str], bool]:
-    """Rule: the elements whose names begin with one of ``prefixes``."""
-    return lambda n: n.startswith(prefixes)
-
-
-def _leader_of(names):
-    """Rule: the element named one of ``names``, or a leader line drawn to it (``leader-NAME``)."""
-    wanted = set(names)
-    return lambda n: n in wanted or (n.startswith("leader-") and n[len("leader-"):] in wanted)
-
+from graphmethods.sheets.step_rules import (  # moved down: the build-ups split out of this module use them too
+    _axis_scale,
+    _build,
+    _kept,
+    _leader_of,
+    _starts,
+    _text_of,
+    step_page,  # noqa: F401  (re-exported: a build-up's page, as before)
+    step_start,
+)
 
 # ----------------------------------------------------------------------------- velocity plan
-
-def _draws(rule: Rule, names: set[str]) -> bool:
-    """Whether ``rule`` (a name, names or a predicate) takes any of ``names``."""
-    if callable(rule):
-        return any(rule(n) for n in names)
-    return bool(({rule} if isinstance(rule, str) else set(rule)) & names)
-
-
-def _kept(rules: Sequence[tuple[str, Rule]], figure: Scene) -> list[tuple[str, Rule]]:
-    """``rules`` without the steps that draw nothing of their own (an image that coincides with one drawn
-    before); the last step, which takes what no rule names, stays."""
-    drawn = {e.name for e in figure.elements}
-    return [r for r in rules[:-1] if _draws(r[1], drawn)] + [rules[-1]]
-
 
 def velocity_plan_steps(linkage: Any, position: int | None = None, *, notation: Any = "en", page: Any = "slide",
                         m: int | None = None, omega_1: float | None = None, mu_v: Any = None) -> BuildUp:

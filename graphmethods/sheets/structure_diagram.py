@@ -33,6 +33,7 @@ from graphmethods.scene.primitives import MAIN, Circle, Style
 from graphmethods.sheets.engine import Ink, Panel, Split, extent_of, lettering, shares_for
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.kinematic_symbols import JOINT, FixedPivot, Guide, PinJoint, SliderBlock
+from graphmethods.sheets.yoke import yoke
 from graphmethods.units import convenient_at_least
 
 ROMAN = {1: "I", 2: "II", 3: "III"}
@@ -153,48 +154,15 @@ def _link_ink(pts: list[complex], name: str, to: Any) -> Element:
     return Line(xy[far[0]], xy[far[1]], MAIN, name=name)
 
 
-#: a yoke as drawn in the structure diagram (mm): the slot's half length and half width, the rod's length
-YOKE_SLOT_MM = (12.0, 2.6)
-YOKE_ROD_MM = 26.0
-
-
-def _room(c: np.ndarray, d: np.ndarray, box: tuple[float, float, float, float]) -> float:
-    """How far (mm) from ``c`` along the unit ``d`` the box reaches."""
-    ts = [(lim - c[i]) / d[i] for i, lims in ((0, (box[0], box[2])), (1, (box[1], box[3]))) for lim in lims
-          if abs(d[i]) > 1e-9]
-    return min([t for t in ts if t > 0] or [0.0])
-
-
 def _yoke(pin: complex, u: complex, slot_angle: float, z: dict[str, complex], to: Any, k: str,
           box: tuple[float, float, float, float]) -> tuple[list[Element], tuple[float, float]]:
-    """A yoke (a slotted crosshead, link ``k``) as the textbooks draw it: its slot through the block's ``pin``
-    at ``slot_angle`` (rad) as two parallel bars closed at the ends, a rod from the slot along the guide
-    (direction ``u``, away from the other joints) and the yoke's block on the frame's hatched guide at the
-    rod's far part. Returns the elements and the middle of the rod (mm)."""
+    """A yoke (a slotted crosshead, link ``k``) as the textbooks draw it (:func:`graphmethods.sheets.yoke.yoke`):
+    its slot through the block's ``pin`` at ``slot_angle`` (rad), a rod from the slot along the guide (direction
+    ``u``, away from the other joints) and the yoke's block on the frame's hatched guide. Returns the elements and
+    the middle of the rod (mm)."""
     c = np.asarray(to(pin))
-    sd = np.array([math.cos(slot_angle), -math.sin(slot_angle)])       # on paper (y down)
-    nd = np.array([-sd[1], sd[0]])
-    half, w = YOKE_SLOT_MM
-    ud = np.array([u.real, -u.imag]) / max(abs(u), 1e-12)
     others = [np.asarray(to(q)) - c for q in z.values() if abs(q - pin) > 1e-12]
-    if others and sum(float(o @ ud) for o in others) > 0:                 # the rod away from the crank ...
-        ud = -ud
-    if _room(c, ud, box) < _room(c, -ud, box) and _room(c, ud, box) < YOKE_ROD_MM + 12.0:   # ... or where there
-        ud = -ud                                                                          # is more room
-    rod_mm = max(12.0, min(YOKE_ROD_MM, (_room(c, ud, box) - YOKE_SLOT_MM[1] - 9.5) / 0.62))
-    off = nd if float(nd @ ud) >= 0 else -nd                             # the slot's side the rod leaves from
-    corners = [c - sd * half - nd * w, c + sd * half - nd * w, c + sd * half + nd * w, c - sd * half + nd * w]
-    slot = Polyline(tuple((float(q[0]), float(q[1])) for q in corners), MAIN, closed=True, name=f"yoke-{k}-slot")
-    start = c + off * w
-    end = start + ud * rod_mm
-    rod = Line(tuple(start.tolist()), tuple(end.tolist()), MAIN, name=f"yoke-{k}-rod")
-    bc = start + ud * (rod_mm * 0.62)
-    ang = math.degrees(math.atan2(-ud[1], ud[0]))
-    guide = Guide(tuple((bc - ud * 9.0).tolist()), tuple((bc + ud * 9.0).tolist()), name=f"guide-{k}")
-    block = SliderBlock(tuple(bc.tolist()), angle_deg=ang, length_mm=7.0, height_mm=4.0, pin=False,
-                        name=f"yoke-{k}-block")
-    mid = start + ud * (rod_mm * 0.25)
-    return [slot, rod, guide, block], (float(mid[0]), float(mid[1]))
+    return yoke(c, slot_angle, np.array([u.real, -u.imag]) / max(abs(u), 1e-12), others, box, name=k)
 
 
 def _part_elements(part: Part, z: dict[str, complex], e: dict[str, complex], panel: Panel, ink: Ink,

@@ -18,5 +18,8 @@ PART = Style(width_mm=0.25, dash=(3.0, 1.2))
 LEVEL = Style(width_mm=0.18, dash=(4.0, 1.5))
 #: the rules of a table's cells
 CELL = Style(width_mm=0.18)
+#: a centre line, dash-dot (an axis of symmetry; a circle or curve of centres: a cam's pitch curve and base
+#: circle, a rocker's arc of roller centres)
+CENTRE_LINE = Style(width_mm=0.18, dash=(6.0, 1.2, 1.0, 1.2))
 
-__all__ = ["CELL", "LEVEL", "PART", "PROJECTION"]
+__all__ = ["CELL", "CENTRE_LINE", "LEVEL", "PART", "PROJECTION"]

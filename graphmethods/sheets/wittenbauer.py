@@ -35,7 +35,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from functools import partial
-from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -64,6 +63,8 @@ from graphmethods.sheets.dynamics import (
 from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
 from graphmethods.sheets.layout import Box, clear_tick_labels, tick_label_band
+from graphmethods.sheets.linkage_figures import broken_behind
+from graphmethods.sheets.tick_values import every_value as every_tick_written, over_rays
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)
@@ -241,8 +242,10 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         Where the abscissa starts (kg·m²): 0, or a suppressed zero near J_e,min (marked by a zigzag);
         ``res`` is then the construction with its ordinate axis there (:func:`offset_origin`).
     every_value : bool
-        Every tick with its value (a slide): where the curve or a ray would cover values, the ticks are spaced
-        wider (up to 4 times) until none is covered.
+        Every tick with its value (a slide): where the curve or a ray would cover values, the values go on the
+        other side of the J_e axis, or the ticks are spaced wider, or a J_e value that only a ray covers is
+        written and the ray broken behind it, or the covered ticks at an end of the range are left out
+        (:func:`graphmethods.sheets.tick_values.every_value`).
 
     Returns
     -------
@@ -266,7 +269,14 @@ def diagram_elements(res: WittenbauerResult, *, origin, nt, occ, clip, avoid=(),
         psi_els.append(axis_break((d.origin[0] + 5.0, d.origin[1]), f"{prefix}axis-J-break"))
     occ.register(curve, *rays, dim, *psi_els, *register_only)
     if page_axes is None:
-        ax_T, ax_J = _diagram_axes(d, occ, nt, every_value=every_value)
+        unrayed = None
+        if every_value:                 # what a value may not cross; a thin ray is broken behind it (ГОСТ 2.303)
+            unrayed = FastOccupancy()
+            unrayed.register(curve, dim, *psi_els, *register_only)
+        ax_T, ax_J = _diagram_axes(d, occ, nt, every_value=every_value, unrayed=unrayed)
+        if every_value:
+            rays = broken_behind(rays, [label_bbox(p) for p in replace(ax_J, label="").primitives()
+                                        if isinstance(p, Label)])
     else:                               # the page's own ΔT and J_e axes (a worksheet's): numbers keep off their values
         ax_T, ax_J = page_axes
         occ.register(ax_T, ax_J)
@@ -359,10 +369,11 @@ class _DiagramPlace:
                 oy - self.s_T.to_mm(self.T_lo) + lay.frame_mm)
 
 
-def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
-                  every_value: bool = False) -> tuple[Axis, Axis]:
+def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *, every_value: bool = False,
+                  unrayed: FastOccupancy | None = None) -> tuple[Axis, Axis]:
     """The ΔT and J_e axes through the origin (J_e from ``J_from``), their tick labels kept off what is drawn;
-    ``every_value``: no tick left without its value (:func:`diagram_elements`)."""
+    ``every_value``: no tick left without its value (:func:`diagram_elements`), the J_e values written over a ray
+    (``unrayed``: what is drawn but the rays) when nothing else writes them all (the scotch yoke's 0.25)."""
     ox, oy = d.origin
     s_T, s_J, T_lo, T_hi = d.s_T, d.s_J, d.T_lo, d.T_hi
 
@@ -386,45 +397,21 @@ def _diagram_axes(d: _DiagramPlace, occ: FastOccupancy, nt: Notation, *,
     ax_T = clear_tick_labels(ax_T, occ, keep_values=True)
     if every_value:
         step = d.ticks_T[1] - d.ticks_T[0] if len(d.ticks_T) > 1 else 1.0       # every k-th tick, 0 among them
-        ax_T = _every_value(ax_T, lambda k: clear_tick_labels(axis_T(tuple(
+        ax_T = every_tick_written(ax_T, lambda k: clear_tick_labels(axis_T(tuple(
             t for t in d.ticks_T if round(t / step) % k == 0)), occ, keep_values=True))
     occ.register(ax_T)
     ax_J = clear_tick_labels(ax_J, occ, keep_values=True, other_side=True)
     if every_value:
-        ax_J = _every_value(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True))
+        flip = "below" if ax_J.labels_side == "above" else "above"
+        ax_J = every_tick_written(ax_J, lambda k: clear_tick_labels(axis_J(k), occ, keep_values=True, other_side=True),
+                           other_side=lambda: clear_tick_labels(replace(axis_J(1), labels_side=flip), occ))
+        if unrayed is not None:
+            ax_J = every_tick_written(ax_J, lambda k: ax_J, other_side=lambda: over_rays(axis_J(1), unrayed, occ))
     occ.register(ax_J)
     band = tick_label_band(ax_J)
     if band is not None:                # a position number there would read as a value ("0 1 2 1.5 2")
         occ.add_box(band)
     return ax_T, ax_J
-
-
-def _off_origin(axis: Axis) -> list[tuple[float, str]]:
-    """The ticks of ``axis`` besides its origin (0 or a suppressed zero), with their values as written."""
-    labels = axis.tick_labels or ("",) * len(axis.ticks)
-    return [(t, lab) for t, lab in zip(axis.ticks, labels) if t != 0 and abs(t - axis.min_value) > 1e-12]
-
-
-def _every_value(axis: Axis, wider: Any) -> Axis:
-    """``axis`` if every tick besides the origin has its value written; else the first of ``wider(k)`` (the ticks
-    k = 2, 3, 4 times as far apart) that writes all of at least two, its origin labelled as ``axis`` labels it;
-    else ``axis`` (a tick without its value rather than ticks irregularly spaced)."""
-    def origin_as_given(alt: Axis) -> Axis:
-        labels = list(alt.tick_labels or ("",) * len(alt.ticks))
-        given = dict(zip(axis.ticks, axis.tick_labels or ()))
-        for i, t in enumerate(alt.ticks):
-            if t == 0 or abs(t - alt.min_value) <= 1e-12:
-                labels[i] = given.get(t, "")
-        return replace(alt, tick_labels=tuple(labels))
-
-    if all(lab for _, lab in _off_origin(axis)):
-        return axis
-    for k in (2, 3, 4):
-        alt = wider(k)
-        written = _off_origin(alt)
-        if len(written) >= 2 and all(lab for _, lab in written):
-            return origin_as_given(alt)
-    return axis                 # a tick left unwritten rather than ticks irregularly spaced
 
 
 def _rays(res: WittenbauerResult, d: _DiagramPlace, *, clip: tuple[float, float, float, float],
@@ -543,6 +530,23 @@ def _position_labels(res: WittenbauerResult, d: _DiagramPlace, occ: FastOccupanc
 
 
 def O1_on_sheet(res: WittenbauerResult, origin, clip) -> bool:
+    """Whether the rays' intersection O₁ falls inside the drawing's clip box.
+
+    Parameters
+    ----------
+    res : WittenbauerResult
+        The diagram's construction (``O1_mm``: O₁ from the origin, mm, y up).
+    origin : (float, float), mm
+        The diagram's origin on the page (y down).
+    clip : (float, float, float, float), mm
+        Left, top, right, bottom of the region the diagram may draw in.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> O1_on_sheet(SimpleNamespace(O1_mm=(-30.0, 40.0)), (50.0, 150.0), (10.0, 20.0, 200.0, 280.0))
+    True
+    """
     x, y = origin[0] + res.O1_mm[0], origin[1] - res.O1_mm[1]
     return clip[0] <= x <= clip[2] and clip[1] <= y <= clip[3]
 
@@ -764,6 +768,8 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
                            T_hi=T_hi, T_lo=T_lo, within=sheet.box, J_from=J_0, every_value=is_slide(sheet.probe))
     on_sheet = O1_on_sheet(res, origin, clip)
     rows = compact_rows(result_rows(res, nt, on_sheet=on_sheet, J_0=J_0))
+    if is_slide(sheet.probe):           # a slide's captions under the diagram state μ_J and μ_T: not twice
+        rows = tuple(r for r in rows if not r[0].startswith((nt.sym("dynamics.mu_J"), nt.sym("mu_T"))))
     w = _table(rows, (0, 0)).width_mm
     cands = [(x1 - w, y) for y in np.arange(sheet.top, sheet.caption_y - 40.0, 4.0)]
     cands += [(x, sheet.top) for x in np.arange(x1 - w, x0, -6.0)]
@@ -775,17 +781,5 @@ def wittenbauer_diagram(source, *, mu_J=None, mu_T=None, tangents: str = "exact"
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name, notes=notes)
 
 
-# split out of this module (dynamic_analysis_sheet.py, which imports this one), so that every name reads as
-# before: taken from there when asked for (either module may be imported first)
-if TYPE_CHECKING:
-    from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-
-
-def __getattr__(name: str) -> Any:
-    if name == "dynamic_analysis_sheet":
-        from graphmethods.sheets.dynamic_analysis_sheet import dynamic_analysis_sheet
-        return dynamic_analysis_sheet
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-__all__ = ["wittenbauer_diagram", "dynamic_analysis_sheet", "diagram_elements", "diagram_data", "DiagramData",
+__all__ = ["wittenbauer_diagram", "diagram_elements", "diagram_data", "DiagramData",
            "ray_span", "result_rows"]

@@ -1,5 +1,5 @@
 """The work diagrams by graphical integration: M_d, M_r(φ) over the works A_d, A_r(φ) over ΔE(φ), with the
-pole and its rays (split out of :mod:`graphmethods.sheets.calculus`, which re-exports them)."""
+pole and its rays (split out of :mod:`graphmethods.sheets.calculus`, whose common parts it uses)."""
 
 from __future__ import annotations
 
@@ -416,7 +416,9 @@ def work_diagrams(subject: Any, *, m: int = 12, H_mm: float | None = None, mu_M:
     column = _work_column(ws, (b_M, b_A, b_E), sheet.box[2], occ, nt, given=H_mm is not None, study=study,
                           work_unit=work_unit, floor=sheet.box[3])
     scales = (ws.s_phi, ws.s_M, ws.s_A)
-    elements = [sheet.header(), *els_M, *els_A, *els_E, *column, *sheet.captions(scales)]
+    # a slide's column states every scale beside its diagram: the captions under them wrote μ_φ, μ_M, μ_A twice
+    captions = [] if is_slide(sheet.probe) else sheet.captions(scales)
+    elements = [sheet.header(), *els_M, *els_A, *els_E, *column, *captions]
     how = "given" if H_mm is not None else "picked: smallest convenient H whose work diagrams fit"
     notes = tuple(n for n in (ws.s_phi.note, ws.s_M.note) if n) + (f"H = {ws.H:g} mm ({how})",)
     return Scene(sheet.page(scales), tuple(elements), title=sheet.title, notation=nt.code, name=name,

@@ -1,6 +1,6 @@
 """The Zhukovsky lever of a study's position: the velocity plan turned 90° as a lever, the load at the
 images of its points, the balancing force and moment (split out of :mod:`graphmethods.sheets.dynamics`,
-which re-exports it: ``dynamics.zhukovsky_lever`` reads as before)."""
+whose common parts it uses; ``sheets.zhukovsky_lever`` is this function)."""
 
 from __future__ import annotations
 
@@ -392,6 +392,18 @@ def _lever_names(study: Study, g: LeverGeometry, p_page: np.ndarray, img: dict[s
     return dots + labels
 
 
+def lever_law(nt: Notation) -> str:
+    """The lever's law in the notation's symbols, as the result table and the step caption write it (the zh step
+    wrote F·h where its table wrote F_r·h).
+
+    >>> from graphmethods.scene import notation
+    >>> lever_law(notation("zh"))
+    'F_r·h·μ_v/ω_1'
+    """
+    return (f"{nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/"
+            f"{nt.sym('dynamics.omega_1')}")
+
+
 def _lever_rows(g: LeverGeometry, nt: Notation, F_text: str, h_mm: float, s_v: Scale,
                 M_lever: float) -> tuple[tuple[str, str], ...]:
     """The result: M_r = F·h·μ_v/ω₁ worked out on the drawing, beside the power method's value."""
@@ -400,9 +412,7 @@ def _lever_rows(g: LeverGeometry, nt: Notation, F_text: str, h_mm: float, s_v: S
         (nt.word("dynamics.plan_turned"), f"{nt.sym('dynamics.omega_1')} = {value_text(nt, g.omega_1, 'rad/s')}"),
         (nt.word("dynamics.force"), F_text),
         (nt.word("dynamics.arm"), f"{nt.sym('dynamics.h')} = {nb(h_mm)} {nt.unit('mm')}"),
-        (nt.word("dynamics.by_lever"),
-         f"{nt.sym('M_r')} = {nt.sym('dynamics.F')}·{nt.sym('dynamics.h')}·{nt.sym('dynamics.mu_v')}/"
-         f"{nt.sym('dynamics.omega_1')}"),
+        (nt.word("dynamics.by_lever"), f"{nt.sym('M_r')} = {lever_law(nt)}"),
         ("", f"= {nb(g.F_abs)}·{nb(h_mm)}·{nb(s_v.per_mm)}/{nb(g.omega_1)}"),
         ("", f"= {value_text(nt, M_lever, 'N·m')}"),
         (nt.word("dynamics.by_power"), f"{nt.sym('M_r')} = {value_text(nt, g.load.M_r, 'N·m')}"),

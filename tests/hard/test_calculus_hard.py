@@ -12,6 +12,7 @@ from graphmethods.dynamics import graphical_calculus as gc
 from graphmethods.dynamics.study import Study
 from graphmethods.kinematics import SliderCrank, read_case
 from graphmethods.sheets import calculus
+from graphmethods.sheets.work_diagrams import work_diagrams
 
 PI = math.pi
 PRESS = pathlib.Path(__file__).resolve().parents[2] / "graphmethods" / "problems" / "data" / "slider_crank_press.json"
@@ -35,7 +36,7 @@ def test_moment_with_a_jump_work_diagram_is_exact_at_interval_ends_and_errs_only
         assert wd.A_r.accuracy.inside == pytest.approx(expect, rel=1e-9)
         assert wd.A_r.accuracy.inside_mm == pytest.approx(expect / wd.mu_A, rel=1e-9)
     # the figure draws the chords' ends on the exact integral and says: 0 at the ends, the corner inside
-    scene = calculus.work_diagrams(problems.w3(), m=12)
+    scene = work_diagrams(problems.w3(), m=12)
     mu_A = scene.scales()[2].per_mm
     pts = np.asarray(scene.element("chords-A_r").points)
     o = scene.element("axis-A").origin
@@ -95,7 +96,7 @@ def test_very_few_intervals_m6():
     kin = calculus.kinematic_diagrams(case, m=6)
     assert {f"ray-v-{k}" for k in range(1, 7)} <= {e.name for e in kin.elements}
     assert {f"dot-a-{k}" for k in range(7)} <= {e.name for e in kin.elements}
-    work = calculus.work_diagrams(case, m=6)
+    work = work_diagrams(case, m=6)
     assert len(work.element("chords-A_r").points) == 7
     rows6 = gc.accuracy_table(case, ms=(6, 12))
     for name in ("v by chords of s", "a by chords of v"):

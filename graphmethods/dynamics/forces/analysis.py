@@ -31,7 +31,6 @@ import numpy as np
 
 from graphmethods.dynamics.forces import prp, rpp, rpr, rrp, rrr, triad
 from graphmethods.dynamics.forces.base import (
-    GROUND,
     Force,
     ForcePlan,
     GroupForces,
@@ -45,7 +44,8 @@ from graphmethods.dynamics.forces.base import (
 from graphmethods.dynamics.forces.lever import Lever, power_balance, zhukovsky
 from graphmethods.dynamics.forces.statics import Cx, Fl, moment_about
 from graphmethods.errors import InputError
-from graphmethods.units import is_finite
+from graphmethods.kinematics.structure import GROUND
+from graphmethods.units import ROUNDOFF, is_finite
 
 #: standard gravity, m/s² (acts along −y of the file's frame)
 G_STANDARD = 9.81
@@ -204,11 +204,6 @@ def _rigid_refs(lk: Any) -> dict[str, tuple[str, str | None]]:
         else:
             refs[l2], refs[l3] = (g.P, g.R), (g.R, g.P)
     return refs
-
-
-#: a balancing moment below this share of its computation's scale is that computation's round-off (as
-#: :data:`graphmethods.scene.numbers.ROUNDOFF`, which this layer may not import)
-ROUNDOFF = 1e-9
 
 
 def _kinematic_scales(motion: Any) -> tuple[Fl, Fl]:

@@ -26,8 +26,6 @@ import numpy as np
 from graphmethods.dynamics.forces.statics import Cx, Fl, cross, moment_about
 from graphmethods.errors import InputError
 
-GROUND = "0"
-
 
 @dataclass(frozen=True, eq=False)
 class Force:

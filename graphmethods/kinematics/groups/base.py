@@ -29,10 +29,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from graphmethods.errors import AssemblyError, InputError
+from graphmethods.kinematics.structure import GROUND as GROUND  # the frame's number, for the groups' users
 from graphmethods.kinematics.vectors import ComplexArray, FloatArray
 from graphmethods.units import is_finite
-
-GROUND = "0"
 
 #: Below this many positions a group keeps what its velocity solution found (its arms and the two
 #: construction lines with their cross product) in :attr:`State.kept` for its acceleration

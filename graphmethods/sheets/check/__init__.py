@@ -58,7 +58,8 @@ __all__ = [
 
 from graphmethods.sheets.check.checking import check
 from graphmethods.sheets.check.problems import PROBLEM_IDS, CycleData, LinkageData, load_problem
-from graphmethods.sheets.check.report import MISTAKES, TOL_MM, TOL_REL, CheckReport, Item, Mistake
+from graphmethods.sheets.check.report import MISTAKES, CheckReport, Item, Mistake
+from graphmethods.sheets.check.tolerances import TOL_MM, TOL_REL
 from graphmethods.sheets.check.typed_answers import (
     KEY_KINDS,
     SCHEMA,

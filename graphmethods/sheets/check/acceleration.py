@@ -49,11 +49,8 @@ from graphmethods.kinematics.linkage import Linkage
 from graphmethods.scene import markup, notation as get_notation
 from graphmethods.scene.elements import Element, Line, Text, Vector
 from graphmethods.scene.primitives import Style
+from graphmethods.sheets.check.tolerances import TOL_DEG, TOL_MM, TOL_REL
 from graphmethods.sheets.worksheets.elements import RED, SMALL_MM, ColorText
-
-TOL_MM = 0.5
-TOL_DEG = 0.5
-TOL_REL = 1e-3
 
 _KEY = re.compile(r"^(a|an|at|ak|ar)_([A-Za-z0-9]+)_(mm|deg)$")
 _EPS = re.compile(r"^epsilon_([A-Za-z0-9]+)(_sense)?$")

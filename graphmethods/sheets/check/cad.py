@@ -62,8 +62,9 @@ from graphmethods.scene.primitives import Group, Label, Path, Polygon, Style
 from graphmethods.sheets.check.checking import check
 from graphmethods.sheets.check.hypotheses import em_data, plan_data
 from graphmethods.sheets.check.problems import CycleData, LinkageData, load_problem
-from graphmethods.sheets.check.report import TOL_MM, Checker, CheckReport, Item
+from graphmethods.sheets.check.report import Checker, CheckReport, Item
 from graphmethods.sheets.check.svg_reader import read_svg
+from graphmethods.sheets.check.tolerances import TOL_DEG, TOL_MM
 from graphmethods.sheets.check.typed_answers import validate_answers
 from graphmethods.sheets.worksheets.elements import RED
 from graphmethods.sheets.worksheets.variants import SEGMENTS
@@ -71,8 +72,6 @@ from graphmethods.units import input_file
 
 #: how far a label may be from the point it names, mm
 LABEL_REACH_MM = 10.0
-#: drafting tolerance of a direction, degrees (plus the angle 0.5 mm subtends at the vector's length)
-TOL_DEG = 0.5
 #: points closer than this are one point, mm
 MERGE_MM = 0.6
 

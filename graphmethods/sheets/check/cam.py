@@ -51,7 +51,8 @@ from graphmethods.kinematics.cam.geometry import to_cam_frame
 from graphmethods.scene import Page, Scene
 from graphmethods.sheets.check.cad import DrawingReport, _page_for, _page_xy, normalise
 from graphmethods.sheets.check.cam_reader import SAME_CENTRE_MM, Curves, fit_circle, read_curves
-from graphmethods.sheets.check.report import MISTAKES, TOL_MM, Checker, Item, rel
+from graphmethods.sheets.check.report import MISTAKES, Checker, Item, rel
+from graphmethods.sheets.check.tolerances import TOL_MM
 from graphmethods.titles import Title
 
 #: the usual mistakes of a cam profile (their names in en/ru/zh: the vocabulary's check family)

@@ -12,7 +12,8 @@ import numpy as np
 
 from graphmethods.errors import InputError
 from graphmethods.sheets.check.problems import CycleData, LinkageData
-from graphmethods.sheets.check.report import TOL_MM, TOL_REL, Checker, levels_accepted, rel
+from graphmethods.sheets.check.report import Checker, levels_accepted, rel
+from graphmethods.sheets.check.tolerances import TOL_MM, TOL_REL
 from graphmethods.sheets.worksheets.constructions import region_perimeters_mm
 from graphmethods.sheets.worksheets.variants import SEGMENTS
 from graphmethods.units import omega_from_n
@@ -299,6 +300,21 @@ def plan_data(ck: Checker, p: LinkageData) -> tuple[dict[str, np.ndarray], float
 
 
 def check_plan(ck: Checker, p: LinkageData) -> None:
+    """Judge a student's velocity plan: the segments measured (mm), the speeds and ω₂ computed from them and
+    ω₂'s sense, each against the exact plan at the student's μ_v and drafting tolerance, with the usual
+    mistakes tried as hypotheses (n taken as ω, the scale forgotten or applied twice).
+
+    Parameters
+    ----------
+    ck : Checker
+        The report being written, with the student's answers (``[velocity_plan]``).
+    p : LinkageData
+        The problem: the linkage's lengths, the position and the crank speed.
+
+    See Also
+    --------
+    graphmethods.sheets.check.check : the public entry, from an answers file.
+    """
     vec, l_AB, n_rpm, w1 = plan_data(ck, p)
     mu_v = ck.need("velocity_plan", "mu_v", "(m/s) per mm of the velocity plan")
     seg_exp = {s: float(np.hypot(*(vec[b] - vec[a]))) for s, (a, b) in SEGMENTS.items()}
@@ -379,6 +395,22 @@ def _touching(J, T, a: float, b: float, *, mu_J: float, mu_T: float, upper: bool
 
 
 def check_em(ck: Checker, p: LinkageData) -> None:
+    """Judge a student's energy–mass (Wittenbauer) diagram: tan ψ_max and tan ψ_min, the intercept kl (mm), the
+    positions of ω_max and ω_min and the flywheel's J_F, each against the exact construction at the student's
+    μ_J and μ_T, with the usual mistakes tried as hypotheses (δ not halved, n taken as ω, the scale forgotten,
+    degrees as radians).
+
+    Parameters
+    ----------
+    ck : Checker
+        The report being written, with the student's answers (``[energy_mass]``).
+    p : LinkageData
+        The problem: the study's J_e and ΔT, n and [δ].
+
+    See Also
+    --------
+    graphmethods.sheets.check.check : the public entry, from an answers file.
+    """
     J, T, n_rpm, d = em_data(ck, p)
     mu_J = ck.need("energy_mass", "mu_J", "kg·m² per mm of the energy–mass diagram")
     mu_T = ck.need("energy_mass", "mu_T", "J per mm of the energy–mass diagram")

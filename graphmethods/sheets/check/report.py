@@ -13,14 +13,12 @@ import numpy as np
 from graphmethods.errors import InputError
 from graphmethods.scene import Page, Scene
 from graphmethods.sheets.check import acceleration as ca
+from graphmethods.sheets.check.tolerances import TOL_REL
 from graphmethods.titles import Title
 from graphmethods.units import json_text
 
 if TYPE_CHECKING:
     from graphmethods.sheets.check.problems import CycleData, LinkageData
-
-TOL_MM = 0.5
-TOL_REL = 1e-3
 
 #: the usual mistakes: code -> what the student did
 MISTAKES = {
@@ -305,6 +303,20 @@ class Checker:
 
 
 def rel(tol_abs: float, value: float) -> float:
+    """The tolerance of a value read off a drawing: the drafting one plus :data:`TOL_REL` of the value.
+
+    Parameters
+    ----------
+    tol_abs : float
+        The absolute tolerance, in the value's unit (mm on paper, or that times a scale).
+    value : float
+        The expected value, same unit.
+
+    Examples
+    --------
+    >>> rel(0.5, 120.0)
+    0.62
+    """
     return tol_abs + TOL_REL * abs(value)
 
 

@@ -45,6 +45,7 @@ from graphmethods.scene.primitives import Label
 from graphmethods.scene.scene import Scene
 from graphmethods.sheets.engine.lettering import is_course_sheet, is_slide, lettering
 from graphmethods.sheets.layout import pairs_hit, segments_hit_boxes
+from graphmethods.units import ROUNDOFF
 
 #: the cell of the empty-space measure (mm)
 CELL_MM = 20.0
@@ -58,8 +59,9 @@ _BUCKET_SLACK_MM = 1e-3
 #: a circle's 16-gon (:func:`~graphmethods.sheets.engine.labels.circle_points`, the same arithmetic)
 _COS16 = np.array([math.cos(2 * math.pi * k / 16) for k in range(17)])
 _SIN16 = np.array([math.sin(2 * math.pi * k / 16) for k in range(17)])
-#: a power of ten this much smaller than its neighbours is round-off printed as working
-NOISE_RATIO = 1e-9
+#: a power of ten this much smaller than its neighbours is round-off printed as working (the core's
+#: and the formatter's round-off share, one definition)
+NOISE_RATIO = ROUNDOFF
 
 
 @dataclass(frozen=True)

@@ -390,6 +390,21 @@ _AREA_SCALES = ((4.0, 0.025), (10.0, 0.025), (20.0, 0.025), (200.0, 0.025), (5.0
 
 
 def pick(rng, seq):
+    """One element of ``seq`` drawn by the variant's generator (the same seed, the same choice).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The variant's generator.
+    seq : sequence
+        The choices.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> pick(np.random.default_rng(7), ["a", "b", "c"])
+    'c'
+    """
     return seq[int(rng.integers(len(seq)))]
 
 
@@ -401,6 +416,25 @@ def _nice_below(x: float) -> float:
 
 
 def pick_scale(span: float, room_mm: float) -> float:
+    """The convenient scale (units per mm) that draws ``span`` within ``room_mm``.
+
+    Parameters
+    ----------
+    span : float
+        The extent to draw, in the quantity's unit (m, m/s, J ...).
+    room_mm : float, mm
+        The room on the page.
+
+    Returns
+    -------
+    float
+        μ, units per mm, from the series 1, 2, 2.5, 4, 5 × 10^k (:func:`graphmethods.scene.pick_scale`).
+
+    Examples
+    --------
+    >>> pick_scale(0.2, 80.0)
+    0.0025
+    """
     from graphmethods.scene import pick_scale
 
     return pick_scale(span, room_mm).per_mm
@@ -567,6 +601,18 @@ def _key(params: dict) -> str:
 
 
 def check_kind(kind: str) -> str:
+    """``kind`` when it names a worksheet kind (:data:`KINDS`).
+
+    Raises
+    ------
+    InputError
+        Naming the kinds, for any other.
+
+    Examples
+    --------
+    >>> check_kind("velocity-plan")
+    'velocity-plan'
+    """
     if kind not in KINDS:
         raise InputError(f"unknown worksheet kind {kind!r}; kinds: {', '.join(KINDS)}")
     return kind
