@@ -48,7 +48,17 @@ OVERLAYS = [("W1", "w1_mistakes.toml"), ("W1", "w1_correct.toml"), ("W3", "w3_mi
             ("slotted-lever", "slotted_lever_acc_mistakes.toml"),
             ("W1", "w1_mistakes.svg"), ("press", "press_plan_mistakes.dxf"), ("press", "press_acc_mistakes.dxf"),
             ("press", "press_wittenbauer_mistakes.dxf"), ("slotted-lever", "slotted_lever_acc_mistakes.dxf"),
-            ("shaper-cam", "shaper_cam_small.svg"), ("shaper-cam", "shaper_cam_mistakes.dxf")]
+            ("shaper-cam", "shaper_cam_small.svg"), ("shaper-cam", "shaper_cam_mistakes.dxf"),
+            # every other answers file and drawing shipped with the package (a correct one draws the check alone)
+            ("press", "press_plan_correct.toml"), ("press", "press_acc_correct.toml"), ("W3", "w3_correct.toml"),
+            ("slotted-lever", "slotted_lever_acc_correct.toml"), ("slotted-lever", "slotted_lever_acc_factor.toml"),
+            ("slotted-lever", "slotted_lever_acc_length.toml"), ("slotted-lever", "slotted_lever_acc_no_coriolis.toml"),
+            ("acceleration-plan:1:4", "worksheet_acc_crank.toml"),
+            ("press", "press_acc_correct.dxf"), ("press", "press_plan_correct.dxf"),
+            ("press", "press_wittenbauer_correct.dxf"), ("slotted-lever", "slotted_lever_acc_correct.dxf"),
+            ("slotted-lever", "slotted_lever_acc_mistakes.svg"), ("W1", "w1_correct.dxf"), ("W1", "w1_correct.svg"),
+            ("W1", "w1_mistakes.dxf"), ("shaper-cam", "shaper_cam_correct.dxf"),
+            ("shaper-cam", "shaper_cam_correct.svg")]
 
 
 @cache

@@ -84,31 +84,17 @@ def test_the_force_build_up_prints_no_round_off(name, i):
         assert captions and not [c for c in captions if re.search("10⁻[¹²³⁴⁵⁶⁷⁸⁹]", c)]
 
 
-def _known_empty(name: str, lang: str) -> bool:
-    """Whether the figure-quality test lists this linkage's force sheet (position 3) as too empty in ``lang``."""
-    try:
-        from figure_quality_known import KNOWN
-    except ImportError:                                  # pragma: no cover - run from the repository root
-        from tests.figure_quality_known import KNOWN
-    return (name, "force_analysis_sheet", lang) in KNOWN
-
-
 #: sheets too empty at a position other than 3 where position 3 passes (the composition's, lane forcefill)
-EMPTY_AWAY_FROM_3 = {("four-bar", 0, "en"), ("four-bar", 6, "en"), ("four-bar", 9, "en"), ("press", 0, "ru"),
-                     ("four-bar", 2, "ru"), ("shaper", 7, "zh"), ("whitworth", 0, "zh")}
 TURNING = [(name, k % 12, "ru") for k, name in enumerate(LINKAGES)] + \
           [(name, (k + 6) % 12, "zh") for k, name in enumerate(LINKAGES)]
 
 
 @pytest.mark.parametrize("name, i, lang", [(n, i, "en") for n in LINKAGES for i in POSITIONS] + TURNING)
-def test_labels_clear_at_every_position(name, i, lang, request):
+def test_labels_clear_at_every_position(name, i, lang):
     q = measure(_sheet(name, i, lang))
     assert q.crossed == () and q.overlaps == () and q.noise == ()
     assert q.min_text_mm >= 3.5 - 1e-9
-    if (name, i, lang) in EMPTY_AWAY_FROM_3:
-        request.applymarker(pytest.mark.xfail(strict=True, reason="emptiness at this position (composition)"))
-    if not _known_empty(name, lang):
-        assert q.empty_share <= EMPTY_MAX
+    assert q.empty_share <= EMPTY_MAX
 
 
 def test_the_scotch_yoke_is_drawn_as_a_yoke():

@@ -31,6 +31,7 @@ from graphmethods.kinematics.cam import CamDesign
 from graphmethods.scene import Axis, Line, Point, Polyline, Region, Scale, Table, Text, Vector, pick_scale
 from graphmethods.scene.elements import Element, make_label
 from graphmethods.scene.notation import Notation
+from graphmethods.scene.numbers import within_roundoff
 from graphmethods.scene.primitives import DASHED, MAIN, THIN, Style
 from graphmethods.scene.scale import pick_angle_scale
 from graphmethods.sheets.calculus import CHORD, RAY
@@ -533,9 +534,12 @@ def positions_table(cam: CamDesign, box: Box, nt: Notation, n_div: int) -> list[
     v_head = nt.sym("cam.dpsi") if osc else f"{nt.sym('cam.ds')}, {nt.unit('m')}"
     flat = p.contact == "flat"
     head = ("k", "φ, °", s_head, v_head) + (() if flat else (f"{nt.sym('cam.alpha')}, °",))
+    # a value within the round-off of its column (s, ds/dφ at a dwell: −7.9·10⁻¹⁸ m) is written 0
+    s_col, v_col, a_col = (np.where([within_roundoff(v, np.abs(col).max()) for v in col], 0.0, col)
+                           for col in (np.asarray(st.s), np.asarray(st.ds), np.asarray(st.alpha_deg)))
     rows = [(str(k), nt.number(f, sig=4), nt.number(math.degrees(sv) if osc else sv, sig=4), nt.number(dv, sig=4))
             + (() if flat else (nt.number(a, sig=4),)) for k, (f, sv, dv, a) in
-            enumerate(zip(phi, st.s, st.ds, st.alpha_deg))]
+            enumerate(zip(phi, s_col, v_col, a_col))]
     head_els, top = heading(box, nt.word("cam.positions"), Occupancy(), "positions")
     return [*head_els, fitted_table((box[0], top + 2.0), (head, *rows), box, align="r" * len(head),
                                         name="positions-table")]

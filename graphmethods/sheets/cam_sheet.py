@@ -127,9 +127,10 @@ class Inversion:
     followers: list[np.ndarray]        # each division point's follower axis (translating) or arm (oscillating)
     pivot_arc: np.ndarray | None       # the arc of the pivot's positions (oscillating)
     stem: np.ndarray                   # the follower in position 0: its stem or arm
+    faces: tuple[np.ndarray, ...] = ()  # a flat follower's face at each division point, turned back
 
     def points(self) -> np.ndarray:
-        parts = [self.pitch, self.profile, self.stem, np.zeros((1, 2)), *self.followers]
+        parts = [self.pitch, self.profile, self.stem, np.zeros((1, 2)), *self.followers, *self.faces]
         if self.pivot_arc is not None:
             parts.append(self.pivot_arc)
         return np.vstack(parts)
@@ -159,7 +160,19 @@ def inversion(cam: CamDesign, n_div: int) -> Inversion:
             pts = np.array([[p.offset, start], [p.offset, s0 + sv + reach]])
             followers.append(_rot(pts, np.array([f, f]), p.sense))
         stem = _rot(np.array([[p.offset, s0], [p.offset, s0 + reach + p.stroke]]), np.zeros(2), p.sense)
-    return Inversion(phi_k, dense.pitch, dense.profile, st.pitch, followers, arc, stem)
+    return Inversion(phi_k, dense.pitch, dense.profile, st.pitch, followers, arc, stem, _faces(cam, phi_k))
+
+
+def _faces(cam: CamDesign, phi_k: np.ndarray) -> tuple[np.ndarray, ...]:
+    """A flat follower's face at each division point, turned back: a segment through the contact, ⟂ the axis
+    (m; none for a roller or a knife edge). Part of the drawing's extent: the faces ran into the title block."""
+    p = cam.problem
+    if p.contact != "flat":
+        return ()
+    s = p.motion(np.degrees(phi_k))[0]
+    half = 0.5 * (cam.face_width_min or 0.0) + 0.1 * cam.base_radius
+    return tuple(_rot(np.array([[-half, cam.base_radius + sv], [half, cam.base_radius + sv]]), np.array([f, f]),
+                      p.sense) for f, sv in zip(phi_k, s))
 
 
 def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_div: int,
@@ -193,7 +206,7 @@ def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
         els.append(Circles(tuple((x, y, mu.to_mm(p.roller_radius)) for x, y in P(geo.pitch_k)), THIN,
                            name="rollers"))
     if p.contact == "flat":
-        els += _flat_lines(cam, geo.phi_k, P)
+        els += _flat_lines(geo, P)
     els.append(Polyline(P(geo.profile), MAIN, closed=True, name="profile"))
     els += [Point(q, radius_mm=0.7, name=f"B-{i}") for i, q in enumerate(P(geo.pitch_k))]
     els += _follower_at_zero(cam, geo, P, mu)
@@ -206,16 +219,9 @@ def profile_panel(cam: CamDesign, box: Box, occ: Occupancy, nt: Notation, *, n_d
     return head + els, mu
 
 
-def _flat_lines(cam: CamDesign, phi_k: np.ndarray, P: Any) -> list[Element]:
-    """The flat face at each division point, turned back: a segment through the contact, ⟂ the axis."""
-    p = cam.problem
-    s, s1, _, _ = p.motion(np.degrees(phi_k))
-    half = 0.5 * (cam.face_width_min or 0.0) + 0.1 * cam.base_radius
-    out: list[Element] = []
-    for i, (f, sv, _v) in enumerate(zip(phi_k, s, s1)):
-        seg = np.array([[-half, cam.base_radius + sv], [half, cam.base_radius + sv]])
-        out.append(segment(P(_rot(seg, np.array([f, f]), p.sense)), THIN, name=f"face-{i}"))
-    return out
+def _flat_lines(geo: Inversion, P: Any) -> list[Element]:
+    """The flat face at each division point (:func:`_faces`)."""
+    return [segment(P(face), THIN, name=f"face-{i}") for i, face in enumerate(geo.faces)]
 
 
 def _follower_at_zero(cam: CamDesign, geo: Inversion, P: Any, mu: Scale) -> list[Element]:

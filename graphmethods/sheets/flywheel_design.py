@@ -23,11 +23,11 @@ from typing import Any
 
 from graphmethods.errors import InputError
 from graphmethods.scene import Line, Page, Scale, Scene, Text, notation as get_notation
-from graphmethods.scene.elements import Dimension, Element, Region, Table
+from graphmethods.scene.elements import CAP, Dimension, Element, Region, Table
 from graphmethods.scene.markup import text_width_mm
 from graphmethods.scene.notation import Notation
 from graphmethods.scene.numbers import FLYWHEEL_DIGITS
-from graphmethods.scene.primitives import Style
+from graphmethods.scene.primitives import Label, Style
 from graphmethods.sheets.frame import SheetFrame
 from graphmethods.sheets.layout import TEXT_MM
 from graphmethods.sheets.styles import CENTRE_LINE
@@ -219,6 +219,21 @@ def _diameter(name: str, x: float, cy: float, r: float, side: int, level: int, l
     return Dimension(a, b, f"⌀{size_text(value_m, nt)}", offset_mm=off, size_mm=TEXT_MM, name=name)
 
 
+def _bore(name: str, x: float, cy: float, r: float, r_hub: float, lay: FlywheelDesignLayout,
+          value_m: float, nt: Notation) -> list[Element]:
+    """The bore's ⌀ on the first line right of the hub. Its value goes between the extension lines; where they
+    are closer than the value is high (⌀80 in a ⌀144 hub at 1 : 40: 2 and 3.6 mm) it is written under the
+    hub's lower one, beside its own line (the extension lines, 1.5 mm past the line, struck it through)."""
+    dim = _diameter(name, x, cy, r, 1, 0, lay, value_m, nt)
+    value = next(p for p in dim.primitives() if isinstance(p, Label))
+    band = (value.y - CAP * value.size_mm - 0.5, value.y + 0.5)         # the capitals' band, with a margin
+    if not any(band[0] <= y <= band[1] for y in (cy - r_hub, cy + r_hub, cy - r, cy + r)):
+        return [dim]
+    line_x = dim.line_start[0]
+    return [replace(dim, text=""), Text((line_x + 1.2, cy + r_hub + 1.0 + CAP * TEXT_MM), dim.text, size_mm=TEXT_MM,
+                                        name=f"{name}-value")]
+
+
 def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, top: float, *,
              name: str, lay: FlywheelDesignLayout = LAYOUT) -> list[Element]:
     """One flywheel's axial section centred at ``xc`` on the axis ``cy``: the rim or the web, the hub, the
@@ -258,7 +273,7 @@ def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, 
     if kind == "rim":
         els.append(_diameter(f"dim-{name}-D2", left, cy, r_in, -1, 0, lay_l, p.D2, nt))
     els += [_diameter(f"dim-{name}-hub", right, cy, r_hub, 1, 1, lay_r, hub.d_hub, nt),
-            _diameter(f"dim-{name}-bore", right, cy, r_bore, 1, 0, lay_r, hub.d, nt)]
+            *_bore(f"dim-{name}-bore", right, cy, r_bore, r_hub, lay_r, hub.d, nt)]
     els += _width_dimension((xl, cy - r_out), (xr, cy - r_out), size_text(p.B, nt), -7.0, f"dim-{name}-B")
     els += _width_dimension((hl, cy + r_hub), (hr, cy + r_hub), size_text(hub.L, nt), (r_out - r_hub) + 7.0,
                             f"dim-{name}-L")

@@ -64,7 +64,11 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
         lo, hi = min(lo, float(delta)), max(hi, float(delta))
     deltas = np.geomspace(lo, hi, int(samples))
     J = hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, deltas=deltas)
-    J_lo, J_hi = min(float(J.min()), 0.0), float(J.max())
+    J_c = None if delta is None else float(hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, deltas=[float(delta)])[0])
+    # where J_e alone keeps δ within [δ] no flywheel is needed: the line starts on the axis at J_F = 0 (it ran
+    # below the axis, through its values)
+    deltas, J = _needed(deltas, J, delta_W_max / (omega_m ** 2 * J_e) if J_e > 0 else None)
+    J_lo, J_hi = min(J_c or 0.0, 0.0), float(J.max()) if len(J) else 0.0
     if not J_hi > 0:
         raise InputError(f"J_F ≤ 0 over the whole range of [δ]: J_e = {J_e:g} kg·m² already keeps δ within "
                          f"1/{1 / lo:.4g}; no flywheel and no hyperbola to draw")
@@ -94,8 +98,7 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
         els.append(Line(at(row.lenient, 0.0), at(row.strict, 0.0), style=BAND, name="machine-band"))
         els.append(Text((at(row.lenient, 0.0)[0], origin[1] + 9.0), f"{row.name(nt.code)}{nt.colon}{row.range_text()}",
                         size_mm=SMALL_MM, name="machine-label"))
-    if delta is not None:
-        J_c = float(hyperbola(delta_W_max, omega_m=omega_m, J_e=J_e, deltas=[float(delta)])[0])
+    if delta is not None and J_c is not None:
         p = at(float(delta), J_c)
         els.append(Line(at(float(delta), 0.0), p, style=DASHED, name="chosen-delta-line"))
         els.append(Line((origin[0], p[1]), p, style=DASHED, name="chosen-J-line"))
@@ -125,3 +128,17 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
     els += sheet.captions((s_d, s_J))
     return Scene(sheet.page((s_d, s_J)), tuple(els), title=sheet.title, notation=nt.code, name="flywheel-hyperbola",
                  notes=(s_d.note, s_J.note))
+
+
+def _needed(deltas: np.ndarray, J: np.ndarray, delta_0: float | None) -> tuple[np.ndarray, np.ndarray]:
+    """The part of the hyperbola where a flywheel is needed (J_F ≥ 0), from ``delta_0`` (the [δ] that J_e alone
+    keeps, where J_F = 0) when it falls inside the range.
+
+    >>> d, j = _needed(np.array([0.1, 0.05, 0.01]), np.array([-1.0, 0.0, 4.0]), 0.05)
+    >>> d.tolist(), j.tolist()
+    ([0.05, 0.05, 0.01], [0.0, 0.0, 4.0])
+    """
+    keep = J >= 0.0
+    if delta_0 is None or keep.all() or not keep.any():
+        return deltas[keep], J[keep]
+    return np.concatenate(([delta_0], deltas[keep])), np.concatenate(([0.0], J[keep]))

@@ -11,9 +11,10 @@ F_b and R′_01); the plan of accelerations of the position, where the inertia f
 panel). At the right, above the title block: the balancing moment from the force plans, from the lever and
 from the power balance with their differences in per cent, every reaction's magnitude, the inertia loads,
 the inertia loads worked out (F_и = m·a_S = …, M_и = J_S·ε = …, h = M_и/F_и, :mod:`~graphmethods.sheets.force_working`)
-and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`; under a tall
-linkage, in its column). Each group's plan writes above its polygon the moment equations that give its R^τ with
-the numbers, then its vector equation. Each part keeps its own scales, written under it; the title block names
+and M_b(φ) over the cycle with the position marked (:mod:`~graphmethods.sheets.balancing_graph`; across under
+the drawings of a dyad and the crank, under a larger tall linkage in its column, or under a flat one's
+lever). Each group's plan writes above its polygon the moment equations that give its R^τ with the numbers,
+then its vector equation. Each part keeps its own scales, written under it; the title block names
 the scheme's.
 
 >>> from graphmethods.problems import builtin
@@ -26,6 +27,7 @@ the scheme's.
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -40,6 +42,7 @@ from graphmethods.sheets.balancing_graph import balancing_graph
 from graphmethods.sheets.composition import inset, region_page
 from graphmethods.sheets.engine.compose import GAP_MM, Split
 from graphmethods.sheets.engine.lettering import lettered_by_page, lettering
+from graphmethods.sheets.engine.quality import ink_cells
 from graphmethods.sheets.force_sheet_plans import group_panel, moments_fit, plan_panel
 from graphmethods.sheets.force_tables import cycle_rows, inertia_rows, load_rows, reaction_rows
 from graphmethods.sheets.force_working import inertia_working, power_working
@@ -98,8 +101,6 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     InputError
         A position outside 0…m, a page other than A1/A2, a problem that is not a linkage.
     """
-    from graphmethods.sheets.forces import force_scheme, zhukovsky_forces
-
     case = _case(subject)
     nt = get_notation(notation)
     fa, i = SF.analysed(case, position=position, phi_deg=phi_deg, m=m, gravity=gravity)
@@ -131,26 +132,102 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
                 + [text_width_mm(nt.word("forces.sheet_result"), size) * 1.08]) + 4.0
     gap = GAP_MM.get(pg.size, 8.0)
     tb_top = inner[3] - (tb.height_mm if tb is not None else 0.0)
-    content = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
+    content: Box = (sheet.box[0], sheet.top, sheet.box[2], inner[3] - 5.0)
     free = tb_top - gap - content[1] - _result_column(0.0, 0.0, tables, notes_text, working, nt,
                                                       sizes=(size, note_mm, work_mm, gap))[1]
     graph_below = phi_deg is not None or free >= 3.0 * GRAPH_MM  # M_b(φ) under the column's text, or in the drawings'
-    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, graph=not graph_below)
+    parts_in = _Parts(case, fa, i, nt, pg, phi_deg, m, gravity, tables, notes_text, (working, working[:n_loads]),
+                      (size, note_mm, work_mm, gap), name)
+    fit = (content, col_w, tb_top - gap)
+    if phi_deg is not None:                         # one crank angle: no cycle to draw
+        return _composed(parts_in, sheet, fit, graph_below=True)
+    # a dyad and the crank (three moving links, two force plans) leave room for M_b(φ) in a wide box across
+    # under the drawings; more links keep it among them (under a tall linkage, beside a flat one's lever) and
+    # give their force plans the room. Where that leaves much of the sheet empty, or a label crossed, the other
+    # arrangement is tried too and the better kept: the fewer labels crossed or overprinted, then the fuller
+    wide_first = sum(len(plan.links) for plan in fa.plans) <= 3
+    scene = _composed(parts_in, sheet, fit, graph_below=graph_below, wide_graph=wide_first)
+    score = _score(scene, pg)
+    if score[0] or score[1] > FILL_AIM:
+        other = _composed(parts_in, sheet, fit, graph_below=graph_below, wide_graph=not wide_first)
+        scene = other if _score(other, pg) < score else scene
+    return scene
+
+
+#: the least and the most of the drawings' height M_b(φ) takes in a wide box across under them
+WIDE_GRAPH = (0.2, 0.34)
+
+#: the empty share of 20 mm cells (issue 26: at most 50 %) above which the sheet tries its other arrangement
+FILL_AIM = 0.47
+
+
+@dataclass(frozen=True)
+class _Parts:
+    """What the A1 force sheet draws, computed once for every arrangement tried: the analysis of position
+    ``i``, the result column's tables, notes and workings (the fullest first) and the lettering sizes (mm:
+    values, notes, working, the gap between parts)."""
+
+    case: Any
+    fa: Any
+    i: int
+    nt: Any
+    pg: Page
+    phi_deg: float | None
+    m: int
+    gravity: bool
+    tables: tuple[Table, ...]
+    notes_text: list[str]
+    workings: tuple[list[tuple[str, bool]], ...]
+    sizes: tuple[float, float, float, float]
+    name: str
+    #: the result column's ink by variant, recorded once for every arrangement (the column is the same in each)
+    inks: dict[tuple[int, float, int], PartInk] = field(default_factory=dict, compare=False, repr=False)
+
+
+def _wide_share(p: _Parts, left: Box) -> float:
+    """The share of the drawings' height (``left``, mm) that M_b(φ) across under them takes: as tall as it is
+    drawn at the finest convenient μ_M that fits in the most (:data:`WIDE_GRAPH`), the box shaped to it."""
+    gap = p.sizes[3]
+    H = left[3] - left[1] - gap
+    room = (left[0], left[1], left[2], left[1] + WIDE_GRAPH[1] * H)
+    ink = balancing_graph(p.fa, p.i, notation=p.nt, page=region_page(p.pg, room)).bbox()
+    tall = (ink[3] - left[1] + 1.0) / H if ink is not None else WIDE_GRAPH[1]
+    return min(WIDE_GRAPH[1], max(WIDE_GRAPH[0], tall))
+
+
+def _score(scene: Scene, pg: Page) -> tuple[int, float]:
+    """How many of the sheet's labels are crossed by ink or set on another, and the share of its 20 mm cells
+    inside the frame no ink touches (the figure-quality measure's counts): the less the better."""
+    ink = PartInk.of(scene, pg)
+    return int(ink.crossed.sum()) + ink.overlaps, 1.0 - float(ink.cells.mean())
+
+
+def _composed(p: _Parts, sheet: Sheet, fit: tuple[Box, float, float], *, graph_below: bool,
+              wide_graph: bool = False) -> Scene:
+    """The A1 sheet's parts drawn in their boxes (:func:`force_sheet_boxes`; ``fit``: the drawings' region,
+    the result column's width and its bottom, mm) with the result column chosen to fill it."""
+    case, fa, i, nt, pg, phi_deg, m = p.case, p.fa, p.i, p.nt, p.pg, p.phi_deg, p.m
+    content, col_w, bottom = fit
+    gap = p.sizes[3]
+    graph = not graph_below
+    share = _wide_share(p, (content[0], content[1], content[2] - col_w - gap, content[3])) if wide_graph else 0.0
+    boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=bottom, graph=graph,
+                              wide_graph=share)
     accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
-    if accel is None and phi_deg is None and graph_below and "balancing" in boxes:
+    if accel is None and phi_deg is None and graph_below and not wide_graph and "balancing" in boxes:
         # beside a tall linkage the plan of accelerations may take the lever's room, the lever the graph's
-        wide = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, lever_under=True)
+        wide = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=bottom, lever_under=True)
         accel = _acceleration(case, i, m, nt, pg, wide["acceleration"])
         boxes = wide if accel is not None else boxes
     if accel is None:                               # the plan of accelerations does not fit: the others take its room
-        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=tb_top - gap, acceleration=False,
-                                  graph=not graph_below)
+        boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=bottom, acceleration=False,
+                                  graph=graph, wide_graph=share)
     at_k = i if phi_deg is None else None
-    kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": gravity}
-    parts = [(force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
-                           title=nt.word("forces.scheme_short"), layout=_panel_layout(boxes["scheme"])), "scheme"),
-             (zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
-                               title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
+    kw: dict[str, Any] = {"phi_deg": phi_deg, "m": m, "notation": nt, "title_block": False, "gravity": p.gravity}
+    parts = [(SF.force_scheme(case, at_k, **kw, page=region_page(pg, boxes["scheme"]),
+                              title=nt.word("forces.scheme_short"), layout=_panel_layout(boxes["scheme"])), "scheme"),
+             (SF.zhukovsky_forces(case, at_k, **kw, page=region_page(pg, boxes["lever"]),
+                                  title=nt.word("forces.lever_short"), layout=_panel_layout(boxes["lever"])), "lever")]
     if accel is not None:
         parts.append((accel, "acceleration"))
     for j in range(len(fa.plans)):
@@ -163,37 +240,53 @@ def force_analysis_sheet(subject: Any, position: int | None = None, *, phi_deg: 
     plans = Group(elements=tuple(g for (g, _), (_, nm) in zip(groups, parts) if nm[:5] in ("group", "plan-")),
                   name="plans")
     others = [g for (g, _), (_, nm) in zip(groups, parts) if nm == "acceleration"]
-    column, y = _best_column(fa, nt, pg, boxes, groups, tables, notes_text, (working, working[:n_loads]),
-                             cycle=phi_deg is None, sizes=(size, note_mm, work_mm, gap))
+    drawn = [b for g, _ in groups if (b := g.bbox()) is not None]          # the drawings' ink boxes, mm
+    column, y = _best_column(fa, nt, pg, boxes, drawn, p.tables, p.notes_text, p.workings,
+                             cycle=phi_deg is None, sizes=p.sizes, inks=p.inks)
     if phi_deg is None:                             # M_b over the cycle: its table and its graph
-        column += _cycle_parts(fa, i, nt, pg, boxes, y, groups, size=size, gap=gap)
+        column += _cycle_parts(fa, i, nt, pg, boxes, (y, drawn), groups, size=p.sizes[0], gap=gap)
     scales = tuple(scale for _, part_scales in groups for scale in part_scales)
     notes = tuple(f"{nm}: {note}" for scene, nm in parts for note in scene.notes)
     # the title block names the scheme's scales (the sheet's drawing scale); every part writes its own under it
     return Scene(sheet.page(groups[0][1]), (sheet.header(), groups[0][0], groups[1][0], *others, plans, *column),
-                 title=sheet.title, notation=nt.code, name=name, extra_scales=scales, notes=notes)
+                 title=sheet.title, notation=nt.code, name=p.name, extra_scales=scales, notes=notes)
 
 
-def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], groups: list[Any], tables: tuple[Table, ...],
+def _best_column(fa: Any, nt: Any, pg: Page, boxes: dict[str, Box], drawn: list[Box], tables: tuple[Table, ...],
                  notes_text: list[str], workings: tuple[list[tuple[str, bool]], ...], *, cycle: bool,
-                 sizes: tuple[float, float, float, float]) -> tuple[list[Any], float]:
+                 sizes: tuple[float, float, float, float],
+                 inks: dict[tuple[int, float, int], PartInk] | None = None) -> tuple[list[Any], float]:
     """The result column (:func:`_result_column`) that ends above the column's bottom and, with the M_b table
-    under it where that has room (``cycle``), inks the most cells of the sheet
+    under it where that has room (``cycle``; kept off the ``drawn`` boxes), inks the most cells of the sheet
     (:class:`~graphmethods.sheets.sheet_fill.PartInk`): with or without the external loads' table (the
     fourth), the working at the values' size or at 3.5 mm; the fullest of ``workings`` that fits, the
-    shortest column when none ends above the bottom."""
+    shortest column when none ends above the bottom. ``inks``: each variant's ink, kept for the next call
+    with the same column (another arrangement of the drawings); the M_b table's cells are those its box
+    covers (its rules are at most 2 size apart)."""
     size, note_mm, work_mm, gap = sizes
     x, top = boxes["result"][0] + 2.0, boxes["result"][1]
-    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    inks = {} if inks is None else inks
     best: tuple[tuple[bool, int, float], list[Any], float] | None = None
     variants = [(k, wk, t, w) for k, wk in enumerate(workings) for w in dict.fromkeys((work_mm, note_mm))
                 for t in dict.fromkeys((tables, tables[:3]))]
+    width = boxes["result"][2] - x - 2.0
     for k, work, tabs, w_mm in variants:
-        column, y = _result_column(x, top, tabs, notes_text, work, nt, sizes=(size, note_mm, w_mm, gap))
+        column, y = _result_column(x, top, tabs, notes_text, work, nt, sizes=(size, note_mm, w_mm, gap), width=width)
         inside = y - gap <= boxes["result"][3]
-        table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), inks) if cycle and inside else None
-        cells = int(PartInk.of(Scene(pg, tuple(column + ([table] if table is not None else []))), pg).cells.sum())
-        score = (inside, -k if inside else 0, float(cells) if inside else -y)
+        if best is not None and best[0][:2] > (inside, -k if inside else 0):
+            continue                                # a fuller working already fits: this one cannot win
+        if not inside:
+            score: tuple[bool, int, float] = (False, 0, -y)
+        else:
+            key = (k, w_mm, len(tabs))
+            if key not in inks:
+                inks[key] = PartInk.of(Scene(pg, tuple(column)), pg)
+            cells = inks[key].cells
+            table = _cycle_table(fa, nt, size, (x, y), _floor(boxes), drawn, width=width) if cycle else None
+            box = table.bbox() if table is not None else None
+            if box is not None:
+                cells = cells | ink_cells(np.empty((0, 4)), np.array([box]), pg.inner_box())
+            score = (True, -k, float(cells.sum()))
         if best is None or score > best[0]:
             best = (score, column, y)
     assert best is not None
@@ -205,14 +298,15 @@ def _floor(boxes: dict[str, Box]) -> float:
     return boxes["result"][3] - (0.0 if "balancing" in boxes else GRAPH_MM)
 
 
-def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], y: float, groups: list[Any], *,
-                 size: float, gap: float) -> list[Any]:
-    """M_b over the cycle: its table under the result column's text (``y``, mm) where it has room, and the graph
-    (in its box among the drawings, or under the table; appended to ``groups`` with its scales)."""
+def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], at: tuple[float, list[Box]],
+                 groups: list[Any], *, size: float, gap: float) -> list[Any]:
+    """M_b over the cycle: its table under the result column's text (``at``: its y, mm, and the drawings' ink
+    boxes it keeps off) where it has room, and the graph (in its box among the drawings, or under the table;
+    appended to ``groups`` with its scales)."""
     res = boxes["result"]
-    inks = [b for g, _ in groups if (b := g.bbox()) is not None]
+    y, inks = at
     out: list[Any] = []
-    cycle = _cycle_table(fa, nt, size, (res[0] + 2.0, y), _floor(boxes), inks)
+    cycle = _cycle_table(fa, nt, size, (res[0] + 2.0, y), _floor(boxes), inks, width=res[2] - res[0] - 4.0)
     graph_box = boxes.get("balancing", (res[0], y, res[2], res[3]))
     if cycle is not None:
         out.append(cycle)
@@ -225,18 +319,29 @@ def _cycle_parts(fa: Any, i: int, nt: Any, pg: Page, boxes: dict[str, Box], y: f
     return out
 
 
+def _widths_across(table: Table, width: float) -> tuple[float, ...] | None:
+    """The column widths (mm) that stretch ``table`` across ``width`` mm (its fitted widths, each widened in
+    proportion), or None (the fitted widths) where it is as wide already: the result column's tables are
+    ruled to the column's width, as a course sheet's are."""
+    fitted = table.column_widths()
+    k = width / sum(fitted) if fitted else 1.0
+    return tuple(w * k for w in fitted) if k > 1.0 else None
+
+
 def _result_column(tx: float, ty: float, tables: tuple[Table, ...], notes_text: list[str],
-                   working: list[tuple[str, bool]], nt: Any, *, sizes: tuple[float, float, float, float]
-                   ) -> tuple[list[Any], float]:
+                   working: list[tuple[str, bool]], nt: Any, *, sizes: tuple[float, float, float, float],
+                   width: float = 0.0) -> tuple[list[Any], float]:
     """The result column from (tx, ty): its heading, the balancing moment's, the reactions' and the inertia
-    loads' tables, the notes and the inertia loads worked out; and the y (mm) under its last line."""
+    loads' tables (ruled ``width`` mm wide where they are narrower), the notes and the inertia loads worked
+    out; and the y (mm) under its last line."""
     size, note_mm, work_mm, gap = sizes
     names = ("result", "reactions", "inertia", "loads")
     column: list[Any] = [Text((tx, ty + size), nt.word("forces.sheet_result"), size_mm=size, bold=True,
                               name="result-heading")]
     y = ty + 2.5 * size
     for tab, nm in zip(tables, names):
-        table = Table((tx, y), tab.rows, align=tab.align, size_mm=size, row_height_mm=2.0 * size, name=nm)
+        table = Table((tx, y), tab.rows, align=tab.align, size_mm=size, row_height_mm=2.0 * size, name=nm,
+                      col_widths_mm=_widths_across(tab, width))
         column.append(table)
         y = table.bottom_left[1] + 2.0 * size
     column += [Text((tx, y + k * 1.8 * note_mm), note, size_mm=note_mm, name=f"note-{k}")
@@ -258,7 +363,7 @@ def _tables(fa: Any, i: int, nt: Any, size: float) -> tuple[Table, ...]:
 
 
 def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom: float,
-                 inks: list[Box]) -> Table | None:
+                 inks: list[Box], width: float = 0.0) -> Table | None:
     """The table of M_b at every position (:func:`~graphmethods.sheets.force_tables.cycle_rows`) from ``at``
     (mm) or as little under it as keeps it off the drawings' ink (``inks``, mm); None when it would run below
     ``bottom`` (mm)."""
@@ -268,6 +373,7 @@ def _cycle_table(fa: Any, nt: Any, size: float, at: tuple[float, float], bottom:
         while True:
             table = Table((at[0], y + 1.5 * size), rows, align="rrrr", size_mm=mm, row_height_mm=1.8 * mm,
                           name="cycle")
+            table = replace(table, col_widths_mm=_widths_across(table, width))
             box = table.bbox()
             if table.bottom_left[1] > bottom or box is None:
                 break
@@ -370,7 +476,7 @@ def _pair_clouds(fa: Any, i: int) -> list[list[complex]]:
 
 def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float = 10.0,
                       column_bottom: float | None = None, acceleration: bool = True,
-                      graph: bool = False, lever_under: bool = False) -> dict[str, Box]:
+                      graph: bool = False, lever_under: bool = False, wide_graph: float = 0.0) -> dict[str, Box]:
     """Where the parts of the force sheet go (mm): the scheme, Zhukovsky's lever, each force plan
     (``plan-0``, ``plan-1``, …, the crank's last) and the result column (``result``), arranged by the shapes
     of the drawings (:class:`~graphmethods.sheets.engine.compose.Split`).
@@ -381,7 +487,8 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
     row across the top with the lever beside it, and the plans share the row below side by side. ``graph``:
     M_b(φ) gets a box among the drawings (``balancing``; a tall linkage's column always has it);
     ``lever_under``: beside a tall linkage the plan of accelerations takes the whole upper row and the lever
-    goes under the linkage (when the plan does not fit beside the lever).
+    goes under the linkage (when the plan does not fit beside the lever); ``wide_graph``: M_b(φ) in a box
+    across under the drawings, that share of their height (:func:`_wide_share`).
 
     >>> from graphmethods.problems import builtin
     >>> from graphmethods.sheets.forces import analysed
@@ -408,15 +515,20 @@ def force_sheet_boxes(fa: Any, i: int, box: Box, col_w: float, *, gap_mm: float 
             top, under = Split("h", (("acceleration", 1.0),), gap_mm=gap_mm), "lever"
         right = Split("v", ((top, 0.42), (_pairs(fa, i, n, gap_mm), 0.58)), gap_mm=gap_mm)
         left_col = Split("v", (("scheme", 0.62), (under, 0.38)), gap_mm=gap_mm)
+        if wide_graph and not lever_under:                      # M_b(φ) across under the drawings
+            left_col = Split("v", (("scheme", 1.0),), gap_mm=gap_mm)
         tree = Split("h", ((left_col, w_s), (right, 1.0 - w_s)), gap_mm=gap_mm)
     else:                                                       # a flat linkage: rows
         h_s = min(0.45, max(0.3, W * 0.6 / scheme / H + 0.1))
+        graph = graph and not wide_graph
         top = Split("h", (("scheme", 0.6), ("acceleration", 0.4)) if acceleration else (("scheme", 1.0),),
                     gap_mm=gap_mm)
         w_l = _lever_width(lever, (1.0 - h_s) * H, W)
-        lever_col = Split("v", (("lever", 0.6), ("balancing", 0.4)), gap_mm=gap_mm) if graph else "lever"
+        lever_col = Split("v", (("lever", 0.5), ("balancing", 0.5)), gap_mm=gap_mm) if graph else "lever"
         bottom = Split("h", ((lever_col, w_l), (_pairs(fa, i, n, gap_mm), W - w_l - gap_mm)), gap_mm=gap_mm)
         tree = Split("v", ((top, h_s), (bottom, 1.0 - h_s)), gap_mm=gap_mm)
+    if wide_graph and not lever_under:
+        tree = Split("v", ((tree, 1.0 - wide_graph), ("balancing", wide_graph)), gap_mm=gap_mm)
     out.update(tree.boxes(left))
     return out
 

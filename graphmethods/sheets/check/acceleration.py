@@ -379,12 +379,41 @@ def item_label(key: str, words: Any) -> str:
 
 # ----------------------------------------------------------------------------- drawing the plan
 
+#: how far off (mm) a point's letter goes on a leader when no place beside the point is free: within the reach
+#: in which the reader of a drawing made in CAD looks for it (:data:`graphmethods.sheets.check.cad.LABEL_REACH_MM`)
+NAME_LEADER_MM = (4.0, 5.0, 6.5, 8.0)
+#: the directions a leader tries (degrees, counterclockwise from +x): the diagonals first, then every 22.5°
+LEADER_ANGLES = (135.0, 45.0, 225.0, 315.0, 90.0, 270.0, 180.0, 0.0, *(22.5 + 45.0 * k for k in range(8)))
+
+
+def _image_name(occ: Any, P: Any, text: str, leader_mm: tuple[float, ...]) -> tuple[Any, Any]:
+    """The letter of a point of the plan: beside it where free; else on a short leader (it was set across the
+    construction's lines: n_BA on the crank worksheet's plan); else beside it as the first choice."""
+    from graphmethods.sheets.layout import place_label
+
+    size, gap = SMALL_MM + 0.3, 0.8
+    directions = ("nw", "ne", "sw", "se", "n", "s", "w", "e")
+    lab = occ.first_free(P, text, directions, (gap, gap + 2.0, gap + 4.5), size, None)
+    if lab is not None:
+        occ.add_label(lab)
+        return lab, None
+    for r in leader_mm:
+        found = occ.try_leaders(P, text, r, LEADER_ANGLES, size_mm=size)
+        if found is not None:
+            return found
+    lab = place_label(P, text, directions[0], gap_mm=gap, size_mm=size)
+    occ.add_label(lab)
+    return lab, None
+
+
 def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: float,
                   wrong: Mapping[str, float] | None = None, carried: Iterable[str] = (), nt: Any = "en",
-                  name: str = "acc") -> list[Element]:
+                  name: str = "acc", leader_mm: tuple[float, ...] = NAME_LEADER_MM) -> list[Element]:
     """The plan drawn from the pole ``origin`` (page mm, y down) at ``mu_a``: construction lines thin,
     known vectors solid, found ones dashed, every image labelled; ``wrong`` (key -> the student's mm)
-    in red with the student's value beside it; ``carried`` (keys) in red without it.
+    in red with the student's value beside it; ``carried`` (keys) in red without it. ``leader_mm``: how far
+    off (mm) a point's letter may go on a leader where nothing beside the point is free (a page read back
+    from CAD keeps it within the reader's reach; a film laid over the student's drawing may go further).
 
     >>> from graphmethods.kinematics.presets import slider_crank
     >>> from graphmethods.kinematics.acceleration_plan import acceleration_plan
@@ -432,8 +461,9 @@ def plan_elements(origin: tuple[float, float], plan: AccelerationPlan, *, mu_a: 
             continue
         done.add(key)
         text = _image_markup(lb)
-        lab = occ.place_label(P, text, ("nw", "ne", "sw", "se", "n", "s", "w", "e"), size_mm=SMALL_MM + 0.3,
-                              gap_mm=0.8)
+        lab, leader = _image_name(occ, P, text, leader_mm)
+        if leader is not None:
+            els.append(Line(leader[0], leader[1], style=thin, name=f"{name}-name-{lb}-leader"))
         els.append(Text((lab.x, lab.y), text, size_mm=SMALL_MM + 0.3, anchor=lab.anchor, name=f"{name}-name-{lb}"))
     for c in vectors(plan):
         k = key_of(c.symbol)

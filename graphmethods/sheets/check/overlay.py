@@ -315,7 +315,8 @@ def _acceleration_section(report: CheckReport, data: LinkageData, nt: Notation, 
     mine = [it for it in report.items if it.key.startswith("acceleration_plan.") and it.key.endswith("_mm")]
     wrong = {it.key.split(".")[1][:-3]: it.student for it in mine if it.verdict == "wrong"}
     carried = [it.key.split(".")[1][:-3] for it in mine if it.verdict == "carried"]
-    return [*ca.plan_elements(o, plan, mu_a=mu_a, wrong=wrong, carried=carried, nt=nt, name="acc"),
+    return [*ca.plan_elements(o, plan, mu_a=mu_a, wrong=wrong, carried=carried, nt=nt, name="acc",
+                              leader_mm=(*ca.NAME_LEADER_MM, 12.0, 16.0)),
             _cross(o, "acc-pole")]
 
 

@@ -136,8 +136,10 @@ class Sheet:
         """
         rows = tuple(tuple(r) for r in rows)
         measure = rows if width_rows is None else tuple(tuple(r) for r in width_rows)
-        for sz in (size, 2.8, 2.6, 2.4, 2.2):
-            probe = Table((X0, self.y), measure, size_mm=sz, row_height_mm=row_mm, align=align, padding_mm=1.5,
+        # down to the A4 standard's smallest lettering (2.5 mm, ГОСТ 2.304), then narrower padding (an eleven-
+        # column answers table was set at 2.2 mm)
+        for sz, pad in ((size, 1.5), (2.8, 1.5), (2.6, 1.5), (FOOTER_MM, 1.5), (FOOTER_MM, 1.0), (FOOTER_MM, 0.7)):
+            probe = Table((X0, self.y), measure, size_mm=sz, row_height_mm=row_mm, align=align, padding_mm=pad,
                           min_col_mm=6.0)
             if probe.width_mm <= X1 - X0:
                 break
@@ -152,7 +154,7 @@ class Sheet:
         for i, row in enumerate(rows):          # rows one by one: value rows taller
             h = value_row_mm if i in value_rows else row_mm
             tables.append(Table((X0, y), (row,), col_widths_mm=tuple(widths), row_height_mm=h, size_mm=sz,
-                                header_rows=1 if i == 0 else 0, align=align or "c" * len(row), padding_mm=1.5,
+                                header_rows=1 if i == 0 else 0, align=align or "c" * len(row), padding_mm=pad,
                                 bold_rows=(0,) if i == 0 else (), name=f"{name}-row-{i}"))
             y += h
         self.add(*tables)
@@ -179,8 +181,11 @@ class Sheet:
                 f"{self.v.number}")
         self.add(Text((X0, 284.0), markup.literal(text), size_mm=FOOTER_MM, name="footer"))
         if self.key:
-            self.add(Text((X1, 284.0), markup.literal(nt.word("worksheets.check", id=self.v.id)),
-                          size_mm=FOOTER_MM, anchor="end", name="footer-check"))
+            check = markup.literal(nt.word("worksheets.check", id=self.v.id))
+            # beside the seed's line, or on the line above it when the two meet (a seed of two digits)
+            room = X1 - X0 - markup.text_width_mm(markup.literal(text), FOOTER_MM) - 4.0
+            y = 284.0 if markup.text_width_mm(check, FOOTER_MM) <= room else 284.0 - 1.6 * FOOTER_MM
+            self.add(Text((X1, y), check, size_mm=FOOTER_MM, anchor="end", name="footer-check"))
 
     def _clear_paper(self) -> None:
         """The graph paper cleared behind every text on it (:attr:`Grid.holes`): tick values, letters and
