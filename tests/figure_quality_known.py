@@ -26,10 +26,9 @@ KNOWN_A2: dict[tuple[str, str, str], str] = {
 #: (problem, figure, language) for a figure of the API, (problem, "steps:FIGURE@PAGE", language) for a build-up
 KNOWN_COVERAGE: dict[tuple[str, str] | tuple[str, str, str], str] = {
     # the force sheet at an angle between positions
-    ("cli", "force-sheet-angle"): "engine, φ = 100°, A1: 63% empty",
+    ("cli", "force-sheet-angle"): "engine, φ = 100°, A1: 57% empty (no M_b(φ) over the cycle at an angle)",
     # the kinematic A1 sheet (lane review3): one plan position only
     ("cli", "kinematic-sheet-plan-position-0"): "two-slider, --plan-positions 0: 53% empty",
-    ("drawn-six-bar-triad", "kinematic_analysis_sheet", "ru"): "1 label crossed by ink: S3",
     # build-ups (lane slides3)
     ("scotch-yoke", "steps:zhukovsky-lever@slide", "en"): "51% empty",
     ("shaper-cam", "steps:inversion@slide", "en"): "66% empty",

@@ -115,8 +115,9 @@ def add_parser(sub) -> None:
     p.add_argument("--page", type=_a1_only, default="A1", metavar="{A1}",
                    help="sheet size: A1 only (the sheet's four parts need it)")
     p.add_argument("--plan-positions", default=None, metavar="K[,L,...]",
-                   help="the positions whose acceleration plans the sheet draws (1 to 4; default: a working-stroke "
-                        "and a return-stroke position)")
+                   help="the positions whose acceleration plans the sheet draws (1 to 4, as many as fit beside the "
+                        "sheet's other parts: a message says how many a linkage has room for; default: a "
+                        "working-stroke and a return-stroke position)")
     p.add_argument("--force", action="store_true", help="overwrite existing figure files")
     _sheet.add_signature_options(p)
     p.set_defaults(func=run)
@@ -463,8 +464,33 @@ def _sheet_data(case, args, phi_deg, n_rpm):
     count(args.positions, "--positions", low=3, high=FIGURES_MAX_POSITIONS, why="the sheet draws every position")
     sheet = check_sheet_target(args.sheet, args.force, None if args.sheet != "-" else args.fig_format)
     ks = None if args.plan_positions is None else _position_list(args.plan_positions)
-    scene = kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page, notation=args.lang)
+    try:
+        scene = kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks, page=args.page,
+                                         notation=args.lang)
+    except InputError as e:
+        room = _plans_room(case, args, ks) if ks is not None and "do not fit" in str(e) else None
+        if room is None:
+            raise
+        raise InputError(f"--plan-positions: the sheet of this linkage has room for {room} acceleration "
+                         f"plan{'s' if room > 1 else ''} beside its other parts, not {len(ks)}; give at most "
+                         f"{room} positions") from None
     return sheet, scene_bytes(signed(scene, args), sheet)
+
+
+def _plans_room(case, args, ks: list[int]) -> int | None:
+    """How many of the plan positions ``ks`` the kinematic-analysis sheet has room for (the most first), or
+    None when not even one fits (the sheet's own refusal then stands)."""
+    from graphmethods.errors import InputError
+    from graphmethods.sheets.kinematic_analysis_sheet import kinematic_analysis_sheet
+
+    for n in range(len(ks) - 1, 0, -1):
+        try:
+            kinematic_analysis_sheet(case, m=args.positions, plan_positions=ks[:n], page=args.page,
+                                     notation=args.lang)
+        except InputError:
+            continue
+        return n
+    return None
 
 
 def run(args) -> int:

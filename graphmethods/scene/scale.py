@@ -109,7 +109,9 @@ class Scale:
 
         nt = _get_notation(notation)
         number = format_scale(self.per_mm, sig=4, decimal=nt.decimal)
-        text = f"{self.symbol} = {number} {nt.unit(self.unit)}/{nt.unit('mm')}"
+        # a pure number (1/[δ]) per mm: "μ = 2 mm⁻¹", not "2 /mm" with its unit missing
+        per = f"{nt.unit(self.unit)}/{nt.unit('mm')}" if self.unit else f"{nt.unit('mm')}⁻¹"
+        text = f"{self.symbol} = {number} {per}"
         if self.alt_unit:
             sep = "" if self.alt_unit == "°" else " "
             alt = format_scale(self.alt_per_mm, sig=4, decimal=nt.decimal)

@@ -88,21 +88,35 @@ def _width(p: Any) -> float:
     return max(p.B, Hub.of(p.D, p.B).L)
 
 
-def layout_for(parts: list[Any], lay: FlywheelDesignLayout = LAYOUT) -> FlywheelDesignLayout:
-    """The layout with its dimension lines spaced for the widest ⌀ value (a four-digit ⌀1103 is wider than the
-    12 mm step: the next line out struck it through).
+def side_layouts(p: Any, lay: FlywheelDesignLayout = LAYOUT) -> tuple[FlywheelDesignLayout, FlywheelDesignLayout]:
+    """The layouts of a section's left (outer ⌀) and right (hub, bore) dimensions, each with its dimension lines
+    spaced for its widest ⌀ value (a ⌀915.8 is wider than the 12 mm step: the next line out struck it through),
+    measured as English writes it, so every language draws at one scale.
 
     >>> from graphmethods.dynamics.flywheel import rim_flywheel
-    >>> layout_for([rim_flywheel(60.69, n_rpm=120.0, D=1.2)]).dim_step_mm > LAYOUT.dim_step_mm
+    >>> left, right = side_layouts(rim_flywheel(60.69, n_rpm=120.0, D=1.2))
+    >>> left.dim_step_mm > right.dim_step_mm == LAYOUT.dim_step_mm
     True
     """
-    widest = max(text_width_mm(f"⌀{_outer_D(p) * 1000:.0f}", TEXT_MM) for p in parts)
-    return replace(lay, dim_step_mm=max(lay.dim_step_mm, widest + 3.0), value_mm=max(lay.value_mm, widest + 1.5))
+    hub = Hub.of(p.D, p.B)
+    en = get_notation("en")
+    sides = ([_outer_D(p)] + ([p.D2] if hasattr(p, "D2") else []), [hub.d_hub, hub.d])
+    out = []
+    for values in sides:
+        widest = max(text_width_mm(f"⌀{size_text(v, en)}", TEXT_MM) for v in values)
+        out.append(replace(lay, dim_step_mm=max(lay.dim_step_mm, widest + 3.0),
+                           value_mm=max(lay.value_mm, widest + 1.5)))
+    return out[0], out[1]
 
 
-def _dims_width(lay: FlywheelDesignLayout) -> float:
-    """The width two ⌀ dimensions take on each side of a section, mm."""
-    return 2 * (lay.dim_first_mm + lay.dim_step_mm + lay.value_mm)
+def _side_width(lay: FlywheelDesignLayout) -> float:
+    """The width two ⌀ dimensions take on one side of a section, mm."""
+    return lay.dim_first_mm + lay.dim_step_mm + lay.value_mm
+
+
+def _dims_width(p: Any, lay: FlywheelDesignLayout) -> float:
+    """The width the ⌀ dimensions take on both sides of a section, mm."""
+    return sum(_side_width(side) for side in side_layouts(p, lay))
 
 
 def _span(p: Any, k: float) -> float:
@@ -117,9 +131,8 @@ def drawing_scale(parts: list[Any], room_w: float, room_h: float, lay: FlywheelD
     >>> drawing_scale([rim_flywheel(43.69, n_rpm=600.0, D=0.75)], 160.0, 130.0)
     10.0
     """
-    dims_w = _dims_width(lay)
     for k in DRAWING_SCALES:
-        w = sum(_span(p, k) + dims_w for p in parts) + lay.gap_mm * (len(parts) - 1)
+        w = sum(_span(p, k) + _dims_width(p, lay) for p in parts) + lay.gap_mm * (len(parts) - 1)
         h = max(_outer_D(p) for p in parts) * 1000.0 / k + 2 * lay.width_dims_mm
         if w <= room_w and h <= room_h:
             return k
@@ -151,7 +164,7 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
                        title_block=True, default_page=Page("A4", "landscape", frame=True))
     x0, _, x1, _ = sheet.box
     parts = [p for p in (rim, disc) if p is not None]
-    lay = layout_for(parts)
+    lay = LAYOUT
     top = sheet.top + lay.top_mm
     bottom = sheet.caption_y - lay.bottom_mm
     room_w = x1 - x0 - lay.table_mm - lay.gap_mm
@@ -159,11 +172,11 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     s_l = Scale("μ_l", nt.unit("m"), k / 1000.0, note=f"1 : {k:g}, the largest drawing scale that fits")
     cy = (top + bottom) / 2                                    # the axis of rotation (horizontal on paper)
     els: list[Any] = [sheet.header()]
-    widths = [_span(p, k) + _dims_width(lay) for p in parts]
+    widths = [_span(p, k) + _dims_width(p, lay) for p in parts]
     spare = (room_w - sum(widths) - lay.gap_mm * (len(parts) - 1)) / (len(parts) + 1)
     x = x0 + max(spare, 0.0)
     for p, w in zip(parts, widths):
-        centre = x + w / 2
+        centre = x + _side_width(side_layouts(p, lay)[0]) + _span(p, k) / 2
         kind = "rim" if hasattr(p, "H") else "disc"
         els += _section(p, kind, s_l, nt, centre, cy, top, name=kind, lay=lay)
         x += w + lay.gap_mm + max(spare, 0.0)
@@ -184,23 +197,34 @@ def flywheel_design(rim: Any, disc: Any = None, *, notation: str = "en", page: P
     return Scene(sheet.page((s_l,)), tuple(els), title=sheet.title, notation=nt.code, name="flywheel-design")
 
 
+def size_text(value_m: float, nt: Notation) -> str:
+    """A size of the drawing in mm as the table writes it (one number on the drawing and in its table:
+    the table's mass and J_F are of these sizes, so the dimension is not rounded further).
+
+    >>> from graphmethods.scene import notation
+    >>> size_text(0.1105, notation("ru")), size_text(0.75, notation("en"))
+    ('110,5', '750')
+    """
+    return nt.number(value_m * 1000, sig=DIGITS["mm"])
+
+
 def _diameter(name: str, x: float, cy: float, r: float, side: int, level: int, lay: FlywheelDesignLayout,
-              value_m: float) -> Dimension:
+              value_m: float, nt: Notation) -> Dimension:
     """A ⌀ dimension of radius ``r`` (mm on paper) on the ``side`` (−1 left, +1 right) of the contour at
     ``x``, on the ``level``-th dimension line out: its value between its line and the next one out."""
     off = lay.dim_first_mm + level * lay.dim_step_mm
     a, b = (x, cy + r), (x, cy - r)                            # measured upwards: the line to the right
     if side < 0:
         a, b = b, a                                            # measured downwards: the line to the left
-    return Dimension(a, b, f"⌀{value_m * 1000:.0f}", offset_mm=off, size_mm=TEXT_MM, name=name)
+    return Dimension(a, b, f"⌀{size_text(value_m, nt)}", offset_mm=off, size_mm=TEXT_MM, name=name)
 
 
 def _bore(name: str, x: float, cy: float, r: float, r_hub: float, lay: FlywheelDesignLayout,
-          value_m: float) -> list[Element]:
+          value_m: float, nt: Notation) -> list[Element]:
     """The bore's ⌀ on the first line right of the hub. Its value goes between the extension lines; where they
     are closer than the value is high (⌀80 in a ⌀144 hub at 1 : 40: 2 and 3.6 mm) it is written under the
     hub's lower one, beside its own line (the extension lines, 1.5 mm past the line, struck it through)."""
-    dim = _diameter(name, x, cy, r, 1, 0, lay, value_m)
+    dim = _diameter(name, x, cy, r, 1, 0, lay, value_m, nt)
     value = next(p for p in dim.primitives() if isinstance(p, Label))
     band = (value.y - CAP * value.size_mm - 0.5, value.y + 0.5)         # the capitals' band, with a margin
     if not any(band[0] <= y <= band[1] for y in (cy - r_hub, cy + r_hub, cy - r, cy + r)):
@@ -244,13 +268,14 @@ def _section(p: Any, kind: str, s_l: Scale, nt: Notation, xc: float, cy: float, 
     els.append(Line((xc - reach, cy), (xc + reach, cy), style=AXIS, name=f"{name}-axis"))
     right = max(xr, hr)
     left = min(xl, hl)                     # a hub wider than the rim: the ⌀ lines start left of it (and of the axis)
-    els += [_diameter(f"dim-{name}-D1", left, cy, r_out, -1, 1, lay, _outer_D(p))]
+    lay_l, lay_r = side_layouts(p, lay)
+    els += [_diameter(f"dim-{name}-D1", left, cy, r_out, -1, 1, lay_l, _outer_D(p), nt)]
     if kind == "rim":
-        els.append(_diameter(f"dim-{name}-D2", left, cy, r_in, -1, 0, lay, p.D2))
-    els += [_diameter(f"dim-{name}-hub", right, cy, r_hub, 1, 1, lay, hub.d_hub),
-            *_bore(f"dim-{name}-bore", right, cy, r_bore, r_hub, lay, hub.d)]
-    els += _width_dimension((xl, cy - r_out), (xr, cy - r_out), f"{p.B * 1000:.0f}", -7.0, f"dim-{name}-B")
-    els += _width_dimension((hl, cy + r_hub), (hr, cy + r_hub), f"{hub.L * 1000:.0f}", (r_out - r_hub) + 7.0,
+        els.append(_diameter(f"dim-{name}-D2", left, cy, r_in, -1, 0, lay_l, p.D2, nt))
+    els += [_diameter(f"dim-{name}-hub", right, cy, r_hub, 1, 1, lay_r, hub.d_hub, nt),
+            *_bore(f"dim-{name}-bore", right, cy, r_bore, r_hub, lay_r, hub.d, nt)]
+    els += _width_dimension((xl, cy - r_out), (xr, cy - r_out), size_text(p.B, nt), -7.0, f"dim-{name}-B")
+    els += _width_dimension((hl, cy + r_hub), (hr, cy + r_hub), size_text(hub.L, nt), (r_out - r_hub) + 7.0,
                             f"dim-{name}-L")
     return els
 
@@ -279,8 +304,8 @@ def _table_rows(parts: list[Any], nt: Notation) -> tuple[tuple[str, ...], ...]:
     row(nt.quantity(nt.word("flywheel.mass"), "kg"), lambda p: num(p.m, sig=DIGITS["mass"]))
     row(nt.quantity(nt.word("flywheel.moment"), "kg·m²"), lambda p: num(p.m * p.D**2, sig=DIGITS["J"]))
     # D and B each on its row: "750, 111" reads as one number with a decimal comma in Russian
-    row(nt.quantity("D", "mm"), lambda p: num(p.D * 1000, sig=DIGITS["mm"]))
-    row(nt.quantity("B", "mm"), lambda p: num(p.B * 1000, sig=DIGITS["mm"]))
+    row(nt.quantity("D", "mm"), lambda p: size_text(p.D, nt))
+    row(nt.quantity("B", "mm"), lambda p: size_text(p.B, nt))
     row(nt.quantity("ρ", "kg/m³"), lambda p: num(p.rho, sig=DIGITS["density"]))
     row(nt.quantity(nt.word("flywheel.speed"), "m/s"), lambda p: num(p.rim_speed, sig=DIGITS["speed"]))
     row(nt.quantity(nt.word("flywheel.limit"), "m/s"), lambda p: num(p.speed_limit, sig=DIGITS["speed"]))

@@ -36,7 +36,7 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
                        machine: str | None = None, notation: str = "en", page: Page | None = None,
                        mu_delta: float | None = None, mu_J: float | None = None, samples: int = 240,
                        title: str | None = None, problem: str = "") -> Scene:
-    """J_F against 1/[δ], drawn to scales μ_{1/δ} (1/mm) and μ_J (kg·m²/mm), the chosen [δ] marked.
+    """J_F against 1/[δ], drawn to scales μ_{1/[δ]} (mm⁻¹) and μ_J (kg·m²/mm), the chosen [δ] marked.
 
     Parameters
     ----------
@@ -79,9 +79,9 @@ def flywheel_hyperbola(delta_W_max: float, *, omega_m: float, J_e: float = 0.0, 
     px0, px1 = x0 + 30.0, x1 - 28.0
     py0, py1 = sheet.top + 14.0, sheet.caption_y - 24.0
     x_hi = 1.0 / lo                                    # the abscissa is 1/[δ]: the hyperbola drawn straight
-    s_d = given_scale(mu_delta, "μ_{1/δ}", "", x_hi, px1 - px0, what="the 1/[δ] axis")
+    s_d = given_scale(mu_delta, "μ_{1/[δ]}", "", x_hi, px1 - px0, what="the 1/[δ] axis")
     kgm2 = nt.unit("kg·m²")
-    s_J = given_scale(mu_J, "μ_{J}", kgm2, J_hi - J_lo, py1 - py0, what="the J_F axis")
+    s_J = given_scale(mu_J, "μ_{J}", "kg·m²", J_hi - J_lo, py1 - py0, what="the J_F axis")  # captions translate
     origin = (px0, py0 + s_J.to_mm(J_hi))
 
     def at(d: float, j: float) -> tuple[float, float]:

@@ -213,11 +213,11 @@ def _composed(p: _Parts, sheet: Sheet, fit: tuple[Box, float, float], *, graph_b
     share = _wide_share(p, (content[0], content[1], content[2] - col_w - gap, content[3])) if wide_graph else 0.0
     boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=bottom, graph=graph,
                               wide_graph=share)
-    accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"]) if phi_deg is None else None
+    accel = _acceleration(case, i, m, nt, pg, boxes["acceleration"], phi_deg)
     if accel is None and phi_deg is None and graph_below and not wide_graph and "balancing" in boxes:
         # beside a tall linkage the plan of accelerations may take the lever's room, the lever the graph's
         wide = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=bottom, lever_under=True)
-        accel = _acceleration(case, i, m, nt, pg, wide["acceleration"])
+        accel = _acceleration(case, i, m, nt, pg, wide["acceleration"], phi_deg)
         boxes = wide if accel is not None else boxes
     if accel is None:                               # the plan of accelerations does not fit: the others take its room
         boxes = force_sheet_boxes(fa, i, content, col_w, gap_mm=gap, column_bottom=bottom, acceleration=False,
@@ -431,11 +431,21 @@ def _aspect(points: Any) -> float:
     return min(5.0, max(0.2, w / h if h > 0 else 5.0))
 
 
-def _acceleration(case: Any, i: int, m: int, nt: Any, pg: Page, box: Box) -> Scene | None:
-    """The plan of accelerations of position ``i`` in ``box`` (where the inertia forces' a_S and ε come from),
-    or None when it cannot be drawn there or its equations run out of the box."""
+def _acceleration(case: Any, i: int, m: int, nt: Any, pg: Page, box: Box,
+                  phi_deg: float | None = None) -> Scene | None:
+    """The plan of accelerations of position ``i`` (or at the crank angle ``phi_deg``, degrees) in ``box``
+    (where the inertia forces' a_S and ε come from), or None when it cannot be drawn there or its equations
+    run out of the box."""
+    from graphmethods.dynamics.study import AngleStudy
+
+    at_angle = phi_deg is not None
+    subject, title = case, None
+    if phi_deg is not None:                         # the plan at that crank angle, titled by it
+        subject = AngleStudy(case, [float(phi_deg) % 360.0])
+        title = nt.word("acceleration.plan_at", phi=nt.number(float(phi_deg) % 360.0, sig=6))
     try:
-        scene = acceleration_plan(case, i, m=m, notation=nt, page=region_page(pg, box), title_block=False)
+        scene = acceleration_plan(subject, 0 if at_angle else i, m=None if at_angle else m, notation=nt,
+                                  page=region_page(pg, box), title=title, title_block=False)
     except InputError:
         return None
     boxes = [b for b in (e.bbox() for e in scene.elements) if b is not None]

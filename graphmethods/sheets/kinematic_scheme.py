@@ -590,8 +590,11 @@ def _broken_lines(els: list[Element], boxes: list) -> list[Element]:
     2.303): a line that is broken becomes a group of its pieces under its own name (one link, one element)."""
     out: list[Element] = []
     for e in els:
-        pieces = broken_behind([e], boxes) if isinstance(e, (Line, Polyline)) else [e]
-        out.append(pieces[0] if len(pieces) == 1 and pieces[0] is e else Group(elements=tuple(pieces), name=e.name))
+        line: Element = e
+        if isinstance(e, Plate) and not e.hatch and e.fill is None:     # a thin position's plate: its outline
+            line = Polyline(tuple(e.corners) + tuple(e.corners[:1]), style=e.outline_style, name=e.name)
+        pieces = broken_behind([line], boxes) if isinstance(line, (Line, Polyline)) else [line]
+        out.append(e if len(pieces) == 1 and pieces[0] is line else Group(elements=tuple(pieces), name=e.name))
     return out
 
 

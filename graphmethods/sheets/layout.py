@@ -24,6 +24,7 @@ from graphmethods.errors import InputError
 from graphmethods.problems.reference_cases import title_of
 from graphmethods.scene import Page, Scale, Scene, TitleBlock, markup, notation as get_notation
 from graphmethods.scene.elements import Axis, Element, label_bbox, make_label, place_label
+from graphmethods.scene.notation import NOTATIONS
 from graphmethods.scene.numbers import format_value
 from graphmethods.scene.primitives import Label, Path, Polygon, walk
 from graphmethods.scene.scale import pick_angle_scale, pick_scale
@@ -753,15 +754,29 @@ def clear_tick_labels(axis: AxisT, occ: Occupancy, *, keep_values: bool = False,
     return replace(axis, tick_labels=tuple(out))
 
 
+def english_unit(u: str) -> str:
+    """The unit ``u`` as the English profile writes it (callers pass units already translated; an error
+    message is English and must not read "кг·м²/mm").
+
+    >>> english_unit("кг·м²"), english_unit("kg·m²")
+    ('kg·m²', 'kg·m²')
+    """
+    for nt in NOTATIONS.values():
+        back = {local: en for en, local in nt.units.items()}
+        if u in back:
+            return back[u]
+    return u
+
+
 def given_scale(given, symbol: str, u: str, span: float, span_mm: float, *, what: str) -> Scale:
     """The scale given (a number or a Scale), checked to fit; or a convenient one picked to fit."""
     if given is None:
         return pick_scale(span, span_mm, symbol=symbol, unit=u)
     s = given if isinstance(given, Scale) else Scale(symbol, u, given)
     if s.to_mm(span) > span_mm * (1 + 1e-9):
-        raise InputError(f"{what} at {markup.plain(s.caption())} needs {s.to_mm(span):.1f} mm but the sheet leaves "
-                         f"{span_mm:.1f} mm; give a larger scale (more units per mm), a larger page, or none "
-                         f"to have one picked")
+        english = markup.plain(replace(s, unit=english_unit(s.unit)).caption())   # the message is English
+        raise InputError(f"{what} at {english} needs {s.to_mm(span):.1f} mm but the sheet leaves {span_mm:.1f} mm; "
+                         f"give a larger scale (more units per mm), a larger page, or none to have one picked")
     return s
 
 

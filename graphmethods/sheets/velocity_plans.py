@@ -512,10 +512,11 @@ def _velocity_texts(plans, k: int, texts, vectors, pts: dict, s_v: Scale, at, x1
     els: list[Element] = [Text((tx, ty + i * lay.line_mm), line, size_mm=TEXT_MM, name=f"equation-{i}")
                           for i, line in enumerate([phi] + eqs)]
     rows = [head]
-    for v in vectors:
-        L = math.dist(pts[v.start], pts[v.end])
+    lengths = [math.dist(pts[v.start], pts[v.end]) for v in vectors]
+    top = max(lengths, default=0.0) * s_v.per_mm
+    for v, L in zip(vectors, lengths):      # the values as the equations write them (v_A = ω₁·l_OA = 0.6912 m/s)
         rows.append((_plan_markup(v.start) + _plan_markup(v.end), _num(nt, L, 2),
-                     f"{v.symbol} = {_num(nt, L * s_v.per_mm, 3)}"))
+                     f"{v.symbol} = {nt.number(L * s_v.per_mm, sig=4, reference=top)}"))
     numbers = _omega_numbers(plans.positions.mechanism)
     t_top = ty + (len(eqs) + 1) * lay.line_mm + 2.0
     below = lay.after_table_mm + (len(omega_texts) + bool(plans.ill_conditioned[k])) * lay.line_mm
