@@ -77,10 +77,11 @@ def test_J_tick_values_have_one_number_of_decimals():
 
 def test_moment_graph_fills_its_room_in_russian(dynamic_sheets):
     """The ru shaper's M graph took μ_M = 10 N·m/mm (half its room empty) for want of 2 mm: its φ axis now
-    stands lower, clear of the ΔT graph's heading, and μ_M = 5 fits."""
+    stands lower, clear of the ΔT graph's heading, and μ_M = 5 fits (4 since the sheet draws one set of
+    scales in en, ru and zh)."""
     scene = dynamic_sheets[("shaper", "ru")]
     mu_M = next(s for s in scene.scales() if s.symbol.startswith("μ_M"))
-    assert mu_M.per_mm == 5.0
+    assert mu_M.per_mm <= 5.0
     axis = _boxes(scene.element("M-axis-phi"))
     head = _boxes(scene.element("heading-T"))
     assert max(b[3] for b in axis) < min(b[1] for b in head)           # the numbers above the ΔT heading
