@@ -22,9 +22,11 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
+import numpy as np
+
 from graphmethods.scene.elements import Axis, label_bbox
 from graphmethods.scene.primitives import Label
-from graphmethods.sheets.layout import Occupancy, clear_tick_labels
+from graphmethods.sheets.layout import Box, Occupancy, clear_tick_labels
 
 
 def off_origin(axis: Axis) -> list[tuple[float, str]]:
@@ -122,3 +124,21 @@ def over_rays(axis: Axis, unrayed: Occupancy, occ: Occupancy) -> Axis:
     for i, lab in zip(shown, texts):
         labels[i] = labels[i] if occ.is_free(label_bbox(lab), lines=False) else ""
     return replace(ax, tick_labels=tuple(labels))
+
+
+def tick_label_band(axis: Axis) -> Box | None:
+    """The row (a horizontal axis) or column (a vertical one) that ``axis``'s tick values take, from its
+    first tick to its last, whether each value is written or was left out; None without ticks. Nothing else
+    is placed there: a number in it reads as one of the axis's values.
+
+    >>> from graphmethods.scene import Scale
+    >>> ax = Axis((10.0, 50.0), Scale("μ", "J", 1.0), "x", max_value=30.0, ticks=(0.0, 10.0, 20.0, 30.0))
+    >>> [round(v, 1) for v in tick_label_band(ax)]
+    [9.0, 52.3, 41.9, 55.3]
+    """
+    written = None if axis.tick_labels is None else tuple(lab or "0" for lab in axis.tick_labels)
+    probe = replace(axis, label="", skip_zero_label=False, tick_labels=written)
+    boxes = np.array([label_bbox(p) for p in probe.primitives() if isinstance(p, Label)], dtype=float)
+    if not len(boxes):
+        return None
+    return (float(boxes[:, 0].min()), float(boxes[:, 1].min()), float(boxes[:, 2].max()), float(boxes[:, 3].max()))

@@ -62,9 +62,9 @@ from graphmethods.sheets.dynamics import (
 )
 from graphmethods.sheets.engine.lettering import is_slide
 from graphmethods.sheets.frame import FastOccupancy, SheetFrame
-from graphmethods.sheets.layout import Box, clear_tick_labels, tick_label_band
+from graphmethods.sheets.layout import Box, clear_tick_labels
 from graphmethods.sheets.linkage_figures import broken_behind
-from graphmethods.sheets.tick_values import every_value as every_tick_written, over_rays
+from graphmethods.sheets.tick_values import every_value as every_tick_written, over_rays, tick_label_band
 
 RAY = Style(width_mm=0.35)
 LEADER = Style(width_mm=0.13)

@@ -286,8 +286,8 @@ def _moment_strip(ws: _WorkScales, occ: Occupancy, nt: Notation, M_d: Any, M_r: 
 
 def _keep_values_row(axis: Any, occ: Occupancy) -> None:
     """Keep the row of the φ axis's position numbers free: a curve's name set between two of them ("6 M_r 7")
-    reads as one of them (:func:`~graphmethods.sheets.layout.tick_label_band`)."""
-    from graphmethods.sheets.layout import tick_label_band
+    reads as one of them (:func:`~graphmethods.sheets.tick_values.tick_label_band`)."""
+    from graphmethods.sheets.tick_values import tick_label_band
 
     band = tick_label_band(axis)
     if band is not None:
